@@ -1,0 +1,30 @@
+# A thin layer over CMake. `make demo` and `make test` each do all set-up on a fresh
+# Debian 12 machine (missing packages, configure, Release build) and then their job.
+BUILD_DIR ?= build
+JOBS      ?= $(shell nproc)
+WG        := $(BUILD_DIR)/bin/watergraph
+GRAPHS    := $(sort $(wildcard graphs/*.json))
+
+.PHONY: all setup configure build demo test clean
+
+all: build
+
+setup:
+	@scripts/setup.sh
+
+configure: setup
+	@cmake -S . -B $(BUILD_DIR) -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+
+build: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+# Compile every example graph for every target into out/<graph>/, validate each
+# shader with glslang and print a summary table.
+demo: build
+	@$(WG) compile $(GRAPHS) -o out --subdirs --summary
+
+test: build
+	@cd $(BUILD_DIR) && MESA_SHADER_CACHE_DISABLE=true ctest --output-on-failure -j $(JOBS)
+
+clean:
+	@rm -rf $(BUILD_DIR) out

@@ -1,0 +1,40 @@
+// watergraph: water shader graphs (JSON) compiled to validated GLSL.
+#include <iostream>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  using namespace wg::cli;
+  CLI::App app{"watergraph: compiles water shader graphs (JSON) into GLSL for glsl330, es300 and vk450, "
+               "validated by glslang.\n\nExamples:\n  watergraph compile graphs/lake.json -o out\n"
+               "  watergraph validate graphs/*.json\n  watergraph nodes\n  watergraph fmt --check graphs/*.json"};
+  app.require_subcommand(1);
+  app.fallthrough();  // global options may follow the subcommand
+  GlobalOptions global;
+  app.add_option("--diagnostics-format", global.diagnosticsFormat, "how errors are printed: text (stderr) or json (stdout)")
+      ->check(CLI::IsMember({"text", "json"}));
+  app.set_version_flag("--version", "watergraph 0.1.0");
+
+  Runner compile = addCompileCommand(app, global);
+  Runner validate = addValidateCommand(app, global);
+  Runner nodes = addNodesCommand(app, global);
+  Runner fmt = addFmtCommand(app, global);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsageOrIo;
+  }
+  try {
+    if (app.got_subcommand("compile")) return compile();
+    if (app.got_subcommand("validate")) return validate();
+    if (app.got_subcommand("nodes")) return nodes();
+    if (app.got_subcommand("fmt")) return fmt();
+  } catch (const std::exception& e) {
+    // A bug, not a graph problem: say so plainly rather than crash.
+    std::cerr << "watergraph: internal error: " << e.what() << "\n";
+    return kExitUsageOrIo;
+  }
+  return kExitUsageOrIo;
+}

@@ -1,0 +1,105 @@
+#include "codegen/compile.h"
+
+#include <filesystem>
+
+#include "codegen/glslang_validate.h"
+#include "codegen/manifest.h"
+#include "codegen/passes.h"
+#include "core/resolve.h"
+
+namespace wg {
+
+std::string graphBaseName(const std::string& path) {
+  std::filesystem::path p(path);
+  std::string name = p.filename().string();
+  if (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0) name.resize(name.size() - 5);
+  return name;
+}
+
+std::optional<Program> buildProgram(const Graph& graph, const Registry& registry, Diagnostics& diags) {
+  auto program = resolveGraph(graph, registry, diags);
+  if (!program) return std::nullopt;
+  PassContext ctx{diags};
+  // The recipe. fold and cse can expose more of each other's work, so they repeat until
+  // neither changes anything (bounded: each round removes at least one op).
+  specialisePass(*program, ctx);
+  prunePass(*program, ctx);
+  for (int round = 0; round < 8; ++round) {
+    bool changed = foldPass(*program, ctx) == PassResult::Changed;
+    changed |= csePass(*program, ctx) == PassResult::Changed;
+    if (!changed) break;
+  }
+  prunePass(*program, ctx);
+  if (stagePass(*program, ctx) == PassResult::Failed) return std::nullopt;
+  return program;
+}
+
+namespace {
+
+// A glslang message mapped back to the node whose code is on that line.
+void reportValidation(const ValidationResult& vr, const std::vector<EmittedShader>& shaders,
+                      const std::vector<ShaderSource>& sources, const Program& program, DiagCode code,
+                      Diagnostics& diags) {
+  for (const auto& m : vr.errors) {
+    int op = -1;
+    for (size_t s = 0; s < sources.size(); ++s)
+      if (sources[s].fileName == m.fileName && m.line > 0 &&
+          static_cast<size_t>(m.line) <= shaders[s].lineOp.size())
+        op = shaders[s].lineOp[static_cast<size_t>(m.line - 1)];
+    std::string where = m.fileName.empty() ? "link" : m.fileName + (m.line ? ":" + std::to_string(m.line) : "");
+    if (op >= 0) {
+      const Op& o = program.ops[static_cast<size_t>(op)];
+      diags.error(code, o.where, "generated GLSL rejected at " + where + ": " + m.text, o.nodeId);
+    } else {
+      diags.error(code, SourceRef{program.file, 0, 0}, "generated GLSL rejected at " + where + ": " + m.text);
+    }
+  }
+}
+
+std::string spirvBytes(const std::vector<uint32_t>& words) {
+  std::string bytes(words.size() * 4, '\0');
+  for (size_t i = 0; i < words.size(); ++i)
+    for (int b = 0; b < 4; ++b) bytes[i * 4 + static_cast<size_t>(b)] = static_cast<char>((words[i] >> (8 * b)) & 0xffu);
+  return bytes;
+}
+
+}  // namespace
+
+std::optional<CompileResult> compileGraph(const Graph& graph, const Registry& registry,
+                                          const CompileOptions& options, Diagnostics& diags) {
+  auto program = buildProgram(graph, registry, diags);
+  if (!program) return std::nullopt;
+  CompileResult result;
+  result.nodesTotal = program->totalNodes;
+  result.nodesKept = static_cast<int>(program->ops.size());
+  std::string base = graphBaseName(graph.file.empty() ? graph.name : graph.file);
+  std::string sourceName = std::filesystem::path(graph.file).filename().string();
+  bool ok = true;
+  std::vector<std::pair<Target, EmitResult>> emitted;
+  for (Target target : options.targets) {
+    EmitResult er = emitProgram(*program, target, sourceName.empty() ? graph.name : sourceName);
+    std::vector<ShaderSource> sources;
+    for (const auto& sh : er.shaders)
+      sources.push_back({sh.stage, base + "." + std::string(targetName(target)) + "." + std::string(stageExtension(sh.stage)), sh.text});
+    for (const auto& src : sources) result.files.push_back({src.fileName, src.text});
+    if (options.validate) {
+      ValidationResult vr = validateShaders(target, sources);
+      if (!vr.ok) {
+        bool spirvStage = !vr.errors.empty() && vr.errors.front().text.rfind("spirv-val", 0) == 0;
+        reportValidation(vr, er.shaders, sources, *program, spirvStage ? DiagCode::SpirvRejected : DiagCode::GlslRejected, diags);
+        ok = false;
+      } else {
+        for (size_t s = 0; s < vr.spirv.size() && s < sources.size(); ++s)
+          result.files.push_back({sources[s].fileName + ".spv", spirvBytes(vr.spirv[s])});
+      }
+    }
+    emitted.emplace_back(target, std::move(er));
+  }
+  if (!ok) return std::nullopt;
+  result.manifest = buildManifest(*program, emitted, base);
+  result.files.push_back({base + ".manifest.json", result.manifest.dump(2) + "\n"});
+  result.program = std::move(*program);
+  return result;
+}
+
+}  // namespace wg

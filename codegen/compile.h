@@ -1,0 +1,46 @@
+#pragma once
+// The whole pipeline for one graph: load -> resolve -> passes -> emit per target ->
+// glslang validation -> manifest. Nothing is written here; see output_files.h.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "codegen/emit_glsl.h"
+#include "codegen/target.h"
+#include "core/diagnostic.h"
+#include "core/graph.h"
+#include "core/program.h"
+#include "core/registry.h"
+
+namespace wg {
+
+struct CompileOptions {
+  std::vector<Target> targets = allTargets();
+  bool validate = true;  // glslang; off only for tests of the emitter itself
+};
+
+struct OutputFile {
+  std::string name;      // "lake.glsl330.frag"
+  std::string contents;  // text, or the SPIR-V words as bytes
+};
+
+struct CompileResult {
+  Program program;  // after the passes
+  std::vector<OutputFile> files;  // shaders, SPIR-V and the manifest, in a stable order
+  nlohmann::json manifest;
+  int nodesTotal = 0;
+  int nodesKept = 0;
+};
+
+// Runs resolve and the pass recipe; the Program is ready to emit.
+std::optional<Program> buildProgram(const Graph& graph, const Registry& registry, Diagnostics& diags);
+
+std::optional<CompileResult> compileGraph(const Graph& graph, const Registry& registry,
+                                          const CompileOptions& options, Diagnostics& diags);
+
+// The output file base name for a graph file: its name without folder and ".json".
+std::string graphBaseName(const std::string& path);
+
+}  // namespace wg

@@ -1,0 +1,72 @@
+#include "codegen/cpu_backend.h"
+
+#include <stdexcept>
+
+namespace wg {
+namespace {
+
+class OpEvalContext final : public EvalContext {
+ public:
+  OpEvalContext(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env)
+      : op_(op), inputs_(inputs), env_(env), outputs_(op.outputTypes.size()) {}
+
+  const Value& input(int port) const override { return inputs_.at(static_cast<size_t>(port)); }
+  Type inputType(int port) const override { return op_.inputTypes.at(static_cast<size_t>(port)); }
+  Type outputType(int port) const override { return op_.outputTypes.at(static_cast<size_t>(port)); }
+  const nlohmann::json& option(std::string_view name) const override { return op_.options.at(std::string(name)); }
+  void output(int port, Value v) override { outputs_.at(static_cast<size_t>(port)) = v; }
+  const EvalEnvironment& environment() const override { return env_; }
+  const NodeSpec& spec() const override { return *op_.spec; }
+  std::vector<Value> take() { return std::move(outputs_); }
+
+ private:
+  const Op& op_;
+  const std::vector<Value>& inputs_;
+  const EvalEnvironment& env_;
+  std::vector<Value> outputs_;
+};
+
+}  // namespace
+
+std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env) {
+  std::vector<Value> converted(inputs.size());
+  for (size_t i = 0; i < inputs.size(); ++i) converted[i] = inputs[i].convertedTo(op.inputTypes[i]);
+  OpEvalContext ctx(op, converted, env);
+  op.spec->eval(ctx);
+  std::vector<Value> out = ctx.take();
+  for (size_t i = 0; i < out.size(); ++i)
+    if (op.outputTypes[i] != Type::Invalid && out[i].type != op.outputTypes[i])
+      throw std::logic_error("eval of '" + op.spec->type + "' produced " + std::string(typeName(out[i].type)) +
+                             " for output '" + op.spec->outputs[i].name + "' typed " +
+                             std::string(typeName(op.outputTypes[i])));
+  return out;
+}
+
+CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, const std::vector<Value>& parameters) {
+  CpuResult result;
+  result.opOutputs.resize(program.ops.size());
+  auto valueOf = [&](const ValueRef& r) -> Value {
+    switch (r.kind) {
+      case ValueRef::Kind::Op:
+        return result.opOutputs[static_cast<size_t>(r.index)][static_cast<size_t>(r.port)];
+      case ValueRef::Kind::Param:
+        return static_cast<size_t>(r.index) < parameters.size() ? parameters[static_cast<size_t>(r.index)]
+                                                                : program.parameters[static_cast<size_t>(r.index)].defaultValue;
+      case ValueRef::Kind::Const: return r.constant;
+      case ValueRef::Kind::Builtin: return env.builtin(static_cast<Builtin>(r.index));
+      case ValueRef::Kind::None: break;
+    }
+    throw std::logic_error("evaluateProgram: unset value reference");
+  };
+  for (size_t i = 0; i < program.ops.size(); ++i) {
+    const Op& op = program.ops[i];
+    std::vector<Value> inputs;
+    inputs.reserve(op.inputs.size());
+    for (const auto& in : op.inputs) inputs.push_back(valueOf(in));
+    result.opOutputs[i] = evaluateOp(op, inputs, env);
+  }
+  for (const auto& out : program.outputs) result.outputs.push_back(valueOf(out.value).convertedTo(out.type));
+  return result;
+}
+
+}  // namespace wg

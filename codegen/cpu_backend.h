@@ -1,0 +1,23 @@
+#pragma once
+// The double-precision reference: a Program interpreted through each node's `eval`. The
+// fold pass, the probe and the accuracy checks use it, so the reference is part of the
+// compiler, not a second implementation beside it.
+#include <vector>
+
+#include "core/program.h"
+
+namespace wg {
+
+// Evaluates one op given its input values (converted to the op's port types here).
+std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env);
+
+struct CpuResult {
+  std::vector<std::vector<Value>> opOutputs;  // per op, per output port
+  std::vector<Value> outputs;                 // per program output, same order
+};
+
+// Evaluates the whole program. `parameters` overrides defaults by index (empty: defaults).
+CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env,
+                          const std::vector<Value>& parameters = {});
+
+}  // namespace wg

@@ -1,0 +1,53 @@
+#pragma once
+// Program (after the stage pass) -> GLSL source per stage for one target, with a map
+// from each output line back to the op that wrote it, and the shader interface the
+// manifest describes. Identifiers are generated; no string from the graph file is pasted.
+#include <string>
+#include <vector>
+
+#include "codegen/target.h"
+#include "core/program.h"
+
+namespace wg {
+
+struct UniformInfo {
+  std::string name;  // GLSL name
+  Type type = Type::Float;
+  int parameter = -1;       // index into Program::parameters, or -1 for a builtin uniform
+  std::string builtin;      // builtin uniform's meaning ("time", "model", ...) when parameter < 0
+  unsigned stages = 0;      // where it is declared
+};
+
+struct AttributeInfo {
+  std::string name;
+  Type type = Type::Float;
+  int location = 0;
+};
+
+struct VaryingInfo {
+  std::string name;
+  Type type = Type::Float;
+  std::string carries;  // "world_position", or "node 'wave' output 'normal'"
+};
+
+struct EmittedShader {
+  ShaderStage stage{};
+  std::string text;
+  std::vector<int> lineOp;  // per 1-based line - 1: the op index that wrote it, or -1
+};
+
+struct EmitResult {
+  std::vector<EmittedShader> shaders;  // vertex, fragment
+  std::vector<UniformInfo> uniforms;   // declaration order
+  std::vector<AttributeInfo> attributes;
+  std::vector<VaryingInfo> varyings;
+  std::vector<std::string> functions;  // library items emitted, in order (union of stages)
+};
+
+EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName);
+
+// A graph identifier made safe as part of a GLSL name: [A-Za-z0-9_] only, no "__",
+// at most 24 characters.
+std::string sanitiseIdentifier(std::string_view id);
+
+}  // namespace wg

@@ -1,0 +1,36 @@
+#pragma once
+// Every emitted shader is compiled and linked by glslang before it is written; vk450 is
+// also turned into SPIR-V and checked by the SPIR-V validator.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "codegen/target.h"
+
+namespace wg {
+
+struct ShaderSource {
+  ShaderStage stage{};
+  std::string fileName;  // "lake.glsl330.frag": glslang's messages name it
+  std::string text;
+};
+
+struct ShaderMessage {
+  std::string fileName;  // which shader ("" for link errors)
+  int line = 0;          // 1-based line in that shader, 0 when glslang gives none
+  std::string text;      // glslang's message without the "ERROR: file:line:" prefix
+};
+
+struct ValidationResult {
+  bool ok = false;
+  std::vector<ShaderMessage> errors;
+  // vk450 only, when ok: one SPIR-V module per input shader, same order.
+  std::vector<std::vector<uint32_t>> spirv;
+};
+
+// Compiles each shader for `target` (#version is inside the text), links them as one
+// program, and for vk450 generates SPIR-V and runs spvtools validation on it.
+// Thread-compatible; initialises glslang once per process.
+ValidationResult validateShaders(Target target, const std::vector<ShaderSource>& shaders);
+
+}  // namespace wg

@@ -1,0 +1,126 @@
+#include "codegen/manifest.h"
+
+#include <set>
+#include <stdexcept>
+
+namespace wg {
+namespace {
+
+// Scene resources and the pass that produces each, in the order the runtime runs them.
+struct ResourcePass {
+  const char* resource;
+  const char* pass;
+};
+constexpr ResourcePass kResourcePasses[] = {
+    {"scene_depth", "depth_prepass"},
+    {"scene_color", "scene_color_copy"},
+    {"planar_reflection", "planar_reflection"},
+    {"refraction", "refraction"},
+    {"environment", "environment_cubemap"},
+    {"underwater", "deferred_water"},
+};
+
+nlohmann::json valueJson(const Value& v) {
+  if (v.size() == 1) return v[0];
+  nlohmann::json a = nlohmann::json::array();
+  for (int i = 0; i < v.size(); ++i) a.push_back(v[i]);
+  return a;
+}
+
+nlohmann::json stagesJson(unsigned stages) {
+  nlohmann::json a = nlohmann::json::array();
+  if (stages & kVertexStage) a.push_back("vertex");
+  if (stages & kFragmentStage) a.push_back("fragment");
+  return a;
+}
+
+}  // namespace
+
+std::vector<std::string> resourcesOf(const Program& program) {
+  std::set<std::string> used;
+  for (const auto& op : program.ops)
+    for (const auto& r : op.spec->resources) used.insert(r);
+  std::vector<std::string> out;
+  for (const auto& rp : kResourcePasses)
+    if (used.erase(rp.resource)) out.push_back(rp.resource);
+  if (!used.empty()) throw std::logic_error("a node names an unknown scene resource: " + *used.begin());
+  return out;
+}
+
+std::vector<std::string> passesFor(const std::vector<std::string>& resources) {
+  std::vector<std::string> passes;
+  for (const auto& rp : kResourcePasses)
+    for (const auto& r : resources)
+      if (r == rp.resource) passes.push_back(rp.pass);
+  passes.push_back("water_surface");
+  return passes;
+}
+
+nlohmann::json buildManifest(const Program& program, const std::vector<std::pair<Target, EmitResult>>& emitted,
+                             const std::string& baseName) {
+  nlohmann::json m;
+  m["format"] = kManifestFormat;
+  m["graph"] = program.graphName;
+  if (!program.description.empty()) m["description"] = program.description;
+
+  nlohmann::json targets = nlohmann::json::object();
+  for (const auto& [target, er] : emitted) {
+    nlohmann::json t;
+    std::string prefix = baseName + "." + std::string(targetName(target)) + ".";
+    for (const auto& sh : er.shaders) {
+      std::string ext(stageExtension(sh.stage));
+      t[ext] = prefix + ext;
+      if (target == Target::Vk450) t[ext + ".spv"] = prefix + ext + ".spv";
+    }
+    targets[std::string(targetName(target))] = t;
+  }
+  m["targets"] = targets;
+
+  // The interface is the same for every target (names, order); take it from the first.
+  if (!emitted.empty()) {
+    const EmitResult& er = emitted.front().second;
+    nlohmann::json attributes = nlohmann::json::array();
+    for (const auto& a : er.attributes)
+      attributes.push_back({{"name", a.name}, {"type", std::string(typeName(a.type))}, {"location", a.location}});
+    m["attributes"] = attributes;
+    nlohmann::json uniforms = nlohmann::json::array();
+    for (const auto& u : er.uniforms) {
+      nlohmann::json j{{"name", u.name}, {"type", std::string(typeName(u.type))}, {"stages", stagesJson(u.stages)}};
+      if (u.parameter >= 0) {
+        const ProgramParameter& p = program.parameters[static_cast<size_t>(u.parameter)];
+        j["parameter"] = p.name;
+        j["default"] = valueJson(p.defaultValue);
+        if (p.min) j["min"] = *p.min;
+        if (p.max) j["max"] = *p.max;
+        if (!p.hint.empty()) j["hint"] = p.hint;
+        if (!p.description.empty()) j["description"] = p.description;
+      } else {
+        j["builtin"] = u.builtin;
+      }
+      uniforms.push_back(j);
+    }
+    m["uniforms"] = uniforms;
+    nlohmann::json varyings = nlohmann::json::array();
+    for (const auto& v : er.varyings)
+      varyings.push_back({{"name", v.name}, {"type", std::string(typeName(v.type))}, {"carries", v.carries}});
+    m["varyings"] = varyings;
+    m["functions"] = er.functions;
+  }
+  m["textures"] = nlohmann::json::array();
+  auto resources = resourcesOf(program);
+  m["resources"] = resources;
+  m["passes"] = passesFor(resources);
+
+  nlohmann::json kept = nlohmann::json::array();
+  for (const auto& op : program.ops) {
+    nlohmann::json k{{"node", op.nodeId}, {"type", op.spec->type}, {"stages", stagesJson(op.stage)}};
+    if (!op.mergedIds.empty()) k["merged"] = op.mergedIds;
+    kept.push_back(k);
+  }
+  nlohmann::json removed = nlohmann::json::array();
+  for (const auto& r : program.removed) removed.push_back({{"what", r.what}, {"reason", r.reason}});
+  m["nodes"] = {{"total", program.totalNodes}, {"kept", kept}, {"removed", removed}};
+  return m;
+}
+
+}  // namespace wg

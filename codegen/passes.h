@@ -1,0 +1,37 @@
+#pragma once
+// The compiler's passes, each a function from one Program to the next (one file each).
+// compile.cpp runs them as a recipe: specialise -> prune -> fold -> cse -> prune -> stages.
+#include <string>
+#include <vector>
+
+#include "core/diagnostic.h"
+#include "core/program.h"
+
+namespace wg {
+
+enum class PassResult { Unchanged, Changed, Failed };
+
+struct PassContext {
+  Diagnostics& diags;
+};
+
+// Static parameters become constants (never uniforms), so folding can remove them.
+PassResult specialisePass(Program& program, PassContext& ctx);
+// Removes ops and parameters that no output reaches; records why in program.removed.
+PassResult prunePass(Program& program, PassContext& ctx);
+// Evaluates ops whose inputs are all constant through their double `eval`.
+PassResult foldPass(Program& program, PassContext& ctx);
+// Merges ops of the same type, options and inputs.
+PassResult csePass(Program& program, PassContext& ctx);
+// Decides the stage of every op (Op::stage bits); a fragment-only op that feeds a
+// vertex output is an error.
+PassResult stagePass(Program& program, PassContext& ctx);
+
+// Rewrites every reference through `replace` (indexed by op, then port; a None entry
+// keeps the reference), then drops ops whose `keep` is false, renumbering the rest.
+void rewriteProgram(Program& program, const std::vector<std::vector<ValueRef>>& replace,
+                    const std::vector<bool>& keep);
+// For each op, whether some output reaches it.
+std::vector<bool> reachableOps(const Program& program);
+
+}  // namespace wg

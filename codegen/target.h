@@ -1,0 +1,19 @@
+#pragma once
+// The GLSL dialects watergraph emits. Per-target differences live in small tables
+// (codegen/target.cpp), not in `if (target)` inside nodes.
+#include <optional>
+#include <string_view>
+#include <vector>
+
+namespace wg {
+
+enum class Target { Glsl330, Es300, Vk450 };
+
+std::string_view targetName(Target t);  // "glsl330", "es300", "vk450"
+std::optional<Target> parseTarget(std::string_view name);
+const std::vector<Target>& allTargets();
+
+enum class ShaderStage { Vertex, TessControl, TessEvaluation, Fragment };
+std::string_view stageExtension(ShaderStage s);  // "vert", "tesc", "tese", "frag"
+
+}  // namespace wg

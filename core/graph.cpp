@@ -1,0 +1,36 @@
+#include "core/graph.h"
+
+namespace wg {
+
+std::string_view outputSlotName(OutputSlot slot) {
+  switch (slot) {
+    case OutputSlot::VertexPosition: return "vertex.position";
+    case OutputSlot::VertexNormal: return "vertex.normal";
+    case OutputSlot::FragmentColor: return "fragment.color";
+    case OutputSlot::FragmentAlpha: return "fragment.alpha";
+  }
+  return "?";
+}
+
+const Node* Graph::findNode(std::string_view id) const {
+  for (const auto& n : nodes)
+    if (n.id == id) return &n;
+  return nullptr;
+}
+
+const Parameter* Graph::findParameter(std::string_view name) const {
+  for (const auto& p : parameters)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
+bool isIdentifier(std::string_view s) {
+  if (s.empty() || s.size() > 64) return false;
+  auto alpha = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };
+  if (!alpha(s[0])) return false;
+  for (char c : s)
+    if (!alpha(c) && !(c >= '0' && c <= '9')) return false;
+  return true;
+}
+
+}  // namespace wg

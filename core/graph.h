@@ -1,0 +1,92 @@
+#pragma once
+// The graph as written in a file (format v1, docs/graph-format.md): plain data, every
+// element with the file:line:col it came from. Nothing here knows the node registry;
+// core/resolve.h turns a Graph into a typed Program.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/source_ref.h"
+#include "core/types.h"
+
+namespace wg {
+
+inline constexpr int kGraphFormatVersion = 1;
+
+// What feeds an input or an output slot.
+struct InputSource {
+  enum class Kind { NodeOutput, Parameter, Literal };
+  Kind kind = Kind::Literal;
+  std::string node;            // NodeOutput: the referenced node id
+  std::string port;            // NodeOutput: its output port
+  std::string parameter;       // Parameter: the name after '$'
+  std::vector<double> literal; // Literal: 1 number (float) or 2..4 (vecN)
+  SourceRef where;             // the JSON value's position
+};
+
+struct NodeInput {
+  std::string port;
+  InputSource source;
+  SourceRef keyWhere;  // the key's position, for "unknown input" errors
+};
+
+struct NodeOption {
+  std::string name;
+  nlohmann::json value;  // as written; validated against the node's OptionSpec by resolve
+  SourceRef where;       // the value's position
+  SourceRef keyWhere;
+};
+
+struct Node {
+  std::string id;
+  std::string type;
+  std::vector<NodeOption> options;  // in file order; saved sorted by name
+  std::vector<NodeInput> inputs;    // in file order; saved sorted by port
+  std::optional<std::array<double, 2>> editorPosition;  // node canvas position
+  SourceRef where;      // the node object's '{'
+  SourceRef idWhere;    // the id value
+  SourceRef typeWhere;  // the type value
+};
+
+struct Parameter {
+  std::string name;
+  Type type = Type::Float;
+  std::vector<double> defaultValue;  // componentCount(type) numbers
+  std::optional<double> min;
+  std::optional<double> max;
+  std::string hint;         // "" or "color"
+  std::string description;
+  bool isStatic = false;    // folded into the shader at compile time, never a uniform
+  SourceRef where;          // the parameter's key
+};
+
+enum class OutputSlot { VertexPosition, VertexNormal, FragmentColor, FragmentAlpha };
+std::string_view outputSlotName(OutputSlot slot);  // "vertex.position", ...
+
+struct GraphOutput {
+  OutputSlot slot{};
+  InputSource source;
+  SourceRef keyWhere;
+};
+
+struct Graph {
+  std::string file;      // path as given, used in diagnostics
+  std::string schema;    // optional "$schema", kept for editors
+  int version = kGraphFormatVersion;
+  std::string name;
+  std::string description;
+  std::vector<Parameter> parameters;  // file order
+  std::vector<Node> nodes;            // file order
+  std::vector<GraphOutput> outputs;   // saved in OutputSlot order
+
+  const Node* findNode(std::string_view id) const;
+  const Parameter* findParameter(std::string_view name) const;
+};
+
+// True for [A-Za-z_][A-Za-z0-9_]*, at most 64 characters.
+bool isIdentifier(std::string_view s);
+
+}  // namespace wg

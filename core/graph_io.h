@@ -1,0 +1,23 @@
+#pragma once
+// Reading a graph file (with positions, duplicate keys reported) and writing the one
+// canonical form that `watergraph fmt` produces.
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/diagnostic.h"
+#include "core/graph.h"
+
+namespace wg {
+
+// Parses `text` as a graph file named `file` (used in diagnostics). On any error, the
+// diagnostics say why and the result is empty.
+std::optional<Graph> parseGraph(std::string_view text, const std::string& file, Diagnostics& diags);
+// Reads and parses a file; an unreadable file is WG050.
+std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags);
+
+// The canonical text: fixed key order, 2-space indent, shortest round-trip numbers,
+// LF line endings, a final newline. saveGraph(parseGraph(saveGraph(g))) == saveGraph(g).
+std::string saveGraph(const Graph& graph);
+
+}  // namespace wg

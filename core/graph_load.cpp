@@ -1,0 +1,563 @@
+// Graph format v1 (docs/graph-format.md): JSON with positions -> Graph. Reports as many
+// problems as it can in one pass; any error makes the result empty.
+#include <algorithm>
+#include <array>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <system_error>
+
+#include "core/graph_io.h"
+#include "core/json_source.h"
+#include "core/number_format.h"
+
+namespace wg {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr std::size_t kMaxFileBytes = 16u * 1024u * 1024u;
+constexpr std::size_t kMaxNodes = 200000;
+constexpr std::size_t kMaxStringBytes = 4096;
+constexpr double kFloat32Max = 3.4028234663852886e38;
+
+const char* kIdentifierRule =
+    "(letters, digits and '_', not starting with a digit, at most 64)";
+const char* kSourceForms =
+    "an input is \"node.port\", \"$parameter\", a number, or an array of 2 to 4 numbers";
+
+std::string jsonTypeName(const json& v) {
+  switch (v.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::object: return "object";
+    case json::value_t::array: return "array";
+    case json::value_t::string: return "string";
+    case json::value_t::boolean: return "boolean";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return "number";
+    default: return "value";
+  }
+}
+
+std::string article(std::string_view type) {
+  if (type == "object" || type == "array") return "an " + std::string(type);
+  return "a " + std::string(type);
+}
+
+std::string describeValue(const json& v) {
+  std::string s = v.dump(-1, ' ', false, json::error_handler_t::replace);
+  if (s.size() > 60) s = s.substr(0, 57) + "...";
+  return s;
+}
+
+class Loader {
+ public:
+  Loader(const JsonSource& js, const std::string& file, Diagnostics& diags)
+      : js_(js), file_(file), diags_(diags) {}
+
+  std::optional<Graph> load() {
+    const size_t before = diags_.errorCount();
+    Graph g;
+    g.file = file_;
+    const json& root = js_.root;
+    if (!root.is_object()) {
+      diags_.error(DiagCode::WrongJsonType, js_.value(""),
+                   "the graph must be a JSON object, found " + jsonTypeName(root));
+      return std::nullopt;
+    }
+    checkLimits(root, "");
+
+    checkKeys(root, "", "the graph",
+              {"$schema", "version", "name", "description", "parameters", "nodes", "outputs"});
+
+    if (!loadVersion(root, g)) return std::nullopt;  // a newer format: the rest is moot
+
+    if (auto* v = field(root, "", "$schema", json::value_t::string, "'$schema'"))
+      g.schema = v->get<std::string>();
+
+    if (!root.contains("name")) {
+      missing("", "the graph is missing \"name\"");
+    } else if (auto* v = field(root, "", "name", json::value_t::string, "'name'")) {
+      g.name = v->get<std::string>();
+      if (!isIdentifier(g.name))
+        diags_.error(DiagCode::InvalidIdentifier, js_.value("/name"),
+                     "graph name '" + g.name + "' is not an identifier " + kIdentifierRule);
+    }
+    if (auto* v = field(root, "", "description", json::value_t::string, "'description'"))
+      g.description = v->get<std::string>();
+
+    if (auto* v = field(root, "", "parameters", json::value_t::object, "'parameters'"))
+      loadParameters(*v, g);
+
+    if (!root.contains("nodes")) {
+      missing("", "the graph is missing \"nodes\"");
+    } else if (auto* v = field(root, "", "nodes", json::value_t::array, "'nodes'")) {
+      loadNodes(*v, g);
+    }
+
+    if (!root.contains("outputs")) {
+      missing("", "the graph is missing \"outputs\"");
+    } else if (auto* v = field(root, "", "outputs", json::value_t::object, "'outputs'")) {
+      loadOutputs(*v, g);
+    }
+
+    if (diags_.errorCount() > before) return std::nullopt;
+    return g;
+  }
+
+ private:
+  // Every string (and key) within the length limit, every number finite float32.
+  void checkLimits(const json& v, const std::string& ptr) {
+    if (v.is_string()) {
+      const auto& s = v.get_ref<const std::string&>();
+      if (s.size() > kMaxStringBytes)
+        diags_.error(DiagCode::LimitExceeded, js_.value(ptr),
+                     "string of " + std::to_string(s.size()) + " bytes is longer than the limit of " +
+                         std::to_string(kMaxStringBytes));
+    } else if (v.is_number_float()) {
+      double x = v.get<double>();
+      if (!std::isfinite(x) || std::fabs(x) > kFloat32Max)
+        diags_.error(DiagCode::NonFiniteLiteral, js_.value(ptr),
+                     "number " + formatNumber(x) + " is outside float32 range");
+    } else if (v.is_number_integer()) {
+      // 64-bit integers are far inside float32's range (about 3.4e38).
+    } else if (v.is_array()) {
+      for (std::size_t i = 0; i < v.size(); ++i) checkLimits(v[i], ptr + "/" + std::to_string(i));
+    } else if (v.is_object()) {
+      for (auto it = v.begin(); it != v.end(); ++it) {
+        std::string child = ptr + "/" + jsonPointerEscape(it.key());
+        if (it.key().size() > kMaxStringBytes)
+          diags_.error(DiagCode::LimitExceeded, js_.key(child),
+                       "key of " + std::to_string(it.key().size()) +
+                           " bytes is longer than the limit of " + std::to_string(kMaxStringBytes));
+        checkLimits(it.value(), child);
+      }
+    }
+  }
+
+  // Member keys of the object at `ptr`, in file order.
+  std::vector<std::string> members(const json& obj, const std::string& ptr) const {
+    auto it = js_.keyOrder.find(ptr);
+    if (it != js_.keyOrder.end()) return it->second;
+    std::vector<std::string> keys;
+    for (auto m = obj.begin(); m != obj.end(); ++m) keys.push_back(m.key());
+    return keys;
+  }
+
+  void checkKeys(const json& obj, const std::string& ptr, const std::string& what,
+                 std::initializer_list<const char*> allowed, const std::string& node = {}) {
+    std::string expected;
+    for (const char* a : allowed) {
+      if (!expected.empty()) expected += ", ";
+      expected += a;
+    }
+    for (const auto& k : members(obj, ptr)) {
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || k == a;
+      if (!ok)
+        diags_.error(DiagCode::UnknownField, js_.key(ptr + "/" + jsonPointerEscape(k)),
+                     "unknown field '" + k + "' in " + what + " (expected " + expected + ")", node);
+    }
+  }
+
+  void missing(const std::string& objPtr, const std::string& message, const std::string& node = {}) {
+    diags_.error(DiagCode::MissingField, js_.value(objPtr), message, node);
+  }
+
+  // The member `key` of `obj` if present and of JSON type `type` (any number type for
+  // number_float); WG004 if present with another type.
+  const json* field(const json& obj, const std::string& objPtr, const char* key, json::value_t type,
+                    const std::string& label, const std::string& node = {}) {
+    auto it = obj.find(key);
+    if (it == obj.end()) return nullptr;
+    const json& v = *it;
+    bool ok = type == json::value_t::number_float ? v.is_number() : v.type() == type;
+    if (!ok) {
+      std::string want = type == json::value_t::number_float ? "number" : jsonTypeName(json(type));
+      diags_.error(DiagCode::WrongJsonType, js_.value(objPtr + "/" + jsonPointerEscape(key)),
+                   label + " must be " + article(want) + ", found " + jsonTypeName(v), node);
+      return nullptr;
+    }
+    return &v;
+  }
+
+  bool loadVersion(const json& root, Graph& g) {
+    auto it = root.find("version");
+    const std::string expect = "this is graph format " + std::to_string(kGraphFormatVersion);
+    if (it == root.end()) {
+      diags_.error(DiagCode::UnsupportedVersion, js_.value(""), "missing \"version\": " + expect);
+      return true;
+    }
+    if (!it->is_number_integer()) {
+      diags_.error(DiagCode::UnsupportedVersion, js_.value("/version"),
+                   "\"version\" must be an integer, found " + describeValue(*it) + ": " + expect);
+      return true;
+    }
+    long long v = it->is_number_unsigned()
+                      ? static_cast<long long>(std::min<unsigned long long>(
+                            it->get<unsigned long long>(), 1ull << 62))
+                      : it->get<long long>();
+    if (v > kGraphFormatVersion) {
+      diags_.error(DiagCode::UnsupportedVersion, js_.value("/version"),
+                   "graph format version " + std::to_string(v) +
+                       " is newer than this watergraph supports (" +
+                       std::to_string(kGraphFormatVersion) + ")");
+      return false;
+    }
+    if (v < 1) {
+      diags_.error(DiagCode::UnsupportedVersion, js_.value("/version"),
+                   "graph format version " + std::to_string(v) + " does not exist: " + expect);
+      return true;
+    }
+    g.version = static_cast<int>(v);
+    return true;
+  }
+
+  void loadParameters(const json& params, Graph& g) {
+    for (const auto& name : members(params, "/parameters")) {
+      const std::string ptr = "/parameters/" + jsonPointerEscape(name);
+      const json& pv = params.at(name);
+      Parameter p;
+      p.name = name;
+      p.where = js_.key(ptr);
+      bool ok = true;  // type, default, min and max are usable for the range check
+      if (!isIdentifier(name))
+        diags_.error(DiagCode::InvalidIdentifier, p.where,
+                     "parameter name '" + name + "' is not an identifier " + kIdentifierRule);
+      if (!pv.is_object()) {
+        diags_.error(DiagCode::WrongJsonType, js_.value(ptr),
+                     "parameter '" + name + "' must be an object, found " + jsonTypeName(pv));
+        continue;
+      }
+      const std::string what = "parameter '" + name + "'";
+      checkKeys(pv, ptr, what, {"type", "default", "min", "max", "hint", "description", "static"});
+
+      bool typeOk = false;
+      if (!pv.contains("type")) {
+        missing(ptr, what + " is missing \"type\"");
+      } else if (auto* t = field(pv, ptr, "type", json::value_t::string, "'type' of " + what)) {
+        auto type = parseType(t->get<std::string>());
+        if (!type || !isFloatScalarOrVector(*type)) {
+          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/type"),
+                       what + " has type '" + t->get<std::string>() +
+                           "'; a parameter is float, vec2, vec3 or vec4");
+        } else {
+          p.type = *type;
+          typeOk = true;
+        }
+      }
+      ok = typeOk;
+      const int n = typeOk ? componentCount(p.type) : 0;
+
+      if (!pv.contains("default")) {
+        missing(ptr, what + " is missing \"default\"");
+        ok = false;
+      } else if (typeOk) {
+        const json& d = pv.at("default");
+        bool shapeOk = false;
+        if (n == 1 && d.is_number()) {
+          p.defaultValue = {d.get<double>()};
+          shapeOk = true;
+        } else if (n > 1 && d.is_array() && static_cast<int>(d.size()) == n) {
+          shapeOk = true;
+          for (const auto& e : d) shapeOk = shapeOk && e.is_number();
+          if (shapeOk)
+            for (const auto& e : d) p.defaultValue.push_back(e.get<double>());
+        }
+        if (!shapeOk) {
+          std::string shape = n == 1 ? "a number" : "an array of " + std::to_string(n) + " numbers";
+          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/default"),
+                       "the default of " + what + " must be " + shape + " for " +
+                           std::string(typeName(p.type)) + ", found " + describeValue(d));
+          ok = false;
+        }
+      }
+
+      if (auto* v = field(pv, ptr, "min", json::value_t::number_float, "'min' of " + what))
+        p.min = v->get<double>();
+      else if (pv.contains("min"))
+        ok = false;
+      if (auto* v = field(pv, ptr, "max", json::value_t::number_float, "'max' of " + what))
+        p.max = v->get<double>();
+      else if (pv.contains("max"))
+        ok = false;
+      if (p.min && p.max && *p.min > *p.max) {
+        diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/min"),
+                     "the range of " + what + " is empty: min " + formatNumber(*p.min) +
+                         " is greater than max " + formatNumber(*p.max));
+      } else if (ok && (p.min || p.max)) {
+        for (std::size_t i = 0; i < p.defaultValue.size(); ++i) {
+          double x = p.defaultValue[i];
+          if ((p.min && x < *p.min) || (p.max && x > *p.max)) {
+            std::string range = "[" + (p.min ? formatNumber(*p.min) : std::string("-inf")) + ", " +
+                                (p.max ? formatNumber(*p.max) : std::string("inf")) + "]";
+            std::string comp = p.defaultValue.size() > 1
+                                   ? " (component " + std::to_string(i) + ")"
+                                   : std::string();
+            diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/default"),
+                         "the default of " + what + " " + formatNumber(x) + comp +
+                             " lies outside its range " + range);
+            break;
+          }
+        }
+      }
+
+      if (auto* v = field(pv, ptr, "hint", json::value_t::string, "'hint' of " + what)) {
+        p.hint = v->get<std::string>();
+        if (p.hint != "color") {
+          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/hint"),
+                       "unknown hint '" + p.hint + "' on " + what + " (the only hint is \"color\")");
+        } else if (typeOk && p.type != Type::Vec3 && p.type != Type::Vec4) {
+          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/hint"),
+                       "the \"color\" hint on " + what + " needs type vec3 or vec4, not " +
+                           std::string(typeName(p.type)));
+        }
+      }
+      if (auto* v =
+              field(pv, ptr, "description", json::value_t::string, "'description' of " + what))
+        p.description = v->get<std::string>();
+      if (auto* v = field(pv, ptr, "static", json::value_t::boolean, "'static' of " + what))
+        p.isStatic = v->get<bool>();
+
+      g.parameters.push_back(std::move(p));
+    }
+  }
+
+  void loadNodes(const json& nodes, Graph& g) {
+    if (nodes.size() > kMaxNodes) {
+      diags_.error(DiagCode::LimitExceeded, js_.value("/nodes"),
+                   "the graph has " + std::to_string(nodes.size()) + " nodes; the limit is " +
+                       std::to_string(kMaxNodes));
+      return;
+    }
+    g.nodes.reserve(nodes.size());
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      const std::string ptr = "/nodes/" + std::to_string(i);
+      const json& nv = nodes[i];
+      if (!nv.is_object()) {
+        diags_.error(DiagCode::WrongJsonType, js_.value(ptr),
+                     "each node must be an object, found " + jsonTypeName(nv));
+        continue;
+      }
+      Node n;
+      n.where = js_.value(ptr);
+      std::string label;  // for diagnostics: the id when it is a valid one
+      if (!nv.contains("id")) {
+        missing(ptr, "node is missing \"id\"");
+      } else if (auto* v = field(nv, ptr, "id", json::value_t::string, "a node's 'id'")) {
+        n.id = v->get<std::string>();
+        n.idWhere = js_.value(ptr + "/id");
+        if (isIdentifier(n.id))
+          label = n.id;
+        else
+          diags_.error(DiagCode::InvalidIdentifier, n.idWhere,
+                       "node id '" + n.id + "' is not an identifier " + kIdentifierRule);
+      }
+      checkKeys(nv, ptr, "node", {"id", "type", "options", "inputs", "editor"}, label);
+      if (!nv.contains("type")) {
+        missing(ptr, "node is missing \"type\"", label);
+      } else if (auto* v = field(nv, ptr, "type", json::value_t::string, "a node's 'type'", label)) {
+        n.type = v->get<std::string>();
+        n.typeWhere = js_.value(ptr + "/type");
+      }
+      if (auto* v = field(nv, ptr, "options", json::value_t::object, "a node's 'options'", label)) {
+        for (const auto& name : members(*v, ptr + "/options")) {
+          const std::string optPtr = ptr + "/options/" + jsonPointerEscape(name);
+          n.options.push_back(NodeOption{name, v->at(name), js_.value(optPtr), js_.key(optPtr)});
+        }
+      }
+      if (auto* v = field(nv, ptr, "inputs", json::value_t::object, "a node's 'inputs'", label)) {
+        for (const auto& port : members(*v, ptr + "/inputs")) {
+          const std::string inPtr = ptr + "/inputs/" + jsonPointerEscape(port);
+          NodeInput in;
+          in.port = port;
+          in.keyWhere = js_.key(inPtr);
+          if (parseSource(v->at(port), inPtr, in.source, label, "input '" + port + "'"))
+            n.inputs.push_back(std::move(in));
+        }
+      }
+      if (auto* v = field(nv, ptr, "editor", json::value_t::object, "a node's 'editor'", label)) {
+        const std::string edPtr = ptr + "/editor";
+        checkKeys(*v, edPtr, "a node's editor position", {"x", "y"}, label);
+        std::array<double, 2> pos{0, 0};
+        bool ok = true;
+        const char* axes[2] = {"x", "y"};
+        for (int a = 0; a < 2; ++a) {
+          if (!v->contains(axes[a])) {
+            missing(edPtr, std::string("editor position is missing \"") + axes[a] + "\"", label);
+            ok = false;
+          } else if (auto* c = field(*v, edPtr, axes[a], json::value_t::number_float,
+                                     std::string("'editor.") + axes[a] + "'", label)) {
+            pos[a] = c->get<double>();
+          } else {
+            ok = false;
+          }
+        }
+        if (ok) n.editorPosition = pos;
+      }
+      g.nodes.push_back(std::move(n));
+    }
+  }
+
+  bool parseSource(const json& v, const std::string& ptr, InputSource& out, const std::string& node,
+                   const std::string& port) {
+    out.where = js_.value(ptr);
+    if (v.is_string()) {
+      const auto& s = v.get_ref<const std::string&>();
+      if (!s.empty() && s[0] == '$') {
+        std::string name = s.substr(1);
+        if (isIdentifier(name)) {
+          out.kind = InputSource::Kind::Parameter;
+          out.parameter = name;
+          return true;
+        }
+      } else {
+        auto dot = s.find('.');
+        if (dot != std::string::npos && s.find('.', dot + 1) == std::string::npos) {
+          std::string nodeId = s.substr(0, dot), portName = s.substr(dot + 1);
+          if (isIdentifier(nodeId) && isIdentifier(portName)) {
+            out.kind = InputSource::Kind::NodeOutput;
+            out.node = nodeId;
+            out.port = portName;
+            return true;
+          }
+        }
+      }
+    } else if (v.is_number()) {
+      out.kind = InputSource::Kind::Literal;
+      out.literal = {v.get<double>()};
+      return true;
+    } else if (v.is_array() && v.size() >= 2 && v.size() <= 4) {
+      bool allNumbers = true;
+      for (const auto& e : v) allNumbers = allNumbers && e.is_number();
+      if (allNumbers) {
+        out.kind = InputSource::Kind::Literal;
+        for (const auto& e : v) out.literal.push_back(e.get<double>());
+        return true;
+      }
+    }
+    diags_.error(DiagCode::InvalidReference, out.where,
+                 "invalid input " + describeValue(v) + ": " + kSourceForms, node, port);
+    return false;
+  }
+
+  void loadOutputs(const json& outputs, Graph& g) {
+    const char* expected = "(vertex: position, normal; fragment: color, alpha)";
+    struct Slot {
+      const char* stage;
+      const char* name;
+      OutputSlot slot;
+    };
+    static const Slot kSlots[] = {
+        {"vertex", "position", OutputSlot::VertexPosition},
+        {"vertex", "normal", OutputSlot::VertexNormal},
+        {"fragment", "color", OutputSlot::FragmentColor},
+        {"fragment", "alpha", OutputSlot::FragmentAlpha},
+    };
+    int connected = 0;
+    const size_t errorsBefore = diags_.errorCount();
+    for (const auto& stage : members(outputs, "/outputs")) {
+      const std::string stagePtr = "/outputs/" + jsonPointerEscape(stage);
+      if (stage != "vertex" && stage != "fragment") {
+        diags_.error(DiagCode::UnknownOutputSlot, js_.key(stagePtr),
+                     "unknown output stage '" + stage + "' " + expected);
+        continue;
+      }
+      const json& sv = outputs.at(stage);
+      if (!sv.is_object()) {
+        diags_.error(DiagCode::WrongJsonType, js_.value(stagePtr),
+                     "'outputs." + stage + "' must be an object, found " + jsonTypeName(sv));
+        continue;
+      }
+      for (const auto& name : members(sv, stagePtr)) {
+        const std::string slotPtr = stagePtr + "/" + jsonPointerEscape(name);
+        const Slot* found = nullptr;
+        for (const auto& s : kSlots)
+          if (stage == s.stage && name == s.name) found = &s;
+        if (!found) {
+          diags_.error(DiagCode::UnknownOutputSlot, js_.key(slotPtr),
+                       "unknown output slot '" + stage + "." + name + "' " + expected);
+          continue;
+        }
+        ++connected;
+        GraphOutput out;
+        out.slot = found->slot;
+        out.keyWhere = js_.key(slotPtr);
+        if (parseSource(sv.at(name), slotPtr, out.source, {},
+                        "output '" + stage + "." + name + "'"))
+          g.outputs.push_back(std::move(out));
+      }
+    }
+    std::stable_sort(g.outputs.begin(), g.outputs.end(),
+                     [](const GraphOutput& a, const GraphOutput& b) { return a.slot < b.slot; });
+    if (connected == 0 && diags_.errorCount() == errorsBefore)  // else the cause is reported
+      diags_.error(DiagCode::NoOutputs, js_.value("/outputs"), "the graph connects no outputs");
+  }
+
+  const JsonSource& js_;
+  const std::string& file_;
+  Diagnostics& diags_;
+};
+
+}  // namespace
+
+std::optional<Graph> parseGraph(std::string_view text, const std::string& file, Diagnostics& diags) {
+  if (text.size() > kMaxFileBytes) {
+    diags.error(DiagCode::LimitExceeded, SourceRef{file, 0, 0},
+                "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
+    return std::nullopt;
+  }
+  auto js = parseJsonWithPositions(text, file, diags);
+  if (!js) return std::nullopt;
+  return Loader(*js, file, diags).load();
+}
+
+std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags) {
+  SourceRef where{path, 0, 0};
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    diags.error(DiagCode::FileRead, where, "cannot read '" + path + "': " + std::strerror(EISDIR));
+    return std::nullopt;
+  }
+  errno = 0;
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) {
+    int err = errno ? errno : ENOENT;
+    diags.error(DiagCode::FileRead, where, "cannot read '" + path + "': " + std::strerror(err));
+    return std::nullopt;
+  }
+  std::string text;
+  char buf[65536];
+  bool tooBig = false;
+  while (true) {
+    std::size_t n = std::fread(buf, 1, sizeof buf, f);
+    text.append(buf, n);
+    if (text.size() > kMaxFileBytes) {
+      tooBig = true;
+      break;
+    }
+    if (n < sizeof buf) break;
+  }
+  bool readError = std::ferror(f) != 0;
+  int err = errno;
+  std::fclose(f);
+  if (tooBig) {
+    diags.error(DiagCode::LimitExceeded, where,
+                "'" + path + "' is larger than the limit of 16 MiB");
+    return std::nullopt;
+  }
+  if (readError) {
+    diags.error(DiagCode::FileRead, where,
+                "cannot read '" + path + "': " + std::strerror(err ? err : EIO));
+    return std::nullopt;
+  }
+  return parseGraph(text, path, diags);
+}
+
+}  // namespace wg

@@ -1,0 +1,315 @@
+// JSON with positions: nlohmann's SAX parser fed through a byte-counting iterator, and a
+// SAX handler that builds the DOM itself, recording where every value and key starts.
+//
+// Positions are 1-based lines and 1-based columns counted in bytes (a tab or a multi-byte
+// UTF-8 character counts as its byte length; a CR before LF is an ordinary byte).
+#include "core/json_source.h"
+
+#include <algorithm>
+#include <cstddef>
+#include <deque>
+#include <iterator>
+#include <utility>
+#include <vector>
+
+namespace wg {
+
+namespace {
+
+constexpr int kMaxDepth = 64;
+
+// An input iterator over the text that publishes how many bytes the lexer has consumed.
+class CountingIterator {
+ public:
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+
+  CountingIterator() = default;
+  CountingIterator(const char* base, const char* p, std::size_t* consumed)
+      : base_(base), p_(p), consumed_(consumed) {}
+
+  reference operator*() const { return *p_; }
+  CountingIterator& operator++() {
+    ++p_;
+    if (consumed_) *consumed_ = static_cast<std::size_t>(p_ - base_);
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const CountingIterator& o) const { return p_ == o.p_; }
+  bool operator!=(const CountingIterator& o) const { return p_ != o.p_; }
+
+ private:
+  const char* base_ = nullptr;
+  const char* p_ = nullptr;
+  std::size_t* consumed_ = nullptr;
+};
+
+// Byte offsets to line:col.
+class LineTable {
+ public:
+  explicit LineTable(std::string_view text) {
+    starts_.push_back(0);
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text[i] == '\n') starts_.push_back(i + 1);
+  }
+  SourceRef at(const std::string& file, std::size_t offset) const {
+    auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
+    std::size_t line = static_cast<std::size_t>(it - starts_.begin());  // >= 1
+    std::size_t col = offset - starts_[line - 1] + 1;
+    return SourceRef{file, static_cast<int>(line), static_cast<int>(col)};
+  }
+
+ private:
+  std::vector<std::size_t> starts_;
+};
+
+std::string cleanParseMessage(std::string what) {
+  // "[json.exception.parse_error.101] parse error at line 1, column 5: syntax error while
+  //  parsing object - unexpected end of input; expected '}'"
+  if (!what.empty() && what[0] == '[') {
+    auto close = what.find("] ");
+    if (close != std::string::npos) what = what.substr(close + 2);
+  }
+  if (what.rfind("parse error", 0) == 0) {
+    auto colon = what.find(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+  }
+  const std::string prefix = "syntax error while parsing ";
+  if (what.rfind(prefix, 0) == 0) {
+    auto dash = what.find(" - ");
+    if (dash != std::string::npos) what = "syntax error: " + what.substr(dash + 3);
+  }
+  return what;
+}
+
+class PositionSax {
+ public:
+  using number_integer_t = nlohmann::json::number_integer_t;
+  using number_unsigned_t = nlohmann::json::number_unsigned_t;
+  using number_float_t = nlohmann::json::number_float_t;
+  using string_t = nlohmann::json::string_t;
+  using binary_t = nlohmann::json::binary_t;
+
+  PositionSax(std::string_view text, const std::string& file, Diagnostics& diags, JsonSource& out,
+              const std::size_t& consumed)
+      : text_(text), file_(file), diags_(diags), out_(out), consumed_(consumed), lines_(text) {}
+
+  bool null() { return scalar(nullptr, false); }
+  bool boolean(bool v) { return scalar(v, false); }
+  bool number_integer(number_integer_t v) { return scalar(v, true); }
+  bool number_unsigned(number_unsigned_t v) { return scalar(v, true); }
+  bool number_float(number_float_t v, const string_t&) { return scalar(v, true); }
+  bool string(string_t& v) { return scalar(std::move(v), false); }
+  bool binary(binary_t&) { return true; }  // never produced by the JSON lexer
+
+  bool start_object(std::size_t) { return open(nlohmann::json::object(), false); }
+  bool start_array(std::size_t) { return open(nlohmann::json::array(), true); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+
+  bool key(string_t& k) {
+    std::size_t start = tokenStart();
+    prevEnd_ = consumed_;
+    Frame& f = stack_.back();
+    f.key = k;
+    std::string memberPtr = f.pointer + "/" + jsonPointerEscape(k);
+    SourceRef where = lines_.at(file_, start);
+    auto first = out_.keyAt.find(memberPtr);
+    if (f.value->contains(k) && first != out_.keyAt.end()) {
+      auto& d = diags_.error(DiagCode::DuplicateKey, where, "duplicate key '" + k + "'");
+      d.notes.push_back("first defined at " + std::to_string(first->second.line) + ":" +
+                        std::to_string(first->second.col));
+      f.duplicate = true;
+    } else {
+      out_.keyAt.emplace(memberPtr, where);
+      out_.keyOrder[f.pointer].push_back(k);
+      f.duplicate = false;
+    }
+    return true;
+  }
+
+  bool parse_error(std::size_t position, const std::string& lastToken,
+                   const nlohmann::detail::exception& ex) {
+    // `position` counts the bytes read, including the offending one (or end of input).
+    std::size_t offset = position > 0 ? position - 1 : 0;
+    offset = std::min(offset, text_.size());
+    SourceRef where = lines_.at(file_, offset);
+    std::string what = ex.what();
+    if (ex.id == 406) {  // out_of_range: a float literal that overflows double
+      std::size_t start = tokenStart();
+      diags_.error(DiagCode::NonFiniteLiteral, lines_.at(file_, start),
+                   "number " + lastToken + " is outside float32 range");
+      return false;
+    }
+    std::string message = cleanParseMessage(what);
+    if (what.find("ill-formed UTF-8") != std::string::npos) {
+      diags_.error(DiagCode::JsonEncoding, where,
+                   "invalid UTF-8 in a string: the file must be saved as UTF-8");
+      return false;
+    }
+    diags_.error(DiagCode::JsonSyntax, where, message);
+    return false;
+  }
+
+  bool depthExceeded() const { return depthExceeded_; }
+
+ private:
+  struct Frame {
+    nlohmann::json* value;
+    std::string pointer;
+    bool isArray;
+    std::size_t nextIndex = 0;
+    std::string key;
+    bool duplicate = false;
+  };
+
+  static bool isSkippable(char c) {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ',' || c == ':';
+  }
+
+  // The current token's first byte: the first byte after the previous token that is not
+  // whitespace or a separator.
+  std::size_t tokenStart() const {
+    std::size_t i = std::min(prevEnd_, text_.size());
+    while (i < text_.size() && isSkippable(text_[i])) ++i;
+    return i;
+  }
+
+  // Places `v` in the current container; returns it and its pointer.
+  std::pair<nlohmann::json*, std::string> place(nlohmann::json&& v, SourceRef where) {
+    if (stack_.empty()) {
+      out_.root = std::move(v);
+      out_.valueAt.emplace("", where);
+      return {&out_.root, ""};
+    }
+    Frame& f = stack_.back();
+    if (f.isArray) {
+      std::string ptr = f.pointer + "/" + std::to_string(f.nextIndex++);
+      f.value->push_back(std::move(v));
+      out_.valueAt.emplace(ptr, where);
+      return {&f.value->back(), ptr};
+    }
+    std::string ptr = f.pointer + "/" + jsonPointerEscape(f.key);
+    if (f.duplicate) {
+      // Parsed for its errors, then dropped: the first definition stays.
+      scratch_.push_back(std::move(v));
+      return {&scratch_.back(), ptr + "\x01dup"};
+    }
+    nlohmann::json& slot = (*f.value)[f.key];
+    slot = std::move(v);
+    out_.valueAt.emplace(ptr, where);
+    return {&slot, ptr};
+  }
+
+  template <typename T>
+  bool scalar(T&& v, bool isNumber) {
+    std::size_t start = tokenStart();
+    // After a number the lexer has read one byte of lookahead (unless at end of input).
+    std::size_t end = consumed_;
+    if (isNumber && end > start && end <= text_.size()) {
+      char last = text_[end - 1];
+      bool numberChar = (last >= '0' && last <= '9') || last == '.' || last == 'e' ||
+                        last == 'E' || last == '+' || last == '-';
+      if (!numberChar) --end;
+    }
+    prevEnd_ = end;
+    place(nlohmann::json(std::forward<T>(v)), lines_.at(file_, start));
+    return true;
+  }
+
+  bool open(nlohmann::json&& container, bool isArray) {
+    std::size_t start = tokenStart();
+    prevEnd_ = consumed_;
+    SourceRef where = lines_.at(file_, start);
+    if (static_cast<int>(stack_.size()) >= kMaxDepth) {
+      diags_.error(DiagCode::LimitExceeded, where,
+                   "JSON nesting is deeper than " + std::to_string(kMaxDepth) + " levels");
+      depthExceeded_ = true;
+      return false;
+    }
+    auto [ptr, pointer] = place(std::move(container), where);
+    stack_.push_back(Frame{ptr, pointer, isArray, 0, {}, false});
+    return true;
+  }
+
+  bool close() {
+    prevEnd_ = consumed_;
+    stack_.pop_back();
+    return true;
+  }
+
+  std::string_view text_;
+  const std::string& file_;
+  Diagnostics& diags_;
+  JsonSource& out_;
+  const std::size_t& consumed_;
+  LineTable lines_;
+  std::size_t prevEnd_ = 0;
+  std::vector<Frame> stack_;
+  std::deque<nlohmann::json> scratch_;  // values of duplicate keys (stable addresses)
+  bool depthExceeded_ = false;
+};
+
+}  // namespace
+
+SourceRef JsonSource::value(const std::string& pointer) const {
+  auto it = valueAt.find(pointer);
+  if (it != valueAt.end()) return it->second;
+  SourceRef r;
+  if (!valueAt.empty()) r.file = valueAt.begin()->second.file;
+  return r;
+}
+
+SourceRef JsonSource::key(const std::string& pointer) const {
+  auto it = keyAt.find(pointer);
+  if (it != keyAt.end()) return it->second;
+  SourceRef r;
+  if (!valueAt.empty()) r.file = valueAt.begin()->second.file;
+  return r;
+}
+
+std::string jsonPointerEscape(std::string_view key) {
+  std::string out;
+  out.reserve(key.size());
+  for (char c : key) {
+    if (c == '~')
+      out += "~0";
+    else if (c == '/')
+      out += "~1";
+    else
+      out += c;
+  }
+  return out;
+}
+
+std::optional<JsonSource> parseJsonWithPositions(std::string_view text, const std::string& file,
+                                                 Diagnostics& diags) {
+  if (text.size() >= 3 && static_cast<unsigned char>(text[0]) == 0xEF &&
+      static_cast<unsigned char>(text[1]) == 0xBB && static_cast<unsigned char>(text[2]) == 0xBF) {
+    diags.error(DiagCode::JsonEncoding, SourceRef{file, 1, 1},
+                "the file starts with a UTF-8 byte-order mark; save it without one");
+    return std::nullopt;
+  }
+  size_t errorsBefore = diags.errorCount();
+  JsonSource out;
+  std::size_t consumed = 0;
+  PositionSax sax(text, file, diags, out, consumed);
+  const char* base = text.data();
+  CountingIterator first(base, base, &consumed);
+  CountingIterator last(base, base + text.size(), nullptr);
+  bool ok = nlohmann::json::sax_parse(first, last, &sax);
+  if (!ok && diags.errorCount() == errorsBefore) {
+    diags.error(DiagCode::JsonSyntax, SourceRef{file, 1, 1}, "the file could not be parsed as JSON");
+  }
+  if (!ok || diags.errorCount() > errorsBefore) return std::nullopt;
+  return out;
+}
+
+}  // namespace wg

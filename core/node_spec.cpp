@@ -1,0 +1,97 @@
+#include "core/node_spec.h"
+
+#include <stdexcept>
+
+#include "core/number_format.h"
+
+namespace wg {
+
+std::string_view builtinName(Builtin b) {
+  switch (b) {
+    case Builtin::Uv: return "uv";
+    case Builtin::WorldPosition: return "world_position";
+    case Builtin::Normal: return "normal";
+    case Builtin::ViewDirection: return "view_direction";
+    case Builtin::CameraPosition: return "camera_position";
+    case Builtin::Time: return "time";
+    case Builtin::ScreenUv: return "screen_uv";
+  }
+  return "?";
+}
+
+Type builtinType(Builtin b) {
+  switch (b) {
+    case Builtin::Uv:
+    case Builtin::ScreenUv: return Type::Vec2;
+    case Builtin::Time: return Type::Float;
+    default: return Type::Vec3;
+  }
+}
+
+const Value& EvalEnvironment::builtin(Builtin b) const {
+  switch (b) {
+    case Builtin::Uv: return uv;
+    case Builtin::WorldPosition: return worldPosition;
+    case Builtin::Normal: return normal;
+    case Builtin::ViewDirection: return viewDirection;
+    case Builtin::CameraPosition: return cameraPosition;
+    case Builtin::Time: return time;
+    case Builtin::ScreenUv: return screenUv;
+  }
+  return time;
+}
+
+static int indexByName(const std::vector<PortSpec>& ports, std::string_view name) {
+  for (size_t i = 0; i < ports.size(); ++i)
+    if (ports[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int NodeSpec::inputIndex(std::string_view name) const { return indexByName(inputs, name); }
+int NodeSpec::outputIndex(std::string_view name) const { return indexByName(outputs, name); }
+int NodeSpec::optionIndex(std::string_view name) const {
+  for (size_t i = 0; i < options.size(); ++i)
+    if (options[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+int EmitContext::inputIndex(std::string_view port) const {
+  int i = spec().inputIndex(port);
+  if (i < 0) throw std::logic_error("node '" + spec().type + "' has no input '" + std::string(port) + "'");
+  return i;
+}
+
+std::string EmitContext::input(std::string_view port) { return input(inputIndex(port)); }
+
+std::string EmitContext::literal(double x) const { return formatGlslFloat(x); }
+
+std::string EmitContext::literal(const Value& v) const {
+  if (v.size() == 1) return formatGlslFloat(v[0]);
+  std::string s(typeName(v.type));
+  s += '(';
+  for (int i = 0; i < v.size(); ++i) {
+    if (i) s += ", ";
+    s += formatGlslFloat(v[i]);
+  }
+  return s + ')';
+}
+
+std::string EmitContext::call(std::string_view fn, std::initializer_list<std::string> args) {
+  std::string s(fn);
+  s += '(';
+  bool first = true;
+  for (const auto& a : args) {
+    if (!first) s += ", ";
+    s += a;
+    first = false;
+  }
+  return s + ')';
+}
+
+const Value& EvalContext::input(std::string_view port) const {
+  int i = spec().inputIndex(port);
+  if (i < 0) throw std::logic_error("node '" + spec().type + "' has no input '" + std::string(port) + "'");
+  return input(i);
+}
+
+}  // namespace wg

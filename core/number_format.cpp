@@ -1,0 +1,25 @@
+#include "core/number_format.h"
+
+#include <charconv>
+#include <cmath>
+
+namespace wg {
+
+std::string formatNumber(double x) {
+  if (x == 0.0) return "0";  // also folds -0 to 0, so fmt never writes "-0"
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, x);
+  return std::string(buf, res.ptr);
+}
+
+std::string formatGlslFloat(double x) {
+  float f = static_cast<float>(x);
+  if (f == 0.0f) return "0.0";
+  char buf[64];
+  auto res = std::to_chars(buf, buf + sizeof buf, f);
+  std::string s(buf, res.ptr);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+}  // namespace wg

@@ -1,0 +1,88 @@
+#pragma once
+// The typed form of a graph that codegen transforms: operations in topological order,
+// each a node type applied to typed values. resolve builds it; every codegen pass takes
+// one Program and leaves another.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/graph.h"
+#include "core/node_spec.h"
+#include "core/source_ref.h"
+#include "core/value.h"
+
+namespace wg {
+
+struct ValueRef {
+  enum class Kind { None, Op, Param, Const, Builtin };
+  Kind kind = Kind::None;
+  int index = -1;  // Op: op index; Param: parameter index; Builtin: Builtin enumerator
+  int port = 0;    // Op: output port
+  Value constant;  // Const
+
+  static ValueRef op(int index, int port) { return {Kind::Op, index, port, {}}; }
+  static ValueRef param(int index) { return {Kind::Param, index, 0, {}}; }
+  static ValueRef constant_(Value v) { return {Kind::Const, -1, 0, v}; }
+  static ValueRef builtin(Builtin b) { return {Kind::Builtin, static_cast<int>(b), 0, {}}; }
+  bool operator==(const ValueRef& o) const {
+    return kind == o.kind && index == o.index && port == o.port &&
+           (kind != Kind::Const || constant == o.constant);
+  }
+};
+
+struct Op {
+  const NodeSpec* spec = nullptr;
+  std::string nodeId;               // the graph node it came from (for messages, manifest)
+  SourceRef where;
+  nlohmann::json options;           // complete: defaults filled in
+  std::vector<ValueRef> inputs;     // one per spec input port
+  std::vector<Type> inputTypes;     // the port types (after unification)
+  std::vector<Type> outputTypes;
+  std::vector<std::string> mergedIds;  // node ids CSE folded into this op
+  unsigned stage = 0;               // set by the stage pass: kVertexStage / kFragmentStage
+};
+
+struct ProgramParameter {
+  std::string name;
+  Type type = Type::Float;
+  Value defaultValue;
+  std::optional<double> min, max;
+  std::string hint;
+  std::string description;
+  bool isStatic = false;
+  SourceRef where;
+};
+
+struct ProgramOutput {
+  OutputSlot slot{};
+  ValueRef value;
+  Type type = Type::Invalid;
+  SourceRef where;
+};
+
+// A node or parameter that did not reach the output, and why (for the manifest).
+struct Removal {
+  std::string what;    // node id or "$param"
+  std::string reason;  // "unreachable", "folded", "merged into 'x'", "static"
+};
+
+struct Program {
+  std::string graphName;
+  std::string description;
+  std::string file;
+  int totalNodes = 0;  // nodes in the graph file
+  std::vector<ProgramParameter> parameters;
+  std::vector<Op> ops;  // topological: inputs come before their users
+  std::vector<ProgramOutput> outputs;
+  std::vector<Removal> removed;
+  // Set by the stage pass: op outputs computed in the vertex stage and read by the
+  // fragment stage through a varying.
+  std::vector<ValueRef> varyings;
+
+  const ProgramOutput* output(OutputSlot slot) const;
+  Type typeOf(const ValueRef& v) const;
+};
+
+}  // namespace wg

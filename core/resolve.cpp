@@ -1,0 +1,481 @@
+#include "core/resolve.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+#include "core/number_format.h"
+#include "core/suggest.h"
+
+namespace wg {
+namespace {
+
+std::string inputLabel(const std::string& port) { return "input '" + port + "'"; }
+std::string optionLabel(const std::string& name) { return "option '" + name + "'"; }
+
+std::string describeSource(const InputSource& s) {
+  switch (s.kind) {
+    case InputSource::Kind::NodeOutput: return "'" + s.node + "." + s.port + "'";
+    case InputSource::Kind::Parameter: return "'$" + s.parameter + "'";
+    case InputSource::Kind::Literal: return "the literal";
+  }
+  return "?";
+}
+
+Value literalValue(const std::vector<double>& xs) {
+  Value v = Value::ofType(floatVector(static_cast<int>(xs.size())));
+  for (size_t i = 0; i < xs.size(); ++i) v[static_cast<int>(i)] = xs[i];
+  return v;
+}
+
+// Checks one option value against its spec; returns "" or the reason it is refused.
+std::string checkOption(const OptionSpec& o, const nlohmann::json& v) {
+  switch (o.kind) {
+    case OptionSpec::Kind::Enum: {
+      if (!v.is_string()) return "must be one of its choices (a string)";
+      auto s = v.get<std::string>();
+      if (std::find(o.choices.begin(), o.choices.end(), s) == o.choices.end()) {
+        std::string list;
+        for (const auto& c : o.choices) list += (list.empty() ? "" : ", ") + c;
+        return "'" + s + "' is not one of: " + list + didYouMean(s, o.choices);
+      }
+      return "";
+    }
+    case OptionSpec::Kind::Number:
+    case OptionSpec::Kind::Integer: {
+      if (!v.is_number()) return "must be a number";
+      double x = v.get<double>();
+      if (!std::isfinite(x)) return "must be finite";
+      if (o.kind == OptionSpec::Kind::Integer && std::floor(x) != x) return "must be a whole number";
+      if (o.min && x < *o.min) return formatNumber(x) + " is below the minimum " + formatNumber(*o.min);
+      if (o.max && x > *o.max) return formatNumber(x) + " is above the maximum " + formatNumber(*o.max);
+      return "";
+    }
+    case OptionSpec::Kind::Bool:
+      return v.is_boolean() ? "" : "must be true or false";
+    case OptionSpec::Kind::Json:
+      return o.validate ? o.validate(v) : "";
+  }
+  return "";
+}
+
+class Resolver {
+ public:
+  Resolver(const Graph& g, const Registry& r, Diagnostics& d) : graph_(g), registry_(r), diags_(d) {}
+
+  std::optional<Program> run() {
+    size_t errorsBefore = diags_.errorCount();
+    program_.graphName = graph_.name;
+    program_.description = graph_.description;
+    program_.file = graph_.file;
+    program_.totalNodes = static_cast<int>(graph_.nodes.size());
+    collectParameters();
+    indexNodes();
+    lookUpSpecs();
+    std::vector<int> order = topologicalOrder();
+    if (diags_.errorCount() > errorsBefore) return std::nullopt;
+    buildOps(order);
+    resolveOutputs();
+    if (diags_.errorCount() > errorsBefore) return std::nullopt;
+    return std::move(program_);
+  }
+
+ private:
+  void collectParameters() {
+    for (const auto& p : graph_.parameters) {
+      ProgramParameter pp;
+      pp.name = p.name;
+      pp.type = p.type;
+      pp.defaultValue = literalValue(p.defaultValue);
+      if (pp.defaultValue.type != p.type) pp.defaultValue = Value::ofType(p.type, p.defaultValue.empty() ? 0 : p.defaultValue[0]);
+      pp.min = p.min;
+      pp.max = p.max;
+      pp.hint = p.hint;
+      pp.description = p.description;
+      pp.isStatic = p.isStatic;
+      pp.where = p.where;
+      paramIndex_[p.name] = static_cast<int>(program_.parameters.size());
+      program_.parameters.push_back(std::move(pp));
+    }
+  }
+
+  void indexNodes() {
+    for (size_t i = 0; i < graph_.nodes.size(); ++i) {
+      const Node& n = graph_.nodes[i];
+      auto [it, inserted] = nodeIndex_.emplace(n.id, static_cast<int>(i));
+      if (!inserted) {
+        const Node& first = graph_.nodes[static_cast<size_t>(it->second)];
+        auto& d = diags_.error(DiagCode::DuplicateNodeId, n.idWhere, "duplicate node id '" + n.id + "'", n.id);
+        d.notes.push_back("first defined at " + std::to_string(first.idWhere.line) + ":" +
+                          std::to_string(first.idWhere.col));
+      }
+    }
+  }
+
+  void lookUpSpecs() {
+    specs_.assign(graph_.nodes.size(), nullptr);
+    std::vector<std::string> typeNames;
+    for (const NodeSpec* s : registry_.all()) typeNames.push_back(s->type);
+    for (size_t i = 0; i < graph_.nodes.size(); ++i) {
+      const Node& n = graph_.nodes[i];
+      const NodeSpec* spec = registry_.find(n.type);
+      if (!spec) {
+        diags_.error(DiagCode::UnknownNodeType, n.typeWhere,
+                     "unknown node type '" + n.type + "'" + didYouMean(n.type, typeNames), n.id);
+        continue;
+      }
+      specs_[i] = spec;
+      std::vector<std::string> inputNames;
+      for (const auto& p : spec->inputs) inputNames.push_back(p.name);
+      for (const auto& in : n.inputs)
+        if (spec->inputIndex(in.port) < 0)
+          diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
+                       "node type '" + spec->type + "' has no input '" + in.port + "'" +
+                           didYouMean(in.port, inputNames),
+                       n.id, inputLabel(in.port));
+      std::vector<std::string> optionNames;
+      for (const auto& o : spec->options) optionNames.push_back(o.name);
+      for (const auto& opt : n.options) {
+        int oi = spec->optionIndex(opt.name);
+        if (oi < 0) {
+          diags_.error(DiagCode::UnknownOption, opt.keyWhere,
+                       "node type '" + spec->type + "' has no option '" + opt.name + "'" +
+                           didYouMean(opt.name, optionNames),
+                       n.id, optionLabel(opt.name));
+          continue;
+        }
+        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value);
+        if (!why.empty())
+          diags_.error(DiagCode::InvalidOption, opt.where, "option '" + opt.name + "' " + why, n.id,
+                       optionLabel(opt.name));
+      }
+    }
+  }
+
+  // Checks a reference to another node and returns its index, or -1 after reporting.
+  int referencedNode(const InputSource& s, const std::string& user, const std::string& label) {
+    auto it = nodeIndex_.find(s.node);
+    if (it == nodeIndex_.end()) {
+      std::vector<std::string> ids;
+      for (const auto& n : graph_.nodes) ids.push_back(n.id);
+      diags_.error(DiagCode::DanglingReference, s.where,
+                   "no node with id '" + s.node + "'" + didYouMean(s.node, ids), user, label);
+      return -1;
+    }
+    const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
+    if (spec && spec->outputIndex(s.port) < 0) {
+      std::string outs;
+      std::vector<std::string> names;
+      for (const auto& o : spec->outputs) {
+        outs += (outs.empty() ? "" : ", ") + o.name;
+        names.push_back(o.name);
+      }
+      diags_.error(DiagCode::UnknownOutputPort, s.where,
+                   "node '" + s.node + "' (" + spec->type + ") has no output '" + s.port +
+                       "'; its outputs are: " + outs + didYouMean(s.port, names),
+                   user, label);
+      return -1;
+    }
+    return it->second;
+  }
+
+  // Kahn's algorithm over node references: iterative, so a 100,000-node chain needs no
+  // deep recursion. Nodes left over lie on or behind a cycle; one cycle is named.
+  std::vector<int> topologicalOrder() {
+    size_t n = graph_.nodes.size();
+    std::vector<std::vector<int>> users(n);
+    std::vector<int> pending(n, 0);
+    std::vector<std::vector<int>> deps(n);
+    for (size_t i = 0; i < n; ++i) {
+      const Node& node = graph_.nodes[i];
+      for (const auto& in : node.inputs) {
+        if (in.source.kind == InputSource::Kind::Parameter) {
+          if (!paramIndex_.count(in.source.parameter)) {
+            std::vector<std::string> names;
+            for (const auto& p : graph_.parameters) names.push_back(p.name);
+            diags_.error(DiagCode::UnknownParameter, in.source.where,
+                         "no parameter named '" + in.source.parameter + "'" + didYouMean(in.source.parameter, names),
+                         node.id, inputLabel(in.port));
+          }
+          continue;
+        }
+        if (in.source.kind != InputSource::Kind::NodeOutput) continue;
+        int dep = referencedNode(in.source, node.id, inputLabel(in.port));
+        if (dep < 0) continue;
+        if (static_cast<size_t>(dep) == i) {
+          diags_.error(DiagCode::Cycle, in.source.where, "node '" + node.id + "' refers to itself", node.id,
+                       inputLabel(in.port));
+          continue;
+        }
+        deps[i].push_back(dep);
+        users[static_cast<size_t>(dep)].push_back(static_cast<int>(i));
+        ++pending[i];
+      }
+    }
+    std::vector<int> order;
+    order.reserve(n);
+    std::vector<int> ready;
+    for (size_t i = n; i-- > 0;)
+      if (pending[i] == 0) ready.push_back(static_cast<int>(i));
+    // Pop the lowest index first so the order follows the file where it can.
+    std::vector<bool> done(n, false);
+    while (!ready.empty()) {
+      int i = ready.back();
+      ready.pop_back();
+      order.push_back(i);
+      done[static_cast<size_t>(i)] = true;
+      for (int u : users[static_cast<size_t>(i)])
+        if (--pending[static_cast<size_t>(u)] == 0) ready.push_back(u);
+    }
+    if (order.size() < n) reportCycle(deps, done);
+    return order;
+  }
+
+  void reportCycle(const std::vector<std::vector<int>>& deps, const std::vector<bool>& done) {
+    // Walk dependencies among unfinished nodes until one repeats: that closes a cycle.
+    size_t start = 0;
+    while (start < done.size() && done[start]) ++start;
+    std::vector<int> walk;
+    std::unordered_map<int, size_t> seenAt;
+    int cur = static_cast<int>(start);
+    while (!seenAt.count(cur)) {
+      seenAt[cur] = walk.size();
+      walk.push_back(cur);
+      int next = -1;
+      for (int d : deps[static_cast<size_t>(cur)])
+        if (!done[static_cast<size_t>(d)]) {
+          next = d;
+          break;
+        }
+      if (next < 0) return;  // cannot happen: an unfinished node has an unfinished dependency
+      cur = next;
+    }
+    std::vector<int> cycle(walk.begin() + static_cast<long>(seenAt[cur]), walk.end());
+    // Name the cycle in data-flow order, starting at its first node in the file.
+    std::reverse(cycle.begin(), cycle.end());
+    auto first = std::min_element(cycle.begin(), cycle.end());
+    std::rotate(cycle.begin(), first, cycle.end());
+    std::string path;
+    for (int i : cycle) path += "'" + graph_.nodes[static_cast<size_t>(i)].id + "' -> ";
+    path += "'" + graph_.nodes[static_cast<size_t>(cycle.front())].id + "'";
+    const Node& at = graph_.nodes[static_cast<size_t>(cycle.front())];
+    diags_.error(DiagCode::Cycle, at.where, "the nodes form a cycle: " + path, at.id);
+  }
+
+  // The type a source provides, or Invalid after reporting.
+  std::optional<ValueRef> sourceRef(const InputSource& s) {
+    switch (s.kind) {
+      case InputSource::Kind::Literal: return ValueRef::constant_(literalValue(s.literal));
+      case InputSource::Kind::Parameter: {
+        auto it = paramIndex_.find(s.parameter);
+        if (it == paramIndex_.end()) return std::nullopt;
+        return ValueRef::param(it->second);
+      }
+      case InputSource::Kind::NodeOutput: {
+        auto it = opOfNode_.find(s.node);
+        if (it == opOfNode_.end()) return std::nullopt;
+        const Op& op = program_.ops[static_cast<size_t>(it->second)];
+        int port = op.spec->outputIndex(s.port);
+        if (port < 0) return std::nullopt;
+        return ValueRef::op(it->second, port);
+      }
+    }
+    return std::nullopt;
+  }
+
+  bool existsForItsInputs(const ValueRef& ref, const InputSource& s, const std::string& user, const std::string& label) {
+    if (ref.kind != ValueRef::Kind::Op || program_.typeOf(ref) != Type::Invalid) return true;
+    const Op& op = program_.ops[static_cast<size_t>(ref.index)];
+    std::string inputs;
+    for (Type t : op.inputTypes) inputs += (inputs.empty() ? "" : ", ") + std::string(typeName(t));
+    diags_.error(DiagCode::UnknownOutputPort, s.where,
+                 "node '" + s.node + "' (" + op.spec->type + ") has no output '" + s.port + "' for its input type " + inputs,
+                 user, label);
+    return false;
+  }
+
+  void buildOps(const std::vector<int>& order) {
+    for (int ni : order) {
+      const Node& node = graph_.nodes[static_cast<size_t>(ni)];
+      const NodeSpec* spec = specs_[static_cast<size_t>(ni)];
+      if (!spec) continue;
+      Op op;
+      op.spec = spec;
+      op.nodeId = node.id;
+      op.where = node.where;
+      op.options = nlohmann::json::object();
+      for (const auto& o : spec->options) op.options[o.name] = o.defaultValue;
+      for (const auto& o : node.options)
+        if (spec->optionIndex(o.name) >= 0) op.options[o.name] = o.value;
+
+      size_t nin = spec->inputs.size();
+      op.inputs.assign(nin, ValueRef{});
+      std::vector<Type> sourceTypes(nin, Type::Invalid);
+      std::vector<const NodeInput*> given(nin, nullptr);
+      bool ok = true;
+      for (const auto& in : node.inputs) {
+        int pi = spec->inputIndex(in.port);
+        if (pi < 0) continue;
+        given[static_cast<size_t>(pi)] = &in;
+        auto ref = sourceRef(in.source);
+        if (!ref) {
+          ok = false;  // already reported (dangling, unknown parameter, bad upstream node)
+          continue;
+        }
+        if (!existsForItsInputs(*ref, in.source, node.id, inputLabel(in.port))) {
+          ok = false;
+          continue;
+        }
+        op.inputs[static_cast<size_t>(pi)] = *ref;
+        sourceTypes[static_cast<size_t>(pi)] = program_.typeOf(*ref);
+      }
+      for (size_t pi = 0; pi < nin; ++pi) {
+        if (given[pi]) continue;
+        const PortSpec& port = spec->inputs[pi];
+        if (port.defaultValue) {
+          op.inputs[pi] = ValueRef::constant_(*port.defaultValue);
+          sourceTypes[pi] = port.defaultValue->type;
+        } else if (port.defaultBuiltin) {
+          op.inputs[pi] = ValueRef::builtin(*port.defaultBuiltin);
+          sourceTypes[pi] = builtinType(*port.defaultBuiltin);
+        } else {
+          diags_.error(DiagCode::MissingInput, node.where,
+                       "required input '" + port.name + "' of " + spec->type + " is not connected", node.id,
+                       inputLabel(port.name));
+          ok = false;
+        }
+      }
+      if (!ok) continue;
+      if (!typeOp(op, node, sourceTypes, given)) continue;
+      opOfNode_[node.id] = static_cast<int>(program_.ops.size());
+      program_.ops.push_back(std::move(op));
+    }
+  }
+
+  SourceRef portWhere(const Node& node, const NodeInput* given) const {
+    return given ? given->source.where : node.where;
+  }
+
+  bool typeOp(Op& op, const Node& node, const std::vector<Type>& sourceTypes,
+              const std::vector<const NodeInput*>& given) {
+    const NodeSpec& spec = *op.spec;
+    size_t nin = spec.inputs.size();
+    op.inputTypes.assign(nin, Type::Invalid);
+    op.outputTypes.assign(spec.outputs.size(), Type::Invalid);
+
+    // Gen ports: one float-or-vector type for the node; floats splat to it.
+    Type gen = Type::Float;
+    int genFrom = -1;
+    for (size_t i = 0; i < nin; ++i) {
+      if (spec.inputs[i].kind != PortKind::Gen) continue;
+      Type t = sourceTypes[i];
+      if (!isFloatScalarOrVector(t)) {
+        mismatch(node, given[i], spec.inputs[i].name,
+                 "input '" + spec.inputs[i].name + "' takes float, vec2, vec3 or vec4, but " +
+                     sourceName(given[i]) + " is " + std::string(typeName(t)));
+        return false;
+      }
+      if (t == Type::Float) continue;
+      if (gen == Type::Float) {
+        gen = t;
+        genFrom = static_cast<int>(i);
+      } else if (t != gen) {
+        mismatch(node, given[i], spec.inputs[i].name,
+                 "input '" + spec.inputs[i].name + "' is " + std::string(typeName(t)) + " but input '" +
+                     spec.inputs[static_cast<size_t>(genFrom)].name + "' is " + std::string(typeName(gen)) +
+                     "; only a float splats to a vector");
+        return false;
+      }
+    }
+    for (size_t i = 0; i < nin; ++i) {
+      const PortSpec& p = spec.inputs[i];
+      op.inputTypes[i] = p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? gen : sourceTypes[i];
+    }
+    for (size_t i = 0; i < spec.outputs.size(); ++i) {
+      const PortSpec& p = spec.outputs[i];
+      op.outputTypes[i] = p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? gen : Type::Invalid;
+    }
+    if (spec.infer) {
+      InferContext ctx{spec, op.options, op.inputTypes, op.outputTypes, {}, -1};
+      spec.infer(ctx);
+      if (!ctx.error.empty()) {
+        const NodeInput* at = ctx.errorInput >= 0 ? given[static_cast<size_t>(ctx.errorInput)] : nullptr;
+        std::string label = ctx.errorInput >= 0 ? spec.inputs[static_cast<size_t>(ctx.errorInput)].name : "";
+        mismatch(node, at, label, ctx.error);
+        return false;
+      }
+      op.inputTypes = ctx.inputTypes;
+      op.outputTypes = ctx.outputTypes;
+    }
+    for (size_t i = 0; i < nin; ++i) {
+      if (!implicitlyConvertible(sourceTypes[i], op.inputTypes[i])) {
+        mismatch(node, given[i], spec.inputs[i].name,
+                 "input '" + spec.inputs[i].name + "' expects " + std::string(typeName(op.inputTypes[i])) + ", but " +
+                     sourceName(given[i]) + " is " + std::string(typeName(sourceTypes[i])));
+        return false;
+      }
+    }
+    // infer may leave an output Invalid: it does not exist for these inputs (split.w of a
+    // vec3); referring to it is reported where the reference is.
+    if (!spec.infer)
+      for (size_t i = 0; i < op.outputTypes.size(); ++i)
+        if (op.outputTypes[i] == Type::Invalid)
+          throw std::logic_error("node spec '" + spec.type + "' left output '" + spec.outputs[i].name + "' untyped");
+    return true;
+  }
+
+  static std::string sourceName(const NodeInput* given) {
+    return given ? describeSource(given->source) : std::string("its default");
+  }
+
+  void mismatch(const Node& node, const NodeInput* given, const std::string& port, const std::string& message) {
+    diags_.error(DiagCode::TypeMismatch, portWhere(node, given), message, node.id,
+                 port.empty() ? std::string() : inputLabel(port));
+  }
+
+  void resolveOutputs() {
+    for (const auto& out : graph_.outputs) {
+      std::string label = "output '" + std::string(outputSlotName(out.slot)) + "'";
+      if (out.source.kind == InputSource::Kind::NodeOutput) {
+        if (referencedNode(out.source, "", label) < 0) continue;
+      } else if (out.source.kind == InputSource::Kind::Parameter && !paramIndex_.count(out.source.parameter)) {
+        diags_.error(DiagCode::UnknownParameter, out.source.where,
+                     "no parameter named '" + out.source.parameter + "'", "", label);
+        continue;
+      }
+      auto ref = sourceRef(out.source);
+      if (!ref) continue;  // the node itself failed and was reported
+      if (!existsForItsInputs(*ref, out.source, "", label)) continue;
+      Type want = out.slot == OutputSlot::FragmentAlpha ? Type::Float : Type::Vec3;
+      Type got = program_.typeOf(*ref);
+      if (!implicitlyConvertible(got, want)) {
+        diags_.error(DiagCode::TypeMismatch, out.source.where,
+                     label + " expects " + std::string(typeName(want)) + ", but " + describeSource(out.source) +
+                         " is " + std::string(typeName(got)),
+                     out.source.kind == InputSource::Kind::NodeOutput ? out.source.node : "", label);
+        continue;
+      }
+      program_.outputs.push_back({out.slot, *ref, want, out.source.where});
+    }
+    std::sort(program_.outputs.begin(), program_.outputs.end(),
+              [](const ProgramOutput& a, const ProgramOutput& b) { return a.slot < b.slot; });
+  }
+
+  const Graph& graph_;
+  const Registry& registry_;
+  Diagnostics& diags_;
+  Program program_;
+  std::vector<const NodeSpec*> specs_;
+  std::unordered_map<std::string, int> nodeIndex_;
+  std::unordered_map<std::string, int> paramIndex_;
+  std::unordered_map<std::string, int> opOfNode_;
+};
+
+}  // namespace
+
+std::optional<Program> resolveGraph(const Graph& graph, const Registry& registry, Diagnostics& diags) {
+  return Resolver(graph, registry, diags).run();
+}
+
+}  // namespace wg

@@ -1,0 +1,16 @@
+#pragma once
+// Graph -> Program: node types looked up, options checked and completed, references
+// resolved, cycles found, types inferred and checked. Every problem becomes a
+// diagnostic naming the node and port; the Program is returned only when there are none.
+#include <optional>
+
+#include "core/diagnostic.h"
+#include "core/graph.h"
+#include "core/program.h"
+#include "core/registry.h"
+
+namespace wg {
+
+std::optional<Program> resolveGraph(const Graph& graph, const Registry& registry, Diagnostics& diags);
+
+}  // namespace wg

@@ -1,0 +1,96 @@
+// fresnel: how much of the light the water surface reflects, by viewing angle. Models:
+// `schlick` (seed 002, F0 = 0.02), `exact` dielectric Fresnel with an index of refraction,
+// and `power` (seed 000's (N.V)^strength and seed 003's (1 - N.V)^strength). Seen from
+// below (`water_to_air`), light beyond the critical angle is totally reflected.
+#include <cmath>
+
+#include "nodes/eval_math.h"
+#include "nodes/fresnel_reference.h"
+#include "nodes/node_library.h"
+#include "nodes/port_builders.h"
+
+namespace wg::nodes {
+
+NodeSpec fresnelNode() {
+  NodeSpec s;
+  s.type = "fresnel";
+  s.family = "optics";
+  s.summary = "Fresnel reflectance of the water surface by viewing angle (and its complement, the transmittance).";
+  s.formula =
+      "c = clamp(dot(N, V), 0, 1). schlick: F = F0 + (1 - F0)(1 - c)^5, from below with the transmitted cosine "
+      "(F = 1 past the critical angle). exact: F = (Rs^2 + Rp^2) / 2 with Rs = (n1 c - n2 ct)/(n1 c + n2 ct), "
+      "Rp = (n1 ct - n2 c)/(n1 ct + n2 c), ct = sqrt(1 - (n1/n2)^2 (1 - c^2)), F = 1 under total internal "
+      "reflection. power: F = 1 - c^strength (form cos, seed 000) or (1 - c)^strength (form one_minus_cos, "
+      "seed 003). transmittance = 1 - F.";
+  s.seed = "000 (power, strength 2), 002 (Schlick, F0 = 0.02), 003 (power of 1 - N.V)";
+  s.cost = "schlick ~6 ALU; exact ~20 ALU and a sqrt; power: exp2 + log2";
+  s.inputs = {
+      ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "unit surface normal facing the viewer"),
+      ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection, "unit vector from the surface to the viewer"),
+      ports::fixed("f0", Type::Float, Value::scalar(0.02), "reflectance at normal incidence (schlick)"),
+      ports::fixed("strength", Type::Float, Value::scalar(2.0), "exponent of the power model"),
+  };
+  s.outputs = {ports::fixed("reflectance", Type::Float, "F, in [0, 1]"),
+               ports::fixed("transmittance", Type::Float, "1 - F")};
+  s.options = {
+      ports::choice("model", {"schlick", "exact", "power"}, "schlick", "which formula"),
+      ports::choice("direction", {"air_to_water", "water_to_air"}, "air_to_water",
+                    "the viewer's medium: from below, total internal reflection past the critical angle "
+                    "(schlick, exact)"),
+      ports::number("ior", 1.333, 1.0, 3.0, "index of refraction of water relative to air"),
+      ports::choice("power_form", {"cos", "one_minus_cos"}, "cos",
+                    "power model: 1 - (N.V)^strength (seed 000) or (1 - N.V)^strength (seed 003)"),
+  };
+  s.emit = [](EmitContext& ctx) {
+    std::string model = ctx.option("model").get<std::string>();
+    bool below = ctx.option("direction").get<std::string>() == "water_to_air";
+    double ior = ctx.option("ior").get<double>();
+    std::string c = ctx.temporary(Type::Float, EmitContext::call("wg_cos_incidence", {ctx.input("normal"), ctx.input("view")}));
+    std::string f;
+    if (model == "schlick") {
+      f = below ? EmitContext::call("wg_fresnel_schlick_from_below", {c, ctx.input("f0"), ctx.literal(ior)})
+                : EmitContext::call("wg_fresnel_schlick", {c, ctx.input("f0")});
+    } else if (model == "exact") {
+      f = below ? EmitContext::call("wg_fresnel_exact", {c, ctx.literal(ior), "1.0"})
+                : EmitContext::call("wg_fresnel_exact", {c, "1.0", ctx.literal(ior)});
+    } else {
+      bool rim = ctx.option("power_form").get<std::string>() == "one_minus_cos";
+      f = EmitContext::call(rim ? "wg_fresnel_power_rim" : "wg_fresnel_power_cos", {c, ctx.input("strength")});
+    }
+    std::string r = ctx.temporary(Type::Float, f);
+    ctx.output(0, r);
+    ctx.output(1, "(1.0 - " + r + ")");
+  };
+  s.eval = [](EvalContext& ctx) {
+    double c = glsl::saturate(glsl::dot(ctx.input("normal"), ctx.input("view")));
+    FresnelSetup setup{ctx.option("model").get<std::string>(), ctx.option("direction").get<std::string>() == "water_to_air",
+                       ctx.option("ior").get<double>(), ctx.option("power_form").get<std::string>() == "one_minus_cos"};
+    double f = fresnelReference(setup, c, ctx.scalar("f0"), ctx.scalar("strength"));
+    ctx.output(0, Value::scalar(f));
+    ctx.output(1, Value::scalar(1.0 - f));
+  };
+  s.tolerance = 2e-6;
+  auto up = Value::vector({0, 1, 0});
+  auto dirAt = [](double degrees) {
+    double r = degrees * M_PI / 180.0;
+    return Value::vector({std::sin(r), std::cos(r), 0});
+  };
+  s.hardCases = {
+      {"grazing view, N.V = 0", {{"normal", up}, {"view", dirAt(90)}}, {{"model", "exact"}}, "F = 1, finite", 0, 1},
+      {"view slightly below the surface", {{"normal", up}, {"view", Value::vector({1, -1e-4, 0})}},
+       {{"model", "schlick"}}, "clamped to grazing: F = 1", 0, 1},
+      {"N.V = 1.0000001 (unnormalised)", {{"normal", up}, {"view", Value::vector({0, 1.0000001, 0})}},
+       {{"model", "exact"}}, "clamped to normal incidence: F = 0.0204", 0, 1},
+      {"total internal reflection from below", {{"normal", up}, {"view", dirAt(60)}},
+       {{"model", "exact"}, {"direction", "water_to_air"}}, "F = 1", 1, 1},
+      {"exactly the critical angle", {{"normal", up}, {"view", dirAt(48.6066)}},
+       {{"model", "schlick"}, {"direction", "water_to_air"}}, "F in [0, 1], finite", 0, 1},
+      {"zero-length normal", {{"normal", Value::vector({0, 0, 0})}, {"view", up}}, {{"model", "exact"}},
+       "treated as grazing: F = 1", 0, 1},
+      {"power with zero base", {{"normal", up}, {"view", up}}, {{"model", "power"}, {"power_form", "one_minus_cos"}},
+       "0^strength = 0, not NaN", 0, 0},
+  };
+  return s;
+}
+
+}  // namespace wg::nodes

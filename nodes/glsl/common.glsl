@@ -1,0 +1,33 @@
+// Safe forms of GLSL built-ins, shared by every node. The double references in
+// nodes/eval_math.h use the same constants. One name per type (no overloads), so a
+// shader carries only the variants it calls.
+
+// Unit vector, or the zero vector when the input is (nearly) zero: never NaN.
+float wg_safe_normalize_float(float v) { return v * inversesqrt(max(v * v, 1e-30)); }
+vec2 wg_safe_normalize_vec2(vec2 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
+vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
+vec4 wg_safe_normalize_vec4(vec4 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
+
+// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
+// 0^y is 0 for y > 0 and 1 for y <= 0.
+float wg_safe_pow_float(float x, float y) { return x > 0.0 ? exp2(y * log2(x)) : (y > 0.0 ? 0.0 : 1.0); }
+vec2 wg_safe_pow_vec2(vec2 x, vec2 y) { return vec2(wg_safe_pow_float(x.x, y.x), wg_safe_pow_float(x.y, y.y)); }
+vec3 wg_safe_pow_vec3(vec3 x, vec3 y) { return vec3(wg_safe_pow_vec2(x.xy, y.xy), wg_safe_pow_float(x.z, y.z)); }
+vec4 wg_safe_pow_vec4(vec4 x, vec4 y) { return vec4(wg_safe_pow_vec2(x.xy, y.xy), wg_safe_pow_vec2(x.zw, y.zw)); }
+
+// smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
+// edge0 >= edge1 undefined).
+float wg_smoothstep_float(float e0, float e1, float x) {
+  if (e0 == e1) return x < e0 ? 0.0 : 1.0;
+  float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+vec2 wg_smoothstep_vec2(vec2 e0, vec2 e1, vec2 x) {
+  return vec2(wg_smoothstep_float(e0.x, e1.x, x.x), wg_smoothstep_float(e0.y, e1.y, x.y));
+}
+vec3 wg_smoothstep_vec3(vec3 e0, vec3 e1, vec3 x) {
+  return vec3(wg_smoothstep_vec2(e0.xy, e1.xy, x.xy), wg_smoothstep_float(e0.z, e1.z, x.z));
+}
+vec4 wg_smoothstep_vec4(vec4 e0, vec4 e1, vec4 x) {
+  return vec4(wg_smoothstep_vec2(e0.xy, e1.xy, x.xy), wg_smoothstep_vec2(e0.zw, e1.zw, x.zw));
+}

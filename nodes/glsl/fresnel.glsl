@@ -1,0 +1,40 @@
+// Fresnel reflectance of the water surface. `cosi` is the cosine between the unit normal
+// (facing the viewer) and the unit view vector, clamped to [0, 1] by the caller, so
+// grazing and back-facing views stay finite.
+
+// Cosine of incidence, kept in [0, 1].
+float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
+
+// Schlick's approximation seen from the denser side uses the transmitted angle's cosine,
+// which exists only below the critical angle; beyond it the reflection is total.
+// eta = n_incident / n_transmitted. Returns -1 for total internal reflection.
+float wg_transmitted_cos(float cosi, float eta) {
+  float sin2t = eta * eta * (1.0 - cosi * cosi);
+  return sin2t >= 1.0 ? -1.0 : sqrt(1.0 - sin2t);
+}
+
+// Schlick (1994): F0 + (1 - F0)(1 - cos)^5, with cos taken in the less dense medium.
+float wg_fresnel_schlick(float cosi, float f0) {
+  float m = 1.0 - cosi;
+  float m2 = m * m;
+  return f0 + (1.0 - f0) * m2 * m2 * m;
+}
+float wg_fresnel_schlick_from_below(float cosi, float f0, float eta) {
+  float cost = wg_transmitted_cos(cosi, eta);
+  return cost < 0.0 ? 1.0 : wg_fresnel_schlick(cost, f0);
+}
+
+// Exact unpolarised dielectric Fresnel: the mean of the s and p reflectances, 1 under
+// total internal reflection. n1 is the viewer's medium, n2 the other.
+float wg_fresnel_exact(float cosi, float n1, float n2) {
+  float cost = wg_transmitted_cos(cosi, n1 / n2);
+  if (cost < 0.0) return 1.0;
+  float rs = (n1 * cosi - n2 * cost) / (n1 * cosi + n2 * cost);
+  float rp = (n1 * cost - n2 * cosi) / (n1 * cost + n2 * cosi);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// Artistic power forms. Seed 000 mixes reflection and refraction by (N.V)^strength, so its
+// reflectance is 1 - (N.V)^strength; seed 003 uses (1 - N.V)^strength directly.
+float wg_fresnel_power_cos(float cosi, float strength) { return 1.0 - wg_safe_pow_float(cosi, strength); }
+float wg_fresnel_power_rim(float cosi, float strength) { return wg_safe_pow_float(1.0 - cosi, strength); }

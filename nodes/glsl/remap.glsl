@@ -1,0 +1,29 @@
+// Range remapping, one name per type. An empty source range (in_min == in_max) maps to out_min instead of
+// dividing by zero.
+float wg_remap_float(float x, float a, float b, float c, float d) {
+  float t = b == a ? 0.0 : (x - a) / (b - a);
+  return mix(c, d, t);
+}
+vec2 wg_remap_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {
+  return vec2(wg_remap_float(x.x, a.x, b.x, c.x, d.x), wg_remap_float(x.y, a.y, b.y, c.y, d.y));
+}
+vec3 wg_remap_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) {
+  return vec3(wg_remap_vec2(x.xy, a.xy, b.xy, c.xy, d.xy), wg_remap_float(x.z, a.z, b.z, c.z, d.z));
+}
+vec4 wg_remap_vec4(vec4 x, vec4 a, vec4 b, vec4 c, vec4 d) {
+  return vec4(wg_remap_vec2(x.xy, a.xy, b.xy, c.xy, d.xy), wg_remap_vec2(x.zw, a.zw, b.zw, c.zw, d.zw));
+}
+
+float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
+  float t = b == a ? 0.0 : clamp((x - a) / (b - a), 0.0, 1.0);
+  return mix(c, d, t);
+}
+vec2 wg_remap_clamped_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {
+  return vec2(wg_remap_clamped_float(x.x, a.x, b.x, c.x, d.x), wg_remap_clamped_float(x.y, a.y, b.y, c.y, d.y));
+}
+vec3 wg_remap_clamped_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) {
+  return vec3(wg_remap_clamped_vec2(x.xy, a.xy, b.xy, c.xy, d.xy), wg_remap_clamped_float(x.z, a.z, b.z, c.z, d.z));
+}
+vec4 wg_remap_clamped_vec4(vec4 x, vec4 a, vec4 b, vec4 c, vec4 d) {
+  return vec4(wg_remap_clamped_vec2(x.xy, a.xy, b.xy, c.xy, d.xy), wg_remap_clamped_vec2(x.zw, a.zw, b.zw, c.zw, d.zw));
+}

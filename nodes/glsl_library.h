@@ -1,0 +1,44 @@
+#pragma once
+// The GLSL function library (nodes/glsl/*.glsl, embedded at build time) split into its
+// top-level items — functions and constants, all named wg_* / WG_* — so the emitter can
+// pull in exactly the items a shader calls, dependencies first, in a stable order.
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace wg {
+
+struct GlslSourceFile {
+  const char* name;  // file name without .glsl
+  const char* text;
+};
+const std::vector<GlslSourceFile>& embeddedGlslFiles();  // generated
+
+struct GlslItem {
+  std::string name;   // wg_fresnel_schlick (overloads are separate items of one name)
+  std::string file;   // "fresnel"
+  std::string text;   // the definition, with the comment lines right above it
+  std::vector<std::string> uses;  // other library names it refers to
+};
+
+class GlslLibrary {
+ public:
+  // Parses files; throws std::logic_error naming the file on a malformed one.
+  explicit GlslLibrary(const std::vector<GlslSourceFile>& files);
+  static const GlslLibrary& builtin();  // the embedded library
+
+  bool has(std::string_view name) const;
+  // The items `code` refers to (wg_*/WG_* identifiers), plus everything they use, ordered
+  // so each item follows what it uses; ties keep library order (file name, position).
+  std::vector<const GlslItem*> itemsFor(std::string_view code) const;
+  const std::vector<GlslItem>& items() const { return items_; }
+
+ private:
+  std::vector<GlslItem> items_;  // library order
+};
+
+// Every wg_* / WG_* identifier in `code`, in order of first appearance.
+std::vector<std::string> libraryIdentifiers(std::string_view code);
+
+}  // namespace wg

@@ -1,0 +1,137 @@
+#include "nodes/node_docs.h"
+
+#include <map>
+
+#include "core/number_format.h"
+
+namespace wg {
+namespace {
+
+std::string portType(const PortSpec& p) {
+  switch (p.kind) {
+    case PortKind::Fixed: return std::string(typeName(p.type));
+    case PortKind::Gen: return "float|vec2|vec3|vec4";
+    case PortKind::Custom: return "see description";
+  }
+  return "?";
+}
+
+std::string portDefault(const PortSpec& p) {
+  if (p.defaultValue) return p.defaultValue->toString();
+  if (p.defaultBuiltin) return "the " + std::string(builtinName(*p.defaultBuiltin)) + " builtin";
+  return "required";
+}
+
+std::string optionKind(const OptionSpec& o) {
+  switch (o.kind) {
+    case OptionSpec::Kind::Enum: {
+      std::string s;
+      for (const auto& c : o.choices) s += (s.empty() ? "" : " \\| ") + c;
+      return s;
+    }
+    case OptionSpec::Kind::Number:
+    case OptionSpec::Kind::Integer: {
+      std::string s = o.kind == OptionSpec::Kind::Integer ? "integer" : "number";
+      if (o.min || o.max)
+        s += " in [" + (o.min ? formatNumber(*o.min) : "-inf") + ", " + (o.max ? formatNumber(*o.max) : "inf") + "]";
+      return s;
+    }
+    case OptionSpec::Kind::Bool: return "bool";
+    case OptionSpec::Kind::Json: return "JSON";
+  }
+  return "?";
+}
+
+std::string stagesText(unsigned s) {
+  if (s == kAnyStage) return "vertex, fragment";
+  return s == kVertexStage ? "vertex" : "fragment";
+}
+
+}  // namespace
+
+nlohmann::json nodesJson(const Registry& registry) {
+  nlohmann::json all = nlohmann::json::array();
+  for (const NodeSpec* s : registry.all()) {
+    nlohmann::json j;
+    j["type"] = s->type;
+    j["family"] = s->family;
+    j["summary"] = s->summary;
+    j["formula"] = s->formula;
+    if (!s->seed.empty()) j["seed"] = s->seed;
+    j["cost"] = s->cost;
+    j["stages"] = stagesText(s->stages);
+    j["tolerance"] = s->tolerance;
+    auto ports = [](const std::vector<PortSpec>& ps, bool input) {
+      nlohmann::json a = nlohmann::json::array();
+      for (const auto& p : ps) {
+        nlohmann::json pj{{"name", p.name}, {"type", portType(p)}, {"doc", p.doc}};
+        if (input) pj["default"] = portDefault(p);
+        a.push_back(pj);
+      }
+      return a;
+    };
+    j["inputs"] = ports(s->inputs, true);
+    j["outputs"] = ports(s->outputs, false);
+    nlohmann::json opts = nlohmann::json::array();
+    for (const auto& o : s->options)
+      opts.push_back({{"name", o.name}, {"values", optionKind(o)}, {"default", o.defaultValue}, {"doc", o.doc}});
+    j["options"] = opts;
+    nlohmann::json hard = nlohmann::json::array();
+    for (const auto& h : s->hardCases) hard.push_back({{"name", h.name}, {"expectation", h.expectation}});
+    j["hard_cases"] = hard;
+    if (!s->resources.empty()) j["resources"] = s->resources;
+    all.push_back(j);
+  }
+  return all;
+}
+
+std::string nodesMarkdown(const Registry& registry) {
+  std::map<std::string, std::vector<const NodeSpec*>> byFamily;
+  for (const NodeSpec* s : registry.all()) byFamily[s->family].push_back(s);
+  std::string md;
+  md += "# Node reference\n\n";
+  md += "Generated from the node registry by `watergraph nodes --markdown`; do not edit by hand.\n";
+  md += "Every node has GLSL in `nodes/glsl/`, a double-precision reference (`eval`) that follows GLSL\n";
+  md += "semantics, and the hard cases listed with it. `tolerance` is the largest absolute difference\n";
+  md += "allowed between the float32 GPU result and the reference.\n\n";
+  for (const auto& [family, specs] : byFamily) {
+    md += "- **" + family + "**:";
+    for (const NodeSpec* s : specs) md += " [`" + s->type + "`](#" + s->type + ")";
+    md += "\n";
+  }
+  for (const auto& [family, specs] : byFamily) {
+    md += "\n## " + family + "\n";
+    for (const NodeSpec* s : specs) {
+      md += "\n### " + s->type + "\n\n" + s->summary + "\n\n";
+      md += "- formula: " + s->formula + "\n";
+      if (!s->seed.empty()) md += "- seed: " + s->seed + "\n";
+      md += "- stages: " + stagesText(s->stages) + "\n";
+      md += "- cost: " + s->cost + "\n";
+      md += "- tolerance: " + formatNumber(s->tolerance) + "\n";
+      if (!s->resources.empty()) {
+        md += "- scene resources:";
+        for (const auto& r : s->resources) md += " `" + r + "`";
+        md += "\n";
+      }
+      if (!s->inputs.empty()) {
+        md += "\n| input | type | default | |\n|---|---|---|---|\n";
+        for (const auto& p : s->inputs)
+          md += "| `" + p.name + "` | " + portType(p) + " | " + portDefault(p) + " | " + p.doc + " |\n";
+      }
+      md += "\n| output | type | |\n|---|---|---|\n";
+      for (const auto& p : s->outputs) md += "| `" + p.name + "` | " + portType(p) + " | " + p.doc + " |\n";
+      if (!s->options.empty()) {
+        md += "\n| option | values | default | |\n|---|---|---|---|\n";
+        for (const auto& o : s->options)
+          md += "| `" + o.name + "` | " + optionKind(o) + " | `" + o.defaultValue.dump() + "` | " + o.doc + " |\n";
+      }
+      if (!s->hardCases.empty()) {
+        md += "\nHard cases:\n";
+        for (const auto& h : s->hardCases) md += "- " + h.name + ": " + h.expectation + "\n";
+      }
+    }
+  }
+  return md;
+}
+
+}  // namespace wg

@@ -1,0 +1,44 @@
+#pragma once
+// Every node type's spec factory. Each is defined in its family's file in nodes/ and
+// listed once in nodes/registry.cpp.
+#include "core/node_spec.h"
+
+namespace wg::nodes {
+
+// inputs.cpp
+NodeSpec uvNode();
+NodeSpec worldPositionNode();
+NodeSpec normalNode();
+NodeSpec viewDirectionNode();
+NodeSpec cameraPositionNode();
+NodeSpec timeNode();
+NodeSpec screenUvNode();
+// math.cpp
+NodeSpec addNode();
+NodeSpec subNode();
+NodeSpec mulNode();
+NodeSpec divNode();
+NodeSpec mixNode();
+NodeSpec clampNode();
+NodeSpec saturateNode();
+NodeSpec smoothstepNode();
+NodeSpec powNode();
+NodeSpec dotNode();
+NodeSpec crossNode();
+NodeSpec normalizeNode();
+NodeSpec lengthNode();
+NodeSpec sinNode();
+NodeSpec cosNode();
+NodeSpec absNode();
+NodeSpec minNode();
+NodeSpec maxNode();
+NodeSpec swizzleNode();
+NodeSpec splitNode();
+NodeSpec combineNode();
+NodeSpec remapNode();
+// fresnel.cpp
+NodeSpec fresnelNode();
+// depth_tint.cpp
+NodeSpec depthTintNode();
+
+}  // namespace wg::nodes

@@ -1,0 +1,30 @@
+// The node registry: one line per node type.
+#include "nodes/registry.h"
+
+#include "nodes/node_library.h"
+
+namespace wg {
+
+const Registry& defaultRegistry() {
+  static const Registry registry = [] {
+    Registry r;
+    using namespace nodes;
+    for (auto make : {
+             // inputs
+             uvNode, worldPositionNode, normalNode, viewDirectionNode, cameraPositionNode, timeNode, screenUvNode,
+             // math
+             addNode, subNode, mulNode, divNode, mixNode, clampNode, saturateNode, smoothstepNode, powNode, dotNode,
+             crossNode, normalizeNode, lengthNode, sinNode, cosNode, absNode, minNode, maxNode, swizzleNode,
+             splitNode, combineNode, remapNode,
+             // optics
+             fresnelNode,
+             // depth and colour
+             depthTintNode,
+         })
+      r.add(make());
+    return r;
+  }();
+  return registry;
+}
+
+}  // namespace wg

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs the Debian packages watergraph builds and tests with (the list in
+# ../shared/TOOLCHAIN.md), skipping what is already installed. Idempotent and quiet
+# when nothing is missing, so `make demo` and `make test` can call it every time.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config clang libclang-rt-14-dev
+  libegl-dev libgl-dev libgles-dev libglvnd-dev libegl1-mesa-dev libegl-mesa0 libgl1-mesa-dri
+  libepoxy-dev glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
+  libglfw3-dev libimgui-dev libstb-dev libcli11-dev libglm-dev nlohmann-json3-dev
+  libgtest-dev libbenchmark-dev xvfb xauth
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  status=$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null || true)
+  [ "$status" = "installed" ] || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+echo "setup: installing ${missing[*]}"
+sudo_cmd=()
+if [ "$(id -u)" -ne 0 ]; then
+  command -v sudo >/dev/null || { echo "setup: not root and no sudo; install: ${missing[*]}" >&2; exit 2; }
+  sudo_cmd=(sudo)
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo_cmd[@]}" apt-get update -qq
+"${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

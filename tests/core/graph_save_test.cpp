@@ -1,0 +1,298 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+#include "core/graph_io.h"
+
+namespace wg {
+namespace {
+
+std::string dump(const Diagnostics& d) {
+  std::string s;
+  for (const auto& e : d.all()) s += formatText(e) + "\n";
+  return s;
+}
+
+Graph parseOk(const std::string& text) {
+  Diagnostics d;
+  auto g = parseGraph(text, "g.json", d);
+  EXPECT_TRUE(g) << dump(d) << text;
+  return g ? *g : Graph{};
+}
+
+// A messy but valid file: keys out of order, CRLF-free, numbers in odd spellings.
+const char* kMessy = R"({
+  "nodes": [
+    {"type": "gerstner", "id": "waves", "editor": {"y": -20.5, "x": 10},
+      "options": {"model": "ocean", "count": 4, "nested": {"z": [1, {"a": null}], "b": [], "c": {}, "d": 2.50}},
+      "inputs": {"position": "vertexIn.position", "height": "$waveHeight", "dir": [1.0, 0]}},
+    {"id": "shade", "type": "lambert", "inputs": {"k": 0.5e0, "albedo": "$deepColor"}}
+  ],
+  "outputs": {"fragment": {"alpha": 1, "color": "shade.color"}, "vertex": {"position": "waves.position"}},
+  "version": 1, "name": "ocean", "description": "A \"test\" \\ graph \u00e9 \u0001 \ud83c\udf0a / \t",
+  "parameters": {
+    "waveHeight": {"static": false, "type": "float", "default": 5E-1, "min": 0, "max": 2},
+    "deepColor": {"type": "vec3", "default": [0.1, 0.2, 0.3], "hint": "color", "static": true,
+                  "description": "colour far down"}
+  },
+  "$schema": "https://example.com/watergraph-1.json"
+}
+)";
+
+const char* kCanonical = R"({
+  "$schema": "https://example.com/watergraph-1.json",
+  "version": 1,
+  "name": "ocean",
+  "description": "A \"test\" \\ graph é \u0001 🌊 / \t",
+  "parameters": {
+    "waveHeight": {
+      "type": "float",
+      "default": 0.5,
+      "min": 0,
+      "max": 2
+    },
+    "deepColor": {
+      "type": "vec3",
+      "default": [0.1, 0.2, 0.3],
+      "hint": "color",
+      "description": "colour far down",
+      "static": true
+    }
+  },
+  "nodes": [
+    {
+      "id": "waves",
+      "type": "gerstner",
+      "options": {
+        "count": 4,
+        "model": "ocean",
+        "nested": {
+          "b": [],
+          "c": {},
+          "d": 2.5,
+          "z": [
+            1,
+            {
+              "a": null
+            }
+          ]
+        }
+      },
+      "inputs": {
+        "dir": [1, 0],
+        "height": "$waveHeight",
+        "position": "vertexIn.position"
+      },
+      "editor": {"x": 10, "y": -20.5}
+    },
+    {
+      "id": "shade",
+      "type": "lambert",
+      "inputs": {
+        "albedo": "$deepColor",
+        "k": 0.5
+      }
+    }
+  ],
+  "outputs": {
+    "vertex": {
+      "position": "waves.position"
+    },
+    "fragment": {
+      "color": "shade.color",
+      "alpha": 1
+    }
+  }
+}
+)";
+
+void expectSameSource(const InputSource& a, const InputSource& b, const std::string& what) {
+  EXPECT_EQ(a.kind, b.kind) << what;
+  EXPECT_EQ(a.node, b.node) << what;
+  EXPECT_EQ(a.port, b.port) << what;
+  EXPECT_EQ(a.parameter, b.parameter) << what;
+  EXPECT_EQ(a.literal, b.literal) << what;
+}
+
+// Equal in everything the format defines (positions aside; options and inputs compared
+// by name, since the canonical form sorts them).
+void expectSameGraph(const Graph& a, const Graph& b) {
+  EXPECT_EQ(a.schema, b.schema);
+  EXPECT_EQ(a.version, b.version);
+  EXPECT_EQ(a.name, b.name);
+  EXPECT_EQ(a.description, b.description);
+  ASSERT_EQ(a.parameters.size(), b.parameters.size());
+  for (size_t i = 0; i < a.parameters.size(); ++i) {
+    const auto &p = a.parameters[i], &q = b.parameters[i];
+    EXPECT_EQ(p.name, q.name);
+    EXPECT_EQ(p.type, q.type);
+    EXPECT_EQ(p.defaultValue, q.defaultValue);
+    EXPECT_EQ(p.min, q.min);
+    EXPECT_EQ(p.max, q.max);
+    EXPECT_EQ(p.hint, q.hint);
+    EXPECT_EQ(p.description, q.description);
+    EXPECT_EQ(p.isStatic, q.isStatic);
+  }
+  ASSERT_EQ(a.nodes.size(), b.nodes.size());
+  for (size_t i = 0; i < a.nodes.size(); ++i) {
+    const auto &n = a.nodes[i], &m = b.nodes[i];
+    EXPECT_EQ(n.id, m.id);
+    EXPECT_EQ(n.type, m.type);
+    EXPECT_EQ(n.editorPosition, m.editorPosition);
+    ASSERT_EQ(n.options.size(), m.options.size());
+    for (const auto& o : n.options) {
+      auto it = std::find_if(m.options.begin(), m.options.end(),
+                             [&](const NodeOption& x) { return x.name == o.name; });
+      ASSERT_NE(it, m.options.end()) << o.name;
+      EXPECT_EQ(o.value, it->value) << o.name;
+    }
+    ASSERT_EQ(n.inputs.size(), m.inputs.size());
+    for (const auto& in : n.inputs) {
+      auto it = std::find_if(m.inputs.begin(), m.inputs.end(),
+                             [&](const NodeInput& x) { return x.port == in.port; });
+      ASSERT_NE(it, m.inputs.end()) << in.port;
+      expectSameSource(in.source, it->source, n.id + "." + in.port);
+    }
+  }
+  ASSERT_EQ(a.outputs.size(), b.outputs.size());
+  for (size_t i = 0; i < a.outputs.size(); ++i) {
+    EXPECT_EQ(a.outputs[i].slot, b.outputs[i].slot);
+    expectSameSource(a.outputs[i].source, b.outputs[i].source,
+                     std::string(outputSlotName(a.outputs[i].slot)));
+  }
+}
+
+TEST(GraphSave, CanonicalLayout) {
+  Graph g = parseOk(kMessy);
+  EXPECT_EQ(saveGraph(g), kCanonical);
+}
+
+TEST(GraphSave, FormattingIsIdempotent) {
+  std::string once = saveGraph(parseOk(kMessy));
+  std::string twice = saveGraph(parseOk(once));
+  EXPECT_EQ(once, twice);
+  EXPECT_EQ(saveGraph(parseOk(kCanonical)), kCanonical);
+}
+
+TEST(GraphSave, RoundTripKeepsEverything) {
+  Graph g = parseOk(kMessy);
+  Graph back = parseOk(saveGraph(g));
+  expectSameGraph(g, back);
+  EXPECT_EQ(back.description, "A \"test\" \\ graph \xC3\xA9 \x01 \xF0\x9F\x8C\x8A / \t");
+}
+
+TEST(GraphSave, ProgrammaticGraphRoundTrips) {
+  Graph g;
+  g.name = "built";
+  Parameter p;
+  p.name = "tint";
+  p.type = Type::Vec4;
+  p.defaultValue = {0.1, 1.0 / 3.0, 1e-7, 1};
+  p.min = -0.0;
+  p.max = 1e20;
+  p.hint = "color";
+  g.parameters.push_back(p);
+  Node n;
+  n.id = "mix";
+  n.type = "mix";
+  n.options.push_back({"zeta", nlohmann::json::parse(R"({"k": "q\"\\\u00e9", "a": [true, 1.5]})"),
+                       {}, {}});
+  n.options.push_back({"alpha", nlohmann::json(-3), {}, {}});
+  NodeInput in;
+  in.port = "b";
+  in.source.kind = InputSource::Kind::Parameter;
+  in.source.parameter = "tint";
+  n.inputs.push_back(in);
+  in.port = "a";
+  in.source = {};
+  in.source.kind = InputSource::Kind::Literal;
+  in.source.literal = {0.1, 0.2};
+  n.inputs.push_back(in);
+  n.editorPosition = std::array<double, 2>{0.5, 123456789.25};
+  g.nodes.push_back(n);
+  GraphOutput o;
+  o.slot = OutputSlot::FragmentAlpha;
+  o.source.kind = InputSource::Kind::Literal;
+  o.source.literal = {0.25};
+  g.outputs.push_back(o);
+  o.slot = OutputSlot::VertexNormal;
+  o.source = {};
+  o.source.kind = InputSource::Kind::NodeOutput;
+  o.source.node = "mix";
+  o.source.port = "out";
+  g.outputs.push_back(o);
+
+  std::string text = saveGraph(g);
+  Graph back = parseOk(text);
+  // The loader keeps outputs in slot order; compare against that.
+  std::swap(g.outputs[0], g.outputs[1]);
+  expectSameGraph(g, back);
+  EXPECT_EQ(back.parameters[0].min, 0.0);
+  EXPECT_EQ(saveGraph(back), text);
+  EXPECT_NE(text.find("\"default\": [0.1, 0.3333333333333333, 1e-07, 1]"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"max\": 1e+20"), std::string::npos) << text;
+  EXPECT_NE(text.find("\"min\": 0,"), std::string::npos) << text;  // -0 is written as 0
+  // Options and inputs are written sorted by name.
+  EXPECT_LT(text.find("\"alpha\": -3"), text.find("\"zeta\""));
+  EXPECT_LT(text.find("\"a\": [0.1, 0.2]"), text.find("\"b\": \"$tint\""));
+  EXPECT_LT(text.find("\"normal\": \"mix.out\""), text.find("\"alpha\": 0.25"));
+}
+
+TEST(GraphSave, MinimalGraph) {
+  Graph g;
+  g.name = "g";
+  GraphOutput o;
+  o.slot = OutputSlot::FragmentColor;
+  o.source.kind = InputSource::Kind::Literal;
+  o.source.literal = {1, 0, 0, 1};
+  g.outputs.push_back(o);
+  EXPECT_EQ(saveGraph(g),
+            "{\n"
+            "  \"version\": 1,\n"
+            "  \"name\": \"g\",\n"
+            "  \"nodes\": [],\n"
+            "  \"outputs\": {\n"
+            "    \"fragment\": {\n"
+            "      \"color\": [1, 0, 0, 1]\n"
+            "    }\n"
+            "  }\n"
+            "}\n");
+}
+
+TEST(GraphSave, CrlfInputSavesAsLf) {
+  std::string crlf;
+  for (const char* p = kMessy; *p; ++p) {
+    if (*p == '\n') crlf += '\r';
+    crlf += *p;
+  }
+  std::string text = saveGraph(parseOk(crlf));
+  EXPECT_EQ(text.find('\r'), std::string::npos);
+  EXPECT_EQ(text, kCanonical);
+}
+
+TEST(GraphSave, EscapesInStringsRoundTrip) {
+  const std::string tricky = "q\"uote \\back\\slash\\ /sl\x01\x1f\n\t\xC3\xA9\xE6\xB0\xB4\xF0\x9F\x8C\x8A";
+  Graph g = parseOk(
+      R"({"version": 1, "name": "g", "nodes": [{"id": "n", "type": "t\"\\\u0041",
+          "options": {"s": "q\"uote \\back\\slash\\ \/sl\u0001\u001f\n\t\u00e9\u6c34\ud83c\udf0a"}}],
+          "outputs": {"fragment": {"alpha": 1}}})");
+  ASSERT_EQ(g.nodes.size(), 1u);
+  EXPECT_EQ(g.nodes[0].type, "t\"\\A");
+  EXPECT_EQ(g.nodes[0].options[0].value, tricky);
+  std::string text = saveGraph(g);
+  Graph back = parseOk(text);
+  EXPECT_EQ(back.nodes[0].type, "t\"\\A");
+  EXPECT_EQ(back.nodes[0].options[0].value, tricky);
+  EXPECT_EQ(saveGraph(back), text);
+}
+
+TEST(GraphSave, EndsWithOneNewline) {
+  std::string text = saveGraph(parseOk(kMessy));
+  ASSERT_GE(text.size(), 2u);
+  EXPECT_EQ(text.back(), '\n');
+  EXPECT_NE(text[text.size() - 2], '\n');
+}
+
+}  // namespace
+}  // namespace wg
