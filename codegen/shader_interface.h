@@ -21,6 +21,14 @@ inline constexpr const char* kTime = "u_time";                      // float, se
 inline constexpr const char* kViewportSize = "u_viewport_size";     // vec2, pixels
 inline constexpr const char* kCameraNearFar = "u_camera_near_far";  // vec2, view depth range
 
+// Scene textures the runtime binds when the manifest lists the resource (and so the pass
+// that renders it). Declared only by graphs whose nodes read them.
+inline constexpr const char* kSceneDepthTexture = "u_scene_depth";      // sampler2D, resource scene_depth
+inline constexpr const char* kSceneColorTexture = "u_scene_color";      // sampler2D, resource scene_color
+inline constexpr const char* kReflectionTexture = "u_reflection";       // sampler2D, resource planar_reflection
+inline constexpr const char* kRefractionTexture = "u_refraction";       // sampler2D, resource refraction
+inline constexpr const char* kEnvironmentTexture = "u_environment";     // samplerCube, resource environment
+
 // Fragment output.
 inline constexpr int kColorLocation = 0;
 inline constexpr const char* kColorOutput = "o_color";  // vec4
