@@ -2,13 +2,16 @@
 
 #include <stdexcept>
 
+#include "nodes/texture_source.h"
+
 namespace wg {
 namespace {
 
 class OpEvalContext final : public EvalContext {
  public:
-  OpEvalContext(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env)
-      : op_(op), inputs_(inputs), env_(env), outputs_(op.outputTypes.size()) {}
+  OpEvalContext(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env, TextureCache* textures,
+                const std::string& graphDir)
+      : op_(op), inputs_(inputs), env_(env), textures_(textures), graphDir_(graphDir), outputs_(op.outputTypes.size()) {}
 
   const Value& input(int port) const override { return inputs_.at(static_cast<size_t>(port)); }
   Type inputType(int port) const override { return op_.inputTypes.at(static_cast<size_t>(port)); }
@@ -17,21 +20,28 @@ class OpEvalContext final : public EvalContext {
   void output(int port, Value v) override { outputs_.at(static_cast<size_t>(port)) = v; }
   const EvalEnvironment& environment() const override { return env_; }
   const NodeSpec& spec() const override { return *op_.spec; }
+  Value sampleTexture(std::string_view option, double u, double v) const override {
+    if (!textures_) throw std::logic_error("eval of '" + op_.spec->type + "' samples a texture without a texture cache");
+    return textures_->get(op_.options.at(std::string(option)).get<std::string>(), graphDir_).sample(u, v);
+  }
   std::vector<Value> take() { return std::move(outputs_); }
 
  private:
   const Op& op_;
   const std::vector<Value>& inputs_;
   const EvalEnvironment& env_;
+  TextureCache* textures_;
+  const std::string& graphDir_;
   std::vector<Value> outputs_;
 };
 
 }  // namespace
 
-std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env) {
+std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env,
+                              TextureCache* textures, const std::string& graphDir) {
   std::vector<Value> converted(inputs.size());
   for (size_t i = 0; i < inputs.size(); ++i) converted[i] = inputs[i].convertedTo(op.inputTypes[i]);
-  OpEvalContext ctx(op, converted, env);
+  OpEvalContext ctx(op, converted, env, textures, graphDir);
   op.spec->eval(ctx);
   std::vector<Value> out = ctx.take();
   for (size_t i = 0; i < out.size(); ++i)
@@ -44,6 +54,7 @@ std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, co
 
 CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, const std::vector<Value>& parameters) {
   CpuResult result;
+  TextureCache textures;
   result.opOutputs.resize(program.ops.size());
   auto valueOf = [&](const ValueRef& r) -> Value {
     switch (r.kind) {
@@ -63,7 +74,7 @@ CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, co
     std::vector<Value> inputs;
     inputs.reserve(op.inputs.size());
     for (const auto& in : op.inputs) inputs.push_back(valueOf(in));
-    result.opOutputs[i] = evaluateOp(op, inputs, env);
+    result.opOutputs[i] = evaluateOp(op, inputs, env, &textures, program.directory);
   }
   for (const auto& out : program.outputs) result.outputs.push_back(valueOf(out.value).convertedTo(out.type));
   return result;

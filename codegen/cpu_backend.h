@@ -8,8 +8,12 @@
 
 namespace wg {
 
+class TextureCache;
+
 // Evaluates one op given its input values (converted to the op's port types here).
-std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env);
+// `textures` and `graphDir` serve nodes that sample textures; null only for ops that don't.
+std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env,
+                              TextureCache* textures = nullptr, const std::string& graphDir = {});
 
 struct CpuResult {
   std::vector<std::vector<Value>> opOutputs;  // per op, per output port

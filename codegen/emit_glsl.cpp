@@ -5,7 +5,10 @@
 #include <set>
 #include <stdexcept>
 
+#include <filesystem>
+
 #include "codegen/shader_interface.h"
+#include "core/texture_check.h"
 #include "core/number_format.h"
 #include "nodes/glsl_library.h"
 
@@ -40,6 +43,13 @@ std::string literalOf(const Value& v) {
   return s + ')';
 }
 
+int resourceRank(const std::string& resource) {
+  const char* order[] = {"scene_depth", "scene_color", "planar_reflection", "refraction", "environment"};
+  for (int i = 0; i < 5; ++i)
+    if (resource == order[i]) return i;
+  return 5;
+}
+
 bool isPlainName(const std::string& e) {
   if (e.empty() || (e[0] >= '0' && e[0] <= '9')) return false;
   for (char c : e)
@@ -58,6 +68,9 @@ const BuiltinUniform kViewProjection{iface::kViewProjection, Type::Mat4, "view_p
 const BuiltinUniform kCamera{iface::kCameraPosition, Type::Vec3, "camera_position"};
 const BuiltinUniform kTime{iface::kTime, Type::Float, "time"};
 const BuiltinUniform kViewport{iface::kViewportSize, Type::Vec2, "viewport_size"};
+const BuiltinUniform kNearFar{iface::kCameraNearFar, Type::Vec2, "camera_near_far"};
+const BuiltinUniform kView{iface::kView, Type::Mat4, "view"};
+const BuiltinUniform kProjection{iface::kProjection, Type::Mat4, "projection"};
 
 // One stage's body being written: lines with the op that wrote each, and what it used.
 struct StageWriter {
@@ -90,6 +103,8 @@ class OpEmitContext final : public EmitContext {
   std::string builtin(Builtin b) override;
   std::string temporary(Type type, std::string expression) override;
   unsigned stage() const override { return w_.stage; }
+  std::string texture(std::string_view option) override;
+  std::string sceneTexture(std::string_view resource) override;
   const NodeSpec& spec() const override;
 
   std::vector<std::string> outputs;
@@ -166,7 +181,7 @@ class Emitter {
       result.varyings.push_back({varyingNames_.at({v.index, v.port}), op.outputTypes[static_cast<size_t>(v.port)],
                                  "node '" + op.nodeId + "' output '" + op.spec->outputs[static_cast<size_t>(v.port)].name + "'"});
     }
-    for (const BuiltinUniform* u : {&kModel, &kViewProjection, &kCamera, &kTime, &kViewport}) {
+    for (const BuiltinUniform* u : {&kModel, &kViewProjection, &kView, &kProjection, &kCamera, &kNearFar, &kTime, &kViewport}) {
       unsigned stages = (vert.builtinUniforms.count(u->name) ? kVertexStage : 0u) |
                         (frag.builtinUniforms.count(u->name) ? kFragmentStage : 0u);
       if (stages) result.uniforms.push_back({u->name, u->type, -1, u->meaning, stages});
@@ -176,6 +191,16 @@ class Emitter {
                         (frag.parameters.count(static_cast<int>(i)) ? kFragmentStage : 0u);
       if (stages) result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", stages});
     }
+
+    // Samplers: node textures by first use, then scene textures in the manifest's
+    // resource order; vk450 bindings follow the uniform block's.
+    std::stable_sort(sceneTextures_.begin(), sceneTextures_.end(), [](const TextureInfo& a, const TextureInfo& b) {
+      return resourceRank(a.resource) < resourceRank(b.resource);
+    });
+    result.textures = textures_;
+    result.textures.insert(result.textures.end(), sceneTextures_.begin(), sceneTextures_.end());
+    for (size_t i = 0; i < result.textures.size(); ++i)
+      result.textures[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
 
     std::set<std::string> functions;
     result.shaders.push_back(assemble(ShaderStage::Vertex, vert, result, functions));
@@ -230,6 +255,10 @@ class Emitter {
       case Builtin::CameraPosition: w.builtinUniforms.insert(iface::kCameraPosition); return iface::kCameraPosition;
       case Builtin::Time: w.builtinUniforms.insert(iface::kTime); return iface::kTime;
       case Builtin::ScreenUv: w.builtinUniforms.insert(iface::kViewportSize); return "b_screen_uv";
+      case Builtin::FragDepth: return "gl_FragCoord.z";
+      case Builtin::CameraNearFar: w.builtinUniforms.insert(iface::kCameraNearFar); return iface::kCameraNearFar;
+      case Builtin::View: w.builtinUniforms.insert(iface::kView); return iface::kView;
+      case Builtin::Projection: w.builtinUniforms.insert(iface::kProjection); return iface::kProjection;
     }
     return "";
   }
@@ -245,6 +274,51 @@ class Emitter {
                                      : opNames_[static_cast<size_t>(op)];
   }
   const std::string& opName(int op) const { return opNames_[static_cast<size_t>(op)]; }
+
+  std::string nodeTexture(StageWriter& w, const std::string& source) {
+    for (auto& t : textures_)
+      if (t.resource.empty() && t.source == source) {
+        t.stages |= w.stage;
+        return t.name;
+      }
+    std::string stem = source.rfind(kBuiltinTexturePrefix, 0) == 0 ? source.substr(kBuiltinTexturePrefix.size())
+                                                                     : std::filesystem::path(source).stem().string();
+    TextureInfo t;
+    t.name = "t" + std::to_string(textures_.size()) + "_" + sanitiseIdentifier(stem);
+    t.source = source;
+    t.stages = w.stage;
+    textures_.push_back(t);
+    return t.name;
+  }
+
+  std::string sceneSampler(StageWriter& w, std::string_view resource) {
+    struct Scene {
+      const char* resource;
+      const char* name;
+      Type type;
+    };
+    static const Scene kScene[] = {{"scene_depth", iface::kSceneDepthTexture, Type::Sampler2D},
+                                   {"scene_color", iface::kSceneColorTexture, Type::Sampler2D},
+                                   {"planar_reflection", iface::kReflectionTexture, Type::Sampler2D},
+                                   {"refraction", iface::kRefractionTexture, Type::Sampler2D},
+                                   {"environment", iface::kEnvironmentTexture, Type::SamplerCube}};
+    for (const auto& sc : kScene) {
+      if (resource != sc.resource) continue;
+      for (auto& t : sceneTextures_)
+        if (t.resource == resource) {
+          t.stages |= w.stage;
+          return t.name;
+        }
+      TextureInfo t;
+      t.name = sc.name;
+      t.type = sc.type;
+      t.resource = sc.resource;
+      t.stages = w.stage;
+      sceneTextures_.push_back(t);
+      return t.name;
+    }
+    throw std::logic_error("sceneTexture: no scene texture for resource '" + std::string(resource) + "'");
+  }
   const Program& program() const { return program_; }
 
  private:
@@ -359,6 +433,11 @@ class Emitter {
       for (const auto& u : io.uniforms)
         if (u.stages & bit) add("uniform " + std::string(typeName(u.type)) + " " + u.name + ";");
     }
+    for (const auto& t : io.textures) {
+      if (!(t.stages & bit)) continue;
+      std::string qual = style_.uniformBlock ? "layout(set = 0, binding = " + std::to_string(t.binding) + ") " : "";
+      add(qual + "uniform " + std::string(typeName(t.type)) + " " + t.name + ";");
+    }
     // Library functions this stage calls, dependencies first.
     std::string code;
     for (const auto& l : locals) code += l + "\n";
@@ -398,6 +477,8 @@ class Emitter {
   std::vector<std::string> opNames_;
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
+  std::vector<TextureInfo> textures_;       // node textures, by first use
+  std::vector<TextureInfo> sceneTextures_;  // scene resources, by first use (sorted later)
 };
 
 std::string OpEmitContext::input(int port) {
@@ -415,6 +496,18 @@ const nlohmann::json& OpEmitContext::option(std::string_view name) const {
 }
 void OpEmitContext::output(int port, std::string expression) { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
 std::string OpEmitContext::builtin(Builtin b) { return e_.builtinExpr(w_, b); }
+std::string OpEmitContext::texture(std::string_view option) {
+  const nlohmann::json& v = this->option(option);
+  if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
+  return e_.nodeTexture(w_, v.get<std::string>());
+}
+std::string OpEmitContext::sceneTexture(std::string_view resource) {
+  const auto& resources = spec().resources;
+  if (std::find(resources.begin(), resources.end(), resource) == resources.end())
+    throw std::logic_error("node '" + spec().type + "' samples scene resource '" + std::string(resource) +
+                           "' without listing it in its resources");
+  return e_.sceneSampler(w_, resource);
+}
 std::string OpEmitContext::temporary(Type type, std::string expression) {
   std::string name = e_.opName(opIndex_) + "_t" + std::to_string(temps_++);
   w_.line(std::string(typeName(type)) + " " + name + " = " + expression + ";", opIndex_);

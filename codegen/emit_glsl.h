@@ -30,6 +30,15 @@ struct VaryingInfo {
   std::string carries;  // "world_position", or "node 'wave' output 'normal'"
 };
 
+struct TextureInfo {
+  std::string name;      // GLSL sampler name
+  Type type = Type::Sampler2D;
+  std::string source;    // node texture: "builtin:foam" or a path relative to the graph
+  std::string resource;  // scene texture: "scene_depth", ... (then source is "")
+  int binding = 0;       // vk450 binding (set 0); the uniform block is binding 0
+  unsigned stages = 0;
+};
+
 struct EmittedShader {
   ShaderStage stage{};
   std::string text;
@@ -40,6 +49,7 @@ struct EmitResult {
   std::vector<EmittedShader> shaders;  // vertex, fragment
   std::vector<UniformInfo> uniforms;   // declaration order
   std::vector<AttributeInfo> attributes;
+  std::vector<TextureInfo> textures;   // node textures by first use, then scene textures
   std::vector<VaryingInfo> varyings;
   std::vector<std::string> functions;  // library items emitted, in order (union of stages)
 };

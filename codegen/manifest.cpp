@@ -105,8 +105,16 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
       varyings.push_back({{"name", v.name}, {"type", std::string(typeName(v.type))}, {"carries", v.carries}});
     m["varyings"] = varyings;
     m["functions"] = er.functions;
+    nlohmann::json textures = nlohmann::json::array();
+    for (const auto& t : er.textures) {
+      nlohmann::json j{{"name", t.name}, {"type", std::string(typeName(t.type))}, {"binding", t.binding},
+                       {"stages", stagesJson(t.stages)}};
+      if (!t.source.empty()) j["source"] = t.source;
+      if (!t.resource.empty()) j["resource"] = t.resource;
+      textures.push_back(j);
+    }
+    m["textures"] = textures;
   }
-  m["textures"] = nlohmann::json::array();
   auto resources = resourcesOf(program);
   m["resources"] = resources;
   m["passes"] = passesFor(resources);

@@ -7,8 +7,11 @@
 namespace wg {
 namespace {
 
-bool isFragmentOnlyBuiltin(Builtin b) { return b == Builtin::ScreenUv; }
-bool isUniformBuiltin(Builtin b) { return b == Builtin::Time || b == Builtin::CameraPosition; }
+bool isFragmentOnlyBuiltin(Builtin b) { return b == Builtin::ScreenUv || b == Builtin::FragDepth; }
+bool isUniformBuiltin(Builtin b) {
+  return b == Builtin::Time || b == Builtin::CameraPosition || b == Builtin::CameraNearFar || b == Builtin::View ||
+         b == Builtin::Projection;
+}
 
 }  // namespace
 

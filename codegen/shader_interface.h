@@ -19,7 +19,9 @@ inline constexpr const char* kViewProjection = "u_view_projection"; // mat4, wor
 inline constexpr const char* kCameraPosition = "u_camera_position"; // vec3, world
 inline constexpr const char* kTime = "u_time";                      // float, seconds
 inline constexpr const char* kViewportSize = "u_viewport_size";     // vec2, pixels
-inline constexpr const char* kCameraNearFar = "u_camera_near_far";  // vec2, view depth range
+inline constexpr const char* kCameraNearFar = "u_camera_near_far";  // vec2, near and far planes
+inline constexpr const char* kView = "u_view";                      // mat4, world -> view
+inline constexpr const char* kProjection = "u_projection";          // mat4, view -> clip
 
 // Scene textures the runtime binds when the manifest lists the resource (and so the pass
 // that renders it). Declared only by graphs whose nodes read them.

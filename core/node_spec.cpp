@@ -15,6 +15,10 @@ std::string_view builtinName(Builtin b) {
     case Builtin::CameraPosition: return "camera_position";
     case Builtin::Time: return "time";
     case Builtin::ScreenUv: return "screen_uv";
+    case Builtin::FragDepth: return "frag_depth";
+    case Builtin::CameraNearFar: return "camera_near_far";
+    case Builtin::View: return "view";
+    case Builtin::Projection: return "projection";
   }
   return "?";
 }
@@ -23,7 +27,11 @@ Type builtinType(Builtin b) {
   switch (b) {
     case Builtin::Uv:
     case Builtin::ScreenUv: return Type::Vec2;
-    case Builtin::Time: return Type::Float;
+    case Builtin::Time:
+    case Builtin::FragDepth: return Type::Float;
+    case Builtin::CameraNearFar: return Type::Vec2;
+    case Builtin::View:
+    case Builtin::Projection: return Type::Mat4;
     default: return Type::Vec3;
   }
 }
@@ -37,6 +45,10 @@ const Value& EvalEnvironment::builtin(Builtin b) const {
     case Builtin::CameraPosition: return cameraPosition;
     case Builtin::Time: return time;
     case Builtin::ScreenUv: return screenUv;
+    case Builtin::FragDepth: return fragDepth;
+    case Builtin::CameraNearFar: return cameraNearFar;
+    case Builtin::View: return view;
+    case Builtin::Projection: return projection;
   }
   return time;
 }

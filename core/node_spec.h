@@ -26,6 +26,10 @@ enum class Builtin {
   CameraPosition,  // vec3 uniform
   Time,            // float uniform, seconds
   ScreenUv,        // vec2 in [0,1], fragment stage only
+  FragDepth,       // float, the surface's depth-buffer value gl_FragCoord.z (fragment only)
+  CameraNearFar,   // vec2 uniform: the projection's near and far planes (far may be inf)
+  View,            // mat4 uniform: world -> view
+  Projection,      // mat4 uniform: view -> clip
 };
 std::string_view builtinName(Builtin b);  // "uv", "world_position", ...
 Type builtinType(Builtin b);
@@ -49,7 +53,8 @@ struct PortSpec {
 };
 
 struct OptionSpec {
-  enum class Kind { Enum, Number, Integer, Bool, Json };
+  // Texture: a string, "builtin:<name>" or a .png path relative to the graph file.
+  enum class Kind { Enum, Number, Integer, Bool, Json, Texture };
   std::string name;
   Kind kind = Kind::Enum;
   nlohmann::json defaultValue;
@@ -60,13 +65,15 @@ struct OptionSpec {
   std::function<std::string(const nlohmann::json&)> validate;
 };
 
-// A named input set with the behaviour it must keep: finite outputs within [lo, hi].
+// A named input set with the behaviour it must keep: every output finite, and the
+// components of `output` (the first output when empty) within [lo, hi].
 struct HardCase {
   std::string name;
   std::vector<std::pair<std::string, Value>> inputs;  // port name -> value
   nlohmann::json options = nlohmann::json::object();
   std::string expectation;  // what "safe" means here, for the docs
   double lo = -1e30, hi = 1e30;
+  std::string output;
 };
 
 class NodeSpec;
@@ -97,6 +104,12 @@ class EmitContext {
   // Declares a local `type name = expression;` and returns its generated name.
   virtual std::string temporary(Type type, std::string expression) = 0;
   virtual unsigned stage() const = 0;  // kVertexStage or kFragmentStage
+  // The sampler2D that holds the texture named by a Texture option (declared once per
+  // distinct source, listed in the manifest).
+  virtual std::string texture(std::string_view option) = 0;
+  // The sampler the runtime binds for a scene resource the node lists in `resources`
+  // ("scene_depth" -> u_scene_depth; see codegen/shader_interface.h).
+  virtual std::string sceneTexture(std::string_view resource) = 0;
 
   std::string input(std::string_view port);
   std::string literal(double x) const;                // a GLSL float literal
@@ -116,6 +129,16 @@ struct EvalEnvironment {
   Value cameraPosition = Value::vector({0, 10, 0});
   Value time = Value::scalar(0);
   Value screenUv = Value::vector({0.5, 0.5});
+  Value fragDepth = Value::scalar(0.5);
+  Value cameraNearFar = Value::vector({0.1, 100});
+  Value view = Value::ofType(Type::Mat4);        // column-major, as GLSL
+  Value projection = Value::ofType(Type::Mat4);  // column-major, as GLSL
+  // Scene resources as the case sees them at this pixel (what a texture fetch returns).
+  Value sceneDepth = Value::scalar(1.0);  // depth-buffer value behind the water (1 = sky)
+  Value sceneColor = Value::vector({0, 0, 0});
+  Value reflectionColor = Value::vector({0, 0, 0});
+  Value refractionColor = Value::vector({0, 0, 0});
+  Value environmentColor = Value::vector({0, 0, 0});
   const Value& builtin(Builtin b) const;
 };
 
@@ -129,6 +152,8 @@ class EvalContext {
   virtual void output(int port, Value v) = 0;
   virtual const EvalEnvironment& environment() const = 0;
   virtual const NodeSpec& spec() const = 0;
+  // The texture of a Texture option sampled as GL_LINEAR + GL_REPEAT would: vec4.
+  virtual Value sampleTexture(std::string_view option, double u, double v) const = 0;
 
   const Value& input(std::string_view port) const;
   double scalar(std::string_view port) const { return input(port)[0]; }

@@ -72,6 +72,7 @@ struct Program {
   std::string graphName;
   std::string description;
   std::string file;
+  std::string directory;  // the graph file's folder: texture paths are relative to it
   int totalNodes = 0;  // nodes in the graph file
   std::vector<ProgramParameter> parameters;
   std::vector<Op> ops;  // topological: inputs come before their users

@@ -5,7 +5,10 @@
 #include <stdexcept>
 #include <unordered_map>
 
+#include <filesystem>
+
 #include "core/number_format.h"
+#include "core/texture_check.h"
 #include "core/suggest.h"
 
 namespace wg {
@@ -30,7 +33,7 @@ Value literalValue(const std::vector<double>& xs) {
 }
 
 // Checks one option value against its spec; returns "" or the reason it is refused.
-std::string checkOption(const OptionSpec& o, const nlohmann::json& v) {
+std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir) {
   switch (o.kind) {
     case OptionSpec::Kind::Enum: {
       if (!v.is_string()) return "must be one of its choices (a string)";
@@ -56,6 +59,11 @@ std::string checkOption(const OptionSpec& o, const nlohmann::json& v) {
       return v.is_boolean() ? "" : "must be true or false";
     case OptionSpec::Kind::Json:
       return o.validate ? o.validate(v) : "";
+    case OptionSpec::Kind::Texture: {
+      if (!v.is_string()) return "must be a string: \"builtin:<name>\" or a .png path relative to the graph";
+      std::string why = checkTextureSource(v.get<std::string>(), graphDir);
+      return why.empty() ? "" : "is not usable: " + why;
+    }
   }
   return "";
 }
@@ -69,6 +77,7 @@ class Resolver {
     program_.graphName = graph_.name;
     program_.description = graph_.description;
     program_.file = graph_.file;
+    program_.directory = std::filesystem::path(graph_.file).parent_path().string();
     program_.totalNodes = static_cast<int>(graph_.nodes.size());
     collectParameters();
     indexNodes();
@@ -145,7 +154,7 @@ class Resolver {
                        n.id, optionLabel(opt.name));
           continue;
         }
-        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value);
+        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, program_.directory);
         if (!why.empty())
           diags_.error(DiagCode::InvalidOption, opt.where, "option '" + opt.name + "' " + why, n.id,
                        optionLabel(opt.name));

@@ -1,0 +1,152 @@
+// Properties every registered node must have, so a new node is tested the moment it is
+// registered: docs present, hard cases finite and in range, and the node compiles alone
+// for every target with glslang accepting the result.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "codegen/compile.h"
+#include "codegen/cpu_backend.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "nodes/texture_source.h"
+#include "test_support.h"
+
+namespace wg {
+namespace {
+
+// A literal JSON input that fits a port: floats for float/Gen ports, vectors otherwise.
+nlohmann::json literalFor(const PortSpec& p) {
+  Type t = p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? Type::Float : Type::Vec3;
+  if (t == Type::Float) return 0.5;
+  nlohmann::json a = nlohmann::json::array();
+  for (int i = 0; i < componentCount(t); ++i) a.push_back(0.25 + 0.25 * i);
+  return a;
+}
+
+// A graph that feeds every required input a literal and shows `output` as the colour.
+std::string singleNodeGraph(const NodeSpec& spec, const std::string& output, Type outputType) {
+  nlohmann::json node{{"id", "subject"}, {"type", spec.type}};
+  nlohmann::json inputs = nlohmann::json::object();
+  for (const auto& p : spec.inputs)
+    if (p.required()) inputs[p.name] = literalFor(p);
+  if (!inputs.empty()) node["inputs"] = inputs;
+  nlohmann::json nodes = nlohmann::json::array({node});
+  std::string colour = "subject." + output;
+  if (outputType == Type::Vec2 || outputType == Type::Vec4) {
+    nodes.push_back({{"id", "show"}, {"type", "swizzle"}, {"options", {{"mask", outputType == Type::Vec2 ? "xyx" : "xyz"}}},
+                     {"inputs", {{"x", colour}}}});
+    colour = "show.out";
+  }
+  nlohmann::json g{{"version", 1}, {"name", "single_" + spec.type}, {"nodes", nodes}};
+  if (spec.stages & kFragmentStage)
+    g["outputs"] = {{"fragment", {{"color", colour}}}};
+  else
+    g["outputs"] = {{"vertex", {{"position", colour}}}};
+  return g.dump(2);
+}
+
+TEST(AllNodes, HaveDocumentation) {
+  for (const NodeSpec* s : defaultRegistry().all()) {
+    SCOPED_TRACE(s->type);
+    EXPECT_FALSE(s->summary.empty());
+    EXPECT_FALSE(s->formula.empty());
+    EXPECT_FALSE(s->cost.empty());
+    EXPECT_FALSE(s->family.empty());
+    for (const auto& p : s->inputs) EXPECT_FALSE(p.doc.empty()) << "input " << p.name;
+    for (const auto& p : s->outputs) EXPECT_FALSE(p.doc.empty()) << "output " << p.name;
+    for (const auto& o : s->options) EXPECT_FALSE(o.doc.empty()) << "option " << o.name;
+    EXPECT_GT(s->tolerance, 0.0);
+  }
+}
+
+TEST(AllNodes, HardCasesStayFiniteAndInRange) {
+  for (const NodeSpec* s : defaultRegistry().all()) {
+    for (const HardCase& hc : s->hardCases) {
+      SCOPED_TRACE(s->type + ": " + hc.name);
+      // Build the op the way resolve would: options completed, inputs from the case or defaults.
+      Op op;
+      op.spec = s;
+      op.nodeId = "case";
+      op.options = nlohmann::json::object();
+      for (const auto& o : s->options) op.options[o.name] = o.defaultValue;
+      for (auto it = hc.options.begin(); it != hc.options.end(); ++it) op.options[it.key()] = it.value();
+      EvalEnvironment env;
+      std::vector<Value> inputs;
+      std::vector<Type> sourceTypes;
+      for (const auto& p : s->inputs) {
+        Value v;
+        bool found = false;
+        for (const auto& [name, value] : hc.inputs)
+          if (name == p.name) {
+            v = value;
+            found = true;
+          }
+        if (!found) {
+          if (p.defaultValue) v = *p.defaultValue;
+          else if (p.defaultBuiltin) v = env.builtin(*p.defaultBuiltin);
+          else FAIL() << "hard case leaves required input '" << p.name << "' unset";
+        }
+        inputs.push_back(v);
+        sourceTypes.push_back(v.type);
+      }
+      // Types: the Gen rule and infer, as resolve applies them.
+      Type gen = Type::Float;
+      for (size_t i = 0; i < s->inputs.size(); ++i)
+        if (s->inputs[i].kind == PortKind::Gen && sourceTypes[i] != Type::Float) gen = sourceTypes[i];
+      for (size_t i = 0; i < s->inputs.size(); ++i) {
+        const PortSpec& p = s->inputs[i];
+        op.inputTypes.push_back(p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? gen : sourceTypes[i]);
+      }
+      for (const auto& p : s->outputs)
+        op.outputTypes.push_back(p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? gen : Type::Invalid);
+      if (s->infer) {
+        InferContext ctx{*s, op.options, op.inputTypes, op.outputTypes, {}, -1};
+        s->infer(ctx);
+        ASSERT_TRUE(ctx.error.empty()) << ctx.error;
+        op.inputTypes = ctx.inputTypes;
+        op.outputTypes = ctx.outputTypes;
+      }
+      TextureCache textures;
+      std::vector<Value> outs = evaluateOp(op, inputs, env, &textures, test::sourceDir());
+      int ranged = hc.output.empty() ? 0 : s->outputIndex(hc.output);
+      ASSERT_GE(ranged, 0) << "hard case names unknown output " << hc.output;
+      for (size_t o = 0; o < outs.size(); ++o) {
+        if (op.outputTypes[o] == Type::Invalid) continue;
+        for (int c = 0; c < outs[o].size(); ++c) {
+          EXPECT_TRUE(std::isfinite(outs[o][c])) << "output " << s->outputs[o].name << "[" << c << "]";
+          if (static_cast<int>(o) != ranged) continue;
+          EXPECT_GE(outs[o][c], hc.lo - 1e-12) << "output " << s->outputs[o].name << "[" << c << "]";
+          EXPECT_LE(outs[o][c], hc.hi + 1e-12) << "output " << s->outputs[o].name << "[" << c << "]";
+        }
+      }
+    }
+  }
+}
+
+TEST(AllNodes, EachCompilesAloneForEveryTarget) {
+  for (const NodeSpec* s : defaultRegistry().all()) {
+    for (size_t o = 0; o < s->outputs.size(); ++o) {
+      const PortSpec& out = s->outputs[o];
+      Type t = out.kind == PortKind::Fixed ? out.type : Type::Vec3;
+      if (!isFloatScalarOrVector(t)) continue;
+      // Custom outputs of split exist only for some inputs; the vec3 literal gives x, y, z.
+      if (s->type == "split" && out.name == "w") continue;
+      if (out.kind == PortKind::Custom && s->type == "swizzle") t = Type::Vec3;
+      if (out.kind == PortKind::Custom && s->type == "split") t = Type::Float;
+      if (out.kind == PortKind::Custom && s->type == "combine") t = Type::Vec3;
+      SCOPED_TRACE(s->type + "." + out.name);
+      std::string text = singleNodeGraph(*s, out.name, t);
+      Diagnostics diags;
+      auto graph = parseGraph(text, "single.json", diags);
+      ASSERT_TRUE(graph) << text;
+      auto result = compileGraph(*graph, defaultRegistry(), CompileOptions{}, diags);
+      std::string messages;
+      for (const auto& d : diags.all()) messages += formatText(d) + "\n";
+      EXPECT_TRUE(result.has_value()) << messages << text;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wg
