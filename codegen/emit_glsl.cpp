@@ -103,6 +103,7 @@ class OpEmitContext final : public EmitContext {
   std::string builtin(Builtin b) override;
   std::string temporary(Type type, std::string expression) override;
   unsigned stage() const override { return w_.stage; }
+  std::string timePhase(double omega) override;
   std::string texture(std::string_view option) override;
   std::string sceneTexture(std::string_view resource) override;
   const NodeSpec& spec() const override;
@@ -186,6 +187,7 @@ class Emitter {
                         (frag.builtinUniforms.count(u->name) ? kFragmentStage : 0u);
       if (stages) result.uniforms.push_back({u->name, u->type, -1, u->meaning, stages});
     }
+    result.uniforms.insert(result.uniforms.end(), phases_.begin(), phases_.end());
     for (size_t i = 0; i < program_.parameters.size(); ++i) {
       unsigned stages = (vert.parameters.count(static_cast<int>(i)) ? kVertexStage : 0u) |
                         (frag.parameters.count(static_cast<int>(i)) ? kFragmentStage : 0u);
@@ -274,6 +276,17 @@ class Emitter {
                                      : opNames_[static_cast<size_t>(op)];
   }
   const std::string& opName(int op) const { return opNames_[static_cast<size_t>(op)]; }
+
+  std::string phaseUniform(StageWriter& w, double omega) {
+    for (auto& p : phases_)
+      if (p.omega == omega) {
+        p.stages |= w.stage;
+        return p.name;
+      }
+    UniformInfo u{"u_phase" + std::to_string(phases_.size()), Type::Float, -1, "time_phase", w.stage, omega};
+    phases_.push_back(u);
+    return u.name;
+  }
 
   std::string nodeTexture(StageWriter& w, const std::string& source) {
     for (auto& t : textures_)
@@ -477,6 +490,7 @@ class Emitter {
   std::vector<std::string> opNames_;
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
+  std::vector<UniformInfo> phases_;         // time phases, by first use
   std::vector<TextureInfo> textures_;       // node textures, by first use
   std::vector<TextureInfo> sceneTextures_;  // scene resources, by first use (sorted later)
 };
@@ -496,6 +510,7 @@ const nlohmann::json& OpEmitContext::option(std::string_view name) const {
 }
 void OpEmitContext::output(int port, std::string expression) { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
 std::string OpEmitContext::builtin(Builtin b) { return e_.builtinExpr(w_, b); }
+std::string OpEmitContext::timePhase(double omega) { return e_.phaseUniform(w_, omega); }
 std::string OpEmitContext::texture(std::string_view option) {
   const nlohmann::json& v = this->option(option);
   if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");

@@ -14,8 +14,9 @@ struct UniformInfo {
   std::string name;  // GLSL name
   Type type = Type::Float;
   int parameter = -1;       // index into Program::parameters, or -1 for a builtin uniform
-  std::string builtin;      // builtin uniform's meaning ("time", "model", ...) when parameter < 0
+  std::string builtin;      // builtin uniform's meaning ("time", "model", "time_phase", ...) when parameter < 0
   unsigned stages = 0;      // where it is declared
+  double omega = 0;         // time_phase: the value is mod(omega * time, 2 pi)
 };
 
 struct AttributeInfo {

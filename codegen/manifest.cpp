@@ -96,6 +96,7 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
         if (!p.description.empty()) j["description"] = p.description;
       } else {
         j["builtin"] = u.builtin;
+        if (u.builtin == "time_phase") j["angular_frequency"] = u.omega;
       }
       uniforms.push_back(j);
     }

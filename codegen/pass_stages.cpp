@@ -70,7 +70,7 @@ PassResult stagePass(Program& program, PassContext& ctx) {
   auto need = [&](const ValueRef& r) {
     if (r.kind != ValueRef::Kind::Op) return;
     size_t i = static_cast<size_t>(r.index);
-    if (inVertex[i] && perVertex[i] && !program.ops[i].spec->isSource) {
+    if (inVertex[i] && perVertex[i] && !program.ops[i].spec->recomputeInFragment) {
       if (varyingPorts[i].empty()) varyingPorts[i].assign(program.ops[i].outputTypes.size(), false);
       varyingPorts[i][static_cast<size_t>(r.port)] = true;
       isVarying[i] = true;

@@ -104,6 +104,10 @@ class EmitContext {
   // Declares a local `type name = expression;` and returns its generated name.
   virtual std::string temporary(Type type, std::string expression) = 0;
   virtual unsigned stage() const = 0;  // kVertexStage or kFragmentStage
+  // A uniform holding mod(omega * time, 2*pi), computed by the runtime in double
+  // precision each frame, so time-driven phases stay exact at t = 1e6 s where a float
+  // u_time has 0.06 s steps. The CPU reference computes the same in double.
+  virtual std::string timePhase(double omega) = 0;
   // The sampler2D that holds the texture named by a Texture option (declared once per
   // distinct source, listed in the manifest).
   virtual std::string texture(std::string_view option) = 0;
@@ -170,8 +174,11 @@ struct NodeSpec {
   std::vector<PortSpec> outputs;
   std::vector<OptionSpec> options;
   unsigned stages = kAnyStage;
-  // Reads builtins, textures or time: never constant-folded.
+  // Reads builtins, textures or time (ctx.timePhase): never constant-folded.
   bool isSource = false;
+  // Input nodes: reading the attribute or uniform again in the fragment stage is cheaper
+  // than a varying, so the stage pass recomputes them there.
+  bool recomputeInFragment = false;
   // A source that reads only uniforms (time, camera): the same for every vertex, so the
   // fragment stage recomputes it instead of interpolating it.
   bool isUniformSource = false;

@@ -16,6 +16,7 @@ NodeSpec builtinInput(std::string type, Builtin b, std::string summary, std::str
   s.formula = std::move(formula);
   s.stages = stages;
   s.isSource = true;
+  s.recomputeInFragment = true;
   s.outputs = {ports::fixed("out", builtinType(b), "the value")};
   s.emit = [b](EmitContext& ctx) { ctx.output(0, ctx.builtin(b)); };
   s.eval = [b](EvalContext& ctx) { ctx.output(0, ctx.environment().builtin(b)); };
