@@ -20,12 +20,13 @@ std::optional<Program> buildProgram(const Graph& graph, const Registry& registry
   auto program = resolveGraph(graph, registry, diags);
   if (!program) return std::nullopt;
   PassContext ctx{diags};
-  // The recipe. fold and cse can expose more of each other's work, so they repeat until
-  // neither changes anything (bounded: each round removes at least one op).
+  // The recipe. fold, simplify and cse expose more of each other's work, so they repeat
+  // until none changes anything (bounded: each change removes at least one op).
   specialisePass(*program, ctx);
   prunePass(*program, ctx);
   for (int round = 0; round < 8; ++round) {
     bool changed = foldPass(*program, ctx) == PassResult::Changed;
+    changed |= simplifyPass(*program, ctx) == PassResult::Changed;
     changed |= csePass(*program, ctx) == PassResult::Changed;
     if (!changed) break;
   }

@@ -21,6 +21,8 @@ PassResult specialisePass(Program& program, PassContext& ctx);
 PassResult prunePass(Program& program, PassContext& ctx);
 // Evaluates ops whose inputs are all constant through their double `eval`.
 PassResult foldPass(Program& program, PassContext& ctx);
+// Replaces ops that reduce to one of their inputs (x * 1, x + 0, mix(a, b, 0)).
+PassResult simplifyPass(Program& program, PassContext& ctx);
 // Merges ops of the same type, options and inputs.
 PassResult csePass(Program& program, PassContext& ctx);
 // Decides the stage of every op (Op::stage bits); a fragment-only op that feeds a

@@ -183,6 +183,10 @@ struct NodeSpec {
   // fragment stage recomputes it instead of interpolating it.
   bool isUniformSource = false;
   std::function<void(InferContext&)> infer;  // null: Fixed and Gen rules only
+  // Algebraic identity: given the op's constant inputs (nullopt where not constant), the
+  // index of the input its single output equals (x * 1, x + 0, mix(a, b, 0)), or -1. The
+  // simplify pass uses it only when that input already has the output's type.
+  std::function<int(const std::vector<std::optional<Value>>& constants)> identity;
   std::function<void(EmitContext&)> emit;
   std::function<void(EvalContext&)> eval;
   std::vector<HardCase> hardCases;

@@ -58,6 +58,14 @@ NodeSpec binaryFunction(std::string type, std::string fn, std::string summary, F
   return s;
 }
 
+// True when a constant input has every component equal to x.
+bool isAll(const std::optional<Value>& v, double x) {
+  if (!v) return false;
+  for (int i = 0; i < v->size(); ++i)
+    if ((*v)[i] != x) return false;
+  return true;
+}
+
 // The float vector type a Custom input carries, or an error for anything else.
 bool requireFloatVector(InferContext& ctx, int port, int minComponents) {
   Type t = ctx.inputTypes[static_cast<size_t>(port)];
@@ -95,12 +103,25 @@ std::string checkSwizzleMask(const nlohmann::json& v) {
 
 }  // namespace
 
-NodeSpec addNode() { return binaryOperator("add", "+", "Sum.", 0, 0, [](double a, double b) { return a + b; }); }
-NodeSpec subNode() { return binaryOperator("sub", "-", "Difference.", 0, 0, [](double a, double b) { return a - b; }); }
-NodeSpec mulNode() { return binaryOperator("mul", "*", "Product.", 1, 1, [](double a, double b) { return a * b; }); }
+NodeSpec addNode() {
+  NodeSpec s = binaryOperator("add", "+", "Sum.", 0, 0, [](double a, double b) { return a + b; });
+  s.identity = [](const auto& c) { return isAll(c[1], 0) ? 0 : isAll(c[0], 0) ? 1 : -1; };
+  return s;
+}
+NodeSpec subNode() {
+  NodeSpec s = binaryOperator("sub", "-", "Difference.", 0, 0, [](double a, double b) { return a - b; });
+  s.identity = [](const auto& c) { return isAll(c[1], 0) ? 0 : -1; };
+  return s;
+}
+NodeSpec mulNode() {
+  NodeSpec s = binaryOperator("mul", "*", "Product.", 1, 1, [](double a, double b) { return a * b; });
+  s.identity = [](const auto& c) { return isAll(c[1], 1) ? 0 : isAll(c[0], 1) ? 1 : -1; };
+  return s;
+}
 NodeSpec divNode() {
   NodeSpec s = binaryOperator("div", "/", "Quotient (IEEE: a division by zero gives an infinity, as on the GPU).",
                               0, 1, [](double a, double b) { return a / b; });
+  s.identity = [](const auto& c) { return isAll(c[1], 1) ? 0 : -1; };
   return s;
 }
 
@@ -109,6 +130,7 @@ NodeSpec mixNode() {
   s.inputs = {ports::gen("a", 0, "value at t = 0"), ports::gen("b", 1, "value at t = 1"),
               ports::gen("t", 0.5, "blend factor (a float or one per component)")};
   s.outputs = {ports::gen("out", "the blend")};
+  s.identity = [](const auto& c) { return isAll(c[2], 0) ? 0 : isAll(c[2], 1) ? 1 : -1; };
   s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call("mix", {ctx.input(0), ctx.input(1), ctx.input(2)})); };
   s.eval = [](EvalContext& ctx) {
     ctx.output(0, map3(ctx.input(0), ctx.input(1), ctx.input(2), ctx.outputType(0), glsl::mix));

@@ -40,5 +40,37 @@ NodeSpec remapNode();
 NodeSpec fresnelNode();
 // depth_tint.cpp
 NodeSpec depthTintNode();
+// optics_directions.cpp
+NodeSpec reflectDirNode();
+NodeSpec refractDirNode();
+// lighting.cpp
+NodeSpec lambertNode();
+NodeSpec blinnPhongNode();
+NodeSpec phongSpecularNode();
+NodeSpec ggxSpecularNode();
+// water_depth.cpp
+NodeSpec linearizeDepthNode();
+NodeSpec waterDepthNode();
+// absorption.cpp
+NodeSpec absorptionNode();
+NodeSpec hazeNode();
+// color_variation.cpp
+NodeSpec colorVariationNode();
+// subsurface.cpp
+NodeSpec subsurfaceNode();
+
+// gerstner_waves.cpp
+NodeSpec gerstnerWavesNode();
+// trochoid_wave.cpp
+NodeSpec trochoidWaveNode();
+// analytic_normals.cpp
+NodeSpec sineNormalsNode();
+NodeSpec rippleNormalsNode();
+// texture_normals.cpp
+NodeSpec normalMapScrollNode();
+NodeSpec normalFromHeightNode();
+NodeSpec dudvDistortionNode();
+// flow_map.cpp
+NodeSpec flowMapNode();
 
 }  // namespace wg::nodes

@@ -20,6 +20,31 @@ const Registry& defaultRegistry() {
              fresnelNode,
              // depth and colour
              depthTintNode,
+             // optics (reflect, refract, lighting)
+             reflectDirNode,
+             refractDirNode,
+             lambertNode,
+             blinnPhongNode,
+             phongSpecularNode,
+             ggxSpecularNode,
+             // depth and colour (depth, absorption, haze, colour variation)
+             linearizeDepthNode,
+             waterDepthNode,
+             absorptionNode,
+             hazeNode,
+             colorVariationNode,
+             // scattering
+             subsurfaceNode,
+             // waves
+             gerstnerWavesNode,
+             trochoidWaveNode,
+             sineNormalsNode,
+             rippleNormalsNode,
+             normalMapScrollNode,
+             normalFromHeightNode,
+             dudvDistortionNode,
+             // flow
+             flowMapNode,
          })
       r.add(make());
     return r;

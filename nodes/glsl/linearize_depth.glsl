@@ -1,0 +1,14 @@
+// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
+
+// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
+// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
+// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
+// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
+// finite 1e30 instead of inf; the result never exceeds 1e30.
+float wg_linearize_depth(float depth, vec2 near_far) {
+  float n = max(near_far.x, 1e-6);
+  float r = n / max(near_far.y, n);
+  float d = clamp(depth, 0.0, 1.0);
+  float denom = (1.0 - d) + d * r;
+  return min(n / max(denom, n * 1e-30), 1e30);
+}

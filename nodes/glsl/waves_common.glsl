@@ -1,0 +1,15 @@
+// Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
+// ripple_normals, normal_map_scroll, normal_from_height, flow_map).
+
+// The unit vector of v, or `fallback` when v is (nearly) zero: a degenerate frame (a
+// Gerstner cusp, two opposite normals blended) still yields a unit direction, never NaN.
+vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
+  float l2 = dot(v, v);
+  return l2 < 1e-12 ? fallback : v * inversesqrt(l2);
+}
+
+// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
+// unit; the up vector when the result degenerates.
+vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + n * ts.z, vec3(0.0, 1.0, 0.0));
+}

@@ -1,0 +1,242 @@
+// Optics, local lighting: lambert and blinn_phong (seed 002, levels 1 and 2),
+// phong_specular (seed 001's sun and environment Phong terms) and ggx_specular (seed 002's
+// Cook-Torrance with GGX D, Schlick F and Smith/Schlick-GGX G).
+#include <cmath>
+
+#include "nodes/eval_math.h"
+#include "nodes/fresnel_reference.h"
+#include "nodes/node_library.h"
+#include "nodes/port_builders.h"
+#include "nodes/shading_reference.h"
+
+namespace wg::nodes {
+namespace {
+
+// Towards the sun: seed 000's sun travels along (-1, -1, 0.5), so the light lies at (1, 1, -0.5).
+Value defaultSun() { return Value::vector({1, 1, -0.5}); }
+
+PortSpec normalPort() {
+  return ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "surface normal (normalised here)");
+}
+PortSpec viewPort() {
+  return ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection, "direction from the surface to the viewer");
+}
+PortSpec lightPort(std::string name = "light") {
+  return ports::fixed(std::move(name), Type::Vec3, defaultSun(),
+                      "direction from the surface towards the light (normalised here); default seed 000's sun");
+}
+
+Value scaled(const Value& c, double k) { return glsl::scale(c.convertedTo(Type::Vec3), k); }
+
+const Value kUp = Value::vector({0, 1, 0});
+const Value kZero = Value::vector({0, 0, 0});
+
+}  // namespace
+
+NodeSpec lambertNode() {
+  NodeSpec s;
+  s.type = "lambert";
+  s.family = "optics";
+  s.summary = "Lambert diffuse lighting: N.L clamped to [0, 1].";
+  s.formula = "intensity = clamp(dot(normalize(N), normalize(L)), 0, 1); color = light_color * surface_color * intensity.";
+  s.seed = "002 (Level 1: Lambert, NdotL = max(dot(N, L), 0))";
+  s.cost = "2 safe normalisations + a dot: ~12 ALU";
+  s.inputs = {normalPort(), lightPort(),
+              ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light"),
+              ports::fixed("surface_color", Type::Vec3, Value::vector({1, 1, 1}), "diffuse colour of the surface")};
+  s.outputs = {ports::fixed("intensity", Type::Float, "N.L in [0, 1]"),
+               ports::fixed("color", Type::Vec3, "light_color * surface_color * intensity")};
+  s.emit = [](EmitContext& ctx) {
+    std::string i = ctx.temporary(Type::Float, EmitContext::call("wg_lambert", {ctx.input("normal"), ctx.input("light")}));
+    ctx.output(0, i);
+    ctx.output(1, "(" + ctx.input("light_color") + " * " + ctx.input("surface_color") + " * " + i + ")");
+  };
+  s.eval = [](EvalContext& ctx) {
+    double i = lambertReference(ctx.input("normal"), ctx.input("light"));
+    ctx.output(0, Value::scalar(i));
+    const Value &lc = ctx.input("light_color"), &sc = ctx.input("surface_color");
+    ctx.output(1, Value::vector({lc[0] * sc[0] * i, lc[1] * sc[1] * i, lc[2] * sc[2] * i}));
+  };
+  s.tolerance = 1e-6;
+  s.hardCases = {
+      {"light below the horizon", {{"normal", kUp}, {"light", Value::vector({0, -1, 0})}}, {}, "0", 0, 0},
+      {"zero-length light", {{"normal", kUp}, {"light", kZero}}, {}, "0, not NaN", 0, 0},
+      {"unnormalised, parallel", {{"normal", Value::vector({0, 1e5, 0})}, {"light", Value::vector({0, 1e-5, 0})}}, {},
+       "1 (normalised first)", 0, 1},
+  };
+  return s;
+}
+
+NodeSpec blinnPhongNode() {
+  NodeSpec s;
+  s.type = "blinn_phong";
+  s.family = "optics";
+  s.summary = "Blinn-Phong lighting: a specular highlight from the half vector, plus Lambert diffuse.";
+  s.formula =
+      "H = normalize(L + V); specular = strength * max(N.H, 0)^shininess (safe pow); diffuse = max(N.L, 0); "
+      "color = light_color * (surface_color * diffuse + specular).";
+  s.seed = "002 (Level 2: Blinn-Phong, shininess 32 / 64 / 128)";
+  s.cost = "5 safe normalisations, exp2 + log2: ~30 ALU";
+  s.inputs = {normalPort(), viewPort(), lightPort(),
+              ports::fixed("shininess", Type::Float, Value::scalar(64), "exponent: 8 soft, 64 medium, 256 sharp"),
+              ports::fixed("strength", Type::Float, Value::scalar(1), "specular strength"),
+              ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light"),
+              ports::fixed("surface_color", Type::Vec3, Value::vector({0, 0, 0}),
+                           "diffuse colour (black: the specular highlight alone)")};
+  s.outputs = {ports::fixed("specular", Type::Float, "strength * max(N.H, 0)^shininess"),
+               ports::fixed("diffuse", Type::Float, "max(N.L, 0)"),
+               ports::fixed("color", Type::Vec3, "light_color * (surface_color * diffuse + specular)")};
+  s.emit = [](EmitContext& ctx) {
+    std::string sp = ctx.temporary(
+        Type::Float, "(" + ctx.input("strength") + " * " +
+                         EmitContext::call("wg_blinn_phong_specular", {ctx.input("normal"), ctx.input("view"),
+                                                                       ctx.input("light"), ctx.input("shininess")}) +
+                         ")");
+    std::string di = ctx.temporary(Type::Float, EmitContext::call("wg_lambert", {ctx.input("normal"), ctx.input("light")}));
+    ctx.output(0, sp);
+    ctx.output(1, di);
+    ctx.output(2, "(" + ctx.input("light_color") + " * (" + ctx.input("surface_color") + " * " + di + " + " + sp + "))");
+  };
+  s.eval = [](EvalContext& ctx) {
+    double sp = ctx.scalar("strength") * blinnPhongSpecularReference(ctx.input("normal"), ctx.input("view"),
+                                                                     ctx.input("light"), ctx.scalar("shininess"));
+    double di = lambertReference(ctx.input("normal"), ctx.input("light"));
+    ctx.output(0, Value::scalar(sp));
+    ctx.output(1, Value::scalar(di));
+    const Value &lc = ctx.input("light_color"), &sc = ctx.input("surface_color");
+    Value c = Value::ofType(Type::Vec3);
+    for (int i = 0; i < 3; ++i) c[i] = lc[i] * (sc[i] * di + sp);
+    ctx.output(2, c);
+  };
+  s.tolerance = 1e-5;
+  s.hardCases = {
+      {"light opposite the viewer (H = 0)", {{"normal", kUp}, {"view", kUp}, {"light", Value::vector({0, -1, 0})}}, {},
+       "0, not NaN", 0, 0},
+      {"shininess 0 with N.H = 0", {{"normal", Value::vector({1, 0, 0})}, {"view", kUp}, {"light", kUp},
+                                    {"shininess", Value::scalar(0)}}, {}, "pow base 0: 1, finite", 0, 1},
+      {"grazing view, huge shininess", {{"normal", kUp}, {"view", Value::vector({1, 0, 0})},
+                                        {"shininess", Value::scalar(1e6)}}, {}, "0, finite", 0, 1},
+      {"zero-length normal", {{"normal", kZero}}, {}, "0, finite", 0, 1},
+  };
+  return s;
+}
+
+NodeSpec phongSpecularNode() {
+  NodeSpec s;
+  s.type = "phong_specular";
+  s.family = "optics";
+  s.summary = "Seed 001's Phong specular reflection of the sun and of the environment light.";
+  s.formula =
+      "R(L) = 2 (N.L) N - L (L mirrored about N; equivalently the view ray reflected, reflect(-V, N).L); "
+      "sun = clamp(R(sun).V, 0, 1)^shine (safe pow); environment = clamp(R(environment).V, 0, 1) (no exponent, "
+      "as in seed 001); color = sun * sun_color + environment * environment_color.";
+  s.seed = "001 (listing 9: SpecularIntensity = pow(max(-dot(2 (N.L) N - L, camera-to-surface), 0), LightColor.w), "
+           "EnvironmentSpecularIntensity likewise without exponent); shine 20 from seed 000's shineDamper";
+  s.cost = "6 safe normalisations, exp2 + log2: ~40 ALU";
+  s.inputs = {normalPort(), viewPort(), lightPort("sun"),
+              ports::fixed("shine", Type::Float, Value::scalar(20), "sun exponent (seed 001's LightColor.w, seed 000's "
+                                                                   "shineDamper = 20)"),
+              ports::fixed("sun_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the sun light"),
+              ports::fixed("environment", Type::Vec3, kUp, "direction towards the environment light (the sky)"),
+              ports::fixed("environment_color", Type::Vec3, Value::vector({0.3, 0.35, 0.4}),
+                           "colour of the environment light")};
+  s.outputs = {ports::fixed("sun_specular", Type::Float, "the sun's specular intensity in [0, 1]"),
+               ports::fixed("environment_specular", Type::Float, "the environment's specular intensity in [0, 1]"),
+               ports::fixed("color", Type::Vec3, "sun * sun_color + environment * environment_color")};
+  s.emit = [](EmitContext& ctx) {
+    std::string sun = ctx.temporary(
+        Type::Float, EmitContext::call("wg_safe_pow_float",
+                                       {EmitContext::call("wg_phong_specular_lobe",
+                                                          {ctx.input("normal"), ctx.input("view"), ctx.input("sun")}),
+                                        ctx.input("shine")}));
+    std::string env = ctx.temporary(
+        Type::Float,
+        EmitContext::call("wg_phong_specular_lobe", {ctx.input("normal"), ctx.input("view"), ctx.input("environment")}));
+    ctx.output(0, sun);
+    ctx.output(1, env);
+    ctx.output(2, "(" + sun + " * " + ctx.input("sun_color") + " + " + env + " * " + ctx.input("environment_color") + ")");
+  };
+  s.eval = [](EvalContext& ctx) {
+    double sun = glsl::safePow(phongSpecularLobeReference(ctx.input("normal"), ctx.input("view"), ctx.input("sun")),
+                               ctx.scalar("shine"));
+    double env = phongSpecularLobeReference(ctx.input("normal"), ctx.input("view"), ctx.input("environment"));
+    ctx.output(0, Value::scalar(sun));
+    ctx.output(1, Value::scalar(env));
+    const Value &sc = ctx.input("sun_color"), &ec = ctx.input("environment_color");
+    ctx.output(2, Value::vector({sun * sc[0] + env * ec[0], sun * sc[1] + env * ec[1], sun * sc[2] + env * ec[2]}));
+  };
+  s.tolerance = 1e-5;
+  s.hardCases = {
+      {"sun behind the viewer's reflection", {{"normal", kUp}, {"view", kUp}, {"sun", Value::vector({0, -1, 0})}}, {},
+       "0 (pow base 0)", 0, 0},
+      {"grazing view", {{"normal", kUp}, {"view", Value::vector({1, 0, 0})}}, {}, "finite, in [0, 1]", 0, 1},
+      {"zero-length vectors", {{"normal", kZero}, {"view", kZero}, {"sun", kZero}}, {}, "0, not NaN", 0, 0},
+      {"shine 0", {{"normal", kUp}, {"view", Value::vector({1, 0, 0})}, {"shine", Value::scalar(0)}}, {},
+       "pow(0, 0) = 1, finite", 0, 1},
+  };
+  return s;
+}
+
+NodeSpec ggxSpecularNode() {
+  NodeSpec s;
+  s.type = "ggx_specular";
+  s.family = "optics";
+  s.summary = "Cook-Torrance microfacet specular: GGX distribution, Schlick Fresnel (F0 = 0.02), Smith/Schlick-GGX "
+              "geometry.";
+  s.formula =
+      "H = normalize(L + V), a = r^2 with r = clamp(roughness, 0.001, 1); D = a^2 / (pi (NdotH^2 a^2 + 1 - NdotH^2)^2) "
+      "(GGX / Trowbridge-Reitz); F = F0 + (1 - F0)(1 - V.H)^5; G = G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), "
+      "k = (r + 1)^2 / 8. brdf = D F G / (4 NdotL NdotV), computed as D F / (4 (NdotL (1 - k) + k)(NdotV (1 - k) + k)): "
+      "identical where NdotL, NdotV > 0 and its finite limit where either is 0, so nothing divides by zero. "
+      "specular = brdf * NdotL; color = light_color * specular. All dots clamped to [0, 1].";
+  s.seed = "002 (Level 3: Cook-Torrance, DistributionGGX, FresnelSchlick with F0 = 0.02, GeometrySmith; water "
+           "roughness ~0.05)";
+  s.cost = "5 safe normalisations, 2 divisions: ~45 ALU";
+  s.inputs = {normalPort(), viewPort(), lightPort(),
+              ports::fixed("roughness", Type::Float, Value::scalar(0.05),
+                           "perceptual roughness (water ~0.05); clamped to [0.001, 1]"),
+              ports::fixed("f0", Type::Float, Value::scalar(0.02), "reflectance at normal incidence (water 0.02)"),
+              ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour (radiance) of the light")};
+  s.outputs = {ports::fixed("specular", Type::Float, "brdf * NdotL: reflected radiance per unit light"),
+               ports::fixed("brdf", Type::Float, "D F G / (4 NdotL NdotV)"),
+               ports::fixed("distribution", Type::Float, "the GGX term D (at most 1 / (pi a^2) = 3.2e11)"),
+               ports::fixed("fresnel", Type::Float, "the Schlick term F"),
+               ports::fixed("color", Type::Vec3, "light_color * specular")};
+  s.emit = [](EmitContext& ctx) {
+    std::string t = ctx.temporary(
+        Type::Vec4, EmitContext::call("wg_ggx_specular", {ctx.input("normal"), ctx.input("view"), ctx.input("light"),
+                                                          ctx.input("roughness"), ctx.input("f0")}));
+    std::string sp = ctx.temporary(Type::Float, "(" + t + ".x * " + t + ".w)");
+    ctx.output(0, sp);
+    ctx.output(1, t + ".x");
+    ctx.output(2, t + ".y");
+    ctx.output(3, t + ".z");
+    ctx.output(4, "(" + ctx.input("light_color") + " * " + sp + ")");
+  };
+  s.eval = [](EvalContext& ctx) {
+    GgxTerms g = ggxSpecularReference(ctx.input("normal"), ctx.input("view"), ctx.input("light"),
+                                      ctx.scalar("roughness"), ctx.scalar("f0"));
+    double sp = g.brdf * g.ndotl;
+    ctx.output(0, Value::scalar(sp));
+    ctx.output(1, Value::scalar(g.brdf));
+    ctx.output(2, Value::scalar(g.d));
+    ctx.output(3, Value::scalar(g.f));
+    ctx.output(4, scaled(ctx.input("light_color"), sp));
+  };
+  s.tolerance = 1e-5;  // relative: D reaches 3.2e11 at roughness 0.001; float32 keeps ~1e-6 of it
+  Value grazing = Value::vector({1, 0, 0});
+  s.hardCases = {
+      {"N.V = 0 (grazing view)", {{"normal", kUp}, {"view", grazing}}, {}, "finite, >= 0", 0, 1e12},
+      {"N.L = 0 (grazing light)", {{"normal", kUp}, {"view", kUp}, {"light", grazing}}, {}, "specular 0", 0, 0},
+      {"mirror smooth at the highlight", {{"normal", kUp}, {"view", kUp}, {"light", kUp},
+                                          {"roughness", Value::scalar(0)}}, {},
+       "D = 1 / (pi 1e-12): large but finite", 0, 1e12},
+      {"light opposite the viewer (H = 0)", {{"normal", kUp}, {"view", grazing}, {"light", Value::vector({-1, 0, 0})}},
+       {}, "finite", 0, 1e12},
+      {"zero-length vectors", {{"normal", kZero}, {"view", kZero}, {"light", kZero}}, {}, "0, not NaN", 0, 0},
+      {"roughness above 1", {{"roughness", Value::scalar(5)}}, {}, "clamped to 1, finite", 0, 1e12},
+  };
+  return s;
+}
+
+}  // namespace wg::nodes

@@ -1,0 +1,159 @@
+// Noise family, part 1: `hash` (PCG3D on the integer cell, bit-identical on CPU and GPU),
+// `value_noise` (hashed lattice, cubic Hermite blend, seed 004) and `fbm` (octaves of value
+// noise). `voronoi` is in voronoi.cpp. The double references live in noise_reference.cpp.
+#include <string>
+
+#include "nodes/eval_math.h"
+#include "nodes/node_library.h"
+#include "nodes/noise_reference.h"
+#include "nodes/port_builders.h"
+
+namespace wg::nodes {
+namespace {
+
+// p must be a vec2 or a vec3 (the hashed cell's dimension).
+void requireVec2OrVec3(InferContext& ctx, int port) {
+  Type t = ctx.inputTypes[static_cast<size_t>(port)];
+  if (t != Type::Vec2 && t != Type::Vec3) {
+    ctx.error = "input '" + ctx.spec.inputs[static_cast<size_t>(port)].name + "' takes vec2 or vec3, not " +
+                std::string(typeName(t));
+    ctx.errorInput = port;
+  }
+}
+
+std::string suffix(Type t) { return t == Type::Vec2 ? "_vec2" : "_vec3"; }
+
+// The coordinate times the scale input, as GLSL and in double.
+std::string scaled(EmitContext& ctx) { return "(" + ctx.input("p") + " * " + ctx.input("scale") + ")"; }
+Value scaled(EvalContext& ctx) { return glsl::scale(ctx.input("p"), ctx.scalar("scale")); }
+
+PortSpec positionPort(std::string doc) {
+  PortSpec p = ports::custom("p", std::move(doc));
+  p.defaultBuiltin = Builtin::WorldPosition;
+  return p;
+}
+
+OptionSpec octavesOption() {
+  OptionSpec o;
+  o.name = "octaves";
+  o.kind = OptionSpec::Kind::Integer;
+  o.defaultValue = 4;
+  o.min = 1;
+  o.max = 8;
+  o.doc = "number of value-noise layers (quality level: each octave costs one value_noise)";
+  return o;
+}
+
+}  // namespace
+
+NodeSpec hashNode() {
+  NodeSpec s;
+  s.type = "hash";
+  s.family = "noise";
+  s.summary = "Integer hash of a coordinate's cell: three pseudo-random numbers in [0, 1), bit-identical on CPU and GPU.";
+  s.formula =
+      "c = uint(int(clamp(floor(p), -2^31, 2147483520))) per component (a vec2 cell is (x, y, 0)); "
+      "h = PCG3D(c): v = v * 1664525 + 1013904223; v.x += v.y v.z; v.y += v.z v.x; v.z += v.x v.y; v ^= v >> 16; "
+      "the three mixing steps again (all mod 2^32). vec = (h >> 8) * 2^-24 per component, value = vec.x.";
+  s.seed = "004 (its noise hash, replaced by an integer hash: Jarzynski and Olano, \"Hash Functions for GPU Rendering\", 2020)";
+  s.cost = "~20 integer ALU (PCG3D), no transcendental functions";
+  s.inputs = {positionPort("vec2 or vec3 coordinate (default: the world position); its integer cell floor(p) is hashed")};
+  s.outputs = {ports::fixed("value", Type::Float, "one hashed number in [0, 1) (= vec.x)"),
+               ports::fixed("vec", Type::Vec3, "three independent hashed numbers in [0, 1)")};
+  s.infer = [](InferContext& ctx) { requireVec2OrVec3(ctx, 0); };
+  s.emit = [](EmitContext& ctx) {
+    std::string h = ctx.temporary(Type::Vec3, EmitContext::call("wg_hash" + suffix(ctx.inputType(0)), {ctx.input("p")}));
+    ctx.output(0, h + ".x");
+    ctx.output(1, h);
+  };
+  s.eval = [](EvalContext& ctx) {
+    const Value& p = ctx.input("p");
+    auto h = p.size() == 2 ? noise::hash2(p[0], p[1]) : noise::hash3(p[0], p[1], p[2]);
+    ctx.output(0, Value::scalar(h[0]));
+    ctx.output(1, Value::vector({h[0], h[1], h[2]}));
+  };
+  // The hash is exact: the GPU's words equal the CPU's for any float32 input.
+  s.tolerance = 1e-12;
+  s.hardCases = {
+      {"cell 1e7", {{"p", Value::vector({1e7, 1e7 + 1, -1e7})}}, {}, "in [0, 1), exact on the GPU", 0, 1},
+      {"negative cells", {{"p", Value::vector({-0.5, -1.0, -3.25})}}, {}, "in [0, 1)", 0, 1},
+      {"beyond the int range", {{"p", Value::vector({1e30, -1e30, 3e38})}}, {}, "clamped cell, in [0, 1)", 0, 1},
+      {"huge coordinates 1e5 m (vec2)", {{"p", Value::vector({1e5, -1e5})}}, {}, "in [0, 1)", 0, 1},
+  };
+  return s;
+}
+
+NodeSpec valueNoiseNode() {
+  NodeSpec s;
+  s.type = "value_noise";
+  s.family = "noise";
+  s.summary = "Value noise: PCG-hashed values on the integer lattice, blended smoothly (2D or 3D).";
+  s.formula =
+      "q = p * scale; i = floor(q), f = q - i, u = f^2 (3 - 2f); lattice(c) = hash(c).x; "
+      "2D: mix(mix(l(i), l(i+x), u.x), mix(l(i+y), l(i+x+y), u.x), u.y); 3D: the same trilinearly over 8 corners. "
+      "Output in [0, 1).";
+  s.seed = "004 (valueNoise: cubic Hermite blend of four hashed corners)";
+  s.cost = "2D: 4 hashes (~80 integer ALU) + ~15 ALU; 3D: 8 hashes + ~30 ALU";
+  s.inputs = {positionPort("vec2 or vec3 coordinate (default: the world position)"),
+              ports::fixed("scale", Type::Float, Value::scalar(1.0), "lattice cells per unit of p")};
+  s.outputs = {ports::fixed("value", Type::Float, "noise in [0, 1)")};
+  s.infer = [](InferContext& ctx) { requireVec2OrVec3(ctx, 0); };
+  s.emit = [](EmitContext& ctx) {
+    ctx.output(0, EmitContext::call("wg_value_noise" + suffix(ctx.inputType(0)), {scaled(ctx)}));
+  };
+  s.eval = [](EvalContext& ctx) {
+    Value q = scaled(ctx);
+    ctx.output(0, Value::scalar(q.size() == 2 ? noise::valueNoise2(q[0], q[1]) : noise::valueNoise3(q[0], q[1], q[2])));
+  };
+  // Float32 fract(p) near |p| = 1e3 carries ~6e-5 of error, times the Hermite slope 1.5.
+  s.tolerance = 1e-4;
+  s.hardCases = {
+      {"huge coordinates 1e5 m", {{"p", Value::vector({1e5, 3.5, -1e5})}}, {}, "in [0, 1)", 0, 1},
+      {"beyond the int range", {{"p", Value::vector({1e30, -1e30})}}, {}, "clamped cell, in [0, 1)", 0, 1},
+      {"negative cells", {{"p", Value::vector({-0.25, -7.75})}}, {}, "in [0, 1)", 0, 1},
+  };
+  return s;
+}
+
+NodeSpec fbmNode() {
+  NodeSpec s;
+  s.type = "fbm";
+  s.family = "noise";
+  s.summary = "Fractal Brownian motion: octaves of value noise at growing frequency and shrinking amplitude.";
+  s.formula =
+      "lac = clamp(lacunarity, 0, 8), g = clamp(gain, 0, 4); q_0 = p * scale, q_(i+1) = q_i * lac, a_i = g^i; "
+      "fbm = sum_i a_i value_noise(q_i + i (17.31, 9.73[, 5.47])) / sum_i a_i, i < octaves. Output in [0, 1).";
+  s.seed = "004 (layered value noise for the foam mask and colour variation)";
+  s.cost = "octaves x value_noise: 2D ~100 ALU per octave (4 hashes), 3D ~190 (8 hashes); octaves 1..8";
+  s.inputs = {positionPort("vec2 or vec3 coordinate (default: the world position)"),
+              ports::fixed("scale", Type::Float, Value::scalar(1.0), "lattice cells per unit of p (first octave)"),
+              ports::fixed("lacunarity", Type::Float, Value::scalar(2.0), "frequency ratio between octaves, clamped to [0, 8]"),
+              ports::fixed("gain", Type::Float, Value::scalar(0.5), "amplitude ratio between octaves, clamped to [0, 4]")};
+  s.outputs = {ports::fixed("value", Type::Float, "noise in [0, 1)")};
+  s.options = {octavesOption()};
+  s.infer = [](InferContext& ctx) { requireVec2OrVec3(ctx, 0); };
+  s.emit = [](EmitContext& ctx) {
+    int octaves = ctx.option("octaves").get<int>();
+    ctx.output(0, EmitContext::call("wg_fbm" + suffix(ctx.inputType(0)),
+                                    {scaled(ctx), std::to_string(octaves), ctx.input("lacunarity"), ctx.input("gain")}));
+  };
+  s.eval = [](EvalContext& ctx) {
+    Value q = scaled(ctx);
+    int octaves = ctx.option("octaves").get<int>();
+    double lac = ctx.scalar("lacunarity"), gain = ctx.scalar("gain");
+    ctx.output(0, Value::scalar(q.size() == 2 ? noise::fbm2(q[0], q[1], octaves, lac, gain)
+                                              : noise::fbm3(q[0], q[1], q[2], octaves, lac, gain)));
+  };
+  // The finest octave multiplies p by lacunarity^7, so float32 error grows with it.
+  s.tolerance = 1e-3;
+  s.hardCases = {
+      {"8 octaves at 1e5 m", {{"p", Value::vector({1e5, -1e5})}}, {{"octaves", 8}}, "in [0, 1)", 0, 1},
+      {"zero gain", {{"p", Value::vector({0.3, 0.7, 0.1})}, {"gain", Value::scalar(0)}}, {}, "the first octave only", 0, 1},
+      {"huge gain and lacunarity", {{"p", Value::vector({0.3, 0.7})}, {"gain", Value::scalar(1e30)},
+                                    {"lacunarity", Value::scalar(1e30)}}, {{"octaves", 8}}, "clamped, in [0, 1)", 0, 1},
+      {"negative gain", {{"p", Value::vector({0.3, 0.7})}, {"gain", Value::scalar(-2)}}, {}, "clamped to 0, in [0, 1)", 0, 1},
+  };
+  return s;
+}
+
+}  // namespace wg::nodes

@@ -1,0 +1,57 @@
+#pragma once
+// Double-precision references of the optics, depth-and-colour and scattering nodes
+// (reflect_dir, refract_dir, lambert, blinn_phong, phong_specular, ggx_specular,
+// linearize_depth, water_depth, absorption, haze, color_variation, subsurface). Each
+// mirrors its GLSL function in nodes/glsl/ line for line (same clamps, same guards); the
+// nodes' eval and their tests share them.
+#include <cstdint>
+
+#include "core/value.h"
+
+namespace wg::nodes {
+
+// reflect(-V, N) with safe normalisation of inputs and result (reflect_dir.glsl).
+Value reflectDirReference(const Value& n, const Value& v);
+
+struct Refraction {
+  Value direction;  // unit refracted direction, or the mirror reflection under TIR
+  bool tir = false;
+};
+// eta = n_viewer / n_other (refract_dir.glsl).
+Refraction refractDirReference(const Value& n, const Value& v, double eta);
+
+double lambertReference(const Value& n, const Value& l);
+double blinnPhongSpecularReference(const Value& n, const Value& v, const Value& l, double shininess);
+double phongSpecularLobeReference(const Value& n, const Value& v, const Value& l);
+
+struct GgxTerms {
+  double brdf = 0;   // D F G / (4 NdotL NdotV)
+  double d = 0;      // GGX distribution
+  double f = 0;      // Schlick Fresnel at V.H
+  double ndotl = 0;  // clamped N.L
+};
+double ggxDistributionReference(double ndoth, double a2);
+double ggxVisibilityReference(double ndotl, double ndotv, double roughness);
+GgxTerms ggxSpecularReference(const Value& n, const Value& v, const Value& l, double roughness, double f0);
+
+// n / ((1 - d) + d n / f), guarded as linearize_depth.glsl; never above kMaxLinearDepth.
+inline constexpr double kMaxLinearDepth = 1e30;
+double linearizeDepthReference(double depth, double nearPlane, double farPlane);
+// `view` is a column-major mat4 Value.
+double waterDepthRayFactorReference(const Value& view, const Value& v);
+double waterDepthThicknessReference(double sceneLinear, double surfaceLinear, double factor, double vertical);
+
+Value beerLambertReference(const Value& sigma, double distance);
+Value relativeAbsorptionReference(double distance, double maxDistance, double kRed, double kGreen);
+double hazeFactorReference(double distance, double hazeDistance);
+
+uint32_t colorVariationPcg(uint32_t v);
+double colorVariationCell(int32_t x, int32_t y);
+double colorVariationNoise(double x, double y);
+Value colorVariationReference(const Value& base, const Value& n, const Value& sun, double height, double noise,
+                              double slopeStrength, double noiseStrength, double trough);
+
+double subsurfaceIntensityReference(const Value& n, const Value& v, const Value& l, double distortion, double power,
+                                    double height);
+
+}  // namespace wg::nodes

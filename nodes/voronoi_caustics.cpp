@@ -1,0 +1,106 @@
+// voronoi_caustics: seed 003's caustics, two animated Voronoi layers at different scales
+// and speeds, each (1 - F1)^3 with F1 clamped to [0, 1], averaged (or min / product).
+#include <algorithm>
+
+#include "nodes/eval_math.h"
+#include "nodes/node_library.h"
+#include "nodes/noise_reference.h"
+#include "nodes/port_builders.h"
+#include "nodes/voronoi_common.h"
+
+namespace wg::nodes {
+namespace {
+
+// Seed 003: the second layer samples p * 1.3 + 5 and runs at 1.2 times the speed.
+constexpr double kLayer2Scale = 1.3, kLayer2Offset = 5.0, kLayer2Speed = 1.2;
+
+double layerReference(double x, double y, double jitter, double phase, bool animated, bool full) {
+  double d = glsl::saturate(noise::voronoi(x, y, jitter, phase, animated, full).f1);
+  double m = 1.0 - d;
+  return m * m * m;
+}
+
+}  // namespace
+
+// (1 - clamp(d, 0, 1))^3: one caustic layer's intensity for a Voronoi F1 of d.
+double voronoiCausticsIntensity(double d) {
+  double m = 1.0 - glsl::saturate(d);
+  return m * m * m;
+}
+
+NodeSpec voronoiCausticsNode() {
+  NodeSpec s;
+  s.type = "voronoi_caustics";
+  s.family = "caustics";
+  s.summary = "Animated caustic light pattern from one or two Voronoi layers (seed 003).";
+  s.formula =
+      "q = p * scale; c1 = (1 - clamp(F1(q, phase), 0, 1))^3, c2 = (1 - clamp(F1(1.3 q + 5, phase2), 0, 1))^3 with "
+      "phase = mod(speed t, 2 pi), phase2 = mod(1.2 speed t, 2 pi) (F1 from the voronoi node: jitter, search). "
+      "combine: average (c1 + c2) / 2 (seed 003), min(c1, c2), or multiply c1 c2; layers = 1 gives c1. "
+      "caustics = intensity * combined. F1 can exceed 1, hence the clamp before 1 - F1.";
+  s.seed = "003 (section 6: voronoi(uv, t) and voronoi(uv * 1.3 + 5, 1.2 t), pow(1 - d, 3), averaged)";
+  s.cost = "per layer one voronoi (3x3: 9 hashes ~250 ALU + 18 sin/cos animated; 2x2: 4 hashes ~110 ALU + 8 sin/cos); "
+           "layers 2 doubles it";
+  s.inputs = {ports::fromBuiltin("p", Type::Vec2, Builtin::Uv, "2D coordinate (default: the mesh uv), e.g. world xz"),
+              ports::fixed("scale", Type::Float, Value::scalar(4.0), "Voronoi cells per unit of p"),
+              ports::fixed("jitter", Type::Float, Value::scalar(1.0), "feature point jitter, 0..1"),
+              ports::fixed("time", Type::Float, Value::scalar(0.0), "seconds, used when animation = time_input"),
+              ports::fixed("intensity", Type::Float, Value::scalar(1.0), "brightness multiplier")};
+  s.outputs = {ports::fixed("caustics", Type::Float, "caustic intensity, in [0, intensity]")};
+  s.options = voronoiOptions(1.0);
+  s.options.push_back(ports::choice("layers", {"2", "1"}, "2", "quality: two layers (seed 003) or one (half the cost)"));
+  s.options.push_back(ports::choice("combine", {"average", "min", "multiply"}, "average",
+                                    "how two layers combine: average (seed 003), min (thinner lines), multiply (sparser)"));
+  s.isSource = true;  // reads the time phase
+  s.emit = [](EmitContext& ctx) {
+    bool full = ctx.option("search").get<std::string>() == "3x3";
+    bool animated = ctx.option("animation").get<std::string>() != "static";
+    std::string a = animated ? "true" : "false", f = full ? "true" : "false";
+    std::string q = ctx.temporary(Type::Vec2, "(" + ctx.input("p") + " * " + ctx.input("scale") + ")");
+    std::string c1 = ctx.temporary(
+        Type::Float, EmitContext::call("wg_voronoi_caustics_layer", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, 1.0), a, f}));
+    std::string c = c1;
+    if (ctx.option("layers").get<std::string>() == "2") {
+      std::string q2 = "(" + q + " * " + ctx.literal(kLayer2Scale) + " + " + ctx.literal(kLayer2Offset) + ")";
+      std::string c2 = ctx.temporary(
+          Type::Float,
+          EmitContext::call("wg_voronoi_caustics_layer", {q2, ctx.input("jitter"), emitVoronoiPhase(ctx, kLayer2Speed), a, f}));
+      std::string mode = ctx.option("combine").get<std::string>();
+      c = mode == "average" ? "(0.5 * (" + c1 + " + " + c2 + "))"
+          : mode == "min"   ? "min(" + c1 + ", " + c2 + ")"
+                            : "(" + c1 + " * " + c2 + ")";
+    }
+    ctx.output(0, "(" + ctx.input("intensity") + " * " + c + ")");
+  };
+  s.eval = [](EvalContext& ctx) {
+    bool full = ctx.option("search").get<std::string>() == "3x3";
+    bool animated = ctx.option("animation").get<std::string>() != "static";
+    const Value& p = ctx.input("p");
+    double k = ctx.scalar("scale"), jitter = ctx.scalar("jitter");
+    double qx = p[0] * k, qy = p[1] * k;
+    double c = layerReference(qx, qy, jitter, evalVoronoiPhase(ctx, 1.0), animated, full);
+    if (ctx.option("layers").get<std::string>() == "2") {
+      double c2 = layerReference(qx * kLayer2Scale + kLayer2Offset, qy * kLayer2Scale + kLayer2Offset, jitter,
+                                 evalVoronoiPhase(ctx, kLayer2Speed), animated, full);
+      std::string mode = ctx.option("combine").get<std::string>();
+      c = mode == "average" ? 0.5 * (c + c2) : mode == "min" ? std::min(c, c2) : c * c2;
+    }
+    ctx.output(0, Value::scalar(ctx.scalar("intensity") * c));
+  };
+  // F1's float32 error (1e-4) times the cube's slope (3).
+  s.tolerance = 5e-4;
+  s.hardCases = {
+      // At q = (50.09375, 86.09375) (scale 1, jitter 1, static), both searches find
+      // F1 = 1.2008 > 1: the unclamped 1 - F1 would be a negative base.
+      {"F1 > 1", {{"p", Value::vector({50.09375, 86.09375})}, {"scale", Value::scalar(1.0)}},
+       {{"animation", "static"}, {"layers", "1"}}, "F1 clamped: 0, not NaN", 0, 1},
+      {"F1 > 1, 2x2 search", {{"p", Value::vector({50.09375, 86.09375})}, {"scale", Value::scalar(1.0)}},
+       {{"animation", "static"}, {"layers", "1"}, {"search", "2x2"}}, "F1 clamped: 0, not NaN", 0, 1},
+      {"huge time input 1e6 s", {{"p", Value::vector({0.3, 0.6})}, {"time", Value::scalar(1e6)}},
+       {{"animation", "time_input"}, {"combine", "min"}}, "phase wrapped, in [0, 1]", 0, 1},
+      {"huge coordinates 1e5 m", {{"p", Value::vector({1e5, -1e5})}}, {{"combine", "multiply"}}, "in [0, 1]", 0, 1},
+  };
+  return s;
+}
+
+}  // namespace wg::nodes

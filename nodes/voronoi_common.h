@@ -1,0 +1,18 @@
+#pragma once
+// Shared by the voronoi and voronoi_caustics nodes: their `search`, `animation` and
+// `speed` options and the orbit phase they turn into (a time-phase uniform, a wrapped
+// time input, or 0), as GLSL and in double.
+#include <string>
+#include <vector>
+
+#include "core/node_spec.h"
+
+namespace wg::nodes {
+
+// The options, with `speed` defaulting to defaultSpeed rad/s.
+std::vector<OptionSpec> voronoiOptions(double defaultSpeed);
+// The phase for an orbit at speedScale times the `speed` option, in [0, 2 pi).
+std::string emitVoronoiPhase(EmitContext& ctx, double speedScale);
+double evalVoronoiPhase(EvalContext& ctx, double speedScale);
+
+}  // namespace wg::nodes
