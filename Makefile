@@ -19,9 +19,13 @@ build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
 # Compile every example graph for every target into out/<graph>/, validate each
-# shader with glslang and print a summary table.
+# shader with glslang and print a summary table; then render each graph's preview
+# (1280x720, camera above, headless on llvmpipe) into out/<graph>.png.
 demo: build
 	@$(WG) compile $(GRAPHS) -o out --subdirs --summary
+	@for g in $(GRAPHS); do n=$$(basename $$g .json); \
+	  MESA_SHADER_CACHE_DISABLE=true $(WG) render $$g -o out/$$n.png --stats || exit $$?; \
+	  echo "wrote out/$$n.png"; done
 
 test: build
 	@cd $(BUILD_DIR) && MESA_SHADER_CACHE_DISABLE=true ctest --output-on-failure -j $(JOBS)

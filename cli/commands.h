@@ -25,6 +25,7 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global);
 Runner addValidateCommand(CLI::App& app, const GlobalOptions& global);
 Runner addNodesCommand(CLI::App& app, const GlobalOptions& global);
 Runner addFmtCommand(CLI::App& app, const GlobalOptions& global);
+Runner addRenderCommand(CLI::App& app, const GlobalOptions& global);
 
 // Prints diagnostics in the chosen format (text to stderr, JSON to stdout).
 void printDiagnostics(const Diagnostics& diags, const GlobalOptions& global);

@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   Runner validate = addValidateCommand(app, global);
   Runner nodes = addNodesCommand(app, global);
   Runner fmt = addFmtCommand(app, global);
+  Runner render = addRenderCommand(app, global);
 
   try {
     app.parse(argc, argv);
@@ -31,6 +32,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("validate")) return validate();
     if (app.got_subcommand("nodes")) return nodes();
     if (app.got_subcommand("fmt")) return fmt();
+    if (app.got_subcommand("render")) return render();
   } catch (const std::exception& e) {
     // A bug, not a graph problem: say so plainly rather than crash.
     std::cerr << "watergraph: internal error: " << e.what() << "\n";

@@ -1,5 +1,6 @@
 #include "test_support.h"
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <cstdlib>
@@ -10,6 +11,11 @@
 #include <sys/wait.h>
 
 namespace wg::test {
+namespace {
+// Mesa's shader disk cache would make GL tests depend on earlier runs: off for every test
+// process, before main (TOOLCHAIN.md).
+const bool kMesaCacheDisabled = setenv("MESA_SHADER_CACHE_DISABLE", "true", 0) == 0;
+}  // namespace
 
 std::string sourceDir() {
   if (const char* env = std::getenv("WG_SOURCE_DIR")) return env;
@@ -28,6 +34,14 @@ std::string readFile(const std::string& path) {
 
 std::string watergraphBinary() {
   if (const char* env = std::getenv("WG_BINARY")) return env;
+  // The build puts the test binaries next to watergraph (build-dir/bin/): prefer the one
+  // of the same build over a possibly stale build/bin/watergraph in the source tree.
+  std::error_code ec;
+  auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    auto sibling = self.parent_path() / "watergraph";
+    if (std::filesystem::exists(sibling, ec)) return sibling.string();
+  }
   return sourceDir() + "/build/bin/watergraph";
 }
 
@@ -48,6 +62,91 @@ std::string makeTempDir(const std::string& prefix) {
   std::string pattern = (std::filesystem::temp_directory_path() / (prefix + "XXXXXX")).string();
   if (!mkdtemp(pattern.data())) throw std::runtime_error("mkdtemp failed");
   return pattern;
+}
+
+}  // namespace wg::test
+
+namespace wg::test {
+
+void writeFile(const std::string& path, const std::string& contents) {
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  if (!out) throw std::runtime_error("cannot write " + path);
+  out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+std::vector<std::string> listFiles(const std::string& dir, const std::string& suffix) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!it->is_regular_file()) continue;
+    std::string name = it->path().filename().string();
+    if (name.size() >= suffix.size() && name.compare(name.size() - suffix.size(), suffix.size(), suffix) == 0)
+      names.push_back(name);
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::vector<std::string> listFilesRecursive(const std::string& dir) {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (std::filesystem::recursive_directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec))
+    if (it->is_regular_file()) names.push_back(std::filesystem::relative(it->path(), dir).string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+std::vector<std::string> exampleGraphs() {
+  std::vector<std::string> paths;
+  for (const auto& name : listFiles(sourcePath("graphs"), ".json")) paths.push_back(sourcePath("graphs/" + name));
+  return paths;
+}
+
+std::string shellQuote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) {
+    if (c == '\'')
+      q += "'\\''";
+    else
+      q += c;
+  }
+  return q + "'";
+}
+
+int runCommandSplit(const std::string& command, std::string* out, std::string* err) {
+  std::string dir = makeTempDir("wg_cmd_");
+  std::string errPath = dir + "/stderr";
+  std::string full = "{ " + command + " ; } 2>" + shellQuote(errPath);
+  FILE* pipe = popen(full.c_str(), "r");
+  if (!pipe) return -1;
+  std::array<char, 4096> buf;
+  std::string text;
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), pipe)) > 0) text.append(buf.data(), n);
+  int status = pclose(pipe);
+  if (out) *out = text;
+  if (err) {
+    std::ifstream in(errPath, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    *err = ss.str();
+  }
+  std::error_code ec;
+  std::filesystem::remove_all(dir, ec);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+  std::vector<std::string> lines;
+  size_t start = 0;
+  while (start < text.size()) {
+    size_t eol = text.find('\n', start);
+    if (eol == std::string::npos) eol = text.size();
+    lines.push_back(text.substr(start, eol - start));
+    start = eol + 1;
+  }
+  return lines;
 }
 
 }  // namespace wg::test

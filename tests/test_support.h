@@ -2,16 +2,33 @@
 // Helpers shared by the test suites: paths into the source tree, reading files, running
 // the watergraph binary.
 #include <string>
+#include <vector>
 
 namespace wg::test {
 
 std::string sourceDir();                     // the repository root
 std::string sourcePath(const std::string& rel);
 std::string readFile(const std::string& path);
-std::string watergraphBinary();              // build/bin/watergraph
+std::string watergraphBinary();  // $WG_BINARY, else the watergraph next to the test binary
 // Runs a shell command; returns its exit status and fills `output` with stdout+stderr.
 int runCommand(const std::string& command, std::string* output);
 // A fresh empty directory under the system temp folder, removed by the caller.
 std::string makeTempDir(const std::string& prefix);
+
+// Writes `contents` to `path` (binary), creating or replacing it; throws on failure.
+void writeFile(const std::string& path, const std::string& contents);
+// The names (not paths) of the regular files in `dir` whose name ends with `suffix`
+// ("" for all), sorted. A missing folder gives an empty list.
+std::vector<std::string> listFiles(const std::string& dir, const std::string& suffix = "");
+// Every regular file under `dir`, as paths relative to it, sorted.
+std::vector<std::string> listFilesRecursive(const std::string& dir);
+// The example graphs: paths of graphs/*.json in the source tree, sorted.
+std::vector<std::string> exampleGraphs();
+// `s` quoted for /bin/sh.
+std::string shellQuote(const std::string& s);
+// Runs a shell command with stdout and stderr captured separately; returns its exit status.
+int runCommandSplit(const std::string& command, std::string* out, std::string* err);
+// The lines of `text`, without their '\n'; a final empty line is dropped.
+std::vector<std::string> splitLines(const std::string& text);
 
 }  // namespace wg::test

@@ -1,0 +1,541 @@
+#include "runtime/renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "codegen/shader_interface.h"
+#include "nodes/texture_source.h"
+#include "runtime/runtime_error.h"
+
+namespace wg::rt {
+namespace {
+
+[[noreturn]] void manifestError(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
+
+// One render target: colour and/or depth textures and the framebuffer drawing into them.
+struct GpuTarget {
+  TargetSpec spec;
+  Texture color;
+  Texture depth;
+  Framebuffer fbo;
+  size_t allocatedBytes = 0;  // measured from the driver's view of the textures
+};
+
+size_t internalFormatBytes(GLint f) {
+  switch (f) {
+    case GL_RGBA8: return 4;
+    case GL_RGBA32F: return 16;
+    case GL_DEPTH_COMPONENT32F: return 4;
+    default: return 0;
+  }
+}
+
+// Bytes of level 0 of the bound texture as the driver reports it (all faces of a cube).
+size_t measuredBytes(GLenum bindTarget) {
+  GLenum level = bindTarget == GL_TEXTURE_CUBE_MAP ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X) : bindTarget;
+  GLint w = 0, h = 0, f = 0;
+  glGetTexLevelParameteriv(level, 0, GL_TEXTURE_WIDTH, &w);
+  glGetTexLevelParameteriv(level, 0, GL_TEXTURE_HEIGHT, &h);
+  glGetTexLevelParameteriv(level, 0, GL_TEXTURE_INTERNAL_FORMAT, &f);
+  return static_cast<size_t>(w) * static_cast<size_t>(h) * internalFormatBytes(f) * (bindTarget == GL_TEXTURE_CUBE_MAP ? 6 : 1);
+}
+
+struct GpuMesh {
+  VertexArray vao;
+  Buffer vbo, ibo;
+  GLsizei indexCount = 0;
+};
+
+GLenum colorInternalFormat(ColorFormat f) { return f == ColorFormat::Rgba32f ? GL_RGBA32F : GL_RGBA8; }
+
+void setFilter(GLenum target, GLint filter) {
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  if (target == GL_TEXTURE_CUBE_MAP) glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+}
+
+GpuMesh uploadMesh(const Mesh& m, const std::vector<std::pair<GLuint, int>>& attributes) {
+  GpuMesh g;
+  g.vao = makeVertexArray();
+  g.vbo = makeBuffer();
+  g.ibo = makeBuffer();
+  glBindVertexArray(g.vao.id());
+  glBindBuffer(GL_ARRAY_BUFFER, g.vbo.id());
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.vertices.size() * sizeof(float)), m.vertices.data(),
+               GL_STATIC_DRAW);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo.id());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.indices.size() * sizeof(unsigned)),
+               m.indices.data(), GL_STATIC_DRAW);
+  GLsizei stride = static_cast<GLsizei>(m.floatsPerVertex * sizeof(float));
+  int offset = 0;
+  for (auto [location, components] : attributes) {
+    glEnableVertexAttribArray(location);
+    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<const void*>(static_cast<uintptr_t>(offset * sizeof(float))));
+    offset += components;
+  }
+  glBindVertexArray(0);
+  g.indexCount = static_cast<GLsizei>(m.indices.size());
+  return g;
+}
+
+std::vector<float> numbers(const nlohmann::json& v) {
+  std::vector<float> out;
+  if (v.is_number()) out.push_back(v.get<float>());
+  else if (v.is_boolean()) out.push_back(v.get<bool>() ? 1.0f : 0.0f);
+  else if (v.is_array())
+    for (const auto& x : v) {
+      if (!x.is_number()) return {};
+      out.push_back(x.get<float>());
+    }
+  return out;
+}
+
+}  // namespace
+
+struct Renderer::Impl {
+  RenderSettings settings;
+  bool es = false;
+  PassPlan plan;
+  Camera camera;
+  float aspect = 1.0f;
+  glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f};
+  glm::vec3 sun{0.0f, 1.0f, 0.0f};
+
+  Program sky, opaque, water;
+  GLint skyInverseVp = -1, skySun = -1;
+  GLint opaqueVp = -1, opaqueClip = -1, opaqueSun = -1;
+  GpuMesh sceneMesh, waterMesh;
+  VertexArray emptyVao;
+  std::vector<GpuTarget> targets;
+  // Water textures: (texture unit, GL target, texture).
+  struct Binding {
+    GLuint unit;
+    GLenum target;
+    GLuint texture;
+  };
+  std::vector<Binding> waterBindings;
+  std::vector<Texture> nodeTextures;
+
+  GpuTarget* find(const char* name) {
+    for (auto& t : targets)
+      if (t.spec.name == name) return &t;
+    return nullptr;
+  }
+  const GpuTarget& frame() const { return targets.front(); }
+
+  void createTargets() {
+    bool floatLinear = !es || epoxy_has_gl_extension("GL_OES_texture_float_linear");
+    for (const TargetSpec& spec : plan.targets) {
+      GpuTarget t;
+      t.spec = spec;
+      t.fbo = makeFramebuffer();
+      GLenum texTarget = spec.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
+      if (spec.color != ColorFormat::None) {
+        t.color = makeTexture();
+        glBindTexture(texTarget, t.color.id());
+        glTexStorage2D(texTarget, 1, colorInternalFormat(spec.color), spec.width, spec.height);
+        setFilter(texTarget, spec.color == ColorFormat::Rgba32f && !floatLinear ? GL_NEAREST : GL_LINEAR);
+        t.allocatedBytes += measuredBytes(texTarget);
+      }
+      if (spec.depth != DepthFormat::None) {
+        t.depth = makeTexture();
+        glBindTexture(GL_TEXTURE_2D, t.depth.id());
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT32F, spec.width, spec.height);
+        setFilter(GL_TEXTURE_2D, GL_NEAREST);
+        t.allocatedBytes += measuredBytes(GL_TEXTURE_2D);
+      }
+      glBindFramebuffer(GL_FRAMEBUFFER, t.fbo.id());
+      if (t.color) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                               spec.cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : GL_TEXTURE_2D, t.color.id(), 0);
+        GLenum buf = GL_COLOR_ATTACHMENT0;
+        glDrawBuffers(1, &buf);
+      } else {
+        GLenum none = GL_NONE;
+        glDrawBuffers(1, &none);
+        glReadBuffer(GL_NONE);
+      }
+      if (t.depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.depth.id(), 0);
+      GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+      if (status != GL_FRAMEBUFFER_COMPLETE) {
+        char buf[16];
+        std::snprintf(buf, sizeof buf, "0x%04x", status);
+        throw RuntimeError(RuntimeError::Kind::Driver,
+                           "render target '" + spec.name + "' is incomplete on this driver (status " + buf + ")");
+      }
+      targets.push_back(std::move(t));
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    checkGl("creating render targets");
+  }
+
+  // Uploads a node texture as the CPU reference samples it: RGBA8, GL_LINEAR, GL_REPEAT,
+  // no mipmaps, row 0 at v = 0.
+  Texture uploadNodeTexture(const std::string& sampler, const std::string& source,
+                            const std::map<std::string, TextureOrigin>& origins) {
+    auto o = origins.find(source);
+    std::string dir = o != origins.end() ? o->second.graphDir : ".";
+    std::string owner = o != origins.end() ? o->second.owner : "texture " + sampler;
+    std::string why;
+    auto img = loadTexture(source, dir, &why);
+    if (!img || img->width <= 0 || img->height <= 0 ||
+        img->rgba.size() != static_cast<size_t>(img->width) * static_cast<size_t>(img->height) * 4)
+      throw RuntimeError(RuntimeError::Kind::Manifest,
+                         owner + ": texture '" + source + "' cannot be loaded: " + (why.empty() ? "no image data" : why));
+    Texture t = makeTexture();
+    glBindTexture(GL_TEXTURE_2D, t.id());
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, img->width, img->height);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img->width, img->height, GL_RGBA, GL_UNSIGNED_BYTE, img->rgba.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    return t;
+  }
+
+  void setupWaterUniforms(const nlohmann::json& manifest, const std::map<std::string, TextureOrigin>& origins) {
+    glUseProgram(water.id());
+    auto uniforms = manifest.find("uniforms");
+    if (uniforms != manifest.end() && !uniforms->is_array()) manifestError("the manifest's \"uniforms\" is not a list");
+    if (uniforms != manifest.end()) {
+      for (const auto& u : *uniforms) {
+        std::string name = u.value("name", "");
+        std::string type = u.value("type", "");
+        if (name.empty() || type.empty()) manifestError("a manifest uniform lacks \"name\" or \"type\"");
+        GLint loc = glGetUniformLocation(water.id(), name.c_str());
+        std::vector<float> v;
+        if (u.contains("parameter")) {
+          v = numbers(u.value("default", nlohmann::json()));
+          if (v.empty()) manifestError("parameter uniform " + name + " has no numeric \"default\"");
+        } else {
+          std::string b = u.value("builtin", "");
+          const glm::mat4 model(1.0f);
+          auto mat = [&](const glm::mat4& m4) { v.assign(glm::value_ptr(m4), glm::value_ptr(m4) + 16); };
+          if (b == "model") mat(model);
+          else if (b == "view_projection") mat(viewProjection);
+          else if (b == "view") mat(view);
+          else if (b == "projection") mat(projection);
+          else if (b == "camera_position") v = {camera.position.x, camera.position.y, camera.position.z};
+          else if (b == "time") v = {settings.scene.time};
+          else if (b == "viewport_size") v = {static_cast<float>(settings.width), static_cast<float>(settings.height)};
+          else if (b == "camera_near_far") v = {camera.nearPlane, camera.farPlane};
+          else if (b == "time_phase") {
+            // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
+            double omega = u.value("angular_frequency", 0.0);
+            double twoPi = 6.283185307179586;
+            double phase = omega * static_cast<double>(settings.scene.time);
+            phase -= twoPi * std::floor(phase / twoPi);
+            v = {static_cast<float>(phase)};
+          } else {
+            manifestError("uniform " + name + " asks for builtin '" + b + "', which the runtime does not provide");
+          }
+        }
+        if (loc < 0) continue;  // declared but optimised out by the driver
+        auto need = [&](size_t n) {
+          if (v.size() != n)
+            manifestError("uniform " + name + " of type " + type + " got " + std::to_string(v.size()) + " value(s)");
+        };
+        if (type == "float") need(1), glUniform1f(loc, v[0]);
+        else if (type == "vec2") need(2), glUniform2fv(loc, 1, v.data());
+        else if (type == "vec3") need(3), glUniform3fv(loc, 1, v.data());
+        else if (type == "vec4") need(4), glUniform4fv(loc, 1, v.data());
+        else if (type == "int" || type == "bool") need(1), glUniform1i(loc, static_cast<GLint>(v[0]));
+        else if (type == "mat3") need(9), glUniformMatrix3fv(loc, 1, GL_FALSE, v.data());
+        else if (type == "mat4") need(16), glUniformMatrix4fv(loc, 1, GL_FALSE, v.data());
+        else manifestError("uniform " + name + " has a type the runtime cannot set: " + type);
+      }
+    }
+    // Samplers: node textures (loaded here) and scene textures (render targets of the
+    // planned passes), one texture unit each in manifest order.
+    GLuint nextUnit = 0;
+    auto textures = manifest.find("textures");
+    if (textures != manifest.end() && !textures->is_array()) manifestError("the manifest's \"textures\" is not a list");
+    std::vector<std::string> declared;
+    if (textures != manifest.end()) {
+      for (const auto& t : *textures) {
+        std::string name = t.value("name", "");
+        std::string type = t.value("type", "sampler2D");
+        if (name.empty()) manifestError("a manifest texture lacks \"name\"");
+        declared.push_back(name);
+        GLuint texture = 0;
+        GLenum bindTarget = type == "samplerCube" ? GLenum(GL_TEXTURE_CUBE_MAP) : GLenum(GL_TEXTURE_2D);
+        if (t.contains("resource")) {
+          std::string resource = t.value("resource", "");
+          const GpuTarget* target = nullptr;
+          for (const auto& g : targets)
+            if (g.spec.sampler == name) target = &g;
+          if (!target)
+            manifestError("texture " + name + " (scene resource '" + resource +
+                          "') is not rendered by any pass the manifest lists");
+          if ((type == "samplerCube") != target->spec.cube) manifestError("texture " + name + " has the wrong sampler type " + type);
+          texture = target->color ? target->color.id() : target->depth.id();
+        } else if (t.contains("source")) {
+          if (type != "sampler2D") manifestError("node texture " + name + " must be a sampler2D, not " + type);
+          nodeTextures.push_back(uploadNodeTexture(name, t.value("source", ""), origins));
+          texture = nodeTextures.back().id();
+        } else {
+          manifestError("texture " + name + " has neither a \"source\" nor a \"resource\"");
+        }
+        GLint loc = glGetUniformLocation(water.id(), name.c_str());
+        if (loc < 0) continue;
+        GLuint unit = nextUnit++;
+        glUniform1i(loc, static_cast<GLint>(unit));
+        waterBindings.push_back({unit, bindTarget, texture});
+      }
+    }
+    // A scene sampler the shader reads but the manifest does not list is a contract break.
+    for (const char* s : {iface::kSceneDepthTexture, iface::kSceneColorTexture, iface::kReflectionTexture,
+                          iface::kRefractionTexture, iface::kEnvironmentTexture})
+      if (glGetUniformLocation(water.id(), s) >= 0 && std::find(declared.begin(), declared.end(), s) == declared.end())
+        manifestError(std::string("the water shader samples ") + s + " but the manifest's \"textures\" does not list it");
+    checkGl("setting the water uniforms and textures");
+  }
+
+  // The sky lies at the far plane (depth 1): drawn after the opaque scene with LEQUAL and
+  // no depth writes, it shades only the pixels nothing else covered.
+  void drawSky(const glm::mat4& vp) {
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    glDepthMask(GL_FALSE);
+    glUseProgram(sky.id());
+    glm::mat4 inv = glm::inverse(vp);
+    glUniformMatrix4fv(skyInverseVp, 1, GL_FALSE, glm::value_ptr(inv));
+    glUniform3fv(skySun, 1, glm::value_ptr(sun));
+    glBindVertexArray(emptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDepthMask(GL_TRUE);
+  }
+
+  // Draws the opaque scene keeping the side where dot(plane, (p, 1)) >= 0.
+  void drawOpaque(const glm::mat4& vp, const glm::vec4& plane) {
+    glUseProgram(opaque.id());
+    glUniformMatrix4fv(opaqueVp, 1, GL_FALSE, glm::value_ptr(vp));
+    glUniform4fv(opaqueClip, 1, glm::value_ptr(plane));
+    glUniform3fv(opaqueSun, 1, glm::value_ptr(sun));
+    if (!es) glEnable(GL_CLIP_DISTANCE0);
+    glBindVertexArray(sceneMesh.vao.id());
+    glDrawElements(GL_TRIANGLES, sceneMesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    if (!es) glDisable(GL_CLIP_DISTANCE0);
+  }
+
+  void bindTarget(const GpuTarget& t, bool clearColor) {
+    glBindFramebuffer(GL_FRAMEBUFFER, t.fbo.id());
+    glViewport(0, 0, t.spec.width, t.spec.height);
+    glDepthMask(GL_TRUE);
+    glClearColor(0, 0, 0, 1);
+    glClearDepthf(1.0f);
+    glClear((clearColor && t.color ? GL_COLOR_BUFFER_BIT : 0) | (t.depth ? GL_DEPTH_BUFFER_BIT : 0));
+  }
+
+  void environmentPass() {
+    GpuTarget* t = find("environment");
+    static const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo.id());
+    glViewport(0, 0, t->spec.width, t->spec.height);
+    for (int f = 0; f < 6; ++f) {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f),
+                             t->color.id(), 0);
+      drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
+    }
+  }
+
+  // Which half-space the water's own camera side is: above (+y) unless under water.
+  float cameraSide() const { return camera.position.y >= 0.0f ? 1.0f : -1.0f; }
+
+  double renderOneFrame() {
+    auto start = std::chrono::steady_clock::now();
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_BLEND);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LEQUAL);
+    const glm::vec4 noClip(0, 0, 0, 1);
+    for (PassKind pass : plan.passes) {
+      switch (pass) {
+        case PassKind::EnvironmentCubemap: environmentPass(); break;
+        case PassKind::DepthPrepass:
+          bindTarget(*find("scene_depth"), false);
+          drawOpaque(viewProjection, noClip);
+          break;
+        case PassKind::PlanarReflection: {
+          // The camera mirrored about y = 0; only what is on the camera's side of the
+          // water is reflected.
+          bindTarget(*find("reflection"), true);
+          glm::mat4 mirrored = viewProjection * glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
+          drawOpaque(mirrored, glm::vec4(0, cameraSide(), 0, 0));
+          drawSky(mirrored);
+          break;
+        }
+        case PassKind::Refraction:
+          // What lies beyond the surface, seen by the real camera.
+          bindTarget(*find("refraction"), true);
+          drawOpaque(viewProjection, glm::vec4(0, -cameraSide(), 0, 0));
+          drawSky(viewProjection);
+          break;
+        case PassKind::OpaqueScene:
+          bindTarget(frame(), true);
+          drawOpaque(viewProjection, noClip);
+          drawSky(viewProjection);
+          break;
+        case PassKind::SceneColorCopy: {
+          GpuTarget* copy = find("scene_color");
+          glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
+          glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy->fbo.id());
+          glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, settings.width, settings.height,
+                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
+          break;
+        }
+        case PassKind::WaterSurface: {
+          glBindFramebuffer(GL_FRAMEBUFFER, frame().fbo.id());
+          glViewport(0, 0, settings.width, settings.height);
+          glEnable(GL_BLEND);
+          // Colour blended by the water's alpha; the frame's alpha stays 1.
+          glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+          glUseProgram(water.id());
+          for (const auto& b : waterBindings) {
+            glActiveTexture(GL_TEXTURE0 + b.unit);
+            glBindTexture(b.target, b.texture);
+          }
+          glBindVertexArray(waterMesh.vao.id());
+          glDrawElements(GL_TRIANGLES, waterMesh.indexCount, GL_UNSIGNED_INT, nullptr);
+          glDisable(GL_BLEND);
+          for (const auto& b : waterBindings) {
+            glActiveTexture(GL_TEXTURE0 + b.unit);
+            glBindTexture(b.target, 0);
+          }
+          glActiveTexture(GL_TEXTURE0);
+          break;
+        }
+      }
+    }
+    glBindVertexArray(0);
+    glFinish();
+    auto end = std::chrono::steady_clock::now();
+    checkGl("rendering a frame");
+    return std::chrono::duration<double, std::milli>(end - start).count();
+  }
+
+  Image read(bool asFloat) const {
+    Image img;
+    img.width = settings.width;
+    img.height = settings.height;
+    size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height) * 4;
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
+    glReadBuffer(GL_COLOR_ATTACHMENT0);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    size_t rowElems = static_cast<size_t>(img.width) * 4;
+    auto flip = [&](auto& v) {  // GL rows are bottom-up; images are top-down
+      for (int y = 0; y < img.height / 2; ++y)
+        std::swap_ranges(v.begin() + static_cast<ptrdiff_t>(y * rowElems), v.begin() + static_cast<ptrdiff_t>((y + 1) * rowElems),
+                         v.begin() + static_cast<ptrdiff_t>((img.height - 1 - y) * rowElems));
+    };
+    if (asFloat) {
+      if (frame().spec.color != ColorFormat::Rgba32f)
+        throw RuntimeError(RuntimeError::Kind::Manifest, "a float read-back needs a renderer made with floatColor");
+      img.rgba32f.resize(n);
+      glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, img.rgba32f.data());
+      flip(img.rgba32f);
+    } else {
+      if (frame().spec.color != ColorFormat::Rgba8)
+        throw RuntimeError(RuntimeError::Kind::Manifest, "an 8-bit read-back needs a renderer made without floatColor");
+      img.rgba8.resize(n);
+      glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba8.data());
+      flip(img.rgba8);
+    }
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    checkGl("reading the frame back");
+    return img;
+  }
+};
+
+Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> waterSources, const RenderSettings& settings,
+                   bool es, const std::map<std::string, TextureOrigin>& origins)
+    : impl_(std::make_unique<Impl>()) {
+  Impl& r = *impl_;
+  r.settings = settings;
+  r.es = es;
+  auto cam = cameraPreset(settings.camera);
+  if (!cam) throw RuntimeError(RuntimeError::Kind::Manifest, "unknown camera preset '" + settings.camera + "'");
+  r.camera = *cam;
+  r.aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
+  r.view = r.camera.view();
+  r.projection = r.camera.projection(r.aspect);
+  r.viewProjection = r.projection * r.view;
+  r.sun = sunDirection(settings.scene);
+
+  PlanOptions po;
+  po.width = settings.width;
+  po.height = settings.height;
+  po.floatColor = settings.floatColor;
+  po.environmentSize = settings.environmentSize;
+  r.plan = planPasses(manifest, po);
+
+  // The attributes the graph reads must be the ones the grid provides, where it provides them.
+  if (auto a = manifest.find("attributes"); a != manifest.end() && a->is_array()) {
+    for (const auto& attr : *a) {
+      std::string name = attr.value("name", "");
+      int loc = attr.value("location", -1);
+      bool ok = (name == iface::kPositionAttribute && loc == iface::kPositionLocation) ||
+                (name == iface::kNormalAttribute && loc == iface::kNormalLocation) ||
+                (name == iface::kUvAttribute && loc == iface::kUvLocation);
+      if (!ok) manifestError("the water grid has no attribute " + name + " at location " + std::to_string(loc));
+    }
+  }
+  for (const auto& s : waterSources)
+    if (s.stage != GL_VERTEX_SHADER && s.stage != GL_FRAGMENT_SHADER)
+      manifestError(s.name + ": tessellation stages are not run by the runtime yet");
+
+  // ES 3.2 blends RGBA32F targets only with EXT_float_blend (llvmpipe has it).
+  if (es && settings.floatColor && !epoxy_has_gl_extension("GL_EXT_float_blend"))
+    throw RuntimeError(RuntimeError::Kind::Environment,
+                       "cannot render: this OpenGL ES driver cannot blend RGBA32F targets (no GL_EXT_float_blend)");
+  if (!es) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // ES 3 cube maps are always seamless
+
+  SceneShaderSources ss = sceneShaderSources(es);
+  r.sky = linkProgram({{GL_VERTEX_SHADER, "runtime sky.vert", ss.skyVertex}, {GL_FRAGMENT_SHADER, "runtime sky.frag", ss.skyFragment}},
+                      "the runtime's sky pass");
+  r.skyInverseVp = glGetUniformLocation(r.sky.id(), "u_inverse_view_projection");
+  r.skySun = glGetUniformLocation(r.sky.id(), "u_sun_direction");
+  r.opaque = linkProgram({{GL_VERTEX_SHADER, "runtime opaque.vert", ss.opaqueVertex},
+                          {GL_FRAGMENT_SHADER, "runtime opaque.frag", ss.opaqueFragment}},
+                         "the runtime's opaque scene");
+  r.opaqueVp = glGetUniformLocation(r.opaque.id(), "u_view_projection");
+  r.opaqueClip = glGetUniformLocation(r.opaque.id(), "u_clip_plane");
+  r.opaqueSun = glGetUniformLocation(r.opaque.id(), "u_sun_direction");
+  r.water = linkProgram(waterSources, "the graph's water surface; glslang accepted it");
+
+  r.sceneMesh = uploadMesh(buildSceneMesh(), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});
+  r.waterMesh = uploadMesh(buildWaterGrid(settings.waterGridQuads),
+                           {{iface::kPositionLocation, 3}, {iface::kNormalLocation, 3}, {iface::kUvLocation, 2}});
+  r.emptyVao = makeVertexArray();
+  checkGl("uploading the scene");
+  r.createTargets();
+  r.setupWaterUniforms(manifest, origins);
+}
+
+Renderer::~Renderer() = default;
+
+double Renderer::renderFrame() { return impl_->renderOneFrame(); }
+Image Renderer::readRgba8() const { return impl_->read(false); }
+Image Renderer::readRgba32f() const { return impl_->read(true); }
+const PassPlan& Renderer::plan() const { return impl_->plan; }
+int Renderer::createdTargetCount() const { return static_cast<int>(impl_->targets.size()); }
+size_t Renderer::createdTargetBytes() const {
+  size_t n = 0;
+  for (const auto& t : impl_->targets) n += t.allocatedBytes;
+  return n;
+}
+const RenderSettings& Renderer::settings() const { return impl_->settings; }
+
+}  // namespace wg::rt

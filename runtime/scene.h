@@ -1,0 +1,64 @@
+#pragma once
+// The built-in, deterministic scene every graph is previewed in: a procedural sky with a
+// sun, a tiled pool floor (3.5 m deep) rising into a sloping sandy shore towards -x (so
+// depth grows with x, as graphs/shelf.json assumes), pool walls on the other sides, and pillars and rocks crossing the water plane (y = 0), so depth tint,
+// edge foam, caustics, reflection and refraction all have something to show. The water
+// itself is a 40 x 40 m grid at y = 0 centred on the origin, uv (0,0) at (-20, -20) and
+// (1,1) at (20, 20). Everything here is CPU data and GLSL text; nothing calls GL.
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace wg::rt {
+
+struct Camera {
+  glm::vec3 position{0.0f};
+  glm::vec3 target{0.0f};
+  float fovYDegrees = 55.0f;
+  float nearPlane = 0.1f;
+  float farPlane = 200.0f;
+  glm::mat4 view() const;
+  glm::mat4 projection(float aspect) const;
+};
+
+// "above", "grazing", "underwater", "topdown".
+const std::vector<std::string>& cameraPresetNames();
+std::optional<Camera> cameraPreset(std::string_view name);
+
+struct SceneOptions {
+  float time = 3.5f;              // seconds, u_time
+  float sunAzimuthDegrees = 110;  // from +x towards +z
+  float sunElevationDegrees = 30; // above the horizon
+};
+glm::vec3 sunDirection(const SceneOptions& o);  // unit vector towards the sun
+
+// Interleaved vertices and triangle indices.
+struct Mesh {
+  std::vector<float> vertices;
+  std::vector<unsigned> indices;
+  int floatsPerVertex = 0;
+  size_t vertexCount() const { return floatsPerVertex ? vertices.size() / static_cast<size_t>(floatsPerVertex) : 0; }
+};
+
+// Opaque scene: position (location 0), normal (1), material id as float (3).
+// Materials: 0 terrain (tiles / sand by position), 1 pillar stone, 2 rock.
+inline constexpr int kSceneMaterialLocation = 3;
+Mesh buildSceneMesh();
+float terrainHeight(float x, float z);  // the floor / shore height field
+
+// Water grid: a_position (0), a_normal (1), a_uv (2) per codegen/shader_interface.h.
+inline constexpr float kWaterHalfSize = 20.0f;
+Mesh buildWaterGrid(int quadsPerSide = 128);
+
+// GLSL for the runtime's own passes. `es` picks "#version 300 es" with highp defaults
+// (clip planes by discard) or "#version 330 core" (clip planes by gl_ClipDistance).
+struct SceneShaderSources {
+  std::string skyVertex, skyFragment;      // full-screen triangle at the far plane
+  std::string opaqueVertex, opaqueFragment;  // lit scene, optional clip plane
+};
+SceneShaderSources sceneShaderSources(bool es);
+
+}  // namespace wg::rt

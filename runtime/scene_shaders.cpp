@@ -1,0 +1,126 @@
+// GLSL for the runtime's own passes: the sky and the lit opaque scene. One body per shader,
+// with a per-API header: desktop GL clips with gl_ClipDistance, ES 3.0 (no clip distances
+// without an extension) discards fragments on the wrong side of the plane instead.
+#include "runtime/scene.h"
+
+namespace wg::rt {
+namespace {
+
+constexpr const char* kGlHeader = "#version 330 core\n#define WG_CLIP_DISTANCE 1\n";
+constexpr const char* kEsHeader = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+
+// The sky as a function of a unit direction: a gradient from the horizon to the zenith, a
+// darker ground below the horizon, a sun glow and a sun disk. Finite for every input.
+constexpr const char* kSkyFunction = R"glsl(
+uniform vec3 u_sun_direction;
+vec3 wg_scene_sky(vec3 d) {
+  vec3 zenith = vec3(0.16, 0.34, 0.70);
+  vec3 horizon = vec3(0.70, 0.80, 0.90);
+  vec3 ground = vec3(0.30, 0.28, 0.25);
+  vec3 c = d.y >= 0.0 ? mix(horizon, zenith, sqrt(clamp(d.y, 0.0, 1.0)))
+                      : mix(horizon, ground, clamp(-d.y * 4.0, 0.0, 1.0));
+  float s = clamp(dot(d, u_sun_direction), 0.0, 1.0);
+  float s2 = s * s, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8, s32 = s16 * s16;
+  c += vec3(1.0, 0.80, 0.55) * (0.35 * s32 * s32 + 0.15 * s8);
+  c += vec3(1.0, 0.95, 0.85) * 2.0 * smoothstep(0.99955, 0.99975, s);
+  return c;
+}
+)glsl";
+
+constexpr const char* kSkyVertex = R"glsl(
+out vec2 v_ndc;
+void main() {
+  // One triangle covering the viewport, at the far plane (depth 1).
+  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  v_ndc = p;
+  gl_Position = vec4(p, 1.0, 1.0);
+}
+)glsl";
+
+constexpr const char* kSkyFragment = R"glsl(
+uniform mat4 u_inverse_view_projection;
+in vec2 v_ndc;
+layout(location = 0) out vec4 o_color;
+void main() {
+  vec4 n = u_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
+  vec4 f = u_inverse_view_projection * vec4(v_ndc, 1.0, 1.0);
+  vec3 d = f.xyz / f.w - n.xyz / n.w;
+  d *= inversesqrt(max(dot(d, d), 1e-30));
+  o_color = vec4(wg_scene_sky(d), 1.0);
+}
+)glsl";
+
+constexpr const char* kOpaqueVertex = R"glsl(
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 3) in float a_material;
+uniform mat4 u_view_projection;
+uniform vec4 u_clip_plane;  // keep dot(plane, (p, 1)) >= 0
+out vec3 v_world;
+out vec3 v_normal;
+flat out float v_material;
+void main() {
+  v_world = a_position;
+  v_normal = a_normal;
+  v_material = a_material;
+  gl_Position = u_view_projection * vec4(a_position, 1.0);
+#ifdef WG_CLIP_DISTANCE
+  gl_ClipDistance[0] = dot(u_clip_plane, vec4(a_position, 1.0));
+#endif
+}
+)glsl";
+
+constexpr const char* kOpaqueFragment = R"glsl(
+uniform vec4 u_clip_plane;
+in vec3 v_world;
+in vec3 v_normal;
+flat in float v_material;
+layout(location = 0) out vec4 o_color;
+
+vec3 terrainAlbedo(vec3 p) {
+  // Pool tiles (1 m, dark grout) on the floor and walls; sand on the shore slope.
+  vec2 f = fract(p.xz);
+  float g = min(min(f.x, 1.0 - f.x), min(f.y, 1.0 - f.y));
+  float grout = 1.0 - smoothstep(0.02, 0.04, g);
+  vec3 tile = mix(vec3(0.62, 0.78, 0.80), vec3(0.30, 0.36, 0.38), grout);
+  float checker = mod(floor(p.x) + floor(p.z), 2.0);
+  tile *= 0.94 + 0.06 * checker;
+  vec3 sand = vec3(0.78, 0.69, 0.50) * (0.95 + 0.05 * sin(p.x * 7.0 + p.z * 3.0));
+  float sandy = smoothstep(2.0, 5.0, -p.x) * (1.0 - smoothstep(18.5, 19.5, abs(p.z)));
+  return mix(tile, sand, sandy);
+}
+
+vec3 pillarAlbedo(vec3 p, vec3 n) {
+  // Horizontal bands every 0.5 m so refraction and reflection bend something visible;
+  // plain caps.
+  float band = n.y > 0.5 ? 0.0 : step(0.5, fract(p.y));
+  return mix(vec3(0.78, 0.74, 0.68), vec3(0.55, 0.30, 0.24), band);
+}
+
+void main() {
+#ifndef WG_CLIP_DISTANCE
+  if (dot(u_clip_plane, vec4(v_world, 1.0)) < 0.0) discard;
+#endif
+  vec3 n = v_normal * inversesqrt(max(dot(v_normal, v_normal), 1e-30));
+  vec3 albedo = v_material < 0.5 ? terrainAlbedo(v_world)
+              : v_material < 1.5 ? pillarAlbedo(v_world, n) : vec3(0.40, 0.37, 0.33);
+  float sunUp = smoothstep(-0.05, 0.15, u_sun_direction.y);
+  float diffuse = clamp(dot(n, u_sun_direction), 0.0, 1.0) * sunUp;
+  vec3 ambient = mix(vec3(0.20, 0.18, 0.16), vec3(0.34, 0.42, 0.55), n.y * 0.5 + 0.5);
+  o_color = vec4(albedo * (vec3(1.0, 0.95, 0.86) * diffuse + ambient), 1.0);
+}
+)glsl";
+
+}  // namespace
+
+SceneShaderSources sceneShaderSources(bool es) {
+  std::string h = es ? kEsHeader : kGlHeader;
+  SceneShaderSources s;
+  s.skyVertex = h + kSkyVertex;
+  s.skyFragment = h + kSkyFunction + kSkyFragment;
+  s.opaqueVertex = h + kOpaqueVertex;
+  s.opaqueFragment = h + kSkyFunction + kOpaqueFragment;
+  return s;
+}
+
+}  // namespace wg::rt

@@ -1,0 +1,148 @@
+// Pass planning from hand-made manifests: which passes run, which targets exist, and how
+// many bytes they take. No GL here.
+#include <gtest/gtest.h>
+
+#include "runtime/pass_plan.h"
+#include "runtime/runtime_error.h"
+#include "runtime_test_support.h"
+
+namespace wg::rt {
+namespace {
+
+nlohmann::json manifestWith(std::vector<std::string> passes) {
+  nlohmann::json m;
+  m["passes"] = passes;
+  return m;
+}
+
+PlanOptions small() {
+  PlanOptions o;
+  o.width = 320;
+  o.height = 180;
+  o.environmentSize = 64;
+  return o;
+}
+
+constexpr size_t kPixels = 320 * 180;
+
+std::vector<std::string> passNames(const PassPlan& p) {
+  std::vector<std::string> n;
+  for (auto k : p.passes) n.push_back(passName(k));
+  return n;
+}
+
+std::vector<std::string> targetNames(const PassPlan& p) {
+  std::vector<std::string> n;
+  for (const auto& t : p.targets) n.push_back(t.name);
+  return n;
+}
+
+TEST(PassPlan, WaterOnlyRunsTheSceneAndTheSurfaceIntoOneTarget) {
+  PassPlan p = planPasses(manifestWith({"water_surface"}), small());
+  EXPECT_EQ(passNames(p), (std::vector<std::string>{"opaque_scene", "water_surface"}));
+  EXPECT_EQ(targetNames(p), (std::vector<std::string>{"frame"}));
+  EXPECT_EQ(p.totalBytes(), kPixels * (4 + 4));  // RGBA8 + DEPTH32F
+  EXPECT_FALSE(p.runs(PassKind::PlanarReflection));
+  EXPECT_EQ(p.target("reflection"), nullptr);
+}
+
+TEST(PassPlan, ReflectionOnlyWhenListed) {
+  PassPlan without = planPasses(manifestWith({"water_surface"}), small());
+  PassPlan with = planPasses(manifestWith({"planar_reflection", "water_surface"}), small());
+  EXPECT_FALSE(without.runs(PassKind::PlanarReflection));
+  ASSERT_TRUE(with.runs(PassKind::PlanarReflection));
+  ASSERT_NE(with.target("reflection"), nullptr);
+  EXPECT_EQ(with.target("reflection")->sampler, "u_reflection");
+  EXPECT_EQ(with.targets.size(), 2u);
+  EXPECT_EQ(with.totalBytes() - without.totalBytes(), kPixels * (4 + 4));
+}
+
+struct OnePass {
+  const char* pass;
+  const char* target;
+  const char* sampler;
+  size_t bytes;  // of the added target, RGBA8 colour
+};
+
+class PassPlanEach : public ::testing::TestWithParam<OnePass> {};
+
+TEST_P(PassPlanEach, AddsExactlyItsTarget) {
+  const OnePass& c = GetParam();
+  PassPlan p = planPasses(manifestWith({c.pass, "water_surface"}), small());
+  EXPECT_EQ(passNames(p).size(), 3u);
+  EXPECT_TRUE(p.runs(*parsePassName(c.pass)));
+  EXPECT_EQ(targetNames(p), (std::vector<std::string>{"frame", c.target}));
+  EXPECT_EQ(p.target(c.target)->sampler, c.sampler);
+  EXPECT_EQ(p.target(c.target)->bytes(), c.bytes);
+  EXPECT_EQ(p.totalBytes(), kPixels * 8 + c.bytes);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Passes, PassPlanEach,
+    ::testing::Values(OnePass{"depth_prepass", "scene_depth", "u_scene_depth", kPixels * 4},
+                      OnePass{"scene_color_copy", "scene_color", "u_scene_color", kPixels * 4},
+                      OnePass{"planar_reflection", "reflection", "u_reflection", kPixels * 8},
+                      OnePass{"refraction", "refraction", "u_refraction", kPixels * 8},
+                      OnePass{"environment_cubemap", "environment", "u_environment", 64 * 64 * 6 * 4}),
+    [](const auto& info) { return std::string(info.param.pass); });
+
+TEST(PassPlan, AllPassesRunInDependencyOrderWhateverTheListOrder) {
+  PassPlan p = planPasses(manifestWith({"water_surface", "refraction", "scene_color_copy", "environment_cubemap",
+                                        "planar_reflection", "depth_prepass"}),
+                          small());
+  EXPECT_EQ(passNames(p), (std::vector<std::string>{"environment_cubemap", "depth_prepass", "planar_reflection",
+                                                    "refraction", "opaque_scene", "scene_color_copy", "water_surface"}));
+  EXPECT_EQ(p.targets.size(), 6u);
+  EXPECT_EQ(p.totalBytes(), kPixels * (8 + 4 + 4 + 8 + 8) + 64 * 64 * 6 * 4);
+}
+
+TEST(PassPlan, FloatColourQuadruplesColourBytesOnly) {
+  PlanOptions o = small();
+  o.floatColor = true;
+  PassPlan p = planPasses(manifestWith({"depth_prepass", "planar_reflection", "water_surface"}), o);
+  EXPECT_EQ(p.target("frame")->bytes(), kPixels * (16 + 4));
+  EXPECT_EQ(p.target("scene_depth")->bytes(), kPixels * 4);
+  EXPECT_EQ(p.target("reflection")->bytes(), kPixels * (16 + 4));
+}
+
+TEST(PassPlan, DuplicatesCountOnce) {
+  PassPlan p = planPasses(manifestWith({"refraction", "refraction", "water_surface"}), small());
+  EXPECT_EQ(p.targets.size(), 2u);
+}
+
+void expectManifestError(const nlohmann::json& m, const std::string& fragment) {
+  try {
+    planPasses(m, small());
+    ADD_FAILURE() << "no error for " << m.dump();
+  } catch (const RuntimeError& e) {
+    EXPECT_EQ(e.kind(), RuntimeError::Kind::Manifest);
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    EXPECT_EQ(e.exitCode(), 1);
+  }
+}
+
+TEST(PassPlan, Errors) {
+  expectManifestError(nlohmann::json::object(), "no \"passes\"");
+  expectManifestError(manifestWith({"planar_reflection"}), "lacks water_surface");
+  expectManifestError(manifestWith({"water_surface", "ssao"}), "unknown pass 'ssao'");
+  expectManifestError(manifestWith({"water_surface", "opaque_scene"}), "unknown pass 'opaque_scene'");
+  expectManifestError(manifestWith({"deferred_water", "water_surface"}), "'deferred_water'");
+  nlohmann::json m;
+  m["passes"] = {"water_surface", 3};
+  expectManifestError(m, "non-string");
+}
+
+// The compiler's manifests for the example graphs plan without errors, and a graph that
+// samples nothing gets no extra targets.
+TEST(PassPlan, ExampleGraphManifests) {
+  for (const auto& name : test::exampleGraphNames()) {
+    SCOPED_TRACE(name);
+    CompileResult r = test::compileExample(name);
+    PassPlan p = planPasses(r.manifest, small());
+    EXPECT_EQ(p.targets.size(), r.manifest["passes"].size()) << "one target per listed pass besides the frame";
+    EXPECT_TRUE(p.runs(PassKind::WaterSurface));
+  }
+}
+
+}  // namespace
+}  // namespace wg::rt

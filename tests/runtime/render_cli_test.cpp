@@ -1,0 +1,90 @@
+// `watergraph render` as a user runs it.
+#include <algorithm>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "runtime/image.h"
+#include "test_support.h"
+
+namespace wg {
+namespace {
+
+std::string render(const std::string& args, int* code) {
+  std::string out;
+  *code = test::runCommand(test::watergraphBinary() + " render " + args, &out);
+  return out;
+}
+
+TEST(RenderCli, WritesAPngAndPrintsStats) {
+  std::string dir = test::makeTempDir("wg_render_");
+  std::string png = dir + "/sub/lake.png";
+  int code = -1;
+  std::string out = render(test::sourcePath("graphs/lake.json") + " -o " + png +
+                               " --size 160x90 --camera grazing --time 2 --frames 3 --stats",
+                           &code);
+  EXPECT_EQ(code, 0) << out;
+  ASSERT_TRUE(std::filesystem::exists(png)) << out;
+  rt::Image img = rt::readPng(png);
+  EXPECT_EQ(img.width, 160);
+  EXPECT_EQ(img.height, 90);
+  EXPECT_NE(out.find("passes: opaque_scene, water_surface"), std::string::npos) << out;
+  EXPECT_NE(out.find("render targets: 1"), std::string::npos) << out;
+  EXPECT_NE(out.find("median"), std::string::npos) << out;
+  // Nothing but the PNG is left in the folder (the temporary was renamed).
+  size_t files = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir + "/sub")) ++files;
+  EXPECT_EQ(files, 1u);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RenderCli, Es300Target) {
+  std::string dir = test::makeTempDir("wg_render_");
+  int code = -1;
+  std::string out = render(test::sourcePath("graphs/shelf.json") + " -o " + dir + "/s.png --size 64x36 --target es300", &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/s.png"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RenderCli, UsageErrorsExit2) {
+  std::string dir = test::makeTempDir("wg_render_");
+  std::string lake = test::sourcePath("graphs/lake.json");
+  int code = -1;
+  std::string out = render(lake + " -o " + dir + "/x.png --camera sideways", &code);
+  EXPECT_EQ(code, 2) << out;
+  EXPECT_NE(out.find("sideways"), std::string::npos) << out;
+  out = render(lake + " -o " + dir + "/x.png --size 12by8", &code);
+  EXPECT_EQ(code, 2) << out;
+  out = render(lake + " -o " + dir + "/x.png --target vk450", &code);
+  EXPECT_EQ(code, 2) << out;
+  out = render(test::sourcePath("graphs/no_such_graph.json") + " -o " + dir + "/x.png", &code);
+  EXPECT_EQ(code, 2) << out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+  std::filesystem::remove_all(dir);
+}
+
+// glvnd with no vendor library stands in for a machine without an EGL driver.
+TEST(RenderCli, NoEglDriverIsOneLineAndExit2) {
+  std::string dir = test::makeTempDir("wg_render_");
+  std::string out;
+  int code = test::runCommand("__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent/vendor.json " + test::watergraphBinary() +
+                                  " render " + test::sourcePath("graphs/lake.json") + " -o " + dir + "/x.png --size 32x18",
+                              &out);
+  EXPECT_EQ(code, 2) << out;
+  EXPECT_NE(out.find("error: cannot render: "), std::string::npos) << out;
+  EXPECT_EQ(std::count(out.begin(), out.end(), '\n'), 1) << out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(RenderCli, HelpShowsExamples) {
+  int code = -1;
+  std::string out = render("--help", &code);
+  EXPECT_EQ(code, 0);
+  EXPECT_NE(out.find("watergraph render graphs/lake.json -o lake.png"), std::string::npos) << out;
+  EXPECT_NE(out.find("--camera"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace wg
