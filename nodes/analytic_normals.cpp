@@ -54,7 +54,8 @@ NodeSpec sineNormalsNode() {
   s.family = "waves";
   s.summary = "Seed 002's animated wave normals from layered sines (no texture).";
   s.formula =
-      "p = position.xz * scale. Layer 1: w1 = sin(0.5 p.x + 0.8 t) cos(0.3 p.y + 0.6 t), dn += (0.3 w1, 0.2 cos(0.5 p.x "
+      "p = position.xz * scale. Layer 1: w1 = sin(0.5 p.x + 0.8 t) cos(0.3 p.y + 0.6 t), dn += (0.3 w1, 0.2 cos(0.5 "
+      "p.x "
       "+ 0.8 t)); layer 2: dn += (0.15 sin(2 p.x + 1.5 p.y + 2 t), 0.1 cos(1.5 p.x - 2 p.y + 1.8 t)); layer 3: "
       "w3 = sin(8 p.x - 3 t) sin(6 p.y + 2.5 t), dn += (0.05 w3, 0.05 w3). normal = normalize(strength dn.x, 1, "
       "strength dn.y) for a y-up plane. Spatial parts are wrapped mod 2 pi; time parts are mod(omega t, 2 pi) "
@@ -103,9 +104,21 @@ NodeSpec sineNormalsNode() {
   };
   s.tolerance = 1e-4;
   s.hardCases = {
-      {"huge coordinates 1e5 m", {{"position", Value::vector({1e5, 0, -1e5})}}, {}, "finite, unit normal", -1, 1},
-      {"large strength", {{"strength", Value::scalar(1e3)}}, {}, "finite: the normal lies nearly flat", -1, 1},
-      {"zero scale", {{"scale", Value::scalar(0)}}, {}, "finite, the normal of the origin", -1, 1},
+      {"huge coordinates 1e5 m",
+       {{"position", Value::vector({1e5, 0, -1e5})}},
+       {},
+       "finite, unit normal",
+       -1,
+       1,
+       "normal"},
+      {"large strength",
+       {{"strength", Value::scalar(1e3)}},
+       {},
+       "finite: the normal lies nearly flat",
+       -1,
+       1,
+       "normal"},
+      {"zero scale", {{"scale", Value::scalar(0)}}, {}, "finite, the normal of the origin", -1, 1, "normal"},
   };
   return s;
 }
@@ -117,7 +130,8 @@ NodeSpec rippleNormalsNode() {
   s.summary = "Seed 004's high-frequency ripple normals: analytic sine noise added to a normal.";
   s.formula =
       "uv = position.xz * scale * 0.08; r = 0.5 (sin(23 u + 17 v + 2.3 t), sin(19 u - 23 v + 1.9 t)) + 0.3 "
-      "(sin(47 u + 31 v - 3.1 t), sin(37 u - 43 v + 2.7 t)) + 0.2 (sin(89 u - 67 v + 4.1 t), sin(73 u + 61 v - 3.7 t)); "
+      "(sin(47 u + 31 v - 3.1 t), sin(37 u - 43 v + 2.7 t)) + 0.2 (sin(89 u - 67 v + 4.1 t), sin(73 u + 61 v - 3.7 "
+      "t)); "
       "normal = normalize(N + strength (r.x, 0, r.y)). Seed 004 is top-down (z up) and perturbs N.xy; in this y-up "
       "world r.x goes to x and r.y to z.";
   s.seed = "004 (rippleNoise, u_rippleStrength 0.15, u_rippleScale 1.0, the 0.08 world-to-noise factor)";
@@ -139,17 +153,15 @@ NodeSpec rippleNormalsNode() {
     for (int i = 0; i < octaves; ++i) {
       const RippleLayer& l = kRipples[i];
       auto phase = [&](double w) { return (w < 0 ? "-" : "") + ctx.timePhase(std::abs(w)); };
-      std::string layer = EmitContext::call(
-          "wg_ripple_normals_layer",
-          {uv, ctx.literal(Value::vector({l.fa[0], l.fa[1], l.fb[0], l.fb[1]})),
-           "vec2(" + phase(l.omegaA) + ", " + phase(l.omegaB) + ")"});
+      std::string layer = EmitContext::call("wg_ripple_normals_layer",
+                                            {uv, ctx.literal(Value::vector({l.fa[0], l.fa[1], l.fb[0], l.fb[1]})),
+                                             "vec2(" + phase(l.omegaA) + ", " + phase(l.omegaB) + ")"});
       sum += (sum.empty() ? "" : " + ") + layer + " * " + ctx.literal(l.weight);
     }
     std::string r = ctx.temporary(Type::Vec2, sum);
-    ctx.output(0, EmitContext::call("wg_waves_unit_or_vec3",
-                                    {ctx.input("normal") + " + " + ctx.input("strength") + " * vec3(" + r + ".x, 0.0, " +
-                                         r + ".y)",
-                                     "vec3(0.0, 1.0, 0.0)"}));
+    ctx.output(0, EmitContext::call("wg_waves_unit_or_vec3", {ctx.input("normal") + " + " + ctx.input("strength") +
+                                                                  " * vec3(" + r + ".x, 0.0, " + r + ".y)",
+                                                              "vec3(0.0, 1.0, 0.0)"}));
     ctx.output(1, r);
   };
   s.eval = [](EvalContext& ctx) {
@@ -171,10 +183,27 @@ NodeSpec rippleNormalsNode() {
   };
   s.tolerance = 1e-4;
   s.hardCases = {
-      {"huge coordinates 1e5 m", {{"position", Value::vector({1e5, 0, 1e5})}}, {}, "finite, unit normal", -1, 1},
-      {"zero normal and zero strength", {{"normal", Value::vector({0, 0, 0})}, {"strength", Value::scalar(0)}}, {},
-       "the up vector, not NaN", -1, 1},
-      {"large strength", {{"strength", Value::scalar(1e3)}}, {}, "finite, a nearly horizontal unit normal", -1, 1},
+      {"huge coordinates 1e5 m",
+       {{"position", Value::vector({1e5, 0, 1e5})}},
+       {},
+       "finite, unit normal",
+       -1,
+       1,
+       "normal"},
+      {"zero normal and zero strength",
+       {{"normal", Value::vector({0, 0, 0})}, {"strength", Value::scalar(0)}},
+       {},
+       "the up vector, not NaN",
+       -1,
+       1,
+       "normal"},
+      {"large strength",
+       {{"strength", Value::scalar(1e3)}},
+       {},
+       "finite, a nearly horizontal unit normal",
+       -1,
+       1,
+       "normal"},
   };
   return s;
 }

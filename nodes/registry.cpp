@@ -45,6 +45,12 @@ const Registry& defaultRegistry() {
              dudvDistortionNode,
              // flow
              flowMapNode,
+             // noise
+             hashNode, valueNoiseNode, voronoiNode, fbmNode,
+             // caustics
+             voronoiCausticsNode, textureCausticsNode,
+             // foam
+             edgeFoamNode, crestFoamNode, coastalFoamNode, shoreWavesNode,
          })
       r.add(make());
     return r;

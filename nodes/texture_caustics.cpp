@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "nodes/eval_math.h"
+#include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 
@@ -47,10 +48,13 @@ NodeSpec textureCausticsNode() {
     std::string sampler = ctx.texture("texture");
     std::string uv = ctx.temporary(Type::Vec2, EmitContext::call("wg_texture_caustics_uv", {ctx.input("position"), ctx.input("scale")}));
     // The texture repeats every 1 in uv, so the scroll wraps there exactly.
-    std::string m = ctx.temporary(Type::Vec2, "mod(" + ctx.input("time") + " * " + ctx.input("velocity") + ", 1.0)");
+    std::string time = ctx.input("time");  // one call per statement: a stable emission order
+    std::string velocity = ctx.input("velocity");
+    std::string m = ctx.temporary(Type::Vec2, "mod(" + time + " * " + velocity + ", 1.0)");
     std::string a = ctx.temporary(Type::Float, "texture(" + sampler + ", " + uv + " + " + m + ").r");
     std::string b = ctx.temporary(Type::Float, "texture(" + sampler + ", 1.5 * " + uv + " - " + m + ").r");
-    ctx.output(0, "(" + ctx.input("intensity") + " * " + EmitContext::call("wg_texture_caustics_shape", {a, b}) + ")");
+    std::string intensity = ctx.input("intensity");
+    ctx.output(0, "(" + intensity + " * " + EmitContext::call("wg_texture_caustics_shape", {a, b}) + ")");
   };
   s.eval = [](EvalContext& ctx) {
     const Value& pos = ctx.input("position");

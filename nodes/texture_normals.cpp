@@ -53,8 +53,9 @@ NodeSpec normalMapScrollNode() {
       "(seeds 002, 003); whiteout: normalize(n_a.xy + n_b.xy, n_a.z n_b.z); rnm (reoriented normal mapping): t = n_a + "
       "(0,0,1), u = n_b (-1,-1,1), n = normalize(t dot(t, u) / t.z - u). n.xy *= strength; "
       "normal = normalize(T n.x + B n.y + N n.z) (up if degenerate).";
-  s.seed = "002 (approach 2: uv * 4 + t (0.05, 0.03), uv * 8 + t (-0.03, 0.07), normalize(n1 + n2)), "
-           "003 (two layers, normalBlend.xy *= strength; mentions RNM)";
+  s.seed =
+      "002 (approach 2: uv * 4 + t (0.05, 0.03), uv * 8 + t (-0.03, 0.07), normalize(n1 + n2)), "
+      "003 (two layers, normalBlend.xy *= strength; mentions RNM)";
   s.cost = "two texture fetches; add ~8 ALU, whiteout ~9 ALU, rnm ~14 ALU; world transform ~10 ALU";
   s.inputs = {
       ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "texture coordinate of the surface"),
@@ -78,8 +79,10 @@ NodeSpec normalMapScrollNode() {
     std::string tex = ctx.texture("texture");
     std::string time = ctx.temporary(Type::Float, ctx.input("time"));
     auto layer = [&](const char* scale, const char* speed) {
-      std::string uv = EmitContext::call("wg_normal_map_scroll_uv", {ctx.input("uv"), ctx.input(scale), ctx.input(speed), time});
-      return ctx.temporary(Type::Vec3, EmitContext::call("wg_normal_map_scroll_unpack", {"texture(" + tex + ", " + uv + ")"}));
+      std::string uv =
+          EmitContext::call("wg_normal_map_scroll_uv", {ctx.input("uv"), ctx.input(scale), ctx.input(speed), time});
+      return ctx.temporary(Type::Vec3,
+                           EmitContext::call("wg_normal_map_scroll_unpack", {"texture(" + tex + ", " + uv + ")"}));
     };
     std::string a = layer("scale_a", "speed_a"), b = layer("scale_b", "speed_b");
     std::string n = ctx.temporary(
@@ -95,7 +98,8 @@ NodeSpec normalMapScrollNode() {
     auto layer = [&](const char* scale, const char* speed) {
       double k = ctx.scalar(scale);
       const Value& v = ctx.input(speed);
-      return unpack(ctx.sampleTexture("texture", uv[0] * k + glsl::fract(v[0] * time), uv[1] * k + glsl::fract(v[1] * time)));
+      return unpack(
+          ctx.sampleTexture("texture", uv[0] * k + glsl::fract(v[0] * time), uv[1] * k + glsl::fract(v[1] * time)));
     };
     D3 a = layer("scale_a", "speed_a"), b = layer("scale_b", "speed_b");
     D3 n = normalMapBlend(ctx.option("blend").get<std::string>(), a, b);
@@ -106,12 +110,30 @@ NodeSpec normalMapScrollNode() {
   // 8-bit texels interpolated in float; fract(speed * t) at t = 1e6 s carries ~1e-3 texture units in float32.
   s.tolerance = 1e-3;
   s.hardCases = {
-      {"huge time 1e6 s (as a time input)", {{"time", Value::scalar(1e6)}}, {{"blend", "rnm"}}, "finite, unit normal", -1, 1},
-      {"time 524288 s", {{"time", Value::scalar(524288)}}, {{"blend", "whiteout"}}, "finite, unit normal", -1, 1},
+      {"huge time 1e6 s (as a time input)",
+       {{"time", Value::scalar(1e6)}},
+       {{"blend", "rnm"}},
+       "finite, unit normal",
+       -1,
+       1,
+       "normal"},
+      {"time 524288 s",
+       {{"time", Value::scalar(524288)}},
+       {{"blend", "whiteout"}},
+       "finite, unit normal",
+       -1,
+       1,
+       "normal"},
       {"zero frame (normal, tangent, binormal zero)",
-       {{"normal", Value::vector({0, 0, 0})}, {"tangent", Value::vector({0, 0, 0})}, {"binormal", Value::vector({0, 0, 0})}},
-       {}, "the up vector, not NaN", -1, 1},
-      {"zero strength", {{"strength", Value::scalar(0)}}, {{"blend", "rnm"}}, "the surface normal", -1, 1},
+       {{"normal", Value::vector({0, 0, 0})},
+        {"tangent", Value::vector({0, 0, 0})},
+        {"binormal", Value::vector({0, 0, 0})}},
+       {},
+       "the up vector, not NaN",
+       -1,
+       1,
+       "normal"},
+      {"zero strength", {{"strength", Value::scalar(0)}}, {{"blend", "rnm"}}, "the surface normal", -1, 1, "normal"},
   };
   return s;
 }
@@ -122,8 +144,10 @@ NodeSpec normalFromHeightNode() {
   s.family = "waves";
   s.summary = "Normal of a height texture by central differences, taken to world space.";
   s.formula =
-      "e = max(offset, 1e-6); g = (h(uv + (e,0)) - h(uv - (e,0)), h(uv + (0,e)) - h(uv - (0,e))) / (2 e) (red channel); "
-      "n_ts = (-strength g.x, -strength g.y, 1); normal = normalize(T n_ts.x + B n_ts.y + N n_ts.z) (up if degenerate).";
+      "e = max(offset, 1e-6); g = (h(uv + (e,0)) - h(uv - (e,0)), h(uv + (0,e)) - h(uv - (0,e))) / (2 e) (red "
+      "channel); "
+      "n_ts = (-strength g.x, -strength g.y, 1); normal = normalize(T n_ts.x + B n_ts.y + N n_ts.z) (up if "
+      "degenerate).";
   s.seed = "001 (wave normals from four height-texture samples, Height1 - Height2 and Height3 - Height4)";
   s.cost = "four texture fetches (five with the height output), ~15 ALU";
   s.inputs = {
@@ -141,11 +165,12 @@ NodeSpec normalFromHeightNode() {
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
     std::string uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
-    std::string g = ctx.temporary(Type::Vec2, EmitContext::call("wg_normal_from_height_gradient", {tex, uv, ctx.input("offset")}));
+    std::string g =
+        ctx.temporary(Type::Vec2, EmitContext::call("wg_normal_from_height_gradient", {tex, uv, ctx.input("offset")}));
     std::string k = ctx.temporary(Type::Float, ctx.input("strength"));
-    ctx.output(0, EmitContext::call("wg_waves_tangent_to_world",
-                                    {"vec3(-" + k + " * " + g + ", 1.0)", ctx.input("tangent"), ctx.input("binormal"),
-                                     ctx.input("normal")}));
+    ctx.output(
+        0, EmitContext::call("wg_waves_tangent_to_world", {"vec3(-" + k + " * " + g + ", 1.0)", ctx.input("tangent"),
+                                                           ctx.input("binormal"), ctx.input("normal")}));
     ctx.output(1, "texture(" + tex + ", " + uv + ").x");
     ctx.output(2, g);
   };
@@ -162,10 +187,23 @@ NodeSpec normalFromHeightNode() {
   // Differences of 8-bit texels divided by 2e amplify float32 rounding of the coordinates.
   s.tolerance = 1e-3;
   s.hardCases = {
-      {"zero offset", {{"offset", Value::scalar(0)}}, {}, "finite: the offset is floored at 1e-6", -1, 1},
-      {"huge coordinates", {{"uv", Value::vector({1e5, -1e5})}}, {}, "finite, unit normal (the texture repeats)", -1, 1},
-      {"zero frame", {{"normal", Value::vector({0, 0, 0})}, {"tangent", Value::vector({0, 0, 0})},
-                      {"binormal", Value::vector({0, 0, 0})}}, {}, "the up vector, not NaN", -1, 1},
+      {"zero offset", {{"offset", Value::scalar(0)}}, {}, "finite: the offset is floored at 1e-6", -1, 1, "normal"},
+      {"huge coordinates",
+       {{"uv", Value::vector({1e5, -1e5})}},
+       {},
+       "finite, unit normal (the texture repeats)",
+       -1,
+       1,
+       "normal"},
+      {"zero frame",
+       {{"normal", Value::vector({0, 0, 0})},
+        {"tangent", Value::vector({0, 0, 0})},
+        {"binormal", Value::vector({0, 0, 0})}},
+       {},
+       "the up vector, not NaN",
+       -1,
+       1,
+       "normal"},
   };
   return s;
 }
@@ -197,9 +235,11 @@ NodeSpec dudvDistortionNode() {
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
-    std::string move = ctx.temporary(Type::Float, EmitContext::call("wg_dudv_distortion_move", {ctx.input("time"), ctx.input("wave_speed")}));
-    std::string d = ctx.temporary(Type::Vec2, EmitContext::call("wg_dudv_distortion_offset",
-                                                                {tex, ctx.input("uv"), ctx.input("tiling"), move, ctx.input("strength")}));
+    std::string move = ctx.temporary(
+        Type::Float, EmitContext::call("wg_dudv_distortion_move", {ctx.input("time"), ctx.input("wave_speed")}));
+    std::string d = ctx.temporary(
+        Type::Vec2, EmitContext::call("wg_dudv_distortion_offset",
+                                      {tex, ctx.input("uv"), ctx.input("tiling"), move, ctx.input("strength")}));
     ctx.output(0, d);
     ctx.output(1, "(" + ctx.input("target_uv") + " + " + d + ")");
     ctx.output(2, move);
@@ -218,9 +258,9 @@ NodeSpec dudvDistortionNode() {
   // fract(time * speed) in float32 at t = 524288 s: ~1e-3 texture units of scroll.
   s.tolerance = 1e-3;
   s.hardCases = {
-      {"time 524288 s", {{"time", Value::scalar(524288)}}, {}, "finite, |offset| <= 0.03", -0.03, 0.03},
-      {"time 13107 s", {{"time", Value::scalar(13107)}}, {}, "finite, |offset| <= 0.03", -0.03, 0.03},
-      {"huge uv", {{"uv", Value::vector({1e5, 1e5})}}, {}, "finite (the texture repeats)", -0.03, 0.03},
+      {"time 524288 s", {{"time", Value::scalar(524288)}}, {}, "finite, |offset| <= 0.03", -0.03, 0.03, "offset"},
+      {"time 13107 s", {{"time", Value::scalar(13107)}}, {}, "finite, |offset| <= 0.03", -0.03, 0.03, "offset"},
+      {"huge uv", {{"uv", Value::vector({1e5, 1e5})}}, {}, "finite (the texture repeats)", -0.03, 0.03, "offset"},
   };
   return s;
 }

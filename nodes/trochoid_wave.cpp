@@ -39,14 +39,19 @@ NodeSpec trochoidWaveNode() {
       "h(x, z) = A (sin(phi - 0.5 cos phi) + detail (2 T(s x + 0.5, 0.5 - s z).r - 1)), "
       "phi = mod(K.(x, z) + mod(omega t, 2 pi), 2 pi). Ray: origin O, direction R = -normalize(view); P0 = O + t0 R "
       "with t0 = clamp((surface_height - O.y) / R.y, 0, max_distance) (|R.y| floored at 1e-6). "
-      "M = +-10 A (1 + |detail|) (+ when O is above the surface); step = M/2; P = P0 - step R; repeat `steps` "
-      "times: step /= 2; P -= step R if P.y - surface_height < h(P.xz), else P += step R. "
+      "M = A (1 + |detail|); step = +-M / max(|R.y|, 0.1) (+ when O is above the surface); P = P0; repeat `steps` "
+      "times: step /= 2; P -= step R if P.y - surface_height < h(P.xz), else P += step R. Seed 001 searches only the "
+      "10 M before P0 and misses troughs below the plane; the search here is centred on P0. Rays flatter than "
+      "|R.y| = 0.1 search 10 M each side of P0 (seed 001's range) and can stop short of a deep trough. "
       "Outputs P, h(P.xz) and normalize(-dh/dx, 1, -dh/dz) with dh = A (cos(phi - 0.5 cos phi)(1 + 0.5 sin phi) K "
       "+ detail * 2 * dT) where dT is the texture's central difference `normal_offset` apart.";
-  s.seed = "001 (listing 6: 10-step bisection, sin(phase - 0.5 cos(phase)), height-texture detail with texture "
-           "coordinate (s x + 0.5, 0.5 - s z), search range 10 x the maximum wave amplitude)";
-  s.cost = "per step: one texture fetch, sin, cos, ~15 ALU (steps = 10 by default: 10 fetches); the height at the hit "
-           "adds one fetch and the normal four. Position error after n steps: 10 A (1 + |detail|) / 2^(n+1) along the ray.";
+  s.seed =
+      "001 (listing 6: 10-step bisection, sin(phase - 0.5 cos(phase)), height-texture detail with texture "
+      "coordinate (s x + 0.5, 0.5 - s z), search range up to 10 x the maximum wave amplitude)";
+  s.cost =
+      "per step: one texture fetch, sin, cos, ~15 ALU (steps = 10 by default: 10 fetches); the height at the hit "
+      "adds one fetch and the normal four. Position error after n steps: A (1 + |detail|) / max(|R.y|, 0.1) / 2^n "
+      "along the ray.";
   s.inputs = {
       ports::fromBuiltin("origin", Type::Vec3, Builtin::CameraPosition, "where the ray starts (the camera)"),
       ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection,
@@ -83,9 +88,9 @@ NodeSpec trochoidWaveNode() {
     std::string detail = ctx.temporary(Type::Float, ctx.input("detail"));
     std::string scale = ctx.temporary(Type::Float, ctx.input("texture_scale"));
     std::string hit = ctx.temporary(
-        Type::Vec3, EmitContext::call("wg_trochoid_wave_march", {ctx.input("origin"), dir, ctx.input("surface_height"), amp,
-                                                                k, phase, detail, scale, ctx.input("max_distance"), steps,
-                                                                tex}));
+        Type::Vec3,
+        EmitContext::call("wg_trochoid_wave_march", {ctx.input("origin"), dir, ctx.input("surface_height"), amp, k,
+                                                     phase, detail, scale, ctx.input("max_distance"), steps, tex}));
     ctx.output(0, hit);
     ctx.output(1, EmitContext::call("wg_trochoid_wave_height", {hit + ".xz", amp, k, phase, detail, scale, tex}));
     ctx.output(2, EmitContext::call("wg_trochoid_wave_normal",
@@ -93,18 +98,21 @@ NodeSpec trochoidWaveNode() {
   };
   s.eval = [](EvalContext& ctx) {
     const Value& k = ctx.input("wave_vector");
-    TrochoidSetup w{ctx.scalar("amplitude"), k[0], k[1], waves::timePhase(ctx, ctx.option("omega").get<double>()),
-                    ctx.scalar("detail"), ctx.scalar("texture_scale"), &ctx};
+    TrochoidSetup w{ctx.scalar("amplitude"),
+                    k[0],
+                    k[1],
+                    waves::timePhase(ctx, ctx.option("omega").get<double>()),
+                    ctx.scalar("detail"),
+                    ctx.scalar("texture_scale"),
+                    &ctx};
     D3 origin = waves::d3(ctx.input("origin"));
     D3 dir = waves::safeNormalize(waves::d3(ctx.input("view"))) * -1.0;
     double surfaceY = ctx.scalar("surface_height");
     double dy = std::abs(dir.y) < 1e-6 ? (dir.y < 0 ? -1e-6 : 1e-6) : dir.y;
     double t0 = glsl::clamp((surfaceY - origin.y) / dy, 0.0, ctx.scalar("max_distance"));
-    D3 p0 = origin + dir * t0;
+    D3 p = origin + dir * t0;
     double maxAmplitude = std::abs(w.amplitude) * (1.0 + std::abs(w.detail));
-    double range = (origin.y > surfaceY ? 10.0 : -10.0) * maxAmplitude;
-    double step = 0.5 * range;
-    D3 p = p0 - dir * step;
+    double step = (origin.y > surfaceY ? 1.0 : -1.0) * maxAmplitude / std::max(std::abs(dir.y), 0.1);
     int steps = waves::integerOptionValue(ctx.option("steps"));
     for (int i = 0; i < steps; ++i) {
       double h = w.height(p.x, p.z);
@@ -124,18 +132,38 @@ NodeSpec trochoidWaveNode() {
     double dhdz = w.amplitude * (dphi * w.waveZ - w.detail * 2.0 * dv * inv2e * w.texScale);
     ctx.output(2, waves::value(waves::safeNormalize({-dhdx, 1.0, -dhdz})));
   };
-  // The bisection's last step is 10 A (1 + detail) / 2^(steps+1) = 3.2 mm by default: a float32 decision that
-  // differs from the double one near the surface moves the hit by up to about twice that.
+  // The bisection's last step is A (1 + detail) / max(|R.y|, 0.1) / 2^steps (<= 6.3 mm by default): a float32
+  // decision that differs from the double one near the surface moves the hit by up to about twice that.
   s.tolerance = 1e-2;
   s.hardCases = {
-      {"grazing ray (view horizontal)", {{"view", Value::vector({1, 0, 0})}, {"origin", Value::vector({0, 10, 0})}}, {},
-       "finite: the ray distance is clamped to max_distance", -1, 1, "normal"},
-      {"zero view vector", {{"view", Value::vector({0, 0, 0})}}, {}, "finite: safe normalize gives a zero ray", -1, 1,
+      {"grazing ray (view horizontal)",
+       {{"view", Value::vector({1, 0, 0})}, {"origin", Value::vector({0, 10, 0})}},
+       {},
+       "finite: the ray distance is clamped to max_distance",
+       -1,
+       1,
        "normal"},
-      {"camera below the surface looking up", {{"origin", Value::vector({0, -5, 0})}, {"view", Value::vector({0, -1, 0})}},
-       {}, "finite, the search runs beyond the flat surface", -1, 1, "normal"},
-      {"huge coordinates 1e5 m", {{"origin", Value::vector({1e5, 10, -1e5})}, {"view", Value::vector({0.6, 0.8, 0})}}, {},
-       "finite: the phase is wrapped before sin", -1, 1, "normal"},
+      {"zero view vector",
+       {{"view", Value::vector({0, 0, 0})}},
+       {},
+       "finite: safe normalize gives a zero ray",
+       -1,
+       1,
+       "normal"},
+      {"camera below the surface looking up",
+       {{"origin", Value::vector({0, -5, 0})}, {"view", Value::vector({0, -1, 0})}},
+       {},
+       "finite, the search runs beyond the flat surface",
+       -1,
+       1,
+       "normal"},
+      {"huge coordinates 1e5 m",
+       {{"origin", Value::vector({1e5, 10, -1e5})}, {"view", Value::vector({0.6, 0.8, 0})}},
+       {},
+       "finite: the phase is wrapped before sin",
+       -1,
+       1,
+       "normal"},
       {"zero amplitude", {{"amplitude", Value::scalar(0)}}, {}, "the flat surface, normal up", -1, 1, "normal"},
   };
   return s;

@@ -17,7 +17,8 @@ std::string emitVoronoiPhase(EmitContext& ctx, double speedScale) {
   if (mode == "static") return "0.0";
   if (mode == "time") return speed == 0.0 ? "0.0" : ctx.timePhase(speed);
   // A time input: wrap speed * time before it reaches sin (float time is coarse at 1e6 s).
-  return "mod(" + ctx.literal(speed) + " * " + ctx.input("time") + ", " + ctx.literal(noise::kTau) + ")";
+  std::string t = ctx.input("time");
+  return "mod(" + ctx.literal(speed) + " * " + t + ", " + ctx.literal(noise::kTau) + ")";
 }
 
 double evalVoronoiPhase(EvalContext& ctx, double speedScale) {
@@ -65,7 +66,9 @@ NodeSpec voronoiNode() {
   s.emit = [](EmitContext& ctx) {
     bool full = ctx.option("search").get<std::string>() == "3x3";
     bool animated = ctx.option("animation").get<std::string>() != "static";
-    std::string q = "(" + ctx.input("p") + " * " + ctx.input("scale") + ")";
+    std::string p = ctx.input("p");  // one call per statement: a stable emission order
+    std::string k = ctx.input("scale");
+    std::string q = "(" + p + " * " + k + ")";
     std::string v = ctx.temporary(Type::Vec4, EmitContext::call("wg_voronoi", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, 1.0),
                                                                                animated ? "true" : "false", full ? "true" : "false"}));
     ctx.output(0, v + ".x");

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "nodes/eval_math.h"
+#include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
 #include "nodes/noise_reference.h"
 #include "nodes/port_builders.h"
@@ -15,9 +16,7 @@ namespace {
 constexpr double kLayer2Scale = 1.3, kLayer2Offset = 5.0, kLayer2Speed = 1.2;
 
 double layerReference(double x, double y, double jitter, double phase, bool animated, bool full) {
-  double d = glsl::saturate(noise::voronoi(x, y, jitter, phase, animated, full).f1);
-  double m = 1.0 - d;
-  return m * m * m;
+  return voronoiCausticsIntensity(noise::voronoi(x, y, jitter, phase, animated, full).f1);
 }
 
 }  // namespace
@@ -56,7 +55,9 @@ NodeSpec voronoiCausticsNode() {
     bool full = ctx.option("search").get<std::string>() == "3x3";
     bool animated = ctx.option("animation").get<std::string>() != "static";
     std::string a = animated ? "true" : "false", f = full ? "true" : "false";
-    std::string q = ctx.temporary(Type::Vec2, "(" + ctx.input("p") + " * " + ctx.input("scale") + ")");
+    std::string p = ctx.input("p");  // one call per statement: a stable emission order
+    std::string k = ctx.input("scale");
+    std::string q = ctx.temporary(Type::Vec2, "(" + p + " * " + k + ")");
     std::string c1 = ctx.temporary(
         Type::Float, EmitContext::call("wg_voronoi_caustics_layer", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, 1.0), a, f}));
     std::string c = c1;
@@ -70,7 +71,8 @@ NodeSpec voronoiCausticsNode() {
           : mode == "min"   ? "min(" + c1 + ", " + c2 + ")"
                             : "(" + c1 + " * " + c2 + ")";
     }
-    ctx.output(0, "(" + ctx.input("intensity") + " * " + c + ")");
+    std::string intensity = ctx.input("intensity");
+    ctx.output(0, "(" + intensity + " * " + c + ")");
   };
   s.eval = [](EvalContext& ctx) {
     bool full = ctx.option("search").get<std::string>() == "3x3";

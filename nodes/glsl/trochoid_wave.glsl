@@ -21,18 +21,18 @@ float wg_trochoid_wave_height(vec2 xz, float amplitude, vec2 waveVector, float t
 
 // Bisection along the ray from `origin` in the unit direction `dir` (seed 001, listing 6).
 // The ray meets the flat surface y = surfaceY at P0 (distance clamped to [0, maxDistance],
-// |dir.y| floored at 1e-6); the search covers the 10 * maxAmplitude before P0 (camera
-// above) or after it (camera below): start at half of it, halve the step each iteration
-// and move towards the camera while below the wave, away from it while above.
+// |dir.y| floored at 1e-6). The wave lies within +-M = A (1 + |detail|) of that plane, so
+// along the ray within L = M / max(|dir.y|, 0.1) of P0 (seed 001's 10 M at grazing views).
+// Seed 001 searches only the stretch before P0 and so misses troughs below the plane; here
+// the search is centred on P0: each step halves, moving towards the camera while the point
+// is below the wave and away from it while above (the signs swap for a camera below).
 vec3 wg_trochoid_wave_march(vec3 origin, vec3 dir, float surfaceY, float amplitude, vec2 waveVector, float timePhase,
                             float detail, float texScale, float maxDistance, int steps, sampler2D heightTex) {
   float dy = abs(dir.y) < 1e-6 ? (dir.y < 0.0 ? -1e-6 : 1e-6) : dir.y;
   float t0 = clamp((surfaceY - origin.y) / dy, 0.0, maxDistance);
-  vec3 p0 = origin + t0 * dir;
+  vec3 p = origin + t0 * dir;
   float maxAmplitude = abs(amplitude) * (1.0 + abs(detail));
-  float range = (origin.y > surfaceY ? 10.0 : -10.0) * maxAmplitude;
-  float stepLength = 0.5 * range;
-  vec3 p = p0 - stepLength * dir;
+  float stepLength = (origin.y > surfaceY ? 1.0 : -1.0) * maxAmplitude / max(abs(dir.y), 0.1);
   for (int i = 0; i < steps; ++i) {
     float h = wg_trochoid_wave_height(p.xz, amplitude, waveVector, timePhase, detail, texScale, heightTex);
     stepLength *= 0.5;
