@@ -75,6 +75,7 @@ std::optional<CompileResult> compileGraph(const Graph& graph, const Registry& re
   result.nodesKept = static_cast<int>(program->ops.size());
   std::string base = graphBaseName(graph.file.empty() ? graph.name : graph.file);
   std::string sourceName = std::filesystem::path(graph.file).filename().string();
+  for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
   bool ok = true;
   std::vector<std::pair<Target, EmitResult>> emitted;
   for (Target target : options.targets) {

@@ -138,8 +138,11 @@ class PositionSax {
   bool parse_error(std::size_t position, const std::string& lastToken,
                    const nlohmann::detail::exception& ex) {
     // `position` counts the bytes read, including the offending one (or end of input).
-    std::size_t offset = position > 0 ? position - 1 : 0;
-    offset = std::min(offset, text_.size());
+    // The lexer reads a whole token before the parser refuses it, so step back from the
+    // last byte read to the token's first: a string's opening quote, a literal's first
+    // character.
+    std::size_t offset = std::min(position > 0 ? position - 1 : 0, text_.size());
+    offset = tokenStartBefore(offset);
     SourceRef where = lines_.at(file_, offset);
     std::string what = ex.what();
     if (ex.id == 406) {  // out_of_range: a float literal that overflows double
@@ -150,6 +153,12 @@ class PositionSax {
     }
     std::string message = cleanParseMessage(what);
     if (what.find("ill-formed UTF-8") != std::string::npos) {
+      // Point at the bad byte; a sequence cut short is reported at its lead byte.
+      std::size_t bad = std::min(position > 0 ? position - 1 : 0, text_.size());
+      std::size_t lead = bad;
+      while (lead > 0 && (static_cast<unsigned char>(text_[lead - 1]) & 0xC0u) == 0x80u) --lead;
+      if (lead > 0 && static_cast<unsigned char>(text_[lead - 1]) >= 0xC0u) bad = lead - 1;
+      where = lines_.at(file_, bad);
       diags_.error(DiagCode::JsonEncoding, where,
                    "invalid UTF-8 in a string: the file must be saved as UTF-8");
       return false;
@@ -159,6 +168,27 @@ class PositionSax {
   }
 
   bool depthExceeded() const { return depthExceeded_; }
+
+  std::size_t tokenStartBefore(std::size_t last) const {
+    if (last >= text_.size()) return last;
+    auto literalChar = [](char c) {
+      return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || c == '.' || c == '+' ||
+             c == '-';
+    };
+    auto escaped = [&](std::size_t i) {
+      std::size_t backslashes = 0;
+      while (i > backslashes && text_[i - 1 - backslashes] == '\\') ++backslashes;
+      return backslashes % 2 == 1;
+    };
+    if (text_[last] == '"' && last > 0) {
+      for (std::size_t j = last; j-- > 0;)
+        if (text_[j] == '"' && !escaped(j)) return j;
+      return last;
+    }
+    if (literalChar(text_[last]))
+      while (last > 0 && literalChar(text_[last - 1])) --last;
+    return last;
+  }
 
  private:
   struct Frame {
