@@ -5,7 +5,7 @@ JOBS      ?= $(shell nproc)
 WG        := $(BUILD_DIR)/bin/watergraph
 GRAPHS    := $(sort $(wildcard graphs/*.json))
 
-.PHONY: all setup configure build demo test clean
+.PHONY: all setup configure build demo test clean sanitize fuzz
 
 all: build
 
@@ -29,6 +29,15 @@ demo: build
 
 test: build
 	@cd $(BUILD_DIR) && MESA_SHADER_CACHE_DISABLE=true ctest --output-on-failure -j $(JOBS)
+
+# The whole test suite under ASan + UBSan in build-asan (docs/robustness.md).
+sanitize:
+	@scripts/sanitize.sh
+
+# Each libFuzzer target for FUZZ_SECONDS (default 60) in build-fuzz (docs/robustness.md).
+FUZZ_SECONDS ?= 60
+fuzz:
+	@scripts/fuzz.sh $(FUZZ_SECONDS)
 
 clean:
 	@rm -rf $(BUILD_DIR) out

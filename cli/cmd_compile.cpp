@@ -1,14 +1,23 @@
-// compile: graphs -> GLSL files + manifest; validate: the same checks, nothing written.
+// compile: graphs -> GLSL files + manifest (and MSL / HLSL through SPIRV-Cross); validate:
+// the same checks, nothing written. Batch runs draw a progress bar when stdout is a
+// terminal; --watch recompiles a graph when its file changes.
+#include <atomic>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <ctime>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <sstream>
+#include <thread>
 
 #include <unistd.h>
 
 #include "cli/commands.h"
 #include "codegen/compile.h"
 #include "codegen/output_files.h"
+#include "codegen/spirv_cross_targets.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 
@@ -21,25 +30,46 @@ struct CompileArgs {
   std::vector<std::string> targets;
   bool subdirs = false;
   bool summary = false;
+  bool quiet = false;
+  bool verbose = false;
+  bool noProgress = false;
+  bool watch = false;
+  int watchIntervalMs = 250;
 };
 
-bool parseTargets(const std::vector<std::string>& names, std::vector<Target>& out) {
-  out.clear();
+struct TargetSet {
+  std::vector<Target> glsl;
+  std::vector<CrossTarget> cross;
+  std::string list() const {
+    std::string s;
+    for (Target t : glsl) s += (s.empty() ? "" : ",") + std::string(targetName(t));
+    for (CrossTarget t : cross) s += (s.empty() ? "" : ",") + std::string(crossTargetName(t));
+    return s;
+  }
+  size_t size() const { return glsl.size() + cross.size(); }
+};
+
+bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
+  out = {};
   for (const auto& n : names) {
     std::stringstream ss(n);
     std::string part;
     while (std::getline(ss, part, ',')) {
-      auto t = parseTarget(part);
-      if (!t) {
-        std::cerr << "watergraph: unknown target '" << part << "' (glsl330, es300, vk450)\n";
+      if (auto t = parseTarget(part)) {
+        bool dup = false;
+        for (Target have : out.glsl) dup |= have == *t;
+        if (!dup) out.glsl.push_back(*t);
+      } else if (auto c = parseCrossTarget(part)) {
+        bool dup = false;
+        for (CrossTarget have : out.cross) dup |= have == *c;
+        if (!dup) out.cross.push_back(*c);
+      } else {
+        std::cerr << "watergraph: unknown target '" << part << "' (glsl330, es300, vk450, msl, hlsl)\n";
         return false;
       }
-      bool dup = false;
-      for (Target have : out) dup |= have == *t;
-      if (!dup) out.push_back(*t);
     }
   }
-  if (out.empty()) out = allTargets();
+  if (out.glsl.empty() && out.cross.empty()) out.glsl = allTargets();
   return true;
 }
 
@@ -48,66 +78,199 @@ struct GraphOutcome {
   int kept = 0, total = 0;
   bool ok = false;
   size_t errors = 0;
+  size_t files = 0;
+  double ms = 0;
 };
 
-void printSummary(const std::vector<GraphOutcome>& outcomes, const std::vector<Target>& targets) {
-  std::string targetList;
-  for (Target t : targets) targetList += (targetList.empty() ? "" : ",") + std::string(targetName(t));
+void printSummary(std::FILE* to, const std::vector<GraphOutcome>& outcomes, const TargetSet& targets) {
+  std::string targetList = targets.list();
   size_t w = 5;
   for (const auto& o : outcomes) w = std::max(w, o.name.size());
-  std::printf("%-*s  %-11s  %-21s  %s\n", static_cast<int>(w), "graph", "nodes", "targets", "status");
-  std::printf("%s\n", std::string(w + 2 + 11 + 2 + 21 + 2 + 16, '-').c_str());
+  std::fprintf(to, "%-*s  %-11s  %-21s  %s\n", static_cast<int>(w), "graph", "nodes", "targets", "status");
+  std::fprintf(to, "%s\n", std::string(w + 2 + 11 + 2 + 21 + 2 + 16, '-').c_str());
   int failed = 0;
   for (const auto& o : outcomes) {
     std::string nodes = o.total ? std::to_string(o.kept) + "/" + std::to_string(o.total) : "-";
     std::string status = o.ok ? "ok" : "FAILED (" + std::to_string(o.errors) + " error" + (o.errors == 1 ? "" : "s") + ")";
-    std::printf("%-*s  %-11s  %-21s  %s\n", static_cast<int>(w), o.name.c_str(), nodes.c_str(), targetList.c_str(),
-                status.c_str());
+    std::fprintf(to, "%-*s  %-11s  %-21s  %s\n", static_cast<int>(w), o.name.c_str(), nodes.c_str(), targetList.c_str(),
+                 status.c_str());
     failed += !o.ok;
   }
-  std::printf("%zu graph%s, %d failed\n", outcomes.size(), outcomes.size() == 1 ? "" : "s", failed);
+  std::fprintf(to, "%zu graph%s, %d failed\n", outcomes.size(), outcomes.size() == 1 ? "" : "s", failed);
+}
+
+// A one-line bar redrawn in place on a terminal: "[#########.........]  4/10  lake".
+class ProgressBar {
+ public:
+  ProgressBar(bool enabled, size_t total) : enabled_(enabled && total > 1), total_(total) {}
+  ~ProgressBar() { clear(); }
+  void show(size_t done, const std::string& current) {
+    if (!enabled_) return;
+    const int width = 30;
+    int filled = total_ ? static_cast<int>(width * done / total_) : width;
+    std::string bar(static_cast<size_t>(filled), '#');
+    bar += std::string(static_cast<size_t>(width - filled), '.');
+    std::string name = current.size() > 40 ? current.substr(0, 37) + "..." : current;
+    std::fprintf(stdout, "\r\033[K[%s] %zu/%zu  %s", bar.c_str(), done, total_, name.c_str());
+    std::fflush(stdout);
+    drawn_ = true;
+  }
+  void clear() {
+    if (!drawn_) return;
+    std::fputs("\r\033[K", stdout);
+    std::fflush(stdout);
+    drawn_ = false;
+  }
+
+ private:
+  bool enabled_;
+  size_t total_;
+  bool drawn_ = false;
+};
+
+std::string nowHms() {
+  std::time_t t = std::time(nullptr);
+  char buf[16];
+  std::strftime(buf, sizeof buf, "%H:%M:%S", std::localtime(&t));
+  return buf;
+}
+
+// Compiles one graph (and writes it when `write`). Diagnostics go to `diags`.
+GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const TargetSet& targets, bool write,
+                        Diagnostics& diags) {
+  auto start = std::chrono::steady_clock::now();
+  GraphOutcome outcome;
+  outcome.name = graphBaseName(path);
+  auto graph = loadGraphFile(path, diags);
+  std::optional<CompileResult> result;
+  if (graph) {
+    result = compileGraphWithCross(*graph, defaultRegistry(), targets.glsl, targets.cross, diags);
+    outcome.total = static_cast<int>(graph->nodes.size());
+  }
+  if (result) {
+    outcome.kept = result->nodesKept;
+    outcome.files = result->files.size();
+    if (write) {
+      std::string dir = args.subdirs ? args.outDir + "/" + outcome.name : args.outDir;
+      outcome.ok = writeOutputFiles(dir, result->files, diags);
+    } else {
+      outcome.ok = true;
+    }
+  }
+  outcome.errors = diags.errorCount();
+  outcome.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return outcome;
+}
+
+std::string outcomeLine(const std::string& path, const GraphOutcome& o, const CompileArgs& args, bool write) {
+  char ms[32];
+  std::snprintf(ms, sizeof ms, "%.0f ms", o.ms);
+  if (!o.ok)
+    return path + ": FAILED (" + std::to_string(o.errors) + " error" + (o.errors == 1 ? "" : "s") + ", " + ms + ")";
+  std::string dir = args.subdirs ? args.outDir + "/" + o.name : args.outDir;
+  std::string s = path + ": ok, " + std::to_string(o.kept) + "/" + std::to_string(o.total) + " nodes kept";
+  if (write) s += ", " + std::to_string(o.files) + " files in " + dir;
+  return s + " (" + ms + ")";
+}
+
+std::atomic<bool> gStop{false};
+extern "C" void onStopSignal(int) { gStop = true; }
+
+// Polls the graph files' modification times and sizes; recompiles a graph when they change.
+int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOptions& global) {
+  namespace fs = std::filesystem;
+  struct Stamp {
+    fs::file_time_type time{};
+    uintmax_t size = 0;
+    bool exists = false;
+    bool operator!=(const Stamp& o) const { return time != o.time || size != o.size || exists != o.exists; }
+  };
+  auto stampOf = [](const std::string& p) {
+    Stamp s;
+    std::error_code ec;
+    s.time = fs::last_write_time(p, ec);
+    if (ec) return s;
+    s.size = fs::file_size(p, ec);
+    s.exists = !ec;
+    return s;
+  };
+  std::vector<Stamp> stamps;
+  for (const auto& p : args.graphs) stamps.push_back(stampOf(p));
+  std::signal(SIGINT, onStopSignal);
+  std::signal(SIGTERM, onStopSignal);
+  std::cout << "watching " << args.graphs.size() << " graph" << (args.graphs.size() == 1 ? "" : "s")
+            << " for changes (every " << args.watchIntervalMs << " ms; Ctrl-C to stop)" << std::endl;
+  while (!gStop) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(args.watchIntervalMs));
+    for (size_t i = 0; i < args.graphs.size() && !gStop; ++i) {
+      Stamp now = stampOf(args.graphs[i]);
+      if (!(now != stamps[i])) continue;
+      stamps[i] = now;
+      if (!now.exists) continue;  // mid-save by an editor; the next change brings it back
+      Diagnostics diags;
+      GraphOutcome o = compileOne(args.graphs[i], args, targets, true, diags);
+      printDiagnostics(diags, global);
+      std::cout << "[" << nowHms() << "] recompiled " << outcomeLine(args.graphs[i], o, args, true) << std::endl;
+    }
+  }
+  std::cout << "watch stopped" << std::endl;
+  return kExitOk;
 }
 
 int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write) {
-  std::vector<Target> targets;
+  TargetSet targets;
   if (!parseTargets(args.targets, targets)) return kExitUsageOrIo;
-  const Registry& registry = defaultRegistry();
+  if (args.quiet && args.verbose) {
+    std::cerr << "watergraph: --quiet and --verbose exclude each other\n";
+    return kExitUsageOrIo;
+  }
+  const bool textFormat = global.diagnosticsFormat == "text";
+  // SARIF owns stdout: human-readable lines go to stderr instead.
+  std::FILE* info = global.diagnosticsFormat == "sarif" ? stderr : stdout;
+  ProgressBar progress(!args.noProgress && !args.quiet && textFormat && isatty(STDOUT_FILENO), args.graphs.size());
   Diagnostics all;
   std::vector<GraphOutcome> outcomes;
-  for (const auto& path : args.graphs) {
+  std::vector<std::string> verboseLines;
+  for (size_t i = 0; i < args.graphs.size(); ++i) {
+    const auto& path = args.graphs[i];
+    progress.show(i, path);
     Diagnostics diags;
-    GraphOutcome outcome;
-    outcome.name = graphBaseName(path);
-    auto graph = loadGraphFile(path, diags);
-    std::optional<CompileResult> result;
-    if (graph) {
-      CompileOptions options;
-      options.targets = targets;
-      result = compileGraph(*graph, registry, options, diags);
-      outcome.total = static_cast<int>(graph->nodes.size());
+    GraphOutcome outcome = compileOne(path, args, targets, write, diags);
+    if (args.verbose) {
+      progress.clear();
+      std::fprintf(info, "%s\n", outcomeLine(path, outcome, args, write).c_str());
+      std::fflush(info);
     }
-    if (result) {
-      outcome.kept = result->nodesKept;
-      if (write) {
-        std::string dir = args.subdirs ? args.outDir + "/" + outcome.name : args.outDir;
-        outcome.ok = writeOutputFiles(dir, result->files, diags);
-      } else {
-        outcome.ok = true;
-      }
-    }
-    outcome.errors = diags.errorCount();
     all.append(diags);
     outcomes.push_back(outcome);
   }
+  progress.show(args.graphs.size(), "done");
+  progress.clear();
   printDiagnostics(all, global);
-  if (args.summary) printSummary(outcomes, targets);
+  if (args.summary) printSummary(info, outcomes, targets);
+  int code = kExitOk;
   if (!all.hasErrors()) {
-    if (!write && !args.summary)
-      std::cout << "validated " << args.graphs.size() << " graph" << (args.graphs.size() == 1 ? "" : "s") << " for "
-                << targets.size() << " target" << (targets.size() == 1 ? "" : "s") << ": ok\n";
-    return kExitOk;
+    if (!write && !args.summary && !args.quiet)
+      std::fprintf(info, "validated %zu graph%s for %zu target%s: ok\n", args.graphs.size(),
+                   args.graphs.size() == 1 ? "" : "s", targets.size(), targets.size() == 1 ? "" : "s");
+    if (write && args.verbose)
+      std::fprintf(info, "compiled %zu graph%s for %s\n", args.graphs.size(), args.graphs.size() == 1 ? "" : "s",
+                   targets.list().c_str());
+  } else {
+    code = exitCodeFor(all);
   }
-  return exitCodeFor(all);
+  std::fflush(info);
+  if (write && args.watch) return watchLoop(args, targets, global);
+  return code;
+}
+
+void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
+  cmd->add_option("--target", args.targets,
+                  "targets, comma separated: glsl330, es300, vk450 (default: these three), msl, hlsl (from the vk450 "
+                  "SPIR-V through SPIRV-Cross)");
+  auto* quiet = cmd->add_flag("-q,--quiet", args.quiet, "print only errors");
+  cmd->add_flag("-v,--verbose", args.verbose, "print one line per graph: nodes kept, files, time")->excludes(quiet);
+  cmd->add_flag("--no-progress", args.noProgress, "no progress bar (it is drawn only when stdout is a terminal)");
 }
 
 }  // namespace
@@ -117,15 +280,26 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* cmd = app.add_subcommand(
       "compile",
       "Compile graphs to GLSL (and SPIR-V for vk450) plus a manifest; every shader is validated by glslang first "
-      "and nothing is written for a graph that fails.\n\nExamples:\n"
+      "and nothing is written for a graph that fails. With --target msl or hlsl, SPIRV-Cross translates the vk450 "
+      "SPIR-V into <graph>.msl.{vert,frag} or <graph>.hlsl.{vert,frag}.\n\nExamples:\n"
       "  watergraph compile graphs/lake.json -o out\n"
       "  watergraph compile graphs/*.json -o out --subdirs --summary\n"
-      "  watergraph compile graphs/lake.json -o out --target es300");
+      "  watergraph compile graphs/lake.json -o out --target es300\n"
+      "  watergraph compile graphs/lake.json -o out --target msl,hlsl\n"
+      "  watergraph compile graphs/*.json -o out --verbose\n"
+      "  watergraph compile graphs/lake.json -o out --watch        # recompile on every save\n"
+      "  watergraph compile graphs/*.json -o out --diagnostics-format sarif > watergraph.sarif");
   cmd->add_option("graphs", args->graphs, "graph files (.json)")->required();
   cmd->add_option("-o,--output", args->outDir, "output folder")->required();
-  cmd->add_option("--target", args->targets, "targets, comma separated: glsl330, es300, vk450 (default: all)");
+  addCommonOptions(cmd, *args);
   cmd->add_flag("--subdirs", args->subdirs, "write each graph into OUTPUT/<graph>/");
   cmd->add_flag("--summary", args->summary, "print a table: graph, nodes kept/total, targets, status");
+  cmd->add_flag("-w,--watch", args->watch,
+                "after compiling, keep running and recompile a graph whenever its file changes (polls modification "
+                "times); stop with Ctrl-C");
+  cmd->add_option("--watch-interval", args->watchIntervalMs, "milliseconds between polls in --watch")
+      ->check(CLI::Range(10, 60000))
+      ->capture_default_str();
   return [args, &global] { return runCompile(*args, global, true); };
 }
 
@@ -135,9 +309,11 @@ Runner addValidateCommand(CLI::App& app, const GlobalOptions& global) {
       "validate",
       "Compile graphs for every target and validate them with glslang without writing anything: exit 0 when all "
       "pass, 1 with one line per failure.\n\nExamples:\n  watergraph validate graphs/*.json\n"
-      "  watergraph validate graphs/lake.json --diagnostics-format json");
+      "  watergraph validate graphs/lake.json --diagnostics-format json\n"
+      "  watergraph validate graphs/*.json --diagnostics-format sarif > watergraph.sarif   # for code scanning\n"
+      "  watergraph validate graphs/*.json --target glsl330,hlsl --quiet");
   cmd->add_option("graphs", args->graphs, "graph files (.json)")->required();
-  cmd->add_option("--target", args->targets, "targets, comma separated (default: all)");
+  addCommonOptions(cmd, *args);
   return [args, &global] { return runCompile(*args, global, false); };
 }
 

@@ -1,4 +1,5 @@
 // fmt: rewrites graphs in the canonical form (atomically), or checks that they are.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 
@@ -25,30 +26,38 @@ Runner addFmtCommand(CLI::App& app, const GlobalOptions& global) {
     int unformatted = 0;
     for (const auto& path : args->graphs) {
       Diagnostics diags;
-      auto graph = loadGraphFile(path, diags);
+      // One read: the bytes compared and the graph formatted are the same snapshot (a
+      // second read could see another version of the file, or block on a FIFO).
+      auto current = readGraphFile(path, diags);
+      std::optional<Graph> graph;
+      if (current) graph = parseGraph(*current, path, diags);
       if (!graph) {
         all.append(diags);
         continue;
       }
       std::string canonical = saveGraph(*graph);
-      std::string current;
-      {
-        // Re-read the bytes to compare: loadGraphFile does not keep them.
-        FILE* f = std::fopen(path.c_str(), "rb");
-        if (f) {
-          char buf[65536];
-          size_t n;
-          while ((n = std::fread(buf, 1, sizeof buf, f)) > 0) current.append(buf, n);
-          std::fclose(f);
-        }
-      }
-      if (current == canonical) continue;
+      if (*current == canonical) continue;
       if (args->check) {
         std::cout << path << ": not in canonical form (run: watergraph fmt " << path << ")\n";
         ++unformatted;
         continue;
       }
-      if (writeFileAtomically(path, canonical, diags)) std::cout << "formatted " << path << "\n";
+      // The file changed since it was read (an editor saved it): formatting the old
+      // snapshot would lose that edit. Checked again right before the rename.
+      // (Only a regular file: a FIFO would block; writeFileAtomically refuses the rest.)
+      bool changed = false;
+      std::error_code fec;
+      if (std::filesystem::is_regular_file(path, fec)) {
+        Diagnostics recheck;
+        auto now = readGraphFile(path, recheck);
+        changed = !now || *now != *current;
+      }
+      if (changed) {
+        diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0},
+                    "the file changed while it was being formatted; left as it is (run fmt again)");
+      } else if (writeFileAtomically(path, canonical, diags)) {
+        std::cout << "formatted " << path << "\n";
+      }
       all.append(diags);
     }
     printDiagnostics(all, global);

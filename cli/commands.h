@@ -16,7 +16,7 @@ inline constexpr int kExitGraphError = 1;
 inline constexpr int kExitUsageOrIo = 2;
 
 struct GlobalOptions {
-  std::string diagnosticsFormat = "text";  // text | json
+  std::string diagnosticsFormat = "text";  // text | json | sarif
 };
 
 using Runner = std::function<int()>;
@@ -26,8 +26,10 @@ Runner addValidateCommand(CLI::App& app, const GlobalOptions& global);
 Runner addNodesCommand(CLI::App& app, const GlobalOptions& global);
 Runner addFmtCommand(CLI::App& app, const GlobalOptions& global);
 Runner addRenderCommand(CLI::App& app, const GlobalOptions& global);
+Runner addSchemaCommand(CLI::App& app, const GlobalOptions& global);
 
-// Prints diagnostics in the chosen format (text to stderr, JSON to stdout).
+// Prints diagnostics in the chosen format (text to stderr, JSON to stdout; SARIF to stdout,
+// a complete log even when there are none).
 void printDiagnostics(const Diagnostics& diags, const GlobalOptions& global);
 // Exit code for a failed run: I/O problems (WG05x) are 2, graph problems 1.
 int exitCodeFor(const Diagnostics& diags);

@@ -1,12 +1,148 @@
+#include <algorithm>
+#include <cctype>
+#include <fstream>
 #include <iostream>
+#include <map>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 
 namespace wg::cli {
+namespace {
+
+// A path as a SARIF artifact URI: relative paths stay relative (code-scanning tools resolve
+// them against the repository root), absolute ones become file:// URIs; everything but
+// RFC 3986 unreserved characters and '/' is percent-encoded.
+std::string pathToUri(const std::string& path) {
+  static const char* hex = "0123456789ABCDEF";
+  std::string out = !path.empty() && path[0] == '/' ? "file://" : "";
+  std::string p = path;
+  if (p.rfind("./", 0) == 0) p = p.substr(2);
+  for (unsigned char c : p) {
+    if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') {
+      out += static_cast<char>(c);
+    } else {
+      out += '%';
+      out += hex[c >> 4];
+      out += hex[c & 15];
+    }
+  }
+  return out;
+}
+
+// Diagnostics count columns in bytes; SARIF's default columnKind is UTF-16 code units.
+// Converts by reading the line from the file; keeps the byte column if it cannot.
+class ColumnConverter {
+ public:
+  int utf16Column(const std::string& file, int line, int byteCol) {
+    if (line <= 0 || byteCol <= 1) return byteCol;
+    const std::vector<std::string>& lines = linesOf(file);
+    if (static_cast<size_t>(line) > lines.size()) return byteCol;
+    const std::string& text = lines[static_cast<size_t>(line - 1)];
+    int units = 0;
+    size_t i = 0;
+    size_t end = std::min(text.size(), static_cast<size_t>(byteCol - 1));
+    while (i < end) {
+      unsigned char c = static_cast<unsigned char>(text[i]);
+      size_t len = c < 0x80 ? 1 : (c >> 5) == 6 ? 2 : (c >> 4) == 14 ? 3 : (c >> 3) == 30 ? 4 : 1;
+      units += len == 4 ? 2 : 1;
+      i += len;
+    }
+    if (end < static_cast<size_t>(byteCol - 1)) units += static_cast<int>(byteCol - 1 - end);  // past the end
+    return units + 1;
+  }
+
+ private:
+  const std::vector<std::string>& linesOf(const std::string& file) {
+    auto it = cache_.find(file);
+    if (it != cache_.end()) return it->second;
+    std::vector<std::string> lines;
+    std::ifstream in(file, std::ios::binary);
+    std::string l;
+    while (in && std::getline(in, l)) lines.push_back(l);
+    return cache_.emplace(file, std::move(lines)).first->second;
+  }
+  std::map<std::string, std::vector<std::string>> cache_;
+};
+
+const char* sarifLevel(Severity s) {
+  switch (s) {
+    case Severity::Error: return "error";
+    case Severity::Warning: return "warning";
+    case Severity::Note: return "note";
+  }
+  return "error";
+}
+
+// One SARIF 2.1.0 log: a run whose driver lists every code of the catalogue as a rule.
+nlohmann::json sarifLog(const Diagnostics& diags) {
+  nlohmann::json rules = nlohmann::json::array();
+  std::map<DiagCode, size_t> ruleIndex;
+  for (const auto& info : diagnosticCatalogue()) {
+    ruleIndex[info.code] = rules.size();
+    std::string summary(info.summary);
+    rules.push_back({{"id", codeString(info.code)},
+                     {"name", std::string(info.enumerator)},
+                     {"shortDescription", {{"text", summary}}},
+                     {"fullDescription", {{"text", summary}}},
+                     {"help", {{"text", "See the error code table in docs/graph-format.md."}}},
+                     {"defaultConfiguration", {{"level", "error"}}}});
+  }
+  ColumnConverter columns;
+  nlohmann::json results = nlohmann::json::array();
+  for (const auto& d : diags.sorted()) {
+    std::string text = d.message;
+    if (!d.node.empty() || !d.port.empty()) {
+      text += " (";
+      if (!d.node.empty()) text += "node '" + d.node + "'";
+      if (!d.node.empty() && !d.port.empty()) text += ", ";
+      text += d.port + ")";
+    }
+    for (const auto& note : d.notes) text += "\nnote: " + note;
+    nlohmann::json r{{"ruleId", codeString(d.code)},
+                     {"level", sarifLevel(d.severity)},
+                     {"message", {{"text", text}}}};
+    auto idx = ruleIndex.find(d.code);
+    if (idx != ruleIndex.end()) r["ruleIndex"] = idx->second;
+    if (!d.where.file.empty()) {
+      nlohmann::json phys{{"artifactLocation", {{"uri", pathToUri(d.where.file)}}}};
+      if (d.where.line > 0) {
+        nlohmann::json region{{"startLine", d.where.line}};
+        if (d.where.col > 0) region["startColumn"] = columns.utf16Column(d.where.file, d.where.line, d.where.col);
+        phys["region"] = region;
+      }
+      nlohmann::json loc{{"physicalLocation", phys}};
+      if (!d.node.empty())
+        loc["logicalLocations"] = nlohmann::json::array({{{"name", d.node}, {"kind", "object"}}});
+      r["locations"] = nlohmann::json::array({loc});
+    }
+    nlohmann::json props = nlohmann::json::object();
+    if (!d.node.empty()) props["node"] = d.node;
+    if (!d.port.empty()) props["port"] = d.port;
+    if (!props.empty()) r["properties"] = props;
+    results.push_back(r);
+  }
+  nlohmann::json driver{{"name", "watergraph"},
+                        {"version", "0.1.0"},
+                        {"semanticVersion", "0.1.0"},
+                        {"rules", rules}};
+  return {{"$schema", "https://json.schemastore.org/sarif-2.1.0.json"},
+          {"version", "2.1.0"},
+          {"runs", nlohmann::json::array({{{"tool", {{"driver", driver}}},
+                                           {"columnKind", "utf16CodeUnits"},
+                                           {"results", results}}})}};
+}
+
+}  // namespace
 
 void printDiagnostics(const Diagnostics& diags, const GlobalOptions& global) {
+  if (global.diagnosticsFormat == "sarif") {
+    // Always one complete log, even with no results: CI uploads the file either way.
+    std::cout << sarifLog(diags).dump(2) << "\n";
+    return;
+  }
   if (diags.empty()) return;
   if (global.diagnosticsFormat == "json") {
     nlohmann::json all = nlohmann::json::array();

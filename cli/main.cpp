@@ -11,8 +11,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.fallthrough();  // global options may follow the subcommand
   GlobalOptions global;
-  app.add_option("--diagnostics-format", global.diagnosticsFormat, "how errors are printed: text (stderr) or json (stdout)")
-      ->check(CLI::IsMember({"text", "json"}));
+  app.add_option("--diagnostics-format", global.diagnosticsFormat, "how errors are printed: text (stderr), json or sarif (SARIF 2.1.0 for code scanning; stdout)")
+      ->check(CLI::IsMember({"text", "json", "sarif"}));
   app.set_version_flag("--version", "watergraph 0.1.0");
 
   Runner compile = addCompileCommand(app, global);
@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   Runner nodes = addNodesCommand(app, global);
   Runner fmt = addFmtCommand(app, global);
   Runner render = addRenderCommand(app, global);
+  Runner schema = addSchemaCommand(app, global);
 
   try {
     app.parse(argc, argv);
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("nodes")) return nodes();
     if (app.got_subcommand("fmt")) return fmt();
     if (app.got_subcommand("render")) return render();
+    if (app.got_subcommand("schema")) return schema();
   } catch (const std::exception& e) {
     // A bug, not a graph problem: say so plainly rather than crash.
     std::cerr << "watergraph: internal error: " << e.what() << "\n";

@@ -1,7 +1,9 @@
 #include "codegen/emit_glsl.h"
 
 #include <algorithm>
+#include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <stdexcept>
 
@@ -129,6 +131,15 @@ class Emitter {
       taken.insert(name);
       paramNames_.push_back(name);
     }
+    // Tessellation: asked for by a vertex-stage node; GLSL ES 3.00 has no such stages.
+    if (t != Target::Es300)
+      for (const auto& op : p.ops)
+        if ((op.stage & kVertexStage) && op.spec->tessellation && !tess_)
+          tess_ = op.spec->tessellation(op.options);
+    // Deferred water: an op reads the "underwater" resource, so the fragment shader runs as
+    // a full-screen pass that takes the surface builtins from the water G-buffer.
+    for (const auto& op : p.ops)
+      for (const auto& r : op.spec->resources) deferred_ = deferred_ || r == "underwater";
     for (size_t k = 0; k < p.varyings.size(); ++k) {
       const ValueRef& v = p.varyings[k];
       const Op& op = p.ops[static_cast<size_t>(v.index)];
@@ -144,6 +155,7 @@ class Emitter {
     std::string color = outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
     std::string alpha = outputExpr(frag, OutputSlot::FragmentAlpha, "1.0");
     frag.line(std::string(iface::kColorOutput) + " = vec4(" + color + ", " + alpha + ");", -1);
+    if (deferred_) prepareDeferredFragment(frag);
 
     StageWriter vert;
     vert.stage = kVertexStage;
@@ -152,6 +164,8 @@ class Emitter {
     bool fragNeedsPosition = frag.builtins.count(Builtin::WorldPosition) || frag.builtins.count(Builtin::ViewDirection);
     bool fragNeedsNormal = frag.builtins.count(Builtin::Normal) > 0;
     bool fragNeedsUv = frag.builtins.count(Builtin::Uv) > 0;
+    // Deferred: the vertex shader feeds the runtime's G-buffer pass, which stores all three.
+    if (deferred_) fragNeedsPosition = fragNeedsNormal = fragNeedsUv = true;
     std::string position = outputExpr(vert, OutputSlot::VertexPosition, builtinExpr(vert, Builtin::WorldPosition));
     vert.line("gl_Position = " + std::string(iface::kViewProjection) + " * vec4(" + position + ", 1.0);", -1);
     vert.builtinUniforms.insert(iface::kViewProjection);
@@ -163,10 +177,16 @@ class Emitter {
     }
     if (fragNeedsUv) {
       vert.builtins.insert(Builtin::Uv);
-      vert.line("v_uv = " + std::string(iface::kUvAttribute) + ";", -1);
+      vert.line("v_uv = " + std::string(tess_ ? "b_uv" : iface::kUvAttribute) + ";", -1);
     }
     for (const auto& v : program_.varyings)
       vert.line(varyingNames_.at({v.index, v.port}) + " = " + opOutput(vert, v.index, v.port) + ";", -1);
+
+    if (tess_) {
+      // The vertex shader places the mesh (model), the control stage measures distances.
+      vert.builtinUniforms.insert(iface::kModel);
+      vert.builtinUniforms.insert(iface::kCameraPosition);
+    }
 
     // Interface.
     EmitResult result;
@@ -205,7 +225,14 @@ class Emitter {
       result.textures[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
 
     std::set<std::string> functions;
-    result.shaders.push_back(assemble(ShaderStage::Vertex, vert, result, functions));
+    if (tess_) {
+      result.shaders.push_back(tessVertexShader(vert, result, functions));
+      result.shaders.push_back(tessControlShader(vert, result, functions));
+      result.shaders.push_back(assemble(ShaderStage::TessEvaluation, vert, result, functions));
+      result.tessellation = tess_;
+    } else {
+      result.shaders.push_back(assemble(ShaderStage::Vertex, vert, result, functions));
+    }
     result.shaders.push_back(assemble(ShaderStage::Fragment, frag, result, functions));
     for (const auto& item : GlslLibrary::builtin().items())
       if (functions.count(item.name) &&
@@ -243,7 +270,7 @@ class Emitter {
     w.builtins.insert(b);
     bool vertex = w.stage == kVertexStage;
     switch (b) {
-      case Builtin::Uv: return vertex ? iface::kUvAttribute : "v_uv";
+      case Builtin::Uv: return vertex ? (tess_ ? "b_uv" : iface::kUvAttribute) : "v_uv";
       case Builtin::WorldPosition:
         if (vertex) w.builtinUniforms.insert(iface::kModel);
         return vertex ? "b_world_position" : "v_world_position";
@@ -257,7 +284,7 @@ class Emitter {
       case Builtin::CameraPosition: w.builtinUniforms.insert(iface::kCameraPosition); return iface::kCameraPosition;
       case Builtin::Time: w.builtinUniforms.insert(iface::kTime); return iface::kTime;
       case Builtin::ScreenUv: w.builtinUniforms.insert(iface::kViewportSize); return "b_screen_uv";
-      case Builtin::FragDepth: return "gl_FragCoord.z";
+      case Builtin::FragDepth: return deferred_ && !vertex ? "b_water_surface.w" : "gl_FragCoord.z";
       case Builtin::CameraNearFar: w.builtinUniforms.insert(iface::kCameraNearFar); return iface::kCameraNearFar;
       case Builtin::View: w.builtinUniforms.insert(iface::kView); return iface::kView;
       case Builtin::Projection: w.builtinUniforms.insert(iface::kProjection); return iface::kProjection;
@@ -314,23 +341,37 @@ class Emitter {
                                    {"scene_color", iface::kSceneColorTexture, Type::Sampler2D},
                                    {"planar_reflection", iface::kReflectionTexture, Type::Sampler2D},
                                    {"refraction", iface::kRefractionTexture, Type::Sampler2D},
-                                   {"environment", iface::kEnvironmentTexture, Type::SamplerCube}};
+                                   {"environment", iface::kEnvironmentTexture, Type::SamplerCube},
+                                   {"underwater", iface::kWaterSurfaceTexture, Type::Sampler2D},
+                                   {"underwater.normal_uv", iface::kWaterNormalUvTexture, Type::Sampler2D}};
     for (const auto& sc : kScene) {
       if (resource != sc.resource) continue;
       for (auto& t : sceneTextures_)
-        if (t.resource == resource) {
+        if (t.name == sc.name) {
           t.stages |= w.stage;
           return t.name;
         }
       TextureInfo t;
       t.name = sc.name;
       t.type = sc.type;
-      t.resource = sc.resource;
+      t.resource = resource == "underwater.normal_uv" ? "underwater" : sc.resource;
       t.stages = w.stage;
       sceneTextures_.push_back(t);
       return t.name;
     }
     throw std::logic_error("sceneTexture: no scene texture for resource '" + std::string(resource) + "'");
+  }
+
+  // Deferred water: which G-buffer look-ups the fragment's builtins need (declared now, so
+  // the samplers are in the interface; builtinLocals writes the reads).
+  void prepareDeferredFragment(StageWriter& w) {
+    const auto& b = w.builtins;
+    bool position = b.count(Builtin::WorldPosition) || b.count(Builtin::ViewDirection) || b.count(Builtin::FragDepth);
+    bool normalUv = b.count(Builtin::Normal) || b.count(Builtin::Uv);
+    if (!position && !normalUv) return;
+    builtinExpr(w, Builtin::ScreenUv);
+    if (position) sceneSampler(w, "underwater");
+    if (normalUv) sceneSampler(w, "underwater.normal_uv");
   }
   const Program& program() const { return program_; }
 
@@ -386,7 +427,17 @@ class Emitter {
   std::vector<std::string> builtinLocals(StageWriter& w) {
     std::vector<std::string> lines;
     bool vertex = w.stage == kVertexStage;
-    if (vertex) {
+    if (vertex && tess_) {
+      // The evaluation stage: the patch's corners, interpolated at gl_TessCoord.
+      auto lerp3 = [](const std::string& a) {
+        return "gl_TessCoord.x * " + a + "[0] + gl_TessCoord.y * " + a + "[1] + gl_TessCoord.z * " + a + "[2]";
+      };
+      lines.push_back("vec3 b_world_position = " + lerp3("te_position") + ";");
+      if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(" + lerp3("te_normal") + ");");
+      if (w.builtins.count(Builtin::Uv)) lines.push_back("vec2 b_uv = " + lerp3("te_uv") + ";");
+      if (w.builtins.count(Builtin::ViewDirection))
+        lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + std::string(iface::kCameraPosition) + " - b_world_position);");
+    } else if (vertex) {
       lines.push_back("vec3 b_world_position = (" + std::string(iface::kModel) + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
       w.builtinUniforms.insert(iface::kModel);
       if (w.builtins.count(Builtin::Normal))
@@ -394,69 +445,90 @@ class Emitter {
       if (w.builtins.count(Builtin::ViewDirection))
         lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + std::string(iface::kCameraPosition) + " - b_world_position);");
     } else {
+      if (deferred_) deferredLocals(w, lines);
       if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(v_normal);");
       if (w.builtins.count(Builtin::ViewDirection))
         lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + std::string(iface::kCameraPosition) + " - v_world_position);");
-      if (w.builtins.count(Builtin::ScreenUv))
+      if (w.builtins.count(Builtin::ScreenUv) && !deferred_)
         lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + std::string(iface::kViewportSize) + ";");
     }
     return lines;
   }
 
-  EmittedShader assemble(ShaderStage stage, StageWriter& w, const EmitResult& io, std::set<std::string>& functions) {
-    std::vector<std::string> locals = builtinLocals(w);
-    bool vertex = stage == ShaderStage::Vertex;
-    unsigned bit = vertex ? kVertexStage : kFragmentStage;
-    std::vector<std::pair<std::string, int>> out;  // line, op
-    auto add = [&](std::string s, int op = -1) { out.emplace_back(std::move(s), op); };
+  // Deferred water: the surface builtins of this pixel read from the water G-buffer
+  // (u_water_surface = world position, depth; u_water_normal_uv = normal.xz, uv; the
+  // normal faces up, so its y is sqrt(1 - x^2 - z^2)) under the names the varyings have.
+  void deferredLocals(const StageWriter& w, std::vector<std::string>& lines) const {
+    const auto& b = w.builtins;
+    bool position = b.count(Builtin::WorldPosition) || b.count(Builtin::ViewDirection) || b.count(Builtin::FragDepth);
+    bool normalUv = b.count(Builtin::Normal) || b.count(Builtin::Uv);
+    if (b.count(Builtin::ScreenUv))
+      lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + std::string(iface::kViewportSize) + ";");
+    if (position) {
+      lines.push_back("vec4 b_water_surface = texture(" + std::string(iface::kWaterSurfaceTexture) + ", b_screen_uv);");
+      lines.push_back("vec3 v_world_position = b_water_surface.xyz;");
+    }
+    if (normalUv) {
+      lines.push_back("vec4 b_water_normal_uv = texture(" + std::string(iface::kWaterNormalUvTexture) + ", b_screen_uv);");
+      if (b.count(Builtin::Normal))
+        lines.push_back("vec3 v_normal = vec3(b_water_normal_uv.x, sqrt(max(1.0 - dot(b_water_normal_uv.xy, "
+                        "b_water_normal_uv.xy), 0.0)), b_water_normal_uv.y);");
+      if (b.count(Builtin::Uv)) lines.push_back("vec2 v_uv = b_water_normal_uv.zw;");
+    }
+  }
+
+  // The version line, the extension tessellation needs in GLSL 330, ES precision.
+  void addPreamble(ShaderStage stage, const std::function<void(std::string)>& add) const {
     add(std::string(style_.version));
+    bool tessStage = stage == ShaderStage::TessControl || stage == ShaderStage::TessEvaluation;
+    if (tessStage && target_ == Target::Glsl330) add("#extension GL_ARB_tessellation_shader : require");
     add("// Generated by watergraph from " + sourceName_ + " (graph '" + program_.graphName + "'); do not edit.");
     if (style_.precision) {
       add("precision highp float;");
       add("precision highp int;");
     }
     add("");
-    // Inputs.
-    if (vertex) {
-      for (const auto& a : io.attributes) {
-        bool usedHere = a.name == std::string(iface::kPositionAttribute) ||
-                        (a.name == std::string(iface::kNormalAttribute) && w.builtins.count(Builtin::Normal)) ||
-                        (a.name == std::string(iface::kUvAttribute) && w.builtins.count(Builtin::Uv));
-        if (usedHere)
-          add("layout(location = " + std::to_string(a.location) + ") in " + std::string(typeName(a.type)) + " " + a.name + ";");
-      }
-    }
+  }
+
+  // Declarations of `names` (patch or stage interface) with Vulkan locations from 0.
+  void addInterface(const std::function<void(std::string)>& add, const std::string& qualifier,
+                    const std::vector<std::pair<Type, std::string>>& vars, const std::string& suffix) const {
     int location = 0;
-    for (const auto& v : io.varyings) {
-      std::string qual = style_.varyingLocations ? "layout(location = " + std::to_string(location) + ") " : "";
-      add(qual + (vertex ? "out " : "in ") + std::string(typeName(v.type)) + " " + v.name + ";");
+    for (const auto& [type, name] : vars) {
+      std::string loc = style_.varyingLocations ? "layout(location = " + std::to_string(location) + ") " : "";
+      add(loc + qualifier + " " + std::string(typeName(type)) + " " + name + suffix + ";");
       ++location;
     }
-    if (!vertex) add("layout(location = " + std::to_string(iface::kColorLocation) + ") out vec4 " + iface::kColorOutput + ";");
-    // Uniforms: Vulkan wants one block with the same members in every stage.
+  }
+
+  // What travels from the vertex shader through the control stage to the evaluation
+  // stage when tessellating: world position, and the normal and uv if used.
+  std::vector<std::pair<Type, std::string>> patchVars(const StageWriter& geometry, const std::string& prefix) const {
+    std::vector<std::pair<Type, std::string>> vars = {{Type::Vec3, prefix + "position"}};
+    if (geometry.builtins.count(Builtin::Normal)) vars.push_back({Type::Vec3, prefix + "normal"});
+    if (geometry.builtins.count(Builtin::Uv)) vars.push_back({Type::Vec2, prefix + "uv"});
+    return vars;
+  }
+
+  // Uniform declarations for a stage: Vulkan's one block (identical everywhere), else the
+  // loose uniforms `wanted` selects.
+  void addUniforms(const std::function<void(std::string)>& add, const EmitResult& io,
+                   const std::function<bool(const UniformInfo&)>& wanted) const {
     if (style_.uniformBlock) {
       bool any = false;
       for (const auto& u : io.uniforms) any |= !isSampler(u.type);
-      if (any) {
-        add("layout(std140, set = 0, binding = " + std::to_string(iface::kUniformBlockBinding) + ") uniform " + iface::kUniformBlock + " {");
-        for (const auto& u : io.uniforms) add("  " + std::string(typeName(u.type)) + " " + u.name + ";");
-        add("};");
-      }
-    } else {
-      for (const auto& u : io.uniforms)
-        if (u.stages & bit) add("uniform " + std::string(typeName(u.type)) + " " + u.name + ";");
+      if (!any) return;
+      add("layout(std140, set = 0, binding = " + std::to_string(iface::kUniformBlockBinding) + ") uniform " + iface::kUniformBlock + " {");
+      for (const auto& u : io.uniforms) add("  " + std::string(typeName(u.type)) + " " + u.name + ";");
+      add("};");
+      return;
     }
-    for (const auto& t : io.textures) {
-      if (!(t.stages & bit)) continue;
-      std::string qual = style_.uniformBlock ? "layout(set = 0, binding = " + std::to_string(t.binding) + ") " : "";
-      add(qual + "uniform " + std::string(typeName(t.type)) + " " + t.name + ";");
-    }
-    // Library functions this stage calls, dependencies first.
-    std::string code;
-    for (const auto& l : locals) code += l + "\n";
-    for (const auto& l : w.lines) code += l + "\n";
-    auto items = GlslLibrary::builtin().itemsFor(code);
-    for (const GlslItem* item : items) {
+    for (const auto& u : io.uniforms)
+      if (wanted(u)) add("uniform " + std::string(typeName(u.type)) + " " + u.name + ";");
+  }
+
+  void addLibrary(const std::function<void(std::string)>& add, const std::string& code, std::set<std::string>& functions) const {
+    for (const GlslItem* item : GlslLibrary::builtin().itemsFor(code)) {
       add("");
       functions.insert(item->name);
       size_t start = 0;
@@ -467,20 +539,135 @@ class Emitter {
         start = eol + 1;
       }
     }
+  }
+
+  EmittedShader finish(ShaderStage stage, const std::vector<std::pair<std::string, int>>& lines) const {
+    EmittedShader shader;
+    shader.stage = stage;
+    for (const auto& [text, op] : lines) {
+      shader.text += text;
+      shader.text += '\n';
+      shader.lineOp.push_back(op);
+    }
+    return shader;
+  }
+
+  // Tessellating: the vertex shader only moves the mesh into world space.
+  EmittedShader tessVertexShader(const StageWriter& geometry, const EmitResult& io, std::set<std::string>& functions) const {
+    std::vector<std::pair<std::string, int>> out;
+    auto add = [&](std::string s) { out.emplace_back(std::move(s), -1); };
+    addPreamble(ShaderStage::Vertex, add);
+    for (const auto& a : io.attributes)
+      add("layout(location = " + std::to_string(a.location) + ") in " + std::string(typeName(a.type)) + " " + a.name + ";");
+    addInterface(add, "out", patchVars(geometry, "tc_"), "");
+    addUniforms(add, io, [](const UniformInfo& u) { return u.name == std::string(iface::kModel); });
+    std::string body = "  tc_position = (" + std::string(iface::kModel) + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;\n";
+    if (geometry.builtins.count(Builtin::Normal))
+      body += "  tc_normal = wg_safe_normalize_vec3(mat3(" + std::string(iface::kModel) + ") * " + iface::kNormalAttribute + ");\n";
+    if (geometry.builtins.count(Builtin::Uv)) body += "  tc_uv = " + std::string(iface::kUvAttribute) + ";\n";
+    body += "  gl_Position = vec4(tc_position, 1.0);\n";
+    addLibrary(add, body, functions);
+    add("");
+    add("void main() {");
+    size_t start = 0;
+    while (start < body.size()) {
+      size_t eol = body.find('\n', start);
+      add(body.substr(start, eol - start));
+      start = eol + 1;
+    }
+    add("}");
+    return finish(ShaderStage::Vertex, out);
+  }
+
+  // Tessellating: levels from the camera distance of each corner (seed 003).
+  EmittedShader tessControlShader(const StageWriter& geometry, const EmitResult& io, std::set<std::string>& functions) const {
+    std::vector<std::pair<std::string, int>> out;
+    auto add = [&](std::string s) { out.emplace_back(std::move(s), -1); };
+    addPreamble(ShaderStage::TessControl, add);
+    add("layout(vertices = 3) out;");
+    addInterface(add, "in", patchVars(geometry, "tc_"), "[]");
+    addInterface(add, "out", patchVars(geometry, "te_"), "[]");
+    addUniforms(add, io, [](const UniformInfo& u) { return u.name == std::string(iface::kCameraPosition); });
+    std::string body;
+    for (const auto& [type, name] : patchVars(geometry, "")) body += "  te_" + name + "[gl_InvocationID] = tc_" + name + "[gl_InvocationID];\n";
+    body += "  if (gl_InvocationID == 0) {\n";
+    for (int i = 0; i < 3; ++i)
+      body += "    float f" + std::to_string(i) + " = wg_tess_distance_factor(tc_position[" + std::to_string(i) + "], " +
+              iface::kCameraPosition + ", " + formatGlslFloat(tess_->minDistance) + ", " + formatGlslFloat(tess_->maxDistance) +
+              ", " + formatGlslFloat(tess_->factor) + ");\n";
+    body += "    gl_TessLevelOuter[0] = 0.5 * (f1 + f2);\n";
+    body += "    gl_TessLevelOuter[1] = 0.5 * (f2 + f0);\n";
+    body += "    gl_TessLevelOuter[2] = 0.5 * (f0 + f1);\n";
+    body += "    gl_TessLevelInner[0] = (f0 + f1 + f2) / 3.0;\n";
+    body += "  }\n";
+    addLibrary(add, body, functions);
+    add("");
+    add("void main() {");
+    size_t start = 0;
+    while (start < body.size()) {
+      size_t eol = body.find('\n', start);
+      add(body.substr(start, eol - start));
+      start = eol + 1;
+    }
+    add("}");
+    return finish(ShaderStage::TessControl, out);
+  }
+
+  EmittedShader assemble(ShaderStage stage, StageWriter& w, const EmitResult& io, std::set<std::string>& functions) {
+    std::vector<std::string> locals = builtinLocals(w);
+    bool vertex = stage == ShaderStage::Vertex || stage == ShaderStage::TessEvaluation;
+    unsigned bit = vertex ? kVertexStage : kFragmentStage;
+    std::vector<std::pair<std::string, int>> out;  // line, op
+    auto add = [&](std::string s, int op = -1) { out.emplace_back(std::move(s), op); };
+    addPreamble(stage, [&](std::string s) { add(std::move(s)); });
+    // Inputs.
+    if (stage == ShaderStage::TessEvaluation) {
+      add("layout(triangles, fractional_odd_spacing, ccw) in;");
+      addInterface([&](std::string s) { add(std::move(s)); }, "in", patchVars(w, "te_"), "[]");
+    } else if (vertex) {
+      for (const auto& a : io.attributes) {
+        bool usedHere = a.name == std::string(iface::kPositionAttribute) ||
+                        (a.name == std::string(iface::kNormalAttribute) && w.builtins.count(Builtin::Normal)) ||
+                        (a.name == std::string(iface::kUvAttribute) && w.builtins.count(Builtin::Uv));
+        if (usedHere)
+          add("layout(location = " + std::to_string(a.location) + ") in " + std::string(typeName(a.type)) + " " + a.name + ";");
+      }
+    }
+    int location = 0;
+    // Deferred: the full-screen fragment shader reads the G-buffer instead of varyings.
+    for (const auto& v : io.varyings) {
+      if (!vertex && deferred_) break;
+      std::string qual = style_.varyingLocations ? "layout(location = " + std::to_string(location) + ") " : "";
+      add(qual + (vertex ? "out " : "in ") + std::string(typeName(v.type)) + " " + v.name + ";");
+      ++location;
+    }
+    if (!vertex) add("layout(location = " + std::to_string(iface::kColorLocation) + ") out vec4 " + iface::kColorOutput + ";");
+    // Uniforms: Vulkan wants one block with the same members in every stage.
+    addUniforms([&](std::string s) { add(std::move(s)); }, io, [&](const UniformInfo& u) {
+      if (!(u.stages & bit)) return false;
+      // Tessellating, the model matrix and camera serve the earlier stages only.
+      return !(stage == ShaderStage::TessEvaluation && u.name == std::string(iface::kModel));
+    });
+    for (const auto& t : io.textures) {
+      if (!(t.stages & bit)) continue;
+      std::string qual = style_.uniformBlock ? "layout(set = 0, binding = " + std::to_string(t.binding) + ") " : "";
+      // ES samplers default to lowp, which may return half floats: scene depth and the
+      // float G-buffer need highp (node textures are 8-bit and keep the default).
+      std::string precision = style_.precision && !t.resource.empty() ? "highp " : "";
+      add(qual + "uniform " + precision + std::string(typeName(t.type)) + " " + t.name + ";");
+    }
+    // Library functions this stage calls, dependencies first.
+    std::string code;
+    for (const auto& l : locals) code += l + "\n";
+    for (const auto& l : w.lines) code += l + "\n";
+    addLibrary([&](std::string s) { add(std::move(s)); }, code, functions);
     add("");
     add("void main() {");
     for (const auto& l : locals) add("  " + l);
     for (size_t i = 0; i < w.lines.size(); ++i) add(w.lines[i], w.lineOp[i]);
     add("}");
 
-    EmittedShader shader;
-    shader.stage = stage;
-    for (auto& [text, op] : out) {
-      shader.text += text;
-      shader.text += '\n';
-      shader.lineOp.push_back(op);
-    }
-    return shader;
+    return finish(stage, out);
   }
 
   const Program& program_;
@@ -490,6 +677,8 @@ class Emitter {
   std::vector<std::string> opNames_;
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
+  std::optional<TessellationSettings> tess_;  // tessellated geometry stage
+  bool deferred_ = false;                     // full-screen fragment stage (underwater)
   std::vector<UniformInfo> phases_;         // time phases, by first use
   std::vector<TextureInfo> textures_;       // node textures, by first use
   std::vector<TextureInfo> sceneTextures_;  // scene resources, by first use (sorted later)

@@ -2,6 +2,7 @@
 // Program (after the stage pass) -> GLSL source per stage for one target, with a map
 // from each output line back to the op that wrote it, and the shader interface the
 // manifest describes. Identifiers are generated; no string from the graph file is pasted.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -53,6 +54,9 @@ struct EmitResult {
   std::vector<TextureInfo> textures;   // node textures by first use, then scene textures
   std::vector<VaryingInfo> varyings;
   std::vector<std::string> functions;  // library items emitted, in order (union of stages)
+  // Set when the geometry stage is tessellated: shaders are then vertex, tess control,
+  // tess evaluation (where the vertex-stage nodes run) and fragment; patches of 3.
+  std::optional<TessellationSettings> tessellation;
 };
 
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName);

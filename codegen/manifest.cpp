@@ -116,6 +116,16 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
     }
     m["textures"] = textures;
   }
+  // Tessellation, per target (GLSL ES 3.00 has none: es300 draws the mesh as it is).
+  for (const auto& [target, er] : emitted)
+    if (er.tessellation) {
+      nlohmann::json& t = m["tessellation"];
+      t["patch_vertices"] = 3;
+      t["min_distance"] = er.tessellation->minDistance;
+      t["max_distance"] = er.tessellation->maxDistance;
+      t["factor"] = er.tessellation->factor;
+      t["targets"].push_back(std::string(targetName(target)));
+    }
   auto resources = resourcesOf(program);
   m["resources"] = resources;
   m["passes"] = passesFor(resources);

@@ -5,6 +5,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace wg {
@@ -48,19 +49,52 @@ bool writeOutputFiles(const std::string& dir, const std::vector<OutputFile>& fil
     }
     staged.emplace_back(tmp, target.string());
   }
+  // A name that cannot be replaced by a file (a folder in the way) would fail its rename
+  // after earlier files had been renamed: refuse before renaming any.
+  for (const auto& [tmp, fin] : staged) {
+    std::error_code sec;
+    auto st = std::filesystem::symlink_status(fin, sec);
+    if (!sec && std::filesystem::exists(st) && std::filesystem::is_directory(st)) {
+      cleanup();
+      diags.error(DiagCode::FileWrite, SourceRef{fin, 0, 0}, "cannot write output file: a folder of that name is in the way");
+      return false;
+    }
+  }
+  std::vector<std::string> renamed;
   for (const auto& [tmp, fin] : staged) {
     if (std::rename(tmp.c_str(), fin.c_str()) != 0) {
       int err = errno;
       cleanup();
+      // Never leave a mixed set of new and old files: the ones already renamed go too.
+      for (const auto& done : renamed) std::remove(done.c_str());
       diags.error(DiagCode::FileWrite, SourceRef{fin, 0, 0}, std::string("cannot rename output file: ") + std::strerror(err));
       return false;
     }
+    renamed.push_back(fin);
   }
   return true;
 }
 
 bool writeFileAtomically(const std::string& path, const std::string& contents, Diagnostics& diags) {
   std::filesystem::path target(path);
+  // Replacing an existing file: through a symlink to the file it names; never a FIFO,
+  // device or folder; never a file marked read-only (rename() would replace it whatever its
+  // mode, and root passes access(W_OK) for any file); the new file keeps the old one's mode.
+  struct stat st {};
+  bool exists = ::stat(path.c_str(), &st) == 0;
+  if (exists) {
+    std::error_code ec;
+    auto real = std::filesystem::canonical(target, ec);
+    if (!ec) target = real;
+    if (!S_ISREG(st.st_mode)) {
+      diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, "cannot replace: not a regular file");
+      return false;
+    }
+    if (::access(path.c_str(), W_OK) != 0 || (st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0) {
+      diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, "cannot replace: the file is read-only");
+      return false;
+    }
+  }
   std::string tmp = tempNameFor(target);
   if (!writeWhole(tmp, contents)) {
     int err = errno;
@@ -68,7 +102,8 @@ bool writeFileAtomically(const std::string& path, const std::string& contents, D
     diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, std::string("cannot write: ") + std::strerror(err ? err : EIO));
     return false;
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+  if (exists) ::chmod(tmp.c_str(), st.st_mode & 07777);
+  if (std::rename(tmp.c_str(), target.c_str()) != 0) {
     int err = errno;
     std::remove(tmp.c_str());
     diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, std::string("cannot replace: ") + std::strerror(err));

@@ -67,10 +67,16 @@ PassResult stagePass(Program& program, PassContext& ctx) {
   std::vector<bool> inFragment(n, false);
   std::vector<bool> isVarying(n, false);
   std::vector<std::vector<bool>> varyingPorts(n);
+  // Deferred water (a node reads the "underwater" resource): the fragment shader runs as a
+  // full-screen pass with no varyings, so it recomputes what it needs at the G-buffer's
+  // surface point.
+  bool deferred = false;
+  for (const auto& op : program.ops)
+    for (const auto& r : op.spec->resources) deferred = deferred || r == "underwater";
   auto need = [&](const ValueRef& r) {
     if (r.kind != ValueRef::Kind::Op) return;
     size_t i = static_cast<size_t>(r.index);
-    if (inVertex[i] && perVertex[i] && !program.ops[i].spec->recomputeInFragment) {
+    if (!deferred && inVertex[i] && perVertex[i] && !program.ops[i].spec->recomputeInFragment) {
       if (varyingPorts[i].empty()) varyingPorts[i].assign(program.ops[i].outputTypes.size(), false);
       varyingPorts[i][static_cast<size_t>(r.port)] = true;
       isVarying[i] = true;

@@ -30,6 +30,12 @@ inline constexpr const char* kSceneColorTexture = "u_scene_color";      // sampl
 inline constexpr const char* kReflectionTexture = "u_reflection";       // sampler2D, resource planar_reflection
 inline constexpr const char* kRefractionTexture = "u_refraction";       // sampler2D, resource refraction
 inline constexpr const char* kEnvironmentTexture = "u_environment";     // samplerCube, resource environment
+// The water G-buffer of the deferred_water pass (resource underwater), RGBA32F, nearest:
+// the surface's world position (xyz) and depth-buffer value (w; 1.0 where no water), and
+// its upward normal's x and z with the mesh uv. A graph with an underwater node runs its
+// fragment shader full-screen and reads its surface builtins from these.
+inline constexpr const char* kWaterSurfaceTexture = "u_water_surface";      // sampler2D, resource underwater
+inline constexpr const char* kWaterNormalUvTexture = "u_water_normal_uv";   // sampler2D, resource underwater
 
 // Fragment output.
 inline constexpr int kColorLocation = 0;

@@ -22,6 +22,25 @@ const std::vector<Target>& allTargets() {
   return targets;
 }
 
+std::string_view crossTargetName(CrossTarget t) {
+  switch (t) {
+    case CrossTarget::Msl: return "msl";
+    case CrossTarget::Hlsl: return "hlsl";
+  }
+  return "?";
+}
+
+std::optional<CrossTarget> parseCrossTarget(std::string_view name) {
+  for (CrossTarget t : allCrossTargets())
+    if (crossTargetName(t) == name) return t;
+  return std::nullopt;
+}
+
+const std::vector<CrossTarget>& allCrossTargets() {
+  static const std::vector<CrossTarget> targets = {CrossTarget::Msl, CrossTarget::Hlsl};
+  return targets;
+}
+
 std::string_view stageExtension(ShaderStage s) {
   switch (s) {
     case ShaderStage::Vertex: return "vert";

@@ -13,6 +13,15 @@ std::string_view targetName(Target t);  // "glsl330", "es300", "vk450"
 std::optional<Target> parseTarget(std::string_view name);
 const std::vector<Target>& allTargets();
 
+// Targets made from vk450's SPIR-V by SPIRV-Cross (codegen/spirv_cross_targets.h): Metal
+// Shading Language and HLSL. Not GLSL dialects, so not in allTargets(); compiling for one
+// compiles vk450 too (its SPIR-V is the input).
+enum class CrossTarget { Msl, Hlsl };
+
+std::string_view crossTargetName(CrossTarget t);  // "msl", "hlsl"
+std::optional<CrossTarget> parseCrossTarget(std::string_view name);
+const std::vector<CrossTarget>& allCrossTargets();
+
 enum class ShaderStage { Vertex, TessControl, TessEvaluation, Fragment };
 std::string_view stageExtension(ShaderStage s);  // "vert", "tesc", "tese", "frag"
 

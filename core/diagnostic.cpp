@@ -67,10 +67,32 @@ static std::string_view severityName(Severity s) {
   return "error";
 }
 
+namespace {
+// One diagnostic is one line (plus its note lines): control characters that a graph string
+// can carry into a message (a name "a\n#version 100") are written as escapes.
+std::string oneLine(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    auto u = static_cast<unsigned char>(c);
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (u < 0x20 || u == 0x7f) {
+      static const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[u >> 4];
+      out += hex[u & 15];
+    } else out += c;
+  }
+  return out;
+}
+}  // namespace
+
 std::string formatText(const Diagnostic& d) {
   std::string s;
   if (!d.where.file.empty()) {
-    s += d.where.file;
+    s += oneLine(d.where.file);
     if (d.where.line > 0) {
       s += ':' + std::to_string(d.where.line);
       if (d.where.col > 0) s += ':' + std::to_string(d.where.col);
@@ -78,15 +100,15 @@ std::string formatText(const Diagnostic& d) {
     s += ": ";
   }
   s += severityName(d.severity);
-  s += ": [" + codeString(d.code) + "] " + d.message;
+  s += ": [" + codeString(d.code) + "] " + oneLine(d.message);
   if (!d.node.empty() || !d.port.empty()) {
     s += " (";
-    if (!d.node.empty()) s += "node '" + d.node + "'";
+    if (!d.node.empty()) s += "node '" + oneLine(d.node) + "'";
     if (!d.node.empty() && !d.port.empty()) s += ", ";
-    s += d.port;
+    s += oneLine(d.port);
     s += ")";
   }
-  for (const auto& note : d.notes) s += "\n  note: " + note;
+  for (const auto& note : d.notes) s += "\n  note: " + oneLine(note);
   return s;
 }
 

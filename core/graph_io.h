@@ -15,6 +15,9 @@ namespace wg {
 std::optional<Graph> parseGraph(std::string_view text, const std::string& file, Diagnostics& diags);
 // Reads and parses a file; an unreadable file is WG050.
 std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags);
+// The whole file, read once (WG050 unreadable, WG035 over 16 MiB). loadGraphFile parses
+// this one snapshot; a caller that also needs the bytes (fmt) reads them here, never twice.
+std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& diags);
 
 // The canonical text: fixed key order, 2-space indent, shortest round-trip numbers,
 // LF line endings, a final newline. saveGraph(parseGraph(saveGraph(g))) == saveGraph(g).

@@ -519,6 +519,12 @@ std::optional<Graph> parseGraph(std::string_view text, const std::string& file, 
 }
 
 std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags) {
+  auto text = readGraphFile(path, diags);
+  if (!text) return std::nullopt;
+  return parseGraph(*text, path, diags);
+}
+
+std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& diags) {
   SourceRef where{path, 0, 0};
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) {
@@ -557,7 +563,7 @@ std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags) 
                 "cannot read '" + path + "': " + std::strerror(err ? err : EIO));
     return std::nullopt;
   }
-  return parseGraph(text, path, diags);
+  return text;
 }
 
 }  // namespace wg

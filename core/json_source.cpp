@@ -327,6 +327,14 @@ std::optional<JsonSource> parseJsonWithPositions(std::string_view text, const st
                 "the file starts with a UTF-8 byte-order mark; save it without one");
     return std::nullopt;
   }
+  // UTF-16 (either byte order; what some Windows editors save) is not a syntax error but
+  // the wrong encoding: say so instead of "invalid literal".
+  if (text.size() >= 2 && ((static_cast<unsigned char>(text[0]) == 0xFF && static_cast<unsigned char>(text[1]) == 0xFE) ||
+                           (static_cast<unsigned char>(text[0]) == 0xFE && static_cast<unsigned char>(text[1]) == 0xFF))) {
+    diags.error(DiagCode::JsonEncoding, SourceRef{file, 1, 1},
+                "the file starts with a UTF-16 byte-order mark; save it as UTF-8 without one");
+    return std::nullopt;
+  }
   size_t errorsBefore = diags.errorCount();
   JsonSource out;
   std::size_t consumed = 0;

@@ -163,6 +163,14 @@ class EvalContext {
   double scalar(std::string_view port) const { return input(port)[0]; }
 };
 
+// Distance-based tessellation of the surface mesh (seed 003): per vertex
+// f = clamp(1 - (d - minDistance) / (maxDistance - minDistance), 0.01, 1) * factor.
+struct TessellationSettings {
+  double minDistance = 5;
+  double maxDistance = 50;
+  double factor = 16;
+};
+
 struct NodeSpec {
   std::string type;     // "fresnel"
   std::string family;   // "optics", "math", "inputs", ...
@@ -187,6 +195,8 @@ struct NodeSpec {
   // index of the input its single output equals (x * 1, x + 0, mix(a, b, 0)), or -1. The
   // simplify pass uses it only when that input already has the output's type.
   std::function<int(const std::vector<std::optional<Value>>& constants)> identity;
+  // A node that shapes the mesh itself may ask for tessellation, given its options.
+  std::function<std::optional<TessellationSettings>(const nlohmann::json& options)> tessellation;
   std::function<void(EmitContext&)> emit;
   std::function<void(EvalContext&)> eval;
   std::vector<HardCase> hardCases;

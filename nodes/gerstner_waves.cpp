@@ -56,11 +56,18 @@ std::string validateGerstnerWaves(const nlohmann::json& v) {
     double lambda = w["wavelength"].get<double>();
     if (!(lambda > 0)) return where + "'wavelength' " + formatValue(lambda) + " must be greater than 0";
     double k = 2.0 * M_PI / lambda;
+    // k and k A are shader constants and products: they must be float32 numbers (a
+    // wavelength under ~1.8e-38 made k "inf", a literal glslang rejects).
+    constexpr double kFloat32Max = 3.4028234663852886e38;
+    if (!(k <= kFloat32Max))
+      return where + "'wavelength' " + formatValue(lambda) + " is too small: 2 pi / wavelength exceeds float32 range";
     double a = q / k;
     if (w.contains("amplitude")) {
       if (!finiteNumber(w["amplitude"])) return where + "'amplitude' must be a finite number";
       a = w["amplitude"].get<double>();
       if (a < 0) return where + "'amplitude' " + formatValue(a) + " must not be negative";
+      if (!(k * a <= kFloat32Max))
+        return where + "'amplitude' " + formatValue(a) + " times 2 pi / wavelength exceeds float32 range";
     }
     if (w.contains("phase") && !finiteNumber(w["phase"])) return where + "'phase' must be a finite number";
     sum += q * k * a;

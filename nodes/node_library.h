@@ -40,6 +40,8 @@ NodeSpec remapNode();
 NodeSpec fresnelNode();
 // depth_tint.cpp
 NodeSpec depthTintNode();
+// vertex_output.cpp
+NodeSpec vertexOutputNode();
 // optics_directions.cpp
 NodeSpec reflectDirNode();
 NodeSpec refractDirNode();
@@ -91,5 +93,14 @@ NodeSpec crestFoamNode();
 NodeSpec coastalFoamNode();
 // shore_waves.cpp
 NodeSpec shoreWavesNode();
+
+// screen_space.cpp
+NodeSpec sceneDepthNode();
+NodeSpec sceneColorNode();
+NodeSpec planarReflectionNode();
+NodeSpec cubemapReflectionNode();
+NodeSpec ssrNode();
+// underwater.cpp
+NodeSpec underwaterNode();
 
 }  // namespace wg::nodes

@@ -20,6 +20,8 @@ const Registry& defaultRegistry() {
              fresnelNode,
              // depth and colour
              depthTintNode,
+             // output
+             vertexOutputNode,
              // optics (reflect, refract, lighting)
              reflectDirNode,
              refractDirNode,
@@ -51,6 +53,8 @@ const Registry& defaultRegistry() {
              voronoiCausticsNode, textureCausticsNode,
              // foam
              edgeFoamNode, crestFoamNode, coastalFoamNode, shoreWavesNode,
+             // screen space
+             sceneDepthNode, sceneColorNode, planarReflectionNode, cubemapReflectionNode, ssrNode, underwaterNode,
          })
       r.add(make());
     return r;

@@ -20,6 +20,7 @@ constexpr PassInfo kPasses[] = {
     {PassKind::Refraction, "refraction"},
     {PassKind::OpaqueScene, "opaque_scene"},
     {PassKind::SceneColorCopy, "scene_color_copy"},
+    {PassKind::DeferredWater, "deferred_water"},
     {PassKind::WaterSurface, "water_surface"},
 };
 
@@ -78,8 +79,6 @@ PassPlan planPasses(const nlohmann::json& manifest, const PlanOptions& options) 
   for (const auto& p : *it) {
     if (!p.is_string()) fail("the manifest's \"passes\" list holds a non-string entry");
     std::string name = p.get<std::string>();
-    if (name == "deferred_water")
-      fail("pass 'deferred_water' (the full-screen underwater pass) is not implemented by the runtime yet");
     auto kind = parsePassName(name);
     if (!kind || *kind == PassKind::OpaqueScene) fail("the manifest lists an unknown pass '" + name + "'");
     for (size_t i = 0; i < std::size(kPasses); ++i)
@@ -109,6 +108,12 @@ PassPlan planPasses(const nlohmann::json& manifest, const PlanOptions& options) 
       case PassKind::PlanarReflection: add2d("reflection", k, iface::kReflectionTexture, color, DepthFormat::Depth32f); break;
       case PassKind::Refraction: add2d("refraction", k, iface::kRefractionTexture, color, DepthFormat::Depth32f); break;
       case PassKind::SceneColorCopy: add2d("scene_color", k, iface::kSceneColorTexture, color, DepthFormat::None); break;
+      case PassKind::DeferredWater:
+        // Positions need float precision whatever the frame's format; water_normal is
+        // created first because water_position's framebuffer draws into both.
+        add2d("water_normal", k, iface::kWaterNormalUvTexture, ColorFormat::Rgba32f, DepthFormat::None);
+        add2d("water_position", k, iface::kWaterSurfaceTexture, ColorFormat::Rgba32f, DepthFormat::Depth32f);
+        break;
       case PassKind::OpaqueScene:
       case PassKind::WaterSurface: break;
     }

@@ -9,8 +9,11 @@
 //   planar_reflection    reflection     colour + depth, mirrored camera  u_reflection
 //   refraction           refraction     colour + depth, clipped below    u_refraction
 //   environment_cubemap  environment    cube map of the sky (6 faces)    u_environment
+//   deferred_water       water_normal   RGBA32F: normal.xz, uv           u_water_normal_uv
+//                        water_position RGBA32F + depth: position, depth  u_water_surface
 //   water_surface        frame          colour + depth (always)          -
-//   deferred_water       -              not implemented yet: an error
+// With deferred_water, water_surface draws the graph's fragment shader full-screen (see
+// docs/architecture.md, "Deferred water").
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -27,6 +30,7 @@ enum class PassKind {
   Refraction,
   OpaqueScene,  // sky + scene into the frame; always runs, not listed in manifests
   SceneColorCopy,
+  DeferredWater,  // the water G-buffer; water_surface then runs full-screen
   WaterSurface,
 };
 

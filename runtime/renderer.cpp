@@ -110,6 +110,25 @@ struct Renderer::Impl {
   glm::vec3 sun{0.0f, 1.0f, 0.0f};
 
   Program sky, opaque, water;
+  // Deferred water: `water` is the graph's fragment shader on a full-screen triangle and
+  // this the graph's vertex shader writing the water G-buffer.
+  bool deferred = false;
+  bool tessellated = false;  // the water grid is drawn as GL_PATCHES of 3
+
+  void drawWaterMesh() const {
+    if (tessellated) {
+      glPatchParameteri(GL_PATCH_VERTICES, 3);
+      glDrawElements(GL_PATCHES, waterMesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    } else {
+      glDrawElements(GL_TRIANGLES, waterMesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+  }
+  Program waterGbuffer;
+  std::vector<GLuint> waterPrograms() const {
+    std::vector<GLuint> p{water.id()};
+    if (waterGbuffer) p.push_back(waterGbuffer.id());
+    return p;
+  }
   GLint skyInverseVp = -1, skySun = -1;
   GLint opaqueVp = -1, opaqueClip = -1, opaqueSun = -1;
   GpuMesh sceneMesh, waterMesh;
@@ -142,7 +161,9 @@ struct Renderer::Impl {
         t.color = makeTexture();
         glBindTexture(texTarget, t.color.id());
         glTexStorage2D(texTarget, 1, colorInternalFormat(spec.color), spec.width, spec.height);
-        setFilter(texTarget, spec.color == ColorFormat::Rgba32f && !floatLinear ? GL_NEAREST : GL_LINEAR);
+        // The water G-buffer is read texel for texel: nearest.
+        setFilter(texTarget, (spec.color == ColorFormat::Rgba32f && !floatLinear) || spec.producedBy == PassKind::DeferredWater
+                                 ? GL_NEAREST : GL_LINEAR);
         t.allocatedBytes += measuredBytes(texTarget);
       }
       if (spec.depth != DepthFormat::None) {
@@ -158,6 +179,13 @@ struct Renderer::Impl {
                                spec.cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : GL_TEXTURE_2D, t.color.id(), 0);
         GLenum buf = GL_COLOR_ATTACHMENT0;
         glDrawBuffers(1, &buf);
+        if (spec.name == "water_position") {  // the G-buffer draws into water_normal as well
+          GpuTarget* normal = find("water_normal");
+          if (!normal) throw std::logic_error("the plan creates water_position without water_normal");
+          glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, normal->color.id(), 0);
+          GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+          glDrawBuffers(2, bufs);
+        }
       } else {
         GLenum none = GL_NONE;
         glDrawBuffers(1, &none);
@@ -204,7 +232,6 @@ struct Renderer::Impl {
   }
 
   void setupWaterUniforms(const nlohmann::json& manifest, const std::map<std::string, TextureOrigin>& origins) {
-    glUseProgram(water.id());
     auto uniforms = manifest.find("uniforms");
     if (uniforms != manifest.end() && !uniforms->is_array()) manifestError("the manifest's \"uniforms\" is not a list");
     if (uniforms != manifest.end()) {
@@ -212,7 +239,6 @@ struct Renderer::Impl {
         std::string name = u.value("name", "");
         std::string type = u.value("type", "");
         if (name.empty() || type.empty()) manifestError("a manifest uniform lacks \"name\" or \"type\"");
-        GLint loc = glGetUniformLocation(water.id(), name.c_str());
         std::vector<float> v;
         if (u.contains("parameter")) {
           v = numbers(u.value("default", nlohmann::json()));
@@ -240,7 +266,10 @@ struct Renderer::Impl {
             manifestError("uniform " + name + " asks for builtin '" + b + "', which the runtime does not provide");
           }
         }
-        if (loc < 0) continue;  // declared but optimised out by the driver
+        for (GLuint program : waterPrograms()) {
+        glUseProgram(program);
+        GLint loc = glGetUniformLocation(program, name.c_str());
+        if (loc < 0) continue;  // not in this program, or optimised out by the driver
         auto need = [&](size_t n) {
           if (v.size() != n)
             manifestError("uniform " + name + " of type " + type + " got " + std::to_string(v.size()) + " value(s)");
@@ -253,6 +282,7 @@ struct Renderer::Impl {
         else if (type == "mat3") need(9), glUniformMatrix3fv(loc, 1, GL_FALSE, v.data());
         else if (type == "mat4") need(16), glUniformMatrix4fv(loc, 1, GL_FALSE, v.data());
         else manifestError("uniform " + name + " has a type the runtime cannot set: " + type);
+        }
       }
     }
     // Samplers: node textures (loaded here) and scene textures (render targets of the
@@ -286,18 +316,24 @@ struct Renderer::Impl {
         } else {
           manifestError("texture " + name + " has neither a \"source\" nor a \"resource\"");
         }
-        GLint loc = glGetUniformLocation(water.id(), name.c_str());
-        if (loc < 0) continue;
-        GLuint unit = nextUnit++;
-        glUniform1i(loc, static_cast<GLint>(unit));
-        waterBindings.push_back({unit, bindTarget, texture});
+        bool used = false;
+        for (GLuint program : waterPrograms()) {
+          GLint loc = glGetUniformLocation(program, name.c_str());
+          if (loc < 0) continue;
+          if (!used) waterBindings.push_back({nextUnit++, bindTarget, texture});
+          used = true;
+          glUseProgram(program);
+          glUniform1i(loc, static_cast<GLint>(waterBindings.back().unit));
+        }
       }
     }
     // A scene sampler the shader reads but the manifest does not list is a contract break.
     for (const char* s : {iface::kSceneDepthTexture, iface::kSceneColorTexture, iface::kReflectionTexture,
-                          iface::kRefractionTexture, iface::kEnvironmentTexture})
-      if (glGetUniformLocation(water.id(), s) >= 0 && std::find(declared.begin(), declared.end(), s) == declared.end())
-        manifestError(std::string("the water shader samples ") + s + " but the manifest's \"textures\" does not list it");
+                          iface::kRefractionTexture, iface::kEnvironmentTexture, iface::kWaterSurfaceTexture,
+                          iface::kWaterNormalUvTexture})
+      for (GLuint program : waterPrograms())
+        if (glGetUniformLocation(program, s) >= 0 && std::find(declared.begin(), declared.end(), s) == declared.end())
+          manifestError(std::string("the water shader samples ") + s + " but the manifest's \"textures\" does not list it");
     checkGl("setting the water uniforms and textures");
   }
 
@@ -351,6 +387,14 @@ struct Renderer::Impl {
     }
   }
 
+  void bindWaterTextures(bool bind) {
+    for (const auto& b : waterBindings) {
+      glActiveTexture(GL_TEXTURE0 + b.unit);
+      glBindTexture(b.target, bind ? b.texture : 0);
+    }
+    glActiveTexture(GL_TEXTURE0);
+  }
+
   // Which half-space the water's own camera side is: above (+y) unless under water.
   float cameraSide() const { return camera.position.y >= 0.0f ? 1.0f : -1.0f; }
 
@@ -396,6 +440,21 @@ struct Renderer::Impl {
                             GL_COLOR_BUFFER_BIT, GL_NEAREST);
           break;
         }
+        case PassKind::DeferredWater: {
+          // The water G-buffer: the graph's vertex shader (displacement included) writes
+          // the surface's position, depth, normal and uv; where no water is, depth w = 1.
+          GpuTarget* g = find("water_position");
+          bindTarget(*g, false);
+          const float surfaceClear[4] = {0, 0, 0, 1}, normalClear[4] = {0, 0, 0, 0};
+          glClearBufferfv(GL_COLOR, 0, surfaceClear);
+          glClearBufferfv(GL_COLOR, 1, normalClear);
+          glUseProgram(waterGbuffer.id());
+          bindWaterTextures(true);
+          glBindVertexArray(waterMesh.vao.id());
+          drawWaterMesh();
+          bindWaterTextures(false);
+          break;
+        }
         case PassKind::WaterSurface: {
           glBindFramebuffer(GL_FRAMEBUFFER, frame().fbo.id());
           glViewport(0, 0, settings.width, settings.height);
@@ -403,18 +462,20 @@ struct Renderer::Impl {
           // Colour blended by the water's alpha; the frame's alpha stays 1.
           glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
           glUseProgram(water.id());
-          for (const auto& b : waterBindings) {
-            glActiveTexture(GL_TEXTURE0 + b.unit);
-            glBindTexture(b.target, b.texture);
+          bindWaterTextures(true);
+          if (deferred) {
+            // Full-screen: every pixel is shaded by the graph (the underwater node's case 1
+            // returns the scene colour), reading the scene and the G-buffer from textures.
+            glDisable(GL_DEPTH_TEST);
+            glBindVertexArray(emptyVao.id());
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+            glEnable(GL_DEPTH_TEST);
+          } else {
+            glBindVertexArray(waterMesh.vao.id());
+            drawWaterMesh();
           }
-          glBindVertexArray(waterMesh.vao.id());
-          glDrawElements(GL_TRIANGLES, waterMesh.indexCount, GL_UNSIGNED_INT, nullptr);
           glDisable(GL_BLEND);
-          for (const auto& b : waterBindings) {
-            glActiveTexture(GL_TEXTURE0 + b.unit);
-            glBindTexture(b.target, 0);
-          }
-          glActiveTexture(GL_TEXTURE0);
+          bindWaterTextures(false);
           break;
         }
       }
@@ -492,9 +553,10 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
       if (!ok) manifestError("the water grid has no attribute " + name + " at location " + std::to_string(loc));
     }
   }
+  // Tessellated graphs (manifest "tessellation") bring control and evaluation stages; the
+  // water grid is then drawn as patches of three vertices.
   for (const auto& s : waterSources)
-    if (s.stage != GL_VERTEX_SHADER && s.stage != GL_FRAGMENT_SHADER)
-      manifestError(s.name + ": tessellation stages are not run by the runtime yet");
+    r.tessellated |= s.stage == GL_TESS_CONTROL_SHADER || s.stage == GL_TESS_EVALUATION_SHADER;
 
   // ES 3.2 blends RGBA32F targets only with EXT_float_blend (llvmpipe has it).
   if (es && settings.floatColor && !epoxy_has_gl_extension("GL_EXT_float_blend"))
@@ -513,7 +575,18 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   r.opaqueVp = glGetUniformLocation(r.opaque.id(), "u_view_projection");
   r.opaqueClip = glGetUniformLocation(r.opaque.id(), "u_clip_plane");
   r.opaqueSun = glGetUniformLocation(r.opaque.id(), "u_sun_direction");
-  r.water = linkProgram(waterSources, "the graph's water surface; glslang accepted it");
+  r.deferred = r.plan.runs(PassKind::DeferredWater);
+  if (r.deferred) {
+    // The graph's fragment shader runs full-screen; its other stages write the G-buffer.
+    std::vector<ShaderSource> fullscreen{{GL_VERTEX_SHADER, "runtime fullscreen.vert", ss.fullscreenVertex}};
+    std::vector<ShaderSource> gbuffer;
+    for (const auto& src : waterSources) (src.stage == GL_FRAGMENT_SHADER ? fullscreen : gbuffer).push_back(src);
+    gbuffer.push_back({GL_FRAGMENT_SHADER, "runtime water_gbuffer.frag", ss.waterGbufferFragment});
+    r.water = linkProgram(fullscreen, "the graph's deferred water pass (full-screen); glslang accepted it");
+    r.waterGbuffer = linkProgram(gbuffer, "the graph's water G-buffer; glslang accepted it");
+  } else {
+    r.water = linkProgram(waterSources, "the graph's water surface; glslang accepted it");
+  }
 
   r.sceneMesh = uploadMesh(buildSceneMesh(), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});
   r.waterMesh = uploadMesh(buildWaterGrid(settings.waterGridQuads),

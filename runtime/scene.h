@@ -58,6 +58,9 @@ Mesh buildWaterGrid(int quadsPerSide = 128);
 struct SceneShaderSources {
   std::string skyVertex, skyFragment;      // full-screen triangle at the far plane
   std::string opaqueVertex, opaqueFragment;  // lit scene, optional clip plane
+  // Deferred water: a full-screen triangle (no outputs, for the graph's fragment shader)
+  // and the G-buffer fragment shader behind the graph's vertex shader.
+  std::string fullscreenVertex, waterGbufferFragment;
 };
 SceneShaderSources sceneShaderSources(bool es);
 

@@ -111,6 +111,33 @@ void main() {
 }
 )glsl";
 
+// Deferred water: one triangle covering the viewport; the graph's fragment shader reads
+// everything it needs from textures.
+constexpr const char* kFullscreenVertex = R"glsl(
+void main() {
+  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  gl_Position = vec4(p, 0.0, 1.0);
+}
+)glsl";
+
+// Deferred water's G-buffer, written behind the graph's own vertex shader (displacement
+// included) from its fixed-name varyings: world position and depth-buffer value; the
+// upward unit normal's x and z (y is recovered as sqrt(1 - x^2 - z^2)) and the uv.
+constexpr const char* kWaterGbufferFragment = R"glsl(
+in vec3 v_world_position;
+in vec3 v_normal;
+in vec2 v_uv;
+layout(location = 0) out vec4 o_surface;
+layout(location = 1) out vec4 o_normal_uv;
+void main() {
+  vec3 n = v_normal * inversesqrt(max(dot(v_normal, v_normal), 1e-30));
+  if (dot(n, n) < 0.5) n = vec3(0.0, 1.0, 0.0);
+  if (n.y < 0.0) n = -n;
+  o_surface = vec4(v_world_position, gl_FragCoord.z);
+  o_normal_uv = vec4(n.x, n.z, v_uv);
+}
+)glsl";
+
 }  // namespace
 
 SceneShaderSources sceneShaderSources(bool es) {
@@ -120,6 +147,8 @@ SceneShaderSources sceneShaderSources(bool es) {
   s.skyFragment = h + kSkyFunction + kSkyFragment;
   s.opaqueVertex = h + kOpaqueVertex;
   s.opaqueFragment = h + kSkyFunction + kOpaqueFragment;
+  s.fullscreenVertex = h + kFullscreenVertex;
+  s.waterGbufferFragment = h + kWaterGbufferFragment;
   return s;
 }
 

@@ -10,6 +10,7 @@ packages=(
   libepoxy-dev glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libimgui-dev libstb-dev libcli11-dev libglm-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev xvfb xauth
+  python3-jsonschema  # tests/ecosystem: a real JSON Schema validator for docs/watergraph.schema.json
 )
 
 missing=()

@@ -121,12 +121,32 @@ void expectManifestError(const nlohmann::json& m, const std::string& fragment) {
   }
 }
 
+// The deferred water pass: a float G-buffer (position + depth, normal + uv) whatever the
+// frame's format, planned after the scene colour copy and before the full-screen pass.
+TEST(PassPlan, DeferredWaterCreatesTheFloatGbuffer) {
+  PassPlan plan = planPasses(manifestWith({"water_surface", "deferred_water", "depth_prepass", "scene_color_copy"}), small());
+  ASSERT_EQ(plan.passes.size(), 5u);
+  EXPECT_EQ(plan.passes[3], PassKind::DeferredWater);
+  EXPECT_EQ(plan.passes[4], PassKind::WaterSurface);
+  const TargetSpec* normal = plan.target("water_normal");
+  const TargetSpec* position = plan.target("water_position");
+  ASSERT_TRUE(normal && position);
+  EXPECT_EQ(normal->color, ColorFormat::Rgba32f);
+  EXPECT_EQ(normal->depth, DepthFormat::None);
+  EXPECT_EQ(position->color, ColorFormat::Rgba32f);
+  EXPECT_EQ(position->depth, DepthFormat::Depth32f);
+  EXPECT_EQ(position->sampler, "u_water_surface");
+  EXPECT_EQ(normal->sampler, "u_water_normal_uv");
+  EXPECT_LT(plan.target("water_normal") - &plan.targets.front(), plan.target("water_position") - &plan.targets.front())
+      << "water_position's framebuffer attaches water_normal, so it is created first";
+  EXPECT_FALSE(planPasses(manifestWith({"water_surface"}), small()).target("water_position"));
+}
+
 TEST(PassPlan, Errors) {
   expectManifestError(nlohmann::json::object(), "no \"passes\"");
   expectManifestError(manifestWith({"planar_reflection"}), "lacks water_surface");
   expectManifestError(manifestWith({"water_surface", "ssao"}), "unknown pass 'ssao'");
   expectManifestError(manifestWith({"water_surface", "opaque_scene"}), "unknown pass 'opaque_scene'");
-  expectManifestError(manifestWith({"deferred_water", "water_surface"}), "'deferred_water'");
   nlohmann::json m;
   m["passes"] = {"water_surface", 3};
   expectManifestError(m, "non-string");
@@ -139,7 +159,9 @@ TEST(PassPlan, ExampleGraphManifests) {
     SCOPED_TRACE(name);
     CompileResult r = test::compileExample(name);
     PassPlan p = planPasses(r.manifest, small());
-    EXPECT_EQ(p.targets.size(), r.manifest["passes"].size()) << "one target per listed pass besides the frame";
+    size_t expected = r.manifest["passes"].size();
+    for (const auto& pass : r.manifest["passes"]) expected += pass == "deferred_water";  // the G-buffer: two targets
+    EXPECT_EQ(p.targets.size(), expected) << "one target per listed pass besides the frame";
     EXPECT_TRUE(p.runs(PassKind::WaterSurface));
   }
 }

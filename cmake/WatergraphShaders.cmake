@@ -1,0 +1,74 @@
+# watergraph_add_shaders(TARGET <target> GRAPHS <graph.json>...
+#                        [TARGETS glsl330 es300 vk450 msl hlsl] [OUTPUT_DIR <dir>])
+#
+# Compiles graphs with watergraph at build time, before <target> builds. Each graph gives
+# <dir>/<name>.<target>.vert/.frag (vk450 also .vert.spv/.frag.spv) and <dir>/<name>.manifest.json;
+# a graph is recompiled when its file (or the watergraph executable) changes. TARGETS defaults
+# to glsl330 es300 vk450, OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/watergraph. Relative graph
+# paths are relative to ${CMAKE_CURRENT_SOURCE_DIR}.
+#
+# Sets on <target>: the property WATERGRAPH_SHADER_DIR (the output folder), and appends the
+# generated files to WATERGRAPH_SHADERS. PNG textures a graph names are not tracked: touch the
+# graph after changing one.
+include_guard(GLOBAL)
+
+function(watergraph_add_shaders)
+  cmake_parse_arguments(PARSE_ARGV 0 WG "" "TARGET;OUTPUT_DIR" "GRAPHS;TARGETS")
+  if(WG_UNPARSED_ARGUMENTS)
+    message(FATAL_ERROR "watergraph_add_shaders: unknown arguments: ${WG_UNPARSED_ARGUMENTS}")
+  endif()
+  if(NOT WG_TARGET OR NOT TARGET ${WG_TARGET})
+    message(FATAL_ERROR "watergraph_add_shaders: TARGET must name an existing target (got '${WG_TARGET}')")
+  endif()
+  if(NOT WG_GRAPHS)
+    message(FATAL_ERROR "watergraph_add_shaders: GRAPHS needs at least one graph file")
+  endif()
+  if(NOT WG_TARGETS)
+    set(WG_TARGETS glsl330 es300 vk450)
+  endif()
+  foreach(t IN LISTS WG_TARGETS)
+    if(NOT t MATCHES "^(glsl330|es300|vk450|msl|hlsl)$")
+      message(FATAL_ERROR "watergraph_add_shaders: unknown target '${t}' (glsl330, es300, vk450, msl, hlsl)")
+    endif()
+  endforeach()
+  if(NOT WG_OUTPUT_DIR)
+    set(WG_OUTPUT_DIR ${CMAKE_CURRENT_BINARY_DIR}/watergraph)
+  endif()
+  get_filename_component(WG_OUTPUT_DIR "${WG_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
+  list(JOIN WG_TARGETS "," target_arg)
+
+  set(all_outputs)
+  foreach(graph IN LISTS WG_GRAPHS)
+    get_filename_component(graph_abs "${graph}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
+    get_filename_component(name "${graph_abs}" NAME)
+    string(REGEX REPLACE "\\.json$" "" name "${name}")
+    set(outputs ${WG_OUTPUT_DIR}/${name}.manifest.json)
+    foreach(t IN LISTS WG_TARGETS)
+      foreach(stage vert frag)
+        list(APPEND outputs ${WG_OUTPUT_DIR}/${name}.${t}.${stage})
+        if(t STREQUAL "vk450")
+          list(APPEND outputs ${WG_OUTPUT_DIR}/${name}.${t}.${stage}.spv)
+        endif()
+      endforeach()
+    endforeach()
+    add_custom_command(
+      OUTPUT ${outputs}
+      COMMAND watergraph::watergraph compile "${graph_abs}" -o "${WG_OUTPUT_DIR}" --target ${target_arg} --quiet
+      DEPENDS "${graph_abs}" watergraph::watergraph
+      COMMENT "watergraph: compiling ${name}.json (${target_arg})"
+      VERBATIM)
+    list(APPEND all_outputs ${outputs})
+  endforeach()
+
+  # A custom target per call, so TARGET may live in another directory than this call.
+  set(shader_target ${WG_TARGET}_watergraph_shaders)
+  set(n 1)
+  while(TARGET ${shader_target})
+    math(EXPR n "${n} + 1")
+    set(shader_target ${WG_TARGET}_watergraph_shaders_${n})
+  endwhile()
+  add_custom_target(${shader_target} DEPENDS ${all_outputs})
+  add_dependencies(${WG_TARGET} ${shader_target})
+  set_property(TARGET ${WG_TARGET} PROPERTY WATERGRAPH_SHADER_DIR "${WG_OUTPUT_DIR}")
+  set_property(TARGET ${WG_TARGET} APPEND PROPERTY WATERGRAPH_SHADERS ${all_outputs})
+endfunction()

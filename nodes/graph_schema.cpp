@@ -1,0 +1,269 @@
+#include "nodes/graph_schema.h"
+
+#include <map>
+
+#include "core/graph.h"
+#include "core/node_spec.h"
+#include "core/texture_check.h"
+#include "core/types.h"
+
+namespace wg {
+namespace {
+
+using OJ = nlohmann::ordered_json;
+
+constexpr const char* kIdentifierPattern = "^[A-Za-z_][A-Za-z0-9_]*$";
+constexpr const char* kNodeOutputPattern = "^[A-Za-z_][A-Za-z0-9_]*\\.[A-Za-z_][A-Za-z0-9_]*$";
+constexpr const char* kParameterPattern = "^\\$[A-Za-z_][A-Za-z0-9_]*$";
+constexpr double kFloat32Max = 3.4028234663852886e38;
+
+OJ defRef(const std::string& name) { return OJ{{"$ref", "#/definitions/" + name}}; }
+// A description beside a $ref (draft-07 ignores siblings of $ref when validating, editors show them).
+OJ described(const std::string& doc, OJ s) {
+  OJ out{{"description", doc}};
+  for (auto& [k, v] : s.items()) out[k] = v;
+  return out;
+}
+
+// A float vector literal of exactly n numbers (n >= 2), or 2..4 when n == 0.
+OJ vectorLiteral(int n) {
+  OJ a{{"type", "array"}, {"items", defRef("number")}};
+  a["minItems"] = n ? n : 2;
+  a["maxItems"] = n ? n : 4;
+  return a;
+}
+
+// What may feed a port of this type: a reference always; literals where the type takes one
+// (a float splats to any float vector, so a number fits every float-vector port).
+std::string sourceDefinitionFor(const PortSpec& p) {
+  if (p.kind != PortKind::Fixed) return "source";
+  switch (p.type) {
+    case Type::Float: return "source_float";
+    case Type::Vec2: return "source_vec2";
+    case Type::Vec3: return "source_vec3";
+    case Type::Vec4: return "source_vec4";
+    default: return "reference";
+  }
+}
+
+std::string portTypeText(const PortSpec& p) {
+  switch (p.kind) {
+    case PortKind::Fixed: return std::string(typeName(p.type));
+    case PortKind::Gen: return "float|vec2|vec3|vec4";
+    case PortKind::Custom: return "float or vector";
+  }
+  return "?";
+}
+
+OJ portSchema(const PortSpec& p) {
+  OJ s = defRef(sourceDefinitionFor(p));
+  std::string d = portTypeText(p) + ": " + p.doc;
+  if (p.defaultValue) d += " (default " + p.defaultValue->toString() + ")";
+  else if (p.defaultBuiltin) d += " (default: the " + std::string(builtinName(*p.defaultBuiltin)) + " builtin)";
+  else d += " (required)";
+  s["description"] = d;
+  return s;
+}
+
+// Json options check themselves in C++ (OptionSpec::validate); the schema knows the shape
+// of the ones the registry has today. An option not listed here accepts any JSON value.
+OJ knownJsonOptionSchema(const std::string& type, const std::string& option) {
+  if (type == "swizzle" && option == "mask")
+    return OJ{{"type", "string"}, {"pattern", "^[xyzwrgba]{1,4}$"}};
+  if (type == "gerstner_waves" && option == "waves") {
+    OJ wave{{"type", "object"},
+            {"additionalProperties", false},
+            {"required", {"direction", "steepness", "wavelength"}},
+            {"properties",
+             {{"direction", OJ{{"description", "[x, z], normalised; not zero"}, {"type", "array"},
+                               {"items", defRef("number")}, {"minItems", 2}, {"maxItems", 2}}},
+              {"steepness", OJ{{"description", "Q in [0, 1]"}, {"type", "number"}, {"minimum", 0}, {"maximum", 1}}},
+              {"wavelength", OJ{{"description", "metres, > 0"}, {"type", "number"}, {"exclusiveMinimum", 0},
+                                {"maximum", kFloat32Max}}},
+              {"amplitude", OJ{{"description", "metres (default Q/k)"}, {"type", "number"}, {"minimum", 0},
+                               {"maximum", kFloat32Max}}},
+              {"phase", OJ{{"description", "radians"}, {"type", "number"}, {"minimum", -kFloat32Max},
+                           {"maximum", kFloat32Max}}}}}};
+    return OJ{{"type", "array"}, {"minItems", 1}, {"maxItems", 16}, {"items", wave}};
+  }
+  return OJ::object();
+}
+
+OJ optionSchema(const NodeSpec& spec, const OptionSpec& o) {
+  OJ s = OJ::object();
+  s["description"] = o.doc;
+  switch (o.kind) {
+    case OptionSpec::Kind::Enum:
+      s["type"] = "string";
+      s["enum"] = o.choices;
+      break;
+    case OptionSpec::Kind::Number:
+    case OptionSpec::Kind::Integer:
+      s["type"] = o.kind == OptionSpec::Kind::Integer ? "integer" : "number";
+      s["minimum"] = o.min ? *o.min : -kFloat32Max;
+      s["maximum"] = o.max ? *o.max : kFloat32Max;
+      break;
+    case OptionSpec::Kind::Bool:
+      s["type"] = "boolean";
+      break;
+    case OptionSpec::Kind::Texture: {
+      OJ builtins = OJ::array();
+      for (const auto& n : builtinTextureNames()) builtins.push_back(std::string(kBuiltinTexturePrefix) + n);
+      s["type"] = "string";
+      s["anyOf"] = OJ::array({OJ{{"description", "a built-in procedural texture"}, {"enum", builtins}},
+                              OJ{{"description", "a .png path relative to the graph file, inside its folder"},
+                                 {"pattern", "^(?![/\\\\])(?!(.*/)?\\.\\.(/|$)).*\\.png$"}}});
+      break;
+    }
+    case OptionSpec::Kind::Json:
+    {
+      OJ known = knownJsonOptionSchema(spec.type, o.name);
+      for (auto& [k, v] : known.items()) s[k] = v;
+    }
+      break;
+  }
+  if (!o.defaultValue.is_null()) s["default"] = OJ::parse(o.defaultValue.dump());
+  return s;
+}
+
+OJ nodeTypeSchema(const NodeSpec& spec) {
+  OJ inputs{{"type", "object"}, {"additionalProperties", false}};
+  OJ inputProps = OJ::object();
+  OJ required = OJ::array();
+  for (const auto& p : spec.inputs) {
+    inputProps[p.name] = portSchema(p);
+    if (p.required()) required.push_back(p.name);
+  }
+  inputs["properties"] = inputProps;
+  if (!required.empty()) inputs["required"] = required;
+
+  OJ options{{"type", "object"}, {"additionalProperties", false}};
+  OJ optionProps = OJ::object();
+  for (const auto& o : spec.options) optionProps[o.name] = optionSchema(spec, o);
+  options["properties"] = optionProps;
+
+  std::string outputs;
+  for (const auto& p : spec.outputs) outputs += (outputs.empty() ? "" : ", ") + spec.type + "." + p.name;
+  OJ s{{"description", spec.summary + " Outputs: " + outputs + "."},
+       {"properties", {{"inputs", inputs}, {"options", options}}}};
+  if (!required.empty()) s["required"] = OJ::array({"inputs"});
+  return s;
+}
+
+OJ parameterSchema() {
+  OJ byType = OJ::array();
+  for (int n = 1; n <= 4; ++n) {
+    std::string type = n == 1 ? "float" : "vec" + std::to_string(n);
+    OJ then{{"properties", {{"default", n == 1 ? defRef("number") : vectorLiteral(n)}}}};
+    if (n < 3) then["not"] = OJ{{"required", {"hint"}}};  // a colour hint needs vec3 or vec4
+    byType.push_back(OJ{{"if", {{"properties", {{"type", {{"const", type}}}}}}}, {"then", then}});
+  }
+  return OJ{{"type", "object"},
+            {"additionalProperties", false},
+            {"required", {"type", "default"}},
+            {"properties",
+             {{"type", {{"description", "the uniform's type"}, {"enum", {"float", "vec2", "vec3", "vec4"}}}},
+              {"default", {{"description", "a number for float; N numbers for vecN"}}},
+              {"min", described("lowest value of every component", defRef("number"))},
+              {"max", described("highest value of every component", defRef("number"))},
+              {"hint", {{"description", "editors show a colour picker (vec3, vec4)"}, {"const", "color"}}},
+              {"description", {{"type", "string"}}},
+              {"static", {{"description", "true: folded into the shader, never a uniform"}, {"type", "boolean"}}}}},
+            {"allOf", byType}};
+}
+
+OJ outputsSchema() {
+  auto slot = [](const char* def, const char* doc) { return described(doc, defRef(def)); };
+  OJ vertex{{"type", "object"},
+            {"additionalProperties", false},
+            {"properties",
+             {{"position", slot("source_vec3", "vec3: the surface point in world space")},
+              {"normal", slot("source_vec3", "vec3: the world-space normal")}}}};
+  OJ fragment{{"type", "object"},
+              {"additionalProperties", false},
+              {"properties",
+               {{"color", slot("source_vec3", "vec3 (a float splats to grey)")},
+                {"alpha", slot("source_float", "float")}}}};
+  return OJ{{"description", "shader output slots; at least one must be connected"},
+            {"type", "object"},
+            {"additionalProperties", false},
+            {"minProperties", 1},
+            {"properties", {{"vertex", vertex}, {"fragment", fragment}}}};
+}
+
+}  // namespace
+
+nlohmann::ordered_json graphSchema(const Registry& registry) {
+  std::vector<const NodeSpec*> specs = registry.all();  // sorted by type name
+
+  OJ defs = OJ::object();
+  defs["identifier"] = OJ{{"type", "string"}, {"pattern", kIdentifierPattern}, {"maxLength", 64}};
+  defs["number"] = OJ{{"type", "number"}, {"minimum", -kFloat32Max}, {"maximum", kFloat32Max}};
+  defs["node_output"] = OJ{{"description", "\"node.port\": an output of another node"},
+                           {"type", "string"},
+                           {"pattern", kNodeOutputPattern}};
+  defs["parameter_ref"] = OJ{{"description", "\"$name\": a parameter"}, {"type", "string"}, {"pattern", kParameterPattern}};
+  defs["reference"] = OJ{{"anyOf", {defRef("node_output"), defRef("parameter_ref")}}};
+  defs["source"] = OJ{{"anyOf", {defRef("node_output"), defRef("parameter_ref"), defRef("number"), vectorLiteral(0)}}};
+  defs["source_float"] = OJ{{"anyOf", {defRef("node_output"), defRef("parameter_ref"), defRef("number")}}};
+  for (int n = 2; n <= 4; ++n)
+    defs["source_vec" + std::to_string(n)] =
+        OJ{{"anyOf", {defRef("node_output"), defRef("parameter_ref"), defRef("number"), vectorLiteral(n)}}};
+  defs["parameter"] = parameterSchema();
+  defs["editor"] = OJ{{"description", "the node's position in the editor canvas"},
+                      {"type", "object"},
+                      {"additionalProperties", false},
+                      {"required", {"x", "y"}},
+                      {"properties", {{"x", defRef("number")}, {"y", defRef("number")}}}};
+
+  OJ typeNames = OJ::array();
+  OJ typeDocs = OJ::array();
+  OJ perType = OJ::array();
+  for (const NodeSpec* s : specs) {
+    typeNames.push_back(s->type);
+    typeDocs.push_back(s->family + ": " + s->summary);
+    perType.push_back(OJ{{"if", {{"properties", {{"type", {{"const", s->type}}}}}, {"required", {"type"}}}},
+                         {"then", defRef("node_" + s->type)}});
+  }
+  defs["node"] = OJ{{"type", "object"},
+                    {"additionalProperties", false},
+                    {"required", {"id", "type"}},
+                    {"properties",
+                     {{"id", described("unique in the graph", defRef("identifier"))},
+                      {"type", {{"description", "a registered node type (watergraph nodes)"},
+                                {"enum", typeNames},
+                                {"enumDescriptions", typeDocs}}},
+                      {"options", {{"type", "object"}}},
+                      {"inputs", {{"type", "object"}}},
+                      {"editor", defRef("editor")}}},
+                    {"allOf", perType}};
+  for (const NodeSpec* s : specs) defs["node_" + s->type] = nodeTypeSchema(*s);
+
+  OJ root = OJ::object();
+  root["$schema"] = "http://json-schema.org/draft-07/schema#";
+  root["title"] = "watergraph graph (format v1)";
+  root["description"] =
+      "A watergraph shader graph (docs/graph-format.md). Generated from the node registry by `watergraph schema`; "
+      "do not edit by hand.";
+  root["type"] = "object";
+  root["additionalProperties"] = false;
+  root["required"] = {"version", "name", "nodes", "outputs"};
+  root["properties"] = OJ{
+      {"$schema", {{"description", "this schema, for editors; kept as is"}, {"type", "string"}}},
+      {"version", {{"description", "the format version"}, {"const", kGraphFormatVersion}}},
+      {"name", described("the graph's name", defRef("identifier"))},
+      {"description", {{"type", "string"}}},
+      {"parameters", {{"description", "parameter name -> parameter (uniforms, or constants with static)"},
+                      {"type", "object"},
+                      {"propertyNames", defRef("identifier")},
+                      {"additionalProperties", defRef("parameter")}}},
+      {"nodes", {{"type", "array"}, {"items", defRef("node")}}},
+      {"outputs", defRef("outputs")}};
+  defs["outputs"] = outputsSchema();
+  root["definitions"] = defs;
+  return root;
+}
+
+std::string graphSchemaText(const Registry& registry) { return graphSchema(registry).dump(2) + "\n"; }
+
+}  // namespace wg

@@ -1,0 +1,84 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer targets (tests/fuzz/) and runs each for a while (docs/robustness.md).
+#
+#   scripts/fuzz.sh              # each target 60 s
+#   scripts/fuzz.sh 3600         # each target an hour
+#   scripts/fuzz.sh 600 compile  # one target
+#
+# Environment:
+#   BUILD_DIR  build folder (default build-fuzz: Clang, RelWithDebInfo, ASan + UBSan +
+#              coverage, no tests, no runtime). CI passes build-asan, which
+#              scripts/sanitize.sh already built with the fuzzers in it.
+#   JOBS       build and fuzzing jobs (default 2 for the build, 1 fuzzing process).
+#   FUZZ_ARGS  extra libFuzzer flags, e.g. "-jobs=8 -workers=8" for a long run.
+# The working corpus grows in $BUILD_DIR/fuzz/corpus/<target>/ and is kept between runs;
+# it starts from graphs/, tests/bad/ and tests/fuzz/regressions/. A crash leaves its input
+# in $BUILD_DIR/fuzz/crashes/<target>/ and makes the script exit 1: add the input to
+# tests/fuzz/regressions/ (replayed by the test suite) and fix the cause.
+# Prints one line per target: executions, corpus size, crashes.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+ROOT=$PWD
+SECONDS_EACH=${1:-60}
+shift || true
+TARGETS=("$@")
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen)
+BUILD_DIR=${BUILD_DIR:-build-fuzz}
+JOBS=${JOBS:-2}
+
+if [ ! -f "$BUILD_DIR/CMakeCache.txt" ] || ! grep -q '^WG_BUILD_FUZZERS:BOOL=ON' "$BUILD_DIR/CMakeCache.txt"; then
+  scripts/setup.sh
+  cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
+    -DWG_BUILD_FUZZERS=ON -DWG_BUILD_TESTS=OFF -DWG_BUILD_RUNTIME=OFF >/dev/null
+fi
+build_targets=(wg_fuzz_dict)
+for t in "${TARGETS[@]}"; do build_targets+=("wg_fuzz_$t"); done
+cmake --build "$BUILD_DIR" -j "$JOBS" --target "${build_targets[@]}"
+
+FUZZ_DIR=$ROOT/$BUILD_DIR/fuzz
+mkdir -p "$FUZZ_DIR"
+"$BUILD_DIR/bin/wg_fuzz_dict" > "$FUZZ_DIR/graph.dict"
+
+# Leaks are bugs here too (the fuzzers load no GL driver). UB aborts (the build makes it fatal).
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+
+status=0
+summary=()
+for t in "${TARGETS[@]}"; do
+  corpus=$FUZZ_DIR/corpus/$t
+  crashes=$FUZZ_DIR/crashes/$t
+  mkdir -p "$corpus" "$crashes"
+  # Inputs over 64 KiB add little but time; the pipeline target validates with glslang
+  # (tens of milliseconds per graph), so its time-out per input is generous.
+  case $t in
+    loader) limits=(-max_len=65536 -timeout=10 -rss_limit_mb=4096) ;;
+    compile) limits=(-max_len=16384 -timeout=30 -rss_limit_mb=4096) ;;
+    graphgen) limits=(-max_len=4096 -timeout=30 -rss_limit_mb=4096) ;;
+  esac
+  marker=$FUZZ_DIR/.start-$t
+  touch "$marker"
+  log=$FUZZ_DIR/$t.log
+  echo "fuzz: $t for ${SECONDS_EACH} s (log: $log)"
+  set +e
+  # Run inside the corpus folder: relative texture paths in inputs resolve there.
+  seeds=("$ROOT/graphs" "$ROOT/tests/bad" "$ROOT/tests/fuzz/regressions")
+  dict=(-dict="$FUZZ_DIR/graph.dict")
+  [ "$t" = graphgen ] && seeds=() && dict=()  # its inputs are choices, not JSON
+  (cd "$corpus" && "$ROOT/$BUILD_DIR/bin/wg_fuzz_$t" "$corpus" ${seeds[@]+"${seeds[@]}"} ${dict[@]+"${dict[@]}"} -max_total_time="$SECONDS_EACH" \
+      -artifact_prefix="$crashes/" -print_final_stats=1 "${limits[@]}" ${FUZZ_ARGS:-}) >"$log" 2>&1
+  rc=$?
+  set -e
+  execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
+  found=$(find "$crashes" -type f -newer "$marker" | wc -l)  # this run's
+  size=$(find "$corpus" -type f | wc -l)
+  compiled=$(grep -o '[0-9]* compiled for every target' "$log" | tail -1 | grep -o '^[0-9]*' || true)
+  summary+=("$(printf '%-8s executions %-9s corpus %-6s crashes %s%s (exit %s)' "$t" "${execs:-?}" "$size" "$found" \
+    "${compiled:+, compiled for every target $compiled}" "$rc")")
+  if [ "$rc" -ne 0 ] || [ "$found" -ne 0 ]; then
+    status=1
+    tail -40 "$log" >&2
+  fi
+done
+printf 'fuzz: %s\n' "${summary[@]}"
+exit $status

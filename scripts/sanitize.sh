@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer
+# (docs/robustness.md). Configures build-asan (RelWithDebInfo, Clang), builds, runs ctest.
+#
+#   scripts/sanitize.sh            # every suite
+#   scripts/sanitize.sh -E runtime # ctest arguments pass through (here: skip the GL suite)
+#
+# Environment: BUILD_DIR (default build-asan), JOBS (default 2).
+# With Clang the same build also holds the fuzz targets (WG_BUILD_FUZZERS=ON adds coverage
+# instrumentation), so `BUILD_DIR=build-asan scripts/fuzz.sh` reuses it instead of a
+# second instrumented build. Without Clang it falls back to GCC's sanitizers, no fuzzers.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD_DIR=${BUILD_DIR:-build-asan}
+JOBS=${JOBS:-2}
+
+scripts/setup.sh
+cmake_args=(-S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DWG_SANITIZE=ON)
+if command -v clang++ >/dev/null; then
+  cmake_args+=(-DCMAKE_CXX_COMPILER=clang++ -DWG_BUILD_FUZZERS=ON)
+fi
+cmake "${cmake_args[@]}" >/dev/null
+cmake --build "$BUILD_DIR" -j "$JOBS"
+
+# Leaks: on, except inside the GL driver stack (tests/robustness/lsan.supp says why).
+# UBSan: print a stack and fail the test (the build already makes UB fatal).
+export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1}
+export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/robustness/lsan.supp:print_suppressions=0}
+export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
+export MESA_SHADER_CACHE_DISABLE=true
+cd "$BUILD_DIR"
+ctest --output-on-failure -j "$JOBS" --timeout 600 "$@"

@@ -1,0 +1,96 @@
+// `cmake --install` gives a package that find_package(watergraph) finds; the example
+// consumer (examples/cmake-consumer) builds against it, its shaders are compiled at build
+// time by watergraph_add_shaders, and editing the graph recompiles them.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+
+#include "eco_support.h"
+
+namespace wg {
+namespace {
+
+namespace fs = std::filesystem;
+using test::shellQuote;
+
+// The build folder of the watergraph under test: <build>/bin/watergraph.
+std::string buildDir() { return fs::path(test::watergraphBinary()).parent_path().parent_path().string(); }
+
+std::string generator() { return eco::haveTool("ninja") ? " -G Ninja" : ""; }
+
+void bumpMtime(const std::string& path) {
+  auto t = fs::last_write_time(path);
+  fs::last_write_time(path, t + std::chrono::seconds(2));
+}
+
+TEST(CMakePackage, InstallFindPackageAndRebuildOnGraphChange) {
+  ASSERT_TRUE(fs::exists(buildDir() + "/CMakeCache.txt")) << buildDir();
+  eco::TempDir tmp;
+  std::string prefix = tmp / "prefix";
+  auto r = eco::sh("cmake --install " + shellQuote(buildDir()) + " --prefix " + shellQuote(prefix));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  for (const char* f : {"bin/watergraph", "include/watergraph/core/graph.h", "include/watergraph/codegen/compile.h",
+                        "include/watergraph/core/diagnostic_codes.def", "lib/cmake/watergraph/watergraphConfig.cmake",
+                        "lib/cmake/watergraph/watergraphConfigVersion.cmake",
+                        "lib/cmake/watergraph/WatergraphShaders.cmake", "lib/cmake/watergraph/watergraphTargets.cmake"})
+    EXPECT_TRUE(fs::exists(prefix + "/" + f)) << f;
+  auto version = eco::sh(shellQuote(prefix + "/bin/watergraph") + " --version");
+  EXPECT_EQ(version.exit, 0);
+
+  // A copy of the consumer, so the test can edit its graph.
+  std::string src = tmp / "consumer";
+  fs::copy(test::sourcePath("examples/cmake-consumer"), src, fs::copy_options::recursive);
+  std::string bin = tmp / "consumer-build";
+  r = eco::sh("cmake -S " + shellQuote(src) + " -B " + shellQuote(bin) + generator() +
+              " -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=" + shellQuote(prefix));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  r = eco::sh("cmake --build " + shellQuote(bin));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("watergraph: compiling pond.json"), std::string::npos) << r.out;
+  // It used the installed watergraph, not the build tree's.
+  EXPECT_NE(test::readFile(bin + "/CMakeCache.txt").find("watergraph_DIR:PATH=" + prefix), std::string::npos);
+
+  r = eco::sh(shellQuote(bin + "/pond_info"));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("pond.glsl330.frag: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("pond.es300.vert: "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("#version 300 es"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("uniform p_water"), std::string::npos) << r.out;
+  EXPECT_FALSE(fs::exists(bin + "/shaders/pond.vk450.frag"));  // TARGETS glsl330 es300 only
+
+  // Nothing changed: nothing recompiles.
+  r = eco::sh("cmake --build " + shellQuote(bin));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_EQ(r.out.find("watergraph: compiling"), std::string::npos) << r.out;
+
+  // Edit the graph: the build recompiles it and the manifest has the new default.
+  std::string graph = src + "/graphs/pond.json";
+  std::string text = test::readFile(graph);
+  size_t at = text.find("[0.05, 0.3, 0.35]");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 17, "[0.25, 0.5, 0.75]");
+  test::writeFile(graph, text);
+  bumpMtime(graph);
+  r = eco::sh("cmake --build " + shellQuote(bin));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("watergraph: compiling pond.json"), std::string::npos) << r.out;
+  EXPECT_NE(test::readFile(bin + "/shaders/pond.manifest.json").find("0.75"), std::string::npos);
+}
+
+TEST(CMakePackage, BadArgumentsFailAtConfigureTime) {
+  eco::TempDir tmp;
+  std::string prefix = tmp / "prefix";
+  ASSERT_EQ(eco::sh("cmake --install " + shellQuote(buildDir()) + " --prefix " + shellQuote(prefix)).exit, 0);
+  fs::create_directories(tmp / "p");
+  test::writeFile(tmp / "p/CMakeLists.txt",
+                  "cmake_minimum_required(VERSION 3.20)\nproject(p NONE)\nfind_package(watergraph CONFIG REQUIRED)\n"
+                  "add_custom_target(t)\nwatergraph_add_shaders(TARGET t GRAPHS g.json TARGETS wgsl)\n");
+  auto r = eco::sh("cmake -S " + shellQuote(tmp / "p") + " -B " + shellQuote(tmp / "b") +
+                   " -DCMAKE_PREFIX_PATH=" + shellQuote(prefix));
+  EXPECT_NE(r.exit, 0);
+  EXPECT_NE((r.out + r.err).find("unknown target 'wgsl'"), std::string::npos) << r.out << r.err;
+}
+
+}  // namespace
+}  // namespace wg

@@ -1,0 +1,36 @@
+#pragma once
+// Helpers for the ecosystem suite: running watergraph and other tools, temp folders.
+#include <filesystem>
+#include <string>
+
+#include "test_support.h"
+
+namespace wg::eco {
+
+struct CmdResult {
+  int exit = -1;
+  std::string out;
+  std::string err;
+};
+
+// Runs `watergraph <args>` (args already shell-quoted where needed).
+CmdResult wgRun(const std::string& args);
+// Runs a shell command, stdout and stderr apart.
+CmdResult sh(const std::string& command);
+// True when `tool` is on PATH.
+bool haveTool(const std::string& tool);
+// Debian's python3 (where apt's python3-jsonschema lives) when present, else python3 on PATH.
+std::string debianPython();
+
+class TempDir {
+ public:
+  explicit TempDir(const std::string& prefix = "wg_eco_");
+  ~TempDir();
+  const std::string& path() const { return path_; }
+  std::string operator/(const std::string& rel) const { return path_ + "/" + rel; }
+
+ private:
+  std::string path_;
+};
+
+}  // namespace wg::eco

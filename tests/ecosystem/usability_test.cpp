@@ -1,0 +1,150 @@
+// The command line as a person uses it: a progress bar on batch runs only on a terminal,
+// --quiet / --verbose, --watch recompiling on change, and examples in every --help.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <thread>
+
+#include "eco_support.h"
+
+namespace wg {
+namespace {
+
+namespace fs = std::filesystem;
+using test::shellQuote;
+
+std::string examplesArgs() {
+  std::string all;
+  for (const auto& p : test::exampleGraphs()) all += " " + shellQuote(p);
+  return all;
+}
+
+TEST(Usability, EveryHelpHasExamples) {
+  for (const char* sub : {"", "compile", "validate", "nodes", "fmt", "render", "schema"}) {
+    auto r = eco::wgRun(std::string(sub) + " --help");
+    EXPECT_EQ(r.exit, 0) << sub;
+    EXPECT_NE(r.out.find("Examples:"), std::string::npos) << "watergraph " << sub << " --help:\n" << r.out;
+    EXPECT_NE(r.out.find(std::string("watergraph ") + sub), std::string::npos) << r.out;
+  }
+  auto r = eco::wgRun("compile --help");
+  for (const char* opt : {"--quiet", "--verbose", "--watch", "--no-progress", "msl", "hlsl"})
+    EXPECT_NE(r.out.find(opt), std::string::npos) << opt;
+}
+
+TEST(Usability, NoProgressBarWhenStdoutIsNotATerminal) {
+  eco::TempDir tmp;
+  auto r = eco::wgRun("compile" + examplesArgs() + " -o " + shellQuote(tmp / "out") + " --subdirs");
+  EXPECT_EQ(r.exit, 0) << r.err;
+  EXPECT_EQ(r.out.find('\r'), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("\033["), std::string::npos) << r.out;
+}
+
+TEST(Usability, ProgressBarOnATerminal) {
+  if (!eco::haveTool("script")) GTEST_FAIL() << "script (util-linux) is missing";
+  eco::TempDir tmp;
+  std::string cmd = shellQuote(test::watergraphBinary()) + " compile" + examplesArgs() + " -o " +
+                    shellQuote(tmp / "out") + " --subdirs";
+  // script runs the command on a pseudo-terminal and copies what it printed to our stdout.
+  auto r = eco::sh("script -qfec " + shellQuote(cmd) + " /dev/null");
+  EXPECT_EQ(r.exit, 0) << r.out << r.err;
+  size_t n = test::exampleGraphs().size();
+  EXPECT_NE(r.out.find("\r\033[K["), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("] 1/" + std::to_string(n)), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("] " + std::to_string(n) + "/" + std::to_string(n)), std::string::npos) << r.out;
+  // --no-progress turns it off even there.
+  r = eco::sh("script -qfec " + shellQuote(cmd + " --no-progress") + " /dev/null");
+  EXPECT_EQ(r.out.find("\033[K["), std::string::npos) << r.out;
+}
+
+TEST(Usability, QuietPrintsOnlyErrors) {
+  auto ok = eco::wgRun("validate" + examplesArgs() + " --quiet");
+  EXPECT_EQ(ok.exit, 0);
+  EXPECT_EQ(ok.out, "");
+  EXPECT_EQ(ok.err, "");
+  auto bad = eco::wgRun("validate --quiet " + shellQuote(test::sourcePath("tests/ecosystem/schema_bad/unknown_option_value.json")));
+  EXPECT_EQ(bad.exit, 1);
+  EXPECT_EQ(bad.out, "");
+  EXPECT_NE(bad.err.find("[WG030]"), std::string::npos) << bad.err;
+  auto both = eco::wgRun("validate --quiet --verbose" + examplesArgs());
+  EXPECT_EQ(both.exit, 2);
+}
+
+TEST(Usability, VerboseSaysWhatEachGraphDid) {
+  eco::TempDir tmp;
+  auto r = eco::wgRun("compile" + examplesArgs() + " -o " + shellQuote(tmp / "out") + " --verbose");
+  EXPECT_EQ(r.exit, 0) << r.err;
+  for (const auto& g : test::exampleGraphs())
+    EXPECT_NE(r.out.find(g + ": ok, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" nodes kept, "), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find(" files in " + tmp / "out"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("compiled " + std::to_string(test::exampleGraphs().size()) + " graphs for glsl330,es300,vk450"),
+            std::string::npos)
+      << r.out;
+}
+
+// Waits until `path` contains `needle` (or the time runs out); returns the contents.
+std::string waitFor(const std::string& path, const std::string& needle, int ms = 15000) {
+  std::string text;
+  for (int waited = 0; waited < ms; waited += 50) {
+    std::error_code ec;
+    if (fs::exists(path, ec)) {
+      text = test::readFile(path);
+      if (text.find(needle) != std::string::npos) return text;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return text;
+}
+
+TEST(Usability, WatchRecompilesOnChange) {
+  eco::TempDir tmp;
+  std::string graph = tmp / "lake.json";
+  fs::copy_file(test::sourcePath("graphs/lake.json"), graph);
+  std::string log = tmp / "watch.log";
+  std::string out = tmp / "out";
+  auto start = eco::sh(shellQuote(test::watergraphBinary()) + " compile " + shellQuote(graph) + " -o " + shellQuote(out) +
+                       " --watch --watch-interval 50 > " + shellQuote(log) + " 2>&1 & echo $!");
+  ASSERT_EQ(start.exit, 0);
+  int pid = std::stoi(start.out);
+  struct Killer {
+    int pid;
+    ~Killer() { eco::sh("kill " + std::to_string(pid) + " 2>/dev/null"); }
+  } killer{pid};
+
+  std::string text = waitFor(log, "watching 1 graph");
+  ASSERT_NE(text.find("watching 1 graph"), std::string::npos) << text;
+  ASSERT_TRUE(fs::exists(out + "/lake.glsl330.frag"));
+
+  // A change: the graph is compiled again.
+  std::string json = test::readFile(graph);
+  size_t at = json.find("\"f0\": 0.02");
+  ASSERT_NE(at, std::string::npos);
+  test::writeFile(graph, json.substr(0, at) + "\"f0\": 0.03" + json.substr(at + 10));
+  text = waitFor(log, "recompiled ");
+  EXPECT_NE(text.find("] recompiled " + graph + ": ok"), std::string::npos) << text;
+  EXPECT_NE(test::readFile(out + "/lake.glsl330.frag").find("0.03"), std::string::npos);
+
+  // A broken save is reported, the watch goes on, and the fix compiles again.
+  test::writeFile(graph, "{\"version\": 1,");
+  text = waitFor(log, "FAILED");
+  EXPECT_NE(text.find("error: [WG001]"), std::string::npos) << text;
+  test::writeFile(graph, json);
+  for (int i = 0; i < 300; ++i) {
+    text = test::readFile(log);
+    size_t failed = text.find("FAILED");
+    if (failed != std::string::npos && text.find(": ok", failed) != std::string::npos) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  size_t failed = text.find("FAILED");
+  ASSERT_NE(failed, std::string::npos);
+  EXPECT_NE(text.find("recompiled " + graph + ": ok", failed), std::string::npos) << text;
+
+  // SIGTERM stops it cleanly.
+  eco::sh("kill " + std::to_string(pid));
+  text = waitFor(log, "watch stopped");
+  EXPECT_NE(text.find("watch stopped"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace wg
