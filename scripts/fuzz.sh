@@ -29,7 +29,7 @@ JOBS=${JOBS:-2}
 if [ ! -f "$BUILD_DIR/CMakeCache.txt" ] || ! grep -q '^WG_BUILD_FUZZERS:BOOL=ON' "$BUILD_DIR/CMakeCache.txt"; then
   scripts/setup.sh
   cmake -S . -B "$BUILD_DIR" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_COMPILER=clang++ \
-    -DWG_BUILD_FUZZERS=ON -DWG_BUILD_TESTS=OFF -DWG_BUILD_RUNTIME=OFF >/dev/null
+    "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O2 -gline-tables-only -DNDEBUG" -DWG_BUILD_FUZZERS=ON -DWG_BUILD_TESTS=OFF -DWG_BUILD_RUNTIME=OFF >/dev/null
 fi
 build_targets=(wg_fuzz_dict)
 for t in "${TARGETS[@]}"; do build_targets+=("wg_fuzz_$t"); done
@@ -54,7 +54,7 @@ for t in "${TARGETS[@]}"; do
   case $t in
     loader) limits=(-max_len=65536 -timeout=10 -rss_limit_mb=4096) ;;
     compile) limits=(-max_len=16384 -timeout=30 -rss_limit_mb=4096) ;;
-    graphgen) limits=(-max_len=4096 -timeout=30 -rss_limit_mb=4096) ;;
+    graphgen) limits=(-max_len=2048 -len_control=0 -timeout=30 -rss_limit_mb=4096) ;;
   esac
   marker=$FUZZ_DIR/.start-$t
   touch "$marker"
