@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/port_typing.h"
 #include "nodes/texture_source.h"
 
 namespace wg {
@@ -50,6 +51,34 @@ std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, co
                              " for output '" + op.spec->outputs[i].name + "' typed " +
                              std::string(typeName(op.outputTypes[i])));
   return out;
+}
+
+std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& options,
+                                const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env,
+                                TextureCache* textures, const std::string& graphDir) {
+  Op op;
+  op.spec = &spec;
+  op.nodeId = spec.type;
+  op.options = nlohmann::json::object();
+  for (const auto& o : spec.options) op.options[o.name] = o.defaultValue;
+  for (auto it = options.begin(); it != options.end(); ++it) op.options[it.key()] = it.value();
+  std::vector<Value> values;
+  std::vector<Type> sourceTypes;
+  for (const auto& p : spec.inputs) {
+    const Value* given = nullptr;
+    for (const auto& [name, value] : inputs)
+      if (name == p.name) given = &value;
+    if (given) values.push_back(*given);
+    else if (p.defaultValue) values.push_back(*p.defaultValue);
+    else if (p.defaultBuiltin) values.push_back(env.builtin(*p.defaultBuiltin));
+    else throw std::invalid_argument(spec.type + ": required input '" + p.name + "' is not given");
+    sourceTypes.push_back(values.back().type);
+  }
+  PortTyping t = typePorts(spec, op.options, sourceTypes, [](int) { return std::string("the value given"); });
+  if (!t.error.empty()) throw std::invalid_argument(spec.type + ": " + t.error);
+  op.inputTypes = std::move(t.inputTypes);
+  op.outputTypes = std::move(t.outputTypes);
+  return evaluateOp(op, values, env, textures, graphDir);
 }
 
 CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, const std::vector<Value>& parameters) {

@@ -2,6 +2,8 @@
 // The double-precision reference: a Program interpreted through each node's `eval`. The
 // fold pass, the probe and the accuracy checks use it, so the reference is part of the
 // compiler, not a second implementation beside it.
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "core/program.h"
@@ -14,6 +16,14 @@ class TextureCache;
 // `textures` and `graphDir` serve nodes that sample textures; null only for ops that don't.
 std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env,
                               TextureCache* textures = nullptr, const std::string& graphDir = {});
+
+// Evaluates one node on its own, set up as resolve would: options completed with their
+// defaults, inputs not given taken from their defaults or `env`'s builtins, port types by
+// the node's rules (core/port_typing.h). Throws std::invalid_argument when an input is
+// missing or the types do not fit. For tests, hard cases and probes of a single node.
+std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& options,
+                                const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env,
+                                TextureCache* textures = nullptr, const std::string& graphDir = {});
 
 struct CpuResult {
   std::vector<std::vector<Value>> opOutputs;  // per op, per output port

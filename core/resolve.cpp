@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "core/number_format.h"
+#include "core/port_typing.h"
 #include "core/texture_check.h"
 #include "core/suggest.h"
 
@@ -368,69 +369,16 @@ class Resolver {
 
   bool typeOp(Op& op, const Node& node, const std::vector<Type>& sourceTypes,
               const std::vector<const NodeInput*>& given) {
-    const NodeSpec& spec = *op.spec;
-    size_t nin = spec.inputs.size();
-    op.inputTypes.assign(nin, Type::Invalid);
-    op.outputTypes.assign(spec.outputs.size(), Type::Invalid);
-
-    // Gen ports: one float-or-vector type for the node; floats splat to it.
-    Type gen = Type::Float;
-    int genFrom = -1;
-    for (size_t i = 0; i < nin; ++i) {
-      if (spec.inputs[i].kind != PortKind::Gen) continue;
-      Type t = sourceTypes[i];
-      if (!isFloatScalarOrVector(t)) {
-        mismatch(node, given[i], spec.inputs[i].name,
-                 "input '" + spec.inputs[i].name + "' takes float, vec2, vec3 or vec4, but " +
-                     sourceName(given[i]) + " is " + std::string(typeName(t)));
-        return false;
-      }
-      if (t == Type::Float) continue;
-      if (gen == Type::Float) {
-        gen = t;
-        genFrom = static_cast<int>(i);
-      } else if (t != gen) {
-        mismatch(node, given[i], spec.inputs[i].name,
-                 "input '" + spec.inputs[i].name + "' is " + std::string(typeName(t)) + " but input '" +
-                     spec.inputs[static_cast<size_t>(genFrom)].name + "' is " + std::string(typeName(gen)) +
-                     "; only a float splats to a vector");
-        return false;
-      }
+    PortTyping t = typePorts(*op.spec, op.options, sourceTypes,
+                             [&](int i) { return sourceName(given[static_cast<size_t>(i)]); });
+    if (!t.error.empty()) {
+      const NodeInput* at = t.errorInput >= 0 ? given[static_cast<size_t>(t.errorInput)] : nullptr;
+      std::string label = t.errorInput >= 0 ? op.spec->inputs[static_cast<size_t>(t.errorInput)].name : "";
+      mismatch(node, at, label, t.error);
+      return false;
     }
-    for (size_t i = 0; i < nin; ++i) {
-      const PortSpec& p = spec.inputs[i];
-      op.inputTypes[i] = p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? gen : sourceTypes[i];
-    }
-    for (size_t i = 0; i < spec.outputs.size(); ++i) {
-      const PortSpec& p = spec.outputs[i];
-      op.outputTypes[i] = p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? gen : Type::Invalid;
-    }
-    if (spec.infer) {
-      InferContext ctx{spec, op.options, op.inputTypes, op.outputTypes, {}, -1};
-      spec.infer(ctx);
-      if (!ctx.error.empty()) {
-        const NodeInput* at = ctx.errorInput >= 0 ? given[static_cast<size_t>(ctx.errorInput)] : nullptr;
-        std::string label = ctx.errorInput >= 0 ? spec.inputs[static_cast<size_t>(ctx.errorInput)].name : "";
-        mismatch(node, at, label, ctx.error);
-        return false;
-      }
-      op.inputTypes = ctx.inputTypes;
-      op.outputTypes = ctx.outputTypes;
-    }
-    for (size_t i = 0; i < nin; ++i) {
-      if (!implicitlyConvertible(sourceTypes[i], op.inputTypes[i])) {
-        mismatch(node, given[i], spec.inputs[i].name,
-                 "input '" + spec.inputs[i].name + "' expects " + std::string(typeName(op.inputTypes[i])) + ", but " +
-                     sourceName(given[i]) + " is " + std::string(typeName(sourceTypes[i])));
-        return false;
-      }
-    }
-    // infer may leave an output Invalid: it does not exist for these inputs (split.w of a
-    // vec3); referring to it is reported where the reference is.
-    if (!spec.infer)
-      for (size_t i = 0; i < op.outputTypes.size(); ++i)
-        if (op.outputTypes[i] == Type::Invalid)
-          throw std::logic_error("node spec '" + spec.type + "' left output '" + spec.outputs[i].name + "' untyped");
+    op.inputTypes = std::move(t.inputTypes);
+    op.outputTypes = std::move(t.outputTypes);
     return true;
   }
 

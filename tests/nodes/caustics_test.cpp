@@ -9,12 +9,12 @@
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/noise_reference.h"
 #include "nodes/texture_source.h"
-#include "noise_foam_eval.h"
+#include "node_eval.h"
 
 namespace wg {
 namespace {
 
-using test::evalNode;
+using test::runNode;
 
 const Value kFarPoint = Value::vector({50.09375, 86.09375});  // F1 = 1.2008 there (jitter 1)
 
@@ -32,11 +32,11 @@ TEST(VoronoiCaustics, FirstDistanceAboveOneStaysFiniteAndInRange) {
   ASSERT_GT(f1, 1.0);
   for (const char* search : {"3x3", "2x2"}) {
     SCOPED_TRACE(search);
-    auto one = evalNode("voronoi_caustics", {{"p", kFarPoint}, {"scale", Value::scalar(1)}},
+    auto one = runNode("voronoi_caustics", {{"p", kFarPoint}, {"scale", Value::scalar(1)}},
                         {{"animation", "static"}, {"layers", "1"}, {"search", search}});
     EXPECT_EQ(one.first(), 0.0);
     for (const char* combine : {"average", "min", "multiply"}) {
-      auto two = evalNode("voronoi_caustics", {{"p", kFarPoint}, {"scale", Value::scalar(1)}},
+      auto two = runNode("voronoi_caustics", {{"p", kFarPoint}, {"scale", Value::scalar(1)}},
                           {{"animation", "static"}, {"combine", combine}, {"search", search}});
       EXPECT_TRUE(std::isfinite(two.first()));
       EXPECT_GE(two.first(), 0.0);
@@ -56,13 +56,13 @@ TEST(VoronoiCaustics, SeedLayersAndCombinations) {
   double c1 = std::pow(1 - std::min(f1a, 1.0), 3), c2 = std::pow(1 - std::min(f1b, 1.0), 3);
   nlohmann::json o{{"speed", speed}};
   auto env = test::atTime(t);
-  EXPECT_NEAR(evalNode("voronoi_caustics", {{"p", p}}, o, env).first(), 0.5 * (c1 + c2), 1e-12);
+  EXPECT_NEAR(runNode("voronoi_caustics", {{"p", p}}, o, env).first(), 0.5 * (c1 + c2), 1e-12);
   o["combine"] = "min";
-  EXPECT_NEAR(evalNode("voronoi_caustics", {{"p", p}}, o, env).first(), std::min(c1, c2), 1e-12);
+  EXPECT_NEAR(runNode("voronoi_caustics", {{"p", p}}, o, env).first(), std::min(c1, c2), 1e-12);
   o["combine"] = "multiply";
-  EXPECT_NEAR(evalNode("voronoi_caustics", {{"p", p}}, o, env).first(), c1 * c2, 1e-12);
+  EXPECT_NEAR(runNode("voronoi_caustics", {{"p", p}}, o, env).first(), c1 * c2, 1e-12);
   o["layers"] = "1";
-  EXPECT_NEAR(evalNode("voronoi_caustics", {{"p", p}, {"intensity", Value::scalar(2)}}, o, env).first(), 2 * c1, 1e-12);
+  EXPECT_NEAR(runNode("voronoi_caustics", {{"p", p}, {"intensity", Value::scalar(2)}}, o, env).first(), 2 * c1, 1e-12);
 }
 
 TEST(VoronoiCaustics, HugeTimeStaysFiniteAndPeriodic) {
@@ -70,14 +70,14 @@ TEST(VoronoiCaustics, HugeTimeStaysFiniteAndPeriodic) {
   std::uniform_real_distribution<double> d(-20, 20);
   for (int i = 0; i < 200; ++i) {
     Value p = Value::vector({d(rng), d(rng)});
-    double c = evalNode("voronoi_caustics", {{"p", p}}, {}, test::atTime(1e6)).first();
+    double c = runNode("voronoi_caustics", {{"p", p}}, {}, test::atTime(1e6)).first();
     ASSERT_TRUE(std::isfinite(c));
     ASSERT_GE(c, 0.0);
     ASSERT_LE(c, 1.0);
     // speed 1 and 1.2: both phases return after 10 pi seconds.
-    double c2 = evalNode("voronoi_caustics", {{"p", p}}, {}, test::atTime(1e6 + 10 * M_PI)).first();
+    double c2 = runNode("voronoi_caustics", {{"p", p}}, {}, test::atTime(1e6 + 10 * M_PI)).first();
     ASSERT_NEAR(c, c2, 1e-7);
-    double ci = evalNode("voronoi_caustics", {{"p", p}, {"time", Value::scalar(1e6)}}, {{"animation", "time_input"}}).first();
+    double ci = runNode("voronoi_caustics", {{"p", p}, {"time", Value::scalar(1e6)}}, {{"animation", "time_input"}}).first();
     ASSERT_NEAR(ci, c, 1e-12);
   }
 }
@@ -101,7 +101,7 @@ TEST(TextureCaustics, MatchesTheSeedFormulaOnTheBuiltinHeightTexture) {
   double mu = t * vx - std::floor(t * vx), mv = t * vy - std::floor(t * vy);
   double a = tex->sample(u + mu, v + mv)[0], b = tex->sample(1.5 * u - mu, 1.5 * v - mv)[0];
   double c = std::pow(std::min(std::max(1 - std::fabs(a + b - 1), 0.0), 1.0), 9);
-  auto r = evalNode("texture_caustics", {{"position", pos}, {"time", Value::scalar(t)}, {"intensity", Value::scalar(0.8)}});
+  auto r = runNode("texture_caustics", {{"position", pos}, {"time", Value::scalar(t)}, {"intensity", Value::scalar(0.8)}});
   EXPECT_NEAR(r.first(), 0.8 * c, 1e-12);
 }
 
@@ -111,7 +111,7 @@ TEST(TextureCaustics, AlwaysInUnitRangeIncludingHugeTime) {
   double hi = 0;
   for (int i = 0; i < 2000; ++i) {
     double t = i % 10 == 0 ? 1e6 : tt(rng);
-    auto r = evalNode("texture_caustics", {{"position", Value::vector({d(rng), 0, d(rng)})}, {"time", Value::scalar(t)}});
+    auto r = runNode("texture_caustics", {{"position", Value::vector({d(rng), 0, d(rng)})}, {"time", Value::scalar(t)}});
     ASSERT_TRUE(std::isfinite(r.first()));
     ASSERT_GE(r.first(), 0.0);
     ASSERT_LE(r.first(), 1.0);
@@ -137,7 +137,7 @@ const char* kCausticsGraph = R"({
 
 TEST(CausticsNodes, CompileTogetherForEveryTarget) {
   std::string messages;
-  auto result = test::compileNoiseGraph(kCausticsGraph, &messages);
+  auto result = test::compileInline(kCausticsGraph, &messages);
   ASSERT_TRUE(result) << messages;
   // Two layers at speeds 1 and 1.2: two time-phase uniforms, shared with nothing else.
   for (const auto& f : result->files)

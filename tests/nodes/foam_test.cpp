@@ -9,13 +9,13 @@
 
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/texture_source.h"
-#include "noise_foam_eval.h"
+#include "node_eval.h"
 
 namespace wg {
 namespace {
 
 using test::atTime;
-using test::evalNode;
+using test::runNode;
 
 Value pos(double x, double z) { return Value::vector({x, 0.0, z}); }
 
@@ -43,7 +43,7 @@ TEST(EdgeFoam, EqualCutoffEdgesGiveTheSeedStep) {
   std::mt19937 rng(29);
   std::uniform_real_distribution<double> d(-0.5, 2.0), xz(-500, 500);
   for (int i = 0; i < 1500; ++i) {
-    auto r = evalNode("edge_foam", {{"depth", Value::scalar(d(rng))}, {"position", pos(xz(rng), xz(rng))}});
+    auto r = runNode("edge_foam", {{"depth", Value::scalar(d(rng))}, {"position", pos(xz(rng), xz(rng))}});
     double f = r.first();
     ASSERT_TRUE(f == 0.0 || f == 1.0) << f;
   }
@@ -57,7 +57,7 @@ TEST(EdgeFoam, InUnitRangeAndNonIncreasingWithDepth) {
       Value p = pos(xz(rng), xz(rng));
       double prev = 2.0;
       for (double depth = -0.5; depth <= 1.0; depth += 0.05) {
-        auto r = evalNode("edge_foam", {{"depth", Value::scalar(depth)}, {"position", p}, {"softness", Value::scalar(0.1)},
+        auto r = runNode("edge_foam", {{"depth", Value::scalar(depth)}, {"position", p}, {"softness", Value::scalar(0.1)},
                                         {"strength", Value::scalar(1.5)}},
                           {{"mask", mask}});
         double f = r.first();
@@ -67,7 +67,7 @@ TEST(EdgeFoam, InUnitRangeAndNonIncreasingWithDepth) {
         prev = f;
       }
       // No foam on deep water (cutoff 0.25 > 0).
-      EXPECT_EQ(evalNode("edge_foam", {{"depth", Value::scalar(50)}, {"position", p}}, {{"mask", mask}}).first(), 0.0);
+      EXPECT_EQ(runNode("edge_foam", {{"depth", Value::scalar(50)}, {"position", p}}, {{"mask", mask}}).first(), 0.0);
     }
 }
 
@@ -82,11 +82,11 @@ TEST(EdgeFoam, MatchesTheTwoLayerFormulaAndWrapsAtHugeTime) {
   double texMask = 0.5 * (a + b) * mask;
   double tt = std::min(std::max((texMask - 0.25) / 0.2, 0.0), 1.0);
   double expected = tt * tt * (3 - 2 * tt);
-  auto r = evalNode("edge_foam", {{"depth", Value::scalar(depth)}, {"position", pos(x, z)}, {"softness", Value::scalar(0.2)}},
+  auto r = runNode("edge_foam", {{"depth", Value::scalar(depth)}, {"position", pos(x, z)}, {"softness", Value::scalar(0.2)}},
                     {}, atTime(t));
   EXPECT_NEAR(r.first(), expected, 1e-9);
   // Speed 0.05: both layers repeat after 40 s, at any time.
-  auto r2 = evalNode("edge_foam", {{"depth", Value::scalar(depth)}, {"position", pos(x, z)}, {"softness", Value::scalar(0.2)}},
+  auto r2 = runNode("edge_foam", {{"depth", Value::scalar(depth)}, {"position", pos(x, z)}, {"softness", Value::scalar(0.2)}},
                      {}, atTime(t + 40));
   EXPECT_NEAR(r2.first(), r.first(), 1e-9);
 }
@@ -96,19 +96,19 @@ TEST(CrestFoam, SeedValuesByHand) {
   auto env = atTime(0);
   Value up = Value::vector({0, 1, 0});
   // A crest: height 1 > threshold 0.65 + 0.15, so base = 1; foam = 0.7^(1/3).
-  auto crest = evalNode("crest_foam", {{"height", Value::scalar(1)}, {"normal", up}, {"coverage", Value::scalar(1.2)}}, {}, env);
+  auto crest = runNode("crest_foam", {{"height", Value::scalar(1)}, {"normal", up}, {"coverage", Value::scalar(1.2)}}, {}, env);
   EXPECT_NEAR(crest.first(), std::cbrt(0.7), 1e-12);
   // A 60 degree slope at height 0: slope 0.866 > 0.7, base = 0.4; foam = 0.28^(1/3).
   Value steep = Value::vector({std::sin(M_PI / 3), std::cos(M_PI / 3), 0});
-  auto slope = evalNode("crest_foam", {{"height", Value::scalar(0)}, {"normal", steep}, {"coverage", Value::scalar(1.2)}}, {}, env);
+  auto slope = runNode("crest_foam", {{"height", Value::scalar(0)}, {"normal", steep}, {"coverage", Value::scalar(1.2)}}, {}, env);
   EXPECT_NEAR(slope.first(), std::cbrt(0.28), 1e-12);
   // Halfway up the height ramp: smoothstep = 0.5; sharpness 1: foam = 0.5 * 0.7.
-  auto mid = evalNode("crest_foam", {{"height", Value::scalar(0.725)}, {"normal", up}, {"coverage", Value::scalar(1.2)},
+  auto mid = runNode("crest_foam", {{"height", Value::scalar(0.725)}, {"normal", up}, {"coverage", Value::scalar(1.2)},
                                      {"sharpness", Value::scalar(1)}}, {}, env);
   EXPECT_NEAR(mid.first(), 0.35, 1e-12);
   // Coverage 0: the mask needs noise above 0.9..1.1, which the normalised noise (< 1) never
   // fully reaches; flat low water has no foam at all.
-  auto none = evalNode("crest_foam", {{"height", Value::scalar(0)}, {"normal", up}}, {}, env);
+  auto none = runNode("crest_foam", {{"height", Value::scalar(0)}, {"normal", up}}, {}, env);
   EXPECT_EQ(none.first(), 0.0);
 }
 
@@ -119,19 +119,19 @@ TEST(CrestFoam, InRangeAndSeamlessAtHugeTime) {
     std::vector<std::pair<std::string, Value>> in = {{"height", Value::scalar(h(rng))},
                                                      {"normal", Value::vector({n(rng), n(rng), n(rng)})},
                                                      {"position", pos(xz(rng), xz(rng))}};
-    double f = evalNode("crest_foam", in, {}, atTime(1e6)).first();
+    double f = runNode("crest_foam", in, {}, atTime(1e6)).first();
     ASSERT_TRUE(std::isfinite(f));
     ASSERT_GE(f, 0.0);
     ASSERT_LE(f, 1.0);
     // The drifts (0.3 and 0.2 per second on a 256-cell lattice) both return after 2560 s.
-    double f2 = evalNode("crest_foam", in, {}, atTime(1e6 + 2560)).first();
+    double f2 = runNode("crest_foam", in, {}, atTime(1e6 + 2560)).first();
     ASSERT_NEAR(f, f2, 1e-7);
   }
   // The drift moves the patches: a moment later the foam differs somewhere.
   int moved = 0;
   for (int i = 0; i < 50; ++i) {
     std::vector<std::pair<std::string, Value>> in = {{"height", Value::scalar(1)}, {"position", pos(i * 3.1, -i * 1.7)}};
-    moved += evalNode("crest_foam", in, {}, atTime(100)).first() != evalNode("crest_foam", in, {}, atTime(103)).first();
+    moved += runNode("crest_foam", in, {}, atTime(100)).first() != runNode("crest_foam", in, {}, atTime(103)).first();
   }
   EXPECT_GT(moved, 10);
 }
@@ -155,13 +155,13 @@ TEST(CoastalFoam, NodeMatchesTheSeedFormula) {
   double x = 7.5, z = 3.25, depth = 0.3;
   double u = 0.1 * x + 0.5 + 0.05 * 0.2, v = 0.5 - 0.1 * z + 0.05 * -0.3;
   double foam = std::min(0.7 * tex->sample(u, v)[0], 1.0);
-  auto r = evalNode("coastal_foam", {{"depth", Value::scalar(depth)}, {"position", pos(x, z)}, {"normal", n}});
+  auto r = runNode("coastal_foam", {{"depth", Value::scalar(depth)}, {"position", pos(x, z)}, {"normal", n}});
   EXPECT_NEAR(r.scalar("foam"), foam, 1e-12);
   EXPECT_NEAR(r.scalar("specular_scale"), std::pow(1 - foam, 3), 1e-12);
   std::mt19937 rng(41);
   std::uniform_real_distribution<double> d(-1, 3), xz(-1e3, 1e3);
   for (int i = 0; i < 1000; ++i) {
-    auto q = evalNode("coastal_foam", {{"depth", Value::scalar(d(rng))}, {"position", pos(xz(rng), xz(rng))},
+    auto q = runNode("coastal_foam", {{"depth", Value::scalar(d(rng))}, {"position", pos(xz(rng), xz(rng))},
                                        {"crest", Value::scalar(d(rng))}});
     for (const char* o : {"foam", "specular_scale"}) {
       ASSERT_GE(q.scalar(o), 0.0);
@@ -173,19 +173,19 @@ TEST(CoastalFoam, NodeMatchesTheSeedFormula) {
 TEST(ShoreWaves, SeedFormulaByHand) {
   auto env0 = atTime(0);
   // depth 0: sin(0) = 0, ((0 + 1) / 2)^2 = 0.25, fade 1.
-  EXPECT_NEAR(evalNode("shore_waves", {{"depth", Value::scalar(0)}}, {}, env0).first(), 0.25, 1e-15);
+  EXPECT_NEAR(runNode("shore_waves", {{"depth", Value::scalar(0)}}, {}, env0).first(), 0.25, 1e-15);
   // depth pi/12 at frequency 6: sin(pi/2) = 1, w = 1, fade 1 - (pi/12)/2.
-  EXPECT_NEAR(evalNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, env0).first(), 1 - M_PI / 24, 1e-12);
+  EXPECT_NEAR(runNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, env0).first(), 1 - M_PI / 24, 1e-12);
   // Beyond the distance nothing.
-  EXPECT_EQ(evalNode("shore_waves", {{"depth", Value::scalar(2.5)}}, {}, env0).first(), 0.0);
+  EXPECT_EQ(runNode("shore_waves", {{"depth", Value::scalar(2.5)}}, {}, env0).first(), 0.0);
   // At t = 1e6 s with speed 2: phase written out with std::fmod.
   double t = 1e6, depth = 0.7;
   double w = std::sin(depth * 6 - std::fmod(2 * t, 2 * M_PI)) * 0.5 + 0.5;
-  auto r = evalNode("shore_waves", {{"depth", Value::scalar(depth)}}, {}, atTime(t));
+  auto r = runNode("shore_waves", {{"depth", Value::scalar(depth)}}, {}, atTime(t));
   EXPECT_NEAR(r.first(), w * w * (1 - depth / 2), 1e-9);
   // Bands move: half a period later a crest has become a trough.
-  auto a = evalNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, atTime(t));
-  auto b = evalNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, atTime(t + M_PI / 2));
+  auto a = runNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, atTime(t));
+  auto b = runNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, atTime(t + M_PI / 2));
   EXPECT_GT(std::fabs(a.first() - b.first()), 0.1);
 }
 
@@ -205,7 +205,7 @@ const char* kFoamGraph = R"({
 
 TEST(FoamNodes, CompileTogetherForEveryTarget) {
   std::string messages;
-  EXPECT_TRUE(test::compileNoiseGraph(kFoamGraph, &messages)) << messages;
+  EXPECT_TRUE(test::compileInline(kFoamGraph, &messages)) << messages;
 }
 
 }  // namespace

@@ -16,18 +16,12 @@ namespace {
 double rad(double degrees) { return degrees * M_PI / 180.0; }
 
 // The node's eval for a view at `degrees` from the normal.
-double fresnelAt(double degrees, nlohmann::json options) {
+double fresnelAt(double degrees, const nlohmann::json& options) {
   const NodeSpec* spec = defaultRegistry().find("fresnel");
-  Op op;
-  op.spec = spec;
-  op.options = nlohmann::json::object();
-  for (const auto& o : spec->options) op.options[o.name] = o.defaultValue;
-  for (auto it = options.begin(); it != options.end(); ++it) op.options[it.key()] = it.value();
-  op.inputTypes = {Type::Vec3, Type::Vec3, Type::Float, Type::Float};
-  op.outputTypes = {Type::Float, Type::Float};
-  std::vector<Value> in = {Value::vector({0, 1, 0}), Value::vector({std::sin(rad(degrees)), std::cos(rad(degrees)), 0}),
-                           Value::scalar(0.02), Value::scalar(2.0)};
-  return evaluateOp(op, in, EvalEnvironment{})[0][0];
+  return evaluateNode(*spec, options,
+                      {{"normal", Value::vector({0, 1, 0})},
+                       {"view", Value::vector({std::sin(rad(degrees)), std::cos(rad(degrees)), 0})}},
+                      EvalEnvironment{})[0][0];
 }
 
 TEST(Fresnel, ExactValuesFromAir) {

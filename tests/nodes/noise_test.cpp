@@ -10,12 +10,12 @@
 #include <gtest/gtest.h>
 
 #include "nodes/noise_reference.h"
-#include "noise_foam_eval.h"
+#include "node_eval.h"
 
 namespace wg {
 namespace {
 
-using test::evalNode;
+using test::runNode;
 
 // PCG3D as printed by Jarzynski and Olano (2020), written out again for the test.
 struct Words {
@@ -55,7 +55,7 @@ TEST(Hash, BitIdenticalToAnIndependentPcg3dWithFloat32Conversion) {
       for (float z : {0.0f, -7.5f, 1e7f}) {
         SCOPED_TRACE(std::to_string(x) + ", " + std::to_string(y) + ", " + std::to_string(z));
         Words w = pcg3dIndependent({gpuCell(x), gpuCell(y), gpuCell(z)});
-        auto r = evalNode("hash", {{"p", Value::vector({x, y, z})}});
+        auto r = runNode("hash", {{"p", Value::vector({x, y, z})}});
         // Exact equality: the double result is the float32 value, bit for bit.
         EXPECT_EQ(r["vec"][0], static_cast<double>(gpuUnit(w.x)));
         EXPECT_EQ(r["vec"][1], static_cast<double>(gpuUnit(w.y)));
@@ -64,7 +64,7 @@ TEST(Hash, BitIdenticalToAnIndependentPcg3dWithFloat32Conversion) {
         EXPECT_GE(r["vec"][0], 0.0);
         EXPECT_LT(r["vec"][0], 1.0);
         if (z == 0.0f) {  // a vec2 cell hashes as (x, y, 0)
-          auto r2 = evalNode("hash", {{"p", Value::vector({x, y})}});
+          auto r2 = runNode("hash", {{"p", Value::vector({x, y})}});
           EXPECT_EQ(r2["vec"][0], r["vec"][0]);
           EXPECT_EQ(r2["vec"][2], r["vec"][2]);
         }
@@ -74,7 +74,7 @@ TEST(Hash, BitIdenticalToAnIndependentPcg3dWithFloat32Conversion) {
 TEST(Hash, ValuesAreFloat32ExactAndPinned) {
   // Pinned so a change to the hash (which would change every pattern) is noticed; these
   // are also the values the GPU must produce at cell (1e7, 1e7 + 1, -1e7).
-  auto r = evalNode("hash", {{"p", Value::vector({1e7, 1e7 + 1, -1e7})}});
+  auto r = runNode("hash", {{"p", Value::vector({1e7, 1e7 + 1, -1e7})}});
   EXPECT_EQ(r["vec"][0], 0.26058733463287354);
   EXPECT_EQ(r["vec"][1], 0.62450331449508667);
   EXPECT_EQ(r["vec"][2], 0.25402665138244629);
@@ -90,7 +90,7 @@ TEST(Hash, ValuesAreFloat32ExactAndPinned) {
 }
 
 TEST(Hash, RejectsAFloatCoordinate) {
-  EXPECT_THROW(evalNode("hash", {{"p", Value::scalar(1)}}), std::invalid_argument);
+  EXPECT_THROW(runNode("hash", {{"p", Value::scalar(1)}}), std::invalid_argument);
 }
 
 const char* kHashGraph = R"({
@@ -104,7 +104,7 @@ const char* kHashGraph = R"({
 
 TEST(Hash, EmittedGlslIsIntegerArithmeticOnly) {
   std::string messages;
-  auto result = test::compileNoiseGraph(kHashGraph, &messages);
+  auto result = test::compileInline(kHashGraph, &messages);
   ASSERT_TRUE(result) << messages;
   int checked = 0;
   for (const auto& f : result->files) {
@@ -133,21 +133,21 @@ TEST(ValueNoise, LatticeValuesMidpointsAndContinuity) {
   using nodes::noise::hash3;
   for (int i = -3; i <= 3; ++i)
     for (int j = -3; j <= 3; ++j) {
-      auto r = evalNode("value_noise", {{"p", Value::vector({double(i), double(j)})}});
+      auto r = runNode("value_noise", {{"p", Value::vector({double(i), double(j)})}});
       EXPECT_EQ(r.first(), hash2(i, j)[0]);
-      auto r3 = evalNode("value_noise", {{"p", Value::vector({double(i), double(j), 2.0})}});
+      auto r3 = runNode("value_noise", {{"p", Value::vector({double(i), double(j), 2.0})}});
       EXPECT_EQ(r3.first(), hash3(i, j, 2)[0]);
       // Halfway along x the Hermite weight is 1/2.
-      auto m = evalNode("value_noise", {{"p", Value::vector({i + 0.5, double(j)})}});
+      auto m = runNode("value_noise", {{"p", Value::vector({i + 0.5, double(j)})}});
       EXPECT_NEAR(m.first(), 0.5 * (hash2(i, j)[0] + hash2(i + 1, j)[0]), 1e-15);
       // Continuous across the cell edge x = i.
-      auto l = evalNode("value_noise", {{"p", Value::vector({i - 1e-9, j + 0.3})}});
-      auto rr = evalNode("value_noise", {{"p", Value::vector({double(i), j + 0.3})}});
+      auto l = runNode("value_noise", {{"p", Value::vector({i - 1e-9, j + 0.3})}});
+      auto rr = runNode("value_noise", {{"p", Value::vector({double(i), j + 0.3})}});
       EXPECT_NEAR(l.first(), rr.first(), 1e-8);
     }
   // scale multiplies the coordinate.
-  auto a = evalNode("value_noise", {{"p", Value::vector({0.7, 1.9})}, {"scale", Value::scalar(3)}});
-  auto b = evalNode("value_noise", {{"p", Value::vector({2.1, 5.7})}});
+  auto a = runNode("value_noise", {{"p", Value::vector({0.7, 1.9})}, {"scale", Value::scalar(3)}});
+  auto b = runNode("value_noise", {{"p", Value::vector({2.1, 5.7})}});
   EXPECT_NEAR(a.first(), b.first(), 1e-14);
 }
 
@@ -175,17 +175,17 @@ TEST(ValueNoise, TiledLatticeRepeatsEvery256Cells) {
 
 TEST(Fbm, SumsOctavesOfValueNoise) {
   Value p = Value::vector({1.37, -2.61});
-  double vn0 = evalNode("value_noise", {{"p", p}}).first();
-  EXPECT_EQ(evalNode("fbm", {{"p", p}}, {{"octaves", 1}}).first(), vn0);
-  EXPECT_EQ(evalNode("fbm", {{"p", p}, {"gain", Value::scalar(0)}}, {{"octaves", 6}}).first(), vn0);
-  double vn1 = evalNode("value_noise", {{"p", Value::vector({2 * 1.37 + 17.31, 2 * -2.61 + 9.73})}}).first();
-  double vn2 = evalNode("value_noise", {{"p", Value::vector({4 * 1.37 + 2 * 17.31, 4 * -2.61 + 2 * 9.73})}}).first();
-  EXPECT_NEAR(evalNode("fbm", {{"p", p}}, {{"octaves", 3}}).first(), (vn0 + 0.5 * vn1 + 0.25 * vn2) / 1.75, 1e-14);
+  double vn0 = runNode("value_noise", {{"p", p}}).first();
+  EXPECT_EQ(runNode("fbm", {{"p", p}}, {{"octaves", 1}}).first(), vn0);
+  EXPECT_EQ(runNode("fbm", {{"p", p}, {"gain", Value::scalar(0)}}, {{"octaves", 6}}).first(), vn0);
+  double vn1 = runNode("value_noise", {{"p", Value::vector({2 * 1.37 + 17.31, 2 * -2.61 + 9.73})}}).first();
+  double vn2 = runNode("value_noise", {{"p", Value::vector({4 * 1.37 + 2 * 17.31, 4 * -2.61 + 2 * 9.73})}}).first();
+  EXPECT_NEAR(runNode("fbm", {{"p", p}}, {{"octaves", 3}}).first(), (vn0 + 0.5 * vn1 + 0.25 * vn2) / 1.75, 1e-14);
   // 3D, two octaves with lacunarity 3 and gain 0.25.
   Value p3 = Value::vector({0.4, 5.5, -1.2});
-  double w0 = evalNode("value_noise", {{"p", p3}}).first();
-  double w1 = evalNode("value_noise", {{"p", Value::vector({1.2 + 17.31, 16.5 + 9.73, -3.6 + 5.47})}}).first();
-  EXPECT_NEAR(evalNode("fbm", {{"p", p3}, {"lacunarity", Value::scalar(3)}, {"gain", Value::scalar(0.25)}},
+  double w0 = runNode("value_noise", {{"p", p3}}).first();
+  double w1 = runNode("value_noise", {{"p", Value::vector({1.2 + 17.31, 16.5 + 9.73, -3.6 + 5.47})}}).first();
+  EXPECT_NEAR(runNode("fbm", {{"p", p3}, {"lacunarity", Value::scalar(3)}, {"gain", Value::scalar(0.25)}},
                        {{"octaves", 2}}).first(),
               (w0 + 0.25 * w1) / 1.25, 1e-14);
 }
@@ -206,14 +206,14 @@ TEST(Voronoi, RegularGridByHand) {
   // then (0.5, -0.5) at sqrt(0.04 + 0.49).
   for (const char* search : {"3x3", "2x2"}) {
     SCOPED_TRACE(search);
-    auto r = evalNode("voronoi", {{"p", Value::vector({0.3, 0.2})}, {"jitter", Value::scalar(0)}},
+    auto r = runNode("voronoi", {{"p", Value::vector({0.3, 0.2})}, {"jitter", Value::scalar(0)}},
                       {{"animation", "static"}, {"search", search}});
     EXPECT_NEAR(r.scalar("f1"), std::sqrt(0.13), 1e-15);
     EXPECT_NEAR(r.scalar("f2"), std::sqrt(0.53), 1e-15);
     EXPECT_EQ(r["cell"][0], 0.0);
     EXPECT_EQ(r["cell"][1], 0.0);
   }
-  auto r = evalNode("voronoi", {{"p", Value::vector({-2.4, 7.9})}, {"jitter", Value::scalar(0)}, {"scale", Value::scalar(2)}},
+  auto r = runNode("voronoi", {{"p", Value::vector({-2.4, 7.9})}, {"jitter", Value::scalar(0)}, {"scale", Value::scalar(2)}},
                     {{"animation", "static"}});
   // q = (-4.8, 15.8): nearest centre (-4.5, 15.5), cell (-5, 15).
   EXPECT_NEAR(r.scalar("f1"), std::sqrt(0.09 + 0.09), 1e-12);
@@ -262,13 +262,13 @@ TEST(Voronoi, F1NeverExceedsF2) {
         ASSERT_LE(r.f1, std::sqrt(2.0) + 1e-12);  // the point's own cell is always searched
       }
   // Through the node too, with its options.
-  auto r = evalNode("voronoi", {{"p", Value::vector({3.3, -8.1})}, {"time", Value::scalar(12.5)}},
+  auto r = runNode("voronoi", {{"p", Value::vector({3.3, -8.1})}, {"time", Value::scalar(12.5)}},
                     {{"animation", "time_input"}, {"search", "2x2"}});
   EXPECT_LE(r.scalar("f1"), r.scalar("f2"));
 }
 
 TEST(Voronoi, F1CanExceedOne) {
-  auto r = evalNode("voronoi", {{"p", Value::vector({50.09375, 86.09375})}}, {{"animation", "static"}});
+  auto r = runNode("voronoi", {{"p", Value::vector({50.09375, 86.09375})}}, {{"animation", "static"}});
   EXPECT_GT(r.scalar("f1"), 1.2);
   auto b = bruteF1(50.09375, 86.09375, 1.0);
   EXPECT_NEAR(r.scalar("f1"), b.first, 1e-12);
@@ -279,7 +279,7 @@ TEST(Voronoi, AnimatedAtHugeTimeUsesTheWrappedPhase) {
   double t = 1e6, speed = 1.5;
   double phase = std::fmod(speed * t, 2 * M_PI);
   Value p = Value::vector({4.2, -1.7});
-  auto r = evalNode("voronoi", {{"p", p}}, {{"animation", "time"}, {"speed", speed}}, test::atTime(t));
+  auto r = runNode("voronoi", {{"p", p}}, {{"animation", "time"}, {"speed", speed}}, test::atTime(t));
   double best = 1e30;
   for (int dy = -1; dy <= 1; ++dy)
     for (int dx = -1; dx <= 1; ++dx) {
@@ -291,12 +291,12 @@ TEST(Voronoi, AnimatedAtHugeTimeUsesTheWrappedPhase) {
     }
   EXPECT_NEAR(r.scalar("f1"), best, 1e-9);
   // One full orbit later the pattern is the same; a second later it has moved.
-  auto r2 = evalNode("voronoi", {{"p", p}}, {{"animation", "time"}, {"speed", speed}}, test::atTime(t + 2 * M_PI / speed));
+  auto r2 = runNode("voronoi", {{"p", p}}, {{"animation", "time"}, {"speed", speed}}, test::atTime(t + 2 * M_PI / speed));
   EXPECT_NEAR(r2.scalar("f1"), r.scalar("f1"), 1e-8);
-  auto r3 = evalNode("voronoi", {{"p", p}}, {{"animation", "time"}, {"speed", speed}}, test::atTime(t + 1));
+  auto r3 = runNode("voronoi", {{"p", p}}, {{"animation", "time"}, {"speed", speed}}, test::atTime(t + 1));
   EXPECT_GT(std::fabs(r3.scalar("f1") - r.scalar("f1")), 1e-4);
   // The time input wraps the same way.
-  auto r4 = evalNode("voronoi", {{"p", p}, {"time", Value::scalar(t)}}, {{"animation", "time_input"}, {"speed", speed}});
+  auto r4 = runNode("voronoi", {{"p", p}, {"time", Value::scalar(t)}}, {{"animation", "time_input"}, {"speed", speed}});
   EXPECT_NEAR(r4.scalar("f1"), r.scalar("f1"), 1e-12);
   EXPECT_TRUE(std::isfinite(r4.scalar("f2")));
 }
@@ -342,7 +342,7 @@ const char* kNoiseGraph = R"({
 
 TEST(NoiseNodes, CompileTogetherForEveryTarget) {
   std::string messages;
-  EXPECT_TRUE(test::compileNoiseGraph(kNoiseGraph, &messages)) << messages;
+  EXPECT_TRUE(test::compileInline(kNoiseGraph, &messages)) << messages;
 }
 
 }  // namespace

@@ -8,7 +8,7 @@
 
 #include "nodes/eval_math.h"
 #include "nodes/shading_reference.h"
-#include "shading_eval.h"
+#include "node_eval.h"
 
 namespace wg {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "nodes/eval_math.h"
-#include "shading_eval.h"
+#include "node_eval.h"
 
 namespace wg {
 namespace {

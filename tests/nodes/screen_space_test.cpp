@@ -12,7 +12,7 @@
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "nodes/screen_space_reference.h"
-#include "shading_eval.h"
+#include "node_eval.h"
 
 namespace wg {
 namespace {

@@ -33,27 +33,13 @@ V3 unit(V3 a) { return a * (1.0 / std::sqrt(dot(a, a))); }
 V3 v3(const Value& v) { return {v[0], v[1], v[2]}; }
 double dist(V3 a, V3 b) { return std::sqrt(dot(a - b, a - b)); }
 
-// Evaluates one node through its eval, the way the CPU backend does: options completed
-// with defaults, unset inputs from their defaults or the environment's builtins.
+// One node through the CPU backend's evaluateNode (defaults, builtins, port types).
 std::vector<Value> evalNode(const std::string& type, const nlohmann::json& options,
                             const std::map<std::string, Value>& inputs, const EvalEnvironment& env = {}) {
   const NodeSpec* spec = defaultRegistry().find(type);
   if (!spec) throw std::runtime_error("no node " + type);
-  Op op;
-  op.spec = spec;
-  op.nodeId = "test";
-  op.options = nlohmann::json::object();
-  for (const auto& o : spec->options) op.options[o.name] = o.defaultValue;
-  for (auto it = options.begin(); it != options.end(); ++it) op.options[it.key()] = it.value();
-  std::vector<Value> in;
-  for (const auto& p : spec->inputs) {
-    auto it = inputs.find(p.name);
-    in.push_back(it != inputs.end() ? it->second : p.defaultValue ? *p.defaultValue : env.builtin(*p.defaultBuiltin));
-    op.inputTypes.push_back(p.type);
-  }
-  for (const auto& p : spec->outputs) op.outputTypes.push_back(p.type);
   static TextureCache textures;
-  return evaluateOp(op, in, env, &textures, test::sourceDir());
+  return evaluateNode(*spec, options, {inputs.begin(), inputs.end()}, env, &textures, test::sourceDir());
 }
 
 EvalEnvironment atTime(double t) {
