@@ -552,6 +552,19 @@ class Emitter {
     return shader;
   }
 
+  // The library items `body` calls, then `void main()` around it (one line per '\n').
+  void addMain(const std::function<void(std::string)>& add, const std::string& body, std::set<std::string>& functions) const {
+    addLibrary(add, body, functions);
+    add("");
+    add("void main() {");
+    for (size_t start = 0; start < body.size();) {
+      size_t eol = body.find('\n', start);
+      add(body.substr(start, eol - start));
+      start = eol + 1;
+    }
+    add("}");
+  }
+
   // Tessellating: the vertex shader only moves the mesh into world space.
   EmittedShader tessVertexShader(const StageWriter& geometry, const EmitResult& io, std::set<std::string>& functions) const {
     std::vector<std::pair<std::string, int>> out;
@@ -566,16 +579,7 @@ class Emitter {
       body += "  tc_normal = wg_safe_normalize_vec3(mat3(" + std::string(iface::kModel) + ") * " + iface::kNormalAttribute + ");\n";
     if (geometry.builtins.count(Builtin::Uv)) body += "  tc_uv = " + std::string(iface::kUvAttribute) + ";\n";
     body += "  gl_Position = vec4(tc_position, 1.0);\n";
-    addLibrary(add, body, functions);
-    add("");
-    add("void main() {");
-    size_t start = 0;
-    while (start < body.size()) {
-      size_t eol = body.find('\n', start);
-      add(body.substr(start, eol - start));
-      start = eol + 1;
-    }
-    add("}");
+    addMain(add, body, functions);
     return finish(ShaderStage::Vertex, out);
   }
 
@@ -600,16 +604,7 @@ class Emitter {
     body += "    gl_TessLevelOuter[2] = 0.5 * (f0 + f1);\n";
     body += "    gl_TessLevelInner[0] = (f0 + f1 + f2) / 3.0;\n";
     body += "  }\n";
-    addLibrary(add, body, functions);
-    add("");
-    add("void main() {");
-    size_t start = 0;
-    while (start < body.size()) {
-      size_t eol = body.find('\n', start);
-      add(body.substr(start, eol - start));
-      start = eol + 1;
-    }
-    add("}");
+    addMain(add, body, functions);
     return finish(ShaderStage::TessControl, out);
   }
 
