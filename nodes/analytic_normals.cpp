@@ -69,7 +69,7 @@ NodeSpec sineNormalsNode() {
   };
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit normal of a y-up plane tilted by the sines"),
                ports::fixed("slope", Type::Vec2, "the tilt (dn.x, dn.z) before strength and normalisation")};
-  s.options = {waves::integerOption("octaves", 3, 1, 3, "how many of the seed's three layers (quality level)")};
+  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the seed's three layers (quality level)")};
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
     int octaves = waves::integerOptionValue(ctx.option("octaves"));
@@ -144,7 +144,7 @@ NodeSpec rippleNormalsNode() {
   };
   s.outputs = {ports::fixed("normal", Type::Vec3, "the perturbed unit normal (up when it degenerates)"),
                ports::fixed("ripple", Type::Vec2, "the ripple noise r, in [-1, 1]")};
-  s.options = {waves::integerOption("octaves", 3, 1, 3, "how many of the seed's three layers (quality level)")};
+  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the seed's three layers (quality level)")};
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
     int octaves = waves::integerOptionValue(ctx.option("octaves"));

@@ -32,11 +32,7 @@ NodeSpec coastalFoamNode() {
            "texture coordinates distorted by the normal; specular *= (1 - foam)^3). The seed gives no values: the "
            "defaults here are ours. Its distance fade min(1, 4 / view depth) and light colour are left to the graph.";
   s.cost = "1 texture sample + ~15 ALU";
-  OptionSpec tex;
-  tex.name = "texture";
-  tex.kind = OptionSpec::Kind::Texture;
-  tex.defaultValue = "builtin:foam";
-  tex.doc = "the foam texture (red channel): builtin:foam or a .png path relative to the graph";
+  OptionSpec tex = ports::texture("texture", "builtin:foam", "the foam texture (red channel): builtin:foam or a .png path relative to the graph");
   s.options = {tex, ports::choice("dimming", {"cubic", "linear"}, "cubic",
                                   "specular_scale = (1 - k foam)^3 (seed 001) or 1 - k foam, clamped to [0, 1]")};
   s.inputs = {

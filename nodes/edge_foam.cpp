@@ -40,11 +40,7 @@ NodeSpec edgeFoamNode() {
       "tex * mask)); softness 0 is seed 003's step(cutoff, tex * mask).";
   s.seed = "002 (1 - smoothstep(0, 0.5, depth)), 003 (section 9: two foam layers, step(cutoff, texture * mask) * strength)";
   s.cost = "2 texture samples + ~20 ALU; the scroll offsets are two time-phase uniforms";
-  OptionSpec tex;
-  tex.name = "texture";
-  tex.kind = OptionSpec::Kind::Texture;
-  tex.defaultValue = "builtin:foam";
-  tex.doc = "the foam texture (red channel): builtin:foam or a .png path relative to the graph";
+  OptionSpec tex = ports::texture("texture", "builtin:foam", "the foam texture (red channel): builtin:foam or a .png path relative to the graph");
   s.options = {
       tex,
       ports::choice("mask", {"smooth", "linear"}, "smooth",

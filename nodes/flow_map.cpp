@@ -33,9 +33,9 @@ NodeSpec flowMapNode() {
                ports::fixed("weight_a", Type::Float, "weight of phase A, in [0, 1]"),
                ports::fixed("weight_b", Type::Float, "weight of phase B, 1 - weight_a")};
   s.options = {
-      waves::textureOption("texture", "builtin:water_normal", "the texture dragged by the flow (normal or colour map)"),
+      ports::texture("texture", "builtin:water_normal", "the texture dragged by the flow (normal or colour map)"),
       ports::choice("flow_source", {"texture", "input"}, "texture", "where the flow vector comes from"),
-      waves::textureOption("flow_texture", "builtin:dudv",
+      ports::texture("flow_texture", "builtin:dudv",
                            "the flow map (flow = rg * 2 - 1), sampled at uv, when flow_source = texture"),
   };
   s.isSource = true;

@@ -38,14 +38,7 @@ PortSpec positionPort(std::string doc) {
 }
 
 OptionSpec octavesOption() {
-  OptionSpec o;
-  o.name = "octaves";
-  o.kind = OptionSpec::Kind::Integer;
-  o.defaultValue = 4;
-  o.min = 1;
-  o.max = 8;
-  o.doc = "number of value-noise layers (quality level: each octave costs one value_noise)";
-  return o;
+  return ports::integer("octaves", 4, 1, 8, "number of value-noise layers (quality level: each octave costs one value_noise)");
 }
 
 }  // namespace

@@ -73,4 +73,25 @@ inline OptionSpec flag(std::string name, bool def, std::string doc) {
   return o;
 }
 
+// A Texture option: "builtin:<name>" or a .png path relative to the graph.
+inline OptionSpec texture(std::string name, std::string def, std::string doc) {
+  OptionSpec o;
+  o.name = std::move(name);
+  o.kind = OptionSpec::Kind::Texture;
+  o.defaultValue = std::move(def);
+  o.doc = std::move(doc);
+  return o;
+}
+// An Integer option within [min, max] (quality levels, counts).
+inline OptionSpec integer(std::string name, int def, int min, int max, std::string doc) {
+  OptionSpec o;
+  o.name = std::move(name);
+  o.kind = OptionSpec::Kind::Integer;
+  o.defaultValue = def;
+  o.min = min;
+  o.max = max;
+  o.doc = std::move(doc);
+  return o;
+}
+
 }  // namespace wg::ports

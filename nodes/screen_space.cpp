@@ -235,14 +235,7 @@ NodeSpec ssrNode() {
   s.outputs = {ports::fixed("color", Type::Vec3, "the reflection: the hit's scene colour blended with the fallback"),
                ports::fixed("confidence", Type::Float, "hit * fade, in [0, 1] (0: only the fallback)"),
                ports::fixed("uv", Type::Vec2, "screen position of the hit ((0.5, 0.5) when nothing was hit)")};
-  OptionSpec steps;
-  steps.name = "steps";
-  steps.kind = OptionSpec::Kind::Integer;
-  steps.defaultValue = 10;
-  steps.min = 1;
-  steps.max = 64;
-  steps.doc = "ray-march steps, the quality level (seed 001: 10); cost grows linearly";
-  s.options = {steps};
+  s.options = {ports::integer("steps", 10, 1, 64, "ray-march steps, the quality level (seed 001: 10); cost grows linearly")};
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"scene_depth", "scene_color"};

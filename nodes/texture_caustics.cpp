@@ -27,11 +27,7 @@ NodeSpec textureCausticsNode() {
       "a = tex(uv + m).r, b = tex(1.5 uv - m).r; caustics = intensity * clamp(1 - |a + b - 1|, 0, 1)^9.";
   s.seed = "001 (listing 14: WaterHeightTexture sampled at uv + move and 1.5 uv - move, 1 - |a + b - 1|, ^9)";
   s.cost = "2 texture samples + ~12 ALU";
-  OptionSpec tex;
-  tex.name = "texture";
-  tex.kind = OptionSpec::Kind::Texture;
-  tex.defaultValue = "builtin:height";
-  tex.doc = "the height texture sampled (red channel): builtin:height or a .png path relative to the graph";
+  OptionSpec tex = ports::texture("texture", "builtin:height", "the height texture sampled (red channel): builtin:height or a .png path relative to the graph");
   s.options = {tex};
   s.inputs = {
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition,

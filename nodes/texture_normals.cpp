@@ -70,7 +70,7 @@ NodeSpec normalMapScrollNode() {
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit world-space normal"),
                ports::fixed("tangent_normal", Type::Vec3, "the blended unit tangent-space normal, before strength")};
   s.options = {
-      waves::textureOption("texture", "builtin:water_normal", "the tangent-space normal map (rgb = n * 0.5 + 0.5)"),
+      ports::texture("texture", "builtin:water_normal", "the tangent-space normal map (rgb = n * 0.5 + 0.5)"),
       ports::choice("blend", {"add", "whiteout", "rnm"}, "add",
                     "how the layers combine: the seeds' normalize(a + b), whiteout, or reoriented normal mapping"),
   };
@@ -160,7 +160,7 @@ NodeSpec normalFromHeightNode() {
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit world-space normal"),
                ports::fixed("height", Type::Float, "the height sample at uv, in [0, 1]"),
                ports::fixed("gradient", Type::Vec2, "dh/du, dh/dv in texture units")};
-  s.options = {waves::textureOption("texture", "builtin:height", "the height texture (red channel)")};
+  s.options = {ports::texture("texture", "builtin:height", "the height texture (red channel)")};
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
@@ -230,7 +230,7 @@ NodeSpec dudvDistortionNode() {
   s.outputs = {ports::fixed("offset", Type::Vec2, "the distortion, within [-strength, strength]"),
                ports::fixed("uv", Type::Vec2, "target_uv + offset"),
                ports::fixed("move", Type::Float, "the scroll fract(time * wave_speed), in [0, 1)")};
-  s.options = {waves::textureOption("texture", "builtin:dudv", "the du/dv map (rg)")};
+  s.options = {ports::texture("texture", "builtin:dudv", "the du/dv map (rg)")};
   s.stages = kFragmentStage;  // target_uv defaults to the screen position
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {

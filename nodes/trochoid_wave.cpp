@@ -73,9 +73,9 @@ NodeSpec trochoidWaveNode() {
                ports::fixed("height", Type::Float, "the wave height h above surface_height at the hit point"),
                ports::fixed("normal", Type::Vec3, "unit normal of the wave surface at the hit point")};
   s.options = {
-      waves::integerOption("steps", 10, 1, 32, "bisection steps (quality level): each halves the position error"),
+      ports::integer("steps", 10, 1, 32, "bisection steps (quality level): each halves the position error"),
       ports::number("omega", 1.0, 0.0, 100.0, "angular speed of the phase in rad/s (seed 001 adds the time itself: 1)"),
-      waves::textureOption("texture", "builtin:height", "the height texture (red channel) of the detail"),
+      ports::texture("texture", "builtin:height", "the height texture (red channel) of the detail"),
   };
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {

@@ -1,7 +1,7 @@
 #pragma once
 // Shared helpers of the "waves" and "flow" node families (gerstner_waves, trochoid_wave,
 // sine_normals, ripple_normals, normal_map_scroll, normal_from_height, dudv_distortion,
-// flow_map): option builders the port builders lack, the double-precision time phase that
+// flow_map): reading an integer option, the double-precision time phase that
 // mirrors EmitContext::timePhase, and a tiny vec3 for the references.
 #include <cmath>
 #include <string>
@@ -12,28 +12,6 @@
 namespace wg::nodes::waves {
 
 inline constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-// A Texture option ("builtin:<name>" or a .png path relative to the graph).
-inline OptionSpec textureOption(std::string name, std::string def, std::string doc) {
-  OptionSpec o;
-  o.name = std::move(name);
-  o.kind = OptionSpec::Kind::Texture;
-  o.defaultValue = std::move(def);
-  o.doc = std::move(doc);
-  return o;
-}
-
-// An Integer option within [min, max] (quality levels, layer counts).
-inline OptionSpec integerOption(std::string name, int def, int min, int max, std::string doc) {
-  OptionSpec o;
-  o.name = std::move(name);
-  o.kind = OptionSpec::Kind::Integer;
-  o.defaultValue = def;
-  o.min = min;
-  o.max = max;
-  o.doc = std::move(doc);
-  return o;
-}
 
 inline int integerOptionValue(const nlohmann::json& v) { return static_cast<int>(std::lround(v.get<double>())); }
 
