@@ -213,6 +213,9 @@ export class WaterGraph {
       this.setModelMatrix(mesh.matrixWorld);
       renderer.getDrawingBufferSize(size);
       this.setViewportSize(size.x, size.y);
+      // three.js skips the upload when the previous draw used the same material: several
+      // meshes sharing it would all get the first one's u_model.
+      this.material.uniformsNeedUpdate = true;
     };
     return mesh;
   }
