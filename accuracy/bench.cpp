@@ -116,7 +116,7 @@ BenchResult runBench(const BenchSettings& settings) {
       auto compiled = compileGraph(g, defaultRegistry(), options, diags);
       if (!compiled) configError(settings, "family '" + name + "' level '" + it.key() + "' does not compile:" + diagText(diags));
       for (const auto& f : compiled->files)
-        if (f.name.size() > 14 && f.name.compare(f.name.size() - 14, 14, ".vk450.frag.spv") == 0)
+        if (f.name.size() > 15 && f.name.compare(f.name.size() - 15, 15, ".vk450.frag.spv") == 0)
           p.level.spirvInstructions = optimisedInstructionCount(spirvWords(f.contents));
       p.compiled = std::move(*compiled);
       levels.push_back(std::move(p));
@@ -247,7 +247,8 @@ std::string writeBenchPlot(const BenchResult& r, const std::string& png) {
       d << "# " << f << "\n";
       for (const auto& l : r.levels)
         if (l.family == f)
-          d << l.ratio << " " << std::max(l.meanError, floor) << " \"" << l.level << "\" " << (l.pareto ? 1 : 0) << "\n";
+          d << l.ratio << " " << std::max(l.meanError, floor) << " \"" << (l.reference ? "" : l.level) << "\" "
+            << (l.pareto ? 1 : 0) << "\n";
       d << "\n\n";
     }
   }
@@ -258,14 +259,17 @@ std::string writeBenchPlot(const BenchResult& r, const std::string& png) {
     s << "set title 'watergraph: cost against error (" << r.settings.width << "x" << r.settings.height << ", "
       << targetName(r.settings.target) << ", llvmpipe)'\n";
     s << "set xlabel 'cost: frame time / pass-through frame time (same run)'\n";
-    s << "set ylabel 'mean abs error vs the reference level (reference plotted at 1e-6)'\n";
+    s << "set ylabel 'mean abs error vs the reference level (references at 1e-6)'\n";
+    s << "set label 1 'ringed and dashed: Pareto front of each family' at graph 0.02, graph 0.97 font 'sans,9'\n";
     s << "set logscale y\nset format y '10^{%L}'\nset grid\nset key outside right top\n";
     s << "plot ";
     for (size_t i = 0; i < families.size(); ++i) {
       std::string idx = std::to_string(i);
       s << (i ? ", \\\n     " : "") << "'" << dataPath.string() << "' index " << idx
         << " using 1:2 with points pt 7 ps 1.3 lc " << (i + 1) << " title '" << families[i] << "'";
-      s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) smooth unique with lines lw 2 lc " << (i + 1)
+      s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) with points pt 6 ps 2.6 lw 2 lc " << (i + 1)
+        << " notitle";
+      s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) smooth unique with lines lw 1.5 dt 2 lc " << (i + 1)
         << " notitle";
       s << ", '' index " << idx << " using 1:2:3 with labels offset 0.8,0.6 left font 'sans,8' tc lt " << (i + 1)
         << " notitle";

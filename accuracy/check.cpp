@@ -110,6 +110,8 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
     settings.customCamera = view.camera;
     settings.scene = view.scene;
     settings.floatColor = true;
+    settings.environmentSize = 32;  // the sky cube map: small frames need no more
+    settings.waterGridQuads = 64;
     rt::Renderer renderer(result.manifest, rt::waterShaderSources(result, target), settings, es, rt::textureOrigins(result));
     renderer.renderFrame();
     rt::Image img = renderer.readRgba32f();

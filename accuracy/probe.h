@@ -4,7 +4,7 @@
 // A case passes when both results are finite, every component's error is within the
 // tolerance (|gpu - ref| <= tol * max(1, |ref|)) and, if the case gives a range, both lie
 // in it. The tolerance is the case's, else the file's, else the largest of the probed
-// ops' documented node tolerances.
+// ops' documented node tolerances (their relaxedTolerance for a relaxed case).
 #include <array>
 #include <optional>
 #include <string>
@@ -52,6 +52,9 @@ struct ProbeReport {
 // problems; throws rt::RuntimeError for driver problems.
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
                                       Target target, Diagnostics& diags);
+
+// x in [lo, hi] give or take tolerance * max(1, |bound|).
+bool withinRange(double x, const std::pair<double, double>& range, double tolerance);
 
 std::string formatProbeText(const ProbeReport& report);
 nlohmann::json probeJson(const ProbeReport& report);

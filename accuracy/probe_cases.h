@@ -32,6 +32,9 @@ struct ProbeCase {
   nlohmann::json options = nlohmann::json::object();  // node type -> options for it
   std::map<std::string, std::pair<double, double>> ranges;  // "type.output" -> [lo, hi]
   std::vector<std::string> nodes;  // the suite runs the case only on these types (empty: all)
+  // A hard input for float32: an input, parameter or position/uv/time builtin it sets
+  // reaches 1e4 in magnitude, or "ill_conditioned": true. Nodes' relaxedTolerance applies.
+  bool relaxed = false;
 };
 
 struct ProbeCaseFile {
@@ -53,6 +56,9 @@ std::optional<ProbeCaseFile> loadProbeCases(const std::string& path, Diagnostics
 // infinite: the limit matrix), computed in double.
 Value lookAtMatrix(const Value& eye, const Value& target);
 Value perspectiveMatrix(double fovYDegrees, double aspect, double nearPlane, double farPlane);
+
+// Whether a value reaches the magnitude where float32 phases lose precision (1e4).
+bool isLargeInput(const Value& v);
 
 // A float32 rounding of every component (infinities stay).
 Value toFloat32(const Value& v);

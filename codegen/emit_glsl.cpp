@@ -548,6 +548,11 @@ class Emitter {
     if (style_.precision) {
       add("precision highp float;");
       add("precision highp int;");
+      // Samplers default to lowp, and a sampler passed to a library function takes the
+      // default: llvmpipe then returns half floats (0.6 reads 0.5996) and quantises 8-bit
+      // texels to n/256. The hard-case probe found both.
+      add("precision highp sampler2D;");
+      add("precision highp samplerCube;");
     }
     add("");
   }

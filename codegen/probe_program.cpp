@@ -45,6 +45,13 @@ std::optional<Program> buildProbeProgram(const Graph& graph, const Registry& reg
                   output.node);
       return std::nullopt;
     }
+    if (op.outputTypes[static_cast<size_t>(port)] == Type::Invalid) {
+      diags.error(DiagCode::UnknownOutputPort, node ? node->where : SourceRef{graph.file, 1, 1},
+                  "node '" + output.node + "' (" + op.spec->type + ") has no output '" + op.spec->outputs[static_cast<size_t>(port)].name +
+                      "' for its input types",
+                  output.node);
+      return std::nullopt;
+    }
     ProgramOutput out;
     out.slot = OutputSlot::FragmentColor;
     out.value = ValueRef::op(found, port);

@@ -1,6 +1,9 @@
 // The bench's mechanics on one small family (not its timings, which are benchmarks): every
 // level measured, the reference has zero error, the others' error is what the images say,
 // the Pareto front is marked and the table lists every level.
+#include <cmath>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "accuracy/bench.h"

@@ -2,6 +2,9 @@
 // as they arrive), both targets, at 160x90: no NaN or Inf pixel anywhere in the sweep;
 // graphs with a full CPU reference agree with it on the sampled water pixels. The CLI's
 // exit status: 0 for the examples, 1 for a graph that renders NaN.
+#include <cmath>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "accuracy/check.h"

@@ -1,6 +1,9 @@
 // watergraph probe: the cases file (errors at file:line:col), the probe on every example
 // graph on both targets, and a probe that must fail (a division by zero gives Inf on the
 // GPU and in the reference, and the report says so).
+#include <cmath>
+#include <filesystem>
+
 #include <gtest/gtest.h>
 
 #include "accuracy/node_probe.h"
