@@ -110,6 +110,9 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
         for (const auto& q : graph.parameters) names.push_back(q.name);
         diags.error(DiagCode::InvalidProbeCases, c.where,
                     "case '" + c.name + "' sets parameter '" + name + "', which " + graph.file + " does not declare");
+      } else if (p->isStatic) {
+        diags.error(DiagCode::InvalidProbeCases, c.where,
+                    "case '" + c.name + "' sets parameter '" + name + "', which is static (compiled into the shader)");
       } else if (value.type != p->type && value.type != Type::Float) {
         diags.error(DiagCode::InvalidProbeCases, c.where,
                     "case '" + c.name + "' gives parameter '" + name + "' a " + std::string(typeName(value.type)) +

@@ -108,6 +108,15 @@ TEST_P(ProbeOnGpu, UnknownParameterInACaseIsAnError) {
       << messages(diags);
 }
 
+TEST_P(ProbeOnGpu, AStaticParameterCannotBeSetByACase) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/shelf.json"), diags);
+  auto cases = parseProbeCases(R"({"cases": [{"name": "s", "parameters": {"slope": 0.5}}]})", "c.json", diags);
+  ASSERT_TRUE(graph && cases) << messages(diags);
+  EXPECT_FALSE(probeGraph(*graph, {}, *cases, GetParam(), diags));
+  EXPECT_NE(messages(diags).find("which is static"), std::string::npos) << messages(diags);
+}
+
 TEST_P(ProbeOnGpu, ANodeOutputCanBeProbedAndUnknownPortsAreNamed) {
   Diagnostics diags;
   auto graph = loadGraphFile(test::sourcePath("graphs/lake.json"), diags);
