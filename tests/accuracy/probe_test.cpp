@@ -156,6 +156,16 @@ TEST(ProbeCli, PrintsGpuReferenceErrorsAndExitsZeroOnTheExampleCases) {
     EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
 }
 
+TEST(ProbeCli, ANodeAloneWithTheSuiteCases) {
+  int rc = 0;
+  std::string out = wg("probe --node pow --cases " + test::shellQuote(test::sourcePath("tests/hardcases/suite.json")), &rc);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("output pow.out"), std::string::npos) << out;
+  EXPECT_NE(out.find("ok    pow_zero_negative_exponent"), std::string::npos) << out;
+  out = wg("probe --node no_such_node --cases " + test::shellQuote(test::sourcePath("tests/hardcases/suite.json")), &rc);
+  EXPECT_EQ(rc, 2) << out;
+}
+
 TEST(ProbeCli, JsonOutputAndExitOneOnInfinity) {
   std::string dir = test::makeTempDir("wg_probe");
   test::writeFile(dir + "/d.json", R"({"version": 1, "name": "d", "parameters": {"b": {"type": "float", "default": 1}},
