@@ -36,6 +36,10 @@ int runBenchCommand(const BenchArgs& args) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT, each side 8..9999 (got '" << args.size << "')\n";
     return kExitUsageOrIo;
   }
+  if (!std::ifstream(args.config)) {
+    std::cerr << args.config << ": error: [WG050] cannot read the bench configuration\n";
+    return kExitUsageOrIo;
+  }
   accuracy::BenchSettings s;
   s.configFile = args.config;
   s.width = std::stoi(m[1]);
