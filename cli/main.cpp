@@ -21,6 +21,9 @@ int main(int argc, char** argv) {
   Runner fmt = addFmtCommand(app, global);
   Runner render = addRenderCommand(app, global);
   Runner schema = addSchemaCommand(app, global);
+  Runner probe = addProbeCommand(app, global);
+  Runner check = addCheckCommand(app, global);
+  Runner bench = addBenchCommand(app, global);
 
   try {
     app.parse(argc, argv);
@@ -35,6 +38,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("fmt")) return fmt();
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("schema")) return schema();
+    if (app.got_subcommand("probe")) return probe();
+    if (app.got_subcommand("check")) return check();
+    if (app.got_subcommand("bench")) return bench();
   } catch (const std::exception& e) {
     // A bug, not a graph problem: say so plainly rather than crash.
     std::cerr << "watergraph: internal error: " << e.what() << "\n";

@@ -86,7 +86,8 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   bool ok = true;
   std::vector<std::pair<Target, EmitResult>> emitted;
   for (Target target : options.targets) {
-    EmitResult er = emitProgram(*program, target, sourceName.empty() ? graph.name : sourceName, options.tessellation);
+    EmitResult er = emitProgram(*program, target, sourceName.empty() ? graph.name : sourceName, EmitMode::Shader,
+                                options.tessellation);
     std::vector<ShaderSource> sources;
     for (const auto& sh : er.shaders)
       sources.push_back({sh.stage, base + "." + std::string(targetName(target)) + "." + std::string(stageExtension(sh.stage)), sh.text});

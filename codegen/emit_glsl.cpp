@@ -74,6 +74,13 @@ const BuiltinUniform kNearFar{iface::kCameraNearFar, Type::Vec2, "camera_near_fa
 const BuiltinUniform kView{iface::kView, Type::Mat4, "view"};
 const BuiltinUniform kProjection{iface::kProjection, Type::Mat4, "projection"};
 const BuiltinUniform kSun{iface::kSunDirection, Type::Vec3, "sun_direction"};
+// Probe mode: the per-pixel builtins become uniforms set from each case.
+const BuiltinUniform kProbeUv{"u_probe_uv", Type::Vec2, "uv"};
+const BuiltinUniform kProbeWorldPosition{"u_probe_world_position", Type::Vec3, "world_position"};
+const BuiltinUniform kProbeNormal{"u_probe_normal", Type::Vec3, "normal"};
+const BuiltinUniform kProbeViewDirection{"u_probe_view_direction", Type::Vec3, "view_direction"};
+const BuiltinUniform kProbeScreenUv{"u_probe_screen_uv", Type::Vec2, "screen_uv"};
+const BuiltinUniform kProbeFragDepth{"u_probe_frag_depth", Type::Float, "frag_depth"};
 
 // One stage's body being written: lines with the op that wrote each, and what it used.
 struct StageWriter {
@@ -122,8 +129,8 @@ class OpEmitContext final : public EmitContext {
 
 class Emitter {
  public:
-  Emitter(const Program& p, Target t, std::string sourceName, bool allowTessellation)
-      : program_(p), target_(t), style_(styleOf(t)), sourceName_(std::move(sourceName)) {
+  Emitter(const Program& p, Target t, std::string sourceName, EmitMode mode, bool allowTessellation)
+      : program_(p), target_(t), style_(styleOf(t)), sourceName_(std::move(sourceName)), probe_(mode == EmitMode::Probe) {
     for (size_t i = 0; i < p.ops.size(); ++i) opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
     std::set<std::string> taken;
     for (const auto& param : p.parameters) {
@@ -133,14 +140,14 @@ class Emitter {
       paramNames_.push_back(name);
     }
     // Tessellation: asked for by a vertex-stage node; GLSL ES 3.00 has no such stages.
-    if (t != Target::Es300 && allowTessellation)
+    if (t != Target::Es300 && !probe_ && allowTessellation)
       for (const auto& op : p.ops)
         if ((op.stage & kVertexStage) && op.spec->tessellation && !tess_)
           tess_ = op.spec->tessellation(op.options);
     // Deferred water: an op reads the "underwater" resource, so the fragment shader runs as
     // a full-screen pass that takes the surface builtins from the water G-buffer.
     for (const auto& op : p.ops)
-      for (const auto& r : op.spec->resources) deferred_ = deferred_ || r == "underwater";
+      for (const auto& r : op.spec->resources) deferred_ = !probe_ && (deferred_ || r == "underwater");
     for (size_t k = 0; k < p.varyings.size(); ++k) {
       const ValueRef& v = p.varyings[k];
       const Op& op = p.ops[static_cast<size_t>(v.index)];
@@ -150,6 +157,7 @@ class Emitter {
   }
 
   EmitResult run() {
+    if (probe_) return runProbe();
     StageWriter frag;
     frag.stage = kFragmentStage;
     emitOps(frag);
@@ -242,6 +250,41 @@ class Emitter {
     return result;
   }
 
+  // Probe mode: one fragment shader, every op in it, the first output padded into o_color.
+  EmitResult runProbe() {
+    StageWriter frag;
+    frag.stage = kFragmentStage;
+    emitOps(frag);
+    if (program_.outputs.empty()) throw std::logic_error("emit: a probe program needs an output");
+    const ProgramOutput& out = program_.outputs.front();
+    std::string value = valueExpr(frag, out.value, out.type);
+    const char* pad[] = {"", ", 0.0, 0.0, 0.0", ", 0.0, 0.0", ", 0.0", ""};
+    int n = componentCount(out.type);
+    if (n < 1 || n > 4) throw std::logic_error("emit: a probe output must be a float or a vector");
+    frag.line(std::string(iface::kColorOutput) + " = vec4(" + value + pad[n] + ");", -1);
+    EmitResult result;
+    for (const BuiltinUniform* u : {&kView, &kProjection, &kCamera, &kNearFar, &kTime, &kViewport, &kProbeUv,
+                                    &kProbeWorldPosition, &kProbeNormal, &kProbeViewDirection, &kProbeScreenUv,
+                                    &kProbeFragDepth})
+      if (frag.builtinUniforms.count(u->name)) result.uniforms.push_back({u->name, u->type, -1, u->meaning, kFragmentStage});
+    result.uniforms.insert(result.uniforms.end(), phases_.begin(), phases_.end());
+    for (size_t i = 0; i < program_.parameters.size(); ++i)
+      if (frag.parameters.count(static_cast<int>(i)))
+        result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", kFragmentStage});
+    std::stable_sort(sceneTextures_.begin(), sceneTextures_.end(), [](const TextureInfo& a, const TextureInfo& b) {
+      return resourceRank(a.resource) < resourceRank(b.resource);
+    });
+    result.textures = textures_;
+    result.textures.insert(result.textures.end(), sceneTextures_.begin(), sceneTextures_.end());
+    for (size_t i = 0; i < result.textures.size(); ++i)
+      result.textures[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
+    std::set<std::string> functions;
+    result.shaders.push_back(assemble(ShaderStage::Fragment, frag, result, functions));
+    for (const auto& item : GlslLibrary::builtin().items())
+      if (functions.count(item.name)) result.functions.push_back(item.name);
+    return result;
+  }
+
   // --- used by OpEmitContext ---
   std::string valueExpr(StageWriter& w, const ValueRef& r, Type want) {
     std::string e;
@@ -269,6 +312,24 @@ class Emitter {
 
   std::string builtinExpr(StageWriter& w, Builtin b) {
     w.builtins.insert(b);
+    if (probe_) {
+      const BuiltinUniform* u = nullptr;
+      switch (b) {
+        case Builtin::Uv: u = &kProbeUv; break;
+        case Builtin::WorldPosition: u = &kProbeWorldPosition; break;
+        case Builtin::Normal: u = &kProbeNormal; break;
+        case Builtin::ViewDirection: u = &kProbeViewDirection; break;
+        case Builtin::ScreenUv: u = &kProbeScreenUv; break;
+        case Builtin::FragDepth: u = &kProbeFragDepth; break;
+        case Builtin::CameraPosition: u = &kCamera; break;
+        case Builtin::Time: u = &kTime; break;
+        case Builtin::CameraNearFar: u = &kNearFar; break;
+        case Builtin::View: u = &kView; break;
+        case Builtin::Projection: u = &kProjection; break;
+      }
+      w.builtinUniforms.insert(u->name);
+      return u->name;
+    }
     bool vertex = w.stage == kVertexStage;
     switch (b) {
       case Builtin::Uv: return vertex ? (tess_ ? "b_uv" : iface::kUvAttribute) : "v_uv";
@@ -428,6 +489,7 @@ class Emitter {
   // Builtin locals at the top of main, in a fixed order, for what the body used.
   std::vector<std::string> builtinLocals(StageWriter& w) {
     std::vector<std::string> lines;
+    if (probe_) return lines;  // every builtin is a uniform
     bool vertex = w.stage == kVertexStage;
     if (vertex && tess_) {
       // The evaluation stage: the patch's corners, interpolated at gl_TessCoord.
@@ -488,6 +550,11 @@ class Emitter {
     if (style_.precision) {
       add("precision highp float;");
       add("precision highp int;");
+      // Samplers default to lowp, and a sampler passed to a library function takes the
+      // default: llvmpipe then returns half floats (0.6 reads 0.5996) and quantises 8-bit
+      // texels to n/256. The hard-case probe found both.
+      add("precision highp sampler2D;");
+      add("precision highp samplerCube;");
     }
     add("");
   }
@@ -674,6 +741,7 @@ class Emitter {
   std::vector<std::string> opNames_;
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
+  bool probe_ = false;                        // EmitMode::Probe
   std::optional<TessellationSettings> tess_;  // tessellated geometry stage
   bool deferred_ = false;                     // full-screen fragment stage (underwater)
   std::vector<UniformInfo> phases_;         // time phases, by first use
@@ -731,9 +799,9 @@ std::string sanitiseIdentifier(std::string_view id) {
   return out.empty() ? "x" : out;
 }
 
-EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName,
+EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName, EmitMode mode,
                        bool allowTessellation) {
-  return Emitter(program, target, sourceName, allowTessellation).run();
+  return Emitter(program, target, sourceName, mode, allowTessellation).run();
 }
 
 }  // namespace wg

@@ -59,10 +59,19 @@ struct EmitResult {
   std::optional<TessellationSettings> tessellation;
 };
 
+// Shader: the vertex and fragment shaders of a drawn surface (or the deferred pass).
+// Probe: one fragment shader for `watergraph probe`, run on a full-screen triangle the
+// runtime supplies. Every op runs in it; the surface builtins (uv, world position, normal,
+// view direction, screen uv, fragment depth) are uniforms named "u_probe_<builtin>"
+// (UniformInfo::builtin says which), taken verbatim from the case, so a case can hand a
+// node any value, a zero-length normal included; the program's first output, padded with
+// zeros to a vec4, is o_color.
+enum class EmitMode { Shader, Probe };
+
 // `allowTessellation` false draws the mesh as it is even where the target could
 // tessellate (for HLSL through SPIRV-Cross, which has no HLSL tessellation stages).
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName,
-                       bool allowTessellation = true);
+                       EmitMode mode = EmitMode::Shader, bool allowTessellation = true);
 
 // A graph identifier made safe as part of a GLSL name: [A-Za-z0-9_] only, no "__",
 // at most 24 characters.

@@ -62,6 +62,7 @@ nlohmann::json nodesJson(const Registry& registry) {
     j["cost"] = s->cost;
     j["stages"] = stagesText(s->stages);
     j["tolerance"] = s->tolerance;
+    if (s->relaxedTolerance > 0) j["relaxed_tolerance"] = {{"tolerance", s->relaxedTolerance}, {"when", s->relaxedWhen}};
     auto ports = [](const std::vector<PortSpec>& ps, bool input) {
       nlohmann::json a = nlohmann::json::array();
       for (const auto& p : ps) {
@@ -94,7 +95,9 @@ std::string nodesMarkdown(const Registry& registry) {
   md += "Generated from the node registry by `watergraph nodes --markdown`; do not edit by hand.\n";
   md += "Every node has GLSL in `nodes/glsl/`, a double-precision reference (`eval`) that follows GLSL\n";
   md += "semantics, and the hard cases listed with it. `tolerance` is the largest absolute difference\n";
-  md += "allowed between the float32 GPU result and the reference.\n\n";
+  md += "allowed between the float32 GPU result and the reference (|gpu - ref| <= tolerance * max(1, |ref|));\n";
+  md += "`relaxed tolerance` is the bound where float32 cannot carry that precision (inputs of 1e4 and more,\n";
+  md += "ill-conditioned points). `watergraph probe` and the hard-case suite check both (docs/accuracy.md).\n\n";
   for (const auto& [family, specs] : byFamily) {
     md += "- **" + family + "**:";
     for (const NodeSpec* s : specs) md += " [`" + s->type + "`](#" + s->type + ")";
@@ -109,6 +112,8 @@ std::string nodesMarkdown(const Registry& registry) {
       md += "- stages: " + stagesText(s->stages) + "\n";
       md += "- cost: " + s->cost + "\n";
       md += "- tolerance: " + formatNumber(s->tolerance) + "\n";
+      if (s->relaxedTolerance > 0)
+        md += "- relaxed tolerance: " + formatNumber(s->relaxedTolerance) + " " + s->relaxedWhen + "\n";
       if (!s->resources.empty()) {
         md += "- scene resources:";
         for (const auto& r : s->resources) md += " `" + r + "`";

@@ -18,6 +18,7 @@ D3 unpack(const Value& texel) { return {texel[0] * 2.0 - 1.0, texel[1] * 2.0 - 1
 
 D3 tangentToWorld(const D3& ts, const EvalContext& ctx) {
   D3 t = waves::d3(ctx.input("tangent")), b = waves::d3(ctx.input("binormal")), n = waves::d3(ctx.input("normal"));
+  if (waves::dot(n, n) < 1e-12) n = {0, 1, 0};  // as the GLSL: a zero normal carries no direction
   return waves::unitOr(t * ts.x + b * ts.y + n * ts.z, {0, 1, 0});
 }
 
@@ -108,7 +109,11 @@ NodeSpec normalMapScrollNode() {
     ctx.output(1, waves::value(n));
   };
   // 8-bit texels interpolated in float; fract(speed * t) at t = 1e6 s carries ~1e-3 texture units in float32.
-  s.tolerance = 1e-3;
+  // GL_LINEAR on 8-bit textures: hardware filter weights have 8 bits (llvmpipe), so each
+  // of the two scrolled samples differs from exact bilinear by up to 1/255.
+  s.tolerance = 1e-2;
+  s.relaxedTolerance = 3e-2;
+  s.relaxedWhen = "for uv or time inputs of 1e4 and more: the scrolled coordinates lose float32 digits";
   s.hardCases = {
       {"huge time 1e6 s (as a time input)",
        {{"time", Value::scalar(1e6)}},
@@ -144,12 +149,12 @@ NodeSpec normalFromHeightNode() {
   s.family = "waves";
   s.summary = "Normal of a height texture by central differences, taken to world space.";
   s.formula =
-      "e = max(offset, 1e-6); g = (h(uv + (e,0)) - h(uv - (e,0)), h(uv + (0,e)) - h(uv - (0,e))) / (2 e) (red "
-      "channel); "
+      "e = max(offset, 1/1024); c = fract(uv); g = (h(c + (e,0)) - h(c - (e,0)), h(c + (0,e)) - h(c - (0,e))) / (2 e) "
+      "(red channel, bilinear as GL_LINEAR + GL_REPEAT, computed from four texelFetch in float); "
       "n_ts = (-strength g.x, -strength g.y, 1); normal = normalize(T n_ts.x + B n_ts.y + N n_ts.z) (up if "
       "degenerate).";
   s.seed = "001 (wave normals from four height-texture samples, Height1 - Height2 and Height3 - Height4)";
-  s.cost = "four texture fetches (five with the height output), ~15 ALU";
+  s.cost = "sixteen texelFetch (twenty with the height output), ~60 ALU: filtering in float keeps the gradient exact";
   s.inputs = {
       ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "texture coordinate"),
       ports::fixed("offset", Type::Float, Value::scalar(1.0 / 256.0),
@@ -171,23 +176,26 @@ NodeSpec normalFromHeightNode() {
     ctx.output(
         0, EmitContext::call("wg_waves_tangent_to_world", {"vec3(-" + k + " * " + g + ", 1.0)", ctx.input("tangent"),
                                                            ctx.input("binormal"), ctx.input("normal")}));
-    ctx.output(1, "texture(" + tex + ", " + uv + ").x");
+    ctx.output(1, EmitContext::call("wg_bilinear_red", {tex, "fract(" + uv + ")"}));
     ctx.output(2, g);
   };
   s.eval = [](EvalContext& ctx) {
     const Value& uv = ctx.input("uv");
-    double e = std::max(ctx.scalar("offset"), 1e-6);
-    auto h = [&](double du, double dv) { return ctx.sampleTexture("texture", uv[0] + du, uv[1] + dv)[0]; };
+    double e = std::max(ctx.scalar("offset"), 1.0 / 1024.0);
+    // Around fract(uv), as the GLSL: the texture repeats.
+    double cu = uv[0] - std::floor(uv[0]), cv = uv[1] - std::floor(uv[1]);
+    auto h = [&](double du, double dv) { return ctx.sampleTexture("texture", cu + du, cv + dv)[0]; };
     double gx = (h(e, 0) - h(-e, 0)) * (0.5 / e), gy = (h(0, e) - h(0, -e)) * (0.5 / e);
     double k = ctx.scalar("strength");
     ctx.output(0, waves::value(tangentToWorld({-k * gx, -k * gy, 1.0}, ctx)));
     ctx.output(1, Value::scalar(h(0, 0)));
     ctx.output(2, Value::vector({gx, gy}));
   };
-  // Differences of 8-bit texels divided by 2e amplify float32 rounding of the coordinates.
+  // Differences divided by 2e amplify float32 rounding of the coordinates (filtering in
+  // float: hardware filtering's 8-bit weights gave gradient errors of 0.4 on llvmpipe).
   s.tolerance = 1e-3;
   s.hardCases = {
-      {"zero offset", {{"offset", Value::scalar(0)}}, {}, "finite: the offset is floored at 1e-6", -1, 1, "normal"},
+      {"zero offset", {{"offset", Value::scalar(0)}}, {}, "finite: the offset is floored at 1/1024", -1, 1, "normal"},
       {"huge coordinates",
        {{"uv", Value::vector({1e5, -1e5})}},
        {},

@@ -545,7 +545,7 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   Impl& r = *impl_;
   r.settings = settings;
   r.es = es;
-  auto cam = cameraPreset(settings.camera);
+  auto cam = settings.customCamera ? settings.customCamera : cameraPreset(settings.camera);
   if (!cam) throw RuntimeError(RuntimeError::Kind::Manifest, "unknown camera preset '" + settings.camera + "'");
   r.camera = *cam;
   r.aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
@@ -621,6 +621,21 @@ Renderer::~Renderer() = default;
 double Renderer::renderFrame() { return impl_->renderOneFrame(); }
 Image Renderer::readRgba8() const { return impl_->read(false); }
 Image Renderer::readRgba32f() const { return impl_->read(true); }
+
+std::vector<float> Renderer::readDepth() const {
+  if (impl_->es) throw RuntimeError(RuntimeError::Kind::Manifest, "OpenGL ES cannot read the depth buffer back");
+  const int w = impl_->settings.width, h = impl_->settings.height;
+  std::vector<float> depth(static_cast<size_t>(w) * static_cast<size_t>(h));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, impl_->frame().fbo.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  checkGl("reading the depth buffer back");
+  for (int y = 0; y < h / 2; ++y)  // GL rows are bottom-up
+    std::swap_ranges(depth.begin() + static_cast<ptrdiff_t>(y) * w, depth.begin() + static_cast<ptrdiff_t>(y + 1) * w,
+                     depth.begin() + static_cast<ptrdiff_t>(h - 1 - y) * w);
+  return depth;
+}
 const PassPlan& Renderer::plan() const { return impl_->plan; }
 int Renderer::createdTargetCount() const { return static_cast<int>(impl_->targets.size()); }
 size_t Renderer::createdTargetBytes() const {

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,7 @@ namespace wg::rt {
 struct RenderSettings {
   int width = 1280, height = 720;
   std::string camera = "above";  // a camera preset name (scene.h)
+  std::optional<Camera> customCamera;  // when set, used instead of the preset (accuracy sweeps)
   SceneOptions scene;
   bool floatColor = false;       // RGBA32F colour targets instead of RGBA8
   int environmentSize = 128;     // cube map face size for environment_cubemap
@@ -65,6 +67,9 @@ class Renderer {
 
   Image readRgba8() const;
   Image readRgba32f() const;  // exact only when settings.floatColor
+  // The frame's depth-buffer values, rows top to bottom. Desktop GL only (OpenGL ES cannot
+  // read depth back): throws RuntimeError(Kind::Manifest) on ES.
+  std::vector<float> readDepth() const;
 
   const PassPlan& plan() const;
   int createdTargetCount() const;     // GL render targets actually allocated

@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libbenchmark-dev xvfb xauth
   python3-jsonschema  # tests/ecosystem: a real JSON Schema validator for docs/watergraph.schema.json
   chromium  # tests/ecosystem: renders clients/three/ (three.js, WebGL 2) headless for the comparison
+  gnuplot-nox  # watergraph bench --plot: the cost-against-error plot
 )
 
 missing=()

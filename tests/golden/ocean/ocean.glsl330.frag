@@ -213,9 +213,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
 }
 
 // A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates.
+// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
+// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
+// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
 vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + n * ts.z, vec3(0.0, 1.0, 0.0));
+  vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
+  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {

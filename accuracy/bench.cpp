@@ -1,0 +1,287 @@
+#include "accuracy/bench.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <stdexcept>
+
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
+
+#include "accuracy/spirv_count.h"
+#include "codegen/compile.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "runtime/egl_context.h"
+#include "runtime/preview.h"
+#include "runtime/renderer.h"
+
+namespace wg::accuracy {
+namespace {
+
+using ordered = nlohmann::ordered_json;
+
+[[noreturn]] void configError(const BenchSettings& s, const std::string& m) {
+  throw std::runtime_error(s.configFile + ": error: " + m);
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string diagText(const Diagnostics& d) {
+  std::string s;
+  for (const auto& x : d.all()) s += "\n  " + formatText(x);
+  return s;
+}
+
+// The graph of a family with one level's option values applied.
+Graph withOptions(const Graph& base, const ordered& overrides, const BenchSettings& s, const std::string& where) {
+  Graph g = base;
+  for (auto it = overrides.begin(); it != overrides.end(); ++it) {
+    Node* node = nullptr;
+    for (auto& n : g.nodes)
+      if (n.id == it.key()) node = &n;
+    if (!node) configError(s, where + ": no node '" + it.key() + "' in the graph");
+    for (auto o = it.value().begin(); o != it.value().end(); ++o) {
+      nlohmann::json value = nlohmann::json::parse(o.value().dump());
+      bool found = false;
+      for (auto& opt : node->options)
+        if (opt.name == o.key()) opt.value = value, found = true;
+      if (!found) node->options.push_back({o.key(), value, {}, {}});
+    }
+  }
+  return g;
+}
+
+struct Prepared {
+  BenchLevel level;
+  CompileResult compiled;
+  std::unique_ptr<rt::Renderer> renderer;
+  std::vector<double> ms, ratios;
+  rt::Image image;
+};
+
+}  // namespace
+
+BenchResult runBench(const BenchSettings& settings) {
+  std::ifstream in(settings.configFile);
+  if (!in) configError(settings, "cannot read the file");
+  ordered config;
+  try {
+    config = ordered::parse(in);
+  } catch (const std::exception& e) {
+    configError(settings, std::string("not valid JSON: ") + e.what());
+  }
+  if (!config.contains("families") || !config["families"].is_array()) configError(settings, "needs \"families\": [...]");
+  Target target = settings.target;
+  std::vector<Prepared> levels;
+  for (const auto& fam : config["families"]) {
+    std::string name = fam.value("name", "");
+    if (!settings.families.empty() &&
+        std::find(settings.families.begin(), settings.families.end(), name) == settings.families.end())
+      continue;
+    Diagnostics diags;
+    std::optional<Graph> base;
+    if (fam.contains("graph_file"))
+      base = loadGraphFile((std::filesystem::path(settings.root) / fam["graph_file"].get<std::string>()).string(), diags);
+    else if (fam.contains("graph"))
+      base = parseGraph(fam["graph"].dump(), settings.configFile + " (family '" + name + "')", diags);
+    else
+      configError(settings, "family '" + name + "' has neither \"graph\" nor \"graph_file\"");
+    if (!base) configError(settings, "family '" + name + "': the graph does not load:" + diagText(diags));
+    if (!fam.contains("levels") || !fam["levels"].is_object()) configError(settings, "family '" + name + "' needs \"levels\"");
+    std::string reference = fam.value("reference", "");
+    if (!fam["levels"].contains(reference)) configError(settings, "family '" + name + "': reference level '" + reference + "' is not among its levels");
+    for (auto it = fam["levels"].begin(); it != fam["levels"].end(); ++it) {
+      Prepared p;
+      p.level.family = name;
+      p.level.level = it.key();
+      p.level.node = fam.value("node", "");
+      p.level.camera = fam.value("camera", "above");
+      p.level.reference = it.key() == reference;
+      Graph g = withOptions(*base, it.value(), settings, "family '" + name + "' level '" + it.key() + "'");
+      CompileOptions options;
+      options.targets = {target, Target::Vk450};
+      auto compiled = compileGraph(g, defaultRegistry(), options, diags);
+      if (!compiled) configError(settings, "family '" + name + "' level '" + it.key() + "' does not compile:" + diagText(diags));
+      for (const auto& f : compiled->files)
+        if (f.name.size() > 15 && f.name.compare(f.name.size() - 15, 15, ".vk450.frag.spv") == 0)
+          p.level.spirvInstructions = optimisedInstructionCount(spirvWords(f.contents));
+      p.compiled = std::move(*compiled);
+      levels.push_back(std::move(p));
+    }
+  }
+  if (levels.empty()) configError(settings, "no family to run");
+
+  // The pass-through: the interpolated normal as colour, per camera used.
+  Diagnostics diags;
+  auto passGraph = parseGraph(R"({"version": 1, "name": "pass_through", "nodes": [{"id": "n", "type": "normal"}],
+    "outputs": {"fragment": {"color": "n.out"}}})", "pass-through", diags);
+  CompileOptions passOptions;
+  passOptions.targets = {target};
+  auto passCompiled = compileGraph(*passGraph, defaultRegistry(), passOptions, diags);
+  if (!passCompiled) throw std::logic_error("the pass-through graph does not compile:" + diagText(diags));
+
+  auto context = rt::EglContext::create(rt::apiFor(target));
+  BenchResult result;
+  result.settings = settings;
+  result.renderer = context->renderer();
+  auto makeRenderer = [&](const CompileResult& c, const std::string& camera) {
+    rt::RenderSettings rs;
+    rs.width = settings.width;
+    rs.height = settings.height;
+    rs.camera = camera;
+    rs.floatColor = true;
+    return std::make_unique<rt::Renderer>(c.manifest, rt::waterShaderSources(c, target), rs, context->isEs(),
+                                          rt::textureOrigins(c));
+  };
+  std::map<std::string, std::unique_ptr<rt::Renderer>> passThrough;
+  std::map<std::string, std::vector<double>> passMs;
+  for (auto& p : levels) {
+    p.renderer = makeRenderer(p.compiled, p.level.camera);
+    if (!passThrough.count(p.level.camera)) passThrough[p.level.camera] = makeRenderer(*passCompiled, p.level.camera);
+  }
+  // Warm-up: llvmpipe compiles shaders at the first draw.
+  for (auto& p : levels) p.renderer->renderFrame();
+  for (auto& [cam, r] : passThrough) r->renderFrame();
+  for (int run = 0; run < std::max(settings.runs, 1); ++run) {
+    std::map<std::string, double> passNow;
+    for (auto& [cam, r] : passThrough) passNow[cam] = r->renderFrame(), passMs[cam].push_back(passNow[cam]);
+    for (auto& p : levels) {
+      double ms = p.renderer->renderFrame();
+      p.ms.push_back(ms);
+      p.ratios.push_back(ms / passNow[p.level.camera]);
+    }
+  }
+  double megapixels = settings.width * static_cast<double>(settings.height) / 1e6;
+  std::vector<double> allPass;
+  for (auto& [cam, v] : passMs) allPass.insert(allPass.end(), v.begin(), v.end());
+  result.passThroughMs = median(allPass);
+  result.passThroughMsPerMegapixel = result.passThroughMs / megapixels;
+  for (auto& p : levels) {
+    p.image = p.renderer->readRgba32f();
+    p.level.medianMs = median(p.ms);
+    p.level.msPerMegapixel = p.level.medianMs / megapixels;
+    p.level.ratio = median(p.ratios);
+  }
+  // Error against the family's reference level.
+  for (auto& p : levels) {
+    const Prepared* ref = nullptr;
+    for (const auto& q : levels)
+      if (q.level.family == p.level.family && q.level.reference) ref = &q;
+    double sum = 0, sq = 0, mx = 0;
+    size_t n = 0;
+    for (size_t i = 0; i < p.image.rgba32f.size(); ++i) {
+      if (i % 4 == 3) continue;
+      double e = std::abs(static_cast<double>(p.image.rgba32f[i]) - ref->image.rgba32f[i]);
+      if (!std::isfinite(e)) e = INFINITY;
+      sum += e, sq += e * e, mx = std::max(mx, e), ++n;
+    }
+    p.level.maxError = mx;
+    p.level.meanError = n ? sum / static_cast<double>(n) : 0;
+    double mse = n ? sq / static_cast<double>(n) : 0;
+    p.level.psnr = mse > 0 ? 10 * std::log10(1.0 / mse) : INFINITY;
+  }
+  // Pareto front per family: no other level is both cheaper (ratio) and more accurate.
+  for (auto& p : levels) {
+    p.level.pareto = true;
+    for (const auto& q : levels)
+      if (&q != &p && q.level.family == p.level.family && q.level.ratio <= p.level.ratio &&
+          q.level.meanError <= p.level.meanError && (q.level.ratio < p.level.ratio || q.level.meanError < p.level.meanError))
+        p.level.pareto = false;
+  }
+  for (auto& p : levels) result.levels.push_back(p.level);
+  levels.clear();  // GL objects before the context
+  passThrough.clear();
+  return result;
+}
+
+std::string benchMarkdown(const BenchResult& r) {
+  std::ostringstream o;
+  char buf[512];
+  std::snprintf(buf, sizeof buf,
+                "%dx%d RGBA32F frames on %s (%s), median of %d interleaved runs; pass-through (the interpolated normal "
+                "as colour) %.1f ms/MP. Error against each family's reference level over the frame; Pareto: no other "
+                "level of the family is both cheaper and more accurate (mean error).\n\n",
+                r.settings.width, r.settings.height, std::string(targetName(r.settings.target)).c_str(), r.renderer.c_str(),
+                r.settings.runs, r.passThroughMsPerMegapixel);
+  o << buf;
+  o << "| family | level | ms/MP | x pass-through | SPIR-V instr. (-O) | max abs error | mean abs error | PSNR dB | Pareto |\n";
+  o << "|---|---|---|---|---|---|---|---|---|\n";
+  for (const auto& l : r.levels) {
+    std::string psnr = std::isinf(l.psnr) ? "ref" : (std::snprintf(buf, sizeof buf, "%.1f", l.psnr), std::string(buf));
+    std::snprintf(buf, sizeof buf, "| %s | %s%s | %.1f | %.2f | %d | %.3g | %.3g | %s | %s |\n", l.family.c_str(),
+                  l.level.c_str(), l.reference ? " (reference)" : "", l.msPerMegapixel, l.ratio, l.spirvInstructions,
+                  l.maxError, l.meanError, psnr.c_str(), l.pareto ? "yes" : "");
+    o << buf;
+  }
+  return o.str();
+}
+
+std::string writeBenchPlot(const BenchResult& r, const std::string& png) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    return "gnuplot not found; install gnuplot-nox (scripts/setup.sh installs it)";
+  std::filesystem::path out(png);
+  std::filesystem::path dataPath = std::filesystem::temp_directory_path() / ("wg_bench_" + std::to_string(::getpid()) + ".dat");
+  std::filesystem::path scriptPath = dataPath;
+  scriptPath.replace_extension(".gp");
+  // Families in order; errors of 0 (the references) sit on a floor line.
+  const double floor = 1e-6;
+  std::vector<std::string> families;
+  for (const auto& l : r.levels)
+    if (std::find(families.begin(), families.end(), l.family) == families.end()) families.push_back(l.family);
+  {
+    std::ofstream d(dataPath);
+    for (const auto& f : families) {
+      d << "# " << f << "\n";
+      for (const auto& l : r.levels)
+        if (l.family == f)
+          d << l.ratio << " " << std::max(l.meanError, floor) << " \"" << (l.reference ? "" : l.level) << "\" "
+            << (l.pareto ? 1 : 0) << "\n";
+      d << "\n\n";
+    }
+  }
+  {
+    std::ofstream s(scriptPath);
+    s << "set terminal pngcairo size 1100,700 font 'sans,10'\n";
+    s << "set output '" << out.string() << "'\n";
+    s << "set title 'watergraph: cost against error (" << r.settings.width << "x" << r.settings.height << ", "
+      << targetName(r.settings.target) << ", llvmpipe)'\n";
+    s << "set xlabel 'cost: frame time / pass-through frame time (same run)'\n";
+    s << "set ylabel 'mean abs error vs the reference level (references at 1e-6)'\n";
+    s << "set label 1 'ringed and dashed: Pareto front of each family' at graph 0.02, graph 0.97 font 'sans,9'\n";
+    s << "set logscale y\nset format y '10^{%L}'\nset grid\nset key outside right top\n";
+    s << "plot ";
+    for (size_t i = 0; i < families.size(); ++i) {
+      std::string idx = std::to_string(i);
+      s << (i ? ", \\\n     " : "") << "'" << dataPath.string() << "' index " << idx
+        << " using 1:2 with points pt 7 ps 1.3 lc " << (i + 1) << " title '" << families[i] << "'";
+      s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) with points pt 6 ps 2.6 lw 2 lc " << (i + 1)
+        << " notitle";
+      s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) smooth unique with lines lw 1.5 dt 2 lc " << (i + 1)
+        << " notitle";
+      s << ", '' index " << idx << " using 1:2:3 with labels offset 0.8,0.6 left font 'sans,8' tc lt " << (i + 1)
+        << " notitle";
+    }
+    s << "\n";
+  }
+  std::string cmd = "gnuplot " + scriptPath.string() + " 2>&1";
+  int rc = std::system(cmd.c_str());
+  std::filesystem::remove(dataPath);
+  std::filesystem::remove(scriptPath);
+  if (rc != 0) return "gnuplot failed (exit " + std::to_string(rc) + ")";
+  return "";
+}
+
+}  // namespace wg::accuracy

@@ -1,0 +1,53 @@
+#pragma once
+// `watergraph bench`: speed against error. bench/variants.json lists families — a graph
+// and its quality levels (option values per node id) — e.g. Fresnel models, Voronoi cell
+// search, wave count, bisection and SSR steps, normal blends, caustic layers, and the
+// underwater graph's fast / balanced / reference presets. Every level is rendered on the
+// GL runtime into an RGBA32F frame, in interleaved runs (run 1: every level, run 2: every
+// level, ...) together with a pass-through graph (the interpolated normal as colour), so
+// the medians share the machine's state; cost is ms per megapixel and its ratio to the
+// pass-through, plus the fragment shader's SPIR-V instruction count after spirv-opt -O;
+// error is against the family's reference level: max and mean absolute error and PSNR
+// (peak 1) over the frame.
+#include <string>
+#include <vector>
+
+#include "codegen/target.h"
+
+namespace wg::accuracy {
+
+struct BenchSettings {
+  std::string configFile = "bench/variants.json";
+  std::string root = ".";  // graph_file entries are relative to it
+  int width = 320, height = 320;
+  int runs = 5;
+  Target target = Target::Glsl330;
+  std::vector<std::string> families;  // names to run; empty: all
+};
+
+struct BenchLevel {
+  std::string family, level, node, camera;
+  bool reference = false;
+  double medianMs = 0, msPerMegapixel = 0, ratio = 0;  // ratio: to the pass-through, same run
+  int spirvInstructions = -1;
+  double maxError = 0, meanError = 0, psnr = 0;  // psnr: inf for the reference itself
+  bool pareto = false;  // on the family's cost/error Pareto front
+};
+
+struct BenchResult {
+  std::vector<BenchLevel> levels;
+  double passThroughMs = 0, passThroughMsPerMegapixel = 0;
+  std::string renderer;
+  BenchSettings settings;
+};
+
+// Throws std::runtime_error for a bad config ("bench/variants.json: ...") and
+// rt::RuntimeError for GL problems; creates its own GL context.
+BenchResult runBench(const BenchSettings& settings);
+
+std::string benchMarkdown(const BenchResult& r);
+// Writes the gnuplot data and script next to `png` and runs gnuplot; returns "" or why not
+// (no gnuplot: "gnuplot not found; install gnuplot-nox (scripts/setup.sh)").
+std::string writeBenchPlot(const BenchResult& r, const std::string& png);
+
+}  // namespace wg::accuracy

@@ -1,0 +1,112 @@
+#include "accuracy/node_probe.h"
+
+namespace wg::accuracy {
+namespace {
+
+const Value* findInput(const ProbeCase& c, const std::string& port) {
+  for (const auto& [name, value] : c.inputs)
+    if (name == port) return &value;
+  return nullptr;
+}
+
+}  // namespace
+
+NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options, const std::vector<ProbeCase>& cases) {
+  NodeProbeSetup setup;
+  Graph& g = setup.graph;
+  g.file = "node '" + spec.type + "'";
+  g.name = "probe_" + spec.type;
+  Node node;
+  node.id = "n";
+  node.type = spec.type;
+  for (auto it = options.begin(); it != options.end(); ++it) node.options.push_back({it.key(), it.value(), {}, {}});
+
+  // The type of each input parameter: the port's own, or (Gen, Custom) the first value given.
+  std::vector<Type> paramType(spec.inputs.size(), Type::Invalid);
+  for (size_t k = 0; k < spec.inputs.size(); ++k) {
+    const PortSpec& port = spec.inputs[k];
+    if (port.kind == PortKind::Fixed) {
+      bool given = false;
+      for (const auto& c : cases) given |= findInput(c, port.name) != nullptr;
+      if (given || port.required()) paramType[k] = port.type;
+      continue;
+    }
+    for (const auto& c : cases)
+      if (const Value* v = findInput(c, port.name); v && paramType[k] == Type::Invalid) paramType[k] = v->type;
+    if (paramType[k] == Type::Invalid && port.required()) paramType[k] = port.kind == PortKind::Custom ? Type::Vec3 : Type::Float;
+  }
+  for (size_t k = 0; k < spec.inputs.size(); ++k) {
+    if (paramType[k] == Type::Invalid) continue;
+    Parameter p;
+    p.name = "in_" + spec.inputs[k].name;
+    p.type = paramType[k];
+    p.defaultValue.assign(static_cast<size_t>(componentCount(p.type)), 0.5);
+    g.parameters.push_back(p);
+    NodeInput in;
+    in.port = spec.inputs[k].name;
+    in.source.kind = InputSource::Kind::Parameter;
+    in.source.parameter = p.name;
+    node.inputs.push_back(in);
+  }
+  g.nodes.push_back(node);
+  GraphOutput out;
+  out.slot = OutputSlot::FragmentAlpha;  // resolve wants one; the probe output replaces it
+  out.source.kind = InputSource::Kind::Literal;
+  out.source.literal = {0.0};
+  g.outputs.push_back(out);
+
+  setup.cases.file = g.file;
+  for (const auto& c : cases) {
+    ProbeCase pc = c;
+    pc.parameters.clear();
+    bool fits = true;
+    for (size_t k = 0; k < spec.inputs.size(); ++k) {
+      if (paramType[k] == Type::Invalid) continue;
+      const PortSpec& port = spec.inputs[k];
+      Value v = Value::ofType(paramType[k], 0.5);
+      if (const Value* given = findInput(c, port.name)) {
+        if (given->type != paramType[k] && given->type != Type::Float) fits = false;
+        if (port.kind == PortKind::Fixed && given->type != port.type && given->type != Type::Float) fits = false;
+        v = given->convertedTo(paramType[k]);
+      } else if (port.defaultValue) {
+        v = port.defaultValue->convertedTo(paramType[k]);
+      } else if (port.defaultBuiltin) {
+        Value b = c.env.builtin(*port.defaultBuiltin);
+        if (b.type == paramType[k] || b.type == Type::Float) v = b.convertedTo(paramType[k]);
+      }
+      pc.parameters.emplace_back("in_" + port.name, toFloat32(v));
+      pc.relaxed |= isLargeInput(v);
+    }
+    pc.inputs.clear();
+    if (fits) setup.cases.cases.push_back(std::move(pc));
+    else setup.skipped.push_back(c.name);
+  }
+  return setup;
+}
+
+std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
+                                     const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags) {
+  NodeProbeSetup setup = makeNodeProbe(spec, options, cases);
+  if (setup.cases.cases.empty()) return ProbeReport{};
+  ProbeOutput out{"n", output.empty() ? spec.outputs.front().name : output};
+  auto report = probeGraph(setup.graph, out, setup.cases, target, diags);
+  if (report) {
+    report->graph = spec.type;
+    report->output = spec.type + "." + out.port;
+    // A case's range for this output ("type.port") applies too.
+    for (size_t i = 0; i < report->cases.size(); ++i) {
+      const ProbeCase& c = setup.cases.cases[i];
+      auto r = c.ranges.find(report->output);
+      if (r == c.ranges.end()) continue;
+      ProbeCaseResult& res = report->cases[i];
+      res.range = r->second;
+      for (int k = 0; k < res.components; ++k) {
+        double g = res.gpu[static_cast<size_t>(k)], e = res.reference[static_cast<size_t>(k)];
+        res.inRange &= withinRange(g, r->second, res.tolerance) && withinRange(e, r->second, res.tolerance);
+      }
+    }
+  }
+  return report;
+}
+
+}  // namespace wg::accuracy

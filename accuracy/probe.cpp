@@ -1,0 +1,216 @@
+#include "accuracy/probe.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include <epoxy/gl.h>
+
+#include "accuracy/probe_gpu.h"
+#include "codegen/cpu_backend.h"
+#include "codegen/emit_glsl.h"
+#include "core/number_format.h"
+#include "core/registry.h"
+#include "nodes/registry.h"
+#include "runtime/runtime_error.h"
+
+namespace wg::accuracy {
+namespace {
+
+std::string fmt(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", x);
+  return buf;
+}
+
+std::string fmtShort(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2e", x);
+  return buf;
+}
+
+std::string vectorText(const std::array<double, 4>& v, int n) {
+  if (n == 1) return fmt(v[0]);
+  std::string s = "(";
+  for (int i = 0; i < n; ++i) s += (i ? ", " : "") + fmt(v[static_cast<size_t>(i)]);
+  return s + ")";
+}
+
+nlohmann::json number(double x) {
+  if (std::isfinite(x)) return x;
+  return std::isnan(x) ? "nan" : (x > 0 ? "inf" : "-inf");
+}
+
+}  // namespace
+
+// A float32 result cannot equal every double bound (1e30 rounds up): the range allows the
+// tolerance's slack.
+bool withinRange(double x, const std::pair<double, double>& range, double tolerance) {
+  return x >= range.first - tolerance * std::max(1.0, std::abs(range.first)) &&
+         x <= range.second + tolerance * std::max(1.0, std::abs(range.second));
+}
+
+namespace {
+
+ProbeCaseResult compare(const ProbeCase& c, const std::array<float, 4>& gpu, const Value& ref, double tolerance) {
+  ProbeCaseResult r;
+  r.name = c.name;
+  r.expect = c.expect;
+  r.components = ref.size();
+  r.tolerance = tolerance;
+  r.range = c.range;
+  for (int i = 0; i < r.components; ++i) {
+    auto k = static_cast<size_t>(i);
+    double g = gpu[k], e = ref[i];
+    r.gpu[k] = g;
+    r.reference[k] = e;
+    r.gpuFinite &= std::isfinite(g);
+    r.referenceFinite &= std::isfinite(e);
+    if (c.range) r.inRange &= withinRange(g, *c.range, tolerance) && withinRange(e, *c.range, tolerance);
+    double abs = std::abs(g - e);
+    if (!std::isfinite(g) || !std::isfinite(e)) abs = std::numeric_limits<double>::infinity();
+    double rel = abs == 0 ? 0 : (e != 0 ? abs / std::abs(e) : std::numeric_limits<double>::infinity());
+    if (abs > r.absError || std::isnan(abs)) r.absError = abs, r.relError = rel;
+    r.withinTolerance &= abs <= tolerance * std::max(1.0, std::abs(e));
+  }
+  return r;
+}
+
+}  // namespace
+
+std::string ProbeCaseResult::failure() const {
+  if (!gpuFinite) return "GPU NaN/Inf";
+  if (!referenceFinite) return "reference NaN/Inf";
+  if (!inRange) return "outside [" + fmt(range->first) + ", " + fmt(range->second) + "]";
+  if (!withinTolerance) return "error " + fmtShort(absError) + " > tolerance " + fmtShort(tolerance);
+  return "";
+}
+
+bool ProbeReport::passed() const { return failures() == 0; }
+int ProbeReport::failures() const {
+  return static_cast<int>(std::count_if(cases.begin(), cases.end(), [](const ProbeCaseResult& c) { return !c.passed(); }));
+}
+
+std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
+                                      Target target, Diagnostics& diags) {
+  // Parameters a case sets must exist in the graph (they may be pruned from the program).
+  for (const auto& c : cases.cases) {
+    if (!c.inputs.empty())
+      diags.error(DiagCode::InvalidProbeCases, c.where,
+                  "case '" + c.name + "' sets node \"inputs\", which only node probes (--node) take");
+    for (const auto& [name, value] : c.parameters) {
+      const Parameter* p = graph.findParameter(name);
+      if (!p) {
+        std::vector<std::string> names;
+        for (const auto& q : graph.parameters) names.push_back(q.name);
+        diags.error(DiagCode::InvalidProbeCases, c.where,
+                    "case '" + c.name + "' sets parameter '" + name + "', which " + graph.file + " does not declare");
+      } else if (p->isStatic) {
+        diags.error(DiagCode::InvalidProbeCases, c.where,
+                    "case '" + c.name + "' sets parameter '" + name + "', which is static (compiled into the shader)");
+      } else if (value.type != p->type && value.type != Type::Float) {
+        diags.error(DiagCode::InvalidProbeCases, c.where,
+                    "case '" + c.name + "' gives parameter '" + name + "' a " + std::string(typeName(value.type)) +
+                        ", but it is a " + std::string(typeName(p->type)));
+      }
+    }
+  }
+  if (diags.hasErrors()) return std::nullopt;
+  auto program = buildProbeProgram(graph, defaultRegistry(), output, diags);
+  if (!program) return std::nullopt;
+  EmitResult shader = emitProgram(*program, target, graph.file, EmitMode::Probe);
+
+  double tolerance = 0, relaxed = 0;
+  for (const auto& op : program->ops) {
+    tolerance = std::max(tolerance, op.spec->tolerance);
+    relaxed = std::max(relaxed, std::max(op.spec->tolerance, op.spec->relaxedTolerance));
+  }
+  if (program->ops.empty()) tolerance = relaxed = 1e-6;
+  if (cases.tolerance) tolerance = relaxed = *cases.tolerance;
+
+  ProbeReport report;
+  report.graph = graph.file;
+  report.output = "fragment.color";
+  if (!output.node.empty()) {
+    std::string port = output.port;
+    if (port.empty())
+      if (const Node* n = graph.findNode(output.node))
+        if (const NodeSpec* spec = defaultRegistry().find(n->type); spec && !spec->outputs.empty()) port = spec->outputs[0].name;
+    report.output = output.node + "." + port;
+  }
+  report.type = program->outputs.front().type;
+  report.target = target;
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  report.renderer = renderer ? renderer : "";
+  std::vector<std::array<float, 4>> gpu =
+      runProbeOnGpu(shader, *program, cases.cases, target == Target::Es300, graph.file + " (probe, " +
+                                                                                std::string(targetName(target)) + ")");
+  for (size_t i = 0; i < cases.cases.size(); ++i) {
+    const ProbeCase& c = cases.cases[i];
+    std::vector<Value> params;
+    for (const auto& p : program->parameters) {
+      Value v = p.defaultValue;
+      for (const auto& [name, value] : c.parameters)
+        if (name == p.name) v = value.convertedTo(p.type);
+      params.push_back(v);
+    }
+    CpuResult ref = evaluateProgram(*program, c.env, params);
+    report.cases.push_back(compare(c, gpu[i], ref.outputs.front(), c.tolerance.value_or(c.relaxed ? relaxed : tolerance)));
+  }
+  return report;
+}
+
+std::string formatProbeText(const ProbeReport& r) {
+  std::string out = "probe " + r.graph + " output " + r.output + " (" + std::string(typeName(r.type)) + ") on " +
+                    std::string(targetName(r.target)) + " (" + r.renderer + "), " + std::to_string(r.cases.size()) +
+                    " case" + (r.cases.size() == 1 ? "" : "s") + "\n";
+  for (const auto& c : r.cases) {
+    out += (c.passed() ? "  ok    " : "  FAIL  ") + c.name + "\n";
+    out += "        gpu " + vectorText(c.gpu, c.components) + "\n";
+    out += "        ref " + vectorText(c.reference, c.components) + "\n";
+    out += "        abs " + fmtShort(c.absError) + "  rel " + fmtShort(c.relError) + "  tol " + fmtShort(c.tolerance) +
+           "  nan/inf: gpu " + (c.gpuFinite ? "no" : "YES") + ", ref " + (c.referenceFinite ? "no" : "YES") + "\n";
+    if (!c.passed()) out += "        why " + c.failure() + "\n";
+  }
+  out += std::to_string(r.cases.size() - static_cast<size_t>(r.failures())) + "/" + std::to_string(r.cases.size()) +
+         " cases passed\n";
+  return out;
+}
+
+nlohmann::json probeJson(const ProbeReport& r) {
+  nlohmann::json j;
+  j["graph"] = r.graph;
+  j["output"] = r.output;
+  j["type"] = std::string(typeName(r.type));
+  j["target"] = std::string(targetName(r.target));
+  j["renderer"] = r.renderer;
+  j["passed"] = r.passed();
+  j["cases"] = nlohmann::json::array();
+  for (const auto& c : r.cases) {
+    nlohmann::json k;
+    k["name"] = c.name;
+    if (!c.expect.empty()) k["expect"] = c.expect;
+    k["gpu"] = nlohmann::json::array();
+    k["reference"] = nlohmann::json::array();
+    for (int i = 0; i < c.components; ++i) {
+      k["gpu"].push_back(number(c.gpu[static_cast<size_t>(i)]));
+      k["reference"].push_back(number(c.reference[static_cast<size_t>(i)]));
+    }
+    k["abs_error"] = number(c.absError);
+    k["rel_error"] = number(c.relError);
+    k["tolerance"] = c.tolerance;
+    k["gpu_nan_inf"] = !c.gpuFinite;
+    k["reference_nan_inf"] = !c.referenceFinite;
+    k["passed"] = c.passed();
+    if (!c.passed()) k["failure"] = c.failure();
+    j["cases"].push_back(k);
+  }
+  return j;
+}
+
+}  // namespace wg::accuracy

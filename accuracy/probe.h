@@ -1,0 +1,62 @@
+#pragma once
+// `watergraph probe`: one output of a graph evaluated per case on the GPU in float32
+// (accuracy/probe_gpu.h) and by the double reference (codegen/cpu_backend.h), compared.
+// A case passes when both results are finite, every component's error is within the
+// tolerance (|gpu - ref| <= tol * max(1, |ref|)) and, if the case gives a range, both lie
+// in it. The tolerance is the case's, else the file's, else the largest of the probed
+// ops' documented node tolerances (their relaxedTolerance for a relaxed case).
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "accuracy/probe_cases.h"
+#include "codegen/probe_program.h"
+#include "codegen/target.h"
+#include "core/diagnostic.h"
+#include "core/graph.h"
+
+namespace wg::accuracy {
+
+struct ProbeCaseResult {
+  std::string name;
+  std::string expect;
+  int components = 1;
+  std::array<double, 4> gpu{};
+  std::array<double, 4> reference{};
+  double absError = 0;  // largest over the components
+  double relError = 0;  // abs / |ref| of the same component (inf where ref = 0 and abs > 0)
+  double tolerance = 0;
+  bool gpuFinite = true, referenceFinite = true, inRange = true, withinTolerance = true;
+  std::optional<std::pair<double, double>> range;
+  bool passed() const { return gpuFinite && referenceFinite && inRange && withinTolerance; }
+  std::string failure() const;  // "" when passed, else why: "GPU NaN/Inf", "error 3e-4 > 1e-5", ...
+};
+
+struct ProbeReport {
+  std::string graph;   // file
+  std::string output;  // "wave.normal" or "fragment.color"
+  Type type = Type::Float;
+  Target target = Target::Glsl330;
+  std::string renderer;  // GL_RENDERER
+  std::vector<ProbeCaseResult> cases;
+  bool passed() const;
+  int failures() const;
+};
+
+// Builds the probe program and shader for `target`, checks the cases' parameter names
+// against the graph (WG060 at the case), runs the cases on the current GL context (whose
+// API must match the target) and in double. nullopt with diagnostics for graph or case
+// problems; throws rt::RuntimeError for driver problems.
+std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
+                                      Target target, Diagnostics& diags);
+
+// x in [lo, hi] give or take tolerance * max(1, |bound|).
+bool withinRange(double x, const std::pair<double, double>& range, double tolerance);
+
+std::string formatProbeText(const ProbeReport& report);
+nlohmann::json probeJson(const ProbeReport& report);
+
+}  // namespace wg::accuracy

@@ -1,0 +1,211 @@
+#include "accuracy/probe_gpu.h"
+
+#include <cmath>
+#include <map>
+
+#include "codegen/shader_interface.h"
+#include "nodes/texture_source.h"
+#include "runtime/gl_resources.h"
+#include "runtime/runtime_error.h"
+
+namespace wg::accuracy {
+namespace {
+
+using rt::RuntimeError;
+
+std::string fullscreenVertex(bool es) {
+  return std::string(es ? "#version 300 es\nprecision highp float;\n" : "#version 330 core\n") +
+         "void main() {\n"
+         "  vec2 p = vec2(float((gl_VertexID & 1) << 2) - 1.0, float((gl_VertexID & 2) << 1) - 1.0);\n"
+         "  gl_Position = vec4(p, 0.0, 1.0);\n"
+         "}\n";
+}
+
+// The value a builtin uniform has in a case.
+Value builtinValue(const UniformInfo& u, const EvalEnvironment& env) {
+  const std::string& b = u.builtin;
+  if (b == "uv") return env.uv;
+  if (b == "world_position") return env.worldPosition;
+  if (b == "normal") return env.normal;
+  if (b == "view_direction") return env.viewDirection;
+  if (b == "screen_uv") return env.screenUv;
+  if (b == "frag_depth") return env.fragDepth;
+  if (b == "camera_position") return env.cameraPosition;
+  if (b == "time") return env.time;
+  if (b == "camera_near_far") return env.cameraNearFar;
+  if (b == "view") return env.view;
+  if (b == "projection") return env.projection;
+  if (b == "viewport_size") return Value::vector({1, 1});
+  if (b == "time_phase") {
+    // As the runtime does: mod(omega * t, 2 pi) in double (the eval does the same).
+    double phase = u.omega * env.time[0];
+    phase -= 6.283185307179586 * std::floor(phase / 6.283185307179586);
+    return Value::scalar(phase);
+  }
+  throw RuntimeError(RuntimeError::Kind::Manifest, "the probe cannot set builtin uniform " + u.name + " ('" + b + "')");
+}
+
+void setUniform(GLint loc, Type type, const Value& v) {
+  float f[16];
+  for (int i = 0; i < 16; ++i) f[i] = static_cast<float>(v.c[static_cast<size_t>(i)]);
+  switch (type) {
+    case Type::Float: glUniform1f(loc, f[0]); break;
+    case Type::Vec2: glUniform2fv(loc, 1, f); break;
+    case Type::Vec3: glUniform3fv(loc, 1, f); break;
+    case Type::Vec4: glUniform4fv(loc, 1, f); break;
+    case Type::Mat3: glUniformMatrix3fv(loc, 1, GL_FALSE, f); break;
+    case Type::Mat4: glUniformMatrix4fv(loc, 1, GL_FALSE, f); break;
+    default: throw RuntimeError(RuntimeError::Kind::Manifest, "the probe cannot set a uniform of this type");
+  }
+}
+
+// What a scene texture holds at every texel in a case.
+std::array<float, 4> sceneTexel(const std::string& resource, const std::string& name, const EvalEnvironment& env) {
+  auto v4 = [](const Value& v, double w) {
+    return std::array<float, 4>{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]), static_cast<float>(w)};
+  };
+  if (resource == "scene_depth") {
+    float d = static_cast<float>(env.sceneDepth[0]);
+    return {d, d, d, 1};
+  }
+  if (resource == "scene_color") return v4(env.sceneColor, 1);
+  if (resource == "planar_reflection") return v4(env.reflectionColor, 1);
+  if (resource == "refraction") return v4(env.refractionColor, 1);
+  if (resource == "environment") return v4(env.environmentColor, 1);
+  if (resource == "underwater" && name == iface::kWaterNormalUvTexture)
+    return {static_cast<float>(env.normal[0]), static_cast<float>(env.normal[2]), static_cast<float>(env.uv[0]),
+            static_cast<float>(env.uv[1])};
+  if (resource == "underwater") return v4(env.worldPosition, env.fragDepth[0]);
+  throw RuntimeError(RuntimeError::Kind::Manifest, "the probe has no value for scene resource '" + resource + "'");
+}
+
+rt::Texture makeNodeTexture(const TextureInfo& t, const std::string& graphDir) {
+  std::string why;
+  auto img = loadTexture(t.source, graphDir, &why);
+  if (!img || img->width <= 0 || img->height <= 0)
+    throw RuntimeError(RuntimeError::Kind::Manifest, "texture '" + t.source + "' cannot be loaded: " + why);
+  rt::Texture tex = rt::makeTexture();
+  glBindTexture(GL_TEXTURE_2D, tex.id());
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, img->width, img->height);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img->width, img->height, GL_RGBA, GL_UNSIGNED_BYTE, img->rgba.data());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return tex;
+}
+
+// A 1x1 RGBA32F texture (six faces for a cube), nearest: every fetch returns the texel.
+rt::Texture makeSceneTexture(bool cube) {
+  rt::Texture tex = rt::makeTexture();
+  GLenum target = cube ? GLenum(GL_TEXTURE_CUBE_MAP) : GLenum(GL_TEXTURE_2D);
+  glBindTexture(target, tex.id());
+  glTexStorage2D(target, 1, GL_RGBA32F, 1, 1);
+  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_REPEAT);
+  return tex;
+}
+
+void fillSceneTexture(GLuint tex, bool cube, const std::array<float, 4>& texel) {
+  if (cube) {
+    glBindTexture(GL_TEXTURE_CUBE_MAP, tex);
+    for (int face = 0; face < 6; ++face)
+      glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + static_cast<GLenum>(face), 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, texel.data());
+  } else {
+    glBindTexture(GL_TEXTURE_2D, tex);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RGBA, GL_FLOAT, texel.data());
+  }
+}
+
+}  // namespace
+
+std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const Program& program,
+                                                const std::vector<ProbeCase>& cases, bool es, const std::string& what) {
+  if (cases.empty()) return {};
+  const EmittedShader* frag = nullptr;
+  for (const auto& s : shader.shaders)
+    if (s.stage == ShaderStage::Fragment) frag = &s;
+  if (!frag) throw RuntimeError(RuntimeError::Kind::Manifest, what + ": no fragment shader to probe");
+  rt::Program prog = rt::linkProgram({{GL_VERTEX_SHADER, "probe fullscreen.vert", fullscreenVertex(es)},
+                                      {GL_FRAGMENT_SHADER, what, frag->text}},
+                                     what);
+  glUseProgram(prog.id());
+
+  // The target: up to 1024 cases per row.
+  const int width = static_cast<int>(std::min<size_t>(cases.size(), 1024));
+  const int height = static_cast<int>((cases.size() + 1023) / 1024);
+  rt::Texture color = rt::makeTexture();
+  glBindTexture(GL_TEXTURE_2D, color.id());
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA32F, width, height);
+  rt::Framebuffer fbo = rt::makeFramebuffer();
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw RuntimeError(RuntimeError::Kind::Driver, "the RGBA32F probe target is incomplete on this driver");
+  const float clear[4] = {0, 0, 0, 0};
+  glClearBufferfv(GL_COLOR, 0, clear);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  rt::VertexArray vao = rt::makeVertexArray();
+  glBindVertexArray(vao.id());
+
+  // Samplers: one unit each, in the shader's order.
+  struct Bound {
+    const TextureInfo* info;
+    rt::Texture texture;
+    GLenum target;
+  };
+  std::vector<Bound> bound;
+  for (const auto& t : shader.textures) {
+    bool cube = t.type == Type::SamplerCube;
+    Bound b{&t, t.resource.empty() ? makeNodeTexture(t, program.directory) : makeSceneTexture(cube),
+            cube ? GLenum(GL_TEXTURE_CUBE_MAP) : GLenum(GL_TEXTURE_2D)};
+    GLint loc = glGetUniformLocation(prog.id(), t.name.c_str());
+    if (loc >= 0) glUniform1i(loc, static_cast<GLint>(bound.size()));
+    bound.push_back(std::move(b));
+  }
+  std::vector<GLint> locations;
+  for (const auto& u : shader.uniforms) locations.push_back(glGetUniformLocation(prog.id(), u.name.c_str()));
+  rt::checkGl("setting up the probe");
+
+  for (size_t i = 0; i < cases.size(); ++i) {
+    const ProbeCase& c = cases[i];
+    for (size_t k = 0; k < shader.uniforms.size(); ++k) {
+      const UniformInfo& u = shader.uniforms[k];
+      if (locations[k] < 0) continue;  // optimised out by the driver
+      Value v;
+      if (u.parameter >= 0) {
+        const ProgramParameter& p = program.parameters[static_cast<size_t>(u.parameter)];
+        v = p.defaultValue;
+        for (const auto& [name, value] : c.parameters)
+          if (name == p.name) v = value.convertedTo(p.type);
+      } else {
+        v = builtinValue(u, c.env);
+      }
+      setUniform(locations[k], u.type, v);
+    }
+    for (size_t k = 0; k < bound.size(); ++k) {
+      glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(k));
+      glBindTexture(bound[k].target, bound[k].texture.id());
+      if (!bound[k].info->resource.empty())
+        fillSceneTexture(bound[k].texture.id(), bound[k].target == GL_TEXTURE_CUBE_MAP,
+                         sceneTexel(bound[k].info->resource, bound[k].info->name, c.env));
+    }
+    glViewport(static_cast<GLint>(i % 1024), static_cast<GLint>(i / 1024), 1, 1);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  rt::checkGl("drawing the probe cases");
+  std::vector<float> pixels(static_cast<size_t>(width) * static_cast<size_t>(height) * 4);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, pixels.data());
+  rt::checkGl("reading the probe target");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  std::vector<std::array<float, 4>> out(cases.size());
+  for (size_t i = 0; i < cases.size(); ++i)
+    for (int ch = 0; ch < 4; ++ch) out[i][static_cast<size_t>(ch)] = pixels[i * 4 + static_cast<size_t>(ch)];
+  return out;
+}
+
+}  // namespace wg::accuracy

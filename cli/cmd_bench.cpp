@@ -1,0 +1,114 @@
+// bench: speed against error. Renders every quality level of every family in
+// bench/variants.json (Fresnel models, Voronoi cell search, wave count, bisection and SSR
+// steps, normal blends, caustic layers, the underwater graph's presets) in interleaved
+// runs beside a pass-through shader; prints a markdown table of ms per megapixel, ratio,
+// SPIR-V size after spirv-opt and error against the reference level, and draws the plot.
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <regex>
+
+#include "cli/commands.h"
+
+#ifdef WG_HAVE_RUNTIME
+#include "accuracy/bench.h"
+#include "runtime/runtime_error.h"
+#endif
+
+namespace wg::cli {
+namespace {
+
+struct BenchArgs {
+  std::string config = "bench/variants.json";
+  std::string size = "320x320";
+  int runs = 5;
+  std::string target = "glsl330";
+  std::vector<std::string> families;
+  std::string markdown;
+  std::string plot;
+};
+
+#ifdef WG_HAVE_RUNTIME
+int runBenchCommand(const BenchArgs& args) {
+  std::smatch m;
+  static const std::regex sizeRe("([0-9]{1,4})x([0-9]{1,4})");
+  if (!std::regex_match(args.size, m, sizeRe) || std::stoi(m[1]) < 8 || std::stoi(m[2]) < 8) {
+    std::cerr << "watergraph: --size must be WIDTHxHEIGHT, each side 8..9999 (got '" << args.size << "')\n";
+    return kExitUsageOrIo;
+  }
+  if (!std::ifstream(args.config)) {
+    std::cerr << args.config << ": error: [WG050] cannot read the bench configuration\n";
+    return kExitUsageOrIo;
+  }
+  accuracy::BenchSettings s;
+  s.configFile = args.config;
+  s.width = std::stoi(m[1]);
+  s.height = std::stoi(m[2]);
+  s.runs = args.runs;
+  s.target = *parseTarget(args.target);
+  s.families = args.families;
+  try {
+    accuracy::BenchResult r = accuracy::runBench(s);
+    std::string table = accuracy::benchMarkdown(r);
+    std::cout << table;
+    if (!args.markdown.empty()) {
+      std::ofstream out(args.markdown);
+      out << table;
+      if (!out) {
+        std::cerr << args.markdown << ": error: cannot write the table\n";
+        return kExitUsageOrIo;
+      }
+    }
+    if (!args.plot.empty()) {
+      std::string why = accuracy::writeBenchPlot(r, args.plot);
+      if (!why.empty()) {
+        std::cerr << "watergraph: bench: cannot draw " << args.plot << ": " << why << "\n";
+        return kExitUsageOrIo;
+      }
+      std::cerr << "wrote " << args.plot << "\n";
+    }
+  } catch (const rt::RuntimeError& e) {
+    std::cerr << "watergraph: bench: " << e.what() << "\n";
+    return e.exitCode();
+  } catch (const std::runtime_error& e) {
+    std::cerr << e.what() << "\n";
+    return kExitGraphError;
+  }
+  return kExitOk;
+}
+#endif
+
+}  // namespace
+
+Runner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
+  auto args = std::make_shared<BenchArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "bench",
+      "Speed against error: render every quality level of the families in bench/variants.json (Fresnel models, Voronoi "
+      "cell search, wave count, bisection steps, SSR steps, normal blends, caustic layers, the underwater graph's "
+      "fast/balanced/reference presets) in interleaved runs beside a pass-through shader. Prints a markdown table: ms "
+      "per megapixel (median), ratio to the pass-through, SPIR-V instructions after spirv-opt -O, max/mean abs error and "
+      "PSNR against the reference level; --plot draws cost against error with the Pareto front (gnuplot).\n\n"
+      "Examples:\n  watergraph bench\n  watergraph bench --runs 9 --markdown bench.md --plot docs/images/speed-vs-error.png\n"
+      "  watergraph bench --family 'SSR steps' --size 640x360\n\n"
+      "Exit codes: 0 ok; 1 a family that does not load or compile; 2 usage, I/O, no gnuplot for --plot, or no EGL/GL.");
+  cmd->add_option("--config", args->config, "families and levels (.json)")->capture_default_str();
+  cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();
+  cmd->add_option("--runs", args->runs, "interleaved timed runs (after one warm-up frame each)")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
+  cmd->add_option("--family", args->families, "run only this family (repeatable)");
+  cmd->add_option("--markdown", args->markdown, "also write the table to this file");
+  cmd->add_option("--plot", args->plot, "draw cost against error with the Pareto front into this PNG (needs gnuplot)");
+#ifdef WG_HAVE_RUNTIME
+  return [args] { return runBenchCommand(*args); };
+#else
+  return [] {
+    std::cerr << "watergraph: bench: this build has no GL runtime (configure with -DWG_BUILD_RUNTIME=ON)\n";
+    return kExitUsageOrIo;
+  };
+#endif
+}
+
+}  // namespace wg::cli

@@ -1,0 +1,192 @@
+// watergraph probe: the cases file (errors at file:line:col), the probe on every example
+// graph on both targets, and a probe that must fail (a division by zero gives Inf on the
+// GPU and in the reference, and the report says so).
+#include <cmath>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "accuracy/node_probe.h"
+#include "accuracy/probe.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "runtime/egl_context.h"
+#include "test_support.h"
+
+namespace wg::accuracy {
+namespace {
+
+std::string messages(const Diagnostics& d) {
+  std::string s;
+  for (const auto& x : d.all()) s += formatText(x) + "\n";
+  return s;
+}
+
+TEST(ProbeCases, UnknownKeyIsReportedAtItsPosition) {
+  Diagnostics diags;
+  auto r = parseProbeCases("{\"cases\": [\n  {\"name\": \"a\",\n   \"tme\": 3}\n]}\n", "c.json", diags);
+  EXPECT_FALSE(r);
+  EXPECT_NE(messages(diags).find("c.json:3:4: error: [WG060] unknown key 'tme'"), std::string::npos) << messages(diags);
+}
+
+TEST(ProbeCases, WrongSizeAndDuplicateNameAreErrors) {
+  Diagnostics diags;
+  auto r = parseProbeCases(R"({"cases": [{"name": "a", "normal": [0, 1]}, {"name": "a"}]})", "c.json", diags);
+  EXPECT_FALSE(r);
+  std::string m = messages(diags);
+  EXPECT_NE(m.find("c.json:1:36: error: [WG060] \"normal\" must be an array of 3 numbers"), std::string::npos) << m;
+  EXPECT_NE(m.find("a second case named 'a'"), std::string::npos) << m;
+}
+
+TEST(ProbeCases, InfinityCameraAndDerivedViewDirection) {
+  Diagnostics diags;
+  auto r = parseProbeCases(R"({"cases": [{"name": "a", "camera": {"position": [0, 3, 4], "far": "inf"}}]})", "c.json", diags);
+  ASSERT_TRUE(r) << messages(diags);
+  const EvalEnvironment& env = r->cases[0].env;
+  EXPECT_TRUE(std::isinf(env.cameraNearFar[1]));
+  EXPECT_FLOAT_EQ(static_cast<float>(env.viewDirection[1]), 0.6f);
+  EXPECT_FLOAT_EQ(static_cast<float>(env.viewDirection[2]), 0.8f);
+  EXPECT_EQ(env.projection[10], -1.0);  // the infinite-far limit
+  EXPECT_TRUE(r->cases[0].given.count("camera"));
+}
+
+TEST(ProbeCases, InvalidJsonIsWg001) {
+  Diagnostics diags;
+  EXPECT_FALSE(parseProbeCases("{\"cases\": [", "c.json", diags));
+  EXPECT_NE(messages(diags).find("[WG001]"), std::string::npos) << messages(diags);
+}
+
+class ProbeOnGpu : public ::testing::TestWithParam<Target> {
+ protected:
+  void SetUp() override {
+    context_ = rt::EglContext::create(GetParam() == Target::Es300 ? rt::GlApi::Es32 : rt::GlApi::DesktopGl45);
+  }
+  std::unique_ptr<rt::EglContext> context_;
+};
+
+TEST_P(ProbeOnGpu, EveryExampleGraphPassesTheGraphCases) {
+  Diagnostics diags;
+  auto cases = loadProbeCases(test::sourcePath("tests/hardcases/graphs.json"), diags);
+  ASSERT_TRUE(cases) << messages(diags);
+  for (const auto& path : test::exampleGraphs()) {
+    SCOPED_TRACE(path);
+    auto graph = loadGraphFile(path, diags);
+    ASSERT_TRUE(graph) << messages(diags);
+    auto report = probeGraph(*graph, {}, *cases, GetParam(), diags);
+    ASSERT_TRUE(report) << messages(diags);
+    EXPECT_EQ(report->cases.size(), cases->cases.size());
+    EXPECT_TRUE(report->passed()) << formatProbeText(*report);
+  }
+}
+
+TEST_P(ProbeOnGpu, DivisionByZeroIsFlaggedAsInfinite) {
+  Diagnostics diags;
+  auto graph = parseGraph(R"({"version": 1, "name": "d", "parameters": {"b": {"type": "float", "default": 1}},
+    "nodes": [{"id": "q", "type": "div", "inputs": {"a": 1, "b": "$b"}}],
+    "outputs": {"fragment": {"alpha": "q.out"}}})", "d.json", diags);
+  ASSERT_TRUE(graph) << messages(diags);
+  auto cases = parseProbeCases(R"({"cases": [{"name": "one", "parameters": {"b": 4}}, {"name": "zero", "parameters": {"b": 0}}]})",
+                               "c.json", diags);
+  ASSERT_TRUE(cases) << messages(diags);
+  auto report = probeGraph(*graph, ProbeOutput{"q", "out"}, *cases, GetParam(), diags);
+  ASSERT_TRUE(report) << messages(diags);
+  ASSERT_EQ(report->cases.size(), 2u);
+  EXPECT_TRUE(report->cases[0].passed()) << formatProbeText(*report);
+  EXPECT_DOUBLE_EQ(report->cases[0].gpu[0], 0.25);
+  EXPECT_FALSE(report->cases[1].gpuFinite);
+  EXPECT_FALSE(report->passed());
+  EXPECT_EQ(report->cases[1].failure(), "GPU NaN/Inf");
+}
+
+TEST_P(ProbeOnGpu, UnknownParameterInACaseIsAnError) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/lake.json"), diags);
+  auto cases = parseProbeCases(R"({"cases": [{"name": "x", "parameters": {"shalow": 1}}]})", "c.json", diags);
+  ASSERT_TRUE(graph && cases) << messages(diags);
+  EXPECT_FALSE(probeGraph(*graph, {}, *cases, GetParam(), diags));
+  EXPECT_NE(messages(diags).find("c.json:1:12: error: [WG060] case 'x' sets parameter 'shalow'"), std::string::npos)
+      << messages(diags);
+}
+
+TEST_P(ProbeOnGpu, AStaticParameterCannotBeSetByACase) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/shelf.json"), diags);
+  auto cases = parseProbeCases(R"({"cases": [{"name": "s", "parameters": {"slope": 0.5}}]})", "c.json", diags);
+  ASSERT_TRUE(graph && cases) << messages(diags);
+  EXPECT_FALSE(probeGraph(*graph, {}, *cases, GetParam(), diags));
+  EXPECT_NE(messages(diags).find("which is static"), std::string::npos) << messages(diags);
+}
+
+TEST_P(ProbeOnGpu, ANodeOutputCanBeProbedAndUnknownPortsAreNamed) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/lake.json"), diags);
+  ASSERT_TRUE(graph);
+  std::string node = graph->nodes.back().id;
+  ProbeCaseFile cases;
+  cases.cases.push_back(ProbeCase{});
+  cases.cases[0].name = "default";
+  cases.cases[0].env = defaultProbeEnvironment();
+  auto bad = probeGraph(*graph, ProbeOutput{node, "no_such_port"}, cases, GetParam(), diags);
+  EXPECT_FALSE(bad);
+  EXPECT_NE(messages(diags).find("has no output 'no_such_port'"), std::string::npos) << messages(diags);
+}
+
+INSTANTIATE_TEST_SUITE_P(Targets, ProbeOnGpu, ::testing::Values(Target::Glsl330, Target::Es300),
+                         [](const auto& info) { return std::string(targetName(info.param)); });
+
+}  // namespace
+}  // namespace wg::accuracy
+
+namespace wg::accuracy {
+namespace {
+
+std::string wg(const std::string& args, int* rc) {
+  std::string out;
+  *rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " " + args, &out);
+  return out;
+}
+
+TEST(ProbeCli, PrintsGpuReferenceErrorsAndExitsZeroOnTheExampleCases) {
+  int rc = 0;
+  std::string out = wg("probe " + test::shellQuote(test::sourcePath("graphs/lake.json")) + " --cases " +
+                           test::shellQuote(test::sourcePath("tests/hardcases/graphs.json")),
+                       &rc);
+  EXPECT_EQ(rc, 0) << out;
+  for (const char* s : {"gpu (", "ref (", "abs ", "rel ", "nan/inf: gpu no, ref no", "cases passed"})
+    EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
+}
+
+TEST(ProbeCli, ANodeAloneWithTheSuiteCases) {
+  int rc = 0;
+  std::string out = wg("probe --node pow --cases " + test::shellQuote(test::sourcePath("tests/hardcases/suite.json")), &rc);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("output pow.out"), std::string::npos) << out;
+  EXPECT_NE(out.find("ok    pow_zero_negative_exponent"), std::string::npos) << out;
+  out = wg("probe --node no_such_node --cases " + test::shellQuote(test::sourcePath("tests/hardcases/suite.json")), &rc);
+  EXPECT_EQ(rc, 2) << out;
+}
+
+TEST(ProbeCli, JsonOutputAndExitOneOnInfinity) {
+  std::string dir = test::makeTempDir("wg_probe");
+  test::writeFile(dir + "/d.json", R"({"version": 1, "name": "d", "parameters": {"b": {"type": "float", "default": 1}},
+    "nodes": [{"id": "q", "type": "div", "inputs": {"a": 1, "b": "$b"}}], "outputs": {"fragment": {"alpha": "q.out"}}})");
+  test::writeFile(dir + "/c.json", R"({"cases": [{"name": "zero", "parameters": {"b": 0}}]})");
+  int rc = 0;
+  std::string out = wg("probe " + test::shellQuote(dir + "/d.json") + " --output q.out --cases " +
+                           test::shellQuote(dir + "/c.json") + " --target es300 --json",
+                       &rc);
+  EXPECT_EQ(rc, 1) << out;
+  auto j = nlohmann::json::parse(out.substr(out.find('{')));
+  EXPECT_EQ(j["cases"][0]["gpu"][0], "inf");
+  EXPECT_EQ(j["cases"][0]["gpu_nan_inf"], true);
+  EXPECT_EQ(j["passed"], false);
+  // A bad cases file: file:line:col, exit 1.
+  test::writeFile(dir + "/bad.json", "{\"cases\": [{\"name\": \"a\", \"time\": \"soon\"}]}");
+  out = wg("probe " + test::shellQuote(dir + "/d.json") + " --cases " + test::shellQuote(dir + "/bad.json"), &rc);
+  EXPECT_EQ(rc, 1) << out;
+  EXPECT_NE(out.find("bad.json:1:34: error: [WG060] \"time\" must be a number"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wg::accuracy
