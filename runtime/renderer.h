@@ -63,6 +63,16 @@ class Renderer {
   Image readRgba8() const;
   Image readRgba32f() const;  // exact only when settings.floatColor
 
+  // Between frames (the editor): a free camera, the time and sun, and a new value for a
+  // graph parameter that is a uniform. setParameter returns false when the parameter is
+  // not a uniform of this compile (static, pruned) or the value has the wrong size; then
+  // only a recompile can show the change.
+  void setCamera(const Camera& camera);
+  void setScene(const SceneOptions& scene);
+  bool setParameter(const std::string& parameter, const std::vector<float>& value);
+  // The frame's colour texture (RGBA8 or RGBA32F, rows bottom-up), for showing it in a UI.
+  GLuint frameTexture() const;
+
   const PassPlan& plan() const;
   int createdTargetCount() const;     // GL render targets actually allocated
   size_t createdTargetBytes() const;  // their image memory
