@@ -8,6 +8,7 @@ namespace wg::editor {
 OrbitCamera OrbitCamera::fromCamera(const rt::Camera& camera) {
   OrbitCamera o;
   o.target = camera.target;
+  o.fovYDegrees = camera.fovYDegrees;
   glm::vec3 d = camera.position - camera.target;
   o.distance = std::max(glm::length(d), 0.1f);
   o.pitchDegrees = glm::degrees(std::asin(std::clamp(d.y / o.distance, -1.0f, 1.0f)));
@@ -20,6 +21,7 @@ rt::Camera OrbitCamera::toCamera() const {
   float yaw = glm::radians(yawDegrees), pitch = glm::radians(pitchDegrees);
   glm::vec3 offset(std::cos(pitch) * std::sin(yaw), std::sin(pitch), std::cos(pitch) * std::cos(yaw));
   c.target = target;
+  c.fovYDegrees = fovYDegrees;
   c.position = target + offset * distance;
   return c;
 }

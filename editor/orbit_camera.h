@@ -13,6 +13,7 @@ struct OrbitCamera {
   float yawDegrees = 0;     // around +y, 0 looking from +z towards -z
   float pitchDegrees = 20;  // above the horizon; negative looks from below
   float distance = 20;
+  float fovYDegrees = 55;   // kept from the preset
 
   static OrbitCamera fromCamera(const rt::Camera& camera);
   rt::Camera toCamera() const;
