@@ -25,11 +25,14 @@ struct EditorRun {
 };
 
 // Runs the editor under a virtual X server; Mesa's shader cache stays off (tests must not
-// write into the user's cache).
-EditorRun runEditor(const std::string& args) {
+// write into the user's cache). The X authority file lives in the test's folder: with its
+// own temporary folder, xvfb-run sometimes fails to remove it and exits 5 instead of
+// passing on the editor's status.
+EditorRun runEditor(const std::string& dir, const std::string& args) {
   EditorRun r;
-  std::string cmd = "MESA_SHADER_CACHE_DISABLE=true xvfb-run -a -s '-screen 0 800x600x24' " +
-                    test::shellQuote(editorBinary()) + " --size 640x360 --preview-size 320x180 " + args;
+  std::string cmd = "MESA_SHADER_CACHE_DISABLE=true xvfb-run -a -f " + test::shellQuote(dir + "/Xauthority") +
+                    " -s '-screen 0 800x600x24' " + test::shellQuote(editorBinary()) +
+                    " --size 640x360 --preview-size 320x180 " + args;
   r.status = test::runCommandSplit(cmd, &r.out, &r.err);
   return r;
 }
@@ -63,7 +66,7 @@ TEST(Editor, WithoutADisplayItSaysSoAndExits2) {
 
 TEST(Editor, ScriptedEditsAreSavedCanonicallyAndReopenUnchanged) {
   Workspace ws;
-  EditorRun r = runEditor(ws.script(R"([
+  EditorRun r = runEditor(ws.dir, ws.script(R"([
     {"op": "set_parameter", "name": "shallow", "value": [0.2, 0.6, 0.1]},
     {"op": "set_input", "node": "fresnel", "port": "f0", "value": 0.04},
     {"op": "add_node", "type": "saturate", "id": "clamped", "x": 480, "y": 300},
@@ -90,10 +93,12 @@ TEST(Editor, ScriptedEditsAreSavedCanonicallyAndReopenUnchanged) {
   bool linked = false;
   for (const auto& in : depth->inputs) linked |= in.port == "a" && in.source.node == "clamped";
   EXPECT_TRUE(linked);
-  EXPECT_EQ(test::listFiles(ws.dir), (std::vector<std::string>{"edits.json", "lake.json"})) << "no temporary left";
+  EXPECT_EQ(test::listFiles(ws.dir, ".json"), (std::vector<std::string>{"edits.json", "lake.json"}))
+      << "no temporary left";
+  for (const auto& f : test::listFiles(ws.dir)) EXPECT_EQ(f.find(".tmp"), std::string::npos) << f;
 
   // Reopened and saved again: byte for byte the same file.
-  EditorRun again = runEditor(ws.script(R"([{"op": "save"}])") + " " + test::shellQuote(ws.graph));
+  EditorRun again = runEditor(ws.dir, ws.script(R"([{"op": "save"}])") + " " + test::shellQuote(ws.graph));
   ASSERT_EQ(again.status, 0) << again.err;
   EXPECT_EQ(test::readFile(ws.graph), saved);
 }
@@ -101,7 +106,7 @@ TEST(Editor, ScriptedEditsAreSavedCanonicallyAndReopenUnchanged) {
 TEST(Editor, PreviewShowsParameterChangesAndNodeThumbnails) {
   Workspace ws;
   auto p = [&](const char* name) { return ws.path(name); };
-  EditorRun r = runEditor(ws.script(R"([
+  EditorRun r = runEditor(ws.dir, ws.script(R"([
     {"op": "save_preview", "path": ")" + p("before.png") + R"("},
     {"op": "set_parameter", "name": "shallow", "value": [1, 0.2, 0]},
     {"op": "set_parameter", "name": "deep", "value": [0.6, 0, 0.1]},
@@ -151,7 +156,7 @@ TEST(Editor, HotReloadKeepsTheLastGoodPreviewWhileTheFileIsBroken) {
   test::writeFile(ws.path("bad.json"), bad);
   test::writeFile(ws.path("fixed.json"), fixed);
 
-  EditorRun r = runEditor(ws.script(R"([
+  EditorRun r = runEditor(ws.dir, ws.script(R"([
     {"op": "save_preview", "path": ")" + ws.path("good.png") + R"("},
     {"op": "external_write", "from": ")" + ws.path("bad.json") + R"("},
     {"op": "wait_reload"},
@@ -175,7 +180,7 @@ TEST(Editor, HotReloadKeepsTheLastGoodPreviewWhileTheFileIsBroken) {
 TEST(Editor, ARefusedScriptEditFailsWithItsReason) {
   Workspace ws;
   std::string original = test::readFile(ws.graph);
-  EditorRun r = runEditor(ws.script(R"([{"op": "connect", "from": "color.out", "to": "from_centre.a"}, {"op": "save"}])") +
+  EditorRun r = runEditor(ws.dir, ws.script(R"([{"op": "connect", "from": "color.out", "to": "from_centre.a"}, {"op": "save"}])") +
                     " " + test::shellQuote(ws.graph));
   EXPECT_EQ(r.status, 1);
   EXPECT_NE(r.err.find("step 1 (connect)"), std::string::npos) << r.err;
