@@ -2,7 +2,8 @@
 // Executes one compiled graph in the built-in scene: plans the passes from the manifest,
 // creates only the render targets those passes need, and renders frames into an
 // offscreen framebuffer (RGBA8 for previews, RGBA32F for accuracy work) that can be read
-// back. A GL context (EglContext) whose API matches the shaders' target must be current.
+// back. A GL context (EglContext, or the editor's GlfwContext) whose API matches the
+// shaders' target must be current.
 #include <cstdint>
 #include <map>
 #include <memory>
