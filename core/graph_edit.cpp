@@ -130,6 +130,53 @@ std::string GraphEditor::setInputParameter(const InputTarget& target, const std:
   return "";
 }
 
+std::string GraphEditor::setOption(const std::string& node, const std::string& name, const nlohmann::json& value) {
+  const Node* n = graph_.findNode(node);
+  if (!n) return "no node '" + node + "'";
+  std::string what = "option '" + name + "' of node '" + node + "'";
+  if (registry_) {
+    if (const NodeSpec* spec = registry_->find(n->type)) {
+      int index = spec->optionIndex(name);
+      if (index < 0) return "node '" + node + "' (" + n->type + ") has no option '" + name + "'";
+      const OptionSpec& o = spec->options[static_cast<size_t>(index)];
+      switch (o.kind) {
+        case OptionSpec::Kind::Enum:
+          if (!value.is_string() || std::find(o.choices.begin(), o.choices.end(), value.get<std::string>()) == o.choices.end())
+            return what + " must be one of its choices";
+          break;
+        case OptionSpec::Kind::Bool:
+          if (!value.is_boolean()) return what + " must be true or false";
+          break;
+        case OptionSpec::Kind::Number:
+        case OptionSpec::Kind::Integer: {
+          if (!value.is_number() || !std::isfinite(value.get<double>())) return what + " must be a finite number";
+          double x = value.get<double>();
+          if (o.kind == OptionSpec::Kind::Integer && std::floor(x) != x) return what + " must be a whole number";
+          if ((o.min && x < *o.min) || (o.max && x > *o.max)) return what + " is out of its range";
+          break;
+        }
+        case OptionSpec::Kind::Texture:
+        case OptionSpec::Kind::Json: break;
+      }
+    }
+  }
+  for (const auto& o : n->options)
+    if (o.name == name && o.value == value) return "";
+  record("set " + what, "option:" + node + "." + name);
+  Node* m = findNode(node);
+  for (auto& o : m->options)
+    if (o.name == name) {
+      o.value = value;
+      return "";
+    }
+  NodeOption o;
+  o.name = name;
+  o.value = value;
+  o.where.file = o.keyWhere.file = graph_.file;
+  m->options.push_back(std::move(o));
+  return "";
+}
+
 std::string GraphEditor::connect(const std::string& fromNode, const std::string& fromPort, const InputTarget& target) {
   if (std::string why = checkTarget(target); !why.empty()) return why;
   const Node* from = graph_.findNode(fromNode);

@@ -33,6 +33,10 @@ class GraphEditor {
   std::string setParameterDefault(const std::string& name, const std::vector<double>& value);
   std::string setInputConstant(const InputTarget& target, const std::vector<double>& value);
   std::string setInputParameter(const InputTarget& target, const std::string& parameter);
+  // A node option (e.g. fresnel's "model"). With a registry, the name must exist and an
+  // enum, bool or number option's value must fit it; texture and JSON options are checked
+  // by compiling.
+  std::string setOption(const std::string& node, const std::string& name, const nlohmann::json& value);
   // Feeds `target` from output `fromPort` of node `fromNode`; refused if it closes a cycle.
   std::string connect(const std::string& fromNode, const std::string& fromPort, const InputTarget& target);
   // The input goes back to its default (or the output slot is removed).

@@ -8,7 +8,7 @@ namespace wg::editor {
 namespace {
 
 const std::set<std::string>& editOps() {
-  static const std::set<std::string> ops{"set_parameter", "set_input", "connect", "disconnect", "add_node",
+  static const std::set<std::string> ops{"set_parameter", "set_input", "set_option", "connect", "disconnect", "add_node",
                                          "delete_node", "move_node", "undo", "redo"};
   return ops;
 }
@@ -106,6 +106,10 @@ std::string applyEditStep(GraphEditor& e, const ScriptStep& step) {
     if (op == "set_input") {
       if (a.contains("parameter")) return e.setInputParameter(target(a), text(a, "parameter"));
       return e.setInputConstant(target(a), numbers(a, "value"));
+    }
+    if (op == "set_option") {
+      if (!a.contains("value")) throw std::invalid_argument("needs a \"value\"");
+      return e.setOption(text(a, "node"), text(a, "name"), a["value"]);
     }
     if (op == "connect") {
       auto [node, port] = nodePort(text(a, "from"));

@@ -527,9 +527,14 @@ void App::drawInspectorPanel(float x, float y, float w, float h) {
   ImGui::TextDisabled("%s%s", std::filesystem::path(options_.graphPath).filename().c_str(), editor_.dirty() ? " (modified)" : "");
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameterInspector(editor_);
   if (ImGui::CollapsingHeader("Selected node", ImGuiTreeNodeFlags_DefaultOpen)) {
-    drawNodeInspector(editor_, registry_, selected_);
+    // The thumbnail first, so it stays in view above a long list of inputs and options.
     const Node* n = editor_.graph().findNode(selected_);
     const NodeSpec* spec = n ? registry_.find(n->type) : nullptr;
+    if (thumb_ && thumb_->ready())
+      ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumb_->texture())), ImVec2(192, 108), ImVec2(0, 1),
+                   ImVec2(1, 0));
+    else if (!selected_.empty() && !thumbMessage_.empty())
+      ImGui::TextDisabled("no thumbnail: %s", thumbMessage_.c_str());
     if (spec && spec->outputs.size() > 1) {
       ImGui::SetNextItemWidth(140);
       if (ImGui::BeginCombo("output", spec->outputs[static_cast<size_t>(std::min<int>(thumbPort_, static_cast<int>(spec->outputs.size()) - 1))].name.c_str())) {
@@ -539,11 +544,7 @@ void App::drawInspectorPanel(float x, float y, float w, float h) {
         ImGui::EndCombo();
       }
     }
-    if (thumb_ && thumb_->ready())
-      ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumb_->texture())), ImVec2(192, 108), ImVec2(0, 1),
-                   ImVec2(1, 0));
-    else if (!selected_.empty() && !thumbMessage_.empty())
-      ImGui::TextDisabled("no thumbnail: %s", thumbMessage_.c_str());
+    drawNodeInspector(editor_, registry_, selected_);
   }
   ImGui::End();
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "core/number_format.h"
@@ -92,10 +93,52 @@ void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
     if (ImGui::IsItemHovered() && !port.doc.empty()) ImGui::SetTooltip("%s", port.doc.c_str());
     ImGui::PopID();
   }
-  const Node* now = editor.graph().findNode(id);
-  if (now && !now->options.empty()) {
-    ImGui::Separator();
-    for (const auto& o : now->options) ImGui::Text("option %s = %s", o.name.c_str(), o.value.dump().c_str());
+  if (!spec->options.empty()) ImGui::Separator();
+  for (const OptionSpec& o : spec->options) {
+    const Node* now = editor.graph().findNode(id);
+    if (!now) break;
+    nlohmann::json value = o.defaultValue;
+    for (const auto& set : now->options)
+      if (set.name == o.name) value = set.value;
+    ImGui::PushID(o.name.c_str());
+    std::string label = "option " + o.name;
+    switch (o.kind) {
+      case OptionSpec::Kind::Enum: {
+        std::string current = value.is_string() ? value.get<std::string>() : "";
+        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+          for (const auto& choice : o.choices)
+            if (ImGui::Selectable(choice.c_str(), choice == current)) editor.setOption(id, o.name, choice);
+          ImGui::EndCombo();
+        }
+        break;
+      }
+      case OptionSpec::Kind::Bool: {
+        bool b = value.is_boolean() && value.get<bool>();
+        if (ImGui::Checkbox(label.c_str(), &b)) editor.setOption(id, o.name, b);
+        break;
+      }
+      case OptionSpec::Kind::Number:
+      case OptionSpec::Kind::Integer: {
+        bool integer = o.kind == OptionSpec::Kind::Integer;
+        double x = value.is_number() ? value.get<double>() : 0;
+        double lo = o.min.value_or(-1e9), hi = o.max.value_or(1e9);
+        bool changed = integer ? ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &x, 0.1f, &lo, &hi, "%.0f")
+                               : ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &x, 0.01f, &lo, &hi, "%.3f");
+        if (changed) {
+          x = std::clamp(integer ? std::round(x) : x, lo, hi);
+          integer ? editor.setOption(id, o.name, static_cast<long long>(x)) : editor.setOption(id, o.name, x);
+        }
+        sealAfterEdit(editor);
+        break;
+      }
+      case OptionSpec::Kind::Texture:
+      case OptionSpec::Kind::Json:
+        // Lists and paths: edited in the file (hot reload shows them).
+        ImGui::TextWrapped("%s = %s", label.c_str(), value.dump().c_str());
+        break;
+    }
+    if (ImGui::IsItemHovered() && !o.doc.empty()) ImGui::SetTooltip("%s", o.doc.c_str());
+    ImGui::PopID();
   }
 }
 

@@ -94,6 +94,20 @@ TEST(GraphEdit, InputsTakeConstantsAndParameters) {
   EXPECT_EQ(input(e.graph(), "depth", "b")->source.parameter, "max_depth");
 }
 
+TEST(GraphEdit, OptionsAreCheckedAgainstTheNodeType) {
+  GraphEditor e(lake(), &defaultRegistry());
+  EXPECT_NE(e.setOption("fresnel", "model", "nonsense"), "");
+  EXPECT_NE(e.setOption("fresnel", "modle", "exact"), "");
+  EXPECT_NE(e.setOption("shore", "clamp", 1), "") << "a bool option";
+  EXPECT_NE(e.setOption("ghost", "model", "exact"), "");
+  EXPECT_FALSE(e.canUndo());
+  ASSERT_EQ(e.setOption("fresnel", "model", "exact"), "");
+  EXPECT_EQ(e.graph().findNode("fresnel")->options[0].value, "exact");
+  ASSERT_EQ(e.setOption("shore", "clamp", false), "");
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(e.graph().findNode("shore")->options[0].value, true);
+}
+
 TEST(GraphEdit, DisconnectRestoresTheDefault) {
   GraphEditor e(lake(), &defaultRegistry());
   EXPECT_NE(e.disconnect({"fresnel", "normal"}), "") << "not set in the file";

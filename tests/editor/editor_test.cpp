@@ -69,6 +69,7 @@ TEST(Editor, ScriptedEditsAreSavedCanonicallyAndReopenUnchanged) {
   EditorRun r = runEditor(ws.dir, ws.script(R"([
     {"op": "set_parameter", "name": "shallow", "value": [0.2, 0.6, 0.1]},
     {"op": "set_input", "node": "fresnel", "port": "f0", "value": 0.04},
+    {"op": "set_option", "node": "fresnel", "name": "model", "value": "exact"},
     {"op": "add_node", "type": "saturate", "id": "clamped", "x": 480, "y": 300},
     {"op": "connect", "from": "shore.out", "to": "clamped.x"},
     {"op": "connect", "from": "clamped.out", "to": "depth.a"},
@@ -88,6 +89,7 @@ TEST(Editor, ScriptedEditsAreSavedCanonicallyAndReopenUnchanged) {
   EXPECT_EQ(g->findNode("clamped")->editorPosition, (std::array<double, 2>{480, 300}));
   EXPECT_EQ(g->findNode("uv")->editorPosition, (std::array<double, 2>{-200, 40}));
   EXPECT_FALSE(g->findNode("spare"));
+  EXPECT_EQ(g->findNode("fresnel")->options.at(0).value, "exact");
   for (const auto& n : g->nodes) EXPECT_TRUE(n.editorPosition) << "every node keeps a canvas position: " << n.id;
   const Node* depth = g->findNode("depth");
   bool linked = false;
