@@ -35,6 +35,7 @@ struct CompileArgs {
   bool noProgress = false;
   bool watch = false;
   int watchIntervalMs = 250;
+  std::string preset;
 };
 
 struct TargetSet {
@@ -144,7 +145,10 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
   auto graph = loadGraphFile(path, diags);
   std::optional<CompileResult> result;
   if (graph) {
-    result = compileGraphWithCross(*graph, defaultRegistry(), targets.glsl, targets.cross, diags);
+    CompileOptions options;
+    options.targets = targets.glsl;
+    options.preset = args.preset;
+    result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
     outcome.total = static_cast<int>(graph->nodes.size());
   }
   if (result) {
@@ -271,6 +275,9 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   auto* quiet = cmd->add_flag("-q,--quiet", args.quiet, "print only errors");
   cmd->add_flag("-v,--verbose", args.verbose, "print one line per graph: nodes kept, files, time")->excludes(quiet);
   cmd->add_flag("--no-progress", args.noProgress, "no progress bar (it is drawn only when stdout is a terminal)");
+  cmd->add_option("--preset", args.preset,
+                  "a preset from the graph's \"presets\" table (e.g. calm, moderate, choppy): its values become the "
+                  "parameter defaults; static parameters fold into the shader");
 }
 
 }  // namespace

@@ -107,6 +107,22 @@ std::string GraphEditor::setParameterDefault(const std::string& name, const std:
   return "";
 }
 
+std::string GraphEditor::applyPreset(const std::string& name) {
+  auto preset = std::find_if(graph_.presets.begin(), graph_.presets.end(), [&](const Preset& p) { return p.name == name; });
+  if (preset == graph_.presets.end()) return "no preset '" + name + "'";
+  Graph next = graph_;
+  for (const PresetValue& v : preset->values) {
+    auto p = std::find_if(next.parameters.begin(), next.parameters.end(), [&](const Parameter& q) { return q.name == v.parameter; });
+    if (p == next.parameters.end()) return "preset '" + name + "' names no parameter '" + v.parameter + "'";
+    if (v.value.size() != p->defaultValue.size())
+      return "preset '" + name + "': parameter '" + v.parameter + "' takes " + std::to_string(p->defaultValue.size()) + " number(s)";
+    p->defaultValue = v.value;
+  }
+  record("apply preset '" + name + "'", "");
+  graph_ = std::move(next);
+  return "";
+}
+
 std::string GraphEditor::setInputConstant(const InputTarget& target, const std::vector<double>& value) {
   if (std::string why = checkTarget(target); !why.empty()) return why;
   if (value.empty() || value.size() > 4) return describe(target) + ": a constant has 1 to 4 numbers";

@@ -31,6 +31,9 @@ class GraphEditor {
 
   // Each returns "" when the edit was applied, else one line saying why it was refused.
   std::string setParameterDefault(const std::string& name, const std::vector<double>& value);
+  // Makes a graph preset's values ("presets": {"calm": {...}}) the parameters' defaults,
+  // as one undoable step: what `--preset NAME` compiles, made permanent on save.
+  std::string applyPreset(const std::string& name);
   std::string setInputConstant(const InputTarget& target, const std::vector<double>& value);
   std::string setInputParameter(const InputTarget& target, const std::string& parameter);
   // A node option (e.g. fresnel's "model"). With a registry, the name must exist and an

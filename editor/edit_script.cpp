@@ -8,7 +8,7 @@ namespace wg::editor {
 namespace {
 
 const std::set<std::string>& editOps() {
-  static const std::set<std::string> ops{"set_parameter", "set_input", "set_option", "connect", "disconnect", "add_node",
+  static const std::set<std::string> ops{"set_parameter", "apply_preset", "set_input", "set_option", "connect", "disconnect", "add_node",
                                          "delete_node", "move_node", "undo", "redo"};
   return ops;
 }
@@ -107,6 +107,7 @@ std::string applyEditStep(GraphEditor& e, const ScriptStep& step) {
       if (a.contains("parameter")) return e.setInputParameter(target(a), text(a, "parameter"));
       return e.setInputConstant(target(a), numbers(a, "value"));
     }
+    if (op == "apply_preset") return e.applyPreset(text(a, "name"));
     if (op == "set_option") {
       if (!a.contains("value")) throw std::invalid_argument("needs a \"value\"");
       return e.setOption(text(a, "node"), text(a, "name"), a["value"]);

@@ -27,6 +27,17 @@ bool editFloats(const char* label, std::vector<float>& v, float lo, float hi, bo
 
 void drawParameterInspector(GraphEditor& editor) {
   const Graph& g = editor.graph();
+  if (!g.presets.empty()) {
+    // A preset writes its values into the parameters (one undo step); the sliders then
+    // show them, and saving keeps them as the defaults.
+    if (ImGui::BeginCombo("preset", "apply a preset...")) {
+      std::string chosen;
+      for (const Preset& p : g.presets)
+        if (ImGui::Selectable(p.name.c_str())) chosen = p.name;
+      ImGui::EndCombo();
+      if (!chosen.empty()) editor.applyPreset(chosen);
+    }
+  }
   if (g.parameters.empty()) ImGui::TextDisabled("this graph has no parameters");
   for (const Parameter& p : g.parameters) {
     ImGui::PushID(p.name.c_str());

@@ -10,6 +10,7 @@
 
 #include "codegen/shader_interface.h"
 #include "nodes/texture_source.h"
+#include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
@@ -254,6 +255,7 @@ struct Renderer::Impl {
     else if (b == "time") v = {settings.scene.time};
     else if (b == "viewport_size") v = {static_cast<float>(settings.width), static_cast<float>(settings.height)};
     else if (b == "camera_near_far") v = {camera.nearPlane, camera.farPlane};
+    else if (b == "sun_direction") v = {sun.x, sun.y, sun.z};
     else if (b == "time_phase") {
       // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
       double twoPi = 6.283185307179586;
@@ -454,8 +456,18 @@ struct Renderer::Impl {
           // The camera mirrored about y = 0; only what is on the camera's side of the
           // water is reflected.
           bindTarget(*find("reflection"), true);
-          glm::mat4 mirrored = viewProjection * glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
-          drawOpaque(mirrored, glm::vec4(0, cameraSide(), 0, 0));
+          const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
+          const glm::mat4 mirrored = viewProjection * mirror;
+          const glm::vec4 waterPlane(0, cameraSide(), 0, 0);
+          if (settings.obliqueReflection) {
+            // The mirrored camera sits on the far side of the water plane, as the
+            // oblique projection requires; the sky keeps the plain matrix (it only
+            // reconstructs view directions from it).
+            glm::mat4 oblique = obliqueProjection(projection, planeToEye(view * mirror, waterPlane));
+            drawOpaque(oblique * view * mirror, noClip);
+          } else {
+            drawOpaque(mirrored, waterPlane);
+          }
           drawSky(mirrored);
           break;
         }

@@ -193,6 +193,22 @@ TEST(GraphEdit, SavedFileKeepsPositionsAndReopensIdentical) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(GraphEdit, APresetSetsItsParametersInOneStep) {
+  Diagnostics d;
+  auto topdown = loadGraphFile(test::sourcePath("graphs/topdown.json"), d);
+  ASSERT_TRUE(topdown);
+  GraphEditor e(*topdown, &defaultRegistry());
+  std::string before = saveGraph(e.graph());
+  EXPECT_NE(e.applyPreset("stormy"), "");
+  ASSERT_EQ(e.applyPreset("choppy"), "");
+  EXPECT_EQ(e.graph().findParameter("wave_height")->defaultValue, std::vector<double>{1});
+  EXPECT_EQ(e.graph().findParameter("ripple_strength")->defaultValue, std::vector<double>{0.3});
+  EXPECT_EQ(e.undoLabel(), "apply preset 'choppy'");
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(saveGraph(e.graph()), before);
+  EXPECT_FALSE(e.canUndo());
+}
+
 TEST(GraphEdit, ReplaceIsUndoable) {
   GraphEditor e(lake(), &defaultRegistry());
   std::string before = saveGraph(e.graph());

@@ -179,6 +179,21 @@ TEST(Editor, HotReloadKeepsTheLastGoodPreviewWhileTheFileIsBroken) {
   EXPECT_EQ(test::readFile(ws.graph), fixed) << "the editor never writes the file by itself";
 }
 
+TEST(Editor, APresetFromTheInspectorBecomesTheSavedDefaults) {
+  Workspace ws;
+  std::string graph = ws.path("topdown.json");
+  test::writeFile(graph, test::readFile(test::sourcePath("graphs/topdown.json")));
+  EditorRun r = runEditor(ws.dir, ws.script(R"([{"op": "apply_preset", "name": "choppy"}, {"op": "save"}])") + " " +
+                                      test::shellQuote(graph));
+  ASSERT_EQ(r.status, 0) << r.err;
+  Diagnostics d;
+  auto g = loadGraphFile(graph, d);
+  ASSERT_TRUE(g);
+  EXPECT_EQ(g->findParameter("wave_height")->defaultValue, std::vector<double>{1});
+  EXPECT_EQ(g->findParameter("foam_threshold")->defaultValue, std::vector<double>{0.66});
+  EXPECT_EQ(g->presets.size(), 5u) << "the presets stay in the file";
+}
+
 TEST(Editor, ARefusedScriptEditFailsWithItsReason) {
   Workspace ws;
   std::string original = test::readFile(ws.graph);
