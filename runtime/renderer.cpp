@@ -372,6 +372,7 @@ struct Renderer::Impl {
   // The sky lies at the far plane (depth 1): drawn after the opaque scene with LEQUAL and
   // no depth writes, it shades only the pixels nothing else covered.
   void drawSky(const glm::mat4& vp) {
+    if (!settings.scene.drawScene) return;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
@@ -386,6 +387,7 @@ struct Renderer::Impl {
 
   // Draws the opaque scene keeping the side where dot(plane, (p, 1)) >= 0.
   void drawOpaque(const glm::mat4& vp, const glm::vec4& plane) {
+    if (!settings.scene.drawScene) return;
     glUseProgram(opaque.id());
     glUniformMatrix4fv(opaqueVp, 1, GL_FALSE, glm::value_ptr(vp));
     glUniform4fv(opaqueClip, 1, glm::value_ptr(plane));
@@ -415,6 +417,8 @@ struct Renderer::Impl {
     for (int f = 0; f < 6; ++f) {
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f),
                              t->color.id(), 0);
+      glClearColor(0, 0, 0, 1);  // what stays there without the scene (drawScene false)
+      glClear(GL_COLOR_BUFFER_BIT);
       drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
     }
   }
