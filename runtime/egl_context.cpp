@@ -73,8 +73,6 @@ EGLDisplay surfacelessDisplay() {
 
 }  // namespace
 
-const char* apiName(GlApi api) { return api == GlApi::Es32 ? "OpenGL ES 3.2" : "OpenGL 4.5 core"; }
-
 std::unique_ptr<EglContext> EglContext::create(GlApi api) {
   EGLDisplay d = surfacelessDisplay();
   bool es = api == GlApi::Es32;
@@ -92,8 +90,7 @@ std::unique_ptr<EglContext> EglContext::create(GlApi api) {
   if (ctx == EGL_NO_CONTEXT)
     fail(std::string("cannot render: no ") + apiName(api) + " context on the EGL surfaceless display (" +
          eglErrorName(eglGetError()) + ")");
-  std::unique_ptr<EglContext> c(new EglContext());
-  c->api_ = api;
+  std::unique_ptr<EglContext> c(new EglContext(api));
   c->display_ = d;
   c->context_ = ctx;
   c->makeCurrent();
@@ -111,20 +108,8 @@ EglContext::~EglContext() {
 void EglContext::makeCurrent() {
   if (!eglMakeCurrent(static_cast<EGLDisplay>(display_), EGL_NO_SURFACE, EGL_NO_SURFACE,
                       static_cast<EGLContext>(context_)))
-    fail(std::string("cannot render: eglMakeCurrent failed for the ") + apiName(api_) + " context (" +
+    fail(std::string("cannot render: eglMakeCurrent failed for the ") + apiName(api()) + " context (" +
          eglErrorName(eglGetError()) + ")");
 }
-
-std::string EglContext::renderer() const {
-  auto s = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return s ? s : "";
-}
-
-std::string EglContext::version() const {
-  auto s = reinterpret_cast<const char*>(glGetString(GL_VERSION));
-  return s ? s : "";
-}
-
-bool EglContext::hasExtension(const char* name) const { return epoxy_has_gl_extension(name); }
 
 }  // namespace wg::rt

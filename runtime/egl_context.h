@@ -6,33 +6,22 @@
 #include <memory>
 #include <string>
 
+#include "runtime/gl_context.h"
+
 namespace wg::rt {
 
-enum class GlApi { DesktopGl45, Es32 };
-
-const char* apiName(GlApi api);  // "OpenGL 4.5 core", "OpenGL ES 3.2"
-
-class EglContext {
+class EglContext : public GlContext {
  public:
   // Creates the context and makes it current on this thread. Throws RuntimeError
   // (Kind::Environment) with one line naming what is missing: the EGL library, the
   // surfaceless platform extension, the display, the API or the context version.
   static std::unique_ptr<EglContext> create(GlApi api);
-  ~EglContext();
-  EglContext(const EglContext&) = delete;
-  EglContext& operator=(const EglContext&) = delete;
+  ~EglContext() override;
 
-  void makeCurrent();
-  GlApi api() const { return api_; }
-  bool isEs() const { return api_ == GlApi::Es32; }
-  // GL_RENDERER and GL_VERSION of the current context, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)".
-  std::string renderer() const;
-  std::string version() const;
-  bool hasExtension(const char* name) const;
+  void makeCurrent() override;
 
  private:
-  EglContext() = default;
-  GlApi api_ = GlApi::DesktopGl45;
+  explicit EglContext(GlApi api) : GlContext(api) {}
   void* display_ = nullptr;  // EGLDisplay
   void* context_ = nullptr;  // EGLContext
 };

@@ -232,62 +232,89 @@ struct Renderer::Impl {
     return t;
   }
 
+  // A water uniform from the manifest: a graph parameter (its value kept here, so the
+  // editor can change it between frames without a recompile) or a builtin recomputed from
+  // the camera, time and sun every frame.
+  struct WaterUniform {
+    std::string name, type, builtin, parameter;
+    double angularFrequency = 0;  // time_phase
+    std::vector<float> value;     // parameter values
+    std::vector<std::pair<GLuint, GLint>> locations;  // (program, location) where it is used
+  };
+  std::vector<WaterUniform> uniforms;
+
+  std::vector<float> builtinValue(const WaterUniform& u) const {
+    const std::string& b = u.builtin;
+    std::vector<float> v;
+    auto mat = [&](const glm::mat4& m4) { v.assign(glm::value_ptr(m4), glm::value_ptr(m4) + 16); };
+    if (b == "model") mat(glm::mat4(1.0f));
+    else if (b == "view_projection") mat(viewProjection);
+    else if (b == "view") mat(view);
+    else if (b == "projection") mat(projection);
+    else if (b == "camera_position") v = {camera.position.x, camera.position.y, camera.position.z};
+    else if (b == "time") v = {settings.scene.time};
+    else if (b == "viewport_size") v = {static_cast<float>(settings.width), static_cast<float>(settings.height)};
+    else if (b == "camera_near_far") v = {camera.nearPlane, camera.farPlane};
+    else if (b == "sun_direction") v = {sun.x, sun.y, sun.z};
+    else if (b == "time_phase") {
+      // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
+      double twoPi = 6.283185307179586;
+      double phase = u.angularFrequency * static_cast<double>(settings.scene.time);
+      phase -= twoPi * std::floor(phase / twoPi);
+      v = {static_cast<float>(phase)};
+    } else {
+      manifestError("uniform " + u.name + " asks for builtin '" + b + "', which the runtime does not provide");
+    }
+    return v;
+  }
+
+  void setUniform(const WaterUniform& u, const std::vector<float>& v) const {
+    auto need = [&](size_t n) {
+      if (v.size() != n)
+        manifestError("uniform " + u.name + " of type " + u.type + " got " + std::to_string(v.size()) + " value(s)");
+    };
+    const std::string& type = u.type;
+    for (auto [program, loc] : u.locations) {
+      glUseProgram(program);
+      if (type == "float") need(1), glUniform1f(loc, v[0]);
+      else if (type == "vec2") need(2), glUniform2fv(loc, 1, v.data());
+      else if (type == "vec3") need(3), glUniform3fv(loc, 1, v.data());
+      else if (type == "vec4") need(4), glUniform4fv(loc, 1, v.data());
+      else if (type == "int" || type == "bool") need(1), glUniform1i(loc, static_cast<GLint>(v[0]));
+      else if (type == "mat3") need(9), glUniformMatrix3fv(loc, 1, GL_FALSE, v.data());
+      else if (type == "mat4") need(16), glUniformMatrix4fv(loc, 1, GL_FALSE, v.data());
+      else manifestError("uniform " + u.name + " has a type the runtime cannot set: " + type);
+    }
+  }
+
+  // Every frame: the camera, time and sun may have changed since the last one.
+  void applyUniforms() const {
+    for (const auto& u : uniforms) setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);
+  }
+
   void setupWaterUniforms(const nlohmann::json& manifest, const std::map<std::string, TextureOrigin>& origins) {
-    auto uniforms = manifest.find("uniforms");
-    if (uniforms != manifest.end() && !uniforms->is_array()) manifestError("the manifest's \"uniforms\" is not a list");
-    if (uniforms != manifest.end()) {
-      for (const auto& u : *uniforms) {
-        std::string name = u.value("name", "");
-        std::string type = u.value("type", "");
-        if (name.empty() || type.empty()) manifestError("a manifest uniform lacks \"name\" or \"type\"");
-        std::vector<float> v;
-        if (u.contains("parameter")) {
-          v = numbers(u.value("default", nlohmann::json()));
-          if (v.empty()) manifestError("parameter uniform " + name + " has no numeric \"default\"");
+    auto list = manifest.find("uniforms");
+    if (list != manifest.end() && !list->is_array()) manifestError("the manifest's \"uniforms\" is not a list");
+    if (list != manifest.end()) {
+      for (const auto& m : *list) {
+        WaterUniform u;
+        u.name = m.value("name", "");
+        u.type = m.value("type", "");
+        if (u.name.empty() || u.type.empty()) manifestError("a manifest uniform lacks \"name\" or \"type\"");
+        if (m.contains("parameter")) {
+          u.parameter = m["parameter"].is_string() ? m["parameter"].get<std::string>() : u.name;
+          u.value = numbers(m.value("default", nlohmann::json()));
+          if (u.value.empty()) manifestError("parameter uniform " + u.name + " has no numeric \"default\"");
         } else {
-          std::string b = u.value("builtin", "");
-          const glm::mat4 model(1.0f);
-          auto mat = [&](const glm::mat4& m4) { v.assign(glm::value_ptr(m4), glm::value_ptr(m4) + 16); };
-          if (b == "model") mat(model);
-          else if (b == "view_projection") mat(viewProjection);
-          else if (b == "view") mat(view);
-          else if (b == "projection") mat(projection);
-          else if (b == "camera_position") v = {camera.position.x, camera.position.y, camera.position.z};
-          else if (b == "time") v = {settings.scene.time};
-          else if (b == "viewport_size") v = {static_cast<float>(settings.width), static_cast<float>(settings.height)};
-          else if (b == "camera_near_far") v = {camera.nearPlane, camera.farPlane};
-          else if (b == "sun_direction") {
-            glm::vec3 sun = sunDirection(settings.scene);
-            v = {sun.x, sun.y, sun.z};
-          }
-          else if (b == "time_phase") {
-            // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
-            double omega = u.value("angular_frequency", 0.0);
-            double twoPi = 6.283185307179586;
-            double phase = omega * static_cast<double>(settings.scene.time);
-            phase -= twoPi * std::floor(phase / twoPi);
-            v = {static_cast<float>(phase)};
-          } else {
-            manifestError("uniform " + name + " asks for builtin '" + b + "', which the runtime does not provide");
-          }
+          u.builtin = m.value("builtin", "");
+          u.angularFrequency = m.value("angular_frequency", 0.0);
         }
         for (GLuint program : waterPrograms()) {
-        glUseProgram(program);
-        GLint loc = glGetUniformLocation(program, name.c_str());
-        if (loc < 0) continue;  // not in this program, or optimised out by the driver
-        auto need = [&](size_t n) {
-          if (v.size() != n)
-            manifestError("uniform " + name + " of type " + type + " got " + std::to_string(v.size()) + " value(s)");
-        };
-        if (type == "float") need(1), glUniform1f(loc, v[0]);
-        else if (type == "vec2") need(2), glUniform2fv(loc, 1, v.data());
-        else if (type == "vec3") need(3), glUniform3fv(loc, 1, v.data());
-        else if (type == "vec4") need(4), glUniform4fv(loc, 1, v.data());
-        else if (type == "int" || type == "bool") need(1), glUniform1i(loc, static_cast<GLint>(v[0]));
-        else if (type == "mat3") need(9), glUniformMatrix3fv(loc, 1, GL_FALSE, v.data());
-        else if (type == "mat4") need(16), glUniformMatrix4fv(loc, 1, GL_FALSE, v.data());
-        else manifestError("uniform " + name + " has a type the runtime cannot set: " + type);
+          GLint loc = glGetUniformLocation(program, u.name.c_str());
+          if (loc >= 0) u.locations.emplace_back(program, loc);  // else optimised out by the driver
         }
+        setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);  // errors now, not at the first frame
+        uniforms.push_back(std::move(u));
       }
     }
     // Samplers: node textures (loaded here) and scene textures (render targets of the
@@ -404,11 +431,19 @@ struct Renderer::Impl {
     glActiveTexture(GL_TEXTURE0);
   }
 
+  void setCamera(const Camera& c) {
+    camera = c;
+    view = camera.view();
+    projection = camera.projection(aspect);
+    viewProjection = projection * view;
+  }
+
   // Which half-space the water's own camera side is: above (+y) unless under water.
   float cameraSide() const { return camera.position.y >= 0.0f ? 1.0f : -1.0f; }
 
   double renderOneFrame() {
     auto start = std::chrono::steady_clock::now();
+    applyUniforms();
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
@@ -547,11 +582,8 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   r.es = es;
   auto cam = settings.customCamera ? settings.customCamera : cameraPreset(settings.camera);
   if (!cam) throw RuntimeError(RuntimeError::Kind::Manifest, "unknown camera preset '" + settings.camera + "'");
-  r.camera = *cam;
   r.aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
-  r.view = r.camera.view();
-  r.projection = r.camera.projection(r.aspect);
-  r.viewProjection = r.projection * r.view;
+  r.setCamera(*cam);
   r.sun = sunDirection(settings.scene);
 
   PlanOptions po;
@@ -644,5 +676,25 @@ size_t Renderer::createdTargetBytes() const {
   return n;
 }
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
+
+void Renderer::setCamera(const Camera& camera) { impl_->setCamera(camera); }
+
+void Renderer::setScene(const SceneOptions& scene) {
+  impl_->settings.scene = scene;
+  impl_->sun = sunDirection(scene);
+}
+
+bool Renderer::setParameter(const std::string& parameter, const std::vector<float>& value) {
+  bool found = false;
+  for (auto& u : impl_->uniforms) {
+    if (u.parameter != parameter) continue;
+    if (value.size() != u.value.size()) return false;
+    u.value = value;
+    found = true;
+  }
+  return found;
+}
+
+GLuint Renderer::frameTexture() const { return impl_->frame().color.id(); }
 
 }  // namespace wg::rt

@@ -2,7 +2,8 @@
 // Executes one compiled graph in the built-in scene: plans the passes from the manifest,
 // creates only the render targets those passes need, and renders frames into an
 // offscreen framebuffer (RGBA8 for previews, RGBA32F for accuracy work) that can be read
-// back. A GL context (EglContext) whose API matches the shaders' target must be current.
+// back. A GL context (EglContext, or the editor's GlfwContext) whose API matches the
+// shaders' target must be current.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -70,6 +71,16 @@ class Renderer {
   // The frame's depth-buffer values, rows top to bottom. Desktop GL only (OpenGL ES cannot
   // read depth back): throws RuntimeError(Kind::Manifest) on ES.
   std::vector<float> readDepth() const;
+
+  // Between frames (the editor): a free camera, the time and sun, and a new value for a
+  // graph parameter that is a uniform. setParameter returns false when the parameter is
+  // not a uniform of this compile (static, pruned) or the value has the wrong size; then
+  // only a recompile can show the change.
+  void setCamera(const Camera& camera);
+  void setScene(const SceneOptions& scene);
+  bool setParameter(const std::string& parameter, const std::vector<float>& value);
+  // The frame's colour texture (RGBA8 or RGBA32F, rows bottom-up), for showing it in a UI.
+  GLuint frameTexture() const;
 
   const PassPlan& plan() const;
   int createdTargetCount() const;     // GL render targets actually allocated

@@ -1,0 +1,320 @@
+#include "core/graph_edit.h"
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+#include "core/number_format.h"
+
+namespace wg {
+namespace {
+
+std::optional<OutputSlot> parseSlot(const std::string& name) {
+  for (OutputSlot s : {OutputSlot::VertexPosition, OutputSlot::VertexNormal, OutputSlot::FragmentColor,
+                       OutputSlot::FragmentAlpha})
+    if (outputSlotName(s) == name) return s;
+  return std::nullopt;
+}
+
+std::string describe(const InputTarget& t) {
+  return t.node.empty() ? "output '" + t.port + "'" : "input '" + t.port + "' of node '" + t.node + "'";
+}
+
+bool allFinite(const std::vector<double>& v) {
+  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+}
+
+}  // namespace
+
+GraphEditor::GraphEditor(Graph graph, const Registry* registry) : graph_(std::move(graph)), registry_(registry) {}
+
+void GraphEditor::record(const std::string& label, const std::string& mergeKey) {
+  bool merge = !mergeKey.empty() && mergeKey == mergeKey_ && !undo_.empty() && redo_.empty();
+  if (!merge) undo_.push_back({graph_, revision_, label});
+  redo_.clear();
+  mergeKey_ = mergeKey;
+  revision_ = nextRevision_++;
+}
+
+Node* GraphEditor::findNode(const std::string& id) {
+  for (auto& n : graph_.nodes)
+    if (n.id == id) return &n;
+  return nullptr;
+}
+
+std::string GraphEditor::checkTarget(const InputTarget& target) const {
+  if (target.node.empty()) {
+    if (!parseSlot(target.port))
+      return "no output slot '" + target.port + "' (vertex.position, vertex.normal, fragment.color, fragment.alpha)";
+    return "";
+  }
+  const Node* n = graph_.findNode(target.node);
+  if (!n) return "no node '" + target.node + "'";
+  if (registry_) {
+    const NodeSpec* spec = registry_->find(n->type);
+    if (spec && spec->inputIndex(target.port) < 0)
+      return "node '" + target.node + "' (" + n->type + ") has no input '" + target.port + "'";
+  }
+  return "";
+}
+
+void GraphEditor::setSource(const InputTarget& target, InputSource source) {
+  source.where.file = graph_.file;
+  if (target.node.empty()) {
+    OutputSlot slot = *parseSlot(target.port);
+    for (auto& o : graph_.outputs)
+      if (o.slot == slot) {
+        o.source = std::move(source);
+        return;
+      }
+    GraphOutput o;
+    o.slot = slot;
+    o.source = std::move(source);
+    o.keyWhere.file = graph_.file;
+    graph_.outputs.push_back(std::move(o));
+    return;
+  }
+  Node* n = findNode(target.node);
+  for (auto& in : n->inputs)
+    if (in.port == target.port) {
+      in.source = std::move(source);
+      return;
+    }
+  NodeInput in;
+  in.port = target.port;
+  in.source = std::move(source);
+  in.keyWhere.file = graph_.file;
+  n->inputs.push_back(std::move(in));
+}
+
+std::string GraphEditor::setParameterDefault(const std::string& name, const std::vector<double>& value) {
+  auto it = std::find_if(graph_.parameters.begin(), graph_.parameters.end(),
+                         [&](const Parameter& p) { return p.name == name; });
+  if (it == graph_.parameters.end()) return "no parameter '" + name + "'";
+  size_t n = static_cast<size_t>(componentCount(it->type));
+  if (value.size() != n)
+    return "parameter '" + name + "' is a " + std::string(typeName(it->type)) + ": it takes " + std::to_string(n) +
+           " number(s), not " + std::to_string(value.size());
+  if (!allFinite(value)) return "parameter '" + name + "': values must be finite";
+  for (double x : value) {
+    if (it->min && x < *it->min) return "parameter '" + name + "': " + formatNumber(x) + " is below its min " + formatNumber(*it->min);
+    if (it->max && x > *it->max) return "parameter '" + name + "': " + formatNumber(x) + " is above its max " + formatNumber(*it->max);
+  }
+  if (it->defaultValue == value) return "";
+  record("set parameter '" + name + "'", "param:" + name);
+  it = std::find_if(graph_.parameters.begin(), graph_.parameters.end(), [&](const Parameter& p) { return p.name == name; });
+  it->defaultValue = value;
+  return "";
+}
+
+std::string GraphEditor::applyPreset(const std::string& name) {
+  auto preset = std::find_if(graph_.presets.begin(), graph_.presets.end(), [&](const Preset& p) { return p.name == name; });
+  if (preset == graph_.presets.end()) return "no preset '" + name + "'";
+  Graph next = graph_;
+  for (const PresetValue& v : preset->values) {
+    auto p = std::find_if(next.parameters.begin(), next.parameters.end(), [&](const Parameter& q) { return q.name == v.parameter; });
+    if (p == next.parameters.end()) return "preset '" + name + "' names no parameter '" + v.parameter + "'";
+    if (v.value.size() != p->defaultValue.size())
+      return "preset '" + name + "': parameter '" + v.parameter + "' takes " + std::to_string(p->defaultValue.size()) + " number(s)";
+    p->defaultValue = v.value;
+  }
+  record("apply preset '" + name + "'", "");
+  graph_ = std::move(next);
+  return "";
+}
+
+std::string GraphEditor::setInputConstant(const InputTarget& target, const std::vector<double>& value) {
+  if (std::string why = checkTarget(target); !why.empty()) return why;
+  if (value.empty() || value.size() > 4) return describe(target) + ": a constant has 1 to 4 numbers";
+  if (!allFinite(value)) return describe(target) + ": values must be finite";
+  InputSource s;
+  s.kind = InputSource::Kind::Literal;
+  s.literal = value;
+  record("set " + describe(target), "const:" + target.node + "." + target.port);
+  setSource(target, std::move(s));
+  return "";
+}
+
+std::string GraphEditor::setInputParameter(const InputTarget& target, const std::string& parameter) {
+  if (std::string why = checkTarget(target); !why.empty()) return why;
+  if (!graph_.findParameter(parameter)) return "no parameter '" + parameter + "'";
+  InputSource s;
+  s.kind = InputSource::Kind::Parameter;
+  s.parameter = parameter;
+  record("feed " + describe(target) + " from $" + parameter, "");
+  setSource(target, std::move(s));
+  return "";
+}
+
+std::string GraphEditor::setOption(const std::string& node, const std::string& name, const nlohmann::json& value) {
+  const Node* n = graph_.findNode(node);
+  if (!n) return "no node '" + node + "'";
+  std::string what = "option '" + name + "' of node '" + node + "'";
+  if (registry_) {
+    if (const NodeSpec* spec = registry_->find(n->type)) {
+      int index = spec->optionIndex(name);
+      if (index < 0) return "node '" + node + "' (" + n->type + ") has no option '" + name + "'";
+      const OptionSpec& o = spec->options[static_cast<size_t>(index)];
+      switch (o.kind) {
+        case OptionSpec::Kind::Enum:
+          if (!value.is_string() || std::find(o.choices.begin(), o.choices.end(), value.get<std::string>()) == o.choices.end())
+            return what + " must be one of its choices";
+          break;
+        case OptionSpec::Kind::Bool:
+          if (!value.is_boolean()) return what + " must be true or false";
+          break;
+        case OptionSpec::Kind::Number:
+        case OptionSpec::Kind::Integer: {
+          if (!value.is_number() || !std::isfinite(value.get<double>())) return what + " must be a finite number";
+          double x = value.get<double>();
+          if (o.kind == OptionSpec::Kind::Integer && std::floor(x) != x) return what + " must be a whole number";
+          if ((o.min && x < *o.min) || (o.max && x > *o.max)) return what + " is out of its range";
+          break;
+        }
+        case OptionSpec::Kind::Texture:
+        case OptionSpec::Kind::Json: break;
+      }
+    }
+  }
+  for (const auto& o : n->options)
+    if (o.name == name && o.value == value) return "";
+  record("set " + what, "option:" + node + "." + name);
+  Node* m = findNode(node);
+  for (auto& o : m->options)
+    if (o.name == name) {
+      o.value = value;
+      return "";
+    }
+  NodeOption o;
+  o.name = name;
+  o.value = value;
+  o.where.file = o.keyWhere.file = graph_.file;
+  m->options.push_back(std::move(o));
+  return "";
+}
+
+std::string GraphEditor::connect(const std::string& fromNode, const std::string& fromPort, const InputTarget& target) {
+  if (std::string why = checkTarget(target); !why.empty()) return why;
+  const Node* from = graph_.findNode(fromNode);
+  if (!from) return "no node '" + fromNode + "'";
+  if (registry_) {
+    const NodeSpec* spec = registry_->find(from->type);
+    if (spec && spec->outputIndex(fromPort) < 0)
+      return "node '" + fromNode + "' (" + from->type + ") has no output '" + fromPort + "'";
+  }
+  if (!target.node.empty()) {
+    // A cycle: the target node is already upstream of (or is) the source node.
+    std::vector<std::string> stack{fromNode};
+    std::set<std::string> seen;
+    while (!stack.empty()) {
+      std::string id = stack.back();
+      stack.pop_back();
+      if (id == target.node) return "connecting " + fromNode + "." + fromPort + " to " + describe(target) + " would make a cycle";
+      if (!seen.insert(id).second) continue;
+      if (const Node* n = graph_.findNode(id))
+        for (const auto& in : n->inputs)
+          if (in.source.kind == InputSource::Kind::NodeOutput) stack.push_back(in.source.node);
+    }
+  }
+  InputSource s;
+  s.kind = InputSource::Kind::NodeOutput;
+  s.node = fromNode;
+  s.port = fromPort;
+  record("connect " + fromNode + "." + fromPort + " to " + describe(target), "");
+  setSource(target, std::move(s));
+  return "";
+}
+
+std::string GraphEditor::disconnect(const InputTarget& target) {
+  if (std::string why = checkTarget(target); !why.empty()) return why;
+  if (target.node.empty()) {
+    OutputSlot slot = *parseSlot(target.port);
+    auto it = std::find_if(graph_.outputs.begin(), graph_.outputs.end(), [&](const GraphOutput& o) { return o.slot == slot; });
+    if (it == graph_.outputs.end()) return describe(target) + " is not set";
+    record("disconnect " + describe(target), "");
+    graph_.outputs.erase(std::find_if(graph_.outputs.begin(), graph_.outputs.end(),
+                                      [&](const GraphOutput& o) { return o.slot == slot; }));
+    return "";
+  }
+  const Node* n = graph_.findNode(target.node);
+  auto has = std::any_of(n->inputs.begin(), n->inputs.end(), [&](const NodeInput& in) { return in.port == target.port; });
+  if (!has) return describe(target) + " is not set";
+  record("disconnect " + describe(target), "");
+  auto& ins = findNode(target.node)->inputs;
+  ins.erase(std::find_if(ins.begin(), ins.end(), [&](const NodeInput& in) { return in.port == target.port; }));
+  return "";
+}
+
+std::string GraphEditor::addNode(const std::string& type, const std::string& id, std::array<double, 2> position,
+                                 std::string* usedId) {
+  if (registry_ && !registry_->find(type)) return "no node type '" + type + "'";
+  if (!isIdentifier(type)) return "'" + type + "' is not a node type name";
+  std::string newId = id;
+  if (newId.empty()) {
+    for (int k = 1;; ++k) {
+      newId = type + "_" + std::to_string(k);
+      if (newId.size() > 64) newId = "node_" + std::to_string(k);
+      if (!graph_.findNode(newId)) break;
+    }
+  }
+  if (!isIdentifier(newId)) return "'" + newId + "' is not a valid node id ([A-Za-z_][A-Za-z0-9_]*, at most 64)";
+  if (graph_.findNode(newId)) return "a node '" + newId + "' already exists";
+  if (!std::isfinite(position[0]) || !std::isfinite(position[1])) return "a node position must be finite";
+  record("add node '" + newId + "'", "");
+  Node n;
+  n.id = newId;
+  n.type = type;
+  n.editorPosition = position;
+  n.where.file = n.idWhere.file = n.typeWhere.file = graph_.file;
+  graph_.nodes.push_back(std::move(n));
+  if (usedId) *usedId = newId;
+  return "";
+}
+
+std::string GraphEditor::deleteNode(const std::string& id) {
+  if (!graph_.findNode(id)) return "no node '" + id + "'";
+  record("delete node '" + id + "'", "");
+  auto reads = [&](const InputSource& s) { return s.kind == InputSource::Kind::NodeOutput && s.node == id; };
+  std::erase_if(graph_.nodes, [&](const Node& n) { return n.id == id; });
+  for (auto& n : graph_.nodes) std::erase_if(n.inputs, [&](const NodeInput& in) { return reads(in.source); });
+  std::erase_if(graph_.outputs, [&](const GraphOutput& o) { return reads(o.source); });
+  return "";
+}
+
+std::string GraphEditor::moveNode(const std::string& id, std::array<double, 2> position) {
+  if (!graph_.findNode(id)) return "no node '" + id + "'";
+  if (!std::isfinite(position[0]) || !std::isfinite(position[1])) return "a node position must be finite";
+  if (graph_.findNode(id)->editorPosition == position) return "";
+  record("move node '" + id + "'", "move:" + id);
+  findNode(id)->editorPosition = position;
+  return "";
+}
+
+void GraphEditor::replace(Graph graph, const std::string& label) {
+  record(label, "");
+  graph_ = std::move(graph);
+}
+
+bool GraphEditor::undo() {
+  if (undo_.empty()) return false;
+  Step s = std::move(undo_.back());
+  undo_.pop_back();
+  redo_.push_back({std::move(graph_), revision_, s.label});
+  graph_ = std::move(s.graph);
+  revision_ = s.revision;
+  mergeKey_.clear();
+  return true;
+}
+
+bool GraphEditor::redo() {
+  if (redo_.empty()) return false;
+  Step s = std::move(redo_.back());
+  redo_.pop_back();
+  undo_.push_back({std::move(graph_), revision_, s.label});
+  graph_ = std::move(s.graph);
+  revision_ = s.revision;
+  mergeKey_.clear();
+  return true;
+}
+
+}  // namespace wg

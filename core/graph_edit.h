@@ -1,0 +1,95 @@
+#pragma once
+// Editing a Graph with undo and redo: the model the editor (editor/) is a UI over, and
+// what its --script mode drives. Every edit checks its arguments first and either changes
+// the graph or returns why not, leaving the graph as it was. Types are not checked here
+// (a connection between a vec2 output and a vec3 input is a valid edit); compiling the
+// graph reports them, with the node and port, as for a graph file.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/graph.h"
+#include "core/registry.h"
+
+namespace wg {
+
+// Where a connection ends: a node input, or (node empty) a graph output slot such as
+// "fragment.color".
+struct InputTarget {
+  std::string node;
+  std::string port;
+};
+
+class GraphEditor {
+ public:
+  // With a registry, node types and port names are checked against it; without one only
+  // what the file format itself requires is.
+  explicit GraphEditor(Graph graph, const Registry* registry = nullptr);
+
+  const Graph& graph() const { return graph_; }
+
+  // Each returns "" when the edit was applied, else one line saying why it was refused.
+  std::string setParameterDefault(const std::string& name, const std::vector<double>& value);
+  // Makes a graph preset's values ("presets": {"calm": {...}}) the parameters' defaults,
+  // as one undoable step: what `--preset NAME` compiles, made permanent on save.
+  std::string applyPreset(const std::string& name);
+  std::string setInputConstant(const InputTarget& target, const std::vector<double>& value);
+  std::string setInputParameter(const InputTarget& target, const std::string& parameter);
+  // A node option (e.g. fresnel's "model"). With a registry, the name must exist and an
+  // enum, bool or number option's value must fit it; texture and JSON options are checked
+  // by compiling.
+  std::string setOption(const std::string& node, const std::string& name, const nlohmann::json& value);
+  // Feeds `target` from output `fromPort` of node `fromNode`; refused if it closes a cycle.
+  std::string connect(const std::string& fromNode, const std::string& fromPort, const InputTarget& target);
+  // The input goes back to its default (or the output slot is removed).
+  std::string disconnect(const InputTarget& target);
+  // `id` empty: "<type>_<n>", the first free. The id used is returned in *usedId.
+  std::string addNode(const std::string& type, const std::string& id, std::array<double, 2> position,
+                      std::string* usedId = nullptr);
+  // Removes the node and every input and output slot that reads it.
+  std::string deleteNode(const std::string& id);
+  std::string moveNode(const std::string& id, std::array<double, 2> position);
+  // Replaces the whole graph (a reload from disk), undoably.
+  void replace(Graph graph, const std::string& label);
+
+  // Consecutive parameter or move edits of the same thing (a slider or a drag) become one
+  // undo step until sealed; the UI seals when the drag ends.
+  void seal() { mergeKey_.clear(); }
+
+  bool canUndo() const { return !undo_.empty(); }
+  bool canRedo() const { return !redo_.empty(); }
+  bool undo();
+  bool redo();
+  // What undo and redo would do, e.g. "move node 'tint'" ("" when nothing).
+  std::string undoLabel() const { return undo_.empty() ? "" : undo_.back().label; }
+  std::string redoLabel() const { return redo_.empty() ? "" : redo_.back().label; }
+
+  // Names the graph's state: every edit makes a new one, undo and redo bring the old one
+  // back, so equal revisions mean equal graphs (the editor recompiles when it changes).
+  long revision() const { return revision_; }
+  bool dirty() const { return revision_ != savedRevision_; }
+  void markSaved() { savedRevision_ = revision_; }
+
+ private:
+  struct Step {
+    Graph graph;  // the state to go back (or forward) to
+    long revision = 0;
+    std::string label;
+  };
+  // Snapshots the graph before a change (or merges into the open step) and bumps revision.
+  void record(const std::string& label, const std::string& mergeKey);
+  Node* findNode(const std::string& id);
+  std::string checkTarget(const InputTarget& target) const;
+  void setSource(const InputTarget& target, InputSource source);
+
+  Graph graph_;
+  const Registry* registry_ = nullptr;
+  std::vector<Step> undo_, redo_;
+  std::string mergeKey_;
+  long revision_ = 0;
+  long nextRevision_ = 1;  // never reused, so "saved" stays right across undo and redo
+  long savedRevision_ = 0;
+};
+
+}  // namespace wg

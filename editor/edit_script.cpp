@@ -1,0 +1,137 @@
+#include "editor/edit_script.h"
+
+#include <fstream>
+#include <set>
+#include <sstream>
+
+namespace wg::editor {
+namespace {
+
+const std::set<std::string>& editOps() {
+  static const std::set<std::string> ops{"set_parameter", "apply_preset", "set_input", "set_option", "connect", "disconnect", "add_node",
+                                         "delete_node", "move_node", "undo", "redo"};
+  return ops;
+}
+
+const std::set<std::string>& appOps() {
+  static const std::set<std::string> ops{"save", "screenshot", "save_preview", "save_thumbnail", "select", "camera", "time",
+                                         "frames", "external_write", "wait_reload"};
+  return ops;
+}
+
+// Throws std::invalid_argument with a message naming the field.
+std::string text(const nlohmann::json& step, const char* key) {
+  auto it = step.find(key);
+  if (it == step.end() || !it->is_string()) throw std::invalid_argument(std::string("needs a string \"") + key + "\"");
+  return it->get<std::string>();
+}
+
+std::vector<double> numbers(const nlohmann::json& step, const char* key) {
+  auto it = step.find(key);
+  std::vector<double> out;
+  if (it != step.end() && it->is_number()) return {it->get<double>()};
+  if (it == step.end() || !it->is_array()) throw std::invalid_argument(std::string("needs a number or number list \"") + key + "\"");
+  for (const auto& x : *it) {
+    if (!x.is_number()) throw std::invalid_argument(std::string("\"") + key + "\" must hold numbers only");
+    out.push_back(x.get<double>());
+  }
+  return out;
+}
+
+double number(const nlohmann::json& step, const char* key) {
+  auto it = step.find(key);
+  if (it == step.end() || !it->is_number()) throw std::invalid_argument(std::string("needs a number \"") + key + "\"");
+  return it->get<double>();
+}
+
+// "node.port" -> {node, port}; an output slot ("fragment.color") when given as "to_output".
+std::pair<std::string, std::string> nodePort(const std::string& s) {
+  auto dot = s.find('.');
+  if (dot == std::string::npos || dot == 0 || dot + 1 == s.size())
+    throw std::invalid_argument("'" + s + "' is not \"node.port\"");
+  return {s.substr(0, dot), s.substr(dot + 1)};
+}
+
+InputTarget target(const nlohmann::json& step) {
+  if (step.contains("to_output")) return {"", text(step, "to_output")};
+  if (step.contains("output")) return {"", text(step, "output")};
+  if (step.contains("to")) {
+    auto [n, p] = nodePort(text(step, "to"));
+    return {n, p};
+  }
+  return {text(step, "node"), text(step, "port")};
+}
+
+}  // namespace
+
+std::optional<std::vector<ScriptStep>> loadScript(const std::string& path, std::string* error) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    *error = path + ": cannot read the script";
+    return std::nullopt;
+  }
+  std::stringstream ss;
+  ss << in.rdbuf();
+  nlohmann::json doc = nlohmann::json::parse(ss.str(), nullptr, false);
+  if (doc.is_discarded() || !doc.is_array()) {
+    *error = path + ": a script is a JSON list of steps, each {\"op\": ...}";
+    return std::nullopt;
+  }
+  std::vector<ScriptStep> steps;
+  int index = 0;
+  for (const auto& s : doc) {
+    ++index;
+    std::string where = path + ": step " + std::to_string(index);
+    if (!s.is_object() || !s.contains("op") || !s["op"].is_string()) {
+      *error = where + ": not an object with a string \"op\"";
+      return std::nullopt;
+    }
+    std::string op = s["op"].get<std::string>();
+    if (!editOps().count(op) && !appOps().count(op)) {
+      *error = where + ": unknown op '" + op + "'";
+      return std::nullopt;
+    }
+    steps.push_back({op, s, index});
+  }
+  return steps;
+}
+
+bool isEditOp(const std::string& op) { return editOps().count(op) > 0; }
+
+std::string applyEditStep(GraphEditor& e, const ScriptStep& step) {
+  const auto& a = step.args;
+  try {
+    const std::string& op = step.op;
+    if (op == "set_parameter") return e.setParameterDefault(text(a, "name"), numbers(a, "value"));
+    if (op == "set_input") {
+      if (a.contains("parameter")) return e.setInputParameter(target(a), text(a, "parameter"));
+      return e.setInputConstant(target(a), numbers(a, "value"));
+    }
+    if (op == "apply_preset") return e.applyPreset(text(a, "name"));
+    if (op == "set_option") {
+      if (!a.contains("value")) throw std::invalid_argument("needs a \"value\"");
+      return e.setOption(text(a, "node"), text(a, "name"), a["value"]);
+    }
+    if (op == "connect") {
+      auto [node, port] = nodePort(text(a, "from"));
+      return e.connect(node, port, target(a));
+    }
+    if (op == "disconnect") return e.disconnect(target(a));
+    if (op == "add_node") {
+      std::string id = a.contains("id") ? text(a, "id") : "";
+      double x = a.contains("x") ? number(a, "x") : 0, y = a.contains("y") ? number(a, "y") : 0;
+      return e.addNode(text(a, "type"), id, {x, y});
+    }
+    if (op == "delete_node") return e.deleteNode(text(a, "id"));
+    if (op == "move_node") return e.moveNode(text(a, "id"), {number(a, "x"), number(a, "y")});
+    if (op == "undo") return e.undo() ? "" : "nothing to undo";
+    if (op == "redo") return e.redo() ? "" : "nothing to redo";
+    return "'" + op + "' is not an edit";
+  } catch (const std::invalid_argument& ex) {
+    return ex.what();
+  } catch (const nlohmann::json::exception& ex) {
+    return ex.what();
+  }
+}
+
+}  // namespace wg::editor

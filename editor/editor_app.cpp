@@ -1,0 +1,715 @@
+#include "editor/editor_app.h"
+
+#include <epoxy/gl.h>  // before GLFW and ImGui's OpenGL backend
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "codegen/output_files.h"
+#include "core/graph_edit.h"
+#include "core/graph_io.h"
+#include "editor/edit_script.h"
+#include "editor/file_watcher.h"
+#include "editor/graph_change.h"
+#include "editor/graph_layout.h"
+#include "editor/inspector.h"
+#include "editor/live_preview.h"
+#include "editor/node_canvas.h"
+#include "editor/node_preview_graph.h"
+#include "editor/orbit_camera.h"
+#include "nodes/registry.h"
+#include "runtime/glfw_context.h"
+#include "runtime/image.h"
+#include "runtime/runtime_error.h"
+
+namespace wg::editor {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msBetween(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+// An edit on its way to the screen: started when the edit was made, finished when the
+// first frame showing it has been drawn and presented (after glFinish).
+struct PendingLatency {
+  bool active = false;
+  bool rendered = false;  // the preview has been rendered with the change
+  Clock::time_point start;
+  std::string kind;       // "uniform", "recompile"
+  double compileMs = 0, glMs = 0;
+};
+
+struct Latency {
+  double totalMs = 0, compileMs = 0, glMs = 0;
+  std::string kind;
+  std::string text() const {
+    char buf[160];
+    if (kind == "recompile")
+      std::snprintf(buf, sizeof buf, "%.1f ms (recompile: compile %.1f ms, GL %.1f ms)", totalMs, compileMs, glMs);
+    else
+      std::snprintf(buf, sizeof buf, "%.1f ms (%s, no recompile)", totalMs, kind.c_str());
+    return buf;
+  }
+};
+
+class App {
+ public:
+  App(const EditorOptions& options, rt::GlfwContext& window)
+      : options_(options), window_(window), registry_(defaultRegistry()), editor_(Graph{}, &registry_),
+        watcher_(options.graphPath), preview_(previewSettings(options.previewWidth, options.previewHeight, 128)) {
+    auto preset = rt::cameraPreset(options.camera);  // checked by main
+    orbit_ = OrbitCamera::fromCamera(preset ? *preset : rt::Camera{});
+    cameraName_ = options.camera;
+    if (options.time) scene_.time = *options.time, playing_ = false;
+    if (!options.script.empty() || options.frames > 0) playing_ = false;  // deterministic runs
+  }
+
+  int run();
+
+ private:
+  static rt::RenderSettings previewSettings(int w, int h, int grid) {
+    rt::RenderSettings s;
+    s.width = w, s.height = h;
+    s.waterGridQuads = grid;
+    return s;
+  }
+
+  // --- model and files ---
+  bool loadFromDisk(bool initial);
+  bool save(const std::string& path);
+  void setErrors(const Diagnostics& d, const std::string& context);
+  std::optional<Graph> graphToCompile(Diagnostics& d) const;
+  void noteEdit() {
+    pending_ = {};
+    pending_.active = true;
+    pending_.start = Clock::now();
+  }
+  // --- preview ---
+  void processChange();
+  void rebuildThumbnail();
+  void renderPreviews();
+  void finishLatency();
+  // --- script ---
+  bool runScriptStep();  // false when the script failed
+  // --- UI ---
+  void drawUi();
+  void drawPreviewPanel(float x, float y, float w, float h);
+  void drawInspectorPanel(float x, float y, float w, float h);
+  void drawErrorPanel(float x, float y, float w, float h);
+  void drawCanvasPanel(float x, float y, float w, float h);
+  void shortcuts();
+  void writeScreenshot(const std::string& path);
+
+  EditorOptions options_;
+  rt::GlfwContext& window_;
+  const Registry& registry_;
+  GraphEditor editor_;
+  bool haveGraph_ = false;   // a graph has loaded (saving is allowed)
+  std::string diskText_;     // the file as last loaded or saved
+  Graph diskGraph_;          // parsed from diskText_ (positions in the real file)
+  long diskRevision_ = -1;   // editor revision equal to diskText_
+  FileWatcher watcher_;
+  int diskEvents_ = 0;       // changes on disk noticed (loaded or not)
+
+  LivePreview preview_;
+  std::optional<Graph> goodGraph_;  // what the preview runs
+  long attemptedRevision_ = -1;
+  std::vector<Diagnostic> errors_;
+  std::string errorContext_;
+  std::string status_;
+
+  std::string selected_;
+  std::string thumbNode_;
+  int thumbPort_ = 0;
+  bool thumbStale_ = true;  // selection, output port or compiled graph changed
+  std::unique_ptr<LivePreview> thumb_, retiredThumb_;
+  std::string thumbMessage_;
+
+  OrbitCamera orbit_;
+  std::string cameraName_;
+  rt::SceneOptions scene_;
+  bool playing_ = true;
+  bool previewDirty_ = true;
+  double frameMs_ = 0;
+  PendingLatency pending_;
+  std::optional<Latency> lastLatency_;
+
+  NodeCanvas canvas_;
+  std::vector<ScriptStep> script_;
+  size_t scriptNext_ = 0;
+  int waitFrames_ = 0;
+  int waitReloadFrom_ = -1;
+  int waitReloadBudget_ = 0;
+  int eventsBeforeWrite_ = -1;  // diskEvents_ when the script last wrote the file
+  std::string pendingScreenshot_;
+  bool scriptFailed_ = false;
+};
+
+// ---------------------------------------------------------------------------------------
+// Model and files
+
+bool App::loadFromDisk(bool initial) {
+  Diagnostics d;
+  auto text = readGraphFile(options_.graphPath, d);
+  if (text && haveGraph_ && *text == diskText_) return false;  // our own save, or touched only
+  std::optional<Graph> g;
+  if (text) g = parseGraph(*text, options_.graphPath, d);
+  if (!g) {
+    setErrors(d, haveGraph_ ? "the file on disk does not load; the editor keeps the last good graph"
+                            : "the file does not load; fix it in any editor and it reloads here");
+    return false;
+  }
+  Graph loaded = *g;
+  layoutUnplacedNodes(loaded);
+  if (initial || !haveGraph_) editor_ = GraphEditor(loaded, &registry_);
+  else editor_.replace(loaded, "reload from disk");
+  editor_.markSaved();
+  diskText_ = *text;
+  diskGraph_ = loaded;
+  diskRevision_ = editor_.revision();
+  haveGraph_ = true;
+  if (!initial) {
+    status_ = "reloaded from disk (undo brings back what was there before)";
+    noteEdit();  // a change on disk counts from when it was noticed
+  }
+  return true;
+}
+
+bool App::save(const std::string& path) {
+  if (!haveGraph_) {
+    status_ = "nothing to save: the file has not loaded yet";
+    std::cerr << "watergraph-editor: " << status_ << "\n";
+    return false;
+  }
+  std::string text = saveGraph(editor_.graph());
+  Diagnostics d;
+  if (!writeFileAtomically(path, text, d)) {
+    status_ = d.all().empty() ? "cannot save " + path : formatText(d.all().front());
+    std::cerr << status_ << "\n";
+    return false;
+  }
+  if (path == options_.graphPath) {
+    Diagnostics ignore;
+    if (auto g = parseGraph(text, path, ignore)) diskGraph_ = *g;
+    diskText_ = text;
+    watcher_.acknowledge();
+    editor_.markSaved();
+    diskRevision_ = editor_.revision();
+  }
+  status_ = "saved " + path;
+  return true;
+}
+
+void App::setErrors(const Diagnostics& d, const std::string& context) {
+  errors_ = d.sorted();
+  errorContext_ = context;
+  for (const auto& e : errors_) std::cerr << formatText(e) << "\n";
+}
+
+// The graph as loaded keeps the positions of the real file; an edited graph is compiled
+// from the text Save would write, so its errors point at lines of that text.
+std::optional<Graph> App::graphToCompile(Diagnostics& d) const {
+  if (editor_.revision() == diskRevision_) return diskGraph_;
+  return parseGraph(saveGraph(editor_.graph()), options_.graphPath, d);
+}
+
+// ---------------------------------------------------------------------------------------
+// Preview
+
+void App::processChange() {
+  if (!haveGraph_ || editor_.revision() == attemptedRevision_) return;
+  attemptedRevision_ = editor_.revision();
+  if (preview_.ready() && goodGraph_) {
+    GraphChange change = compareGraphs(*goodGraph_, editor_.graph());
+    if (!change.structural) {
+      bool uniformsOnly = true;
+      for (const auto& name : change.parameters)
+        uniformsOnly &= preview_.setParameter(name, editor_.graph().findParameter(name)->defaultValue);
+      if (uniformsOnly) {
+        for (const auto& name : change.parameters)
+          if (thumb_) thumb_->setParameter(name, editor_.graph().findParameter(name)->defaultValue);
+        goodGraph_ = editor_.graph();
+        errors_.clear();
+        if (change.parameters.empty()) pending_.active = false;  // a moved node: no pixels change
+        pending_.kind = "uniform";
+        previewDirty_ = true;
+        return;
+      }
+    }
+  }
+  Diagnostics d;
+  RebuildTimings t;
+  auto g = graphToCompile(d);
+  if (g && preview_.rebuild(*g, registry_, d, &t)) {
+    goodGraph_ = editor_.graph();
+    errors_.clear();
+    for (const auto& w : d.sorted()) errors_.push_back(w);  // warnings, if any
+    pending_.kind = "recompile";
+    pending_.compileMs = t.compileMs;
+    pending_.glMs = t.rendererMs;
+    previewDirty_ = true;
+    thumbStale_ = true;  // rebuild the thumbnail against the new graph
+  } else {
+    setErrors(d, preview_.ready() ? "the graph does not compile; the preview shows the last good version"
+                                  : "the graph does not compile; no preview yet");
+    pending_.active = false;
+  }
+}
+
+void App::rebuildThumbnail() {
+  if (selected_ != thumbNode_) thumbPort_ = 0, thumbNode_ = selected_, thumbStale_ = true;
+  if (selected_.empty()) {
+    if (thumb_) retiredThumb_ = std::move(thumb_);
+    return;
+  }
+  // The main preview first: while an edit is on its way to the screen, the thumbnail
+  // (a second compile) waits a frame, so it does not count in the edit-to-pixels time.
+  if (!thumbStale_ || pending_.active) return;
+  thumbStale_ = false;
+  retiredThumb_ = std::move(thumb_);  // this frame's draw data may still show it
+  thumbMessage_.clear();
+  const Node* n = editor_.graph().findNode(selected_);
+  const NodeSpec* spec = n ? registry_.find(n->type) : nullptr;
+  if (!spec || spec->outputs.empty()) {
+    thumbMessage_ = "no output to preview";
+    return;
+  }
+  thumbPort_ = std::clamp(thumbPort_, 0, static_cast<int>(spec->outputs.size()) - 1);
+  std::string why;
+  auto g = nodeOutputGraph(editor_.graph(), registry_, selected_, spec->outputs[static_cast<size_t>(thumbPort_)].name, &why);
+  if (!g) {
+    thumbMessage_ = why;
+    return;
+  }
+  auto t = std::make_unique<LivePreview>(previewSettings(192, 108, 64));
+  Diagnostics d;
+  if (!t->rebuild(*g, registry_, d)) {
+    thumbMessage_ = d.all().empty() ? "does not compile" : d.sorted().front().message;
+    return;
+  }
+  thumb_ = std::move(t);
+  previewDirty_ = true;
+}
+
+void App::renderPreviews() {
+  if (!previewDirty_ && !playing_) return;
+  rt::Camera cam = orbit_.toCamera();
+  std::string error;
+  if (preview_.ready()) frameMs_ = preview_.render(cam, scene_, &error);
+  if (!error.empty()) {
+    Diagnostics d;
+    d.error(DiagCode::RuntimeRejected, SourceRef{options_.graphPath, 0, 0}, error);
+    setErrors(d, "the preview failed to render; edit the graph to try again");
+    goodGraph_.reset();
+  }
+  if (thumb_) thumb_->render(cam, scene_);
+  previewDirty_ = false;
+  if (pending_.active) pending_.rendered = true;
+}
+
+void App::finishLatency() {
+  // An edit that changed nothing to draw (the graph came back to the compiled state).
+  if (pending_.active && !pending_.rendered && msBetween(pending_.start, Clock::now()) > 2000) pending_.active = false;
+  if (!pending_.active || !pending_.rendered) return;
+  glFinish();  // the frame is on screen (or at least done), not only queued
+  Latency l;
+  l.totalMs = msBetween(pending_.start, Clock::now());
+  l.kind = pending_.kind;
+  l.compileMs = pending_.compileMs;
+  l.glMs = pending_.glMs;
+  lastLatency_ = l;
+  pending_.active = false;
+  if (options_.stats) std::cout << "edit-to-pixels: " << l.text() << std::endl;
+}
+
+// ---------------------------------------------------------------------------------------
+// Script
+
+bool App::runScriptStep() {
+  if (waitFrames_ > 0) {
+    --waitFrames_;
+    return true;
+  }
+  if (waitReloadFrom_ >= 0) {
+    if (diskEvents_ > waitReloadFrom_) {
+      waitReloadFrom_ = -1;
+    } else {
+      if (--waitReloadBudget_ <= 0) {
+        std::cerr << options_.script << ": wait_reload: the change on disk was not noticed\n";
+        return false;
+      }
+      return true;
+    }
+  }
+  if (scriptNext_ >= script_.size()) return true;
+  const ScriptStep& step = script_[scriptNext_++];
+  const auto& a = step.args;
+  std::string where = options_.script + ": step " + std::to_string(step.index) + " (" + step.op + ")";
+  auto fail = [&](const std::string& why) {
+    std::cerr << where << ": " << why << "\n";
+    return false;
+  };
+  auto str = [&](const char* key) -> std::string {
+    auto it = a.find(key);
+    return it != a.end() && it->is_string() ? it->get<std::string>() : "";
+  };
+  if (isEditOp(step.op)) {
+    if (!haveGraph_) return fail("the graph has not loaded");
+    long before = editor_.revision();
+    std::string why = applyEditStep(editor_, step);
+    editor_.seal();
+    if (!why.empty()) return fail(why);
+    if (editor_.revision() != before) noteEdit();
+    return true;
+  }
+  if (step.op == "save") {
+    std::string path = str("path").empty() ? options_.graphPath : str("path");
+    return save(path) || fail("cannot save " + path);
+  }
+  if (step.op == "screenshot" || step.op == "save_preview" || step.op == "save_thumbnail") {
+    if (str("path").empty()) return fail("needs a string \"path\"");
+    if (step.op == "screenshot") {
+      pendingScreenshot_ = str("path");
+      return true;
+    }
+    if (step.op == "save_thumbnail") {
+      if (!thumb_ || !thumb_->ready()) return fail("no thumbnail: " + (thumbMessage_.empty() ? "no node selected" : thumbMessage_));
+      rt::writePng(str("path"), thumb_->read());
+      return true;
+    }
+    if (!preview_.ready()) return fail("there is no preview (the graph never compiled)");
+    rt::writePng(str("path"), preview_.read());
+    return true;
+  }
+  if (step.op == "select") {
+    selected_ = thumbNode_ = str("node");
+    thumbPort_ = a.contains("port") && a["port"].is_number_integer() ? a["port"].get<int>() : 0;
+    thumbStale_ = true;
+    if (!selected_.empty() && !editor_.graph().findNode(selected_)) return fail("no node '" + selected_ + "'");
+    return true;
+  }
+  if (step.op == "camera") {
+    auto c = rt::cameraPreset(str("preset"));
+    if (!c) return fail("no camera preset '" + str("preset") + "'");
+    orbit_ = OrbitCamera::fromCamera(*c);
+    cameraName_ = str("preset");
+    previewDirty_ = true;
+    return true;
+  }
+  if (step.op == "time") {
+    if (!a.contains("value") || !a["value"].is_number()) return fail("needs a number \"value\"");
+    scene_.time = a["value"].get<float>();
+    previewDirty_ = true;
+    return true;
+  }
+  if (step.op == "frames") {
+    waitFrames_ = a.contains("count") && a["count"].is_number_integer() ? a["count"].get<int>() : 1;
+    return true;
+  }
+  if (step.op == "external_write") {
+    // Another program writing the graph file in place, as a text editor does.
+    std::string text = str("text");
+    if (!str("from").empty()) {
+      std::ifstream in(str("from"), std::ios::binary);
+      if (!in) return fail("cannot read " + str("from"));
+      std::stringstream ss;
+      ss << in.rdbuf();
+      text = ss.str();
+    }
+    std::ofstream out(options_.graphPath, std::ios::binary | std::ios::trunc);
+    out << text;
+    if (!out) return fail("cannot write " + options_.graphPath);
+    eventsBeforeWrite_ = diskEvents_;
+    return true;
+  }
+  if (step.op == "wait_reload") {
+    // The change may already have been noticed in the frame after the write.
+    waitReloadFrom_ = eventsBeforeWrite_ >= 0 ? eventsBeforeWrite_ : diskEvents_;
+    eventsBeforeWrite_ = -1;
+    waitReloadBudget_ = 600;
+    return true;
+  }
+  return fail("unknown op");
+}
+
+// ---------------------------------------------------------------------------------------
+// UI
+
+constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                    ImGuiWindowFlags_NoSavedSettings;
+
+void placeNext(float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(w, h), ImGuiCond_Always);
+}
+
+void App::drawPreviewPanel(float x, float y, float w, float h) {
+  placeNext(x, y, w, h);
+  ImGui::Begin("Preview", nullptr, kPanel | ImGuiWindowFlags_NoScrollbar);
+  ImVec2 avail = ImGui::GetContentRegionAvail();
+  float controls = ImGui::GetFrameHeightWithSpacing() * 3 + ImGui::GetTextLineHeightWithSpacing();
+  float aspect = static_cast<float>(options_.previewWidth) / static_cast<float>(options_.previewHeight);
+  float iw = avail.x, ih = avail.x / aspect;
+  if (ih > avail.y - controls) ih = std::max(avail.y - controls, 20.0f), iw = ih * aspect;
+  ImVec2 at = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("view", ImVec2(iw, ih), ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  if (preview_.ready()) {
+    // GL textures are bottom-up: flip v.
+    dl->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(preview_.texture())), at,
+                 ImVec2(at.x + iw, at.y + ih), ImVec2(0, 1), ImVec2(1, 0));
+  } else {
+    dl->AddRectFilled(at, ImVec2(at.x + iw, at.y + ih), IM_COL32(20, 20, 20, 255));
+    dl->AddText(ImVec2(at.x + 10, at.y + 10), IM_COL32(230, 120, 120, 255), "no preview: the graph has not compiled yet");
+  }
+  ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left) && (io.MouseDelta.x || io.MouseDelta.y))
+    orbit_.orbit(io.MouseDelta.x, io.MouseDelta.y), previewDirty_ = true, cameraName_ = "(orbit)";
+  if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Right) && (io.MouseDelta.x || io.MouseDelta.y))
+    orbit_.pan(io.MouseDelta.x, io.MouseDelta.y), previewDirty_ = true, cameraName_ = "(orbit)";
+  if (ImGui::IsItemHovered() && io.MouseWheel != 0) orbit_.zoom(io.MouseWheel), previewDirty_ = true, cameraName_ = "(orbit)";
+
+  ImGui::SetNextItemWidth(120);
+  if (ImGui::BeginCombo("camera", cameraName_.c_str())) {
+    for (const auto& name : rt::cameraPresetNames())
+      if (ImGui::Selectable(name.c_str(), name == cameraName_)) {
+        orbit_ = OrbitCamera::fromCamera(*rt::cameraPreset(name));
+        cameraName_ = name;
+        previewDirty_ = true;
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button(playing_ ? "pause" : "play")) playing_ = !playing_;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(std::max(100.0f, iw - 330));
+  if (ImGui::SliderFloat("time", &scene_.time, 0, std::max(60.0f, scene_.time), "%.2f s")) previewDirty_ = true;
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::SliderFloat("sun azimuth", &scene_.sunAzimuthDegrees, 0, 360, "%.0f deg")) previewDirty_ = true;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(160);
+  if (ImGui::SliderFloat("sun elevation", &scene_.sunElevationDegrees, -10, 90, "%.0f deg")) previewDirty_ = true;
+  ImGui::Text("frame %.1f ms", frameMs_);
+  ImGui::SameLine();
+  if (lastLatency_) ImGui::Text("| edit to pixels: %s", lastLatency_->text().c_str());
+  else ImGui::TextDisabled("| edit to pixels: (make an edit)");
+  ImGui::End();
+}
+
+void App::drawInspectorPanel(float x, float y, float w, float h) {
+  placeNext(x, y, w, h);
+  ImGui::Begin("Inspector", nullptr, kPanel);
+  if (ImGui::Button("save")) save(options_.graphPath);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!editor_.canUndo());
+  if (ImGui::Button("undo")) editor_.undo();
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && editor_.canUndo())
+    ImGui::SetTooltip("undo %s", editor_.undoLabel().c_str());
+  ImGui::SameLine();
+  ImGui::BeginDisabled(!editor_.canRedo());
+  if (ImGui::Button("redo")) editor_.redo();
+  ImGui::EndDisabled();
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && editor_.canRedo())
+    ImGui::SetTooltip("redo %s", editor_.redoLabel().c_str());
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s%s", std::filesystem::path(options_.graphPath).filename().c_str(), editor_.dirty() ? " (modified)" : "");
+  if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameterInspector(editor_);
+  if (ImGui::CollapsingHeader("Selected node", ImGuiTreeNodeFlags_DefaultOpen)) {
+    // The thumbnail first, so it stays in view above a long list of inputs and options.
+    const Node* n = editor_.graph().findNode(selected_);
+    const NodeSpec* spec = n ? registry_.find(n->type) : nullptr;
+    if (thumb_ && thumb_->ready())
+      ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumb_->texture())), ImVec2(192, 108), ImVec2(0, 1),
+                   ImVec2(1, 0));
+    else if (!selected_.empty() && !thumbMessage_.empty())
+      ImGui::TextDisabled("no thumbnail: %s", thumbMessage_.c_str());
+    if (spec && spec->outputs.size() > 1) {
+      ImGui::SetNextItemWidth(140);
+      if (ImGui::BeginCombo("output", spec->outputs[static_cast<size_t>(std::min<int>(thumbPort_, static_cast<int>(spec->outputs.size()) - 1))].name.c_str())) {
+        for (int i = 0; i < static_cast<int>(spec->outputs.size()); ++i)
+          if (ImGui::Selectable(spec->outputs[static_cast<size_t>(i)].name.c_str(), i == thumbPort_))
+            thumbPort_ = i, thumbStale_ = true;
+        ImGui::EndCombo();
+      }
+    }
+    drawNodeInspector(editor_, registry_, selected_);
+  }
+  ImGui::End();
+}
+
+void App::drawErrorPanel(float x, float y, float w, float h) {
+  placeNext(x, y, w, h);
+  ImGui::Begin("Errors", nullptr, kPanel | ImGuiWindowFlags_HorizontalScrollbar);
+  if (!status_.empty()) ImGui::TextWrapped("%s", status_.c_str());
+  if (errors_.empty()) {
+    ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "no errors");
+  } else {
+    ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", errorContext_.c_str());
+    for (const auto& e : errors_) {
+      std::string line = formatText(e);
+      if (ImGui::Selectable(line.c_str(), !e.node.empty() && e.node == selected_) && !e.node.empty()) selected_ = e.node;
+    }
+  }
+  ImGui::End();
+}
+
+void App::drawCanvasPanel(float x, float y, float w, float h) {
+  placeNext(x, y, w, h);
+  ImGui::Begin("Nodes", nullptr, kPanel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  ImGui::TextDisabled("drag: move / link from an output | right-click: add node, disconnect | Del: delete | Ctrl+Z / Ctrl+Y");
+  if (haveGraph_) canvas_.draw(editor_, registry_, selected_);
+  ImGui::End();
+}
+
+void App::shortcuts() {
+  ImGuiIO& io = ImGui::GetIO();
+  if (!io.KeyCtrl || io.WantTextInput) return;
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) io.KeyShift ? editor_.redo() : editor_.undo();
+  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) editor_.redo();
+  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) save(options_.graphPath);
+}
+
+void App::drawUi() {
+  int fw = 0, fh = 0;
+  window_.framebufferSize(&fw, &fh);
+  float w = static_cast<float>(fw), h = static_cast<float>(fh);
+  float left = std::floor(w * 0.62f), top = std::floor(h * 0.56f);
+  drawPreviewPanel(0, 0, left, top);
+  drawCanvasPanel(0, top, left, h - top);
+  drawInspectorPanel(left, 0, w - left, std::floor(h * 0.68f));
+  drawErrorPanel(left, std::floor(h * 0.68f), w - left, h - std::floor(h * 0.68f));
+  shortcuts();
+}
+
+void App::writeScreenshot(const std::string& path) {
+  int fw = 0, fh = 0;
+  window_.framebufferSize(&fw, &fh);
+  rt::Image img;
+  img.width = fw, img.height = fh;
+  img.rgba8.resize(static_cast<size_t>(fw) * static_cast<size_t>(fh) * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  glReadBuffer(GL_BACK);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, fw, fh, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba8.data());
+  size_t row = static_cast<size_t>(fw) * 4;
+  for (int y = 0; y < fh / 2; ++y)  // GL rows are bottom-up
+    std::swap_ranges(img.rgba8.begin() + static_cast<ptrdiff_t>(static_cast<size_t>(y) * row),
+                     img.rgba8.begin() + static_cast<ptrdiff_t>(static_cast<size_t>(y + 1) * row),
+                     img.rgba8.begin() + static_cast<ptrdiff_t>(static_cast<size_t>(fh - 1 - y) * row));
+  for (size_t i = 3; i < img.rgba8.size(); i += 4) img.rgba8[i] = 255;  // the window has no meaningful alpha
+  rt::writePng(path, img);
+}
+
+int App::run() {
+  if (!options_.script.empty()) {
+    std::string error;
+    auto steps = loadScript(options_.script, &error);
+    if (!steps) {
+      std::cerr << error << "\n";
+      return 1;
+    }
+    script_ = std::move(*steps);
+  }
+  loadFromDisk(true);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; write no imgui.ini
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window_.window(), true);
+  ImGui_ImplOpenGL3_Init("#version 450 core");
+
+  processChange();  // the first compile, before the first frame
+  renderPreviews();
+  bool batch = !options_.script.empty() || options_.frames > 0;
+  int framesAfterScript = options_.frames > 0 ? options_.frames : 2;
+  auto lastTick = Clock::now();
+  while (!window_.shouldClose()) {
+    glfwPollEvents();
+    auto now = Clock::now();
+    float dt = static_cast<float>(msBetween(lastTick, now) / 1000.0);
+    lastTick = now;
+    if (playing_) scene_.time += dt;
+
+    if (watcher_.changed()) {
+      ++diskEvents_;
+      loadFromDisk(false);
+    }
+    // A step sees every earlier step on screen; its own edit is shown in this frame.
+    if (batch && !scriptFailed_ && !runScriptStep()) scriptFailed_ = true;
+
+    long before = editor_.revision();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    drawUi();
+    ImGui::Render();
+    if (editor_.revision() != before) noteEdit();  // measured from here to its first frame
+
+    // The UI refers to the preview by its texture, which is sampled only when the draw
+    // data is drawn below: an edit made in this frame's UI is on screen in this frame.
+    processChange();
+    rebuildThumbnail();
+    renderPreviews();
+
+    int fw = 0, fh = 0;
+    window_.framebufferSize(&fw, &fh);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fw, fh);
+    glClearColor(0.1f, 0.1f, 0.12f, 1);
+    glClear(GL_COLOR_BUFFER_BIT);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    bool scriptDone = scriptFailed_ || (scriptNext_ >= script_.size() && waitFrames_ == 0 && waitReloadFrom_ < 0);
+    bool lastFrame = batch && scriptDone && --framesAfterScript <= 0;
+    if (!pendingScreenshot_.empty()) writeScreenshot(pendingScreenshot_), pendingScreenshot_.clear();
+    if (lastFrame && !options_.screenshot.empty()) writeScreenshot(options_.screenshot);
+    window_.swapBuffers();
+    preview_.endFrame();
+    retiredThumb_.reset();
+    finishLatency();
+    if (lastFrame) break;
+  }
+
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  if (scriptFailed_) return 1;
+  bool hasErrors = std::any_of(errors_.begin(), errors_.end(), [](const Diagnostic& d) { return d.severity == Severity::Error; });
+  return hasErrors || !haveGraph_ ? 1 : 0;
+}
+
+}  // namespace
+
+int runEditor(const EditorOptions& options) {
+  try {
+    rt::WindowOptions w;
+    w.width = options.windowWidth;
+    w.height = options.windowHeight;
+    w.title = "watergraph-editor - " + std::filesystem::path(options.graphPath).filename().string();
+    w.vsync = options.script.empty() && options.frames == 0;  // batch runs do not wait for the display
+    auto window = rt::GlfwContext::create(w);
+    int status = 0;
+    {
+      App app(options, *window);
+      status = app.run();
+    }  // GL objects go before the window
+    return status;
+  } catch (const rt::RuntimeError& e) {
+    std::cerr << "watergraph-editor: " << e.what() << "\n";
+    return e.exitCode();
+  }
+}
+
+}  // namespace wg::editor

@@ -1,0 +1,156 @@
+#include "editor/inspector.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+#include "core/number_format.h"
+
+namespace wg::editor {
+namespace {
+
+// A drag or slider ends: the next change starts a new undo step.
+void sealAfterEdit(GraphEditor& editor) {
+  if (ImGui::IsItemDeactivatedAfterEdit()) editor.seal();
+}
+
+bool editFloats(const char* label, std::vector<float>& v, float lo, float hi, bool bounded) {
+  int n = static_cast<int>(v.size());
+  if (bounded) return ImGui::SliderScalarN(label, ImGuiDataType_Float, v.data(), n, &lo, &hi, "%.3f");
+  return ImGui::DragScalarN(label, ImGuiDataType_Float, v.data(), n, 0.01f, nullptr, nullptr, "%.3f");
+}
+
+}  // namespace
+
+void drawParameterInspector(GraphEditor& editor) {
+  const Graph& g = editor.graph();
+  if (!g.presets.empty()) {
+    // A preset writes its values into the parameters (one undo step); the sliders then
+    // show them, and saving keeps them as the defaults.
+    if (ImGui::BeginCombo("preset", "apply a preset...")) {
+      std::string chosen;
+      for (const Preset& p : g.presets)
+        if (ImGui::Selectable(p.name.c_str())) chosen = p.name;
+      ImGui::EndCombo();
+      if (!chosen.empty()) editor.applyPreset(chosen);
+    }
+  }
+  if (g.parameters.empty()) ImGui::TextDisabled("this graph has no parameters");
+  for (const Parameter& p : g.parameters) {
+    ImGui::PushID(p.name.c_str());
+    std::vector<float> v(p.defaultValue.begin(), p.defaultValue.end());
+    bool bounded = p.min && p.max;
+    float lo = static_cast<float>(p.min.value_or(-1e6)), hi = static_cast<float>(p.max.value_or(1e6));
+    std::string label = p.name + (p.isStatic ? " (static)" : "");
+    bool changed = false;
+    if (p.hint == "color" && v.size() == 3) changed = ImGui::ColorEdit3(label.c_str(), v.data(), ImGuiColorEditFlags_Float);
+    else if (p.hint == "color" && v.size() == 4) changed = ImGui::ColorEdit4(label.c_str(), v.data(), ImGuiColorEditFlags_Float);
+    else if (!v.empty()) changed = editFloats(label.c_str(), v, lo, hi, bounded);
+    if (changed) {
+      std::vector<double> d(v.begin(), v.end());
+      for (double& x : d) x = std::clamp(x, p.min.value_or(-1e30), p.max.value_or(1e30));
+      editor.setParameterDefault(p.name, d);
+    }
+    sealAfterEdit(editor);
+    if (ImGui::IsItemHovered() && (!p.description.empty() || p.isStatic))
+      ImGui::SetTooltip("%s%s", p.description.c_str(),
+                        p.isStatic ? "\nstatic: folded into the shader, so a change recompiles" : "");
+    ImGui::PopID();
+  }
+}
+
+void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std::string& nodeId) {
+  const Node* n = editor.graph().findNode(nodeId);
+  if (!n) {
+    ImGui::TextDisabled("no node selected (click one on the canvas)");
+    return;
+  }
+  const NodeSpec* spec = registry.find(n->type);
+  ImGui::Text("%s : %s", n->id.c_str(), n->type.c_str());
+  if (spec) ImGui::TextWrapped("%s", spec->summary.c_str());
+  if (!spec) return;
+  ImGui::Separator();
+  std::string id = n->id;  // `n` may move when an edit reallocates the node list
+  for (const PortSpec& port : spec->inputs) {
+    ImGui::PushID(port.name.c_str());
+    const InputSource* src = nullptr;
+    for (const auto& in : editor.graph().findNode(id)->inputs)
+      if (in.port == port.name) src = &in.source;
+    InputTarget target{id, port.name};
+    if (src && src->kind == InputSource::Kind::NodeOutput) {
+      ImGui::Text("%s <- %s.%s", port.name.c_str(), src->node.c_str(), src->port.c_str());
+    } else if (src && src->kind == InputSource::Kind::Parameter) {
+      ImGui::Text("%s <- $%s", port.name.c_str(), src->parameter.c_str());
+    } else {
+      std::vector<float> v;
+      if (src) v.assign(src->literal.begin(), src->literal.end());
+      else if (port.defaultValue) for (int i = 0; i < port.defaultValue->size(); ++i) v.push_back(static_cast<float>((*port.defaultValue)[i]));
+      if (v.empty()) {
+        ImGui::Text("%s: %s", port.name.c_str(),
+                    port.defaultBuiltin ? ("builtin " + std::string(builtinName(*port.defaultBuiltin))).c_str() : "(required)");
+      } else if (editFloats(port.name.c_str(), v, 0, 0, false)) {
+        editor.setInputConstant(target, std::vector<double>(v.begin(), v.end()));
+      }
+      sealAfterEdit(editor);
+    }
+    if (src) {
+      ImGui::SameLine();
+      if (ImGui::SmallButton("x")) editor.disconnect(target);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("disconnect: back to the port's default");
+    }
+    if (ImGui::IsItemHovered() && !port.doc.empty()) ImGui::SetTooltip("%s", port.doc.c_str());
+    ImGui::PopID();
+  }
+  if (!spec->options.empty()) ImGui::Separator();
+  for (const OptionSpec& o : spec->options) {
+    const Node* now = editor.graph().findNode(id);
+    if (!now) break;
+    nlohmann::json value = o.defaultValue;
+    for (const auto& set : now->options)
+      if (set.name == o.name) value = set.value;
+    ImGui::PushID(o.name.c_str());
+    std::string label = "option " + o.name;
+    switch (o.kind) {
+      case OptionSpec::Kind::Enum: {
+        std::string current = value.is_string() ? value.get<std::string>() : "";
+        if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+          for (const auto& choice : o.choices)
+            if (ImGui::Selectable(choice.c_str(), choice == current)) editor.setOption(id, o.name, choice);
+          ImGui::EndCombo();
+        }
+        break;
+      }
+      case OptionSpec::Kind::Bool: {
+        bool b = value.is_boolean() && value.get<bool>();
+        if (ImGui::Checkbox(label.c_str(), &b)) editor.setOption(id, o.name, b);
+        break;
+      }
+      case OptionSpec::Kind::Number:
+      case OptionSpec::Kind::Integer: {
+        bool integer = o.kind == OptionSpec::Kind::Integer;
+        double x = value.is_number() ? value.get<double>() : 0;
+        double lo = o.min.value_or(-1e9), hi = o.max.value_or(1e9);
+        bool changed = integer ? ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &x, 0.1f, &lo, &hi, "%.0f")
+                               : ImGui::DragScalar(label.c_str(), ImGuiDataType_Double, &x, 0.01f, &lo, &hi, "%.3f");
+        if (changed) {
+          x = std::clamp(integer ? std::round(x) : x, lo, hi);
+          integer ? editor.setOption(id, o.name, static_cast<long long>(x)) : editor.setOption(id, o.name, x);
+        }
+        sealAfterEdit(editor);
+        break;
+      }
+      case OptionSpec::Kind::Texture:
+      case OptionSpec::Kind::Json:
+        // Lists and paths: edited in the file (hot reload shows them).
+        ImGui::TextWrapped("%s = %s", label.c_str(), value.dump().c_str());
+        break;
+    }
+    if (ImGui::IsItemHovered() && !o.doc.empty()) ImGui::SetTooltip("%s", o.doc.c_str());
+    ImGui::PopID();
+  }
+}
+
+}  // namespace wg::editor

@@ -1,0 +1,64 @@
+// watergraph-editor GRAPH: the live editor (docs/editor.md). Parses the command line and
+// hands over to runEditor.
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <iostream>
+#include <regex>
+
+#include "editor/editor_app.h"
+#include "runtime/scene.h"
+
+namespace {
+
+bool parseSize(const std::string& text, int* w, int* h) {
+  std::smatch m;
+  static const std::regex re("([0-9]{1,4})x([0-9]{1,4})");
+  if (!std::regex_match(text, m, re)) return false;
+  *w = std::stoi(m[1]), *h = std::stoi(m[2]);
+  return *w >= 16 && *h >= 16 && *w <= 8192 && *h <= 8192;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  wg::editor::EditorOptions o;
+  std::string windowSize = "1280x720", previewSize = "640x360";
+  float time = 0;
+  CLI::App app("watergraph-editor: edit a water graph with a live preview (docs/editor.md)", "watergraph-editor");
+  app.add_option("graph", o.graphPath, "the graph file (JSON, format v1)")->required();
+  app.add_option("--size", windowSize, "window size WIDTHxHEIGHT (default 1280x720)");
+  app.add_option("--preview-size", previewSize, "size the preview renders at (default 640x360)");
+  app.add_option("--camera", o.camera, "starting camera preset: above, grazing, underwater, topdown");
+  auto* timeOpt = app.add_option("--time", time, "start paused at this time in seconds");
+  app.add_option("--script", o.script, "apply the edits in this JSON file (a list of steps), then exit");
+  app.add_option("--screenshot", o.screenshot, "write the window as a PNG after the last frame, then exit");
+  app.add_option("--frames", o.frames, "run this many frames (after the script), then exit");
+  app.add_flag("--stats", o.stats, "print each edit's edit-to-pixels latency");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  if (!parseSize(windowSize, &o.windowWidth, &o.windowHeight) || !parseSize(previewSize, &o.previewWidth, &o.previewHeight)) {
+    std::cerr << "watergraph-editor: sizes are WIDTHxHEIGHT, each side 16..8192, e.g. 1280x720\n";
+    return 2;
+  }
+  if (!wg::rt::cameraPreset(o.camera)) {
+    std::cerr << "watergraph-editor: unknown camera preset '" << o.camera << "' (above, grazing, underwater, topdown)\n";
+    return 2;
+  }
+  if (*timeOpt) o.time = time;
+  if (o.frames < 0) {
+    std::cerr << "watergraph-editor: --frames must be 0 or more\n";
+    return 2;
+  }
+  if (!o.screenshot.empty() && o.frames == 0 && o.script.empty()) o.frames = 3;  // a screenshot means a batch run
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(o.graphPath, ec)) {
+    std::cerr << o.graphPath << ": error: [WG050] cannot open the graph file: no such file\n";
+    return 2;
+  }
+  return wg::editor::runEditor(o);
+}

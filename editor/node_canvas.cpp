@@ -1,0 +1,308 @@
+#include "editor/node_canvas.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <vector>
+
+#include "core/number_format.h"
+
+namespace wg::editor {
+namespace {
+
+constexpr float kNodeWidth = 180, kHeader = 22, kRow = 18, kPortRadius = 5;
+
+// The graph's output slots, drawn as one more node right of the others.
+const char* const kSlots[] = {"vertex.position", "vertex.normal", "fragment.color", "fragment.alpha"};
+constexpr const char* kOutputsId = "";  // the pseudo node's id in InputTarget terms
+
+struct Port {
+  std::string name;
+  ImVec2 at;
+};
+
+struct Box {
+  std::string id;  // "" for the outputs pseudo node
+  std::string title;
+  ImVec2 min, max;
+  std::vector<Port> inputs, outputs;
+  std::vector<std::string> inputNotes;  // per input: "$param", a constant, or ""
+};
+
+std::string sourceNote(const InputSource& s) {
+  switch (s.kind) {
+    case InputSource::Kind::Parameter: return "$" + s.parameter;
+    case InputSource::Kind::Literal: {
+      std::string t;
+      for (size_t i = 0; i < s.literal.size(); ++i) t += (i ? ", " : "") + formatNumber(s.literal[i]);
+      return s.literal.size() > 1 ? "(" + t + ")" : t;
+    }
+    case InputSource::Kind::NodeOutput: return "";
+  }
+  return "";
+}
+
+const InputSource* findInput(const Node& n, const std::string& port) {
+  for (const auto& in : n.inputs)
+    if (in.port == port) return &in.source;
+  return nullptr;
+}
+
+const InputSource* findSlot(const Graph& g, const std::string& slot) {
+  for (const auto& o : g.outputs)
+    if (outputSlotName(o.slot) == slot) return &o.source;
+  return nullptr;
+}
+
+float distance(ImVec2 a, ImVec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+void drawLink(ImDrawList* dl, ImVec2 from, ImVec2 to, ImU32 color) {
+  float dx = std::max(40.0f, std::abs(to.x - from.x) * 0.5f);
+  dl->AddBezierCubic(from, ImVec2(from.x + dx, from.y), ImVec2(to.x - dx, to.y), to, color, 2.5f);
+}
+
+}  // namespace
+
+void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string& selected) {
+  const Graph& g = editor.graph();
+  ImGuiIO& io = ImGui::GetIO();
+  ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImVec2 size = ImGui::GetContentRegionAvail();
+  if (size.x < 50) size.x = 50;
+  if (size.y < 50) size.y = 50;
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(30, 32, 38, 255));
+  for (float x = std::fmod(scroll_[0], 40.0f); x < size.x; x += 40)
+    dl->AddLine(ImVec2(origin.x + x, origin.y), ImVec2(origin.x + x, origin.y + size.y), IM_COL32(45, 48, 56, 255));
+  for (float y = std::fmod(scroll_[1], 40.0f); y < size.y; y += 40)
+    dl->AddLine(ImVec2(origin.x, origin.y + y), ImVec2(origin.x + size.x, origin.y + y), IM_COL32(45, 48, 56, 255));
+
+  // The whole area is one invisible button: it takes the clicks ImGui would otherwise
+  // give to the window (dragging it), and tells whether the mouse is over the canvas.
+  ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                                             ImGuiButtonFlags_MouseButtonMiddle);
+  bool hovered = ImGui::IsItemHovered();
+  auto toScreen = [&](double x, double y) {
+    return ImVec2(origin.x + scroll_[0] + static_cast<float>(x), origin.y + scroll_[1] + static_cast<float>(y));
+  };
+  ImVec2 mouse = io.MousePos;
+  std::array<double, 2> mouseCanvas{mouse.x - origin.x - scroll_[0], mouse.y - origin.y - scroll_[1]};
+
+  // Lay out the boxes.
+  std::vector<Box> boxes;
+  double rightmost = 0, top = 0;
+  bool first = true;
+  for (const auto& n : g.nodes) {
+    std::array<double, 2> p = n.editorPosition.value_or(std::array<double, 2>{0, 0});
+    rightmost = first ? p[0] : std::max(rightmost, p[0]);
+    top = first ? p[1] : std::min(top, p[1]);
+    first = false;
+    Box b;
+    b.id = n.id;
+    b.title = n.id + " : " + n.type;
+    std::vector<std::string> ins, outs;
+    if (const NodeSpec* spec = registry.find(n.type)) {
+      for (const auto& port : spec->inputs) ins.push_back(port.name);
+      for (const auto& port : spec->outputs) outs.push_back(port.name);
+    } else {
+      for (const auto& in : n.inputs) ins.push_back(in.port);
+    }
+    size_t rows = std::max<size_t>(std::max(ins.size(), outs.size()), 1);
+    b.min = toScreen(p[0], p[1]);
+    b.max = ImVec2(b.min.x + kNodeWidth, b.min.y + kHeader + kRow * static_cast<float>(rows) + 4);
+    for (size_t i = 0; i < ins.size(); ++i) {
+      b.inputs.push_back({ins[i], ImVec2(b.min.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
+      const InputSource* s = findInput(n, ins[i]);
+      b.inputNotes.push_back(s ? sourceNote(*s) : "");
+    }
+    for (size_t i = 0; i < outs.size(); ++i)
+      b.outputs.push_back({outs[i], ImVec2(b.max.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
+    boxes.push_back(std::move(b));
+  }
+  {
+    Box b;
+    b.id = kOutputsId;
+    b.title = "outputs";
+    b.min = toScreen(rightmost + 260, top);
+    b.max = ImVec2(b.min.x + kNodeWidth, b.min.y + kHeader + kRow * 4 + 4);
+    for (size_t i = 0; i < 4; ++i) {
+      b.inputs.push_back({kSlots[i], ImVec2(b.min.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
+      const InputSource* s = findSlot(g, kSlots[i]);
+      b.inputNotes.push_back(s ? sourceNote(*s) : "");
+    }
+    boxes.push_back(std::move(b));
+  }
+  auto boxOf = [&](const std::string& id) -> const Box* {
+    for (const auto& b : boxes)
+      if (b.id == id) return &b;
+    return nullptr;
+  };
+  auto outputPort = [&](const std::string& node, const std::string& port) -> std::optional<ImVec2> {
+    const Box* b = node.empty() ? nullptr : boxOf(node);
+    if (!b) return std::nullopt;
+    for (const auto& p : b->outputs)
+      if (p.name == port) return p.at;
+    return std::nullopt;
+  };
+  // Hit tests: ports within a few pixels, then node boxes (topmost = last drawn).
+  auto inputAt = [&](ImVec2 m) -> std::optional<InputTarget> {
+    for (const auto& b : boxes)
+      for (const auto& p : b.inputs)
+        if (distance(p.at, m) <= kPortRadius + 4) return InputTarget{b.id, p.name};
+    return std::nullopt;
+  };
+  auto outputAt = [&](ImVec2 m) -> std::optional<std::pair<std::string, std::string>> {
+    for (const auto& b : boxes)
+      for (const auto& p : b.outputs)
+        if (distance(p.at, m) <= kPortRadius + 4) return std::make_pair(b.id, p.name);
+    return std::nullopt;
+  };
+  auto nodeAt = [&](ImVec2 m) -> const Box* {
+    for (auto it = boxes.rbegin(); it != boxes.rend(); ++it)
+      if (!it->id.empty() && m.x >= it->min.x && m.x <= it->max.x && m.y >= it->min.y && m.y <= it->max.y) return &*it;
+    return nullptr;
+  };
+  auto sourceOf = [&](const InputTarget& t) -> const InputSource* {
+    if (t.node.empty()) return findSlot(g, t.port);
+    const Node* n = g.findNode(t.node);
+    return n ? findInput(*n, t.port) : nullptr;
+  };
+
+  // Mouse: start a drag.
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+    if (auto out = outputAt(mouse)) {
+      drag_ = Drag::Link;
+      linkFromNode_ = out->first, linkFromPort_ = out->second;
+      hasDetached_ = false;
+    } else if (auto in = inputAt(mouse); in && sourceOf(*in) && sourceOf(*in)->kind == InputSource::Kind::NodeOutput) {
+      // Picking a link up from its input: dropped elsewhere it is disconnected.
+      const InputSource* s = sourceOf(*in);
+      drag_ = Drag::Link;
+      linkFromNode_ = s->node, linkFromPort_ = s->port;
+      detached_ = *in;
+      hasDetached_ = true;
+    } else if (const Box* b = nodeAt(mouse)) {
+      selected = b->id;
+      drag_ = Drag::MoveNode;
+      dragNode_ = b->id;
+      dragStart_ = g.findNode(b->id)->editorPosition.value_or(std::array<double, 2>{0, 0});
+    } else {
+      selected.clear();
+      drag_ = Drag::Pan;
+    }
+  }
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) drag_ = Drag::Pan;
+  // Right-click: on a connected input, disconnect it; on the background, the palette.
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
+    if (auto in = inputAt(mouse); in && sourceOf(*in)) {
+      editor.disconnect(*in);
+    } else if (const Box* b = nodeAt(mouse)) {
+      selected = b->id;
+    } else {
+      paletteAt_ = {static_cast<float>(mouseCanvas[0]), static_cast<float>(mouseCanvas[1])};
+      filter_[0] = '\0';
+      ImGui::OpenPopup("palette");
+    }
+  }
+
+  // Mouse: continue and finish a drag.
+  if (drag_ == Drag::MoveNode && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+    ImVec2 d = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
+    // Whole pixels: positions in the file stay short.
+    editor.moveNode(dragNode_, {std::round(dragStart_[0] + d.x), std::round(dragStart_[1] + d.y)});
+  }
+  if (drag_ == Drag::Pan && (ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))) {
+    scroll_[0] += io.MouseDelta.x;
+    scroll_[1] += io.MouseDelta.y;
+  }
+  if (drag_ == Drag::Link) {
+    ImVec2 from = outputPort(linkFromNode_, linkFromPort_).value_or(mouse);
+    drawLink(dl, from, mouse, IM_COL32(255, 220, 120, 255));
+  }
+  if (drag_ != Drag::None && !ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
+    if (drag_ == Drag::Link) {
+      if (auto in = inputAt(mouse)) {
+        if (!(hasDetached_ && in->node == detached_.node && in->port == detached_.port)) {
+          if (hasDetached_) editor.disconnect(detached_);
+          editor.connect(linkFromNode_, linkFromPort_, *in);
+        }
+      } else if (hasDetached_) {
+        editor.disconnect(detached_);
+      }
+    }
+    editor.seal();
+    drag_ = Drag::None;
+  }
+  if (hovered && io.MouseWheel != 0) scroll_[1] += io.MouseWheel * 40;
+
+  // Links, under the boxes.
+  auto linkColor = IM_COL32(140, 200, 255, 220);
+  for (const auto& b : boxes) {
+    for (const auto& p : b.inputs) {
+      const InputSource* s = sourceOf({b.id, p.name});
+      if (!s || s->kind != InputSource::Kind::NodeOutput) continue;
+      if (drag_ == Drag::Link && hasDetached_ && detached_.node == b.id && detached_.port == p.name) continue;
+      if (auto from = outputPort(s->node, s->port)) drawLink(dl, *from, p.at, linkColor);
+    }
+  }
+  // Boxes.
+  for (const auto& b : boxes) {
+    bool isSelected = !b.id.empty() && b.id == selected;
+    dl->AddRectFilled(b.min, b.max, IM_COL32(52, 56, 66, 240), 5);
+    dl->AddRectFilled(b.min, ImVec2(b.max.x, b.min.y + kHeader),
+                      b.id.empty() ? IM_COL32(110, 70, 40, 255) : IM_COL32(40, 80, 120, 255), 5);
+    dl->AddRect(b.min, b.max, isSelected ? IM_COL32(255, 220, 120, 255) : IM_COL32(90, 95, 110, 255), 5, 0,
+                isSelected ? 2.5f : 1.0f);
+    dl->AddText(ImVec2(b.min.x + 6, b.min.y + 4), IM_COL32(235, 235, 235, 255), b.title.c_str());
+    for (size_t i = 0; i < b.inputs.size(); ++i) {
+      const Port& p = b.inputs[i];
+      bool linked = !b.inputNotes[i].empty() || (sourceOf({b.id, p.name}) != nullptr);
+      dl->AddCircleFilled(p.at, kPortRadius, linked ? IM_COL32(140, 200, 255, 255) : IM_COL32(120, 120, 130, 255));
+      std::string label = p.name + (b.inputNotes[i].empty() ? "" : " = " + b.inputNotes[i]);
+      dl->AddText(ImVec2(p.at.x + 9, p.at.y - 7), IM_COL32(210, 210, 210, 255), label.c_str());
+    }
+    for (const auto& p : b.outputs) {
+      dl->AddCircleFilled(p.at, kPortRadius, IM_COL32(255, 200, 120, 255));
+      ImVec2 ts = ImGui::CalcTextSize(p.name.c_str());
+      dl->AddText(ImVec2(p.at.x - 9 - ts.x, p.at.y - 7), IM_COL32(210, 210, 210, 255), p.name.c_str());
+    }
+  }
+  dl->PopClipRect();
+
+  // Keys while the mouse is over the canvas.
+  if (hovered && !selected.empty() && !io.WantTextInput &&
+      (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete)) ||
+       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Backspace)))) {
+    if (editor.deleteNode(selected).empty()) selected.clear();
+  }
+
+  // The palette: every registered node type, by family, filtered by name.
+  if (ImGui::BeginPopup("palette")) {
+    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+    ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
+    std::map<std::string, std::vector<const NodeSpec*>> families;
+    for (const NodeSpec* spec : registry.all())
+      if (spec->type.find(filter_) != std::string::npos) families[spec->family].push_back(spec);
+    ImGui::BeginChild("types", ImVec2(260, 320));
+    for (const auto& [family, specs] : families) {
+      ImGui::TextDisabled("%s", family.c_str());
+      for (const NodeSpec* spec : specs) {
+        if (ImGui::Selectable(spec->type.c_str())) {
+          std::string id;
+          if (editor.addNode(spec->type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty())
+            selected = id;
+          ImGui::CloseCurrentPopup();
+        }
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec->summary.c_str());
+      }
+    }
+    ImGui::EndChild();
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace wg::editor

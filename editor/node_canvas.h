@@ -1,0 +1,36 @@
+#pragma once
+// The node canvas: the graph drawn with ImGui draw lists (nodes, ports, links and the
+// graph's output slots) and edited through the GraphEditor: select, move, connect (drag
+// from an output port to an input port), disconnect (drag a link off its input, or
+// right-click the input), add from the registry palette (right-click the background),
+// delete (Delete key). Node positions are the file's "editor": {x, y}.
+#include <array>
+#include <string>
+
+#include "core/graph_edit.h"
+#include "core/registry.h"
+
+namespace wg::editor {
+
+class NodeCanvas {
+ public:
+  // Draws into the current ImGui window, filling the rest of it. `selected` is the selected
+  // node id ("" for none) and may be changed.
+  void draw(GraphEditor& editor, const Registry& registry, std::string& selected);
+
+ private:
+  enum class Drag { None, MoveNode, Link, Pan };
+  Drag drag_ = Drag::None;
+  std::array<float, 2> scroll_{40, 40};  // canvas origin inside the window, in pixels
+  // MoveNode: the node and where it started; Link: the source output and, when an existing
+  // link was picked up from an input, that input.
+  std::string dragNode_;
+  std::array<double, 2> dragStart_{};
+  std::string linkFromNode_, linkFromPort_;
+  InputTarget detached_;
+  bool hasDetached_ = false;
+  std::array<float, 2> paletteAt_{};  // canvas position for a node added from the palette
+  char filter_[64] = "";
+};
+
+}  // namespace wg::editor

@@ -1,0 +1,19 @@
+#pragma once
+// The graph behind a node's preview thumbnail: the same graph with one node output routed
+// to the fragment colour (alpha 1), converted to vec3 by nodes the compiler already has:
+// a float splats, a vec2 becomes (x, y, 0) through split + combine, a vec4 keeps .xyz.
+// The vertex outputs stay, so a displaced surface previews displaced.
+#include <optional>
+#include <string>
+
+#include "core/graph.h"
+#include "core/registry.h"
+
+namespace wg::editor {
+
+// Empty, with *why set, when the output cannot be shown as a colour (a matrix, a sampler,
+// an unknown node or port) or the graph does not resolve.
+std::optional<Graph> nodeOutputGraph(const Graph& graph, const Registry& registry, const std::string& nodeId,
+                                     const std::string& port, std::string* why);
+
+}  // namespace wg::editor
