@@ -59,11 +59,15 @@ class LineTable {
     for (std::size_t i = 0; i < text.size(); ++i)
       if (text[i] == '\n') starts_.push_back(i + 1);
   }
-  SourceRef at(const std::string& file, std::size_t offset) const {
+  JsonSource::Position position(std::size_t offset) const {
     auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
     std::size_t line = static_cast<std::size_t>(it - starts_.begin());  // >= 1
     std::size_t col = offset - starts_[line - 1] + 1;
-    return SourceRef{file, static_cast<int>(line), static_cast<int>(col)};
+    return {static_cast<int>(line), static_cast<int>(col)};
+  }
+  SourceRef at(const std::string& file, std::size_t offset) const {
+    auto p = position(offset);
+    return SourceRef{file, p.line, p.col};
   }
 
  private:
@@ -120,15 +124,15 @@ class PositionSax {
     Frame& f = stack_.back();
     f.key = k;
     std::string memberPtr = f.pointer + "/" + jsonPointerEscape(k);
-    SourceRef where = lines_.at(file_, start);
-    auto first = out_.keyAt.find(memberPtr);
-    if (f.value->contains(k) && first != out_.keyAt.end()) {
-      auto& d = diags_.error(DiagCode::DuplicateKey, where, "duplicate key '" + k + "'");
+    JsonSource::Position where = lines_.position(start);
+    auto first = f.value->contains(k) ? out_.keyAt.find(memberPtr) : out_.keyAt.end();
+    if (first != out_.keyAt.end()) {
+      auto& d = diags_.error(DiagCode::DuplicateKey, SourceRef{file_, where.line, where.col}, "duplicate key '" + k + "'");
       d.notes.push_back("first defined at " + std::to_string(first->second.line) + ":" +
                         std::to_string(first->second.col));
       f.duplicate = true;
     } else {
-      out_.keyAt.emplace(memberPtr, where);
+      out_.keyAt.emplace(std::move(memberPtr), where);
       out_.keyOrder[f.pointer].push_back(k);
       f.duplicate = false;
     }
@@ -213,7 +217,7 @@ class PositionSax {
   }
 
   // Places `v` in the current container; returns it and its pointer.
-  std::pair<nlohmann::json*, std::string> place(nlohmann::json&& v, SourceRef where) {
+  std::pair<nlohmann::json*, std::string> place(nlohmann::json&& v, JsonSource::Position where) {
     if (stack_.empty()) {
       out_.root = std::move(v);
       out_.valueAt.emplace("", where);
@@ -238,6 +242,9 @@ class PositionSax {
     return {&slot, ptr};
   }
 
+  // A scalar needs no pointer of its own once its position is recorded.
+  void placeScalar(nlohmann::json&& v, JsonSource::Position where) { place(std::move(v), where); }
+
   template <typename T>
   bool scalar(T&& v, bool isNumber) {
     std::size_t start = tokenStart();
@@ -250,22 +257,22 @@ class PositionSax {
       if (!numberChar) --end;
     }
     prevEnd_ = end;
-    place(nlohmann::json(std::forward<T>(v)), lines_.at(file_, start));
+    placeScalar(nlohmann::json(std::forward<T>(v)), lines_.position(start));
     return true;
   }
 
   bool open(nlohmann::json&& container, bool isArray) {
     std::size_t start = tokenStart();
     prevEnd_ = consumed_;
-    SourceRef where = lines_.at(file_, start);
+    JsonSource::Position where = lines_.position(start);
     if (static_cast<int>(stack_.size()) >= kMaxDepth) {
-      diags_.error(DiagCode::LimitExceeded, where,
+      diags_.error(DiagCode::LimitExceeded, SourceRef{file_, where.line, where.col},
                    "JSON nesting is deeper than " + std::to_string(kMaxDepth) + " levels");
       depthExceeded_ = true;
       return false;
     }
     auto [ptr, pointer] = place(std::move(container), where);
-    stack_.push_back(Frame{ptr, pointer, isArray, 0, {}, false});
+    stack_.push_back(Frame{ptr, std::move(pointer), isArray, 0, {}, false});
     return true;
   }
 
@@ -291,18 +298,14 @@ class PositionSax {
 
 SourceRef JsonSource::value(const std::string& pointer) const {
   auto it = valueAt.find(pointer);
-  if (it != valueAt.end()) return it->second;
-  SourceRef r;
-  if (!valueAt.empty()) r.file = valueAt.begin()->second.file;
-  return r;
+  if (it != valueAt.end()) return SourceRef{file, it->second.line, it->second.col};
+  return SourceRef{valueAt.empty() ? std::string() : file, 0, 0};
 }
 
 SourceRef JsonSource::key(const std::string& pointer) const {
   auto it = keyAt.find(pointer);
-  if (it != keyAt.end()) return it->second;
-  SourceRef r;
-  if (!valueAt.empty()) r.file = valueAt.begin()->second.file;
-  return r;
+  if (it != keyAt.end()) return SourceRef{file, it->second.line, it->second.col};
+  return SourceRef{valueAt.empty() ? std::string() : file, 0, 0};
 }
 
 std::string jsonPointerEscape(std::string_view key) {
@@ -337,6 +340,10 @@ std::optional<JsonSource> parseJsonWithPositions(std::string_view text, const st
   }
   size_t errorsBefore = diags.errorCount();
   JsonSource out;
+  out.file = file;
+  // About one value per 12 bytes of a graph file; reserving avoids rehashing as it grows.
+  out.valueAt.reserve(text.size() / 12 + 16);
+  out.keyAt.reserve(text.size() / 16 + 16);
   std::size_t consumed = 0;
   PositionSax sax(text, file, diags, out, consumed);
   const char* base = text.data();

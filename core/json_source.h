@@ -1,10 +1,10 @@
 #pragma once
 // JSON parsed by nlohmann's SAX interface into a DOM plus the file position of every
 // value and key (nlohmann's own DOM keeps none and silently drops duplicate keys).
-#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -15,14 +15,21 @@
 namespace wg {
 
 struct JsonSource {
+  // A line and column in `file`; SourceRefs are made from them only when asked for, so a
+  // large file does not hold one copy of its name per value.
+  struct Position {
+    int line = 0;
+    int col = 0;
+  };
+  std::string file;
   nlohmann::json root;
   // Keyed by JSON pointer ("/nodes/3/inputs/normal"): the value's first character.
-  std::map<std::string, SourceRef> valueAt;
+  std::unordered_map<std::string, Position> valueAt;
   // Keyed by the pointer of the member: the member key's opening quote.
-  std::map<std::string, SourceRef> keyAt;
+  std::unordered_map<std::string, Position> keyAt;
   // Keyed by the pointer of an object: its member keys in file order (nlohmann's object
   // sorts them). Duplicate keys appear once, at their first position.
-  std::map<std::string, std::vector<std::string>> keyOrder;
+  std::unordered_map<std::string, std::vector<std::string>> keyOrder;
 
   SourceRef value(const std::string& pointer) const;
   SourceRef key(const std::string& pointer) const;
