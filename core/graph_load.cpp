@@ -154,9 +154,8 @@ class Loader {
 
   // Member keys of the object at `ptr`, in file order.
   std::vector<std::string> members(const json& obj, const std::string& ptr) const {
-    auto it = js_.keyOrder.find(ptr);
-    if (it != js_.keyOrder.end()) return it->second;
-    std::vector<std::string> keys;
+    std::vector<std::string> keys = js_.keysInOrder(ptr);
+    if (!keys.empty()) return keys;
     for (auto m = obj.begin(); m != obj.end(); ++m) keys.push_back(m.key());
     return keys;
   }
