@@ -20,12 +20,14 @@ build: configure
 
 # Compile every example graph for every target into out/<graph>/, validate each
 # shader with glslang and print a summary table; then render each graph's preview
-# (1280x720, camera above, headless on llvmpipe) into out/<graph>.png.
+# (1280x720, camera above, headless on llvmpipe) into out/<graph>.png, and the README's
+# gallery (scripts/gallery.sh) into out/gallery/.
 demo: build
 	@$(WG) compile $(GRAPHS) -o out --subdirs --summary
 	@for g in $(GRAPHS); do n=$$(basename $$g .json); \
 	  MESA_SHADER_CACHE_DISABLE=true $(WG) render $$g -o out/$$n.png --stats || exit $$?; \
 	  echo "wrote out/$$n.png"; done
+	@scripts/gallery.sh $(BUILD_DIR) out/gallery
 
 test: build
 	@cd $(BUILD_DIR) && MESA_SHADER_CACHE_DISABLE=true ctest --output-on-failure -j $(JOBS)

@@ -18,6 +18,7 @@
 #include "codegen/compile.h"
 #include "codegen/output_files.h"
 #include "codegen/spirv_cross_targets.h"
+#include "codegen/texture_files.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 
@@ -35,6 +36,8 @@ struct CompileArgs {
   bool noProgress = false;
   bool watch = false;
   int watchIntervalMs = 250;
+  std::string preset;
+  bool textures = false;  // also write <graph>.<sampler>.png for every node texture
 };
 
 struct TargetSet {
@@ -144,8 +147,16 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
   auto graph = loadGraphFile(path, diags);
   std::optional<CompileResult> result;
   if (graph) {
-    result = compileGraphWithCross(*graph, defaultRegistry(), targets.glsl, targets.cross, diags);
+    CompileOptions options;
+    options.targets = targets.glsl;
+    options.preset = args.preset;
+    result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
     outcome.total = static_cast<int>(graph->nodes.size());
+  }
+  if (result && args.textures) {
+    auto pngs = textureFiles(*result, outcome.name, diags);
+    if (diags.hasErrors()) result.reset();
+    else result->files.insert(result->files.end(), pngs.begin(), pngs.end());
   }
   if (result) {
     outcome.kept = result->nodesKept;
@@ -271,6 +282,9 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   auto* quiet = cmd->add_flag("-q,--quiet", args.quiet, "print only errors");
   cmd->add_flag("-v,--verbose", args.verbose, "print one line per graph: nodes kept, files, time")->excludes(quiet);
   cmd->add_flag("--no-progress", args.noProgress, "no progress bar (it is drawn only when stdout is a terminal)");
+  cmd->add_option("--preset", args.preset,
+                  "a preset from the graph's \"presets\" table (e.g. calm, moderate, choppy): its values become the "
+                  "parameter defaults; static parameters fold into the shader");
 }
 
 }  // namespace
@@ -286,6 +300,7 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph compile graphs/*.json -o out --subdirs --summary\n"
       "  watergraph compile graphs/lake.json -o out --target es300\n"
       "  watergraph compile graphs/lake.json -o out --target msl,hlsl\n"
+      "  watergraph compile graphs/lake.json -o out --target es300 --textures   # for the three.js client\n"
       "  watergraph compile graphs/*.json -o out --verbose\n"
       "  watergraph compile graphs/lake.json -o out --watch        # recompile on every save\n"
       "  watergraph compile graphs/*.json -o out --diagnostics-format sarif > watergraph.sarif");
@@ -294,6 +309,9 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
   addCommonOptions(cmd, *args);
   cmd->add_flag("--subdirs", args->subdirs, "write each graph into OUTPUT/<graph>/");
   cmd->add_flag("--summary", args->summary, "print a table: graph, nodes kept/total, targets, status");
+  cmd->add_flag("--textures", args->textures,
+                "also write every node texture the manifest lists (built-in ones generated, PNG sources re-encoded) as "
+                "<graph>.<sampler>.png, for clients such as clients/three/");
   cmd->add_flag("-w,--watch", args->watch,
                 "after compiling, keep running and recompile a graph whenever its file changes (polls modification "
                 "times); stop with Ctrl-C");

@@ -31,6 +31,9 @@ struct RenderArgs {
   float sunAzimuth = 110.0f;    // = rt::SceneOptions defaults
   float sunElevation = 30.0f;
   int grid = 128;  // = rt::RenderSettings default
+  std::string preset;
+  bool obliqueReflection = false;
+  std::string scene = "builtin";
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -87,6 +90,7 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   if (graph) {
     CompileOptions options;
     options.targets = {target};
+    options.preset = args.preset;
     result = compileGraph(*graph, defaultRegistry(), options, diags);
   }
   printDiagnostics(diags, global);
@@ -98,8 +102,10 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   settings.camera = args.camera;
   settings.scene.time = args.time;
   settings.waterGridQuads = args.grid;
+  settings.obliqueReflection = args.obliqueReflection;
   settings.scene.sunAzimuthDegrees = args.sunAzimuth;
   settings.scene.sunElevationDegrees = args.sunElevation;
+  settings.scene.drawScene = args.scene == "builtin";
   try {
     rt::Preview p = rt::renderPreview(*result, target, settings, args.frames, /*warmup=*/args.stats);
     rt::writePng(args.output, p.image);
@@ -123,7 +129,9 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       "the manifest lists run. Writes the frame as a PNG.\n\nExamples:\n"
       "  watergraph render graphs/lake.json -o lake.png\n"
       "  watergraph render graphs/lake.json -o lake.png --size 640x360 --camera grazing --time 2\n"
-      "  watergraph render graphs/lake.json -o lake.png --target es300 --frames 20 --stats\n\n"
+      "  watergraph render graphs/lake.json -o lake.png --target es300 --frames 20 --stats\n"
+      "  watergraph render graphs/topdown.json -o choppy.png --preset choppy --camera topdown\n"
+      "  watergraph render graphs/lake.json -o water.png --target es300 --scene none   # the water alone, on black\n\n"
       "Exit codes: 0 ok; 1 graph errors or a shader the GL driver rejects; 2 usage, I/O, or no EGL/GL context.");
   cmd->add_option("graph", args->graph, "graph file (.json)")->required();
   cmd->add_option("-o,--output", args->output, "PNG file to write (written atomically)")->required();
@@ -143,9 +151,18 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--sun-elevation", args->sunElevation, "sun height above the horizon in degrees")
       ->check(CLI::Range(-90.0f, 90.0f))
       ->capture_default_str();
+  cmd->add_option("--scene", args->scene,
+                  "builtin: the sky, pool, shore, pillars and rocks; none: only the water, over opaque black (nothing "
+                  "else in any pass), e.g. to compare with another renderer such as clients/three/")
+      ->check(CLI::IsMember({"builtin", "none"}))
+      ->capture_default_str();
   cmd->add_option("--grid", args->grid, "quads per side of the 40 x 40 m water grid (finer for short waves; costs time on llvmpipe)")
       ->check(CLI::Range(1, 2048))
       ->capture_default_str();
+  cmd->add_option("--preset", args->preset, "a preset from the graph's \"presets\" table (e.g. calm, moderate, choppy)");
+  cmd->add_flag("--oblique-reflection", args->obliqueReflection,
+                "clip the planar reflection pass with an oblique near plane on the water (seed 003) instead of a clip "
+                "plane (seed 000)");
 #ifdef WG_HAVE_RUNTIME
   return [args, &global] { return runRender(*args, global); };
 #else

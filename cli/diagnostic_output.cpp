@@ -157,7 +157,10 @@ int exitCodeFor(const Diagnostics& diags) {
   bool graphError = false;
   for (const auto& d : diags.all()) {
     if (d.severity != Severity::Error) continue;
-    if (d.code != DiagCode::FileRead && d.code != DiagCode::FileWrite) graphError = true;
+    // WG05x are the files and the command line (an unreadable file, --preset naming no
+    // preset): exit 2, as for other usage and I/O errors.
+    if (d.code != DiagCode::FileRead && d.code != DiagCode::FileWrite && d.code != DiagCode::UnknownPreset)
+      graphError = true;
   }
   return graphError ? kExitGraphError : kExitUsageOrIo;
 }

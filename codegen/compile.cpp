@@ -5,6 +5,7 @@
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest.h"
 #include "codegen/passes.h"
+#include "core/preset.h"
 #include "core/resolve.h"
 
 namespace wg {
@@ -76,8 +77,14 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
 
 }  // namespace
 
-std::optional<CompileResult> compileGraph(const Graph& graph, const Registry& registry,
+std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
                                           const CompileOptions& options, Diagnostics& diags) {
+  Graph withPreset;
+  if (!options.preset.empty()) {
+    withPreset = graphAsWritten;
+    if (!applyPreset(withPreset, options.preset, diags)) return std::nullopt;
+  }
+  const Graph& graph = options.preset.empty() ? graphAsWritten : withPreset;
   auto program = buildProgram(graph, registry, diags);
   if (!program) return std::nullopt;
   CompileResult result;
@@ -89,7 +96,7 @@ std::optional<CompileResult> compileGraph(const Graph& graph, const Registry& re
   bool ok = true;
   std::vector<std::pair<Target, EmitResult>> emitted;
   for (Target target : options.targets) {
-    EmitResult er = emitProgram(*program, target, sourceName.empty() ? graph.name : sourceName);
+    EmitResult er = emitProgram(*program, target, sourceName.empty() ? graph.name : sourceName, options.tessellation);
     std::vector<ShaderSource> sources;
     for (const auto& sh : er.shaders)
       sources.push_back({sh.stage, base + "." + std::string(targetName(target)) + "." + std::string(stageExtension(sh.stage)), sh.text});
@@ -109,6 +116,7 @@ std::optional<CompileResult> compileGraph(const Graph& graph, const Registry& re
   }
   if (!ok) return std::nullopt;
   result.manifest = buildManifest(*program, emitted, base);
+  if (!options.preset.empty()) result.manifest["preset"] = options.preset;
   result.files.push_back({base + ".manifest.json", result.manifest.dump(2) + "\n"});
   result.program = std::move(*program);
   return result;

@@ -19,6 +19,8 @@ namespace wg {
 struct CompileOptions {
   std::vector<Target> targets = allTargets();
   bool validate = true;  // glslang; off only for tests of the emitter itself
+  std::string preset;    // a graph preset whose values become the parameter defaults ("" none)
+  bool tessellation = true;  // false: every target draws the mesh as it is (as es300 always does)
 };
 
 struct OutputFile {

@@ -73,6 +73,7 @@ const BuiltinUniform kViewport{iface::kViewportSize, Type::Vec2, "viewport_size"
 const BuiltinUniform kNearFar{iface::kCameraNearFar, Type::Vec2, "camera_near_far"};
 const BuiltinUniform kView{iface::kView, Type::Mat4, "view"};
 const BuiltinUniform kProjection{iface::kProjection, Type::Mat4, "projection"};
+const BuiltinUniform kSun{iface::kSunDirection, Type::Vec3, "sun_direction"};
 
 // One stage's body being written: lines with the op that wrote each, and what it used.
 struct StageWriter {
@@ -121,7 +122,7 @@ class OpEmitContext final : public EmitContext {
 
 class Emitter {
  public:
-  Emitter(const Program& p, Target t, std::string sourceName)
+  Emitter(const Program& p, Target t, std::string sourceName, bool allowTessellation)
       : program_(p), target_(t), style_(styleOf(t)), sourceName_(std::move(sourceName)) {
     for (size_t i = 0; i < p.ops.size(); ++i) opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
     std::set<std::string> taken;
@@ -132,7 +133,7 @@ class Emitter {
       paramNames_.push_back(name);
     }
     // Tessellation: asked for by a vertex-stage node; GLSL ES 3.00 has no such stages.
-    if (t != Target::Es300)
+    if (t != Target::Es300 && allowTessellation)
       for (const auto& op : p.ops)
         if ((op.stage & kVertexStage) && op.spec->tessellation && !tess_)
           tess_ = op.spec->tessellation(op.options);
@@ -202,7 +203,7 @@ class Emitter {
       result.varyings.push_back({varyingNames_.at({v.index, v.port}), op.outputTypes[static_cast<size_t>(v.port)],
                                  "node '" + op.nodeId + "' output '" + op.spec->outputs[static_cast<size_t>(v.port)].name + "'"});
     }
-    for (const BuiltinUniform* u : {&kModel, &kViewProjection, &kView, &kProjection, &kCamera, &kNearFar, &kTime, &kViewport}) {
+    for (const BuiltinUniform* u : {&kModel, &kViewProjection, &kView, &kProjection, &kCamera, &kNearFar, &kTime, &kViewport, &kSun}) {
       unsigned stages = (vert.builtinUniforms.count(u->name) ? kVertexStage : 0u) |
                         (frag.builtinUniforms.count(u->name) ? kFragmentStage : 0u);
       if (stages) result.uniforms.push_back({u->name, u->type, -1, u->meaning, stages});
@@ -288,6 +289,7 @@ class Emitter {
       case Builtin::CameraNearFar: w.builtinUniforms.insert(iface::kCameraNearFar); return iface::kCameraNearFar;
       case Builtin::View: w.builtinUniforms.insert(iface::kView); return iface::kView;
       case Builtin::Projection: w.builtinUniforms.insert(iface::kProjection); return iface::kProjection;
+      case Builtin::SunDirection: w.builtinUniforms.insert(iface::kSunDirection); return iface::kSunDirection;
     }
     return "";
   }
@@ -729,8 +731,9 @@ std::string sanitiseIdentifier(std::string_view id) {
   return out.empty() ? "x" : out;
 }
 
-EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName) {
-  return Emitter(program, target, sourceName).run();
+EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName,
+                       bool allowTessellation) {
+  return Emitter(program, target, sourceName, allowTessellation).run();
 }
 
 }  // namespace wg

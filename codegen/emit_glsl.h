@@ -59,7 +59,10 @@ struct EmitResult {
   std::optional<TessellationSettings> tessellation;
 };
 
-EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName);
+// `allowTessellation` false draws the mesh as it is even where the target could
+// tessellate (for HLSL through SPIRV-Cross, which has no HLSL tessellation stages).
+EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName,
+                       bool allowTessellation = true);
 
 // A graph identifier made safe as part of a GLSL name: [A-Za-z0-9_] only, no "__",
 // at most 24 characters.

@@ -10,7 +10,7 @@ namespace {
 bool isFragmentOnlyBuiltin(Builtin b) { return b == Builtin::ScreenUv || b == Builtin::FragDepth; }
 bool isUniformBuiltin(Builtin b) {
   return b == Builtin::Time || b == Builtin::CameraPosition || b == Builtin::CameraNearFar || b == Builtin::View ||
-         b == Builtin::Projection;
+         b == Builtin::Projection || b == Builtin::SunDirection;
 }
 
 }  // namespace

@@ -22,6 +22,7 @@ inline constexpr const char* kViewportSize = "u_viewport_size";     // vec2, pix
 inline constexpr const char* kCameraNearFar = "u_camera_near_far";  // vec2, near and far planes
 inline constexpr const char* kView = "u_view";                      // mat4, world -> view
 inline constexpr const char* kProjection = "u_projection";          // mat4, view -> clip
+inline constexpr const char* kSunDirection = "u_sun_direction";     // vec3, unit, towards the sun
 
 // Scene textures the runtime binds when the manifest lists the resource (and so the pass
 // that renders it). Declared only by graphs whose nodes read them.

@@ -149,10 +149,9 @@ std::string validateHlsl(const std::string& text, ShaderStage stage, const std::
 }
 
 std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Registry& registry,
-                                                   const std::vector<Target>& targets,
-                                                   const std::vector<CrossTarget>& cross, Diagnostics& diags) {
-  CompileOptions options;
-  options.targets = targets;
+                                                   CompileOptions options, const std::vector<CrossTarget>& cross,
+                                                   Diagnostics& diags) {
+  const auto& targets = options.targets;
   bool vkRequested = std::find(targets.begin(), targets.end(), Target::Vk450) != targets.end();
   if (!cross.empty() && !vkRequested) options.targets.push_back(Target::Vk450);
   auto result = compileGraph(graph, registry, options, diags);
@@ -169,13 +168,29 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
     ShaderStage stage;
     std::vector<uint32_t> words;
   };
-  std::vector<StageSpirv> modules;
-  for (const auto& f : result->files) {
-    if (f.name.rfind(vkPrefix, 0) != 0 || !endsWith(f.name, ".spv")) continue;
-    std::string ext = f.name.substr(vkPrefix.size(), f.name.size() - vkPrefix.size() - 4);
-    for (ShaderStage s : {ShaderStage::Vertex, ShaderStage::TessControl, ShaderStage::TessEvaluation,
-                          ShaderStage::Fragment})
-      if (stageExtension(s) == ext) modules.push_back({s, spirvWords(f.contents)});
+  auto modulesOf = [&](const CompileResult& r) {
+    std::vector<StageSpirv> modules;
+    for (const auto& f : r.files) {
+      if (f.name.rfind(vkPrefix, 0) != 0 || !endsWith(f.name, ".spv")) continue;
+      std::string ext = f.name.substr(vkPrefix.size(), f.name.size() - vkPrefix.size() - 4);
+      for (ShaderStage s : {ShaderStage::Vertex, ShaderStage::TessControl, ShaderStage::TessEvaluation,
+                            ShaderStage::Fragment})
+        if (stageExtension(s) == ext) modules.push_back({s, spirvWords(f.contents)});
+    }
+    return modules;
+  };
+  const std::vector<StageSpirv> modules = modulesOf(*result);
+  // SPIRV-Cross writes no HLSL hull or domain shaders: HLSL gets the graph compiled without
+  // tessellation (the mesh drawn as it is, as es300), and the manifest says so.
+  const bool tessellated = result->manifest.contains("tessellation");
+  std::vector<StageSpirv> untessellated;
+  if (tessellated && std::find(cross.begin(), cross.end(), CrossTarget::Hlsl) != cross.end()) {
+    CompileOptions flat = options;
+    flat.targets = {Target::Vk450};
+    flat.tessellation = false;
+    auto flatResult = compileGraph(graph, registry, flat, diags);
+    if (!flatResult) return std::nullopt;
+    untessellated = modulesOf(*flatResult);
   }
 
   nlohmann::json crossManifest = nlohmann::json::object();
@@ -184,7 +199,8 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
   for (CrossTarget t : cross) {
     nlohmann::json files = nlohmann::json::object();
     nlohmann::json entries = nlohmann::json::object();
-    for (const auto& m : modules) {
+    const bool flat = t == CrossTarget::Hlsl && tessellated;
+    for (const auto& m : flat ? untessellated : modules) {
       std::string name = base + "." + std::string(crossTargetName(t)) + "." + std::string(stageExtension(m.stage));
       std::string error;
       auto shader = crossCompileSpirv(m.words, m.stage, t, error);
@@ -200,8 +216,11 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
       entries[std::string(stageExtension(m.stage))] = shader->entryPoint;
     }
     files["entry_points"] = entries;
-    files["from"] = "vk450 SPIR-V through SPIRV-Cross";
+    files["from"] = flat ? "vk450 SPIR-V compiled without tessellation (SPIRV-Cross writes no HLSL hull or domain "
+                           "shaders), through SPIRV-Cross"
+                         : "vk450 SPIR-V through SPIRV-Cross";
     crossManifest[std::string(crossTargetName(t))] = files;
+    if (tessellated && !flat) result->manifest["tessellation"]["targets"].push_back(std::string(crossTargetName(t)));
   }
   if (!ok) return std::nullopt;
 
@@ -214,7 +233,13 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
   }
   for (auto& f : crossFiles) files.push_back(std::move(f));
   nlohmann::json& manifestTargets = result->manifest["targets"];
-  if (!vkRequested) manifestTargets.erase("vk450");
+  if (!vkRequested) {
+    manifestTargets.erase("vk450");
+    if (result->manifest.contains("tessellation")) {
+      auto& tessTargets = result->manifest["tessellation"]["targets"];
+      tessTargets.erase(std::remove(tessTargets.begin(), tessTargets.end(), nlohmann::json("vk450")), tessTargets.end());
+    }
+  }
   for (auto& [name, entry] : crossManifest.items()) manifestTargets[name] = entry;
   files.push_back({base + ".manifest.json", result->manifest.dump(2) + "\n"});
   result->files = std::move(files);

@@ -34,8 +34,8 @@ std::string validateHlsl(const std::string& text, ShaderStage stage, const std::
 // asked for (its SPIR-V is the input) but its files are kept only when `targets` names it.
 // The manifest's "targets" gains "msl" / "hlsl": the file per stage and the entry points.
 std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Registry& registry,
-                                                   const std::vector<Target>& targets,
-                                                   const std::vector<CrossTarget>& cross, Diagnostics& diags);
+                                                   CompileOptions options, const std::vector<CrossTarget>& cross,
+                                                   Diagnostics& diags);
 
 // Little-endian SPIR-V bytes (as in OutputFile::contents) -> words.
 std::vector<uint32_t> spirvWords(const std::string& bytes);

@@ -24,6 +24,12 @@ const Parameter* Graph::findParameter(std::string_view name) const {
   return nullptr;
 }
 
+const Preset* Graph::findPreset(std::string_view name) const {
+  for (const auto& p : presets)
+    if (p.name == name) return &p;
+  return nullptr;
+}
+
 bool isIdentifier(std::string_view s) {
   if (s.empty() || s.size() > 64) return false;
   auto alpha = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };

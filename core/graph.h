@@ -63,6 +63,21 @@ struct Parameter {
   SourceRef where;          // the parameter's key
 };
 
+// A named set of parameter values (weather presets such as calm | moderate | choppy):
+// `--preset NAME` makes them the parameters' defaults before compiling, so static
+// parameters fold and uniform ones start there.
+struct PresetValue {
+  std::string parameter;
+  std::vector<double> value;  // componentCount of the parameter's type
+  SourceRef where;            // the value's position
+};
+
+struct Preset {
+  std::string name;
+  std::vector<PresetValue> values;  // file order
+  SourceRef where;                  // the preset's key
+};
+
 enum class OutputSlot { VertexPosition, VertexNormal, FragmentColor, FragmentAlpha };
 std::string_view outputSlotName(OutputSlot slot);  // "vertex.position", ...
 
@@ -79,11 +94,13 @@ struct Graph {
   std::string name;
   std::string description;
   std::vector<Parameter> parameters;  // file order
+  std::vector<Preset> presets;        // file order
   std::vector<Node> nodes;            // file order
   std::vector<GraphOutput> outputs;   // saved in OutputSlot order
 
   const Node* findNode(std::string_view id) const;
   const Parameter* findParameter(std::string_view name) const;
+  const Preset* findPreset(std::string_view name) const;
 };
 
 // True for [A-Za-z_][A-Za-z0-9_]*, at most 64 characters.

@@ -14,6 +14,7 @@
 #include "core/graph_io.h"
 #include "core/json_source.h"
 #include "core/number_format.h"
+#include "core/suggest.h"
 
 namespace wg {
 
@@ -75,7 +76,7 @@ class Loader {
     checkLimits(root, pointer);
 
     checkKeys(root, "", "the graph",
-              {"$schema", "version", "name", "description", "parameters", "nodes", "outputs"});
+              {"$schema", "version", "name", "description", "parameters", "presets", "nodes", "outputs"});
 
     if (!loadVersion(root, g)) return std::nullopt;  // a newer format: the rest is moot
 
@@ -95,6 +96,8 @@ class Loader {
 
     if (auto* v = field(root, "", "parameters", json::value_t::object, "'parameters'"))
       loadParameters(*v, g);
+    if (auto* v = field(root, "", "presets", json::value_t::object, "'presets'"))
+      loadPresets(*v, g);
 
     if (!root.contains("nodes")) {
       missing("", "the graph is missing \"nodes\"");
@@ -263,30 +266,14 @@ class Loader {
         }
       }
       ok = typeOk;
-      const int n = typeOk ? componentCount(p.type) : 0;
 
       if (!pv.contains("default")) {
         missing(ptr, what + " is missing \"default\"");
         ok = false;
       } else if (typeOk) {
-        const json& d = pv.at("default");
-        bool shapeOk = false;
-        if (n == 1 && d.is_number()) {
-          p.defaultValue = {d.get<double>()};
-          shapeOk = true;
-        } else if (n > 1 && d.is_array() && static_cast<int>(d.size()) == n) {
-          shapeOk = true;
-          for (const auto& e : d) shapeOk = shapeOk && e.is_number();
-          if (shapeOk)
-            for (const auto& e : d) p.defaultValue.push_back(e.get<double>());
-        }
-        if (!shapeOk) {
-          std::string shape = n == 1 ? "a number" : "an array of " + std::to_string(n) + " numbers";
-          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/default"),
-                       "the default of " + what + " must be " + shape + " for " +
-                           std::string(typeName(p.type)) + ", found " + describeValue(d));
-          ok = false;
-        }
+        auto value = readValue(p, pv.at("default"), ptr + "/default", "the default of " + what);
+        if (value) p.defaultValue = std::move(*value);
+        else ok = false;
       }
 
       if (auto* v = field(pv, ptr, "min", json::value_t::number_float, "'min' of " + what))
@@ -301,21 +288,8 @@ class Loader {
         diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/min"),
                      "the range of " + what + " is empty: min " + formatNumber(*p.min) +
                          " is greater than max " + formatNumber(*p.max));
-      } else if (ok && (p.min || p.max)) {
-        for (std::size_t i = 0; i < p.defaultValue.size(); ++i) {
-          double x = p.defaultValue[i];
-          if ((p.min && x < *p.min) || (p.max && x > *p.max)) {
-            std::string range = "[" + (p.min ? formatNumber(*p.min) : std::string("-inf")) + ", " +
-                                (p.max ? formatNumber(*p.max) : std::string("inf")) + "]";
-            std::string comp = p.defaultValue.size() > 1
-                                   ? " (component " + std::to_string(i) + ")"
-                                   : std::string();
-            diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/default"),
-                         "the default of " + what + " " + formatNumber(x) + comp +
-                             " lies outside its range " + range);
-            break;
-          }
-        }
+      } else if (ok) {
+        checkRange(p, p.defaultValue, ptr + "/default", "the default of " + what);
       }
 
       if (auto* v = field(pv, ptr, "hint", json::value_t::string, "'hint' of " + what)) {
@@ -336,6 +310,86 @@ class Loader {
         p.isStatic = v->get<bool>();
 
       g.parameters.push_back(std::move(p));
+    }
+  }
+
+  // A value for parameter `p` written at `valuePtr`: a number for float, an array of n
+  // numbers for vecN; WG011 naming `label` otherwise.
+  std::optional<std::vector<double>> readValue(const Parameter& p, const json& d, const std::string& valuePtr,
+                                               const std::string& label) {
+    const int n = componentCount(p.type);
+    std::vector<double> xs;
+    bool shapeOk = false;
+    if (n == 1 && d.is_number()) {
+      xs = {d.get<double>()};
+      shapeOk = true;
+    } else if (n > 1 && d.is_array() && static_cast<int>(d.size()) == n) {
+      shapeOk = true;
+      for (const auto& e : d) shapeOk = shapeOk && e.is_number();
+      if (shapeOk)
+        for (const auto& e : d) xs.push_back(e.get<double>());
+    }
+    if (shapeOk) return xs;
+    std::string shape = n == 1 ? "a number" : "an array of " + std::to_string(n) + " numbers";
+    diags_.error(DiagCode::InvalidParameter, js_.value(valuePtr),
+                 label + " must be " + shape + " for " + std::string(typeName(p.type)) + ", found " +
+                     describeValue(d));
+    return std::nullopt;
+  }
+
+  // WG011 when a component of `xs` lies outside the parameter's [min, max].
+  void checkRange(const Parameter& p, const std::vector<double>& xs, const std::string& valuePtr,
+                  const std::string& label) {
+    if (!p.min && !p.max) return;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+      double x = xs[i];
+      if ((p.min && x < *p.min) || (p.max && x > *p.max)) {
+        std::string range = "[" + (p.min ? formatNumber(*p.min) : std::string("-inf")) + ", " +
+                            (p.max ? formatNumber(*p.max) : std::string("inf")) + "]";
+        std::string comp = xs.size() > 1 ? " (component " + std::to_string(i) + ")" : std::string();
+        diags_.error(DiagCode::InvalidParameter, js_.value(valuePtr),
+                     label + " " + formatNumber(x) + comp + " lies outside its range " + range);
+        return;
+      }
+    }
+  }
+
+  // "presets": {"calm": {"amplitude": 0.1, ...}, ...}: each value names a declared
+  // parameter and fits its type and range (checked after the parameters are loaded).
+  void loadPresets(const json& presets, Graph& g) {
+    std::vector<std::string> paramNames;
+    for (const auto& p : g.parameters) paramNames.push_back(p.name);
+    for (const auto& name : members(presets, "/presets")) {
+      const std::string ptr = "/presets/" + jsonPointerEscape(name);
+      const json& pv = presets.at(name);
+      Preset preset;
+      preset.name = name;
+      preset.where = js_.key(ptr);
+      if (!isIdentifier(name))
+        diags_.error(DiagCode::InvalidIdentifier, preset.where,
+                     "preset name '" + name + "' is not an identifier " + kIdentifierRule);
+      if (!pv.is_object()) {
+        diags_.error(DiagCode::WrongJsonType, js_.value(ptr),
+                     "preset '" + name + "' must be an object of parameter values, found " + jsonTypeName(pv));
+        continue;
+      }
+      for (const auto& param : members(pv, ptr)) {
+        const std::string vptr = ptr + "/" + jsonPointerEscape(param);
+        const Parameter* p = g.findParameter(param);
+        if (!p) {
+          diags_.error(DiagCode::UnknownParameter, js_.key(vptr),
+                       "preset '" + name + "' sets parameter '" + param + "', which is not declared" +
+                           didYouMean(param, paramNames));
+          continue;
+        }
+        if (p->defaultValue.empty()) continue;  // the parameter itself is broken (reported)
+        const std::string label = "the value of '" + param + "' in preset '" + name + "'";
+        auto value = readValue(*p, pv.at(param), vptr, label);
+        if (!value) continue;
+        checkRange(*p, *value, vptr, label);
+        preset.values.push_back({param, std::move(*value), js_.value(vptr)});
+      }
+      g.presets.push_back(std::move(preset));
     }
   }
 

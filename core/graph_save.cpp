@@ -143,6 +143,16 @@ std::string parameterText(const Parameter& p, int level) {
   return out;
 }
 
+// A preset on one line per parameter, in file order (the author's grouping).
+std::string presetText(const Preset& preset, int level) {
+  std::string out;
+  ObjectWriter w(out, level);
+  for (const auto& v : preset.values)
+    w.member(v.parameter, v.value.size() == 1 ? formatNumber(v.value[0]) : numberArray(v.value));
+  w.finish();
+  return out;
+}
+
 std::string nodeText(const Node& n, int level) {
   std::string out;
   ObjectWriter w(out, level);
@@ -228,6 +238,13 @@ std::string saveGraph(const Graph& graph) {
     for (const auto& p : graph.parameters) pw.member(p.name, parameterText(p, 2));
     pw.finish();
     w.member("parameters", std::move(text));
+  }
+  if (!graph.presets.empty()) {
+    std::string text;
+    ObjectWriter pw(text, 1);
+    for (const auto& preset : graph.presets) pw.member(preset.name, presetText(preset, 2));
+    pw.finish();
+    w.member("presets", std::move(text));
   }
   {
     std::string text;

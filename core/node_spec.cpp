@@ -19,6 +19,7 @@ std::string_view builtinName(Builtin b) {
     case Builtin::CameraNearFar: return "camera_near_far";
     case Builtin::View: return "view";
     case Builtin::Projection: return "projection";
+    case Builtin::SunDirection: return "sun_direction";
   }
   return "?";
 }
@@ -49,6 +50,7 @@ const Value& EvalEnvironment::builtin(Builtin b) const {
     case Builtin::CameraNearFar: return cameraNearFar;
     case Builtin::View: return view;
     case Builtin::Projection: return projection;
+    case Builtin::SunDirection: return sunDirection;
   }
   return time;
 }

@@ -30,6 +30,7 @@ enum class Builtin {
   CameraNearFar,   // vec2 uniform: the projection's near and far planes (far may be inf)
   View,            // mat4 uniform: world -> view
   Projection,      // mat4 uniform: view -> clip
+  SunDirection,    // vec3 uniform: unit vector towards the sun (the scene's sun)
 };
 std::string_view builtinName(Builtin b);  // "uv", "world_position", ...
 Type builtinType(Builtin b);
@@ -137,6 +138,7 @@ struct EvalEnvironment {
   Value cameraNearFar = Value::vector({0.1, 100});
   Value view = Value::ofType(Type::Mat4);        // column-major, as GLSL
   Value projection = Value::ofType(Type::Mat4);  // column-major, as GLSL
+  Value sunDirection = Value::vector({0.6666666666666666, 0.6666666666666666, -0.3333333333333333});
   // Scene resources as the case sees them at this pixel (what a texture fetch returns).
   Value sceneDepth = Value::scalar(1.0);  // depth-buffer value behind the water (1 = sky)
   Value sceneColor = Value::vector({0, 0, 0});

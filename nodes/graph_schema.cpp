@@ -257,6 +257,13 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
                       {"type", "object"},
                       {"propertyNames", defRef("identifier")},
                       {"additionalProperties", defRef("parameter")}}},
+      {"presets", {{"description", "preset name -> {parameter: value}: chosen with --preset, its values become the "
+                                   "parameter defaults"},
+                   {"type", "object"},
+                   {"propertyNames", defRef("identifier")},
+                   {"additionalProperties", {{"type", "object"},
+                                             {"propertyNames", defRef("identifier")},
+                                             {"additionalProperties", {{"anyOf", {defRef("number"), vectorLiteral(0)}}}}}}}},
       {"nodes", {{"type", "array"}, {"items", defRef("node")}}},
       {"outputs", defRef("outputs")}};
   defs["outputs"] = outputsSchema();

@@ -60,6 +60,12 @@ NodeSpec cameraPositionNode() {
 NodeSpec timeNode() {
   return uniformInput("time", Builtin::Time, "Time in seconds.", "out = u_time");
 }
+NodeSpec sunDirectionNode() {
+  return uniformInput("sun_direction", Builtin::SunDirection,
+                      "The unit vector towards the scene's sun, as the runtime lights the scene (render --sun-azimuth, "
+                      "--sun-elevation), so the water's highlights match the sky.",
+                      "out = u_sun_direction");
+}
 NodeSpec screenUvNode() {
   return builtinInput("screen_uv", Builtin::ScreenUv,
                       "The fragment's position on screen, (0,0) bottom left to (1,1) top right.",

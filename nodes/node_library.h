@@ -13,6 +13,7 @@ NodeSpec viewDirectionNode();
 NodeSpec cameraPositionNode();
 NodeSpec timeNode();
 NodeSpec screenUvNode();
+NodeSpec sunDirectionNode();
 // math.cpp
 NodeSpec addNode();
 NodeSpec subNode();
@@ -98,6 +99,7 @@ NodeSpec shoreWavesNode();
 NodeSpec sceneDepthNode();
 NodeSpec sceneColorNode();
 NodeSpec planarReflectionNode();
+NodeSpec planarRefractionNode();
 NodeSpec cubemapReflectionNode();
 NodeSpec ssrNode();
 // underwater.cpp

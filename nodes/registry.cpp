@@ -11,7 +11,7 @@ const Registry& defaultRegistry() {
     using namespace nodes;
     for (auto make : {
              // inputs
-             uvNode, worldPositionNode, normalNode, viewDirectionNode, cameraPositionNode, timeNode, screenUvNode,
+             uvNode, worldPositionNode, normalNode, viewDirectionNode, cameraPositionNode, timeNode, screenUvNode, sunDirectionNode,
              // math
              addNode, subNode, mulNode, divNode, mixNode, clampNode, saturateNode, smoothstepNode, powNode, dotNode,
              crossNode, normalizeNode, lengthNode, sinNode, cosNode, absNode, minNode, maxNode, swizzleNode,
@@ -54,7 +54,7 @@ const Registry& defaultRegistry() {
              // foam
              edgeFoamNode, crestFoamNode, coastalFoamNode, shoreWavesNode,
              // screen space
-             sceneDepthNode, sceneColorNode, planarReflectionNode, cubemapReflectionNode, ssrNode, underwaterNode,
+             sceneDepthNode, sceneColorNode, planarReflectionNode, planarRefractionNode, cubemapReflectionNode, ssrNode, underwaterNode,
          })
       r.add(make());
     return r;

@@ -10,6 +10,7 @@
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
+#include "nodes/screen_lookup.h"
 #include "nodes/screen_space_reference.h"
 #include "nodes/shading_reference.h"
 
@@ -87,25 +88,9 @@ NodeSpec sceneColorNode() {
   s.seed = "003 (refraction from the grabbed screen, GrabPass); 002 (screen-space distorted refraction); 000 "
            "(distortion (dudv * 2 - 1) * 0.03)";
   s.cost = "one texture fetch + 4 ALU; runs the scene_color_copy pass (a blit of the frame, 4 bytes/pixel RGBA8)";
-  s.inputs = {ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv, kScreenUvDoc),
-              ports::fixed("distortion", Type::Vec2, Value::vector({0, 0}),
-                           "offset in screen units (e.g. dudv_distortion.offset or normal.xz * 0.03)")};
-  s.outputs = {ports::fixed("color", Type::Vec3, "scene colour seen through the water"),
-               ports::fixed("uv", Type::Vec2, "the clamped look-up position, in [0, 1]")};
-  s.stages = kFragmentStage;
-  s.isSource = true;
-  s.resources = {"scene_color"};
-  s.emit = [](EmitContext& ctx) {
-    std::string uv = ctx.temporary(
-        Type::Vec2, EmitContext::call("wg_scene_color_uv", {ctx.input("screen_uv"), ctx.input("distortion")}));
-    ctx.output(0, "texture(" + ctx.sceneTexture("scene_color") + ", " + uv + ").rgb");
-    ctx.output(1, uv);
-  };
-  s.eval = [](EvalContext& ctx) {
-    ctx.output(0, ctx.environment().sceneColor);
-    ctx.output(1, sceneColorUvReference(ctx.input("screen_uv"), ctx.input("distortion")));
-  };
-  s.tolerance = 1e-6;
+  makeScreenLookup(s, "scene_color", &EvalEnvironment::sceneColor,
+                   "offset in screen units (e.g. dudv_distortion.offset or normal.xz * 0.03)",
+                   "scene colour seen through the water");
   s.hardCases = {
       {"distortion pushing far off screen", {{"distortion", Value::vector({5, -5})}}, {}, "uv clamped to (1, 0)", 0, 1,
        "uv"},

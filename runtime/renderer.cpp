@@ -10,6 +10,7 @@
 
 #include "codegen/shader_interface.h"
 #include "nodes/texture_source.h"
+#include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
@@ -255,6 +256,10 @@ struct Renderer::Impl {
           else if (b == "time") v = {settings.scene.time};
           else if (b == "viewport_size") v = {static_cast<float>(settings.width), static_cast<float>(settings.height)};
           else if (b == "camera_near_far") v = {camera.nearPlane, camera.farPlane};
+          else if (b == "sun_direction") {
+            glm::vec3 sun = sunDirection(settings.scene);
+            v = {sun.x, sun.y, sun.z};
+          }
           else if (b == "time_phase") {
             // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
             double omega = u.value("angular_frequency", 0.0);
@@ -340,6 +345,7 @@ struct Renderer::Impl {
   // The sky lies at the far plane (depth 1): drawn after the opaque scene with LEQUAL and
   // no depth writes, it shades only the pixels nothing else covered.
   void drawSky(const glm::mat4& vp) {
+    if (!settings.scene.drawScene) return;
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
@@ -354,6 +360,7 @@ struct Renderer::Impl {
 
   // Draws the opaque scene keeping the side where dot(plane, (p, 1)) >= 0.
   void drawOpaque(const glm::mat4& vp, const glm::vec4& plane) {
+    if (!settings.scene.drawScene) return;
     glUseProgram(opaque.id());
     glUniformMatrix4fv(opaqueVp, 1, GL_FALSE, glm::value_ptr(vp));
     glUniform4fv(opaqueClip, 1, glm::value_ptr(plane));
@@ -383,6 +390,8 @@ struct Renderer::Impl {
     for (int f = 0; f < 6; ++f) {
       glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f),
                              t->color.id(), 0);
+      glClearColor(0, 0, 0, 1);  // what stays there without the scene (drawScene false)
+      glClear(GL_COLOR_BUFFER_BIT);
       drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
     }
   }
@@ -416,8 +425,18 @@ struct Renderer::Impl {
           // The camera mirrored about y = 0; only what is on the camera's side of the
           // water is reflected.
           bindTarget(*find("reflection"), true);
-          glm::mat4 mirrored = viewProjection * glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
-          drawOpaque(mirrored, glm::vec4(0, cameraSide(), 0, 0));
+          const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
+          const glm::mat4 mirrored = viewProjection * mirror;
+          const glm::vec4 waterPlane(0, cameraSide(), 0, 0);
+          if (settings.obliqueReflection) {
+            // The mirrored camera sits on the far side of the water plane, as the
+            // oblique projection requires; the sky keeps the plain matrix (it only
+            // reconstructs view directions from it).
+            glm::mat4 oblique = obliqueProjection(projection, planeToEye(view * mirror, waterPlane));
+            drawOpaque(oblique * view * mirror, noClip);
+          } else {
+            drawOpaque(mirrored, waterPlane);
+          }
           drawSky(mirrored);
           break;
         }

@@ -128,11 +128,12 @@ void addRock(Mesh& m, glm::vec3 centre, float radius, float flatten, uint32_t se
 
 }  // namespace
 
-glm::mat4 Camera::view() const {
+glm::vec3 Camera::up() const {
   glm::vec3 dir = glm::normalize(target - position);
-  glm::vec3 up = std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
-  return glm::lookAt(position, target, up);
+  return std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
 }
+
+glm::mat4 Camera::view() const { return glm::lookAt(position, target, up()); }
 
 glm::mat4 Camera::projection(float aspect) const {
   return glm::perspective(glm::radians(fovYDegrees), aspect, nearPlane, farPlane);

@@ -20,6 +20,7 @@ struct Camera {
   float fovYDegrees = 55.0f;
   float nearPlane = 0.1f;
   float farPlane = 200.0f;
+  glm::vec3 up() const;  // +y, or -z when looking (nearly) straight up or down
   glm::mat4 view() const;
   glm::mat4 projection(float aspect) const;
 };
@@ -32,6 +33,10 @@ struct SceneOptions {
   float time = 3.5f;              // seconds, u_time
   float sunAzimuthDegrees = 110;  // from +x towards +z
   float sunElevationDegrees = 30; // above the horizon
+  // false: none of the built-in scene (sky, floor, shore, pillars, rocks) is drawn in any
+  // pass; the frame and every scene target keep their clear colour, opaque black. Only the
+  // water is drawn: for comparing the water alone with another renderer (clients/three).
+  bool drawScene = true;
 };
 glm::vec3 sunDirection(const SceneOptions& o);  // unit vector towards the sun
 

@@ -11,6 +11,7 @@ packages=(
   libglfw3-dev libimgui-dev libstb-dev libcli11-dev libglm-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev xvfb xauth
   python3-jsonschema  # tests/ecosystem: a real JSON Schema validator for docs/watergraph.schema.json
+  chromium  # tests/ecosystem: renders clients/three/ (three.js, WebGL 2) headless for the comparison
 )
 
 missing=()

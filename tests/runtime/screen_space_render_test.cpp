@@ -64,7 +64,7 @@ std::vector<NodeCase> nodeCases() {
            {"id": "s", "type": "ssr", "inputs": {"fallback": "e.color"}})", "s.color"),
        {PassKind::DepthPrepass, PassKind::SceneColorCopy, PassKind::EnvironmentCubemap},
        {"scene_depth", "scene_color", "environment"}},
-      {"underwater", test::readFile(test::sourcePath("graphs/underwater.json")),
+      {"underwater", test::readFile(test::sourcePath("graphs/deferred_underwater.json")),
        {PassKind::DepthPrepass, PassKind::SceneColorCopy, PassKind::DeferredWater, PassKind::EnvironmentCubemap},
        {"scene_depth", "scene_color", "environment", "water_normal", "water_position"}},
   };
@@ -129,9 +129,9 @@ TEST_P(SceneNodes, PlanarReflectionNeedsNoFlipWithTheRuntimesPass) {
 // Which of seed 001's cases the underwater node took per pixel, from a float render of
 // case / 5.
 std::set<int> casesSeen(Target target, const std::string& camera) {
-  std::string g = test::readFile(test::sourcePath("graphs/underwater.json"));
+  std::string g = test::readFile(test::sourcePath("graphs/deferred_underwater.json"));
   auto j = nlohmann::json::parse(g);
-  j["nodes"].push_back({{"id", "which"}, {"type", "div"}, {"inputs", {{"a", "uw.case"}, {"b", 5}}}});
+  j["nodes"].push_back({{"id", "which"}, {"type", "div"}, {"inputs", {{"a", "water.case"}, {"b", 5}}}});
   j["outputs"]["fragment"]["color"] = "which.out";
   RenderSettings s = test::smallSettings();
   s.camera = camera;
@@ -148,7 +148,7 @@ TEST_P(SceneNodes, UnderwaterReachesItsCasesFromAboveAndBelow) {
 }
 
 TEST_P(SceneNodes, UnderwaterRendersFiniteFromEveryCamera) {
-  CompileResult r = compileInline(test::readFile(test::sourcePath("graphs/underwater.json")));
+  CompileResult r = compileInline(test::readFile(test::sourcePath("graphs/deferred_underwater.json")));
   for (const std::string& camera : cameraPresetNames()) {
     SCOPED_TRACE(camera);
     RenderSettings s = test::smallSettings();

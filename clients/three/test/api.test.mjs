@@ -1,0 +1,66 @@
+// Checks of the client's API that need no browser (node --test). WG_THREE_FIXTURES names
+// a folder with three_environment.{manifest.json,es300.vert,es300.frag} compiled from
+// tests/ecosystem/data/three_environment.json; tests/ecosystem/three_client_test.cpp
+// compiles it and runs this file.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import path from 'node:path';
+import * as THREE from 'three';
+import { WaterGraph, WaterGraphError, timePhase, createWaterGridGeometry } from '../watergraph-three.js';
+
+const dir = process.env.WG_THREE_FIXTURES;
+const graph = () => {
+  assert.ok(dir, 'WG_THREE_FIXTURES is not set');
+  const read = (f) => readFileSync(path.join(dir, f), 'utf8');
+  return {
+    manifest: JSON.parse(read('three_environment.manifest.json')),
+    vertexShader: read('three_environment.es300.vert'),
+    fragmentShader: read('three_environment.es300.frag'),
+  };
+};
+
+test('a pass the client does not render is an error naming it', () => {
+  assert.throws(() => new WaterGraph(graph()), (e) => e instanceof WaterGraphError &&
+    e.message.includes("graph 'three_environment' needs render passes the three.js client does not provide: " +
+      'environment_cubemap (resource environment: pass it in options.resources)'));
+});
+
+test('a resource the application renders is bound, if its sampler type fits', () => {
+  const cube = new THREE.CubeTexture();
+  const water = new WaterGraph({ ...graph(), resources: { environment: cube } });
+  assert.equal(water.uniforms.u_environment.value, cube);
+  assert.equal(water.material.glslVersion, THREE.GLSL3);
+  assert.ok(!water.material.vertexShader.includes('#version'), 'the #version line is left to three.js');
+  assert.throws(() => new WaterGraph({ ...graph(), resources: { environment: new THREE.Texture() } }),
+    /u_environment is a samplerCube, but the texture given for it is not a cube texture/);
+});
+
+test('update() sets the camera uniforms the graph declares', () => {
+  const water = new WaterGraph({ ...graph(), resources: { environment: new THREE.CubeTexture() } });
+  const camera = new THREE.PerspectiveCamera(55, 16 / 9, 0.1, 200);
+  camera.position.set(14, 7, -12);
+  camera.lookAt(-4, -1.5, 4);
+  water.update(3.5, camera);
+  assert.deepEqual(water.uniforms.u_camera_position.value.toArray(), [14, 7, -12]);
+  const vp = new THREE.Matrix4().multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse);
+  assert.deepEqual(water.uniforms.u_view_projection.value.toArray(), vp.toArray());
+});
+
+test('time phases are mod(omega t, 2 pi) in double precision, also at large times', () => {
+  assert.equal(timePhase(2, 3.5), 7 - 2 * Math.PI);
+  const p = timePhase(1.3, 1e7);
+  assert.ok(p >= 0 && p < 2 * Math.PI);
+  assert.ok(Math.abs(p - ((1.3 * 1e7) % (2 * Math.PI))) < 1e-6);
+  assert.equal(timePhase(-1, 1), 2 * Math.PI - 1);
+});
+
+test('the water grid is the runtime one: 40 m across, uv 0..1, (n+1)^2 vertices', () => {
+  const g = createWaterGridGeometry(4);
+  assert.equal(g.getAttribute('a_position').count, 25);
+  assert.equal(g.index.count, 4 * 4 * 6);
+  assert.deepEqual(Array.from(g.getAttribute('a_position').array.slice(0, 3)), [-20, 0, -20]);
+  assert.deepEqual(Array.from(g.getAttribute('a_position').array.slice(-3)), [20, 0, 20]);
+  assert.deepEqual(Array.from(g.getAttribute('a_uv').array.slice(-2)), [1, 1]);
+  assert.deepEqual(Array.from(g.index.array.slice(0, 6)), [0, 5, 1, 1, 5, 6]);
+});

@@ -1,0 +1,322 @@
+// watergraph's es300 output in three.js: a RawShaderMaterial built from a compiled graph's
+// shaders and manifest, with the uniforms, textures and grid mesh the runtime
+// (runtime/renderer.cpp) gives the same shaders, so both draw the same pixels.
+// See README.md beside this file for the API and what is not supported.
+import * as THREE from 'three';
+
+// Thrown for a manifest this client cannot run (a pass it cannot provide, an unknown
+// builtin uniform or type) and for files that cannot be loaded.
+export class WaterGraphError extends Error {
+  constructor(message) {
+    super(message);
+    this.name = 'WaterGraphError';
+  }
+}
+
+const TWO_PI = 6.283185307179586;
+
+// mod(omega * t, 2 pi) in double precision, as the runtime computes time_phase uniforms:
+// the shader then adds a phase in [0, 2 pi) instead of multiplying a huge time in float.
+export function timePhase(angularFrequency, time) {
+  const phase = angularFrequency * time;
+  return phase - TWO_PI * Math.floor(phase / TWO_PI);
+}
+
+// The scene resources a manifest may list, the pass that renders each, and the sampler it
+// is bound to (codegen/manifest.cpp, codegen/shader_interface.h). The client renders none
+// of these passes; an application that renders one itself passes the texture in
+// options.resources. `underwater` (deferred water) also changes how the water is drawn (a
+// full-screen pass over a G-buffer), which this client does not do.
+const RESOURCE_PASSES = {
+  scene_depth: 'depth_prepass',
+  scene_color: 'scene_color_copy',
+  planar_reflection: 'planar_reflection',
+  refraction: 'refraction',
+  environment: 'environment_cubemap',
+  underwater: 'deferred_water',
+};
+const NEVER_SUPPORTED = new Set(['underwater']);
+
+// The water grid of runtime/scene.cpp (buildWaterGrid): quadsPerSide^2 quads over a square
+// of 2 * halfSize metres at y = 0, centred on the origin, normal +y, uv (0,0) at
+// (-halfSize, -halfSize) and (1,1) at (halfSize, halfSize), the same triangle order.
+// Attributes carry the manifest's names (a_position, a_normal, a_uv).
+export function createWaterGridGeometry(quadsPerSide = 128, halfSize = 20) {
+  const n = Math.max(Math.floor(quadsPerSide), 1);
+  const count = (n + 1) * (n + 1);
+  const position = new Float32Array(count * 3);
+  const normal = new Float32Array(count * 3);
+  const uv = new Float32Array(count * 2);
+  for (let j = 0, k = 0; j <= n; ++j) {
+    for (let i = 0; i <= n; ++i, ++k) {
+      // Computed in float32 steps like the C++ (u = i / n, x = -h + 2h * u).
+      const u = Math.fround(i / n), v = Math.fround(j / n);
+      position[3 * k] = Math.fround(-halfSize + Math.fround(2 * halfSize * u));
+      position[3 * k + 2] = Math.fround(-halfSize + Math.fround(2 * halfSize * v));
+      normal[3 * k + 1] = 1;
+      uv[2 * k] = u;
+      uv[2 * k + 1] = v;
+    }
+  }
+  const index = new Uint32Array(n * n * 6);
+  for (let j = 0, k = 0; j < n; ++j) {
+    for (let i = 0; i < n; ++i) {
+      const a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+      index.set([a, c, b, b, c, d], k);
+      k += 6;
+    }
+  }
+  const g = new THREE.BufferGeometry();
+  g.setAttribute('a_position', new THREE.BufferAttribute(position, 3));
+  g.setAttribute('a_normal', new THREE.BufferAttribute(normal, 3));
+  g.setAttribute('a_uv', new THREE.BufferAttribute(uv, 2));
+  g.setIndex(new THREE.BufferAttribute(index, 1));
+  // three.js culls by bounding sphere; displacement moves vertices, so make it generous.
+  g.boundingSphere = new THREE.Sphere(new THREE.Vector3(), halfSize * 2);
+  return g;
+}
+
+// Attribute name -> item size the grid provides (codegen/shader_interface.h locations).
+const GRID_ATTRIBUTES = { a_position: [0, 3], a_normal: [1, 3], a_uv: [2, 2] };
+
+function checkPasses(manifest, resources) {
+  const passes = manifest.passes;
+  if (!Array.isArray(passes) || !passes.includes('water_surface'))
+    throw new WaterGraphError(`graph '${manifest.graph}': the manifest has no "passes" list with water_surface`);
+  const missing = [];
+  for (const resource of manifest.resources ?? []) {
+    const pass = RESOURCE_PASSES[resource];
+    if (!pass) missing.push(`${resource} (an unknown scene resource)`);
+    else if (NEVER_SUPPORTED.has(resource)) missing.push(`${pass} (resource ${resource}: deferred water is not supported)`);
+    else if (!resources[resource]) missing.push(`${pass} (resource ${resource}: pass it in options.resources)`);
+  }
+  if (missing.length)
+    throw new WaterGraphError(
+      `graph '${manifest.graph}' needs render passes the three.js client does not provide: ${missing.join('; ')}. ` +
+        'The client draws only the water_surface pass.');
+}
+
+// A parameter's manifest default as a THREE value of its type (raw numbers: no colour
+// management, the runtime uploads the same floats).
+function parameterValue(u) {
+  const d = u.default;
+  const v = typeof d === 'boolean' ? [d ? 1 : 0] : Array.isArray(d) ? d : [d];
+  if (v.some((x) => typeof x !== 'number'))
+    throw new WaterGraphError(`parameter uniform ${u.name} has no numeric "default"`);
+  const need = { float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 }[u.type];
+  if (need === undefined) throw new WaterGraphError(`uniform ${u.name} has a type the client does not know: ${u.type}`);
+  if (v.length !== need) throw new WaterGraphError(`uniform ${u.name} of type ${u.type} got ${v.length} value(s)`);
+  switch (u.type) {
+    case 'vec2': return new THREE.Vector2(...v);
+    case 'vec3': return new THREE.Vector3(...v);
+    case 'vec4': return new THREE.Vector4(...v);
+    case 'mat3': return new THREE.Matrix3().fromArray(v);  // column-major, as GL
+    case 'mat4': return new THREE.Matrix4().fromArray(v);
+    default: return v[0];
+  }
+}
+
+const BUILTIN_INITIAL = {
+  model: () => new THREE.Matrix4(),
+  view_projection: () => new THREE.Matrix4(),
+  view: () => new THREE.Matrix4(),
+  projection: () => new THREE.Matrix4(),
+  camera_position: () => new THREE.Vector3(),
+  time: () => 0,
+  time_phase: () => 0,
+  viewport_size: () => new THREE.Vector2(1, 1),
+  camera_near_far: () => new THREE.Vector2(0.1, 200),
+};
+
+// Removes the shader's own "#version 300 es": three.js puts its #defines first and then
+// needs glslVersion GLSL3 to place the #version line before them.
+function withoutVersionLine(source, what) {
+  const m = /^\s*#version\s+300\s+es[^\n]*\n/.exec(source);
+  if (!m) throw new WaterGraphError(`${what} does not start with "#version 300 es": is it the es300 output?`);
+  return source.slice(m[0].length);
+}
+
+// The water: a RawShaderMaterial with every uniform of the manifest, and update().
+export class WaterGraph {
+  // manifest: the parsed <graph>.manifest.json; vertexShader / fragmentShader: the texts of
+  // <graph>.es300.vert / .frag; textures: sampler name -> THREE.Texture for every manifest
+  // texture with a "source" (loadWaterGraph loads them); resources: scene resource name ->
+  // THREE texture the application renders itself (see RESOURCE_PASSES).
+  constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {} }) {
+    if (!manifest || typeof manifest !== 'object') throw new WaterGraphError('no manifest given');
+    checkPasses(manifest, resources);
+    for (const a of manifest.attributes ?? []) {
+      const want = GRID_ATTRIBUTES[a.name];
+      if (!want || want[0] !== a.location)
+        throw new WaterGraphError(`graph '${manifest.graph}' reads attribute ${a.name} at location ${a.location}, which the water grid does not provide`);
+    }
+    this.manifest = manifest;
+    this.uniforms = {};
+    this.phases = [];  // [uniform name, angular frequency]
+    this.builtins = {};  // builtin -> uniform name
+    for (const u of manifest.uniforms ?? []) {
+      if (!u.name || !u.type) throw new WaterGraphError('a manifest uniform lacks "name" or "type"');
+      if ('parameter' in u) {
+        this.uniforms[u.name] = { value: parameterValue(u) };
+        continue;
+      }
+      const make = BUILTIN_INITIAL[u.builtin];
+      if (!make) throw new WaterGraphError(`uniform ${u.name} asks for builtin '${u.builtin}', which the client does not provide`);
+      this.uniforms[u.name] = { value: make() };
+      if (u.builtin === 'time_phase') this.phases.push([u.name, Number(u.angular_frequency ?? 0)]);
+      else this.builtins[u.builtin] = u.name;
+    }
+    for (const t of manifest.textures ?? []) {
+      let texture;
+      if ('source' in t) {
+        texture = textures[t.name];
+        if (!texture) throw new WaterGraphError(`texture ${t.name} (${t.source}) was not given`);
+      } else if ('resource' in t) {
+        texture = resources[t.resource];  // checkPasses made sure it is there
+      } else {
+        throw new WaterGraphError(`texture ${t.name} has neither a "source" nor a "resource"`);
+      }
+      if ((t.type === 'samplerCube') !== (texture.isCubeTexture === true))
+        throw new WaterGraphError(`texture ${t.name} is a ${t.type}, but the texture given for it is ${texture.isCubeTexture ? '' : 'not '}a cube texture`);
+      this.uniforms[t.name] = { value: texture };
+    }
+    const es300 = manifest.targets?.es300;
+    if (!es300) throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
+    this.material = new THREE.RawShaderMaterial({
+      name: `watergraph ${manifest.graph}`,
+      glslVersion: THREE.GLSL3,
+      vertexShader: withoutVersionLine(vertexShader, es300.vert),
+      fragmentShader: withoutVersionLine(fragmentShader, es300.frag),
+      uniforms: this.uniforms,
+      side: THREE.DoubleSide,  // the runtime draws without face culling
+      // The runtime blends by the water's alpha (src alpha, 1 - src alpha) into an opaque frame.
+      transparent: true,
+      blending: THREE.CustomBlending,
+      blendEquation: THREE.AddEquation,
+      blendSrc: THREE.SrcAlphaFactor,
+      blendDst: THREE.OneMinusSrcAlphaFactor,
+      blendSrcAlpha: THREE.OneFactor,
+      blendDstAlpha: THREE.OneMinusSrcAlphaFactor,
+      depthTest: true,
+      depthWrite: true,
+      depthFunc: THREE.LessEqualDepth,
+    });
+  }
+
+  // A mesh of the water grid (or `geometry`) with this material. Its world matrix becomes
+  // u_model and the renderer's drawing-buffer size u_viewport_size at every draw.
+  createMesh(geometry = createWaterGridGeometry()) {
+    const mesh = new THREE.Mesh(geometry, this.material);
+    mesh.frustumCulled = false;  // displaced waves may leave the flat grid's bounds
+    const size = new THREE.Vector2();
+    mesh.onBeforeRender = (renderer) => {
+      this.setModelMatrix(mesh.matrixWorld);
+      renderer.getDrawingBufferSize(size);
+      this.setViewportSize(size.x, size.y);
+      // three.js skips the upload when the previous draw used the same material: several
+      // meshes sharing it would all get the first one's u_model.
+      this.material.uniformsNeedUpdate = true;
+    };
+    return mesh;
+  }
+
+  // Sets every time and camera uniform the graph declares. `time` in seconds; `camera` a
+  // THREE.PerspectiveCamera (or any camera with near/far) whose matrices are current.
+  update(time, camera) {
+    const set = (builtin, fn) => {
+      const name = this.builtins[builtin];
+      if (name) fn(this.uniforms[name]);
+    };
+    camera.updateMatrixWorld();
+    set('time', (u) => { u.value = time; });
+    for (const [name, omega] of this.phases) this.uniforms[name].value = timePhase(omega, time);
+    set('view', (u) => u.value.copy(camera.matrixWorldInverse));
+    set('projection', (u) => u.value.copy(camera.projectionMatrix));
+    set('view_projection', (u) => u.value.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
+    set('camera_position', (u) => u.value.setFromMatrixPosition(camera.matrixWorld));
+    set('camera_near_far', (u) => u.value.set(camera.near, camera.far));
+  }
+
+  setModelMatrix(matrix) {
+    const name = this.builtins.model;
+    if (name) this.uniforms[name].value.copy(matrix);
+  }
+
+  setViewportSize(width, height) {
+    const name = this.builtins.viewport_size;
+    if (name) this.uniforms[name].value.set(width, height);
+  }
+
+  // Sets a graph parameter by its name in the graph ("deep"), not the uniform's ("p_deep").
+  setParameter(parameter, value) {
+    const u = (this.manifest.uniforms ?? []).find((x) => x.parameter === parameter);
+    if (!u) throw new WaterGraphError(`graph '${this.manifest.graph}' has no parameter '${parameter}' (or it was folded away)`);
+    const slot = this.uniforms[u.name];
+    if (typeof slot.value === 'number') slot.value = Number(value);
+    else if (Array.isArray(value)) slot.value.fromArray(value);
+    else slot.value.copy(value);
+  }
+
+  dispose() {
+    this.material.dispose();
+    for (const t of this.manifest.textures ?? [])
+      if ('source' in t) this.uniforms[t.name]?.value?.dispose();
+  }
+}
+
+async function fetchOk(url, what) {
+  let response;
+  try {
+    response = await fetch(url);
+  } catch (e) {
+    throw new WaterGraphError(`cannot load ${what} from ${url}: ${e.message}`);
+  }
+  if (!response.ok) throw new WaterGraphError(`cannot load ${what} from ${url}: HTTP ${response.status}`);
+  return response;
+}
+
+// A node texture written by `watergraph compile --textures` as <graph>.<sampler>.png, with
+// the sampling the runtime sets up: RGBA8 as stored (no premultiplication, no colour-space
+// conversion), GL_LINEAR, GL_REPEAT, no mipmaps, the picture's bottom row at v = 0.
+export async function loadNodeTexture(url, what = url) {
+  const blob = await (await fetchOk(url, what)).blob();
+  const bitmap = await createImageBitmap(blob, {
+    imageOrientation: 'flipY',
+    premultiplyAlpha: 'none',
+    colorSpaceConversion: 'none',
+  });
+  const t = new THREE.Texture(bitmap);
+  t.flipY = false;  // WebGL ignores it for ImageBitmap; the bitmap is already flipped
+  t.premultiplyAlpha = false;
+  t.colorSpace = THREE.NoColorSpace;
+  t.wrapS = t.wrapT = THREE.RepeatWrapping;
+  t.magFilter = t.minFilter = THREE.LinearFilter;
+  t.generateMipmaps = false;
+  t.needsUpdate = true;
+  return t;
+}
+
+// Loads <graph>.manifest.json from `manifestUrl`, the es300 shaders and the node textures
+// beside it (compile with `--target es300 --textures`), and builds the WaterGraph.
+// options.resources: scene resource textures the application renders (see README.md).
+export async function loadWaterGraph(manifestUrl, { resources = {} } = {}) {
+  const base = new URL(manifestUrl, globalThis.location?.href);
+  const manifest = await (await fetchOk(base, 'the manifest')).json();
+  checkPasses(manifest, resources);  // before fetching anything else
+  const es300 = manifest.targets?.es300;
+  if (!es300?.vert || !es300?.frag)
+    throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
+  const text = async (file) => (await fetchOk(new URL(file, base), file)).text();
+  const [vertexShader, fragmentShader] = await Promise.all([text(es300.vert), text(es300.frag)]);
+  // Files are named after the graph file ("lake.es300.vert" -> "lake"), as the shaders are.
+  const baseName = es300.vert.replace(/\.es300\.vert$/, '');
+  const textures = {};
+  for (const t of manifest.textures ?? []) {
+    if (!('source' in t)) continue;
+    const file = `${baseName}.${t.name}.png`;
+    textures[t.name] = await loadNodeTexture(
+      new URL(file, base),
+      `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``);
+  }
+  return new WaterGraph({ manifest, vertexShader, fragmentShader, textures, resources });
+}

@@ -1,0 +1,23 @@
+#pragma once
+// `compile --textures`: the node textures a graph samples, written beside its shaders as
+// PNG files so that clients without watergraph's C++ (the three.js client, an engine)
+// upload exactly the texels the runtime does. Built-in procedural textures are generated
+// here, by the same code the runtime and the CPU reference use, so there is one source.
+#include <vector>
+
+#include "codegen/compile.h"
+#include "core/diagnostic.h"
+
+namespace wg {
+
+// The file name a texture of the manifest is written under: "<graph>.<sampler>.png",
+// e.g. "waves.t0_foam.png". Documented in clients/three/README.md.
+std::string textureFileName(const std::string& graphName, const std::string& sampler);
+
+// One PNG per manifest texture with a "source" (scene resources have none): rows top to
+// bottom as in any PNG, so the first row of the GL texture (v = 0) is the picture's bottom
+// row, exactly as a PNG source file is read. Errors (WG050) name the node that samples the
+// texture; the returned list is then incomplete and must not be written.
+std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags);
+
+}  // namespace wg

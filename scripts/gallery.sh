@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Renders the gallery (640x360, time 3.5 s, glsl330 on llvmpipe): every example graph from
+# above and from a second camera that shows what it is for, and the top-down graph's
+# weather presets and debug view from the top-down camera. `make demo` writes it to
+# out/gallery/; the README shows the copy in docs/images/.
+#   scripts/gallery.sh [build-dir] [out-dir]      (defaults: build, docs/images)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+wg=${1:-build}/bin/watergraph
+out=${2:-docs/images}
+mkdir -p "$out"
+export MESA_SHADER_CACHE_DISABLE=true
+render() {  # graph camera [preset]
+  local graph=$1 camera=$2 preset=${3:-}
+  local name=$graph-$camera${preset:+-$preset}
+  "$wg" render "graphs/$graph.json" -o "$out/$name.png" --size 640x360 --camera "$camera" --time 3.5 \
+    ${preset:+--preset "$preset"}
+  echo "wrote $out/$name.png"
+}
+for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river; do
+  render "$g" above
+  render "$g" grazing
+done
+render deferred_underwater above
+render deferred_underwater underwater
+for p in calm moderate choppy debug; do render topdown topdown "$p"; done

@@ -1,0 +1,87 @@
+// --preset on compile, validate and render's shared compile path: the preset's values
+// become parameter defaults (static ones fold), the manifest records it, and a preset the
+// graph does not define is one WG052 line, exit 2, nothing written.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace wg {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct CmdOut {
+  int exit = -1;
+  std::string out, err;
+};
+
+CmdOut wg(const std::string& args) {
+  CmdOut r;
+  r.exit = test::runCommandSplit(test::shellQuote(test::watergraphBinary()) + " " + args, &r.out, &r.err);
+  return r;
+}
+
+std::string topdown() { return test::shellQuote(test::sourcePath("graphs/topdown.json")); }
+
+TEST(CliPreset, PlainCompilesFoamRipplesAndVariationOut) {
+  std::string dir = test::makeTempDir("wg_preset_");
+  CmdOut full = wg("compile " + topdown() + " -o " + dir + "/full --target glsl330");
+  CmdOut plain = wg("compile " + topdown() + " -o " + dir + "/plain --target glsl330 --preset plain");
+  ASSERT_EQ(full.exit, 0) << full.err;
+  ASSERT_EQ(plain.exit, 0) << plain.err;
+  std::string a = test::readFile(dir + "/full/topdown.glsl330.frag");
+  std::string b = test::readFile(dir + "/plain/topdown.glsl330.frag");
+  for (const char* fn : {"wg_crest_foam", "wg_ripple_normals", "wg_color_variation"}) {
+    EXPECT_NE(a.find(fn), std::string::npos) << fn;
+    EXPECT_EQ(b.find(fn), std::string::npos) << fn << " is compiled out by --preset plain";
+  }
+  auto manifest = nlohmann::json::parse(test::readFile(dir + "/plain/topdown.manifest.json"));
+  EXPECT_EQ(manifest.value("preset", ""), "plain");
+  EXPECT_FALSE(nlohmann::json::parse(test::readFile(dir + "/full/topdown.manifest.json")).contains("preset"));
+  fs::remove_all(dir);
+}
+
+TEST(CliPreset, WeatherPresetsChangeTheFoldedConstants) {
+  std::string dir = test::makeTempDir("wg_preset_");
+  std::string calm, choppy;
+  ASSERT_EQ(wg("compile " + topdown() + " -o " + dir + "/calm --target glsl330 --preset calm").exit, 0);
+  ASSERT_EQ(wg("compile " + topdown() + " -o " + dir + "/choppy --target glsl330 --preset choppy").exit, 0);
+  calm = test::readFile(dir + "/calm/topdown.glsl330.frag");
+  choppy = test::readFile(dir + "/choppy/topdown.glsl330.frag");
+  EXPECT_NE(calm, choppy);
+  EXPECT_NE(calm.find("0.9"), std::string::npos) << "calm's foam threshold is a constant";
+  EXPECT_EQ(calm.find("p_foam_threshold"), std::string::npos) << "static: never a uniform";
+  fs::remove_all(dir);
+}
+
+TEST(CliPreset, UnknownPresetIsWG052AndWritesNothing) {
+  std::string dir = test::makeTempDir("wg_preset_");
+  CmdOut r = wg("compile " + topdown() + " -o " + dir + "/out --preset stormy");
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("error: [WG052] graph 'topdown' has no preset 'stormy'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("its presets: calm, moderate, choppy, plain, debug"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out/topdown.manifest.json"));
+  CmdOut v = wg("validate " + topdown() + " --preset clam");
+  EXPECT_EQ(v.exit, 2);
+  EXPECT_NE(v.err.find("did you mean 'calm'?"), std::string::npos) << v.err;
+  fs::remove_all(dir);
+}
+
+TEST(CliPreset, EveryPresetOfEveryExampleValidates) {
+  for (const auto& path : test::exampleGraphs()) {
+    auto g = nlohmann::json::parse(test::readFile(path));
+    if (!g.contains("presets")) continue;
+    for (const auto& [name, values] : g["presets"].items()) {
+      SCOPED_TRACE(path + " --preset " + name);
+      CmdOut r = wg("validate " + test::shellQuote(path) + " --preset " + name);
+      EXPECT_EQ(r.exit, 0) << r.err;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace wg

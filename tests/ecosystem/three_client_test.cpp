@@ -1,0 +1,178 @@
+// The three.js client (clients/three/): a graph's es300 output rendered by three.js in
+// headless Chromium (Debian's, driven by playwright-core from npm) must match
+// `watergraph render --target es300 --scene none` of the same graph, camera, size and
+// time — the same shaders on the runtime's OpenGL ES (Mesa llvmpipe). The threshold and
+// the measured PSNR are in docs/ecosystem.md. npm and Chromium missing is a failure, not a
+// skip: CI provides both (scripts/setup.sh installs chromium).
+#ifdef WG_HAVE_RUNTIME
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "eco_support.h"
+#include "nodes/texture_source.h"
+#include "runtime/image.h"
+#include "runtime/scene.h"
+
+namespace wg::eco {
+namespace {
+
+// Both renderers rasterise the same triangles with the same shaders; what differs is
+// float rounding on two software GPUs (llvmpipe, SwiftShader), which pixels exactly on the
+// grid's far edge each covers, and, where a texture is minified without mipmaps, which
+// texel a far pixel lands on. Thresholds sit about 3.5 dB under the measured figures; a
+// wrong camera or time costs far more (docs/ecosystem.md has the figures).
+constexpr double kLakeMinPsnrDb = 42.0;           // measured 45.5
+constexpr double kTexturedWavesMinPsnrDb = 37.0;  // measured 40.9
+constexpr const char* kSize = "320x180";
+constexpr const char* kTime = "3.5";
+constexpr int kGrid = 128;
+
+std::string clientDir() { return test::sourcePath("clients/three"); }
+
+std::string csv(const glm::vec3& v) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%.9g,%.9g,%.9g", v.x, v.y, v.z);
+  return buf;
+}
+
+std::string num(float f) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", f);
+  return buf;
+}
+
+class ThreeClient : public ::testing::Test {
+ protected:
+  // npm ci once per lock file (cached in clients/three/node_modules); Chromium must exist.
+  static void SetUpTestSuite() {
+    CmdResult r = sh(test::shellQuote(clientDir() + "/test/npm_ci_cached.sh"));
+    npmError_ = r.exit == 0 ? "" : "installing the client's npm packages failed: " + r.err;
+    if (npmError_.empty() && !std::filesystem::exists("/usr/bin/chromium"))
+      npmError_ = "Debian's chromium is not installed (/usr/bin/chromium): run scripts/setup.sh";
+  }
+  void SetUp() override { ASSERT_TRUE(npmError_.empty()) << npmError_; }
+
+  // Renders `graph` (compiled into `dir`) with three.js; returns the node driver's result.
+  CmdResult renderInChromium(const TempDir& dir, const std::string& graphBase, const std::string& camera,
+                             const std::string& png) {
+    auto cam = rt::cameraPreset(camera);
+    EXPECT_TRUE(cam.has_value());
+    std::string cmd = "timeout 50 node " + test::shellQuote(clientDir() + "/test/render_graph.mjs") +
+                      " --dir " + test::shellQuote(dir.path()) + " --manifest " + graphBase + ".manifest.json" +
+                      " --size " + kSize + " --eye=" + csv(cam->position) + " --target=" + csv(cam->target) +
+                      " --up=" + csv(cam->up()) + " --fov " + num(cam->fovYDegrees) + " --near " +
+                      num(cam->nearPlane) + " --far " + num(cam->farPlane) + " --time " + kTime + " --grid " +
+                      std::to_string(kGrid) + " --screenshot " + test::shellQuote(png);
+    return sh(cmd);
+  }
+
+  // Compiles and renders `graph` both ways; returns the PSNR in dB.
+  double comparedPsnr(const std::string& graphRel, const std::string& camera) {
+    TempDir dir("wg_three_");
+    std::string graph = test::sourcePath(graphRel);
+    std::string base = std::filesystem::path(graph).stem().string();
+    CmdResult c = wgRun("compile " + test::shellQuote(graph) + " -o " + test::shellQuote(dir.path()) +
+                        " --target es300 --textures --quiet");
+    EXPECT_EQ(c.exit, 0) << c.err;
+    std::string reference = dir / "runtime.png", three = dir / "three.png";
+    CmdResult r = wgRun("render " + test::shellQuote(graph) + " -o " + test::shellQuote(reference) +
+                        " --target es300 --scene none --size " + kSize + " --camera " + camera + " --time " + kTime +
+                        " --grid " + std::to_string(kGrid));
+    EXPECT_EQ(r.exit, 0) << r.err;
+    CmdResult t = renderInChromium(dir, base, camera, three);
+    EXPECT_EQ(t.exit, 0) << t.out << t.err;
+    if (c.exit || r.exit || t.exit) return 0;
+    rt::Image a = rt::readPng(reference), b = rt::readPng(three);
+    EXPECT_EQ(a.width, b.width);
+    EXPECT_EQ(a.height, b.height);
+    if (a.width != b.width || a.height != b.height) return 0;
+    double psnr = rt::psnrRgb8(a, b);
+    std::printf("three.js vs runtime, %s camera %s %s t=%s: PSNR %.2f dB\n", graphRel.c_str(), camera.c_str(), kSize,
+                kTime, psnr);
+    return psnr;
+  }
+
+  static std::string npmError_;
+};
+std::string ThreeClient::npmError_;
+
+// The candidate graph: parameters, Fresnel from the camera, no textures or time.
+TEST_F(ThreeClient, LakeMatchesTheRuntime) {
+  EXPECT_GE(comparedPsnr("graphs/lake.json", "above"), kLakeMinPsnrDb);
+}
+
+// Gerstner waves in the vertex stage (time_phase uniforms computed in JS), a built-in
+// texture exported by `compile --textures`, u_time: from a grazing camera.
+TEST_F(ThreeClient, TexturedWavesMatchTheRuntime) {
+  EXPECT_GE(comparedPsnr("tests/ecosystem/data/textured_waves.json", "grazing"), kTexturedWavesMinPsnrDb);
+}
+
+// A graph needing passes the client does not render fails in the page with one clear
+// message naming them, instead of drawing something wrong.
+TEST_F(ThreeClient, UnsupportedPassesAreAClearError) {
+  TempDir dir("wg_three_");
+  CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath("graphs/deferred_underwater.json")) + " -o " +
+                      test::shellQuote(dir.path()) + " --target es300 --textures --quiet");
+  ASSERT_EQ(c.exit, 0) << c.err;
+  CmdResult t = renderInChromium(dir, "deferred_underwater", "above", dir / "three.png");
+  EXPECT_EQ(t.exit, 1) << t.out << t.err;
+  EXPECT_NE(t.err.find("WaterGraphError: graph 'deferred_underwater' needs render passes the three.js client does not "
+                       "provide: "),
+            std::string::npos)
+      << t.err;
+  EXPECT_NE(t.err.find("depth_prepass (resource scene_depth: pass it in options.resources)"), std::string::npos)
+      << t.err;
+  EXPECT_NE(t.err.find("deferred_water (resource underwater: deferred water is not supported)"), std::string::npos) << t.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "three.png"));
+}
+
+// The API without a browser (clients/three/test/api.test.mjs under node --test): the
+// resources option, update(), time phases, the grid.
+TEST_F(ThreeClient, ApiChecksPassUnderNode) {
+  TempDir dir("wg_three_");
+  CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath("tests/ecosystem/data/three_environment.json")) +
+                      " -o " + test::shellQuote(dir.path()) + " --target es300 --quiet");
+  ASSERT_EQ(c.exit, 0) << c.err;
+  CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && WG_THREE_FIXTURES=" + test::shellQuote(dir.path()) +
+                   " timeout 50 node --test test/api.test.mjs");
+  EXPECT_EQ(t.exit, 0) << t.out << t.err;
+  EXPECT_NE(t.out.find("# pass 5"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
+}
+
+// `compile --textures` writes each node texture once, as the runtime uploads it.
+TEST(CompileTextures, WritesNodeTexturesAsPngBesideTheShaders) {
+  TempDir dir("wg_three_");
+  CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath("tests/ecosystem/data/textured_waves.json")) +
+                      " -o " + test::shellQuote(dir.path()) + " --target es300 --textures --quiet");
+  ASSERT_EQ(c.exit, 0) << c.err;
+  auto pngs = test::listFiles(dir.path(), ".png");
+  ASSERT_EQ(pngs.size(), 1u);
+  EXPECT_EQ(pngs[0], "textured_waves.t0_foam.png");
+  rt::Image img = rt::readPng(dir / pngs[0]);
+  auto foam = generateBuiltinTexture("foam");
+  ASSERT_TRUE(foam.has_value());
+  ASSERT_EQ(img.width, foam->width);
+  ASSERT_EQ(img.height, foam->height);
+  // The PNG's last row is the texture's row 0 (v = 0), as with a PNG source file.
+  size_t row = static_cast<size_t>(img.width) * 4;
+  for (int y = 0; y < img.height; ++y)
+    ASSERT_TRUE(std::equal(foam->rgba.begin() + static_cast<long>(static_cast<size_t>(y) * row),
+                           foam->rgba.begin() + static_cast<long>(static_cast<size_t>(y + 1) * row),
+                           img.rgba8.begin() + static_cast<long>(static_cast<size_t>(img.height - 1 - y) * row)))
+        << "row " << y;
+  // Without --textures, no PNG.
+  TempDir plain("wg_three_");
+  ASSERT_EQ(wgRun("compile " + test::shellQuote(test::sourcePath("tests/ecosystem/data/textured_waves.json")) +
+                  " -o " + test::shellQuote(plain.path()) + " --target es300 --quiet")
+                .exit,
+            0);
+  EXPECT_TRUE(test::listFiles(plain.path(), ".png").empty());
+}
+
+}  // namespace
+}  // namespace wg::eco
+#endif
