@@ -53,9 +53,8 @@ int main(int argc, char** argv) {
   rt::PlanOptions plan;  // 1280x720, RGBA8, 128^2 cube faces: what `watergraph render` uses
   rt::PassPlan all = everyPass(plan);
   const size_t libraryFunctions = GlslLibrary::builtin().items().size();
-  const int builtinUniforms = 8;  // model, view_projection, view, projection, camera, near_far, time, viewport
 
-  std::printf("| graph | nodes kept | passes | render targets | uniforms (of 8 builtins + parameters + time phases) | samplers | GLSL functions | "
+  std::printf("| graph | nodes kept | passes | render targets | uniforms: builtin + parameters (of the graph's) | samplers | GLSL functions | "
               "uniforms read (glslang reflection, per target) |\n");
   std::printf("|---|---|---|---|---|---|---|---|\n");
   int status = 0;
@@ -79,8 +78,8 @@ int main(int argc, char** argv) {
     std::string passes;
     for (auto p : used.passes) passes += std::string(passes.empty() ? "" : ", ") + rt::passName(p);
     size_t parameters = g->parameters.size();
-    size_t uniforms = m.at("uniforms").size(), phases = 0;
-    for (const auto& u : m.at("uniforms")) phases += u.value("builtin", "") == "time_phase";
+    size_t uniforms = m.at("uniforms").size(), fromParameters = 0;
+    for (const auto& u : m.at("uniforms")) fromParameters += u.contains("parameter");
     size_t samplers = m.at("textures").size();
     std::string reflection;
     for (Target t : allTargets()) {
@@ -97,10 +96,10 @@ int main(int argc, char** argv) {
       reflection += std::string(reflection.empty() ? "" : ", ") + std::string(targetName(t)) + " " + std::to_string(read) +
                     "/" + std::to_string(declared);
     }
-    std::printf("| %s | %d/%d | %zu/%zu: %s | %zu/%zu: %s of %s | %zu/%zu | %zu | %zu/%zu | %s |\n", g->name.c_str(),
+    std::printf("| %s | %d/%d | %zu/%zu: %s | %zu/%zu: %s of %s | %zu + %zu/%zu | %zu | %zu/%zu | %s |\n", g->name.c_str(),
                 r->nodesKept, r->nodesTotal, used.passes.size(), all.passes.size(), passes.c_str(), used.targets.size(),
-                all.targets.size(), mib(used.totalBytes()).c_str(), mib(all.totalBytes()).c_str(), uniforms,
-                builtinUniforms + parameters + phases, samplers, m.at("functions").size(), libraryFunctions, reflection.c_str());
+                all.targets.size(), mib(used.totalBytes()).c_str(), mib(all.totalBytes()).c_str(), uniforms - fromParameters,
+                fromParameters, parameters, samplers, m.at("functions").size(), libraryFunctions, reflection.c_str());
   }
   return status;
 }
