@@ -17,22 +17,32 @@ std::string graphBaseName(const std::string& path) {
   return name;
 }
 
+bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks) {
+  auto run = [&](std::string_view name, PassResult (*pass)(Program&, PassContext&)) {
+    if (hooks && hooks->before) hooks->before(name);
+    PassResult r = pass(program, ctx);
+    if (hooks && hooks->after) hooks->after(name);
+    return r;
+  };
+  run("specialise", specialisePass);
+  run("prune", prunePass);
+  // fold, simplify and cse expose more of each other's work, so they repeat until none
+  // changes anything (bounded: each change removes at least one op).
+  for (int round = 0; round < 8; ++round) {
+    bool changed = run("fold", foldPass) == PassResult::Changed;
+    changed |= run("simplify", simplifyPass) == PassResult::Changed;
+    changed |= run("cse", csePass) == PassResult::Changed;
+    if (!changed) break;
+  }
+  run("prune_final", prunePass);
+  return run("stages", stagePass) != PassResult::Failed;
+}
+
 std::optional<Program> buildProgram(const Graph& graph, const Registry& registry, Diagnostics& diags) {
   auto program = resolveGraph(graph, registry, diags);
   if (!program) return std::nullopt;
   PassContext ctx{diags};
-  // The recipe. fold, simplify and cse expose more of each other's work, so they repeat
-  // until none changes anything (bounded: each change removes at least one op).
-  specialisePass(*program, ctx);
-  prunePass(*program, ctx);
-  for (int round = 0; round < 8; ++round) {
-    bool changed = foldPass(*program, ctx) == PassResult::Changed;
-    changed |= simplifyPass(*program, ctx) == PassResult::Changed;
-    changed |= csePass(*program, ctx) == PassResult::Changed;
-    if (!changed) break;
-  }
-  prunePass(*program, ctx);
-  if (stagePass(*program, ctx) == PassResult::Failed) return std::nullopt;
+  if (!runPassRecipe(*program, ctx)) return std::nullopt;
   return program;
 }
 

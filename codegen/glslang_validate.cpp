@@ -252,18 +252,27 @@ void checkStageInterfaces(Target target, glslang::TProgram& program,
 
 }  // namespace
 
-ValidationResult validateShaders(Target target, const std::vector<ShaderSource>& shaders) {
-  ensureGlslangInitialised();
-  ValidationResult result;
-  const bool vulkan = target == Target::Vk450;
-  const EShMessages messages = vulkan
-      ? static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules)
-      : EShMsgDefault;
-  const TBuiltInResource* resources = GetDefaultResources();
+namespace {
 
-  // The program must be destroyed before its shaders: declare shaders first.
-  std::vector<std::unique_ptr<glslang::TShader>> compiled;
-  compiled.reserve(shaders.size());
+EShMessages messagesFor(Target target) {
+  return target == Target::Vk450 ? static_cast<EShMessages>(EShMsgSpvRules | EShMsgVulkanRules) : EShMsgDefault;
+}
+
+// Compiled shaders and the program linking them. The program must be destroyed before
+// its shaders, so it is declared after them.
+struct LinkedProgram {
+  std::vector<std::unique_ptr<glslang::TShader>> shaders;
+  glslang::TProgram program;
+};
+
+// Parses every shader for `target` and links them; false (with `errors`) on failure.
+bool compileAndLink(Target target, const std::vector<ShaderSource>& shaders, LinkedProgram& out,
+                    std::vector<ShaderMessage>& errors) {
+  ensureGlslangInitialised();
+  const bool vulkan = target == Target::Vk450;
+  const EShMessages messages = messagesFor(target);
+  const TBuiltInResource* resources = GetDefaultResources();
+  out.shaders.reserve(shaders.size());
   bool compileOk = true;
   for (const ShaderSource& src : shaders) {
     EShLanguage lang = toLanguage(src.stage);
@@ -287,23 +296,44 @@ ValidationResult validateShaders(Target target, const std::vector<ShaderSource>&
     }
     if (!sh->parse(resources, 100, ENoProfile, false, false, messages)) {
       compileOk = false;
-      size_t before = result.errors.size();
-      parseInfoLog(sh->getInfoLog(), src.fileName, result.errors);
-      if (result.errors.size() == before)
-        result.errors.push_back({src.fileName, 0, "compilation failed"});
+      size_t before = errors.size();
+      parseInfoLog(sh->getInfoLog(), src.fileName, errors);
+      if (errors.size() == before) errors.push_back({src.fileName, 0, "compilation failed"});
     }
-    compiled.push_back(std::move(sh));
+    out.shaders.push_back(std::move(sh));
   }
-  if (!compileOk) return result;
+  if (!compileOk) return false;
+  for (auto& sh : out.shaders) out.program.addShader(sh.get());
+  if (!out.program.link(messages)) {
+    size_t before = errors.size();
+    parseInfoLog(out.program.getInfoLog(), "", errors);
+    if (errors.size() == before) errors.push_back({"", 0, "link failed"});
+    return false;
+  }
+  return true;
+}
 
-  glslang::TProgram program;
-  for (auto& sh : compiled) program.addShader(sh.get());
-  if (!program.link(messages)) {
-    size_t before = result.errors.size();
-    parseInfoLog(program.getInfoLog(), "", result.errors);
-    if (result.errors.size() == before) result.errors.push_back({"", 0, "link failed"});
-    return result;
-  }
+}  // namespace
+
+std::optional<std::vector<std::string>> activeUniforms(Target target, const std::vector<ShaderSource>& shaders) {
+  LinkedProgram linked;
+  std::vector<ShaderMessage> errors;
+  if (!compileAndLink(target, shaders, linked, errors)) return std::nullopt;
+  // The default reflection lists only what the code reads: members of a uniform block
+  // that no stage reads, and loose uniforms or samplers nobody reads, are left out.
+  if (!linked.program.buildReflection(EShReflectionDefault)) return std::nullopt;
+  std::set<std::string> names;
+  for (int i = 0; i < linked.program.getNumUniformVariables(); ++i)
+    names.insert(linked.program.getUniform(i).name);
+  return std::vector<std::string>(names.begin(), names.end());
+}
+
+ValidationResult validateShaders(Target target, const std::vector<ShaderSource>& shaders) {
+  ValidationResult result;
+  const bool vulkan = target == Target::Vk450;
+  LinkedProgram linked;
+  if (!compileAndLink(target, shaders, linked, result.errors)) return result;
+  glslang::TProgram& program = linked.program;
   checkStageInterfaces(target, program, result.errors);
   if (!result.errors.empty()) return result;
 

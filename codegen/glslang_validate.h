@@ -2,6 +2,7 @@
 // Every emitted shader is compiled and linked by glslang before it is written; vk450 is
 // also turned into SPIR-V and checked by the SPIR-V validator.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,5 +33,10 @@ struct ValidationResult {
 // program, and for vk450 generates SPIR-V and runs spvtools validation on it.
 // Thread-compatible; initialises glslang once per process.
 ValidationResult validateShaders(Target target, const std::vector<ShaderSource>& shaders);
+
+// The uniforms (loose, uniform-block members and samplers) that glslang's reflection finds
+// read by the linked program, sorted; empty when the shaders do not compile and link.
+// The "declares only what it reads" tests compare these with the declarations.
+std::optional<std::vector<std::string>> activeUniforms(Target target, const std::vector<ShaderSource>& shaders);
 
 }  // namespace wg

@@ -1,7 +1,9 @@
 #pragma once
 // The compiler's passes, each a function from one Program to the next (one file each).
 // compile.cpp runs them as a recipe: specialise -> prune -> fold -> cse -> prune -> stages.
+#include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/diagnostic.h"
@@ -28,6 +30,17 @@ PassResult csePass(Program& program, PassContext& ctx);
 // Decides the stage of every op (Op::stage bits); a fragment-only op that feeds a
 // vertex output is an error.
 PassResult stagePass(Program& program, PassContext& ctx);
+
+// Called before and after each pass the recipe runs, with the pass's name ("specialise",
+// "prune", "fold", "simplify", "cse", "prune_final", "stages"): the compile benchmarks time
+// each pass through these without a second copy of the recipe.
+struct PassHooks {
+  std::function<void(std::string_view pass)> before, after;
+};
+
+// The recipe: specialise -> prune -> (fold -> simplify -> cse, until none changes
+// anything) -> prune -> stages. False when a pass failed (its diagnostics say why).
+bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks = nullptr);
 
 // Rewrites every reference through `replace` (indexed by op, then port; a None entry
 // keeps the reference), then drops ops whose `keep` is false, renumbering the rest.

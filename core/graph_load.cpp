@@ -72,7 +72,8 @@ class Loader {
                    "the graph must be a JSON object, found " + jsonTypeName(root));
       return std::nullopt;
     }
-    checkLimits(root, "");
+    std::string pointer;
+    checkLimits(root, pointer);
 
     checkKeys(root, "", "the graph",
               {"$schema", "version", "name", "description", "parameters", "presets", "nodes", "outputs"});
@@ -115,8 +116,9 @@ class Loader {
   }
 
  private:
-  // Every string (and key) within the length limit, every number finite float32.
-  void checkLimits(const json& v, const std::string& ptr) {
+  // Every string (and key) within the length limit, every number finite float32. `ptr` is
+  // one buffer extended and cut back on the way down, not a new string per value.
+  void checkLimits(const json& v, std::string& ptr) {
     if (v.is_string()) {
       const auto& s = v.get_ref<const std::string&>();
       if (s.size() > kMaxStringBytes)
@@ -131,24 +133,32 @@ class Loader {
     } else if (v.is_number_integer()) {
       // 64-bit integers are far inside float32's range (about 3.4e38).
     } else if (v.is_array()) {
-      for (std::size_t i = 0; i < v.size(); ++i) checkLimits(v[i], ptr + "/" + std::to_string(i));
+      const size_t len = ptr.size();
+      for (std::size_t i = 0; i < v.size(); ++i) {
+        ptr += '/';
+        ptr += std::to_string(i);
+        checkLimits(v[i], ptr);
+        ptr.resize(len);
+      }
     } else if (v.is_object()) {
+      const size_t len = ptr.size();
       for (auto it = v.begin(); it != v.end(); ++it) {
-        std::string child = ptr + "/" + jsonPointerEscape(it.key());
+        ptr += '/';
+        ptr += jsonPointerEscape(it.key());
         if (it.key().size() > kMaxStringBytes)
-          diags_.error(DiagCode::LimitExceeded, js_.key(child),
+          diags_.error(DiagCode::LimitExceeded, js_.key(ptr),
                        "key of " + std::to_string(it.key().size()) +
                            " bytes is longer than the limit of " + std::to_string(kMaxStringBytes));
-        checkLimits(it.value(), child);
+        checkLimits(it.value(), ptr);
+        ptr.resize(len);
       }
     }
   }
 
   // Member keys of the object at `ptr`, in file order.
   std::vector<std::string> members(const json& obj, const std::string& ptr) const {
-    auto it = js_.keyOrder.find(ptr);
-    if (it != js_.keyOrder.end()) return it->second;
-    std::vector<std::string> keys;
+    std::vector<std::string> keys = js_.keysInOrder(ptr);
+    if (!keys.empty()) return keys;
     for (auto m = obj.begin(); m != obj.end(); ++m) keys.push_back(m.key());
     return keys;
   }

@@ -59,11 +59,15 @@ class LineTable {
     for (std::size_t i = 0; i < text.size(); ++i)
       if (text[i] == '\n') starts_.push_back(i + 1);
   }
-  SourceRef at(const std::string& file, std::size_t offset) const {
+  JsonSource::Position position(std::size_t offset) const {
     auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
     std::size_t line = static_cast<std::size_t>(it - starts_.begin());  // >= 1
     std::size_t col = offset - starts_[line - 1] + 1;
-    return SourceRef{file, static_cast<int>(line), static_cast<int>(col)};
+    return {static_cast<int>(line), static_cast<int>(col)};
+  }
+  SourceRef at(const std::string& file, std::size_t offset) const {
+    auto p = position(offset);
+    return SourceRef{file, p.line, p.col};
   }
 
  private:
@@ -119,18 +123,18 @@ class PositionSax {
     prevEnd_ = consumed_;
     Frame& f = stack_.back();
     f.key = k;
-    std::string memberPtr = f.pointer + "/" + jsonPointerEscape(k);
-    SourceRef where = lines_.at(file_, start);
-    auto first = out_.keyAt.find(memberPtr);
-    if (f.value->contains(k) && first != out_.keyAt.end()) {
-      auto& d = diags_.error(DiagCode::DuplicateKey, where, "duplicate key '" + k + "'");
-      d.notes.push_back("first defined at " + std::to_string(first->second.line) + ":" +
-                        std::to_string(first->second.col));
-      f.duplicate = true;
-    } else {
-      out_.keyAt.emplace(memberPtr, where);
-      out_.keyOrder[f.pointer].push_back(k);
-      f.duplicate = false;
+    f.keyPos = lines_.position(start);
+    f.duplicate = false;
+    if (f.value->contains(k)) {
+      for (uint32_t c : out_.entries[f.entry].children) {
+        const JsonSource::Entry& first = out_.entries[c];
+        if (first.name != k) continue;
+        auto& d = diags_.error(DiagCode::DuplicateKey, SourceRef{file_, f.keyPos.line, f.keyPos.col},
+                               "duplicate key '" + k + "'");
+        d.notes.push_back("first defined at " + std::to_string(first.key.line) + ":" + std::to_string(first.key.col));
+        f.duplicate = true;
+        break;
+      }
     }
     return true;
   }
@@ -193,10 +197,10 @@ class PositionSax {
  private:
   struct Frame {
     nlohmann::json* value;
-    std::string pointer;
+    uint32_t entry;  // its JsonSource::Entry
     bool isArray;
-    std::size_t nextIndex = 0;
-    std::string key;
+    std::string key;                 // objects: the member being read
+    JsonSource::Position keyPos;
     bool duplicate = false;
   };
 
@@ -212,30 +216,33 @@ class PositionSax {
     return i;
   }
 
-  // Places `v` in the current container; returns it and its pointer.
-  std::pair<nlohmann::json*, std::string> place(nlohmann::json&& v, SourceRef where) {
+  // Places `v` in the current container and records its entry; returns both.
+  std::pair<nlohmann::json*, uint32_t> place(nlohmann::json&& v, JsonSource::Position where, bool isArray) {
+    auto index = static_cast<uint32_t>(out_.entries.size());
+    out_.entries.emplace_back();
+    out_.entries.back().value = where;
+    out_.entries.back().isArray = isArray;
     if (stack_.empty()) {
       out_.root = std::move(v);
-      out_.valueAt.emplace("", where);
-      return {&out_.root, ""};
+      return {&out_.root, index};
     }
     Frame& f = stack_.back();
     if (f.isArray) {
-      std::string ptr = f.pointer + "/" + std::to_string(f.nextIndex++);
       f.value->push_back(std::move(v));
-      out_.valueAt.emplace(ptr, where);
-      return {&f.value->back(), ptr};
+      out_.entries[f.entry].children.push_back(index);
+      return {&f.value->back(), index};
     }
-    std::string ptr = f.pointer + "/" + jsonPointerEscape(f.key);
     if (f.duplicate) {
-      // Parsed for its errors, then dropped: the first definition stays.
+      // Parsed for its errors, then dropped: the first definition stays (an orphan entry).
       scratch_.push_back(std::move(v));
-      return {&scratch_.back(), ptr + "\x01dup"};
+      return {&scratch_.back(), index};
     }
+    out_.entries[index].key = f.keyPos;
+    out_.entries[index].name = f.key;
+    out_.entries[f.entry].children.push_back(index);
     nlohmann::json& slot = (*f.value)[f.key];
     slot = std::move(v);
-    out_.valueAt.emplace(ptr, where);
-    return {&slot, ptr};
+    return {&slot, index};
   }
 
   template <typename T>
@@ -250,22 +257,22 @@ class PositionSax {
       if (!numberChar) --end;
     }
     prevEnd_ = end;
-    place(nlohmann::json(std::forward<T>(v)), lines_.at(file_, start));
+    place(nlohmann::json(std::forward<T>(v)), lines_.position(start), false);
     return true;
   }
 
   bool open(nlohmann::json&& container, bool isArray) {
     std::size_t start = tokenStart();
     prevEnd_ = consumed_;
-    SourceRef where = lines_.at(file_, start);
+    JsonSource::Position where = lines_.position(start);
     if (static_cast<int>(stack_.size()) >= kMaxDepth) {
-      diags_.error(DiagCode::LimitExceeded, where,
+      diags_.error(DiagCode::LimitExceeded, SourceRef{file_, where.line, where.col},
                    "JSON nesting is deeper than " + std::to_string(kMaxDepth) + " levels");
       depthExceeded_ = true;
       return false;
     }
-    auto [ptr, pointer] = place(std::move(container), where);
-    stack_.push_back(Frame{ptr, pointer, isArray, 0, {}, false});
+    auto [ptr, entry] = place(std::move(container), where, isArray);
+    stack_.push_back(Frame{ptr, entry, isArray, {}, {}, false});
     return true;
   }
 
@@ -289,20 +296,71 @@ class PositionSax {
 
 }  // namespace
 
+const JsonSource::Entry* JsonSource::member(const Entry& object, std::string_view name) const {
+  constexpr size_t kScanLimit = 16;  // beyond this, a hash index (big "parameters" objects)
+  if (object.children.size() <= kScanLimit) {
+    for (uint32_t c : object.children)
+      if (entries[c].name == name) return &entries[c];
+    return nullptr;
+  }
+  auto [it, made] = memberIndex_.try_emplace(static_cast<uint32_t>(&object - entries.data()));
+  if (made)
+    for (uint32_t c : object.children) it->second.emplace(entries[c].name, c);
+  auto m = it->second.find(std::string(name));
+  return m == it->second.end() ? nullptr : &entries[m->second];
+}
+
+const JsonSource::Entry* JsonSource::find(std::string_view pointer) const {
+  if (entries.empty()) return nullptr;
+  const Entry* at = &entries[0];
+  std::string segment;
+  while (!pointer.empty()) {
+    if (pointer[0] != '/') return nullptr;
+    pointer.remove_prefix(1);
+    size_t end = std::min(pointer.find('/'), pointer.size());
+    segment.clear();
+    for (size_t i = 0; i < end; ++i) {  // "~1" is '/', "~0" is '~'
+      if (pointer[i] == '~' && i + 1 < end && (pointer[i + 1] == '0' || pointer[i + 1] == '1')) {
+        segment += pointer[++i] == '1' ? '/' : '~';
+      } else {
+        segment += pointer[i];
+      }
+    }
+    pointer.remove_prefix(end);
+    if (at->isArray) {
+      size_t index = 0;
+      if (segment.empty() || segment.size() > 9) return nullptr;
+      for (char c : segment) {
+        if (c < '0' || c > '9') return nullptr;
+        index = index * 10 + static_cast<size_t>(c - '0');
+      }
+      if (index >= at->children.size()) return nullptr;
+      at = &entries[at->children[index]];
+    } else {
+      at = member(*at, segment);
+      if (!at) return nullptr;
+    }
+  }
+  return at;
+}
+
 SourceRef JsonSource::value(const std::string& pointer) const {
-  auto it = valueAt.find(pointer);
-  if (it != valueAt.end()) return it->second;
-  SourceRef r;
-  if (!valueAt.empty()) r.file = valueAt.begin()->second.file;
-  return r;
+  const Entry* e = find(pointer);
+  return e ? SourceRef{file, e->value.line, e->value.col} : SourceRef{entries.empty() ? std::string() : file, 0, 0};
 }
 
 SourceRef JsonSource::key(const std::string& pointer) const {
-  auto it = keyAt.find(pointer);
-  if (it != keyAt.end()) return it->second;
-  SourceRef r;
-  if (!valueAt.empty()) r.file = valueAt.begin()->second.file;
-  return r;
+  const Entry* e = pointer.empty() ? nullptr : find(pointer);
+  return e ? SourceRef{file, e->key.line, e->key.col} : SourceRef{entries.empty() ? std::string() : file, 0, 0};
+}
+
+std::vector<std::string> JsonSource::keysInOrder(const std::string& pointer) const {
+  std::vector<std::string> keys;
+  const Entry* e = find(pointer);
+  if (!e || e->isArray) return keys;
+  keys.reserve(e->children.size());
+  for (uint32_t c : e->children) keys.push_back(entries[c].name);
+  return keys;
 }
 
 std::string jsonPointerEscape(std::string_view key) {
@@ -337,6 +395,8 @@ std::optional<JsonSource> parseJsonWithPositions(std::string_view text, const st
   }
   size_t errorsBefore = diags.errorCount();
   JsonSource out;
+  out.file = file;
+  out.entries.reserve(text.size() / 12 + 16);  // about one value per 12 bytes of a graph
   std::size_t consumed = 0;
   PositionSax sax(text, file, diags, out, consumed);
   const char* base = text.data();

@@ -1,10 +1,11 @@
 #pragma once
 // JSON parsed by nlohmann's SAX interface into a DOM plus the file position of every
 // value and key (nlohmann's own DOM keeps none and silently drops duplicate keys).
-#include <map>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -15,17 +16,39 @@
 namespace wg {
 
 struct JsonSource {
-  nlohmann::json root;
-  // Keyed by JSON pointer ("/nodes/3/inputs/normal"): the value's first character.
-  std::map<std::string, SourceRef> valueAt;
-  // Keyed by the pointer of the member: the member key's opening quote.
-  std::map<std::string, SourceRef> keyAt;
-  // Keyed by the pointer of an object: its member keys in file order (nlohmann's object
-  // sorts them). Duplicate keys appear once, at their first position.
-  std::map<std::string, std::vector<std::string>> keyOrder;
+  // A line and column in `file`; SourceRefs are made from them only when asked for.
+  struct Position {
+    int line = 0;
+    int col = 0;
+  };
+  // One parsed value, in a tree beside the DOM: positions, the member key, and children in
+  // file order. One entry per value, with no string per value beyond its key: a map keyed by
+  // JSON pointer cost two heap strings and two map nodes per value, most of a load's time.
+  struct Entry {
+    Position value;                  // the value's first character
+    Position key;                    // object members: the key's opening quote
+    std::string name;                // object members: the key
+    std::vector<uint32_t> children;  // containers: elements, or members (first of duplicates)
+    bool isArray = false;
+  };
 
+  std::string file;
+  nlohmann::json root;
+  std::vector<Entry> entries;  // entries[0] is the root; values of duplicate keys are orphans
+
+  // By JSON pointer ("/nodes/3/inputs/normal"); line 0 when there is no such value.
   SourceRef value(const std::string& pointer) const;
-  SourceRef key(const std::string& pointer) const;
+  SourceRef key(const std::string& pointer) const;  // the member key's opening quote
+  // Member keys of the object at `pointer` in file order (nlohmann's object sorts them);
+  // duplicate keys appear once. Empty for anything else.
+  std::vector<std::string> keysInOrder(const std::string& pointer) const;
+
+ private:
+  const Entry* find(std::string_view pointer) const;
+  const Entry* member(const Entry& object, std::string_view name) const;
+  // Objects with many members get a name index on first look-up (mutable: a cache), by
+  // entry number, so a copy of the JsonSource stays correct.
+  mutable std::unordered_map<uint32_t, std::unordered_map<std::string, uint32_t>> memberIndex_;
 };
 
 // Reports JSON syntax (WG001), encoding (WG002: invalid UTF-8, a byte-order mark) and

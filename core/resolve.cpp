@@ -136,19 +136,21 @@ class Resolver {
         continue;
       }
       specs_[i] = spec;
-      std::vector<std::string> inputNames;
-      for (const auto& p : spec->inputs) inputNames.push_back(p.name);
+      // The name lists for "did you mean" are made only when there is an error to report.
       for (const auto& in : n.inputs)
-        if (spec->inputIndex(in.port) < 0)
+        if (spec->inputIndex(in.port) < 0) {
+          std::vector<std::string> inputNames;
+          for (const auto& p : spec->inputs) inputNames.push_back(p.name);
           diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
                        "node type '" + spec->type + "' has no input '" + in.port + "'" +
                            didYouMean(in.port, inputNames),
                        n.id, inputLabel(in.port));
-      std::vector<std::string> optionNames;
-      for (const auto& o : spec->options) optionNames.push_back(o.name);
+        }
       for (const auto& opt : n.options) {
         int oi = spec->optionIndex(opt.name);
         if (oi < 0) {
+          std::vector<std::string> optionNames;
+          for (const auto& o : spec->options) optionNames.push_back(o.name);
           diags_.error(DiagCode::UnknownOption, opt.keyWhere,
                        "node type '" + spec->type + "' has no option '" + opt.name + "'" +
                            didYouMean(opt.name, optionNames),

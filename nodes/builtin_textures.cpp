@@ -1,6 +1,9 @@
 // The built-in procedural textures: tileable, deterministic (integer hashing only, no
 // platform maths in the texel values' integer part), 256 x 256 RGBA8.
 #include <cmath>
+#include <map>
+#include <mutex>
+#include <string>
 
 #include "nodes/texture_source.h"
 
@@ -77,9 +80,7 @@ TextureImage generate(F texel) {
   return img;
 }
 
-}  // namespace
-
-std::optional<TextureImage> generateBuiltinTexture(std::string_view name) {
+std::optional<TextureImage> makeBuiltinTexture(std::string_view name) {
   if (name == "height")
     return generate([](double u, double v, double* o) { o[0] = o[1] = o[2] = fbm(u, v, 11u); });
   if (name == "water_normal")
@@ -109,6 +110,20 @@ std::optional<TextureImage> generateBuiltinTexture(std::string_view name) {
       o[0] = o[1] = o[2] = streak;
     });
   return std::nullopt;
+}
+
+}  // namespace
+
+// Generating costs tens of milliseconds per texture (fbm in double per texel), and every
+// Renderer built by an editor's preview would pay it again: the images are pure functions
+// of their name, so each is made once per process.
+std::optional<TextureImage> generateBuiltinTexture(std::string_view name) {
+  static std::mutex mutex;
+  static std::map<std::string, std::optional<TextureImage>, std::less<>> made;
+  std::lock_guard<std::mutex> lock(mutex);
+  auto it = made.find(name);
+  if (it == made.end()) it = made.emplace(std::string(name), makeBuiltinTexture(name)).first;
+  return it->second;
 }
 
 }  // namespace wg

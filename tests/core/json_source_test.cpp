@@ -47,8 +47,8 @@ TEST(JsonSource, KeepsMemberOrder) {
   Diagnostics d;
   auto js = parseJsonWithPositions(R"({"z": 1, "a": {"y": 2, "b": 3}, "m": 4})", "t.json", d);
   ASSERT_TRUE(js);
-  EXPECT_EQ(js->keyOrder.at(""), (std::vector<std::string>{"z", "a", "m"}));
-  EXPECT_EQ(js->keyOrder.at("/a"), (std::vector<std::string>{"y", "b"}));
+  EXPECT_EQ(js->keysInOrder(""), (std::vector<std::string>{"z", "a", "m"}));
+  EXPECT_EQ(js->keysInOrder("/a"), (std::vector<std::string>{"y", "b"}));
 }
 
 TEST(JsonSource, NumbersAtEndOfInputAndBeforeSeparators) {
