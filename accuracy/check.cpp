@@ -131,6 +131,7 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
       glm::dmat4 viewM = glm::dmat4(cam.view()), proj = glm::dmat4(cam.projection(static_cast<float>(aspect)));
       glm::dmat4 inv = glm::inverse(proj * viewM);
       glm::dvec3 eye(cam.position);
+      const glm::vec3 sun = rt::sunDirection(view.scene);  // as the renderer sets u_sun_direction
       // The flat water at pixel (px, py) (top-down rows): the world point and its depth value.
       auto water = [&](int px, int py, glm::dvec3* point, double* depthValue) {
         double ndcX = (px + 0.5) / width * 2 - 1, ndcY = 1 - (py + 0.5) / height * 2;
@@ -173,6 +174,7 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
           env.screenUv = Value::vector({(px + 0.5) / width, 1 - (py + 0.5) / height});
           env.fragDepth = Value::scalar(d);
           env.cameraNearFar = Value::vector({cam.nearPlane, cam.farPlane});
+          env.sunDirection = Value::vector({sun.x, sun.y, sun.z});
           CpuResult ref = evaluateProgram(result.program, env);
           const ProgramOutput* color = result.program.output(OutputSlot::FragmentColor);
           Value c;

@@ -46,7 +46,8 @@ const std::map<std::string, std::vector<std::string>>& uniformKeys() {
       {"time_phase", {"time"}},
       {"camera_near_far", {"near_far", "camera"}},
       {"view", {"view", "camera"}},
-      {"projection", {"projection", "camera"}}};
+      {"projection", {"projection", "camera"}},
+      {"sun_direction", {"sun_direction"}}};
   return m;
 }
 

@@ -35,6 +35,7 @@ Value builtinValue(const UniformInfo& u, const EvalEnvironment& env) {
   if (b == "camera_near_far") return env.cameraNearFar;
   if (b == "view") return env.view;
   if (b == "projection") return env.projection;
+  if (b == "sun_direction") return env.sunDirection;
   if (b == "viewport_size") return Value::vector({1, 1});
   if (b == "time_phase") {
     // As the runtime does: mod(omega * t, 2 pi) in double (the eval does the same).

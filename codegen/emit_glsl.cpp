@@ -265,7 +265,7 @@ class Emitter {
     EmitResult result;
     for (const BuiltinUniform* u : {&kView, &kProjection, &kCamera, &kNearFar, &kTime, &kViewport, &kProbeUv,
                                     &kProbeWorldPosition, &kProbeNormal, &kProbeViewDirection, &kProbeScreenUv,
-                                    &kProbeFragDepth})
+                                    &kProbeFragDepth, &kSun})
       if (frag.builtinUniforms.count(u->name)) result.uniforms.push_back({u->name, u->type, -1, u->meaning, kFragmentStage});
     result.uniforms.insert(result.uniforms.end(), phases_.begin(), phases_.end());
     for (size_t i = 0; i < program_.parameters.size(); ++i)
@@ -326,6 +326,7 @@ class Emitter {
         case Builtin::CameraNearFar: u = &kNearFar; break;
         case Builtin::View: u = &kView; break;
         case Builtin::Projection: u = &kProjection; break;
+        case Builtin::SunDirection: u = &kSun; break;
       }
       w.builtinUniforms.insert(u->name);
       return u->name;
