@@ -85,16 +85,7 @@ rt::Texture makeNodeTexture(const TextureInfo& t, const std::string& graphDir) {
   auto img = loadTexture(t.source, graphDir, &why);
   if (!img || img->width <= 0 || img->height <= 0)
     throw RuntimeError(RuntimeError::Kind::Manifest, "texture '" + t.source + "' cannot be loaded: " + why);
-  rt::Texture tex = rt::makeTexture();
-  glBindTexture(GL_TEXTURE_2D, tex.id());
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, img->width, img->height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img->width, img->height, GL_RGBA, GL_UNSIGNED_BYTE, img->rgba.data());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  return tex;
+  return rt::makeRepeatingRgba8Texture(img->width, img->height, img->rgba.data());
 }
 
 // A 1x1 RGBA32F texture (six faces for a cube), nearest: every fetch returns the texel.

@@ -223,15 +223,7 @@ class Emitter {
       if (stages) result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", stages});
     }
 
-    // Samplers: node textures by first use, then scene textures in the manifest's
-    // resource order; vk450 bindings follow the uniform block's.
-    std::stable_sort(sceneTextures_.begin(), sceneTextures_.end(), [](const TextureInfo& a, const TextureInfo& b) {
-      return resourceRank(a.resource) < resourceRank(b.resource);
-    });
-    result.textures = textures_;
-    result.textures.insert(result.textures.end(), sceneTextures_.begin(), sceneTextures_.end());
-    for (size_t i = 0; i < result.textures.size(); ++i)
-      result.textures[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
+    assignSamplers(result);
 
     std::set<std::string> functions;
     if (tess_) {
@@ -271,13 +263,7 @@ class Emitter {
     for (size_t i = 0; i < program_.parameters.size(); ++i)
       if (frag.parameters.count(static_cast<int>(i)))
         result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", kFragmentStage});
-    std::stable_sort(sceneTextures_.begin(), sceneTextures_.end(), [](const TextureInfo& a, const TextureInfo& b) {
-      return resourceRank(a.resource) < resourceRank(b.resource);
-    });
-    result.textures = textures_;
-    result.textures.insert(result.textures.end(), sceneTextures_.begin(), sceneTextures_.end());
-    for (size_t i = 0; i < result.textures.size(); ++i)
-      result.textures[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
+    assignSamplers(result);
     std::set<std::string> functions;
     result.shaders.push_back(assemble(ShaderStage::Fragment, frag, result, functions));
     for (const auto& item : GlslLibrary::builtin().items())
@@ -308,6 +294,18 @@ class Emitter {
     }
     if (have != want && have == Type::Float) return std::string(typeName(want)) + "(" + e + ")";
     return e;
+  }
+
+  // Samplers: node textures by first use, then scene textures in the manifest's resource
+  // order; vk450 bindings follow the uniform block's.
+  void assignSamplers(EmitResult& result) {
+    std::stable_sort(sceneTextures_.begin(), sceneTextures_.end(), [](const TextureInfo& a, const TextureInfo& b) {
+      return resourceRank(a.resource) < resourceRank(b.resource);
+    });
+    result.textures = textures_;
+    result.textures.insert(result.textures.end(), sceneTextures_.begin(), sceneTextures_.end());
+    for (size_t i = 0; i < result.textures.size(); ++i)
+      result.textures[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
   }
 
   std::string builtinExpr(StageWriter& w, Builtin b) {

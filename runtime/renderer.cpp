@@ -219,17 +219,7 @@ struct Renderer::Impl {
         img->rgba.size() != static_cast<size_t>(img->width) * static_cast<size_t>(img->height) * 4)
       throw RuntimeError(RuntimeError::Kind::Manifest,
                          owner + ": texture '" + source + "' cannot be loaded: " + (why.empty() ? "no image data" : why));
-    Texture t = makeTexture();
-    glBindTexture(GL_TEXTURE_2D, t.id());
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, img->width, img->height);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, img->width, img->height, GL_RGBA, GL_UNSIGNED_BYTE, img->rgba.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    glBindTexture(GL_TEXTURE_2D, 0);
-    return t;
+    return makeRepeatingRgba8Texture(img->width, img->height, img->rgba.data());
   }
 
   // A water uniform from the manifest: a graph parameter (its value kept here, so the
