@@ -15,17 +15,19 @@ uniform float u_phase5;
 uniform float u_phase6;
 uniform float u_phase7;
 
-// wave: unit direction xy, steepness Q, wavelength L. k = 2 pi / L, amplitude Q / k.
+// wave: unit direction xy, steepness Q, wavelength L. k = 2 pi / L, amplitude A = Q / k,
+// in the GPU Gems form the graph uses: height A sin, horizontal excursion Q A cos.
 void gerstner(vec4 wave, float phase, vec2 xz, inout vec3 p, inout vec3 tangent, inout vec3 binormal) {
   vec2 d = wave.xy;
   float q = wave.z;
   float k = 6.283185307 / wave.w;
+  float a = q / k;
   float f = k * dot(d, xz) - phase;
   float s = sin(f), c = cos(f);
-  float a = q / k;
-  p += vec3(d.x * a * c, a * s, d.y * a * c);
-  tangent += vec3(-d.x * d.x * q * s, d.x * q * c, -d.x * d.y * q * s);
-  binormal += vec3(-d.x * d.y * q * s, d.y * q * c, -d.y * d.y * q * s);
+  float qs = q * q * s;  // Q k A sin
+  p += vec3(d.x * q * a * c, a * s, d.y * q * a * c);
+  tangent += vec3(-d.x * d.x * qs, d.x * q * c, -d.x * d.y * qs);
+  binormal += vec3(-d.x * d.y * qs, d.y * q * c, -d.y * d.y * qs);
 }
 
 void main() {
