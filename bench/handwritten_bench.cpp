@@ -7,13 +7,16 @@
 // `frames` frames of one then of the other (the order alternates per round), so drift in
 // the shared machine's load hits both alike. Reported: median frame time of each (CPU
 // wall time around the frame and its glFinish, llvmpipe), their ratio generated /
-// hand-written, the PSNR between the two images, and the SPIR-V instruction count after
+// hand-written, the median over rounds of each round's ratio (paired: robust to load that
+// changes between rounds), the PSNR between the two images, and the SPIR-V instruction count after
 // spirv-opt -O (per program: all stages; and the fragment stage alone) of both, compiled
 // the same way (glsl330 under glslang's relaxed Vulkan rules; see relaxedSpirv).
 //
-//   build/bin/wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [graph ...]
+//   build/bin/wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [graph ...]
 //
-// Defaults: 15 rounds of 2 frames, sizes 640x360 and 1280x720, both graphs.
+// Defaults: 15 rounds of 2 frames, sizes 640x360 and 1280x720, both graphs. --water-only
+// draws none of the built-in scene (SceneOptions::drawScene = false): the frame is then
+// mostly the water shader, whose cost the full frame dilutes with the scene passes.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -65,7 +68,7 @@ std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders) {
 }
 
 [[noreturn]] void usage(const char* why) {
-  std::fprintf(stderr, "wg_bench_handwritten: %s\nusage: wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [graph ...]\n", why);
+  std::fprintf(stderr, "wg_bench_handwritten: %s\nusage: wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [graph ...]\n", why);
   std::exit(1);
 }
 
@@ -73,6 +76,7 @@ std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders) {
 
 int main(int argc, char** argv) {
   int rounds = 15, frames = 2;
+  bool waterOnly = false;
   std::vector<Size> sizes;
   std::vector<std::string> graphs;
   for (int i = 1; i < argc; ++i) {
@@ -83,6 +87,7 @@ int main(int argc, char** argv) {
     };
     if (a == "--rounds") rounds = std::atoi(next().c_str());
     else if (a == "--frames") frames = std::atoi(next().c_str());
+    else if (a == "--water-only") waterOnly = true;
     else if (a == "--size") {
       Size s{};
       if (std::sscanf(next().c_str(), "%dx%d", &s.width, &s.height) != 2 || s.width <= 0 || s.height <= 0) usage("bad --size");
@@ -101,9 +106,10 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "wg_bench_handwritten: %s\n", e.what());
     return 2;
   }
-  std::printf("GL_RENDERER: %s; %d rounds x %d frames per side, interleaved\n\n", context->renderer().c_str(), rounds, frames);
-  std::printf("| graph | size | generated ms | hand-written ms | ratio gen/hand | PSNR dB | SPIR-V -O gen (frag) | SPIR-V -O hand (frag) |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf("GL_RENDERER: %s; %d rounds x %d frames per side, interleaved; %s\n\n", context->renderer().c_str(), rounds, frames,
+              waterOnly ? "water only (no scene)" : "full scene");
+  std::printf("| graph | size | generated ms | hand-written ms | ratio gen/hand | paired ratio | PSNR dB | SPIR-V -O gen (frag) | SPIR-V -O hand (frag) |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
 
   int status = 0;
   for (const std::string& name : graphs) {
@@ -129,20 +135,25 @@ int main(int argc, char** argv) {
         wg::rt::RenderSettings settings;
         settings.width = size.width;
         settings.height = size.height;
+        settings.scene.drawScene = !waterOnly;
         wg::rt::Renderer gen(result->manifest, wg::handwritten::forRuntime(generated), settings, false, origins);
         wg::rt::Renderer hw(result->manifest, wg::handwritten::forRuntime(hand), settings, false, origins);
         for (int w = 0; w < 2; ++w) gen.renderFrame(), hw.renderFrame();  // llvmpipe compiles at the first draw
         double psnr = wg::rt::psnrRgb8(gen.readRgba8(), hw.readRgba8());
-        std::vector<double> genMs, handMs;
+        std::vector<double> genMs, handMs, roundRatios;
         for (int r = 0; r < rounds; ++r) {
           wg::rt::Renderer* order[2] = {&gen, &hw};
           if (r % 2) std::swap(order[0], order[1]);
+          std::vector<double> roundGen, roundHand;
           for (wg::rt::Renderer* which : order)
-            for (int f = 0; f < frames; ++f) (which == &gen ? genMs : handMs).push_back(which->renderFrame());
+            for (int f = 0; f < frames; ++f) (which == &gen ? roundGen : roundHand).push_back(which->renderFrame());
+          genMs.insert(genMs.end(), roundGen.begin(), roundGen.end());
+          handMs.insert(handMs.end(), roundHand.begin(), roundHand.end());
+          roundRatios.push_back(median(roundGen) / median(roundHand));
         }
         double g = median(genMs), h = median(handMs);
-        std::printf("| %s | %dx%d | %.2f | %.2f | %.3f | %.1f | %d (%d) | %d (%d) |\n", name.c_str(), size.width, size.height,
-                    g, h, g / h, psnr, genTotal, genFrag, handTotal, handFrag);
+        std::printf("| %s | %dx%d | %.2f | %.2f | %.3f | %.3f | %.1f | %d (%d) | %d (%d) |\n", name.c_str(), size.width,
+                    size.height, g, h, g / h, median(roundRatios), psnr, genTotal, genFrag, handTotal, handFrag);
         std::fflush(stdout);
       }
     } catch (const std::exception& e) {

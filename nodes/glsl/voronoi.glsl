@@ -48,11 +48,11 @@ vec4 wg_voronoi(vec2 p, float jitter, float phase, bool animated, bool full) {
   return vec4(f1, f2, cellf + best);
 }
 
-// F1 alone, as wg_voronoi(...).x, over the same cells: the nearest squared distance, one
-// square root at the end (sqrt is monotonic and correctly rounded, so the value is the
-// same), without F2 and the nearest cell, whose bookkeeping branches cost a caller that
-// reads only F1 (the caustics) a third of the loop (issue 10, generated against
-// hand-written).
+// F1 alone (the distance to the nearest feature point), as wg_voronoi(...).x over the same
+// cells (full: the 3x3 around p; else the 2x2 block on p's side of its cell): the nearest
+// squared distance, one square root at the end (sqrt is monotonic and correctly rounded,
+// so the value is the same), without F2 and the nearest cell, whose bookkeeping branches
+// cost a caller that reads only F1 (the caustics) SPIR-V size and time (issue 10).
 float wg_voronoi_f1(vec2 p, float jitter, float phase, bool animated, bool full) {
   vec2 f = p - floor(p);
   uvec2 cell = wg_hash_cell_vec2(p);
