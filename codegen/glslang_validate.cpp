@@ -266,11 +266,13 @@ struct LinkedProgram {
 };
 
 // Parses every shader for `target` and links them; false (with `errors`) on failure.
+// `relaxed`: OpenGL GLSL compiled for SPIR-V under glslang's relaxed Vulkan rules (loose
+// uniforms gathered into one block, bindings and locations assigned automatically).
 bool compileAndLink(Target target, const std::vector<ShaderSource>& shaders, LinkedProgram& out,
-                    std::vector<ShaderMessage>& errors) {
+                    std::vector<ShaderMessage>& errors, bool relaxed = false) {
   ensureGlslangInitialised();
-  const bool vulkan = target == Target::Vk450;
-  const EShMessages messages = messagesFor(target);
+  const bool vulkan = target == Target::Vk450 || relaxed;
+  const EShMessages messages = messagesFor(vulkan ? Target::Vk450 : target);
   const TBuiltInResource* resources = GetDefaultResources();
   out.shaders.reserve(shaders.size());
   bool compileOk = true;
@@ -288,6 +290,11 @@ bool compileAndLink(Target target, const std::vector<ShaderSource>& shaders, Lin
       sh->setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientVulkan, 100);
       sh->setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_0);
       sh->setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_0);
+      if (relaxed) {
+        sh->setEnvInputVulkanRulesRelaxed();
+        sh->setAutoMapBindings(true);
+        sh->setAutoMapLocations(true);
+      }
     } else {
       // Plain GLSL / ESSL validation, as glslangValidator does without -G / -V.
       sh->setEnvInput(glslang::EShSourceGlsl, lang, glslang::EShClientNone, 0);
@@ -314,6 +321,28 @@ bool compileAndLink(Target target, const std::vector<ShaderSource>& shaders, Lin
 }
 
 }  // namespace
+
+std::optional<std::vector<std::vector<uint32_t>>> relaxedSpirv(const std::vector<ShaderSource>& shaders,
+                                                               std::vector<ShaderMessage>* errors) {
+  LinkedProgram linked;
+  std::vector<ShaderMessage> local;
+  std::vector<ShaderMessage>& errs = errors ? *errors : local;
+  if (!compileAndLink(Target::Glsl330, shaders, linked, errs, /*relaxed=*/true)) return std::nullopt;
+  if (!linked.program.mapIO()) {
+    errs.push_back({"", 0, "glslang could not assign bindings and locations"});
+    return std::nullopt;
+  }
+  std::vector<std::vector<uint32_t>> modules;
+  for (const ShaderSource& src : shaders) {
+    const glslang::TIntermediate* im = linked.program.getIntermediate(toLanguage(src.stage));
+    std::vector<unsigned int> words;
+    spv::SpvBuildLogger logger;
+    glslang::SpvOptions options;
+    glslang::GlslangToSpv(*im, words, &logger, &options);
+    modules.emplace_back(words.begin(), words.end());
+  }
+  return modules;
+}
 
 std::optional<std::vector<std::string>> activeUniforms(Target target, const std::vector<ShaderSource>& shaders) {
   LinkedProgram linked;

@@ -34,6 +34,14 @@ struct ValidationResult {
 // Thread-compatible; initialises glslang once per process.
 ValidationResult validateShaders(Target target, const std::vector<ShaderSource>& shaders);
 
+// SPIR-V (one module per shader, same order) of OpenGL GLSL shaders (glsl330), compiled
+// and linked under glslang's relaxed Vulkan rules: loose uniforms gathered into one
+// uniform block, bindings and locations assigned automatically. A driver-independent
+// form in which any two glsl330 programs can be compared after spirv-opt (the
+// hand-written bench). nullopt, with `errors` when given, if they do not compile and link.
+std::optional<std::vector<std::vector<uint32_t>>> relaxedSpirv(const std::vector<ShaderSource>& shaders,
+                                                               std::vector<ShaderMessage>* errors = nullptr);
+
 // The uniforms (loose, uniform-block members and samplers) that glslang's reflection finds
 // read by the linked program, sorted; empty when the shaders do not compile and link.
 // The "declares only what it reads" tests compare these with the declarations.

@@ -10,7 +10,15 @@ vec4 wg_safe_normalize_vec4(vec4 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
-float wg_safe_pow_float(float x, float y) { return x > 0.0 ? exp2(y * log2(x)) : (y > 0.0 ? 0.0 : 1.0); }
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(y * log2(x));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
 vec2 wg_safe_pow_vec2(vec2 x, vec2 y) { return vec2(wg_safe_pow_float(x.x, y.x), wg_safe_pow_float(x.y, y.y)); }
 vec3 wg_safe_pow_vec3(vec3 x, vec3 y) { return vec3(wg_safe_pow_vec2(x.xy, y.xy), wg_safe_pow_float(x.z, y.z)); }
 vec4 wg_safe_pow_vec4(vec4 x, vec4 y) { return vec4(wg_safe_pow_vec2(x.xy, y.xy), wg_safe_pow_vec2(x.zw, y.zw)); }
@@ -18,9 +26,10 @@ vec4 wg_safe_pow_vec4(vec4 x, vec4 y) { return vec4(wg_safe_pow_vec2(x.xy, y.xy)
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
-  if (e0 == e1) return x < e0 ? 0.0 : 1.0;
   float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
+  float eased = t * t * (3.0 - 2.0 * t);
+  float stepped = x < e0 ? 0.0 : 1.0;
+  return e0 == e1 ? stepped : eased;
 }
 vec2 wg_smoothstep_vec2(vec2 e0, vec2 e1, vec2 x) {
   return vec2(wg_smoothstep_float(e0.x, e1.x, x.x), wg_smoothstep_float(e0.y, e1.y, x.y));

@@ -1,7 +1,8 @@
 // Range remapping, one name per type. An empty source range (in_min == in_max) maps to out_min instead of
-// dividing by zero.
+// dividing by zero (the quotient is computed, then not chosen: one OpSelect, no branch).
 float wg_remap_float(float x, float a, float b, float c, float d) {
-  float t = b == a ? 0.0 : (x - a) / (b - a);
+  float q = (x - a) / (b - a);
+  float t = b == a ? 0.0 : q;
   return mix(c, d, t);
 }
 vec2 wg_remap_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {
@@ -15,7 +16,8 @@ vec4 wg_remap_vec4(vec4 x, vec4 a, vec4 b, vec4 c, vec4 d) {
 }
 
 float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float t = b == a ? 0.0 : clamp((x - a) / (b - a), 0.0, 1.0);
+  float q = clamp((x - a) / (b - a), 0.0, 1.0);
+  float t = b == a ? 0.0 : q;
   return mix(c, d, t);
 }
 vec2 wg_remap_clamped_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {

@@ -47,3 +47,27 @@ vec4 wg_voronoi(vec2 p, float jitter, float phase, bool animated, bool full) {
   }
   return vec4(f1, f2, cellf + best);
 }
+
+// F1 alone (the distance to the nearest feature point), as wg_voronoi(...).x over the same
+// cells (full: the 3x3 around p; else the 2x2 block on p's side of its cell): the nearest
+// squared distance, one square root at the end (sqrt is monotonic and correctly rounded,
+// so the value is the same), without F2 and the nearest cell, whose bookkeeping branches
+// cost a caller that reads only F1 (the caustics) SPIR-V size and time (issue 10).
+float wg_voronoi_f1(vec2 p, float jitter, float phase, bool animated, bool full) {
+  vec2 f = p - floor(p);
+  uvec2 cell = wg_hash_cell_vec2(p);
+  ivec2 lo = full ? ivec2(-1) : ivec2(step(vec2(0.5), f)) - ivec2(1);
+  int n = full ? 3 : 2;
+  float d2 = 1e30;
+  // Bounded by n itself (no break): with `full` a literal at every call, n is a constant
+  // after inlining and the loops have a fixed trip count.
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
+      ivec2 o = lo + ivec2(i, j);
+      vec2 h = wg_hash_unit_vec3(wg_hash_pcg3d(uvec3(cell + uvec2(o), 0u))).xy;
+      vec2 q = vec2(o) + wg_voronoi_offset(h, jitter, phase, animated) - f;
+      d2 = min(d2, dot(q, q));
+    }
+  }
+  return sqrt(d2);
+}

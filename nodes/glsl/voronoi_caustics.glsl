@@ -5,7 +5,7 @@
 // full jitter) and 1 - F1 would then be a negative base; the cube is written as products,
 // so no pow is involved at all.
 float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated, bool full) {
-  float d = clamp(wg_voronoi(p, jitter, phase, animated, full).x, 0.0, 1.0);
+  float d = clamp(wg_voronoi_f1(p, jitter, phase, animated, full), 0.0, 1.0);
   float m = 1.0 - d;
   return m * m * m;
 }

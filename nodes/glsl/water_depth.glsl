@@ -3,12 +3,13 @@
 // The factor that turns a view-depth difference into a distance along the view ray:
 // 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
 // cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1).
+// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
+// values rather than an early return, so it compiles to a select, not branches.
 float wg_water_depth_ray_factor(mat4 view, vec3 v) {
   vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  if (dot(fwd, fwd) < 0.5) return 1.0;
   float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  return 1.0 / max(c, 0.1);
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of

@@ -5,7 +5,8 @@
 // Gerstner cusp, two opposite normals blended) still yields a unit direction, never NaN.
 vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   float l2 = dot(v, v);
-  return l2 < 1e-12 ? fallback : v * inversesqrt(l2);
+  vec3 unit = v * inversesqrt(l2);  // inf or NaN at l2 = 0: then not chosen (a select, no branch)
+  return l2 < 1e-12 ? fallback : unit;
 }
 
 // A tangent-space normal (x along T, y along B, z along N) taken to world space and made

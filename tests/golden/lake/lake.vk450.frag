@@ -40,7 +40,8 @@ float wg_fresnel_schlick(float cosi, float f0) {
 }
 
 float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float t = b == a ? 0.0 : clamp((x - a) / (b - a), 0.0, 1.0);
+  float q = clamp((x - a) / (b - a), 0.0, 1.0);
+  float t = b == a ? 0.0 : q;
   return mix(c, d, t);
 }
 

@@ -22,14 +22,23 @@ vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
-float wg_safe_pow_float(float x, float y) { return x > 0.0 ? exp2(y * log2(x)) : (y > 0.0 ? 0.0 : 1.0); }
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(y * log2(x));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
 
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
-  if (e0 == e1) return x < e0 ? 0.0 : 1.0;
   float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
+  float eased = t * t * (3.0 - 2.0 * t);
+  float stepped = x < e0 ? 0.0 : 1.0;
+  return e0 == e1 ? stepped : eased;
 }
 
 // Fresnel reflectance of the water surface. `cosi` is the cosine between the unit normal
@@ -141,7 +150,8 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
 }
 
 float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float t = b == a ? 0.0 : clamp((x - a) / (b - a), 0.0, 1.0);
+  float q = clamp((x - a) / (b - a), 0.0, 1.0);
+  float t = b == a ? 0.0 : q;
   return mix(c, d, t);
 }
 
@@ -209,7 +219,8 @@ float wg_crest_foam(float height, vec3 normal, vec2 xz, vec2 drift, float thresh
 // Gerstner cusp, two opposite normals blended) still yields a unit direction, never NaN.
 vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   float l2 = dot(v, v);
-  return l2 < 1e-12 ? fallback : v * inversesqrt(l2);
+  vec3 unit = v * inversesqrt(l2);  // inf or NaN at l2 = 0: then not chosen (a select, no branch)
+  return l2 < 1e-12 ? fallback : unit;
 }
 
 // A tangent-space normal (x along T, y along B, z along N) taken to world space and made

@@ -33,7 +33,15 @@ vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
-float wg_safe_pow_float(float x, float y) { return x > 0.0 ? exp2(y * log2(x)) : (y > 0.0 ? 0.0 : 1.0); }
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(y * log2(x));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
 
 // blinn_phong: specular highlight from the half vector (seed 002, level 2).
 
@@ -187,38 +195,28 @@ vec2 wg_voronoi_offset(vec2 h, float jitter, float phase, bool animated) {
   return 0.5 + clamp(jitter, 0.0, 1.0) * w;
 }
 
-// F1 (distance to the nearest point), F2 (second nearest) and the nearest point's integer
-// cell, as vec4(F1, F2, cell.x, cell.y). full = true searches the 3x3 cells around p
-// (9 hashes); false searches only the 2x2 block on p's side of its cell (4 hashes): F1 is
-// then approximate and F2 can be much too large. Distances are taken relative to p's cell,
-// so they stay accurate at large coordinates; cells are stepped in uint (wrapping).
-vec4 wg_voronoi(vec2 p, float jitter, float phase, bool animated, bool full) {
-  vec2 cellf = floor(p);
-  vec2 f = p - cellf;
+// F1 alone (the distance to the nearest feature point), as wg_voronoi(...).x over the same
+// cells (full: the 3x3 around p; else the 2x2 block on p's side of its cell): the nearest
+// squared distance, one square root at the end (sqrt is monotonic and correctly rounded,
+// so the value is the same), without F2 and the nearest cell, whose bookkeeping branches
+// cost a caller that reads only F1 (the caustics) SPIR-V size and time (issue 10).
+float wg_voronoi_f1(vec2 p, float jitter, float phase, bool animated, bool full) {
+  vec2 f = p - floor(p);
   uvec2 cell = wg_hash_cell_vec2(p);
   ivec2 lo = full ? ivec2(-1) : ivec2(step(vec2(0.5), f)) - ivec2(1);
   int n = full ? 3 : 2;
-  float f1 = 1e30;
-  float f2 = 1e30;
-  vec2 best = vec2(0.0);
-  for (int j = 0; j < 3; ++j) {
-    if (j >= n) break;
-    for (int i = 0; i < 3; ++i) {
-      if (i >= n) break;
+  float d2 = 1e30;
+  // Bounded by n itself (no break): with `full` a literal at every call, n is a constant
+  // after inlining and the loops have a fixed trip count.
+  for (int j = 0; j < n; ++j) {
+    for (int i = 0; i < n; ++i) {
       ivec2 o = lo + ivec2(i, j);
       vec2 h = wg_hash_unit_vec3(wg_hash_pcg3d(uvec3(cell + uvec2(o), 0u))).xy;
       vec2 q = vec2(o) + wg_voronoi_offset(h, jitter, phase, animated) - f;
-      float d = sqrt(dot(q, q));
-      if (d < f1) {
-        f2 = f1;
-        f1 = d;
-        best = vec2(o);
-      } else if (d < f2) {
-        f2 = d;
-      }
+      d2 = min(d2, dot(q, q));
     }
   }
-  return vec4(f1, f2, cellf + best);
+  return sqrt(d2);
 }
 
 // Voronoi caustics (seed 003, section 6): bright lines where the Voronoi F1 is small,
@@ -228,7 +226,7 @@ vec4 wg_voronoi(vec2 p, float jitter, float phase, bool animated, bool full) {
 // full jitter) and 1 - F1 would then be a negative base; the cube is written as products,
 // so no pow is involved at all.
 float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated, bool full) {
-  float d = clamp(wg_voronoi(p, jitter, phase, animated, full).x, 0.0, 1.0);
+  float d = clamp(wg_voronoi_f1(p, jitter, phase, animated, full), 0.0, 1.0);
   float m = 1.0 - d;
   return m * m * m;
 }
@@ -238,12 +236,13 @@ float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated
 // The factor that turns a view-depth difference into a distance along the view ray:
 // 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
 // cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1).
+// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
+// values rather than an early return, so it compiles to a select, not branches.
 float wg_water_depth_ray_factor(mat4 view, vec3 v) {
   vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  if (dot(fwd, fwd) < 0.5) return 1.0;
   float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  return 1.0 / max(c, 0.1);
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of

@@ -34,9 +34,10 @@ vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
-  if (e0 == e1) return x < e0 ? 0.0 : 1.0;
   float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
+  float eased = t * t * (3.0 - 2.0 * t);
+  float stepped = x < e0 ? 0.0 : 1.0;
+  return e0 == e1 ? stepped : eased;
 }
 
 float wg_depth_tint_smooth(float depth, float max_depth) {
@@ -114,9 +115,10 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
 }
 
 // Range remapping, one name per type. An empty source range (in_min == in_max) maps to out_min instead of
-// dividing by zero.
+// dividing by zero (the quotient is computed, then not chosen: one OpSelect, no branch).
 float wg_remap_float(float x, float a, float b, float c, float d) {
-  float t = b == a ? 0.0 : (x - a) / (b - a);
+  float q = (x - a) / (b - a);
+  float t = b == a ? 0.0 : q;
   return mix(c, d, t);
 }
 
@@ -154,12 +156,13 @@ float wg_shore_waves(float depth, float frequency, float phase, float amplitude,
 // The factor that turns a view-depth difference into a distance along the view ray:
 // 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
 // cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1).
+// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
+// values rather than an early return, so it compiles to a select, not branches.
 float wg_water_depth_ray_factor(mat4 view, vec3 v) {
   vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  if (dot(fwd, fwd) < 0.5) return 1.0;
   float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  return 1.0 / max(c, 0.1);
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of

@@ -16,9 +16,10 @@ vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
-  if (e0 == e1) return x < e0 ? 0.0 : 1.0;
   float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
+  float eased = t * t * (3.0 - 2.0 * t);
+  float stepped = x < e0 ? 0.0 : 1.0;
+  return e0 == e1 ? stepped : eased;
 }
 
 float wg_depth_tint_smooth(float depth, float max_depth) {

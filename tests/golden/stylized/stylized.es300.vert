@@ -50,7 +50,8 @@ mat3 wg_gerstner_wave_add(mat3 acc, vec2 xz, vec2 dir, float k, float wavelength
 // Gerstner cusp, two opposite normals blended) still yields a unit direction, never NaN.
 vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   float l2 = dot(v, v);
-  return l2 < 1e-12 ? fallback : v * inversesqrt(l2);
+  vec3 unit = v * inversesqrt(l2);  // inf or NaN at l2 = 0: then not chosen (a select, no branch)
+  return l2 < 1e-12 ? fallback : unit;
 }
 
 // The unit surface normal cross(dP/dz, dP/dx), oriented up (y >= 0). At a cusp

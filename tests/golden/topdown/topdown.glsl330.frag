@@ -76,7 +76,15 @@ vec3 wg_color_variation(vec3 base, vec3 n, vec3 sun, float height, float noise, 
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
-float wg_safe_pow_float(float x, float y) { return x > 0.0 ? exp2(y * log2(x)) : (y > 0.0 ? 0.0 : 1.0); }
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(y * log2(x));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
 
 // blinn_phong: specular highlight from the half vector (seed 002, level 2).
 
@@ -91,9 +99,10 @@ float wg_blinn_phong_specular(vec3 n, vec3 v, vec3 l, float shininess) {
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
-  if (e0 == e1) return x < e0 ? 0.0 : 1.0;
   float t = clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
+  float eased = t * t * (3.0 - 2.0 * t);
+  float stepped = x < e0 ? 0.0 : 1.0;
+  return e0 == e1 ? stepped : eased;
 }
 
 // Gerstner waves (GPU Gems 1 ch. 1; seed 003): the sum of trochoidal waves, each moving
@@ -152,7 +161,8 @@ float wg_lambert(vec3 n, vec3 l) {
 }
 
 float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float t = b == a ? 0.0 : clamp((x - a) / (b - a), 0.0, 1.0);
+  float q = clamp((x - a) / (b - a), 0.0, 1.0);
+  float t = b == a ? 0.0 : q;
   return mix(c, d, t);
 }
 
@@ -219,7 +229,8 @@ float wg_crest_foam(float height, vec3 normal, vec2 xz, vec2 drift, float thresh
 // Gerstner cusp, two opposite normals blended) still yields a unit direction, never NaN.
 vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   float l2 = dot(v, v);
-  return l2 < 1e-12 ? fallback : v * inversesqrt(l2);
+  vec3 unit = v * inversesqrt(l2);  // inf or NaN at l2 = 0: then not chosen (a select, no branch)
+  return l2 < 1e-12 ? fallback : unit;
 }
 
 // The unit surface normal cross(dP/dz, dP/dx), oriented up (y >= 0). At a cusp
