@@ -155,9 +155,13 @@ NodeSpec rippleNormalsNode() {
     for (int i = 0; i < octaves; ++i) {
       const RippleLayer& l = kRipples[i];
       auto phase = [&](double w) { return (w < 0 ? "-" : "") + ctx.timePhase(std::abs(w)); };
+      // One phase per statement: the operands of + are evaluated in an unspecified order
+      // (GCC and Clang differ), and each call names the next phase uniform.
+      std::string phaseA = phase(l.omegaA);
+      std::string phaseB = phase(l.omegaB);
       std::string layer = EmitContext::call("wg_ripple_normals_layer",
                                             {uv, ctx.literal(Value::vector({l.fa[0], l.fa[1], l.fb[0], l.fb[1]})),
-                                             "vec2(" + phase(l.omegaA) + ", " + phase(l.omegaB) + ")"});
+                                             "vec2(" + phaseA + ", " + phaseB + ")"});
       sum += (sum.empty() ? "" : " + ") + layer + " * " + ctx.literal(l.weight);
     }
     std::string r = ctx.temporary(Type::Vec2, sum);
