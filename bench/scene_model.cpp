@@ -16,7 +16,6 @@
 #include "nodes/glsl_library.h"
 #include "nodes/registry.h"
 #include "runtime/pass_plan.h"
-#include "runtime/runtime_error.h"
 
 namespace {
 
@@ -26,20 +25,12 @@ std::string mib(size_t bytes) {
   return buf;
 }
 
-// Every pass the runtime implements, each planned alone: the whole menu a graph picks from.
+// Every pass the runtime implements, planned together: the whole menu a graph picks from.
 wg::rt::PassPlan everyPass(const wg::rt::PlanOptions& options) {
-  std::vector<std::string> passes;
-  for (const char* name : {"environment_cubemap", "depth_prepass", "planar_reflection", "refraction", "scene_color_copy",
-                           "deferred_water"}) {
-    try {
-      wg::rt::planPasses(nlohmann::json{{"passes", {name, "water_surface"}}}, options);
-      passes.push_back(name);
-    } catch (const wg::rt::RuntimeError&) {
-      // not implemented by the runtime: not on the menu
-    }
-  }
-  passes.push_back("water_surface");
-  return wg::rt::planPasses(nlohmann::json{{"passes", passes}}, options);
+  return wg::rt::planPasses(nlohmann::json{{"passes", {"environment_cubemap", "depth_prepass", "planar_reflection",
+                                                        "refraction", "scene_color_copy", "deferred_water",
+                                                        "water_surface"}}},
+                            options);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // glslang (12.0) + SPIRV-Tools (2023.1) validation of emitted shaders. See
 // docs/validation.md for what is checked per target and how messages map back.
 #include "codegen/glslang_validate.h"
+#include "codegen/glslang_stage.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
 #include <glslang/Public/ResourceLimits.h>
@@ -24,16 +25,6 @@ void ensureGlslangInitialised() {
   // One InitializeProcess per process; never finalised (glslang's globals live until exit).
   static std::once_flag once;
   std::call_once(once, [] { glslang::InitializeProcess(); });
-}
-
-EShLanguage toLanguage(ShaderStage s) {
-  switch (s) {
-    case ShaderStage::Vertex: return EShLangVertex;
-    case ShaderStage::TessControl: return EShLangTessControl;
-    case ShaderStage::TessEvaluation: return EShLangTessEvaluation;
-    case ShaderStage::Fragment: return EShLangFragment;
-  }
-  return EShLangVertex;
 }
 
 std::string_view stageWord(EShLanguage l) {
@@ -277,7 +268,7 @@ bool compileAndLink(Target target, const std::vector<ShaderSource>& shaders, Lin
   out.shaders.reserve(shaders.size());
   bool compileOk = true;
   for (const ShaderSource& src : shaders) {
-    EShLanguage lang = toLanguage(src.stage);
+    EShLanguage lang = glslangStage(src.stage);
     auto sh = std::make_unique<glslang::TShader>(lang);
     const char* text = src.text.c_str();
     const int length = static_cast<int>(src.text.size());
@@ -334,7 +325,7 @@ std::optional<std::vector<std::vector<uint32_t>>> relaxedSpirv(const std::vector
   }
   std::vector<std::vector<uint32_t>> modules;
   for (const ShaderSource& src : shaders) {
-    const glslang::TIntermediate* im = linked.program.getIntermediate(toLanguage(src.stage));
+    const glslang::TIntermediate* im = linked.program.getIntermediate(glslangStage(src.stage));
     std::vector<unsigned int> words;
     spv::SpvBuildLogger logger;
     glslang::SpvOptions options;
@@ -370,7 +361,7 @@ ValidationResult validateShaders(Target target, const std::vector<ShaderSource>&
     std::map<EShLanguage, std::vector<uint32_t>> modules;
     spvtools::SpirvTools tools(SPV_ENV_VULKAN_1_0);
     for (const ShaderSource& src : shaders) {
-      EShLanguage lang = toLanguage(src.stage);
+      EShLanguage lang = glslangStage(src.stage);
       if (modules.count(lang)) continue;
       const glslang::TIntermediate* im = program.getIntermediate(lang);
       if (!im) {
@@ -402,7 +393,7 @@ ValidationResult validateShaders(Target target, const std::vector<ShaderSource>&
       modules.emplace(lang, std::move(module));
     }
     if (result.errors.empty())
-      for (const ShaderSource& src : shaders) result.spirv.push_back(modules[toLanguage(src.stage)]);
+      for (const ShaderSource& src : shaders) result.spirv.push_back(modules[glslangStage(src.stage)]);
   }
 
   result.ok = result.errors.empty();

@@ -1,6 +1,7 @@
 // MSL and HLSL from vk450 SPIR-V through SPIRV-Cross (Debian's spirv-cross 2021.01.15 /
 // SDK 1.3.239). See codegen/spirv_cross_targets.h and docs/ecosystem.md.
 #include "codegen/spirv_cross_targets.h"
+#include "codegen/glslang_stage.h"
 
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
@@ -25,16 +26,6 @@ spv::ExecutionModel executionModel(ShaderStage s) {
     case ShaderStage::Fragment: return spv::ExecutionModelFragment;
   }
   return spv::ExecutionModelVertex;
-}
-
-EShLanguage glslangLanguage(ShaderStage s) {
-  switch (s) {
-    case ShaderStage::Vertex: return EShLangVertex;
-    case ShaderStage::TessControl: return EShLangTessControl;
-    case ShaderStage::TessEvaluation: return EShLangTessEvaluation;
-    case ShaderStage::Fragment: return EShLangFragment;
-  }
-  return EShLangVertex;
 }
 
 std::string header(CrossTarget target, const std::string& sourceFile) {
@@ -117,7 +108,7 @@ std::string validateHlsl(const std::string& text, ShaderStage stage, const std::
                          const std::string& fileName) {
   static std::once_flag once;
   std::call_once(once, [] { glslang::InitializeProcess(); });
-  EShLanguage lang = glslangLanguage(stage);
+  EShLanguage lang = glslangStage(stage);
   glslang::TShader shader(lang);
   const char* strings[] = {text.c_str()};
   const int lengths[] = {static_cast<int>(text.size())};
