@@ -1,9 +1,11 @@
 // Edit-to-pixels: an editor changes one parameter default of a graph and waits for the
 // first frame drawn with the new shader. Each iteration: the edited file text is loaded,
 // compiled for the preview target (glslang validation included, as `watergraph compile`
-// does), the Renderer is rebuilt (shaders linked, targets created) and one frame is
-// rendered and finished on llvmpipe. The EGL context lives across iterations, as in an
-// editor. Wall time: llvmpipe renders on several threads.
+// does), the Renderer is rebuilt (targets created, programs linked or taken from the
+// editor's GpuCache) and one frame is rendered and finished on llvmpipe. The EGL context
+// lives across iterations, as in an editor. Wall time: llvmpipe renders on several threads.
+// Two variants per graph and size: `cached` rebuilds the way the editor does (one GpuCache
+// across edits), `relink` links every program again (the editor before the cache).
 //
 //   build/bin/wg_bench_edit [graph.json ...] --benchmark_repetitions=9 --benchmark_enable_random_interleaving=true
 //
@@ -21,6 +23,7 @@
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
+#include "runtime/gpu_cache.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
 #include "runtime/runtime_error.h"
@@ -60,12 +63,29 @@ std::string editedText(const EditCase& c, int iteration) {
   return wg::saveGraph(g);
 }
 
-void editToPixels(benchmark::State& state, EditCase* c, wg::rt::EglContext* context, int width, int height) {
+void editToPixels(benchmark::State& state, EditCase* c, wg::rt::EglContext* context, int width, int height,
+                  bool cached) {
+  wg::rt::GpuCache cache;
   wg::rt::RenderSettings settings;
   settings.width = width;
   settings.height = height;
   double loadMs = 0, compileMs = 0, rebuildMs = 0, frameMs = 0, steadyMs = 0;
   int iteration = 0;
+  {
+    // Untimed: the graph as it was before the edit, on screen, as in the editor.
+    wg::Diagnostics diags;
+    wg::CompileOptions options;
+    options.targets = {wg::Target::Glsl330};
+    auto before = wg::compileGraph(c->graph, wg::defaultRegistry(), options, diags);
+    if (!before) {
+      state.SkipWithError("the graph does not compile");
+      return;
+    }
+    wg::rt::Renderer shown(before->manifest, wg::rt::waterShaderSources(*before, wg::Target::Glsl330), settings,
+                           context->isEs(), wg::rt::textureOrigins(*before), cached ? &cache : nullptr);
+    shown.renderFrame();
+  }
+  const size_t linksBefore = cache.stats().programLinks;
   for (auto _ : state) {
     state.PauseTiming();
     std::string text = editedText(*c, iteration++);
@@ -90,7 +110,7 @@ void editToPixels(benchmark::State& state, EditCase* c, wg::rt::EglContext* cont
     compileMs += msSince(t1);
     auto t2 = Clock::now();
     wg::rt::Renderer renderer(result->manifest, wg::rt::waterShaderSources(*result, wg::Target::Glsl330), settings,
-                              context->isEs(), wg::rt::textureOrigins(*result));
+                              context->isEs(), wg::rt::textureOrigins(*result), cached ? &cache : nullptr);
     rebuildMs += msSince(t2);
     auto t3 = Clock::now();
     renderer.renderFrame();  // ends with glFinish: the pixels exist
@@ -107,6 +127,9 @@ void editToPixels(benchmark::State& state, EditCase* c, wg::rt::EglContext* cont
   state.counters["rebuild_ms"] = Counter(rebuildMs, Counter::kAvgIterations);
   state.counters["frame_ms"] = Counter(frameMs, Counter::kAvgIterations);
   state.counters["next_frame_ms"] = Counter(steadyMs, Counter::kAvgIterations);
+  // Programs linked per edit with the cache (0: every shader text was seen before).
+  if (cached)
+    state.counters["links"] = Counter(static_cast<double>(cache.stats().programLinks - linksBefore), Counter::kAvgIterations);
   state.SetLabel(c->edited() + " edited");
 }
 
@@ -148,12 +171,14 @@ int main(int argc, char** argv) {
       return 1;
     }
     std::string name = "edit_to_pixels/" + std::filesystem::path(path).stem().string();
-    for (auto [w, h] : {std::pair{1280, 720}, std::pair{640, 360}})
-      benchmark::RegisterBenchmark((name + "/" + std::to_string(w) + "x" + std::to_string(h)).c_str(), editToPixels,
-                                   c.get(), context.get(), w, h)
-          ->Unit(benchmark::kMillisecond)
-          ->UseRealTime()
-          ->MinTime(1.0);
+    for (bool cached : {true, false})
+      for (auto [w, h] : {std::pair{1280, 720}, std::pair{640, 360}})
+        benchmark::RegisterBenchmark(
+            (name + "/" + std::to_string(w) + "x" + std::to_string(h) + (cached ? "/cached" : "/relink")).c_str(),
+            editToPixels, c.get(), context.get(), w, h, cached)
+            ->Unit(benchmark::kMillisecond)
+            ->UseRealTime()
+            ->MinTime(1.0);
     cases.push_back(std::move(c));
   }
   benchmark::RunSpecifiedBenchmarks();

@@ -22,7 +22,7 @@ bool LivePreview::rebuild(const Graph& graph, const Registry& registry, Diagnost
   start = std::chrono::steady_clock::now();
   try {
     auto renderer = std::make_unique<rt::Renderer>(result->manifest, rt::waterShaderSources(*result, Target::Glsl330),
-                                                   settings_, false, rt::textureOrigins(*result));
+                                                   settings_, false, rt::textureOrigins(*result), &cache_);
     retired_ = std::move(renderer_);
     renderer_ = std::move(renderer);
   } catch (const rt::RuntimeError& e) {

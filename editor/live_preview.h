@@ -11,6 +11,7 @@
 #include "codegen/compile.h"
 #include "core/diagnostic.h"
 #include "core/graph.h"
+#include "runtime/gpu_cache.h"
 #include "runtime/renderer.h"
 
 namespace wg::editor {
@@ -45,6 +46,9 @@ class LivePreview {
 
  private:
   rt::RenderSettings settings_;
+  // Programs and node textures kept across rebuilds: an edit that changes no shader text
+  // (a parameter default, a colour) reuses the linked and JIT-compiled programs.
+  rt::GpuCache cache_;
   std::unique_ptr<rt::Renderer> renderer_, retired_;
   std::optional<CompileResult> compiled_;
 };

@@ -4,12 +4,14 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "codegen/shader_interface.h"
 #include "nodes/texture_source.h"
+#include "runtime/gpu_cache.h"
 #include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
 
@@ -99,6 +101,20 @@ std::vector<float> numbers(const nlohmann::json& v) {
   return out;
 }
 
+// A node texture's identity: the source and folder, and for a file its size and time of
+// last change (builtin:* sources are made in memory and never change).
+std::string textureCacheKey(const std::string& source, const std::string& dir) {
+  std::string key = source + '\n' + dir;
+  std::error_code ec;
+  std::filesystem::path file = std::filesystem::path(dir) / source;
+  auto size = std::filesystem::file_size(file, ec);
+  if (!ec) {
+    auto time = std::filesystem::last_write_time(file, ec);
+    if (!ec) key += '\n' + std::to_string(size) + '\n' + std::to_string(time.time_since_epoch().count());
+  }
+  return key;
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -110,7 +126,8 @@ struct Renderer::Impl {
   glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f};
   glm::vec3 sun{0.0f, 1.0f, 0.0f};
 
-  Program sky, opaque, water;
+  // Shared with a GpuCache when the Renderer was given one (identical texts, same object).
+  std::shared_ptr<const Program> sky, opaque, water;
   // Deferred water: `water` is the graph's fragment shader on a full-screen triangle and
   // this the graph's vertex shader writing the water G-buffer.
   bool deferred = false;
@@ -124,10 +141,10 @@ struct Renderer::Impl {
       glDrawElements(GL_TRIANGLES, waterMesh.indexCount, GL_UNSIGNED_INT, nullptr);
     }
   }
-  Program waterGbuffer;
+  std::shared_ptr<const Program> waterGbuffer;
   std::vector<GLuint> waterPrograms() const {
-    std::vector<GLuint> p{water.id()};
-    if (waterGbuffer) p.push_back(waterGbuffer.id());
+    std::vector<GLuint> p{water->id()};
+    if (waterGbuffer) p.push_back(waterGbuffer->id());
     return p;
   }
   GLint skyInverseVp = -1, skySun = -1;
@@ -142,7 +159,13 @@ struct Renderer::Impl {
     GLuint texture;
   };
   std::vector<Binding> waterBindings;
-  std::vector<Texture> nodeTextures;
+  std::vector<std::shared_ptr<const Texture>> nodeTextures;
+  GpuCache* cache = nullptr;  // not owned; may be null
+
+  std::shared_ptr<const Program> link(const std::vector<ShaderSource>& sources, const std::string& what) {
+    if (cache) return cache->program(sources, what);
+    return std::make_shared<const Program>(linkProgram(sources, what));
+  }
 
   GpuTarget* find(const char* name) {
     for (auto& t : targets)
@@ -207,19 +230,25 @@ struct Renderer::Impl {
   }
 
   // Uploads a node texture as the CPU reference samples it: RGBA8, GL_LINEAR, GL_REPEAT,
-  // no mipmaps, row 0 at v = 0.
-  Texture uploadNodeTexture(const std::string& sampler, const std::string& source,
-                            const std::map<std::string, TextureOrigin>& origins) {
+  // no mipmaps, row 0 at v = 0. Through the cache when there is one, keyed by the source,
+  // its folder and, for a file, its size and modification time: a PNG saved again while
+  // the editor runs is loaded again.
+  std::shared_ptr<const Texture> nodeTexture(const std::string& sampler, const std::string& source,
+                                             const std::map<std::string, TextureOrigin>& origins) {
     auto o = origins.find(source);
     std::string dir = o != origins.end() ? o->second.graphDir : ".";
     std::string owner = o != origins.end() ? o->second.owner : "texture " + sampler;
-    std::string why;
-    auto img = loadTexture(source, dir, &why);
-    if (!img || img->width <= 0 || img->height <= 0 ||
-        img->rgba.size() != static_cast<size_t>(img->width) * static_cast<size_t>(img->height) * 4)
-      throw RuntimeError(RuntimeError::Kind::Manifest,
-                         owner + ": texture '" + source + "' cannot be loaded: " + (why.empty() ? "no image data" : why));
-    return makeRepeatingRgba8Texture(img->width, img->height, img->rgba.data());
+    auto upload = [&] {
+      std::string why;
+      auto img = loadTexture(source, dir, &why);
+      if (!img || img->width <= 0 || img->height <= 0 ||
+          img->rgba.size() != static_cast<size_t>(img->width) * static_cast<size_t>(img->height) * 4)
+        throw RuntimeError(RuntimeError::Kind::Manifest,
+                           owner + ": texture '" + source + "' cannot be loaded: " + (why.empty() ? "no image data" : why));
+      return makeRepeatingRgba8Texture(img->width, img->height, img->rgba.data());
+    };
+    if (!cache) return std::make_shared<const Texture>(upload());
+    return cache->texture(textureCacheKey(source, dir), upload);
   }
 
   // A water uniform from the manifest: a graph parameter (its value kept here, so the
@@ -277,9 +306,21 @@ struct Renderer::Impl {
     }
   }
 
+  // Which texture unit each water sampler reads. Set again every frame, with the uniforms:
+  // a program from the GpuCache may be shared with another Renderer.
+  struct SamplerUnit {
+    GLuint program;
+    GLint location, unit;
+  };
+  std::vector<SamplerUnit> samplerUnits;
+
   // Every frame: the camera, time and sun may have changed since the last one.
   void applyUniforms() const {
     for (const auto& u : uniforms) setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);
+    for (const auto& s : samplerUnits) {
+      glUseProgram(s.program);
+      glUniform1i(s.location, s.unit);
+    }
   }
 
   void setupWaterUniforms(const nlohmann::json& manifest, const std::map<std::string, TextureOrigin>& origins) {
@@ -333,8 +374,8 @@ struct Renderer::Impl {
           texture = target->color ? target->color.id() : target->depth.id();
         } else if (t.contains("source")) {
           if (type != "sampler2D") manifestError("node texture " + name + " must be a sampler2D, not " + type);
-          nodeTextures.push_back(uploadNodeTexture(name, t.value("source", ""), origins));
-          texture = nodeTextures.back().id();
+          nodeTextures.push_back(nodeTexture(name, t.value("source", ""), origins));
+          texture = nodeTextures.back()->id();
         } else {
           manifestError("texture " + name + " has neither a \"source\" nor a \"resource\"");
         }
@@ -344,8 +385,9 @@ struct Renderer::Impl {
           if (loc < 0) continue;
           if (!used) waterBindings.push_back({nextUnit++, bindTarget, texture});
           used = true;
+          samplerUnits.push_back({program, loc, static_cast<GLint>(waterBindings.back().unit)});
           glUseProgram(program);
-          glUniform1i(loc, static_cast<GLint>(waterBindings.back().unit));
+          glUniform1i(loc, samplerUnits.back().unit);
         }
       }
     }
@@ -366,7 +408,7 @@ struct Renderer::Impl {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
-    glUseProgram(sky.id());
+    glUseProgram(sky->id());
     glm::mat4 inv = glm::inverse(vp);
     glUniformMatrix4fv(skyInverseVp, 1, GL_FALSE, glm::value_ptr(inv));
     glUniform3fv(skySun, 1, glm::value_ptr(sun));
@@ -378,7 +420,7 @@ struct Renderer::Impl {
   // Draws the opaque scene keeping the side where dot(plane, (p, 1)) >= 0.
   void drawOpaque(const glm::mat4& vp, const glm::vec4& plane) {
     if (!settings.scene.drawScene) return;
-    glUseProgram(opaque.id());
+    glUseProgram(opaque->id());
     glUniformMatrix4fv(opaqueVp, 1, GL_FALSE, glm::value_ptr(vp));
     glUniform4fv(opaqueClip, 1, glm::value_ptr(plane));
     glUniform3fv(opaqueSun, 1, glm::value_ptr(sun));
@@ -492,7 +534,7 @@ struct Renderer::Impl {
           const float surfaceClear[4] = {0, 0, 0, 1}, normalClear[4] = {0, 0, 0, 0};
           glClearBufferfv(GL_COLOR, 0, surfaceClear);
           glClearBufferfv(GL_COLOR, 1, normalClear);
-          glUseProgram(waterGbuffer.id());
+          glUseProgram(waterGbuffer->id());
           bindWaterTextures(true);
           glBindVertexArray(waterMesh.vao.id());
           drawWaterMesh();
@@ -505,7 +547,7 @@ struct Renderer::Impl {
           glEnable(GL_BLEND);
           // Colour blended by the water's alpha; the frame's alpha stays 1.
           glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-          glUseProgram(water.id());
+          glUseProgram(water->id());
           bindWaterTextures(true);
           if (deferred) {
             // Full-screen: every pixel is shaded by the graph (the underwater node's case 1
@@ -565,11 +607,12 @@ struct Renderer::Impl {
 };
 
 Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> waterSources, const RenderSettings& settings,
-                   bool es, const std::map<std::string, TextureOrigin>& origins)
+                   bool es, const std::map<std::string, TextureOrigin>& origins, GpuCache* cache)
     : impl_(std::make_unique<Impl>()) {
   Impl& r = *impl_;
   r.settings = settings;
   r.es = es;
+  r.cache = cache;
   auto cam = settings.customCamera ? settings.customCamera : cameraPreset(settings.camera);
   if (!cam) throw RuntimeError(RuntimeError::Kind::Manifest, "unknown camera preset '" + settings.camera + "'");
   r.aspect = static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1));
@@ -606,16 +649,16 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   if (!es) glEnable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // ES 3 cube maps are always seamless
 
   SceneShaderSources ss = sceneShaderSources(es);
-  r.sky = linkProgram({{GL_VERTEX_SHADER, "runtime sky.vert", ss.skyVertex}, {GL_FRAGMENT_SHADER, "runtime sky.frag", ss.skyFragment}},
+  r.sky = r.link({{GL_VERTEX_SHADER, "runtime sky.vert", ss.skyVertex}, {GL_FRAGMENT_SHADER, "runtime sky.frag", ss.skyFragment}},
                       "the runtime's sky pass");
-  r.skyInverseVp = glGetUniformLocation(r.sky.id(), "u_inverse_view_projection");
-  r.skySun = glGetUniformLocation(r.sky.id(), "u_sun_direction");
-  r.opaque = linkProgram({{GL_VERTEX_SHADER, "runtime opaque.vert", ss.opaqueVertex},
+  r.skyInverseVp = glGetUniformLocation(r.sky->id(), "u_inverse_view_projection");
+  r.skySun = glGetUniformLocation(r.sky->id(), "u_sun_direction");
+  r.opaque = r.link({{GL_VERTEX_SHADER, "runtime opaque.vert", ss.opaqueVertex},
                           {GL_FRAGMENT_SHADER, "runtime opaque.frag", ss.opaqueFragment}},
                          "the runtime's opaque scene");
-  r.opaqueVp = glGetUniformLocation(r.opaque.id(), "u_view_projection");
-  r.opaqueClip = glGetUniformLocation(r.opaque.id(), "u_clip_plane");
-  r.opaqueSun = glGetUniformLocation(r.opaque.id(), "u_sun_direction");
+  r.opaqueVp = glGetUniformLocation(r.opaque->id(), "u_view_projection");
+  r.opaqueClip = glGetUniformLocation(r.opaque->id(), "u_clip_plane");
+  r.opaqueSun = glGetUniformLocation(r.opaque->id(), "u_sun_direction");
   r.deferred = r.plan.runs(PassKind::DeferredWater);
   if (r.deferred) {
     // The graph's fragment shader runs full-screen; its other stages write the G-buffer.
@@ -623,10 +666,10 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
     std::vector<ShaderSource> gbuffer;
     for (const auto& src : waterSources) (src.stage == GL_FRAGMENT_SHADER ? fullscreen : gbuffer).push_back(src);
     gbuffer.push_back({GL_FRAGMENT_SHADER, "runtime water_gbuffer.frag", ss.waterGbufferFragment});
-    r.water = linkProgram(fullscreen, "the graph's deferred water pass (full-screen); glslang accepted it");
-    r.waterGbuffer = linkProgram(gbuffer, "the graph's water G-buffer; glslang accepted it");
+    r.water = r.link(fullscreen, "the graph's deferred water pass (full-screen); glslang accepted it");
+    r.waterGbuffer = r.link(gbuffer, "the graph's water G-buffer; glslang accepted it");
   } else {
-    r.water = linkProgram(waterSources, "the graph's water surface; glslang accepted it");
+    r.water = r.link(waterSources, "the graph's water surface; glslang accepted it");
   }
 
   r.sceneMesh = uploadMesh(buildSceneMesh(), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});

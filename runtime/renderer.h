@@ -19,6 +19,8 @@
 
 namespace wg::rt {
 
+class GpuCache;
+
 struct RenderSettings {
   int width = 1280, height = 720;
   std::string camera = "above";  // a camera preset name (scene.h)
@@ -56,8 +58,12 @@ class Renderer {
   // provide; Driver when the GL driver rejects a shader or a target is incomplete.
   // Node textures are loaded through wg::loadTexture (builtin:* or a PNG); `origins` maps
   // each manifest texture "source" to where it came from (missing: current folder).
+  // With a `cache` (used only while constructing), programs whose texts it has linked
+  // before and node textures it has uploaded are taken from it, not made again: an editor
+  // rebuilding the Renderer after each edit keeps the scene's programs, and the water's
+  // when only parameter values changed, with their machine code.
   Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> water, const RenderSettings& settings, bool es,
-           const std::map<std::string, TextureOrigin>& origins = {});
+           const std::map<std::string, TextureOrigin>& origins = {}, GpuCache* cache = nullptr);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
