@@ -206,7 +206,9 @@ TEST(FoldPass, DivisionByZeroStaysAnOperation) {
   EXPECT_TRUE(findOp(p, "all"));
   for (const auto& op : p.ops)
     for (const auto& in : op.inputs)
-      if (in.kind == ValueRef::Kind::Const) EXPECT_TRUE(in.constant.allFinite()) << op.nodeId;
+      if (in.kind == ValueRef::Kind::Const) {
+        EXPECT_TRUE(in.constant.allFinite()) << op.nodeId;
+      }
 }
 
 TEST(FoldPass, FiniteDivisionFolds) {

@@ -70,8 +70,12 @@ TEST(Tessellation, StagesPerTarget) {
 TEST(Tessellation, WavesRunInTheEvaluationStage) {
   CompileResult r = compile(wavesGraph("distance"));
   for (const auto& f : r.files) {
-    if (f.name == "tess.glsl330.tese") EXPECT_NE(f.contents.find("wg_gerstner"), std::string::npos);
-    if (f.name == "tess.glsl330.vert") EXPECT_EQ(f.contents.find("wg_gerstner"), std::string::npos);
+    if (f.name == "tess.glsl330.tese") {
+      EXPECT_NE(f.contents.find("wg_gerstner"), std::string::npos);
+    }
+    if (f.name == "tess.glsl330.vert") {
+      EXPECT_EQ(f.contents.find("wg_gerstner"), std::string::npos);
+    }
     if (f.name == "tess.glsl330.tesc") {
       EXPECT_NE(f.contents.find("#extension GL_ARB_tessellation_shader : require"), std::string::npos);
       EXPECT_NE(f.contents.find("wg_tess_distance_factor"), std::string::npos);
