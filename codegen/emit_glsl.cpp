@@ -612,6 +612,10 @@ class Emitter {
   EmittedShader finish(ShaderStage stage, const std::vector<std::pair<std::string, int>>& lines) const {
     EmittedShader shader;
     shader.stage = stage;
+    size_t bytes = 0;
+    for (const auto& line : lines) bytes += line.first.size() + 1;
+    shader.text.reserve(bytes);
+    shader.lineOp.reserve(lines.size());
     for (const auto& [text, op] : lines) {
       shader.text += text;
       shader.text += '\n';
@@ -720,14 +724,23 @@ class Emitter {
       add(qual + "uniform " + precision + std::string(typeName(t.type)) + " " + t.name + ";");
     }
     // Library functions this stage calls, dependencies first.
+    // Only lines that name a library item ("wg_"/"WG_" words) can call one: the scan
+    // reads those instead of a copy of the whole body.
+    auto callsLibrary = [](const std::string& l) {
+      return l.find("wg_") != std::string::npos || l.find("WG_") != std::string::npos;
+    };
     std::string code;
-    for (const auto& l : locals) code += l + "\n";
-    for (const auto& l : w.lines) code += l + "\n";
+    for (const auto& l : locals)
+      if (callsLibrary(l)) code.append(l).push_back('\n');
+    for (const auto& l : w.lines)
+      if (callsLibrary(l)) code.append(l).push_back('\n');
     addLibrary([&](std::string s) { add(std::move(s)); }, code, functions);
     add("");
     add("void main() {");
     for (const auto& l : locals) add("  " + l);
-    for (size_t i = 0; i < w.lines.size(); ++i) add(w.lines[i], w.lineOp[i]);
+    // The body moves into the shader: this stage is assembled once, and last.
+    out.reserve(out.size() + w.lines.size() + 1);
+    for (size_t i = 0; i < w.lines.size(); ++i) add(std::move(w.lines[i]), w.lineOp[i]);
     add("}");
 
     return finish(stage, out);
