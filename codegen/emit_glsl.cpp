@@ -91,8 +91,9 @@ struct StageWriter {
   std::set<int> parameters;
   std::set<std::string> builtinUniforms;
   // Op outputs whose expression is already a name (a builtin, another temporary): used
-  // directly instead of copying into a new local.
-  std::map<std::pair<int, int>, std::string> aliases;
+  // directly instead of copying into a new local. By the Emitter's port index ("" none; a
+  // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
+  std::vector<std::string> aliases;
 
   void line(std::string text, int op) {
     lines.push_back("  " + std::move(text));
@@ -131,7 +132,13 @@ class Emitter {
  public:
   Emitter(const Program& p, Target t, std::string sourceName, EmitMode mode, bool allowTessellation)
       : program_(p), target_(t), style_(styleOf(t)), sourceName_(std::move(sourceName)), probe_(mode == EmitMode::Probe) {
-    for (size_t i = 0; i < p.ops.size(); ++i) opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
+    opNames_.reserve(p.ops.size());
+    portBase_.reserve(p.ops.size() + 1);
+    portBase_.push_back(0);
+    for (size_t i = 0; i < p.ops.size(); ++i) {
+      opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
+      portBase_.push_back(portBase_.back() + p.ops[i].outputTypes.size());
+    }
     std::set<std::string> taken;
     for (const auto& param : p.parameters) {
       std::string name = "p_" + sanitiseIdentifier(param.name);
@@ -355,8 +362,8 @@ class Emitter {
   }
 
   std::string opOutput(const StageWriter& w, int op, int port) const {
-    auto alias = w.aliases.find({op, port});
-    if (alias != w.aliases.end()) return alias->second;
+    size_t at = portBase_[static_cast<size_t>(op)] + static_cast<size_t>(port);
+    if (at < w.aliases.size() && !w.aliases[at].empty()) return w.aliases[at];
     return tempName(op, port);
   }
   std::string tempName(int op, int port) const {
@@ -440,12 +447,10 @@ class Emitter {
  private:
   void emitOps(StageWriter& w) {
     // Which outputs of which ops this stage reads.
-    std::vector<std::vector<bool>> used(program_.ops.size());
+    std::vector<char> used(portBase_.back(), 0);  // by port index
     auto use = [&](const ValueRef& r) {
       if (r.kind != ValueRef::Kind::Op) return;
-      auto& u = used[static_cast<size_t>(r.index)];
-      if (u.empty()) u.assign(program_.ops[static_cast<size_t>(r.index)].outputTypes.size(), false);
-      u[static_cast<size_t>(r.port)] = true;
+      used[portBase_[static_cast<size_t>(r.index)] + static_cast<size_t>(r.port)] = 1;
     };
     for (size_t i = 0; i < program_.ops.size(); ++i)
       if (program_.ops[i].stage & w.stage)
@@ -464,12 +469,13 @@ class Emitter {
       ctx.outputs.assign(op.outputTypes.size(), "");
       op.spec->emit(ctx);
       for (size_t p = 0; p < op.outputTypes.size(); ++p) {
-        if (used[i].empty() || !used[i][p]) continue;
+        if (!used[portBase_[i] + p]) continue;
         if (ctx.outputs[p].empty())
           throw std::logic_error("node '" + op.spec->type + "' emitted no expression for output '" +
                                  op.spec->outputs[p].name + "'");
         if (isPlainName(ctx.outputs[p])) {
-          w.aliases[{static_cast<int>(i), static_cast<int>(p)}] = ctx.outputs[p];
+          if (w.aliases.empty()) w.aliases.resize(portBase_.back());
+          w.aliases[portBase_[i] + p] = std::move(ctx.outputs[p]);
           continue;
         }
         w.line(std::string(typeName(op.outputTypes[p])) + " " + tempName(static_cast<int>(i), static_cast<int>(p)) +
@@ -751,6 +757,7 @@ class Emitter {
   TargetStyle style_;
   std::string sourceName_;
   std::vector<std::string> opNames_;
+  std::vector<size_t> portBase_;  // op i's outputs are port indices portBase_[i] ... portBase_[i + 1] - 1
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
   bool probe_ = false;                        // EmitMode::Probe
@@ -772,7 +779,7 @@ Type OpEmitContext::outputType(int port) const {
   return e_.program().ops[static_cast<size_t>(opIndex_)].outputTypes.at(static_cast<size_t>(port));
 }
 const nlohmann::json& OpEmitContext::option(std::string_view name) const {
-  return e_.program().ops[static_cast<size_t>(opIndex_)].options.at(std::string(name));
+  return e_.program().ops[static_cast<size_t>(opIndex_)].options.at(name);  // no key string made
 }
 void OpEmitContext::output(int port, std::string expression) { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
 std::string OpEmitContext::builtin(Builtin b) { return e_.builtinExpr(w_, b); }
