@@ -202,9 +202,13 @@ class Resolver {
     std::vector<std::vector<int>> users(n);
     std::vector<int> pending(n, 0);
     std::vector<std::vector<int>> deps(n);
+    inputBase_.assign(n + 1, 0);
+    for (size_t i = 0; i < n; ++i) inputBase_[i + 1] = inputBase_[i] + graph_.nodes[i].inputs.size();
+    inputNode_.assign(inputBase_[n], -1);
     for (size_t i = 0; i < n; ++i) {
       const Node& node = graph_.nodes[i];
-      for (const auto& in : node.inputs) {
+      for (size_t k = 0; k < node.inputs.size(); ++k) {
+        const NodeInput& in = node.inputs[k];
         if (in.source.kind == InputSource::Kind::Parameter) {
           if (!paramIndex_.count(in.source.parameter)) {
             std::vector<std::string> names;
@@ -218,6 +222,7 @@ class Resolver {
         if (in.source.kind != InputSource::Kind::NodeOutput) continue;
         int dep = referencedNode(in.source, node.id, [&] { return inputLabel(in.port); });
         if (dep < 0) continue;
+        inputNode_[inputBase_[i] + k] = dep;
         if (static_cast<size_t>(dep) == i) {
           diags_.error(DiagCode::Cycle, in.source.where, "node '" + node.id + "' refers to itself", node.id,
                        inputLabel(in.port));
@@ -278,8 +283,9 @@ class Resolver {
     diags_.error(DiagCode::Cycle, at.where, "the nodes form a cycle: " + path, at.id);
   }
 
-  // The type a source provides, or Invalid after reporting.
-  std::optional<ValueRef> sourceRef(const InputSource& s) {
+  // The type a source provides, or Invalid after reporting. `node`: the node index of a
+  // NodeOutput source when already known (-1: look it up by id).
+  std::optional<ValueRef> sourceRef(const InputSource& s, int node = -1) {
     switch (s.kind) {
       case InputSource::Kind::Literal: return ValueRef::constant_(literalValue(s.literal));
       case InputSource::Kind::Parameter: {
@@ -288,9 +294,12 @@ class Resolver {
         return ValueRef::param(it->second);
       }
       case InputSource::Kind::NodeOutput: {
-        auto it = nodeIndex_.find(s.node);
-        if (it == nodeIndex_.end()) return std::nullopt;
-        int opIndex = opOfNode_[static_cast<size_t>(it->second)];
+        if (node < 0) {
+          auto it = nodeIndex_.find(s.node);
+          if (it == nodeIndex_.end()) return std::nullopt;
+          node = it->second;
+        }
+        int opIndex = opOfNode_[static_cast<size_t>(node)];
         if (opIndex < 0) return std::nullopt;
         const Op& op = program_.ops[static_cast<size_t>(opIndex)];
         int port = op.spec->outputIndex(s.port);
@@ -334,11 +343,13 @@ class Resolver {
       std::vector<Type> sourceTypes(nin, Type::Invalid);
       std::vector<const NodeInput*> given(nin, nullptr);
       bool ok = true;
-      for (const auto& in : node.inputs) {
+      for (size_t k = 0; k < node.inputs.size(); ++k) {
+        const NodeInput& in = node.inputs[k];
         int pi = spec->inputIndex(in.port);
         if (pi < 0) continue;
         given[static_cast<size_t>(pi)] = &in;
-        auto ref = sourceRef(in.source);
+        // The referenced node was found by id once, in topologicalOrder.
+        auto ref = sourceRef(in.source, inputNode_[inputBase_[static_cast<size_t>(ni)] + k]);
         if (!ref) {
           ok = false;  // already reported (dangling, unknown parameter, bad upstream node)
           continue;
@@ -437,6 +448,9 @@ class Resolver {
   std::unordered_map<std::string, int> nodeIndex_;
   std::unordered_map<std::string, int> paramIndex_;
   std::vector<int> opOfNode_;  // by node index: its op, or -1
+  // Node i's inputs[k] reads node inputNode_[inputBase_[i] + k] (-1: not a node output).
+  std::vector<size_t> inputBase_;
+  std::vector<int> inputNode_;
 };
 
 }  // namespace
