@@ -95,9 +95,11 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
   bool ok = true;
   std::vector<std::pair<Target, EmitResult>> emitted;
-  for (Target target : options.targets) {
-    EmitResult er = emitProgram(*program, target, sourceName.empty() ? graph.name : sourceName, EmitMode::Shader,
-                                options.tessellation);
+  std::vector<EmitResult> emits =
+      emitPrograms(*program, options.targets, sourceName.empty() ? graph.name : sourceName, options.tessellation);
+  for (size_t ti = 0; ti < options.targets.size(); ++ti) {
+    Target target = options.targets[ti];
+    EmitResult er = std::move(emits[ti]);
     // The text moves into `sources` and from there into the result (a big graph's shaders
     // are megabytes); what stays in `er` (stages, line map, interface) is all the manifest
     // and the validation messages read.

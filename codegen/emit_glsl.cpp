@@ -146,11 +146,7 @@ class Emitter {
       taken.insert(name);
       paramNames_.push_back(name);
     }
-    // Tessellation: asked for by a vertex-stage node; GLSL ES 3.00 has no such stages.
-    if (t != Target::Es300 && !probe_ && allowTessellation)
-      for (const auto& op : p.ops)
-        if ((op.stage & kVertexStage) && op.spec->tessellation && !tess_)
-          tess_ = op.spec->tessellation(op.options);
+    if (!probe_) tess_ = tessellationFor(p, t, allowTessellation);
     // Deferred water: an op reads the "underwater" resource, so the fragment shader runs as
     // a full-screen pass that takes the surface builtins from the water G-buffer.
     for (const auto& op : p.ops)
@@ -163,9 +159,32 @@ class Emitter {
     }
   }
 
+  // Tessellation: asked for by a vertex-stage node; GLSL ES 3.00 has no such stages.
+  static std::optional<TessellationSettings> tessellationFor(const Program& p, Target t, bool allowTessellation) {
+    std::optional<TessellationSettings> tess;
+    if (t != Target::Es300 && allowTessellation)
+      for (const auto& op : p.ops)
+        if ((op.stage & kVertexStage) && op.spec->tessellation && !tess) tess = op.spec->tessellation(op.options);
+    return tess;
+  }
+
   EmitResult run() {
     if (probe_) return runProbe();
-    StageWriter frag;
+    prepare();
+    return assembleFor(true);
+  }
+
+  // Another target with the same tessellation: the stage bodies and the interface depend
+  // on nothing else, so only the assembly (version, qualifiers, layouts) runs again.
+  void retarget(Target t) {
+    target_ = t;
+    style_ = styleOf(t);
+  }
+
+  // The stage bodies and the interface (what no target's style changes).
+  void prepare() {
+    StageWriter& frag = frag_;
+    StageWriter& vert = vert_;
     frag.stage = kFragmentStage;
     emitOps(frag);
     std::string color = outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
@@ -173,7 +192,6 @@ class Emitter {
     frag.line(std::string(iface::kColorOutput) + " = vec4(" + color + ", " + alpha + ");", -1);
     if (deferred_) prepareDeferredFragment(frag);
 
-    StageWriter vert;
     vert.stage = kVertexStage;
     emitOps(vert);
     // What the fragment stage reads from the vertex stage.
@@ -205,7 +223,7 @@ class Emitter {
     }
 
     // Interface.
-    EmitResult result;
+    EmitResult& result = io_;
     result.attributes.push_back({iface::kPositionAttribute, Type::Vec3, iface::kPositionLocation});
     if (vert.builtins.count(Builtin::Normal))
       result.attributes.push_back({iface::kNormalAttribute, Type::Vec3, iface::kNormalLocation});
@@ -231,7 +249,15 @@ class Emitter {
     }
 
     assignSamplers(result);
+  }
 
+  // The shaders for the current target from what prepare() made. `last`: the bodies may
+  // move into the shaders (no later target reads them).
+  EmitResult assembleFor(bool last) {
+    EmitResult result = io_;
+    moveBody_ = last;
+    StageWriter& frag = frag_;
+    StageWriter& vert = vert_;
     std::set<std::string> functions;
     if (tess_) {
       result.shaders.push_back(tessVertexShader(vert, result, functions));
@@ -272,6 +298,7 @@ class Emitter {
         result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", kFragmentStage});
     assignSamplers(result);
     std::set<std::string> functions;
+    moveBody_ = true;
     result.shaders.push_back(assemble(ShaderStage::Fragment, frag, result, functions));
     for (const auto& item : GlslLibrary::builtin().items())
       if (functions.count(item.name)) result.functions.push_back(item.name);
@@ -744,9 +771,9 @@ class Emitter {
     add("");
     add("void main() {");
     for (const auto& l : locals) add("  " + l);
-    // The body moves into the shader: this stage is assembled once, and last.
+    // The body moves into the shader when no later target assembles it again.
     out.reserve(out.size() + w.lines.size() + 1);
-    for (size_t i = 0; i < w.lines.size(); ++i) add(std::move(w.lines[i]), w.lineOp[i]);
+    for (size_t i = 0; i < w.lines.size(); ++i) add(moveBody_ ? std::move(w.lines[i]) : w.lines[i], w.lineOp[i]);
     add("}");
 
     return finish(stage, out);
@@ -766,6 +793,9 @@ class Emitter {
   std::vector<UniformInfo> phases_;         // time phases, by first use
   std::vector<TextureInfo> textures_;       // node textures, by first use
   std::vector<TextureInfo> sceneTextures_;  // scene resources, by first use (sorted later)
+  StageWriter frag_, vert_;  // prepare(): the stage bodies
+  EmitResult io_;            // prepare(): the interface, no shaders yet
+  bool moveBody_ = false;    // assembleFor(last)
 };
 
 std::string OpEmitContext::input(int port) {
@@ -821,6 +851,28 @@ std::string sanitiseIdentifier(std::string_view id) {
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName, EmitMode mode,
                        bool allowTessellation) {
   return Emitter(program, target, sourceName, mode, allowTessellation).run();
+}
+
+std::vector<EmitResult> emitPrograms(const Program& program, const std::vector<Target>& targets,
+                                     const std::string& sourceName, bool allowTessellation) {
+  std::vector<EmitResult> out(targets.size());
+  std::vector<bool> done(targets.size(), false);
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (done[i]) continue;
+    bool tess = Emitter::tessellationFor(program, targets[i], allowTessellation).has_value();
+    std::vector<size_t> group;
+    for (size_t j = i; j < targets.size(); ++j)
+      if (!done[j] && Emitter::tessellationFor(program, targets[j], allowTessellation).has_value() == tess)
+        group.push_back(j);
+    Emitter e(program, targets[i], sourceName, EmitMode::Shader, allowTessellation);
+    e.prepare();
+    for (size_t k = 0; k < group.size(); ++k) {
+      e.retarget(targets[group[k]]);
+      out[group[k]] = e.assembleFor(k + 1 == group.size());
+      done[group[k]] = true;
+    }
+  }
+  return out;
 }
 
 }  // namespace wg
