@@ -95,13 +95,20 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
   bool ok = true;
   std::vector<std::pair<Target, EmitResult>> emitted;
-  for (Target target : options.targets) {
-    EmitResult er = emitProgram(*program, target, sourceName.empty() ? graph.name : sourceName, EmitMode::Shader,
-                                options.tessellation);
+  std::vector<EmitResult> emits =
+      emitPrograms(*program, options.targets, sourceName.empty() ? graph.name : sourceName, options.tessellation);
+  for (size_t ti = 0; ti < options.targets.size(); ++ti) {
+    Target target = options.targets[ti];
+    EmitResult er = std::move(emits[ti]);
+    // The text moves into `sources` and from there into the result (a big graph's shaders
+    // are megabytes); what stays in `er` (stages, line map, interface) is all the manifest
+    // and the validation messages read.
     std::vector<ShaderSource> sources;
-    for (const auto& sh : er.shaders)
-      sources.push_back({sh.stage, base + "." + std::string(targetName(target)) + "." + std::string(stageExtension(sh.stage)), sh.text});
-    for (const auto& src : sources) result.files.push_back({src.fileName, src.text});
+    for (auto& sh : er.shaders)
+      sources.push_back({sh.stage, base + "." + std::string(targetName(target)) + "." + std::string(stageExtension(sh.stage)),
+                         std::move(sh.text)});
+    const size_t firstFile = result.files.size();
+    for (const auto& src : sources) result.files.push_back({src.fileName, std::string()});
     if (options.validate) {
       ValidationResult vr = validateShaders(target, sources);
       if (!vr.ok) {
@@ -113,6 +120,7 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
           result.files.push_back({sources[s].fileName + ".spv", spirvBytes(vr.spirv[s])});
       }
     }
+    for (size_t s = 0; s < sources.size(); ++s) result.files[firstFile + s].contents = std::move(sources[s].text);
     emitted.emplace_back(target, std::move(er));
   }
   if (!ok) return std::nullopt;

@@ -91,8 +91,9 @@ struct StageWriter {
   std::set<int> parameters;
   std::set<std::string> builtinUniforms;
   // Op outputs whose expression is already a name (a builtin, another temporary): used
-  // directly instead of copying into a new local.
-  std::map<std::pair<int, int>, std::string> aliases;
+  // directly instead of copying into a new local. By the Emitter's port index ("" none; a
+  // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
+  std::vector<std::string> aliases;
 
   void line(std::string text, int op) {
     lines.push_back("  " + std::move(text));
@@ -131,7 +132,13 @@ class Emitter {
  public:
   Emitter(const Program& p, Target t, std::string sourceName, EmitMode mode, bool allowTessellation)
       : program_(p), target_(t), style_(styleOf(t)), sourceName_(std::move(sourceName)), probe_(mode == EmitMode::Probe) {
-    for (size_t i = 0; i < p.ops.size(); ++i) opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
+    opNames_.reserve(p.ops.size());
+    portBase_.reserve(p.ops.size() + 1);
+    portBase_.push_back(0);
+    for (size_t i = 0; i < p.ops.size(); ++i) {
+      opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
+      portBase_.push_back(portBase_.back() + p.ops[i].outputTypes.size());
+    }
     std::set<std::string> taken;
     for (const auto& param : p.parameters) {
       std::string name = "p_" + sanitiseIdentifier(param.name);
@@ -139,11 +146,7 @@ class Emitter {
       taken.insert(name);
       paramNames_.push_back(name);
     }
-    // Tessellation: asked for by a vertex-stage node; GLSL ES 3.00 has no such stages.
-    if (t != Target::Es300 && !probe_ && allowTessellation)
-      for (const auto& op : p.ops)
-        if ((op.stage & kVertexStage) && op.spec->tessellation && !tess_)
-          tess_ = op.spec->tessellation(op.options);
+    if (!probe_) tess_ = tessellationFor(p, t, allowTessellation);
     // Deferred water: an op reads the "underwater" resource, so the fragment shader runs as
     // a full-screen pass that takes the surface builtins from the water G-buffer.
     for (const auto& op : p.ops)
@@ -156,9 +159,32 @@ class Emitter {
     }
   }
 
+  // Tessellation: asked for by a vertex-stage node; GLSL ES 3.00 has no such stages.
+  static std::optional<TessellationSettings> tessellationFor(const Program& p, Target t, bool allowTessellation) {
+    std::optional<TessellationSettings> tess;
+    if (t != Target::Es300 && allowTessellation)
+      for (const auto& op : p.ops)
+        if ((op.stage & kVertexStage) && op.spec->tessellation && !tess) tess = op.spec->tessellation(op.options);
+    return tess;
+  }
+
   EmitResult run() {
     if (probe_) return runProbe();
-    StageWriter frag;
+    prepare();
+    return assembleFor(true);
+  }
+
+  // Another target with the same tessellation: the stage bodies and the interface depend
+  // on nothing else, so only the assembly (version, qualifiers, layouts) runs again.
+  void retarget(Target t) {
+    target_ = t;
+    style_ = styleOf(t);
+  }
+
+  // The stage bodies and the interface (what no target's style changes).
+  void prepare() {
+    StageWriter& frag = frag_;
+    StageWriter& vert = vert_;
     frag.stage = kFragmentStage;
     emitOps(frag);
     std::string color = outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
@@ -166,7 +192,6 @@ class Emitter {
     frag.line(std::string(iface::kColorOutput) + " = vec4(" + color + ", " + alpha + ");", -1);
     if (deferred_) prepareDeferredFragment(frag);
 
-    StageWriter vert;
     vert.stage = kVertexStage;
     emitOps(vert);
     // What the fragment stage reads from the vertex stage.
@@ -198,7 +223,7 @@ class Emitter {
     }
 
     // Interface.
-    EmitResult result;
+    EmitResult& result = io_;
     result.attributes.push_back({iface::kPositionAttribute, Type::Vec3, iface::kPositionLocation});
     if (vert.builtins.count(Builtin::Normal))
       result.attributes.push_back({iface::kNormalAttribute, Type::Vec3, iface::kNormalLocation});
@@ -224,7 +249,15 @@ class Emitter {
     }
 
     assignSamplers(result);
+  }
 
+  // The shaders for the current target from what prepare() made. `last`: the bodies may
+  // move into the shaders (no later target reads them).
+  EmitResult assembleFor(bool last) {
+    EmitResult result = io_;
+    moveBody_ = last;
+    StageWriter& frag = frag_;
+    StageWriter& vert = vert_;
     std::set<std::string> functions;
     if (tess_) {
       result.shaders.push_back(tessVertexShader(vert, result, functions));
@@ -265,6 +298,7 @@ class Emitter {
         result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", kFragmentStage});
     assignSamplers(result);
     std::set<std::string> functions;
+    moveBody_ = true;
     result.shaders.push_back(assemble(ShaderStage::Fragment, frag, result, functions));
     for (const auto& item : GlslLibrary::builtin().items())
       if (functions.count(item.name)) result.functions.push_back(item.name);
@@ -355,8 +389,8 @@ class Emitter {
   }
 
   std::string opOutput(const StageWriter& w, int op, int port) const {
-    auto alias = w.aliases.find({op, port});
-    if (alias != w.aliases.end()) return alias->second;
+    size_t at = portBase_[static_cast<size_t>(op)] + static_cast<size_t>(port);
+    if (at < w.aliases.size() && !w.aliases[at].empty()) return w.aliases[at];
     return tempName(op, port);
   }
   std::string tempName(int op, int port) const {
@@ -440,12 +474,10 @@ class Emitter {
  private:
   void emitOps(StageWriter& w) {
     // Which outputs of which ops this stage reads.
-    std::vector<std::vector<bool>> used(program_.ops.size());
+    std::vector<char> used(portBase_.back(), 0);  // by port index
     auto use = [&](const ValueRef& r) {
       if (r.kind != ValueRef::Kind::Op) return;
-      auto& u = used[static_cast<size_t>(r.index)];
-      if (u.empty()) u.assign(program_.ops[static_cast<size_t>(r.index)].outputTypes.size(), false);
-      u[static_cast<size_t>(r.port)] = true;
+      used[portBase_[static_cast<size_t>(r.index)] + static_cast<size_t>(r.port)] = 1;
     };
     for (size_t i = 0; i < program_.ops.size(); ++i)
       if (program_.ops[i].stage & w.stage)
@@ -464,12 +496,13 @@ class Emitter {
       ctx.outputs.assign(op.outputTypes.size(), "");
       op.spec->emit(ctx);
       for (size_t p = 0; p < op.outputTypes.size(); ++p) {
-        if (used[i].empty() || !used[i][p]) continue;
+        if (!used[portBase_[i] + p]) continue;
         if (ctx.outputs[p].empty())
           throw std::logic_error("node '" + op.spec->type + "' emitted no expression for output '" +
                                  op.spec->outputs[p].name + "'");
         if (isPlainName(ctx.outputs[p])) {
-          w.aliases[{static_cast<int>(i), static_cast<int>(p)}] = ctx.outputs[p];
+          if (w.aliases.empty()) w.aliases.resize(portBase_.back());
+          w.aliases[portBase_[i] + p] = std::move(ctx.outputs[p]);
           continue;
         }
         w.line(std::string(typeName(op.outputTypes[p])) + " " + tempName(static_cast<int>(i), static_cast<int>(p)) +
@@ -612,6 +645,10 @@ class Emitter {
   EmittedShader finish(ShaderStage stage, const std::vector<std::pair<std::string, int>>& lines) const {
     EmittedShader shader;
     shader.stage = stage;
+    size_t bytes = 0;
+    for (const auto& line : lines) bytes += line.first.size() + 1;
+    shader.text.reserve(bytes);
+    shader.lineOp.reserve(lines.size());
     for (const auto& [text, op] : lines) {
       shader.text += text;
       shader.text += '\n';
@@ -720,14 +757,23 @@ class Emitter {
       add(qual + "uniform " + precision + std::string(typeName(t.type)) + " " + t.name + ";");
     }
     // Library functions this stage calls, dependencies first.
+    // Only lines that name a library item ("wg_"/"WG_" words) can call one: the scan
+    // reads those instead of a copy of the whole body.
+    auto callsLibrary = [](const std::string& l) {
+      return l.find("wg_") != std::string::npos || l.find("WG_") != std::string::npos;
+    };
     std::string code;
-    for (const auto& l : locals) code += l + "\n";
-    for (const auto& l : w.lines) code += l + "\n";
+    for (const auto& l : locals)
+      if (callsLibrary(l)) code.append(l).push_back('\n');
+    for (const auto& l : w.lines)
+      if (callsLibrary(l)) code.append(l).push_back('\n');
     addLibrary([&](std::string s) { add(std::move(s)); }, code, functions);
     add("");
     add("void main() {");
     for (const auto& l : locals) add("  " + l);
-    for (size_t i = 0; i < w.lines.size(); ++i) add(w.lines[i], w.lineOp[i]);
+    // The body moves into the shader when no later target assembles it again.
+    out.reserve(out.size() + w.lines.size() + 1);
+    for (size_t i = 0; i < w.lines.size(); ++i) add(moveBody_ ? std::move(w.lines[i]) : w.lines[i], w.lineOp[i]);
     add("}");
 
     return finish(stage, out);
@@ -738,6 +784,7 @@ class Emitter {
   TargetStyle style_;
   std::string sourceName_;
   std::vector<std::string> opNames_;
+  std::vector<size_t> portBase_;  // op i's outputs are port indices portBase_[i] ... portBase_[i + 1] - 1
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
   bool probe_ = false;                        // EmitMode::Probe
@@ -746,6 +793,9 @@ class Emitter {
   std::vector<UniformInfo> phases_;         // time phases, by first use
   std::vector<TextureInfo> textures_;       // node textures, by first use
   std::vector<TextureInfo> sceneTextures_;  // scene resources, by first use (sorted later)
+  StageWriter frag_, vert_;  // prepare(): the stage bodies
+  EmitResult io_;            // prepare(): the interface, no shaders yet
+  bool moveBody_ = false;    // assembleFor(last)
 };
 
 std::string OpEmitContext::input(int port) {
@@ -759,7 +809,7 @@ Type OpEmitContext::outputType(int port) const {
   return e_.program().ops[static_cast<size_t>(opIndex_)].outputTypes.at(static_cast<size_t>(port));
 }
 const nlohmann::json& OpEmitContext::option(std::string_view name) const {
-  return e_.program().ops[static_cast<size_t>(opIndex_)].options.at(std::string(name));
+  return e_.program().ops[static_cast<size_t>(opIndex_)].options.at(name);  // no key string made
 }
 void OpEmitContext::output(int port, std::string expression) { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
 std::string OpEmitContext::builtin(Builtin b) { return e_.builtinExpr(w_, b); }
@@ -801,6 +851,28 @@ std::string sanitiseIdentifier(std::string_view id) {
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName, EmitMode mode,
                        bool allowTessellation) {
   return Emitter(program, target, sourceName, mode, allowTessellation).run();
+}
+
+std::vector<EmitResult> emitPrograms(const Program& program, const std::vector<Target>& targets,
+                                     const std::string& sourceName, bool allowTessellation) {
+  std::vector<EmitResult> out(targets.size());
+  std::vector<bool> done(targets.size(), false);
+  for (size_t i = 0; i < targets.size(); ++i) {
+    if (done[i]) continue;
+    bool tess = Emitter::tessellationFor(program, targets[i], allowTessellation).has_value();
+    std::vector<size_t> group;
+    for (size_t j = i; j < targets.size(); ++j)
+      if (!done[j] && Emitter::tessellationFor(program, targets[j], allowTessellation).has_value() == tess)
+        group.push_back(j);
+    Emitter e(program, targets[i], sourceName, EmitMode::Shader, allowTessellation);
+    e.prepare();
+    for (size_t k = 0; k < group.size(); ++k) {
+      e.retarget(targets[group[k]]);
+      out[group[k]] = e.assembleFor(k + 1 == group.size());
+      done[group[k]] = true;
+    }
+  }
+  return out;
 }
 
 }  // namespace wg

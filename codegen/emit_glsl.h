@@ -73,6 +73,12 @@ enum class EmitMode { Shader, Probe };
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName,
                        EmitMode mode = EmitMode::Shader, bool allowTessellation = true);
 
+// The same as emitProgram per target (EmitMode::Shader), each result byte-identical to
+// it, with the stage bodies written once for all targets that tessellate alike (the
+// bodies do not depend on the GLSL dialect; only the declarations around them do).
+std::vector<EmitResult> emitPrograms(const Program& program, const std::vector<Target>& targets,
+                                     const std::string& sourceName, bool allowTessellation = true);
+
 // A graph identifier made safe as part of a GLSL name: [A-Za-z0-9_] only, no "__",
 // at most 24 characters.
 std::string sanitiseIdentifier(std::string_view id);

@@ -2,6 +2,7 @@
 
 #include <set>
 #include <stdexcept>
+#include <utility>
 
 namespace wg {
 namespace {
@@ -72,9 +73,9 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
       t[ext] = prefix + ext;
       if (target == Target::Vk450) t[ext + ".spv"] = prefix + ext + ".spv";
     }
-    targets[std::string(targetName(target))] = t;
+    targets[std::string(targetName(target))] = std::move(t);
   }
-  m["targets"] = targets;
+  m["targets"] = std::move(targets);
 
   // The interface is the same for every target (names, order); take it from the first.
   if (!emitted.empty()) {
@@ -82,7 +83,7 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
     nlohmann::json attributes = nlohmann::json::array();
     for (const auto& a : er.attributes)
       attributes.push_back({{"name", a.name}, {"type", std::string(typeName(a.type))}, {"location", a.location}});
-    m["attributes"] = attributes;
+    m["attributes"] = std::move(attributes);
     nlohmann::json uniforms = nlohmann::json::array();
     for (const auto& u : er.uniforms) {
       nlohmann::json j{{"name", u.name}, {"type", std::string(typeName(u.type))}, {"stages", stagesJson(u.stages)}};
@@ -98,13 +99,13 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
         j["builtin"] = u.builtin;
         if (u.builtin == "time_phase") j["angular_frequency"] = u.omega;
       }
-      uniforms.push_back(j);
+      uniforms.push_back(std::move(j));
     }
-    m["uniforms"] = uniforms;
+    m["uniforms"] = std::move(uniforms);
     nlohmann::json varyings = nlohmann::json::array();
     for (const auto& v : er.varyings)
       varyings.push_back({{"name", v.name}, {"type", std::string(typeName(v.type))}, {"carries", v.carries}});
-    m["varyings"] = varyings;
+    m["varyings"] = std::move(varyings);
     m["functions"] = er.functions;
     nlohmann::json textures = nlohmann::json::array();
     for (const auto& t : er.textures) {
@@ -112,9 +113,9 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
                        {"stages", stagesJson(t.stages)}};
       if (!t.source.empty()) j["source"] = t.source;
       if (!t.resource.empty()) j["resource"] = t.resource;
-      textures.push_back(j);
+      textures.push_back(std::move(j));
     }
-    m["textures"] = textures;
+    m["textures"] = std::move(textures);
   }
   // Tessellation, per target (GLSL ES 3.00 has none: es300 draws the mesh as it is).
   for (const auto& [target, er] : emitted)
@@ -134,11 +135,15 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
   for (const auto& op : program.ops) {
     nlohmann::json k{{"node", op.nodeId}, {"type", op.spec->type}, {"stages", stagesJson(op.stage)}};
     if (!op.mergedIds.empty()) k["merged"] = op.mergedIds;
-    kept.push_back(k);
+    kept.push_back(std::move(k));
   }
   nlohmann::json removed = nlohmann::json::array();
   for (const auto& r : program.removed) removed.push_back({{"what", r.what}, {"reason", r.reason}});
-  m["nodes"] = {{"total", program.totalNodes}, {"kept", kept}, {"removed", removed}};
+  // Moved in, not copied: an initializer list would copy both arrays (one object per op).
+  nlohmann::json& nodes = m["nodes"];
+  nodes["total"] = program.totalNodes;
+  nodes["kept"] = std::move(kept);
+  nodes["removed"] = std::move(removed);
   return m;
 }
 

@@ -72,8 +72,8 @@ class Loader {
                    "the graph must be a JSON object, found " + jsonTypeName(root));
       return std::nullopt;
     }
-    std::string pointer;
-    checkLimits(root, pointer);
+    std::vector<PathStep> path;
+    checkLimits(root, path);
 
     checkKeys(root, "", "the graph",
               {"$schema", "version", "name", "description", "parameters", "presets", "nodes", "outputs"});
@@ -116,41 +116,52 @@ class Loader {
   }
 
  private:
-  // Every string (and key) within the length limit, every number finite float32. `ptr` is
-  // one buffer extended and cut back on the way down, not a new string per value.
-  void checkLimits(const json& v, std::string& ptr) {
+  // One step of the way down to a value: an object member's key, or an array index.
+  struct PathStep {
+    const std::string* key = nullptr;
+    std::size_t index = 0;
+  };
+  static std::string pointerOf(const std::vector<PathStep>& path) {
+    std::string ptr;
+    for (const auto& step : path) {
+      ptr += '/';
+      ptr += step.key ? jsonPointerEscape(*step.key) : std::to_string(step.index);
+    }
+    return ptr;
+  }
+
+  // Every string (and key) within the length limit, every number finite float32. The JSON
+  // pointer is made only for a value that breaks a limit (making one per value was a
+  // tenth of a load).
+  void checkLimits(const json& v, std::vector<PathStep>& path) {
     if (v.is_string()) {
       const auto& s = v.get_ref<const std::string&>();
       if (s.size() > kMaxStringBytes)
-        diags_.error(DiagCode::LimitExceeded, js_.value(ptr),
+        diags_.error(DiagCode::LimitExceeded, js_.value(pointerOf(path)),
                      "string of " + std::to_string(s.size()) + " bytes is longer than the limit of " +
                          std::to_string(kMaxStringBytes));
     } else if (v.is_number_float()) {
       double x = v.get<double>();
       if (!std::isfinite(x) || std::fabs(x) > kFloat32Max)
-        diags_.error(DiagCode::NonFiniteLiteral, js_.value(ptr),
+        diags_.error(DiagCode::NonFiniteLiteral, js_.value(pointerOf(path)),
                      "number " + formatNumber(x) + " is outside float32 range");
     } else if (v.is_number_integer()) {
       // 64-bit integers are far inside float32's range (about 3.4e38).
     } else if (v.is_array()) {
-      const size_t len = ptr.size();
       for (std::size_t i = 0; i < v.size(); ++i) {
-        ptr += '/';
-        ptr += std::to_string(i);
-        checkLimits(v[i], ptr);
-        ptr.resize(len);
+        path.push_back({nullptr, i});
+        checkLimits(v[i], path);
+        path.pop_back();
       }
     } else if (v.is_object()) {
-      const size_t len = ptr.size();
       for (auto it = v.begin(); it != v.end(); ++it) {
-        ptr += '/';
-        ptr += jsonPointerEscape(it.key());
+        path.push_back({&it.key(), 0});
         if (it.key().size() > kMaxStringBytes)
-          diags_.error(DiagCode::LimitExceeded, js_.key(ptr),
+          diags_.error(DiagCode::LimitExceeded, js_.key(pointerOf(path)),
                        "key of " + std::to_string(it.key().size()) +
                            " bytes is longer than the limit of " + std::to_string(kMaxStringBytes));
-        checkLimits(it.value(), ptr);
-        ptr.resize(len);
+        checkLimits(it.value(), path);
+        path.pop_back();
       }
     }
   }
@@ -176,6 +187,25 @@ class Loader {
       if (!ok)
         diags_.error(DiagCode::UnknownField, js_.key(ptr + "/" + jsonPointerEscape(k)),
                      "unknown field '" + k + "' in " + what + " (expected " + expected + ")", node);
+    }
+  }
+
+  // The same check on an object whose entry is at hand: no pointer strings, no key copies.
+  void checkKeys(const JsonSource::Entry& obj, const std::string& what, std::initializer_list<const char*> allowed,
+                 const std::string& node = {}) {
+    std::string expected;
+    for (uint32_t c : obj.children) {
+      const JsonSource::Entry& member = js_.entries[c];
+      bool ok = false;
+      for (const char* a : allowed) ok = ok || member.name == a;
+      if (ok) continue;
+      if (expected.empty())
+        for (const char* a : allowed) {
+          if (!expected.empty()) expected += ", ";
+          expected += a;
+        }
+      diags_.error(DiagCode::UnknownField, js_.keyOf(&member),
+                   "unknown field '" + member.name + "' in " + what + " (expected " + expected + ")", node);
     }
   }
 
@@ -401,54 +431,60 @@ class Loader {
       return;
     }
     g.nodes.reserve(nodes.size());
+    // Positions come from each node's entry (found once), not from pointer look-ups from
+    // the root; pointers are still made for the error paths.
+    const JsonSource::Entry& nodesEntry = *js_.entry("/nodes");
     for (std::size_t i = 0; i < nodes.size(); ++i) {
       const std::string ptr = "/nodes/" + std::to_string(i);
       const json& nv = nodes[i];
+      const JsonSource::Entry& ne = js_.child(nodesEntry, i);
       if (!nv.is_object()) {
-        diags_.error(DiagCode::WrongJsonType, js_.value(ptr),
+        diags_.error(DiagCode::WrongJsonType, js_.valueOf(&ne),
                      "each node must be an object, found " + jsonTypeName(nv));
         continue;
       }
       Node n;
-      n.where = js_.value(ptr);
+      n.where = js_.valueOf(&ne);
       std::string label;  // for diagnostics: the id when it is a valid one
       if (!nv.contains("id")) {
         missing(ptr, "node is missing \"id\"");
       } else if (auto* v = field(nv, ptr, "id", json::value_t::string, "a node's 'id'")) {
         n.id = v->get<std::string>();
-        n.idWhere = js_.value(ptr + "/id");
+        n.idWhere = js_.valueOf(js_.member(ne, "id"));
         if (isIdentifier(n.id))
           label = n.id;
         else
           diags_.error(DiagCode::InvalidIdentifier, n.idWhere,
                        "node id '" + n.id + "' is not an identifier " + kIdentifierRule);
       }
-      checkKeys(nv, ptr, "node", {"id", "type", "options", "inputs", "editor"}, label);
+      checkKeys(ne, "node", {"id", "type", "options", "inputs", "editor"}, label);
       if (!nv.contains("type")) {
         missing(ptr, "node is missing \"type\"", label);
       } else if (auto* v = field(nv, ptr, "type", json::value_t::string, "a node's 'type'", label)) {
         n.type = v->get<std::string>();
-        n.typeWhere = js_.value(ptr + "/type");
+        n.typeWhere = js_.valueOf(js_.member(ne, "type"));
       }
       if (auto* v = field(nv, ptr, "options", json::value_t::object, "a node's 'options'", label)) {
-        for (const auto& name : members(*v, ptr + "/options")) {
-          const std::string optPtr = ptr + "/options/" + jsonPointerEscape(name);
-          n.options.push_back(NodeOption{name, v->at(name), js_.value(optPtr), js_.key(optPtr)});
+        for (uint32_t c : js_.member(ne, "options")->children) {
+          const JsonSource::Entry& o = js_.entries[c];
+          n.options.push_back(NodeOption{o.name, v->at(o.name), js_.valueOf(&o), js_.keyOf(&o)});
         }
       }
       if (auto* v = field(nv, ptr, "inputs", json::value_t::object, "a node's 'inputs'", label)) {
-        for (const auto& port : members(*v, ptr + "/inputs")) {
-          const std::string inPtr = ptr + "/inputs/" + jsonPointerEscape(port);
+        const JsonSource::Entry& inputs = *js_.member(ne, "inputs");
+        n.inputs.reserve(inputs.children.size());
+        for (uint32_t c : inputs.children) {
+          const JsonSource::Entry& e = js_.entries[c];
           NodeInput in;
-          in.port = port;
-          in.keyWhere = js_.key(inPtr);
-          if (parseSource(v->at(port), inPtr, in.source, label, "input '" + port + "'"))
+          in.port = e.name;
+          in.keyWhere = js_.keyOf(&e);
+          if (parseSource(v->at(e.name), js_.valueOf(&e), in.source, label, [&] { return "input '" + e.name + "'"; }))
             n.inputs.push_back(std::move(in));
         }
       }
       if (auto* v = field(nv, ptr, "editor", json::value_t::object, "a node's 'editor'", label)) {
         const std::string edPtr = ptr + "/editor";
-        checkKeys(*v, edPtr, "a node's editor position", {"x", "y"}, label);
+        checkKeys(*js_.member(ne, "editor"), "a node's editor position", {"x", "y"}, label);
         std::array<double, 2> pos{0, 0};
         bool ok = true;
         const char* axes[2] = {"x", "y"};
@@ -469,9 +505,10 @@ class Loader {
     }
   }
 
-  bool parseSource(const json& v, const std::string& ptr, InputSource& out, const std::string& node,
-                   const std::string& port) {
-    out.where = js_.value(ptr);
+  // `port()` names the input or output for the diagnostic, made only when there is one.
+  template <typename PortLabel>
+  bool parseSource(const json& v, SourceRef where, InputSource& out, const std::string& node, const PortLabel& port) {
+    out.where = std::move(where);
     if (v.is_string()) {
       const auto& s = v.get_ref<const std::string&>();
       if (!s.empty() && s[0] == '$') {
@@ -507,7 +544,7 @@ class Loader {
       }
     }
     diags_.error(DiagCode::InvalidReference, out.where,
-                 "invalid input " + describeValue(v) + ": " + kSourceForms, node, port);
+                 "invalid input " + describeValue(v) + ": " + kSourceForms, node, port());
     return false;
   }
 
@@ -553,8 +590,8 @@ class Loader {
         GraphOutput out;
         out.slot = found->slot;
         out.keyWhere = js_.key(slotPtr);
-        if (parseSource(sv.at(name), slotPtr, out.source, {},
-                        "output '" + stage + "." + name + "'"))
+        if (parseSource(sv.at(name), js_.value(slotPtr), out.source, {},
+                        [&] { return "output '" + stage + "." + name + "'"; }))
           g.outputs.push_back(std::move(out));
       }
     }

@@ -60,8 +60,16 @@ class LineTable {
       if (text[i] == '\n') starts_.push_back(i + 1);
   }
   JsonSource::Position position(std::size_t offset) const {
-    auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
-    std::size_t line = static_cast<std::size_t>(it - starts_.begin());  // >= 1
+    // The parser asks in file order: step forward from the last line found, and search
+    // only when asked for an earlier offset (an error's position).
+    std::size_t line = last_;  // 1-based: starts_[line - 1] <= offset < starts_[line]
+    if (offset >= starts_[line - 1]) {
+      while (line < starts_.size() && starts_[line] <= offset) ++line;
+    } else {
+      auto it = std::upper_bound(starts_.begin(), starts_.end(), offset);
+      line = static_cast<std::size_t>(it - starts_.begin());  // >= 1
+    }
+    last_ = line;
     std::size_t col = offset - starts_[line - 1] + 1;
     return {static_cast<int>(line), static_cast<int>(col)};
   }
@@ -72,6 +80,7 @@ class LineTable {
 
  private:
   std::vector<std::size_t> starts_;
+  mutable std::size_t last_ = 1;
 };
 
 std::string cleanParseMessage(std::string what) {
@@ -125,7 +134,10 @@ class PositionSax {
     f.key = k;
     f.keyPos = lines_.position(start);
     f.duplicate = false;
-    if (f.value->contains(k)) {
+    // The member's slot is made now (null until its value arrives): one look-up per key.
+    auto [slot, inserted] = f.value->get_ref<nlohmann::json::object_t&>().emplace(k, nullptr);
+    f.slot = &slot->second;
+    if (!inserted) {
       for (uint32_t c : out_.entries[f.entry].children) {
         const JsonSource::Entry& first = out_.entries[c];
         if (first.name != k) continue;
@@ -202,6 +214,7 @@ class PositionSax {
     std::string key;                 // objects: the member being read
     JsonSource::Position keyPos;
     bool duplicate = false;
+    nlohmann::json* slot = nullptr;  // objects: where the member's value goes
   };
 
   static bool isSkippable(char c) {
@@ -238,11 +251,10 @@ class PositionSax {
       return {&scratch_.back(), index};
     }
     out_.entries[index].key = f.keyPos;
-    out_.entries[index].name = f.key;
+    out_.entries[index].name = std::move(f.key);
     out_.entries[f.entry].children.push_back(index);
-    nlohmann::json& slot = (*f.value)[f.key];
-    slot = std::move(v);
-    return {&slot, index};
+    *f.slot = std::move(v);
+    return {f.slot, index};
   }
 
   template <typename T>
@@ -272,7 +284,7 @@ class PositionSax {
       return false;
     }
     auto [ptr, entry] = place(std::move(container), where, isArray);
-    stack_.push_back(Frame{ptr, entry, isArray, {}, {}, false});
+    stack_.push_back(Frame{ptr, entry, isArray, {}, {}, false, nullptr});
     return true;
   }
 
@@ -344,15 +356,17 @@ const JsonSource::Entry* JsonSource::find(std::string_view pointer) const {
   return at;
 }
 
-SourceRef JsonSource::value(const std::string& pointer) const {
-  const Entry* e = find(pointer);
+SourceRef JsonSource::valueOf(const Entry* e) const {
   return e ? SourceRef{file, e->value.line, e->value.col} : SourceRef{entries.empty() ? std::string() : file, 0, 0};
 }
 
-SourceRef JsonSource::key(const std::string& pointer) const {
-  const Entry* e = pointer.empty() ? nullptr : find(pointer);
+SourceRef JsonSource::keyOf(const Entry* e) const {
   return e ? SourceRef{file, e->key.line, e->key.col} : SourceRef{entries.empty() ? std::string() : file, 0, 0};
 }
+
+SourceRef JsonSource::value(const std::string& pointer) const { return valueOf(find(pointer)); }
+
+SourceRef JsonSource::key(const std::string& pointer) const { return keyOf(pointer.empty() ? nullptr : find(pointer)); }
 
 std::vector<std::string> JsonSource::keysInOrder(const std::string& pointer) const {
   std::vector<std::string> keys;

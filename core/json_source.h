@@ -43,9 +43,18 @@ struct JsonSource {
   // duplicate keys appear once. Empty for anything else.
   std::vector<std::string> keysInOrder(const std::string& pointer) const;
 
+  // The same look-ups from an entry already found, without making pointer strings (the
+  // loader walks every node this way). `entry` takes a pointer; `member` a member's name
+  // (nullptr when absent); `valueOf`/`keyOf` accept nullptr like value()/key() accept a
+  // pointer to nothing.
+  const Entry* entry(std::string_view pointer) const { return find(pointer); }
+  const Entry* member(const Entry& object, std::string_view name) const;
+  const Entry& child(const Entry& container, size_t i) const { return entries[container.children[i]]; }
+  SourceRef valueOf(const Entry* e) const;
+  SourceRef keyOf(const Entry* e) const;
+
  private:
   const Entry* find(std::string_view pointer) const;
-  const Entry* member(const Entry& object, std::string_view name) const;
   // Objects with many members get a name index on first look-up (mutable: a cache), by
   // entry number, so a copy of the JsonSource stays correct.
   mutable std::unordered_map<uint32_t, std::unordered_map<std::string, uint32_t>> memberIndex_;

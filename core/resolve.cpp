@@ -111,6 +111,7 @@ class Resolver {
   }
 
   void indexNodes() {
+    nodeIndex_.reserve(graph_.nodes.size());
     for (size_t i = 0; i < graph_.nodes.size(); ++i) {
       const Node& n = graph_.nodes[i];
       auto [it, inserted] = nodeIndex_.emplace(n.id, static_cast<int>(i));
@@ -166,13 +167,15 @@ class Resolver {
   }
 
   // Checks a reference to another node and returns its index, or -1 after reporting.
-  int referencedNode(const InputSource& s, const std::string& user, const std::string& label) {
+  // `label()` makes the diagnostic's label, only when there is one to report.
+  template <typename Label>
+  int referencedNode(const InputSource& s, const std::string& user, const Label& label) {
     auto it = nodeIndex_.find(s.node);
     if (it == nodeIndex_.end()) {
       std::vector<std::string> ids;
       for (const auto& n : graph_.nodes) ids.push_back(n.id);
       diags_.error(DiagCode::DanglingReference, s.where,
-                   "no node with id '" + s.node + "'" + didYouMean(s.node, ids), user, label);
+                   "no node with id '" + s.node + "'" + didYouMean(s.node, ids), user, label());
       return -1;
     }
     const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
@@ -186,7 +189,7 @@ class Resolver {
       diags_.error(DiagCode::UnknownOutputPort, s.where,
                    "node '" + s.node + "' (" + spec->type + ") has no output '" + s.port +
                        "'; its outputs are: " + outs + didYouMean(s.port, names),
-                   user, label);
+                   user, label());
       return -1;
     }
     return it->second;
@@ -199,9 +202,13 @@ class Resolver {
     std::vector<std::vector<int>> users(n);
     std::vector<int> pending(n, 0);
     std::vector<std::vector<int>> deps(n);
+    inputBase_.assign(n + 1, 0);
+    for (size_t i = 0; i < n; ++i) inputBase_[i + 1] = inputBase_[i] + graph_.nodes[i].inputs.size();
+    inputNode_.assign(inputBase_[n], -1);
     for (size_t i = 0; i < n; ++i) {
       const Node& node = graph_.nodes[i];
-      for (const auto& in : node.inputs) {
+      for (size_t k = 0; k < node.inputs.size(); ++k) {
+        const NodeInput& in = node.inputs[k];
         if (in.source.kind == InputSource::Kind::Parameter) {
           if (!paramIndex_.count(in.source.parameter)) {
             std::vector<std::string> names;
@@ -213,8 +220,9 @@ class Resolver {
           continue;
         }
         if (in.source.kind != InputSource::Kind::NodeOutput) continue;
-        int dep = referencedNode(in.source, node.id, inputLabel(in.port));
+        int dep = referencedNode(in.source, node.id, [&] { return inputLabel(in.port); });
         if (dep < 0) continue;
+        inputNode_[inputBase_[i] + k] = dep;
         if (static_cast<size_t>(dep) == i) {
           diags_.error(DiagCode::Cycle, in.source.where, "node '" + node.id + "' refers to itself", node.id,
                        inputLabel(in.port));
@@ -275,8 +283,9 @@ class Resolver {
     diags_.error(DiagCode::Cycle, at.where, "the nodes form a cycle: " + path, at.id);
   }
 
-  // The type a source provides, or Invalid after reporting.
-  std::optional<ValueRef> sourceRef(const InputSource& s) {
+  // The type a source provides, or Invalid after reporting. `node`: the node index of a
+  // NodeOutput source when already known (-1: look it up by id).
+  std::optional<ValueRef> sourceRef(const InputSource& s, int node = -1) {
     switch (s.kind) {
       case InputSource::Kind::Literal: return ValueRef::constant_(literalValue(s.literal));
       case InputSource::Kind::Parameter: {
@@ -285,29 +294,37 @@ class Resolver {
         return ValueRef::param(it->second);
       }
       case InputSource::Kind::NodeOutput: {
-        auto it = opOfNode_.find(s.node);
-        if (it == opOfNode_.end()) return std::nullopt;
-        const Op& op = program_.ops[static_cast<size_t>(it->second)];
+        if (node < 0) {
+          auto it = nodeIndex_.find(s.node);
+          if (it == nodeIndex_.end()) return std::nullopt;
+          node = it->second;
+        }
+        int opIndex = opOfNode_[static_cast<size_t>(node)];
+        if (opIndex < 0) return std::nullopt;
+        const Op& op = program_.ops[static_cast<size_t>(opIndex)];
         int port = op.spec->outputIndex(s.port);
         if (port < 0) return std::nullopt;
-        return ValueRef::op(it->second, port);
+        return ValueRef::op(opIndex, port);
       }
     }
     return std::nullopt;
   }
 
-  bool existsForItsInputs(const ValueRef& ref, const InputSource& s, const std::string& user, const std::string& label) {
+  template <typename Label>
+  bool existsForItsInputs(const ValueRef& ref, const InputSource& s, const std::string& user, const Label& label) {
     if (ref.kind != ValueRef::Kind::Op || program_.typeOf(ref) != Type::Invalid) return true;
     const Op& op = program_.ops[static_cast<size_t>(ref.index)];
     std::string inputs;
     for (Type t : op.inputTypes) inputs += (inputs.empty() ? "" : ", ") + std::string(typeName(t));
     diags_.error(DiagCode::UnknownOutputPort, s.where,
                  "node '" + s.node + "' (" + op.spec->type + ") has no output '" + s.port + "' for its input type " + inputs,
-                 user, label);
+                 user, label());
     return false;
   }
 
   void buildOps(const std::vector<int>& order) {
+    opOfNode_.assign(graph_.nodes.size(), -1);
+    program_.ops.reserve(order.size());
     for (int ni : order) {
       const Node& node = graph_.nodes[static_cast<size_t>(ni)];
       const NodeSpec* spec = specs_[static_cast<size_t>(ni)];
@@ -326,16 +343,18 @@ class Resolver {
       std::vector<Type> sourceTypes(nin, Type::Invalid);
       std::vector<const NodeInput*> given(nin, nullptr);
       bool ok = true;
-      for (const auto& in : node.inputs) {
+      for (size_t k = 0; k < node.inputs.size(); ++k) {
+        const NodeInput& in = node.inputs[k];
         int pi = spec->inputIndex(in.port);
         if (pi < 0) continue;
         given[static_cast<size_t>(pi)] = &in;
-        auto ref = sourceRef(in.source);
+        // The referenced node was found by id once, in topologicalOrder.
+        auto ref = sourceRef(in.source, inputNode_[inputBase_[static_cast<size_t>(ni)] + k]);
         if (!ref) {
           ok = false;  // already reported (dangling, unknown parameter, bad upstream node)
           continue;
         }
-        if (!existsForItsInputs(*ref, in.source, node.id, inputLabel(in.port))) {
+        if (!existsForItsInputs(*ref, in.source, node.id, [&] { return inputLabel(in.port); })) {
           ok = false;
           continue;
         }
@@ -360,7 +379,7 @@ class Resolver {
       }
       if (!ok) continue;
       if (!typeOp(op, node, sourceTypes, given)) continue;
-      opOfNode_[node.id] = static_cast<int>(program_.ops.size());
+      opOfNode_[static_cast<size_t>(ni)] = static_cast<int>(program_.ops.size());
       program_.ops.push_back(std::move(op));
     }
   }
@@ -397,7 +416,7 @@ class Resolver {
     for (const auto& out : graph_.outputs) {
       std::string label = "output '" + std::string(outputSlotName(out.slot)) + "'";
       if (out.source.kind == InputSource::Kind::NodeOutput) {
-        if (referencedNode(out.source, "", label) < 0) continue;
+        if (referencedNode(out.source, "", [&] { return label; }) < 0) continue;
       } else if (out.source.kind == InputSource::Kind::Parameter && !paramIndex_.count(out.source.parameter)) {
         diags_.error(DiagCode::UnknownParameter, out.source.where,
                      "no parameter named '" + out.source.parameter + "'", "", label);
@@ -405,7 +424,7 @@ class Resolver {
       }
       auto ref = sourceRef(out.source);
       if (!ref) continue;  // the node itself failed and was reported
-      if (!existsForItsInputs(*ref, out.source, "", label)) continue;
+      if (!existsForItsInputs(*ref, out.source, "", [&] { return label; })) continue;
       Type want = out.slot == OutputSlot::FragmentAlpha ? Type::Float : Type::Vec3;
       Type got = program_.typeOf(*ref);
       if (!implicitlyConvertible(got, want)) {
@@ -428,7 +447,10 @@ class Resolver {
   std::vector<const NodeSpec*> specs_;
   std::unordered_map<std::string, int> nodeIndex_;
   std::unordered_map<std::string, int> paramIndex_;
-  std::unordered_map<std::string, int> opOfNode_;
+  std::vector<int> opOfNode_;  // by node index: its op, or -1
+  // Node i's inputs[k] reads node inputNode_[inputBase_[i] + k] (-1: not a node output).
+  std::vector<size_t> inputBase_;
+  std::vector<int> inputNode_;
 };
 
 }  // namespace
