@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "codegen/shader_interface.h"
+#include "codegen/value_facts.h"
 #include "core/texture_check.h"
 #include "core/number_format.h"
 #include "nodes/glsl_library.h"
@@ -117,6 +118,8 @@ class OpEmitContext final : public EmitContext {
   std::string texture(std::string_view option) override;
   std::string sceneTexture(std::string_view resource) override;
   const NodeSpec& spec() const override;
+  ValueFact inputFact(int port) const override;
+  ValueFact knownBuiltin(Builtin b) const override;
 
   std::vector<std::string> outputs;
 
@@ -131,6 +134,8 @@ class Emitter {
  public:
   Emitter(const Program& p, Target t, std::string sourceName, EmitMode mode, bool allowTessellation)
       : program_(p), target_(t), style_(styleOf(t)), sourceName_(std::move(sourceName)), probe_(mode == EmitMode::Probe) {
+    // Probe shaders take builtins and parameters from arbitrary cases: no facts there.
+    if (!probe_) facts_ = ValueFacts(p);
     for (size_t i = 0; i < p.ops.size(); ++i) opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
     std::set<std::string> taken;
     for (const auto& param : p.parameters) {
@@ -436,6 +441,8 @@ class Emitter {
     if (normalUv) sceneSampler(w, "underwater.normal_uv");
   }
   const Program& program() const { return program_; }
+  const ValueFacts& facts() const { return facts_; }
+  bool probe() const { return probe_; }
 
  private:
   void emitOps(StageWriter& w) {
@@ -741,6 +748,7 @@ class Emitter {
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
   bool probe_ = false;                        // EmitMode::Probe
+  ValueFacts facts_;                          // empty in probe mode
   std::optional<TessellationSettings> tess_;  // tessellated geometry stage
   bool deferred_ = false;                     // full-screen fragment stage (underwater)
   std::vector<UniformInfo> phases_;         // time phases, by first use
@@ -781,6 +789,20 @@ std::string OpEmitContext::temporary(Type type, std::string expression) {
   w_.line(std::string(typeName(type)) + " " + name + " = " + expression + ";", opIndex_);
   return name;
 }
+ValueFact OpEmitContext::inputFact(int port) const {
+  const Op& op = e_.program().ops[static_cast<size_t>(opIndex_)];
+  const ValueRef& in = op.inputs.at(static_cast<size_t>(port));
+  ValueFact f = e_.facts().of(in, op.inputTypes.at(static_cast<size_t>(port)));
+  // Read through a varying: interpolation keeps a range (a convex combination) but not
+  // unit length.
+  if (in.kind == ValueRef::Kind::Op && w_.stage == kFragmentStage &&
+      !(e_.program().ops[static_cast<size_t>(in.index)].stage & kFragmentStage))
+    f.normalized = false;
+  return f;
+}
+
+ValueFact OpEmitContext::knownBuiltin(Builtin b) const { return e_.probe() ? ValueFact{} : builtinFact(b); }
+
 const NodeSpec& OpEmitContext::spec() const { return *e_.program().ops[static_cast<size_t>(opIndex_)].spec; }
 
 }  // namespace
