@@ -157,10 +157,8 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
   return wg_safe_normalize_vec3(reflect(-vv, nn));
 }
 
-float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float q = clamp((x - a) / (b - a), 0.0, 1.0);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
 // subsurface: the fake subsurface glow of wave crests lit from behind (seed 003, section 8).
@@ -261,7 +259,7 @@ void main() {
   vec3 n11_sss_color = (p_sss_color * n11_sss_t0);
   vec3 n12_glow = (n6_body + n11_sss_color);
   vec3 n13_lit = (n12_glow + n8_ggx_color);
-  float n14_height = wg_remap_clamped_float(n10_p_split_y, -1.2, 1.2, 0.0, 1.0);
+  float n14_height = wg_remap_clamped_nonempty_float(n10_p_split_y, -1.2, 1.2, 0.0, 1.0);
   vec2 n15_crest_t0 = vec2(u_phase0, u_phase1) * 40.743664;
   float n15_crest = wg_crest_foam(n14_height, b_normal, v_world_position.xz, n15_crest_t0, p_foam_threshold, 0.7, 0.4, 3.0);
   vec3 n16_color = mix(n13_lit, vec3(0.92, 0.95, 0.97), vec3(n15_crest));

@@ -58,12 +58,9 @@ float wg_smoothstep_float(float e0, float e1, float x) {
   return e0 == e1 ? stepped : eased;
 }
 
-// Water colour by depth: shallow colour at the surface, deep colour from max_depth down.
-// Negative thickness (scene in front of the water) counts as 0; max_depth is floored so it
-// never divides by zero.
-float wg_depth_tint_linear(float depth, float max_depth) {
-  return clamp(depth / max(max_depth, 1e-6), 0.0, 1.0);
-}
+// The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is
+// at least that): the floor is dead.
+float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
 
 // Depth mask, seed 003: 1 - saturate(depth / width), width floored at 1e-6.
 float wg_edge_foam_mask_linear(float depth, float width) {
@@ -97,7 +94,7 @@ vec2 wg_flow_map_decode(vec4 texel) { return texel.xy * 2.0 - 1.0; }
 // Cosine of incidence, kept in [0, 1].
 float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
 
-float wg_fresnel_power_rim(float cosi, float strength) { return wg_safe_pow_float(1.0 - cosi, strength); }
+float wg_fresnel_power_rim_positive(float cosi, float strength) { return pow(1.0 - cosi, strength); }
 
 uvec2 wg_hash_cell_vec2(vec2 p) {
   return uvec2(ivec2(clamp(floor(p), vec2(-2147483648.0), vec2(2147483520.0))));
@@ -134,6 +131,17 @@ float wg_linearize_depth(float depth, vec2 near_far) {
   return min(n / max(denom, n * 1e-30), 1e30);
 }
 
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
+  float r = n / max(near_far.y, n);
+  return n / ((1.0 - depth) + depth * r);
+}
+
 // Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
 
 // The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
@@ -151,17 +159,7 @@ vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a 
 // The blended tangent-space normal with its slope scaled by `strength`.
 vec3 wg_normal_map_scroll_strength(vec3 n, float strength) { return vec3(n.xy * strength, n.z); }
 
-// Range remapping, one name per type. An empty source range (in_min == in_max) maps to out_min instead of
-// dividing by zero (the quotient is computed, then not chosen: one OpSelect, no branch).
-float wg_remap_float(float x, float a, float b, float c, float d) {
-  float q = (x - a) / (b - a);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
-}
-
-vec2 wg_remap_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {
-  return vec2(wg_remap_float(x.x, a.x, b.x, c.x, d.x), wg_remap_float(x.y, a.y, b.y, c.y, d.y));
-}
+vec2 wg_remap_nonempty_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) { return mix(c, d, (x - a) / (b - a)); }
 
 // scene_color / planar_reflection: screen-space look-ups of the scene textures.
 
@@ -264,26 +262,21 @@ float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated
   return m * m * m;
 }
 
-// water_depth: how much water lies between the surface and the scene behind it.
-
-// The factor that turns a view-depth difference into a distance along the view ray:
-// 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
-// cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
-// values rather than an early return, so it compiles to a select, not branches.
-float wg_water_depth_ray_factor(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
+}
+
+// The ray factor where v is proven normalized (value facts: the safe-normalised view
+// direction): re-normalising it changes nothing, so only the camera axis is normalised.
+float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
+  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
+  float c = dot(-v, wg_safe_normalize_vec3(fwd));
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -325,30 +318,30 @@ void main() {
   float n4_flow_t7 = wg_flow_map_weight(n4_flow_t5);
   vec4 n4_flow_sample = (texture(t0_water_normal, n4_flow_t0 - n4_flow_t1 * n4_flow_t4) * n4_flow_t6 + texture(t0_water_normal, n4_flow_t0 - n4_flow_t1 * n4_flow_t5) * n4_flow_t7);
   vec2 n5_flow_rgb = n4_flow_sample.xz;
-  vec2 n6_flow_tilt = wg_remap_vec2(n5_flow_rgb, vec2(0.0), vec2(1.0), vec2(-0.25), vec2(0.25));
+  vec2 n6_flow_tilt = wg_remap_nonempty_vec2(n5_flow_rgb, vec2(0.0), vec2(1.0), vec2(-0.25), vec2(0.25));
   float n7_flow_x_x = n6_flow_tilt.x;
   float n7_flow_x_y = n6_flow_tilt.y;
   vec3 n8_flow_vec = vec3(n7_flow_x_x, 0.0, n7_flow_x_y);
   vec3 n9_tilted = (n3_scroll_normal + n8_flow_vec);
   vec3 n10_nrm = wg_safe_normalize_vec3(n9_tilted);
   float n11_fresnel_t0 = wg_cos_incidence(n10_nrm, b_view_direction);
-  float n11_fresnel_t1 = wg_fresnel_power_rim(n11_fresnel_t0, p_fresnel_power);
+  float n11_fresnel_t1 = wg_fresnel_power_rim_positive(n11_fresnel_t0, p_fresnel_power);
   vec2 n12_nrm_xz = n10_nrm.xz;
   vec2 n13_offset = (n12_nrm_xz * vec2(0.04));
   vec2 n14_reflection_t0 = wg_scene_color_uv(b_screen_uv, n13_offset);
   vec3 n14_reflection_color = texture(u_reflection, n14_reflection_t0).rgb;
   vec2 n15_refraction_t0 = wg_scene_color_uv(b_screen_uv, n13_offset);
   vec3 n15_refraction_color = texture(u_scene_color, n15_refraction_t0).rgb;
-  float n16_depth_t0 = wg_linearize_depth(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n16_depth_t1 = wg_linearize_depth(gl_FragCoord.z, u_camera_near_far);
-  float n16_depth_thickness = wg_water_depth_thickness(n16_depth_t0, n16_depth_t1, wg_water_depth_ray_factor(u_view, b_view_direction), 1.0);
+  float n16_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
+  float n16_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
+  float n16_depth_thickness = wg_water_depth_thickness(n16_depth_t0, n16_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
   vec2 n17_edge_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
   vec2 n17_edge_t1 = v_world_position.xz * 1.0;
   float n17_edge_t2 = 0.5 * (texture(t2_foam, n17_edge_t1 * 0.1 + n17_edge_t0).r + texture(t2_foam, n17_edge_t1 * 0.08 + vec2(-n17_edge_t0.y, n17_edge_t0.x)).r);
   float n17_edge = wg_edge_foam(n17_edge_t2, wg_edge_foam_mask_linear(n16_depth_thickness, 0.5), 0.35, 0.0, 1.0);
   float n18_shore = wg_shore_waves(n16_depth_thickness, 5.0, u_phase2, 0.8, 1.5);
   float n19_foam = max(n18_shore, n17_edge);
-  float n20_tint_t0 = wg_depth_tint_linear(n16_depth_thickness, p_max_distance);
+  float n20_tint_t0 = wg_depth_tint_linear_floored(n16_depth_thickness, p_max_distance);
   vec3 n20_tint_color = mix(p_shallow_color, p_deep_color, n20_tint_t0);
   float n21_caustics_fade = (1.0 - n20_tint_t0);
   vec3 n22_body = mix(n15_refraction_color, n20_tint_color, vec3(n20_tint_t0));
