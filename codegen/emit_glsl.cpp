@@ -120,6 +120,7 @@ class OpEmitContext final : public EmitContext {
   const NodeSpec& spec() const override;
   ValueFact inputFact(int port) const override;
   ValueFact knownBuiltin(Builtin b) const override;
+  std::optional<Value> inputConstant(int port) const override;
 
   std::vector<std::string> outputs;
 
@@ -799,6 +800,13 @@ ValueFact OpEmitContext::inputFact(int port) const {
       !(e_.program().ops[static_cast<size_t>(in.index)].stage & kFragmentStage))
     f.normalized = false;
   return f;
+}
+
+std::optional<Value> OpEmitContext::inputConstant(int port) const {
+  const Op& op = e_.program().ops[static_cast<size_t>(opIndex_)];
+  const ValueRef& in = op.inputs.at(static_cast<size_t>(port));
+  if (in.kind != ValueRef::Kind::Const) return std::nullopt;
+  return in.constant.convertedTo(op.inputTypes.at(static_cast<size_t>(port)));
 }
 
 ValueFact OpEmitContext::knownBuiltin(Builtin b) const { return e_.probe() ? ValueFact{} : builtinFact(b); }

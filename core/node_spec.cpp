@@ -107,6 +107,7 @@ ValueFact builtinFact(Builtin b) {
 
 ValueFact EmitContext::inputFact(int) const { return {}; }
 ValueFact EmitContext::knownBuiltin(Builtin) const { return {}; }
+std::optional<Value> EmitContext::inputConstant(int) const { return std::nullopt; }
 ValueFact EmitContext::inputFact(std::string_view port) const { return inputFact(inputIndex(port)); }
 
 std::string EmitContext::literal(double x) const { return formatGlslFloat(x); }

@@ -142,6 +142,8 @@ class EmitContext {
   // What is known about a builtin read through builtin(): builtinFact(b) in a compiled
   // shader, nothing in a probe shader (its builtins come from arbitrary cases).
   virtual ValueFact knownBuiltin(Builtin b) const;
+  // Input `port` as a constant of the port's type, when it is one (folded or literal).
+  virtual std::optional<Value> inputConstant(int port) const;
   ValueFact inputFact(std::string_view port) const;
 
   std::string input(std::string_view port);

@@ -99,8 +99,12 @@ NodeSpec normalMapScrollNode() {
     std::string n = ctx.temporary(
         Type::Vec3, EmitContext::call("wg_normal_map_scroll_" + ctx.option("blend").get<std::string>(), {a, b}));
     std::string ts = EmitContext::call("wg_normal_map_scroll_strength", {n, ctx.input("strength")});
-    ctx.output(0, EmitContext::call("wg_waves_tangent_to_world",
-                                    {ts, ctx.input("tangent"), ctx.input("binormal"), ctx.input("normal")}));
+    // ts is a finite unpacked texel, so the flat frame's zero products are exact zeros.
+    auto tc = ctx.inputConstant(ctx.inputIndex("tangent")), bc = ctx.inputConstant(ctx.inputIndex("binormal"));
+    bool flat = tc && bc && *tc == Value::vector({1, 0, 0}) && *bc == Value::vector({0, 0, 1});
+    ctx.output(0, flat ? EmitContext::call("wg_waves_tangent_to_world_flat", {ts, ctx.input("normal")})
+                       : EmitContext::call("wg_waves_tangent_to_world",
+                                           {ts, ctx.input("tangent"), ctx.input("binormal"), ctx.input("normal")}));
     ctx.output(1, n);
   };
   s.eval = [](EvalContext& ctx) {

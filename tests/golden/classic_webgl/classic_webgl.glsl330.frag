@@ -138,13 +138,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   return l2 < 1e-12 ? fallback : unit;
 }
 
-// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
-// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
-// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
-vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+// The same for the flat frame T = +x, B = +z (constant inputs): t * ts.x + b * ts.y is
+// (ts.x, 0, ts.y) exactly for a finite ts, which glslang and spirv-opt cannot fold
+// (0 * x is NaN for an infinite x), so it is written out.
+vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
   vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
+  return wg_waves_unit_or_vec3(vec3(ts.x, 0.0, ts.y) + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {
@@ -158,7 +157,7 @@ void main() {
   vec3 n1_normal_t1 = wg_normal_map_scroll_unpack(texture(t1_water_normal, n0_dudv_uv));
   vec3 n1_normal_t2 = wg_normal_map_scroll_unpack(texture(t1_water_normal, wg_normal_map_scroll_uv(n0_dudv_uv, 0.5, vec2(0.01, -0.02), n1_normal_t0)));
   vec3 n1_normal_t3 = wg_normal_map_scroll_add(n1_normal_t1, n1_normal_t2);
-  vec3 n1_normal_normal = wg_waves_tangent_to_world(wg_normal_map_scroll_strength(n1_normal_t3, 0.6), vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), b_normal);
+  vec3 n1_normal_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n1_normal_t3, 0.6), b_normal);
   float n2_fresnel_t0 = wg_cos_incidence(n1_normal_normal, b_view_direction);
   float n2_fresnel_t1 = wg_fresnel_power_cos_positive(n2_fresnel_t0, p_fresnel_strength);
   vec2 n3_refraction_t0 = wg_scene_color_uv(b_screen_uv, n0_dudv_t1);

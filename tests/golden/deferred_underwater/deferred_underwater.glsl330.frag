@@ -562,7 +562,7 @@ void main() {
   vec3 n18_lit = (n12_reflected + n17_specular);
   vec3 n19_surface = mix(n18_lit, vec3(0.9, 0.95, 1.0), vec3(n16_coast_t0));
   float n20_scene_t0 = texture(u_scene_depth, b_screen_uv).r;
-  float n20_scene_t1 = wg_linearize_depth(n20_scene_t0, u_camera_near_far);
+  float n20_scene_t1 = wg_linearize_depth_known(n20_scene_t0, u_camera_near_far);
   vec3 n20_scene_position = wg_scene_depth_position(b_screen_uv, n20_scene_t1, u_camera_position, u_view, u_projection);
   vec2 n21_caustics_t0 = wg_texture_caustics_uv(n20_scene_position, 0.15);
   vec2 n21_caustics_t1 = mod(u_time * vec2(0.02, 0.01), 1.0);

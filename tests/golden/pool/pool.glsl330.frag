@@ -94,21 +94,6 @@ float wg_lambert(vec3 n, vec3 l) {
   return clamp(dot(wg_safe_normalize_vec3(n), wg_safe_normalize_vec3(l)), 0.0, 1.0);
 }
 
-// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
-
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
-// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
-// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
-// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
-// finite 1e30 instead of inf; the result never exceeds 1e30.
-float wg_linearize_depth(float depth, vec2 near_far) {
-  float n = max(near_far.x, 1e-6);
-  float r = n / max(near_far.y, n);
-  float d = clamp(depth, 0.0, 1.0);
-  float denom = (1.0 - d) + d * r;
-  return min(n / max(denom, n * 1e-30), 1e30);
-}
-
 // The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
 // facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
 // Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
@@ -268,7 +253,7 @@ void main() {
   vec2 n5_refraction_t0 = wg_scene_color_uv(b_screen_uv, n4_offset);
   vec3 n5_refraction_color = texture(u_scene_color, n5_refraction_t0).rgb;
   float n6_floor_t0 = texture(u_scene_depth, n5_refraction_t0).r;
-  float n6_floor_t1 = wg_linearize_depth(n6_floor_t0, u_camera_near_far);
+  float n6_floor_t1 = wg_linearize_depth_known(n6_floor_t0, u_camera_near_far);
   vec3 n6_floor_position = wg_scene_depth_position(n5_refraction_t0, n6_floor_t1, u_camera_position, u_view, u_projection);
   vec2 n7_floor_xz = n6_floor_position.xz;
   vec2 n8_caustics_t0 = (n7_floor_xz * 0.8);

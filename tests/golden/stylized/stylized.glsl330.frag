@@ -33,18 +33,6 @@ uniform sampler2D u_reflection;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
-// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
-// 0^y is 0 for y > 0 and 1 for y <= 0.
-// Guarded functions here compute both sides first and choose with ?: between plain values:
-// glslang turns that into one OpSelect, where ?: or an early return around an expression
-// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
-// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
-float wg_safe_pow_float(float x, float y) {
-  float p = exp2(y * log2(x));
-  float edge = y > 0.0 ? 0.0 : 1.0;
-  return x > 0.0 ? p : edge;
-}
-
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -111,21 +99,6 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 }
 
 vec3 wg_hash_unit_vec3(uvec3 h) { return vec3(h >> 8u) * 5.9604644775390625e-8; }
-
-// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
-
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
-// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
-// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
-// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
-// finite 1e30 instead of inf; the result never exceeds 1e30.
-float wg_linearize_depth(float depth, vec2 near_far) {
-  float n = max(near_far.x, 1e-6);
-  float r = n / max(near_far.y, n);
-  float d = clamp(depth, 0.0, 1.0);
-  float denom = (1.0 - d) + d * r;
-  return min(n / max(denom, n * 1e-30), 1e30);
-}
 
 // The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
 // facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
@@ -195,15 +168,13 @@ float wg_shore_waves(float depth, float frequency, float phase, float amplitude,
   return clamp(w * amplitude * (1.0 - d / dmax), 0.0, 1.0);
 }
 
-// subsurface: the fake subsurface glow of wave crests lit from behind (seed 003, section 8).
-
-// H = normalize(L + N distortion); I = saturate(V.(-H))^power * saturate(height * 2 + 0.5).
-// All vectors normalised safely; the safe pow keeps 0^power at 0 (power > 0) and the
-// result finite for any power.
-float wg_subsurface_intensity(vec3 n, vec3 v, vec3 l, float distortion, float power, float height) {
-  vec3 h = wg_safe_normalize_vec3(wg_safe_normalize_vec3(l) + wg_safe_normalize_vec3(n) * distortion);
-  float vdoth = clamp(dot(wg_safe_normalize_vec3(v), -h), 0.0, 1.0);
-  return wg_safe_pow_float(vdoth, power) * clamp(height * 2.0 + 0.5, 0.0, 1.0);
+// The same where n, v and l are proven normalized (value facts: unit length or exactly
+// zero, so safe re-normalisation leaves them unchanged) and power > 0 (so vdoth in [0, 1]
+// makes native pow defined and equal to the safe one). Same values.
+float wg_subsurface_intensity_unit(vec3 n, vec3 v, vec3 l, float distortion, float power, float height) {
+  vec3 h = wg_safe_normalize_vec3(l + n * distortion);
+  float vdoth = clamp(dot(v, -h), 0.0, 1.0);
+  return pow(vdoth, power) * clamp(height * 2.0 + 0.5, 0.0, 1.0);
 }
 
 // Voronoi (cellular) noise: one feature point per integer cell, placed by the PCG hash of
@@ -286,13 +257,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   return l2 < 1e-12 ? fallback : unit;
 }
 
-// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
-// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
-// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
-vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+// The same for the flat frame T = +x, B = +z (constant inputs): t * ts.x + b * ts.y is
+// (ts.x, 0, ts.y) exactly for a finite ts, which glslang and spirv-opt cannot fold
+// (0 * x is NaN for an infinite x), so it is written out.
+vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
   vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
+  return wg_waves_unit_or_vec3(vec3(ts.x, 0.0, ts.y) + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {
@@ -303,7 +273,7 @@ void main() {
   vec3 n3_scroll_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, vec2(0.05, 0.03), n3_scroll_t0)));
   vec3 n3_scroll_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, vec2(-0.03, 0.07), n3_scroll_t0)));
   vec3 n3_scroll_t3 = wg_normal_map_scroll_add(n3_scroll_t1, n3_scroll_t2);
-  vec3 n3_scroll_normal = wg_waves_tangent_to_world(wg_normal_map_scroll_strength(n3_scroll_t3, 0.5), vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), b_normal);
+  vec3 n3_scroll_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_scroll_t3, 0.5), b_normal);
   vec2 n4_flow_t0 = v_uv;
   vec2 n4_flow_t1 = (wg_flow_map_decode(texture(t1_dudv, n4_flow_t0))) * 0.08;
   float n4_flow_t2 = u_time;
@@ -342,7 +312,7 @@ void main() {
   float n21_caustics_fade = (1.0 - n20_tint_t0);
   vec3 n22_body = mix(n15_refraction_color, n20_tint_color, vec3(n20_tint_t0));
   float n23_floor_t0 = texture(u_scene_depth, b_screen_uv).r;
-  float n23_floor_t1 = wg_linearize_depth(n23_floor_t0, u_camera_near_far);
+  float n23_floor_t1 = wg_linearize_depth_known(n23_floor_t0, u_camera_near_far);
   vec3 n23_floor_position = wg_scene_depth_position(b_screen_uv, n23_floor_t1, u_camera_position, u_view, u_projection);
   vec2 n24_floor_xz = n23_floor_position.xz;
   vec2 n25_caustics_t0 = (n24_floor_xz * 0.6);
@@ -353,7 +323,7 @@ void main() {
   vec3 n27_body_lit = (n22_body + vec3(n26_caustics_light));
   vec3 n28_surface_color = mix(n27_body_lit, n14_reflection_color, vec3(n11_fresnel_t1));
   float n31_height_y = v_world_position.y;
-  float n32_sss_t0 = (0.6 * wg_subsurface_intensity(n10_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n31_height_y));
+  float n32_sss_t0 = (0.6 * wg_subsurface_intensity_unit(n10_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n31_height_y));
   vec3 n32_sss_color = (p_sss_color * n32_sss_t0);
   vec3 n33_glow = (n28_surface_color + n32_sss_color);
   vec3 n34_color = mix(n33_glow, p_foam_color, vec3(n19_foam));

@@ -212,13 +212,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   return l2 < 1e-12 ? fallback : unit;
 }
 
-// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
-// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
-// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
-vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+// The same for the flat frame T = +x, B = +z (constant inputs): t * ts.x + b * ts.y is
+// (ts.x, 0, ts.y) exactly for a finite ts, which glslang and spirv-opt cannot fold
+// (0 * x is NaN for an infinite x), so it is written out.
+vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
   vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
+  return wg_waves_unit_or_vec3(vec3(ts.x, 0.0, ts.y) + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {
@@ -229,7 +228,7 @@ void main() {
   vec3 n3_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, vec2(0.05, 0.03), n3_detail_t0)));
   vec3 n3_detail_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, vec2(-0.03, 0.07), n3_detail_t0)));
   vec3 n3_detail_t3 = wg_normal_map_scroll_add(n3_detail_t1, n3_detail_t2);
-  vec3 n3_detail_normal = wg_waves_tangent_to_world(wg_normal_map_scroll_strength(n3_detail_t3, 0.35), vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), b_normal);
+  vec3 n3_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_detail_t3, 0.35), b_normal);
   vec4 n4_bent_t0 = wg_refract_dir(n3_detail_normal, b_view_direction, 0.7501876);
   vec3 n4_bent_direction = n4_bent_t0.xyz;
   vec2 n5_detail_xz = n3_detail_normal.xz;
