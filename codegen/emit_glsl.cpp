@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "codegen/shader_interface.h"
+#include "codegen/value_facts.h"
 #include "core/texture_check.h"
 #include "core/number_format.h"
 #include "nodes/glsl_library.h"
@@ -118,6 +119,9 @@ class OpEmitContext final : public EmitContext {
   std::string texture(std::string_view option) override;
   std::string sceneTexture(std::string_view resource) override;
   const NodeSpec& spec() const override;
+  ValueFact inputFact(int port) const override;
+  ValueFact knownBuiltin(Builtin b) const override;
+  std::optional<Value> inputConstant(int port) const override;
 
   std::vector<std::string> outputs;
 
@@ -132,6 +136,8 @@ class Emitter {
  public:
   Emitter(const Program& p, Target t, std::string sourceName, EmitMode mode, bool allowTessellation)
       : program_(p), target_(t), style_(styleOf(t)), sourceName_(std::move(sourceName)), probe_(mode == EmitMode::Probe) {
+    // Probe shaders take builtins and parameters from arbitrary cases: no facts there.
+    if (!probe_) facts_ = ValueFacts(p);
     opNames_.reserve(p.ops.size());
     portBase_.reserve(p.ops.size() + 1);
     portBase_.push_back(0);
@@ -470,6 +476,8 @@ class Emitter {
     if (normalUv) sceneSampler(w, "underwater.normal_uv");
   }
   const Program& program() const { return program_; }
+  const ValueFacts& facts() const { return facts_; }
+  bool probe() const { return probe_; }
 
  private:
   void emitOps(StageWriter& w) {
@@ -788,6 +796,7 @@ class Emitter {
   std::vector<std::string> paramNames_;
   std::map<std::pair<int, int>, std::string> varyingNames_;
   bool probe_ = false;                        // EmitMode::Probe
+  ValueFacts facts_;                          // empty in probe mode
   std::optional<TessellationSettings> tess_;  // tessellated geometry stage
   bool deferred_ = false;                     // full-screen fragment stage (underwater)
   std::vector<UniformInfo> phases_;         // time phases, by first use
@@ -831,6 +840,27 @@ std::string OpEmitContext::temporary(Type type, std::string expression) {
   w_.line(std::string(typeName(type)) + " " + name + " = " + expression + ";", opIndex_);
   return name;
 }
+ValueFact OpEmitContext::inputFact(int port) const {
+  const Op& op = e_.program().ops[static_cast<size_t>(opIndex_)];
+  const ValueRef& in = op.inputs.at(static_cast<size_t>(port));
+  ValueFact f = e_.facts().of(in, op.inputTypes.at(static_cast<size_t>(port)));
+  // Read through a varying: interpolation keeps a range (a convex combination) but not
+  // unit length.
+  if (in.kind == ValueRef::Kind::Op && w_.stage == kFragmentStage &&
+      !(e_.program().ops[static_cast<size_t>(in.index)].stage & kFragmentStage))
+    f.normalized = false;
+  return f;
+}
+
+std::optional<Value> OpEmitContext::inputConstant(int port) const {
+  const Op& op = e_.program().ops[static_cast<size_t>(opIndex_)];
+  const ValueRef& in = op.inputs.at(static_cast<size_t>(port));
+  if (in.kind != ValueRef::Kind::Const) return std::nullopt;
+  return in.constant.convertedTo(op.inputTypes.at(static_cast<size_t>(port)));
+}
+
+ValueFact OpEmitContext::knownBuiltin(Builtin b) const { return e_.probe() ? ValueFact{} : builtinFact(b); }
+
 const NodeSpec& OpEmitContext::spec() const { return *e_.program().ops[static_cast<size_t>(opIndex_)].spec; }
 
 }  // namespace

@@ -77,6 +77,39 @@ int EmitContext::inputIndex(std::string_view port) const {
 
 std::string EmitContext::input(std::string_view port) { return input(inputIndex(port)); }
 
+ValueFact builtinFact(Builtin b) {
+  ValueFact f;
+  switch (b) {
+    case Builtin::Normal:         // b_normal = wg_safe_normalize_vec3(...) in every stage
+    case Builtin::ViewDirection:  // b_view_direction = wg_safe_normalize_vec3(camera - p)
+      f.normalized = true;
+      f.lo = -1;
+      f.hi = 1;
+      break;
+    case Builtin::SunDirection:  // the runtime uploads glm::normalize(...) (runtime/scene.cpp)
+      f.normalized = true;
+      f.lo = -1;
+      f.hi = 1;
+      break;
+    case Builtin::CameraNearFar:  // runtime and clients clamp each plane into [1e-6, 1e30]
+      f.lo = 1e-6;
+      f.hi = 1e30;
+      break;
+    case Builtin::ScreenUv:   // gl_FragCoord.xy / viewport inside the viewport
+    case Builtin::FragDepth:  // gl_FragCoord.z with the default depth range
+      f.lo = 0;
+      f.hi = 1;
+      break;
+    default: break;
+  }
+  return f;
+}
+
+ValueFact EmitContext::inputFact(int) const { return {}; }
+ValueFact EmitContext::knownBuiltin(Builtin) const { return {}; }
+std::optional<Value> EmitContext::inputConstant(int) const { return std::nullopt; }
+ValueFact EmitContext::inputFact(std::string_view port) const { return inputFact(inputIndex(port)); }
+
 std::string EmitContext::literal(double x) const { return formatGlslFloat(x); }
 
 std::string EmitContext::literal(const Value& v) const {

@@ -4,6 +4,7 @@
 // one NodeSpec per type; resolve, codegen, the CPU reference, the docs and the editor's
 // palette all read it, so nothing lists the nodes a second time.
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,6 +35,23 @@ enum class Builtin {
 };
 std::string_view builtinName(Builtin b);  // "uv", "world_position", ...
 Type builtinType(Builtin b);
+
+// What the compiler knows about a value for every input the shader can receive
+// (codegen/value_facts.h derives it per program): each component lies in [lo, hi], and
+// `normalized` says a vector is the result of a (safe) normalisation: unit length, or
+// exactly zero. Emitters use it to drop guards the facts make dead; a default ValueFact
+// knows nothing, so missing facts always keep the guarded form.
+struct ValueFact {
+  double lo = -std::numeric_limits<double>::infinity();
+  double hi = std::numeric_limits<double>::infinity();
+  bool normalized = false;
+  bool atLeast(double x) const { return lo >= x; }
+  bool above(double x) const { return lo > x; }
+  bool isConstant(double x) const { return lo == x && hi == x; }
+};
+// What a compiled (non-probe) shader guarantees about a builtin (core/node_spec.cpp says
+// where each guarantee comes from).
+ValueFact builtinFact(Builtin b);
 
 enum StageBits : unsigned { kVertexStage = 1u, kFragmentStage = 2u, kAnyStage = 3u };
 
@@ -119,6 +137,15 @@ class EmitContext {
   // ("scene_depth" -> u_scene_depth; see codegen/shader_interface.h).
   virtual std::string sceneTexture(std::string_view resource) = 0;
 
+  // What is known about input `port` (see ValueFact); nothing by default.
+  virtual ValueFact inputFact(int port) const;
+  // What is known about a builtin read through builtin(): builtinFact(b) in a compiled
+  // shader, nothing in a probe shader (its builtins come from arbitrary cases).
+  virtual ValueFact knownBuiltin(Builtin b) const;
+  // Input `port` as a constant of the port's type, when it is one (folded or literal).
+  virtual std::optional<Value> inputConstant(int port) const;
+  ValueFact inputFact(std::string_view port) const;
+
   std::string input(std::string_view port);
   std::string literal(double x) const;                // a GLSL float literal
   std::string literal(const Value& v) const;          // float or vecN(...)
@@ -202,6 +229,9 @@ struct NodeSpec {
   std::function<int(const std::vector<std::optional<Value>>& constants)> identity;
   // A node that shapes the mesh itself may ask for tessellation, given its options.
   std::function<std::optional<TessellationSettings>(const nlohmann::json& options)> tessellation;
+  // Facts of the outputs given the facts of the inputs and the options (one per output).
+  // Null: nothing known. Must hold for every input the facts admit (value_facts_test).
+  std::function<std::vector<ValueFact>(const std::vector<ValueFact>& inputs, const nlohmann::json& options)> facts;
   std::function<void(EmitContext&)> emit;
   std::function<void(EvalContext&)> eval;
   std::vector<HardCase> hardCases;

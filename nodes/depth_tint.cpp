@@ -29,7 +29,9 @@ NodeSpec depthTintNode() {
   s.emit = [](EmitContext& ctx) {
     bool smooth = ctx.option("curve").get<std::string>() == "smooth";
     std::string t = ctx.temporary(
-        Type::Float, EmitContext::call(smooth ? "wg_depth_tint_smooth" : "wg_depth_tint_linear",
+        Type::Float, EmitContext::call(smooth                                     ? "wg_depth_tint_smooth"
+                                       : ctx.inputFact("max_depth").atLeast(1e-6) ? "wg_depth_tint_linear_floored"
+                                                                                  : "wg_depth_tint_linear",
                                        {ctx.input("depth"), ctx.input("max_depth")}));
     ctx.output(0, EmitContext::call("mix", {ctx.input("shallow"), ctx.input("deep"), t}));
     ctx.output(1, t);

@@ -41,6 +41,9 @@ NodeSpec fresnelNode() {
       ports::choice("power_form", {"cos", "one_minus_cos"}, "cos",
                     "power model: 1 - (N.V)^strength (seed 000) or (1 - N.V)^strength (seed 003)"),
   };
+  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+    return std::vector<ValueFact>{{0, 1, false}, {0, 1, false}};
+  };
   s.emit = [](EmitContext& ctx) {
     std::string model = ctx.option("model").get<std::string>();
     bool below = ctx.option("direction").get<std::string>() == "water_to_air";
@@ -55,7 +58,10 @@ NodeSpec fresnelNode() {
                 : EmitContext::call("wg_fresnel_exact", {c, "1.0", ctx.literal(ior)});
     } else {
       bool rim = ctx.option("power_form").get<std::string>() == "one_minus_cos";
-      f = EmitContext::call(rim ? "wg_fresnel_power_rim" : "wg_fresnel_power_cos", {c, ctx.input("strength")});
+      // strength > 0 proven: native pow (the base lies in [0, 1]).
+      std::string fn = rim ? "wg_fresnel_power_rim" : "wg_fresnel_power_cos";
+      if (ctx.inputFact("strength").above(0)) fn += "_positive";
+      f = EmitContext::call(fn, {c, ctx.input("strength")});
     }
     std::string r = ctx.temporary(Type::Float, f);
     ctx.output(0, r);

@@ -143,15 +143,22 @@ NodeSpec phongSpecularNode() {
   s.outputs = {ports::fixed("sun_specular", Type::Float, "the sun's specular intensity in [0, 1]"),
                ports::fixed("environment_specular", Type::Float, "the environment's specular intensity in [0, 1]"),
                ports::fixed("color", Type::Vec3, "sun * sun_color + environment * environment_color")};
+  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+    ValueFact unitRange{0, 1, false};
+    return std::vector<ValueFact>{unitRange, unitRange, {}};
+  };
   s.emit = [](EmitContext& ctx) {
-    std::string sun = ctx.temporary(
-        Type::Float, EmitContext::call("wg_safe_pow_float",
-                                       {EmitContext::call("wg_phong_specular_lobe",
-                                                          {ctx.input("normal"), ctx.input("view"), ctx.input("sun")}),
-                                        ctx.input("shine")}));
-    std::string env = ctx.temporary(
-        Type::Float,
-        EmitContext::call("wg_phong_specular_lobe", {ctx.input("normal"), ctx.input("view"), ctx.input("environment")}));
+    // Normalized inputs need no re-normalisation; the lobe lies in [0, 1], so a proven
+    // shine > 0 makes native pow defined and equal to the safe one.
+    bool unitNV = ctx.inputFact("normal").normalized && ctx.inputFact("view").normalized;
+    auto lobe = [&](const char* light) {
+      bool unit = unitNV && ctx.inputFact(light).normalized;
+      return EmitContext::call(unit ? "wg_phong_specular_lobe_unit" : "wg_phong_specular_lobe",
+                               {ctx.input("normal"), ctx.input("view"), ctx.input(light)});
+    };
+    std::string pow = ctx.inputFact("shine").above(0) ? "wg_pow_known_safe_float" : "wg_safe_pow_float";
+    std::string sun = ctx.temporary(Type::Float, EmitContext::call(pow, {lobe("sun"), ctx.input("shine")}));
+    std::string env = ctx.temporary(Type::Float, lobe("environment"));
     ctx.output(0, sun);
     ctx.output(1, env);
     ctx.output(2, "(" + sun + " * " + ctx.input("sun_color") + " + " + env + " * " + ctx.input("environment_color") + ")");

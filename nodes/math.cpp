@@ -183,7 +183,12 @@ NodeSpec powNode() {
                         "out = x > 0 ? exp2(y * log2(x)) : (y > 0 ? 0 : 1)");
   s.inputs = {ports::gen("x", "the base"), ports::gen("y", 1, "the exponent")};
   s.outputs = {ports::gen("out", "the power")};
-  s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call(typedName("wg_safe_pow", ctx.outputType(0)), {ctx.input(0), ctx.input(1)})); };
+  s.emit = [](EmitContext& ctx) {
+    // x >= 0 and y > 0 proven: native pow is defined there and equals the safe one.
+    bool known = ctx.inputFact(0).atLeast(0) && ctx.inputFact(1).above(0);
+    ctx.output(0, EmitContext::call(typedName(known ? "wg_pow_known_safe" : "wg_safe_pow", ctx.outputType(0)),
+                                    {ctx.input(0), ctx.input(1)}));
+  };
   s.eval = [](EvalContext& ctx) {
     ctx.output(0, map2(ctx.input(0), ctx.input(1), ctx.outputType(0), glsl::safePow));
   };
@@ -221,6 +226,8 @@ NodeSpec normalizeNode() {
                         "out = x * inversesqrt(max(dot(x, x), 1e-30))");
   s.inputs = {ports::gen("x", "the vector")};
   s.outputs = {ports::gen("out", "the unit vector")};
+  // Unit length or exactly zero: a normalized vector (a float becomes -1, 0 or 1).
+  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) { return std::vector<ValueFact>{{-1, 1, true}}; };
   s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call(typedName("wg_safe_normalize", ctx.outputType(0)), {ctx.input(0)})); };
   s.eval = [](EvalContext& ctx) { ctx.output(0, glsl::safeNormalize(ctx.input(0))); };
   s.hardCases = {{"zero vector", {{"x", Value::vector({0, 0, 0})}}, {}, "the zero vector, not NaN", 0, 0},
@@ -354,7 +361,13 @@ NodeSpec remapNode() {
   s.outputs = {ports::gen("out", "the remapped value")};
   s.options = {ports::flag("clamp", false, "clamp t to [0, 1]")};
   s.emit = [](EmitContext& ctx) {
-    std::string fn = typedName(ctx.option("clamp").get<bool>() ? "wg_remap_clamped" : "wg_remap", ctx.outputType(0));
+    // A proven non-empty source range (the ranges of in_min and in_max are disjoint)
+    // makes the empty-range select dead.
+    ValueFact a = ctx.inputFact(1), b = ctx.inputFact(2);
+    bool nonempty = a.hi < b.lo || b.hi < a.lo;
+    std::string fn = typedName(std::string(ctx.option("clamp").get<bool>() ? "wg_remap_clamped" : "wg_remap") +
+                                   (nonempty ? "_nonempty" : ""),
+                               ctx.outputType(0));
     ctx.output(0, EmitContext::call(fn, {ctx.input(0), ctx.input(1), ctx.input(2), ctx.input(3), ctx.input(4)}));
   };
   s.eval = [](EvalContext& ctx) {

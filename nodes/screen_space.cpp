@@ -47,11 +47,18 @@ NodeSpec sceneDepthNode() {
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"scene_depth"};
+  // The depth texture's values lie in [0, 1] (GL clamps depth writes to the depth range).
+  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+    return std::vector<ValueFact>{{0, 1, false}, {}, {}};
+  };
   s.emit = [](EmitContext& ctx) {
     std::string uv = ctx.input("screen_uv");
     std::string raw = ctx.temporary(Type::Float, "texture(" + ctx.sceneTexture("scene_depth") + ", " + uv + ").r");
-    std::string lin =
-        ctx.temporary(Type::Float, EmitContext::call("wg_linearize_depth", {raw, ctx.builtin(Builtin::CameraNearFar)}));
+    // A depth texture holds [0, 1]; with the runtime's near/far range (a fact) the
+    // unguarded linearisation is exact and finite.
+    ValueFact nf = ctx.knownBuiltin(Builtin::CameraNearFar);
+    std::string fn = nf.atLeast(1e-6) && nf.hi <= 1e30 ? "wg_linearize_depth_known" : "wg_linearize_depth";
+    std::string lin = ctx.temporary(Type::Float, EmitContext::call(fn, {raw, ctx.builtin(Builtin::CameraNearFar)}));
     ctx.output(0, raw);
     ctx.output(1, lin);
     ctx.output(2, EmitContext::call("wg_scene_depth_position", {uv, lin, ctx.builtin(Builtin::CameraPosition),

@@ -37,9 +37,11 @@ NodeSpec subsurfaceNode() {
   s.outputs = {ports::fixed("color", Type::Vec3, "color * intensity"),
                ports::fixed("intensity", Type::Float, "strength * V.(-H)^power * height factor")};
   s.emit = [](EmitContext& ctx) {
+    bool known = ctx.inputFact("normal").normalized && ctx.inputFact("view").normalized &&
+                 ctx.inputFact("light").normalized && ctx.inputFact("power").above(0);
     std::string i = ctx.temporary(
         Type::Float, "(" + ctx.input("strength") + " * " +
-                         EmitContext::call("wg_subsurface_intensity",
+                         EmitContext::call(known ? "wg_subsurface_intensity_unit" : "wg_subsurface_intensity",
                                            {ctx.input("normal"), ctx.input("view"), ctx.input("light"),
                                             ctx.input("distortion"), ctx.input("power"), ctx.input("height")}) +
                          ")");

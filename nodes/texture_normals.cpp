@@ -76,12 +76,22 @@ NodeSpec normalMapScrollNode() {
                     "how the layers combine: the seeds' normalize(a + b), whiteout, or reoriented normal mapping"),
   };
   s.isSource = true;
+  // wg_waves_tangent_to_world: unit, or the up vector when degenerate.
+  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+    ValueFact unit{-1, 1, true};
+    return std::vector<ValueFact>{unit, unit};
+  };
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
     std::string time = ctx.temporary(Type::Float, ctx.input("time"));
     auto layer = [&](const char* scale, const char* speed) {
-      std::string uv =
-          EmitContext::call("wg_normal_map_scroll_uv", {ctx.input("uv"), ctx.input(scale), ctx.input(speed), time});
+      // A layer that neither scales nor scrolls reads the texture at uv itself: uv * 1.0 +
+      // fract(vec2(0.0) * t) is uv exactly for the finite time the runtime sends, but
+      // glslang and spirv-opt keep it (0 * t is NaN for an infinite t).
+      bool still = ctx.inputFact(scale).isConstant(1) && ctx.inputFact(speed).isConstant(0);
+      std::string uv = still ? ctx.input("uv")
+                             : EmitContext::call("wg_normal_map_scroll_uv",
+                                                 {ctx.input("uv"), ctx.input(scale), ctx.input(speed), time});
       return ctx.temporary(Type::Vec3,
                            EmitContext::call("wg_normal_map_scroll_unpack", {"texture(" + tex + ", " + uv + ")"}));
     };
@@ -89,8 +99,12 @@ NodeSpec normalMapScrollNode() {
     std::string n = ctx.temporary(
         Type::Vec3, EmitContext::call("wg_normal_map_scroll_" + ctx.option("blend").get<std::string>(), {a, b}));
     std::string ts = EmitContext::call("wg_normal_map_scroll_strength", {n, ctx.input("strength")});
-    ctx.output(0, EmitContext::call("wg_waves_tangent_to_world",
-                                    {ts, ctx.input("tangent"), ctx.input("binormal"), ctx.input("normal")}));
+    // ts is a finite unpacked texel, so the flat frame's zero products are exact zeros.
+    auto tc = ctx.inputConstant(ctx.inputIndex("tangent")), bc = ctx.inputConstant(ctx.inputIndex("binormal"));
+    bool flat = tc && bc && *tc == Value::vector({1, 0, 0}) && *bc == Value::vector({0, 0, 1});
+    ctx.output(0, flat ? EmitContext::call("wg_waves_tangent_to_world_flat", {ts, ctx.input("normal")})
+                       : EmitContext::call("wg_waves_tangent_to_world",
+                                           {ts, ctx.input("tangent"), ctx.input("binormal"), ctx.input("normal")}));
     ctx.output(1, n);
   };
   s.eval = [](EvalContext& ctx) {

@@ -31,7 +31,10 @@ NodeSpec linearizeDepthNode() {
   };
   s.outputs = {ports::fixed("linear", Type::Float, "view-space depth (distance along the camera axis), <= 1e30")};
   s.emit = [](EmitContext& ctx) {
-    ctx.output(0, EmitContext::call("wg_linearize_depth", {ctx.input("depth"), ctx.input("near_far")}));
+    ValueFact d = ctx.inputFact("depth"), nf = ctx.inputFact("near_far");
+    bool known = d.atLeast(0) && d.hi <= 1 && nf.atLeast(1e-6) && nf.hi <= 1e30;
+    ctx.output(0, EmitContext::call(known ? "wg_linearize_depth_known" : "wg_linearize_depth",
+                                    {ctx.input("depth"), ctx.input("near_far")}));
   };
   s.eval = [](EvalContext& ctx) {
     const Value& nf = ctx.input("near_far");
@@ -85,12 +88,20 @@ NodeSpec waterDepthNode() {
   s.resources = {"scene_depth"};
   s.emit = [](EmitContext& ctx) {
     std::string nf = ctx.builtin(Builtin::CameraNearFar);
+    // The scene depth is a depth texture (in [0, 1]); with the runtime's near/far and
+    // fragment depth facts the unguarded linearisation is exact and finite.
+    ValueFact nfFact = ctx.knownBuiltin(Builtin::CameraNearFar), fd = ctx.knownBuiltin(Builtin::FragDepth);
+    bool nfKnown = nfFact.atLeast(1e-6) && nfFact.hi <= 1e30;
+    std::string sceneFn = nfKnown ? "wg_linearize_depth_known" : "wg_linearize_depth";
+    std::string surfaceFn = nfKnown && fd.atLeast(0) && fd.hi <= 1 ? "wg_linearize_depth_known" : "wg_linearize_depth";
     std::string sceneDepth = "texture(" + ctx.sceneTexture("scene_depth") + ", " + ctx.input("screen_uv") + ").r";
-    std::string scene = ctx.temporary(Type::Float, EmitContext::call("wg_linearize_depth", {sceneDepth, nf}));
+    std::string scene = ctx.temporary(Type::Float, EmitContext::call(sceneFn, {sceneDepth, nf}));
     std::string surface =
-        ctx.temporary(Type::Float, EmitContext::call("wg_linearize_depth", {ctx.builtin(Builtin::FragDepth), nf}));
+        ctx.temporary(Type::Float, EmitContext::call(surfaceFn, {ctx.builtin(Builtin::FragDepth), nf}));
     std::string view = ctx.input("view");
-    std::string factor = EmitContext::call("wg_water_depth_ray_factor", {ctx.builtin(Builtin::View), view});
+    std::string factor = EmitContext::call(
+        ctx.inputFact("view").normalized ? "wg_water_depth_ray_factor_unit_view" : "wg_water_depth_ray_factor",
+        {ctx.builtin(Builtin::View), view});
     bool vertical = ctx.option("measure").get<std::string>() == "vertical";
     std::string v = vertical ? "abs(" + EmitContext::call("wg_safe_normalize_vec3", {view}) + ".y)" : "1.0";
     ctx.output(0, EmitContext::call("wg_water_depth_thickness", {scene, surface, factor, v}));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -258,9 +259,19 @@ struct Renderer::Impl {
     std::string name, type, builtin, parameter;
     double angularFrequency = 0;  // time_phase
     std::vector<float> value;     // parameter values
+    // The parameter's manifest min/max: every value is clamped into them on upload, as the
+    // generated shader may rely on the range (codegen/value_facts.h).
+    float lo = -std::numeric_limits<float>::infinity(), hi = std::numeric_limits<float>::infinity();
     std::vector<std::pair<GLuint, GLint>> locations;  // (program, location) where it is used
   };
   std::vector<WaterUniform> uniforms;
+  // Into [lo, hi] per component; NaN becomes lo (or hi when lo is unbounded).
+  static void clampParameter(WaterUniform& u) {
+    for (float& x : u.value) {
+      if (!(x >= u.lo)) x = std::isfinite(u.lo) ? u.lo : (std::isfinite(u.hi) ? u.hi : x);
+      if (x > u.hi) x = u.hi;
+    }
+  }
 
   std::vector<float> builtinValue(const WaterUniform& u) const {
     const std::string& b = u.builtin;
@@ -273,7 +284,12 @@ struct Renderer::Impl {
     else if (b == "camera_position") v = {camera.position.x, camera.position.y, camera.position.z};
     else if (b == "time") v = {settings.scene.time};
     else if (b == "viewport_size") v = {static_cast<float>(settings.width), static_cast<float>(settings.height)};
-    else if (b == "camera_near_far") v = {camera.nearPlane, camera.farPlane};
+    else if (b == "camera_near_far") {
+      // Each plane clamped into [1e-6, 1e30] (NaN to 1e-6; an infinite far plane to
+      // 1e30): the generated shader relies on it (builtinFact(CameraNearFar)).
+      auto plane = [](float x) { return !(x >= 1e-6f) ? 1e-6f : std::min(x, 1e30f); };
+      v = {plane(camera.nearPlane), plane(camera.farPlane)};
+    }
     else if (b == "sun_direction") v = {sun.x, sun.y, sun.z};
     else if (b == "time_phase") {
       // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
@@ -336,6 +352,9 @@ struct Renderer::Impl {
           u.parameter = m["parameter"].is_string() ? m["parameter"].get<std::string>() : u.name;
           u.value = numbers(m.value("default", nlohmann::json()));
           if (u.value.empty()) manifestError("parameter uniform " + u.name + " has no numeric \"default\"");
+          if (m.contains("min") && m["min"].is_number()) u.lo = m["min"].get<float>();
+          if (m.contains("max") && m["max"].is_number()) u.hi = m["max"].get<float>();
+          clampParameter(u);
         } else {
           u.builtin = m.value("builtin", "");
           u.angularFrequency = m.value("angular_frequency", 0.0);
@@ -723,6 +742,7 @@ bool Renderer::setParameter(const std::string& parameter, const std::vector<floa
     if (u.parameter != parameter) continue;
     if (value.size() != u.value.size()) return false;
     u.value = value;
+    Impl::clampParameter(u);
     found = true;
   }
   return found;

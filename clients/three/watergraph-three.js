@@ -116,6 +116,16 @@ function parameterValue(u) {
   }
 }
 
+// A parameter value clamped into the manifest's [min, max] (NaN to min): the generated
+// shader drops guards the range makes dead (watergraph's value facts), so a value outside
+// it could make the water NaN.
+function clampToRange(x, u) {
+  const lo = typeof u.min === 'number' ? u.min : -Infinity;
+  const hi = typeof u.max === 'number' ? u.max : Infinity;
+  if (!(x >= lo)) return Number.isFinite(lo) ? lo : Number.isFinite(hi) ? hi : x;
+  return x > hi ? hi : x;
+}
+
 const BUILTIN_INITIAL = {
   model: () => new THREE.Matrix4(),
   view_projection: () => new THREE.Matrix4(),
@@ -234,7 +244,10 @@ export class WaterGraph {
     set('projection', (u) => u.value.copy(camera.projectionMatrix));
     set('view_projection', (u) => u.value.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse));
     set('camera_position', (u) => u.value.setFromMatrixPosition(camera.matrixWorld));
-    set('camera_near_far', (u) => u.value.set(camera.near, camera.far));
+    // Each plane clamped into [1e-6, 1e30] (an infinite far plane to 1e30), as the runtime
+    // does: the generated depth linearisation relies on that range.
+    const plane = (x) => (!(x >= 1e-6) ? 1e-6 : Math.min(x, 1e30));
+    set('camera_near_far', (u) => u.value.set(plane(camera.near), plane(camera.far)));
   }
 
   setModelMatrix(matrix) {
@@ -252,9 +265,14 @@ export class WaterGraph {
     const u = (this.manifest.uniforms ?? []).find((x) => x.parameter === parameter);
     if (!u) throw new WaterGraphError(`graph '${this.manifest.graph}' has no parameter '${parameter}' (or it was folded away)`);
     const slot = this.uniforms[u.name];
-    if (typeof slot.value === 'number') slot.value = Number(value);
-    else if (Array.isArray(value)) slot.value.fromArray(value);
-    else slot.value.copy(value);
+    if (typeof slot.value === 'number') slot.value = clampToRange(Number(value), u);
+    else {
+      if (Array.isArray(value)) slot.value.fromArray(value);
+      else slot.value.copy(value);
+      // Per component, as the runtime does: the shader may rely on the manifest's range.
+      const v = slot.value.toArray().map((x) => clampToRange(x, u));
+      slot.value.fromArray(v);
+    }
   }
 
   dispose() {

@@ -38,3 +38,8 @@ float wg_fresnel_exact(float cosi, float n1, float n2) {
 // reflectance is 1 - (N.V)^strength; seed 003 uses (1 - N.V)^strength directly.
 float wg_fresnel_power_cos(float cosi, float strength) { return 1.0 - wg_safe_pow_float(cosi, strength); }
 float wg_fresnel_power_rim(float cosi, float strength) { return wg_safe_pow_float(1.0 - cosi, strength); }
+
+// The power forms where strength > 0 is proven (value facts): cosi and 1 - cosi lie in
+// [0, 1], so native pow is defined and equals the safe one.
+float wg_fresnel_power_cos_positive(float cosi, float strength) { return 1.0 - pow(cosi, strength); }
+float wg_fresnel_power_rim_positive(float cosi, float strength) { return pow(1.0 - cosi, strength); }

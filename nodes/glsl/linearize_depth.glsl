@@ -12,3 +12,14 @@ float wg_linearize_depth(float depth, vec2 near_far) {
   float denom = (1.0 - d) + d * r;
   return min(n / max(denom, n * 1e-30), 1e30);
 }
+
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
+  float r = n / max(near_far.y, n);
+  return n / ((1.0 - depth) + depth * r);
+}

@@ -29,3 +29,23 @@ vec3 wg_remap_clamped_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) {
 vec4 wg_remap_clamped_vec4(vec4 x, vec4 a, vec4 b, vec4 c, vec4 d) {
   return vec4(wg_remap_clamped_vec2(x.xy, a.xy, b.xy, c.xy, d.xy), wg_remap_clamped_vec2(x.zw, a.zw, b.zw, c.zw, d.zw));
 }
+
+// The same where the compiler proved in_min != in_max for every input the shader receives
+// (value facts: disjoint ranges of a and b, e.g. a = 0 and a parameter b with min 0.01):
+// the empty-range select is dead, so it is left out. Same values as the guarded forms.
+float wg_remap_nonempty_float(float x, float a, float b, float c, float d) { return mix(c, d, (x - a) / (b - a)); }
+vec2 wg_remap_nonempty_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) { return mix(c, d, (x - a) / (b - a)); }
+vec3 wg_remap_nonempty_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) { return mix(c, d, (x - a) / (b - a)); }
+vec4 wg_remap_nonempty_vec4(vec4 x, vec4 a, vec4 b, vec4 c, vec4 d) { return mix(c, d, (x - a) / (b - a)); }
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
+}
+vec2 wg_remap_clamped_nonempty_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
+}
+vec3 wg_remap_clamped_nonempty_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
+}
+vec4 wg_remap_clamped_nonempty_vec4(vec4 x, vec4 a, vec4 b, vec4 c, vec4 d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
+}

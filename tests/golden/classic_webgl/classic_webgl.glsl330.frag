@@ -29,24 +29,15 @@ uniform sampler2D u_refraction;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
-// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
-// 0^y is 0 for y > 0 and 1 for y <= 0.
-// Guarded functions here compute both sides first and choose with ?: between plain values:
-// glslang turns that into one OpSelect, where ?: or an early return around an expression
-// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
-// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
-float wg_safe_pow_float(float x, float y) {
-  float p = exp2(y * log2(x));
-  float edge = y > 0.0 ? 0.0 : 1.0;
-  return x > 0.0 ? p : edge;
-}
+// Native pow where the compiler proved x >= 0 and y > 0 for every input the shader
+// receives (value facts: e.g. a clamped cosine raised to a parameter with min > 0). GLSL
+// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined) and it equals
+// wg_safe_pow (0^y = 0 for y > 0); one instruction instead of the guarded select.
+float wg_pow_known_safe_float(float x, float y) { return pow(x, y); }
 
-// Water colour by depth: shallow colour at the surface, deep colour from max_depth down.
-// Negative thickness (scene in front of the water) counts as 0; max_depth is floored so it
-// never divides by zero.
-float wg_depth_tint_linear(float depth, float max_depth) {
-  return clamp(depth / max(max_depth, 1e-6), 0.0, 1.0);
-}
+// The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is
+// at least that): the floor is dead.
+float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
 
 // Seed 000's du/dv distortion: a scrolling du/dv map turned into a small UV offset that
 // ripples the refraction and reflection lookups.
@@ -67,23 +58,19 @@ vec2 wg_dudv_distortion_offset(sampler2D dudv, vec2 uv, float tiling, float move
 // Cosine of incidence, kept in [0, 1].
 float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
 
-// Artistic power forms. Seed 000 mixes reflection and refraction by (N.V)^strength, so its
-// reflectance is 1 - (N.V)^strength; seed 003 uses (1 - N.V)^strength directly.
-float wg_fresnel_power_cos(float cosi, float strength) { return 1.0 - wg_safe_pow_float(cosi, strength); }
+// The power forms where strength > 0 is proven (value facts): cosi and 1 - cosi lie in
+// [0, 1], so native pow is defined and equals the safe one.
+float wg_fresnel_power_cos_positive(float cosi, float strength) { return 1.0 - pow(cosi, strength); }
 
-// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
-
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
-// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
-// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
-// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
-// finite 1e30 instead of inf; the result never exceeds 1e30.
-float wg_linearize_depth(float depth, vec2 near_far) {
-  float n = max(near_far.x, 1e-6);
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
   float r = n / max(near_far.y, n);
-  float d = clamp(depth, 0.0, 1.0);
-  float denom = (1.0 - d) + d * r;
-  return min(n / max(denom, n * 1e-30), 1e30);
+  return n / ((1.0 - depth) + depth * r);
 }
 
 // Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
@@ -103,22 +90,17 @@ vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a 
 // The blended tangent-space normal with its slope scaled by `strength`.
 vec3 wg_normal_map_scroll_strength(vec3 n, float strength) { return vec3(n.xy * strength, n.z); }
 
-// phong_specular: seed 001's Phong specular of the sun and of the environment light.
-
-// Seed 001, listing 9: the light direction L mirrored about N, R = 2(N.L)N - L, against
-// the unit direction to the viewer: max(R.V, 0), kept in [0, 1]. (Equal to
-// max(dot(reflect(-V, N), L), 0), the view ray reflected against the light.)
-float wg_phong_specular_lobe(vec3 n, vec3 v, vec3 l) {
-  vec3 nn = wg_safe_normalize_vec3(n);
-  vec3 ll = wg_safe_normalize_vec3(l);
-  vec3 r = 2.0 * dot(nn, ll) * nn - ll;
-  return clamp(dot(r, wg_safe_normalize_vec3(v)), 0.0, 1.0);
+// The lobe where n, v and l are proven normalized (value facts: unit length or exactly
+// zero, e.g. the safe-normalised builtins or a normal map's unit output): safe
+// normalisation leaves such vectors unchanged, so it is left out. Same values, bounded
+// (|r| <= 3) and clamped to [0, 1].
+float wg_phong_specular_lobe_unit(vec3 n, vec3 v, vec3 l) {
+  vec3 r = 2.0 * dot(n, l) * n - l;
+  return clamp(dot(r, v), 0.0, 1.0);
 }
 
-float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float q = clamp((x - a) / (b - a), 0.0, 1.0);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
 // scene_color / planar_reflection: screen-space look-ups of the scene textures.
@@ -128,26 +110,21 @@ float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
 // the screen, no stretched border texels).
 vec2 wg_scene_color_uv(vec2 uv, vec2 offset) { return clamp(uv + offset, vec2(0.0), vec2(1.0)); }
 
-// water_depth: how much water lies between the surface and the scene behind it.
-
-// The factor that turns a view-depth difference into a distance along the view ray:
-// 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
-// cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
-// values rather than an early return, so it compiles to a select, not branches.
-float wg_water_depth_ray_factor(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
+}
+
+// The ray factor where v is proven normalized (value facts: the safe-normalised view
+// direction): re-normalising it changes nothing, so only the camera axis is normalised.
+float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
+  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
+  float c = dot(-v, wg_safe_normalize_vec3(fwd));
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -161,13 +138,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   return l2 < 1e-12 ? fallback : unit;
 }
 
-// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
-// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
-// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
-vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+// The same for the flat frame T = +x, B = +z (constant inputs): t * ts.x + b * ts.y is
+// (ts.x, 0, ts.y) exactly for a finite ts, which glslang and spirv-opt cannot fold
+// (0 * x is NaN for an infinite x), so it is written out.
+vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
   vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
+  return wg_waves_unit_or_vec3(vec3(ts.x, 0.0, ts.y) + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {
@@ -178,27 +154,27 @@ void main() {
   vec2 n0_dudv_t1 = wg_dudv_distortion_offset(t0_dudv, v_uv, 4.0, n0_dudv_t0, p_distortion);
   vec2 n0_dudv_uv = (b_screen_uv + n0_dudv_t1);
   float n1_normal_t0 = u_time;
-  vec3 n1_normal_t1 = wg_normal_map_scroll_unpack(texture(t1_water_normal, wg_normal_map_scroll_uv(n0_dudv_uv, 1.0, vec2(0.0), n1_normal_t0)));
+  vec3 n1_normal_t1 = wg_normal_map_scroll_unpack(texture(t1_water_normal, n0_dudv_uv));
   vec3 n1_normal_t2 = wg_normal_map_scroll_unpack(texture(t1_water_normal, wg_normal_map_scroll_uv(n0_dudv_uv, 0.5, vec2(0.01, -0.02), n1_normal_t0)));
   vec3 n1_normal_t3 = wg_normal_map_scroll_add(n1_normal_t1, n1_normal_t2);
-  vec3 n1_normal_normal = wg_waves_tangent_to_world(wg_normal_map_scroll_strength(n1_normal_t3, 0.6), vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), b_normal);
+  vec3 n1_normal_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n1_normal_t3, 0.6), b_normal);
   float n2_fresnel_t0 = wg_cos_incidence(n1_normal_normal, b_view_direction);
-  float n2_fresnel_t1 = wg_fresnel_power_cos(n2_fresnel_t0, p_fresnel_strength);
+  float n2_fresnel_t1 = wg_fresnel_power_cos_positive(n2_fresnel_t0, p_fresnel_strength);
   vec2 n3_refraction_t0 = wg_scene_color_uv(b_screen_uv, n0_dudv_t1);
   vec3 n3_refraction_color = texture(u_refraction, n3_refraction_t0).rgb;
   vec2 n4_reflection_t0 = wg_scene_color_uv(b_screen_uv, n0_dudv_t1);
   vec3 n4_reflection_color = texture(u_reflection, n4_reflection_t0).rgb;
-  float n5_depth_t0 = wg_linearize_depth(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n5_depth_t1 = wg_linearize_depth(gl_FragCoord.z, u_camera_near_far);
-  float n5_depth_thickness = wg_water_depth_thickness(n5_depth_t0, n5_depth_t1, wg_water_depth_ray_factor(u_view, b_view_direction), 1.0);
-  float n6_shore_fade = wg_remap_clamped_float(n5_depth_thickness, 0.0, p_edge_softness, 0.0, 1.0);
+  float n5_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
+  float n5_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
+  float n5_depth_thickness = wg_water_depth_thickness(n5_depth_t0, n5_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
+  float n6_shore_fade = wg_remap_clamped_nonempty_float(n5_depth_thickness, 0.0, p_edge_softness, 0.0, 1.0);
   float n7_highlight_strength = (p_reflectivity * n6_shore_fade);
-  float n8_tint_t0 = wg_depth_tint_linear(n5_depth_thickness, p_tint_depth);
+  float n8_tint_t0 = wg_depth_tint_linear_floored(n5_depth_thickness, p_tint_depth);
   vec3 n8_tint_color = mix(p_shallow_color, p_deep_color, n8_tint_t0);
   vec3 n9_tinted = mix(n3_refraction_color, n8_tint_color, vec3(p_tint_strength));
   vec3 n10_surface = mix(n9_tinted, n4_reflection_color, vec3(n2_fresnel_t1));
-  float n12_phong_t0 = wg_safe_pow_float(wg_phong_specular_lobe(n1_normal_normal, b_view_direction, u_sun_direction), p_shine_damper);
-  float n12_phong_t1 = wg_phong_specular_lobe(n1_normal_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
+  float n12_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n1_normal_normal, b_view_direction, u_sun_direction), p_shine_damper);
+  float n12_phong_t1 = wg_phong_specular_lobe_unit(n1_normal_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
   float n13_highlight = (n12_phong_t0 * n7_highlight_strength);
   vec3 n14_color = (n10_surface + vec3(n13_highlight));
   o_color = vec4(n14_color, 1.0);

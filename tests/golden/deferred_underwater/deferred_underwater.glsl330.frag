@@ -77,6 +77,12 @@ float wg_smoothstep_float(float e0, float e1, float x) {
   return e0 == e1 ? stepped : eased;
 }
 
+// Native pow where the compiler proved x >= 0 and y > 0 for every input the shader
+// receives (value facts: e.g. a clamped cosine raised to a parameter with min > 0). GLSL
+// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined) and it equals
+// wg_safe_pow (0^y = 0 for y > 0); one instruction instead of the guarded select.
+float wg_pow_known_safe_float(float x, float y) { return pow(x, y); }
+
 // Fresnel reflectance of the water surface. `cosi` is the cosine between the unit normal
 // (facing the viewer) and the unit view vector, clamped to [0, 1] by the caller, so
 // grazing and back-facing views stay finite.
@@ -150,6 +156,17 @@ float wg_linearize_depth(float depth, vec2 near_far) {
   return min(n / max(denom, n * 1e-30), 1e30);
 }
 
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
+  float r = n / max(near_far.y, n);
+  return n / ((1.0 - depth) + depth * r);
+}
+
 // A normal from a height texture by central differences (seed 001's wave normals).
 
 // The red channel at uv as GL_LINEAR + GL_REPEAT define it, computed in float from the
@@ -204,10 +221,8 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
   return wg_safe_normalize_vec3(reflect(-vv, nn));
 }
 
-float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float q = clamp((x - a) / (b - a), 0.0, 1.0);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
 // scene_color / planar_reflection: screen-space look-ups of the scene textures.
@@ -460,26 +475,21 @@ float wg_crest_foam(float height, vec3 normal, vec2 xz, vec2 drift, float thresh
   return wg_safe_pow_float(clamp(base * mask * intensity, 0.0, 1.0), 1.0 / max(sharpness, 1e-3));
 }
 
-// water_depth: how much water lies between the surface and the scene behind it.
-
-// The factor that turns a view-depth difference into a distance along the view ray:
-// 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
-// cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
-// values rather than an early return, so it compiles to a select, not branches.
-float wg_water_depth_ray_factor(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
+}
+
+// The ray factor where v is proven normalized (value facts: the safe-normalised view
+// direction): re-normalising it changes nothing, so only the camera axis is normalised.
+float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
+  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
+  float c = dot(-v, wg_safe_normalize_vec3(fwd));
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -515,7 +525,7 @@ void main() {
   vec3 n0_wave_t5 = wg_trochoid_wave_march(u_camera_position, n0_wave_t0, 0.0, n0_wave_t1, n0_wave_t2, u_phase0, n0_wave_t3, n0_wave_t4, 10000.0, 10, t0_height);
   float n0_wave_height = wg_trochoid_wave_height(n0_wave_t5.xz, n0_wave_t1, n0_wave_t2, u_phase0, n0_wave_t3, n0_wave_t4, t0_height);
   vec3 n0_wave_normal = wg_trochoid_wave_normal(n0_wave_t5.xz, n0_wave_t1, n0_wave_t2, u_phase0, n0_wave_t3, n0_wave_t4, 0.00390625, t0_height);
-  float n1_crest_height = wg_remap_clamped_float(n0_wave_height, -0.25, 0.25, 0.0, 1.0);
+  float n1_crest_height = wg_remap_clamped_nonempty_float(n0_wave_height, -0.25, 0.25, 0.0, 1.0);
   vec2 n2_wave_xz = n0_wave_t5.xz;
   vec2 n3_detail_uv = (n2_wave_xz * vec2(0.08));
   vec2 n4_detail_t0 = n3_detail_uv;
@@ -540,19 +550,19 @@ void main() {
   float n11_fresnel_t1 = wg_fresnel_schlick(n11_fresnel_t0, 0.02);
   float n11_fresnel_transmittance = (1.0 - n11_fresnel_t1);
   vec3 n12_reflected = (n7_ssr_color * vec3(n11_fresnel_t1));
-  float n14_phong_t0 = wg_safe_pow_float(wg_phong_specular_lobe(n4_detail_normal, b_view_direction, u_sun_direction), 120.0);
+  float n14_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe(n4_detail_normal, b_view_direction, u_sun_direction), 120.0);
   float n14_phong_t1 = wg_phong_specular_lobe(n4_detail_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
   vec3 n14_phong_color = (n14_phong_t0 * vec3(1.0) + n14_phong_t1 * vec3(0.3, 0.35, 0.4));
-  float n15_depth_t0 = wg_linearize_depth(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n15_depth_t1 = wg_linearize_depth(b_water_surface.w, u_camera_near_far);
-  float n15_depth_thickness = wg_water_depth_thickness(n15_depth_t0, n15_depth_t1, wg_water_depth_ray_factor(u_view, b_view_direction), abs(wg_safe_normalize_vec3(b_view_direction).y));
+  float n15_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
+  float n15_depth_t1 = wg_linearize_depth_known(b_water_surface.w, u_camera_near_far);
+  float n15_depth_thickness = wg_water_depth_thickness(n15_depth_t0, n15_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), abs(wg_safe_normalize_vec3(b_view_direction).y));
   float n16_coast_t0 = clamp(wg_coastal_foam_amount(n15_depth_thickness, p_foam_depth, 1.0, n5_crest) * texture(t1_foam, wg_coastal_foam_uv(v_world_position, n4_detail_normal, 0.1, 0.05)).r, 0.0, 1.0);
   float n16_coast_specular_scale = wg_coastal_foam_specular_cubic(n16_coast_t0, 1.0);
   vec3 n17_specular = (n14_phong_color * vec3(n16_coast_specular_scale));
   vec3 n18_lit = (n12_reflected + n17_specular);
   vec3 n19_surface = mix(n18_lit, vec3(0.9, 0.95, 1.0), vec3(n16_coast_t0));
   float n20_scene_t0 = texture(u_scene_depth, b_screen_uv).r;
-  float n20_scene_t1 = wg_linearize_depth(n20_scene_t0, u_camera_near_far);
+  float n20_scene_t1 = wg_linearize_depth_known(n20_scene_t0, u_camera_near_far);
   vec3 n20_scene_position = wg_scene_depth_position(b_screen_uv, n20_scene_t1, u_camera_position, u_view, u_projection);
   vec2 n21_caustics_t0 = wg_texture_caustics_uv(n20_scene_position, 0.15);
   vec2 n21_caustics_t1 = mod(u_time * vec2(0.02, 0.01), 1.0);

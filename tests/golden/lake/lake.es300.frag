@@ -18,12 +18,9 @@ uniform float p_centre_depth;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
-// Water colour by depth: shallow colour at the surface, deep colour from max_depth down.
-// Negative thickness (scene in front of the water) counts as 0; max_depth is floored so it
-// never divides by zero.
-float wg_depth_tint_linear(float depth, float max_depth) {
-  return clamp(depth / max(max_depth, 1e-6), 0.0, 1.0);
-}
+// The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is
+// at least that): the floor is dead.
+float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
 
 // Fresnel reflectance of the water surface. `cosi` is the cosine between the unit normal
 // (facing the viewer) and the unit view vector, clamped to [0, 1] by the caller, so
@@ -39,10 +36,8 @@ float wg_fresnel_schlick(float cosi, float f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
-float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float q = clamp((x - a) / (b - a), 0.0, 1.0);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
 void main() {
@@ -50,9 +45,9 @@ void main() {
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   vec2 n1_from_centre = (v_uv - vec2(0.5));
   float n2_radius = length(n1_from_centre);
-  float n3_shore = wg_remap_clamped_float(n2_radius, 0.0, 0.5, 1.0, 0.0);
+  float n3_shore = wg_remap_clamped_nonempty_float(n2_radius, 0.0, 0.5, 1.0, 0.0);
   float n4_depth = (n3_shore * p_centre_depth);
-  float n5_tint_t0 = wg_depth_tint_linear(n4_depth, p_max_depth);
+  float n5_tint_t0 = wg_depth_tint_linear_floored(n4_depth, p_max_depth);
   vec3 n5_tint_color = mix(p_shallow, p_deep, n5_tint_t0);
   float n6_fresnel_t0 = wg_cos_incidence(b_normal, b_view_direction);
   float n6_fresnel_t1 = wg_fresnel_schlick(n6_fresnel_t0, 0.02);

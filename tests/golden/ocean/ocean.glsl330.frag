@@ -149,21 +149,17 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
   return wg_safe_normalize_vec3(reflect(-vv, nn));
 }
 
-float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float q = clamp((x - a) / (b - a), 0.0, 1.0);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
-// subsurface: the fake subsurface glow of wave crests lit from behind (seed 003, section 8).
-
-// H = normalize(L + N distortion); I = saturate(V.(-H))^power * saturate(height * 2 + 0.5).
-// All vectors normalised safely; the safe pow keeps 0^power at 0 (power > 0) and the
-// result finite for any power.
-float wg_subsurface_intensity(vec3 n, vec3 v, vec3 l, float distortion, float power, float height) {
-  vec3 h = wg_safe_normalize_vec3(wg_safe_normalize_vec3(l) + wg_safe_normalize_vec3(n) * distortion);
-  float vdoth = clamp(dot(wg_safe_normalize_vec3(v), -h), 0.0, 1.0);
-  return wg_safe_pow_float(vdoth, power) * clamp(height * 2.0 + 0.5, 0.0, 1.0);
+// The same where n, v and l are proven normalized (value facts: unit length or exactly
+// zero, so safe re-normalisation leaves them unchanged) and power > 0 (so vdoth in [0, 1]
+// makes native pow defined and equal to the safe one). Same values.
+float wg_subsurface_intensity_unit(vec3 n, vec3 v, vec3 l, float distortion, float power, float height) {
+  vec3 h = wg_safe_normalize_vec3(l + n * distortion);
+  float vdoth = clamp(dot(v, -h), 0.0, 1.0);
+  return pow(vdoth, power) * clamp(height * 2.0 + 0.5, 0.0, 1.0);
 }
 
 // Value noise: hashed values on the integer lattice, blended with the cubic Hermite weight
@@ -223,13 +219,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   return l2 < 1e-12 ? fallback : unit;
 }
 
-// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
-// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
-// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
-vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+// The same for the flat frame T = +x, B = +z (constant inputs): t * ts.x + b * ts.y is
+// (ts.x, 0, ts.y) exactly for a finite ts, which glslang and spirv-opt cannot fold
+// (0 * x is NaN for an infinite x), so it is written out.
+vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
   vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
+  return wg_waves_unit_or_vec3(vec3(ts.x, 0.0, ts.y) + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {
@@ -239,7 +234,7 @@ void main() {
   vec3 n3_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 6.0, vec2(0.05, 0.03), n3_detail_t0)));
   vec3 n3_detail_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 11.0, vec2(-0.03, 0.07), n3_detail_t0)));
   vec3 n3_detail_t3 = wg_normal_map_scroll_add(n3_detail_t1, n3_detail_t2);
-  vec3 n3_detail_normal = wg_waves_tangent_to_world(wg_normal_map_scroll_strength(n3_detail_t3, 0.3), vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), b_normal);
+  vec3 n3_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_detail_t3, 0.3), b_normal);
   vec3 n4_sky_t0 = wg_reflect_dir(n3_detail_normal, b_view_direction);
   vec3 n4_sky_color = texture(u_environment, n4_sky_t0).rgb;
   float n5_fresnel_t0 = wg_cos_incidence(n3_detail_normal, b_view_direction);
@@ -249,11 +244,11 @@ void main() {
   float n8_ggx_t1 = (n8_ggx_t0.x * n8_ggx_t0.w);
   vec3 n8_ggx_color = (vec3(1.0, 0.92, 0.8) * n8_ggx_t1);
   float n10_p_split_y = v_world_position.y;
-  float n11_sss_t0 = (p_sss_strength * wg_subsurface_intensity(n3_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n10_p_split_y));
+  float n11_sss_t0 = (p_sss_strength * wg_subsurface_intensity_unit(n3_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n10_p_split_y));
   vec3 n11_sss_color = (p_sss_color * n11_sss_t0);
   vec3 n12_glow = (n6_body + n11_sss_color);
   vec3 n13_lit = (n12_glow + n8_ggx_color);
-  float n14_height = wg_remap_clamped_float(n10_p_split_y, -1.2, 1.2, 0.0, 1.0);
+  float n14_height = wg_remap_clamped_nonempty_float(n10_p_split_y, -1.2, 1.2, 0.0, 1.0);
   vec2 n15_crest_t0 = vec2(u_phase0, u_phase1) * 40.743664;
   float n15_crest = wg_crest_foam(n14_height, b_normal, v_world_position.xz, n15_crest_t0, p_foam_threshold, 0.7, 0.4, 3.0);
   vec3 n16_color = mix(n13_lit, vec3(0.92, 0.95, 0.97), vec3(n15_crest));

@@ -53,12 +53,9 @@ float wg_blinn_phong_specular(vec3 n, vec3 v, vec3 l, float shininess) {
   return wg_safe_pow_float(ndoth, shininess);
 }
 
-// Water colour by depth: shallow colour at the surface, deep colour from max_depth down.
-// Negative thickness (scene in front of the water) counts as 0; max_depth is floored so it
-// never divides by zero.
-float wg_depth_tint_linear(float depth, float max_depth) {
-  return clamp(depth / max(max_depth, 1e-6), 0.0, 1.0);
-}
+// The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is
+// at least that): the floor is dead.
+float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
 
 // Fresnel reflectance of the water surface. `cosi` is the cosine between the unit normal
 // (facing the viewer) and the unit view vector, clamped to [0, 1] by the caller, so
@@ -101,19 +98,15 @@ float wg_lambert(vec3 n, vec3 l) {
   return clamp(dot(wg_safe_normalize_vec3(n), wg_safe_normalize_vec3(l)), 0.0, 1.0);
 }
 
-// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
-
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
-// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
-// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
-// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
-// finite 1e30 instead of inf; the result never exceeds 1e30.
-float wg_linearize_depth(float depth, vec2 near_far) {
-  float n = max(near_far.x, 1e-6);
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
   float r = n / max(near_far.y, n);
-  float d = clamp(depth, 0.0, 1.0);
-  float denom = (1.0 - d) + d * r;
-  return min(n / max(denom, n * 1e-30), 1e30);
+  return n / ((1.0 - depth) + depth * r);
 }
 
 // reflect_dir: the mirror direction of the view ray about the surface normal, for
@@ -231,26 +224,21 @@ float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated
   return m * m * m;
 }
 
-// water_depth: how much water lies between the surface and the scene behind it.
-
-// The factor that turns a view-depth difference into a distance along the view ray:
-// 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
-// cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
-// values rather than an early return, so it compiles to a select, not branches.
-float wg_water_depth_ray_factor(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
+}
+
+// The ray factor where v is proven normalized (value facts: the safe-normalised view
+// direction): re-normalising it changes nothing, so only the camera axis is normalised.
+float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
+  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
+  float c = dot(-v, wg_safe_normalize_vec3(fwd));
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 void main() {
@@ -269,7 +257,7 @@ void main() {
   vec2 n5_refraction_t0 = wg_scene_color_uv(b_screen_uv, n4_offset);
   vec3 n5_refraction_color = texture(u_scene_color, n5_refraction_t0).rgb;
   float n6_floor_t0 = texture(u_scene_depth, n5_refraction_t0).r;
-  float n6_floor_t1 = wg_linearize_depth(n6_floor_t0, u_camera_near_far);
+  float n6_floor_t1 = wg_linearize_depth_known(n6_floor_t0, u_camera_near_far);
   vec3 n6_floor_position = wg_scene_depth_position(n5_refraction_t0, n6_floor_t1, u_camera_position, u_view, u_projection);
   vec2 n7_floor_xz = n6_floor_position.xz;
   vec2 n8_caustics_t0 = (n7_floor_xz * 0.8);
@@ -278,10 +266,10 @@ void main() {
   float n8_caustics = (p_caustics_strength * min(n8_caustics_t1, n8_caustics_t2));
   vec3 n9_lit_floor = (n5_refraction_color * vec3(n8_caustics));
   vec3 n10_floor_color = (n5_refraction_color + n9_lit_floor);
-  float n11_depth_t0 = wg_linearize_depth(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n11_depth_t1 = wg_linearize_depth(gl_FragCoord.z, u_camera_near_far);
-  float n11_depth_thickness = wg_water_depth_thickness(n11_depth_t0, n11_depth_t1, wg_water_depth_ray_factor(u_view, b_view_direction), 1.0);
-  float n12_tint_t0 = wg_depth_tint_linear(n11_depth_thickness, p_tint_depth);
+  float n11_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
+  float n11_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
+  float n11_depth_thickness = wg_water_depth_thickness(n11_depth_t0, n11_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
+  float n12_tint_t0 = wg_depth_tint_linear_floored(n11_depth_thickness, p_tint_depth);
   vec3 n12_tint_color = mix(vec3(1.0), p_tint_color, n12_tint_t0);
   vec3 n13_body = (n10_floor_color * n12_tint_color);
   vec3 n14_surface = mix(n13_body, n1_sky_color, vec3(n2_fresnel_t1));

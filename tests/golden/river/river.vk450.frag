@@ -87,19 +87,15 @@ float wg_fresnel_schlick(float cosi, float f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
-// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
-
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
-// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
-// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
-// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
-// finite 1e30 instead of inf; the result never exceeds 1e30.
-float wg_linearize_depth(float depth, vec2 near_far) {
-  float n = max(near_far.x, 1e-6);
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
   float r = n / max(near_far.y, n);
-  float d = clamp(depth, 0.0, 1.0);
-  float denom = (1.0 - d) + d * r;
-  return min(n / max(denom, n * 1e-30), 1e30);
+  return n / ((1.0 - depth) + depth * r);
 }
 
 // reflect_dir: the mirror direction of the view ray about the surface normal, for
@@ -114,21 +110,7 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
   return wg_safe_normalize_vec3(reflect(-vv, nn));
 }
 
-// Range remapping, one name per type. An empty source range (in_min == in_max) maps to out_min instead of
-// dividing by zero (the quotient is computed, then not chosen: one OpSelect, no branch).
-float wg_remap_float(float x, float a, float b, float c, float d) {
-  float q = (x - a) / (b - a);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
-}
-
-vec2 wg_remap_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {
-  return vec2(wg_remap_float(x.x, a.x, b.x, c.x, d.x), wg_remap_float(x.y, a.y, b.y, c.y, d.y));
-}
-
-vec3 wg_remap_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) {
-  return vec3(wg_remap_vec2(x.xy, a.xy, b.xy, c.xy, d.xy), wg_remap_float(x.z, a.z, b.z, c.z, d.z));
-}
+vec3 wg_remap_nonempty_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) { return mix(c, d, (x - a) / (b - a)); }
 
 // scene_color / planar_reflection: screen-space look-ups of the scene textures.
 
@@ -151,26 +133,21 @@ float wg_shore_waves(float depth, float frequency, float phase, float amplitude,
   return clamp(w * amplitude * (1.0 - d / dmax), 0.0, 1.0);
 }
 
-// water_depth: how much water lies between the surface and the scene behind it.
-
-// The factor that turns a view-depth difference into a distance along the view ray:
-// 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
-// cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
-// values rather than an early return, so it compiles to a select, not branches.
-float wg_water_depth_ray_factor(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
+}
+
+// The ray factor where v is proven normalized (value facts: the safe-normalised view
+// direction): re-normalising it changes nothing, so only the camera axis is normalised.
+float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
+  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
+  float c = dot(-v, wg_safe_normalize_vec3(fwd));
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 void main() {
@@ -187,7 +164,7 @@ void main() {
   float n0_flow_t7 = wg_flow_map_weight(n0_flow_t5);
   vec4 n0_flow_sample = (texture(t0_water_normal, n0_flow_t0 - n0_flow_t1 * n0_flow_t4) * n0_flow_t6 + texture(t0_water_normal, n0_flow_t0 - n0_flow_t1 * n0_flow_t5) * n0_flow_t7);
   vec3 n1_tangent = n0_flow_sample.xzy;
-  vec3 n2_tangent_n = wg_remap_vec3(n1_tangent, vec3(0.0), vec3(1.0), vec3(-1.0), vec3(1.0));
+  vec3 n2_tangent_n = wg_remap_nonempty_vec3(n1_tangent, vec3(0.0), vec3(1.0), vec3(-1.0), vec3(1.0));
   vec3 n3_tilt = (n2_tangent_n * vec3(0.8, 0.0, 0.8));
   vec3 n5_tilted = (b_normal + n3_tilt);
   vec3 n6_nrm = wg_safe_normalize_vec3(n5_tilted);
@@ -199,9 +176,9 @@ void main() {
   vec2 n10_offset = (n9_nrm_xz * vec2(0.03));
   vec2 n11_refraction_t0 = wg_scene_color_uv(b_screen_uv, n10_offset);
   vec3 n11_refraction_color = texture(u_scene_color, n11_refraction_t0).rgb;
-  float n12_depth_t0 = wg_linearize_depth(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n12_depth_t1 = wg_linearize_depth(gl_FragCoord.z, u_camera_near_far);
-  float n12_depth_thickness = wg_water_depth_thickness(n12_depth_t0, n12_depth_t1, wg_water_depth_ray_factor(u_view, b_view_direction), 1.0);
+  float n12_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
+  float n12_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
+  float n12_depth_thickness = wg_water_depth_thickness(n12_depth_t0, n12_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
   vec2 n13_edge_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
   vec2 n13_edge_t1 = v_world_position.xz * 1.0;
   float n13_edge_t2 = 0.5 * (texture(t2_foam, n13_edge_t1 * 0.1 + n13_edge_t0).r + texture(t2_foam, n13_edge_t1 * 0.08 + vec2(-n13_edge_t0.y, n13_edge_t0.x)).r);

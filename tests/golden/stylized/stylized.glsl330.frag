@@ -33,18 +33,6 @@ uniform sampler2D u_reflection;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
-// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
-// 0^y is 0 for y > 0 and 1 for y <= 0.
-// Guarded functions here compute both sides first and choose with ?: between plain values:
-// glslang turns that into one OpSelect, where ?: or an early return around an expression
-// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
-// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
-float wg_safe_pow_float(float x, float y) {
-  float p = exp2(y * log2(x));
-  float edge = y > 0.0 ? 0.0 : 1.0;
-  return x > 0.0 ? p : edge;
-}
-
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -54,12 +42,9 @@ float wg_smoothstep_float(float e0, float e1, float x) {
   return e0 == e1 ? stepped : eased;
 }
 
-// Water colour by depth: shallow colour at the surface, deep colour from max_depth down.
-// Negative thickness (scene in front of the water) counts as 0; max_depth is floored so it
-// never divides by zero.
-float wg_depth_tint_linear(float depth, float max_depth) {
-  return clamp(depth / max(max_depth, 1e-6), 0.0, 1.0);
-}
+// The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is
+// at least that): the floor is dead.
+float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
 
 // Depth mask, seed 003: 1 - saturate(depth / width), width floored at 1e-6.
 float wg_edge_foam_mask_linear(float depth, float width) {
@@ -93,7 +78,7 @@ vec2 wg_flow_map_decode(vec4 texel) { return texel.xy * 2.0 - 1.0; }
 // Cosine of incidence, kept in [0, 1].
 float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
 
-float wg_fresnel_power_rim(float cosi, float strength) { return wg_safe_pow_float(1.0 - cosi, strength); }
+float wg_fresnel_power_rim_positive(float cosi, float strength) { return pow(1.0 - cosi, strength); }
 
 uvec2 wg_hash_cell_vec2(vec2 p) {
   return uvec2(ivec2(clamp(floor(p), vec2(-2147483648.0), vec2(2147483520.0))));
@@ -115,19 +100,15 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 
 vec3 wg_hash_unit_vec3(uvec3 h) { return vec3(h >> 8u) * 5.9604644775390625e-8; }
 
-// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
-
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
-// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
-// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
-// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
-// finite 1e30 instead of inf; the result never exceeds 1e30.
-float wg_linearize_depth(float depth, vec2 near_far) {
-  float n = max(near_far.x, 1e-6);
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
   float r = n / max(near_far.y, n);
-  float d = clamp(depth, 0.0, 1.0);
-  float denom = (1.0 - d) + d * r;
-  return min(n / max(denom, n * 1e-30), 1e30);
+  return n / ((1.0 - depth) + depth * r);
 }
 
 // Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
@@ -147,17 +128,7 @@ vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a 
 // The blended tangent-space normal with its slope scaled by `strength`.
 vec3 wg_normal_map_scroll_strength(vec3 n, float strength) { return vec3(n.xy * strength, n.z); }
 
-// Range remapping, one name per type. An empty source range (in_min == in_max) maps to out_min instead of
-// dividing by zero (the quotient is computed, then not chosen: one OpSelect, no branch).
-float wg_remap_float(float x, float a, float b, float c, float d) {
-  float q = (x - a) / (b - a);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
-}
-
-vec2 wg_remap_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) {
-  return vec2(wg_remap_float(x.x, a.x, b.x, c.x, d.x), wg_remap_float(x.y, a.y, b.y, c.y, d.y));
-}
+vec2 wg_remap_nonempty_vec2(vec2 x, vec2 a, vec2 b, vec2 c, vec2 d) { return mix(c, d, (x - a) / (b - a)); }
 
 // scene_color / planar_reflection: screen-space look-ups of the scene textures.
 
@@ -197,15 +168,13 @@ float wg_shore_waves(float depth, float frequency, float phase, float amplitude,
   return clamp(w * amplitude * (1.0 - d / dmax), 0.0, 1.0);
 }
 
-// subsurface: the fake subsurface glow of wave crests lit from behind (seed 003, section 8).
-
-// H = normalize(L + N distortion); I = saturate(V.(-H))^power * saturate(height * 2 + 0.5).
-// All vectors normalised safely; the safe pow keeps 0^power at 0 (power > 0) and the
-// result finite for any power.
-float wg_subsurface_intensity(vec3 n, vec3 v, vec3 l, float distortion, float power, float height) {
-  vec3 h = wg_safe_normalize_vec3(wg_safe_normalize_vec3(l) + wg_safe_normalize_vec3(n) * distortion);
-  float vdoth = clamp(dot(wg_safe_normalize_vec3(v), -h), 0.0, 1.0);
-  return wg_safe_pow_float(vdoth, power) * clamp(height * 2.0 + 0.5, 0.0, 1.0);
+// The same where n, v and l are proven normalized (value facts: unit length or exactly
+// zero, so safe re-normalisation leaves them unchanged) and power > 0 (so vdoth in [0, 1]
+// makes native pow defined and equal to the safe one). Same values.
+float wg_subsurface_intensity_unit(vec3 n, vec3 v, vec3 l, float distortion, float power, float height) {
+  vec3 h = wg_safe_normalize_vec3(l + n * distortion);
+  float vdoth = clamp(dot(v, -h), 0.0, 1.0);
+  return pow(vdoth, power) * clamp(height * 2.0 + 0.5, 0.0, 1.0);
 }
 
 // Voronoi (cellular) noise: one feature point per integer cell, placed by the PCG hash of
@@ -260,26 +229,21 @@ float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated
   return m * m * m;
 }
 
-// water_depth: how much water lies between the surface and the scene behind it.
-
-// The factor that turns a view-depth difference into a distance along the view ray:
-// 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
-// cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
-// values rather than an early return, so it compiles to a select, not branches.
-float wg_water_depth_ray_factor(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
+}
+
+// The ray factor where v is proven normalized (value facts: the safe-normalised view
+// direction): re-normalising it changes nothing, so only the camera axis is normalised.
+float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
+  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
+  float c = dot(-v, wg_safe_normalize_vec3(fwd));
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -293,13 +257,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   return l2 < 1e-12 ? fallback : unit;
 }
 
-// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
-// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
-// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
-vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+// The same for the flat frame T = +x, B = +z (constant inputs): t * ts.x + b * ts.y is
+// (ts.x, 0, ts.y) exactly for a finite ts, which glslang and spirv-opt cannot fold
+// (0 * x is NaN for an infinite x), so it is written out.
+vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
   vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
+  return wg_waves_unit_or_vec3(vec3(ts.x, 0.0, ts.y) + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {
@@ -310,7 +273,7 @@ void main() {
   vec3 n3_scroll_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, vec2(0.05, 0.03), n3_scroll_t0)));
   vec3 n3_scroll_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, vec2(-0.03, 0.07), n3_scroll_t0)));
   vec3 n3_scroll_t3 = wg_normal_map_scroll_add(n3_scroll_t1, n3_scroll_t2);
-  vec3 n3_scroll_normal = wg_waves_tangent_to_world(wg_normal_map_scroll_strength(n3_scroll_t3, 0.5), vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), b_normal);
+  vec3 n3_scroll_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_scroll_t3, 0.5), b_normal);
   vec2 n4_flow_t0 = v_uv;
   vec2 n4_flow_t1 = (wg_flow_map_decode(texture(t1_dudv, n4_flow_t0))) * 0.08;
   float n4_flow_t2 = u_time;
@@ -321,35 +284,35 @@ void main() {
   float n4_flow_t7 = wg_flow_map_weight(n4_flow_t5);
   vec4 n4_flow_sample = (texture(t0_water_normal, n4_flow_t0 - n4_flow_t1 * n4_flow_t4) * n4_flow_t6 + texture(t0_water_normal, n4_flow_t0 - n4_flow_t1 * n4_flow_t5) * n4_flow_t7);
   vec2 n5_flow_rgb = n4_flow_sample.xz;
-  vec2 n6_flow_tilt = wg_remap_vec2(n5_flow_rgb, vec2(0.0), vec2(1.0), vec2(-0.25), vec2(0.25));
+  vec2 n6_flow_tilt = wg_remap_nonempty_vec2(n5_flow_rgb, vec2(0.0), vec2(1.0), vec2(-0.25), vec2(0.25));
   float n7_flow_x_x = n6_flow_tilt.x;
   float n7_flow_x_y = n6_flow_tilt.y;
   vec3 n8_flow_vec = vec3(n7_flow_x_x, 0.0, n7_flow_x_y);
   vec3 n9_tilted = (n3_scroll_normal + n8_flow_vec);
   vec3 n10_nrm = wg_safe_normalize_vec3(n9_tilted);
   float n11_fresnel_t0 = wg_cos_incidence(n10_nrm, b_view_direction);
-  float n11_fresnel_t1 = wg_fresnel_power_rim(n11_fresnel_t0, p_fresnel_power);
+  float n11_fresnel_t1 = wg_fresnel_power_rim_positive(n11_fresnel_t0, p_fresnel_power);
   vec2 n12_nrm_xz = n10_nrm.xz;
   vec2 n13_offset = (n12_nrm_xz * vec2(0.04));
   vec2 n14_reflection_t0 = wg_scene_color_uv(b_screen_uv, n13_offset);
   vec3 n14_reflection_color = texture(u_reflection, n14_reflection_t0).rgb;
   vec2 n15_refraction_t0 = wg_scene_color_uv(b_screen_uv, n13_offset);
   vec3 n15_refraction_color = texture(u_scene_color, n15_refraction_t0).rgb;
-  float n16_depth_t0 = wg_linearize_depth(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n16_depth_t1 = wg_linearize_depth(gl_FragCoord.z, u_camera_near_far);
-  float n16_depth_thickness = wg_water_depth_thickness(n16_depth_t0, n16_depth_t1, wg_water_depth_ray_factor(u_view, b_view_direction), 1.0);
+  float n16_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
+  float n16_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
+  float n16_depth_thickness = wg_water_depth_thickness(n16_depth_t0, n16_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
   vec2 n17_edge_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
   vec2 n17_edge_t1 = v_world_position.xz * 1.0;
   float n17_edge_t2 = 0.5 * (texture(t2_foam, n17_edge_t1 * 0.1 + n17_edge_t0).r + texture(t2_foam, n17_edge_t1 * 0.08 + vec2(-n17_edge_t0.y, n17_edge_t0.x)).r);
   float n17_edge = wg_edge_foam(n17_edge_t2, wg_edge_foam_mask_linear(n16_depth_thickness, 0.5), 0.35, 0.0, 1.0);
   float n18_shore = wg_shore_waves(n16_depth_thickness, 5.0, u_phase2, 0.8, 1.5);
   float n19_foam = max(n18_shore, n17_edge);
-  float n20_tint_t0 = wg_depth_tint_linear(n16_depth_thickness, p_max_distance);
+  float n20_tint_t0 = wg_depth_tint_linear_floored(n16_depth_thickness, p_max_distance);
   vec3 n20_tint_color = mix(p_shallow_color, p_deep_color, n20_tint_t0);
   float n21_caustics_fade = (1.0 - n20_tint_t0);
   vec3 n22_body = mix(n15_refraction_color, n20_tint_color, vec3(n20_tint_t0));
   float n23_floor_t0 = texture(u_scene_depth, b_screen_uv).r;
-  float n23_floor_t1 = wg_linearize_depth(n23_floor_t0, u_camera_near_far);
+  float n23_floor_t1 = wg_linearize_depth_known(n23_floor_t0, u_camera_near_far);
   vec3 n23_floor_position = wg_scene_depth_position(b_screen_uv, n23_floor_t1, u_camera_position, u_view, u_projection);
   vec2 n24_floor_xz = n23_floor_position.xz;
   vec2 n25_caustics_t0 = (n24_floor_xz * 0.6);
@@ -360,7 +323,7 @@ void main() {
   vec3 n27_body_lit = (n22_body + vec3(n26_caustics_light));
   vec3 n28_surface_color = mix(n27_body_lit, n14_reflection_color, vec3(n11_fresnel_t1));
   float n31_height_y = v_world_position.y;
-  float n32_sss_t0 = (0.6 * wg_subsurface_intensity(n10_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n31_height_y));
+  float n32_sss_t0 = (0.6 * wg_subsurface_intensity_unit(n10_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n31_height_y));
   vec3 n32_sss_color = (p_sss_color * n32_sss_t0);
   vec3 n33_glow = (n28_surface_color + n32_sss_color);
   vec3 n34_color = mix(n33_glow, p_foam_color, vec3(n19_foam));

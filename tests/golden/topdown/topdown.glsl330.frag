@@ -160,10 +160,8 @@ float wg_lambert(vec3 n, vec3 l) {
   return clamp(dot(wg_safe_normalize_vec3(n), wg_safe_normalize_vec3(l)), 0.0, 1.0);
 }
 
-float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float q = clamp((x - a) / (b - a), 0.0, 1.0);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
 // Seed 004's high-frequency ripples: sin-based analytic noise, three layers of two sines
@@ -252,7 +250,7 @@ void main() {
   vec3 n1_waves_position = (n1_waves_t0 + n1_waves_t4[0]);
   vec3 n1_waves_normal = wg_gerstner_normal(n1_waves_t4);
   float n2_wave_y_y = n1_waves_position.y;
-  float n3_height = wg_remap_clamped_float(n2_wave_y_y, -0.7, 0.7, 0.0, 1.0);
+  float n3_height = wg_remap_clamped_nonempty_float(n2_wave_y_y, -0.7, 0.7, 0.0, 1.0);
   vec3 n5_wave_normal_full = mix(b_normal, n1_waves_normal, vec3(0.6));
   vec3 n6_wave_normal = wg_safe_normalize_vec3(n5_wave_normal_full);
   vec2 n7_crest_t0 = vec2(u_phase3, u_phase4) * 40.743664;

@@ -119,19 +119,15 @@ vec4 wg_ggx_specular(vec3 n, vec3 v, vec3 l, float roughness, float f0) {
   return vec4(brdf, d, f, ndotl);
 }
 
-// linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
-
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
-// n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
-// infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
-// far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
-// finite 1e30 instead of inf; the result never exceeds 1e30.
-float wg_linearize_depth(float depth, vec2 near_far) {
-  float n = max(near_far.x, 1e-6);
+// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
+// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
+// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
+// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
+// wg_linearize_depth is dead, and the values are the same.
+float wg_linearize_depth_known(float depth, vec2 near_far) {
+  float n = near_far.x;
   float r = n / max(near_far.y, n);
-  float d = clamp(depth, 0.0, 1.0);
-  float denom = (1.0 - d) + d * r;
-  return min(n / max(denom, n * 1e-30), 1e30);
+  return n / ((1.0 - depth) + depth * r);
 }
 
 // Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
@@ -180,10 +176,8 @@ vec4 wg_refract_dir(vec3 n, vec3 v, float eta) {
   return vec4(wg_safe_normalize_vec3(-eta * vv + (eta * c - sqrt(k)) * nn), 0.0);
 }
 
-float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
-  float q = clamp((x - a) / (b - a), 0.0, 1.0);
-  float t = b == a ? 0.0 : q;
-  return mix(c, d, t);
+float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float d) {
+  return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
 // scene_color / planar_reflection: screen-space look-ups of the scene textures.
@@ -193,26 +187,21 @@ float wg_remap_clamped_float(float x, float a, float b, float c, float d) {
 // the screen, no stretched border texels).
 vec2 wg_scene_color_uv(vec2 uv, vec2 offset) { return clamp(uv + offset, vec2(0.0), vec2(1.0)); }
 
-// water_depth: how much water lies between the surface and the scene behind it.
-
-// The factor that turns a view-depth difference into a distance along the view ray:
-// 1 / cos(ray, camera forward). The forward axis is -(row 2) of the view matrix; the
-// cosine is floored at 0.1 (rays up to 84 degrees off-axis), and a degenerate (zero)
-// view matrix counts as a ray along the axis (factor 1). Chosen with ?: between computed
-// values rather than an early return, so it compiles to a select, not branches.
-float wg_water_depth_ray_factor(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-wg_safe_normalize_vec3(v), wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
+}
+
+// The ray factor where v is proven normalized (value facts: the safe-normalised view
+// direction): re-normalising it changes nothing, so only the camera axis is normalised.
+float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
+  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
+  float c = dot(-v, wg_safe_normalize_vec3(fwd));
+  float factor = 1.0 / max(c, 0.1);
+  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -226,13 +215,12 @@ vec3 wg_waves_unit_or_vec3(vec3 v, vec3 fallback) {
   return l2 < 1e-12 ? fallback : unit;
 }
 
-// A tangent-space normal (x along T, y along B, z along N) taken to world space and made
-// unit; the up vector when the result degenerates. A (nearly) zero N carries no direction
-// and is taken as up: otherwise the result would rest on the tangent-space x and y alone
-// (about 0.01 long), whose 1/255 texture-filtering error turns it by 0.3.
-vec3 wg_waves_tangent_to_world(vec3 ts, vec3 t, vec3 b, vec3 n) {
+// The same for the flat frame T = +x, B = +z (constant inputs): t * ts.x + b * ts.y is
+// (ts.x, 0, ts.y) exactly for a finite ts, which glslang and spirv-opt cannot fold
+// (0 * x is NaN for an infinite x), so it is written out.
+vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
   vec3 frameN = dot(n, n) < 1e-12 ? vec3(0.0, 1.0, 0.0) : n;
-  return wg_waves_unit_or_vec3(t * ts.x + b * ts.y + frameN * ts.z, vec3(0.0, 1.0, 0.0));
+  return wg_waves_unit_or_vec3(vec3(ts.x, 0.0, ts.y) + frameN * ts.z, vec3(0.0, 1.0, 0.0));
 }
 
 void main() {
@@ -243,7 +231,7 @@ void main() {
   vec3 n3_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, vec2(0.05, 0.03), n3_detail_t0)));
   vec3 n3_detail_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, vec2(-0.03, 0.07), n3_detail_t0)));
   vec3 n3_detail_t3 = wg_normal_map_scroll_add(n3_detail_t1, n3_detail_t2);
-  vec3 n3_detail_normal = wg_waves_tangent_to_world(wg_normal_map_scroll_strength(n3_detail_t3, 0.35), vec3(1.0, 0.0, 0.0), vec3(0.0, 0.0, 1.0), b_normal);
+  vec3 n3_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_detail_t3, 0.35), b_normal);
   vec4 n4_bent_t0 = wg_refract_dir(n3_detail_normal, b_view_direction, 0.7501876);
   vec3 n4_bent_direction = n4_bent_t0.xyz;
   vec2 n5_detail_xz = n3_detail_normal.xz;
@@ -255,16 +243,16 @@ void main() {
   vec3 n9_reflection = mix(n8_sky_color, n7_planar_color, vec3(p_planar_weight));
   float n10_fresnel_t0 = wg_cos_incidence(n3_detail_normal, b_view_direction);
   float n10_fresnel_t1 = wg_fresnel_schlick(n10_fresnel_t0, 0.02);
-  float n11_depth_t0 = wg_linearize_depth(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n11_depth_t1 = wg_linearize_depth(gl_FragCoord.z, u_camera_near_far);
-  float n11_depth_thickness = wg_water_depth_thickness(n11_depth_t0, n11_depth_t1, wg_water_depth_ray_factor(u_view, b_view_direction), 1.0);
+  float n11_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
+  float n11_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
+  float n11_depth_thickness = wg_water_depth_thickness(n11_depth_t0, n11_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
   vec2 n12_foam_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
   vec2 n12_foam_t1 = v_world_position.xz * 1.0;
   float n12_foam_t2 = 0.5 * (texture(t1_foam, n12_foam_t1 * 0.1 + n12_foam_t0).r + texture(t1_foam, n12_foam_t1 * 0.08 + vec2(-n12_foam_t0.y, n12_foam_t0.x)).r);
   float n12_foam = wg_edge_foam(n12_foam_t2, wg_edge_foam_mask_smooth(n11_depth_thickness, 0.6), 0.3, 0.1, 1.0);
   float n13_tint_t0 = wg_depth_tint_smooth(n11_depth_thickness, p_max_depth);
   vec3 n13_tint_color = mix(p_shallow_color, p_deep_color, n13_tint_t0);
-  float n14_depth_factor = wg_remap_clamped_float(n11_depth_thickness, 0.0, 2.0, 0.0, 1.0);
+  float n14_depth_factor = wg_remap_clamped_nonempty_float(n11_depth_thickness, 0.0, 2.0, 0.0, 1.0);
   float n15_bend_scale = (p_refraction_strength * n14_depth_factor);
   vec3 n17_straight = (b_view_direction * vec3(-1.0));
   vec3 n18_bend = (n4_bent_direction - n17_straight);

@@ -1,0 +1,141 @@
+// Value facts (codegen/value_facts.h): what each source contributes, and that emitters
+// choose an unguarded library variant only where the facts prove the guard dead — the
+// same graph without the fact keeps the guarded form.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "codegen/compile.h"
+#include "codegen/emit_glsl.h"
+#include "codegen/passes.h"
+#include "codegen/value_facts.h"
+#include "core/graph_io.h"
+#include "core/resolve.h"
+#include "nodes/registry.h"
+
+namespace wg {
+namespace {
+
+std::string graphJson(const std::string& nodes, const std::string& outputs, const std::string& parameters = "") {
+  std::string s = "{\"version\": 1, \"name\": \"t\",";
+  if (!parameters.empty()) s += "\"parameters\": {" + parameters + "},";
+  return s + "\"nodes\": [" + nodes + "], \"outputs\": {" + outputs + "}}";
+}
+
+// Resolved and run through the compile recipe, as `watergraph compile` does.
+Program compiledProgram(const std::string& json) {
+  Diagnostics diags;
+  auto graph = parseGraph(json, "test.json", diags);
+  EXPECT_TRUE(graph);
+  if (!graph) return {};
+  auto program = buildProgram(*graph, defaultRegistry(), diags);
+  EXPECT_TRUE(program);
+  if (!program) return {};
+  return std::move(*program);
+}
+
+std::string fragmentOf(const Program& p, EmitMode mode = EmitMode::Shader) {
+  EmitResult r = emitProgram(p, Target::Glsl330, "test.json", mode);
+  for (const auto& s : r.shaders)
+    if (s.stage == ShaderStage::Fragment) return s.text;
+  return "";
+}
+
+int opIndex(const Program& p, const std::string& id) {
+  for (size_t i = 0; i < p.ops.size(); ++i)
+    if (p.ops[i].nodeId == id) return static_cast<int>(i);
+  return -1;
+}
+
+TEST(ValueFacts, SourcesGiveTheirFacts) {
+  ValueFact unit = constantFact(Value::vector({0, 1, 0}));
+  EXPECT_TRUE(unit.normalized);
+  EXPECT_EQ(unit.lo, 0);
+  EXPECT_EQ(unit.hi, 1);
+  EXPECT_FALSE(constantFact(Value::vector({0, 2, 0})).normalized);
+  EXPECT_TRUE(constantFact(Value::vector({0, 0, 0})).normalized);  // safe-normalising 0 gives 0
+  EXPECT_FALSE(constantFact(Value::scalar(1)).normalized);          // a float is no direction
+  EXPECT_TRUE(builtinFact(Builtin::ViewDirection).normalized);
+  EXPECT_TRUE(builtinFact(Builtin::SunDirection).normalized);
+  EXPECT_FALSE(builtinFact(Builtin::WorldPosition).normalized);
+  EXPECT_EQ(builtinFact(Builtin::FragDepth).lo, 0);
+  EXPECT_EQ(builtinFact(Builtin::FragDepth).hi, 1);
+  EXPECT_EQ(builtinFact(Builtin::CameraNearFar).lo, 1e-6);
+
+  Program p = compiledProgram(graphJson(
+      R"({"id": "n", "type": "normal_map_scroll"},
+         {"id": "f", "type": "fresnel", "inputs": {"normal": "n.normal", "strength": "$s"}},
+         {"id": "w", "type": "world_position"},
+         {"id": "m", "type": "mul", "inputs": {"a": "f.reflectance", "b": "w.out"}})",
+      R"("fragment": {"color": "m.out"})", R"("s": {"type": "float", "default": 2, "min": 0.5, "max": 8})"));
+  ValueFacts facts(p);
+  int n = opIndex(p, "n"), f = opIndex(p, "f"), w = opIndex(p, "w");
+  ASSERT_GE(n, 0);
+  ASSERT_GE(f, 0);
+  ASSERT_GE(w, 0);
+  EXPECT_TRUE(facts.of(ValueRef::op(n, 0)).normalized);      // declared by normal_map_scroll
+  EXPECT_EQ(facts.of(ValueRef::op(f, 0)).lo, 0);             // fresnel in [0, 1]
+  EXPECT_EQ(facts.of(ValueRef::op(f, 0)).hi, 1);
+  EXPECT_FALSE(facts.of(ValueRef::op(w, 0)).normalized);     // a position: nothing known
+  EXPECT_TRUE(std::isinf(facts.of(ValueRef::op(w, 0)).hi));
+  const Op& fresnel = p.ops[static_cast<size_t>(f)];
+  ValueFact strength = facts.of(fresnel.inputs[static_cast<size_t>(fresnel.spec->inputIndex("strength"))]);
+  EXPECT_EQ(strength.lo, 0.5);  // the parameter's min/max
+  EXPECT_EQ(strength.hi, 8);
+  // A float splat to a vector keeps its range but is no unit vector.
+  EXPECT_FALSE(facts.of(ValueRef::constant_(Value::scalar(1)), Type::Vec3).normalized);
+}
+
+// Fresnel's power form: native pow only with a proven strength > 0.
+TEST(ValueFacts, PowNeedsAProvenPositiveExponent) {
+  auto graph = [](const std::string& param) {
+    return compiledProgram(graphJson(
+        R"({"id": "f", "type": "fresnel", "options": {"model": "power"}, "inputs": {"strength": "$s"}})",
+        R"("fragment": {"alpha": "f.reflectance"})", R"("s": )" + param));
+  };
+  std::string proven = fragmentOf(graph(R"({"type": "float", "default": 2, "min": 0.1, "max": 10})"));
+  EXPECT_NE(proven.find("wg_fresnel_power_cos_positive("), std::string::npos) << proven;
+  for (const char* unproven : {R"({"type": "float", "default": 2})", R"({"type": "float", "default": 2, "min": 0})"}) {
+    std::string s = fragmentOf(graph(unproven));
+    EXPECT_EQ(s.find("_positive("), std::string::npos) << unproven;
+    EXPECT_NE(s.find("wg_fresnel_power_cos("), std::string::npos) << s;
+  }
+  // Probe shaders take parameters from arbitrary cases: never the unguarded form.
+  std::string probe = fragmentOf(graph(R"({"type": "float", "default": 2, "min": 0.1, "max": 10})"), EmitMode::Probe);
+  EXPECT_EQ(probe.find("_positive("), std::string::npos);
+}
+
+// Phong: the unit lobe only when normal, view and light are all proven normalized.
+TEST(ValueFacts, PhongLobeSkipsRenormalisingOnlyUnitInputs) {
+  std::string unit = fragmentOf(compiledProgram(graphJson(
+      R"({"id": "p", "type": "phong_specular", "inputs": {"shine": "$k"}})", R"("fragment": {"alpha": "p.sun_specular"})",
+      R"("k": {"type": "float", "default": 20, "min": 1, "max": 100})")));
+  EXPECT_NE(unit.find("wg_phong_specular_lobe_unit("), std::string::npos) << unit;
+  EXPECT_NE(unit.find("wg_pow_known_safe_float("), std::string::npos) << unit;
+  // A normal that is a world position is not unit; a shine without a range may be 0.
+  std::string guarded = fragmentOf(compiledProgram(graphJson(
+      R"({"id": "w", "type": "world_position"},
+         {"id": "p", "type": "phong_specular", "inputs": {"normal": "w.out", "shine": "$k"}})",
+      R"("fragment": {"alpha": "p.sun_specular"})", R"("k": {"type": "float", "default": 20})")));
+  EXPECT_EQ(guarded.find("wg_phong_specular_lobe_unit("), std::string::npos) << guarded;
+  EXPECT_NE(guarded.find("wg_phong_specular_lobe("), std::string::npos);
+  EXPECT_EQ(guarded.find("wg_pow_known_safe_float("), std::string::npos);
+}
+
+// Remap: no empty-range select only when in_min and in_max cannot meet.
+TEST(ValueFacts, RemapDropsTheEmptyRangeSelectOnlyForDisjointRanges) {
+  auto remap = [](const std::string& param) {
+    return fragmentOf(compiledProgram(graphJson(
+        R"({"id": "t", "type": "time"},
+           {"id": "r", "type": "remap", "options": {"clamp": true}, "inputs": {"x": "t.out", "in_min": 0, "in_max": "$b"}})",
+        R"("fragment": {"alpha": "r.out"})", R"("b": )" + param)));
+  };
+  EXPECT_NE(remap(R"({"type": "float", "default": 1, "min": 0.01, "max": 5})").find("wg_remap_clamped_nonempty_float("),
+            std::string::npos);
+  std::string touching = remap(R"({"type": "float", "default": 1, "min": 0, "max": 5})");  // b may equal a
+  EXPECT_EQ(touching.find("_nonempty"), std::string::npos) << touching;
+  EXPECT_NE(touching.find("wg_remap_clamped_float("), std::string::npos) << touching;
+}
+
+}  // namespace
+}  // namespace wg
