@@ -68,7 +68,9 @@ TEST_P(CheckOnGpu, EveryExampleGraphIsFiniteOverTheSweep) {
       ++compared;
     }
   }
-  if (target == Target::Glsl330) EXPECT_GE(compared, 1) << "no example graph was compared with its CPU reference";
+  if (target == Target::Glsl330) {
+    EXPECT_GE(compared, 1) << "no example graph was compared with its CPU reference";
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, CheckOnGpu, ::testing::Values(Target::Glsl330, Target::Es300),
