@@ -149,4 +149,10 @@ std::vector<std::string> splitLines(const std::string& text) {
   return lines;
 }
 
+std::string graphJson(const std::string& nodes, const std::string& outputs, const std::string& parameters) {
+  std::string s = "{\"version\": 1, \"name\": \"t\",";
+  if (!parameters.empty()) s += "\"parameters\": {" + parameters + "},";
+  return s + "\"nodes\": [" + nodes + "], \"outputs\": {" + outputs + "}}";
+}
+
 }  // namespace wg::test

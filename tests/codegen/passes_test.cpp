@@ -17,12 +17,7 @@
 namespace wg {
 namespace {
 
-// A graph file around the given parameters, nodes and outputs.
-std::string graphJson(const std::string& nodes, const std::string& outputs, const std::string& parameters = "") {
-  std::string s = "{\"version\": 1, \"name\": \"t\",";
-  if (!parameters.empty()) s += "\"parameters\": {" + parameters + "},";
-  return s + "\"nodes\": [" + nodes + "], \"outputs\": {" + outputs + "}}";
-}
+using test::graphJson;
 
 std::string allText(const Diagnostics& d) {
   std::string s;

@@ -12,15 +12,12 @@
 #include "core/graph_io.h"
 #include "core/resolve.h"
 #include "nodes/registry.h"
+#include "test_support.h"
 
 namespace wg {
 namespace {
 
-std::string graphJson(const std::string& nodes, const std::string& outputs, const std::string& parameters = "") {
-  std::string s = "{\"version\": 1, \"name\": \"t\",";
-  if (!parameters.empty()) s += "\"parameters\": {" + parameters + "},";
-  return s + "\"nodes\": [" + nodes + "], \"outputs\": {" + outputs + "}}";
-}
+using test::graphJson;
 
 // Resolved and run through the compile recipe, as `watergraph compile` does.
 Program compiledProgram(const std::string& json) {
