@@ -2,8 +2,32 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace wg {
+namespace {
+
+// A bound as the shader sees it: the GLSL literal or the runtime's clamp is the float
+// nearest the double (clamping and rounding are both monotonic, so a value clamped in
+// double and then uploaded as float still lies within the float-rounded bounds). Float
+// denormals may be flushed to zero on the GPU, so a bound inside (-FLT_MIN, FLT_MIN) is
+// widened to the nearest value that survives a flush: 0 or -/+FLT_MIN.
+double lowerBound(double x) {
+  if (!std::isfinite(x)) return x;
+  double f = static_cast<double>(static_cast<float>(x));
+  double tiny = static_cast<double>(std::numeric_limits<float>::min());
+  if (std::abs(f) < tiny) return f > 0 || (f == 0 && x >= 0) ? 0.0 : -tiny;
+  return f;
+}
+double upperBound(double x) {
+  if (!std::isfinite(x)) return x;
+  double f = static_cast<double>(static_cast<float>(x));
+  double tiny = static_cast<double>(std::numeric_limits<float>::min());
+  if (std::abs(f) < tiny) return f < 0 || (f == 0 && x <= 0) ? 0.0 : tiny;
+  return f;
+}
+
+}  // namespace
 
 ValueFact constantFact(const Value& v) {
   ValueFact f;
@@ -16,6 +40,8 @@ ValueFact constantFact(const Value& v) {
     f.hi = std::max(f.hi, v[i]);
     len2 += v[i] * v[i];
   }
+  f.lo = lowerBound(f.lo);
+  f.hi = upperBound(f.hi);
   // Within float rounding of unit length, or exactly zero: re-normalising changes nothing
   // beyond the nodes' 1e-5 tolerances.
   f.normalized = v.size() > 1 && (len2 == 0 || std::abs(std::sqrt(len2) - 1) < 1e-6);
@@ -43,8 +69,8 @@ ValueFact ValueFacts::of(const ValueRef& ref) const {
     case ValueRef::Kind::Param: {
       const ProgramParameter& p = program_->parameters[static_cast<size_t>(ref.index)];
       ValueFact f;
-      if (p.min) f.lo = *p.min;
-      if (p.max) f.hi = *p.max;
+      if (p.min) f.lo = lowerBound(*p.min);
+      if (p.max) f.hi = upperBound(*p.max);
       return f;
     }
     case ValueRef::Kind::Builtin: return builtinFact(static_cast<Builtin>(ref.index));

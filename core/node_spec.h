@@ -38,9 +38,13 @@ Type builtinType(Builtin b);
 
 // What the compiler knows about a value for every input the shader can receive
 // (codegen/value_facts.h derives it per program): each component lies in [lo, hi], and
-// `normalized` says a vector is the result of a (safe) normalisation: unit length, or
-// exactly zero. Emitters use it to drop guards the facts make dead; a default ValueFact
-// knows nothing, so missing facts always keep the guarded form.
+// `normalized` says a vector is the result of a (safe) normalisation: unit length, except
+// that a vector shorter than 1e-15 comes out shorter (wg_safe_normalize floors the squared
+// length at 1e-30; zero stays zero), so at most 1 long. Variants relying on it must be
+// finite for any length in [0, 1]; they differ from the re-normalising forms only on such
+// degenerate vectors. Emitters use facts to drop guards the facts make dead; a default
+// ValueFact knows nothing, so missing facts always keep the guarded form. Bounds are as the
+// shader sees them: rounded to float, denormals widened to what survives a flush to zero.
 struct ValueFact {
   double lo = -std::numeric_limits<double>::infinity();
   double hi = std::numeric_limits<double>::infinity();

@@ -41,7 +41,14 @@ NodeSpec fresnelNode() {
       ports::choice("power_form", {"cos", "one_minus_cos"}, "cos",
                     "power model: 1 - (N.V)^strength (seed 000) or (1 - N.V)^strength (seed 003)"),
   };
-  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+  // F in [0, 1] only where the inputs keep it there: schlick needs f0 in [0, 1]; the power
+  // forms need strength >= 0 (c^s >= 1 for s < 0); exact always is.
+  s.facts = [](const std::vector<ValueFact>& in, const nlohmann::json& options) {
+    const std::string model = options.value("model", "schlick");
+    const ValueFact &f0 = in[2], &strength = in[3];
+    bool bounded = model == "exact" || (model == "schlick" && f0.atLeast(0) && f0.hi <= 1) ||
+                   (model == "power" && strength.atLeast(0));
+    if (!bounded) return std::vector<ValueFact>{{}, {}};
     return std::vector<ValueFact>{{0, 1, false}, {0, 1, false}};
   };
   s.emit = [](EmitContext& ctx) {

@@ -143,9 +143,12 @@ NodeSpec phongSpecularNode() {
   s.outputs = {ports::fixed("sun_specular", Type::Float, "the sun's specular intensity in [0, 1]"),
                ports::fixed("environment_specular", Type::Float, "the environment's specular intensity in [0, 1]"),
                ports::fixed("color", Type::Vec3, "sun * sun_color + environment * environment_color")};
-  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+  // The lobe lies in [0, 1]; its safe power stays there only for shine >= 0 (x^s >= 1 for
+  // s < 0). The environment term has no exponent.
+  s.facts = [](const std::vector<ValueFact>& in, const nlohmann::json&) {
     ValueFact unitRange{0, 1, false};
-    return std::vector<ValueFact>{unitRange, unitRange, {}};
+    const ValueFact& shine = in[3];
+    return std::vector<ValueFact>{shine.atLeast(0) ? unitRange : ValueFact{}, unitRange, {}};
   };
   s.emit = [](EmitContext& ctx) {
     // Normalized inputs need no re-normalisation; the lobe lies in [0, 1], so a proven

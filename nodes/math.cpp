@@ -3,6 +3,7 @@
 // case undefined (pow of a negative base, equal smoothstep edges, normalize of zero) the
 // node uses the library's safe form and says so.
 #include <cmath>
+#include <limits>
 
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
@@ -363,8 +364,10 @@ NodeSpec remapNode() {
   s.emit = [](EmitContext& ctx) {
     // A proven non-empty source range (the ranges of in_min and in_max are disjoint)
     // makes the empty-range select dead.
+    // The gap at least FLT_MIN: then b - a cannot round or flush to zero in float.
     ValueFact a = ctx.inputFact(1), b = ctx.inputFact(2);
-    bool nonempty = a.hi < b.lo || b.hi < a.lo;
+    const double gap = static_cast<double>(std::numeric_limits<float>::min());
+    bool nonempty = b.lo - a.hi >= gap || a.lo - b.hi >= gap;
     std::string fn = typedName(std::string(ctx.option("clamp").get<bool>() ? "wg_remap_clamped" : "wg_remap") +
                                    (nonempty ? "_nonempty" : ""),
                                ctx.outputType(0));

@@ -134,5 +134,57 @@ TEST(ValueFacts, RemapDropsTheEmptyRangeSelectOnlyForDisjointRanges) {
   EXPECT_NE(touching.find("wg_remap_clamped_float("), std::string::npos) << touching;
 }
 
+// Found in review: a bound that only holds in double must not count. The shader sees the
+// float nearest each bound (0.10000000001 is 0.1f, equal to the literal 0.1), and a float
+// denormal bound may be flushed to zero on the GPU.
+TEST(ValueFacts, BoundsAreTheFloatsTheShaderSees) {
+  auto remap = [](const std::string& min) {
+    return fragmentOf(compiledProgram(graphJson(
+        R"({"id": "t", "type": "time"},
+           {"id": "r", "type": "remap", "inputs": {"x": "t.out", "in_min": 0.1, "in_max": "$b"}})",
+        R"("fragment": {"alpha": "r.out"})", R"("b": {"type": "float", "default": 0.5, "min": )" + min + ", \"max\": 1}")));
+  };
+  std::string rounded = remap("0.10000000001");
+  EXPECT_EQ(rounded.find("_nonempty"), std::string::npos) << rounded;
+  EXPECT_NE(remap("0.1000001").find("wg_remap_nonempty_float("), std::string::npos);  // a float apart
+
+  auto fresnelPower = [](const std::string& min) {
+    return fragmentOf(compiledProgram(graphJson(
+        R"({"id": "f", "type": "fresnel", "options": {"model": "power"}, "inputs": {"strength": "$s"}})",
+        R"("fragment": {"alpha": "f.reflectance"})", R"("s": {"type": "float", "default": 1, "min": )" + min + ", \"max\": 10}")));
+  };
+  std::string denormal = fresnelPower("1e-50");
+  EXPECT_EQ(denormal.find("_positive"), std::string::npos) << denormal;
+  EXPECT_NE(fresnelPower("1e-30").find("wg_fresnel_power_cos_positive("), std::string::npos);
+}
+
+// Found in review: a node's output range may depend on its inputs. Fresnel is in [0, 1]
+// only for f0 in [0, 1] (schlick) or strength >= 0 (power); phong's sun term only for
+// shine >= 0. Outside them a consumer must keep its guard.
+TEST(ValueFacts, OutputRangesHoldOnlyForInputsThatKeepThem) {
+  auto powOfTransmittance = [](const std::string& fresnel) {
+    return fragmentOf(compiledProgram(graphJson(
+        R"({"id": "f", "type": "fresnel", )" + fresnel + R"(},
+           {"id": "p", "type": "pow", "inputs": {"x": "f.transmittance", "y": 2.0}})",
+        R"("fragment": {"alpha": "p.out"})")));
+  };
+  EXPECT_NE(powOfTransmittance(R"("options": {"model": "schlick"}, "inputs": {"f0": 0.02})").find("wg_pow_known_safe_float("),
+            std::string::npos);
+  std::string f0 = powOfTransmittance(R"("options": {"model": "schlick"}, "inputs": {"f0": 2.0})");
+  EXPECT_EQ(f0.find("wg_pow_known_safe_float("), std::string::npos) << f0;
+  std::string negative = powOfTransmittance(R"("options": {"model": "power"}, "inputs": {"strength": -1.0})");
+  EXPECT_EQ(negative.find("wg_pow_known_safe_float("), std::string::npos) << negative;
+
+  auto remapOfSun = [](double shine) {
+    return fragmentOf(compiledProgram(graphJson(
+        R"({"id": "p", "type": "phong_specular", "inputs": {"shine": )" + std::to_string(shine) + R"(}},
+           {"id": "r", "type": "remap", "inputs": {"x": 1.0, "in_min": "p.sun_specular", "in_max": 2.0}})",
+        R"("fragment": {"alpha": "r.out"})")));
+  };
+  EXPECT_NE(remapOfSun(20).find("wg_remap_nonempty_float("), std::string::npos);
+  std::string shine = remapOfSun(-1);
+  EXPECT_EQ(shine.find("_nonempty"), std::string::npos) << shine;
+}
+
 }  // namespace
 }  // namespace wg
