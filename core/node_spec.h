@@ -102,7 +102,7 @@ struct HardCase {
   bool illConditioned = false;
 };
 
-class NodeSpec;
+struct NodeSpec;
 
 // What infer sees and decides: input types (Invalid when unconnected without default)
 // and the node's options; it sets output types and any Custom input types.
