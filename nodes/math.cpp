@@ -227,7 +227,8 @@ NodeSpec normalizeNode() {
                         "out = x * inversesqrt(max(dot(x, x), 1e-30))");
   s.inputs = {ports::gen("x", "the vector")};
   s.outputs = {ports::gen("out", "the unit vector")};
-  // Unit length or exactly zero: a normalized vector (a float becomes -1, 0 or 1).
+  // A safe normalisation: normalized (unit, or shorter for a vector under 1e-15; see
+  // ValueFact), each component in [-1, 1] (a float becomes -1, 0 or 1).
   s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) { return std::vector<ValueFact>{{-1, 1, true}}; };
   s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call(typedName("wg_safe_normalize", ctx.outputType(0)), {ctx.input(0)})); };
   s.eval = [](EvalContext& ctx) { ctx.output(0, glsl::safeNormalize(ctx.input(0))); };

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "nodes/eval_math.h"
+#include "nodes/linearize_depth_call.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 #include "nodes/screen_lookup.h"
@@ -47,17 +48,13 @@ NodeSpec sceneDepthNode() {
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"scene_depth"};
-  // The depth texture's values lie in [0, 1] (GL clamps depth writes to the depth range).
   s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
-    return std::vector<ValueFact>{{0, 1, false}, {}, {}};
+    return std::vector<ValueFact>{kDepthTextureFact, {}, {}};
   };
   s.emit = [](EmitContext& ctx) {
     std::string uv = ctx.input("screen_uv");
     std::string raw = ctx.temporary(Type::Float, "texture(" + ctx.sceneTexture("scene_depth") + ", " + uv + ").r");
-    // A depth texture holds [0, 1]; with the runtime's near/far range (a fact) the
-    // unguarded linearisation is exact and finite.
-    ValueFact nf = ctx.knownBuiltin(Builtin::CameraNearFar);
-    std::string fn = nf.atLeast(1e-6) && nf.hi <= 1e30 ? "wg_linearize_depth_known" : "wg_linearize_depth";
+    std::string fn = linearizeDepthFunction(kDepthTextureFact, ctx.knownBuiltin(Builtin::CameraNearFar));
     std::string lin = ctx.temporary(Type::Float, EmitContext::call(fn, {raw, ctx.builtin(Builtin::CameraNearFar)}));
     ctx.output(0, raw);
     ctx.output(1, lin);

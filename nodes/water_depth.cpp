@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "nodes/eval_math.h"
+#include "nodes/linearize_depth_call.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 #include "nodes/shading_reference.h"
@@ -31,9 +32,7 @@ NodeSpec linearizeDepthNode() {
   };
   s.outputs = {ports::fixed("linear", Type::Float, "view-space depth (distance along the camera axis), <= 1e30")};
   s.emit = [](EmitContext& ctx) {
-    ValueFact d = ctx.inputFact("depth"), nf = ctx.inputFact("near_far");
-    bool known = d.atLeast(0) && d.hi <= 1 && nf.atLeast(1e-6) && nf.hi <= 1e30;
-    ctx.output(0, EmitContext::call(known ? "wg_linearize_depth_known" : "wg_linearize_depth",
+    ctx.output(0, EmitContext::call(linearizeDepthFunction(ctx.inputFact("depth"), ctx.inputFact("near_far")),
                                     {ctx.input("depth"), ctx.input("near_far")}));
   };
   s.eval = [](EvalContext& ctx) {
@@ -88,12 +87,10 @@ NodeSpec waterDepthNode() {
   s.resources = {"scene_depth"};
   s.emit = [](EmitContext& ctx) {
     std::string nf = ctx.builtin(Builtin::CameraNearFar);
-    // The scene depth is a depth texture (in [0, 1]); with the runtime's near/far and
-    // fragment depth facts the unguarded linearisation is exact and finite.
-    ValueFact nfFact = ctx.knownBuiltin(Builtin::CameraNearFar), fd = ctx.knownBuiltin(Builtin::FragDepth);
-    bool nfKnown = nfFact.atLeast(1e-6) && nfFact.hi <= 1e30;
-    std::string sceneFn = nfKnown ? "wg_linearize_depth_known" : "wg_linearize_depth";
-    std::string surfaceFn = nfKnown && fd.atLeast(0) && fd.hi <= 1 ? "wg_linearize_depth_known" : "wg_linearize_depth";
+    // The scene depth is a depth texture; the surface's is gl_FragCoord.z.
+    ValueFact nearFar = ctx.knownBuiltin(Builtin::CameraNearFar);
+    std::string sceneFn = linearizeDepthFunction(kDepthTextureFact, nearFar);
+    std::string surfaceFn = linearizeDepthFunction(ctx.knownBuiltin(Builtin::FragDepth), nearFar);
     std::string sceneDepth = "texture(" + ctx.sceneTexture("scene_depth") + ", " + ctx.input("screen_uv") + ").r";
     std::string scene = ctx.temporary(Type::Float, EmitContext::call(sceneFn, {sceneDepth, nf}));
     std::string surface =

@@ -404,9 +404,7 @@ struct Renderer::Impl {
           if (loc < 0) continue;
           if (!used) waterBindings.push_back({nextUnit++, bindTarget, texture});
           used = true;
-          samplerUnits.push_back({program, loc, static_cast<GLint>(waterBindings.back().unit)});
-          glUseProgram(program);
-          glUniform1i(loc, samplerUnits.back().unit);
+          samplerUnits.push_back({program, loc, static_cast<GLint>(waterBindings.back().unit)});  // set each frame
         }
       }
     }
@@ -698,6 +696,7 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   checkGl("uploading the scene");
   r.createTargets();
   r.setupWaterUniforms(manifest, origins);
+  r.cache = nullptr;  // used only while constructing: the caller may destroy it afterwards
 }
 
 Renderer::~Renderer() = default;
