@@ -75,7 +75,7 @@ class Loader {
     std::vector<PathStep> path;
     checkLimits(root, path);
 
-    checkKeys(root, "", "the graph",
+    checkKeys(js_.entries[0], "the graph",
               {"$schema", "version", "name", "description", "parameters", "presets", "nodes", "outputs"});
 
     if (!loadVersion(root, g)) return std::nullopt;  // a newer format: the rest is moot
@@ -174,23 +174,8 @@ class Loader {
     return keys;
   }
 
-  void checkKeys(const json& obj, const std::string& ptr, const std::string& what,
-                 std::initializer_list<const char*> allowed, const std::string& node = {}) {
-    std::string expected;
-    for (const char* a : allowed) {
-      if (!expected.empty()) expected += ", ";
-      expected += a;
-    }
-    for (const auto& k : members(obj, ptr)) {
-      bool ok = false;
-      for (const char* a : allowed) ok = ok || k == a;
-      if (!ok)
-        diags_.error(DiagCode::UnknownField, js_.key(ptr + "/" + jsonPointerEscape(k)),
-                     "unknown field '" + k + "' in " + what + " (expected " + expected + ")", node);
-    }
-  }
-
-  // The same check on an object whose entry is at hand: no pointer strings, no key copies.
+  // Every member key of the object `obj` is one of `allowed`; an error per other key.
+  // Reads the position tree's names: no pointer strings, no key copies.
   void checkKeys(const JsonSource::Entry& obj, const std::string& what, std::initializer_list<const char*> allowed,
                  const std::string& node = {}) {
     std::string expected;
@@ -279,7 +264,7 @@ class Loader {
         continue;
       }
       const std::string what = "parameter '" + name + "'";
-      checkKeys(pv, ptr, what, {"type", "default", "min", "max", "hint", "description", "static"});
+      checkKeys(*js_.entry(ptr), what, {"type", "default", "min", "max", "hint", "description", "static"});
 
       bool typeOk = false;
       if (!pv.contains("type")) {
