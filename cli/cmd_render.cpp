@@ -161,8 +161,8 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   cmd->add_option("--preset", args->preset, "a preset from the graph's \"presets\" table (e.g. calm, moderate, choppy)");
   cmd->add_flag("--oblique-reflection", args->obliqueReflection,
-                "clip the planar reflection pass with an oblique near plane on the water (seed 003) instead of a clip "
-                "plane (seed 000)");
+                "clip the planar reflection pass with an oblique near plane on the water (the stylized water shader's) instead of a clip "
+                "plane (the classic WebGL water renderer's)");
 #ifdef WG_HAVE_RUNTIME
   return [args, &global] { return runRender(*args, global); };
 #else

@@ -199,7 +199,7 @@ class EvalContext {
   double scalar(std::string_view port) const { return input(port)[0]; }
 };
 
-// Distance-based tessellation of the surface mesh (seed 003): per vertex
+// Distance-based tessellation of the surface mesh (the stylized water shader, docs/sources.md): per vertex
 // f = clamp(1 - (d - minDistance) / (maxDistance - minDistance), 0.01, 1) * factor.
 struct TessellationSettings {
   double minDistance = 5;
@@ -212,7 +212,7 @@ struct NodeSpec {
   std::string family;   // "optics", "math", "inputs", ...
   std::string summary;  // one line
   std::string formula;  // the maths, for docs/nodes.md
-  std::string seed;     // which seed document it comes from, "" for general nodes
+  std::string source;   // the technique sources it follows (docs/sources.md names them), "" for general nodes
   std::string cost;     // cost notes for docs/nodes.md
   std::vector<PortSpec> inputs;
   std::vector<PortSpec> outputs;

@@ -1,5 +1,5 @@
 // Depth and colour: absorption (Beer-Lambert with Pope & Fry's pure-water coefficients,
-// or seed 001's relative-coefficient model) and haze (seed 001's distance blend to the
+// or the deferred water article's relative-coefficient model) and haze (the deferred water article's distance blend to the
 // background).
 #include <cmath>
 
@@ -19,10 +19,10 @@ NodeSpec absorptionNode() {
   s.formula =
       "d = clamp(distance, 0, 1e30). beer_lambert: T = exp(-max(sigma, 0) d) per channel; pure water (Pope & Fry "
       "1997) sigma = (0.340, 0.0565, 0.00922) 1/m at 650/550/450 nm, so 10 m leave T = (0.0334, 0.5684, 0.9119). "
-      "relative (seed 001): b = clamp((M - d) / M, 0, 1), g = clamp(b (1 - d k_g), 0, 1), r = clamp(b (1 - d k_r), "
+      "relative (the deferred water article): b = clamp((M - d) / M, 0, 1), g = clamp(b (1 - d k_g), 0, 1), r = clamp(b (1 - d k_r), "
       "0, 1), T = (r^2, g^2, b^2), M = max_distance. color = color_in * T; absorbed = 1 - T.";
-  s.seed = "001 (listings 10-12: per-channel relative absorption over the in-water view distance, squared); "
-           "Beer-Lambert coefficients from Pope & Fry 1997";
+  s.source = "deferred water article (listings 10-12: per-channel relative absorption over the in-water view distance, squared); "
+             "Beer-Lambert coefficients from Pope & Fry 1997";
   s.cost = "beer_lambert: 3 exp2 (~8 ALU); relative: ~15 ALU, no transcendentals";
   s.inputs = {
       ports::fixed("distance", Type::Float, "path length through water in metres (e.g. water_depth.thickness)"),
@@ -30,18 +30,18 @@ NodeSpec absorptionNode() {
       ports::fixed("sigma", Type::Vec3, Value::vector({0.340, 0.0565, 0.00922}),
                    "beer_lambert: absorption coefficients in 1/m (R, G, B; default pure water, Pope & Fry 1997)"),
       ports::fixed("max_distance", Type::Float, Value::scalar(220),
-                   "relative: distance at which blue is gone (seed 001's InsideWaterMaxViewDistance; default fitted "
-                   "to Pope & Fry at 5 m, as the seed gives no number)"),
+                   "relative: distance at which blue is gone (the deferred water article's InsideWaterMaxViewDistance; default fitted "
+                   "to Pope & Fry at 5 m, as the source gives no number)"),
       ports::fixed("relative_red", Type::Float, Value::scalar(0.1125),
-                   "relative: red's coefficient per metre (seed 001's RelativeAbsorbtionCoeffRed; fitted at 5 m)"),
+                   "relative: red's coefficient per metre (the deferred water article's RelativeAbsorbtionCoeffRed; fitted at 5 m)"),
       ports::fixed("relative_green", Type::Float, Value::scalar(0.0223),
                    "relative: green's coefficient per metre (RelativeAbsorbtionCoeffGreen; fitted at 5 m)"),
   };
   s.outputs = {ports::fixed("transmittance", Type::Vec3, "fraction of light left per channel, in [0, 1]"),
                ports::fixed("color", Type::Vec3, "color * transmittance"),
-               ports::fixed("absorbed", Type::Vec3, "1 - transmittance (seed 001 tints the water colour by it)")};
+               ports::fixed("absorbed", Type::Vec3, "1 - transmittance (the deferred water article tints the water colour by it)")};
   s.options = {ports::choice("model", {"beer_lambert", "relative"}, "beer_lambert",
-                             "exponential Beer-Lambert, or seed 001's linear relative coefficients, squared")};
+                             "exponential Beer-Lambert, or the deferred water article's linear relative coefficients, squared")};
   s.emit = [](EmitContext& ctx) {
     bool relative = ctx.option("model").get<std::string>() == "relative";
     std::string t = ctx.temporary(
@@ -80,11 +80,11 @@ NodeSpec hazeNode() {
   NodeSpec s;
   s.type = "haze";
   s.family = "depth and colour";
-  s.summary = "Blends a colour towards the background by distance (seed 001's haze over 2000 units).";
+  s.summary = "Blends a colour towards the background by distance (the deferred water article's haze over 2000 units).";
   s.formula =
-      "factor = clamp(distance / max(haze_distance, 1e-6), 0, 1) (seed 001: HazeValue = 1 - max(0, (2000 - d) * "
+      "factor = clamp(distance / max(haze_distance, 1e-6), 0, 1) (the deferred water article: HazeValue = 1 - max(0, (2000 - d) * "
       "0.0005)); color = mix(color, background, factor).";
-  s.seed = "001 (case 5 and listing 18: haze towards the background texture over 2000 units)";
+  s.source = "deferred water article (case 5 and listing 18: haze towards the background texture over 2000 units)";
   s.cost = "~5 ALU";
   s.inputs = {
       ports::fixed("color", Type::Vec3, "the colour before haze"),

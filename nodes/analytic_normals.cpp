@@ -1,4 +1,4 @@
-// analytic_normals.cpp — sine_normals: seed 002's procedural wave normals from layered sines, and seed 004's
+// analytic_normals.cpp — sine_normals: the advanced shaders tutorial's procedural wave normals from layered sines, and the top-down water plan's
 // high-frequency ripple normals (ripple_normals). Both tilt a normal by analytic sine noise
 // with constant angular speeds, so every time term is an exact CPU-side phase uniform.
 #include <cmath>
@@ -15,7 +15,7 @@ using waves::D3;
 
 double wrap(double x) { return glsl::mod(x, waves::kTwoPi); }
 
-// Seed 002's three layers, (dn.x, dn.z) each, as the GLSL computes them.
+// The advanced shaders tutorial's three layers, (dn.x, dn.z) each, as the GLSL computes them.
 void sineLayer(int layer, double x, double z, const EvalContext& ctx, double out[2]) {
   auto ph = [&](double w) { return waves::timePhase(ctx, w); };
   if (layer == 0) {
@@ -34,7 +34,7 @@ void sineLayer(int layer, double x, double z, const EvalContext& ctx, double out
   }
 }
 
-// Seed 004's ripple layers: frequencies (fa, fb), time phases (signed omegas) and weight.
+// The top-down water plan's ripple layers: frequencies (fa, fb), time phases (signed omegas) and weight.
 struct RippleLayer {
   double fa[2], fb[2];
   double omegaA, omegaB;  // signed: the phase added is sign * mod(|omega| t, 2 pi)
@@ -52,7 +52,7 @@ NodeSpec sineNormalsNode() {
   NodeSpec s;
   s.type = "sine_normals";
   s.family = "waves";
-  s.summary = "Seed 002's animated wave normals from layered sines (no texture).";
+  s.summary = "The advanced shaders tutorial's animated wave normals from layered sines (no texture).";
   s.formula =
       "p = position.xz * scale. Layer 1: w1 = sin(0.5 p.x + 0.8 t) cos(0.3 p.y + 0.6 t), dn += (0.3 w1, 0.2 cos(0.5 "
       "p.x "
@@ -60,7 +60,7 @@ NodeSpec sineNormalsNode() {
       "w3 = sin(8 p.x - 3 t) sin(6 p.y + 2.5 t), dn += (0.05 w3, 0.05 w3). normal = normalize(strength dn.x, 1, "
       "strength dn.y) for a y-up plane. Spatial parts are wrapped mod 2 pi; time parts are mod(omega t, 2 pi) "
       "uniforms.";
-  s.seed = "002 (computeWaveNormal, approach 1: three layers of sines)";
+  s.source = "advanced shaders tutorial (computeWaveNormal, approach 1: three layers of sines)";
   s.cost = "octaves = 1: 3 sin/cos, ~12 ALU; 2: +2 sin/cos; 3: +2 sin; each layer adds two phase uniforms";
   s.inputs = {
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition, "the surface point; x and z are used"),
@@ -69,7 +69,7 @@ NodeSpec sineNormalsNode() {
   };
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit normal of a y-up plane tilted by the sines"),
                ports::fixed("slope", Type::Vec2, "the tilt (dn.x, dn.z) before strength and normalisation")};
-  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the seed's three layers (quality level)")};
+  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the source's three layers (quality level)")};
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
     int octaves = waves::integerOptionValue(ctx.option("octaves"));
@@ -129,24 +129,24 @@ NodeSpec rippleNormalsNode() {
   NodeSpec s;
   s.type = "ripple_normals";
   s.family = "waves";
-  s.summary = "Seed 004's high-frequency ripple normals: analytic sine noise added to a normal.";
+  s.summary = "The top-down water plan's high-frequency ripple normals: analytic sine noise added to a normal.";
   s.formula =
       "uv = position.xz * scale * 0.08; r = 0.5 (sin(23 u + 17 v + 2.3 t), sin(19 u - 23 v + 1.9 t)) + 0.3 "
       "(sin(47 u + 31 v - 3.1 t), sin(37 u - 43 v + 2.7 t)) + 0.2 (sin(89 u - 67 v + 4.1 t), sin(73 u + 61 v - 3.7 "
       "t)); "
-      "normal = normalize(N + strength (r.x, 0, r.y)). Seed 004 is top-down (z up) and perturbs N.xy; in this y-up "
+      "normal = normalize(N + strength (r.x, 0, r.y)). The top-down water plan is top-down (z up) and perturbs N.xy; in this y-up "
       "world r.x goes to x and r.y to z.";
-  s.seed = "004 (rippleNoise, u_rippleStrength 0.15, u_rippleScale 1.0, the 0.08 world-to-noise factor)";
+  s.source = "top-down water plan (rippleNoise, u_rippleStrength 0.15, u_rippleScale 1.0, the 0.08 world-to-noise factor)";
   s.cost = "per octave: 2 sin, ~10 ALU and two phase uniforms (octaves = 3: 6 sin)";
   s.inputs = {
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition, "the surface point; x and z are used"),
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "the normal to perturb"),
-      ports::fixed("strength", Type::Float, Value::scalar(0.15), "perturbation strength (seed: u_rippleStrength)"),
-      ports::fixed("scale", Type::Float, Value::scalar(1.0), "world-space scale (seed: u_rippleScale)"),
+      ports::fixed("strength", Type::Float, Value::scalar(0.15), "perturbation strength (source: u_rippleStrength)"),
+      ports::fixed("scale", Type::Float, Value::scalar(1.0), "world-space scale (source: u_rippleScale)"),
   };
   s.outputs = {ports::fixed("normal", Type::Vec3, "the perturbed unit normal (up when it degenerates)"),
                ports::fixed("ripple", Type::Vec2, "the ripple noise r, in [-1, 1]")};
-  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the seed's three layers (quality level)")};
+  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the source's three layers (quality level)")};
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
     int octaves = waves::integerOptionValue(ctx.option("octaves"));

@@ -1,4 +1,4 @@
-// coastal_foam: seed 001's shore foam, the shallow-depth amount (or crest foam fed in)
+// coastal_foam: the deferred water article's shore foam, the shallow-depth amount (or crest foam fed in)
 // times a foam texture distorted by the surface normal, and its dimming of the specular.
 #include <algorithm>
 
@@ -27,23 +27,23 @@ NodeSpec coastalFoamNode() {
   s.formula =
       "uv = (tex_scale x + 0.5, 0.5 - tex_scale z) + distortion (N.x, N.z); amount = max(intensity (1 - clamp(depth / "
       "max_depth, 0, 1)), crest, 0); foam = clamp(amount * foam_tex(uv).r, 0, 1); specular_scale = clamp(1 - k foam, 0, 1)^3 "
-      "(cubic, seed 001) or clamp(1 - k foam, 0, 1) (linear).";
-  s.seed = "001 (listing 13: max(CoastalFoamIntensity (1 - depth / MaxDepthForCoastalFoam), wave foam) * foam texture, "
-           "texture coordinates distorted by the normal; specular *= (1 - foam)^3). The seed gives no values: the "
-           "defaults here are ours. Its distance fade min(1, 4 / view depth) and light colour are left to the graph.";
+      "(cubic, the deferred water article) or clamp(1 - k foam, 0, 1) (linear).";
+  s.source = "deferred water article (listing 13: max(CoastalFoamIntensity (1 - depth / MaxDepthForCoastalFoam), wave foam) * foam texture, "
+             "texture coordinates distorted by the normal; specular *= (1 - foam)^3). The source gives no values: the "
+             "defaults here are ours. Its distance fade min(1, 4 / view depth) and light colour are left to the graph.";
   s.cost = "1 texture sample + ~15 ALU";
   OptionSpec tex = ports::texture("texture", "builtin:foam", "the foam texture (red channel): builtin:foam or a .png path relative to the graph");
   s.options = {tex, ports::choice("dimming", {"cubic", "linear"}, "cubic",
-                                  "specular_scale = (1 - k foam)^3 (seed 001) or 1 - k foam, clamped to [0, 1]")};
+                                  "specular_scale = (1 - k foam)^3 (the deferred water article) or 1 - k foam, clamped to [0, 1]")};
   s.inputs = {
       ports::fixed("depth", Type::Float, "water thickness in metres (e.g. from water_depth); <= 0 is the shoreline"),
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition,
                          "world point; x and z place the foam texture (default: the surface position)"),
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "surface normal that distorts the texture (default: the surface normal)"),
-      ports::fixed("intensity", Type::Float, Value::scalar(1.0), "coastal foam at depth 0 (seed 001's CoastalFoamIntensity)"),
+      ports::fixed("intensity", Type::Float, Value::scalar(1.0), "coastal foam at depth 0 (the deferred water article's CoastalFoamIntensity)"),
       ports::fixed("max_depth", Type::Float, Value::scalar(1.0), "depth in metres where coastal foam ends (MaxDepthForCoastalFoam)"),
-      ports::fixed("crest", Type::Float, Value::scalar(0.0), "extra foam amount, e.g. crest_foam (seed 001's wave foam term)"),
-      ports::fixed("tex_scale", Type::Float, Value::scalar(0.1), "foam texture repeats per metre (seed 001's WaveValues.y)"),
+      ports::fixed("crest", Type::Float, Value::scalar(0.0), "extra foam amount, e.g. crest_foam (the deferred water article's wave foam term)"),
+      ports::fixed("tex_scale", Type::Float, Value::scalar(0.1), "foam texture repeats per metre (the deferred water article's WaveValues.y)"),
       ports::fixed("distortion", Type::Float, Value::scalar(0.05), "texture offset per unit of N.xz (WaterSurfaceNormalCalculationParameter.y)"),
       ports::fixed("k", Type::Float, Value::scalar(1.0), "how strongly foam dims the specular"),
   };

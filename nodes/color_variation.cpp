@@ -1,4 +1,4 @@
-// color_variation: seed 004's colour variation of the water body (sun-facing slopes warmer,
+// color_variation: the top-down water plan's colour variation of the water body (sun-facing slopes warmer,
 // a slowly drifting value-noise hue shift, darker troughs). The noise is an integer-hash
 // value noise of its own (nodes/glsl/color_variation.glsl), periodic over 256 noise units
 // so that its time drift can be wrapped exactly.
@@ -25,15 +25,15 @@ NodeSpec colorVariationNode() {
   NodeSpec s;
   s.type = "color_variation";
   s.family = "depth and colour";
-  s.summary = "Seed 004's colour variation: sun-facing slopes warmer, a drifting noise hue shift, darker troughs.";
+  s.summary = "The top-down water plan's colour variation: sun-facing slopes warmer, a drifting noise hue shift, darker troughs.";
   s.formula =
-      "facing = dot(N.xz, S.xz) (N, S normalised; the seed's top-down x/y plane is our x/z); slope = mix((-0.03, "
+      "facing = dot(N.xz, S.xz) (N, S normalised; the source's top-down x/y plane is our x/z); slope = mix((-0.03, "
       "-0.01, 0.03), (0.03, 0.05, -0.02), clamp(facing * 0.5 + 0.5, 0, 1)); noise = value_noise(position.xz * "
       "noise_scale + drift * t) with an integer (PCG) lattice hash, period 256 noise units; hue = mix((-0.02, "
       "0.02, 0.04), (0.02, 0.04, -0.02), noise); darken = (1 - clamp(height, 0, 1)) * trough; color = (base + "
       "slope * slope_strength + hue * noise_strength) * (1 - darken).";
-  s.seed = "004 (section 5: slopeShift * 0.2, valueNoise(worldPos * 0.02 + time * 0.05), u_colorNoiseStrength = "
-           "0.1, troughDarken = (1 - rawHeight) * 0.15)";
+  s.source = "top-down water plan (section 5: slopeShift * 0.2, valueNoise(worldPos * 0.02 + time * 0.05), u_colorNoiseStrength = "
+             "0.1, troughDarken = (1 - rawHeight) * 0.15)";
   s.cost = "value noise: 4 PCG hashes (~40 integer ops) + ~40 ALU; a time-phase uniform when drift != 0";
   s.inputs = {
       ports::fixed("color", Type::Vec3, "the base water colour"),
@@ -42,17 +42,17 @@ NodeSpec colorVariationNode() {
       ports::fixed("height", Type::Float, Value::scalar(0.5),
                    "wave height normalised to [0, 1] (0 trough, 1 crest; clamped)"),
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition, "where the noise is sampled (x, z)"),
-      ports::fixed("slope_strength", Type::Float, Value::scalar(0.2), "weight of the slope shift (seed 004: 0.2)"),
+      ports::fixed("slope_strength", Type::Float, Value::scalar(0.2), "weight of the slope shift (the top-down water plan: 0.2)"),
       ports::fixed("noise_strength", Type::Float, Value::scalar(0.1),
-                   "weight of the noise hue shift (seed 004's u_colorNoiseStrength = 0.1)"),
-      ports::fixed("trough", Type::Float, Value::scalar(0.15), "darkening at the trough (seed 004: 0.15)"),
+                   "weight of the noise hue shift (the top-down water plan's u_colorNoiseStrength = 0.1)"),
+      ports::fixed("trough", Type::Float, Value::scalar(0.15), "darkening at the trough (the top-down water plan: 0.15)"),
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "the varied colour"),
                ports::fixed("noise", Type::Float, "the value noise in [0, 1)")};
   s.options = {
-      ports::number("noise_scale", 0.02, 1e-6, 1e6, "noise frequency per world unit (seed 004: 0.02)"),
+      ports::number("noise_scale", 0.02, 1e-6, 1e6, "noise frequency per world unit (the top-down water plan: 0.02)"),
       ports::number("drift", 0.05, 0.0, 1e3,
-                    "noise drift in noise units per second (seed 004: 0.05); wrapped exactly via a time phase"),
+                    "noise drift in noise units per second (the top-down water plan: 0.05); wrapped exactly via a time phase"),
   };
   s.isSource = true;  // the drift reads a time phase
   s.emit = [](EmitContext& ctx) {

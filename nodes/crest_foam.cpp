@@ -1,4 +1,4 @@
-// crest_foam: seed 004's whitecaps, foam where the wave is high or steep, broken into
+// crest_foam: the top-down water plan's whitecaps, foam where the wave is high or steep, broken into
 // patches by two layers of drifting value noise (threshold, intensity, coverage, sharpness).
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,7 @@ constexpr double kTau = 6.283185307179586;
 // The noise lattice repeats every 256 cells, so a drift wrapped to 256 is seamless.
 constexpr double kPeriod = 256.0;
 constexpr std::uint32_t kMask = 255u;
-// Seed 004: noise(xz * 0.12 + 0.3 t) + 0.5 noise(xz * 0.25 - 0.2 t).
+// The top-down water plan: noise(xz * 0.12 + 0.3 t) + 0.5 noise(xz * 0.25 - 0.2 t).
 constexpr double kDrift1 = 0.3, kDrift2 = 0.2;
 
 // The angular speed whose phase, scaled by period / 2 pi, is mod(rate t, period).
@@ -24,7 +24,7 @@ double driftOmega(double rate) { return kTau * rate / kPeriod; }
 
 }  // namespace
 
-// Seed 004's calculateFoam with y up, as nodes/glsl/crest_foam.glsl.
+// The top-down water plan's calculateFoam with y up, as nodes/glsl/crest_foam.glsl.
 double crestFoamReference(double height, const Value& normal, double x, double z, double drift1, double drift2,
                           double threshold, double intensity, double coverage, double sharpness) {
   double heightFoam = glsl::safeSmoothstep(threshold, threshold + 0.15, height);
@@ -43,27 +43,27 @@ NodeSpec crestFoamNode() {
   NodeSpec s;
   s.type = "crest_foam";
   s.family = "foam";
-  s.summary = "Whitecaps at wave crests from height and slope, broken into drifting patches by value noise (seed 004).";
+  s.summary = "Whitecaps at wave crests from height and slope, broken into drifting patches by value noise (the top-down water plan).";
   s.formula =
       "h = smoothstep(threshold, threshold + 0.15, height); slope = |normalize(N).xz|; base = max(h, 0.4 smoothstep(0.3, "
       "0.7, slope)); n = (vn(0.12 xz + 0.3 s t) + 0.5 vn(0.25 xz - 0.2 s t)) / 1.5 (s = noise_speed, value noise on a "
       "256-cell tiling lattice, drifts wrapped to 256); mask = smoothstep(0.9 - coverage, 1.1 - coverage, n); "
       "foam = clamp(base mask intensity, 0, 1)^(1 / max(sharpness, 1e-3)).";
-  s.seed = "004 (calculateFoam: threshold 0.65, intensity 0.7, coverage 0.4, sharpness 3)";
+  s.source = "top-down water plan (calculateFoam: threshold 0.65, intensity 0.7, coverage 0.4, sharpness 3)";
   s.cost = "8 hashes (two 2D value noises) + ~45 ALU + exp2/log2; two time-phase uniforms";
   s.inputs = {
-      ports::fixed("height", Type::Float, "wave height at the point (seed 004's raw height, ~0..1), e.g. from gerstner_waves"),
+      ports::fixed("height", Type::Float, "wave height at the point (the top-down water plan's raw height, ~0..1), e.g. from gerstner_waves"),
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "surface normal, y up (default: the surface normal)"),
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition,
                          "world point; x and z place the noise (default: the surface position)"),
-      ports::fixed("threshold", Type::Float, Value::scalar(0.65), "height where crest foam starts (seed 004: 0.65)"),
-      ports::fixed("intensity", Type::Float, Value::scalar(0.7), "overall foam brightness (seed 004: 0.7)"),
-      ports::fixed("coverage", Type::Float, Value::scalar(0.4), "how much area gets foam patches, 0..1 (seed 004: 0.4)"),
-      ports::fixed("sharpness", Type::Float, Value::scalar(3.0), "edge sharpness: foam^(1/sharpness) (seed 004: 3)"),
+      ports::fixed("threshold", Type::Float, Value::scalar(0.65), "height where crest foam starts (the top-down water plan: 0.65)"),
+      ports::fixed("intensity", Type::Float, Value::scalar(0.7), "overall foam brightness (the top-down water plan: 0.7)"),
+      ports::fixed("coverage", Type::Float, Value::scalar(0.4), "how much area gets foam patches, 0..1 (the top-down water plan: 0.4)"),
+      ports::fixed("sharpness", Type::Float, Value::scalar(3.0), "edge sharpness: foam^(1/sharpness) (the top-down water plan: 3)"),
   };
   s.outputs = {ports::fixed("foam", Type::Float, "foam amount in [0, 1]")};
   s.options = {ports::number("noise_speed", 1.0, -100.0, 100.0,
-                             "multiplies seed 004's noise drift rates 0.3 and 0.2 per second (compile-time: the drift "
+                             "multiplies the top-down water plan's noise drift rates 0.3 and 0.2 per second (compile-time: the drift "
                              "is a double-precision time phase, seamless at t = 1e6 s)")};
   s.isSource = true;  // reads time phases
   s.emit = [](EmitContext& ctx) {

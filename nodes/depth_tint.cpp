@@ -1,4 +1,4 @@
-// depth_tint: shallow-to-deep colour over the water's thickness (seeds 002 and 003).
+// depth_tint: shallow-to-deep colour over the water's thickness (the advanced shaders tutorial and the stylized water shader).
 #include <algorithm>
 
 #include "nodes/eval_math.h"
@@ -13,9 +13,9 @@ NodeSpec depthTintNode() {
   s.family = "depth and colour";
   s.summary = "Blends a shallow colour into a deep colour over the water's thickness.";
   s.formula =
-      "linear (seed 003): t = saturate(depth / max_depth); smooth (seed 002): t = smoothstep(0, max_depth, depth); "
+      "linear (the stylized water shader): t = saturate(depth / max_depth); smooth (the advanced shaders tutorial): t = smoothstep(0, max_depth, depth); "
       "color = mix(shallow, deep, t). max_depth is floored at 1e-6; negative depth gives the shallow colour.";
-  s.seed = "002 (smoothstep over 10 m, shallow (0, 0.8, 0.7), deep (0, 0.1, 0.3)), 003 (saturate(depth / max))";
+  s.source = "advanced shaders tutorial (smoothstep over 10 m, shallow (0, 0.8, 0.7), deep (0, 0.1, 0.3)), stylized water shader (saturate(depth / max))";
   s.cost = "~6 ALU (linear), ~10 ALU (smooth)";
   s.inputs = {
       ports::fixed("depth", Type::Float, "water thickness in metres (e.g. from water_depth)"),
@@ -25,7 +25,7 @@ NodeSpec depthTintNode() {
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "the tinted colour"),
                ports::fixed("factor", Type::Float, "the blend factor t in [0, 1]")};
-  s.options = {ports::choice("curve", {"linear", "smooth"}, "linear", "linear ramp (seed 003) or smoothstep (seed 002)")};
+  s.options = {ports::choice("curve", {"linear", "smooth"}, "linear", "linear ramp (the stylized water shader) or smoothstep (the advanced shaders tutorial)")};
   s.emit = [](EmitContext& ctx) {
     bool smooth = ctx.option("curve").get<std::string>() == "smooth";
     std::string t = ctx.temporary(

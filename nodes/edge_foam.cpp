@@ -1,4 +1,4 @@
-// edge_foam: foam where the water meets geometry (seeds 002 and 003): a depth mask times
+// edge_foam: foam where the water meets geometry (the advanced shaders tutorial and the stylized water shader): a depth mask times
 // a two-layer scrolling foam texture, cut off at a threshold.
 #include <algorithm>
 #include <cmath>
@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kTau = 6.283185307179586;
 
-// Seed 003: layer 1 scrolls by t speed (1, 0.5), layer 2 by t speed (-0.5, 1), at
+// The stylized water shader: layer 1 scrolls by t speed (1, 0.5), layer 2 by t speed (-0.5, 1), at
 // 0.1 and 0.08 texture repeats per metre times foam_scale.
 constexpr double kLayer1Scale = 0.1, kLayer2Scale = 0.08;
 
@@ -35,16 +35,16 @@ NodeSpec edgeFoamNode() {
   s.summary = "Foam along shores and objects: shallow-depth mask times a two-layer scrolling foam texture, cut off.";
   s.formula =
       "uv1 = xz * foam_scale * 0.1 + mod(t speed (1, 0.5), 1), uv2 = xz * foam_scale * 0.08 + mod(t speed (-0.5, 1), 1); "
-      "tex = (foam(uv1).r + foam(uv2).r) / 2; mask = 1 - smoothstep(0, width, depth) (smooth, seed 002) or "
-      "1 - saturate(depth / width) (linear, seed 003); foam = saturate(strength * smoothstep(cutoff, cutoff + softness, "
-      "tex * mask)); softness 0 is seed 003's step(cutoff, tex * mask).";
-  s.seed = "002 (1 - smoothstep(0, 0.5, depth)), 003 (section 9: two foam layers, step(cutoff, texture * mask) * strength)";
+      "tex = (foam(uv1).r + foam(uv2).r) / 2; mask = 1 - smoothstep(0, width, depth) (smooth, the advanced shaders tutorial) or "
+      "1 - saturate(depth / width) (linear, the stylized water shader); foam = saturate(strength * smoothstep(cutoff, cutoff + softness, "
+      "tex * mask)); softness 0 is the stylized water shader's step(cutoff, tex * mask).";
+  s.source = "advanced shaders tutorial (1 - smoothstep(0, 0.5, depth)), stylized water shader (section 9: two foam layers, step(cutoff, texture * mask) * strength)";
   s.cost = "2 texture samples + ~20 ALU; the scroll offsets are two time-phase uniforms";
   OptionSpec tex = ports::texture("texture", "builtin:foam", "the foam texture (red channel): builtin:foam or a .png path relative to the graph");
   s.options = {
       tex,
       ports::choice("mask", {"smooth", "linear"}, "smooth",
-                    "depth falloff: 1 - smoothstep(0, width, depth) (seed 002) or 1 - saturate(depth / width) (seed 003)"),
+                    "depth falloff: 1 - smoothstep(0, width, depth) (the advanced shaders tutorial) or 1 - saturate(depth / width) (the stylized water shader)"),
       ports::number("speed", 0.05, -10.0, 10.0,
                     "scroll speed in texture repeats per second (compile-time, so the scroll is a double-precision "
                     "time phase, exact at t = 1e6 s)"),
@@ -55,10 +55,10 @@ NodeSpec edgeFoamNode() {
                          "world point (x and z place the foam texture; default: the surface position)"),
       ports::fixed("cutoff", Type::Float, Value::scalar(0.25),
                    "texture * mask level where foam starts; keep it > 0 (at 0 the step also fires on deep water)"),
-      ports::fixed("width", Type::Float, Value::scalar(0.5), "depth in metres over which the foam fades out (seed 002: 0.5)"),
-      ports::fixed("softness", Type::Float, Value::scalar(0.0), "width of the cut-off's smooth edge; 0 = hard step (seed 003)"),
+      ports::fixed("width", Type::Float, Value::scalar(0.5), "depth in metres over which the foam fades out (the advanced shaders tutorial: 0.5)"),
+      ports::fixed("softness", Type::Float, Value::scalar(0.0), "width of the cut-off's smooth edge; 0 = hard step (the stylized water shader)"),
       ports::fixed("strength", Type::Float, Value::scalar(1.0), "foam brightness (result clamped to [0, 1])"),
-      ports::fixed("foam_scale", Type::Float, Value::scalar(1.0), "foam texture scale (seed 003's _FoamScale)"),
+      ports::fixed("foam_scale", Type::Float, Value::scalar(1.0), "foam texture scale (the stylized water shader's _FoamScale)"),
   };
   s.outputs = {ports::fixed("foam", Type::Float, "foam amount in [0, 1]")};
   s.isSource = true;  // samples a texture, reads time phases

@@ -1,5 +1,5 @@
 // flow_map: a texture dragged along a flow field in two phases half a cycle apart,
-// cross-faded by triangle-wave weights so neither phase's reset shows (seed 003).
+// cross-faded by triangle-wave weights so neither phase's reset shows (the stylized water shader).
 #include <cmath>
 
 #include "nodes/eval_math.h"
@@ -18,15 +18,15 @@ NodeSpec flowMapNode() {
       "flow = flow_texture(uv).xy * 2 - 1 (flow_source = texture) or the `flow` input; p_a = fract(time * speed), "
       "p_b = fract(time * speed + 0.5); w = 1 - |1 - 2 p| (so w_a + w_b = 1); uv_i = uv - flow * strength * p_i; "
       "sample = texture(uv_a) w_a + texture(uv_b) w_b.";
-  s.seed =
-      "003 (flow maps: progress = frac(time) and frac(time + 0.5), UV = uv - flowVector * progress, "
+  s.source =
+      "stylized water shader (flow maps: progress = frac(time) and frac(time + 0.5), UV = uv - flowVector * progress, "
       "weight = 1 - abs(1 - 2 progress))";
   s.cost = "two texture fetches (three with a flow texture), ~14 ALU";
   s.inputs = {
       ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "texture coordinate"),
       ports::fromBuiltin("time", Type::Float, Builtin::Time, "seconds"),
       ports::fixed("flow", Type::Vec2, Value::vector({0, 0}), "the flow vector when flow_source = input"),
-      ports::fixed("speed", Type::Float, Value::scalar(1.0), "phase cycles per second (seed: 1)"),
+      ports::fixed("speed", Type::Float, Value::scalar(1.0), "phase cycles per second (source: 1)"),
       ports::fixed("strength", Type::Float, Value::scalar(1.0), "texture units the flow moves the texture per cycle"),
   };
   s.outputs = {ports::fixed("sample", Type::Vec4, "the blended texture sample"),

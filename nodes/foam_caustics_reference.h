@@ -9,10 +9,10 @@ namespace wg::nodes {
 double voronoiCausticsIntensity(double f1);
 // texture_caustics: clamp(1 - |a + b - 1|, 0, 1)^9.
 double textureCausticsShape(double a, double b);
-// edge_foam: the depth mask (smooth: seed 002, else seed 003's linear) and the cut-off.
+// edge_foam: the depth mask (smooth: the advanced shaders tutorial, else the stylized water shader's linear) and the cut-off.
 double edgeFoamMask(bool smooth, double depth, double width);
 double edgeFoamCut(double tex, double mask, double cutoff, double softness, double strength);
-// crest_foam: seed 004's calculateFoam (y up), drifts already wrapped.
+// crest_foam: the top-down water plan's calculateFoam (y up), drifts already wrapped.
 double crestFoamReference(double height, const Value& normal, double x, double z, double drift1, double drift2,
                           double threshold, double intensity, double coverage, double sharpness);
 // coastal_foam: the amount before the texture, and the specular scale.

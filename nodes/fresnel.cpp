@@ -1,6 +1,6 @@
 // fresnel: how much of the light the water surface reflects, by viewing angle. Models:
-// `schlick` (seed 002, F0 = 0.02), `exact` dielectric Fresnel with an index of refraction,
-// and `power` (seed 000's (N.V)^strength and seed 003's (1 - N.V)^strength). Seen from
+// `schlick` (the advanced shaders tutorial, F0 = 0.02), `exact` dielectric Fresnel with an index of refraction,
+// and `power` (the classic WebGL water renderer's (N.V)^strength and the stylized water shader's (1 - N.V)^strength). Seen from
 // below (`water_to_air`), light beyond the critical angle is totally reflected.
 #include <cmath>
 
@@ -20,9 +20,9 @@ NodeSpec fresnelNode() {
       "c = clamp(dot(N, V), 0, 1). schlick: F = F0 + (1 - F0)(1 - c)^5, from below with the transmitted cosine "
       "(F = 1 past the critical angle). exact: F = (Rs^2 + Rp^2) / 2 with Rs = (n1 c - n2 ct)/(n1 c + n2 ct), "
       "Rp = (n1 ct - n2 c)/(n1 ct + n2 c), ct = sqrt(1 - (n1/n2)^2 (1 - c^2)), F = 1 under total internal "
-      "reflection. power: F = 1 - c^strength (form cos, seed 000) or (1 - c)^strength (form one_minus_cos, "
-      "seed 003). transmittance = 1 - F.";
-  s.seed = "000 (power, strength 2), 002 (Schlick, F0 = 0.02), 003 (power of 1 - N.V)";
+      "reflection. power: F = 1 - c^strength (form cos, the classic WebGL water renderer) or (1 - c)^strength (form one_minus_cos, "
+      "the stylized water shader). transmittance = 1 - F.";
+  s.source = "classic WebGL water renderer (power, strength 2), advanced shaders tutorial (Schlick, F0 = 0.02), stylized water shader (power of 1 - N.V)";
   s.cost = "schlick ~6 ALU; exact ~20 ALU and a sqrt; power: exp2 + log2";
   s.inputs = {
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "unit surface normal facing the viewer"),
@@ -39,7 +39,7 @@ NodeSpec fresnelNode() {
                     "(schlick, exact)"),
       ports::number("ior", 1.333, 1.0, 3.0, "index of refraction of water relative to air"),
       ports::choice("power_form", {"cos", "one_minus_cos"}, "cos",
-                    "power model: 1 - (N.V)^strength (seed 000) or (1 - N.V)^strength (seed 003)"),
+                    "power model: 1 - (N.V)^strength (the classic WebGL water renderer) or (1 - N.V)^strength (the stylized water shader)"),
   };
   // F in [0, 1] only where the inputs keep it there: schlick needs f0 in [0, 1]; the power
   // forms need strength >= 0 (c^s >= 1 for s < 0); exact always is.

@@ -1,5 +1,5 @@
 // gerstner_waves: N Gerstner (trochoidal) waves displacing the surface, with the exact
-// analytic normal, tangent and binormal of the displaced surface (seed 003; GPU Gems 1,
+// analytic normal, tangent and binormal of the displaced surface (the stylized water shader; GPU Gems 1,
 // ch. 1). GPU Gems' eq. 12 evaluates the normal from per-wave terms, which is exact only
 // for a single wave; here the partial derivatives dP/dx and dP/dz are summed over all
 // waves and crossed, so the cross terms between waves are kept.
@@ -139,11 +139,11 @@ NodeSpec gerstnerWavesNode() {
       "normal = normalize(cross(dP/dz, dP/dx)) oriented up (y >= 0), tangent = normalize(dP/dx), "
       "binormal = normalize(dP/dz). Unlike GPU Gems eq. 12 (exact for one wave), the products of the sums keep "
       "the cross terms between waves. Degenerate vectors (a cusp, sum Q k A = 1) fall back to up, +x, +z. "
-      "With the default amplitude A = Q/k the horizontal excursion is Q A = Q^2/k (seed 003's code moves a = Q/k "
+      "With the default amplitude A = Q/k the horizontal excursion is Q A = Q^2/k (the stylized water shader's code moves a = Q/k "
       "horizontally, i.e. its steepness acts on both); either way one wave reaches the cusp at Q = 1.";
-  s.seed =
-      "003 (k = 2 pi / lambda, a = steepness / k, tangent and binormal; GPU Gems form of the sum), "
-      "002 (vertex displacement whose normals the fragment stage must agree with)";
+  s.source =
+      "stylized water shader (k = 2 pi / lambda, a = steepness / k, tangent and binormal; GPU Gems form of the sum), "
+      "advanced shaders tutorial (vertex displacement whose normals the fragment stage must agree with)";
   s.cost =
       "per wave: one mod, sin and cos, ~20 ALU (a 16-wave maximum: ~330 ALU); normal: cross + inversesqrt. "
       "Each wave's time phase is one float uniform (computed in double by the runtime).";
@@ -164,7 +164,7 @@ NodeSpec gerstnerWavesNode() {
   ])");
   wavesOpt.doc =
       "1 to 16 waves, each {\"direction\": [x, z] (normalised; not zero), \"steepness\": Q in [0, 1], "
-      "\"wavelength\": metres > 0, \"amplitude\": metres (optional, default Q/k as in seed 003), \"phase\": radians "
+      "\"wavelength\": metres > 0, \"amplitude\": metres (optional, default Q/k as in the stylized water shader), \"phase\": radians "
       "(optional)}. The sum of Q k A over the waves must not exceed 1, or the surface folds over.";
   wavesOpt.validate = validateGerstnerWaves;
   s.options = {wavesOpt};

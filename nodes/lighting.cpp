@@ -1,5 +1,5 @@
-// Optics, local lighting: lambert and blinn_phong (seed 002, levels 1 and 2),
-// phong_specular (seed 001's sun and environment Phong terms) and ggx_specular (seed 002's
+// Optics, local lighting: lambert and blinn_phong (the advanced shaders tutorial, levels 1 and 2),
+// phong_specular (the deferred water article's sun and environment Phong terms) and ggx_specular (the advanced shaders tutorial's
 // Cook-Torrance with GGX D, Schlick F and Smith/Schlick-GGX G).
 #include <cmath>
 
@@ -12,7 +12,7 @@
 namespace wg::nodes {
 namespace {
 
-// Towards the sun: seed 000's sun travels along (-1, -1, 0.5), so the light lies at (1, 1, -0.5).
+// Towards the sun: the classic WebGL water renderer's sun travels along (-1, -1, 0.5), so the light lies at (1, 1, -0.5).
 Value defaultSun() { return Value::vector({1, 1, -0.5}); }
 
 PortSpec normalPort() {
@@ -23,7 +23,7 @@ PortSpec viewPort() {
 }
 PortSpec lightPort(std::string name = "light") {
   return ports::fixed(std::move(name), Type::Vec3, defaultSun(),
-                      "direction from the surface towards the light (normalised here); default seed 000's sun");
+                      "direction from the surface towards the light (normalised here); default the classic WebGL water renderer's sun");
 }
 
 Value scaled(const Value& c, double k) { return glsl::scale(c.convertedTo(Type::Vec3), k); }
@@ -39,7 +39,7 @@ NodeSpec lambertNode() {
   s.family = "optics";
   s.summary = "Lambert diffuse lighting: N.L clamped to [0, 1].";
   s.formula = "intensity = clamp(dot(normalize(N), normalize(L)), 0, 1); color = light_color * surface_color * intensity.";
-  s.seed = "002 (Level 1: Lambert, NdotL = max(dot(N, L), 0))";
+  s.source = "advanced shaders tutorial (Level 1: Lambert, NdotL = max(dot(N, L), 0))";
   s.cost = "2 safe normalisations + a dot: ~12 ALU";
   s.inputs = {normalPort(), lightPort(),
               ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light"),
@@ -75,7 +75,7 @@ NodeSpec blinnPhongNode() {
   s.formula =
       "H = normalize(L + V); specular = strength * max(N.H, 0)^shininess (safe pow); diffuse = max(N.L, 0); "
       "color = light_color * (surface_color * diffuse + specular).";
-  s.seed = "002 (Level 2: Blinn-Phong, shininess 32 / 64 / 128)";
+  s.source = "advanced shaders tutorial (Level 2: Blinn-Phong, shininess 32 / 64 / 128)";
   s.cost = "5 safe normalisations, exp2 + log2: ~30 ALU";
   s.inputs = {normalPort(), viewPort(), lightPort(),
               ports::fixed("shininess", Type::Float, Value::scalar(64), "exponent: 8 soft, 64 medium, 256 sharp"),
@@ -125,16 +125,16 @@ NodeSpec phongSpecularNode() {
   NodeSpec s;
   s.type = "phong_specular";
   s.family = "optics";
-  s.summary = "Seed 001's Phong specular reflection of the sun and of the environment light.";
+  s.summary = "The deferred water article's Phong specular reflection of the sun and of the environment light.";
   s.formula =
       "R(L) = 2 (N.L) N - L (L mirrored about N; equivalently the view ray reflected, reflect(-V, N).L); "
       "sun = clamp(R(sun).V, 0, 1)^shine (safe pow); environment = clamp(R(environment).V, 0, 1) (no exponent, "
-      "as in seed 001); color = sun * sun_color + environment * environment_color.";
-  s.seed = "001 (listing 9: SpecularIntensity = pow(max(-dot(2 (N.L) N - L, camera-to-surface), 0), LightColor.w), "
-           "EnvironmentSpecularIntensity likewise without exponent); shine 20 from seed 000's shineDamper";
+      "as in the deferred water article); color = sun * sun_color + environment * environment_color.";
+  s.source = "deferred water article (listing 9: SpecularIntensity = pow(max(-dot(2 (N.L) N - L, camera-to-surface), 0), LightColor.w), "
+             "EnvironmentSpecularIntensity likewise without exponent); shine 20 from the classic WebGL water renderer's shineDamper";
   s.cost = "6 safe normalisations, exp2 + log2: ~40 ALU";
   s.inputs = {normalPort(), viewPort(), lightPort("sun"),
-              ports::fixed("shine", Type::Float, Value::scalar(20), "sun exponent (seed 001's LightColor.w, seed 000's "
+              ports::fixed("shine", Type::Float, Value::scalar(20), "sun exponent (the deferred water article's LightColor.w, the classic WebGL water renderer's "
                                                                    "shineDamper = 20)"),
               ports::fixed("sun_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the sun light"),
               ports::fixed("environment", Type::Vec3, kUp, "direction towards the environment light (the sky)"),
@@ -199,8 +199,8 @@ NodeSpec ggxSpecularNode() {
       "k = (r + 1)^2 / 8. brdf = D F G / (4 NdotL NdotV), computed as D F / (4 (NdotL (1 - k) + k)(NdotV (1 - k) + k)): "
       "identical where NdotL, NdotV > 0 and its finite limit where either is 0, so nothing divides by zero. "
       "specular = brdf * NdotL; color = light_color * specular. All dots clamped to [0, 1].";
-  s.seed = "002 (Level 3: Cook-Torrance, DistributionGGX, FresnelSchlick with F0 = 0.02, GeometrySmith; water "
-           "roughness ~0.05)";
+  s.source = "advanced shaders tutorial (Level 3: Cook-Torrance, DistributionGGX, FresnelSchlick with F0 = 0.02, GeometrySmith; water "
+             "roughness ~0.05)";
   s.cost = "5 safe normalisations, 2 divisions: ~45 ALU";
   s.inputs = {normalPort(), viewPort(), lightPort(),
               ports::fixed("roughness", Type::Float, Value::scalar(0.05),

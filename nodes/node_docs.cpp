@@ -58,7 +58,7 @@ nlohmann::json nodesJson(const Registry& registry) {
     j["family"] = s->family;
     j["summary"] = s->summary;
     j["formula"] = s->formula;
-    if (!s->seed.empty()) j["seed"] = s->seed;
+    if (!s->source.empty()) j["source"] = s->source;
     j["cost"] = s->cost;
     j["stages"] = stagesText(s->stages);
     j["tolerance"] = s->tolerance;
@@ -108,7 +108,7 @@ std::string nodesMarkdown(const Registry& registry) {
     for (const NodeSpec* s : specs) {
       md += "\n### " + s->type + "\n\n" + s->summary + "\n\n";
       md += "- formula: " + s->formula + "\n";
-      if (!s->seed.empty()) md += "- seed: " + s->seed + "\n";
+      if (!s->source.empty()) md += "- source ([sources](sources.md)): " + s->source + "\n";
       md += "- stages: " + stagesText(s->stages) + "\n";
       md += "- cost: " + s->cost + "\n";
       md += "- tolerance: " + formatNumber(s->tolerance) + "\n";

@@ -1,5 +1,5 @@
 // Noise family, part 1: `hash` (PCG3D on the integer cell, bit-identical on CPU and GPU),
-// `value_noise` (hashed lattice, cubic Hermite blend, seed 004) and `fbm` (octaves of value
+// `value_noise` (hashed lattice, cubic Hermite blend, the top-down water plan) and `fbm` (octaves of value
 // noise). `voronoi` is in voronoi.cpp. The double references live in noise_reference.cpp.
 #include <string>
 
@@ -52,7 +52,7 @@ NodeSpec hashNode() {
       "c = uint(int(clamp(floor(p), -2^31, 2147483520))) per component (a vec2 cell is (x, y, 0)); "
       "h = PCG3D(c): v = v * 1664525 + 1013904223; v.x += v.y v.z; v.y += v.z v.x; v.z += v.x v.y; v ^= v >> 16; "
       "the three mixing steps again (all mod 2^32). vec = (h >> 8) * 2^-24 per component, value = vec.x.";
-  s.seed = "004 (its noise hash, replaced by an integer hash: Jarzynski and Olano, \"Hash Functions for GPU Rendering\", 2020)";
+  s.source = "top-down water plan (its noise hash, replaced by an integer hash: Jarzynski and Olano, \"Hash Functions for GPU Rendering\", 2020)";
   s.cost = "~20 integer ALU (PCG3D), no transcendental functions";
   s.inputs = {positionPort("vec2 or vec3 coordinate (default: the world position); its integer cell floor(p) is hashed")};
   s.outputs = {ports::fixed("value", Type::Float, "one hashed number in [0, 1) (= vec.x)"),
@@ -89,7 +89,7 @@ NodeSpec valueNoiseNode() {
       "q = p * scale; i = floor(q), f = q - i, u = f^2 (3 - 2f); lattice(c) = hash(c).x; "
       "2D: mix(mix(l(i), l(i+x), u.x), mix(l(i+y), l(i+x+y), u.x), u.y); 3D: the same trilinearly over 8 corners. "
       "Output in [0, 1).";
-  s.seed = "004 (valueNoise: cubic Hermite blend of four hashed corners)";
+  s.source = "top-down water plan (valueNoise: cubic Hermite blend of four hashed corners)";
   s.cost = "2D: 4 hashes (~80 integer ALU) + ~15 ALU; 3D: 8 hashes + ~30 ALU";
   s.inputs = {positionPort("vec2 or vec3 coordinate (default: the world position)"),
               ports::fixed("scale", Type::Float, Value::scalar(1.0), "lattice cells per unit of p")};
@@ -120,7 +120,7 @@ NodeSpec fbmNode() {
   s.formula =
       "lac = clamp(lacunarity, 0, 8), g = clamp(gain, 0, 4); q_0 = p * scale, q_(i+1) = q_i * lac, a_i = g^i; "
       "fbm = sum_i a_i value_noise(q_i + i (17.31, 9.73[, 5.47])) / sum_i a_i, i < octaves. Output in [0, 1).";
-  s.seed = "004 (layered value noise for the foam mask and colour variation)";
+  s.source = "top-down water plan (layered value noise for the foam mask and colour variation)";
   s.cost = "octaves x value_noise: 2D ~100 ALU per octave (4 hashes), 3D ~190 (8 hashes); octaves 1..8";
   s.inputs = {positionPort("vec2 or vec3 coordinate (default: the world position)"),
               ports::fixed("scale", Type::Float, Value::scalar(1.0), "lattice cells per unit of p (first octave)"),

@@ -1,5 +1,5 @@
 // Optics, directions: reflect_dir (the mirror direction of the view ray) and refract_dir
-// (Snell refraction with total internal reflection), seed 002, parts 5 and 6.
+// (Snell refraction with total internal reflection), the advanced shaders tutorial, parts 5 and 6.
 #include <cmath>
 
 #include "nodes/eval_math.h"
@@ -17,7 +17,7 @@ NodeSpec reflectDirNode() {
   s.formula =
       "R = normalize(reflect(-V, N)) = normalize(2 (N.V) N - V), with N and V normalised first; every "
       "normalisation is the safe one (a zero vector stays zero, never NaN).";
-  s.seed = "002 (reflect(-V, N) for cube-map and planar reflection)";
+  s.source = "advanced shaders tutorial (reflect(-V, N) for cube-map and planar reflection)";
   s.cost = "3 safe normalisations (inversesqrt) + reflect: ~15 ALU";
   s.inputs = {
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "surface normal (normalised here)"),
@@ -51,7 +51,7 @@ NodeSpec refractDirNode() {
       "I = -V, c = clamp(N.V, 0, 1), eta = 1/ior (air_to_water) or ior (water_to_air), k = 1 - eta^2 (1 - c^2). "
       "k >= 0: T = normalize(eta I + (eta c - sqrt(k)) N) (GLSL refract), tir = 0. k < 0 (from below past the "
       "critical angle asin(1/ior) = 48.6066 deg for 1.333): T = normalize(2 c N - V), the reflection, tir = 1.";
-  s.seed = "002 (refract(-V, N, 1.0 / 1.33), Snell's law)";
+  s.source = "advanced shaders tutorial (refract(-V, N, 1.0 / 1.33), Snell's law)";
   s.cost = "3 safe normalisations + a sqrt and a branch: ~25 ALU";
   s.inputs = {
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "surface normal facing the viewer (normalised here)"),

@@ -1,7 +1,7 @@
 // Screen space and scene: scene_depth (the depth pre-pass at this pixel: raw, linear and
 // the world point), scene_color (GrabPass-style refraction with a clamped distortion),
 // planar_reflection (the reflection pass at this pixel), cubemap_reflection (the sky's cube
-// map along reflect(-V, N)) and ssr (seed 001's screen-space reflection march). All read
+// map along reflect(-V, N)) and ssr (the deferred water article's screen-space reflection march). All read
 // scene textures the runtime renders in the passes their `resources` name; all are
 // fragment-only. Their references read the EvalEnvironment's scene fields: a scene texture
 // returns the same value wherever it is sampled.
@@ -37,8 +37,8 @@ NodeSpec sceneDepthNode() {
       "u_camera_near_far (as linearize_depth: finite for the sky and f = inf, <= 1e30); position = camera + "
       "transpose(mat3(V)) * ((ndc.x + P[2][0]) / P[0][0], (ndc.y + P[2][1]) / P[1][1], -1) * linear, ndc = 2 uv - 1 "
       "(a perspective projection and a rigid view matrix; scales floored at 1e-6, result clamped to +-1e30).";
-  s.seed = "000 (water depth from the linearised depth texture, near 0.1, far 50); 001 (the scene's position "
-           "G-buffer, SceneCameraSpacePosAndDepth); 002 (linearizeDepth)";
+  s.source = "classic WebGL water renderer (water depth from the linearised depth texture, near 0.1, far 50); deferred water article (the scene's position "
+             "G-buffer, SceneCameraSpacePosAndDepth); advanced shaders tutorial (linearizeDepth)";
   s.cost = "one depth-texture fetch (runs the depth_prepass: one extra draw of the opaque scene, 4 bytes/pixel); "
            "linear ~8 ALU; position ~25 ALU";
   s.inputs = {ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv, kScreenUvDoc)};
@@ -89,8 +89,8 @@ NodeSpec sceneColorNode() {
               "distortion offset.";
   s.formula = "uv' = clamp(screen_uv + distortion, 0, 1); color = texture(u_scene_color, uv').rgb. The clamp keeps "
               "every distorted look-up on screen.";
-  s.seed = "003 (refraction from the grabbed screen, GrabPass); 002 (screen-space distorted refraction); 000 "
-           "(distortion (dudv * 2 - 1) * 0.03)";
+  s.source = "stylized water shader (refraction from the grabbed screen, GrabPass); advanced shaders tutorial (screen-space distorted refraction); classic WebGL water renderer "
+             "(distortion (dudv * 2 - 1) * 0.03)";
   s.cost = "one texture fetch + 4 ALU; runs the scene_color_copy pass (a blit of the frame, 4 bytes/pixel RGBA8)";
   makeScreenLookup(s, "scene_color", &EvalEnvironment::sceneColor,
                    "offset in screen units (e.g. dudv_distortion.offset or normal.xz * 0.03)",
@@ -114,15 +114,15 @@ NodeSpec planarReflectionNode() {
       "uv' = clamp(screen_uv + distortion, 0, 1); flip_y: uv' = (uv'.x, 1 - uv'.y); color = texture(u_reflection, "
       "uv').rgb. watergraph's runtime renders the reflection through the real camera with the scene mirrored "
       "(view-projection * scale(1, -1, 1), clip plane at the water), so the mirrored image lines up with the screen "
-      "and needs no flip; flip_y serves engines that render it through a mirrored camera (seed 000's "
+      "and needs no flip; flip_y serves engines that render it through a mirrored camera (the classic WebGL water renderer's "
       "reflectTexCoords = (ndc.x, -ndc.y)).";
-  s.seed = "000 (reflection pass with the view mirrored and clip plane (0, 1, 0, 0); y-flipped look-up); 002 (planar "
-           "reflection with a mirrored camera); 003 (reflection matrix)";
+  s.source = "classic WebGL water renderer (reflection pass with the view mirrored and clip plane (0, 1, 0, 0); y-flipped look-up); advanced shaders tutorial (planar "
+             "reflection with a mirrored camera); stylized water shader (reflection matrix)";
   s.cost = "one texture fetch + 4 ALU; runs the planar_reflection pass: a second draw of the opaque scene and sky "
            "into an RGBA8 + depth target (8 bytes/pixel)";
   s.inputs = {ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv, kScreenUvDoc),
               ports::fixed("distortion", Type::Vec2, Value::vector({0, 0}),
-                           "offset in screen units (seed 000: (dudv * 2 - 1) * 0.03)")};
+                           "offset in screen units (the classic WebGL water renderer: (dudv * 2 - 1) * 0.03)")};
   s.outputs = {ports::fixed("color", Type::Vec3, "the reflected scene"),
                ports::fixed("uv", Type::Vec2, "the look-up position in the reflection texture, in [0, 1]")};
   s.options = {ports::flag("flip_y", false,
@@ -161,7 +161,7 @@ NodeSpec cubemapReflectionNode() {
   s.summary = "The environment cube map (the sky) along the mirror direction reflect(-V, N).";
   s.formula = "R = normalize(reflect(-normalize(V), normalize(N))) (safe normalisation: zero inputs give R = 0, "
               "never NaN); color = texture(u_environment, R).rgb.";
-  s.seed = "002 (cube-map reflection: textureCube(envMap, reflect(-V, N)))";
+  s.source = "advanced shaders tutorial (cube-map reflection: textureCube(envMap, reflect(-V, N)))";
   s.cost = "one cube-map fetch + ~15 ALU; runs the environment_cubemap pass (6 faces of the sky, 128^2 RGBA8 each)";
   s.inputs = {ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "unit surface normal"),
               ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection, "unit vector from the surface to the viewer")};
@@ -193,7 +193,7 @@ NodeSpec ssrNode() {
   NodeSpec s;
   s.type = "ssr";
   s.family = "screen space";
-  s.summary = "Screen-space reflection (seed 001): march the reflected ray through the depth buffer for N steps, "
+  s.summary = "Screen-space reflection (the deferred water article): march the reflected ray through the depth buffer for N steps, "
               "fade at the screen edges and with distance, fall back to another reflection.";
   s.formula =
       "R = reflect(-V, N) (safe), c = R.N, stride = step / max(0.6, c^2); for i < steps: p = position + (i + 0.5) "
@@ -202,29 +202,29 @@ NodeSpec ssrNode() {
       "growth^i. fade = max(1 - (0.01 + |2 uv - 1|^2)^(1/4), 0) * min(1, fade_distance / d), d = the surface's "
       "view depth; confidence = hit * fade; color = mix(fallback, scene_color(uv), confidence). The reference "
       "marches against the environment's scene depth, the same at every screen position.";
-  s.seed = "001 (listing 8: 10 steps, step 7 / max(0.6, (R.N)^2), squared tolerance 16 growing by 1.1 per step, "
-           "edge fade (0.01 + dx^2 + dy^2)^(1/4), distance fade, fall back to the background); the defaults here are "
-           "scaled from the seed's units (haze over 2000) to the metres of the built-in scene";
+  s.source = "deferred water article (listing 8: 10 steps, step 7 / max(0.6, (R.N)^2), squared tolerance 16 growing by 1.1 per step, "
+             "edge fade (0.01 + dx^2 + dy^2)^(1/4), distance fade, fall back to the background); the defaults here are "
+             "scaled from the source's units (haze over 2000) to the metres of the built-in scene";
   s.cost = "per step: two mat4 products, one depth fetch, ~20 ALU (steps = 10: ~10 fetches, ~400 ALU); plus one "
            "colour fetch; runs depth_prepass and scene_color_copy. Quality levels: steps 5 (coarse, misses thin "
-           "objects), 10 (seed), 20-64 (finer, linear cost)";
+           "objects), 10 (the source), 20-64 (finer, linear cost)";
   s.inputs = {
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition, "world position of the reflecting surface"),
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "unit surface normal"),
       ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection, "unit vector from the surface to the viewer"),
       ports::fixed("fallback", Type::Vec3, Value::vector({0, 0, 0}),
                    "colour where the march finds nothing (e.g. cubemap_reflection.color or planar_reflection.color)"),
-      ports::fixed("step", Type::Float, Value::scalar(1.0), "march step in metres at steep reflections (seed: 7 units)"),
+      ports::fixed("step", Type::Float, Value::scalar(1.0), "march step in metres at steep reflections (source: 7 units)"),
       ports::fixed("tolerance", Type::Float, Value::scalar(0.5),
-                   "hit tolerance in metres of view depth at the first step (seed: sqrt(16) = 4 units)"),
-      ports::fixed("growth", Type::Float, Value::scalar(1.1), "factor on the squared tolerance per step (seed: 1.1)"),
+                   "hit tolerance in metres of view depth at the first step (source: sqrt(16) = 4 units)"),
+      ports::fixed("growth", Type::Float, Value::scalar(1.1), "factor on the squared tolerance per step (source: 1.1)"),
       ports::fixed("fade_distance", Type::Float, Value::scalar(20.0),
                    "view depth up to which reflections keep full strength; beyond, fade_distance / depth"),
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "the reflection: the hit's scene colour blended with the fallback"),
                ports::fixed("confidence", Type::Float, "hit * fade, in [0, 1] (0: only the fallback)"),
                ports::fixed("uv", Type::Vec2, "screen position of the hit ((0.5, 0.5) when nothing was hit)")};
-  s.options = {ports::integer("steps", 10, 1, 64, "ray-march steps, the quality level (seed 001: 10); cost grows linearly")};
+  s.options = {ports::integer("steps", 10, 1, 64, "ray-march steps, the quality level (the deferred water article: 10); cost grows linearly")};
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"scene_depth", "scene_color"};

@@ -1,4 +1,4 @@
-// shore_waves: seed 003's bands of foam running up the shore, sin of the shore depth
+// shore_waves: the stylized water shader's bands of foam running up the shore, sin of the shore depth
 // minus time, sharpened by squaring and fading out with depth.
 #include <cmath>
 
@@ -23,12 +23,12 @@ NodeSpec shoreWavesNode() {
   NodeSpec s;
   s.type = "shore_waves";
   s.family = "foam";
-  s.summary = "Bands of foam running towards the shore: a sine of the shore depth minus time, fading with depth (seed 003).";
+  s.summary = "Bands of foam running towards the shore: a sine of the shore depth minus time, fading with depth (the stylized water shader).";
   s.formula =
       "d = clamp(depth, 0, D), D = max(distance, 1e-6); phase = mod(speed t, 2 pi); "
       "w = (sin(mod(d frequency - phase, 2 pi)) / 2 + 1/2)^2; waves = saturate(w amplitude (1 - d / D)).";
-  s.seed = "003 (section 9: ShoreWave, sin(shoreDepth * frequency - time * speed) * 0.5 + 0.5, squared, times "
-           "amplitude * saturate(1 - depth / distance)); the seed gives no values: the defaults here are ours";
+  s.source = "stylized water shader (section 9: ShoreWave, sin(shoreDepth * frequency - time * speed) * 0.5 + 0.5, squared, times "
+             "amplitude * saturate(1 - depth / distance)); the source gives no values: the defaults here are ours";
   s.cost = "1 sin + ~12 ALU; the phase is a time-phase uniform";
   s.inputs = {
       ports::fixed("depth", Type::Float, "shore depth in metres (e.g. water_depth); <= 0 is the waterline"),

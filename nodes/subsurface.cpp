@@ -1,4 +1,4 @@
-// subsurface: the fake subsurface scattering of seed 003 (section 8): light seen through
+// subsurface: the fake subsurface scattering of the stylized water shader (section 8): light seen through
 // the wave crests when the sun is behind them, a power of V.(-H) with H the light
 // direction distorted by the normal, scaled by the wave height.
 #include <cmath>
@@ -14,12 +14,12 @@ NodeSpec subsurfaceNode() {
   NodeSpec s;
   s.type = "subsurface";
   s.family = "scattering";
-  s.summary = "Seed 003's subsurface glow: light through the wave crests when the sun is behind them.";
+  s.summary = "The stylized water shader's subsurface glow: light through the wave crests when the sun is behind them.";
   s.formula =
       "H = normalize(L + N * distortion); I = clamp(V.(-H), 0, 1)^power (safe pow) * clamp(height * 2 + 0.5, 0, "
       "1); intensity = I * strength; color = sss_color * intensity. N, V, L normalised safely.";
-  s.seed = "003 (section 8: H = normalize(lightDir + worldNormal * _SSSDistortion), pow(saturate(dot(viewDir, -H)), "
-           "_SSSPower), waveHeightFactor = saturate(waveHeight * 2 + 0.5))";
+  s.source = "stylized water shader (section 8: H = normalize(lightDir + worldNormal * _SSSDistortion), pow(saturate(dot(viewDir, -H)), "
+             "_SSSPower), waveHeightFactor = saturate(waveHeight * 2 + 0.5))";
   s.cost = "4 safe normalisations, exp2 + log2: ~30 ALU";
   s.inputs = {
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "surface normal (normalised here)"),
@@ -27,9 +27,9 @@ NodeSpec subsurfaceNode() {
       ports::fixed("light", Type::Vec3, Value::vector({1, 1, -0.5}),
                    "direction from the surface towards the light (normalised here)"),
       ports::fixed("height", Type::Float, Value::scalar(0),
-                   "wave height above the rest level (seed 003: displaced y - original y)"),
+                   "wave height above the rest level (the stylized water shader: displaced y - original y)"),
       ports::fixed("distortion", Type::Float, Value::scalar(0.3),
-                   "how far the normal bends the light direction (_SSSDistortion; the seed gives no number)"),
+                   "how far the normal bends the light direction (_SSSDistortion; the source gives no number)"),
       ports::fixed("power", Type::Float, Value::scalar(4), "exponent of the glow (_SSSPower)"),
       ports::fixed("strength", Type::Float, Value::scalar(1), "scale (_SSSStrength)"),
       ports::fixed("color", Type::Vec3, Value::vector({0.0, 0.6, 0.5}), "the glow's colour (_SSSColor, greenish)"),

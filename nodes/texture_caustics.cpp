@@ -1,4 +1,4 @@
-// texture_caustics: seed 001's caustics, two samples of a height texture scrolling in
+// texture_caustics: the deferred water article's caustics, two samples of a height texture scrolling in
 // opposite directions, c = clamp(1 - |a + b - 1|, 0, 1)^9.
 #include <cmath>
 
@@ -21,22 +21,22 @@ NodeSpec textureCausticsNode() {
   NodeSpec s;
   s.type = "texture_caustics";
   s.family = "caustics";
-  s.summary = "Caustics from two oppositely scrolling samples of a height texture (seed 001).";
+  s.summary = "Caustics from two oppositely scrolling samples of a height texture (the deferred water article).";
   s.formula =
       "uv = (scale x + 0.5, 0.5 - scale z) of the world point; m = mod(time * velocity, 1); "
       "a = tex(uv + m).r, b = tex(1.5 uv - m).r; caustics = intensity * clamp(1 - |a + b - 1|, 0, 1)^9.";
-  s.seed = "001 (listing 14: WaterHeightTexture sampled at uv + move and 1.5 uv - move, 1 - |a + b - 1|, ^9)";
+  s.source = "deferred water article (listing 14: WaterHeightTexture sampled at uv + move and 1.5 uv - move, 1 - |a + b - 1|, ^9)";
   s.cost = "2 texture samples + ~12 ALU";
   OptionSpec tex = ports::texture("texture", "builtin:height", "the height texture sampled (red channel): builtin:height or a .png path relative to the graph");
   s.options = {tex};
   s.inputs = {
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition,
                          "world point the caustics fall on (x and z are used; default: the surface position)"),
-      ports::fixed("scale", Type::Float, Value::scalar(0.1), "texture repeats per metre (seed 001's CausticsValues.x)"),
+      ports::fixed("scale", Type::Float, Value::scalar(0.1), "texture repeats per metre (the deferred water article's CausticsValues.x)"),
       ports::fixed("velocity", Type::Vec2, Value::vector({0.02, 0.01}),
-                   "scroll speed in texture units per second (seed 001's CausticsValues.w times the wind direction)"),
+                   "scroll speed in texture units per second (the deferred water article's CausticsValues.w times the wind direction)"),
       ports::fromBuiltin("time", Type::Float, Builtin::Time, "seconds (default: the scene time)"),
-      ports::fixed("intensity", Type::Float, Value::scalar(1.0), "brightness (seed 001's CausticsValues.y)"),
+      ports::fixed("intensity", Type::Float, Value::scalar(1.0), "brightness (the deferred water article's CausticsValues.y)"),
   };
   s.outputs = {ports::fixed("caustics", Type::Float, "caustic intensity, in [0, intensity]")};
   s.isSource = true;  // samples a texture

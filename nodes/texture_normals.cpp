@@ -1,6 +1,6 @@
 // texture_normals.cpp — the texture-driven surface nodes of the waves family:
-// normal_map_scroll (two scrolling normal-map layers, seeds 002/003), normal_from_height
-// (central differences of a height texture, seed 001) and dudv_distortion (seed 000).
+// normal_map_scroll (two scrolling normal-map layers, the advanced shaders tutorial and the stylized water shader), normal_from_height
+// (central differences of a height texture, the deferred water article) and dudv_distortion (the classic WebGL water renderer).
 #include <algorithm>
 #include <cmath>
 
@@ -51,12 +51,12 @@ NodeSpec normalMapScrollNode() {
   s.summary = "Two scrolling samples of a normal map, blended (add, whiteout or RNM) and taken to world space.";
   s.formula =
       "uv_i = uv * scale_i + fract(speed_i * time); n_i = tex(uv_i).xyz * 2 - 1; add: n = normalize(n_a + n_b) "
-      "(seeds 002, 003); whiteout: normalize(n_a.xy + n_b.xy, n_a.z n_b.z); rnm (reoriented normal mapping): t = n_a + "
+      "(the advanced shaders tutorial, the stylized water shader); whiteout: normalize(n_a.xy + n_b.xy, n_a.z n_b.z); rnm (reoriented normal mapping): t = n_a + "
       "(0,0,1), u = n_b (-1,-1,1), n = normalize(t dot(t, u) / t.z - u). n.xy *= strength; "
       "normal = normalize(T n.x + B n.y + N n.z) (up if degenerate).";
-  s.seed =
-      "002 (approach 2: uv * 4 + t (0.05, 0.03), uv * 8 + t (-0.03, 0.07), normalize(n1 + n2)), "
-      "003 (two layers, normalBlend.xy *= strength; mentions RNM)";
+  s.source =
+      "advanced shaders tutorial (approach 2: uv * 4 + t (0.05, 0.03), uv * 8 + t (-0.03, 0.07), normalize(n1 + n2)), "
+      "stylized water shader (two layers, normalBlend.xy *= strength; mentions RNM)";
   s.cost = "two texture fetches; add ~8 ALU, whiteout ~9 ALU, rnm ~14 ALU; world transform ~10 ALU";
   s.inputs = {
       ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "texture coordinate of the surface"),
@@ -73,7 +73,7 @@ NodeSpec normalMapScrollNode() {
   s.options = {
       ports::texture("texture", "builtin:water_normal", "the tangent-space normal map (rgb = n * 0.5 + 0.5)"),
       ports::choice("blend", {"add", "whiteout", "rnm"}, "add",
-                    "how the layers combine: the seeds' normalize(a + b), whiteout, or reoriented normal mapping"),
+                    "how the layers combine: the sources' normalize(a + b), whiteout, or reoriented normal mapping"),
   };
   s.isSource = true;
   // wg_waves_tangent_to_world: unit, or the up vector when degenerate.
@@ -167,7 +167,7 @@ NodeSpec normalFromHeightNode() {
       "(red channel, bilinear as GL_LINEAR + GL_REPEAT, computed from four texelFetch in float); "
       "n_ts = (-strength g.x, -strength g.y, 1); normal = normalize(T n_ts.x + B n_ts.y + N n_ts.z) (up if "
       "degenerate).";
-  s.seed = "001 (wave normals from four height-texture samples, Height1 - Height2 and Height3 - Height4)";
+  s.source = "deferred water article (wave normals from four height-texture samples, Height1 - Height2 and Height3 - Height4)";
   s.cost = "sixteen texelFetch (twenty with the height output), ~60 ALU: filtering in float keeps the gradient exact";
   s.inputs = {
       ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "texture coordinate"),
@@ -234,20 +234,20 @@ NodeSpec dudvDistortionNode() {
   NodeSpec s;
   s.type = "dudv_distortion";
   s.family = "waves";
-  s.summary = "Seed 000's du/dv map distortion: a scrolling offset for the refraction and reflection lookups.";
+  s.summary = "The classic WebGL water renderer's du/dv map distortion: a scrolling offset for the refraction and reflection lookups.";
   s.formula =
       "move = fract(time * wave_speed); offset = (dudv(uv * tiling + (move, 0)).rg * 2 - 1) * strength; "
       "uv_out = target_uv + offset.";
-  s.seed = "000 (dudvOffset = time / 1000 * waveSpeed with time in ms, (dudv * 2 - 1) * 0.03, tiling 4)";
+  s.source = "classic WebGL water renderer (dudvOffset = time / 1000 * waveSpeed with time in ms, (dudv * 2 - 1) * 0.03, tiling 4)";
   s.cost = "one texture fetch, ~6 ALU";
   s.inputs = {
       ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "the surface's texture coordinate"),
       ports::fromBuiltin("time", Type::Float, Builtin::Time, "seconds"),
       ports::fromBuiltin("target_uv", Type::Vec2, Builtin::ScreenUv,
                          "the coordinate to distort (the screen position of the refraction/reflection lookup)"),
-      ports::fixed("tiling", Type::Float, Value::scalar(4.0), "repeats of the du/dv map per uv unit (seed: 4)"),
+      ports::fixed("tiling", Type::Float, Value::scalar(4.0), "repeats of the du/dv map per uv unit (source: 4)"),
       ports::fixed("wave_speed", Type::Float, Value::scalar(0.03), "scroll speed, texture units per second"),
-      ports::fixed("strength", Type::Float, Value::scalar(0.03), "distortion strength (seed: 0.03)"),
+      ports::fixed("strength", Type::Float, Value::scalar(0.03), "distortion strength (source: 0.03)"),
   };
   s.outputs = {ports::fixed("offset", Type::Vec2, "the distortion, within [-strength, strength]"),
                ports::fixed("uv", Type::Vec2, "target_uv + offset"),

@@ -1,4 +1,4 @@
-// trochoid_wave: seed 001's 3D wave. The water is drawn as a flat surface; per pixel, a
+// trochoid_wave: the deferred water article's 3D wave. The water is drawn as a flat surface; per pixel, a
 // bisection along the view ray finds where the ray meets the displaced surface
 // h(x, z) = A (sin(phi - 0.5 cos phi) + detail (2 tex(uv) - 1)), a trochoid-like profile
 // (sharp crests, flat troughs) plus a height-texture detail.
@@ -34,19 +34,19 @@ NodeSpec trochoidWaveNode() {
   NodeSpec s;
   s.type = "trochoid_wave";
   s.family = "waves";
-  s.summary = "Seed 001's trochoid-like wave found along the view ray by bisection: hit point, height and normal.";
+  s.summary = "The deferred water article's trochoid-like wave found along the view ray by bisection: hit point, height and normal.";
   s.formula =
       "h(x, z) = A (sin(phi - 0.5 cos phi) + detail (2 T(s x + 0.5, 0.5 - s z).r - 1)), "
       "phi = mod(K.(x, z) + mod(omega t, 2 pi), 2 pi). Ray: origin O, direction R = -normalize(view); P0 = O + t0 R "
       "with t0 = clamp((surface_height - O.y) / R.y, 0, max_distance) (|R.y| floored at 1e-6). "
       "M = A (1 + |detail|); step = +-M / max(|R.y|, 0.1) (+ when O is above the surface); P = P0; repeat `steps` "
-      "times: step /= 2; P -= step R if P.y - surface_height < h(P.xz), else P += step R. Seed 001 searches only the "
+      "times: step /= 2; P -= step R if P.y - surface_height < h(P.xz), else P += step R. The deferred water article searches only the "
       "10 M before P0 and misses troughs below the plane; the search here is centred on P0. Rays flatter than "
-      "|R.y| = 0.1 search 10 M each side of P0 (seed 001's range) and can stop short of a deep trough. "
+      "|R.y| = 0.1 search 10 M each side of P0 (the deferred water article's range) and can stop short of a deep trough. "
       "Outputs P, h(P.xz) and normalize(-dh/dx, 1, -dh/dz) with dh = A (cos(phi - 0.5 cos phi)(1 + 0.5 sin phi) K "
       "+ detail * 2 * dT) where dT is the texture's central difference `normal_offset` apart.";
-  s.seed =
-      "001 (listing 6: 10-step bisection, sin(phase - 0.5 cos(phase)), height-texture detail with texture "
+  s.source =
+      "deferred water article (listing 6: 10-step bisection, sin(phase - 0.5 cos(phase)), height-texture detail with texture "
       "coordinate (s x + 0.5, 0.5 - s z), search range up to 10 x the maximum wave amplitude)";
   s.cost =
       "per step: one texture fetch, sin, cos, ~15 ALU (steps = 10 by default: 10 fetches); the height at the hit "
@@ -57,13 +57,13 @@ NodeSpec trochoidWaveNode() {
       ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection,
                          "unit vector from the surface to the viewer; the ray runs along -view"),
       ports::fixed("surface_height", Type::Float, Value::scalar(0.0), "height y of the flat water surface"),
-      ports::fixed("amplitude", Type::Float, Value::scalar(0.5), "wave amplitude A in metres (seed: NegWindVector.y)"),
+      ports::fixed("amplitude", Type::Float, Value::scalar(0.5), "wave amplitude A in metres (source: NegWindVector.y)"),
       ports::fixed("wave_vector", Type::Vec2, Value::vector({0.3, 0.2}),
-                   "K: wave number times direction over (x, z), rad/m (seed: NegWindVector.xz)"),
+                   "K: wave number times direction over (x, z), rad/m (source: NegWindVector.xz)"),
       ports::fixed("detail", Type::Float, Value::scalar(0.3),
-                   "height-texture detail relative to A (seed: WaveFrontValues.x)"),
+                   "height-texture detail relative to A (source: WaveFrontValues.x)"),
       ports::fixed("texture_scale", Type::Float, Value::scalar(0.01),
-                   "texture repeats per metre s (seed: WaveValues.x)"),
+                   "texture repeats per metre s (source: WaveValues.x)"),
       ports::fixed("normal_offset", Type::Float, Value::scalar(1.0 / 256.0),
                    "texture-space distance of the detail's central differences (floored at 1e-6)"),
       ports::fixed("max_distance", Type::Float, Value::scalar(1e4),
@@ -74,7 +74,7 @@ NodeSpec trochoidWaveNode() {
                ports::fixed("normal", Type::Vec3, "unit normal of the wave surface at the hit point")};
   s.options = {
       ports::integer("steps", 10, 1, 32, "bisection steps (quality level): each halves the position error"),
-      ports::number("omega", 1.0, 0.0, 100.0, "angular speed of the phase in rad/s (seed 001 adds the time itself: 1)"),
+      ports::number("omega", 1.0, 0.0, 100.0, "angular speed of the phase in rad/s (the deferred water article adds the time itself: 1)"),
       ports::texture("texture", "builtin:height", "the height texture (red channel) of the detail"),
   };
   s.isSource = true;

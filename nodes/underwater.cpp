@@ -1,4 +1,4 @@
-// underwater: seed 001's deferred water in one node. Its fragment shader runs as a
+// underwater: the deferred water article's deferred water in one node. Its fragment shader runs as a
 // full-screen pass (the runtime's deferred_water pass: see docs/architecture.md, "Deferred
 // water"): per pixel it reads the water G-buffer (the surface's position and depth), the
 // scene's depth and colour, and picks one of the five camera/pixel cases. The rest of the
@@ -19,7 +19,7 @@ NodeSpec underwaterNode() {
   NodeSpec s;
   s.type = "underwater";
   s.family = "screen space";
-  s.summary = "Seed 001's deferred water: one full-screen pass shading the five camera/pixel cases (camera above or "
+  s.summary = "The deferred water article's deferred water: one full-screen pass shading the five camera/pixel cases (camera above or "
               "below the surface, pixel above, under water near, or far).";
   s.formula =
       "Per pixel: W = water G-buffer (surface point, covered where its depth < 1), S = scene point from the scene "
@@ -35,10 +35,10 @@ NodeSpec underwaterNode() {
       "(transmittance_below scene_color(clamp(uv + refraction_strength N.xz)) + surface_below) + (1 - T) "
       "water_color diffuse). The reference reads the G-buffer as (world_position, frag_depth) of the environment "
       "and every scene look-up as the environment's scene colour.";
-  s.seed = "001 (deferred water rendering: listings 5 and 10-18, the five cases, diffuseIntensityWater 0.35, "
-           "absorption over the in-water view distance, depth-dependent light, distortion by (1 - T.b) N.xz, "
-           "caustics times the brightest channel, haze by the surface distance); 000 (deep colour (0, 0.1, 0.2), "
-           "distortion 0.03); Beer-Lambert coefficients of pure water from Pope & Fry 1997";
+  s.source = "deferred water article (deferred water rendering: listings 5 and 10-18, the five cases, diffuseIntensityWater 0.35, "
+             "absorption over the in-water view distance, depth-dependent light, distortion by (1 - T.b) N.xz, "
+             "caustics times the brightest channel, haze by the surface distance); classic WebGL water renderer (deep colour (0, 0.1, 0.2), "
+             "distortion 0.03); Beer-Lambert coefficients of pure water from Pope & Fry 1997";
   s.cost = "full-screen: 3 fetches (G-buffer, scene depth, scene colour) + ~60 ALU per pixel, +1 fetch in cases 3 "
            "and 4; runs depth_prepass, scene_color_copy and deferred_water (a draw of the water grid into a "
            "2 x RGBA32F + depth G-buffer, 36 bytes/pixel). camera: above or below emits only that half of the cases "
@@ -57,18 +57,18 @@ NodeSpec underwaterNode() {
       ports::fixed("transmittance_below", Type::Float, Value::scalar(1.0),
                    "fraction of the light above passing down into the water (Snell's window: fresnel with direction "
                    "water_to_air, transmittance)"),
-      ports::fixed("water_color", Type::Vec3, Value::vector({0.0, 0.1, 0.2}), "the water's own colour (seed 000's deep colour)"),
-      ports::fixed("diffuse", Type::Float, Value::scalar(0.35), "its brightness (seed 001's diffuseIntensityWater 0.35)"),
+      ports::fixed("water_color", Type::Vec3, Value::vector({0.0, 0.1, 0.2}), "the water's own colour (the classic WebGL water renderer's deep colour)"),
+      ports::fixed("diffuse", Type::Float, Value::scalar(0.35), "its brightness (the deferred water article's diffuseIntensityWater 0.35)"),
       ports::fixed("sigma", Type::Vec3, Value::vector({0.340, 0.0565, 0.00922}),
                    "absorption coefficients in 1/m (R, G, B; pure water, Pope & Fry 1997)"),
       ports::fixed("refraction_strength", Type::Float, Value::scalar(0.03),
-                   "screen-space distortion per unit of N.xz (seed 000: 0.03)"),
+                   "screen-space distortion per unit of N.xz (the classic WebGL water renderer: 0.03)"),
       ports::fixed("caustics", Type::Float, Value::scalar(0.0),
                    "caustic intensity on the scene point (e.g. texture_caustics at scene_depth.position)"),
       ports::fixed("caustics_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the caustic light"),
       ports::fixed("haze_distance", Type::Float, Value::scalar(120.0),
                    "distance of the water surface at which haze is complete; also the farthest scene point shaded "
-                   "as case 4 (seed 001: 2000 units)"),
+                   "as case 4 (the deferred water article: 2000 units)"),
       ports::fixed("haze_color", Type::Vec3, Value::vector({0.70, 0.80, 0.90}), "the background haze blends to"),
       ports::fixed("water_level", Type::Float, Value::scalar(0.0),
                    "height of the still water plane: the camera is under water below it"),
@@ -76,7 +76,7 @@ NodeSpec underwaterNode() {
                    "camera depth in metres down to which the light is full; deeper it falls as depth_light / depth"),
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "the pixel's final colour"),
-               ports::fixed("case", Type::Float, "which of seed 001's cases shaded it: 1 to 5")};
+               ports::fixed("case", Type::Float, "which of the deferred water article's cases shaded it: 1 to 5")};
   s.options = {ports::choice("camera", {"auto", "above", "below"}, "auto",
                              "where the scene's camera can be: auto decides per frame (camera.y < water_level); above "
                              "or below emit only cases 1, 4, 5 or 2, 3 (a scene whose camera stays above water "

@@ -1,5 +1,5 @@
 // vertex_output: the surface the vertex stage hands on — a position plus a displacement,
-// and a normal — with distance-based tessellation of the mesh as an option (seed 003).
+// and a normal — with distance-based tessellation of the mesh as an option (the stylized water shader).
 // Its outputs feed the graph's `outputs.vertex` slots; with tessellation, the vertex-stage
 // nodes run per tessellated vertex (GLSL 330 through ARB_tessellation_shader, Vulkan
 // 450); GLSL ES 3.00 has no tessellation stages, so es300 draws the mesh as it is.
@@ -18,7 +18,7 @@ NodeSpec vertexOutputNode() {
       "position = position + displacement; normal = safe_normalize(normal). Tessellation (distance): per vertex "
       "f = clamp(1 - (d - min_distance) / (max_distance - min_distance), 0.01, 1) * factor, floored at 1; an "
       "edge takes the mean of its two vertices, the inside the mean of all three.";
-  s.seed = "003 (tessellation: distance-based factor, triangle patches)";
+  s.source = "stylized water shader (tessellation: distance-based factor, triangle patches)";
   s.cost = "free without tessellation; with it, the vertex-stage nodes run once per generated vertex (up to "
            "factor^2 times as many), plus a control stage per patch";
   s.stages = kVertexStage;

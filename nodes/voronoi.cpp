@@ -1,5 +1,5 @@
 // voronoi: cellular noise with one PCG-hashed feature point per cell: F1, F2 and the
-// nearest cell, static or with points orbiting their cell centres over time (seed 003's
+// nearest cell, static or with points orbiting their cell centres over time (the stylized water shader's
 // animated Voronoi, made exact at any time by a double-precision phase).
 #include <cmath>
 
@@ -52,7 +52,7 @@ NodeSpec voronoiNode() {
       "static: w = h - 0.5; animated: w = 0.5 (sin(phase + 2 pi h.x), cos(phase + 2 pi h.y)), phase = mod(speed t, 2 pi). "
       "F1 = min |point - q|, F2 = the second smallest, over the 3x3 cells around q (or the 2x2 block on q's side). "
       "cell = the integer cell of the nearest point. F1 is not bounded by 1 (up to ~1.4, more with 2x2).";
-  s.seed = "003 (section 6: the animated Voronoi behind the caustics; fract(sin) hash replaced by PCG)";
+  s.source = "stylized water shader (section 6: the animated Voronoi behind the caustics; fract(sin) hash replaced by PCG)";
   s.cost = "3x3: 9 hashes + 9 distances (~250 ALU), +18 sin/cos when animated; 2x2: 4 hashes (~110 ALU), +8 sin/cos";
   s.inputs = {ports::fromBuiltin("p", Type::Vec2, Builtin::Uv, "2D coordinate (default: the mesh uv)"),
               ports::fixed("scale", Type::Float, Value::scalar(1.0), "cells per unit of p"),

@@ -1,4 +1,4 @@
-// voronoi_caustics: seed 003's caustics, two animated Voronoi layers at different scales
+// voronoi_caustics: the stylized water shader's caustics, two animated Voronoi layers at different scales
 // and speeds, each (1 - F1)^3 with F1 clamped to [0, 1], averaged (or min / product).
 #include <algorithm>
 
@@ -12,7 +12,7 @@
 namespace wg::nodes {
 namespace {
 
-// Seed 003: the second layer samples p * 1.3 + 5 and runs at 1.2 times the speed.
+// The stylized water shader: the second layer samples p * 1.3 + 5 and runs at 1.2 times the speed.
 constexpr double kLayer2Scale = 1.3, kLayer2Offset = 5.0, kLayer2Speed = 1.2;
 
 double layerReference(double x, double y, double jitter, double phase, bool animated, bool full) {
@@ -31,13 +31,13 @@ NodeSpec voronoiCausticsNode() {
   NodeSpec s;
   s.type = "voronoi_caustics";
   s.family = "caustics";
-  s.summary = "Animated caustic light pattern from one or two Voronoi layers (seed 003).";
+  s.summary = "Animated caustic light pattern from one or two Voronoi layers (the stylized water shader).";
   s.formula =
       "q = p * scale; c1 = (1 - clamp(F1(q, phase), 0, 1))^3, c2 = (1 - clamp(F1(1.3 q + 5, phase2), 0, 1))^3 with "
       "phase = mod(speed t, 2 pi), phase2 = mod(1.2 speed t, 2 pi) (F1 from the voronoi node: jitter, search). "
-      "combine: average (c1 + c2) / 2 (seed 003), min(c1, c2), or multiply c1 c2; layers = 1 gives c1. "
+      "combine: average (c1 + c2) / 2 (the stylized water shader), min(c1, c2), or multiply c1 c2; layers = 1 gives c1. "
       "caustics = intensity * combined. F1 can exceed 1, hence the clamp before 1 - F1.";
-  s.seed = "003 (section 6: voronoi(uv, t) and voronoi(uv * 1.3 + 5, 1.2 t), pow(1 - d, 3), averaged)";
+  s.source = "stylized water shader (section 6: voronoi(uv, t) and voronoi(uv * 1.3 + 5, 1.2 t), pow(1 - d, 3), averaged)";
   s.cost = "per layer one voronoi (3x3: 9 hashes ~250 ALU + 18 sin/cos animated; 2x2: 4 hashes ~110 ALU + 8 sin/cos); "
            "layers 2 doubles it";
   s.inputs = {ports::fromBuiltin("p", Type::Vec2, Builtin::Uv, "2D coordinate (default: the mesh uv), e.g. world xz"),
@@ -47,9 +47,9 @@ NodeSpec voronoiCausticsNode() {
               ports::fixed("intensity", Type::Float, Value::scalar(1.0), "brightness multiplier")};
   s.outputs = {ports::fixed("caustics", Type::Float, "caustic intensity, in [0, intensity]")};
   s.options = voronoiOptions(1.0);
-  s.options.push_back(ports::choice("layers", {"2", "1"}, "2", "quality: two layers (seed 003) or one (half the cost)"));
+  s.options.push_back(ports::choice("layers", {"2", "1"}, "2", "quality: two layers (the stylized water shader) or one (half the cost)"));
   s.options.push_back(ports::choice("combine", {"average", "min", "multiply"}, "average",
-                                    "how two layers combine: average (seed 003), min (thinner lines), multiply (sparser)"));
+                                    "how two layers combine: average (the stylized water shader), min (thinner lines), multiply (sparser)"));
   s.isSource = true;  // reads the time phase
   s.emit = [](EmitContext& ctx) {
     bool full = ctx.option("search").get<std::string>() == "3x3";

@@ -1,6 +1,6 @@
-// Depth: linearize_depth (depth-buffer value -> linear view depth, seed 002 part 9) and
+// Depth: linearize_depth (depth-buffer value -> linear view depth, the advanced shaders tutorial part 9) and
 // water_depth (the water's thickness: scene depth behind the surface minus the surface's
-// own depth, seeds 000 and 002), both finite for the sky (depth 1) and an infinite far
+// own depth, the classic WebGL water renderer and the advanced shaders tutorial), both finite for the sky (depth 1) and an infinite far
 // plane.
 #include <cmath>
 
@@ -19,11 +19,11 @@ NodeSpec linearizeDepthNode() {
   s.summary = "Depth-buffer value to linear view depth for a perspective projection (finite for the sky and an "
               "infinite far plane).";
   s.formula =
-      "Seed 002: z = 2d - 1, linear = 2 n f / (f + n - z (f - n)), evaluated in the algebraically identical form "
+      "The advanced shaders tutorial: z = 2d - 1, linear = 2 n f / (f + n - z (f - n)), evaluated in the algebraically identical form "
       "n / ((1 - d) + d n / f): d = 0 gives n, d = 1 gives f, f = inf gives the infinite-far-plane limit n / (1 - d). "
       "Guards: d clamped to [0, 1], n floored at 1e-6, f at n, the denominator at n * 1e-30; the result never "
       "exceeds 1e30 (the sky with f = inf or 1e38 gives 1e30).";
-  s.seed = "002 (linearizeDepth, part 9: depth-based effects); 000 (near 0.1, far 50)";
+  s.source = "advanced shaders tutorial (linearizeDepth, part 9: depth-based effects); classic WebGL water renderer (near 0.1, far 50)";
   s.cost = "~8 ALU, one division";
   s.inputs = {
       ports::fixed("depth", Type::Float, "depth-buffer value in [0, 1] (e.g. gl_FragCoord.z or the scene depth)"),
@@ -69,8 +69,8 @@ NodeSpec waterDepthNode() {
       "vertical: thickness = that distance * |V.y|, the vertical drop along the straight ray: the depth of the "
       "water column below the surface point if the bottom is flat over the ray's footprint (an approximation that "
       "ignores refraction and a sloping bottom). Thickness <= 1e30, so the sky stays finite.";
-  s.seed = "000 (water depth = floor distance - surface distance, near 0.1, far 50); 002 (depth = sceneDepth - "
-           "waterDepth)";
+  s.source = "classic WebGL water renderer (water depth = floor distance - surface distance, near 0.1, far 50); advanced shaders tutorial (depth = sceneDepth - "
+             "waterDepth)";
   s.cost = "one depth-texture fetch (needs the scene_depth pass), two linearisations, ~30 ALU";
   s.inputs = {
       ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv, "where to read the scene depth (default: this "
