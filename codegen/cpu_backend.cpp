@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "core/node_options.h"
 #include "core/port_typing.h"
 #include "nodes/texture_source.h"
 
@@ -17,7 +18,10 @@ class OpEvalContext final : public EvalContext {
   const Value& input(int port) const override { return inputs_.at(static_cast<size_t>(port)); }
   Type inputType(int port) const override { return op_.inputTypes.at(static_cast<size_t>(port)); }
   Type outputType(int port) const override { return op_.outputTypes.at(static_cast<size_t>(port)); }
-  const nlohmann::json& option(std::string_view name) const override { return op_.options.at(std::string(name)); }
+  const ParsedOptions& parsedOptions() const override {
+    if (!op_.parsedOptions) throw std::logic_error("op of '" + op_.spec->type + "' has no parsed options");
+    return *op_.parsedOptions;
+  }
   void output(int port, Value v) override { outputs_.at(static_cast<size_t>(port)) = v; }
   const EvalEnvironment& environment() const override { return env_; }
   const NodeSpec& spec() const override { return *op_.spec; }
@@ -35,6 +39,15 @@ class OpEvalContext final : public EvalContext {
   const std::string& graphDir_;
   std::vector<Value> outputs_;
 };
+
+// "; it has: a, b, c" for a refusal, so the fix is in the message.
+template <class Named>
+std::string namesOf(const std::vector<Named>& list) {
+  if (list.empty()) return "; it has none";
+  std::string s = "; it has: ";
+  for (size_t i = 0; i < list.size(); ++i) s += (i ? ", " : "") + list[i].name;
+  return s;
+}
 
 }  // namespace
 
@@ -56,12 +69,22 @@ std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, co
 std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& options,
                                 const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env,
                                 TextureCache* textures, const std::string& graphDir) {
+  // A name the node does not have would otherwise leave its default in place: a misspelt
+  // hard case would test the default and pass.
+  if (!options.is_object() && !options.is_null()) throw std::invalid_argument(spec.type + ": options must be an object");
+  for (auto it = options.begin(); it != options.end(); ++it) {
+    int oi = spec.optionIndex(it.key());
+    if (oi < 0) throw std::invalid_argument(spec.type + ": no option '" + it.key() + "'" + namesOf(spec.options));
+    std::string why = checkOption(spec.options[static_cast<size_t>(oi)], it.value(), graphDir);
+    if (!why.empty()) throw std::invalid_argument(spec.type + ": option '" + it.key() + "' " + why);
+  }
+  for (const auto& [name, value] : inputs)
+    if (spec.inputIndex(name) < 0) throw std::invalid_argument(spec.type + ": no input '" + name + "'" + namesOf(spec.inputs));
   Op op;
   op.spec = &spec;
   op.nodeId = spec.type;
-  op.options = nlohmann::json::object();
-  for (const auto& o : spec.options) op.options[o.name] = o.defaultValue;
-  for (auto it = options.begin(); it != options.end(); ++it) op.options[it.key()] = it.value();
+  op.options = completeOptions(spec, options);
+  op.parsedOptions = parseOptions(spec, op.options);
   std::vector<Value> values;
   std::vector<Type> sourceTypes;
   for (const auto& p : spec.inputs) {
@@ -74,7 +97,7 @@ std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& opti
     else throw std::invalid_argument(spec.type + ": required input '" + p.name + "' is not given");
     sourceTypes.push_back(values.back().type);
   }
-  PortTyping t = typePorts(spec, op.options, sourceTypes, [](int) { return std::string("the value given"); });
+  PortTyping t = typePorts(spec, *op.parsedOptions, sourceTypes, [](int) { return std::string("the value given"); });
   if (!t.error.empty()) throw std::invalid_argument(spec.type + ": " + t.error);
   op.inputTypes = std::move(t.inputTypes);
   op.outputTypes = std::move(t.outputTypes);

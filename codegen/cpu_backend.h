@@ -20,7 +20,8 @@ std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, co
 // Evaluates one node on its own, set up as resolve would: options completed with their
 // defaults, inputs not given taken from their defaults or `env`'s builtins, port types by
 // the node's rules (core/port_typing.h). Throws std::invalid_argument when an input is
-// missing or the types do not fit. For tests, hard cases and probes of a single node.
+// missing, an input or option name is not the node's, an option value is invalid, or the
+// types do not fit. For tests, hard cases and probes of a single node.
 std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& options,
                                 const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env,
                                 TextureCache* textures = nullptr, const std::string& graphDir = {});

@@ -110,7 +110,7 @@ class OpEmitContext final : public EmitContext {
   std::string input(int port) override;
   Type inputType(int port) const override;
   Type outputType(int port) const override;
-  const nlohmann::json& option(std::string_view name) const override;
+  const ParsedOptions& parsedOptions() const override;
   void output(int port, std::string expression) override;
   std::string builtin(Builtin b) override;
   std::string temporary(Type type, std::string expression) override;
@@ -170,7 +170,7 @@ class Emitter {
     std::optional<TessellationSettings> tess;
     if (t != Target::Es300 && allowTessellation)
       for (const auto& op : p.ops)
-        if ((op.stage & kVertexStage) && op.spec->tessellation && !tess) tess = op.spec->tessellation(op.options);
+        if ((op.stage & kVertexStage) && op.spec->tessellation && !tess) tess = op.spec->tessellation(*op.parsedOptions);
     return tess;
   }
 
@@ -817,14 +817,16 @@ Type OpEmitContext::inputType(int port) const {
 Type OpEmitContext::outputType(int port) const {
   return e_.program().ops[static_cast<size_t>(opIndex_)].outputTypes.at(static_cast<size_t>(port));
 }
-const nlohmann::json& OpEmitContext::option(std::string_view name) const {
-  return e_.program().ops[static_cast<size_t>(opIndex_)].options.at(name);  // no key string made
+const ParsedOptions& OpEmitContext::parsedOptions() const {
+  const Op& op = e_.program().ops[static_cast<size_t>(opIndex_)];
+  if (!op.parsedOptions) throw std::logic_error("op '" + op.nodeId + "' has no parsed options");
+  return *op.parsedOptions;
 }
 void OpEmitContext::output(int port, std::string expression) { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
 std::string OpEmitContext::builtin(Builtin b) { return e_.builtinExpr(w_, b); }
 std::string OpEmitContext::timePhase(double omega) { return e_.phaseUniform(w_, omega); }
 std::string OpEmitContext::texture(std::string_view option) {
-  const nlohmann::json& v = this->option(option);
+  const nlohmann::json& v = e_.program().ops[static_cast<size_t>(opIndex_)].options.at(option);
   if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
   return e_.nodeTexture(w_, v.get<std::string>());
 }

@@ -57,7 +57,7 @@ ValueFacts::ValueFacts(const Program& program) : program_(&program) {
     std::vector<ValueFact> in;
     for (size_t p = 0; p < op.inputs.size(); ++p)
       in.push_back(op.inputs[p].kind == ValueRef::Kind::None ? ValueFact{} : of(op.inputs[p], op.inputTypes[p]));
-    std::vector<ValueFact> out = op.spec->facts(in, op.options);
+    std::vector<ValueFact> out = op.spec->facts(in, *op.parsedOptions);
     for (size_t p = 0; p < out.size() && p < ops_[i].size(); ++p) ops_[i][p] = out[p];
   }
 }

@@ -12,6 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/node_options.h"
 #include "core/types.h"
 #include "core/value.h"
 
@@ -108,7 +109,7 @@ struct NodeSpec;
 // and the node's options; it sets output types and any Custom input types.
 struct InferContext {
   const NodeSpec& spec;
-  const nlohmann::json& options;  // complete, defaults filled in
+  const ParsedOptions& options;   // the node's options struct: options.as<T>()
   std::vector<Type> inputTypes;   // per input port: the type connected or defaulted
   std::vector<Type> outputTypes;  // to fill
   std::string error;              // set to refuse: "input 'x' must be a vector"
@@ -124,7 +125,10 @@ class EmitContext {
   virtual std::string input(int port) = 0;
   virtual Type inputType(int port) const = 0;
   virtual Type outputType(int port) const = 0;
-  virtual const nlohmann::json& option(std::string_view name) const = 0;
+  // The op's options, parsed once into the node's struct (core/node_options.h).
+  virtual const ParsedOptions& parsedOptions() const = 0;
+  template <class T>
+  const T& options() const { return parsedOptions().as<T>(); }
   virtual void output(int port, std::string expression) = 0;
   virtual std::string builtin(Builtin b) = 0;
   // Declares a local `type name = expression;` and returns its generated name.
@@ -188,7 +192,10 @@ class EvalContext {
   virtual const Value& input(int port) const = 0;
   virtual Type inputType(int port) const = 0;
   virtual Type outputType(int port) const = 0;
-  virtual const nlohmann::json& option(std::string_view name) const = 0;
+  // The op's options, parsed once into the node's struct (core/node_options.h).
+  virtual const ParsedOptions& parsedOptions() const = 0;
+  template <class T>
+  const T& options() const { return parsedOptions().as<T>(); }
   virtual void output(int port, Value v) = 0;
   virtual const EvalEnvironment& environment() const = 0;
   virtual const NodeSpec& spec() const = 0;
@@ -217,6 +224,8 @@ struct NodeSpec {
   std::vector<PortSpec> inputs;
   std::vector<PortSpec> outputs;
   std::vector<OptionSpec> options;
+  // Reads `options` into the node's struct, once per op (null: the node reads none).
+  OptionParser parseOptions;
   unsigned stages = kAnyStage;
   // Reads builtins, textures or time (ctx.timePhase): never constant-folded.
   bool isSource = false;
@@ -232,10 +241,10 @@ struct NodeSpec {
   // simplify pass uses it only when that input already has the output's type.
   std::function<int(const std::vector<std::optional<Value>>& constants)> identity;
   // A node that shapes the mesh itself may ask for tessellation, given its options.
-  std::function<std::optional<TessellationSettings>(const nlohmann::json& options)> tessellation;
+  std::function<std::optional<TessellationSettings>(const ParsedOptions& options)> tessellation;
   // Facts of the outputs given the facts of the inputs and the options (one per output).
   // Null: nothing known. Must hold for every input the facts admit (value_facts_test).
-  std::function<std::vector<ValueFact>(const std::vector<ValueFact>& inputs, const nlohmann::json& options)> facts;
+  std::function<std::vector<ValueFact>(const std::vector<ValueFact>& inputs, const ParsedOptions& options)> facts;
   std::function<void(EmitContext&)> emit;
   std::function<void(EvalContext&)> eval;
   std::vector<HardCase> hardCases;

@@ -4,7 +4,7 @@
 
 namespace wg {
 
-PortTyping typePorts(const NodeSpec& spec, const nlohmann::json& options, const std::vector<Type>& sourceTypes,
+PortTyping typePorts(const NodeSpec& spec, const ParsedOptions& options, const std::vector<Type>& sourceTypes,
                      const std::function<std::string(int)>& describe) {
   PortTyping r;
   size_t nin = spec.inputs.size();

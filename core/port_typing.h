@@ -22,7 +22,7 @@ struct PortTyping {
 
 // `sourceTypes[i]` is the type input i receives; `describe(i)` names that source in
 // messages ("'n.out'", "its default").
-PortTyping typePorts(const NodeSpec& spec, const nlohmann::json& options, const std::vector<Type>& sourceTypes,
+PortTyping typePorts(const NodeSpec& spec, const ParsedOptions& options, const std::vector<Type>& sourceTypes,
                      const std::function<std::string(int)>& describe);
 
 }  // namespace wg

@@ -2,6 +2,7 @@
 // The typed form of a graph that codegen transforms: operations in topological order,
 // each a node type applied to typed values. resolve builds it; every codegen pass takes
 // one Program and leaves another.
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,6 +38,7 @@ struct Op {
   std::string nodeId;               // the graph node it came from (for messages, manifest)
   SourceRef where;
   nlohmann::json options;           // complete: defaults filled in
+  std::shared_ptr<const ParsedOptions> parsedOptions;  // `options` in the node's struct
   std::vector<ValueRef> inputs;     // one per spec input port
   std::vector<Type> inputTypes;     // the port types (after unification)
   std::vector<Type> outputTypes;

@@ -3,7 +3,49 @@
 #include <set>
 #include <stdexcept>
 
+#include "core/node_options.h"
+
 namespace wg {
+
+// The node's parse function reads its defaults without a mistake (OptionReader checks
+// each name, kind and choice) and reads every option but textures, which emit and eval
+// fetch by name (EmitContext::texture, EvalContext::sampleTexture).
+static void checkOptionsParse(const NodeSpec& s) {
+  auto fail = [&](const std::string& why) { throw std::logic_error("node spec '" + s.type + "': " + why); };
+  bool readsAny = false;
+  for (const auto& o : s.options) readsAny |= o.kind != OptionSpec::Kind::Texture;
+  if (!s.parseOptions) {
+    if (readsAny) fail("options without a parseOptions function");
+    return;
+  }
+  nlohmann::json defaults = completeOptions(s, nlohmann::json::object());
+  OptionReader reader(s, defaults);
+  if (!s.parseOptions(reader)) fail("parseOptions returned nothing");
+  for (const auto& o : s.options)
+    if (o.kind != OptionSpec::Kind::Texture && !reader.namesRead().count(o.name))
+      fail("parseOptions does not read option '" + o.name + "'");
+}
+
+// A hard case names only ports and options the node has, with valid option values: a
+// misspelt name would leave the default in place and test that instead.
+static void checkHardCaseNames(const NodeSpec& s, const HardCase& hc) {
+  auto fail = [&](const std::string& why) {
+    throw std::logic_error("node spec '" + s.type + "', hard case '" + hc.name + "': " + why);
+  };
+  for (const auto& [port, value] : hc.inputs)
+    if (s.inputIndex(port) < 0) fail("no input '" + port + "'");
+  if (!hc.output.empty() && s.outputIndex(hc.output) < 0) fail("no output '" + hc.output + "'");
+  if (!hc.options.is_object() && !hc.options.is_null()) fail("options are not an object");  // `{}` is null
+  for (auto it = hc.options.begin(); it != hc.options.end(); ++it) {
+    int oi = s.optionIndex(it.key());
+    if (oi < 0) fail("no option '" + it.key() + "'");
+    const OptionSpec& o = s.options[static_cast<size_t>(oi)];
+    if (o.kind == OptionSpec::Kind::Texture) continue;  // a path is relative to a graph; there is none here
+    std::string why = checkOption(o, it.value(), "");
+    if (!why.empty()) fail("option '" + it.key() + "' " + why);
+  }
+  if (s.parseOptions) s.parseOptions(OptionReader(s, completeOptions(s, hc.options)));
+}
 
 // A malformed spec is a programming error in nodes/, caught by the first test that
 // builds the registry, never a user-facing condition.
@@ -27,6 +69,8 @@ static void checkSpec(const NodeSpec& s) {
   for (const auto& p : s.inputs) custom |= p.kind == PortKind::Custom;
   for (const auto& p : s.outputs) custom |= p.kind == PortKind::Custom;
   if (custom && !s.infer) fail("custom-typed ports need an infer function");
+  checkOptionsParse(s);
+  for (const auto& hc : s.hardCases) checkHardCaseNames(s, hc);
 }
 
 void Registry::add(NodeSpec spec) {

@@ -7,9 +7,8 @@
 
 #include <filesystem>
 
-#include "core/number_format.h"
+#include "core/node_options.h"
 #include "core/port_typing.h"
-#include "core/texture_check.h"
 #include "core/suggest.h"
 
 namespace wg {
@@ -31,42 +30,6 @@ Value literalValue(const std::vector<double>& xs) {
   Value v = Value::ofType(floatVector(static_cast<int>(xs.size())));
   for (size_t i = 0; i < xs.size(); ++i) v[static_cast<int>(i)] = xs[i];
   return v;
-}
-
-// Checks one option value against its spec; returns "" or the reason it is refused.
-std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir) {
-  switch (o.kind) {
-    case OptionSpec::Kind::Enum: {
-      if (!v.is_string()) return "must be one of its choices (a string)";
-      auto s = v.get<std::string>();
-      if (std::find(o.choices.begin(), o.choices.end(), s) == o.choices.end()) {
-        std::string list;
-        for (const auto& c : o.choices) list += (list.empty() ? "" : ", ") + c;
-        return "'" + s + "' is not one of: " + list + didYouMean(s, o.choices);
-      }
-      return "";
-    }
-    case OptionSpec::Kind::Number:
-    case OptionSpec::Kind::Integer: {
-      if (!v.is_number()) return "must be a number";
-      double x = v.get<double>();
-      if (!std::isfinite(x)) return "must be finite";
-      if (o.kind == OptionSpec::Kind::Integer && std::floor(x) != x) return "must be a whole number";
-      if (o.min && x < *o.min) return formatNumber(x) + " is below the minimum " + formatNumber(*o.min);
-      if (o.max && x > *o.max) return formatNumber(x) + " is above the maximum " + formatNumber(*o.max);
-      return "";
-    }
-    case OptionSpec::Kind::Bool:
-      return v.is_boolean() ? "" : "must be true or false";
-    case OptionSpec::Kind::Json:
-      return o.validate ? o.validate(v) : "";
-    case OptionSpec::Kind::Texture: {
-      if (!v.is_string()) return "must be a string: \"builtin:<name>\" or a .png path relative to the graph";
-      std::string why = checkTextureSource(v.get<std::string>(), graphDir);
-      return why.empty() ? "" : "is not usable: " + why;
-    }
-  }
-  return "";
 }
 
 class Resolver {
@@ -333,10 +296,11 @@ class Resolver {
       op.spec = spec;
       op.nodeId = node.id;
       op.where = node.where;
-      op.options = nlohmann::json::object();
-      for (const auto& o : spec->options) op.options[o.name] = o.defaultValue;
+      nlohmann::json written = nlohmann::json::object();
       for (const auto& o : node.options)
-        if (spec->optionIndex(o.name) >= 0) op.options[o.name] = o.value;
+        if (spec->optionIndex(o.name) >= 0) written[o.name] = o.value;
+      op.options = completeOptions(*spec, written);
+      op.parsedOptions = parseOptions(*spec, op.options);  // valid: lookUpSpecs checked each value
 
       size_t nin = spec->inputs.size();
       op.inputs.assign(nin, ValueRef{});
@@ -390,7 +354,7 @@ class Resolver {
 
   bool typeOp(Op& op, const Node& node, const std::vector<Type>& sourceTypes,
               const std::vector<const NodeInput*>& given) {
-    PortTyping t = typePorts(*op.spec, op.options, sourceTypes,
+    PortTyping t = typePorts(*op.spec, *op.parsedOptions, sourceTypes,
                              [&](int i) { return sourceName(given[static_cast<size_t>(i)]); });
     if (!t.error.empty()) {
       const NodeInput* at = t.errorInput >= 0 ? given[static_cast<size_t>(t.errorInput)] : nullptr;

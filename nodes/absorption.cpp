@@ -10,6 +10,15 @@
 
 namespace wg::nodes {
 
+namespace {
+
+struct AbsorptionOptions {
+  bool relative;  // the deferred water article's linear relative coefficients instead of Beer-Lambert
+};
+AbsorptionOptions parseAbsorptionOptions(const OptionReader& o) { return {o.is("model", "relative")}; }
+
+}  // namespace
+
 NodeSpec absorptionNode() {
   NodeSpec s;
   s.type = "absorption";
@@ -42,8 +51,9 @@ NodeSpec absorptionNode() {
                ports::fixed("absorbed", Type::Vec3, "1 - transmittance (the deferred water article tints the water colour by it)")};
   s.options = {ports::choice("model", {"beer_lambert", "relative"}, "beer_lambert",
                              "exponential Beer-Lambert, or the deferred water article's linear relative coefficients, squared")};
+  s.parseOptions = optionParser(parseAbsorptionOptions);
   s.emit = [](EmitContext& ctx) {
-    bool relative = ctx.option("model").get<std::string>() == "relative";
+    bool relative = ctx.options<AbsorptionOptions>().relative;
     std::string t = ctx.temporary(
         Type::Vec3, relative ? EmitContext::call("wg_absorption_relative",
                                                  {ctx.input("distance"), ctx.input("max_distance"),
@@ -54,7 +64,7 @@ NodeSpec absorptionNode() {
     ctx.output(2, "(vec3(1.0) - " + t + ")");
   };
   s.eval = [](EvalContext& ctx) {
-    bool relative = ctx.option("model").get<std::string>() == "relative";
+    bool relative = ctx.options<AbsorptionOptions>().relative;
     Value t = relative ? relativeAbsorptionReference(ctx.scalar("distance"), ctx.scalar("max_distance"),
                                                      ctx.scalar("relative_red"), ctx.scalar("relative_green"))
                        : beerLambertReference(ctx.input("sigma"), ctx.scalar("distance"));

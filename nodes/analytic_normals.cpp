@@ -48,6 +48,15 @@ constexpr RippleLayer kRipples[3] = {
 
 }  // namespace
 
+namespace {
+
+struct OctaveOptions {
+  int octaves;  // how many of the source's layers
+};
+OctaveOptions parseOctaveOptions(const OptionReader& o) { return {o.integer("octaves")}; }
+
+}  // namespace
+
 NodeSpec sineNormalsNode() {
   NodeSpec s;
   s.type = "sine_normals";
@@ -70,9 +79,10 @@ NodeSpec sineNormalsNode() {
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit normal of a y-up plane tilted by the sines"),
                ports::fixed("slope", Type::Vec2, "the tilt (dn.x, dn.z) before strength and normalisation")};
   s.options = {ports::integer("octaves", 3, 1, 3, "how many of the source's three layers (quality level)")};
+  s.parseOptions = optionParser(parseOctaveOptions);
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
-    int octaves = waves::integerOptionValue(ctx.option("octaves"));
+    int octaves = ctx.options<OctaveOptions>().octaves;
     std::string p = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * " + ctx.input("scale"));
     static const double kOmega[3][2] = {{0.8, 0.6}, {2.0, 1.8}, {3.0, 2.5}};
     std::string sum;
@@ -88,7 +98,7 @@ NodeSpec sineNormalsNode() {
     ctx.output(1, slope);
   };
   s.eval = [](EvalContext& ctx) {
-    int octaves = waves::integerOptionValue(ctx.option("octaves"));
+    int octaves = ctx.options<OctaveOptions>().octaves;
     const Value& pos = ctx.input("position");
     double scale = ctx.scalar("scale"), k = ctx.scalar("strength");
     double x = pos[0] * scale, z = pos[2] * scale;
@@ -147,9 +157,10 @@ NodeSpec rippleNormalsNode() {
   s.outputs = {ports::fixed("normal", Type::Vec3, "the perturbed unit normal (up when it degenerates)"),
                ports::fixed("ripple", Type::Vec2, "the ripple noise r, in [-1, 1]")};
   s.options = {ports::integer("octaves", 3, 1, 3, "how many of the source's three layers (quality level)")};
+  s.parseOptions = optionParser(parseOctaveOptions);
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
-    int octaves = waves::integerOptionValue(ctx.option("octaves"));
+    int octaves = ctx.options<OctaveOptions>().octaves;
     std::string uv = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * (" + ctx.input("scale") + " * 0.08)");
     std::string sum;
     for (int i = 0; i < octaves; ++i) {
@@ -171,7 +182,7 @@ NodeSpec rippleNormalsNode() {
     ctx.output(1, r);
   };
   s.eval = [](EvalContext& ctx) {
-    int octaves = waves::integerOptionValue(ctx.option("octaves"));
+    int octaves = ctx.options<OctaveOptions>().octaves;
     const Value& pos = ctx.input("position");
     double f = ctx.scalar("scale") * 0.08;
     double u = pos[0] * f, v = pos[2] * f;

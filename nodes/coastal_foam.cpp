@@ -19,6 +19,15 @@ double coastalFoamSpecular(double foam, double k, bool cubic) {
   return cubic ? s * s * s : s;
 }
 
+namespace {
+
+struct CoastalFoamOptions {
+  bool cubic;  // specular dimming by (1 - foam)^3 rather than linearly
+};
+CoastalFoamOptions parseCoastalFoamOptions(const OptionReader& o) { return {o.is("dimming", "cubic")}; }
+
+}  // namespace
+
 NodeSpec coastalFoamNode() {
   NodeSpec s;
   s.type = "coastal_foam";
@@ -50,9 +59,10 @@ NodeSpec coastalFoamNode() {
   s.outputs = {ports::fixed("foam", Type::Float, "foam amount in [0, 1]"),
                ports::fixed("specular_scale", Type::Float, "factor for the specular highlight, in [0, 1]")};
   s.isSource = true;  // samples a texture
+  s.parseOptions = optionParser(parseCoastalFoamOptions);
   s.emit = [](EmitContext& ctx) {
     std::string sampler = ctx.texture("texture");
-    bool cubic = ctx.option("dimming").get<std::string>() == "cubic";
+    bool cubic = ctx.options<CoastalFoamOptions>().cubic;
     std::string uv = EmitContext::call("wg_coastal_foam_uv", {ctx.input("position"), ctx.input("normal"), ctx.input("tex_scale"),
                                                               ctx.input("distortion")});
     std::string amount = EmitContext::call("wg_coastal_foam_amount", {ctx.input("depth"), ctx.input("max_depth"),
@@ -70,7 +80,7 @@ NodeSpec coastalFoamNode() {
     double amount = coastalFoamAmount(ctx.scalar("depth"), ctx.scalar("max_depth"), ctx.scalar("intensity"), ctx.scalar("crest"));
     double foam = glsl::saturate(amount * ctx.sampleTexture("texture", u, v)[0]);
     ctx.output(0, Value::scalar(foam));
-    ctx.output(1, Value::scalar(coastalFoamSpecular(foam, ctx.scalar("k"), ctx.option("dimming").get<std::string>() == "cubic")));
+    ctx.output(1, Value::scalar(coastalFoamSpecular(foam, ctx.scalar("k"), ctx.options<CoastalFoamOptions>().cubic)));
   };
   // One bilinear texture sample: ~1/512 from the GPU's 8-bit filter weights.
   s.tolerance = 4e-3;

@@ -21,6 +21,17 @@ double driftOmega(double drift) { return kTwoPi * drift / kNoisePeriod; }
 
 }  // namespace
 
+namespace {
+
+struct ColorVariationOptions {
+  double noiseScale, drift;
+};
+ColorVariationOptions parseColorVariationOptions(const OptionReader& o) {
+  return {o.number("noise_scale"), o.number("drift")};
+}
+
+}  // namespace
+
 NodeSpec colorVariationNode() {
   NodeSpec s;
   s.type = "color_variation";
@@ -55,8 +66,9 @@ NodeSpec colorVariationNode() {
                     "noise drift in noise units per second (the top-down water plan: 0.05); wrapped exactly via a time phase"),
   };
   s.isSource = true;  // the drift reads a time phase
+  s.parseOptions = optionParser(parseColorVariationOptions);
   s.emit = [](EmitContext& ctx) {
-    double scale = ctx.option("noise_scale").get<double>(), drift = ctx.option("drift").get<double>();
+    const auto& [scale, drift] = ctx.options<ColorVariationOptions>();
     std::string p = "(" + ctx.input("position") + ".xz * " + ctx.literal(scale) + ")";
     if (drift != 0.0)
       p = "(" + p + " + vec2(" + ctx.timePhase(driftOmega(drift)) + " * " + ctx.literal(kNoisePeriod / kTwoPi) + "))";
@@ -68,7 +80,7 @@ NodeSpec colorVariationNode() {
     ctx.output(1, noise);
   };
   s.eval = [](EvalContext& ctx) {
-    double scale = ctx.option("noise_scale").get<double>(), drift = ctx.option("drift").get<double>();
+    const auto& [scale, drift] = ctx.options<ColorVariationOptions>();
     const Value& pos = ctx.input("position");
     double offset = 0.0;
     if (drift != 0.0)

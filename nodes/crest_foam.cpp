@@ -39,6 +39,15 @@ double crestFoamReference(double height, const Value& normal, double x, double z
   return glsl::safePow(glsl::saturate(base * mask * intensity), 1.0 / std::max(sharpness, 1e-3));
 }
 
+namespace {
+
+struct CrestFoamOptions {
+  double noiseSpeed;
+};
+CrestFoamOptions parseCrestFoamOptions(const OptionReader& o) { return {o.number("noise_speed")}; }
+
+}  // namespace
+
 NodeSpec crestFoamNode() {
   NodeSpec s;
   s.type = "crest_foam";
@@ -66,8 +75,9 @@ NodeSpec crestFoamNode() {
                              "multiplies the top-down water plan's noise drift rates 0.3 and 0.2 per second (compile-time: the drift "
                              "is a double-precision time phase, seamless at t = 1e6 s)")};
   s.isSource = true;  // reads time phases
+  s.parseOptions = optionParser(parseCrestFoamOptions);
   s.emit = [](EmitContext& ctx) {
-    double ns = ctx.option("noise_speed").get<double>();
+    double ns = ctx.options<CrestFoamOptions>().noiseSpeed;
     std::string drift = "vec2(0.0)";
     if (ns != 0.0) {
       std::string p1 = ctx.timePhase(driftOmega(kDrift1 * ns));  // one call per statement: a stable order
@@ -83,7 +93,7 @@ NodeSpec crestFoamNode() {
                                                       ctx.input("coverage"), ctx.input("sharpness")}));
   };
   s.eval = [](EvalContext& ctx) {
-    double ns = ctx.option("noise_speed").get<double>();
+    double ns = ctx.options<CrestFoamOptions>().noiseSpeed;
     double t = ctx.environment().time[0];
     double d1 = 0, d2 = 0;
     if (ns != 0.0) {

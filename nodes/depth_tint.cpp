@@ -7,6 +7,15 @@
 
 namespace wg::nodes {
 
+namespace {
+
+struct DepthTintOptions {
+  bool smooth;  // smoothstep rather than the linear ramp
+};
+DepthTintOptions parseDepthTintOptions(const OptionReader& o) { return {o.is("curve", "smooth")}; }
+
+}  // namespace
+
 NodeSpec depthTintNode() {
   NodeSpec s;
   s.type = "depth_tint";
@@ -26,8 +35,9 @@ NodeSpec depthTintNode() {
   s.outputs = {ports::fixed("color", Type::Vec3, "the tinted colour"),
                ports::fixed("factor", Type::Float, "the blend factor t in [0, 1]")};
   s.options = {ports::choice("curve", {"linear", "smooth"}, "linear", "linear ramp (the stylized water shader) or smoothstep (the advanced shaders tutorial)")};
+  s.parseOptions = optionParser(parseDepthTintOptions);
   s.emit = [](EmitContext& ctx) {
-    bool smooth = ctx.option("curve").get<std::string>() == "smooth";
+    bool smooth = ctx.options<DepthTintOptions>().smooth;
     std::string t = ctx.temporary(
         Type::Float, EmitContext::call(smooth                                     ? "wg_depth_tint_smooth"
                                        : ctx.inputFact("max_depth").atLeast(1e-6) ? "wg_depth_tint_linear_floored"
@@ -38,7 +48,7 @@ NodeSpec depthTintNode() {
   };
   s.eval = [](EvalContext& ctx) {
     double depth = ctx.scalar("depth"), maxDepth = std::max(ctx.scalar("max_depth"), 1e-6);
-    bool smooth = ctx.option("curve").get<std::string>() == "smooth";
+    bool smooth = ctx.options<DepthTintOptions>().smooth;
     double t = smooth ? glsl::safeSmoothstep(0.0, maxDepth, depth) : glsl::saturate(depth / maxDepth);
     ctx.output(0, glsl::map2(ctx.input("shallow"), ctx.input("deep"), Type::Vec3,
                              [t](double a, double b) { return glsl::mix(a, b, t); }));

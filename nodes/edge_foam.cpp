@@ -28,6 +28,16 @@ double edgeFoamCut(double tex, double mask, double cutoff, double softness, doub
   return glsl::saturate(strength * glsl::safeSmoothstep(cutoff, cutoff + std::max(softness, 0.0), tex * mask));
 }
 
+namespace {
+
+struct EdgeFoamOptions {
+  bool smoothMask;
+  double speed;
+};
+EdgeFoamOptions parseEdgeFoamOptions(const OptionReader& o) { return {o.is("mask", "smooth"), o.number("speed")}; }
+
+}  // namespace
+
 NodeSpec edgeFoamNode() {
   NodeSpec s;
   s.type = "edge_foam";
@@ -62,9 +72,9 @@ NodeSpec edgeFoamNode() {
   };
   s.outputs = {ports::fixed("foam", Type::Float, "foam amount in [0, 1]")};
   s.isSource = true;  // samples a texture, reads time phases
+  s.parseOptions = optionParser(parseEdgeFoamOptions);
   s.emit = [](EmitContext& ctx) {
-    double speed = ctx.option("speed").get<double>();
-    bool smooth = ctx.option("mask").get<std::string>() == "smooth";
+    const auto& [smooth, speed] = ctx.options<EdgeFoamOptions>();
     std::string sampler = ctx.texture("texture");
     // mod(speed t, 1) = mod(2 pi speed t, 2 pi) / 2 pi, and the same at half the speed.
     std::string off = "vec2(0.0)";
@@ -86,8 +96,7 @@ NodeSpec edgeFoamNode() {
     ctx.output(0, EmitContext::call("wg_edge_foam", {t, mask, ctx.input("cutoff"), ctx.input("softness"), ctx.input("strength")}));
   };
   s.eval = [](EvalContext& ctx) {
-    double speed = ctx.option("speed").get<double>();
-    bool smooth = ctx.option("mask").get<std::string>() == "smooth";
+    const auto& [smooth, speed] = ctx.options<EdgeFoamOptions>();
     double t = ctx.environment().time[0];
     double ox = 0, oy = 0;
     if (speed != 0.0) {

@@ -9,6 +9,15 @@
 
 namespace wg::nodes {
 
+namespace {
+
+struct FlowMapOptions {
+  bool flowFromTexture;  // else from the `flow` input
+};
+FlowMapOptions parseFlowMapOptions(const OptionReader& o) { return {o.is("flow_source", "texture")}; }
+
+}  // namespace
+
 NodeSpec flowMapNode() {
   NodeSpec s;
   s.type = "flow_map";
@@ -39,11 +48,12 @@ NodeSpec flowMapNode() {
                            "the flow map (flow = rg * 2 - 1), sampled at uv, when flow_source = texture"),
   };
   s.isSource = true;
+  s.parseOptions = optionParser(parseFlowMapOptions);
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
     std::string uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
     std::string flow =
-        ctx.option("flow_source").get<std::string>() == "texture"
+        ctx.options<FlowMapOptions>().flowFromTexture
             ? EmitContext::call("wg_flow_map_decode", {"texture(" + ctx.texture("flow_texture") + ", " + uv + ")"})
             : ctx.input("flow");
     std::string drag = ctx.temporary(Type::Vec2, "(" + flow + ") * " + ctx.input("strength"));
@@ -61,7 +71,7 @@ NodeSpec flowMapNode() {
   s.eval = [](EvalContext& ctx) {
     const Value& uv = ctx.input("uv");
     double fx, fy;
-    if (ctx.option("flow_source").get<std::string>() == "texture") {
+    if (ctx.options<FlowMapOptions>().flowFromTexture) {
       Value f = ctx.sampleTexture("flow_texture", uv[0], uv[1]);
       fx = f[0] * 2.0 - 1.0;
       fy = f[1] * 2.0 - 1.0;

@@ -10,6 +10,16 @@
 #include "nodes/port_builders.h"
 
 namespace wg::nodes {
+namespace {
+
+FresnelSetup parseFresnelOptions(const OptionReader& o) {
+  return {o.choice<FresnelModel>("model", {{"schlick", FresnelModel::Schlick},
+                                           {"exact", FresnelModel::Exact},
+                                           {"power", FresnelModel::Power}}),
+          o.is("direction", "water_to_air"), o.number("ior"), o.is("power_form", "one_minus_cos")};
+}
+
+}  // namespace
 
 NodeSpec fresnelNode() {
   NodeSpec s;
@@ -41,30 +51,31 @@ NodeSpec fresnelNode() {
       ports::choice("power_form", {"cos", "one_minus_cos"}, "cos",
                     "power model: 1 - (N.V)^strength (the classic WebGL water renderer) or (1 - N.V)^strength (the stylized water shader)"),
   };
+  s.parseOptions = optionParser(parseFresnelOptions);
   // F in [0, 1] only where the inputs keep it there: schlick needs f0 in [0, 1]; the power
   // forms need strength >= 0 (c^s >= 1 for s < 0); exact always is.
-  s.facts = [](const std::vector<ValueFact>& in, const nlohmann::json& options) {
-    const std::string model = options.value("model", "schlick");
+  s.facts = [](const std::vector<ValueFact>& in, const ParsedOptions& options) {
+    FresnelModel model = options.as<FresnelSetup>().model;
     const ValueFact &f0 = in[2], &strength = in[3];
-    bool bounded = model == "exact" || (model == "schlick" && f0.atLeast(0) && f0.hi <= 1) ||
-                   (model == "power" && strength.atLeast(0));
+    bool bounded = model == FresnelModel::Exact || (model == FresnelModel::Schlick && f0.atLeast(0) && f0.hi <= 1) ||
+                   (model == FresnelModel::Power && strength.atLeast(0));
     if (!bounded) return std::vector<ValueFact>{{}, {}};
     return std::vector<ValueFact>{{0, 1, false}, {0, 1, false}};
   };
   s.emit = [](EmitContext& ctx) {
-    std::string model = ctx.option("model").get<std::string>();
-    bool below = ctx.option("direction").get<std::string>() == "water_to_air";
-    double ior = ctx.option("ior").get<double>();
+    const FresnelSetup& o = ctx.options<FresnelSetup>();
+    bool below = o.fromBelow;
+    double ior = o.ior;
     std::string c = ctx.temporary(Type::Float, EmitContext::call("wg_cos_incidence", {ctx.input("normal"), ctx.input("view")}));
     std::string f;
-    if (model == "schlick") {
+    if (o.model == FresnelModel::Schlick) {
       f = below ? EmitContext::call("wg_fresnel_schlick_from_below", {c, ctx.input("f0"), ctx.literal(ior)})
                 : EmitContext::call("wg_fresnel_schlick", {c, ctx.input("f0")});
-    } else if (model == "exact") {
+    } else if (o.model == FresnelModel::Exact) {
       f = below ? EmitContext::call("wg_fresnel_exact", {c, ctx.literal(ior), "1.0"})
                 : EmitContext::call("wg_fresnel_exact", {c, "1.0", ctx.literal(ior)});
     } else {
-      bool rim = ctx.option("power_form").get<std::string>() == "one_minus_cos";
+      bool rim = o.rim;
       // strength > 0 proven: native pow (the base lies in [0, 1]).
       std::string fn = rim ? "wg_fresnel_power_rim" : "wg_fresnel_power_cos";
       if (ctx.inputFact("strength").above(0)) fn += "_positive";
@@ -76,9 +87,7 @@ NodeSpec fresnelNode() {
   };
   s.eval = [](EvalContext& ctx) {
     double c = glsl::saturate(glsl::dot(ctx.input("normal"), ctx.input("view")));
-    FresnelSetup setup{ctx.option("model").get<std::string>(), ctx.option("direction").get<std::string>() == "water_to_air",
-                       ctx.option("ior").get<double>(), ctx.option("power_form").get<std::string>() == "one_minus_cos"};
-    double f = fresnelReference(setup, c, ctx.scalar("f0"), ctx.scalar("strength"));
+    double f = fresnelReference(ctx.options<FresnelSetup>(), c, ctx.scalar("f0"), ctx.scalar("strength"));
     ctx.output(0, Value::scalar(f));
     ctx.output(1, Value::scalar(1.0 - f));
   };

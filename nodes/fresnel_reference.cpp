@@ -25,12 +25,12 @@ double fresnelSchlick(double cosi, double f0) {
 }
 
 double fresnelReference(const FresnelSetup& s, double c, double f0, double strength) {
-  if (s.model == "schlick") {
+  if (s.model == FresnelModel::Schlick) {
     if (!s.fromBelow) return fresnelSchlick(c, f0);
     double cost = transmittedCos(c, s.ior);
     return cost < 0.0 ? 1.0 : fresnelSchlick(cost, f0);
   }
-  if (s.model == "exact") return s.fromBelow ? fresnelExact(c, s.ior, 1.0) : fresnelExact(c, 1.0, s.ior);
+  if (s.model == FresnelModel::Exact) return s.fromBelow ? fresnelExact(c, s.ior, 1.0) : fresnelExact(c, 1.0, s.ior);
   return s.rim ? glsl::safePow(1.0 - c, strength) : 1.0 - glsl::safePow(c, strength);
 }
 

@@ -1,14 +1,15 @@
 #pragma once
 // The double-precision Fresnel formulas, shared by the fresnel node's eval and its tests.
-#include <string>
-
 namespace wg::nodes {
 
+enum class FresnelModel { Schlick, Exact, Power };
+
+// The fresnel node's options, parsed once (its defaults are in nodes/fresnel.cpp).
 struct FresnelSetup {
-  std::string model;   // schlick | exact | power
-  bool fromBelow = false;
-  double ior = 1.333;
-  bool rim = false;    // power form (1 - c)^s instead of 1 - c^s
+  FresnelModel model;
+  bool fromBelow;  // the viewer under water: total internal reflection past the critical angle
+  double ior;
+  bool rim;  // power form (1 - c)^s instead of 1 - c^s
 };
 
 // Transmitted-angle cosine for eta = n_incident / n_transmitted; -1 under total reflection.

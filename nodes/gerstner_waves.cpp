@@ -125,6 +125,13 @@ GerstnerFrame gerstnerReference(const std::vector<GerstnerWave>& ws, double x, d
   return f;
 }
 
+namespace {
+
+// The `waves` option, parsed once into the waves the emitter and the reference iterate.
+std::vector<GerstnerWave> parseGerstnerOptions(const OptionReader& o) { return parseGerstnerWaves(o.json("waves")); }
+
+}  // namespace
+
 NodeSpec gerstnerWavesNode() {
   NodeSpec s;
   s.type = "gerstner_waves";
@@ -169,8 +176,9 @@ NodeSpec gerstnerWavesNode() {
   wavesOpt.validate = validateGerstnerWaves;
   s.options = {wavesOpt};
   s.isSource = true;
+  s.parseOptions = optionParser(parseGerstnerOptions);
   s.emit = [](EmitContext& ctx) {
-    auto ws = parseGerstnerWaves(ctx.option("waves"));
+    const auto& ws = ctx.options<std::vector<GerstnerWave>>();
     std::string p = ctx.temporary(Type::Vec3, ctx.input("position"));
     std::string xz = ctx.temporary(Type::Vec2, p + ".xz");
     std::string acc = "mat3(0.0)";
@@ -189,7 +197,7 @@ NodeSpec gerstnerWavesNode() {
                                     {"(vec3(0.0, 0.0, 1.0) + " + acc + "[2])", "vec3(0.0, 0.0, 1.0)"}));
   };
   s.eval = [](EvalContext& ctx) {
-    auto ws = parseGerstnerWaves(ctx.option("waves"));
+    const auto& ws = ctx.options<std::vector<GerstnerWave>>();
     const Value& p = ctx.input("position");
     GerstnerFrame f = gerstnerReference(ws, p[0], p[2], ctx.environment().time[0]);
     ctx.output(0, Value::vector({p[0] + f.displacement[0], p[1] + f.displacement[1], p[2] + f.displacement[2]}));

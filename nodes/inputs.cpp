@@ -18,7 +18,7 @@ NodeSpec builtinInput(std::string type, Builtin b, std::string summary, std::str
   s.isSource = true;
   s.recomputeInFragment = true;
   s.outputs = {ports::fixed("out", builtinType(b), "the value")};
-  s.facts = [b](const std::vector<ValueFact>&, const nlohmann::json&) { return std::vector<ValueFact>{builtinFact(b)}; };
+  s.facts = [b](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{builtinFact(b)}; };
   s.emit = [b](EmitContext& ctx) { ctx.output(0, ctx.builtin(b)); };
   s.eval = [b](EvalContext& ctx) { ctx.output(0, ctx.environment().builtin(b)); };
   s.cost = "free: an attribute, varying or uniform read";

@@ -145,7 +145,7 @@ NodeSpec phongSpecularNode() {
                ports::fixed("color", Type::Vec3, "sun * sun_color + environment * environment_color")};
   // The lobe lies in [0, 1]; its safe power stays there only for shine >= 0 (x^s >= 1 for
   // s < 0). The environment term has no exponent.
-  s.facts = [](const std::vector<ValueFact>& in, const nlohmann::json&) {
+  s.facts = [](const std::vector<ValueFact>& in, const ParsedOptions&) {
     ValueFact unitRange{0, 1, false};
     const ValueFact& shine = in[3];
     return std::vector<ValueFact>{shine.atLeast(0) ? unitRange : ValueFact{}, unitRange, {}};

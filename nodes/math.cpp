@@ -229,7 +229,7 @@ NodeSpec normalizeNode() {
   s.outputs = {ports::gen("out", "the unit vector")};
   // A safe normalisation: normalized (unit, or shorter for a vector under 1e-15; see
   // ValueFact), each component in [-1, 1] (a float becomes -1, 0 or 1).
-  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) { return std::vector<ValueFact>{{-1, 1, true}}; };
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{{-1, 1, true}}; };
   s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call(typedName("wg_safe_normalize", ctx.outputType(0)), {ctx.input(0)})); };
   s.eval = [](EvalContext& ctx) { ctx.output(0, glsl::safeNormalize(ctx.input(0))); };
   s.hardCases = {{"zero vector", {{"x", Value::vector({0, 0, 0})}}, {}, "the zero vector, not NaN", 0, 0},
@@ -262,6 +262,27 @@ NodeSpec maxNode() {
   return binaryFunction("max", "max", "Larger of a and b.", [](double a, double b) { return std::max(a, b); });
 }
 
+namespace {
+
+struct SwizzleOptions {
+  std::string mask;  // as given: it names the output's components
+};
+SwizzleOptions parseSwizzleOptions(const OptionReader& o) { return {o.json("mask").get<std::string>()}; }
+
+struct CombineOptions {
+  Type type;
+};
+CombineOptions parseCombineOptions(const OptionReader& o) {
+  return {o.choice<Type>("type", {{"vec2", Type::Vec2}, {"vec3", Type::Vec3}, {"vec4", Type::Vec4}})};
+}
+
+struct RemapOptions {
+  bool clamped;
+};
+RemapOptions parseRemapOptions(const OptionReader& o) { return {o.flag("clamp")}; }
+
+}  // namespace
+
 NodeSpec swizzleNode() {
   NodeSpec s = mathNode("swizzle", "Picks and reorders components, as GLSL's .xyzw.", "out = x.<mask>");
   s.inputs = {ports::custom("x", "float or vector")};
@@ -273,9 +294,10 @@ NodeSpec swizzleNode() {
   mask.doc = "1 to 4 of x y z w (or r g b a), e.g. \"xz\" or \"zyx\"";
   mask.validate = checkSwizzleMask;
   s.options = {mask};
+  s.parseOptions = optionParser(parseSwizzleOptions);
   s.infer = [](InferContext& ctx) {
     if (!requireFloatVector(ctx, 0, 1)) return;
-    std::string m = ctx.options["mask"].get<std::string>();
+    const std::string& m = ctx.options.as<SwizzleOptions>().mask;
     int n = componentCount(ctx.inputTypes[0]);
     for (char c : m)
       if (swizzleIndex(c) >= n) {
@@ -287,7 +309,7 @@ NodeSpec swizzleNode() {
     ctx.outputTypes[0] = floatVector(static_cast<int>(m.size()));
   };
   s.emit = [](EmitContext& ctx) {
-    std::string m = ctx.option("mask").get<std::string>();
+    const std::string& m = ctx.options<SwizzleOptions>().mask;
     if (ctx.inputType(0) == Type::Float) {  // GLSL 330 has no scalar swizzles
       ctx.output(0, m.size() == 1 ? ctx.input(0) : std::string(typeName(ctx.outputType(0))) + "(" + ctx.input(0) + ")");
       return;
@@ -297,7 +319,7 @@ NodeSpec swizzleNode() {
     ctx.output(0, ctx.input(0) + "." + xyzw);
   };
   s.eval = [](EvalContext& ctx) {
-    std::string m = ctx.option("mask").get<std::string>();
+    const std::string& m = ctx.options<SwizzleOptions>().mask;
     Value r = Value::ofType(ctx.outputType(0));
     for (size_t i = 0; i < m.size(); ++i) r[static_cast<int>(i)] = ctx.input(0)[swizzleIndex(m[i])];
     ctx.output(0, r);
@@ -337,7 +359,8 @@ NodeSpec combineNode() {
               ports::fixed("w", Type::Float, Value::scalar(1), "fourth component (vec4)")};
   s.outputs = {ports::custom("out", "the vector")};
   s.options = {ports::choice("type", {"vec2", "vec3", "vec4"}, "vec3", "the vector type built")};
-  s.infer = [](InferContext& ctx) { ctx.outputTypes[0] = *parseType(ctx.options["type"].get<std::string>()); };
+  s.parseOptions = optionParser(parseCombineOptions);
+  s.infer = [](InferContext& ctx) { ctx.outputTypes[0] = ctx.options.as<CombineOptions>().type; };
   s.emit = [](EmitContext& ctx) {
     int n = componentCount(ctx.outputType(0));
     std::string e(typeName(ctx.outputType(0)));
@@ -362,6 +385,7 @@ NodeSpec remapNode() {
               ports::gen("out_max", 1, "target range end")};
   s.outputs = {ports::gen("out", "the remapped value")};
   s.options = {ports::flag("clamp", false, "clamp t to [0, 1]")};
+  s.parseOptions = optionParser(parseRemapOptions);
   s.emit = [](EmitContext& ctx) {
     // A proven non-empty source range (the ranges of in_min and in_max are disjoint)
     // makes the empty-range select dead.
@@ -369,13 +393,13 @@ NodeSpec remapNode() {
     ValueFact a = ctx.inputFact(1), b = ctx.inputFact(2);
     const double gap = static_cast<double>(std::numeric_limits<float>::min());
     bool nonempty = b.lo - a.hi >= gap || a.lo - b.hi >= gap;
-    std::string fn = typedName(std::string(ctx.option("clamp").get<bool>() ? "wg_remap_clamped" : "wg_remap") +
+    std::string fn = typedName(std::string(ctx.options<RemapOptions>().clamped ? "wg_remap_clamped" : "wg_remap") +
                                    (nonempty ? "_nonempty" : ""),
                                ctx.outputType(0));
     ctx.output(0, EmitContext::call(fn, {ctx.input(0), ctx.input(1), ctx.input(2), ctx.input(3), ctx.input(4)}));
   };
   s.eval = [](EvalContext& ctx) {
-    bool clamped = ctx.option("clamp").get<bool>();
+    bool clamped = ctx.options<RemapOptions>().clamped;
     Value r = Value::ofType(ctx.outputType(0));
     for (int i = 0; i < r.size(); ++i) {
       double x = ctx.input(0)[i], a = ctx.input(1)[i], b = ctx.input(2)[i];

@@ -41,6 +41,11 @@ OptionSpec octavesOption() {
   return ports::integer("octaves", 4, 1, 8, "number of value-noise layers (quality level: each octave costs one value_noise)");
 }
 
+struct FbmOptions {
+  int octaves;
+};
+FbmOptions parseFbmOptions(const OptionReader& o) { return {o.integer("octaves")}; }
+
 }  // namespace
 
 NodeSpec hashNode() {
@@ -127,16 +132,17 @@ NodeSpec fbmNode() {
               ports::fixed("lacunarity", Type::Float, Value::scalar(2.0), "frequency ratio between octaves, clamped to [0, 8]"),
               ports::fixed("gain", Type::Float, Value::scalar(0.5), "amplitude ratio between octaves, clamped to [0, 4]")};
   s.outputs = {ports::fixed("value", Type::Float, "noise in [0, 1)")};
+  s.parseOptions = optionParser(parseFbmOptions);
   s.options = {octavesOption()};
   s.infer = [](InferContext& ctx) { requireVec2OrVec3(ctx, 0); };
   s.emit = [](EmitContext& ctx) {
-    int octaves = ctx.option("octaves").get<int>();
+    int octaves = ctx.options<FbmOptions>().octaves;
     ctx.output(0, EmitContext::call("wg_fbm" + suffix(ctx.inputType(0)),
                                     {scaled(ctx), std::to_string(octaves), ctx.input("lacunarity"), ctx.input("gain")}));
   };
   s.eval = [](EvalContext& ctx) {
     Value q = scaled(ctx);
-    int octaves = ctx.option("octaves").get<int>();
+    int octaves = ctx.options<FbmOptions>().octaves;
     double lac = ctx.scalar("lacunarity"), gain = ctx.scalar("gain");
     ctx.output(0, Value::scalar(q.size() == 2 ? noise::fbm2(q[0], q[1], octaves, lac, gain)
                                               : noise::fbm3(q[0], q[1], q[2], octaves, lac, gain)));

@@ -9,6 +9,18 @@
 
 namespace wg::nodes {
 
+namespace {
+
+struct RefractDirOptions {
+  double eta;  // n_incident / n_transmitted: 1 / ior from air, ior from water
+};
+RefractDirOptions parseRefractDirOptions(const OptionReader& o) {
+  double ior = o.number("ior");
+  return {o.is("direction", "water_to_air") ? ior : 1.0 / ior};
+}
+
+}  // namespace
+
 NodeSpec reflectDirNode() {
   NodeSpec s;
   s.type = "reflect_dir";
@@ -64,19 +76,16 @@ NodeSpec refractDirNode() {
       ports::choice("direction", {"air_to_water", "water_to_air"}, "air_to_water",
                     "the viewer's medium: from water the ray can be totally reflected"),
   };
-  auto eta = [](const nlohmann::json& ior, const nlohmann::json& direction) {
-    double n = ior.get<double>();
-    return direction.get<std::string>() == "water_to_air" ? n : 1.0 / n;
-  };
-  s.emit = [eta](EmitContext& ctx) {
+  s.parseOptions = optionParser(parseRefractDirOptions);
+  s.emit = [](EmitContext& ctx) {
     std::string t = ctx.temporary(
         Type::Vec4, EmitContext::call("wg_refract_dir", {ctx.input("normal"), ctx.input("view"),
-                                                         ctx.literal(eta(ctx.option("ior"), ctx.option("direction")))}));
+                                                         ctx.literal(ctx.options<RefractDirOptions>().eta)}));
     ctx.output(0, t + ".xyz");
     ctx.output(1, t + ".w");
   };
-  s.eval = [eta](EvalContext& ctx) {
-    Refraction r = refractDirReference(ctx.input("normal"), ctx.input("view"), eta(ctx.option("ior"), ctx.option("direction")));
+  s.eval = [](EvalContext& ctx) {
+    Refraction r = refractDirReference(ctx.input("normal"), ctx.input("view"), ctx.options<RefractDirOptions>().eta);
     ctx.output(0, r.direction);
     ctx.output(1, Value::scalar(r.tir ? 1.0 : 0.0));
   };

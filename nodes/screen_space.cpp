@@ -24,6 +24,16 @@ Value mixVec3(const Value& a, const Value& b, double t) {
   return Value::vector({glsl::mix(a[0], b[0], t), glsl::mix(a[1], b[1], t), glsl::mix(a[2], b[2], t)});
 }
 
+struct PlanarReflectionOptions {
+  bool flipY;
+};
+PlanarReflectionOptions parsePlanarReflectionOptions(const OptionReader& o) { return {o.flag("flip_y")}; }
+
+struct SsrOptions {
+  int steps;
+};
+SsrOptions parseSsrOptions(const OptionReader& o) { return {o.integer("steps")}; }
+
 }  // namespace
 
 NodeSpec sceneDepthNode() {
@@ -48,7 +58,7 @@ NodeSpec sceneDepthNode() {
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"scene_depth"};
-  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
     return std::vector<ValueFact>{kDepthTextureFact, {}, {}};
   };
   s.emit = [](EmitContext& ctx) {
@@ -128,11 +138,12 @@ NodeSpec planarReflectionNode() {
   s.options = {ports::flag("flip_y", false,
                            "flip v after distorting: for reflection textures rendered through a mirrored camera "
                            "(upside down); false for watergraph's runtime")};
+  s.parseOptions = optionParser(parsePlanarReflectionOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"planar_reflection"};
   s.emit = [](EmitContext& ctx) {
-    bool flip = ctx.option("flip_y").get<bool>();
+    bool flip = ctx.options<PlanarReflectionOptions>().flipY;
     std::string uv = ctx.temporary(
         Type::Vec2, EmitContext::call(flip ? "wg_planar_reflection_uv_flipped" : "wg_scene_color_uv",
                                       {ctx.input("screen_uv"), ctx.input("distortion")}));
@@ -141,7 +152,7 @@ NodeSpec planarReflectionNode() {
   };
   s.eval = [](EvalContext& ctx) {
     Value uv = sceneColorUvReference(ctx.input("screen_uv"), ctx.input("distortion"));
-    if (ctx.option("flip_y").get<bool>()) uv[1] = 1.0 - uv[1];
+    if (ctx.options<PlanarReflectionOptions>().flipY) uv[1] = 1.0 - uv[1];
     ctx.output(0, ctx.environment().reflectionColor);
     ctx.output(1, uv);
   };
@@ -225,6 +236,7 @@ NodeSpec ssrNode() {
                ports::fixed("confidence", Type::Float, "hit * fade, in [0, 1] (0: only the fallback)"),
                ports::fixed("uv", Type::Vec2, "screen position of the hit ((0.5, 0.5) when nothing was hit)")};
   s.options = {ports::integer("steps", 10, 1, 64, "ray-march steps, the quality level (the deferred water article: 10); cost grows linearly")};
+  s.parseOptions = optionParser(parseSsrOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"scene_depth", "scene_color"};
@@ -238,7 +250,7 @@ NodeSpec ssrNode() {
         Type::Vec3,
         EmitContext::call("wg_ssr_march",
                           {ctx.sceneTexture("scene_depth"), pos, r, c, view, ctx.builtin(Builtin::Projection),
-                           ctx.builtin(Builtin::CameraNearFar), std::to_string(ctx.option("steps").get<int>()),
+                           ctx.builtin(Builtin::CameraNearFar), std::to_string(ctx.options<SsrOptions>().steps),
                            ctx.input("step"), ctx.input("tolerance"), ctx.input("growth")}));
     std::string dist = "(-(" + view + " * vec4(" + pos + ", 1.0)).z)";
     std::string conf = ctx.temporary(
@@ -255,7 +267,7 @@ NodeSpec ssrNode() {
     Value r = reflectDirReference(n, ctx.input("view"));
     double c = glsl::dot(r, glsl::safeNormalize(n));
     SsrMarch m = ssrMarchReference(env.sceneDepth[0], pos, r, c, env.view, env.projection, env.cameraNearFar,
-                                   ctx.option("steps").get<int>(), ctx.scalar("step"), ctx.scalar("tolerance"),
+                                   ctx.options<SsrOptions>().steps, ctx.scalar("step"), ctx.scalar("tolerance"),
                                    ctx.scalar("growth"));
     // -(View * (p, 1)).z: row 2 of the column-major view matrix.
     const Value& v = env.view;

@@ -19,6 +19,15 @@ double shoreWavesReference(double depth, double frequency, double phase, double 
   return glsl::saturate(w * amplitude * (1.0 - d / dmax));
 }
 
+namespace {
+
+struct ShoreWavesOptions {
+  double speed;  // rad/s
+};
+ShoreWavesOptions parseShoreWavesOptions(const OptionReader& o) { return {o.number("speed")}; }
+
+}  // namespace
+
 NodeSpec shoreWavesNode() {
   NodeSpec s;
   s.type = "shore_waves";
@@ -41,14 +50,15 @@ NodeSpec shoreWavesNode() {
                              "radians per second the bands advance (compile-time: a double-precision time phase, exact "
                              "at t = 1e6 s); positive runs towards the shore")};
   s.isSource = true;  // reads a time phase
+  s.parseOptions = optionParser(parseShoreWavesOptions);
   s.emit = [](EmitContext& ctx) {
-    double speed = ctx.option("speed").get<double>();
+    double speed = ctx.options<ShoreWavesOptions>().speed;
     std::string phase = speed == 0.0 ? "0.0" : ctx.timePhase(speed);
     ctx.output(0, EmitContext::call("wg_shore_waves", {ctx.input("depth"), ctx.input("frequency"), phase,
                                                        ctx.input("amplitude"), ctx.input("distance")}));
   };
   s.eval = [](EvalContext& ctx) {
-    double speed = ctx.option("speed").get<double>();
+    double speed = ctx.options<ShoreWavesOptions>().speed;
     double phase = speed == 0.0 ? 0.0 : glsl::mod(speed * ctx.environment().time[0], 6.283185307179586);
     ctx.output(0, Value::scalar(shoreWavesReference(ctx.scalar("depth"), ctx.scalar("frequency"), phase,
                                                     ctx.scalar("amplitude"), ctx.scalar("distance"))));

@@ -31,10 +31,21 @@ std::vector<PortSpec> framePorts() {
                        "binormal B (tangent-space y); +z for a y-up water plane")};
 }
 
+enum class NormalBlend { Add, Whiteout, Rnm };
+
+struct NormalMapScrollOptions {
+  NormalBlend blend;
+  std::string blendFunction;  // the GLSL function of that blend
+};
+NormalMapScrollOptions parseNormalMapScrollOptions(const OptionReader& o) {
+  return {o.choice<NormalBlend>("blend", {{"add", NormalBlend::Add}, {"whiteout", NormalBlend::Whiteout}, {"rnm", NormalBlend::Rnm}}),
+          "wg_normal_map_scroll_" + o.choiceName("blend")};
+}
+
 // The blends of normal_map_scroll, in double as the GLSL computes them.
-D3 normalMapBlend(const std::string& mode, const D3& a, const D3& b) {
-  if (mode == "whiteout") return waves::safeNormalize({a.x + b.x, a.y + b.y, a.z * b.z});
-  if (mode == "rnm") {
+D3 normalMapBlend(NormalBlend mode, const D3& a, const D3& b) {
+  if (mode == NormalBlend::Whiteout) return waves::safeNormalize({a.x + b.x, a.y + b.y, a.z * b.z});
+  if (mode == NormalBlend::Rnm) {
     D3 t = a + D3{0, 0, 1};
     D3 u{-b.x, -b.y, b.z};
     return waves::safeNormalize(t * (waves::dot(t, u) / std::max(t.z, 1e-6)) - u);
@@ -77,7 +88,8 @@ NodeSpec normalMapScrollNode() {
   };
   s.isSource = true;
   // wg_waves_tangent_to_world: unit, or the up vector when degenerate.
-  s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
+  s.parseOptions = optionParser(parseNormalMapScrollOptions);
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
     ValueFact unit{-1, 1, true};
     return std::vector<ValueFact>{unit, unit};
   };
@@ -97,7 +109,7 @@ NodeSpec normalMapScrollNode() {
     };
     std::string a = layer("scale_a", "speed_a"), b = layer("scale_b", "speed_b");
     std::string n = ctx.temporary(
-        Type::Vec3, EmitContext::call("wg_normal_map_scroll_" + ctx.option("blend").get<std::string>(), {a, b}));
+        Type::Vec3, EmitContext::call(ctx.options<NormalMapScrollOptions>().blendFunction, {a, b}));
     std::string ts = EmitContext::call("wg_normal_map_scroll_strength", {n, ctx.input("strength")});
     // ts is a finite unpacked texel, so the flat frame's zero products are exact zeros.
     auto tc = ctx.inputConstant(ctx.inputIndex("tangent")), bc = ctx.inputConstant(ctx.inputIndex("binormal"));
@@ -117,7 +129,7 @@ NodeSpec normalMapScrollNode() {
           ctx.sampleTexture("texture", uv[0] * k + glsl::fract(v[0] * time), uv[1] * k + glsl::fract(v[1] * time)));
     };
     D3 a = layer("scale_a", "speed_a"), b = layer("scale_b", "speed_b");
-    D3 n = normalMapBlend(ctx.option("blend").get<std::string>(), a, b);
+    D3 n = normalMapBlend(ctx.options<NormalMapScrollOptions>().blend, a, b);
     double k = ctx.scalar("strength");
     ctx.output(0, waves::value(tangentToWorld({n.x * k, n.y * k, n.z}, ctx)));
     ctx.output(1, waves::value(n));

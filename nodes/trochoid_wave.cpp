@@ -28,6 +28,12 @@ struct TrochoidSetup {
   }
 };
 
+struct TrochoidWaveOptions {
+  int steps;
+  double omega;  // rad/s of the phase
+};
+TrochoidWaveOptions parseTrochoidWaveOptions(const OptionReader& o) { return {o.integer("steps"), o.number("omega")}; }
+
 }  // namespace
 
 NodeSpec trochoidWaveNode() {
@@ -78,10 +84,11 @@ NodeSpec trochoidWaveNode() {
       ports::texture("texture", "builtin:height", "the height texture (red channel) of the detail"),
   };
   s.isSource = true;
+  s.parseOptions = optionParser(parseTrochoidWaveOptions);
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
-    std::string phase = ctx.timePhase(ctx.option("omega").get<double>());
-    std::string steps = std::to_string(waves::integerOptionValue(ctx.option("steps")));
+    std::string phase = ctx.timePhase(ctx.options<TrochoidWaveOptions>().omega);
+    std::string steps = std::to_string(ctx.options<TrochoidWaveOptions>().steps);
     std::string dir = ctx.temporary(Type::Vec3, "-" + EmitContext::call("wg_safe_normalize_vec3", {ctx.input("view")}));
     std::string amp = ctx.temporary(Type::Float, ctx.input("amplitude"));
     std::string k = ctx.temporary(Type::Vec2, ctx.input("wave_vector"));
@@ -101,7 +108,7 @@ NodeSpec trochoidWaveNode() {
     TrochoidSetup w{ctx.scalar("amplitude"),
                     k[0],
                     k[1],
-                    waves::timePhase(ctx, ctx.option("omega").get<double>()),
+                    waves::timePhase(ctx, ctx.options<TrochoidWaveOptions>().omega),
                     ctx.scalar("detail"),
                     ctx.scalar("texture_scale"),
                     &ctx};
@@ -113,7 +120,7 @@ NodeSpec trochoidWaveNode() {
     D3 p = origin + dir * t0;
     double maxAmplitude = std::abs(w.amplitude) * (1.0 + std::abs(w.detail));
     double step = (origin.y > surfaceY ? 1.0 : -1.0) * maxAmplitude / std::max(std::abs(dir.y), 0.1);
-    int steps = waves::integerOptionValue(ctx.option("steps"));
+    int steps = ctx.options<TrochoidWaveOptions>().steps;
     for (int i = 0; i < steps; ++i) {
       double h = w.height(p.x, p.z);
       step *= 0.5;

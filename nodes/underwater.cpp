@@ -15,6 +15,20 @@
 
 namespace wg::nodes {
 
+namespace {
+
+enum class UnderwaterCamera { Auto, Above, Below };
+
+struct UnderwaterOptions {
+  UnderwaterCamera camera;
+};
+UnderwaterOptions parseUnderwaterOptions(const OptionReader& o) {
+  return {o.choice<UnderwaterCamera>(
+      "camera", {{"auto", UnderwaterCamera::Auto}, {"above", UnderwaterCamera::Above}, {"below", UnderwaterCamera::Below}})};
+}
+
+}  // namespace
+
 NodeSpec underwaterNode() {
   NodeSpec s;
   s.type = "underwater";
@@ -81,6 +95,7 @@ NodeSpec underwaterNode() {
                              "where the scene's camera can be: auto decides per frame (camera.y < water_level); above "
                              "or below emit only cases 1, 4, 5 or 2, 3 (a scene whose camera stays above water "
                              "carries no underwater branch)")};
+  s.parseOptions = optionParser(parseUnderwaterOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"underwater", "scene_depth", "scene_color"};
@@ -95,7 +110,7 @@ NodeSpec underwaterNode() {
                                       {uv, lin, cam, ctx.builtin(Builtin::View), ctx.builtin(Builtin::Projection)}));
     std::string sky = "(" + raw + " >= 1.0 ? 1.0 : 0.0)";
     std::string colorTex = ctx.sceneTexture("scene_color");
-    std::string mode = ctx.option("camera").get<std::string>();
+    UnderwaterCamera mode = ctx.options<UnderwaterOptions>().camera;
     std::string level = ctx.input("water_level");
     auto above = [&] {
       return EmitContext::call("wg_underwater_from_above",
@@ -112,8 +127,8 @@ NodeSpec underwaterNode() {
                                 ctx.input("caustics_color"), ctx.input("depth_light"), level});
     };
     std::string r;
-    if (mode == "above") r = ctx.temporary(Type::Vec4, above());
-    else if (mode == "below") r = ctx.temporary(Type::Vec4, below());
+    if (mode == UnderwaterCamera::Above) r = ctx.temporary(Type::Vec4, above());
+    else if (mode == UnderwaterCamera::Below) r = ctx.temporary(Type::Vec4, below());
     else r = ctx.temporary(Type::Vec4, "(" + cam + ".y < " + level + " ? " + below() + " : " + above() + ")");
     ctx.output(0, r + ".rgb");
     ctx.output(1, r + ".a");
@@ -141,8 +156,8 @@ NodeSpec underwaterNode() {
     in.level = ctx.scalar("water_level");
     in.depthLight = ctx.scalar("depth_light");
     in.sceneColor = env.sceneColor;
-    std::string mode = ctx.option("camera").get<std::string>();
-    bool below = mode == "below" || (mode == "auto" && in.camera[1] < in.level);
+    UnderwaterCamera mode = ctx.options<UnderwaterOptions>().camera;
+    bool below = mode == UnderwaterCamera::Below || (mode == UnderwaterCamera::Auto && in.camera[1] < in.level);
     UnderwaterResult r;
     if (below) {
       in.surface = ctx.input("surface_below");

@@ -9,6 +9,17 @@
 
 namespace wg::nodes {
 
+namespace {
+
+// The tessellation the node asks for, or none.
+std::optional<TessellationSettings> parseVertexOutputOptions(const OptionReader& o) {
+  bool distance = o.is("tessellation", "distance");
+  TessellationSettings t{o.number("min_distance"), o.number("max_distance"), o.number("factor")};
+  return distance ? std::optional(t) : std::nullopt;
+}
+
+}  // namespace
+
 NodeSpec vertexOutputNode() {
   NodeSpec s;
   s.type = "vertex_output";
@@ -36,11 +47,8 @@ NodeSpec vertexOutputNode() {
       ports::number("max_distance", 50, 0, 1e6, "distance (m) at which the factor has fallen to 1%"),
       ports::number("factor", 16, 1, 64, "the largest tessellation level"),
   };
-  s.tessellation = [](const nlohmann::json& o) -> std::optional<TessellationSettings> {
-    if (o.at("tessellation").get<std::string>() != "distance") return std::nullopt;
-    return TessellationSettings{o.at("min_distance").get<double>(), o.at("max_distance").get<double>(),
-                                o.at("factor").get<double>()};
-  };
+  s.parseOptions = optionParser(parseVertexOutputOptions);
+  s.tessellation = [](const ParsedOptions& o) { return o.as<std::optional<TessellationSettings>>(); };
   s.emit = [](EmitContext& ctx) {
     ctx.output(0, "(" + ctx.input("position") + " + " + ctx.input("displacement") + ")");
     ctx.output(1, EmitContext::call("wg_safe_normalize_vec3", {ctx.input("normal")}));

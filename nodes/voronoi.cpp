@@ -11,21 +11,19 @@
 
 namespace wg::nodes {
 
-std::string emitVoronoiPhase(EmitContext& ctx, double speedScale) {
-  std::string mode = ctx.option("animation").get<std::string>();
-  double speed = ctx.option("speed").get<double>() * speedScale;
-  if (mode == "static") return "0.0";
-  if (mode == "time") return speed == 0.0 ? "0.0" : ctx.timePhase(speed);
+std::string emitVoronoiPhase(EmitContext& ctx, const VoronoiOptions& o, double speedScale) {
+  double speed = o.speed * speedScale;
+  if (o.animation == VoronoiAnimation::Static) return "0.0";
+  if (o.animation == VoronoiAnimation::Time) return speed == 0.0 ? "0.0" : ctx.timePhase(speed);
   // A time input: wrap speed * time before it reaches sin (float time is coarse at 1e6 s).
   std::string t = ctx.input("time");
   return "mod(" + ctx.literal(speed) + " * " + t + ", " + ctx.literal(noise::kTau) + ")";
 }
 
-double evalVoronoiPhase(EvalContext& ctx, double speedScale) {
-  std::string mode = ctx.option("animation").get<std::string>();
-  double speed = ctx.option("speed").get<double>() * speedScale;
-  if (mode == "static") return 0.0;
-  double t = mode == "time" ? ctx.environment().time[0] : ctx.scalar("time");
+double evalVoronoiPhase(EvalContext& ctx, const VoronoiOptions& o, double speedScale) {
+  double speed = o.speed * speedScale;
+  if (o.animation == VoronoiAnimation::Static) return 0.0;
+  double t = o.animation == VoronoiAnimation::Time ? ctx.environment().time[0] : ctx.scalar("time");
   return glsl::mod(speed * t, noise::kTau);
 }
 
@@ -40,6 +38,14 @@ std::vector<OptionSpec> voronoiOptions(double defaultSpeed) {
                     "t = 1e6 s); or orbiting with the `time` input (wrapped with mod before sin)"),
       ports::number("speed", defaultSpeed, -100.0, 100.0, "orbit angular speed in radians per second"),
   };
+}
+
+VoronoiOptions parseVoronoiOptions(const OptionReader& o) {
+  return {o.is("search", "3x3"),
+          o.choice<VoronoiAnimation>("animation", {{"static", VoronoiAnimation::Static},
+                                                   {"time", VoronoiAnimation::Time},
+                                                   {"time_input", VoronoiAnimation::TimeInput}}),
+          o.number("speed")};
 }
 
 NodeSpec voronoiNode() {
@@ -62,25 +68,26 @@ NodeSpec voronoiNode() {
                ports::fixed("f2", Type::Float, "distance to the second-nearest point, >= f1"),
                ports::fixed("cell", Type::Vec2, "integer cell of the nearest point (a per-cell id)")};
   s.options = voronoiOptions(1.0);
+  s.parseOptions = optionParser(parseVoronoiOptions);
   s.isSource = true;  // reads the time phase
   s.emit = [](EmitContext& ctx) {
-    bool full = ctx.option("search").get<std::string>() == "3x3";
-    bool animated = ctx.option("animation").get<std::string>() != "static";
+    const VoronoiOptions& o = ctx.options<VoronoiOptions>();
+    bool full = o.fullSearch, animated = o.animated();
     std::string p = ctx.input("p");  // one call per statement: a stable emission order
     std::string k = ctx.input("scale");
     std::string q = "(" + p + " * " + k + ")";
-    std::string v = ctx.temporary(Type::Vec4, EmitContext::call("wg_voronoi", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, 1.0),
+    std::string v = ctx.temporary(Type::Vec4, EmitContext::call("wg_voronoi", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, o, 1.0),
                                                                                animated ? "true" : "false", full ? "true" : "false"}));
     ctx.output(0, v + ".x");
     ctx.output(1, v + ".y");
     ctx.output(2, v + ".zw");
   };
   s.eval = [](EvalContext& ctx) {
-    bool full = ctx.option("search").get<std::string>() == "3x3";
-    bool animated = ctx.option("animation").get<std::string>() != "static";
+    const VoronoiOptions& o = ctx.options<VoronoiOptions>();
+    bool full = o.fullSearch, animated = o.animated();
     const Value& p = ctx.input("p");
     double k = ctx.scalar("scale");
-    auto r = noise::voronoi(p[0] * k, p[1] * k, ctx.scalar("jitter"), evalVoronoiPhase(ctx, 1.0), animated, full);
+    auto r = noise::voronoi(p[0] * k, p[1] * k, ctx.scalar("jitter"), evalVoronoiPhase(ctx, o, 1.0), animated, full);
     ctx.output(0, Value::scalar(r.f1));
     ctx.output(1, Value::scalar(r.f2));
     ctx.output(2, Value::vector({r.cellX, r.cellY}));

@@ -19,6 +19,20 @@ double layerReference(double x, double y, double jitter, double phase, bool anim
   return voronoiCausticsIntensity(noise::voronoi(x, y, jitter, phase, animated, full).f1);
 }
 
+enum class CausticsCombine { Average, Min, Multiply };
+
+struct VoronoiCausticsOptions {
+  VoronoiOptions voronoi;
+  bool twoLayers;
+  CausticsCombine combine;
+};
+VoronoiCausticsOptions parseVoronoiCausticsOptions(const OptionReader& o) {
+  return {parseVoronoiOptions(o), o.is("layers", "2"),
+          o.choice<CausticsCombine>("combine", {{"average", CausticsCombine::Average},
+                                                {"min", CausticsCombine::Min},
+                                                {"multiply", CausticsCombine::Multiply}})};
+}
+
 }  // namespace
 
 // (1 - clamp(d, 0, 1))^3: one caustic layer's intensity for a Voronoi F1 of d.
@@ -50,42 +64,41 @@ NodeSpec voronoiCausticsNode() {
   s.options.push_back(ports::choice("layers", {"2", "1"}, "2", "quality: two layers (the stylized water shader) or one (half the cost)"));
   s.options.push_back(ports::choice("combine", {"average", "min", "multiply"}, "average",
                                     "how two layers combine: average (the stylized water shader), min (thinner lines), multiply (sparser)"));
+  s.parseOptions = optionParser(parseVoronoiCausticsOptions);
   s.isSource = true;  // reads the time phase
   s.emit = [](EmitContext& ctx) {
-    bool full = ctx.option("search").get<std::string>() == "3x3";
-    bool animated = ctx.option("animation").get<std::string>() != "static";
+    const VoronoiCausticsOptions& o = ctx.options<VoronoiCausticsOptions>();
+    bool full = o.voronoi.fullSearch, animated = o.voronoi.animated();
     std::string a = animated ? "true" : "false", f = full ? "true" : "false";
     std::string p = ctx.input("p");  // one call per statement: a stable emission order
     std::string k = ctx.input("scale");
     std::string q = ctx.temporary(Type::Vec2, "(" + p + " * " + k + ")");
     std::string c1 = ctx.temporary(
-        Type::Float, EmitContext::call("wg_voronoi_caustics_layer", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, 1.0), a, f}));
+        Type::Float, EmitContext::call("wg_voronoi_caustics_layer", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, o.voronoi, 1.0), a, f}));
     std::string c = c1;
-    if (ctx.option("layers").get<std::string>() == "2") {
+    if (o.twoLayers) {
       std::string q2 = "(" + q + " * " + ctx.literal(kLayer2Scale) + " + " + ctx.literal(kLayer2Offset) + ")";
       std::string c2 = ctx.temporary(
           Type::Float,
-          EmitContext::call("wg_voronoi_caustics_layer", {q2, ctx.input("jitter"), emitVoronoiPhase(ctx, kLayer2Speed), a, f}));
-      std::string mode = ctx.option("combine").get<std::string>();
-      c = mode == "average" ? "(0.5 * (" + c1 + " + " + c2 + "))"
-          : mode == "min"   ? "min(" + c1 + ", " + c2 + ")"
+          EmitContext::call("wg_voronoi_caustics_layer", {q2, ctx.input("jitter"), emitVoronoiPhase(ctx, o.voronoi, kLayer2Speed), a, f}));
+      c = o.combine == CausticsCombine::Average ? "(0.5 * (" + c1 + " + " + c2 + "))"
+          : o.combine == CausticsCombine::Min   ? "min(" + c1 + ", " + c2 + ")"
                             : "(" + c1 + " * " + c2 + ")";
     }
     std::string intensity = ctx.input("intensity");
     ctx.output(0, "(" + intensity + " * " + c + ")");
   };
   s.eval = [](EvalContext& ctx) {
-    bool full = ctx.option("search").get<std::string>() == "3x3";
-    bool animated = ctx.option("animation").get<std::string>() != "static";
+    const VoronoiCausticsOptions& o = ctx.options<VoronoiCausticsOptions>();
+    bool full = o.voronoi.fullSearch, animated = o.voronoi.animated();
     const Value& p = ctx.input("p");
     double k = ctx.scalar("scale"), jitter = ctx.scalar("jitter");
     double qx = p[0] * k, qy = p[1] * k;
-    double c = layerReference(qx, qy, jitter, evalVoronoiPhase(ctx, 1.0), animated, full);
-    if (ctx.option("layers").get<std::string>() == "2") {
+    double c = layerReference(qx, qy, jitter, evalVoronoiPhase(ctx, o.voronoi, 1.0), animated, full);
+    if (o.twoLayers) {
       double c2 = layerReference(qx * kLayer2Scale + kLayer2Offset, qy * kLayer2Scale + kLayer2Offset, jitter,
-                                 evalVoronoiPhase(ctx, kLayer2Speed), animated, full);
-      std::string mode = ctx.option("combine").get<std::string>();
-      c = mode == "average" ? 0.5 * (c + c2) : mode == "min" ? std::min(c, c2) : c * c2;
+                                 evalVoronoiPhase(ctx, o.voronoi, kLayer2Speed), animated, full);
+      c = o.combine == CausticsCombine::Average ? 0.5 * (c + c2) : o.combine == CausticsCombine::Min ? std::min(c, c2) : c * c2;
     }
     ctx.output(0, Value::scalar(ctx.scalar("intensity") * c));
   };

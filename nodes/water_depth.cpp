@@ -12,6 +12,15 @@
 
 namespace wg::nodes {
 
+namespace {
+
+struct WaterDepthOptions {
+  bool vertical;  // the vertical thickness rather than along the view ray
+};
+WaterDepthOptions parseWaterDepthOptions(const OptionReader& o) { return {o.is("measure", "vertical")}; }
+
+}  // namespace
+
 NodeSpec linearizeDepthNode() {
   NodeSpec s;
   s.type = "linearize_depth";
@@ -82,6 +91,7 @@ NodeSpec waterDepthNode() {
                ports::fixed("surface_distance", Type::Float, "linear view depth of the water surface")};
   s.options = {ports::choice("measure", {"view_ray", "vertical"}, "view_ray",
                              "distance along the view ray, or its vertical component (see formula)")};
+  s.parseOptions = optionParser(parseWaterDepthOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {"scene_depth"};
@@ -99,7 +109,7 @@ NodeSpec waterDepthNode() {
     std::string factor = EmitContext::call(
         ctx.inputFact("view").normalized ? "wg_water_depth_ray_factor_unit_view" : "wg_water_depth_ray_factor",
         {ctx.builtin(Builtin::View), view});
-    bool vertical = ctx.option("measure").get<std::string>() == "vertical";
+    bool vertical = ctx.options<WaterDepthOptions>().vertical;
     std::string v = vertical ? "abs(" + EmitContext::call("wg_safe_normalize_vec3", {view}) + ".y)" : "1.0";
     ctx.output(0, EmitContext::call("wg_water_depth_thickness", {scene, surface, factor, v}));
     ctx.output(1, scene);
@@ -112,7 +122,7 @@ NodeSpec waterDepthNode() {
     double surface = linearizeDepthReference(env.fragDepth[0], nf[0], nf[1]);
     const Value& view = ctx.input("view");
     double factor = waterDepthRayFactorReference(env.view, view);
-    double v = ctx.option("measure").get<std::string>() == "vertical" ? std::abs(glsl::safeNormalize(view)[1]) : 1.0;
+    double v = ctx.options<WaterDepthOptions>().vertical ? std::abs(glsl::safeNormalize(view)[1]) : 1.0;
     ctx.output(0, Value::scalar(waterDepthThicknessReference(scene, surface, factor, v)));
     ctx.output(1, Value::scalar(scene));
     ctx.output(2, Value::scalar(surface));

@@ -1,8 +1,8 @@
 #pragma once
 // Shared helpers of the "waves" and "flow" node families (gerstner_waves, trochoid_wave,
 // sine_normals, ripple_normals, normal_map_scroll, normal_from_height, dudv_distortion,
-// flow_map): reading an integer option, the double-precision time phase that
-// mirrors EmitContext::timePhase, and a tiny vec3 for the references.
+// flow_map): the double-precision time phase that mirrors EmitContext::timePhase, and a
+// tiny vec3 for the references.
 #include <cmath>
 #include <string>
 
@@ -12,8 +12,6 @@
 namespace wg::nodes::waves {
 
 inline constexpr double kTwoPi = 6.283185307179586476925286766559;
-
-inline int integerOptionValue(const nlohmann::json& v) { return static_cast<int>(std::lround(v.get<double>())); }
 
 // What the runtime uploads for ctx.timePhase(omega): mod(omega * t, 2 pi) in double.
 inline double timePhase(const EvalContext& ctx, double omega) {

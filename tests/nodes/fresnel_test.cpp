@@ -54,7 +54,7 @@ TEST(Fresnel, SchlickStaysWithinSixHundredthsOfExact) {
   for (int i = 0; i <= 9000; ++i) {
     double c = std::cos(rad(i / 100.0));
     worstAbove = std::max(worstAbove, std::fabs(nodes::fresnelSchlick(c, f0) - nodes::fresnelExact(c, 1.0, n)));
-    nodes::FresnelSetup below{"schlick", true, n, false};
+    nodes::FresnelSetup below{nodes::FresnelModel::Schlick, true, n, false};
     worstBelow = std::max(worstBelow, std::fabs(nodes::fresnelReference(below, c, f0, 2) - nodes::fresnelExact(c, n, 1.0)));
   }
   EXPECT_LE(worstAbove, 0.06);

@@ -1,0 +1,164 @@
+// Typed node options (core/node_options.h) and the checks around them: a node's options
+// are parsed once into its struct, mistakes in a parse function or a hard case fail when
+// the node is registered, and the CPU reference refuses names a node does not have.
+#include <gtest/gtest.h>
+
+#include "codegen/cpu_backend.h"
+#include "core/diagnostic.h"
+#include "core/graph_io.h"
+#include "core/registry.h"
+#include "core/resolve.h"
+#include "nodes/fresnel_reference.h"
+#include "nodes/port_builders.h"
+#include "nodes/registry.h"
+
+namespace wg {
+namespace {
+
+enum class Shape { Round, Square };
+struct ToyOptions {
+  Shape shape;
+  double size;
+  bool on;
+};
+
+ToyOptions parseToy(const OptionReader& o) {
+  return {o.choice<Shape>("shape", {{"round", Shape::Round}, {"square", Shape::Square}}), o.number("size"), o.flag("on")};
+}
+
+// A minimal valid node with three options; each test breaks one thing.
+NodeSpec toyNode() {
+  NodeSpec s;
+  s.type = "toy";
+  s.summary = "a test node";
+  s.inputs = {ports::fixed("x", Type::Float, Value::scalar(1), "x")};
+  s.outputs = {ports::fixed("out", Type::Float, "out")};
+  s.options = {ports::choice("shape", {"round", "square"}, "round", "shape"), ports::number("size", 2, 0, 10, "size"),
+               ports::flag("on", false, "on")};
+  s.parseOptions = optionParser(parseToy);
+  s.emit = [](EmitContext& ctx) { ctx.output(0, ctx.input(0)); };
+  s.eval = [](EvalContext& ctx) {
+    const ToyOptions& o = ctx.options<ToyOptions>();
+    ctx.output(0, Value::scalar(ctx.input(0)[0] * o.size + (o.shape == Shape::Square ? 100 : 0) + (o.on ? 1000 : 0)));
+  };
+  return s;
+}
+
+std::string registrationError(NodeSpec s) {
+  Registry r;
+  try {
+    r.add(std::move(s));
+  } catch (const std::logic_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(NodeOptions, ParsedFromTheSpecDefaultsAndTheGivenValues) {
+  NodeSpec s = toyNode();
+  auto defaults = parseOptions(s, completeOptions(s, nlohmann::json::object()));
+  EXPECT_EQ(defaults->as<ToyOptions>().shape, Shape::Round);
+  EXPECT_EQ(defaults->as<ToyOptions>().size, 2);
+  auto given = parseOptions(s, completeOptions(s, {{"shape", "square"}, {"on", true}}));
+  EXPECT_EQ(given->as<ToyOptions>().shape, Shape::Square);
+  EXPECT_TRUE(given->as<ToyOptions>().on);
+  EXPECT_THROW(given->as<nodes::FresnelSetup>(), std::logic_error);  // not the toy's struct
+}
+
+TEST(NodeOptions, AValidToyNodeRegisters) { EXPECT_EQ(registrationError(toyNode()), ""); }
+
+TEST(NodeOptions, ReadingAnUndeclaredOptionFailsAtRegistration) {
+  NodeSpec s = toyNode();
+  s.parseOptions = optionParser<ToyOptions>([](const OptionReader& o) -> ToyOptions {
+    return {Shape::Round, o.number("sise"), o.flag("on")};
+  });
+  EXPECT_NE(registrationError(std::move(s)).find("does not declare: 'sise'"), std::string::npos);
+}
+
+TEST(NodeOptions, AnOptionTheParseNeverReadsFailsAtRegistration) {
+  NodeSpec s = toyNode();
+  s.parseOptions = optionParser<ToyOptions>([](const OptionReader& o) -> ToyOptions {
+    return {o.is("shape", "square") ? Shape::Square : Shape::Round, o.number("size"), false};
+  });
+  EXPECT_NE(registrationError(std::move(s)).find("does not read option 'on'"), std::string::npos);
+}
+
+TEST(NodeOptions, ComparingWithAChoiceTheOptionLacksFailsAtRegistration) {
+  NodeSpec s = toyNode();
+  s.parseOptions = optionParser<ToyOptions>([](const OptionReader& o) -> ToyOptions {
+    return {o.is("shape", "sqaure") ? Shape::Square : Shape::Round, o.number("size"), o.flag("on")};
+  });
+  EXPECT_NE(registrationError(std::move(s)).find("'sqaure', which is not one of its choices"), std::string::npos);
+}
+
+TEST(NodeOptions, AChoiceMappingMissingAChoiceFailsAtRegistration) {
+  NodeSpec s = toyNode();
+  s.parseOptions = optionParser<ToyOptions>([](const OptionReader& o) -> ToyOptions {
+    return {o.choice<Shape>("shape", {{"round", Shape::Round}}), o.number("size"), o.flag("on")};
+  });
+  EXPECT_NE(registrationError(std::move(s)).find("does not name each of its choices"), std::string::npos);
+}
+
+TEST(NodeOptions, ReadingAnOptionAsAnotherKindFailsAtRegistration) {
+  NodeSpec s = toyNode();
+  s.parseOptions = optionParser<ToyOptions>([](const OptionReader& o) -> ToyOptions {
+    return {Shape::Round, static_cast<double>(o.integer("size")), o.flag("on") || o.is("shape", "round")};
+  });
+  EXPECT_NE(registrationError(std::move(s)).find("read as another kind"), std::string::npos);
+}
+
+TEST(NodeOptions, OptionsWithoutAParseFunctionFailAtRegistration) {
+  NodeSpec s = toyNode();
+  s.parseOptions = nullptr;
+  EXPECT_NE(registrationError(std::move(s)).find("without a parseOptions"), std::string::npos);
+}
+
+TEST(NodeOptions, AHardCaseNamingAPortOrOptionTheNodeLacksFailsAtRegistration) {
+  NodeSpec s = toyNode();
+  s.hardCases = {{"misspelt input", {{"xx", Value::scalar(1)}}, {}, "", 0, 1}};
+  EXPECT_NE(registrationError(s).find("hard case 'misspelt input': no input 'xx'"), std::string::npos);
+  s.hardCases = {{"misspelt option", {}, {{"shap", "square"}}, "", 0, 1}};
+  EXPECT_NE(registrationError(s).find("no option 'shap'"), std::string::npos);
+  s.hardCases = {{"bad value", {}, {{"shape", "triangle"}}, "", 0, 1}};
+  EXPECT_NE(registrationError(s).find("'triangle' is not one of"), std::string::npos);
+  s.hardCases = {{"misspelt output", {}, {}, "", 0, 1, "outt"}};
+  EXPECT_NE(registrationError(s).find("no output 'outt'"), std::string::npos);
+}
+
+TEST(NodeOptions, TheCpuReferenceRefusesNamesTheNodeLacks) {
+  NodeSpec s = toyNode();
+  EvalEnvironment env;
+  EXPECT_EQ(evaluateNode(s, {{"shape", "square"}}, {{"x", Value::scalar(3)}}, env)[0][0], 106);
+  try {
+    evaluateNode(s, nlohmann::json::object(), {{"xx", Value::scalar(3)}}, env);
+    ADD_FAILURE() << "a misspelt input was evaluated";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "toy: no input 'xx'; it has: x");
+  }
+  try {
+    evaluateNode(s, {{"shap", "square"}}, {}, env);
+    ADD_FAILURE() << "a misspelt option was evaluated";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_STREQ(e.what(), "toy: no option 'shap'; it has: shape, size, on");
+  }
+  EXPECT_THROW(evaluateNode(s, {{"size", 11}}, {}, env), std::invalid_argument);  // above its maximum
+}
+
+TEST(NodeOptions, ResolveParsesEachOpsOptionsOnce) {
+  Diagnostics diags;
+  auto graph = parseGraph(R"({"version": 1, "name": "g", "nodes": [
+      {"id": "f", "type": "fresnel", "options": {"model": "exact", "ior": 1.5}}],
+    "outputs": {"fragment": {"color": "f.reflectance"}}})",
+                          "g.json", diags);
+  ASSERT_TRUE(graph) << diags.all().front().message;
+  auto program = resolveGraph(*graph, defaultRegistry(), diags);
+  ASSERT_TRUE(program) << diags.all().front().message;
+  ASSERT_EQ(program->ops.size(), 1u);
+  const auto& o = program->ops[0].parsedOptions->as<nodes::FresnelSetup>();
+  EXPECT_EQ(o.model, nodes::FresnelModel::Exact);
+  EXPECT_EQ(o.ior, 1.5);
+  EXPECT_FALSE(o.fromBelow);  // the spec's default direction
+}
+
+}  // namespace
+}  // namespace wg
