@@ -1,4 +1,5 @@
-// The node registry: one line per node type.
+// The node registry: every node of nodes/node_list.def, each checked as it is added
+// (core/registry.cpp's checkSpec).
 #include "nodes/registry.h"
 
 #include "nodes/node_library.h"
@@ -10,51 +11,9 @@ const Registry& defaultRegistry() {
     Registry r;
     using namespace nodes;
     for (auto make : {
-             // inputs
-             uvNode, worldPositionNode, normalNode, viewDirectionNode, cameraPositionNode, timeNode, screenUvNode, sunDirectionNode,
-             // math
-             addNode, subNode, mulNode, divNode, mixNode, clampNode, saturateNode, smoothstepNode, powNode, dotNode,
-             crossNode, normalizeNode, lengthNode, sinNode, cosNode, absNode, minNode, maxNode, swizzleNode,
-             splitNode, combineNode, remapNode,
-             // optics
-             fresnelNode,
-             // depth and colour
-             depthTintNode,
-             // output
-             vertexOutputNode,
-             // optics (reflect, refract, lighting)
-             reflectDirNode,
-             refractDirNode,
-             lambertNode,
-             blinnPhongNode,
-             phongSpecularNode,
-             ggxSpecularNode,
-             // depth and colour (depth, absorption, haze, colour variation)
-             linearizeDepthNode,
-             waterDepthNode,
-             absorptionNode,
-             hazeNode,
-             colorVariationNode,
-             // scattering
-             subsurfaceNode,
-             // waves
-             gerstnerWavesNode,
-             trochoidWaveNode,
-             sineNormalsNode,
-             rippleNormalsNode,
-             normalMapScrollNode,
-             normalFromHeightNode,
-             dudvDistortionNode,
-             // flow
-             flowMapNode,
-             // noise
-             hashNode, valueNoiseNode, voronoiNode, fbmNode,
-             // caustics
-             voronoiCausticsNode, textureCausticsNode,
-             // foam
-             edgeFoamNode, crestFoamNode, coastalFoamNode, shoreWavesNode,
-             // screen space
-             sceneDepthNode, sceneColorNode, planarReflectionNode, planarRefractionNode, cubemapReflectionNode, ssrNode, underwaterNode,
+#define WG_NODE(factory) factory,
+#include "nodes/node_list.def"
+#undef WG_NODE
          })
       r.add(make());
     return r;
