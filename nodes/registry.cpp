@@ -1,7 +1,8 @@
 // The node registry: every node of nodes/node_list.def, each checked as it is added
-// (core/registry.cpp's checkSpec).
+// (core/registry.cpp's checkSpec, and checkGlslCalls against the GLSL library).
 #include "nodes/registry.h"
 
+#include "nodes/glsl_call_check.h"
 #include "nodes/node_library.h"
 
 namespace wg {
@@ -14,8 +15,12 @@ const Registry& defaultRegistry() {
 #define WG_NODE(factory) factory,
 #include "nodes/node_list.def"
 #undef WG_NODE
-         })
-      r.add(make());
+         }) {
+      NodeSpec spec = make();
+      std::string type = spec.type;
+      r.add(std::move(spec));  // checkSpec first: the call check parses the hard cases' options
+      checkGlslCalls(*r.find(type), GlslLibrary::builtin());
+    }
     return r;
   }();
   return registry;

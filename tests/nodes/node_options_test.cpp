@@ -1,6 +1,7 @@
 // Typed node options (core/node_options.h) and the checks around them: a node's options
 // are parsed once into its struct, mistakes in a parse function or a hard case fail when
-// the node is registered, and the CPU reference refuses names a node does not have.
+// the node is registered, the CPU reference refuses names a node does not have, and the
+// registration check finds GLSL calls the library does not define.
 #include <gtest/gtest.h>
 
 #include "codegen/cpu_backend.h"
@@ -9,6 +10,7 @@
 #include "core/registry.h"
 #include "core/resolve.h"
 #include "nodes/fresnel_reference.h"
+#include "nodes/glsl_call_check.h"
 #include "nodes/port_builders.h"
 #include "nodes/registry.h"
 
@@ -158,6 +160,43 @@ TEST(NodeOptions, ResolveParsesEachOpsOptionsOnce) {
   EXPECT_EQ(o.model, nodes::FresnelModel::Exact);
   EXPECT_EQ(o.ior, 1.5);
   EXPECT_FALSE(o.fromBelow);  // the spec's default direction
+}
+
+// A toy whose emit calls `fn` only under `when`, to show the check reaches each variant.
+NodeSpec callingToy(std::function<std::string(EmitContext&)> fn) {
+  NodeSpec s = toyNode();
+  s.emit = [fn](EmitContext& ctx) { ctx.output(0, EmitContext::call(fn(ctx), {ctx.input(0)})); };
+  return s;
+}
+
+TEST(GlslCallCheck, FindsAFunctionTheLibraryLacks) {
+  const GlslLibrary& lib = GlslLibrary::builtin();
+  EXPECT_NO_THROW(checkGlslCalls(callingToy([](EmitContext&) { return "wg_safe_normalize_vec3"; }), lib));
+  try {
+    checkGlslCalls(callingToy([](EmitContext&) { return "wg_safe_normalize_vec"; }), lib);
+    ADD_FAILURE() << "a missing function passed";
+  } catch (const std::logic_error& e) {
+    EXPECT_NE(std::string(e.what()).find("emit calls 'wg_safe_normalize_vec'"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GlslCallCheck, ReachesNonDefaultChoicesAndFactVariants) {
+  const GlslLibrary& lib = GlslLibrary::builtin();
+  EXPECT_THROW(checkGlslCalls(callingToy([](EmitContext& ctx) {
+                                return ctx.options<ToyOptions>().shape == Shape::Square ? "wg_missing" : "wg_safe_normalize_vec3";
+                              }),
+                              lib),
+               std::logic_error);
+  EXPECT_THROW(checkGlslCalls(callingToy([](EmitContext& ctx) {
+                                return ctx.options<ToyOptions>().on ? "wg_missing" : "wg_safe_normalize_vec3";
+                              }),
+                              lib),
+               std::logic_error);
+  EXPECT_THROW(checkGlslCalls(callingToy([](EmitContext& ctx) {
+                                return ctx.inputFact(0).atLeast(1) ? "wg_missing" : "wg_safe_normalize_vec3";
+                              }),
+                              lib),
+               std::logic_error);
 }
 
 }  // namespace
