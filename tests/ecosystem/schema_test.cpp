@@ -35,7 +35,7 @@ TEST(Schema, CheckedInFileMatchesTheGenerator) {
   ASSERT_EQ(r.exit, 0) << r.err;
   ASSERT_FALSE(r.out.empty());
   EXPECT_TRUE(r.out == test::readFile(schemaPath()))
-      << "docs/watergraph.schema.json is out of date; regenerate it with: watergraph schema -o docs/watergraph.schema.json";
+      << "docs/watergraph.schema.json is out of date; regenerate it with: cmake --build build --target docs";
 }
 
 TEST(Schema, OutputOptionWritesTheSameBytes) {
