@@ -13,6 +13,7 @@
 
 #include "core/graph_io.h"
 #include "core/json_source.h"
+#include "core/load_limits.h"
 #include "core/number_format.h"
 #include "core/suggest.h"
 
@@ -21,11 +22,6 @@ namespace wg {
 namespace {
 
 using nlohmann::json;
-
-constexpr std::size_t kMaxFileBytes = 16u * 1024u * 1024u;
-constexpr std::size_t kMaxNodes = 200000;
-constexpr std::size_t kMaxStringBytes = 4096;
-constexpr double kFloat32Max = 3.4028234663852886e38;
 
 const char* kIdentifierRule =
     "(letters, digits and '_', not starting with a digit, at most 64)";
@@ -374,6 +370,7 @@ class Loader {
   void loadPresets(const json& presets, Graph& g) {
     std::vector<std::string> paramNames;
     for (const auto& p : g.parameters) paramNames.push_back(p.name);
+    NameSuggester parameterNames(std::move(paramNames));
     for (const auto& name : members(presets, "/presets")) {
       const std::string ptr = "/presets/" + jsonPointerEscape(name);
       const json& pv = presets.at(name);
@@ -394,7 +391,7 @@ class Loader {
         if (!p) {
           diags_.error(DiagCode::UnknownParameter, js_.key(vptr),
                        "preset '" + name + "' sets parameter '" + param + "', which is not declared" +
-                           didYouMean(param, paramNames));
+                           parameterNames.didYouMean(param));
           continue;
         }
         if (p->defaultValue.empty()) continue;  // the parameter itself is broken (reported)
@@ -649,6 +646,7 @@ std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& d
                 "cannot read '" + path + "': " + std::strerror(err ? err : EIO));
     return std::nullopt;
   }
+  diags.keepSource(path, text);  // for output formats that need its lines: never read twice
   return text;
 }
 
