@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -34,8 +35,9 @@ Value literalValue(const std::vector<double>& xs) {
   return v;
 }
 
-// Checks one option value against its spec; returns "" or the reason it is refused.
-std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir) {
+// Checks one option value against its spec; returns "" or the reason it is refused. A
+// texture option naming a PNG that passes fills *texture.
+std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir, TextureFile* texture) {
   switch (o.kind) {
     case OptionSpec::Kind::Enum: {
       if (!v.is_string()) return "must be one of its choices (a string)";
@@ -63,7 +65,7 @@ std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std:
       return o.validate ? o.validate(v) : "";
     case OptionSpec::Kind::Texture: {
       if (!v.is_string()) return "must be a string: \"builtin:<name>\" or a .png path relative to the graph";
-      std::string why = checkTextureSource(v.get<std::string>(), graphDir);
+      std::string why = checkTextureSource(v.get<std::string>(), graphDir, texture);
       return why.empty() ? "" : "is not usable: " + why;
     }
   }
@@ -160,12 +162,24 @@ class Resolver {
                        n.id, optionLabel(opt.name));
           continue;
         }
-        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, program_.directory);
+        TextureFile texture;
+        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, program_.directory, &texture);
+        if (why.empty()) why = chargeTextureBudget(texture);
         if (!why.empty())
           diags_.error(DiagCode::InvalidOption, opt.where, "option '" + opt.name + "' " + why, n.id,
                        optionLabel(opt.name));
       }
     }
+  }
+
+  // All of a graph's PNG textures together stay within kMaxGraphTextureTexels (each file
+  // counted once, however many nodes sample it): "" or why the one that overflows it is refused.
+  std::string chargeTextureBudget(const TextureFile& texture) {
+    if (texture.realPath.empty() || !texturesCounted_.insert(texture.realPath).second) return "";
+    textureTexels_ += texture.width * texture.height;
+    if (textureTexels_ <= kMaxGraphTextureTexels) return "";
+    return "is not usable: the graph's PNG textures would hold " + std::to_string(textureTexels_) +
+           " texels together; the limit per graph is " + std::to_string(kMaxGraphTextureTexels);
   }
 
   // Checks a reference to another node and returns its index, or -1 after reporting.
@@ -474,6 +488,8 @@ class Resolver {
   std::unordered_map<std::string, int> nodeIndex_;
   std::unordered_map<std::string, int> paramIndex_;
   std::optional<NameSuggester> nodeIds_, parameterNames_;  // made on the first unknown name
+  std::set<std::string> texturesCounted_;                  // real paths of PNG textures
+  long long textureTexels_ = 0;
   std::vector<int> opOfNode_;  // by node index: its op, or -1
   // Node i's inputs[k] reads node inputNode_[inputBase_[i] + k] (-1: not a node output).
   std::vector<size_t> inputBase_;
