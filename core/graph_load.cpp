@@ -10,6 +10,7 @@
 #include <initializer_list>
 #include <string>
 #include <system_error>
+#include <unordered_map>
 
 #include "core/graph_io.h"
 #include "core/json_source.h"
@@ -369,7 +370,11 @@ class Loader {
   // parameter and fits its type and range (checked after the parameters are loaded).
   void loadPresets(const json& presets, Graph& g) {
     std::vector<std::string> paramNames;
-    for (const auto& p : g.parameters) paramNames.push_back(p.name);
+    std::unordered_map<std::string_view, const Parameter*> parameterByName;  // not a scan per value
+    for (const auto& p : g.parameters) {
+      paramNames.push_back(p.name);
+      parameterByName.emplace(p.name, &p);
+    }
     NameSuggester parameterNames(std::move(paramNames));
     for (const auto& name : members(presets, "/presets")) {
       const std::string ptr = "/presets/" + jsonPointerEscape(name);
@@ -387,7 +392,8 @@ class Loader {
       }
       for (const auto& param : members(pv, ptr)) {
         const std::string vptr = ptr + "/" + jsonPointerEscape(param);
-        const Parameter* p = g.findParameter(param);
+        auto found = parameterByName.find(param);
+        const Parameter* p = found == parameterByName.end() ? nullptr : found->second;
         if (!p) {
           diags_.error(DiagCode::UnknownParameter, js_.key(vptr),
                        "preset '" + name + "' sets parameter '" + param + "', which is not declared" +
