@@ -10,7 +10,7 @@
 namespace wg::rt {
 
 // Triangles one tessellated draw of the water may generate at most.
-inline constexpr std::int64_t kMaxTessellatedTrianglesPerDraw = std::int64_t{1} << 22;  // 4,194,304
+inline constexpr std::int64_t kMaxTessellatedTrianglesPerDraw = std::int64_t{1} << 20;  // 1,048,576
 
 // The most triangles a grid of quadsPerSide² quads (two triangle patches each) generates
 // with every level at `factor` (a triangle patch at level L is at most 1.5·L² triangles).
