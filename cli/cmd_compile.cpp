@@ -154,7 +154,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     outcome.total = static_cast<int>(graph->nodes.size());
   }
   if (result && args.textures) {
-    auto pngs = textureFiles(*result, outcome.name, diags);
+    auto pngs = textureFiles(*result, outcome.name, diags, &*graph);
     if (diags.hasErrors()) result.reset();
     else result->files.insert(result->files.end(), pngs.begin(), pngs.end());
   }

@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <cctype>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -33,14 +33,18 @@ std::string pathToUri(const std::string& path) {
 }
 
 // Diagnostics count columns in bytes; SARIF's default columnKind is UTF-16 code units.
-// Converts by reading the line from the file; keeps the byte column if it cannot.
+// Converts from the text the file was parsed from (the one snapshot that was read: the file
+// is never opened again, it may be a FIFO or have changed since); keeps the byte column
+// when there is no such text.
 class ColumnConverter {
  public:
+  explicit ColumnConverter(const Diagnostics& diags) : diags_(diags) {}
+
   int utf16Column(const std::string& file, int line, int byteCol) {
     if (line <= 0 || byteCol <= 1) return byteCol;
-    const std::vector<std::string>& lines = linesOf(file);
+    const std::vector<std::string_view>& lines = linesOf(file);
     if (static_cast<size_t>(line) > lines.size()) return byteCol;
-    const std::string& text = lines[static_cast<size_t>(line - 1)];
+    std::string_view text = lines[static_cast<size_t>(line - 1)];
     int units = 0;
     size_t i = 0;
     size_t end = std::min(text.size(), static_cast<size_t>(byteCol - 1));
@@ -55,16 +59,23 @@ class ColumnConverter {
   }
 
  private:
-  const std::vector<std::string>& linesOf(const std::string& file) {
+  const std::vector<std::string_view>& linesOf(const std::string& file) {
     auto it = cache_.find(file);
     if (it != cache_.end()) return it->second;
-    std::vector<std::string> lines;
-    std::ifstream in(file, std::ios::binary);
-    std::string l;
-    while (in && std::getline(in, l)) lines.push_back(l);
+    std::vector<std::string_view> lines;
+    if (const std::string* text = diags_.source(file)) {
+      std::string_view rest = *text;
+      while (!rest.empty()) {
+        size_t nl = rest.find('\n');
+        lines.push_back(rest.substr(0, nl));
+        if (nl == std::string_view::npos) break;
+        rest.remove_prefix(nl + 1);
+      }
+    }
     return cache_.emplace(file, std::move(lines)).first->second;
   }
-  std::map<std::string, std::vector<std::string>> cache_;
+  const Diagnostics& diags_;
+  std::map<std::string, std::vector<std::string_view>> cache_;
 };
 
 const char* sarifLevel(Severity s) {
@@ -90,7 +101,7 @@ nlohmann::json sarifLog(const Diagnostics& diags) {
                      {"help", {{"text", "See the error code table in docs/graph-format.md."}}},
                      {"defaultConfiguration", {{"level", "error"}}}});
   }
-  ColumnConverter columns;
+  ColumnConverter columns(diags);
   nlohmann::json results = nlohmann::json::array();
   for (const auto& d : diags.sorted()) {
     std::string text = d.message;

@@ -1,6 +1,7 @@
 #include "codegen/emit_glsl.h"
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <map>
 #include <optional>
@@ -40,7 +41,7 @@ std::string literalOf(const Value& v) {
   std::string s(typeName(v.type));
   s += '(';
   bool same = true;
-  for (int i = 1; i < v.size(); ++i) same &= v[i] == v[0];
+  for (int i = 1; i < v.size(); ++i) same &= v[i] == v[0] && std::signbit(v[i]) == std::signbit(v[0]);  // -0.0 is not 0.0
   if (same) return s + formatGlslFloat(v[0]) + ')';
   for (int i = 0; i < v.size(); ++i) s += (i ? ", " : "") + formatGlslFloat(v[i]);
   return s + ')';

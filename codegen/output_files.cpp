@@ -4,26 +4,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "codegen/temp_file.h"
+
 namespace wg {
-namespace {
-
-std::string tempNameFor(const std::filesystem::path& target) {
-  return (target.parent_path() / ("." + target.filename().string() + ".tmp" + std::to_string(getpid()))).string();
-}
-
-bool writeWhole(const std::string& path, const std::string& contents) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) return false;
-  out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
-  out.flush();
-  return static_cast<bool>(out);
-}
-
-}  // namespace
 
 bool writeOutputFiles(const std::string& dir, const std::vector<OutputFile>& files, Diagnostics& diags) {
   std::error_code ec;
@@ -38,16 +24,15 @@ bool writeOutputFiles(const std::string& dir, const std::vector<OutputFile>& fil
   };
   for (const auto& f : files) {
     std::filesystem::path target = std::filesystem::path(dir) / f.name;
-    std::string tmp = tempNameFor(target);
-    if (!writeWhole(tmp, f.contents)) {
-      int err = errno;
-      std::remove(tmp.c_str());
+    int err = 0;
+    auto tmp = writeTemporaryBeside(target, f.contents, &err);
+    if (!tmp) {
       cleanup();
       diags.error(DiagCode::FileWrite, SourceRef{target.string(), 0, 0},
-                  std::string("cannot write output file: ") + std::strerror(err ? err : EIO));
+                  std::string("cannot write output file: ") + std::strerror(err));
       return false;
     }
-    staged.emplace_back(tmp, target.string());
+    staged.emplace_back(*tmp, target.string());
   }
   // A name that cannot be replaced by a file (a folder in the way) would fail its rename
   // after earlier files had been renamed: refuse before renaming any.
@@ -95,13 +80,13 @@ bool writeFileAtomically(const std::string& path, const std::string& contents, D
       return false;
     }
   }
-  std::string tmp = tempNameFor(target);
-  if (!writeWhole(tmp, contents)) {
-    int err = errno;
-    std::remove(tmp.c_str());
-    diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, std::string("cannot write: ") + std::strerror(err ? err : EIO));
+  int werr = 0;
+  auto written = writeTemporaryBeside(target, contents, &werr);
+  if (!written) {
+    diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, std::string("cannot write: ") + std::strerror(werr));
     return false;
   }
+  const std::string& tmp = *written;
   if (exists) ::chmod(tmp.c_str(), st.st_mode & 07777);
   if (std::rename(tmp.c_str(), target.c_str()) != 0) {
     int err = errno;

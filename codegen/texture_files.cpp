@@ -28,14 +28,27 @@ std::string encodePng(const TextureImage& img) {
   return png;
 }
 
-// The op that samples `source`: its file decides the folder a relative path is read from.
-const Op* samplingOp(const Program& program, const std::string& source) {
+// The op that samples `source` (its file decides the folder a relative path is read from),
+// and the name of the option that names it.
+const Op* samplingOp(const Program& program, const std::string& source, std::string* option) {
   for (const auto& op : program.ops) {
     if (!op.options.is_object()) continue;
     for (const auto& [key, value] : op.options.items())
-      if (value.is_string() && value.get<std::string>() == source) return &op;
+      if (value.is_string() && value.get<std::string>() == source) {
+        *option = key;
+        return &op;
+      }
   }
   return nullptr;
+}
+
+// Where the graph file names the texture: the option's value, else the node.
+SourceRef optionPosition(const Graph* graph, const Op& op, const std::string& option) {
+  if (graph)
+    if (const Node* n = graph->findNode(op.nodeId))
+      for (const auto& o : n->options)
+        if (o.name == option) return o.where;
+  return op.where;
 }
 
 }  // namespace
@@ -44,25 +57,34 @@ std::string textureFileName(const std::string& graphName, const std::string& sam
   return graphName + "." + sampler + ".png";
 }
 
-std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags) {
+std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags,
+                                     const Graph* graph) {
   std::vector<OutputFile> files;
   const auto& textures = result.manifest.value("textures", nlohmann::json::array());
   for (const auto& t : textures) {
     if (!t.contains("source")) continue;  // a scene resource: rendered by a pass, not a file
     std::string source = t.value("source", "");
     std::string sampler = t.value("name", "");
-    const Op* op = samplingOp(result.program, source);
-    SourceRef where = op ? op->where : SourceRef{};
+    std::string option;
+    const Op* op = samplingOp(result.program, source, &option);
+    SourceRef where = op ? optionPosition(graph, *op, option) : SourceRef{};
     std::string node = op ? op->nodeId : std::string();
-    std::filesystem::path file(where.file);
+    std::filesystem::path file(op ? op->where.file : std::string());
     std::string dir = file.has_parent_path() ? file.parent_path().string() : ".";
     std::string why;
     auto img = loadTexture(source, dir, &why);
-    std::string png = img ? encodePng(*img) : std::string();
-    if (!img || png.empty()) {
-      diags.error(DiagCode::FileRead, where,
-                  "texture '" + source + "' cannot be exported as " + textureFileName(graphName, sampler) + ": " +
-                      (why.empty() ? "PNG encoding failed" : why),
+    if (!img) {
+      // The graph names a texture that cannot be decoded: a fault of the graph's input, as
+      // a path outside its folder is, not of the tool's I/O.
+      diags.error(DiagCode::InvalidOption, where, "option '" + option + "' is not usable: " + why, node,
+                  "option '" + option + "'");
+      continue;
+    }
+    std::string png = encodePng(*img);
+    if (png.empty()) {
+      diags.error(DiagCode::FileWrite, where,
+                  "texture '" + source + "' cannot be exported as " + textureFileName(graphName, sampler) +
+                      ": PNG encoding failed",
                   node);
       continue;
     }

@@ -16,8 +16,10 @@ std::string textureFileName(const std::string& graphName, const std::string& sam
 
 // One PNG per manifest texture with a "source" (scene resources have none): rows top to
 // bottom as in any PNG, so the first row of the GL texture (v = 0) is the picture's bottom
-// row, exactly as a PNG source file is read. Errors (WG050) name the node that samples the
-// texture; the returned list is then incomplete and must not be written.
-std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags);
+// row, exactly as a PNG source file is read. A texture that cannot be decoded is WG030 at
+// the option naming it (at the node without `graph`), naming the node; the returned list is
+// then incomplete and must not be written.
+std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags,
+                                     const Graph* graph = nullptr);
 
 }  // namespace wg

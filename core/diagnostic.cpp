@@ -22,30 +22,48 @@ std::string codeString(DiagCode code) {
   return buf;
 }
 
+Diagnostic& Diagnostics::keep(Diagnostic d) {
+  size_t& count = perFile_[d.where.file];
+  if (count >= kMaxPerFile) {
+    LeftOut& left = leftOut_[d.where.file];
+    ++(d.severity == Severity::Error ? left.errors : left.others);
+    scratch_ = std::move(d);
+    return scratch_;
+  }
+  ++count;
+  list_.push_back(std::move(d));
+  return list_.back();
+}
+
 Diagnostic& Diagnostics::error(DiagCode code, SourceRef where, std::string message, std::string node,
                                std::string port) {
-  list_.push_back({code, Severity::Error, std::move(message), std::move(where), std::move(node),
-                   std::move(port), {}});
-  return list_.back();
+  return keep({code, Severity::Error, std::move(message), std::move(where), std::move(node), std::move(port), {}});
 }
 
 Diagnostic& Diagnostics::warning(DiagCode code, SourceRef where, std::string message,
                                  std::string node, std::string port) {
-  list_.push_back({code, Severity::Warning, std::move(message), std::move(where), std::move(node),
-                   std::move(port), {}});
-  return list_.back();
+  return keep({code, Severity::Warning, std::move(message), std::move(where), std::move(node), std::move(port), {}});
 }
 
+void Diagnostics::add(Diagnostic d) { keep(std::move(d)); }
+
 void Diagnostics::append(const Diagnostics& other) {
-  list_.insert(list_.end(), other.list_.begin(), other.list_.end());
+  for (const auto& d : other.list_) keep(d);
+  for (const auto& [file, left] : other.leftOut_) {
+    leftOut_[file].errors += left.errors;
+    leftOut_[file].others += left.others;
+  }
+  for (const auto& [file, text] : other.sources_) sources_.emplace(file, text);
 }
 
 bool Diagnostics::hasErrors() const { return errorCount() > 0; }
 
 size_t Diagnostics::errorCount() const {
-  return static_cast<size_t>(std::count_if(list_.begin(), list_.end(), [](const Diagnostic& d) {
+  size_t n = static_cast<size_t>(std::count_if(list_.begin(), list_.end(), [](const Diagnostic& d) {
     return d.severity == Severity::Error;
   }));
+  for (const auto& [file, left] : leftOut_) n += left.errors;
+  return n;
 }
 
 std::vector<Diagnostic> Diagnostics::sorted() const {
@@ -55,7 +73,24 @@ std::vector<Diagnostic> Diagnostics::sorted() const {
     if (a.where.line != b.where.line) return a.where.line < b.where.line;
     return a.where.col < b.where.col;
   });
+  for (const auto& [file, left] : leftOut_) {
+    size_t total = left.errors + left.others;
+    out.push_back({DiagCode::TooManyDiagnostics, Severity::Note,
+                   std::to_string(total) + " more diagnostic" + (total == 1 ? "" : "s") + " (" +
+                       std::to_string(left.errors) + " error" + (left.errors == 1 ? "" : "s") +
+                       ") not shown: at most " + std::to_string(kMaxPerFile) + " are reported per file",
+                   SourceRef{file, 0, 0}, {}, {}, {}});
+  }
   return out;
+}
+
+void Diagnostics::keepSource(const std::string& file, std::string text) {
+  sources_[file] = std::make_shared<const std::string>(std::move(text));
+}
+
+const std::string* Diagnostics::source(const std::string& file) const {
+  auto it = sources_.find(file);
+  return it == sources_.end() ? nullptr : it->second.get();
 }
 
 static std::string_view severityName(Severity s) {

@@ -1,6 +1,8 @@
 #pragma once
 // Diagnostics with stable codes from one catalogue (core/diagnostic_codes.def), printed
 // as `file:line:col: error: [WG029] message (node 'n', input 'p')` or as JSON.
+#include <map>
+#include <memory>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -37,23 +39,46 @@ struct Diagnostic {
   std::vector<std::string> notes;
 };
 
+// A hostile file can hold a million faults; each file keeps its first kMaxPerFile
+// diagnostics and counts the rest, which sorted() (what every output format prints) sums
+// up in one WG036 note per file.
 class Diagnostics {
  public:
+  static constexpr size_t kMaxPerFile = 1000;
+
+  // Past the cap, the returned Diagnostic is a scratch one that is not kept.
   Diagnostic& error(DiagCode code, SourceRef where, std::string message, std::string node = {},
                     std::string port = {});
   Diagnostic& warning(DiagCode code, SourceRef where, std::string message, std::string node = {},
                       std::string port = {});
-  void add(Diagnostic d) { list_.push_back(std::move(d)); }
+  void add(Diagnostic d);
   void append(const Diagnostics& other);
   bool hasErrors() const;
+  // Counts the errors left out past the cap too.
   size_t errorCount() const;
+  // The diagnostics kept (at most kMaxPerFile per file), without the WG036 notes.
   const std::vector<Diagnostic>& all() const { return list_; }
   bool empty() const { return list_.empty(); }
-  // Stable order for printing: by file, line, column, then insertion.
+  // Stable order for printing: by file, line, column, then insertion; then, for each file
+  // over the cap, the note saying how many were left out.
   std::vector<Diagnostic> sorted() const;
 
+  // The text a graph file was parsed from, kept so that output formats that need the
+  // file's lines (SARIF's UTF-16 columns) use the one snapshot that was read instead of
+  // opening the file again (it may be a FIFO, or have changed). nullptr when not kept.
+  void keepSource(const std::string& file, std::string text);
+  const std::string* source(const std::string& file) const;
+
  private:
+  Diagnostic& keep(Diagnostic d);
+  struct LeftOut {
+    size_t errors = 0, others = 0;
+  };
   std::vector<Diagnostic> list_;
+  std::map<std::string, size_t> perFile_;
+  std::map<std::string, LeftOut> leftOut_;
+  std::map<std::string, std::shared_ptr<const std::string>> sources_;
+  Diagnostic scratch_;
 };
 
 std::string formatText(const Diagnostic& d);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/load_limits.h"
 #include "core/number_format.h"
 
 namespace wg {
@@ -20,9 +21,11 @@ std::string describe(const InputTarget& t) {
   return t.node.empty() ? "output '" + t.port + "'" : "input '" + t.port + "' of node '" + t.node + "'";
 }
 
-bool allFinite(const std::vector<double>& v) {
-  return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
-}
+// What the loader accepts of a number: finite in float32 (a double that is not would be
+// saved, and the saved file refused with WG010).
+bool allFitFloat32(const std::vector<double>& v) { return std::all_of(v.begin(), v.end(), fitsFloat32); }
+
+bool positionFits(const std::array<double, 2>& p) { return fitsFloat32(p[0]) && fitsFloat32(p[1]); }
 
 }  // namespace
 
@@ -50,6 +53,7 @@ std::string GraphEditor::checkTarget(const InputTarget& target) const {
   }
   const Node* n = graph_.findNode(target.node);
   if (!n) return "no node '" + target.node + "'";
+  if (!isIdentifier(target.port)) return "'" + target.port + "' is not an input name";
   if (registry_) {
     const NodeSpec* spec = registry_->find(n->type);
     if (spec && spec->inputIndex(target.port) < 0)
@@ -95,7 +99,7 @@ std::string GraphEditor::setParameterDefault(const std::string& name, const std:
   if (value.size() != n)
     return "parameter '" + name + "' is a " + std::string(typeName(it->type)) + ": it takes " + std::to_string(n) +
            " number(s), not " + std::to_string(value.size());
-  if (!allFinite(value)) return "parameter '" + name + "': values must be finite";
+  if (!allFitFloat32(value)) return "parameter '" + name + "': values must be finite in float32 range";
   for (double x : value) {
     if (it->min && x < *it->min) return "parameter '" + name + "': " + formatNumber(x) + " is below its min " + formatNumber(*it->min);
     if (it->max && x > *it->max) return "parameter '" + name + "': " + formatNumber(x) + " is above its max " + formatNumber(*it->max);
@@ -126,7 +130,7 @@ std::string GraphEditor::applyPreset(const std::string& name) {
 std::string GraphEditor::setInputConstant(const InputTarget& target, const std::vector<double>& value) {
   if (std::string why = checkTarget(target); !why.empty()) return why;
   if (value.empty() || value.size() > 4) return describe(target) + ": a constant has 1 to 4 numbers";
-  if (!allFinite(value)) return describe(target) + ": values must be finite";
+  if (!allFitFloat32(value)) return describe(target) + ": values must be finite in float32 range";
   InputSource s;
   s.kind = InputSource::Kind::Literal;
   s.literal = value;
@@ -150,6 +154,9 @@ std::string GraphEditor::setOption(const std::string& node, const std::string& n
   const Node* n = graph_.findNode(node);
   if (!n) return "no node '" + node + "'";
   std::string what = "option '" + name + "' of node '" + node + "'";
+  // The option's name is a key of the file, its value a value of it: both keep its limits.
+  if (name.size() > kMaxStringBytes) return "an option name is longer than " + std::to_string(kMaxStringBytes) + " bytes";
+  if (std::string why = checkJsonLimits(value, kOptionValueDepth); !why.empty()) return what + ": " + why;
   if (registry_) {
     if (const NodeSpec* spec = registry_->find(n->type)) {
       int index = spec->optionIndex(name);
@@ -165,7 +172,7 @@ std::string GraphEditor::setOption(const std::string& node, const std::string& n
           break;
         case OptionSpec::Kind::Number:
         case OptionSpec::Kind::Integer: {
-          if (!value.is_number() || !std::isfinite(value.get<double>())) return what + " must be a finite number";
+          if (!value.is_number() || !fitsFloat32(value.get<double>())) return what + " must be a finite number";
           double x = value.get<double>();
           if (o.kind == OptionSpec::Kind::Integer && std::floor(x) != x) return what + " must be a whole number";
           if ((o.min && x < *o.min) || (o.max && x > *o.max)) return what + " is out of its range";
@@ -197,6 +204,7 @@ std::string GraphEditor::connect(const std::string& fromNode, const std::string&
   if (std::string why = checkTarget(target); !why.empty()) return why;
   const Node* from = graph_.findNode(fromNode);
   if (!from) return "no node '" + fromNode + "'";
+  if (!isIdentifier(fromPort)) return "'" + fromPort + "' is not an output name";
   if (registry_) {
     const NodeSpec* spec = registry_->find(from->type);
     if (spec && spec->outputIndex(fromPort) < 0)
@@ -259,7 +267,8 @@ std::string GraphEditor::addNode(const std::string& type, const std::string& id,
   }
   if (!isIdentifier(newId)) return "'" + newId + "' is not a valid node id ([A-Za-z_][A-Za-z0-9_]*, at most 64)";
   if (graph_.findNode(newId)) return "a node '" + newId + "' already exists";
-  if (!std::isfinite(position[0]) || !std::isfinite(position[1])) return "a node position must be finite";
+  if (!positionFits(position)) return "a node position must be finite in float32 range";
+  if (graph_.nodes.size() >= kMaxNodes) return "a graph has at most " + std::to_string(kMaxNodes) + " nodes";
   record("add node '" + newId + "'", "");
   Node n;
   n.id = newId;
@@ -283,7 +292,7 @@ std::string GraphEditor::deleteNode(const std::string& id) {
 
 std::string GraphEditor::moveNode(const std::string& id, std::array<double, 2> position) {
   if (!graph_.findNode(id)) return "no node '" + id + "'";
-  if (!std::isfinite(position[0]) || !std::isfinite(position[1])) return "a node position must be finite";
+  if (!positionFits(position)) return "a node position must be finite in float32 range";
   if (graph_.findNode(id)->editorPosition == position) return "";
   record("move node '" + id + "'", "move:" + id);
   findNode(id)->editorPosition = position;

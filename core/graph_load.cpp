@@ -10,9 +10,11 @@
 #include <initializer_list>
 #include <string>
 #include <system_error>
+#include <unordered_map>
 
 #include "core/graph_io.h"
 #include "core/json_source.h"
+#include "core/load_limits.h"
 #include "core/number_format.h"
 #include "core/suggest.h"
 
@@ -21,11 +23,6 @@ namespace wg {
 namespace {
 
 using nlohmann::json;
-
-constexpr std::size_t kMaxFileBytes = 16u * 1024u * 1024u;
-constexpr std::size_t kMaxNodes = 200000;
-constexpr std::size_t kMaxStringBytes = 4096;
-constexpr double kFloat32Max = 3.4028234663852886e38;
 
 const char* kIdentifierRule =
     "(letters, digits and '_', not starting with a digit, at most 64)";
@@ -373,7 +370,12 @@ class Loader {
   // parameter and fits its type and range (checked after the parameters are loaded).
   void loadPresets(const json& presets, Graph& g) {
     std::vector<std::string> paramNames;
-    for (const auto& p : g.parameters) paramNames.push_back(p.name);
+    std::unordered_map<std::string_view, const Parameter*> parameterByName;  // not a scan per value
+    for (const auto& p : g.parameters) {
+      paramNames.push_back(p.name);
+      parameterByName.emplace(p.name, &p);
+    }
+    NameSuggester parameterNames(std::move(paramNames));
     for (const auto& name : members(presets, "/presets")) {
       const std::string ptr = "/presets/" + jsonPointerEscape(name);
       const json& pv = presets.at(name);
@@ -390,11 +392,12 @@ class Loader {
       }
       for (const auto& param : members(pv, ptr)) {
         const std::string vptr = ptr + "/" + jsonPointerEscape(param);
-        const Parameter* p = g.findParameter(param);
+        auto found = parameterByName.find(param);
+        const Parameter* p = found == parameterByName.end() ? nullptr : found->second;
         if (!p) {
           diags_.error(DiagCode::UnknownParameter, js_.key(vptr),
                        "preset '" + name + "' sets parameter '" + param + "', which is not declared" +
-                           didYouMean(param, paramNames));
+                           parameterNames.didYouMean(param));
           continue;
         }
         if (p->defaultValue.empty()) continue;  // the parameter itself is broken (reported)
@@ -649,6 +652,7 @@ std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& d
                 "cannot read '" + path + "': " + std::strerror(err ? err : EIO));
     return std::nullopt;
   }
+  diags.keepSource(path, text);  // for output formats that need its lines: never read twice
   return text;
 }
 

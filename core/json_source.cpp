@@ -12,11 +12,13 @@
 #include <utility>
 #include <vector>
 
+#include "core/load_limits.h"
+
 namespace wg {
 
 namespace {
 
-constexpr int kMaxDepth = 64;
+constexpr int kMaxDepth = kMaxJsonDepth;
 
 // An input iterator over the text that publishes how many bytes the lexer has consumed.
 class CountingIterator {

@@ -74,7 +74,7 @@ std::shared_ptr<const ParsedOptions> parseOptions(const NodeSpec& spec, const nl
   return spec.parseOptions(OptionReader(spec, complete));
 }
 
-std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir) {
+std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir, TextureFile* texture) {
   switch (o.kind) {
     case OptionSpec::Kind::Enum: {
       if (!v.is_string()) return "must be one of its choices (a string)";
@@ -102,7 +102,7 @@ std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std:
       return o.validate ? o.validate(v) : "";
     case OptionSpec::Kind::Texture: {
       if (!v.is_string()) return "must be a string: \"builtin:<name>\" or a .png path relative to the graph";
-      std::string why = checkTextureSource(v.get<std::string>(), graphDir);
+      std::string why = checkTextureSource(v.get<std::string>(), graphDir, texture);
       return why.empty() ? "" : "is not usable: " + why;
     }
   }

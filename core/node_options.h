@@ -111,7 +111,10 @@ nlohmann::json completeOptions(const NodeSpec& spec, const nlohmann::json& given
 // for a node without one).
 std::shared_ptr<const ParsedOptions> parseOptions(const NodeSpec& spec, const nlohmann::json& complete);
 
-// Checks one option value against its spec; returns "" or the reason it is refused.
-std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir);
+struct TextureFile;  // core/texture_check.h
+// Checks one option value against its spec; returns "" or the reason it is refused. A
+// texture option naming a PNG that passes fills *texture (its real path and size).
+std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std::string& graphDir,
+                        TextureFile* texture = nullptr);
 
 }  // namespace wg

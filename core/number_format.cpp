@@ -14,7 +14,8 @@ std::string formatNumber(double x) {
 
 std::string formatGlslFloat(double x) {
   float f = static_cast<float>(x);
-  if (f == 0.0f) return "0.0";
+  // -0.0 keeps its sign: 1.0 / -0.0 is -inf, and a shader must compute what the graph says.
+  if (f == 0.0f) return std::signbit(f) ? "-0.0" : "0.0";
   char buf[64];
   auto res = std::to_chars(buf, buf + sizeof buf, f);
   std::string s(buf, res.ptr);

@@ -1,5 +1,8 @@
 #include "core/preset.h"
 
+#include <string_view>
+#include <unordered_map>
+
 #include "core/suggest.h"
 
 namespace wg {
@@ -20,9 +23,11 @@ bool applyPreset(Graph& graph, std::string_view name, Diagnostics& diags) {
     diags.error(DiagCode::UnknownPreset, where, std::move(message));
     return false;
   }
+  // By name, not a scan of the parameters per value: a preset may set 20,000 of them.
+  std::unordered_map<std::string_view, Parameter*> byName;
+  for (auto& p : graph.parameters) byName.emplace(p.name, &p);
   for (const auto& v : preset->values)
-    for (auto& p : graph.parameters)
-      if (p.name == v.parameter) p.defaultValue = v.value;
+    if (auto it = byName.find(v.parameter); it != byName.end()) it->second->defaultValue = v.value;
   return true;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <set>
 #include <stdexcept>
 #include <unordered_map>
 
@@ -10,6 +12,7 @@
 #include "core/node_options.h"
 #include "core/port_typing.h"
 #include "core/suggest.h"
+#include "core/texture_check.h"
 
 namespace wg {
 namespace {
@@ -91,12 +94,13 @@ class Resolver {
     specs_.assign(graph_.nodes.size(), nullptr);
     std::vector<std::string> typeNames;
     for (const NodeSpec* s : registry_.all()) typeNames.push_back(s->type);
+    NameSuggester types(std::move(typeNames));
     for (size_t i = 0; i < graph_.nodes.size(); ++i) {
       const Node& n = graph_.nodes[i];
       const NodeSpec* spec = registry_.find(n.type);
       if (!spec) {
         diags_.error(DiagCode::UnknownNodeType, n.typeWhere,
-                     "unknown node type '" + n.type + "'" + didYouMean(n.type, typeNames), n.id);
+                     "unknown node type '" + n.type + "'" + types.didYouMean(n.type), n.id);
         continue;
       }
       specs_[i] = spec;
@@ -121,12 +125,24 @@ class Resolver {
                        n.id, optionLabel(opt.name));
           continue;
         }
-        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, program_.directory);
+        TextureFile texture;
+        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, program_.directory, &texture);
+        if (why.empty()) why = chargeTextureBudget(texture);
         if (!why.empty())
           diags_.error(DiagCode::InvalidOption, opt.where, "option '" + opt.name + "' " + why, n.id,
                        optionLabel(opt.name));
       }
     }
+  }
+
+  // All of a graph's PNG textures together stay within kMaxGraphTextureTexels (each file
+  // counted once, however many nodes sample it): "" or why the one that overflows it is refused.
+  std::string chargeTextureBudget(const TextureFile& texture) {
+    if (texture.realPath.empty() || !texturesCounted_.insert(texture.realPath).second) return "";
+    textureTexels_ += texture.width * texture.height;
+    if (textureTexels_ <= kMaxGraphTextureTexels) return "";
+    return "is not usable: the graph's PNG textures would hold " + std::to_string(textureTexels_) +
+           " texels together; the limit per graph is " + std::to_string(kMaxGraphTextureTexels);
   }
 
   // Checks a reference to another node and returns its index, or -1 after reporting.
@@ -135,10 +151,13 @@ class Resolver {
   int referencedNode(const InputSource& s, const std::string& user, const Label& label) {
     auto it = nodeIndex_.find(s.node);
     if (it == nodeIndex_.end()) {
-      std::vector<std::string> ids;
-      for (const auto& n : graph_.nodes) ids.push_back(n.id);
+      if (!nodeIds_) {  // indexed once, on the first dangling reference
+        std::vector<std::string> ids;
+        for (const auto& n : graph_.nodes) ids.push_back(n.id);
+        nodeIds_.emplace(std::move(ids));
+      }
       diags_.error(DiagCode::DanglingReference, s.where,
-                   "no node with id '" + s.node + "'" + didYouMean(s.node, ids), user, label());
+                   "no node with id '" + s.node + "'" + nodeIds_->didYouMean(s.node), user, label());
       return -1;
     }
     const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
@@ -159,7 +178,7 @@ class Resolver {
   }
 
   // Kahn's algorithm over node references: iterative, so a 100,000-node chain needs no
-  // deep recursion. Nodes left over lie on or behind a cycle; one cycle is named.
+  // deep recursion. Nodes left over lie on or behind a cycle; each cycle is named.
   std::vector<int> topologicalOrder() {
     size_t n = graph_.nodes.size();
     std::vector<std::vector<int>> users(n);
@@ -174,10 +193,14 @@ class Resolver {
         const NodeInput& in = node.inputs[k];
         if (in.source.kind == InputSource::Kind::Parameter) {
           if (!paramIndex_.count(in.source.parameter)) {
-            std::vector<std::string> names;
-            for (const auto& p : graph_.parameters) names.push_back(p.name);
+            if (!parameterNames_) {
+              std::vector<std::string> names;
+              for (const auto& p : graph_.parameters) names.push_back(p.name);
+              parameterNames_.emplace(std::move(names));
+            }
             diags_.error(DiagCode::UnknownParameter, in.source.where,
-                         "no parameter named '" + in.source.parameter + "'" + didYouMean(in.source.parameter, names),
+                         "no parameter named '" + in.source.parameter + "'" +
+                             parameterNames_->didYouMean(in.source.parameter),
                          node.id, inputLabel(in.port));
           }
           continue;
@@ -211,30 +234,47 @@ class Resolver {
       for (int u : users[static_cast<size_t>(i)])
         if (--pending[static_cast<size_t>(u)] == 0) ready.push_back(u);
     }
-    if (order.size() < n) reportCycle(deps, done);
+    if (order.size() < n) reportCycles(deps, done);
     return order;
   }
 
-  void reportCycle(const std::vector<std::vector<int>>& deps, const std::vector<bool>& done) {
-    // Walk dependencies among unfinished nodes until one repeats: that closes a cycle.
-    size_t start = 0;
-    while (start < done.size() && done[start]) ++start;
-    std::vector<int> walk;
-    std::unordered_map<int, size_t> seenAt;
-    int cur = static_cast<int>(start);
-    while (!seenAt.count(cur)) {
-      seenAt[cur] = walk.size();
-      walk.push_back(cur);
-      int next = -1;
-      for (int d : deps[static_cast<size_t>(cur)])
-        if (!done[static_cast<size_t>(d)]) {
-          next = d;
+  // Every node left unfinished lies on a cycle or behind one. Walks dependencies among
+  // them from each node not yet walked: a walk that comes back to a node of its own closes
+  // a new cycle (reported); one that reaches a node of an earlier walk leads into a cycle
+  // already reported. Each node is walked once, so disjoint cycles are each named in
+  // linear time.
+  void reportCycles(const std::vector<std::vector<int>>& deps, const std::vector<bool>& done) {
+    std::vector<size_t> walkOf(done.size(), 0);  // 0: not walked; else the walk's number
+    std::vector<size_t> placeInWalk(done.size(), 0);
+    size_t walkNumber = 0;
+    for (size_t start = 0; start < done.size(); ++start) {
+      if (done[start] || walkOf[start] != 0) continue;
+      ++walkNumber;
+      std::vector<int> walk;
+      int cur = static_cast<int>(start);
+      bool stuck = false;
+      while (walkOf[static_cast<size_t>(cur)] == 0) {
+        walkOf[static_cast<size_t>(cur)] = walkNumber;
+        placeInWalk[static_cast<size_t>(cur)] = walk.size();
+        walk.push_back(cur);
+        int next = -1;
+        for (int d : deps[static_cast<size_t>(cur)])
+          if (!done[static_cast<size_t>(d)]) {
+            next = d;
+            break;
+          }
+        if (next < 0) {  // cannot happen: an unfinished node has an unfinished dependency
+          stuck = true;
           break;
         }
-      if (next < 0) return;  // cannot happen: an unfinished node has an unfinished dependency
-      cur = next;
+        cur = next;
+      }
+      if (stuck || walkOf[static_cast<size_t>(cur)] != walkNumber) continue;  // into a known cycle
+      reportCycle(std::vector<int>(walk.begin() + static_cast<long>(placeInWalk[static_cast<size_t>(cur)]), walk.end()));
     }
-    std::vector<int> cycle(walk.begin() + static_cast<long>(seenAt[cur]), walk.end());
+  }
+
+  void reportCycle(std::vector<int> cycle) {
     // Name the cycle in data-flow order, starting at its first node in the file.
     std::reverse(cycle.begin(), cycle.end());
     auto first = std::min_element(cycle.begin(), cycle.end());
@@ -411,6 +451,9 @@ class Resolver {
   std::vector<const NodeSpec*> specs_;
   std::unordered_map<std::string, int> nodeIndex_;
   std::unordered_map<std::string, int> paramIndex_;
+  std::optional<NameSuggester> nodeIds_, parameterNames_;  // made on the first unknown name
+  std::set<std::string> texturesCounted_;                  // real paths of PNG textures
+  long long textureTexels_ = 0;
   std::vector<int> opOfNode_;  // by node index: its op, or -1
   // Node i's inputs[k] reads node inputNode_[inputBase_[i] + k] (-1: not a node output).
   std::vector<size_t> inputBase_;

@@ -86,8 +86,11 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                              ImGuiButtonFlags_MouseButtonMiddle);
   bool hovered = ImGui::IsItemHovered();
+  // A position may be anything the file format allows (up to float32's largest): far-off
+  // nodes are drawn at a far-off but finite place, never at an infinity ImGui cannot draw.
   auto toScreen = [&](double x, double y) {
-    return ImVec2(origin.x + scroll_[0] + static_cast<float>(x), origin.y + scroll_[1] + static_cast<float>(y));
+    auto far = [](double v) { return static_cast<float>(std::clamp(v, -1e7, 1e7)); };
+    return ImVec2(far(origin.x + scroll_[0] + x), far(origin.y + scroll_[1] + y));
   };
   ImVec2 mouse = io.MousePos;
   std::array<double, 2> mouseCanvas{mouse.x - origin.x - scroll_[0], mouse.y - origin.y - scroll_[1]};

@@ -1,11 +1,17 @@
 #include "nodes/texture_source.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
-#include <filesystem>
+#include <cstdio>
+#include <cstring>
+#include <fcntl.h>
 #include <stdexcept>
+#include <unistd.h>
 
 #include <stb/stb_image.h>
+
+#include "core/png_header.h"
 
 namespace wg {
 
@@ -36,20 +42,51 @@ Value TextureImage::sample(double u, double v) const {
   return out;
 }
 
+namespace {
+
+// Decodes the PNG that checkTextureSource resolved. The file is opened once, without
+// following a link, and its header is checked again on that open file before decoding: it
+// may have been replaced since it was checked.
+stbi_uc* decodePng(const TextureFile& file, int* w, int* h, std::string* error) {
+  auto fail = [&](const std::string& why) -> stbi_uc* {
+    if (error) *error = "cannot decode texture '" + file.realPath + "': " + why;
+    return nullptr;
+  };
+  int fd = ::open(file.realPath.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  if (fd < 0) return fail(std::strerror(errno));
+  std::FILE* f = ::fdopen(fd, "rb");
+  if (!f) {
+    ::close(fd);
+    return fail(std::strerror(errno));
+  }
+  unsigned char header[kPngHeaderBytes];
+  PngSize size;
+  std::size_t n = std::fread(header, 1, sizeof header, f);
+  std::string why = readPngSize(header, n, &size);
+  if (why.empty()) why = checkTextureSize(size.width, size.height);
+  stbi_uc* pixels = nullptr;
+  if (why.empty() && std::fseek(f, 0, SEEK_SET) == 0) {
+    int channels = 0;
+    pixels = stbi_load_from_file(f, w, h, &channels, 4);
+    if (!pixels) why = stbi_failure_reason() ? stbi_failure_reason() : "unknown error";
+  }
+  std::fclose(f);
+  return pixels ? pixels : fail(why.empty() ? "cannot rewind the file" : why);
+}
+
+}  // namespace
+
 std::optional<TextureImage> loadTexture(std::string_view source, const std::string& graphDir, std::string* error) {
-  std::string why = checkTextureSource(source, graphDir);
+  TextureFile file;
+  std::string why = checkTextureSource(source, graphDir, &file);
   if (!why.empty()) {
     if (error) *error = why;
     return std::nullopt;
   }
   if (source.rfind(kBuiltinTexturePrefix, 0) == 0) return generateBuiltinTexture(source.substr(kBuiltinTexturePrefix.size()));
-  std::string path = (std::filesystem::path(graphDir.empty() ? "." : graphDir) / std::string(source)).string();
-  int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (!pixels) {
-    if (error) *error = "cannot decode texture '" + path + "': " + (stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
-    return std::nullopt;
-  }
+  int w = 0, h = 0;
+  stbi_uc* pixels = decodePng(file, &w, &h, error);
+  if (!pixels) return std::nullopt;
   TextureImage img;
   img.width = w;
   img.height = h;

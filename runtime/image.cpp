@@ -3,14 +3,15 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 #include <stdexcept>
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
-#include <unistd.h>
 
+#include "codegen/temp_file.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
@@ -23,13 +24,17 @@ void writePng(const std::string& path, const Image& img) {
   fs::path dir = target.has_parent_path() ? target.parent_path() : fs::path(".");
   std::error_code ec;
   if (!dir.empty() && !fs::exists(dir, ec)) fs::create_directories(dir, ec);
-  // A temporary name in the same folder, so the rename is atomic.
-  std::string tmp = (dir / ("." + target.filename().string() + "." + std::to_string(getpid()) + ".tmp")).string();
-  int ok = stbi_write_png(tmp.c_str(), img.width, img.height, 4, img.rgba8.data(), img.width * 4);
-  if (!ok) {
-    fs::remove(tmp, ec);
-    throw RuntimeError(RuntimeError::Kind::Io, "cannot write " + path + " (is the folder writable?)");
-  }
+  std::string png;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  if (!stbi_write_png_to_func(append, &png, img.width, img.height, 4, img.rgba8.data(), img.width * 4))
+    throw RuntimeError(RuntimeError::Kind::Io, "cannot write " + path + ": PNG encoding failed");
+  // A new temporary in the same folder (never a link planted there), so the rename is atomic.
+  int err = 0;
+  auto written = writeTemporaryBeside(target, png, &err);
+  if (!written) throw RuntimeError(RuntimeError::Kind::Io, "cannot write " + path + ": " + std::strerror(err));
+  const std::string& tmp = *written;
   fs::rename(tmp, target, ec);
   if (ec) {
     fs::remove(tmp, ec);

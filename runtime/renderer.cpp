@@ -15,6 +15,7 @@
 #include "runtime/gpu_cache.h"
 #include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
+#include "runtime/tessellation_budget.h"
 
 namespace wg::rt {
 namespace {
@@ -690,7 +691,11 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   }
 
   r.sceneMesh = uploadMesh(buildSceneMesh(), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});
-  r.waterMesh = uploadMesh(buildWaterGrid(settings.waterGridQuads),
+  // A tessellated draw stays within its budget of generated triangles (tessellation_budget.h).
+  int gridQuads = settings.waterGridQuads;
+  if (r.tessellated && manifest.contains("tessellation"))
+    gridQuads = tessellatedGridQuads(gridQuads, manifest["tessellation"].value("factor", 64.0));
+  r.waterMesh = uploadMesh(buildWaterGrid(gridQuads),
                            {{iface::kPositionLocation, 3}, {iface::kNormalLocation, 3}, {iface::kUvLocation, 2}});
   r.emptyVao = makeVertexArray();
   checkGl("uploading the scene");

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds the libFuzzer targets (tests/fuzz/) and runs each for a while (docs/robustness.md).
 #
-#   scripts/fuzz.sh              # each target 60 s
-#   scripts/fuzz.sh 3600         # each target an hour
+#   scripts/fuzz.sh              # each target 60 s (texture and edit_ops half of it)
+#   scripts/fuzz.sh 3600         # each target an hour (texture and edit_ops half an hour)
 #   scripts/fuzz.sh 600 compile  # one target
 #
 # Environment:
@@ -12,7 +12,8 @@
 #   JOBS       build and fuzzing jobs (default 2 for the build, 1 fuzzing process).
 #   FUZZ_ARGS  extra libFuzzer flags, e.g. "-jobs=8 -workers=8" for a long run.
 # The working corpus grows in $BUILD_DIR/fuzz/corpus/<target>/ and is kept between runs;
-# it starts from graphs/, tests/bad/ and tests/fuzz/regressions/. A crash leaves its input
+# it starts from the minimised corpus kept in tests/fuzz/corpus/<target>/ and, for the JSON
+# targets, graphs/, tests/bad/ and tests/fuzz/regressions/. A crash leaves its input
 # in $BUILD_DIR/fuzz/crashes/<target>/ and makes the script exit 1: add the input to
 # tests/fuzz/regressions/ (replayed by the test suite) and fix the cause.
 # Prints one line per target: executions, corpus size, crashes.
@@ -22,7 +23,7 @@ ROOT=$PWD
 SECONDS_EACH=${1:-60}
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen)
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen texture edit_ops)
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
@@ -55,17 +56,25 @@ for t in "${TARGETS[@]}"; do
     loader) limits=(-max_len=65536 -timeout=10 -rss_limit_mb=4096) ;;
     compile) limits=(-max_len=16384 -timeout=30 -rss_limit_mb=4096) ;;
     graphgen) limits=(-max_len=2048 -len_control=0 -timeout=30 -rss_limit_mb=4096) ;;
+    texture) limits=(-max_len=4096 -timeout=10 -rss_limit_mb=4096) ;;
+    edit_ops) limits=(-max_len=1024 -timeout=10 -rss_limit_mb=4096) ;;
   esac
+  # The texture and edit-sequence targets check cheap properties over a small input space:
+  # half the time, which keeps CI's fuzzing step at four minutes for five targets.
+  seconds=$SECONDS_EACH
+  case $t in texture|edit_ops) seconds=$(( (SECONDS_EACH + 1) / 2 )) ;; esac
   marker=$FUZZ_DIR/.start-$t
   touch "$marker"
   log=$FUZZ_DIR/$t.log
-  echo "fuzz: $t for ${SECONDS_EACH} s (log: $log)"
+  echo "fuzz: $t for ${seconds} s (log: $log)"
   set +e
   # Run inside the corpus folder: relative texture paths in inputs resolve there.
   seeds=("$ROOT/graphs" "$ROOT/tests/bad" "$ROOT/tests/fuzz/regressions")
   dict=(-dict="$FUZZ_DIR/graph.dict")
-  [ "$t" = graphgen ] && seeds=() && dict=()  # its inputs are choices, not JSON
-  (cd "$corpus" && "$ROOT/$BUILD_DIR/bin/wg_fuzz_$t" "$corpus" ${seeds[@]+"${seeds[@]}"} ${dict[@]+"${dict[@]}"} -max_total_time="$SECONDS_EACH" \
+  case $t in graphgen|texture|edit_ops) seeds=() && dict=() ;; esac  # their inputs are choices, not JSON
+  [ "$t" = texture ] && dict=(-dict="$ROOT/tests/fuzz/texture.dict")
+  [ -d "$ROOT/tests/fuzz/corpus/$t" ] && seeds+=("$ROOT/tests/fuzz/corpus/$t")
+  (cd "$corpus" && "$ROOT/$BUILD_DIR/bin/wg_fuzz_$t" "$corpus" ${seeds[@]+"${seeds[@]}"} ${dict[@]+"${dict[@]}"} -max_total_time="$seconds" \
       -artifact_prefix="$crashes/" -print_final_stats=1 "${limits[@]}" ${FUZZ_ARGS:-}) >"$log" 2>&1
   rc=$?
   set -e

@@ -10,7 +10,9 @@
 #include <string>
 #include <vector>
 
+#include "fuzz/edit_sequence.h"
 #include "fuzz/fuzz_properties.h"
+#include "fuzz/texture_property.h"
 #include "test_support.h"
 
 namespace wg {
@@ -48,6 +50,30 @@ std::string caseName(const ::testing::TestParamInfo<std::string>& info) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Saved, FuzzInput, ::testing::ValuesIn(inputs()), caseName);
+
+// The corpora of the texture and edit-sequence targets (tests/fuzz/corpus/), through their
+// properties: small, and cheap to replay.
+std::vector<std::string> corpus(const std::string& target) {
+  std::vector<std::string> paths;
+  for (const auto& name : test::listFiles(test::sourcePath("tests/fuzz/corpus/" + target)))
+    paths.push_back("tests/fuzz/corpus/" + target + "/" + name);
+  return paths;
+}
+
+TEST(FuzzCorpus, TexturePropertyHoldsForEveryKeptInput) {
+  std::string scratch = test::makeTempDir("wg_texture_replay_");
+  auto inputs = corpus("texture");
+  EXPECT_FALSE(inputs.empty());
+  for (const auto& path : inputs)
+    EXPECT_EQ(fuzz::textureProperty(test::readFile(test::sourcePath(path)), scratch + "/run"), "") << path;
+  std::filesystem::remove_all(scratch);
+}
+
+TEST(FuzzCorpus, EditSequencePropertyHoldsForEveryKeptInput) {
+  auto inputs = corpus("edit_ops");
+  EXPECT_FALSE(inputs.empty());
+  for (const auto& path : inputs) EXPECT_EQ(fuzz::editSequenceProperty(test::readFile(test::sourcePath(path))), "") << path;
+}
 
 }  // namespace
 }  // namespace wg

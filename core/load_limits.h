@@ -1,0 +1,27 @@
+#pragma once
+// The limits a graph file must keep to load (docs/robustness.md), in one place: the loader
+// enforces them on a file, and the edit model on every value it accepts, so that what the
+// editor saves always loads again.
+#include <cstddef>
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace wg {
+
+inline constexpr std::size_t kMaxFileBytes = 16u * 1024u * 1024u;
+inline constexpr std::size_t kMaxNodes = 200000;
+inline constexpr std::size_t kMaxStringBytes = 4096;  // every string and key
+inline constexpr double kFloat32Max = 3.4028234663852886e38;
+inline constexpr int kMaxJsonDepth = 64;  // nested arrays and objects, the file's top level included
+// A node option's value sits inside the top-level object, "nodes", the node and "options".
+inline constexpr int kOptionValueDepth = 4;
+
+// Finite, and inside float32's range: what a graph number must be.
+bool fitsFloat32(double x);
+
+// "" when a JSON value opened `depth` levels deep in a file keeps the limits every value of
+// a graph file keeps (string and key lengths, numbers finite in float32, nesting), else why not.
+std::string checkJsonLimits(const nlohmann::json& value, int depth);
+
+}  // namespace wg

@@ -1,0 +1,200 @@
+// Hostile texture inputs (docs/robustness.md): the graph, its textures and its folder are
+// under an attacker's control. A texture path must stay inside the graph's folder after
+// every symbolic link, hold no control character, and name a PNG whose header declares a
+// size within the limits; a PNG that then fails to decode is a graph error (exit 1) at the
+// option that names it.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include <stb/stb_image_write.h>
+
+#include "codegen/compile.h"
+#include "core/graph_io.h"
+#include "core/png_header.h"
+#include "core/texture_check.h"
+#include "nodes/registry.h"
+#include "nodes/texture_source.h"
+#include "test_support.h"
+
+namespace wg {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A real PNG of w x h texels.
+std::string pngBytes(int w, int h) {
+  std::vector<unsigned char> rgba(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 200);
+  std::string out;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
+  };
+  stbi_write_png_to_func(append, &out, w, h, 4, rgba.data(), w * 4);
+  return out;
+}
+
+// A PNG signature and IHDR declaring w x h, then `rest` (no image data: only the header
+// is read before the size is refused).
+std::string pngHeaderDeclaring(unsigned w, unsigned h, const std::string& rest = std::string(64, '\0')) {
+  std::string s = "\x89PNG\r\n\x1a\n";
+  s += std::string("\0\0\0\x0d", 4) + "IHDR";
+  for (unsigned v : {w, h})
+    for (int shift = 24; shift >= 0; shift -= 8) s += static_cast<char>((v >> shift) & 0xff);
+  return s + rest;
+}
+
+std::string edgeFoamGraph(const std::string& texture) {
+  return test::graphJson("{\"id\": \"f\", \"type\": \"edge_foam\", \"options\": {\"texture\": " +
+                             nlohmann::json(texture).dump() + "}, \"inputs\": {\"depth\": 1}}",
+                         "\"fragment\": {\"alpha\": \"f.foam\"}");
+}
+
+// Loads and resolves graph `text` saved as `dir`/g.json; the diagnostics.
+Diagnostics resolveIn(const std::string& dir, const std::string& text) {
+  test::writeFile(dir + "/g.json", text);
+  Diagnostics diags;
+  if (auto graph = loadGraphFile(dir + "/g.json", diags)) buildProgram(*graph, defaultRegistry(), diags);
+  return diags;
+}
+
+std::string firstError(const Diagnostics& diags) {
+  for (const auto& d : diags.sorted())
+    if (d.severity == Severity::Error) return formatText(d);
+  return "";
+}
+
+class TextureInput : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    root = test::makeTempDir("wg_texture_input_");
+    dir = root + "/graph";
+    outside = root + "/outside";
+    fs::create_directories(dir);
+    fs::create_directories(outside);
+    test::writeFile(outside + "/secret.png", pngBytes(2, 2));
+  }
+  void TearDown() override { fs::remove_all(root); }
+  std::string root, dir, outside;
+};
+
+TEST_F(TextureInput, AGoodPngInsideTheFolderIsAccepted) {
+  test::writeFile(dir + "/foam.png", pngBytes(4, 2));
+  EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("foam.png"))), "");
+  TextureFile file;
+  EXPECT_EQ(checkTextureSource("foam.png", dir, &file), "");
+  EXPECT_EQ(file.width, 4);
+  EXPECT_EQ(file.height, 2);
+}
+
+TEST_F(TextureInput, AFileSymlinkLeadingOutsideIsRefused) {
+  fs::create_symlink(outside + "/secret.png", dir + "/foam.png");
+  std::string e = firstError(resolveIn(dir, edgeFoamGraph("foam.png")));
+  EXPECT_NE(e.find("[WG030]"), std::string::npos) << e;
+  EXPECT_NE(e.find("outside the graph's folder"), std::string::npos) << e;
+  // compile --textures must not copy the outside file into the output.
+  std::string out, err;
+  int code = test::runCommandSplit(test::shellQuote(test::watergraphBinary()) + " compile --textures " + dir +
+                                       "/g.json -o " + root + "/out",
+                                   &out, &err);
+  EXPECT_EQ(code, 1) << err;
+  EXPECT_TRUE(test::listFilesRecursive(root + "/out").empty());
+}
+
+TEST_F(TextureInput, AFolderSymlinkInsideTheTreeLeadingOutsideIsRefused) {
+  fs::create_directory_symlink(outside, dir + "/textures");
+  std::string e = firstError(resolveIn(dir, edgeFoamGraph("textures/secret.png")));
+  EXPECT_NE(e.find("[WG030]"), std::string::npos) << e;
+  EXPECT_NE(e.find("outside the graph's folder"), std::string::npos) << e;
+}
+
+TEST_F(TextureInput, ASymlinkStayingInsideIsAccepted) {
+  fs::create_directories(dir + "/real");
+  test::writeFile(dir + "/real/foam.png", pngBytes(2, 2));
+  fs::create_symlink("real/foam.png", dir + "/foam.png");
+  EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("foam.png"))), "");
+}
+
+// "README.md\0.png" passed the .png check and the file system opened README.md.
+TEST_F(TextureInput, ControlCharactersInPathsAreRefused) {
+  test::writeFile(dir + "/README.md", "not a texture");
+  test::writeFile(dir + "/a\x01.png", pngBytes(2, 2));
+  for (std::string path : {std::string("README.md\0.png", 14), std::string("a\x01.png")}) {
+    std::string e = firstError(resolveIn(dir, edgeFoamGraph(path)));
+    EXPECT_NE(e.find("[WG030]"), std::string::npos) << e;
+    EXPECT_NE(e.find("control character"), std::string::npos) << e;
+  }
+}
+
+// A 260 KB PNG could declare 16384 x 16384 (a gigabyte decoded): the header is checked first.
+TEST_F(TextureInput, APngDeclaringMoreThanTheLimitIsRefusedBeforeDecoding) {
+  test::writeFile(dir + "/bomb.png", pngHeaderDeclaring(16384, 16384));
+  std::string e = firstError(resolveIn(dir, edgeFoamGraph("bomb.png")));
+  EXPECT_NE(e.find("[WG030]"), std::string::npos) << e;
+  EXPECT_NE(e.find("16384 x 16384"), std::string::npos) << e;
+  // At the limit on one side, one past it on the other.
+  test::writeFile(dir + "/wide.png", pngHeaderDeclaring(kMaxTextureSide, kMaxTextureSide + 1));
+  EXPECT_NE(checkTextureSource("wide.png", dir).find("the limit is 8192"), std::string::npos);
+  // The decoder checks the header of the file it opens too (it may have changed since).
+  std::string why;
+  EXPECT_FALSE(loadTexture("bomb.png", dir, &why));
+  EXPECT_NE(why.find("16384"), std::string::npos) << why;
+}
+
+TEST_F(TextureInput, TheGraphsTexturesTogetherKeepABudget) {
+  // Three distinct files of the largest size: two fit the budget, the third does not.
+  std::string nodes;
+  for (int i = 0; i < 3; ++i) {
+    test::writeFile(dir + "/t" + std::to_string(i) + ".png", pngHeaderDeclaring(kMaxTextureSide, kMaxTextureSide));
+    nodes += std::string(i ? "," : "") + "{\"id\": \"f" + std::to_string(i) +
+             "\", \"type\": \"edge_foam\", \"options\": {\"texture\": \"t" + std::to_string(i) +
+             ".png\"}, \"inputs\": {\"depth\": 1}}";
+  }
+  // The same file sampled twice counts once.
+  nodes += ",{\"id\": \"g\", \"type\": \"edge_foam\", \"options\": {\"texture\": \"t0.png\"}, \"inputs\": {\"depth\": 1}}";
+  Diagnostics diags = resolveIn(dir, test::graphJson(nodes, "\"fragment\": {\"alpha\": \"f0.foam\"}"));
+  std::vector<std::string> budget;
+  for (const auto& d : diags.sorted())
+    if (d.message.find("the limit per graph") != std::string::npos) budget.push_back(d.node);
+  EXPECT_EQ(budget, std::vector<std::string>{"f2"}) << firstError(diags);
+}
+
+TEST_F(TextureInput, AFileThatIsNotAPngIsRefusedAtTheOption) {
+  test::writeFile(dir + "/fake.png", "GIF89a not a png");
+  std::string e = firstError(resolveIn(dir, edgeFoamGraph("fake.png")));
+  EXPECT_NE(e.find("[WG030]"), std::string::npos) << e;
+  EXPECT_NE(e.find("not a PNG"), std::string::npos) << e;
+}
+
+// A PNG whose header is fine but whose data is not: `compile --textures` reports it as a
+// fault of the graph (exit 1, WG030 at the texture option), not as an I/O error (exit 2).
+TEST_F(TextureInput, ADecodeFailureIsAGraphErrorAtThePath) {
+  std::string good = pngBytes(4, 4);
+  test::writeFile(dir + "/broken.png", good.substr(0, 33) + std::string(40, 'x'));  // IHDR kept, data garbled
+  test::writeFile(dir + "/g.json", edgeFoamGraph("broken.png"));
+  std::string out, err;
+  int code = test::runCommandSplit(test::shellQuote(test::watergraphBinary()) + " compile --textures " + dir +
+                                       "/g.json -o " + root + "/out",
+                                   &out, &err);
+  EXPECT_EQ(code, 1) << err;
+  EXPECT_NE(err.find("g.json:1:"), std::string::npos) << err;
+  EXPECT_NE(err.find("error: [WG030] option 'texture' is not usable: cannot decode texture"), std::string::npos) << err;
+  EXPECT_TRUE(test::listFilesRecursive(root + "/out").empty());
+}
+
+TEST(PngHeader, ReadsTheDeclaredSize) {
+  std::string h = pngHeaderDeclaring(640, 480);
+  PngSize size;
+  EXPECT_EQ(readPngSize(reinterpret_cast<const unsigned char*>(h.data()), h.size(), &size), "");
+  EXPECT_EQ(size.width, 640);
+  EXPECT_EQ(size.height, 480);
+  EXPECT_NE(readPngSize(reinterpret_cast<const unsigned char*>(h.data()), 20, &size), "");  // too short
+  std::string bad = h;
+  bad[12] = 'X';  // not IHDR
+  EXPECT_NE(readPngSize(reinterpret_cast<const unsigned char*>(bad.data()), bad.size(), &size), "");
+  std::string empty = pngHeaderDeclaring(0, 5);
+  EXPECT_NE(readPngSize(reinterpret_cast<const unsigned char*>(empty.data()), empty.size(), &size), "");
+}
+
+}  // namespace
+}  // namespace wg
