@@ -54,7 +54,7 @@ std::vector<OutputFile> textureFiles(const CompileResult& result, const std::str
     const Op* op = samplingOp(result.program, source);
     SourceRef where = op ? op->where : SourceRef{};
     std::string node = op ? op->nodeId : std::string();
-    std::filesystem::path file(where.file);
+    std::filesystem::path file(where.file.str());
     std::string dir = file.has_parent_path() ? file.parent_path().string() : ".";
     std::string why;
     auto img = loadTexture(source, dir, &why);
