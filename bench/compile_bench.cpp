@@ -108,6 +108,41 @@ void load(benchmark::State& state, Case* c) {
     benchmark::DoNotOptimize(g);
   }
   state.counters["bytes"] = static_cast<double>(c->text.size());
+  // The peak heap of one more load, the Graph included.
+  startHeapWindow();
+  {
+    Diagnostics diags;
+    auto g = parseGraph(c->text, c->file, diags);
+  }
+  state.counters["peak_MiB"] = static_cast<double>(stopHeapWindow()) / (1024.0 * 1024.0);
+}
+
+// The floor under `load`: nlohmann's SAX parse of the same text into handlers that keep
+// nothing (the lexer still makes every string and number), so the two together say how
+// much of a load is the loader's own.
+struct NullSax {
+  using json = nlohmann::json;
+  bool null() { return true; }
+  bool boolean(bool) { return true; }
+  bool number_integer(json::number_integer_t) { return true; }
+  bool number_unsigned(json::number_unsigned_t) { return true; }
+  bool number_float(json::number_float_t, const json::string_t&) { return true; }
+  bool string(json::string_t&) { return true; }
+  bool binary(json::binary_t&) { return true; }
+  bool start_object(std::size_t) { return true; }
+  bool end_object() { return true; }
+  bool start_array(std::size_t) { return true; }
+  bool end_array() { return true; }
+  bool key(json::string_t&) { return true; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) { return false; }
+};
+
+void jsonSaxFloor(benchmark::State& state, Case* c) {
+  for (auto _ : state) {
+    NullSax sax;
+    if (!nlohmann::json::sax_parse(c->text, &sax)) state.SkipWithError("not JSON");
+  }
+  state.counters["bytes"] = static_cast<double>(c->text.size());
 }
 
 void resolve(benchmark::State& state, Case* c) {
@@ -214,6 +249,7 @@ void registerCase(Case* c, int nodes) {
     return b;
   };
   std::string n = "/" + c->name;
+  tune(benchmark::RegisterBenchmark(("json_sax_floor" + n).c_str(), jsonSaxFloor, c));
   tune(benchmark::RegisterBenchmark(("load" + n).c_str(), load, c));
   tune(benchmark::RegisterBenchmark(("resolve" + n).c_str(), resolve, c));
   for (const char* p : kPasses)
@@ -284,6 +320,13 @@ class SummaryReporter : public benchmark::ConsoleReporter {
     if (t1k != ms_.end() && t10k != ms_.end())
       std::printf("\nt(10k)/t(1k) before glslang: %.2f (%.3f ms / %.3f ms)\n", t10k->second / t1k->second, t10k->second,
                   t1k->second);
+    for (const char* size : {"1000", "10000"}) {
+      auto load = ms_.find(std::string("load/synthetic_") + size);
+      auto floor = ms_.find(std::string("json_sax_floor/synthetic_") + size);
+      if (load != ms_.end() && floor != ms_.end())
+        std::printf("load at %s nodes: %.3f ms against nlohmann's SAX parse alone %.3f ms (%.2fx)\n", size, load->second,
+                    floor->second, load->second / floor->second);
+    }
     std::printf("process peak RSS: %.1f MiB\n", static_cast<double>(maxResidentBytes()) / (1024.0 * 1024.0));
   }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The compiler's passes, each a function from one Program to the next (one file each).
-// compile.cpp runs them as a recipe: specialise -> prune -> fold -> cse -> prune -> stages.
+// compile.cpp runs them as a recipe: specialise -> prune -> (fold -> simplify -> cse, repeated
+// until none changes anything) -> prune -> stages (runPassRecipe below).
 #include <functional>
 #include <string>
 #include <string_view>

@@ -69,7 +69,7 @@ std::vector<OutputFile> textureFiles(const CompileResult& result, const std::str
     const Op* op = samplingOp(result.program, source, &option);
     SourceRef where = op ? optionPosition(graph, *op, option) : SourceRef{};
     std::string node = op ? op->nodeId : std::string();
-    std::filesystem::path file(op ? op->where.file : std::string());
+    std::filesystem::path file(op ? op->where.file.str() : std::string());
     std::string dir = file.has_parent_path() ? file.parent_path().string() : ".";
     std::string why;
     auto img = loadTexture(source, dir, &why);

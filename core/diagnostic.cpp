@@ -152,7 +152,7 @@ nlohmann::json toJson(const Diagnostic& d) {
   j["code"] = codeString(d.code);
   j["severity"] = severityName(d.severity);
   j["message"] = d.message;
-  j["file"] = d.where.file;
+  j["file"] = d.where.file.str();
   j["line"] = d.where.line;
   j["column"] = d.where.col;
   if (!d.node.empty()) j["node"] = d.node;

@@ -1,5 +1,5 @@
-// Graph format v1 (docs/graph-format.md): JSON with positions -> Graph. Reports as many
-// problems as it can in one pass; any error makes the result empty.
+// Graph format v1 (docs/graph-format.md): JSON events -> Graph, with no DOM of the file.
+// Reports as many problems as it can in one pass; any error makes the result empty.
 #include <algorithm>
 #include <array>
 #include <cerrno>
@@ -7,13 +7,14 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <system_error>
 #include <unordered_map>
 
 #include "core/graph_io.h"
-#include "core/json_source.h"
+#include "core/graph_draft.h"
 #include "core/load_limits.h"
 #include "core/number_format.h"
 #include "core/suggest.h"
@@ -29,8 +30,8 @@ const char* kIdentifierRule =
 const char* kSourceForms =
     "an input is \"node.port\", \"$parameter\", a number, or an array of 2 to 4 numbers";
 
-std::string jsonTypeName(const json& v) {
-  switch (v.type()) {
+std::string jsonTypeName(json::value_t type) {
+  switch (type) {
     case json::value_t::null: return "null";
     case json::value_t::object: return "object";
     case json::value_t::array: return "array";
@@ -54,57 +55,84 @@ std::string describeValue(const json& v) {
   return s;
 }
 
-class Loader {
+// The checks of the format, made on the drafts as the events arrive: every value's limits
+// at once, each node when it ends, the rest when the file is complete (load()), reporting
+// in the order a reader walks the format: limits, the graph's fields, version, name,
+// parameters, presets, nodes, outputs.
+constexpr char kTypeKeyText[] = "\"type\"";
+
+// How many nodes to make room for before the events say: every node has a "type" key (so
+// do parameters, a few). Growing the vector instead moved every Node built so far, into
+// fresh pages, at each doubling: a quarter of a 1,000-node load. One scan of the text costs
+// about a hundredth of its parse.
+std::size_t expectedNodes(std::string_view text) {
+  static const std::boyer_moore_horspool_searcher<const char*> kTypeKey(kTypeKeyText, kTypeKeyText + 6);
+  std::size_t count = 0;
+  for (auto at = text.begin(); count <= kMaxNodes; ++count) {
+    at = std::search(at, text.end(), kTypeKey);
+    if (at == text.end()) break;
+    at += 6;
+  }
+  return count;
+}
+
+class Loader : public GraphDraftReader {
  public:
-  Loader(const JsonSource& js, const std::string& file, Diagnostics& diags)
-      : js_(js), file_(file), diags_(diags) {}
+  Loader(const std::string& file, Diagnostics& diags, std::size_t expectedNodes)
+      : file_(file), fileName_(file), diags_(diags) {
+    nodes_.reserve(expectedNodes);
+  }
 
   std::optional<Graph> load() {
     const size_t before = diags_.errorCount();
     Graph g;
     g.file = file_;
-    const json& root = js_.root;
-    if (!root.is_object()) {
-      diags_.error(DiagCode::WrongJsonType, js_.value(""),
-                   "the graph must be a JSON object, found " + jsonTypeName(root));
+    const DraftValue& root = this->root();
+    if (root.type != json::value_t::object) {
+      diags_.error(DiagCode::WrongJsonType, ref(root.at),
+                   "the graph must be a JSON object, found " + jsonTypeName(root.type));
       return std::nullopt;
     }
-    std::vector<PathStep> path;
-    checkLimits(root, path);
+    diags_.append(limits_);
 
-    checkKeys(js_.entries[0], "the graph",
+    checkKeys(root, "the graph",
               {"$schema", "version", "name", "description", "parameters", "presets", "nodes", "outputs"});
 
     if (!loadVersion(root, g)) return std::nullopt;  // a newer format: the rest is moot
 
-    if (auto* v = field(root, "", "$schema", json::value_t::string, "'$schema'"))
-      g.schema = v->get<std::string>();
+    if (auto* v = field(root, "$schema", json::value_t::string, "'$schema'"))
+      g.schema = v->value.get<std::string>();
 
-    if (!root.contains("name")) {
-      missing("", "the graph is missing \"name\"");
-    } else if (auto* v = field(root, "", "name", json::value_t::string, "'name'")) {
-      g.name = v->get<std::string>();
+    if (!root.member("name")) {
+      missing(root, "the graph is missing \"name\"");
+    } else if (auto* v = field(root, "name", json::value_t::string, "'name'")) {
+      g.name = v->value.get<std::string>();
       if (!isIdentifier(g.name))
-        diags_.error(DiagCode::InvalidIdentifier, js_.value("/name"),
+        diags_.error(DiagCode::InvalidIdentifier, ref(v->at),
                      "graph name '" + g.name + "' is not an identifier " + kIdentifierRule);
     }
-    if (auto* v = field(root, "", "description", json::value_t::string, "'description'"))
-      g.description = v->get<std::string>();
+    if (auto* v = field(root, "description", json::value_t::string, "'description'"))
+      g.description = v->value.get<std::string>();
 
-    if (auto* v = field(root, "", "parameters", json::value_t::object, "'parameters'"))
-      loadParameters(*v, g);
-    if (auto* v = field(root, "", "presets", json::value_t::object, "'presets'"))
-      loadPresets(*v, g);
+    if (auto* v = field(root, "parameters", json::value_t::object, "'parameters'")) loadParameters(*v, g);
+    if (auto* v = field(root, "presets", json::value_t::object, "'presets'")) loadPresets(*v, g);
 
-    if (!root.contains("nodes")) {
-      missing("", "the graph is missing \"nodes\"");
-    } else if (auto* v = field(root, "", "nodes", json::value_t::array, "'nodes'")) {
-      loadNodes(*v, g);
+    if (!root.member("nodes")) {
+      missing(root, "the graph is missing \"nodes\"");
+    } else if (auto* v = field(root, "nodes", json::value_t::array, "'nodes'")) {
+      if (nodeCount() > kMaxNodes) {
+        diags_.error(DiagCode::LimitExceeded, ref(v->at),
+                     "the graph has " + std::to_string(nodeCount()) + " nodes; the limit is " +
+                         std::to_string(kMaxNodes));
+      } else {
+        diags_.append(nodeDiags_);
+        g.nodes = std::move(nodes_);
+      }
     }
 
-    if (!root.contains("outputs")) {
-      missing("", "the graph is missing \"outputs\"");
-    } else if (auto* v = field(root, "", "outputs", json::value_t::object, "'outputs'")) {
+    if (!root.member("outputs")) {
+      missing(root, "the graph is missing \"outputs\"");
+    } else if (auto* v = field(root, "outputs", json::value_t::object, "'outputs'")) {
       loadOutputs(*v, g);
     }
 
@@ -113,71 +141,34 @@ class Loader {
   }
 
  private:
-  // One step of the way down to a value: an object member's key, or an array index.
-  struct PathStep {
-    const std::string* key = nullptr;
-    std::size_t index = 0;
-  };
-  static std::string pointerOf(const std::vector<PathStep>& path) {
-    std::string ptr;
-    for (const auto& step : path) {
-      ptr += '/';
-      ptr += step.key ? jsonPointerEscape(*step.key) : std::to_string(step.index);
-    }
-    return ptr;
-  }
+  SourceRef ref(JsonPosition p) const { return SourceRef{fileName_, p.line, p.col}; }
 
-  // Every string (and key) within the length limit, every number finite float32. The JSON
-  // pointer is made only for a value that breaks a limit (making one per value was a
-  // tenth of a load).
-  void checkLimits(const json& v, std::vector<PathStep>& path) {
-    if (v.is_string()) {
-      const auto& s = v.get_ref<const std::string&>();
-      if (s.size() > kMaxStringBytes)
-        diags_.error(DiagCode::LimitExceeded, js_.value(pointerOf(path)),
-                     "string of " + std::to_string(s.size()) + " bytes is longer than the limit of " +
-                         std::to_string(kMaxStringBytes));
-    } else if (v.is_number_float()) {
-      double x = v.get<double>();
-      if (!std::isfinite(x) || std::fabs(x) > kFloat32Max)
-        diags_.error(DiagCode::NonFiniteLiteral, js_.value(pointerOf(path)),
-                     "number " + formatNumber(x) + " is outside float32 range");
-    } else if (v.is_number_integer()) {
+  // Every string (and key) within the length limit, every number finite float32.
+  void seenScalar(const JsonScalar& v, JsonPosition at) override {
+    if (v.type == json::value_t::string) {
+      if (v.string->size() > kMaxStringBytes)
+        limits_.error(DiagCode::LimitExceeded, ref(at),
+                      "string of " + std::to_string(v.string->size()) + " bytes is longer than the limit of " +
+                          std::to_string(kMaxStringBytes));
+    } else if (v.type == json::value_t::number_float) {
       // 64-bit integers are far inside float32's range (about 3.4e38).
-    } else if (v.is_array()) {
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        path.push_back({nullptr, i});
-        checkLimits(v[i], path);
-        path.pop_back();
-      }
-    } else if (v.is_object()) {
-      for (auto it = v.begin(); it != v.end(); ++it) {
-        path.push_back({&it.key(), 0});
-        if (it.key().size() > kMaxStringBytes)
-          diags_.error(DiagCode::LimitExceeded, js_.key(pointerOf(path)),
-                       "key of " + std::to_string(it.key().size()) +
-                           " bytes is longer than the limit of " + std::to_string(kMaxStringBytes));
-        checkLimits(it.value(), path);
-        path.pop_back();
-      }
+      if (!std::isfinite(v.number) || std::fabs(v.number) > kFloat32Max)
+        limits_.error(DiagCode::NonFiniteLiteral, ref(at), "number " + formatNumber(v.number) + " is outside float32 range");
     }
   }
-
-  // Member keys of the object at `ptr`, in file order.
-  std::vector<std::string> members(const json& obj, const std::string& ptr) const {
-    std::vector<std::string> keys = js_.keysInOrder(ptr);
-    if (!keys.empty()) return keys;
-    for (auto m = obj.begin(); m != obj.end(); ++m) keys.push_back(m.key());
-    return keys;
+  void seenKey(const std::string& name, JsonPosition at) override {
+    if (name.size() > kMaxStringBytes)
+      limits_.error(DiagCode::LimitExceeded, ref(at),
+                    "key of " + std::to_string(name.size()) + " bytes is longer than the limit of " +
+                        std::to_string(kMaxStringBytes));
   }
 
   // Every member key of the object `obj` is one of `allowed`; an error per other key.
-  // Reads the position tree's names: no pointer strings, no key copies.
-  void checkKeys(const JsonSource::Entry& obj, const std::string& what, std::initializer_list<const char*> allowed,
-                 const std::string& node = {}) {
+  void checkKeys(const DraftValue& obj, const std::string& what, std::initializer_list<const char*> allowed,
+                 const std::string& node = {}, Diagnostics* to = nullptr) {
+    Diagnostics& out = to ? *to : diags_;
     std::string expected;
-    for (uint32_t c : obj.children) {
-      const JsonSource::Entry& member = js_.entries[c];
+    for (const DraftValue& member : obj.members) {
       bool ok = false;
       for (const char* a : allowed) ok = ok || member.name == a;
       if (ok) continue;
@@ -186,57 +177,60 @@ class Loader {
           if (!expected.empty()) expected += ", ";
           expected += a;
         }
-      diags_.error(DiagCode::UnknownField, js_.keyOf(&member),
-                   "unknown field '" + member.name + "' in " + what + " (expected " + expected + ")", node);
+      out.error(DiagCode::UnknownField, ref(member.key),
+                "unknown field '" + member.name + "' in " + what + " (expected " + expected + ")", node);
     }
   }
 
-  void missing(const std::string& objPtr, const std::string& message, const std::string& node = {}) {
-    diags_.error(DiagCode::MissingField, js_.value(objPtr), message, node);
+  void missing(const DraftValue& obj, const std::string& message, const std::string& node = {},
+               Diagnostics* to = nullptr) {
+    (to ? *to : diags_).error(DiagCode::MissingField, ref(obj.at), message, node);
   }
 
   // The member `key` of `obj` if present and of JSON type `type` (any number type for
   // number_float); WG004 if present with another type.
-  const json* field(const json& obj, const std::string& objPtr, const char* key, json::value_t type,
-                    const std::string& label, const std::string& node = {}) {
-    auto it = obj.find(key);
-    if (it == obj.end()) return nullptr;
-    const json& v = *it;
-    bool ok = type == json::value_t::number_float ? v.is_number() : v.type() == type;
+  template <typename Draft>  // DraftValue or const DraftValue
+  Draft* field(Draft& obj, const char* key, json::value_t type, const std::string& label, const std::string& node = {},
+               Diagnostics* to = nullptr) {
+    Draft* v = obj.member(key);
+    if (!v) return nullptr;
+    bool ok = type == json::value_t::number_float ? isNumber(v->type) : v->type == type;
     if (!ok) {
-      std::string want = type == json::value_t::number_float ? "number" : jsonTypeName(json(type));
-      diags_.error(DiagCode::WrongJsonType, js_.value(objPtr + "/" + jsonPointerEscape(key)),
-                   label + " must be " + article(want) + ", found " + jsonTypeName(v), node);
+      std::string want = type == json::value_t::number_float ? "number" : jsonTypeName(type);
+      (to ? *to : diags_)
+          .error(DiagCode::WrongJsonType, ref(v->at), label + " must be " + article(want) + ", found " + jsonTypeName(v->type),
+                 node);
       return nullptr;
     }
-    return &v;
+    return v;
+  }
+  static bool isNumber(json::value_t t) {
+    return t == json::value_t::number_integer || t == json::value_t::number_unsigned || t == json::value_t::number_float;
   }
 
-  bool loadVersion(const json& root, Graph& g) {
-    auto it = root.find("version");
+  bool loadVersion(const DraftValue& root, Graph& g) {
+    const DraftValue* it = root.member("version");
     const std::string expect = "this is graph format " + std::to_string(kGraphFormatVersion);
-    if (it == root.end()) {
-      diags_.error(DiagCode::UnsupportedVersion, js_.value(""), "missing \"version\": " + expect);
+    if (!it) {
+      diags_.error(DiagCode::UnsupportedVersion, ref(root.at), "missing \"version\": " + expect);
       return true;
     }
-    if (!it->is_number_integer()) {
-      diags_.error(DiagCode::UnsupportedVersion, js_.value("/version"),
-                   "\"version\" must be an integer, found " + describeValue(*it) + ": " + expect);
+    if (!it->value.is_number_integer()) {
+      diags_.error(DiagCode::UnsupportedVersion, ref(it->at),
+                   "\"version\" must be an integer, found " + describeValue(it->value) + ": " + expect);
       return true;
     }
-    long long v = it->is_number_unsigned()
-                      ? static_cast<long long>(std::min<unsigned long long>(
-                            it->get<unsigned long long>(), 1ull << 62))
-                      : it->get<long long>();
+    long long v = it->value.is_number_unsigned()
+                      ? static_cast<long long>(std::min<unsigned long long>(it->value.get<unsigned long long>(), 1ull << 62))
+                      : it->value.get<long long>();
     if (v > kGraphFormatVersion) {
-      diags_.error(DiagCode::UnsupportedVersion, js_.value("/version"),
-                   "graph format version " + std::to_string(v) +
-                       " is newer than this watergraph supports (" +
+      diags_.error(DiagCode::UnsupportedVersion, ref(it->at),
+                   "graph format version " + std::to_string(v) + " is newer than this watergraph supports (" +
                        std::to_string(kGraphFormatVersion) + ")");
       return false;
     }
     if (v < 1) {
-      diags_.error(DiagCode::UnsupportedVersion, js_.value("/version"),
+      diags_.error(DiagCode::UnsupportedVersion, ref(it->at),
                    "graph format version " + std::to_string(v) + " does not exist: " + expect);
       return true;
     }
@@ -244,34 +238,33 @@ class Loader {
     return true;
   }
 
-  void loadParameters(const json& params, Graph& g) {
-    for (const auto& name : members(params, "/parameters")) {
-      const std::string ptr = "/parameters/" + jsonPointerEscape(name);
-      const json& pv = params.at(name);
+  void loadParameters(const DraftValue& params, Graph& g) {
+    for (const DraftValue& pv : params.members) {
+      const std::string& name = pv.name;
       Parameter p;
       p.name = name;
-      p.where = js_.key(ptr);
+      p.where = ref(pv.key);
       bool ok = true;  // type, default, min and max are usable for the range check
       if (!isIdentifier(name))
         diags_.error(DiagCode::InvalidIdentifier, p.where,
                      "parameter name '" + name + "' is not an identifier " + kIdentifierRule);
-      if (!pv.is_object()) {
-        diags_.error(DiagCode::WrongJsonType, js_.value(ptr),
-                     "parameter '" + name + "' must be an object, found " + jsonTypeName(pv));
+      if (pv.type != json::value_t::object) {
+        diags_.error(DiagCode::WrongJsonType, ref(pv.at),
+                     "parameter '" + name + "' must be an object, found " + jsonTypeName(pv.type));
         continue;
       }
       const std::string what = "parameter '" + name + "'";
-      checkKeys(*js_.entry(ptr), what, {"type", "default", "min", "max", "hint", "description", "static"});
+      checkKeys(pv, what, {"type", "default", "min", "max", "hint", "description", "static"});
 
       bool typeOk = false;
-      if (!pv.contains("type")) {
-        missing(ptr, what + " is missing \"type\"");
-      } else if (auto* t = field(pv, ptr, "type", json::value_t::string, "'type' of " + what)) {
-        auto type = parseType(t->get<std::string>());
+      if (!pv.member("type")) {
+        missing(pv, what + " is missing \"type\"");
+      } else if (auto* t = field(pv, "type", json::value_t::string, "'type' of " + what)) {
+        const auto& typeText = t->value.get_ref<const std::string&>();
+        auto type = parseType(typeText);
         if (!type || !isFloatScalarOrVector(*type)) {
-          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/type"),
-                       what + " has type '" + t->get<std::string>() +
-                           "'; a parameter is float, vec2, vec3 or vec4");
+          diags_.error(DiagCode::InvalidParameter, ref(t->at),
+                       what + " has type '" + typeText + "'; a parameter is float, vec2, vec3 or vec4");
         } else {
           p.type = *type;
           typeOk = true;
@@ -279,56 +272,54 @@ class Loader {
       }
       ok = typeOk;
 
-      if (!pv.contains("default")) {
-        missing(ptr, what + " is missing \"default\"");
+      const DraftValue* def = pv.member("default");
+      if (!def) {
+        missing(pv, what + " is missing \"default\"");
         ok = false;
       } else if (typeOk) {
-        auto value = readValue(p, pv.at("default"), ptr + "/default", "the default of " + what);
+        auto value = readValue(p, *def, "the default of " + what);
         if (value) p.defaultValue = std::move(*value);
         else ok = false;
       }
 
-      if (auto* v = field(pv, ptr, "min", json::value_t::number_float, "'min' of " + what))
-        p.min = v->get<double>();
-      else if (pv.contains("min"))
+      if (auto* v = field(pv, "min", json::value_t::number_float, "'min' of " + what))
+        p.min = v->value.get<double>();
+      else if (pv.member("min"))
         ok = false;
-      if (auto* v = field(pv, ptr, "max", json::value_t::number_float, "'max' of " + what))
-        p.max = v->get<double>();
-      else if (pv.contains("max"))
+      if (auto* v = field(pv, "max", json::value_t::number_float, "'max' of " + what))
+        p.max = v->value.get<double>();
+      else if (pv.member("max"))
         ok = false;
       if (p.min && p.max && *p.min > *p.max) {
-        diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/min"),
-                     "the range of " + what + " is empty: min " + formatNumber(*p.min) +
-                         " is greater than max " + formatNumber(*p.max));
+        diags_.error(DiagCode::InvalidParameter, ref(pv.member("min")->at),
+                     "the range of " + what + " is empty: min " + formatNumber(*p.min) + " is greater than max " +
+                         formatNumber(*p.max));
       } else if (ok) {
-        checkRange(p, p.defaultValue, ptr + "/default", "the default of " + what);
+        checkRange(p, p.defaultValue, def->at, "the default of " + what);
       }
 
-      if (auto* v = field(pv, ptr, "hint", json::value_t::string, "'hint' of " + what)) {
-        p.hint = v->get<std::string>();
+      if (auto* v = field(pv, "hint", json::value_t::string, "'hint' of " + what)) {
+        p.hint = v->value.get<std::string>();
         if (p.hint != "color") {
-          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/hint"),
+          diags_.error(DiagCode::InvalidParameter, ref(v->at),
                        "unknown hint '" + p.hint + "' on " + what + " (the only hint is \"color\")");
         } else if (typeOk && p.type != Type::Vec3 && p.type != Type::Vec4) {
-          diags_.error(DiagCode::InvalidParameter, js_.value(ptr + "/hint"),
-                       "the \"color\" hint on " + what + " needs type vec3 or vec4, not " +
-                           std::string(typeName(p.type)));
+          diags_.error(DiagCode::InvalidParameter, ref(v->at),
+                       "the \"color\" hint on " + what + " needs type vec3 or vec4, not " + std::string(typeName(p.type)));
         }
       }
-      if (auto* v =
-              field(pv, ptr, "description", json::value_t::string, "'description' of " + what))
-        p.description = v->get<std::string>();
-      if (auto* v = field(pv, ptr, "static", json::value_t::boolean, "'static' of " + what))
-        p.isStatic = v->get<bool>();
+      if (auto* v = field(pv, "description", json::value_t::string, "'description' of " + what))
+        p.description = v->value.get<std::string>();
+      if (auto* v = field(pv, "static", json::value_t::boolean, "'static' of " + what)) p.isStatic = v->value.get<bool>();
 
       g.parameters.push_back(std::move(p));
     }
   }
 
-  // A value for parameter `p` written at `valuePtr`: a number for float, an array of n
-  // numbers for vecN; WG011 naming `label` otherwise.
-  std::optional<std::vector<double>> readValue(const Parameter& p, const json& d, const std::string& valuePtr,
-                                               const std::string& label) {
+  // A value for parameter `p`: a number for float, an array of n numbers for vecN; WG011
+  // naming `label` otherwise.
+  std::optional<std::vector<double>> readValue(const Parameter& p, const DraftValue& dv, const std::string& label) {
+    const json& d = dv.value;
     const int n = componentCount(p.type);
     std::vector<double> xs;
     bool shapeOk = false;
@@ -343,15 +334,13 @@ class Loader {
     }
     if (shapeOk) return xs;
     std::string shape = n == 1 ? "a number" : "an array of " + std::to_string(n) + " numbers";
-    diags_.error(DiagCode::InvalidParameter, js_.value(valuePtr),
-                 label + " must be " + shape + " for " + std::string(typeName(p.type)) + ", found " +
-                     describeValue(d));
+    diags_.error(DiagCode::InvalidParameter, ref(dv.at),
+                 label + " must be " + shape + " for " + std::string(typeName(p.type)) + ", found " + describeValue(d));
     return std::nullopt;
   }
 
   // WG011 when a component of `xs` lies outside the parameter's [min, max].
-  void checkRange(const Parameter& p, const std::vector<double>& xs, const std::string& valuePtr,
-                  const std::string& label) {
+  void checkRange(const Parameter& p, const std::vector<double>& xs, JsonPosition at, const std::string& label) {
     if (!p.min && !p.max) return;
     for (std::size_t i = 0; i < xs.size(); ++i) {
       double x = xs[i];
@@ -359,8 +348,7 @@ class Loader {
         std::string range = "[" + (p.min ? formatNumber(*p.min) : std::string("-inf")) + ", " +
                             (p.max ? formatNumber(*p.max) : std::string("inf")) + "]";
         std::string comp = xs.size() > 1 ? " (component " + std::to_string(i) + ")" : std::string();
-        diags_.error(DiagCode::InvalidParameter, js_.value(valuePtr),
-                     label + " " + formatNumber(x) + comp + " lies outside its range " + range);
+        diags_.error(DiagCode::InvalidParameter, ref(at), label + " " + formatNumber(x) + comp + " lies outside its range " + range);
         return;
       }
     }
@@ -368,7 +356,7 @@ class Loader {
 
   // "presets": {"calm": {"amplitude": 0.1, ...}, ...}: each value names a declared
   // parameter and fits its type and range (checked after the parameters are loaded).
-  void loadPresets(const json& presets, Graph& g) {
+  void loadPresets(const DraftValue& presets, Graph& g) {
     std::vector<std::string> paramNames;
     std::unordered_map<std::string_view, const Parameter*> parameterByName;  // not a scan per value
     for (const auto& p : g.parameters) {
@@ -376,126 +364,109 @@ class Loader {
       parameterByName.emplace(p.name, &p);
     }
     NameSuggester parameterNames(std::move(paramNames));
-    for (const auto& name : members(presets, "/presets")) {
-      const std::string ptr = "/presets/" + jsonPointerEscape(name);
-      const json& pv = presets.at(name);
+    for (const DraftValue& pv : presets.members) {
+      const std::string& name = pv.name;
       Preset preset;
       preset.name = name;
-      preset.where = js_.key(ptr);
+      preset.where = ref(pv.key);
       if (!isIdentifier(name))
         diags_.error(DiagCode::InvalidIdentifier, preset.where,
                      "preset name '" + name + "' is not an identifier " + kIdentifierRule);
-      if (!pv.is_object()) {
-        diags_.error(DiagCode::WrongJsonType, js_.value(ptr),
-                     "preset '" + name + "' must be an object of parameter values, found " + jsonTypeName(pv));
+      if (pv.type != json::value_t::object) {
+        diags_.error(DiagCode::WrongJsonType, ref(pv.at),
+                     "preset '" + name + "' must be an object of parameter values, found " + jsonTypeName(pv.type));
         continue;
       }
-      for (const auto& param : members(pv, ptr)) {
-        const std::string vptr = ptr + "/" + jsonPointerEscape(param);
+      for (const DraftValue& value : pv.members) {
+        const std::string& param = value.name;
         auto found = parameterByName.find(param);
         const Parameter* p = found == parameterByName.end() ? nullptr : found->second;
         if (!p) {
-          diags_.error(DiagCode::UnknownParameter, js_.key(vptr),
+          diags_.error(DiagCode::UnknownParameter, ref(value.key),
                        "preset '" + name + "' sets parameter '" + param + "', which is not declared" +
                            parameterNames.didYouMean(param));
           continue;
         }
         if (p->defaultValue.empty()) continue;  // the parameter itself is broken (reported)
         const std::string label = "the value of '" + param + "' in preset '" + name + "'";
-        auto value = readValue(*p, pv.at(param), vptr, label);
-        if (!value) continue;
-        checkRange(*p, *value, vptr, label);
-        preset.values.push_back({param, std::move(*value), js_.value(vptr)});
+        auto values = readValue(*p, value, label);
+        if (!values) continue;
+        checkRange(*p, *values, value.at, label);
+        preset.values.push_back({param, std::move(*values), ref(value.at)});
       }
       g.presets.push_back(std::move(preset));
     }
   }
 
-  void loadNodes(const json& nodes, Graph& g) {
-    if (nodes.size() > kMaxNodes) {
-      diags_.error(DiagCode::LimitExceeded, js_.value("/nodes"),
-                   "the graph has " + std::to_string(nodes.size()) + " nodes; the limit is " +
-                       std::to_string(kMaxNodes));
+  // One element of "nodes", as soon as it ends; its diagnostics wait in nodeDiags_ for
+  // their turn (after the presets), its Node in nodes_.
+  void node(DraftValue& nv) override {
+    if (nodeCount() > kMaxNodes) return;  // reported alone in load()
+    Diagnostics& out = nodeDiags_;
+    if (nv.type != json::value_t::object) {
+      out.error(DiagCode::WrongJsonType, ref(nv.at), "each node must be an object, found " + jsonTypeName(nv.type));
       return;
     }
-    g.nodes.reserve(nodes.size());
-    // Positions come from each node's entry (found once), not from pointer look-ups from
-    // the root; pointers are still made for the error paths.
-    const JsonSource::Entry& nodesEntry = *js_.entry("/nodes");
-    for (std::size_t i = 0; i < nodes.size(); ++i) {
-      const std::string ptr = "/nodes/" + std::to_string(i);
-      const json& nv = nodes[i];
-      const JsonSource::Entry& ne = js_.child(nodesEntry, i);
-      if (!nv.is_object()) {
-        diags_.error(DiagCode::WrongJsonType, js_.valueOf(&ne),
-                     "each node must be an object, found " + jsonTypeName(nv));
-        continue;
-      }
-      Node n;
-      n.where = js_.valueOf(&ne);
-      std::string label;  // for diagnostics: the id when it is a valid one
-      if (!nv.contains("id")) {
-        missing(ptr, "node is missing \"id\"");
-      } else if (auto* v = field(nv, ptr, "id", json::value_t::string, "a node's 'id'")) {
-        n.id = v->get<std::string>();
-        n.idWhere = js_.valueOf(js_.member(ne, "id"));
-        if (isIdentifier(n.id))
-          label = n.id;
-        else
-          diags_.error(DiagCode::InvalidIdentifier, n.idWhere,
-                       "node id '" + n.id + "' is not an identifier " + kIdentifierRule);
-      }
-      checkKeys(ne, "node", {"id", "type", "options", "inputs", "editor"}, label);
-      if (!nv.contains("type")) {
-        missing(ptr, "node is missing \"type\"", label);
-      } else if (auto* v = field(nv, ptr, "type", json::value_t::string, "a node's 'type'", label)) {
-        n.type = v->get<std::string>();
-        n.typeWhere = js_.valueOf(js_.member(ne, "type"));
-      }
-      if (auto* v = field(nv, ptr, "options", json::value_t::object, "a node's 'options'", label)) {
-        for (uint32_t c : js_.member(ne, "options")->children) {
-          const JsonSource::Entry& o = js_.entries[c];
-          n.options.push_back(NodeOption{o.name, v->at(o.name), js_.valueOf(&o), js_.keyOf(&o)});
-        }
-      }
-      if (auto* v = field(nv, ptr, "inputs", json::value_t::object, "a node's 'inputs'", label)) {
-        const JsonSource::Entry& inputs = *js_.member(ne, "inputs");
-        n.inputs.reserve(inputs.children.size());
-        for (uint32_t c : inputs.children) {
-          const JsonSource::Entry& e = js_.entries[c];
-          NodeInput in;
-          in.port = e.name;
-          in.keyWhere = js_.keyOf(&e);
-          if (parseSource(v->at(e.name), js_.valueOf(&e), in.source, label, [&] { return "input '" + e.name + "'"; }))
-            n.inputs.push_back(std::move(in));
-        }
-      }
-      if (auto* v = field(nv, ptr, "editor", json::value_t::object, "a node's 'editor'", label)) {
-        const std::string edPtr = ptr + "/editor";
-        checkKeys(*js_.member(ne, "editor"), "a node's editor position", {"x", "y"}, label);
-        std::array<double, 2> pos{0, 0};
-        bool ok = true;
-        const char* axes[2] = {"x", "y"};
-        for (int a = 0; a < 2; ++a) {
-          if (!v->contains(axes[a])) {
-            missing(edPtr, std::string("editor position is missing \"") + axes[a] + "\"", label);
-            ok = false;
-          } else if (auto* c = field(*v, edPtr, axes[a], json::value_t::number_float,
-                                     std::string("'editor.") + axes[a] + "'", label)) {
-            pos[a] = c->get<double>();
-          } else {
-            ok = false;
-          }
-        }
-        if (ok) n.editorPosition = pos;
-      }
-      g.nodes.push_back(std::move(n));
+    Node n;
+    n.where = ref(nv.at);
+    std::string label;  // for diagnostics: the id when it is a valid one
+    if (!nv.member("id")) {
+      missing(nv, "node is missing \"id\"", {}, &out);
+    } else if (auto* v = field(nv, "id", json::value_t::string, "a node's 'id'", {}, &out)) {
+      n.id = std::move(v->value.get_ref<std::string&>());
+      n.idWhere = ref(v->at);
+      if (isIdentifier(n.id))
+        label = n.id;
+      else
+        out.error(DiagCode::InvalidIdentifier, n.idWhere, "node id '" + n.id + "' is not an identifier " + kIdentifierRule);
     }
+    checkKeys(nv, "node", {"id", "type", "options", "inputs", "editor"}, label, &out);
+    if (!nv.member("type")) {
+      missing(nv, "node is missing \"type\"", label, &out);
+    } else if (auto* v = field(nv, "type", json::value_t::string, "a node's 'type'", label, &out)) {
+      n.type = std::move(v->value.get_ref<std::string&>());
+      n.typeWhere = ref(v->at);
+    }
+    if (auto* v = field(nv, "options", json::value_t::object, "a node's 'options'", label, &out)) {
+      n.options.reserve(v->members.size());
+      for (DraftValue& o : v->members)
+        n.options.push_back(NodeOption{std::move(o.name), std::move(o.value), ref(o.at), ref(o.key)});
+    }
+    if (auto* v = field(nv, "inputs", json::value_t::object, "a node's 'inputs'", label, &out)) {
+      n.inputs.reserve(v->members.size());
+      for (const DraftValue& e : v->members) {
+        NodeInput in;
+        in.port = e.name;
+        in.keyWhere = ref(e.key);
+        if (parseSource(e.value, ref(e.at), in.source, label, [&] { return "input '" + e.name + "'"; }, out))
+          n.inputs.push_back(std::move(in));
+      }
+    }
+    if (auto* v = field(nv, "editor", json::value_t::object, "a node's 'editor'", label, &out)) {
+      checkKeys(*v, "a node's editor position", {"x", "y"}, label, &out);
+      std::array<double, 2> pos{0, 0};
+      bool ok = true;
+      const char* axes[2] = {"x", "y"};
+      for (int a = 0; a < 2; ++a) {
+        if (!v->member(axes[a])) {
+          missing(*v, std::string("editor position is missing \"") + axes[a] + "\"", label, &out);
+          ok = false;
+        } else if (auto* c = field(*v, axes[a], json::value_t::number_float, std::string("'editor.") + axes[a] + "'",
+                                   label, &out)) {
+          pos[a] = c->value.get<double>();
+        } else {
+          ok = false;
+        }
+      }
+      if (ok) n.editorPosition = pos;
+    }
+    nodes_.push_back(std::move(n));
   }
 
   // `port()` names the input or output for the diagnostic, made only when there is one.
   template <typename PortLabel>
-  bool parseSource(const json& v, SourceRef where, InputSource& out, const std::string& node, const PortLabel& port) {
+  bool parseSource(const json& v, SourceRef where, InputSource& out, const std::string& node, const PortLabel& port,
+                   Diagnostics& diags) {
     out.where = std::move(where);
     if (v.is_string()) {
       const auto& s = v.get_ref<const std::string&>();
@@ -531,12 +502,12 @@ class Loader {
         return true;
       }
     }
-    diags_.error(DiagCode::InvalidReference, out.where,
-                 "invalid input " + describeValue(v) + ": " + kSourceForms, node, port());
+    diags.error(DiagCode::InvalidReference, out.where, "invalid input " + describeValue(v) + ": " + kSourceForms, node,
+                port());
     return false;
   }
 
-  void loadOutputs(const json& outputs, Graph& g) {
+  void loadOutputs(const DraftValue& outputs, Graph& g) {
     const char* expected = "(vertex: position, normal; fragment: color, alpha)";
     struct Slot {
       const char* stage;
@@ -551,47 +522,48 @@ class Loader {
     };
     int connected = 0;
     const size_t errorsBefore = diags_.errorCount();
-    for (const auto& stage : members(outputs, "/outputs")) {
-      const std::string stagePtr = "/outputs/" + jsonPointerEscape(stage);
+    for (const DraftValue& sv : outputs.members) {
+      const std::string& stage = sv.name;
       if (stage != "vertex" && stage != "fragment") {
-        diags_.error(DiagCode::UnknownOutputSlot, js_.key(stagePtr),
-                     "unknown output stage '" + stage + "' " + expected);
+        diags_.error(DiagCode::UnknownOutputSlot, ref(sv.key), "unknown output stage '" + stage + "' " + expected);
         continue;
       }
-      const json& sv = outputs.at(stage);
-      if (!sv.is_object()) {
-        diags_.error(DiagCode::WrongJsonType, js_.value(stagePtr),
-                     "'outputs." + stage + "' must be an object, found " + jsonTypeName(sv));
+      if (sv.type != json::value_t::object) {
+        diags_.error(DiagCode::WrongJsonType, ref(sv.at),
+                     "'outputs." + stage + "' must be an object, found " + jsonTypeName(sv.type));
         continue;
       }
-      for (const auto& name : members(sv, stagePtr)) {
-        const std::string slotPtr = stagePtr + "/" + jsonPointerEscape(name);
+      for (const DraftValue& slot : sv.members) {
+        const std::string& name = slot.name;
         const Slot* found = nullptr;
         for (const auto& s : kSlots)
           if (stage == s.stage && name == s.name) found = &s;
         if (!found) {
-          diags_.error(DiagCode::UnknownOutputSlot, js_.key(slotPtr),
+          diags_.error(DiagCode::UnknownOutputSlot, ref(slot.key),
                        "unknown output slot '" + stage + "." + name + "' " + expected);
           continue;
         }
         ++connected;
         GraphOutput out;
         out.slot = found->slot;
-        out.keyWhere = js_.key(slotPtr);
-        if (parseSource(sv.at(name), js_.value(slotPtr), out.source, {},
-                        [&] { return "output '" + stage + "." + name + "'"; }))
+        out.keyWhere = ref(slot.key);
+        if (parseSource(slot.value, ref(slot.at), out.source, {}, [&] { return "output '" + stage + "." + name + "'"; },
+                        diags_))
           g.outputs.push_back(std::move(out));
       }
     }
     std::stable_sort(g.outputs.begin(), g.outputs.end(),
                      [](const GraphOutput& a, const GraphOutput& b) { return a.slot < b.slot; });
     if (connected == 0 && diags_.errorCount() == errorsBefore)  // else the cause is reported
-      diags_.error(DiagCode::NoOutputs, js_.value("/outputs"), "the graph connects no outputs");
+      diags_.error(DiagCode::NoOutputs, ref(outputs.at), "the graph connects no outputs");
   }
 
-  const JsonSource& js_;
   const std::string& file_;
+  const FileName fileName_;  // shared by every position of the graph
   Diagnostics& diags_;
+  Diagnostics limits_;     // from every value as it comes; reported first
+  Diagnostics nodeDiags_;  // from each node as it ends; reported in the nodes' turn
+  std::vector<Node> nodes_;
 };
 
 }  // namespace
@@ -602,9 +574,9 @@ std::optional<Graph> parseGraph(std::string_view text, const std::string& file, 
                 "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
     return std::nullopt;
   }
-  auto js = parseJsonWithPositions(text, file, diags);
-  if (!js) return std::nullopt;
-  return Loader(*js, file, diags).load();
+  Loader loader(file, diags, expectedNodes(text));
+  if (!parseJsonEvents(text, file, diags, loader)) return std::nullopt;
+  return loader.load();
 }
 
 std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags) {

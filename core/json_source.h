@@ -1,6 +1,7 @@
 #pragma once
-// JSON parsed by nlohmann's SAX interface into a DOM plus the file position of every
-// value and key (nlohmann's own DOM keeps none and silently drops duplicate keys).
+// JSON parsed into a DOM plus the file position of every value and key (nlohmann's own DOM
+// keeps none and silently drops duplicate keys), for readers that walk a DOM (probe cases
+// files). The graph loader reads the events directly (core/json_events.h).
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -11,16 +12,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/diagnostic.h"
+#include "core/json_events.h"
 #include "core/source_ref.h"
 
 namespace wg {
 
 struct JsonSource {
   // A line and column in `file`; SourceRefs are made from them only when asked for.
-  struct Position {
-    int line = 0;
-    int col = 0;
-  };
+  using Position = JsonPosition;
   // One parsed value, in a tree beside the DOM: positions, the member key, and children in
   // file order. One entry per value, with no string per value beyond its key: a map keyed by
   // JSON pointer cost two heap strings and two map nodes per value, most of a load's time.
@@ -32,7 +31,7 @@ struct JsonSource {
     bool isArray = false;
   };
 
-  std::string file;
+  FileName file;
   nlohmann::json root;
   std::vector<Entry> entries;  // entries[0] is the root; values of duplicate keys are orphans
 
@@ -60,8 +59,7 @@ struct JsonSource {
   mutable std::unordered_map<uint32_t, std::unordered_map<std::string, uint32_t>> memberIndex_;
 };
 
-// Reports JSON syntax (WG001), encoding (WG002: invalid UTF-8, a byte-order mark) and
-// duplicate keys (WG003, every duplicate, with the first occurrence as a note).
+// Reports what parseJsonEvents reports (syntax, encoding, duplicate keys, depth).
 std::optional<JsonSource> parseJsonWithPositions(std::string_view text, const std::string& file,
                                                  Diagnostics& diags);
 

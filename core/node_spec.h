@@ -256,7 +256,7 @@ struct NodeSpec {
   double relaxedTolerance = 0;
   std::string relaxedWhen;
   // Scene resources the node reads; each makes the runtime run the pass that produces it
-  // (codegen/plan.cpp maps them): scene_depth, scene_color, planar_reflection,
+  // (codegen/manifest.cpp maps each to its pass): scene_depth, scene_color, planar_reflection,
   // environment, underwater.
   std::vector<std::string> resources;
 

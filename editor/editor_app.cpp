@@ -11,10 +11,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "codegen/output_files.h"
 #include "core/graph_edit.h"
@@ -28,6 +26,7 @@
 #include "editor/node_canvas.h"
 #include "editor/node_preview_graph.h"
 #include "editor/orbit_camera.h"
+#include "editor/script_runner.h"
 #include "nodes/registry.h"
 #include "runtime/glfw_context.h"
 #include "runtime/image.h"
@@ -63,7 +62,7 @@ struct Latency {
   }
 };
 
-class App {
+class App : private ScriptHost {
  public:
   App(const EditorOptions& options, rt::GlfwContext& window)
       : options_(options), window_(window), registry_(defaultRegistry()), editor_(Graph{}, &registry_),
@@ -87,7 +86,7 @@ class App {
 
   // --- model and files ---
   bool loadFromDisk(bool initial);
-  bool save(const std::string& path);
+  bool writeGraph(const std::string& path);  // the editor's graph to `path`; false when it could not
   void setErrors(const Diagnostics& d, const std::string& context);
   std::optional<Graph> graphToCompile(Diagnostics& d) const;
   void noteEdit() {
@@ -100,8 +99,19 @@ class App {
   void rebuildThumbnail();
   void renderPreviews();
   void finishLatency();
-  // --- script ---
-  bool runScriptStep();  // false when the script failed
+  // --- script steps (ScriptHost) ---
+  bool graphLoaded() const override { return haveGraph_; }
+  GraphEditor& graphEditor() override { return editor_; }
+  void edited() override { noteEdit(); }
+  const std::string& graphPath() const override { return options_.graphPath; }
+  int diskEvents() const override { return diskEvents_; }
+  std::string save(const std::string& path) override { return writeGraph(path) ? "" : "cannot save " + path; }
+  std::string screenshot(const std::string& path) override;
+  std::string savePreview(const std::string& path) override;
+  std::string saveThumbnail(const std::string& path) override;
+  std::string select(const std::string& node, int port) override;
+  std::string camera(const std::string& preset) override;
+  void setTime(float seconds) override;
   // --- UI ---
   void drawUi();
   void drawPreviewPanel(float x, float y, float w, float h);
@@ -146,12 +156,7 @@ class App {
   std::optional<Latency> lastLatency_;
 
   NodeCanvas canvas_;
-  std::vector<ScriptStep> script_;
-  size_t scriptNext_ = 0;
-  int waitFrames_ = 0;
-  int waitReloadFrom_ = -1;
-  int waitReloadBudget_ = 0;
-  int eventsBeforeWrite_ = -1;  // diskEvents_ when the script last wrote the file
+  std::optional<ScriptRunner> script_;
   std::string pendingScreenshot_;
   bool scriptFailed_ = false;
 };
@@ -186,7 +191,7 @@ bool App::loadFromDisk(bool initial) {
   return true;
 }
 
-bool App::save(const std::string& path) {
+bool App::writeGraph(const std::string& path) {
   if (!haveGraph_) {
     status_ = "nothing to save: the file has not loaded yet";
     std::cerr << "watergraph-editor: " << status_ << "\n";
@@ -334,113 +339,45 @@ void App::finishLatency() {
 }
 
 // ---------------------------------------------------------------------------------------
-// Script
+// What script steps do here (editor/script_runner.h runs them)
 
-bool App::runScriptStep() {
-  if (waitFrames_ > 0) {
-    --waitFrames_;
-    return true;
-  }
-  if (waitReloadFrom_ >= 0) {
-    if (diskEvents_ > waitReloadFrom_) {
-      waitReloadFrom_ = -1;
-    } else {
-      if (--waitReloadBudget_ <= 0) {
-        std::cerr << options_.script << ": wait_reload: the change on disk was not noticed\n";
-        return false;
-      }
-      return true;
-    }
-  }
-  if (scriptNext_ >= script_.size()) return true;
-  const ScriptStep& step = script_[scriptNext_++];
-  const auto& a = step.args;
-  std::string where = options_.script + ": step " + std::to_string(step.index) + " (" + step.op + ")";
-  auto fail = [&](const std::string& why) {
-    std::cerr << where << ": " << why << "\n";
-    return false;
-  };
-  auto str = [&](const char* key) -> std::string {
-    auto it = a.find(key);
-    return it != a.end() && it->is_string() ? it->get<std::string>() : "";
-  };
-  if (isEditOp(step.op)) {
-    if (!haveGraph_) return fail("the graph has not loaded");
-    long before = editor_.revision();
-    std::string why = applyEditStep(editor_, step);
-    editor_.seal();
-    if (!why.empty()) return fail(why);
-    if (editor_.revision() != before) noteEdit();
-    return true;
-  }
-  if (step.op == "save") {
-    std::string path = str("path").empty() ? options_.graphPath : str("path");
-    return save(path) || fail("cannot save " + path);
-  }
-  if (step.op == "screenshot" || step.op == "save_preview" || step.op == "save_thumbnail") {
-    if (str("path").empty()) return fail("needs a string \"path\"");
-    if (step.op == "screenshot") {
-      pendingScreenshot_ = str("path");
-      return true;
-    }
-    if (step.op == "save_thumbnail") {
-      if (!thumb_ || !thumb_->ready()) return fail("no thumbnail: " + (thumbMessage_.empty() ? "no node selected" : thumbMessage_));
-      rt::writePng(str("path"), thumb_->read());
-      return true;
-    }
-    if (!preview_.ready()) return fail("there is no preview (the graph never compiled)");
-    rt::writePng(str("path"), preview_.read());
-    return true;
-  }
-  if (step.op == "select") {
-    selected_ = thumbNode_ = str("node");
-    thumbPort_ = a.contains("port") && a["port"].is_number_integer() ? a["port"].get<int>() : 0;
-    thumbStale_ = true;
-    if (!selected_.empty() && !editor_.graph().findNode(selected_)) return fail("no node '" + selected_ + "'");
-    return true;
-  }
-  if (step.op == "camera") {
-    auto c = rt::cameraPreset(str("preset"));
-    if (!c) return fail("no camera preset '" + str("preset") + "'");
-    orbit_ = OrbitCamera::fromCamera(*c);
-    cameraName_ = str("preset");
-    previewDirty_ = true;
-    return true;
-  }
-  if (step.op == "time") {
-    if (!a.contains("value") || !a["value"].is_number()) return fail("needs a number \"value\"");
-    scene_.time = a["value"].get<float>();
-    previewDirty_ = true;
-    return true;
-  }
-  if (step.op == "frames") {
-    waitFrames_ = a.contains("count") && a["count"].is_number_integer() ? a["count"].get<int>() : 1;
-    return true;
-  }
-  if (step.op == "external_write") {
-    // Another program writing the graph file in place, as a text editor does.
-    std::string text = str("text");
-    if (!str("from").empty()) {
-      std::ifstream in(str("from"), std::ios::binary);
-      if (!in) return fail("cannot read " + str("from"));
-      std::stringstream ss;
-      ss << in.rdbuf();
-      text = ss.str();
-    }
-    std::ofstream out(options_.graphPath, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out) return fail("cannot write " + options_.graphPath);
-    eventsBeforeWrite_ = diskEvents_;
-    return true;
-  }
-  if (step.op == "wait_reload") {
-    // The change may already have been noticed in the frame after the write.
-    waitReloadFrom_ = eventsBeforeWrite_ >= 0 ? eventsBeforeWrite_ : diskEvents_;
-    eventsBeforeWrite_ = -1;
-    waitReloadBudget_ = 600;
-    return true;
-  }
-  return fail("unknown op");
+std::string App::screenshot(const std::string& path) {
+  pendingScreenshot_ = path;
+  return "";
+}
+
+std::string App::savePreview(const std::string& path) {
+  if (!preview_.ready()) return "there is no preview (the graph never compiled)";
+  rt::writePng(path, preview_.read());
+  return "";
+}
+
+std::string App::saveThumbnail(const std::string& path) {
+  if (!thumb_ || !thumb_->ready()) return "no thumbnail: " + (thumbMessage_.empty() ? "no node selected" : thumbMessage_);
+  rt::writePng(path, thumb_->read());
+  return "";
+}
+
+std::string App::select(const std::string& node, int port) {
+  selected_ = thumbNode_ = node;
+  thumbPort_ = port;
+  thumbStale_ = true;
+  if (!selected_.empty() && !editor_.graph().findNode(selected_)) return "no node '" + selected_ + "'";
+  return "";
+}
+
+std::string App::camera(const std::string& preset) {
+  auto c = rt::cameraPreset(preset);
+  if (!c) return "no camera preset '" + preset + "'";
+  orbit_ = OrbitCamera::fromCamera(*c);
+  cameraName_ = preset;
+  previewDirty_ = true;
+  return "";
+}
+
+void App::setTime(float seconds) {
+  scene_.time = seconds;
+  previewDirty_ = true;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -510,7 +447,7 @@ void App::drawPreviewPanel(float x, float y, float w, float h) {
 void App::drawInspectorPanel(float x, float y, float w, float h) {
   placeNext(x, y, w, h);
   ImGui::Begin("Inspector", nullptr, kPanel);
-  if (ImGui::Button("save")) save(options_.graphPath);
+  if (ImGui::Button("save")) writeGraph(options_.graphPath);
   ImGui::SameLine();
   ImGui::BeginDisabled(!editor_.canUndo());
   if (ImGui::Button("undo")) editor_.undo();
@@ -578,7 +515,7 @@ void App::shortcuts() {
   if (!io.KeyCtrl || io.WantTextInput) return;
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) io.KeyShift ? editor_.redo() : editor_.undo();
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) editor_.redo();
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) save(options_.graphPath);
+  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) writeGraph(options_.graphPath);
 }
 
 void App::drawUi() {
@@ -620,7 +557,7 @@ int App::run() {
       std::cerr << error << "\n";
       return 1;
     }
-    script_ = std::move(*steps);
+    script_.emplace(std::move(*steps), options_.script);
   }
   loadFromDisk(true);
 
@@ -648,7 +585,10 @@ int App::run() {
       loadFromDisk(false);
     }
     // A step sees every earlier step on screen; its own edit is shown in this frame.
-    if (batch && !scriptFailed_ && !runScriptStep()) scriptFailed_ = true;
+    if (script_ && !scriptFailed_ && !script_->step(*this)) {
+      std::cerr << script_->error() << "\n";
+      scriptFailed_ = true;
+    }
 
     long before = editor_.revision();
     ImGui_ImplOpenGL3_NewFrame();
@@ -671,7 +611,7 @@ int App::run() {
     glClearColor(0.1f, 0.1f, 0.12f, 1);
     glClear(GL_COLOR_BUFFER_BIT);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    bool scriptDone = scriptFailed_ || (scriptNext_ >= script_.size() && waitFrames_ == 0 && waitReloadFrom_ < 0);
+    bool scriptDone = scriptFailed_ || !script_ || script_->done();
     bool lastFrame = batch && scriptDone && --framesAfterScript <= 0;
     if (!pendingScreenshot_.empty()) writeScreenshot(pendingScreenshot_), pendingScreenshot_.clear();
     if (lastFrame && !options_.screenshot.empty()) writeScreenshot(options_.screenshot);

@@ -64,39 +64,66 @@ void drawLink(ImDrawList* dl, ImVec2 from, ImVec2 to, ImU32 color) {
   dl->AddBezierCubic(from, ImVec2(from.x + dx, from.y), ImVec2(to.x - dx, to.y), to, color, 2.5f);
 }
 
+void drawGrid(ImDrawList* dl, ImVec2 origin, ImVec2 size, const std::array<float, 2>& scroll) {
+  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(30, 32, 38, 255));
+  for (float x = std::fmod(scroll[0], 40.0f); x < size.x; x += 40)
+    dl->AddLine(ImVec2(origin.x + x, origin.y), ImVec2(origin.x + x, origin.y + size.y), IM_COL32(45, 48, 56, 255));
+  for (float y = std::fmod(scroll[1], 40.0f); y < size.y; y += 40)
+    dl->AddLine(ImVec2(origin.x, origin.y + y), ImVec2(origin.x + size.x, origin.y + y), IM_COL32(45, 48, 56, 255));
+}
+
 }  // namespace
 
-void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string& selected) {
-  const Graph& g = editor.graph();
-  ImGuiIO& io = ImGui::GetIO();
-  ImVec2 origin = ImGui::GetCursorScreenPos();
-  ImVec2 size = ImGui::GetContentRegionAvail();
-  if (size.x < 50) size.x = 50;
-  if (size.y < 50) size.y = 50;
-  ImDrawList* dl = ImGui::GetWindowDrawList();
-  dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
-  dl->AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y), IM_COL32(30, 32, 38, 255));
-  for (float x = std::fmod(scroll_[0], 40.0f); x < size.x; x += 40)
-    dl->AddLine(ImVec2(origin.x + x, origin.y), ImVec2(origin.x + x, origin.y + size.y), IM_COL32(45, 48, 56, 255));
-  for (float y = std::fmod(scroll_[1], 40.0f); y < size.y; y += 40)
-    dl->AddLine(ImVec2(origin.x, origin.y + y), ImVec2(origin.x + size.x, origin.y + y), IM_COL32(45, 48, 56, 255));
+// The boxes of one frame, in screen coordinates, and the hit tests on them.
+struct NodeCanvas::Layout {
+  const Graph& g;
+  std::vector<Box> boxes;
 
-  // The whole area is one invisible button: it takes the clicks ImGui would otherwise
-  // give to the window (dragging it), and tells whether the mouse is over the canvas.
-  ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                                             ImGuiButtonFlags_MouseButtonMiddle);
-  bool hovered = ImGui::IsItemHovered();
+  const Box* boxOf(const std::string& id) const {
+    for (const auto& b : boxes)
+      if (b.id == id) return &b;
+    return nullptr;
+  }
+  std::optional<ImVec2> outputPort(const std::string& node, const std::string& port) const {
+    const Box* b = node.empty() ? nullptr : boxOf(node);
+    if (!b) return std::nullopt;
+    for (const auto& p : b->outputs)
+      if (p.name == port) return p.at;
+    return std::nullopt;
+  }
+  // Hit tests: ports within a few pixels, then node boxes (topmost = last drawn).
+  std::optional<InputTarget> inputAt(ImVec2 m) const {
+    for (const auto& b : boxes)
+      for (const auto& p : b.inputs)
+        if (distance(p.at, m) <= kPortRadius + 4) return InputTarget{b.id, p.name};
+    return std::nullopt;
+  }
+  std::optional<std::pair<std::string, std::string>> outputAt(ImVec2 m) const {
+    for (const auto& b : boxes)
+      for (const auto& p : b.outputs)
+        if (distance(p.at, m) <= kPortRadius + 4) return std::make_pair(b.id, p.name);
+    return std::nullopt;
+  }
+  const Box* nodeAt(ImVec2 m) const {
+    for (auto it = boxes.rbegin(); it != boxes.rend(); ++it)
+      if (!it->id.empty() && m.x >= it->min.x && m.x <= it->max.x && m.y >= it->min.y && m.y <= it->max.y) return &*it;
+    return nullptr;
+  }
+  const InputSource* sourceOf(const InputTarget& t) const {
+    if (t.node.empty()) return findSlot(g, t.port);
+    const Node* n = g.findNode(t.node);
+    return n ? findInput(*n, t.port) : nullptr;
+  }
+};
+
+NodeCanvas::Layout NodeCanvas::layout(const Graph& g, const Registry& registry, ImVec2 origin) const {
   // A position may be anything the file format allows (up to float32's largest): far-off
   // nodes are drawn at a far-off but finite place, never at an infinity ImGui cannot draw.
   auto toScreen = [&](double x, double y) {
     auto far = [](double v) { return static_cast<float>(std::clamp(v, -1e7, 1e7)); };
     return ImVec2(far(origin.x + scroll_[0] + x), far(origin.y + scroll_[1] + y));
   };
-  ImVec2 mouse = io.MousePos;
-  std::array<double, 2> mouseCanvas{mouse.x - origin.x - scroll_[0], mouse.y - origin.y - scroll_[1]};
-
-  // Lay out the boxes.
-  std::vector<Box> boxes;
+  Layout l{g, {}};
   double rightmost = 0, top = 0;
   bool first = true;
   for (const auto& n : g.nodes) {
@@ -124,95 +151,60 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
     }
     for (size_t i = 0; i < outs.size(); ++i)
       b.outputs.push_back({outs[i], ImVec2(b.max.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
-    boxes.push_back(std::move(b));
+    l.boxes.push_back(std::move(b));
   }
-  {
-    Box b;
-    b.id = kOutputsId;
-    b.title = "outputs";
-    b.min = toScreen(rightmost + 260, top);
-    b.max = ImVec2(b.min.x + kNodeWidth, b.min.y + kHeader + kRow * 4 + 4);
-    for (size_t i = 0; i < 4; ++i) {
-      b.inputs.push_back({kSlots[i], ImVec2(b.min.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
-      const InputSource* s = findSlot(g, kSlots[i]);
-      b.inputNotes.push_back(s ? sourceNote(*s) : "");
-    }
-    boxes.push_back(std::move(b));
+  Box b;
+  b.id = kOutputsId;
+  b.title = "outputs";
+  b.min = toScreen(rightmost + 260, top);
+  b.max = ImVec2(b.min.x + kNodeWidth, b.min.y + kHeader + kRow * 4 + 4);
+  for (size_t i = 0; i < 4; ++i) {
+    b.inputs.push_back({kSlots[i], ImVec2(b.min.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
+    const InputSource* s = findSlot(g, kSlots[i]);
+    b.inputNotes.push_back(s ? sourceNote(*s) : "");
   }
-  auto boxOf = [&](const std::string& id) -> const Box* {
-    for (const auto& b : boxes)
-      if (b.id == id) return &b;
-    return nullptr;
-  };
-  auto outputPort = [&](const std::string& node, const std::string& port) -> std::optional<ImVec2> {
-    const Box* b = node.empty() ? nullptr : boxOf(node);
-    if (!b) return std::nullopt;
-    for (const auto& p : b->outputs)
-      if (p.name == port) return p.at;
-    return std::nullopt;
-  };
-  // Hit tests: ports within a few pixels, then node boxes (topmost = last drawn).
-  auto inputAt = [&](ImVec2 m) -> std::optional<InputTarget> {
-    for (const auto& b : boxes)
-      for (const auto& p : b.inputs)
-        if (distance(p.at, m) <= kPortRadius + 4) return InputTarget{b.id, p.name};
-    return std::nullopt;
-  };
-  auto outputAt = [&](ImVec2 m) -> std::optional<std::pair<std::string, std::string>> {
-    for (const auto& b : boxes)
-      for (const auto& p : b.outputs)
-        if (distance(p.at, m) <= kPortRadius + 4) return std::make_pair(b.id, p.name);
-    return std::nullopt;
-  };
-  auto nodeAt = [&](ImVec2 m) -> const Box* {
-    for (auto it = boxes.rbegin(); it != boxes.rend(); ++it)
-      if (!it->id.empty() && m.x >= it->min.x && m.x <= it->max.x && m.y >= it->min.y && m.y <= it->max.y) return &*it;
-    return nullptr;
-  };
-  auto sourceOf = [&](const InputTarget& t) -> const InputSource* {
-    if (t.node.empty()) return findSlot(g, t.port);
-    const Node* n = g.findNode(t.node);
-    return n ? findInput(*n, t.port) : nullptr;
-  };
+  l.boxes.push_back(std::move(b));
+  return l;
+}
 
-  // Mouse: start a drag.
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
-    if (auto out = outputAt(mouse)) {
-      drag_ = Drag::Link;
-      linkFromNode_ = out->first, linkFromPort_ = out->second;
-      hasDetached_ = false;
-    } else if (auto in = inputAt(mouse); in && sourceOf(*in) && sourceOf(*in)->kind == InputSource::Kind::NodeOutput) {
-      // Picking a link up from its input: dropped elsewhere it is disconnected.
-      const InputSource* s = sourceOf(*in);
-      drag_ = Drag::Link;
-      linkFromNode_ = s->node, linkFromPort_ = s->port;
-      detached_ = *in;
-      hasDetached_ = true;
-    } else if (const Box* b = nodeAt(mouse)) {
-      selected = b->id;
-      drag_ = Drag::MoveNode;
-      dragNode_ = b->id;
-      dragStart_ = g.findNode(b->id)->editorPosition.value_or(std::array<double, 2>{0, 0});
-    } else {
-      selected.clear();
-      drag_ = Drag::Pan;
-    }
+void NodeCanvas::startDrag(const Layout& l, ImVec2 mouse, std::string& selected) {
+  if (auto out = l.outputAt(mouse)) {
+    drag_ = Drag::Link;
+    linkFromNode_ = out->first, linkFromPort_ = out->second;
+    hasDetached_ = false;
+  } else if (auto in = l.inputAt(mouse); in && l.sourceOf(*in) && l.sourceOf(*in)->kind == InputSource::Kind::NodeOutput) {
+    // Picking a link up from its input: dropped elsewhere it is disconnected.
+    const InputSource* s = l.sourceOf(*in);
+    drag_ = Drag::Link;
+    linkFromNode_ = s->node, linkFromPort_ = s->port;
+    detached_ = *in;
+    hasDetached_ = true;
+  } else if (const Box* b = l.nodeAt(mouse)) {
+    selected = b->id;
+    drag_ = Drag::MoveNode;
+    dragNode_ = b->id;
+    dragStart_ = l.g.findNode(b->id)->editorPosition.value_or(std::array<double, 2>{0, 0});
+  } else {
+    selected.clear();
+    drag_ = Drag::Pan;
   }
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) drag_ = Drag::Pan;
-  // Right-click: on a connected input, disconnect it; on the background, the palette.
-  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
-    if (auto in = inputAt(mouse); in && sourceOf(*in)) {
-      editor.disconnect(*in);
-    } else if (const Box* b = nodeAt(mouse)) {
-      selected = b->id;
-    } else {
-      paletteAt_ = {static_cast<float>(mouseCanvas[0]), static_cast<float>(mouseCanvas[1])};
-      filter_[0] = '\0';
-      ImGui::OpenPopup("palette");
-    }
-  }
+}
 
-  // Mouse: continue and finish a drag.
+// On a connected input, disconnect it; on a node, select it; on the background, the palette.
+void NodeCanvas::rightClick(GraphEditor& editor, const Layout& l, ImVec2 mouse, ImVec2 origin, std::string& selected) {
+  if (auto in = l.inputAt(mouse); in && l.sourceOf(*in)) {
+    editor.disconnect(*in);
+  } else if (const Box* b = l.nodeAt(mouse)) {
+    selected = b->id;
+  } else {
+    paletteAt_ = {mouse.x - origin.x - scroll_[0], mouse.y - origin.y - scroll_[1]};
+    filter_[0] = '\0';
+    ImGui::OpenPopup("palette");
+  }
+}
+
+void NodeCanvas::continueDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse, ImDrawList* dl) {
+  ImGuiIO& io = ImGui::GetIO();
   if (drag_ == Drag::MoveNode && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
     ImVec2 d = ImGui::GetMouseDragDelta(ImGuiMouseButton_Left, 0.0f);
     // Whole pixels: positions in the file stay short.
@@ -223,37 +215,45 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
     scroll_[1] += io.MouseDelta.y;
   }
   if (drag_ == Drag::Link) {
-    ImVec2 from = outputPort(linkFromNode_, linkFromPort_).value_or(mouse);
+    ImVec2 from = l.outputPort(linkFromNode_, linkFromPort_).value_or(mouse);
     drawLink(dl, from, mouse, IM_COL32(255, 220, 120, 255));
   }
-  if (drag_ != Drag::None && !ImGui::IsMouseDown(ImGuiMouseButton_Left) && !ImGui::IsMouseDown(ImGuiMouseButton_Middle)) {
-    if (drag_ == Drag::Link) {
-      if (auto in = inputAt(mouse)) {
-        if (!(hasDetached_ && in->node == detached_.node && in->port == detached_.port)) {
-          if (hasDetached_) editor.disconnect(detached_);
-          editor.connect(linkFromNode_, linkFromPort_, *in);
-        }
-      } else if (hasDetached_) {
-        editor.disconnect(detached_);
-      }
-    }
-    editor.seal();
-    drag_ = Drag::None;
-  }
-  if (hovered && io.MouseWheel != 0) scroll_[1] += io.MouseWheel * 40;
+}
 
-  // Links, under the boxes.
+// Both buttons up: a link lands on an input (or, picked up from one, is dropped), a move
+// or pan ends; either way the edit's undo step closes.
+void NodeCanvas::finishDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse) {
+  if (drag_ == Drag::None || ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Middle))
+    return;
+  if (drag_ == Drag::Link) {
+    if (auto in = l.inputAt(mouse)) {
+      if (!(hasDetached_ && in->node == detached_.node && in->port == detached_.port)) {
+        if (hasDetached_) editor.disconnect(detached_);
+        editor.connect(linkFromNode_, linkFromPort_, *in);
+      }
+    } else if (hasDetached_) {
+      editor.disconnect(detached_);
+    }
+  }
+  editor.seal();
+  drag_ = Drag::None;
+}
+
+// Links under the boxes; a link being dragged off its input is drawn by continueDrag.
+void NodeCanvas::drawLinks(const Layout& l, ImDrawList* dl) const {
   auto linkColor = IM_COL32(140, 200, 255, 220);
-  for (const auto& b : boxes) {
+  for (const auto& b : l.boxes) {
     for (const auto& p : b.inputs) {
-      const InputSource* s = sourceOf({b.id, p.name});
+      const InputSource* s = l.sourceOf({b.id, p.name});
       if (!s || s->kind != InputSource::Kind::NodeOutput) continue;
       if (drag_ == Drag::Link && hasDetached_ && detached_.node == b.id && detached_.port == p.name) continue;
-      if (auto from = outputPort(s->node, s->port)) drawLink(dl, *from, p.at, linkColor);
+      if (auto from = l.outputPort(s->node, s->port)) drawLink(dl, *from, p.at, linkColor);
     }
   }
-  // Boxes.
-  for (const auto& b : boxes) {
+}
+
+void NodeCanvas::drawBoxes(const Layout& l, ImDrawList* dl, const std::string& selected) const {
+  for (const auto& b : l.boxes) {
     bool isSelected = !b.id.empty() && b.id == selected;
     dl->AddRectFilled(b.min, b.max, IM_COL32(52, 56, 66, 240), 5);
     dl->AddRectFilled(b.min, ImVec2(b.max.x, b.min.y + kHeader),
@@ -263,7 +263,7 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
     dl->AddText(ImVec2(b.min.x + 6, b.min.y + 4), IM_COL32(235, 235, 235, 255), b.title.c_str());
     for (size_t i = 0; i < b.inputs.size(); ++i) {
       const Port& p = b.inputs[i];
-      bool linked = !b.inputNotes[i].empty() || (sourceOf({b.id, p.name}) != nullptr);
+      bool linked = !b.inputNotes[i].empty() || (l.sourceOf({b.id, p.name}) != nullptr);
       dl->AddCircleFilled(p.at, kPortRadius, linked ? IM_COL32(140, 200, 255, 255) : IM_COL32(120, 120, 130, 255));
       std::string label = p.name + (b.inputNotes[i].empty() ? "" : " = " + b.inputNotes[i]);
       dl->AddText(ImVec2(p.at.x + 9, p.at.y - 7), IM_COL32(210, 210, 210, 255), label.c_str());
@@ -274,38 +274,68 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
       dl->AddText(ImVec2(p.at.x - 9 - ts.x, p.at.y - 7), IM_COL32(210, 210, 210, 255), p.name.c_str());
     }
   }
+}
+
+// Every registered node type, by family, filtered by name; the chosen one is added where
+// the palette was opened.
+void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected) {
+  if (!ImGui::BeginPopup("palette")) return;
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
+  std::map<std::string, std::vector<const NodeSpec*>> families;
+  for (const NodeSpec* spec : registry.all())
+    if (spec->type.find(filter_) != std::string::npos) families[spec->family].push_back(spec);
+  ImGui::BeginChild("types", ImVec2(260, 320));
+  for (const auto& [family, specs] : families) {
+    ImGui::TextDisabled("%s", family.c_str());
+    for (const NodeSpec* spec : specs) {
+      if (ImGui::Selectable(spec->type.c_str())) {
+        std::string id;
+        if (editor.addNode(spec->type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty())
+          selected = id;
+        ImGui::CloseCurrentPopup();
+      }
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec->summary.c_str());
+    }
+  }
+  ImGui::EndChild();
+  ImGui::EndPopup();
+}
+
+void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string& selected) {
+  ImGuiIO& io = ImGui::GetIO();
+  ImVec2 origin = ImGui::GetCursorScreenPos();
+  ImVec2 size = ImGui::GetContentRegionAvail();
+  size.x = std::max(size.x, 50.0f), size.y = std::max(size.y, 50.0f);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  drawGrid(dl, origin, size, scroll_);
+  // The whole area is one invisible button: it takes the clicks ImGui would otherwise
+  // give to the window (dragging it), and tells whether the mouse is over the canvas.
+  ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                                             ImGuiButtonFlags_MouseButtonMiddle);
+  const bool hovered = ImGui::IsItemHovered();
+  const ImVec2 mouse = io.MousePos;
+
+  Layout l = layout(editor.graph(), registry, origin);
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) startDrag(l, mouse, selected);
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) drag_ = Drag::Pan;
+  if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) rightClick(editor, l, mouse, origin, selected);
+  continueDrag(editor, l, mouse, dl);
+  finishDrag(editor, l, mouse);
+  if (hovered && io.MouseWheel != 0) scroll_[1] += io.MouseWheel * 40;
+
+  drawLinks(l, dl);
+  drawBoxes(l, dl, selected);
   dl->PopClipRect();
 
-  // Keys while the mouse is over the canvas.
+  // Delete while the mouse is over the canvas.
   if (hovered && !selected.empty() && !io.WantTextInput &&
       (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete)) ||
        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Backspace)))) {
     if (editor.deleteNode(selected).empty()) selected.clear();
   }
-
-  // The palette: every registered node type, by family, filtered by name.
-  if (ImGui::BeginPopup("palette")) {
-    if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-    ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
-    std::map<std::string, std::vector<const NodeSpec*>> families;
-    for (const NodeSpec* spec : registry.all())
-      if (spec->type.find(filter_) != std::string::npos) families[spec->family].push_back(spec);
-    ImGui::BeginChild("types", ImVec2(260, 320));
-    for (const auto& [family, specs] : families) {
-      ImGui::TextDisabled("%s", family.c_str());
-      for (const NodeSpec* spec : specs) {
-        if (ImGui::Selectable(spec->type.c_str())) {
-          std::string id;
-          if (editor.addNode(spec->type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty())
-            selected = id;
-          ImGui::CloseCurrentPopup();
-        }
-        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec->summary.c_str());
-      }
-    }
-    ImGui::EndChild();
-    ImGui::EndPopup();
-  }
+  drawPalette(editor, registry, selected);
 }
 
 }  // namespace wg::editor

@@ -10,6 +10,9 @@
 #include "core/graph_edit.h"
 #include "core/registry.h"
 
+struct ImVec2;
+struct ImDrawList;
+
 namespace wg::editor {
 
 class NodeCanvas {
@@ -19,6 +22,16 @@ class NodeCanvas {
   void draw(GraphEditor& editor, const Registry& registry, std::string& selected);
 
  private:
+  struct Layout;  // this frame's boxes and ports, and hit tests on them
+  Layout layout(const Graph& g, const Registry& registry, ImVec2 origin) const;
+  void startDrag(const Layout& l, ImVec2 mouse, std::string& selected);
+  void rightClick(GraphEditor& editor, const Layout& l, ImVec2 mouse, ImVec2 origin, std::string& selected);
+  void continueDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse, ImDrawList* dl);
+  void finishDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse);
+  void drawLinks(const Layout& l, ImDrawList* dl) const;
+  void drawBoxes(const Layout& l, ImDrawList* dl, const std::string& selected) const;
+  void drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected);
+
   enum class Drag { None, MoveNode, Link, Pan };
   Drag drag_ = Drag::None;
   std::array<float, 2> scroll_{40, 40};  // canvas origin inside the window, in pixels

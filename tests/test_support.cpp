@@ -155,4 +155,9 @@ std::string graphJson(const std::string& nodes, const std::string& outputs, cons
   return s + "\"nodes\": [" + nodes + "], \"outputs\": {" + outputs + "}}";
 }
 
+bool updatingGoldens() {
+  const char* env = std::getenv("WG_UPDATE_GOLDEN");
+  return env && std::string(env) == "1";
+}
+
 }  // namespace wg::test

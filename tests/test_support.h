@@ -30,6 +30,9 @@ std::string shellQuote(const std::string& s);
 int runCommandSplit(const std::string& command, std::string* out, std::string* err);
 // The lines of `text`, without their '\n'; a final empty line is dropped.
 std::vector<std::string> splitLines(const std::string& text);
+// WG_UPDATE_GOLDEN=1 in the environment: tests with golden files (GLSL, manifests, images)
+// rewrite them instead of comparing (tests/golden/README.md).
+bool updatingGoldens();
 // A graph file (version 1, named "t") around the given nodes, outputs and parameters: the
 // insides of its "nodes" array, "outputs" object and "parameters" object.
 std::string graphJson(const std::string& nodes, const std::string& outputs, const std::string& parameters = "");

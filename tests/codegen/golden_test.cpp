@@ -4,7 +4,6 @@
 // instead of failing; see tests/golden/README.md.
 #include <gtest/gtest.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <set>
 
@@ -17,11 +16,6 @@ namespace wg {
 namespace {
 
 namespace fs = std::filesystem;
-
-bool updating() {
-  const char* env = std::getenv("WG_UPDATE_GOLDEN");
-  return env && std::string(env) == "1";
-}
 
 std::string goldenDir() { return test::sourcePath("tests/golden"); }
 
@@ -60,7 +54,7 @@ TEST_P(Golden, OutputMatchesGoldenFiles) {
   for (const auto& f : result->files)
     if (isGolden(f.name)) produced.insert(f.name);
 
-  if (updating()) {
+  if (test::updatingGoldens()) {
     fs::create_directories(dir);
     for (const auto& old : test::listFiles(dir))
       if (!produced.count(old)) fs::remove(dir + "/" + old);

@@ -1,7 +1,6 @@
 // Every example graph runs on both GL targets (desktop 4.5 core and ES 3.2) on llvmpipe:
 // the image is not blank, a float render has no NaN or Inf, the two targets agree, and the
 // glsl330 image matches the checked-in golden (tests/golden/images/, see its README).
-#include <cstdlib>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -70,8 +69,7 @@ TEST_P(ExampleGraph, MatchesGoldenImage) {
   CompileResult r = test::compileExample(c.graph);
   Preview p = renderPreview(r, c.target, test::smallSettings());
   std::string golden = test::sourcePath("tests/golden/images/" + c.graph + ".png");
-  const char* update = std::getenv("WG_UPDATE_GOLDEN");
-  if (update && std::string(update) == "1") {
+  if (test::updatingGoldens()) {
     if (c.target == Target::Glsl330) writePng(golden, p.image);  // the reference is the desktop GL image
     GTEST_SKIP() << "updated " << golden;
   }

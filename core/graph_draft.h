@@ -1,0 +1,81 @@
+#pragma once
+// A graph file's JSON events gathered into drafts the loader checks (core/graph_load.cpp):
+// the objects the format gives a structure (the graph, its parameters, presets, outputs and
+// each node with its options, inputs and editor position) keep their members in file order
+// with positions; every other value is held as a small nlohmann value, with its position.
+// Nodes are handed over one at a time, as each ends, and their draft is reused, so no DOM
+// or position tree of the whole file is ever built.
+#include <deque>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/json_events.h"
+
+namespace wg {
+
+struct DraftValue {
+  std::string name;  // object members: the key
+  JsonPosition key;  // object members: the key's opening quote
+  JsonPosition at;   // the value's first character
+  nlohmann::json::value_t type = nlohmann::json::value_t::null;
+  bool structured = false;           // an object or array the format structures: see `members`
+  nlohmann::json value;              // any other value, as written
+  std::vector<DraftValue> members;   // structured objects: members in file order
+
+  const DraftValue* member(const char* wanted) const;  // the first of that name, or nullptr
+  DraftValue* member(const char* wanted) { return const_cast<DraftValue*>(std::as_const(*this).member(wanted)); }
+};
+
+class GraphDraftReader : public JsonEventHandler {
+ public:
+  const DraftValue& root() const { return root_; }
+  std::size_t nodeCount() const { return nodeCount_; }  // elements of the root's "nodes" array
+
+ protected:
+  // Each element of the root's "nodes" array, once complete (any JSON type). The element
+  // is reused for the next: take what it holds.
+  virtual void node(DraftValue& element) = 0;
+  // Every scalar and key of the file, as it comes (for checks on every value).
+  virtual void seenScalar(const JsonScalar& value, JsonPosition at) = 0;
+  virtual void seenKey(const std::string& name, JsonPosition at) = 0;
+
+ private:
+  // What the children of an open container are.
+  enum class Level {
+    Root,      // the graph: "parameters", "presets", "outputs" objects and "nodes" are structured
+    Section,   // parameters, presets, outputs: each member object is a Record
+    Record,    // a parameter, a preset, an output stage: members held
+    Nodes,     // the nodes array: each element is a node
+    Node,      // "options", "inputs" and "editor" objects are Records
+  };
+  struct Open {
+    DraftValue* value;
+    Level level;
+  };
+
+  void scalar(JsonScalar& v, JsonPosition at) final;
+  void startContainer(bool isArray, JsonPosition at) final;
+  void endContainer(bool isArray) final;
+  void key(std::string& name, JsonPosition at, bool duplicate) final;
+
+  DraftValue& slot(JsonPosition at);  // where the value starting at `at` goes
+  void finished();                    // a value of the top open container is complete
+  nlohmann::json* hold(nlohmann::json&& v);  // into the held container being built
+
+  DraftValue root_;
+  DraftValue node_;  // the node being read, reused
+  std::size_t nodeCount_ = 0;
+  bool started_ = false;
+  std::vector<Open> open_;
+  // A held container being built: its open arrays and objects, and the key of the member
+  // whose value comes next; values of duplicate keys go to scratch (the load fails anyway).
+  std::vector<nlohmann::json*> held_;
+  std::string heldKey_;
+  bool heldDuplicate_ = false;
+  std::deque<nlohmann::json> scratch_;
+};
+
+}  // namespace wg

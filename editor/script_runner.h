@@ -1,0 +1,61 @@
+#pragma once
+// Runs an edit script (editor/edit_script.h) one step per frame against whatever shows the
+// graph: the window app, or a test's stand-in. What a step needs from its host (the graph
+// editor, saving, the previews, the camera) goes through ScriptHost; the waiting (frames,
+// a reload noticed on disk) and the order of steps live here, without any UI.
+#include <string>
+#include <vector>
+
+#include "core/graph_edit.h"
+#include "editor/edit_script.h"
+
+namespace wg::editor {
+
+class ScriptHost {
+ public:
+  virtual ~ScriptHost() = default;
+  virtual bool graphLoaded() const = 0;
+  virtual GraphEditor& graphEditor() = 0;
+  virtual void edited() = 0;  // a step changed the graph: the edit-to-pixels clock starts
+  virtual const std::string& graphPath() const = 0;
+  virtual int diskEvents() const = 0;  // changes on disk noticed so far
+  // Each returns "" on success, else why not.
+  virtual std::string save(const std::string& path) = 0;
+  virtual std::string screenshot(const std::string& path) = 0;  // the window, after this frame
+  virtual std::string savePreview(const std::string& path) = 0;
+  virtual std::string saveThumbnail(const std::string& path) = 0;
+  virtual std::string select(const std::string& node, int port) = 0;
+  virtual std::string camera(const std::string& preset) = 0;
+  virtual void setTime(float seconds) = 0;
+};
+
+class ScriptRunner {
+ public:
+  // `name` (the script's path) prefixes every message.
+  ScriptRunner(std::vector<ScriptStep> steps, std::string name) : steps_(std::move(steps)), name_(std::move(name)) {}
+
+  // Called once per frame: runs the next step unless one is waiting. False when a step
+  // failed; `error()` then says which and why.
+  bool step(ScriptHost& host);
+  // Every step has run and nothing waits.
+  bool done() const { return next_ >= steps_.size() && waitFrames_ == 0 && waitReloadFrom_ < 0; }
+  const std::string& error() const { return error_; }
+
+  // Frames a "wait_reload" waits for the change on disk before the script fails.
+  static constexpr int kReloadFrames = 600;
+
+ private:
+  bool run(ScriptHost& host, const ScriptStep& step);
+  bool fail(const std::string& where, const std::string& why);
+
+  std::vector<ScriptStep> steps_;
+  std::string name_;
+  size_t next_ = 0;
+  int waitFrames_ = 0;
+  int waitReloadFrom_ = -1;     // diskEvents() to exceed, while waiting for a reload
+  int waitReloadBudget_ = 0;
+  int eventsBeforeWrite_ = -1;  // diskEvents() when the script last wrote the file
+  std::string error_;
+};
+
+}  // namespace wg::editor
