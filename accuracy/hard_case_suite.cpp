@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <map>
 #include <set>
+#include <stdexcept>
 
 #include "accuracy/node_probe.h"
 #include "codegen/emit_glsl.h"
@@ -74,10 +75,17 @@ std::vector<ProbeCase> specHardCases(const NodeSpec& spec) {
     c.options = nlohmann::json{{spec.type, hc.options}};
     std::string output = hc.output.empty() ? spec.outputs.front().name : hc.output;
     c.ranges[spec.type + "." + output] = {hc.lo, hc.hi};
-    c.relaxed = hc.illConditioned;
+    c.tolerance = hc.tolerance;
     out.push_back(std::move(c));
   }
   return out;
+}
+
+// The options of a run with every default filled in, so a report names each value.
+nlohmann::json completeOptions(const NodeSpec& spec, const nlohmann::json& given) {
+  nlohmann::json all = nlohmann::json::object();
+  for (const auto& o : spec.options) all[o.name] = given.contains(o.name) ? given[o.name] : o.defaultValue;
+  return all;
 }
 
 bool takesInput(const NodeSpec& spec, const ProbeCase& c) {
@@ -147,11 +155,15 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, Target target, const Su
           std::optional<ProbeReport> report;
           std::string label = spec->type + " [" + variant + (key == variantOptions.dump() ? "" : ", " + key) + "]." + out.name;
           try {
-            report = probeNode(*spec, group.first, out.name, group.second, target, diags);
+            report = probeNode(*spec, group.first, out.name, group.second, target, diags, options.mutation);
           } catch (const rt::RuntimeError& e) {
             result.errors.push_back(label + ": " + e.what());
             continue;
+          } catch (const std::invalid_argument&) {
+            if (!options.mutation.active()) throw;
+            continue;  // the mutated text is not in this run's shader
           }
+          if (report && !report->cases.empty() && options.mutation.active()) ++result.mutatedRuns;
           if (!report) {
             // Not applicable: split's 'w' of a vec3, a float given where swizzle needs a vector.
             bool absent = true;
@@ -175,7 +187,7 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, Target target, const Su
             result.failureLines.push_back(std::string(targetName(target)) + " " + label + " case '" + c.name +
                                           "': " + c.failure() + " (gpu " + gpu + "; ref " + ref + ")");
           }
-          result.runs.push_back({spec->type, variant, std::move(*report)});
+          result.runs.push_back({spec->type, variant, completeOptions(*spec, group.first), std::move(*report)});
         }
       }
     }

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "accuracy/probe.h"
 
 namespace wg::accuracy {
@@ -16,11 +18,15 @@ struct SuiteOptions {
   std::vector<std::string> nodes;  // node types to run; empty: every registered node
   bool variants = true;            // option variants besides the defaults
   bool nodeHardCases = true;       // each node's own NodeSpec::hardCases
+  // Mutation testing: the edit applied to every probe shader that contains its text; runs
+  // whose shader does not are left out (SuiteResult::mutatedRuns counts the others).
+  ShaderMutation mutation;
 };
 
 struct SuiteRun {
   std::string node;
   std::string variant;  // "defaults" or "model=schlick"
+  nlohmann::json options;  // every option of the node in this run (defaults filled in, the cases' own applied)
   ProbeReport report;
 };
 
@@ -29,6 +35,7 @@ struct SuiteResult {
   int caseRuns = 0;  // case x node x variant x output evaluations
   int failures = 0;
   int nanInf = 0;    // failures that are NaN or Inf (GPU or reference)
+  int mutatedRuns = 0;  // probe runs (node, variant, output) whose shader the mutation changed
   std::vector<std::string> failureLines;  // one per failed case run
   std::vector<std::string> errors;        // nodes that could not be probed, and why
 };

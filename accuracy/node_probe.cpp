@@ -75,7 +75,6 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
         if (b.type == paramType[k] || b.type == Type::Float) v = b.convertedTo(paramType[k]);
       }
       pc.parameters.emplace_back("in_" + port.name, toFloat32(v));
-      pc.relaxed |= isLargeInput(v);
     }
     pc.inputs.clear();
     if (fits) setup.cases.cases.push_back(std::move(pc));
@@ -85,11 +84,19 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
 }
 
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
-                                     const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags) {
+                                     const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags,
+                                     const ShaderMutation& mutation) {
   NodeProbeSetup setup = makeNodeProbe(spec, options, cases);
   if (setup.cases.cases.empty()) return ProbeReport{};
   ProbeOutput out{"n", output.empty() ? spec.outputs.front().name : output};
-  auto report = probeGraph(setup.graph, out, setup.cases, target, diags);
+  // The node-probe keys are spent here (options chose the graph; ranges apply below).
+  ProbeCaseFile graphCases = setup.cases;
+  for (auto& c : graphCases.cases) {
+    c.options = nlohmann::json::object();
+    c.ranges.clear();
+    c.nodes.clear();
+  }
+  auto report = probeGraph(setup.graph, out, graphCases, target, diags, mutation);
   if (report) {
     report->graph = spec.type;
     report->output = spec.type + "." + out.port;

@@ -27,6 +27,7 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
 
 // Probes output `output` ("" = the first) of `spec` on the current context.
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
-                                     const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags);
+                                     const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags,
+                                     const ShaderMutation& mutation = {});
 
 }  // namespace wg::accuracy

@@ -102,12 +102,6 @@ Value sub3(const Value& a, const Value& b) { return Value::vector({a[0] - b[0], 
 
 }  // namespace
 
-bool isLargeInput(const Value& v) {
-  for (int i = 0; i < v.size(); ++i)
-    if (std::abs(v[i]) >= 1e4) return true;
-  return false;
-}
-
 Value toFloat32(const Value& v) {
   Value out = v;
   for (int i = 0; i < v.size(); ++i) out[i] = static_cast<double>(static_cast<float>(v[i]));
@@ -182,9 +176,9 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
     const auto& c = cases[i];
     if (!r.object(c, p, "a case")) continue;
     r.unknownKeys(c, p,
-                  {"name", "expect", "uv", "world_position", "normal", "view_direction", "camera_position", "time",
-                   "screen_uv", "frag_depth", "near_far", "view", "projection", "camera", "scene", "parameters", "range",
-                   "tolerance", "inputs", "options", "ranges", "nodes", "ill_conditioned"},
+                  {"name", "expect", "region", "uv", "world_position", "normal", "view_direction", "camera_position", "time",
+                   "screen_uv", "frag_depth", "near_far", "sun_direction", "view", "projection", "camera", "scene", "parameters", "range",
+                   "tolerance", "inputs", "options", "ranges", "nodes"},
                   "a case");
     ProbeCase pc;
     pc.where = src->value(p);
@@ -198,6 +192,10 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
     if (c.contains("expect")) {
       if (c["expect"].is_string()) pc.expect = c["expect"].get<std::string>();
       else r.error(p + "/expect", "\"expect\" must be a string");
+    }
+    if (c.contains("region")) {
+      if (c["region"].is_string() && !c["region"].get<std::string>().empty()) pc.region = c["region"].get<std::string>();
+      else r.error(p + "/region", "\"region\" must be a non-empty string");
     }
     EvalEnvironment& env = pc.env;
     bool derivesView = false;
@@ -314,17 +312,6 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
       if (t && !(*t >= 0)) r.error(p + "/tolerance", "\"tolerance\" must not be negative");
       pc.tolerance = t;
     }
-    if (c.contains("ill_conditioned")) {
-      if (c["ill_conditioned"].is_boolean()) pc.relaxed = c["ill_conditioned"].get<bool>();
-      else r.error(p + "/ill_conditioned", "\"ill_conditioned\" must be true or false");
-    }
-    for (const auto& [name, v] : pc.inputs) pc.relaxed |= isLargeInput(v);
-    for (const auto& [name, v] : pc.parameters) pc.relaxed |= isLargeInput(v);
-    for (const char* key : {"uv", "world_position", "camera_position", "time", "camera"})
-      if (pc.given.count(key)) pc.relaxed |= isLargeInput(env.builtin(key == std::string("uv") ? Builtin::Uv
-                                                                  : key == std::string("world_position") ? Builtin::WorldPosition
-                                                                  : key == std::string("time") ? Builtin::Time
-                                                                                               : Builtin::CameraPosition));
     // What the GPU sees is float32; the reference gets the same inputs.
     for (Value* v : {&env.uv, &env.worldPosition, &env.normal, &env.viewDirection, &env.cameraPosition, &env.time,
                      &env.screenUv, &env.fragDepth, &env.cameraNearFar, &env.view, &env.projection, &env.sunDirection, &env.sceneDepth,

@@ -19,6 +19,9 @@ namespace wg::accuracy {
 struct ProbeCase {
   std::string name;
   std::string expect;       // the safe behaviour it checks, in words
+  // The region or branch of the maths it exercises ("total_internal_reflection",
+  // "gerstner_cusp", ...); the suite's region test (tests/accuracy) proves each is reached.
+  std::string region;
   EvalEnvironment env;      // every value already rounded to float32: what the GPU sees
   std::vector<std::pair<std::string, Value>> parameters;  // graph parameter -> value (float32)
   std::optional<std::pair<double, double>> range;  // every component of the result within
@@ -32,9 +35,6 @@ struct ProbeCase {
   nlohmann::json options = nlohmann::json::object();  // node type -> options for it
   std::map<std::string, std::pair<double, double>> ranges;  // "type.output" -> [lo, hi]
   std::vector<std::string> nodes;  // the suite runs the case only on these types (empty: all)
-  // A hard input for float32: an input, parameter or position/uv/time builtin it sets
-  // reaches 1e4 in magnitude, or "ill_conditioned": true. Nodes' relaxedTolerance applies.
-  bool relaxed = false;
 };
 
 struct ProbeCaseFile {
@@ -56,9 +56,6 @@ std::optional<ProbeCaseFile> loadProbeCases(const std::string& path, Diagnostics
 // infinite: the limit matrix), computed in double.
 Value lookAtMatrix(const Value& eye, const Value& target);
 Value perspectiveMatrix(double fovYDegrees, double aspect, double nearPlane, double farPlane);
-
-// Whether a value reaches the magnitude where float32 phases lose precision (1e4).
-bool isLargeInput(const Value& v);
 
 // A float32 rounding of every component (infinities stay).
 Value toFloat32(const Value& v);

@@ -1,15 +1,21 @@
 // probe: one output of a graph evaluated per case on the GPU in float32 (one pixel of an
 // RGBA32F target per case) and by the double reference; prints both, the errors and the
 // NaN/Inf flags. Exit 1 when a case is NaN/Inf, out of its range or over its tolerance.
+#include <cmath>
 #include <iostream>
 #include <memory>
+#include <optional>
+#include <set>
 
 #include "cli/commands.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/hard_case_suite.h"
+#include "accuracy/node_probe.h"
 #include "accuracy/probe.h"
+#include "accuracy/sweep.h"
 #include "nodes/registry.h"
+#include "codegen/output_files.h"
 #include "core/graph_io.h"
 #include "runtime/egl_context.h"
 #include "runtime/preview.h"
@@ -27,15 +33,107 @@ struct ProbeArgs {
   bool json = false;
   std::string node;       // probe a node type alone, as the hard-case suite does
   bool variants = false;  // with --node: every option variant too
+  std::string sweep;      // with --node: NAME[.c]:FROM:TO:COUNT
+  std::string options;    // with --node --sweep: the node's options, a JSON object
+  std::string table;      // with --sweep: where the error curve goes
+  std::string mutate;     // FIND=>REPLACE in the probe shader
 };
 
+
 #ifdef WG_HAVE_RUNTIME
+// "FIND=>REPLACE" (GLSL has '=' but no "=>").
+std::optional<accuracy::ShaderMutation> parseMutation(const std::string& text) {
+  auto at = text.find("=>");
+  if (at == std::string::npos || at == 0) return std::nullopt;
+  return accuracy::ShaderMutation{text.substr(0, at), text.substr(at + 2)};
+}
+
+// --node TYPE --sweep AXIS: the first case of --cases (or the default case) repeated along
+// the axis, one output, the options given; prints a summary, writes the curve to --table.
+int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec& spec, Target target,
+             const accuracy::ShaderMutation& mutation) {
+  std::string why;
+  auto axis = accuracy::parseSweepAxis(args.sweep, why);
+  if (!axis) {
+    std::cerr << "watergraph: " << why << "\n";
+    return kExitUsageOrIo;
+  }
+  if (axis->name != "angle" && spec.inputIndex(axis->name) < 0 &&
+      !std::set<std::string>{"uv", "world_position", "normal", "view_direction", "camera_position", "time", "screen_uv",
+                             "frag_depth", "near_far", "sun_direction"}.count(axis->name)) {
+    std::cerr << "watergraph: --sweep: '" << axis->name << "' is neither 'angle', an input of " << spec.type
+              << " nor a builtin key\n";
+    return kExitUsageOrIo;
+  }
+  nlohmann::json options = nlohmann::json::object();
+  if (!args.options.empty()) {
+    options = nlohmann::json::parse(args.options, nullptr, false);
+    if (!options.is_object()) {
+      std::cerr << "watergraph: --options must be a JSON object (got '" << args.options << "')\n";
+      return kExitUsageOrIo;
+    }
+  }
+  accuracy::ProbeCase base;
+  base.name = "base";
+  base.env = accuracy::defaultProbeEnvironment();
+  if (!args.cases.empty()) {
+    Diagnostics diags;
+    auto cases = accuracy::loadProbeCases(args.cases, diags);
+    printDiagnostics(diags, global);
+    if (!cases) return exitCodeFor(diags);
+    if (!cases->cases.empty()) base = cases->cases.front();
+  }
+  try {
+    auto context = rt::EglContext::create(rt::apiFor(target));
+    Diagnostics diags;
+    auto report = accuracy::probeNode(spec, options, args.output, accuracy::sweepCases(spec, *axis, base), target, diags,
+                                      mutation);
+    printDiagnostics(diags, global);
+    if (!report) return exitCodeFor(diags);
+    double worst = 0, worstAt = axis->from, maxError = 0;
+    for (size_t i = 0; i < report->cases.size(); ++i) {
+      const auto& c = report->cases[i];
+      maxError = std::max(maxError, c.absError);
+      double ratio = c.bound > 0 ? c.absError / c.bound : (c.absError > 0 ? INFINITY : 0);
+      if (ratio > worst) worst = ratio, worstAt = axis->at(static_cast<int>(i));
+    }
+    if (!args.table.empty()) {
+      Diagnostics io;
+      if (!writeFileAtomically(args.table, accuracy::sweepTable(*axis, *report), io)) {
+        printDiagnostics(io, global);
+        return kExitUsageOrIo;
+      }
+    }
+    if (args.json) {
+      nlohmann::json j = accuracy::probeJson(*report);
+      j["sweep"] = {{"axis", args.sweep}, {"max_abs_error", maxError}, {"worst_error_to_bound", worst}, {"worst_at", worstAt}};
+      std::cout << j.dump(2) << "\n";
+    }
+    std::cerr << "sweep " << args.sweep << " of " << report->output << " on " << targetName(target) << ": "
+              << report->cases.size() << " points, " << report->failures() << " over the bound; max error " << maxError
+              << ", worst error/bound " << worst << " at " << worstAt << "\n";
+    return report->passed() ? kExitOk : kExitGraphError;
+  } catch (const rt::RuntimeError& e) {
+    std::cerr << "watergraph: probe: " << e.what() << "\n";
+    return e.exitCode();
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "watergraph: --mutate: " << e.what() << "\n";
+    return kExitUsageOrIo;
+  }
+}
+
 // --node TYPE: the cases that apply to the node (a port they set, a builtin it reads), each
 // output, grouped by the options the cases give it; the suite's code path.
-int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target target) {
+int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target target,
+                 const accuracy::ShaderMutation& mutation) {
   const NodeSpec* spec = defaultRegistry().find(args.node);
   if (!spec) {
     std::cerr << "watergraph: --node: no node type '" << args.node << "' (see watergraph nodes)\n";
+    return kExitUsageOrIo;
+  }
+  if (!args.sweep.empty()) return runSweep(args, global, *spec, target, mutation);
+  if (args.cases.empty()) {
+    std::cerr << "watergraph: probe --node needs --cases (or --sweep)\n";
     return kExitUsageOrIo;
   }
   Diagnostics diags;
@@ -47,20 +145,26 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
     accuracy::SuiteOptions options;
     options.nodes = {spec->type};
     options.variants = args.variants;
+    options.mutation = mutation;
     accuracy::SuiteResult r = accuracy::runHardCaseSuite(*cases, target, options);
     nlohmann::json all = nlohmann::json::array();
     for (const auto& run : r.runs) {
       if (args.json) {
         nlohmann::json j = accuracy::probeJson(run.report);
         j["variant"] = run.variant;
+        j["options"] = run.options;
         all.push_back(j);
       } else {
-        std::cout << "[" << run.variant << "] " << accuracy::formatProbeText(run.report);
+        std::cout << "[" << run.variant << "] " << run.options.dump() << "\n" << accuracy::formatProbeText(run.report);
       }
     }
     if (args.json) std::cout << all.dump(2) << "\n";
     for (const auto& e : r.errors) std::cerr << "watergraph: probe: " << e << "\n";
     std::cerr << r.caseRuns << " case runs, " << r.failures << " failed (" << r.nanInf << " NaN/Inf)\n";
+    if (mutation.active() && r.mutatedRuns == 0) {
+      std::cerr << "watergraph: --mutate: '" << mutation.find << "' is in none of " << spec->type << "'s probe shaders\n";
+      return kExitUsageOrIo;
+    }
     return r.failures || !r.errors.empty() ? kExitGraphError : kExitOk;
   } catch (const rt::RuntimeError& e) {
     std::cerr << "watergraph: probe: " << e.what() << "\n";
@@ -73,7 +177,24 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     std::cerr << "watergraph: probe needs a GRAPH or --node TYPE (one of them)\n";
     return kExitUsageOrIo;
   }
-  if (!args.node.empty()) return runNodeProbe(args, global, *parseTarget(args.target));
+  accuracy::ShaderMutation mutation;
+  if (!args.mutate.empty()) {
+    auto m = parseMutation(args.mutate);
+    if (!m) {
+      std::cerr << "watergraph: --mutate must be FIND=>REPLACE (got '" << args.mutate << "')\n";
+      return kExitUsageOrIo;
+    }
+    mutation = *m;
+  }
+  if (!args.sweep.empty() && args.node.empty()) {
+    std::cerr << "watergraph: --sweep needs --node TYPE\n";
+    return kExitUsageOrIo;
+  }
+  if (!args.node.empty()) return runNodeProbe(args, global, *parseTarget(args.target), mutation);
+  if (args.cases.empty()) {
+    std::cerr << "watergraph: probe GRAPH needs --cases FILE\n";
+    return kExitUsageOrIo;
+  }
   ProbeOutput output;
   if (!args.output.empty()) {
     auto o = parseProbeOutput(args.output);
@@ -93,7 +214,7 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
   }
   try {
     auto context = rt::EglContext::create(rt::apiFor(target));
-    auto report = accuracy::probeGraph(*graph, output, *cases, target, diags);
+    auto report = accuracy::probeGraph(*graph, output, *cases, target, diags, mutation);
     printDiagnostics(diags, global);
     if (!report) return exitCodeFor(diags);
     if (args.json) std::cout << accuracy::probeJson(*report).dump(2) << "\n";
@@ -102,6 +223,9 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
   } catch (const rt::RuntimeError& e) {
     std::cerr << args.graph << ": error: " << e.what() << "\n";
     return e.exitCode();
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "watergraph: --mutate: " << e.what() << "\n";
+    return kExitUsageOrIo;
   }
 }
 #endif
@@ -118,12 +242,15 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
       "near_far), the scene textures' values and parameters; see docs/accuracy.md.\n\nExamples:\n"
       "  watergraph probe graphs/lake.json --cases tests/hardcases/lake.json\n"
       "  watergraph probe graphs/lake.json --output fresnel.reflectance --cases cases.json --target es300 --json\n"
-      "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --variants\n\n"
+      "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --variants\n"
+      "  watergraph probe --node fresnel --options '{\"model\": \"exact\", \"direction\": \"water_to_air\"}' "
+      "--sweep angle:0:90:10000 --table fresnel.dat\n"
+      "  watergraph probe --node fresnel --cases c.json --mutate '1.333=>1.3331'\n\n"
       "Exit codes: 0 every case finite and within tolerance; 1 a NaN/Inf, a range or tolerance failure, or graph/case "
       "errors; 2 usage, I/O, or no EGL/GL context.");
   cmd->add_option("graph", args->graph, "graph file (.json); or --node");
   cmd->add_option("--output", args->output, "the node output to probe, NODE.PORT (default: the fragment colour)");
-  cmd->add_option("--cases", args->cases, "cases file (.json), see docs/accuracy.md")->required();
+  cmd->add_option("--cases", args->cases, "cases file (.json), see docs/accuracy.md (with --sweep: its first case is the base)");
   cmd->add_option("--target", args->target, "glsl330 (OpenGL 4.5 core) or es300 (OpenGL ES 3.2)")
       ->check(CLI::IsMember({"glsl330", "es300"}))
       ->capture_default_str();
@@ -132,6 +259,15 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
                   "probe a node type alone, every output, with the cases that apply to it (they may set \"inputs\", "
                   "\"options\" and \"ranges\"), as the hard-case suite does");
   cmd->add_flag("--variants", args->variants, "with --node: also every variant of its options");
+  cmd->add_option("--sweep", args->sweep,
+                  "with --node: NAME[.x|.y|.z|.w]:FROM:TO:COUNT, one input stepped evenly: 'angle' (degrees between "
+                  "normal and view), an input port, or a builtin key of the cases file (time, world_position.x, ...)");
+  cmd->add_option("--options", args->options, "with --sweep: the node's options as a JSON object");
+  cmd->add_option("--table", args->table,
+                  "with --sweep: write 'x gpu reference abs_error bound' per point to this file (for plotting)");
+  cmd->add_option("--mutate", args->mutate,
+                  "FIND=>REPLACE: edit the probe shader first (mutation testing: the probe should then fail); FIND "
+                  "must occur in it");
 #ifdef WG_HAVE_RUNTIME
   return [args, &global] { return runProbe(*args, global); };
 #else

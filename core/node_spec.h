@@ -98,9 +98,10 @@ struct HardCase {
   std::string expectation;  // what "safe" means here, for the docs
   double lo = -1e30, hi = 1e30;
   std::string output;
-  // At an ill-conditioned point (e.g. exactly the critical angle): the node's
-  // relaxedTolerance applies instead of its tolerance.
-  bool illConditioned = false;
+  // Set only where float32 cannot determine the result at all (a phase of 1e30 rad): the
+  // case then checks finiteness and [lo, hi] with this tolerance instead of the node's
+  // error bound. Every other case is held to the bound.
+  std::optional<double> tolerance;
 };
 
 struct NodeSpec;
@@ -248,13 +249,18 @@ struct NodeSpec {
   std::function<void(EmitContext&)> emit;
   std::function<void(EvalContext&)> eval;
   std::vector<HardCase> hardCases;
-  double tolerance = 1e-5;  // float32 GPU against the double reference, documented per node
-  // Where float32 cannot carry that precision — inputs of magnitude 1e4 and more (phases
-  // k x or t w keep ~7 significant digits) or an ill-conditioned point — the error
-  // against the reference stays within relaxedTolerance; relaxedWhen says where and why.
-  // 0: `tolerance` holds everywhere. The probe and the hard-case suite apply it.
-  double relaxedTolerance = 0;
-  std::string relaxedWhen;
+  // The error bound of float32 GPU against the double reference, per output component:
+  //   |gpu - ref| <= tolerance * max(1, |ref|) + conditioning
+  // `tolerance` bounds the rounding of the evaluation itself. `conditioning` is what the
+  // formula makes of the rounding of its inputs: the sum, over every float32 input
+  // component x the shader computes with, of how far the exact result moves when x moves
+  // by conditionRoundings * 2^-24 * |x| (either way). It is small where the formula is
+  // well-conditioned and grows where it is not (the critical angle, a phase k x at 1e5 m),
+  // without a hand-set window; a wrong constant still fails. 0: `tolerance` alone.
+  // The probe and the hard-case suite apply it (accuracy/error_bound.h).
+  double tolerance = 1e-5;
+  double conditionRoundings = 0;
+  std::string conditionWhy;  // for the docs: which inputs make it grow, and where
   // Scene resources the node reads; each makes the runtime run the pass that produces it
   // (codegen/manifest.cpp maps each to its pass): scene_depth, scene_color, planar_reflection,
   // environment, underwater.

@@ -97,9 +97,8 @@ NodeSpec flowMapNode() {
   // GL_LINEAR on 8-bit textures: hardware filter weights have 8 bits (llvmpipe), so one
   // sample differs from exact bilinear by up to 1/255 and two blended phases by 2/255.
   s.tolerance = 1e-2;
-  s.relaxedTolerance = 0.1;
-  s.relaxedWhen = "for uv or time inputs of 1e4 and more: the scrolled coordinates lose float32 digits (measured 5.8e-2 "
-                  "at uv 1e5)";
+  s.conditionRoundings = 4;
+  s.conditionWhy = "grows with the scrolled coordinates uv + t v (float32 uv and time inputs of 1e4 and more)";
   s.hardCases = {
       {"time 524288 s",
        {{"time", Value::scalar(524288)}},

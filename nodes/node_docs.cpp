@@ -62,7 +62,8 @@ nlohmann::json nodesJson(const Registry& registry) {
     j["cost"] = s->cost;
     j["stages"] = stagesText(s->stages);
     j["tolerance"] = s->tolerance;
-    if (s->relaxedTolerance > 0) j["relaxed_tolerance"] = {{"tolerance", s->relaxedTolerance}, {"when", s->relaxedWhen}};
+    if (s->conditionRoundings > 0)
+      j["conditioning"] = {{"input_roundings", s->conditionRoundings}, {"where", s->conditionWhy}};
     auto ports = [](const std::vector<PortSpec>& ps, bool input) {
       nlohmann::json a = nlohmann::json::array();
       for (const auto& p : ps) {
@@ -94,10 +95,12 @@ std::string nodesMarkdown(const Registry& registry) {
   md += "# Node reference\n\n";
   md += "Generated from the node registry by `watergraph nodes --markdown`; do not edit by hand.\n";
   md += "Every node has GLSL in `nodes/glsl/`, a double-precision reference (`eval`) that follows GLSL\n";
-  md += "semantics, and the hard cases listed with it. `tolerance` is the largest absolute difference\n";
-  md += "allowed between the float32 GPU result and the reference (|gpu - ref| <= tolerance * max(1, |ref|));\n";
-  md += "`relaxed tolerance` is the bound where float32 cannot carry that precision (inputs of 1e4 and more,\n";
-  md += "ill-conditioned points). `watergraph probe` and the hard-case suite check both (docs/accuracy.md).\n\n";
+  md += "semantics, and the hard cases listed with it. The float32 GPU result is held to the reference by\n";
+  md += "|gpu - ref| <= tolerance * max(1, |ref|) + conditioning, per component: `tolerance` bounds the\n";
+  md += "rounding of the evaluation; `conditioning` (where a node lists it) is what moving each float32 input\n";
+  md += "by `input roundings` x 2^-24 of itself makes of the exact result, summed over the inputs: it grows\n";
+  md += "only where the formula is ill-conditioned. `watergraph probe` and the hard-case suite check it\n";
+  md += "(docs/accuracy.md).\n\n";
   for (const auto& [family, specs] : byFamily) {
     md += "- **" + family + "**:";
     for (const NodeSpec* s : specs) md += " [`" + s->type + "`](#" + s->type + ")";
@@ -112,8 +115,8 @@ std::string nodesMarkdown(const Registry& registry) {
       md += "- stages: " + stagesText(s->stages) + "\n";
       md += "- cost: " + s->cost + "\n";
       md += "- tolerance: " + formatNumber(s->tolerance) + "\n";
-      if (s->relaxedTolerance > 0)
-        md += "- relaxed tolerance: " + formatNumber(s->relaxedTolerance) + " " + s->relaxedWhen + "\n";
+      if (s->conditionRoundings > 0)
+        md += "- conditioning: input roundings " + formatNumber(s->conditionRoundings) + "; " + s->conditionWhy + "\n";
       if (!s->resources.empty()) {
         md += "- scene resources:";
         for (const auto& r : s->resources) md += " `" + r + "`";

@@ -90,6 +90,11 @@ NodeSpec refractDirNode() {
     ctx.output(1, Value::scalar(r.tir ? 1.0 : 0.0));
   };
   s.tolerance = 2e-6;
+  // As fresnel: backward-stable in c = N.V; at the critical angle float32 cannot decide
+  // between refraction and total reflection, and the conditioning term says so.
+  s.conditionRoundings = 2;
+  s.conditionWhy = "grows near the critical angle from below (water_to_air), where k = 1 - eta^2 (1 - c^2) passes 0 "
+                   "with an infinite slope of sqrt(k): float32 rounding of N.V can flip the branch there";
   auto up = Value::vector({0, 1, 0});
   auto dirAt = [](double degrees) {
     double r = degrees * M_PI / 180.0;

@@ -95,10 +95,8 @@ NodeSpec voronoiNode() {
   // Distances in float32 relative to the cell; a near-tie between two points can still pick
   // a different nearest cell on the GPU (F1 and F2 stay continuous there).
   s.tolerance = 1e-4;
-  s.relaxedTolerance = 1;
-  s.relaxedWhen = "for coordinates or time inputs of 1e4 and more: points move by float32-rounded phases "
-                  "(0.06 rad at t = 1e6 s), so F1 and F2 differ by up to 2e-2 and the nearest cell's id by 1 (use "
-                  "animation time_phase, exact at any time)";
+  s.conditionRoundings = 4;
+  s.conditionWhy = "grows with the cell coordinates and float32 time inputs, and where two cells are nearly equidistant (the nearest cell changes)";
   s.hardCases = {
       {"huge coordinates 1e5 m", {{"p", Value::vector({1e5, -1e5})}}, {}, "finite, F1 <= ~1.42", 0, 1.5},
       {"jitter out of range", {{"p", Value::vector({0.3, 0.7})}, {"jitter", Value::scalar(7)}}, {}, "clamped to 1", 0, 1.5},

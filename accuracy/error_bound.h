@@ -1,0 +1,37 @@
+#pragma once
+// The error bound a probe holds float32 GPU results to (NodeSpec::tolerance and
+// NodeSpec::conditionRoundings, docs/accuracy.md): per output component
+//   |gpu - ref| <= tolerance * max(1, |ref|) + conditioning,
+// where `conditioning` is measured on the double reference itself: every float32 input
+// component x the probe shader computes with (graph parameters, and the builtins it reads
+// as plain uniforms) is moved by roundings * 2^-24 * |x| each way, one at a time, and the
+// largest move of the result per input is summed over the inputs. To first order this is
+// roundings * 2^-24 * sum |df/dx| |x|, the formula's condition number times the rounding;
+// at a singular point (the slope of a sqrt at 0) it stays finite and is what float32
+// rounding of the inputs does there. Time phases are excluded: the runtime computes them
+// in double, so they carry no float32 rounding.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "core/program.h"
+
+namespace wg::accuracy {
+
+struct ErrorModel {
+  double tolerance = 0;
+  double roundings = 0;
+};
+
+// The model of a probe program: the largest tolerance and condition roundings of its ops
+// (1e-6 and none for a program without ops).
+ErrorModel programErrorModel(const Program& program);
+
+// The conditioning term per output component of `program`'s first output, perturbing the
+// parameters and the builtins named in `builtins` ("normal", "world_position", ...; the
+// names of UniformInfo::builtin). Zero when roundings is 0.
+std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
+                                       const std::vector<Value>& parameters, const std::vector<std::string>& builtins,
+                                       double roundings);
+
+}  // namespace wg::accuracy
