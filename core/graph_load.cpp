@@ -534,23 +534,14 @@ class Loader {
   }
 
   void loadOutputs(const json& outputs, Graph& g) {
-    const char* expected = "(vertex: position, normal; fragment: color, alpha)";
-    struct Slot {
-      const char* stage;
-      const char* name;
-      OutputSlot slot;
-    };
-    static const Slot kSlots[] = {
-        {"vertex", "position", OutputSlot::VertexPosition},
-        {"vertex", "normal", OutputSlot::VertexNormal},
-        {"fragment", "color", OutputSlot::FragmentColor},
-        {"fragment", "alpha", OutputSlot::FragmentAlpha},
-    };
+    const std::string expected(outputSlotList());
     int connected = 0;
     const size_t errorsBefore = diags_.errorCount();
     for (const auto& stage : members(outputs, "/outputs")) {
       const std::string stagePtr = "/outputs/" + jsonPointerEscape(stage);
-      if (stage != "vertex" && stage != "fragment") {
+      bool knownStage = false;
+      for (const auto& s : outputSlotTable()) knownStage |= stage == s.stageName;
+      if (!knownStage) {
         diags_.error(DiagCode::UnknownOutputSlot, js_.key(stagePtr),
                      "unknown output stage '" + stage + "' " + expected);
         continue;
@@ -563,9 +554,9 @@ class Loader {
       }
       for (const auto& name : members(sv, stagePtr)) {
         const std::string slotPtr = stagePtr + "/" + jsonPointerEscape(name);
-        const Slot* found = nullptr;
-        for (const auto& s : kSlots)
-          if (stage == s.stage && name == s.name) found = &s;
+        const OutputSlotRow* found = nullptr;
+        for (const auto& s : outputSlotTable())
+          if (stage == s.stageName && name == s.portName) found = &s;
         if (!found) {
           diags_.error(DiagCode::UnknownOutputSlot, js_.key(slotPtr),
                        "unknown output slot '" + stage + "." + name + "' " + expected);
@@ -573,7 +564,7 @@ class Loader {
         }
         ++connected;
         GraphOutput out;
-        out.slot = found->slot;
+        out.slot = found->id;
         out.keyWhere = js_.key(slotPtr);
         if (parseSource(sv.at(name), js_.value(slotPtr), out.source, {},
                         [&] { return "output '" + stage + "." + name + "'"; }))

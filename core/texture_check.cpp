@@ -3,10 +3,16 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/interface_tables.h"
+
 namespace wg {
 
 const std::vector<std::string>& builtinTextureNames() {
-  static const std::vector<std::string> names = {"dudv", "foam", "height", "water_normal"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& row : builtinTextureTable()) n.emplace_back(row.name);
+    return n;
+  }();
   return names;
 }
 

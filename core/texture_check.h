@@ -9,7 +9,7 @@
 namespace wg {
 
 inline constexpr std::string_view kBuiltinTexturePrefix = "builtin:";
-const std::vector<std::string>& builtinTextureNames();  // dudv, foam, height, water_normal
+const std::vector<std::string>& builtinTextureNames();  // builtinTextureTable()'s names
 
 // "" when `source` is acceptable, else why not: an unknown builtin, an absolute path, a
 // path that leaves the graph's folder, a file that is not there or not a .png.

@@ -47,7 +47,7 @@ NodeSpec sceneDepthNode() {
                ports::fixed("position", Type::Vec3, "world position of the scene point (e.g. where caustics fall)")};
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"scene_depth"};
+  s.resources = {SceneResource::SceneDepth};
   s.facts = [](const std::vector<ValueFact>&, const nlohmann::json&) {
     return std::vector<ValueFact>{kDepthTextureFact, {}, {}};
   };
@@ -92,7 +92,7 @@ NodeSpec sceneColorNode() {
   s.seed = "003 (refraction from the grabbed screen, GrabPass); 002 (screen-space distorted refraction); 000 "
            "(distortion (dudv * 2 - 1) * 0.03)";
   s.cost = "one texture fetch + 4 ALU; runs the scene_color_copy pass (a blit of the frame, 4 bytes/pixel RGBA8)";
-  makeScreenLookup(s, "scene_color", &EvalEnvironment::sceneColor,
+  makeScreenLookup(s, SceneResource::SceneColor, &EvalEnvironment::sceneColor,
                    "offset in screen units (e.g. dudv_distortion.offset or normal.xz * 0.03)",
                    "scene colour seen through the water");
   s.hardCases = {
@@ -130,7 +130,7 @@ NodeSpec planarReflectionNode() {
                            "(upside down); false for watergraph's runtime")};
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"planar_reflection"};
+  s.resources = {SceneResource::PlanarReflection};
   s.emit = [](EmitContext& ctx) {
     bool flip = ctx.option("flip_y").get<bool>();
     std::string uv = ctx.temporary(
@@ -169,7 +169,7 @@ NodeSpec cubemapReflectionNode() {
                ports::fixed("direction", Type::Vec3, "the unit mirror direction R")};
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"environment"};
+  s.resources = {SceneResource::Environment};
   s.emit = [](EmitContext& ctx) {
     std::string r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {ctx.input("normal"), ctx.input("view")}));
     ctx.output(0, "texture(" + ctx.sceneTexture("environment") + ", " + r + ").rgb");
@@ -227,7 +227,7 @@ NodeSpec ssrNode() {
   s.options = {ports::integer("steps", 10, 1, 64, "ray-march steps, the quality level (seed 001: 10); cost grows linearly")};
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"scene_depth", "scene_color"};
+  s.resources = {SceneResource::SceneDepth, SceneResource::SceneColor};
   s.emit = [](EmitContext& ctx) {
     std::string n = ctx.input("normal");
     std::string r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {n, ctx.input("view")}));
