@@ -482,22 +482,6 @@ struct Renderer::Impl {
     glClear((clearColor && t.color ? GL_COLOR_BUFFER_BIT : 0) | (t.depth ? GL_DEPTH_BUFFER_BIT : 0));
   }
 
-  void environmentPass() {
-    GpuTarget* t = find(SceneSampler::Environment);
-    static const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
-    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo.id());
-    glViewport(0, 0, t->spec.width, t->spec.height);
-    for (int f = 0; f < 6; ++f) {
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f),
-                             t->color.id(), 0);
-      glClearColor(0, 0, 0, 1);  // what stays there without the scene (drawScene false)
-      glClear(GL_COLOR_BUFFER_BIT);
-      drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
-    }
-  }
-
   void bindWaterTextures(bool bind) {
     for (const auto& b : waterBindings) {
       glActiveTexture(GL_TEXTURE0 + b.unit);
@@ -516,99 +500,123 @@ struct Renderer::Impl {
   // Which half-space the water's own camera side is: above (+y) unless under water.
   float cameraSide() const { return camera.position.y >= 0.0f ? 1.0f : -1.0f; }
 
+  // --- One function per pass kind (PassKind), run in the plan's order.
+  static inline const glm::vec4 kNoClip = glm::vec4(0, 0, 0, 1);
+
+  void environmentPass() {
+    GpuTarget* t = find(SceneSampler::Environment);
+    static const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo.id());
+    glViewport(0, 0, t->spec.width, t->spec.height);
+    for (int f = 0; f < 6; ++f) {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f),
+                             t->color.id(), 0);
+      glClearColor(0, 0, 0, 1);  // what stays there without the scene (drawScene false)
+      glClear(GL_COLOR_BUFFER_BIT);
+      drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
+    }
+  }
+
+  void depthPrepass() {
+    bindTarget(*find(SceneSampler::SceneDepth), false);
+    drawOpaque(viewProjection, kNoClip);
+  }
+
+  // The camera mirrored about y = 0; only what is on the camera's side of the water is
+  // reflected.
+  void planarReflectionPass() {
+    bindTarget(*find(SceneSampler::Reflection), true);
+    const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
+    const glm::mat4 mirrored = viewProjection * mirror;
+    const glm::vec4 waterPlane(0, cameraSide(), 0, 0);
+    if (settings.obliqueReflection) {
+      // The mirrored camera sits on the far side of the water plane, as the oblique
+      // projection requires; the sky keeps the plain matrix (it only reconstructs view
+      // directions from it).
+      glm::mat4 oblique = obliqueProjection(projection, planeToEye(view * mirror, waterPlane));
+      drawOpaque(oblique * view * mirror, kNoClip);
+    } else {
+      drawOpaque(mirrored, waterPlane);
+    }
+    drawSky(mirrored);
+  }
+
+  // What lies beyond the surface, seen by the real camera.
+  void refractionPass() {
+    bindTarget(*find(SceneSampler::Refraction), true);
+    drawOpaque(viewProjection, glm::vec4(0, -cameraSide(), 0, 0));
+    drawSky(viewProjection);
+  }
+
+  void opaqueScenePass() {
+    bindTarget(frame(), true);
+    drawOpaque(viewProjection, kNoClip);
+    drawSky(viewProjection);
+  }
+
+  void sceneColorCopyPass() {
+    GpuTarget* copy = find(SceneSampler::SceneColor);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy->fbo.id());
+    glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, settings.width, settings.height, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+
+  // The water G-buffer: the graph's vertex shader (displacement included) writes the
+  // surface's position, depth, normal and uv; where no water is, depth w = 1.
+  void deferredWaterPass() {
+    GpuTarget* g = find(SceneSampler::WaterSurface);
+    bindTarget(*g, false);
+    const float surfaceClear[4] = {0, 0, 0, 1}, normalClear[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, surfaceClear);
+    glClearBufferfv(GL_COLOR, 1, normalClear);
+    glUseProgram(waterGbuffer->id());
+    bindWaterTextures(true);
+    glBindVertexArray(waterMesh.vao.id());
+    drawWaterMesh();
+    bindWaterTextures(false);
+  }
+
+  void waterSurfacePass() {
+    glBindFramebuffer(GL_FRAMEBUFFER, frame().fbo.id());
+    glViewport(0, 0, settings.width, settings.height);
+    glEnable(GL_BLEND);
+    // Colour blended by the water's alpha; the frame's alpha stays 1.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(water->id());
+    bindWaterTextures(true);
+    if (deferred) {
+      // Full-screen: every pixel is shaded by the graph (the underwater node's case 1
+      // returns the scene colour), reading the scene and the G-buffer from textures.
+      glDisable(GL_DEPTH_TEST);
+      glBindVertexArray(emptyVao.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glEnable(GL_DEPTH_TEST);
+    } else {
+      glBindVertexArray(waterMesh.vao.id());
+      drawWaterMesh();
+    }
+    glDisable(GL_BLEND);
+    bindWaterTextures(false);
+  }
+
   double renderOneFrame() {
+    // By PassKind, in renderPassTable() order.
+    using PassFunction = void (Impl::*)();
+    static constexpr PassFunction kPassFunctions[] = {
+        &Impl::environmentPass, &Impl::depthPrepass,       &Impl::planarReflectionPass, &Impl::refractionPass,
+        &Impl::opaqueScenePass, &Impl::sceneColorCopyPass, &Impl::deferredWaterPass,    &Impl::waterSurfacePass,
+    };
+    static_assert(std::size(kPassFunctions) == static_cast<size_t>(PassKind::WaterSurface) + 1);
     auto start = std::chrono::steady_clock::now();
     applyUniforms();
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
-    const glm::vec4 noClip(0, 0, 0, 1);
-    for (PassKind pass : plan.passes) {
-      switch (pass) {
-        case PassKind::EnvironmentCubemap: environmentPass(); break;
-        case PassKind::DepthPrepass:
-          bindTarget(*find(SceneSampler::SceneDepth), false);
-          drawOpaque(viewProjection, noClip);
-          break;
-        case PassKind::PlanarReflection: {
-          // The camera mirrored about y = 0; only what is on the camera's side of the
-          // water is reflected.
-          bindTarget(*find(SceneSampler::Reflection), true);
-          const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
-          const glm::mat4 mirrored = viewProjection * mirror;
-          const glm::vec4 waterPlane(0, cameraSide(), 0, 0);
-          if (settings.obliqueReflection) {
-            // The mirrored camera sits on the far side of the water plane, as the
-            // oblique projection requires; the sky keeps the plain matrix (it only
-            // reconstructs view directions from it).
-            glm::mat4 oblique = obliqueProjection(projection, planeToEye(view * mirror, waterPlane));
-            drawOpaque(oblique * view * mirror, noClip);
-          } else {
-            drawOpaque(mirrored, waterPlane);
-          }
-          drawSky(mirrored);
-          break;
-        }
-        case PassKind::Refraction:
-          // What lies beyond the surface, seen by the real camera.
-          bindTarget(*find(SceneSampler::Refraction), true);
-          drawOpaque(viewProjection, glm::vec4(0, -cameraSide(), 0, 0));
-          drawSky(viewProjection);
-          break;
-        case PassKind::OpaqueScene:
-          bindTarget(frame(), true);
-          drawOpaque(viewProjection, noClip);
-          drawSky(viewProjection);
-          break;
-        case PassKind::SceneColorCopy: {
-          GpuTarget* copy = find(SceneSampler::SceneColor);
-          glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
-          glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy->fbo.id());
-          glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, settings.width, settings.height,
-                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
-          break;
-        }
-        case PassKind::DeferredWater: {
-          // The water G-buffer: the graph's vertex shader (displacement included) writes
-          // the surface's position, depth, normal and uv; where no water is, depth w = 1.
-          GpuTarget* g = find(SceneSampler::WaterSurface);
-          bindTarget(*g, false);
-          const float surfaceClear[4] = {0, 0, 0, 1}, normalClear[4] = {0, 0, 0, 0};
-          glClearBufferfv(GL_COLOR, 0, surfaceClear);
-          glClearBufferfv(GL_COLOR, 1, normalClear);
-          glUseProgram(waterGbuffer->id());
-          bindWaterTextures(true);
-          glBindVertexArray(waterMesh.vao.id());
-          drawWaterMesh();
-          bindWaterTextures(false);
-          break;
-        }
-        case PassKind::WaterSurface: {
-          glBindFramebuffer(GL_FRAMEBUFFER, frame().fbo.id());
-          glViewport(0, 0, settings.width, settings.height);
-          glEnable(GL_BLEND);
-          // Colour blended by the water's alpha; the frame's alpha stays 1.
-          glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-          glUseProgram(water->id());
-          bindWaterTextures(true);
-          if (deferred) {
-            // Full-screen: every pixel is shaded by the graph (the underwater node's case 1
-            // returns the scene colour), reading the scene and the G-buffer from textures.
-            glDisable(GL_DEPTH_TEST);
-            glBindVertexArray(emptyVao.id());
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            glEnable(GL_DEPTH_TEST);
-          } else {
-            glBindVertexArray(waterMesh.vao.id());
-            drawWaterMesh();
-          }
-          glDisable(GL_BLEND);
-          bindWaterTextures(false);
-          break;
-        }
-      }
-    }
+    for (PassKind pass : plan.passes) (this->*kPassFunctions[static_cast<size_t>(pass)])();
     glBindVertexArray(0);
     glFinish();
     auto end = std::chrono::steady_clock::now();
