@@ -98,10 +98,10 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
   bool compare = report.reference.empty();
   if (compare) report.reference = "cpu";
   bool underwater = false;
+  const std::string deferredPass(renderPassRow(RenderPass::DeferredWater).name);
   if (result.manifest.contains("passes"))
     for (const auto& pass : result.manifest["passes"])
-      underwater |= pass.is_string() ? pass.get<std::string>() == "deferred_water"
-                                     : pass.value("name", "") == "deferred_water";
+      underwater |= pass.is_string() ? pass.get<std::string>() == deferredPass : pass.value("name", "") == deferredPass;
   bool es = target == Target::Es300;
   for (const auto& view : checkSweep(underwater)) {
     rt::RenderSettings settings;

@@ -34,35 +34,6 @@ std::vector<std::pair<std::string, nlohmann::json>> optionVariants(const NodeSpe
   return out;
 }
 
-const std::map<std::string, std::vector<std::string>>& uniformKeys() {
-  static const std::map<std::string, std::vector<std::string>> m = {
-      {"uv", {"uv"}},
-      {"world_position", {"world_position"}},
-      {"normal", {"normal"}},
-      {"view_direction", {"view_direction", "camera", "camera_position", "world_position"}},
-      {"screen_uv", {"screen_uv"}},
-      {"frag_depth", {"frag_depth"}},
-      {"camera_position", {"camera_position", "camera"}},
-      {"time", {"time"}},
-      {"time_phase", {"time"}},
-      {"camera_near_far", {"near_far", "camera"}},
-      {"view", {"view", "camera"}},
-      {"projection", {"projection", "camera"}},
-      {"sun_direction", {"sun_direction"}}};
-  return m;
-}
-
-const std::map<std::string, std::vector<std::string>>& resourceKeys() {
-  static const std::map<std::string, std::vector<std::string>> m = {
-      {"scene_depth", {"scene.depth"}},
-      {"scene_color", {"scene.color"}},
-      {"planar_reflection", {"scene.reflection"}},
-      {"refraction", {"scene.refraction"}},
-      {"environment", {"scene.environment"}},
-      {"underwater", {"world_position", "frag_depth", "normal", "uv"}}};
-  return m;
-}
-
 // The node's own documented hard cases as suite cases (default environment).
 std::vector<ProbeCase> specHardCases(const NodeSpec& spec) {
   std::vector<ProbeCase> out;
@@ -110,14 +81,14 @@ std::vector<std::string> nodeReads(const NodeSpec& spec) {
     auto program = buildProbeProgram(setup.graph, defaultRegistry(), ProbeOutput{"n", out.name}, diags);
     if (!program) continue;
     EmitResult shader = emitProgram(*program, Target::Glsl330, setup.graph.file, EmitMode::Probe);
-    for (const auto& u : shader.uniforms) {
-      auto k = uniformKeys().find(u.builtin);
-      if (u.parameter < 0 && k != uniformKeys().end()) keys.insert(k->second.begin(), k->second.end());
-    }
-    for (const auto& t : shader.textures) {
-      auto k = resourceKeys().find(t.resource);
-      if (k != resourceKeys().end()) keys.insert(k->second.begin(), k->second.end());
-    }
+    auto insert = [&](const CaseKeys& k) {
+      for (std::string_view key : k)
+        if (!key.empty()) keys.emplace(key);
+    };
+    for (const auto& u : shader.uniforms)
+      if (u.parameter < 0) insert(builtinUniformRow(u.builtin).caseKeys);
+    for (const auto& t : shader.textures)
+      if (t.scene) insert(sceneResourceRow(sceneSamplerRow(*t.scene).resource).caseKeys);
   }
   return {keys.begin(), keys.end()};
 }

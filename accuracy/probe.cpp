@@ -166,7 +166,7 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
 
   ProbeReport report;
   report.graph = graph.file;
-  report.output = "fragment.color";
+  report.output = std::string(outputSlotName(OutputSlot::FragmentColor));
   if (!output.node.empty()) {
     std::string port = output.port;
     if (port.empty())

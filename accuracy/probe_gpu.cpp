@@ -3,7 +3,6 @@
 #include <cmath>
 #include <map>
 
-#include "codegen/shader_interface.h"
 #include "nodes/texture_source.h"
 #include "runtime/gl_resources.h"
 #include "runtime/runtime_error.h"
@@ -23,27 +22,20 @@ std::string fullscreenVertex(bool es) {
 
 // The value a builtin uniform has in a case.
 Value builtinValue(const UniformInfo& u, const EvalEnvironment& env) {
-  const std::string& b = u.builtin;
-  if (b == "uv") return env.uv;
-  if (b == "world_position") return env.worldPosition;
-  if (b == "normal") return env.normal;
-  if (b == "view_direction") return env.viewDirection;
-  if (b == "screen_uv") return env.screenUv;
-  if (b == "frag_depth") return env.fragDepth;
-  if (b == "camera_position") return env.cameraPosition;
-  if (b == "time") return env.time;
-  if (b == "camera_near_far") return env.cameraNearFar;
-  if (b == "view") return env.view;
-  if (b == "projection") return env.projection;
-  if (b == "sun_direction") return env.sunDirection;
-  if (b == "viewport_size") return Value::vector({1, 1});
-  if (b == "time_phase") {
-    // As the runtime does: mod(omega * t, 2 pi) in double (the eval does the same).
-    double phase = u.omega * env.time[0];
-    phase -= 6.283185307179586 * std::floor(phase / 6.283185307179586);
-    return Value::scalar(phase);
+  const BuiltinUniformRow& row = builtinUniformRow(u.builtin);
+  if (row.carries) return env.builtin(*row.carries);
+  switch (u.builtin) {
+    case BuiltinUniform::ViewportSize: return Value::vector({1, 1});
+    case BuiltinUniform::TimePhase: {
+      // As the runtime does: mod(omega * t, 2 pi) in double (the eval does the same).
+      double phase = u.omega * env.time[0];
+      phase -= 6.283185307179586 * std::floor(phase / 6.283185307179586);
+      return Value::scalar(phase);
+    }
+    default: break;
   }
-  throw RuntimeError(RuntimeError::Kind::Manifest, "the probe cannot set builtin uniform " + u.name + " ('" + b + "')");
+  throw RuntimeError(RuntimeError::Kind::Manifest,
+                     "the probe cannot set builtin uniform " + u.name + " ('" + std::string(row.meaning) + "')");
 }
 
 void setUniform(GLint loc, Type type, const Value& v) {
@@ -58,26 +50,6 @@ void setUniform(GLint loc, Type type, const Value& v) {
     case Type::Mat4: glUniformMatrix4fv(loc, 1, GL_FALSE, f); break;
     default: throw RuntimeError(RuntimeError::Kind::Manifest, "the probe cannot set a uniform of this type");
   }
-}
-
-// What a scene texture holds at every texel in a case.
-std::array<float, 4> sceneTexel(const std::string& resource, const std::string& name, const EvalEnvironment& env) {
-  auto v4 = [](const Value& v, double w) {
-    return std::array<float, 4>{static_cast<float>(v[0]), static_cast<float>(v[1]), static_cast<float>(v[2]), static_cast<float>(w)};
-  };
-  if (resource == "scene_depth") {
-    float d = static_cast<float>(env.sceneDepth[0]);
-    return {d, d, d, 1};
-  }
-  if (resource == "scene_color") return v4(env.sceneColor, 1);
-  if (resource == "planar_reflection") return v4(env.reflectionColor, 1);
-  if (resource == "refraction") return v4(env.refractionColor, 1);
-  if (resource == "environment") return v4(env.environmentColor, 1);
-  if (resource == "underwater" && name == iface::kWaterNormalUvTexture)
-    return {static_cast<float>(env.normal[0]), static_cast<float>(env.normal[2]), static_cast<float>(env.uv[0]),
-            static_cast<float>(env.uv[1])};
-  if (resource == "underwater") return v4(env.worldPosition, env.fragDepth[0]);
-  throw RuntimeError(RuntimeError::Kind::Manifest, "the probe has no value for scene resource '" + resource + "'");
 }
 
 rt::Texture makeNodeTexture(const TextureInfo& t, const std::string& graphDir) {
@@ -153,7 +125,7 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
   std::vector<Bound> bound;
   for (const auto& t : shader.textures) {
     bool cube = t.type == Type::SamplerCube;
-    Bound b{&t, t.resource.empty() ? makeNodeTexture(t, program.directory) : makeSceneTexture(cube),
+    Bound b{&t, t.scene ? makeSceneTexture(cube) : makeNodeTexture(t, program.directory),
             cube ? GLenum(GL_TEXTURE_CUBE_MAP) : GLenum(GL_TEXTURE_2D)};
     GLint loc = glGetUniformLocation(prog.id(), t.name.c_str());
     if (loc >= 0) glUniform1i(loc, static_cast<GLint>(bound.size()));
@@ -182,9 +154,9 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
     for (size_t k = 0; k < bound.size(); ++k) {
       glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(k));
       glBindTexture(bound[k].target, bound[k].texture.id());
-      if (!bound[k].info->resource.empty())
+      if (bound[k].info->scene)
         fillSceneTexture(bound[k].texture.id(), bound[k].target == GL_TEXTURE_CUBE_MAP,
-                         sceneTexel(bound[k].info->resource, bound[k].info->name, c.env));
+                         sceneSamplerRow(*bound[k].info->scene).caseTexel(c.env));
     }
     glViewport(static_cast<GLint>(i % 1024), static_cast<GLint>(i / 1024), 1, 1);
     glDrawArrays(GL_TRIANGLES, 0, 3);

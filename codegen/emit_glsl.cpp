@@ -47,12 +47,11 @@ std::string literalOf(const Value& v) {
   return s + ')';
 }
 
-int resourceRank(const std::string& resource) {
-  const char* order[] = {"scene_depth", "scene_color", "planar_reflection", "refraction", "environment"};
-  for (int i = 0; i < 5; ++i)
-    if (resource == order[i]) return i;
-  return 5;
-}
+// Scene samplers are declared in the order of their resources' table rows.
+int resourceRank(const TextureInfo& t) { return static_cast<int>(sceneSamplerRow(*t.scene).resource); }
+
+std::string uniformName(BuiltinUniform u) { return std::string(builtinUniformRow(u).glslName); }
+std::string samplerName(SceneSampler s) { return std::string(sceneSamplerRow(s).glslName); }
 
 bool isPlainName(const std::string& e) {
   if (e.empty() || (e[0] >= '0' && e[0] <= '9')) return false;
@@ -61,44 +60,46 @@ bool isPlainName(const std::string& e) {
   return true;
 }
 
-// The builtin uniforms, in declaration order.
-struct BuiltinUniform {
-  const char* name;
-  Type type;
-  const char* meaning;
+// One shader's text being assembled: lines appended into one buffer, each with the op
+// that wrote it (-1: none), so a glslang error maps back to its node.
+struct ShaderText {
+  EmittedShader shader;
+  explicit ShaderText(ShaderStage stage) { shader.stage = stage; }
+  void add(std::string_view line, int op = -1) {
+    shader.text.append(line);
+    shader.text += '\n';
+    shader.lineOp.push_back(op);
+  }
+  // Whole lines, each ending in '\n' (a stage body with its ops, or lines from no op).
+  void addLines(std::string_view lines, const std::vector<int>* ops = nullptr) {
+    shader.text.append(lines);
+    if (ops)
+      shader.lineOp.insert(shader.lineOp.end(), ops->begin(), ops->end());
+    else
+      shader.lineOp.insert(shader.lineOp.end(), static_cast<size_t>(std::count(lines.begin(), lines.end(), '\n')), -1);
+  }
 };
-const BuiltinUniform kModel{iface::kModel, Type::Mat4, "model"};
-const BuiltinUniform kViewProjection{iface::kViewProjection, Type::Mat4, "view_projection"};
-const BuiltinUniform kCamera{iface::kCameraPosition, Type::Vec3, "camera_position"};
-const BuiltinUniform kTime{iface::kTime, Type::Float, "time"};
-const BuiltinUniform kViewport{iface::kViewportSize, Type::Vec2, "viewport_size"};
-const BuiltinUniform kNearFar{iface::kCameraNearFar, Type::Vec2, "camera_near_far"};
-const BuiltinUniform kView{iface::kView, Type::Mat4, "view"};
-const BuiltinUniform kProjection{iface::kProjection, Type::Mat4, "projection"};
-const BuiltinUniform kSun{iface::kSunDirection, Type::Vec3, "sun_direction"};
-// Probe mode: the per-pixel builtins become uniforms set from each case.
-const BuiltinUniform kProbeUv{"u_probe_uv", Type::Vec2, "uv"};
-const BuiltinUniform kProbeWorldPosition{"u_probe_world_position", Type::Vec3, "world_position"};
-const BuiltinUniform kProbeNormal{"u_probe_normal", Type::Vec3, "normal"};
-const BuiltinUniform kProbeViewDirection{"u_probe_view_direction", Type::Vec3, "view_direction"};
-const BuiltinUniform kProbeScreenUv{"u_probe_screen_uv", Type::Vec2, "screen_uv"};
-const BuiltinUniform kProbeFragDepth{"u_probe_frag_depth", Type::Float, "frag_depth"};
 
-// One stage's body being written: lines with the op that wrote each, and what it used.
+// One stage's body being written into one buffer ("  " + line + '\n' each, no string per
+// line), with the op that wrote each line, and what it used.
 struct StageWriter {
   unsigned stage = 0;
-  std::vector<std::string> lines;
+  std::string body;
   std::vector<int> lineOp;
   std::set<Builtin> builtins;
   std::set<int> parameters;
-  std::set<std::string> builtinUniforms;
+  std::set<BuiltinUniform> builtinUniforms;
   // Op outputs whose expression is already a name (a builtin, another temporary): used
   // directly instead of copying into a new local. By the Emitter's port index ("" none; a
   // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
   std::vector<std::string> aliases;
 
-  void line(std::string text, int op) {
-    lines.push_back("  " + std::move(text));
+  // One line of the body, from its parts.
+  template <class... Parts>
+  void line(int op, const Parts&... parts) {
+    body += "  ";
+    (body.append(std::string_view(parts)), ...);
+    body += '\n';
     lineOp.push_back(op);
   }
 };
@@ -118,7 +119,7 @@ class OpEmitContext final : public EmitContext {
   unsigned stage() const override { return w_.stage; }
   std::string timePhase(double omega) override;
   std::string texture(std::string_view option) override;
-  std::string sceneTexture(std::string_view resource) override;
+  std::string sceneTexture(SceneResource resource) override;
   const NodeSpec& spec() const override;
   ValueFact inputFact(int port) const override;
   ValueFact knownBuiltin(Builtin b) const override;
@@ -154,10 +155,9 @@ class Emitter {
       paramNames_.push_back(name);
     }
     if (!probe_) tess_ = tessellationFor(p, t, allowTessellation);
-    // Deferred water: an op reads the "underwater" resource, so the fragment shader runs as
+    // Deferred water: an op reads the underwater resource, so the fragment shader runs as
     // a full-screen pass that takes the surface builtins from the water G-buffer.
-    for (const auto& op : p.ops)
-      for (const auto& r : op.spec->resources) deferred_ = !probe_ && (deferred_ || r == "underwater");
+    deferred_ = !probe_ && p.reads(SceneResource::Underwater);
     for (size_t k = 0; k < p.varyings.size(); ++k) {
       const ValueRef& v = p.varyings[k];
       const Op& op = p.ops[static_cast<size_t>(v.index)];
@@ -178,7 +178,7 @@ class Emitter {
   EmitResult run() {
     if (probe_) return runProbe();
     prepare();
-    return assembleFor(true);
+    return assembleFor();
   }
 
   // Another target with the same tessellation: the stage bodies and the interface depend
@@ -196,7 +196,7 @@ class Emitter {
     emitOps(frag);
     std::string color = outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
     std::string alpha = outputExpr(frag, OutputSlot::FragmentAlpha, "1.0");
-    frag.line(std::string(iface::kColorOutput) + " = vec4(" + color + ", " + alpha + ");", -1);
+    frag.line(-1, iface::kColorOutput, " = vec4(", color, ", ", alpha, ");");
     if (deferred_) prepareDeferredFragment(frag);
 
     vert.stage = kVertexStage;
@@ -208,25 +208,25 @@ class Emitter {
     // Deferred: the vertex shader feeds the runtime's G-buffer pass, which stores all three.
     if (deferred_) fragNeedsPosition = fragNeedsNormal = fragNeedsUv = true;
     std::string position = outputExpr(vert, OutputSlot::VertexPosition, builtinExpr(vert, Builtin::WorldPosition));
-    vert.line("gl_Position = " + std::string(iface::kViewProjection) + " * vec4(" + position + ", 1.0);", -1);
-    vert.builtinUniforms.insert(iface::kViewProjection);
-    if (fragNeedsPosition) vert.line("v_world_position = " + position + ";", -1);
+    vert.line(-1, "gl_Position = ", uniformName(BuiltinUniform::ViewProjection), " * vec4(", position, ", 1.0);");
+    vert.builtinUniforms.insert(BuiltinUniform::ViewProjection);
+    if (fragNeedsPosition) vert.line(-1, "v_world_position = ", position, ";");
     if (fragNeedsNormal) {
       std::string normal = program_.output(OutputSlot::VertexNormal) ? outputExpr(vert, OutputSlot::VertexNormal, "")
                                                                        : builtinExpr(vert, Builtin::Normal);
-      vert.line("v_normal = " + normal + ";", -1);
+      vert.line(-1, "v_normal = ", normal, ";");
     }
     if (fragNeedsUv) {
       vert.builtins.insert(Builtin::Uv);
-      vert.line("v_uv = " + std::string(tess_ ? "b_uv" : iface::kUvAttribute) + ";", -1);
+      vert.line(-1, "v_uv = ", tess_ ? "b_uv" : iface::kUvAttribute, ";");
     }
     for (const auto& v : program_.varyings)
-      vert.line(varyingNames_.at({v.index, v.port}) + " = " + opOutput(vert, v.index, v.port) + ";", -1);
+      vert.line(-1, varyingNames_.at({v.index, v.port}), " = ", opOutput(vert, v.index, v.port), ";");
 
     if (tess_) {
       // The vertex shader places the mesh (model), the control stage measures distances.
-      vert.builtinUniforms.insert(iface::kModel);
-      vert.builtinUniforms.insert(iface::kCameraPosition);
+      vert.builtinUniforms.insert(BuiltinUniform::Model);
+      vert.builtinUniforms.insert(BuiltinUniform::CameraPosition);
     }
 
     // Interface.
@@ -243,26 +243,19 @@ class Emitter {
       result.varyings.push_back({varyingNames_.at({v.index, v.port}), op.outputTypes[static_cast<size_t>(v.port)],
                                  "node '" + op.nodeId + "' output '" + op.spec->outputs[static_cast<size_t>(v.port)].name + "'"});
     }
-    for (const BuiltinUniform* u : {&kModel, &kViewProjection, &kView, &kProjection, &kCamera, &kNearFar, &kTime, &kViewport, &kSun}) {
-      unsigned stages = (vert.builtinUniforms.count(u->name) ? kVertexStage : 0u) |
-                        (frag.builtinUniforms.count(u->name) ? kFragmentStage : 0u);
-      if (stages) result.uniforms.push_back({u->name, u->type, -1, u->meaning, stages});
-    }
-    result.uniforms.insert(result.uniforms.end(), phases_.begin(), phases_.end());
+    declareBuiltinUniforms(result, &vert, frag);
     for (size_t i = 0; i < program_.parameters.size(); ++i) {
       unsigned stages = (vert.parameters.count(static_cast<int>(i)) ? kVertexStage : 0u) |
                         (frag.parameters.count(static_cast<int>(i)) ? kFragmentStage : 0u);
-      if (stages) result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", stages});
+      if (stages) result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), {}, stages});
     }
 
     assignSamplers(result);
   }
 
-  // The shaders for the current target from what prepare() made. `last`: the bodies may
-  // move into the shaders (no later target reads them).
-  EmitResult assembleFor(bool last) {
+  // The shaders for the current target from what prepare() made.
+  EmitResult assembleFor() {
     EmitResult result = io_;
-    moveBody_ = last;
     StageWriter& frag = frag_;
     StageWriter& vert = vert_;
     std::set<std::string> functions;
@@ -293,19 +286,14 @@ class Emitter {
     const char* pad[] = {"", ", 0.0, 0.0, 0.0", ", 0.0, 0.0", ", 0.0", ""};
     int n = componentCount(out.type);
     if (n < 1 || n > 4) throw std::logic_error("emit: a probe output must be a float or a vector");
-    frag.line(std::string(iface::kColorOutput) + " = vec4(" + value + pad[n] + ");", -1);
+    frag.line(-1, iface::kColorOutput, " = vec4(", value, pad[n], ");");
     EmitResult result;
-    for (const BuiltinUniform* u : {&kView, &kProjection, &kCamera, &kNearFar, &kTime, &kViewport, &kProbeUv,
-                                    &kProbeWorldPosition, &kProbeNormal, &kProbeViewDirection, &kProbeScreenUv,
-                                    &kProbeFragDepth, &kSun})
-      if (frag.builtinUniforms.count(u->name)) result.uniforms.push_back({u->name, u->type, -1, u->meaning, kFragmentStage});
-    result.uniforms.insert(result.uniforms.end(), phases_.begin(), phases_.end());
+    declareBuiltinUniforms(result, nullptr, frag);
     for (size_t i = 0; i < program_.parameters.size(); ++i)
       if (frag.parameters.count(static_cast<int>(i)))
-        result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), "", kFragmentStage});
+        result.uniforms.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), {}, kFragmentStage});
     assignSamplers(result);
     std::set<std::string> functions;
-    moveBody_ = true;
     result.shaders.push_back(assemble(ShaderStage::Fragment, frag, result, functions));
     for (const auto& item : GlslLibrary::builtin().items())
       if (functions.count(item.name)) result.functions.push_back(item.name);
@@ -337,11 +325,21 @@ class Emitter {
     return e;
   }
 
+  // The builtin uniforms the stages use, in table order, then the time phases.
+  void declareBuiltinUniforms(EmitResult& result, const StageWriter* vert, const StageWriter& frag) const {
+    for (const auto& row : builtinUniformTable()) {
+      unsigned stages = (vert && vert->builtinUniforms.count(row.id) ? kVertexStage : 0u) |
+                        (frag.builtinUniforms.count(row.id) ? kFragmentStage : 0u);
+      if (stages) result.uniforms.push_back({std::string(row.glslName), row.type, -1, row.id, stages});
+    }
+    result.uniforms.insert(result.uniforms.end(), phases_.begin(), phases_.end());
+  }
+
   // Samplers: node textures by first use, then scene textures in the manifest's resource
   // order; vk450 bindings follow the uniform block's.
   void assignSamplers(EmitResult& result) {
     std::stable_sort(sceneTextures_.begin(), sceneTextures_.end(), [](const TextureInfo& a, const TextureInfo& b) {
-      return resourceRank(a.resource) < resourceRank(b.resource);
+      return resourceRank(a) < resourceRank(b);
     });
     result.textures = textures_;
     result.textures.insert(result.textures.end(), sceneTextures_.begin(), sceneTextures_.end());
@@ -351,48 +349,35 @@ class Emitter {
 
   std::string builtinExpr(StageWriter& w, Builtin b) {
     w.builtins.insert(b);
-    if (probe_) {
-      const BuiltinUniform* u = nullptr;
-      switch (b) {
-        case Builtin::Uv: u = &kProbeUv; break;
-        case Builtin::WorldPosition: u = &kProbeWorldPosition; break;
-        case Builtin::Normal: u = &kProbeNormal; break;
-        case Builtin::ViewDirection: u = &kProbeViewDirection; break;
-        case Builtin::ScreenUv: u = &kProbeScreenUv; break;
-        case Builtin::FragDepth: u = &kProbeFragDepth; break;
-        case Builtin::CameraPosition: u = &kCamera; break;
-        case Builtin::Time: u = &kTime; break;
-        case Builtin::CameraNearFar: u = &kNearFar; break;
-        case Builtin::View: u = &kView; break;
-        case Builtin::Projection: u = &kProjection; break;
-        case Builtin::SunDirection: u = &kSun; break;
-      }
-      w.builtinUniforms.insert(u->name);
-      return u->name;
-    }
+    if (probe_) return useUniform(w, builtinRow(b).uniform);
     bool vertex = w.stage == kVertexStage;
     switch (b) {
       case Builtin::Uv: return vertex ? (tess_ ? "b_uv" : iface::kUvAttribute) : "v_uv";
       case Builtin::WorldPosition:
-        if (vertex) w.builtinUniforms.insert(iface::kModel);
+        if (vertex) w.builtinUniforms.insert(BuiltinUniform::Model);
         return vertex ? "b_world_position" : "v_world_position";
       case Builtin::Normal:
-        if (vertex) w.builtinUniforms.insert(iface::kModel);
+        if (vertex) w.builtinUniforms.insert(BuiltinUniform::Model);
         return "b_normal";
       case Builtin::ViewDirection:
-        w.builtinUniforms.insert(iface::kCameraPosition);
-        if (vertex) w.builtinUniforms.insert(iface::kModel);
+        w.builtinUniforms.insert(BuiltinUniform::CameraPosition);
+        if (vertex) w.builtinUniforms.insert(BuiltinUniform::Model);
         return "b_view_direction";
-      case Builtin::CameraPosition: w.builtinUniforms.insert(iface::kCameraPosition); return iface::kCameraPosition;
-      case Builtin::Time: w.builtinUniforms.insert(iface::kTime); return iface::kTime;
-      case Builtin::ScreenUv: w.builtinUniforms.insert(iface::kViewportSize); return "b_screen_uv";
+      case Builtin::ScreenUv: w.builtinUniforms.insert(BuiltinUniform::ViewportSize); return "b_screen_uv";
       case Builtin::FragDepth: return deferred_ && !vertex ? "b_water_surface.w" : "gl_FragCoord.z";
-      case Builtin::CameraNearFar: w.builtinUniforms.insert(iface::kCameraNearFar); return iface::kCameraNearFar;
-      case Builtin::View: w.builtinUniforms.insert(iface::kView); return iface::kView;
-      case Builtin::Projection: w.builtinUniforms.insert(iface::kProjection); return iface::kProjection;
-      case Builtin::SunDirection: w.builtinUniforms.insert(iface::kSunDirection); return iface::kSunDirection;
+      case Builtin::CameraPosition:
+      case Builtin::Time:
+      case Builtin::CameraNearFar:
+      case Builtin::View:
+      case Builtin::Projection:
+      case Builtin::SunDirection: return useUniform(w, builtinRow(b).uniform);
     }
     return "";
+  }
+
+  static std::string useUniform(StageWriter& w, BuiltinUniform u) {
+    w.builtinUniforms.insert(u);
+    return uniformName(u);
   }
 
   std::string opOutput(const StageWriter& w, int op, int port) const {
@@ -413,14 +398,15 @@ class Emitter {
         p.stages |= w.stage;
         return p.name;
       }
-    UniformInfo u{"u_phase" + std::to_string(phases_.size()), Type::Float, -1, "time_phase", w.stage, omega};
+    UniformInfo u{uniformName(BuiltinUniform::TimePhase) + std::to_string(phases_.size()), Type::Float, -1,
+                  BuiltinUniform::TimePhase, w.stage, omega};
     phases_.push_back(u);
     return u.name;
   }
 
   std::string nodeTexture(StageWriter& w, const std::string& source) {
     for (auto& t : textures_)
-      if (t.resource.empty() && t.source == source) {
+      if (!t.scene && t.source == source) {
         t.stages |= w.stage;
         return t.name;
       }
@@ -434,35 +420,20 @@ class Emitter {
     return t.name;
   }
 
-  std::string sceneSampler(StageWriter& w, std::string_view resource) {
-    struct Scene {
-      const char* resource;
-      const char* name;
-      Type type;
-    };
-    static const Scene kScene[] = {{"scene_depth", iface::kSceneDepthTexture, Type::Sampler2D},
-                                   {"scene_color", iface::kSceneColorTexture, Type::Sampler2D},
-                                   {"planar_reflection", iface::kReflectionTexture, Type::Sampler2D},
-                                   {"refraction", iface::kRefractionTexture, Type::Sampler2D},
-                                   {"environment", iface::kEnvironmentTexture, Type::SamplerCube},
-                                   {"underwater", iface::kWaterSurfaceTexture, Type::Sampler2D},
-                                   {"underwater.normal_uv", iface::kWaterNormalUvTexture, Type::Sampler2D}};
-    for (const auto& sc : kScene) {
-      if (resource != sc.resource) continue;
-      for (auto& t : sceneTextures_)
-        if (t.name == sc.name) {
-          t.stages |= w.stage;
-          return t.name;
-        }
-      TextureInfo t;
-      t.name = sc.name;
-      t.type = sc.type;
-      t.resource = resource == "underwater.normal_uv" ? "underwater" : sc.resource;
-      t.stages = w.stage;
-      sceneTextures_.push_back(t);
-      return t.name;
-    }
-    throw std::logic_error("sceneTexture: no scene texture for resource '" + std::string(resource) + "'");
+  std::string sceneSampler(StageWriter& w, SceneSampler sampler) {
+    for (auto& t : sceneTextures_)
+      if (t.scene == sampler) {
+        t.stages |= w.stage;
+        return t.name;
+      }
+    const SceneSamplerRow& row = sceneSamplerRow(sampler);
+    TextureInfo t;
+    t.name = row.glslName;
+    t.type = row.type;
+    t.scene = sampler;
+    t.stages = w.stage;
+    sceneTextures_.push_back(t);
+    return t.name;
   }
 
   // Deferred water: which G-buffer look-ups the fragment's builtins need (declared now, so
@@ -473,8 +444,8 @@ class Emitter {
     bool normalUv = b.count(Builtin::Normal) || b.count(Builtin::Uv);
     if (!position && !normalUv) return;
     builtinExpr(w, Builtin::ScreenUv);
-    if (position) sceneSampler(w, "underwater");
-    if (normalUv) sceneSampler(w, "underwater.normal_uv");
+    if (position) sceneSampler(w, SceneSampler::WaterSurface);
+    if (normalUv) sceneSampler(w, SceneSampler::WaterNormalUv);
   }
   const Program& program() const { return program_; }
   const ValueFacts& facts() const { return facts_; }
@@ -492,8 +463,7 @@ class Emitter {
       if (program_.ops[i].stage & w.stage)
         for (const auto& in : program_.ops[i].inputs) use(in);
     for (const auto& out : program_.outputs) {
-      bool vertexSlot = out.slot == OutputSlot::VertexPosition || out.slot == OutputSlot::VertexNormal;
-      if (vertexSlot == (w.stage == kVertexStage)) use(out.value);
+      if (outputSlotRow(out.slot).stage == w.stage) use(out.value);
     }
     if (w.stage == kVertexStage)
       for (const auto& v : program_.varyings) use(v);
@@ -514,9 +484,11 @@ class Emitter {
           w.aliases[portBase_[i] + p] = std::move(ctx.outputs[p]);
           continue;
         }
-        w.line(std::string(typeName(op.outputTypes[p])) + " " + tempName(static_cast<int>(i), static_cast<int>(p)) +
-                   " = " + ctx.outputs[p] + ";",
-               static_cast<int>(i));
+        const int at = static_cast<int>(i);
+        if (op.outputTypes.size() > 1)
+          w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], "_", op.spec->outputs[p].name, " = ", ctx.outputs[p], ";");
+        else
+          w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], " = ", ctx.outputs[p], ";");
       }
     }
   }
@@ -541,21 +513,21 @@ class Emitter {
       if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(" + lerp3("te_normal") + ");");
       if (w.builtins.count(Builtin::Uv)) lines.push_back("vec2 b_uv = " + lerp3("te_uv") + ";");
       if (w.builtins.count(Builtin::ViewDirection))
-        lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + std::string(iface::kCameraPosition) + " - b_world_position);");
+        lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + uniformName(BuiltinUniform::CameraPosition) + " - b_world_position);");
     } else if (vertex) {
-      lines.push_back("vec3 b_world_position = (" + std::string(iface::kModel) + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
-      w.builtinUniforms.insert(iface::kModel);
+      lines.push_back("vec3 b_world_position = (" + uniformName(BuiltinUniform::Model) + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
+      w.builtinUniforms.insert(BuiltinUniform::Model);
       if (w.builtins.count(Builtin::Normal))
-        lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(mat3(" + std::string(iface::kModel) + ") * " + iface::kNormalAttribute + ");");
+        lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(mat3(" + uniformName(BuiltinUniform::Model) + ") * " + iface::kNormalAttribute + ");");
       if (w.builtins.count(Builtin::ViewDirection))
-        lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + std::string(iface::kCameraPosition) + " - b_world_position);");
+        lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + uniformName(BuiltinUniform::CameraPosition) + " - b_world_position);");
     } else {
       if (deferred_) deferredLocals(w, lines);
       if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(v_normal);");
       if (w.builtins.count(Builtin::ViewDirection))
-        lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + std::string(iface::kCameraPosition) + " - v_world_position);");
+        lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + uniformName(BuiltinUniform::CameraPosition) + " - v_world_position);");
       if (w.builtins.count(Builtin::ScreenUv) && !deferred_)
-        lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + std::string(iface::kViewportSize) + ";");
+        lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + uniformName(BuiltinUniform::ViewportSize) + ";");
     }
     return lines;
   }
@@ -568,13 +540,13 @@ class Emitter {
     bool position = b.count(Builtin::WorldPosition) || b.count(Builtin::ViewDirection) || b.count(Builtin::FragDepth);
     bool normalUv = b.count(Builtin::Normal) || b.count(Builtin::Uv);
     if (b.count(Builtin::ScreenUv))
-      lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + std::string(iface::kViewportSize) + ";");
+      lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + uniformName(BuiltinUniform::ViewportSize) + ";");
     if (position) {
-      lines.push_back("vec4 b_water_surface = texture(" + std::string(iface::kWaterSurfaceTexture) + ", b_screen_uv);");
+      lines.push_back("vec4 b_water_surface = texture(" + samplerName(SceneSampler::WaterSurface) + ", b_screen_uv);");
       lines.push_back("vec3 v_world_position = b_water_surface.xyz;");
     }
     if (normalUv) {
-      lines.push_back("vec4 b_water_normal_uv = texture(" + std::string(iface::kWaterNormalUvTexture) + ", b_screen_uv);");
+      lines.push_back("vec4 b_water_normal_uv = texture(" + samplerName(SceneSampler::WaterNormalUv) + ", b_screen_uv);");
       if (b.count(Builtin::Normal))
         lines.push_back("vec3 v_normal = vec3(b_water_normal_uv.x, sqrt(max(1.0 - dot(b_water_normal_uv.xy, "
                         "b_water_normal_uv.xy), 0.0)), b_water_normal_uv.y);");
@@ -583,30 +555,30 @@ class Emitter {
   }
 
   // The version line, the extension tessellation needs in GLSL 330, ES precision.
-  void addPreamble(ShaderStage stage, const std::function<void(std::string)>& add) const {
-    add(std::string(style_.version));
+  void addPreamble(ShaderStage stage, ShaderText& out) const {
+    out.add(std::string(style_.version));
     bool tessStage = stage == ShaderStage::TessControl || stage == ShaderStage::TessEvaluation;
-    if (tessStage && target_ == Target::Glsl330) add("#extension GL_ARB_tessellation_shader : require");
-    add("// Generated by watergraph from " + sourceName_ + " (graph '" + program_.graphName + "'); do not edit.");
+    if (tessStage && target_ == Target::Glsl330) out.add("#extension GL_ARB_tessellation_shader : require");
+    out.add("// Generated by watergraph from " + sourceName_ + " (graph '" + program_.graphName + "'); do not edit.");
     if (style_.precision) {
-      add("precision highp float;");
-      add("precision highp int;");
+      out.add("precision highp float;");
+      out.add("precision highp int;");
       // Samplers default to lowp, and a sampler passed to a library function takes the
       // default: llvmpipe then returns half floats (0.6 reads 0.5996) and quantises 8-bit
       // texels to n/256. The hard-case probe found both.
-      add("precision highp sampler2D;");
-      add("precision highp samplerCube;");
+      out.add("precision highp sampler2D;");
+      out.add("precision highp samplerCube;");
     }
-    add("");
+    out.add("");
   }
 
   // Declarations of `names` (patch or stage interface) with Vulkan locations from 0.
-  void addInterface(const std::function<void(std::string)>& add, const std::string& qualifier,
+  void addInterface(ShaderText& out, const std::string& qualifier,
                     const std::vector<std::pair<Type, std::string>>& vars, const std::string& suffix) const {
     int location = 0;
     for (const auto& [type, name] : vars) {
       std::string loc = style_.varyingLocations ? "layout(location = " + std::to_string(location) + ") " : "";
-      add(loc + qualifier + " " + std::string(typeName(type)) + " " + name + suffix + ";");
+      out.add(loc + qualifier + " " + std::string(typeName(type)) + " " + name + suffix + ";");
       ++location;
     }
   }
@@ -622,124 +594,97 @@ class Emitter {
 
   // Uniform declarations for a stage: Vulkan's one block (identical everywhere), else the
   // loose uniforms `wanted` selects.
-  void addUniforms(const std::function<void(std::string)>& add, const EmitResult& io,
+  void addUniforms(ShaderText& out, const EmitResult& io,
                    const std::function<bool(const UniformInfo&)>& wanted) const {
     if (style_.uniformBlock) {
       bool any = false;
       for (const auto& u : io.uniforms) any |= !isSampler(u.type);
       if (!any) return;
-      add("layout(std140, set = 0, binding = " + std::to_string(iface::kUniformBlockBinding) + ") uniform " + iface::kUniformBlock + " {");
-      for (const auto& u : io.uniforms) add("  " + std::string(typeName(u.type)) + " " + u.name + ";");
-      add("};");
+      out.add("layout(std140, set = 0, binding = " + std::to_string(iface::kUniformBlockBinding) + ") uniform " + iface::kUniformBlock + " {");
+      for (const auto& u : io.uniforms) out.add("  " + std::string(typeName(u.type)) + " " + u.name + ";");
+      out.add("};");
       return;
     }
     for (const auto& u : io.uniforms)
-      if (wanted(u)) add("uniform " + std::string(typeName(u.type)) + " " + u.name + ";");
+      if (wanted(u)) out.add("uniform " + std::string(typeName(u.type)) + " " + u.name + ";");
   }
 
-  void addLibrary(const std::function<void(std::string)>& add, const std::string& code, std::set<std::string>& functions) const {
+  void addLibrary(ShaderText& out, const std::string& code, std::set<std::string>& functions) const {
     for (const GlslItem* item : GlslLibrary::builtin().itemsFor(code)) {
-      add("");
+      out.add("");
       functions.insert(item->name);
-      size_t start = 0;
-      while (start <= item->text.size()) {
-        size_t eol = item->text.find('\n', start);
-        if (eol == std::string::npos) eol = item->text.size();
-        add(item->text.substr(start, eol - start));
-        start = eol + 1;
-      }
+      out.addLines(item->text);
+      out.add("");  // ends the item's last line, or adds an empty one after a final '\n'
     }
-  }
-
-  EmittedShader finish(ShaderStage stage, const std::vector<std::pair<std::string, int>>& lines) const {
-    EmittedShader shader;
-    shader.stage = stage;
-    size_t bytes = 0;
-    for (const auto& line : lines) bytes += line.first.size() + 1;
-    shader.text.reserve(bytes);
-    shader.lineOp.reserve(lines.size());
-    for (const auto& [text, op] : lines) {
-      shader.text += text;
-      shader.text += '\n';
-      shader.lineOp.push_back(op);
-    }
-    return shader;
   }
 
   // The library items `body` calls, then `void main()` around it (one line per '\n').
-  void addMain(const std::function<void(std::string)>& add, const std::string& body, std::set<std::string>& functions) const {
-    addLibrary(add, body, functions);
-    add("");
-    add("void main() {");
-    for (size_t start = 0; start < body.size();) {
-      size_t eol = body.find('\n', start);
-      add(body.substr(start, eol - start));
-      start = eol + 1;
-    }
-    add("}");
+  void addMain(ShaderText& out, const std::string& body, std::set<std::string>& functions) const {
+    addLibrary(out, body, functions);
+    out.add("");
+    out.add("void main() {");
+    out.addLines(body);
+    out.add("}");
   }
 
   // Tessellating: the vertex shader only moves the mesh into world space.
   EmittedShader tessVertexShader(const StageWriter& geometry, const EmitResult& io, std::set<std::string>& functions) const {
-    std::vector<std::pair<std::string, int>> out;
-    auto add = [&](std::string s) { out.emplace_back(std::move(s), -1); };
-    addPreamble(ShaderStage::Vertex, add);
+    ShaderText out(ShaderStage::Vertex);
+    addPreamble(ShaderStage::Vertex, out);
     for (const auto& a : io.attributes)
-      add("layout(location = " + std::to_string(a.location) + ") in " + std::string(typeName(a.type)) + " " + a.name + ";");
-    addInterface(add, "out", patchVars(geometry, "tc_"), "");
-    addUniforms(add, io, [](const UniformInfo& u) { return u.name == std::string(iface::kModel); });
-    std::string body = "  tc_position = (" + std::string(iface::kModel) + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;\n";
+      out.add("layout(location = " + std::to_string(a.location) + ") in " + std::string(typeName(a.type)) + " " + a.name + ";");
+    addInterface(out, "out", patchVars(geometry, "tc_"), "");
+    addUniforms(out, io, [](const UniformInfo& u) { return u.name == uniformName(BuiltinUniform::Model); });
+    std::string body = "  tc_position = (" + uniformName(BuiltinUniform::Model) + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;\n";
     if (geometry.builtins.count(Builtin::Normal))
-      body += "  tc_normal = wg_safe_normalize_vec3(mat3(" + std::string(iface::kModel) + ") * " + iface::kNormalAttribute + ");\n";
+      body += "  tc_normal = wg_safe_normalize_vec3(mat3(" + uniformName(BuiltinUniform::Model) + ") * " + iface::kNormalAttribute + ");\n";
     if (geometry.builtins.count(Builtin::Uv)) body += "  tc_uv = " + std::string(iface::kUvAttribute) + ";\n";
     body += "  gl_Position = vec4(tc_position, 1.0);\n";
-    addMain(add, body, functions);
-    return finish(ShaderStage::Vertex, out);
+    addMain(out, body, functions);
+    return std::move(out.shader);
   }
 
   // Tessellating: levels from the camera distance of each corner (seed 003).
   EmittedShader tessControlShader(const StageWriter& geometry, const EmitResult& io, std::set<std::string>& functions) const {
-    std::vector<std::pair<std::string, int>> out;
-    auto add = [&](std::string s) { out.emplace_back(std::move(s), -1); };
-    addPreamble(ShaderStage::TessControl, add);
-    add("layout(vertices = 3) out;");
-    addInterface(add, "in", patchVars(geometry, "tc_"), "[]");
-    addInterface(add, "out", patchVars(geometry, "te_"), "[]");
-    addUniforms(add, io, [](const UniformInfo& u) { return u.name == std::string(iface::kCameraPosition); });
+    ShaderText out(ShaderStage::TessControl);
+    addPreamble(ShaderStage::TessControl, out);
+    out.add("layout(vertices = 3) out;");
+    addInterface(out, "in", patchVars(geometry, "tc_"), "[]");
+    addInterface(out, "out", patchVars(geometry, "te_"), "[]");
+    addUniforms(out, io, [](const UniformInfo& u) { return u.name == uniformName(BuiltinUniform::CameraPosition); });
     std::string body;
     for (const auto& [type, name] : patchVars(geometry, "")) body += "  te_" + name + "[gl_InvocationID] = tc_" + name + "[gl_InvocationID];\n";
     body += "  if (gl_InvocationID == 0) {\n";
     for (int i = 0; i < 3; ++i)
       body += "    float f" + std::to_string(i) + " = wg_tess_distance_factor(tc_position[" + std::to_string(i) + "], " +
-              iface::kCameraPosition + ", " + formatGlslFloat(tess_->minDistance) + ", " + formatGlslFloat(tess_->maxDistance) +
+              uniformName(BuiltinUniform::CameraPosition) + ", " + formatGlslFloat(tess_->minDistance) + ", " + formatGlslFloat(tess_->maxDistance) +
               ", " + formatGlslFloat(tess_->factor) + ");\n";
     body += "    gl_TessLevelOuter[0] = 0.5 * (f1 + f2);\n";
     body += "    gl_TessLevelOuter[1] = 0.5 * (f2 + f0);\n";
     body += "    gl_TessLevelOuter[2] = 0.5 * (f0 + f1);\n";
     body += "    gl_TessLevelInner[0] = (f0 + f1 + f2) / 3.0;\n";
     body += "  }\n";
-    addMain(add, body, functions);
-    return finish(ShaderStage::TessControl, out);
+    addMain(out, body, functions);
+    return std::move(out.shader);
   }
 
   EmittedShader assemble(ShaderStage stage, StageWriter& w, const EmitResult& io, std::set<std::string>& functions) {
     std::vector<std::string> locals = builtinLocals(w);
     bool vertex = stage == ShaderStage::Vertex || stage == ShaderStage::TessEvaluation;
     unsigned bit = vertex ? kVertexStage : kFragmentStage;
-    std::vector<std::pair<std::string, int>> out;  // line, op
-    auto add = [&](std::string s, int op = -1) { out.emplace_back(std::move(s), op); };
-    addPreamble(stage, [&](std::string s) { add(std::move(s)); });
+    ShaderText out(stage);
+    addPreamble(stage, out);
     // Inputs.
     if (stage == ShaderStage::TessEvaluation) {
-      add("layout(triangles, fractional_odd_spacing, ccw) in;");
-      addInterface([&](std::string s) { add(std::move(s)); }, "in", patchVars(w, "te_"), "[]");
+      out.add("layout(triangles, fractional_odd_spacing, ccw) in;");
+      addInterface(out, "in", patchVars(w, "te_"), "[]");
     } else if (vertex) {
       for (const auto& a : io.attributes) {
         bool usedHere = a.name == std::string(iface::kPositionAttribute) ||
                         (a.name == std::string(iface::kNormalAttribute) && w.builtins.count(Builtin::Normal)) ||
                         (a.name == std::string(iface::kUvAttribute) && w.builtins.count(Builtin::Uv));
         if (usedHere)
-          add("layout(location = " + std::to_string(a.location) + ") in " + std::string(typeName(a.type)) + " " + a.name + ";");
+          out.add("layout(location = " + std::to_string(a.location) + ") in " + std::string(typeName(a.type)) + " " + a.name + ";");
       }
     }
     int location = 0;
@@ -747,45 +692,46 @@ class Emitter {
     for (const auto& v : io.varyings) {
       if (!vertex && deferred_) break;
       std::string qual = style_.varyingLocations ? "layout(location = " + std::to_string(location) + ") " : "";
-      add(qual + (vertex ? "out " : "in ") + std::string(typeName(v.type)) + " " + v.name + ";");
+      out.add(qual + (vertex ? "out " : "in ") + std::string(typeName(v.type)) + " " + v.name + ";");
       ++location;
     }
-    if (!vertex) add("layout(location = " + std::to_string(iface::kColorLocation) + ") out vec4 " + iface::kColorOutput + ";");
+    if (!vertex) out.add("layout(location = " + std::to_string(iface::kColorLocation) + ") out vec4 " + iface::kColorOutput + ";");
     // Uniforms: Vulkan wants one block with the same members in every stage.
-    addUniforms([&](std::string s) { add(std::move(s)); }, io, [&](const UniformInfo& u) {
+    addUniforms(out, io, [&](const UniformInfo& u) {
       if (!(u.stages & bit)) return false;
       // Tessellating, the model matrix and camera serve the earlier stages only.
-      return !(stage == ShaderStage::TessEvaluation && u.name == std::string(iface::kModel));
+      return !(stage == ShaderStage::TessEvaluation && u.name == uniformName(BuiltinUniform::Model));
     });
     for (const auto& t : io.textures) {
       if (!(t.stages & bit)) continue;
       std::string qual = style_.uniformBlock ? "layout(set = 0, binding = " + std::to_string(t.binding) + ") " : "";
       // ES samplers default to lowp, which may return half floats: scene depth and the
       // float G-buffer need highp (node textures are 8-bit and keep the default).
-      std::string precision = style_.precision && !t.resource.empty() ? "highp " : "";
-      add(qual + "uniform " + precision + std::string(typeName(t.type)) + " " + t.name + ";");
+      std::string precision = style_.precision && t.scene ? "highp " : "";
+      out.add(qual + "uniform " + precision + std::string(typeName(t.type)) + " " + t.name + ";");
     }
     // Library functions this stage calls, dependencies first.
     // Only lines that name a library item ("wg_"/"WG_" words) can call one: the scan
     // reads those instead of a copy of the whole body.
-    auto callsLibrary = [](const std::string& l) {
-      return l.find("wg_") != std::string::npos || l.find("WG_") != std::string::npos;
+    auto callsLibrary = [](std::string_view l) {
+      return l.find("wg_") != std::string_view::npos || l.find("WG_") != std::string_view::npos;
     };
     std::string code;
     for (const auto& l : locals)
       if (callsLibrary(l)) code.append(l).push_back('\n');
-    for (const auto& l : w.lines)
-      if (callsLibrary(l)) code.append(l).push_back('\n');
-    addLibrary([&](std::string s) { add(std::move(s)); }, code, functions);
-    add("");
-    add("void main() {");
-    for (const auto& l : locals) add("  " + l);
-    // The body moves into the shader when no later target assembles it again.
-    out.reserve(out.size() + w.lines.size() + 1);
-    for (size_t i = 0; i < w.lines.size(); ++i) add(moveBody_ ? std::move(w.lines[i]) : w.lines[i], w.lineOp[i]);
-    add("}");
-
-    return finish(stage, out);
+    const std::string_view body = w.body;
+    for (size_t start = 0; start < body.size();) {
+      size_t end = body.find('\n', start) + 1;  // every body line ends in '\n'
+      if (callsLibrary(body.substr(start, end - start))) code.append(body.substr(start, end - start));
+      start = end;
+    }
+    addLibrary(out, code, functions);
+    out.add("");
+    out.add("void main() {");
+    for (const auto& l : locals) out.add("  " + l);
+    out.addLines(w.body, &w.lineOp);
+    out.add("}");
+    return std::move(out.shader);
   }
 
   const Program& program_;
@@ -805,7 +751,6 @@ class Emitter {
   std::vector<TextureInfo> sceneTextures_;  // scene resources, by first use (sorted later)
   StageWriter frag_, vert_;  // prepare(): the stage bodies
   EmitResult io_;            // prepare(): the interface, no shaders yet
-  bool moveBody_ = false;    // assembleFor(last)
 };
 
 std::string OpEmitContext::input(int port) {
@@ -831,16 +776,17 @@ std::string OpEmitContext::texture(std::string_view option) {
   if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
   return e_.nodeTexture(w_, v.get<std::string>());
 }
-std::string OpEmitContext::sceneTexture(std::string_view resource) {
+std::string OpEmitContext::sceneTexture(SceneResource resource) {
   const auto& resources = spec().resources;
+  const SceneResourceRow& row = sceneResourceRow(resource);
   if (std::find(resources.begin(), resources.end(), resource) == resources.end())
-    throw std::logic_error("node '" + spec().type + "' samples scene resource '" + std::string(resource) +
+    throw std::logic_error("node '" + spec().type + "' samples scene resource '" + std::string(row.name) +
                            "' without listing it in its resources");
-  return e_.sceneSampler(w_, resource);
+  return e_.sceneSampler(w_, row.sampler);
 }
 std::string OpEmitContext::temporary(Type type, std::string expression) {
   std::string name = e_.opName(opIndex_) + "_t" + std::to_string(temps_++);
-  w_.line(std::string(typeName(type)) + " " + name + " = " + expression + ";", opIndex_);
+  w_.line(opIndex_, typeName(type), " ", name, " = ", expression, ";");
   return name;
 }
 ValueFact OpEmitContext::inputFact(int port) const {
@@ -901,7 +847,7 @@ std::vector<EmitResult> emitPrograms(const Program& program, const std::vector<T
     e.prepare();
     for (size_t k = 0; k < group.size(); ++k) {
       e.retarget(targets[group[k]]);
-      out[group[k]] = e.assembleFor(k + 1 == group.size());
+      out[group[k]] = e.assembleFor();
       done[group[k]] = true;
     }
   }

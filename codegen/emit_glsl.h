@@ -15,7 +15,7 @@ struct UniformInfo {
   std::string name;  // GLSL name
   Type type = Type::Float;
   int parameter = -1;       // index into Program::parameters, or -1 for a builtin uniform
-  std::string builtin;      // builtin uniform's meaning ("time", "model", "time_phase", ...) when parameter < 0
+  BuiltinUniform builtin = BuiltinUniform::Time;  // what it holds, when parameter < 0
   unsigned stages = 0;      // where it is declared
   double omega = 0;         // time_phase: the value is mod(omega * time, 2 pi)
 };
@@ -36,7 +36,7 @@ struct TextureInfo {
   std::string name;      // GLSL sampler name
   Type type = Type::Sampler2D;
   std::string source;    // node texture: "builtin:foam" or a path relative to the graph
-  std::string resource;  // scene texture: "scene_depth", ... (then source is "")
+  std::optional<SceneSampler> scene;  // a scene texture (then source is "")
   int binding = 0;       // vk450 binding (set 0); the uniform block is binding 0
   unsigned stages = 0;
 };

@@ -1,25 +1,9 @@
 #include "codegen/manifest.h"
 
-#include <set>
-#include <stdexcept>
 #include <utility>
 
 namespace wg {
 namespace {
-
-// Scene resources and the pass that produces each, in the order the runtime runs them.
-struct ResourcePass {
-  const char* resource;
-  const char* pass;
-};
-constexpr ResourcePass kResourcePasses[] = {
-    {"scene_depth", "depth_prepass"},
-    {"scene_color", "scene_color_copy"},
-    {"planar_reflection", "planar_reflection"},
-    {"refraction", "refraction"},
-    {"environment", "environment_cubemap"},
-    {"underwater", "deferred_water"},
-};
 
 nlohmann::json valueJson(const Value& v) {
   if (v.size() == 1) return v[0];
@@ -36,26 +20,6 @@ nlohmann::json stagesJson(unsigned stages) {
 }
 
 }  // namespace
-
-std::vector<std::string> resourcesOf(const Program& program) {
-  std::set<std::string> used;
-  for (const auto& op : program.ops)
-    for (const auto& r : op.spec->resources) used.insert(r);
-  std::vector<std::string> out;
-  for (const auto& rp : kResourcePasses)
-    if (used.erase(rp.resource)) out.push_back(rp.resource);
-  if (!used.empty()) throw std::logic_error("a node names an unknown scene resource: " + *used.begin());
-  return out;
-}
-
-std::vector<std::string> passesFor(const std::vector<std::string>& resources) {
-  std::vector<std::string> passes;
-  for (const auto& rp : kResourcePasses)
-    for (const auto& r : resources)
-      if (r == rp.resource) passes.push_back(rp.pass);
-  passes.push_back("water_surface");
-  return passes;
-}
 
 nlohmann::json buildManifest(const Program& program, const std::vector<std::pair<Target, EmitResult>>& emitted,
                              const std::string& baseName) {
@@ -96,8 +60,8 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
         if (!p.hint.empty()) j["hint"] = p.hint;
         if (!p.description.empty()) j["description"] = p.description;
       } else {
-        j["builtin"] = u.builtin;
-        if (u.builtin == "time_phase") j["angular_frequency"] = u.omega;
+        j["builtin"] = std::string(builtinUniformRow(u.builtin).meaning);
+        if (u.builtin == BuiltinUniform::TimePhase) j["angular_frequency"] = u.omega;
       }
       uniforms.push_back(std::move(j));
     }
@@ -112,7 +76,7 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
       nlohmann::json j{{"name", t.name}, {"type", std::string(typeName(t.type))}, {"binding", t.binding},
                        {"stages", stagesJson(t.stages)}};
       if (!t.source.empty()) j["source"] = t.source;
-      if (!t.resource.empty()) j["resource"] = t.resource;
+      if (t.scene) j["resource"] = std::string(sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
       textures.push_back(std::move(j));
     }
     m["textures"] = std::move(textures);
@@ -127,9 +91,15 @@ nlohmann::json buildManifest(const Program& program, const std::vector<std::pair
       t["factor"] = er.tessellation->factor;
       t["targets"].push_back(std::string(targetName(target)));
     }
-  auto resources = resourcesOf(program);
-  m["resources"] = resources;
-  m["passes"] = passesFor(resources);
+  // Resources and the passes producing them in table order; the water surface last.
+  nlohmann::json& resources = m["resources"] = nlohmann::json::array();
+  nlohmann::json& passes = m["passes"] = nlohmann::json::array();
+  for (SceneResource r : program.sceneResources()) {
+    const SceneResourceRow& row = sceneResourceRow(r);
+    resources.push_back(std::string(row.name));
+    passes.push_back(std::string(renderPassRow(row.pass).name));
+  }
+  passes.push_back(std::string(renderPassRow(RenderPass::WaterSurface).name));
 
   nlohmann::json kept = nlohmann::json::array();
   for (const auto& op : program.ops) {

@@ -15,11 +15,6 @@ namespace wg {
 
 inline constexpr int kManifestFormat = 1;
 
-// The render passes a program needs: the water surface, plus one per scene resource its
-// nodes read (planned from NodeSpec::resources), in a fixed order.
-std::vector<std::string> resourcesOf(const Program& program);
-std::vector<std::string> passesFor(const std::vector<std::string>& resources);
-
 nlohmann::json buildManifest(const Program& program, const std::vector<std::pair<Target, EmitResult>>& emitted,
                              const std::string& baseName);
 

@@ -32,8 +32,7 @@ PassResult stagePass(Program& program, PassContext& ctx) {
   std::vector<bool> inVertex(n, false);
   std::vector<std::string> vertexSlot(n);
   for (const auto& out : program.outputs)
-    if ((out.slot == OutputSlot::VertexPosition || out.slot == OutputSlot::VertexNormal) &&
-        out.value.kind == ValueRef::Kind::Op) {
+    if (outputSlotRow(out.slot).stage == kVertexStage && out.value.kind == ValueRef::Kind::Op) {
       inVertex[static_cast<size_t>(out.value.index)] = true;
       vertexSlot[static_cast<size_t>(out.value.index)] = std::string(outputSlotName(out.slot));
     }
@@ -70,9 +69,7 @@ PassResult stagePass(Program& program, PassContext& ctx) {
   // Deferred water (a node reads the "underwater" resource): the fragment shader runs as a
   // full-screen pass with no varyings, so it recomputes what it needs at the G-buffer's
   // surface point.
-  bool deferred = false;
-  for (const auto& op : program.ops)
-    for (const auto& r : op.spec->resources) deferred = deferred || r == "underwater";
+  const bool deferred = program.reads(SceneResource::Underwater);
   auto need = [&](const ValueRef& r) {
     if (r.kind != ValueRef::Kind::Op) return;
     size_t i = static_cast<size_t>(r.index);
@@ -85,7 +82,7 @@ PassResult stagePass(Program& program, PassContext& ctx) {
     inFragment[i] = true;
   };
   for (const auto& out : program.outputs)
-    if (out.slot == OutputSlot::FragmentColor || out.slot == OutputSlot::FragmentAlpha) need(out.value);
+    if (outputSlotRow(out.slot).stage == kFragmentStage) need(out.value);
   for (size_t i = n; i-- > 0;)
     if (inFragment[i])
       for (const auto& in : program.ops[i].inputs) need(in);

@@ -2,16 +2,6 @@
 
 namespace wg {
 
-std::string_view outputSlotName(OutputSlot slot) {
-  switch (slot) {
-    case OutputSlot::VertexPosition: return "vertex.position";
-    case OutputSlot::VertexNormal: return "vertex.normal";
-    case OutputSlot::FragmentColor: return "fragment.color";
-    case OutputSlot::FragmentAlpha: return "fragment.alpha";
-  }
-  return "?";
-}
-
 const Node* Graph::findNode(std::string_view id) const {
   for (const auto& n : nodes)
     if (n.id == id) return &n;

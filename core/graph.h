@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/interface_tables.h"  // OutputSlot
 #include "core/source_ref.h"
 #include "core/types.h"
 
@@ -77,9 +78,6 @@ struct Preset {
   std::vector<PresetValue> values;  // file order
   SourceRef where;                  // the preset's key
 };
-
-enum class OutputSlot { VertexPosition, VertexNormal, FragmentColor, FragmentAlpha };
-std::string_view outputSlotName(OutputSlot slot);  // "vertex.position", ...
 
 struct GraphOutput {
   OutputSlot slot{};

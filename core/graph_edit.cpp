@@ -10,13 +10,6 @@
 namespace wg {
 namespace {
 
-std::optional<OutputSlot> parseSlot(const std::string& name) {
-  for (OutputSlot s : {OutputSlot::VertexPosition, OutputSlot::VertexNormal, OutputSlot::FragmentColor,
-                       OutputSlot::FragmentAlpha})
-    if (outputSlotName(s) == name) return s;
-  return std::nullopt;
-}
-
 std::string describe(const InputTarget& t) {
   return t.node.empty() ? "output '" + t.port + "'" : "input '" + t.port + "' of node '" + t.node + "'";
 }
@@ -47,8 +40,11 @@ Node* GraphEditor::findNode(const std::string& id) {
 
 std::string GraphEditor::checkTarget(const InputTarget& target) const {
   if (target.node.empty()) {
-    if (!parseSlot(target.port))
-      return "no output slot '" + target.port + "' (vertex.position, vertex.normal, fragment.color, fragment.alpha)";
+    if (!parseOutputSlot(target.port)) {
+      std::string slots;
+      for (const auto& row : outputSlotTable()) slots.append(slots.empty() ? "" : ", ").append(row.name);
+      return "no output slot '" + target.port + "' (" + slots + ")";
+    }
     return "";
   }
   const Node* n = graph_.findNode(target.node);
@@ -65,7 +61,7 @@ std::string GraphEditor::checkTarget(const InputTarget& target) const {
 void GraphEditor::setSource(const InputTarget& target, InputSource source) {
   source.where.file = graph_.file;
   if (target.node.empty()) {
-    OutputSlot slot = *parseSlot(target.port);
+    OutputSlot slot = *parseOutputSlot(target.port);
     for (auto& o : graph_.outputs)
       if (o.slot == slot) {
         o.source = std::move(source);
@@ -236,7 +232,7 @@ std::string GraphEditor::connect(const std::string& fromNode, const std::string&
 std::string GraphEditor::disconnect(const InputTarget& target) {
   if (std::string why = checkTarget(target); !why.empty()) return why;
   if (target.node.empty()) {
-    OutputSlot slot = *parseSlot(target.port);
+    OutputSlot slot = *parseOutputSlot(target.port);
     auto it = std::find_if(graph_.outputs.begin(), graph_.outputs.end(), [&](const GraphOutput& o) { return o.slot == slot; });
     if (it == graph_.outputs.end()) return describe(target) + " is not set";
     record("disconnect " + describe(target), "");

@@ -508,23 +508,14 @@ class Loader : public GraphDraftReader {
   }
 
   void loadOutputs(const DraftValue& outputs, Graph& g) {
-    const char* expected = "(vertex: position, normal; fragment: color, alpha)";
-    struct Slot {
-      const char* stage;
-      const char* name;
-      OutputSlot slot;
-    };
-    static const Slot kSlots[] = {
-        {"vertex", "position", OutputSlot::VertexPosition},
-        {"vertex", "normal", OutputSlot::VertexNormal},
-        {"fragment", "color", OutputSlot::FragmentColor},
-        {"fragment", "alpha", OutputSlot::FragmentAlpha},
-    };
+    const std::string expected(outputSlotList());
     int connected = 0;
     const size_t errorsBefore = diags_.errorCount();
     for (const DraftValue& sv : outputs.members) {
       const std::string& stage = sv.name;
-      if (stage != "vertex" && stage != "fragment") {
+      bool knownStage = false;
+      for (const auto& s : outputSlotTable()) knownStage |= stage == s.stageName;
+      if (!knownStage) {
         diags_.error(DiagCode::UnknownOutputSlot, ref(sv.key), "unknown output stage '" + stage + "' " + expected);
         continue;
       }
@@ -535,9 +526,9 @@ class Loader : public GraphDraftReader {
       }
       for (const DraftValue& slot : sv.members) {
         const std::string& name = slot.name;
-        const Slot* found = nullptr;
-        for (const auto& s : kSlots)
-          if (stage == s.stage && name == s.name) found = &s;
+        const OutputSlotRow* found = nullptr;
+        for (const auto& s : outputSlotTable())
+          if (stage == s.stageName && name == s.portName) found = &s;
         if (!found) {
           diags_.error(DiagCode::UnknownOutputSlot, ref(slot.key),
                        "unknown output slot '" + stage + "." + name + "' " + expected);
@@ -545,7 +536,7 @@ class Loader : public GraphDraftReader {
         }
         ++connected;
         GraphOutput out;
-        out.slot = found->slot;
+        out.slot = found->id;
         out.keyWhere = ref(slot.key);
         if (parseSource(slot.value, ref(slot.at), out.source, {}, [&] { return "output '" + stage + "." + name + "'"; },
                         diags_))

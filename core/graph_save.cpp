@@ -199,25 +199,23 @@ std::string outputsText(const Graph& g, int level) {
                    [](const GraphOutput* a, const GraphOutput* b) { return a->slot < b->slot; });
   std::string out;
   ObjectWriter w(out, level);
-  struct Stage {
-    const char* name;
-    OutputSlot first, second;
-  };
-  const Stage stages[] = {{"vertex", OutputSlot::VertexPosition, OutputSlot::VertexNormal},
-                          {"fragment", OutputSlot::FragmentColor, OutputSlot::FragmentAlpha}};
-  for (const auto& st : stages) {
+  // One object per stage, in table order (the rows of a stage are adjacent).
+  std::string_view stage;
+  for (const auto& row : outputSlotTable()) {
+    if (row.stageName == stage) continue;
+    stage = row.stageName;
     std::string text;
     ObjectWriter sw(text, level + 1);
     bool any = false;
     for (const auto* o : outs) {
-      if (o->slot != st.first && o->slot != st.second) continue;
-      std::string_view full = outputSlotName(o->slot);  // "vertex.position"
-      sw.member(full.substr(full.find('.') + 1), sourceText(o->source));
+      const OutputSlotRow& slot = outputSlotRow(o->slot);
+      if (slot.stageName != stage) continue;
+      sw.member(slot.portName, sourceText(o->source));
       any = true;
     }
     if (!any) continue;
     sw.finish();
-    w.member(st.name, std::move(text));
+    w.member(stage, std::move(text));
   }
   w.finish();
   return out;

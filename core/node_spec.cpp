@@ -6,54 +6,7 @@
 
 namespace wg {
 
-std::string_view builtinName(Builtin b) {
-  switch (b) {
-    case Builtin::Uv: return "uv";
-    case Builtin::WorldPosition: return "world_position";
-    case Builtin::Normal: return "normal";
-    case Builtin::ViewDirection: return "view_direction";
-    case Builtin::CameraPosition: return "camera_position";
-    case Builtin::Time: return "time";
-    case Builtin::ScreenUv: return "screen_uv";
-    case Builtin::FragDepth: return "frag_depth";
-    case Builtin::CameraNearFar: return "camera_near_far";
-    case Builtin::View: return "view";
-    case Builtin::Projection: return "projection";
-    case Builtin::SunDirection: return "sun_direction";
-  }
-  return "?";
-}
-
-Type builtinType(Builtin b) {
-  switch (b) {
-    case Builtin::Uv:
-    case Builtin::ScreenUv: return Type::Vec2;
-    case Builtin::Time:
-    case Builtin::FragDepth: return Type::Float;
-    case Builtin::CameraNearFar: return Type::Vec2;
-    case Builtin::View:
-    case Builtin::Projection: return Type::Mat4;
-    default: return Type::Vec3;
-  }
-}
-
-const Value& EvalEnvironment::builtin(Builtin b) const {
-  switch (b) {
-    case Builtin::Uv: return uv;
-    case Builtin::WorldPosition: return worldPosition;
-    case Builtin::Normal: return normal;
-    case Builtin::ViewDirection: return viewDirection;
-    case Builtin::CameraPosition: return cameraPosition;
-    case Builtin::Time: return time;
-    case Builtin::ScreenUv: return screenUv;
-    case Builtin::FragDepth: return fragDepth;
-    case Builtin::CameraNearFar: return cameraNearFar;
-    case Builtin::View: return view;
-    case Builtin::Projection: return projection;
-    case Builtin::SunDirection: return sunDirection;
-  }
-  return time;
-}
+const Value& EvalEnvironment::builtin(Builtin b) const { return this->*builtinRow(b).environment; }
 
 static int indexByName(const std::vector<PortSpec>& ports, std::string_view name) {
   for (size_t i = 0; i < ports.size(); ++i)
@@ -76,6 +29,12 @@ int EmitContext::inputIndex(std::string_view port) const {
 }
 
 std::string EmitContext::input(std::string_view port) { return input(inputIndex(port)); }
+
+std::string EmitContext::sceneTexture(std::string_view resource) {
+  auto r = parseSceneResource(resource);
+  if (!r) throw std::logic_error("node '" + spec().type + "' samples unknown scene resource '" + std::string(resource) + "'");
+  return sceneTexture(*r);
+}
 
 ValueFact builtinFact(Builtin b) {
   ValueFact f;

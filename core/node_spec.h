@@ -12,30 +12,13 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/interface_tables.h"
 #include "core/node_options.h"
 #include "core/types.h"
 #include "core/value.h"
 
 namespace wg {
 
-// Values a shader stage provides without a node computing them. Input nodes expose them;
-// the planner declares only the attributes, varyings and uniforms the used ones need.
-enum class Builtin {
-  Uv,              // vec2, mesh texture coordinate
-  WorldPosition,   // vec3, the surface point (after vertex displacement, in fragment)
-  Normal,          // vec3, unit world normal (the vertex normal output, in fragment)
-  ViewDirection,   // vec3, unit vector from the surface to the camera
-  CameraPosition,  // vec3 uniform
-  Time,            // float uniform, seconds
-  ScreenUv,        // vec2 in [0,1], fragment stage only
-  FragDepth,       // float, the surface's depth-buffer value gl_FragCoord.z (fragment only)
-  CameraNearFar,   // vec2 uniform: the projection's near and far planes (far may be inf)
-  View,            // mat4 uniform: world -> view
-  Projection,      // mat4 uniform: view -> clip
-  SunDirection,    // vec3 uniform: unit vector towards the sun (the scene's sun)
-};
-std::string_view builtinName(Builtin b);  // "uv", "world_position", ...
-Type builtinType(Builtin b);
 
 // What the compiler knows about a value for every input the shader can receive
 // (codegen/value_facts.h derives it per program): each component lies in [lo, hi], and
@@ -57,8 +40,6 @@ struct ValueFact {
 // What a compiled (non-probe) shader guarantees about a builtin (core/node_spec.cpp says
 // where each guarantee comes from).
 ValueFact builtinFact(Builtin b);
-
-enum StageBits : unsigned { kVertexStage = 1u, kFragmentStage = 2u, kAnyStage = 3u };
 
 // How a port's type is decided. Fixed: `type`. Gen: one of float/vec2/vec3/vec4,
 // unified over every Gen port of the node (a float splats to the widest); a Gen output
@@ -143,8 +124,9 @@ class EmitContext {
   // distinct source, listed in the manifest).
   virtual std::string texture(std::string_view option) = 0;
   // The sampler the runtime binds for a scene resource the node lists in `resources`
-  // ("scene_depth" -> u_scene_depth; see codegen/shader_interface.h).
-  virtual std::string sceneTexture(std::string_view resource) = 0;
+  // (SceneDepth -> u_scene_depth; see core/interface_tables.h).
+  virtual std::string sceneTexture(SceneResource resource) = 0;
+  std::string sceneTexture(std::string_view resource);  // by the resource's name
 
   // What is known about input `port` (see ValueFact); nothing by default.
   virtual ValueFact inputFact(int port) const;
@@ -262,9 +244,8 @@ struct NodeSpec {
   double conditionRoundings = 0;
   std::string conditionWhy;  // for the docs: which inputs make it grow, and where
   // Scene resources the node reads; each makes the runtime run the pass that produces it
-  // (codegen/manifest.cpp maps each to its pass): scene_depth, scene_color, planar_reflection,
-  // environment, underwater.
-  std::vector<std::string> resources;
+  // (core/interface_tables.h says which).
+  std::vector<SceneResource> resources;
 
   int inputIndex(std::string_view name) const;
   int outputIndex(std::string_view name) const;

@@ -8,6 +8,20 @@ const ProgramOutput* Program::output(OutputSlot slot) const {
   return nullptr;
 }
 
+std::vector<SceneResource> Program::sceneResources() const {
+  std::vector<SceneResource> out;
+  for (const auto& row : sceneResourceTable())
+    if (reads(row.id)) out.push_back(row.id);
+  return out;
+}
+
+bool Program::reads(SceneResource r) const {
+  for (const auto& op : ops)
+    for (SceneResource used : op.spec->resources)
+      if (used == r) return true;
+  return false;
+}
+
 Type Program::typeOf(const ValueRef& v) const {
   switch (v.kind) {
     case ValueRef::Kind::Op: return ops[static_cast<size_t>(v.index)].outputTypes[static_cast<size_t>(v.port)];

@@ -86,6 +86,9 @@ struct Program {
 
   const ProgramOutput* output(OutputSlot slot) const;
   Type typeOf(const ValueRef& v) const;
+  // The scene resources its ops read, in sceneResourceTable() order.
+  std::vector<SceneResource> sceneResources() const;
+  bool reads(SceneResource r) const;
 };
 
 }  // namespace wg

@@ -429,7 +429,7 @@ class Resolver {
       auto ref = sourceRef(out.source);
       if (!ref) continue;  // the node itself failed and was reported
       if (!existsForItsInputs(*ref, out.source, "", [&] { return label; })) continue;
-      Type want = out.slot == OutputSlot::FragmentAlpha ? Type::Float : Type::Vec3;
+      Type want = outputSlotRow(out.slot).type;
       Type got = program_.typeOf(*ref);
       if (!implicitlyConvertible(got, want)) {
         diags_.error(DiagCode::TypeMismatch, out.source.where,

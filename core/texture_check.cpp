@@ -9,6 +9,8 @@
 
 #include "core/png_header.h"
 
+#include "core/interface_tables.h"
+
 namespace wg {
 namespace {
 
@@ -42,7 +44,11 @@ std::string readHeader(const fs::path& path, PngSize* size) {
 }  // namespace
 
 const std::vector<std::string>& builtinTextureNames() {
-  static const std::vector<std::string> names = {"dudv", "foam", "height", "water_normal"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& row : builtinTextureTable()) n.emplace_back(row.name);
+    return n;
+  }();
   return names;
 }
 

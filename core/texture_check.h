@@ -14,7 +14,7 @@
 namespace wg {
 
 inline constexpr std::string_view kBuiltinTexturePrefix = "builtin:";
-const std::vector<std::string>& builtinTextureNames();  // dudv, foam, height, water_normal
+const std::vector<std::string>& builtinTextureNames();  // builtinTextureTable()'s names
 
 // The largest PNG side accepted, and the texels all of one graph's PNG textures may have
 // together (two textures of the largest size: 512 MiB as RGBA8).

@@ -15,8 +15,7 @@ namespace {
 
 constexpr float kNodeWidth = 180, kHeader = 22, kRow = 18, kPortRadius = 5;
 
-// The graph's output slots, drawn as one more node right of the others.
-const char* const kSlots[] = {"vertex.position", "vertex.normal", "fragment.color", "fragment.alpha"};
+// The graph's output slots (outputSlotTable()) are drawn as one more node right of the others.
 constexpr const char* kOutputsId = "";  // the pseudo node's id in InputTarget terms
 
 struct Port {
@@ -51,9 +50,9 @@ const InputSource* findInput(const Node& n, const std::string& port) {
   return nullptr;
 }
 
-const InputSource* findSlot(const Graph& g, const std::string& slot) {
+const InputSource* findSlot(const Graph& g, OutputSlot slot) {
   for (const auto& o : g.outputs)
-    if (outputSlotName(o.slot) == slot) return &o.source;
+    if (o.slot == slot) return &o.source;
   return nullptr;
 }
 
@@ -110,7 +109,10 @@ struct NodeCanvas::Layout {
     return nullptr;
   }
   const InputSource* sourceOf(const InputTarget& t) const {
-    if (t.node.empty()) return findSlot(g, t.port);
+    if (t.node.empty()) {
+      auto slot = parseOutputSlot(t.port);
+      return slot ? findSlot(g, *slot) : nullptr;
+    }
     const Node* n = g.findNode(t.node);
     return n ? findInput(*n, t.port) : nullptr;
   }
@@ -157,10 +159,11 @@ NodeCanvas::Layout NodeCanvas::layout(const Graph& g, const Registry& registry, 
   b.id = kOutputsId;
   b.title = "outputs";
   b.min = toScreen(rightmost + 260, top);
-  b.max = ImVec2(b.min.x + kNodeWidth, b.min.y + kHeader + kRow * 4 + 4);
-  for (size_t i = 0; i < 4; ++i) {
-    b.inputs.push_back({kSlots[i], ImVec2(b.min.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
-    const InputSource* s = findSlot(g, kSlots[i]);
+  const auto slots = outputSlotTable();
+  b.max = ImVec2(b.min.x + kNodeWidth, b.min.y + kHeader + kRow * static_cast<float>(slots.size()) + 4);
+  for (size_t i = 0; i < slots.size(); ++i) {
+    b.inputs.push_back({std::string(slots[i].name), ImVec2(b.min.x, b.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
+    const InputSource* s = findSlot(g, slots[i].id);
     b.inputNotes.push_back(s ? sourceNote(*s) : "");
   }
   l.boxes.push_back(std::move(b));

@@ -5,6 +5,7 @@
 #include <mutex>
 #include <string>
 
+#include "core/interface_tables.h"
 #include "nodes/texture_source.h"
 
 namespace wg {
@@ -80,35 +81,40 @@ TextureImage generate(F texel) {
   return img;
 }
 
+// One case per row of builtinTextureTable() (-Wswitch names a missing one).
 std::optional<TextureImage> makeBuiltinTexture(std::string_view name) {
-  if (name == "height")
-    return generate([](double u, double v, double* o) { o[0] = o[1] = o[2] = fbm(u, v, 11u); });
-  if (name == "water_normal")
-    // Tangent-space normal (z up, in blue) of a gentle fbm height field, by central
-    // differences one texel apart, encoded as n * 0.5 + 0.5.
-    return generate([](double u, double v, double* o) {
-      const double e = 1.0 / kSize, strength = 6.0;
-      double hx = fbm(u + e, v, 23u) - fbm(u - e, v, 23u);
-      double hy = fbm(u, v + e, 23u) - fbm(u, v - e, 23u);
-      double nx = -hx * strength, ny = -hy * strength, nz = 1.0;
-      double len = std::sqrt(nx * nx + ny * ny + nz * nz);
-      o[0] = nx / len * 0.5 + 0.5;
-      o[1] = ny / len * 0.5 + 0.5;
-      o[2] = nz / len * 0.5 + 0.5;
-    });
-  if (name == "dudv")
-    return generate([](double u, double v, double* o) {
-      o[0] = fbm(u, v, 37u);
-      o[1] = fbm(u, v, 41u);
-      o[2] = 0.0;
-    });
-  if (name == "foam")
-    // Bright cell borders (F1 near its maximum) broken up by fbm: foam streaks.
-    return generate([](double u, double v, double* o) {
-      double d = cellDistance(u, v, 16, 53u);
-      double streak = std::pow(std::min(d / 0.75, 1.0), 3.0) * (0.5 + fbm(u, v, 59u));
-      o[0] = o[1] = o[2] = streak;
-    });
+  auto id = parseBuiltinTexture(name);
+  if (!id) return std::nullopt;
+  switch (*id) {
+    case BuiltinTexture::Height:
+      return generate([](double u, double v, double* o) { o[0] = o[1] = o[2] = fbm(u, v, 11u); });
+    case BuiltinTexture::WaterNormal:
+      // Tangent-space normal (z up, in blue) of a gentle fbm height field, by central
+      // differences one texel apart, encoded as n * 0.5 + 0.5.
+      return generate([](double u, double v, double* o) {
+        const double e = 1.0 / kSize, strength = 6.0;
+        double hx = fbm(u + e, v, 23u) - fbm(u - e, v, 23u);
+        double hy = fbm(u, v + e, 23u) - fbm(u, v - e, 23u);
+        double nx = -hx * strength, ny = -hy * strength, nz = 1.0;
+        double len = std::sqrt(nx * nx + ny * ny + nz * nz);
+        o[0] = nx / len * 0.5 + 0.5;
+        o[1] = ny / len * 0.5 + 0.5;
+        o[2] = nz / len * 0.5 + 0.5;
+      });
+    case BuiltinTexture::Dudv:
+      return generate([](double u, double v, double* o) {
+        o[0] = fbm(u, v, 37u);
+        o[1] = fbm(u, v, 41u);
+        o[2] = 0.0;
+      });
+    case BuiltinTexture::Foam:
+      // Bright cell borders (F1 near its maximum) broken up by fbm: foam streaks.
+      return generate([](double u, double v, double* o) {
+        double d = cellDistance(u, v, 16, 53u);
+        double streak = std::pow(std::min(d / 0.75, 1.0), 3.0) * (0.5 + fbm(u, v, 59u));
+        o[0] = o[1] = o[2] = streak;
+      });
+  }
   return std::nullopt;
 }
 

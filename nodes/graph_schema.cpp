@@ -173,22 +173,18 @@ OJ parameterSchema() {
 }
 
 OJ outputsSchema() {
-  auto slot = [](const char* def, const char* doc) { return described(doc, defRef(def)); };
-  OJ vertex{{"type", "object"},
-            {"additionalProperties", false},
-            {"properties",
-             {{"position", slot("source_vec3", "vec3: the surface point in world space")},
-              {"normal", slot("source_vec3", "vec3: the world-space normal")}}}};
-  OJ fragment{{"type", "object"},
-              {"additionalProperties", false},
-              {"properties",
-               {{"color", slot("source_vec3", "vec3 (a float splats to grey)")},
-                {"alpha", slot("source_float", "float")}}}};
+  OJ stages = OJ::object();
+  for (const auto& row : outputSlotTable()) {
+    OJ& stage = stages[std::string(row.stageName)];
+    if (stage.is_null()) stage = OJ{{"type", "object"}, {"additionalProperties", false}, {"properties", OJ::object()}};
+    stage["properties"][std::string(row.portName)] =
+        described(std::string(row.doc), defRef("source_" + std::string(typeName(row.type))));
+  }
   return OJ{{"description", "shader output slots; at least one must be connected"},
             {"type", "object"},
             {"additionalProperties", false},
             {"minProperties", 1},
-            {"properties", {{"vertex", vertex}, {"fragment", fragment}}}};
+            {"properties", std::move(stages)}};
 }
 
 }  // namespace

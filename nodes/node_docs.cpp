@@ -82,7 +82,7 @@ nlohmann::json nodesJson(const Registry& registry) {
     nlohmann::json hard = nlohmann::json::array();
     for (const auto& h : s->hardCases) hard.push_back({{"name", h.name}, {"expectation", h.expectation}});
     j["hard_cases"] = hard;
-    if (!s->resources.empty()) j["resources"] = s->resources;
+    for (SceneResource r : s->resources) j["resources"].push_back(std::string(sceneResourceRow(r).name));
     all.push_back(j);
   }
   return all;
@@ -119,7 +119,7 @@ std::string nodesMarkdown(const Registry& registry) {
         md += "- conditioning: input roundings " + formatNumber(s->conditionRoundings) + "; " + s->conditionWhy + "\n";
       if (!s->resources.empty()) {
         md += "- scene resources:";
-        for (const auto& r : s->resources) md += " `" + r + "`";
+        for (SceneResource r : s->resources) md.append(" `").append(sceneResourceRow(r).name).append("`");
         md += "\n";
       }
       if (!s->inputs.empty()) {

@@ -5,7 +5,7 @@
 
 namespace wg::nodes {
 
-void makeScreenLookup(NodeSpec& s, const std::string& resource, Value EvalEnvironment::*color,
+void makeScreenLookup(NodeSpec& s, SceneResource resource, Value EvalEnvironment::*color,
                       const std::string& distortionDoc, const std::string& colorDoc) {
   s.inputs = {ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv,
                                  "screen position to read, (0,0) bottom left to (1,1) top right (default: this pixel)"),

@@ -11,7 +11,7 @@ namespace wg::nodes {
 
 // Fills inputs, outputs, stages, resources, emit, eval and tolerance of `s` for the scene
 // texture `resource`, whose reference colour is `environment.*color`.
-void makeScreenLookup(NodeSpec& s, const std::string& resource, Value EvalEnvironment::*color,
+void makeScreenLookup(NodeSpec& s, SceneResource resource, Value EvalEnvironment::*color,
                       const std::string& distortionDoc, const std::string& colorDoc);
 
 }  // namespace wg::nodes

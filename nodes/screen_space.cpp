@@ -57,7 +57,7 @@ NodeSpec sceneDepthNode() {
                ports::fixed("position", Type::Vec3, "world position of the scene point (e.g. where caustics fall)")};
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"scene_depth"};
+  s.resources = {SceneResource::SceneDepth};
   s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
     return std::vector<ValueFact>{kDepthTextureFact, {}, {}};
   };
@@ -102,7 +102,7 @@ NodeSpec sceneColorNode() {
   s.source = "stylized water shader (refraction from the grabbed screen, GrabPass); advanced shaders tutorial (screen-space distorted refraction); classic WebGL water renderer "
              "(distortion (dudv * 2 - 1) * 0.03)";
   s.cost = "one texture fetch + 4 ALU; runs the scene_color_copy pass (a blit of the frame, 4 bytes/pixel RGBA8)";
-  makeScreenLookup(s, "scene_color", &EvalEnvironment::sceneColor,
+  makeScreenLookup(s, SceneResource::SceneColor, &EvalEnvironment::sceneColor,
                    "offset in screen units (e.g. dudv_distortion.offset or normal.xz * 0.03)",
                    "scene colour seen through the water");
   s.hardCases = {
@@ -141,7 +141,7 @@ NodeSpec planarReflectionNode() {
   s.parseOptions = optionParser(parsePlanarReflectionOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"planar_reflection"};
+  s.resources = {SceneResource::PlanarReflection};
   s.emit = [](EmitContext& ctx) {
     bool flip = ctx.options<PlanarReflectionOptions>().flipY;
     std::string uv = ctx.temporary(
@@ -180,7 +180,7 @@ NodeSpec cubemapReflectionNode() {
                ports::fixed("direction", Type::Vec3, "the unit mirror direction R")};
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"environment"};
+  s.resources = {SceneResource::Environment};
   s.emit = [](EmitContext& ctx) {
     std::string r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {ctx.input("normal"), ctx.input("view")}));
     ctx.output(0, "texture(" + ctx.sceneTexture("environment") + ", " + r + ").rgb");
@@ -239,7 +239,7 @@ NodeSpec ssrNode() {
   s.parseOptions = optionParser(parseSsrOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"scene_depth", "scene_color"};
+  s.resources = {SceneResource::SceneDepth, SceneResource::SceneColor};
   s.emit = [](EmitContext& ctx) {
     std::string n = ctx.input("normal");
     std::string r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {n, ctx.input("view")}));

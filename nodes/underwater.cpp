@@ -98,7 +98,7 @@ NodeSpec underwaterNode() {
   s.parseOptions = optionParser(parseUnderwaterOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"underwater", "scene_depth", "scene_color"};
+  s.resources = {SceneResource::Underwater, SceneResource::SceneDepth, SceneResource::SceneColor};
   s.emit = [](EmitContext& ctx) {
     std::string uv = ctx.input("screen_uv");
     std::string water = ctx.temporary(Type::Vec4, "texture(" + ctx.sceneTexture("underwater") + ", " + uv + ")");

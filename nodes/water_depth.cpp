@@ -94,7 +94,7 @@ NodeSpec waterDepthNode() {
   s.parseOptions = optionParser(parseWaterDepthOptions);
   s.stages = kFragmentStage;
   s.isSource = true;
-  s.resources = {"scene_depth"};
+  s.resources = {SceneResource::SceneDepth};
   s.emit = [](EmitContext& ctx) {
     std::string nf = ctx.builtin(Builtin::CameraNearFar);
     // The scene depth is a depth texture; the surface's is gl_FragCoord.z.

@@ -2,43 +2,18 @@
 
 #include <algorithm>
 
-#include "codegen/shader_interface.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
 namespace {
 
-struct PassInfo {
-  PassKind kind;
-  const char* name;
-};
-// Execution order: everything the water samples first, then the frame itself.
-constexpr PassInfo kPasses[] = {
-    {PassKind::EnvironmentCubemap, "environment_cubemap"},
-    {PassKind::DepthPrepass, "depth_prepass"},
-    {PassKind::PlanarReflection, "planar_reflection"},
-    {PassKind::Refraction, "refraction"},
-    {PassKind::OpaqueScene, "opaque_scene"},
-    {PassKind::SceneColorCopy, "scene_color_copy"},
-    {PassKind::DeferredWater, "deferred_water"},
-    {PassKind::WaterSurface, "water_surface"},
-};
-
 [[noreturn]] void fail(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
 
 }  // namespace
 
-const char* passName(PassKind p) {
-  for (const auto& i : kPasses)
-    if (i.kind == p) return i.name;
-  return "?";
-}
+const char* passName(PassKind p) { return renderPassRow(p).name.data(); }  // a literal: NUL-terminated
 
-std::optional<PassKind> parsePassName(const std::string& name) {
-  for (const auto& i : kPasses)
-    if (name == i.name) return i.kind;
-  return std::nullopt;
-}
+std::optional<PassKind> parsePassName(const std::string& name) { return parseRenderPass(name); }
 
 size_t bytesPerPixel(ColorFormat f) {
   switch (f) {
@@ -75,47 +50,34 @@ PassPlan planPasses(const nlohmann::json& manifest, const PlanOptions& options) 
     fail("render size must be positive");
   auto it = manifest.find("passes");
   if (it == manifest.end() || !it->is_array()) fail("the manifest has no \"passes\" list");
-  std::vector<bool> listed(std::size(kPasses), false);
+  const auto passes = renderPassTable();
+  std::vector<bool> listed(passes.size(), false);
   for (const auto& p : *it) {
     if (!p.is_string()) fail("the manifest's \"passes\" list holds a non-string entry");
     std::string name = p.get<std::string>();
     auto kind = parsePassName(name);
     if (!kind || *kind == PassKind::OpaqueScene) fail("the manifest lists an unknown pass '" + name + "'");
-    for (size_t i = 0; i < std::size(kPasses); ++i)
-      if (kPasses[i].kind == *kind) listed[i] = true;
+    listed[static_cast<size_t>(*kind)] = true;
   }
+  if (!listed[static_cast<size_t>(PassKind::WaterSurface)]) fail("the manifest's \"passes\" list lacks water_surface");
   PassPlan plan;
-  ColorFormat color = options.floatColor ? ColorFormat::Rgba32f : ColorFormat::Rgba8;
-  auto add2d = [&](const char* name, PassKind by, const char* sampler, ColorFormat c, DepthFormat d) {
-    plan.targets.push_back({name, by, sampler, c, d, options.width, options.height, false});
-  };
-  bool water = false;
-  for (size_t i = 0; i < std::size(kPasses); ++i) {
-    if (kPasses[i].kind == PassKind::WaterSurface) water = listed[i];
-  }
-  if (!water) fail("the manifest's \"passes\" list lacks water_surface");
-  add2d("frame", PassKind::WaterSurface, "", color, DepthFormat::Depth32f);
-  for (size_t i = 0; i < std::size(kPasses); ++i) {
-    PassKind k = kPasses[i].kind;
-    if (k != PassKind::OpaqueScene && !listed[i]) continue;
-    plan.passes.push_back(k);
-    switch (k) {
-      case PassKind::EnvironmentCubemap:
-        plan.targets.push_back({"environment", k, iface::kEnvironmentTexture, color, DepthFormat::None, options.environmentSize,
-                                options.environmentSize, true});
-        break;
-      case PassKind::DepthPrepass: add2d("scene_depth", k, iface::kSceneDepthTexture, ColorFormat::None, DepthFormat::Depth32f); break;
-      case PassKind::PlanarReflection: add2d("reflection", k, iface::kReflectionTexture, color, DepthFormat::Depth32f); break;
-      case PassKind::Refraction: add2d("refraction", k, iface::kRefractionTexture, color, DepthFormat::Depth32f); break;
-      case PassKind::SceneColorCopy: add2d("scene_color", k, iface::kSceneColorTexture, color, DepthFormat::None); break;
-      case PassKind::DeferredWater:
-        // Positions need float precision whatever the frame's format; water_normal is
-        // created first because water_position's framebuffer draws into both.
-        add2d("water_normal", k, iface::kWaterNormalUvTexture, ColorFormat::Rgba32f, DepthFormat::None);
-        add2d("water_position", k, iface::kWaterSurfaceTexture, ColorFormat::Rgba32f, DepthFormat::Depth32f);
-        break;
-      case PassKind::OpaqueScene:
-      case PassKind::WaterSurface: break;
+  const ColorFormat frameColor = options.floatColor ? ColorFormat::Rgba32f : ColorFormat::Rgba8;
+  plan.targets.push_back({"frame", PassKind::WaterSurface, "", frameColor, DepthFormat::Depth32f, options.width,
+                          options.height, false});
+  for (const auto& pass : passes) {
+    if (pass.id != PassKind::OpaqueScene && !listed[static_cast<size_t>(pass.id)]) continue;
+    plan.passes.push_back(pass.id);
+    // The targets of the pass: the samplers of the resources it produces.
+    for (const auto& sampler : sceneSamplerTable()) {
+      if (sceneResourceRow(sampler.resource).pass != pass.id) continue;
+      const ColorFormat color = sampler.color == TargetColor::None      ? ColorFormat::None
+                                : sampler.color == TargetColor::Float32 ? ColorFormat::Rgba32f
+                                                                        : frameColor;
+      const bool cube = sampler.type == Type::SamplerCube;
+      const int width = cube ? options.environmentSize : options.width;
+      const int height = cube ? options.environmentSize : options.height;
+      plan.targets.push_back({std::string(sampler.target), pass.id, std::string(sampler.glslName), color,
+                              sampler.depth ? DepthFormat::Depth32f : DepthFormat::None, width, height, cube});
     }
   }
   return plan;

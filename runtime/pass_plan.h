@@ -1,19 +1,12 @@
 #pragma once
 // Which passes a frame runs and which render targets exist, decided from the manifest's
 // "passes" list alone (no GL here, so it is tested with hand-made manifests). A pass runs
-// only when the manifest lists it; a render target is created only for a pass that runs.
-//
-//   manifest pass        target         contents                         bound as
-//   depth_prepass        scene_depth    DEPTH_COMPONENT32F               u_scene_depth
-//   scene_color_copy     scene_color    colour copy of the opaque scene  u_scene_color
-//   planar_reflection    reflection     colour + depth, mirrored camera  u_reflection
-//   refraction           refraction     colour + depth, clipped below    u_refraction
-//   environment_cubemap  environment    cube map of the sky (6 faces)    u_environment
-//   deferred_water       water_normal   RGBA32F: normal.xz, uv           u_water_normal_uv
-//                        water_position RGBA32F + depth: position, depth  u_water_surface
-//   water_surface        frame          colour + depth (always)          -
-// With deferred_water, water_surface draws the graph's fragment shader full-screen (see
-// docs/architecture.md, "Deferred water").
+// only when the manifest lists it; a render target is created only for a pass that runs:
+// "frame" (colour + depth, always), then one per scene sampler whose resource the pass
+// produces (core/interface_tables.h: renderPassTable in execution order, sceneSamplerTable
+// for each target's name, format and the sampler it is bound to). With deferred_water,
+// water_surface draws the graph's fragment shader full-screen (see docs/architecture.md,
+// "Deferred water").
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -21,18 +14,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/interface_tables.h"
+
 namespace wg::rt {
 
-enum class PassKind {
-  EnvironmentCubemap,
-  DepthPrepass,
-  PlanarReflection,
-  Refraction,
-  OpaqueScene,  // sky + scene into the frame; always runs, not listed in manifests
-  SceneColorCopy,
-  DeferredWater,  // the water G-buffer; water_surface then runs full-screen
-  WaterSurface,
-};
+using PassKind = RenderPass;
 
 const char* passName(PassKind p);  // the manifest's name ("opaque_scene" for OpaqueScene)
 std::optional<PassKind> parsePassName(const std::string& name);

@@ -169,7 +169,8 @@ struct Renderer::Impl {
     return std::make_shared<const Program>(linkProgram(sources, what));
   }
 
-  GpuTarget* find(const char* name) {
+  GpuTarget* find(SceneSampler s) {
+    const std::string_view name = sceneSamplerRow(s).target;
     for (auto& t : targets)
       if (t.spec.name == name) return &t;
     return nullptr;
@@ -205,8 +206,8 @@ struct Renderer::Impl {
                                spec.cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : GL_TEXTURE_2D, t.color.id(), 0);
         GLenum buf = GL_COLOR_ATTACHMENT0;
         glDrawBuffers(1, &buf);
-        if (spec.name == "water_position") {  // the G-buffer draws into water_normal as well
-          GpuTarget* normal = find("water_normal");
+        if (spec.name == sceneSamplerRow(SceneSampler::WaterSurface).target) {  // the G-buffer draws into water_normal as well
+          GpuTarget* normal = find(SceneSampler::WaterNormalUv);
           if (!normal) throw std::logic_error("the plan creates water_position without water_normal");
           glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, normal->color.id(), 0);
           GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
@@ -257,7 +258,9 @@ struct Renderer::Impl {
   // editor can change it between frames without a recompile) or a builtin recomputed from
   // the camera, time and sun every frame.
   struct WaterUniform {
-    std::string name, type, builtin, parameter;
+    std::string name, parameter;
+    Type type = Type::Float;
+    BuiltinUniform builtin = BuiltinUniform::Time;  // when parameter is ""
     double angularFrequency = 0;  // time_phase
     std::vector<float> value;     // parameter values
     // The parameter's manifest min/max: every value is clamped into them on upload, as the
@@ -275,51 +278,70 @@ struct Renderer::Impl {
   }
 
   std::vector<float> builtinValue(const WaterUniform& u) const {
-    const std::string& b = u.builtin;
     std::vector<float> v;
     auto mat = [&](const glm::mat4& m4) { v.assign(glm::value_ptr(m4), glm::value_ptr(m4) + 16); };
-    if (b == "model") mat(glm::mat4(1.0f));
-    else if (b == "view_projection") mat(viewProjection);
-    else if (b == "view") mat(view);
-    else if (b == "projection") mat(projection);
-    else if (b == "camera_position") v = {camera.position.x, camera.position.y, camera.position.z};
-    else if (b == "time") v = {settings.scene.time};
-    else if (b == "viewport_size") v = {static_cast<float>(settings.width), static_cast<float>(settings.height)};
-    else if (b == "camera_near_far") {
-      // Each plane clamped into [1e-6, 1e30] (NaN to 1e-6; an infinite far plane to
-      // 1e30): the generated shader relies on it (builtinFact(CameraNearFar)).
-      auto plane = [](float x) { return !(x >= 1e-6f) ? 1e-6f : std::min(x, 1e30f); };
-      v = {plane(camera.nearPlane), plane(camera.farPlane)};
-    }
-    else if (b == "sun_direction") v = {sun.x, sun.y, sun.z};
-    else if (b == "time_phase") {
-      // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
-      double twoPi = 6.283185307179586;
-      double phase = u.angularFrequency * static_cast<double>(settings.scene.time);
-      phase -= twoPi * std::floor(phase / twoPi);
-      v = {static_cast<float>(phase)};
-    } else {
-      manifestError("uniform " + u.name + " asks for builtin '" + b + "', which the runtime does not provide");
+    switch (u.builtin) {
+      case BuiltinUniform::Model: mat(glm::mat4(1.0f)); break;
+      case BuiltinUniform::ViewProjection: mat(viewProjection); break;
+      case BuiltinUniform::View: mat(view); break;
+      case BuiltinUniform::Projection: mat(projection); break;
+      case BuiltinUniform::CameraPosition: v = {camera.position.x, camera.position.y, camera.position.z}; break;
+      case BuiltinUniform::Time: v = {settings.scene.time}; break;
+      case BuiltinUniform::ViewportSize: v = {static_cast<float>(settings.width), static_cast<float>(settings.height)}; break;
+      case BuiltinUniform::CameraNearFar: {
+        // Each plane clamped into [1e-6, 1e30] (NaN to 1e-6; an infinite far plane to
+        // 1e30): the generated shader relies on it (builtinFact(CameraNearFar)).
+        auto plane = [](float x) { return !(x >= 1e-6f) ? 1e-6f : std::min(x, 1e30f); };
+        v = {plane(camera.nearPlane), plane(camera.farPlane)};
+        break;
+      }
+      case BuiltinUniform::SunDirection: v = {sun.x, sun.y, sun.z}; break;
+      case BuiltinUniform::TimePhase: {
+        // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
+        double twoPi = 6.283185307179586;
+        double phase = u.angularFrequency * static_cast<double>(settings.scene.time);
+        phase -= twoPi * std::floor(phase / twoPi);
+        v = {static_cast<float>(phase)};
+        break;
+      }
+      case BuiltinUniform::ProbeUv:
+      case BuiltinUniform::ProbeWorldPosition:
+      case BuiltinUniform::ProbeNormal:
+      case BuiltinUniform::ProbeViewDirection:
+      case BuiltinUniform::ProbeScreenUv:
+      case BuiltinUniform::ProbeFragDepth: break;  // refused when the manifest is read
     }
     return v;
   }
 
+  // Resolved when the manifest is read, so a frame compares no names. The runtime
+  // provides a builtin when it has a value for it (not the probe's per-case ones).
+  BuiltinUniform runtimeBuiltin(const WaterUniform& u, const std::string& meaning) const {
+    auto b = parseBuiltinUniform(meaning);
+    WaterUniform asked = u;
+    if (b) asked.builtin = *b;
+    if (!b || builtinValue(asked).empty())
+      manifestError("uniform " + u.name + " asks for builtin '" + meaning + "', which the runtime does not provide");
+    return *b;
+  }
+
   void setUniform(const WaterUniform& u, const std::vector<float>& v) const {
-    auto need = [&](size_t n) {
-      if (v.size() != n)
-        manifestError("uniform " + u.name + " of type " + u.type + " got " + std::to_string(v.size()) + " value(s)");
-    };
-    const std::string& type = u.type;
+    if (!u.locations.empty() && v.size() != static_cast<size_t>(componentCount(u.type)))
+      manifestError("uniform " + u.name + " of type " + std::string(typeName(u.type)) + " got " + std::to_string(v.size()) +
+                    " value(s)");
     for (auto [program, loc] : u.locations) {
       glUseProgram(program);
-      if (type == "float") need(1), glUniform1f(loc, v[0]);
-      else if (type == "vec2") need(2), glUniform2fv(loc, 1, v.data());
-      else if (type == "vec3") need(3), glUniform3fv(loc, 1, v.data());
-      else if (type == "vec4") need(4), glUniform4fv(loc, 1, v.data());
-      else if (type == "int" || type == "bool") need(1), glUniform1i(loc, static_cast<GLint>(v[0]));
-      else if (type == "mat3") need(9), glUniformMatrix3fv(loc, 1, GL_FALSE, v.data());
-      else if (type == "mat4") need(16), glUniformMatrix4fv(loc, 1, GL_FALSE, v.data());
-      else manifestError("uniform " + u.name + " has a type the runtime cannot set: " + type);
+      switch (u.type) {
+        case Type::Float: glUniform1f(loc, v[0]); break;
+        case Type::Vec2: glUniform2fv(loc, 1, v.data()); break;
+        case Type::Vec3: glUniform3fv(loc, 1, v.data()); break;
+        case Type::Vec4: glUniform4fv(loc, 1, v.data()); break;
+        case Type::Int:
+        case Type::Bool: glUniform1i(loc, static_cast<GLint>(v[0])); break;
+        case Type::Mat3: glUniformMatrix3fv(loc, 1, GL_FALSE, v.data()); break;
+        case Type::Mat4: glUniformMatrix4fv(loc, 1, GL_FALSE, v.data()); break;
+        default: break;  // refused when the manifest is read
+      }
     }
   }
 
@@ -347,8 +369,12 @@ struct Renderer::Impl {
       for (const auto& m : *list) {
         WaterUniform u;
         u.name = m.value("name", "");
-        u.type = m.value("type", "");
-        if (u.name.empty() || u.type.empty()) manifestError("a manifest uniform lacks \"name\" or \"type\"");
+        std::string type = m.value("type", "");
+        if (u.name.empty() || type.empty()) manifestError("a manifest uniform lacks \"name\" or \"type\"");
+        auto parsed = parseType(type);
+        if (!parsed || isSampler(*parsed) || *parsed == Type::Invalid)
+          manifestError("uniform " + u.name + " has a type the runtime cannot set: " + type);
+        u.type = *parsed;
         if (m.contains("parameter")) {
           u.parameter = m["parameter"].is_string() ? m["parameter"].get<std::string>() : u.name;
           u.value = numbers(m.value("default", nlohmann::json()));
@@ -357,8 +383,8 @@ struct Renderer::Impl {
           if (m.contains("max") && m["max"].is_number()) u.hi = m["max"].get<float>();
           clampParameter(u);
         } else {
-          u.builtin = m.value("builtin", "");
           u.angularFrequency = m.value("angular_frequency", 0.0);
+          u.builtin = runtimeBuiltin(u, m.value("builtin", ""));
         }
         for (GLuint program : waterPrograms()) {
           GLint loc = glGetUniformLocation(program, u.name.c_str());
@@ -410,12 +436,12 @@ struct Renderer::Impl {
       }
     }
     // A scene sampler the shader reads but the manifest does not list is a contract break.
-    for (const char* s : {iface::kSceneDepthTexture, iface::kSceneColorTexture, iface::kReflectionTexture,
-                          iface::kRefractionTexture, iface::kEnvironmentTexture, iface::kWaterSurfaceTexture,
-                          iface::kWaterNormalUvTexture})
+    for (const auto& row : sceneSamplerTable()) {
+      const std::string s(row.glslName);
       for (GLuint program : waterPrograms())
-        if (glGetUniformLocation(program, s) >= 0 && std::find(declared.begin(), declared.end(), s) == declared.end())
-          manifestError(std::string("the water shader samples ") + s + " but the manifest's \"textures\" does not list it");
+        if (glGetUniformLocation(program, s.c_str()) >= 0 && std::find(declared.begin(), declared.end(), s) == declared.end())
+          manifestError("the water shader samples " + s + " but the manifest's \"textures\" does not list it");
+    }
     checkGl("setting the water uniforms and textures");
   }
 
@@ -457,22 +483,6 @@ struct Renderer::Impl {
     glClear((clearColor && t.color ? GL_COLOR_BUFFER_BIT : 0) | (t.depth ? GL_DEPTH_BUFFER_BIT : 0));
   }
 
-  void environmentPass() {
-    GpuTarget* t = find("environment");
-    static const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
-    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo.id());
-    glViewport(0, 0, t->spec.width, t->spec.height);
-    for (int f = 0; f < 6; ++f) {
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f),
-                             t->color.id(), 0);
-      glClearColor(0, 0, 0, 1);  // what stays there without the scene (drawScene false)
-      glClear(GL_COLOR_BUFFER_BIT);
-      drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
-    }
-  }
-
   void bindWaterTextures(bool bind) {
     for (const auto& b : waterBindings) {
       glActiveTexture(GL_TEXTURE0 + b.unit);
@@ -491,99 +501,123 @@ struct Renderer::Impl {
   // Which half-space the water's own camera side is: above (+y) unless under water.
   float cameraSide() const { return camera.position.y >= 0.0f ? 1.0f : -1.0f; }
 
+  // --- One function per pass kind (PassKind), run in the plan's order.
+  static inline const glm::vec4 kNoClip = glm::vec4(0, 0, 0, 1);
+
+  void environmentPass() {
+    GpuTarget* t = find(SceneSampler::Environment);
+    static const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
+    glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
+    glBindFramebuffer(GL_FRAMEBUFFER, t->fbo.id());
+    glViewport(0, 0, t->spec.width, t->spec.height);
+    for (int f = 0; f < 6; ++f) {
+      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, static_cast<GLenum>(GL_TEXTURE_CUBE_MAP_POSITIVE_X + f),
+                             t->color.id(), 0);
+      glClearColor(0, 0, 0, 1);  // what stays there without the scene (drawScene false)
+      glClear(GL_COLOR_BUFFER_BIT);
+      drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
+    }
+  }
+
+  void depthPrepass() {
+    bindTarget(*find(SceneSampler::SceneDepth), false);
+    drawOpaque(viewProjection, kNoClip);
+  }
+
+  // The camera mirrored about y = 0; only what is on the camera's side of the water is
+  // reflected.
+  void planarReflectionPass() {
+    bindTarget(*find(SceneSampler::Reflection), true);
+    const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
+    const glm::mat4 mirrored = viewProjection * mirror;
+    const glm::vec4 waterPlane(0, cameraSide(), 0, 0);
+    if (settings.obliqueReflection) {
+      // The mirrored camera sits on the far side of the water plane, as the oblique
+      // projection requires; the sky keeps the plain matrix (it only reconstructs view
+      // directions from it).
+      glm::mat4 oblique = obliqueProjection(projection, planeToEye(view * mirror, waterPlane));
+      drawOpaque(oblique * view * mirror, kNoClip);
+    } else {
+      drawOpaque(mirrored, waterPlane);
+    }
+    drawSky(mirrored);
+  }
+
+  // What lies beyond the surface, seen by the real camera.
+  void refractionPass() {
+    bindTarget(*find(SceneSampler::Refraction), true);
+    drawOpaque(viewProjection, glm::vec4(0, -cameraSide(), 0, 0));
+    drawSky(viewProjection);
+  }
+
+  void opaqueScenePass() {
+    bindTarget(frame(), true);
+    drawOpaque(viewProjection, kNoClip);
+    drawSky(viewProjection);
+  }
+
+  void sceneColorCopyPass() {
+    GpuTarget* copy = find(SceneSampler::SceneColor);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy->fbo.id());
+    glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, settings.width, settings.height, GL_COLOR_BUFFER_BIT,
+                      GL_NEAREST);
+  }
+
+  // The water G-buffer: the graph's vertex shader (displacement included) writes the
+  // surface's position, depth, normal and uv; where no water is, depth w = 1.
+  void deferredWaterPass() {
+    GpuTarget* g = find(SceneSampler::WaterSurface);
+    bindTarget(*g, false);
+    const float surfaceClear[4] = {0, 0, 0, 1}, normalClear[4] = {0, 0, 0, 0};
+    glClearBufferfv(GL_COLOR, 0, surfaceClear);
+    glClearBufferfv(GL_COLOR, 1, normalClear);
+    glUseProgram(waterGbuffer->id());
+    bindWaterTextures(true);
+    glBindVertexArray(waterMesh.vao.id());
+    drawWaterMesh();
+    bindWaterTextures(false);
+  }
+
+  void waterSurfacePass() {
+    glBindFramebuffer(GL_FRAMEBUFFER, frame().fbo.id());
+    glViewport(0, 0, settings.width, settings.height);
+    glEnable(GL_BLEND);
+    // Colour blended by the water's alpha; the frame's alpha stays 1.
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    glUseProgram(water->id());
+    bindWaterTextures(true);
+    if (deferred) {
+      // Full-screen: every pixel is shaded by the graph (the underwater node's case 1
+      // returns the scene colour), reading the scene and the G-buffer from textures.
+      glDisable(GL_DEPTH_TEST);
+      glBindVertexArray(emptyVao.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glEnable(GL_DEPTH_TEST);
+    } else {
+      glBindVertexArray(waterMesh.vao.id());
+      drawWaterMesh();
+    }
+    glDisable(GL_BLEND);
+    bindWaterTextures(false);
+  }
+
   double renderOneFrame() {
+    // By PassKind, in renderPassTable() order.
+    using PassFunction = void (Impl::*)();
+    static constexpr PassFunction kPassFunctions[] = {
+        &Impl::environmentPass, &Impl::depthPrepass,       &Impl::planarReflectionPass, &Impl::refractionPass,
+        &Impl::opaqueScenePass, &Impl::sceneColorCopyPass, &Impl::deferredWaterPass,    &Impl::waterSurfacePass,
+    };
+    static_assert(std::size(kPassFunctions) == static_cast<size_t>(PassKind::WaterSurface) + 1);
     auto start = std::chrono::steady_clock::now();
     applyUniforms();
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
-    const glm::vec4 noClip(0, 0, 0, 1);
-    for (PassKind pass : plan.passes) {
-      switch (pass) {
-        case PassKind::EnvironmentCubemap: environmentPass(); break;
-        case PassKind::DepthPrepass:
-          bindTarget(*find("scene_depth"), false);
-          drawOpaque(viewProjection, noClip);
-          break;
-        case PassKind::PlanarReflection: {
-          // The camera mirrored about y = 0; only what is on the camera's side of the
-          // water is reflected.
-          bindTarget(*find("reflection"), true);
-          const glm::mat4 mirror = glm::scale(glm::mat4(1.0f), glm::vec3(1, -1, 1));
-          const glm::mat4 mirrored = viewProjection * mirror;
-          const glm::vec4 waterPlane(0, cameraSide(), 0, 0);
-          if (settings.obliqueReflection) {
-            // The mirrored camera sits on the far side of the water plane, as the
-            // oblique projection requires; the sky keeps the plain matrix (it only
-            // reconstructs view directions from it).
-            glm::mat4 oblique = obliqueProjection(projection, planeToEye(view * mirror, waterPlane));
-            drawOpaque(oblique * view * mirror, noClip);
-          } else {
-            drawOpaque(mirrored, waterPlane);
-          }
-          drawSky(mirrored);
-          break;
-        }
-        case PassKind::Refraction:
-          // What lies beyond the surface, seen by the real camera.
-          bindTarget(*find("refraction"), true);
-          drawOpaque(viewProjection, glm::vec4(0, -cameraSide(), 0, 0));
-          drawSky(viewProjection);
-          break;
-        case PassKind::OpaqueScene:
-          bindTarget(frame(), true);
-          drawOpaque(viewProjection, noClip);
-          drawSky(viewProjection);
-          break;
-        case PassKind::SceneColorCopy: {
-          GpuTarget* copy = find("scene_color");
-          glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
-          glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy->fbo.id());
-          glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, settings.width, settings.height,
-                            GL_COLOR_BUFFER_BIT, GL_NEAREST);
-          break;
-        }
-        case PassKind::DeferredWater: {
-          // The water G-buffer: the graph's vertex shader (displacement included) writes
-          // the surface's position, depth, normal and uv; where no water is, depth w = 1.
-          GpuTarget* g = find("water_position");
-          bindTarget(*g, false);
-          const float surfaceClear[4] = {0, 0, 0, 1}, normalClear[4] = {0, 0, 0, 0};
-          glClearBufferfv(GL_COLOR, 0, surfaceClear);
-          glClearBufferfv(GL_COLOR, 1, normalClear);
-          glUseProgram(waterGbuffer->id());
-          bindWaterTextures(true);
-          glBindVertexArray(waterMesh.vao.id());
-          drawWaterMesh();
-          bindWaterTextures(false);
-          break;
-        }
-        case PassKind::WaterSurface: {
-          glBindFramebuffer(GL_FRAMEBUFFER, frame().fbo.id());
-          glViewport(0, 0, settings.width, settings.height);
-          glEnable(GL_BLEND);
-          // Colour blended by the water's alpha; the frame's alpha stays 1.
-          glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-          glUseProgram(water->id());
-          bindWaterTextures(true);
-          if (deferred) {
-            // Full-screen: every pixel is shaded by the graph (the underwater node's case 1
-            // returns the scene colour), reading the scene and the G-buffer from textures.
-            glDisable(GL_DEPTH_TEST);
-            glBindVertexArray(emptyVao.id());
-            glDrawArrays(GL_TRIANGLES, 0, 3);
-            glEnable(GL_DEPTH_TEST);
-          } else {
-            glBindVertexArray(waterMesh.vao.id());
-            drawWaterMesh();
-          }
-          glDisable(GL_BLEND);
-          bindWaterTextures(false);
-          break;
-        }
-      }
-    }
+    for (PassKind pass : plan.passes) (this->*kPassFunctions[static_cast<size_t>(pass)])();
     glBindVertexArray(0);
     glFinish();
     auto end = std::chrono::steady_clock::now();

@@ -45,20 +45,11 @@ rt::RenderSettings smallSettings() {
 }
 
 namespace {
-struct SceneSampler {
-  const char* name;
-  const char* resource;
-  const char* type;
-};
-const SceneSampler kSamplers[] = {
-    {"u_scene_depth", "scene_depth", "sampler2D"},     {"u_scene_color", "scene_color", "sampler2D"},
-    {"u_reflection", "planar_reflection", "sampler2D"}, {"u_refraction", "refraction", "sampler2D"},
-    {"u_environment", "environment", "samplerCube"},
-};
-const SceneSampler& samplerInfo(const std::string& name) {
-  for (const auto& s : kSamplers)
-    if (name == s.name) return s;
-  throw std::invalid_argument("no scene sampler " + name);
+// A scene sampler by its GLSL name, from the table the runtime reads.
+const SceneSamplerRow& samplerInfo(const std::string& name) {
+  const SceneSamplerRow* row = findSceneSampler(name);
+  if (!row) throw std::invalid_argument("no scene sampler " + name);
+  return *row;
 }
 }  // namespace
 
@@ -84,7 +75,7 @@ layout(location = 0) out vec4 o_color;
   float w = 1.0f / static_cast<float>(std::max<size_t>(samplers.size(), 1));
   for (const auto& s : samplers) {
     const auto& info = samplerInfo(s);
-    frag += std::string("uniform ") + info.type + " " + s + ";\n";
+    frag += "uniform " + std::string(typeName(info.type)) + " " + s + ";\n";
     std::string weight = std::to_string(w);
     if (s == "u_environment")
       body += "  c += " + weight + " * texture(u_environment, reflect(-view, vec3(0.0, 1.0, 0.0))).rgb;\n";
@@ -114,7 +105,9 @@ nlohmann::json handManifest(const std::vector<std::string>& passes, const std::v
   m["textures"] = nlohmann::json::array();
   for (const auto& s : samplers) {
     const auto& info = samplerInfo(s);
-    m["textures"].push_back({{"name", s}, {"type", info.type}, {"resource", info.resource}});
+    m["textures"].push_back({{"name", s},
+                             {"type", std::string(typeName(info.type))},
+                             {"resource", std::string(sceneResourceRow(info.resource).name)}});
   }
   return m;
 }
