@@ -11,20 +11,14 @@ namespace {
 
 constexpr double kUnitRoundoff = 0x1p-24;  // float32: half the spacing of [1, 2)
 
-// The environment value behind a probe uniform's builtin name; null for what carries no
-// float32 rounding of its own here (time phases) or is not a plain value (matrices).
-Value* builtinValue(EvalEnvironment& env, const std::string& name) {
-  if (name == "uv") return &env.uv;
-  if (name == "world_position") return &env.worldPosition;
-  if (name == "normal") return &env.normal;
-  if (name == "view_direction") return &env.viewDirection;
-  if (name == "camera_position") return &env.cameraPosition;
-  if (name == "time") return &env.time;
-  if (name == "screen_uv") return &env.screenUv;
-  if (name == "frag_depth") return &env.fragDepth;
-  if (name == "camera_near_far") return &env.cameraNearFar;
-  if (name == "sun_direction") return &env.sunDirection;
-  return nullptr;
+// The environment value a probe uniform carries; null for what carries no float32 rounding
+// of its own here (time phases) or is not a plain value (matrices).
+Value* builtinValue(EvalEnvironment& env, BuiltinUniform u) {
+  const auto& carries = builtinUniformRow(u).carries;
+  if (!carries) return nullptr;
+  const BuiltinRow& row = builtinRow(*carries);
+  if (row.type == Type::Mat3 || row.type == Type::Mat4) return nullptr;
+  return &(env.*row.environment);
 }
 
 // Adds, per component, the larger move of the result when `x` moves by `delta` either way.
@@ -59,7 +53,7 @@ ErrorModel programErrorModel(const Program& program) {
 }
 
 std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
-                                       const std::vector<Value>& parameters, const std::vector<std::string>& builtins,
+                                       const std::vector<Value>& parameters, const std::vector<BuiltinUniform>& builtins,
                                        double roundings) {
   std::array<double, 4> sum{};
   if (roundings <= 0) return sum;
@@ -74,11 +68,11 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
     for (int i = 0; i < v.size(); ++i) addMoves(v[i], roundings * kUnitRoundoff * std::abs(v[i]), base, n, sum, evaluate);
   };
   for (auto& p : params) perturb(p);
-  std::vector<std::string> seen;
-  for (const auto& name : builtins) {
-    if (std::find(seen.begin(), seen.end(), name) != seen.end()) continue;
-    seen.push_back(name);
-    if (Value* v = builtinValue(e, name)) perturb(*v);
+  std::vector<BuiltinUniform> seen;
+  for (BuiltinUniform u : builtins) {
+    if (std::find(seen.begin(), seen.end(), u) != seen.end()) continue;
+    seen.push_back(u);
+    if (Value* v = builtinValue(e, u)) perturb(*v);
   }
   return sum;
 }

@@ -28,10 +28,10 @@ struct ErrorModel {
 ErrorModel programErrorModel(const Program& program);
 
 // The conditioning term per output component of `program`'s first output, perturbing the
-// parameters and the builtins named in `builtins` ("normal", "world_position", ...; the
-// names of UniformInfo::builtin). Zero when roundings is 0.
+// parameters and the builtin uniforms in `builtins` (UniformInfo::builtin of the shader's
+// non-parameter uniforms). Zero when roundings is 0.
 std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
-                                       const std::vector<Value>& parameters, const std::vector<std::string>& builtins,
+                                       const std::vector<Value>& parameters, const std::vector<BuiltinUniform>& builtins,
                                        double roundings);
 
 }  // namespace wg::accuracy

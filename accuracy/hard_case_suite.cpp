@@ -53,12 +53,6 @@ std::vector<ProbeCase> specHardCases(const NodeSpec& spec) {
 }
 
 // The options of a run with every default filled in, so a report names each value.
-nlohmann::json completeOptions(const NodeSpec& spec, const nlohmann::json& given) {
-  nlohmann::json all = nlohmann::json::object();
-  for (const auto& o : spec.options) all[o.name] = given.contains(o.name) ? given[o.name] : o.defaultValue;
-  return all;
-}
-
 bool takesInput(const NodeSpec& spec, const ProbeCase& c) {
   for (const auto& [port, value] : c.inputs)
     if (spec.inputIndex(port) >= 0) return true;

@@ -160,7 +160,7 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
 
   ErrorModel model = programErrorModel(*program);
   if (cases.tolerance) model.tolerance = *cases.tolerance;
-  std::vector<std::string> perturbed;  // the builtins the shader reads as float32 uniforms
+  std::vector<BuiltinUniform> perturbed;  // the builtins the shader reads as float32 uniforms
   for (const auto& u : shader.uniforms)
     if (u.parameter < 0) perturbed.push_back(u.builtin);
 

@@ -28,7 +28,7 @@ class RecordingEmitContext final : public EmitContext {
   unsigned stage() const override { return spec_.stages & kFragmentStage ? kFragmentStage : kVertexStage; }
   std::string timePhase(double) override { return "phase"; }
   std::string texture(std::string_view) override { return "sampler"; }
-  std::string sceneTexture(std::string_view) override { return "scene_sampler"; }
+  std::string sceneTexture(SceneResource) override { return "scene_sampler"; }
   const NodeSpec& spec() const override { return spec_; }
 
   // With facts: distinct constants per port (so two ranges never overlap), unit vectors,
