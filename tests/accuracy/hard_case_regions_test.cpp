@@ -18,6 +18,7 @@
 #include "accuracy/probe_cases.h"
 #include "codegen/cpu_backend.h"
 #include "nodes/registry.h"
+#include "suite_file.h"
 #include "test_support.h"
 
 namespace wg::accuracy {
@@ -469,12 +470,7 @@ const std::map<std::string, Check>& checks() {
   return m;
 }
 
-ProbeCaseFile loadSuite() {
-  Diagnostics diags;
-  auto suite = loadProbeCases(test::sourcePath("tests/hardcases/suite.json"), diags);
-  EXPECT_TRUE(suite);
-  return suite ? *suite : ProbeCaseFile{};
-}
+using test_suite::loadSuite;
 
 TEST(HardCaseRegions, EveryCaseNamesARegionAndReachesIt) {
   ProbeCaseFile suite = loadSuite();

@@ -10,6 +10,7 @@
 
 #include "accuracy/hard_case_suite.h"
 #include "runtime/egl_context.h"
+#include "suite_file.h"
 #include "test_support.h"
 
 namespace wg::accuracy {
@@ -44,12 +45,7 @@ const std::vector<Mutation>& mutations() {
   return m;
 }
 
-ProbeCaseFile loadSuite() {
-  Diagnostics diags;
-  auto suite = loadProbeCases(test::sourcePath("tests/hardcases/suite.json"), diags);
-  EXPECT_TRUE(suite);
-  return suite ? *suite : ProbeCaseFile{};
-}
+using test_suite::loadSuite;
 
 // The suite for one node, every variant, with the mutation: how many case runs failed.
 SuiteResult runMutated(const ProbeCaseFile& suite, const Mutation& m, Target target) {

@@ -1,0 +1,18 @@
+#pragma once
+// The hard-case suite file (tests/hardcases/suite.json), loaded for the accuracy tests that
+// walk its cases: the region checks and the mutation runs.
+#include <gtest/gtest.h>
+
+#include "accuracy/probe_cases.h"
+#include "test_support.h"
+
+namespace wg::accuracy::test_suite {
+
+inline ProbeCaseFile loadSuite() {
+  Diagnostics diags;
+  auto suite = loadProbeCases(test::sourcePath("tests/hardcases/suite.json"), diags);
+  EXPECT_TRUE(suite);
+  return suite ? *suite : ProbeCaseFile{};
+}
+
+}  // namespace wg::accuracy::test_suite
