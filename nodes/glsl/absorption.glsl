@@ -7,7 +7,7 @@ vec3 wg_absorption_beer_lambert(vec3 sigma, float dist) {
   return exp(-max(sigma, vec3(0.0)) * d);
 }
 
-// Seed 001's relative-coefficient model (listings 10-12): blue falls linearly to 0 over
+// The deferred water article's relative-coefficient model (listings 10-12): blue falls linearly to 0 over
 // max_distance, green and red are blue times (1 - d k_g) and (1 - d k_r), each clamped to
 // [0, 1], then squared. max_distance floored at 1e-6; distance clamped to [0, 1e30].
 vec3 wg_absorption_relative(float dist, float max_distance, float k_red, float k_green) {

@@ -1,4 +1,4 @@
-// blinn_phong: specular highlight from the half vector (seed 002, level 2).
+// blinn_phong: specular highlight from the half vector (the advanced shaders tutorial, level 2).
 
 // pow(max(N.H, 0), shininess) with H = normalize(L + V). When L = -V the half vector is
 // zero and N.H = 0, so the highlight is 0 (the safe pow: 0^s = 0 for s > 0, 1 for s <= 0).

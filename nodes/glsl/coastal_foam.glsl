@@ -1,4 +1,4 @@
-// Coastal foam (seed 001, listing 13): shallow-water foam times a foam texture whose
+// Coastal foam (the deferred water article, listing 13): shallow-water foam times a foam texture whose
 // coordinates the surface normal distorts; foam also dims the specular highlight.
 
 // The foam texture coordinates: (scale x + 0.5, 0.5 - scale z) + distortion (N.x, N.z).
@@ -12,7 +12,7 @@ float wg_coastal_foam_amount(float depth, float max_depth, float intensity, floa
   float r = clamp(depth / max(max_depth, 1e-6), 0.0, 1.0);
   return max(max(0.0, intensity * (1.0 - r)), crest);
 }
-// Specular dimming, seed 001: clamp(1 - k foam, 0, 1)^3.
+// Specular dimming, the deferred water article: clamp(1 - k foam, 0, 1)^3.
 float wg_coastal_foam_specular_cubic(float foam, float k) {
   float s = clamp(1.0 - k * foam, 0.0, 1.0);
   return s * s * s;

@@ -1,4 +1,4 @@
-// color_variation: seed 004's colour variation of the water body: sun-facing slopes warmer,
+// color_variation: the top-down water plan's colour variation of the water body: sun-facing slopes warmer,
 // a slow value-noise hue shift, troughs darker. Its value noise uses an integer hash
 // (no fract(sin)), so the CPU reference reproduces the GPU's lattice values bit for bit.
 
@@ -18,7 +18,7 @@ float wg_color_variation_cell(ivec2 cell) {
 }
 
 // Value noise in [0, 1): smoothstep-weighted bilinear blend of the four lattice values
-// around p (seed 004's valueNoise with an integer hash). Periodic over 256 units, so p is
+// around p (the top-down water plan's valueNoise with an integer hash). Periodic over 256 units, so p is
 // wrapped first: huge coordinates never overflow the int conversion, and a time drift
 // wrapped to the same period moves the pattern without a seam.
 float wg_color_variation_noise(vec2 p) {
@@ -34,7 +34,7 @@ float wg_color_variation_noise(vec2 p) {
   return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
 }
 
-// Seed 004, section 5, for a y-up world (the seed's top-down x/y plane is our x/z plane):
+// The top-down water plan, section 5, for a y-up world (the plan's top-down x/y plane is our x/z plane):
 // slope shift from the horizontal alignment of the normal with the sun (mix factor kept
 // in [0, 1]), hue shift by the noise, trough darkening (1 - height) * trough with the
 // height kept in [0, 1].

@@ -1,7 +1,7 @@
-// Crest foam (seed 004's calculateFoam): whitecaps where the wave is high or steep, broken
+// Crest foam (the top-down water plan's calculateFoam): whitecaps where the wave is high or steep, broken
 // into patches by two layers of drifting value noise.
 
-// height: the wave height (seed 004's 0..1 raw height); normal: the surface normal (y up,
+// height: the wave height (the top-down water plan's 0..1 raw height); normal: the surface normal (y up,
 // so the slope is the length of its xz part once normalised); drift: the two noise time
 // offsets, already wrapped to the noise lattice's 256-cell period by the caller so the
 // patches drift seamlessly at any time. The product is clamped to [0, 1] before the

@@ -1,4 +1,4 @@
-// Seed 000's du/dv distortion: a scrolling du/dv map turned into a small UV offset that
+// The classic WebGL water renderer's du/dv distortion: a scrolling du/dv map turned into a small UV offset that
 // ripples the refraction and reflection lookups.
 
 // The scroll: fract(time * speed), wrapped because the texture repeats (finite and exact

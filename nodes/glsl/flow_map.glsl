@@ -1,4 +1,4 @@
-// Flow maps (seed 003; Catlike Coding's "Texture Distortion"): a texture dragged along a
+// Flow maps (the stylized water shader; Catlike Coding's "Texture Distortion"): a texture dragged along a
 // flow vector in two phases half a cycle apart, cross-faded by triangle waves so the
 // reset of each phase is never seen.
 

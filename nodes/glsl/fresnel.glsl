@@ -34,8 +34,8 @@ float wg_fresnel_exact(float cosi, float n1, float n2) {
   return 0.5 * (rs * rs + rp * rp);
 }
 
-// Artistic power forms. Seed 000 mixes reflection and refraction by (N.V)^strength, so its
-// reflectance is 1 - (N.V)^strength; seed 003 uses (1 - N.V)^strength directly.
+// Artistic power forms. The classic WebGL water renderer mixes reflection and refraction by (N.V)^strength, so its
+// reflectance is 1 - (N.V)^strength; the stylized water shader uses (1 - N.V)^strength directly.
 float wg_fresnel_power_cos(float cosi, float strength) { return 1.0 - wg_safe_pow_float(cosi, strength); }
 float wg_fresnel_power_rim(float cosi, float strength) { return wg_safe_pow_float(1.0 - cosi, strength); }
 

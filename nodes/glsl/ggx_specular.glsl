@@ -1,4 +1,4 @@
-// ggx_specular: Cook-Torrance microfacet specular of seed 002 (GGX D, Schlick F, Smith G).
+// ggx_specular: Cook-Torrance microfacet specular of the advanced shaders tutorial (GGX D, Schlick F, Smith G).
 
 // GGX / Trowbridge-Reitz normal distribution, a2 / (pi d^2) with d written as
 // NdotH^2 a2 + (1 - NdotH^2) instead of NdotH^2 (a2 - 1) + 1: in float32 the latter

@@ -1,4 +1,4 @@
-// lambert: diffuse lighting by Lambert's cosine law (seed 002, level 1).
+// lambert: diffuse lighting by Lambert's cosine law (the advanced shaders tutorial, level 1).
 
 // max(N.L, 0) with both vectors normalised safely, kept in [0, 1]: a zero vector gives 0.
 float wg_lambert(vec3 n, vec3 l) {

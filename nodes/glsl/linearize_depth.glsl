@@ -1,6 +1,6 @@
 // linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
 
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
+// The advanced shaders tutorial's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
 // n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
 // infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
 // far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large

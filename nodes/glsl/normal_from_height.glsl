@@ -1,4 +1,4 @@
-// A normal from a height texture by central differences (seed 001's wave normals).
+// A normal from a height texture by central differences (the deferred water article's wave normals).
 
 // The red channel at uv as GL_LINEAR + GL_REPEAT define it, computed in float from the
 // four texels (texelFetch): hardware filtering quantises the weights (8 bits of sub-texel

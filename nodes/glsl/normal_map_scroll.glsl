@@ -1,4 +1,4 @@
-// Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
+// Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
 // The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
 // so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
@@ -9,7 +9,7 @@ vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
 vec3 wg_normal_map_scroll_unpack(vec4 texel) { return texel.xyz * 2.0 - 1.0; }
 
-// Linear blend of the seeds: normalize(a + b).
+// Linear blend of the two sources: normalize(a + b).
 vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a + b); }
 
 // Whiteout blend: normalize(vec3(a.xy + b.xy, a.z * b.z)), keeps both layers' detail.

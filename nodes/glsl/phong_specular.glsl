@@ -1,6 +1,6 @@
-// phong_specular: seed 001's Phong specular of the sun and of the environment light.
+// phong_specular: the deferred water article's Phong specular of the sun and of the environment light.
 
-// Seed 001, listing 9: the light direction L mirrored about N, R = 2(N.L)N - L, against
+// The deferred water article, listing 9: the light direction L mirrored about N, R = 2(N.L)N - L, against
 // the unit direction to the viewer: max(R.V, 0), kept in [0, 1]. (Equal to
 // max(dot(reflect(-V, N), L), 0), the view ray reflected against the light.)
 float wg_phong_specular_lobe(vec3 n, vec3 v, vec3 l) {

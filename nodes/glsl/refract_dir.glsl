@@ -1,4 +1,4 @@
-// refract_dir: Snell refraction of the view ray through the water surface (seed 002's
+// refract_dir: Snell refraction of the view ray through the water surface (the advanced shaders tutorial's
 // refract(-V, N, n1/n2)), with total internal reflection handled explicitly.
 
 // The refracted direction of the ray -V through a surface whose normal N faces the viewer;

@@ -1,4 +1,4 @@
-// Seed 004's high-frequency ripples: sin-based analytic noise, three layers of two sines
+// The top-down water plan's high-frequency ripples: sin-based analytic noise, three layers of two sines
 // each at high, incommensurate frequencies, added to the normal's horizontal components.
 
 // One layer: (sin(dot(fa, uv) + phase.x), sin(dot(fb, uv) + phase.y)) with freq = (fa, fb);

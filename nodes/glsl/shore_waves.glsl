@@ -1,4 +1,4 @@
-// Shore waves (seed 003, section 9): bands of foam running up the shore,
+// Shore waves (the stylized water shader, section 9): bands of foam running up the shore,
 // (sin(depth * frequency - speed * t) / 2 + 1/2)^2, fading out by `dist` metres of depth.
 
 // phase = mod(speed t, 2 pi) from the caller. Depth is clamped to [0, dist] first, so

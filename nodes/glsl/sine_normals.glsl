@@ -1,4 +1,4 @@
-// Seed 002's procedural wave normals from layered sines ("Approach 1"): a flat up normal
+// The advanced shaders tutorial's procedural wave normals from layered sines ("Approach 1"): a flat up normal
 // tilted by three layers of products of sines, large and slow to small and fast. Each
 // argument is a spatial part, wrapped to [0, 2 pi) so sin stays accurate at 1e5 m, plus a
 // time phase mod(omega t, 2 pi) computed in double on the CPU.

@@ -1,8 +1,8 @@
-// ssr: screen-space reflection by a fixed number of ray-march steps (seed 001, listing 8).
+// ssr: screen-space reflection by a fixed number of ray-march steps (the deferred water article, listing 8).
 
-// Marches the reflected ray origin + t dir, t = (i + 0.5) step, with seed 001's step
+// Marches the reflected ray origin + t dir, t = (i + 0.5) step, with the deferred water article's step
 // length step / max(0.6, cos^2) (longer steps for grazing reflections, cos = R.N) and a
-// hit test whose squared tolerance grows by `growth` per step (seed: 16 * 1.1^i), here on
+// hit test whose squared tolerance grows by `growth` per step (the article: 16 * 1.1^i), here on
 // the difference between the ray's view depth and the scene's linear depth at the ray's
 // screen position. A point with clip w <= 1e-6 (behind or at the camera) or outside the
 // screen ends the march without a hit, so no division by w <= 0 ever happens.
@@ -27,7 +27,7 @@ vec3 wg_ssr_march(sampler2D scene_depth, vec3 origin, vec3 dir, float cos_rn, ma
   return vec3(0.5, 0.5, 0.0);
 }
 
-// Seed 001's fade of a reflection found at uv: towards the screen edges
+// The deferred water article's fade of a reflection found at uv: towards the screen edges
 // max(1 - (0.01 + |2 uv - 1|^2)^(1/4), 0) (0.68 at the centre, 0 near the corners), times
 // min(1, fade_distance / d) with d the surface's view distance (floored at 1e-6).
 float wg_ssr_fade(vec2 uv, float dist, float fade_distance) {

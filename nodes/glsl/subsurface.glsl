@@ -1,4 +1,4 @@
-// subsurface: the fake subsurface glow of wave crests lit from behind (seed 003, section 8).
+// subsurface: the fake subsurface glow of wave crests lit from behind (the stylized water shader, section 8).
 
 // H = normalize(L + N distortion); I = saturate(V.(-H))^power * saturate(height * 2 + 0.5).
 // All vectors normalised safely; the safe pow keeps 0^power at 0 (power > 0) and the

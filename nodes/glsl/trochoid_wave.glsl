@@ -1,7 +1,7 @@
-// Seed 001's 3D wave: a trochoid-like wave sin(phase - 0.5 cos(phase)) plus a height-texture
+// The deferred water article's 3D wave: a trochoid-like wave sin(phase - 0.5 cos(phase)) plus a height-texture
 // detail, found along the view ray by bisection (the deferred water renderer's listing 6).
 
-// The height-texture coordinate of a world point: (s x + 0.5, 0.5 - s z), as in seed 001.
+// The height-texture coordinate of a world point: (s x + 0.5, 0.5 - s z), as in the deferred water article.
 vec2 wg_trochoid_wave_uv(vec2 xz, float texScale) {
   return vec2(texScale * xz.x + 0.5, 0.5 - texScale * xz.y);
 }
@@ -19,11 +19,11 @@ float wg_trochoid_wave_height(vec2 xz, float amplitude, vec2 waveVector, float t
   return amplitude * (sin(phi - 0.5 * cos(phi)) + detail * (2.0 * h - 1.0));
 }
 
-// Bisection along the ray from `origin` in the unit direction `dir` (seed 001, listing 6).
+// Bisection along the ray from `origin` in the unit direction `dir` (the deferred water article, listing 6).
 // The ray meets the flat surface y = surfaceY at P0 (distance clamped to [0, maxDistance],
 // |dir.y| floored at 1e-6). The wave lies within +-M = A (1 + |detail|) of that plane, so
-// along the ray within L = M / max(|dir.y|, 0.1) of P0 (seed 001's 10 M at grazing views).
-// Seed 001 searches only the stretch before P0 and so misses troughs below the plane; here
+// along the ray within L = M / max(|dir.y|, 0.1) of P0 (the deferred water article's 10 M at grazing views).
+// The deferred water article searches only the stretch before P0 and so misses troughs below the plane; here
 // the search is centred on P0: each step halves, moving towards the camera while the point
 // is below the wave and away from it while above (the signs swap for a camera below).
 vec3 wg_trochoid_wave_march(vec3 origin, vec3 dir, float surfaceY, float amplitude, vec2 waveVector, float timePhase,

@@ -1,9 +1,9 @@
-// underwater: seed 001's five camera/pixel cases of deferred water, run as a full-screen
+// underwater: the deferred water article's five camera/pixel cases of deferred water, run as a full-screen
 // pass. `water` is the water G-buffer at this pixel: the surface's world position (xyz)
 // and its depth-buffer value (w; 1.0 where no water surface covers the pixel). `scene` is
 // the opaque scene's world position there and `sky` 1 where the scene depth is 1.0.
 
-// Largest component: seed 001 scales the caustics by the brightest channel of the scene.
+// Largest component: the deferred water article scales the caustics by the brightest channel of the scene.
 float wg_underwater_max3(vec3 c) { return max(c.r, max(c.g, c.b)); }
 
 // Camera above the water (cases 1, 4, 5). Returns (colour, case).
@@ -11,11 +11,11 @@ float wg_underwater_max3(vec3 c) { return max(c.r, max(c.g, c.b)); }
 //    along this ray): the scene colour unchanged.
 // 4: scene under water and light still comes through (max transmittance > 1/256 over the
 //    in-water distance d_S - d_W) and nearer than the haze distance: Beer-Lambert
-//    absorption, refraction by a distortion strength * (1 - T.b) * N.xz (seed listing 16),
+//    absorption, refraction by a distortion strength * (1 - T.b) * N.xz (the article's listing 16),
 //    caustics scaled by the brightest channel (listing 18), the water's own colour by the
 //    absorbed part, the surface light added on top, then haze by the surface distance.
 // 5: otherwise the water body is opaque: only its own colour, the surface light and haze
-//    (the seed's case 5; no scene look-ups).
+//    (the article's case 5; no scene look-ups).
 vec4 wg_underwater_from_above(sampler2D scene_color, vec2 uv, vec4 water, vec3 scene, float sky, vec3 camera,
                               vec3 n, vec3 surface, float transmittance, vec3 water_color, float diffuse,
                               vec3 sigma, float strength, float caustics, vec3 caustics_color,
@@ -40,7 +40,7 @@ vec4 wg_underwater_from_above(sampler2D scene_color, vec2 uv, vec4 water, vec3 s
 }
 
 // Camera under the water (cases 2, 3). Returns (colour, case). Light falls off with the
-// camera's depth below the water level: k = min(1, depth_light / depth) (seed listings
+// camera's depth below the water level: k = min(1, depth_light / depth) (the article's listings
 // 10-11, floored depth 1e-6).
 // 2: the scene point is under water (or no surface lies in between): absorption over the
 //    camera-scene distance, caustics, the water's colour by the absorbed part.

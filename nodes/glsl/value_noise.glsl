@@ -1,5 +1,5 @@
 // Value noise: hashed values on the integer lattice, blended with the cubic Hermite weight
-// 3t^2 - 2t^3 (seed 004's valueNoise, with the PCG hash of hash.glsl in place of its
+// 3t^2 - 2t^3 (the top-down water plan's valueNoise, with the PCG hash of hash.glsl in place of its
 // fract-based hash21). Output in [0, 1).
 
 // The lattice value of an integer cell: the first hashed word as a float in [0, 1).

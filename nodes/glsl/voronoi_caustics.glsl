@@ -1,4 +1,4 @@
-// Voronoi caustics (seed 003, section 6): bright lines where the Voronoi F1 is small,
+// Voronoi caustics (the stylized water shader, section 6): bright lines where the Voronoi F1 is small,
 // intensity (1 - d)^3 per layer.
 
 // One layer: F1 clamped to [0, 1] before inverting, since F1 can exceed 1 (up to ~1.4 with

@@ -39,7 +39,7 @@ float wg_pow_known_safe_float(float x, float y) { return pow(x, y); }
 // at least that): the floor is dead.
 float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
 
-// Seed 000's du/dv distortion: a scrolling du/dv map turned into a small UV offset that
+// The classic WebGL water renderer's du/dv distortion: a scrolling du/dv map turned into a small UV offset that
 // ripples the refraction and reflection lookups.
 
 // The scroll: fract(time * speed), wrapped because the texture repeats (finite and exact
@@ -73,7 +73,7 @@ float wg_linearize_depth_known(float depth, vec2 near_far) {
   return n / ((1.0 - depth) + depth * r);
 }
 
-// Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
+// Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
 // The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
 // so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
@@ -84,7 +84,7 @@ vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
 vec3 wg_normal_map_scroll_unpack(vec4 texel) { return texel.xyz * 2.0 - 1.0; }
 
-// Linear blend of the seeds: normalize(a + b).
+// Linear blend of the two sources: normalize(a + b).
 vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a + b); }
 
 // The blended tangent-space normal with its slope scaled by `strength`.

@@ -32,7 +32,7 @@ vec3 wg_absorption_beer_lambert(vec3 sigma, float dist) {
   return exp(-max(sigma, vec3(0.0)) * d);
 }
 
-// Coastal foam (seed 001, listing 13): shallow-water foam times a foam texture whose
+// Coastal foam (the deferred water article, listing 13): shallow-water foam times a foam texture whose
 // coordinates the surface normal distorts; foam also dims the specular highlight.
 
 // The foam texture coordinates: (scale x + 0.5, 0.5 - scale z) + distortion (N.x, N.z).
@@ -48,7 +48,7 @@ float wg_coastal_foam_amount(float depth, float max_depth, float intensity, floa
   return max(max(0.0, intensity * (1.0 - r)), crest);
 }
 
-// Specular dimming, seed 001: clamp(1 - k foam, 0, 1)^3.
+// Specular dimming, the deferred water article: clamp(1 - k foam, 0, 1)^3.
 float wg_coastal_foam_specular_cubic(float foam, float k) {
   float s = clamp(1.0 - k * foam, 0.0, 1.0);
   return s * s * s;
@@ -133,9 +133,9 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 // the CPU's value bit for bit.
 float wg_hash_unit_float(uint h) { return float(h >> 8u) * 5.9604644775390625e-8; }
 
-// haze: distance blend towards the background colour (seed 001, case 5).
+// haze: distance blend towards the background colour (the deferred water article, case 5).
 
-// The haze amount 1 - max(0, (H - d) / H) of seed 001 (H = 2000 units there), kept in
+// The haze amount 1 - max(0, (H - d) / H) of the deferred water article (H = 2000 units there), kept in
 // [0, 1]: 0 at the camera, 1 from the haze distance on. H is floored at 1e-6.
 float wg_haze_factor(float dist, float haze_distance) {
   return clamp(dist / max(haze_distance, 1e-6), 0.0, 1.0);
@@ -143,7 +143,7 @@ float wg_haze_factor(float dist, float haze_distance) {
 
 // linearize_depth: depth-buffer value -> linear view depth for a perspective projection.
 
-// Seed 002's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
+// The advanced shaders tutorial's 2nf / (f + n - z (f - n)) with z = 2d - 1, rewritten exactly as
 // n / ((1 - d) + d n / f): no cancellation near d = 1, and f = inf (or 1e38) is the
 // infinite-far-plane limit n / (1 - d). Guards: d clamped to [0, 1], near floored at 1e-6,
 // far at near, and the denominator at n * 1e-30, so the sky (d = 1, f = inf) gives a large
@@ -167,7 +167,7 @@ float wg_linearize_depth_known(float depth, vec2 near_far) {
   return n / ((1.0 - depth) + depth * r);
 }
 
-// A normal from a height texture by central differences (seed 001's wave normals).
+// A normal from a height texture by central differences (the deferred water article's wave normals).
 
 // The red channel at uv as GL_LINEAR + GL_REPEAT define it, computed in float from the
 // four texels (texelFetch): hardware filtering quantises the weights (8 bits of sub-texel
@@ -197,9 +197,9 @@ vec2 wg_normal_from_height_gradient(sampler2D tex, vec2 uv, float e) {
   return vec2(hx, hy) * (0.5 / d);
 }
 
-// phong_specular: seed 001's Phong specular of the sun and of the environment light.
+// phong_specular: the deferred water article's Phong specular of the sun and of the environment light.
 
-// Seed 001, listing 9: the light direction L mirrored about N, R = 2(N.L)N - L, against
+// The deferred water article, listing 9: the light direction L mirrored about N, R = 2(N.L)N - L, against
 // the unit direction to the viewer: max(R.V, 0), kept in [0, 1]. (Equal to
 // max(dot(reflect(-V, N), L), 0), the view ray reflected against the light.)
 float wg_phong_specular_lobe(vec3 n, vec3 v, vec3 l) {
@@ -249,11 +249,11 @@ vec3 wg_scene_depth_position(vec2 uv, float lin, vec3 camera, mat4 view, mat4 pr
   return clamp(camera + world * lin, vec3(-1e30), vec3(1e30));
 }
 
-// ssr: screen-space reflection by a fixed number of ray-march steps (seed 001, listing 8).
+// ssr: screen-space reflection by a fixed number of ray-march steps (the deferred water article, listing 8).
 
-// Marches the reflected ray origin + t dir, t = (i + 0.5) step, with seed 001's step
+// Marches the reflected ray origin + t dir, t = (i + 0.5) step, with the deferred water article's step
 // length step / max(0.6, cos^2) (longer steps for grazing reflections, cos = R.N) and a
-// hit test whose squared tolerance grows by `growth` per step (seed: 16 * 1.1^i), here on
+// hit test whose squared tolerance grows by `growth` per step (the article: 16 * 1.1^i), here on
 // the difference between the ray's view depth and the scene's linear depth at the ray's
 // screen position. A point with clip w <= 1e-6 (behind or at the camera) or outside the
 // screen ends the march without a hit, so no division by w <= 0 ever happens.
@@ -278,7 +278,7 @@ vec3 wg_ssr_march(sampler2D scene_depth, vec3 origin, vec3 dir, float cos_rn, ma
   return vec3(0.5, 0.5, 0.0);
 }
 
-// Seed 001's fade of a reflection found at uv: towards the screen edges
+// The deferred water article's fade of a reflection found at uv: towards the screen edges
 // max(1 - (0.01 + |2 uv - 1|^2)^(1/4), 0) (0.68 at the centre, 0 near the corners), times
 // min(1, fade_distance / d) with d the surface's view distance (floored at 1e-6).
 float wg_ssr_fade(vec2 uv, float dist, float fade_distance) {
@@ -287,14 +287,14 @@ float wg_ssr_fade(vec2 uv, float dist, float fade_distance) {
   return edge * min(1.0, max(fade_distance, 0.0) / max(dist, 1e-6));
 }
 
-// Texture caustics (seed 001, listing 14): two samples of a height texture scrolling in
+// Texture caustics (the deferred water article, listing 14): two samples of a height texture scrolling in
 // opposite directions; where they sum to 1 the light focuses.
 
 // The caustic texture coordinates of a world point: (scale x + 0.5, 0.5 - scale z).
 vec2 wg_texture_caustics_uv(vec3 pos, float scale) { return vec2(scale * pos.x + 0.5, 0.5 - scale * pos.z); }
 
 // The focusing shape of the two samples: clamp(1 - |a + b - 1|, 0, 1)^9, the ninth power
-// taken as two cubes (as the seed does), so it needs no pow and the base is never negative.
+// taken as two cubes (as the source does), so it needs no pow and the base is never negative.
 float wg_texture_caustics_shape(float a, float b) {
   float c = clamp(1.0 - abs(a + b - 1.0), 0.0, 1.0);
   c *= c * c;
@@ -302,10 +302,10 @@ float wg_texture_caustics_shape(float a, float b) {
   return c;
 }
 
-// Seed 001's 3D wave: a trochoid-like wave sin(phase - 0.5 cos(phase)) plus a height-texture
+// The deferred water article's 3D wave: a trochoid-like wave sin(phase - 0.5 cos(phase)) plus a height-texture
 // detail, found along the view ray by bisection (the deferred water renderer's listing 6).
 
-// The height-texture coordinate of a world point: (s x + 0.5, 0.5 - s z), as in seed 001.
+// The height-texture coordinate of a world point: (s x + 0.5, 0.5 - s z), as in the deferred water article.
 vec2 wg_trochoid_wave_uv(vec2 xz, float texScale) {
   return vec2(texScale * xz.x + 0.5, 0.5 - texScale * xz.y);
 }
@@ -323,11 +323,11 @@ float wg_trochoid_wave_height(vec2 xz, float amplitude, vec2 waveVector, float t
   return amplitude * (sin(phi - 0.5 * cos(phi)) + detail * (2.0 * h - 1.0));
 }
 
-// Bisection along the ray from `origin` in the unit direction `dir` (seed 001, listing 6).
+// Bisection along the ray from `origin` in the unit direction `dir` (the deferred water article, listing 6).
 // The ray meets the flat surface y = surfaceY at P0 (distance clamped to [0, maxDistance],
 // |dir.y| floored at 1e-6). The wave lies within +-M = A (1 + |detail|) of that plane, so
-// along the ray within L = M / max(|dir.y|, 0.1) of P0 (seed 001's 10 M at grazing views).
-// Seed 001 searches only the stretch before P0 and so misses troughs below the plane; here
+// along the ray within L = M / max(|dir.y|, 0.1) of P0 (the deferred water article's 10 M at grazing views).
+// The deferred water article searches only the stretch before P0 and so misses troughs below the plane; here
 // the search is centred on P0: each step halves, moving towards the camera while the point
 // is below the wave and away from it while above (the signs swap for a camera below).
 vec3 wg_trochoid_wave_march(vec3 origin, vec3 dir, float surfaceY, float amplitude, vec2 waveVector, float timePhase,
@@ -361,12 +361,12 @@ vec3 wg_trochoid_wave_normal(vec2 xz, float amplitude, vec2 waveVector, float ti
   return wg_safe_normalize_vec3(vec3(-dhdx, 1.0, -dhdz));
 }
 
-// underwater: seed 001's five camera/pixel cases of deferred water, run as a full-screen
+// underwater: the deferred water article's five camera/pixel cases of deferred water, run as a full-screen
 // pass. `water` is the water G-buffer at this pixel: the surface's world position (xyz)
 // and its depth-buffer value (w; 1.0 where no water surface covers the pixel). `scene` is
 // the opaque scene's world position there and `sky` 1 where the scene depth is 1.0.
 
-// Largest component: seed 001 scales the caustics by the brightest channel of the scene.
+// Largest component: the deferred water article scales the caustics by the brightest channel of the scene.
 float wg_underwater_max3(vec3 c) { return max(c.r, max(c.g, c.b)); }
 
 // Camera above the water (cases 1, 4, 5). Returns (colour, case).
@@ -374,11 +374,11 @@ float wg_underwater_max3(vec3 c) { return max(c.r, max(c.g, c.b)); }
 //    along this ray): the scene colour unchanged.
 // 4: scene under water and light still comes through (max transmittance > 1/256 over the
 //    in-water distance d_S - d_W) and nearer than the haze distance: Beer-Lambert
-//    absorption, refraction by a distortion strength * (1 - T.b) * N.xz (seed listing 16),
+//    absorption, refraction by a distortion strength * (1 - T.b) * N.xz (the article's listing 16),
 //    caustics scaled by the brightest channel (listing 18), the water's own colour by the
 //    absorbed part, the surface light added on top, then haze by the surface distance.
 // 5: otherwise the water body is opaque: only its own colour, the surface light and haze
-//    (the seed's case 5; no scene look-ups).
+//    (the article's case 5; no scene look-ups).
 vec4 wg_underwater_from_above(sampler2D scene_color, vec2 uv, vec4 water, vec3 scene, float sky, vec3 camera,
                               vec3 n, vec3 surface, float transmittance, vec3 water_color, float diffuse,
                               vec3 sigma, float strength, float caustics, vec3 caustics_color,
@@ -403,7 +403,7 @@ vec4 wg_underwater_from_above(sampler2D scene_color, vec2 uv, vec4 water, vec3 s
 }
 
 // Camera under the water (cases 2, 3). Returns (colour, case). Light falls off with the
-// camera's depth below the water level: k = min(1, depth_light / depth) (seed listings
+// camera's depth below the water level: k = min(1, depth_light / depth) (the article's listings
 // 10-11, floored depth 1e-6).
 // 2: the scene point is under water (or no surface lies in between): absorption over the
 //    camera-scene distance, caustics, the water's colour by the absorbed part.
@@ -430,7 +430,7 @@ vec4 wg_underwater_from_below(sampler2D scene_color, vec2 uv, vec4 water, vec3 s
 }
 
 // Value noise: hashed values on the integer lattice, blended with the cubic Hermite weight
-// 3t^2 - 2t^3 (seed 004's valueNoise, with the PCG hash of hash.glsl in place of its
+// 3t^2 - 2t^3 (the top-down water plan's valueNoise, with the PCG hash of hash.glsl in place of its
 // fract-based hash21). Output in [0, 1).
 
 // The lattice value of an integer cell: the first hashed word as a float in [0, 1).
@@ -454,10 +454,10 @@ float wg_value_noise_tiled_vec2(vec2 p, uint mask) {
   return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
 }
 
-// Crest foam (seed 004's calculateFoam): whitecaps where the wave is high or steep, broken
+// Crest foam (the top-down water plan's calculateFoam): whitecaps where the wave is high or steep, broken
 // into patches by two layers of drifting value noise.
 
-// height: the wave height (seed 004's 0..1 raw height); normal: the surface normal (y up,
+// height: the wave height (the top-down water plan's 0..1 raw height); normal: the surface normal (y up,
 // so the slope is the length of its xz part once normalised); drift: the two noise time
 // offsets, already wrapped to the noise lattice's 256-cell period by the caller so the
 // patches drift seamlessly at any time. The product is clamped to [0, 1] before the

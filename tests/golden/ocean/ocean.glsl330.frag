@@ -55,7 +55,7 @@ float wg_fresnel_schlick(float cosi, float f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
-// ggx_specular: Cook-Torrance microfacet specular of seed 002 (GGX D, Schlick F, Smith G).
+// ggx_specular: Cook-Torrance microfacet specular of the advanced shaders tutorial (GGX D, Schlick F, Smith G).
 
 // GGX / Trowbridge-Reitz normal distribution, a2 / (pi d^2) with d written as
 // NdotH^2 a2 + (1 - NdotH^2) instead of NdotH^2 (a2 - 1) + 1: in float32 the latter
@@ -120,7 +120,7 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 // the CPU's value bit for bit.
 float wg_hash_unit_float(uint h) { return float(h >> 8u) * 5.9604644775390625e-8; }
 
-// Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
+// Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
 // The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
 // so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
@@ -131,7 +131,7 @@ vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
 vec3 wg_normal_map_scroll_unpack(vec4 texel) { return texel.xyz * 2.0 - 1.0; }
 
-// Linear blend of the seeds: normalize(a + b).
+// Linear blend of the two sources: normalize(a + b).
 vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a + b); }
 
 // The blended tangent-space normal with its slope scaled by `strength`.
@@ -163,7 +163,7 @@ float wg_subsurface_intensity_unit(vec3 n, vec3 v, vec3 l, float distortion, flo
 }
 
 // Value noise: hashed values on the integer lattice, blended with the cubic Hermite weight
-// 3t^2 - 2t^3 (seed 004's valueNoise, with the PCG hash of hash.glsl in place of its
+// 3t^2 - 2t^3 (the top-down water plan's valueNoise, with the PCG hash of hash.glsl in place of its
 // fract-based hash21). Output in [0, 1).
 
 // The lattice value of an integer cell: the first hashed word as a float in [0, 1).
@@ -187,10 +187,10 @@ float wg_value_noise_tiled_vec2(vec2 p, uint mask) {
   return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
 }
 
-// Crest foam (seed 004's calculateFoam): whitecaps where the wave is high or steep, broken
+// Crest foam (the top-down water plan's calculateFoam): whitecaps where the wave is high or steep, broken
 // into patches by two layers of drifting value noise.
 
-// height: the wave height (seed 004's 0..1 raw height); normal: the surface normal (y up,
+// height: the wave height (the top-down water plan's 0..1 raw height); normal: the surface normal (y up,
 // so the slope is the length of its xz part once normalised); drift: the two noise time
 // offsets, already wrapped to the noise lattice's 256-cell period by the caller so the
 // patches drift seamlessly at any time. The product is clamped to [0, 1] before the

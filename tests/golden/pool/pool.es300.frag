@@ -43,7 +43,7 @@ float wg_safe_pow_float(float x, float y) {
   return x > 0.0 ? p : edge;
 }
 
-// blinn_phong: specular highlight from the half vector (seed 002, level 2).
+// blinn_phong: specular highlight from the half vector (the advanced shaders tutorial, level 2).
 
 // pow(max(N.H, 0), shininess) with H = normalize(L + V). When L = -V the half vector is
 // zero and N.H = 0, so the highlight is 0 (the safe pow: 0^s = 0 for s > 0, 1 for s <= 0).
@@ -91,7 +91,7 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 
 vec3 wg_hash_unit_vec3(uvec3 h) { return vec3(h >> 8u) * 5.9604644775390625e-8; }
 
-// lambert: diffuse lighting by Lambert's cosine law (seed 002, level 1).
+// lambert: diffuse lighting by Lambert's cosine law (the advanced shaders tutorial, level 1).
 
 // max(N.L, 0) with both vectors normalised safely, kept in [0, 1]: a zero vector gives 0.
 float wg_lambert(vec3 n, vec3 l) {
@@ -145,7 +145,7 @@ vec3 wg_scene_depth_position(vec2 uv, float lin, vec3 camera, mat4 view, mat4 pr
   return clamp(camera + world * lin, vec3(-1e30), vec3(1e30));
 }
 
-// Seed 002's procedural wave normals from layered sines ("Approach 1"): a flat up normal
+// The advanced shaders tutorial's procedural wave normals from layered sines ("Approach 1"): a flat up normal
 // tilted by three layers of products of sines, large and slow to small and fast. Each
 // argument is a spatial part, wrapped to [0, 2 pi) so sin stays accurate at 1e5 m, plus a
 // time phase mod(omega t, 2 pi) computed in double on the CPU.
@@ -212,7 +212,7 @@ float wg_voronoi_f1(vec2 p, float jitter, float phase, bool animated, bool full)
   return sqrt(d2);
 }
 
-// Voronoi caustics (seed 003, section 6): bright lines where the Voronoi F1 is small,
+// Voronoi caustics (the stylized water shader, section 6): bright lines where the Voronoi F1 is small,
 // intensity (1 - d)^3 per layer.
 
 // One layer: F1 clamped to [0, 1] before inverting, since F1 can exceed 1 (up to ~1.4 with

@@ -44,22 +44,22 @@ float wg_depth_tint_smooth(float depth, float max_depth) {
   return wg_smoothstep_float(0.0, max(max_depth, 1e-6), depth);
 }
 
-// Edge foam (seeds 002 and 003): foam where the water is shallow, from a two-layer
+// Edge foam (the advanced shaders tutorial and the stylized water shader): foam where the water is shallow, from a two-layer
 // scrolling foam texture (the two samples are taken by the node; these shape them).
 
-// Depth mask, seed 002: 1 - smoothstep(0, width, depth); 1 at the edge, 0 from width on.
+// Depth mask, the advanced shaders tutorial: 1 - smoothstep(0, width, depth); 1 at the edge, 0 from width on.
 // A width <= 0 becomes a step at depth 0 (wg_smoothstep_float's equal edges).
 float wg_edge_foam_mask_smooth(float depth, float width) {
   return 1.0 - wg_smoothstep_float(0.0, max(width, 0.0), depth);
 }
 
-// Seed 003's step(cutoff, texture * mask) * strength, softened over `softness` (0 gives the
-// seed's step; equal edges are defined by wg_smoothstep_float), limited to [0, 1].
+// The stylized water shader's step(cutoff, texture * mask) * strength, softened over `softness` (0 gives the
+// source's step; equal edges are defined by wg_smoothstep_float), limited to [0, 1].
 float wg_edge_foam(float tex, float mask, float cutoff, float softness, float strength) {
   return clamp(strength * wg_smoothstep_float(cutoff, cutoff + max(softness, 0.0), tex * mask), 0.0, 1.0);
 }
 
-// Flow maps (seed 003; Catlike Coding's "Texture Distortion"): a texture dragged along a
+// Flow maps (the stylized water shader; Catlike Coding's "Texture Distortion"): a texture dragged along a
 // flow vector in two phases half a cycle apart, cross-faded by triangle waves so the
 // reset of each phase is never seen.
 
@@ -119,7 +119,7 @@ vec3 wg_remap_nonempty_vec3(vec3 x, vec3 a, vec3 b, vec3 c, vec3 d) { return mix
 // the screen, no stretched border texels).
 vec2 wg_scene_color_uv(vec2 uv, vec2 offset) { return clamp(uv + offset, vec2(0.0), vec2(1.0)); }
 
-// Shore waves (seed 003, section 9): bands of foam running up the shore,
+// Shore waves (the stylized water shader, section 9): bands of foam running up the shore,
 // (sin(depth * frequency - speed * t) / 2 + 1/2)^2, fading out by `dist` metres of depth.
 
 // phase = mod(speed t, 2 pi) from the caller. Depth is clamped to [0, dist] first, so

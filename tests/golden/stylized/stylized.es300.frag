@@ -50,18 +50,18 @@ float wg_smoothstep_float(float e0, float e1, float x) {
 // at least that): the floor is dead.
 float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
 
-// Depth mask, seed 003: 1 - saturate(depth / width), width floored at 1e-6.
+// Depth mask, the stylized water shader: 1 - saturate(depth / width), width floored at 1e-6.
 float wg_edge_foam_mask_linear(float depth, float width) {
   return 1.0 - clamp(depth / max(width, 1e-6), 0.0, 1.0);
 }
 
-// Seed 003's step(cutoff, texture * mask) * strength, softened over `softness` (0 gives the
-// seed's step; equal edges are defined by wg_smoothstep_float), limited to [0, 1].
+// The stylized water shader's step(cutoff, texture * mask) * strength, softened over `softness` (0 gives the
+// source's step; equal edges are defined by wg_smoothstep_float), limited to [0, 1].
 float wg_edge_foam(float tex, float mask, float cutoff, float softness, float strength) {
   return clamp(strength * wg_smoothstep_float(cutoff, cutoff + max(softness, 0.0), tex * mask), 0.0, 1.0);
 }
 
-// Flow maps (seed 003; Catlike Coding's "Texture Distortion"): a texture dragged along a
+// Flow maps (the stylized water shader; Catlike Coding's "Texture Distortion"): a texture dragged along a
 // flow vector in two phases half a cycle apart, cross-faded by triangle waves so the
 // reset of each phase is never seen.
 
@@ -115,7 +115,7 @@ float wg_linearize_depth_known(float depth, vec2 near_far) {
   return n / ((1.0 - depth) + depth * r);
 }
 
-// Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
+// Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
 // The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
 // so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
@@ -126,7 +126,7 @@ vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
 vec3 wg_normal_map_scroll_unpack(vec4 texel) { return texel.xyz * 2.0 - 1.0; }
 
-// Linear blend of the seeds: normalize(a + b).
+// Linear blend of the two sources: normalize(a + b).
 vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a + b); }
 
 // The blended tangent-space normal with its slope scaled by `strength`.
@@ -158,7 +158,7 @@ vec3 wg_scene_depth_position(vec2 uv, float lin, vec3 camera, mat4 view, mat4 pr
   return clamp(camera + world * lin, vec3(-1e30), vec3(1e30));
 }
 
-// Shore waves (seed 003, section 9): bands of foam running up the shore,
+// Shore waves (the stylized water shader, section 9): bands of foam running up the shore,
 // (sin(depth * frequency - speed * t) / 2 + 1/2)^2, fading out by `dist` metres of depth.
 
 // phase = mod(speed t, 2 pi) from the caller. Depth is clamped to [0, dist] first, so
@@ -221,7 +221,7 @@ float wg_voronoi_f1(vec2 p, float jitter, float phase, bool animated, bool full)
   return sqrt(d2);
 }
 
-// Voronoi caustics (seed 003, section 6): bright lines where the Voronoi F1 is small,
+// Voronoi caustics (the stylized water shader, section 6): bright lines where the Voronoi F1 is small,
 // intensity (1 - d)^3 per layer.
 
 // One layer: F1 clamped to [0, 1] before inverting, since F1 can exceed 1 (up to ~1.4 with

@@ -9,7 +9,7 @@ out vec3 te_position[];
 out vec2 te_uv[];
 uniform vec3 u_camera_position;
 
-// Distance-based tessellation factor of seed 003: full detail up to min_distance from the
+// Distance-based tessellation factor of the stylized water shader: full detail up to min_distance from the
 // camera, falling linearly to 1% of it at max_distance, never below one segment. The
 // distance range is floored so equal distances cannot divide by zero.
 float wg_tess_distance_factor(vec3 p, vec3 camera, float min_distance, float max_distance, float factor) {

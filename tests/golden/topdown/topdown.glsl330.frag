@@ -21,7 +21,7 @@ uniform float u_phase11;
 uniform vec3 p_water_color;
 uniform vec3 p_foam_color;
 
-// color_variation: seed 004's colour variation of the water body: sun-facing slopes warmer,
+// color_variation: the top-down water plan's colour variation of the water body: sun-facing slopes warmer,
 // a slow value-noise hue shift, troughs darker. Its value noise uses an integer hash
 // (no fract(sin)), so the CPU reference reproduces the GPU's lattice values bit for bit.
 
@@ -41,7 +41,7 @@ float wg_color_variation_cell(ivec2 cell) {
 }
 
 // Value noise in [0, 1): smoothstep-weighted bilinear blend of the four lattice values
-// around p (seed 004's valueNoise with an integer hash). Periodic over 256 units, so p is
+// around p (the top-down water plan's valueNoise with an integer hash). Periodic over 256 units, so p is
 // wrapped first: huge coordinates never overflow the int conversion, and a time drift
 // wrapped to the same period moves the pattern without a seam.
 float wg_color_variation_noise(vec2 p) {
@@ -59,7 +59,7 @@ float wg_color_variation_noise(vec2 p) {
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
-// Seed 004, section 5, for a y-up world (the seed's top-down x/y plane is our x/z plane):
+// The top-down water plan, section 5, for a y-up world (the plan's top-down x/y plane is our x/z plane):
 // slope shift from the horizontal alignment of the normal with the sun (mix factor kept
 // in [0, 1]), hue shift by the noise, trough darkening (1 - height) * trough with the
 // height kept in [0, 1].
@@ -86,7 +86,7 @@ float wg_safe_pow_float(float x, float y) {
   return x > 0.0 ? p : edge;
 }
 
-// blinn_phong: specular highlight from the half vector (seed 002, level 2).
+// blinn_phong: specular highlight from the half vector (the advanced shaders tutorial, level 2).
 
 // pow(max(N.H, 0), shininess) with H = normalize(L + V). When L = -V the half vector is
 // zero and N.H = 0, so the highlight is 0 (the safe pow: 0^s = 0 for s > 0, 1 for s <= 0).
@@ -105,7 +105,7 @@ float wg_smoothstep_float(float e0, float e1, float x) {
   return e0 == e1 ? stepped : eased;
 }
 
-// Gerstner waves (GPU Gems 1 ch. 1; seed 003): the sum of trochoidal waves, each moving
+// Gerstner waves (GPU Gems 1 ch. 1; the stylized water shader): the sum of trochoidal waves, each moving
 // the surface point horizontally along its direction and vertically, with the exact
 // partial derivatives of the displaced surface so vertex displacement and fragment normals
 // agree.
@@ -153,7 +153,7 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 // the CPU's value bit for bit.
 float wg_hash_unit_float(uint h) { return float(h >> 8u) * 5.9604644775390625e-8; }
 
-// lambert: diffuse lighting by Lambert's cosine law (seed 002, level 1).
+// lambert: diffuse lighting by Lambert's cosine law (the advanced shaders tutorial, level 1).
 
 // max(N.L, 0) with both vectors normalised safely, kept in [0, 1]: a zero vector gives 0.
 float wg_lambert(vec3 n, vec3 l) {
@@ -164,7 +164,7 @@ float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float 
   return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
-// Seed 004's high-frequency ripples: sin-based analytic noise, three layers of two sines
+// The top-down water plan's high-frequency ripples: sin-based analytic noise, three layers of two sines
 // each at high, incommensurate frequencies, added to the normal's horizontal components.
 
 // One layer: (sin(dot(fa, uv) + phase.x), sin(dot(fb, uv) + phase.y)) with freq = (fa, fb);
@@ -175,7 +175,7 @@ vec2 wg_ripple_normals_layer(vec2 uv, vec4 freq, vec2 phase) {
 }
 
 // Value noise: hashed values on the integer lattice, blended with the cubic Hermite weight
-// 3t^2 - 2t^3 (seed 004's valueNoise, with the PCG hash of hash.glsl in place of its
+// 3t^2 - 2t^3 (the top-down water plan's valueNoise, with the PCG hash of hash.glsl in place of its
 // fract-based hash21). Output in [0, 1).
 
 // The lattice value of an integer cell: the first hashed word as a float in [0, 1).
@@ -199,10 +199,10 @@ float wg_value_noise_tiled_vec2(vec2 p, uint mask) {
   return mix(mix(a, b, u.x), mix(d, e, u.x), u.y);
 }
 
-// Crest foam (seed 004's calculateFoam): whitecaps where the wave is high or steep, broken
+// Crest foam (the top-down water plan's calculateFoam): whitecaps where the wave is high or steep, broken
 // into patches by two layers of drifting value noise.
 
-// height: the wave height (seed 004's 0..1 raw height); normal: the surface normal (y up,
+// height: the wave height (the top-down water plan's 0..1 raw height); normal: the surface normal (y up,
 // so the slope is the length of its xz part once normalised); drift: the two noise time
 // offsets, already wrapped to the noise lattice's 256-cell period by the caller so the
 // patches drift seamlessly at any time. The product is clamped to [0, 1] before the

@@ -45,17 +45,17 @@ float wg_depth_tint_smooth(float depth, float max_depth) {
   return wg_smoothstep_float(0.0, max(max_depth, 1e-6), depth);
 }
 
-// Edge foam (seeds 002 and 003): foam where the water is shallow, from a two-layer
+// Edge foam (the advanced shaders tutorial and the stylized water shader): foam where the water is shallow, from a two-layer
 // scrolling foam texture (the two samples are taken by the node; these shape them).
 
-// Depth mask, seed 002: 1 - smoothstep(0, width, depth); 1 at the edge, 0 from width on.
+// Depth mask, the advanced shaders tutorial: 1 - smoothstep(0, width, depth); 1 at the edge, 0 from width on.
 // A width <= 0 becomes a step at depth 0 (wg_smoothstep_float's equal edges).
 float wg_edge_foam_mask_smooth(float depth, float width) {
   return 1.0 - wg_smoothstep_float(0.0, max(width, 0.0), depth);
 }
 
-// Seed 003's step(cutoff, texture * mask) * strength, softened over `softness` (0 gives the
-// seed's step; equal edges are defined by wg_smoothstep_float), limited to [0, 1].
+// The stylized water shader's step(cutoff, texture * mask) * strength, softened over `softness` (0 gives the
+// source's step; equal edges are defined by wg_smoothstep_float), limited to [0, 1].
 float wg_edge_foam(float tex, float mask, float cutoff, float softness, float strength) {
   return clamp(strength * wg_smoothstep_float(cutoff, cutoff + max(softness, 0.0), tex * mask), 0.0, 1.0);
 }
@@ -74,7 +74,7 @@ float wg_fresnel_schlick(float cosi, float f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
-// ggx_specular: Cook-Torrance microfacet specular of seed 002 (GGX D, Schlick F, Smith G).
+// ggx_specular: Cook-Torrance microfacet specular of the advanced shaders tutorial (GGX D, Schlick F, Smith G).
 
 // GGX / Trowbridge-Reitz normal distribution, a2 / (pi d^2) with d written as
 // NdotH^2 a2 + (1 - NdotH^2) instead of NdotH^2 (a2 - 1) + 1: in float32 the latter
@@ -127,7 +127,7 @@ float wg_linearize_depth_known(float depth, vec2 near_far) {
   return n / ((1.0 - depth) + depth * r);
 }
 
-// Two scrolling samples of a tangent-space normal map, blended (seeds 002 and 003).
+// Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
 // The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
 // so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
@@ -138,7 +138,7 @@ vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
 vec3 wg_normal_map_scroll_unpack(vec4 texel) { return texel.xyz * 2.0 - 1.0; }
 
-// Linear blend of the seeds: normalize(a + b).
+// Linear blend of the two sources: normalize(a + b).
 vec3 wg_normal_map_scroll_add(vec3 a, vec3 b) { return wg_safe_normalize_vec3(a + b); }
 
 // The blended tangent-space normal with its slope scaled by `strength`.
@@ -156,7 +156,7 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
   return wg_safe_normalize_vec3(reflect(-vv, nn));
 }
 
-// refract_dir: Snell refraction of the view ray through the water surface (seed 002's
+// refract_dir: Snell refraction of the view ray through the water surface (the advanced shaders tutorial's
 // refract(-V, N, n1/n2)), with total internal reflection handled explicitly.
 
 // The refracted direction of the ray -V through a surface whose normal N faces the viewer;

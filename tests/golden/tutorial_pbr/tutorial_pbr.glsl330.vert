@@ -14,7 +14,7 @@ uniform float u_phase4;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
-// Gerstner waves (GPU Gems 1 ch. 1; seed 003): the sum of trochoidal waves, each moving
+// Gerstner waves (GPU Gems 1 ch. 1; the stylized water shader): the sum of trochoidal waves, each moving
 // the surface point horizontally along its direction and vertically, with the exact
 // partial derivatives of the displaced surface so vertex displacement and fragment normals
 // agree.
