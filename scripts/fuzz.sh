@@ -9,7 +9,9 @@
 #   BUILD_DIR  build folder (default build-fuzz: Clang, RelWithDebInfo, ASan + UBSan +
 #              coverage, no tests, no runtime). CI passes build-asan, which
 #              scripts/sanitize.sh already built with the fuzzers in it.
-#   JOBS       build and fuzzing jobs (default 2 for the build, 1 fuzzing process).
+#   JOBS       build jobs (default 2).
+#   FUZZ_LANES targets fuzzed side by side (default 1; CI uses 2, one per core), each
+#              one libFuzzer process; the order of the list is kept within a lane.
 #   FUZZ_ARGS  extra libFuzzer flags, e.g. "-jobs=8 -workers=8" for a long run.
 # The working corpus grows in $BUILD_DIR/fuzz/corpus/<target>/ and is kept between runs;
 # it starts from the minimised corpus kept in tests/fuzz/corpus/<target>/ and, for the JSON
@@ -44,14 +46,19 @@ mkdir -p "$FUZZ_DIR"
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 
-status=0
-summary=()
-for t in "${TARGETS[@]}"; do
-  corpus=$FUZZ_DIR/corpus/$t
-  crashes=$FUZZ_DIR/crashes/$t
+# One target's run; leaves its summary line in $FUZZ_DIR/.summary-<target> and, on a crash
+# or a non-zero exit, the marker $FUZZ_DIR/.failed-<target>.
+fuzz_one() {
+  set +e  # a lane reports its failure through the marker, never by dying half-way
+  local t=$1
+  rm -f "$FUZZ_DIR/.summary-$t"
+  local corpus=$FUZZ_DIR/corpus/$t
+  local crashes=$FUZZ_DIR/crashes/$t
   mkdir -p "$corpus" "$crashes"
+  rm -f "$FUZZ_DIR/.failed-$t"
   # Inputs over 64 KiB add little but time; the pipeline target validates with glslang
   # (tens of milliseconds per graph), so its time-out per input is generous.
+  local limits
   case $t in
     loader) limits=(-max_len=65536 -timeout=10 -rss_limit_mb=4096) ;;
     compile) limits=(-max_len=16384 -timeout=30 -rss_limit_mb=4096) ;;
@@ -60,34 +67,48 @@ for t in "${TARGETS[@]}"; do
     edit_ops) limits=(-max_len=1024 -timeout=10 -rss_limit_mb=4096) ;;
   esac
   # The texture and edit-sequence targets check cheap properties over a small input space:
-  # half the time, which keeps CI's fuzzing step at four minutes for five targets.
-  seconds=$SECONDS_EACH
+  # half the time.
+  local seconds=$SECONDS_EACH
   case $t in texture|edit_ops) seconds=$(( (SECONDS_EACH + 1) / 2 )) ;; esac
-  marker=$FUZZ_DIR/.start-$t
+  local marker=$FUZZ_DIR/.start-$t
   touch "$marker"
-  log=$FUZZ_DIR/$t.log
+  local log=$FUZZ_DIR/$t.log
   echo "fuzz: $t for ${seconds} s (log: $log)"
-  set +e
   # Run inside the corpus folder: relative texture paths in inputs resolve there.
-  seeds=("$ROOT/graphs" "$ROOT/tests/bad" "$ROOT/tests/fuzz/regressions")
-  dict=(-dict="$FUZZ_DIR/graph.dict")
+  local seeds=("$ROOT/graphs" "$ROOT/tests/bad" "$ROOT/tests/fuzz/regressions")
+  local dict=(-dict="$FUZZ_DIR/graph.dict")
   case $t in graphgen|texture|edit_ops) seeds=() && dict=() ;; esac  # their inputs are choices, not JSON
   [ "$t" = texture ] && dict=(-dict="$ROOT/tests/fuzz/texture.dict")
   [ -d "$ROOT/tests/fuzz/corpus/$t" ] && seeds+=("$ROOT/tests/fuzz/corpus/$t")
+  local rc
   (cd "$corpus" && "$ROOT/$BUILD_DIR/bin/wg_fuzz_$t" "$corpus" ${seeds[@]+"${seeds[@]}"} ${dict[@]+"${dict[@]}"} -max_total_time="$seconds" \
       -artifact_prefix="$crashes/" -print_final_stats=1 "${limits[@]}" ${FUZZ_ARGS:-}) >"$log" 2>&1
   rc=$?
-  set -e
+  local execs found size compiled
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -1)
   found=$(find "$crashes" -type f -newer "$marker" | wc -l)  # this run's
   size=$(find "$corpus" -type f | wc -l)
   compiled=$(grep -o '[0-9]* compiled for every target' "$log" | tail -1 | grep -o '^[0-9]*' || true)
-  summary+=("$(printf '%-8s executions %-9s corpus %-6s crashes %s%s (exit %s)' "$t" "${execs:-?}" "$size" "$found" \
-    "${compiled:+, compiled for every target $compiled}" "$rc")")
+  printf '%-8s executions %-9s corpus %-6s crashes %s%s (exit %s)\n' "$t" "${execs:-?}" "$size" "$found" \
+    "${compiled:+, compiled for every target $compiled}" "$rc" >"$FUZZ_DIR/.summary-$t"
   if [ "$rc" -ne 0 ] || [ "$found" -ne 0 ]; then
-    status=1
+    touch "$FUZZ_DIR/.failed-$t"
     tail -40 "$log" >&2
   fi
+}
+
+lanes=${FUZZ_LANES:-1}
+for t in "${TARGETS[@]}"; do
+  while [ "$(jobs -rp | wc -l)" -ge "$lanes" ]; do wait -n || true; done
+  fuzz_one "$t" &
+done
+wait
+
+status=0
+summary=()
+for t in "${TARGETS[@]}"; do
+  summary+=("$(cat "$FUZZ_DIR/.summary-$t" 2>/dev/null || echo "$t did not finish")")
+  if [ -e "$FUZZ_DIR/.failed-$t" ] || [ ! -e "$FUZZ_DIR/.summary-$t" ]; then status=1; fi
 done
 printf 'fuzz: %s\n' "${summary[@]}"
 exit $status

@@ -2,10 +2,11 @@
 # The whole test suite under AddressSanitizer + UndefinedBehaviorSanitizer
 # (docs/robustness.md). Configures build-asan (RelWithDebInfo, Clang), builds, runs ctest.
 #
-#   scripts/sanitize.sh            # every suite
-#   scripts/sanitize.sh -E runtime # ctest arguments pass through (here: skip the GL suite)
+#   scripts/sanitize.sh            # the suite less tests/sanitizer_excluded.txt (says why)
+#   SANITIZE_ALL=1 scripts/sanitize.sh   # every test
+#   scripts/sanitize.sh -R Loader  # ctest arguments pass through (here: only the loader's)
 #
-# Environment: BUILD_DIR (default build-asan), JOBS (default 2).
+# Environment: BUILD_DIR (default build-asan), JOBS (default 2), SANITIZE_ALL.
 # With Clang the same build also holds the fuzz targets (WG_BUILD_FUZZERS=ON adds coverage
 # instrumentation), so `BUILD_DIR=build-asan scripts/fuzz.sh` reuses it instead of a
 # second instrumented build. Without Clang it falls back to GCC's sanitizers, no fuzzers.
@@ -35,4 +36,10 @@ export LSAN_OPTIONS=${LSAN_OPTIONS:-suppressions=$PWD/tests/robustness/lsan.supp
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
 export MESA_SHADER_CACHE_DISABLE=true
 cd "$BUILD_DIR"
-ctest --output-on-failure -j "$JOBS" --timeout 600 "$@"
+excluded=()
+if [ -z "${SANITIZE_ALL:-}" ]; then
+  # One alternation of the file's expressions (comments and blank lines skipped).
+  regex=$(grep -v -e '^#' -e '^[[:space:]]*$' ../tests/sanitizer_excluded.txt | paste -sd '|')
+  [ -n "$regex" ] && excluded=(-E "$regex")
+fi
+ctest --output-on-failure -j "$JOBS" --timeout 600 ${excluded[@]+"${excluded[@]}"} "$@"
