@@ -94,7 +94,8 @@ struct Graph {
   std::vector<Parameter> parameters;  // file order
   std::vector<Preset> presets;        // file order
   std::vector<Node> nodes;            // file order
-  std::vector<GraphOutput> outputs;   // saved in OutputSlot order
+  std::vector<GraphOutput> outputs;   // saved in OutputSlot order; may be empty (resolve refuses it)
+  SourceRef outputsWhere;             // the "outputs" object, for "connects no outputs"
 
   const Node* findNode(std::string_view id) const;
   const Parameter* findParameter(std::string_view name) const;

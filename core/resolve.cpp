@@ -417,6 +417,8 @@ class Resolver {
   }
 
   void resolveOutputs() {
+    if (graph_.outputs.empty())
+      diags_.error(DiagCode::NoOutputs, graph_.outputsWhere, "the graph connects no outputs");
     for (const auto& out : graph_.outputs) {
       std::string label = "output '" + std::string(outputSlotName(out.slot)) + "'";
       if (out.source.kind == InputSource::Kind::NodeOutput) {

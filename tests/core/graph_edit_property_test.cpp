@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/graph_edit.h"
+#include "codegen/compile.h"
 #include "core/graph_io.h"
 #include "fuzz/edit_sequence.h"
 #include "nodes/registry.h"
@@ -61,6 +62,27 @@ TEST(GraphEditLimits, PortNamesMustBeIdentifiers) {
   GraphEditor e(*g);  // no registry: only what the file format requires is checked
   EXPECT_NE(e.setInputConstant({"s", "a b"}, {1}), "");
   EXPECT_NE(e.connect("t", "x\ny", {"s", "x"}), "");
+}
+
+// Deleting the node that feeds the only output leaves a graph connecting no outputs: it is
+// saved, it loads back equal (the user's work is kept), and only compiling it is refused,
+// with WG031 at its "outputs" object.
+TEST(GraphEditProperty, AGraphWithEveryOutputDisconnectedSavesAndLoadsBack) {
+  GraphEditor e = editorOn(kGraph);
+  ASSERT_EQ(e.deleteNode("s"), "");
+  ASSERT_TRUE(e.graph().outputs.empty());
+  std::string saved = saveGraph(e.graph());
+  Diagnostics diags;
+  auto loaded = parseGraph(saved, "saved.json", diags);
+  ASSERT_TRUE(loaded) << saved;
+  EXPECT_FALSE(diags.hasErrors());
+  EXPECT_EQ(saveGraph(*loaded), saved);
+  auto program = buildProgram(*loaded, defaultRegistry(), diags);
+  EXPECT_FALSE(program);
+  ASSERT_EQ(diags.errorCount(), 1u);
+  EXPECT_EQ(diags.all()[0].code, DiagCode::NoOutputs);
+  EXPECT_EQ(diags.all()[0].where.line, loaded->outputsWhere.line);
+  EXPECT_EQ(diags.all()[0].where.col, loaded->outputsWhere.col);
 }
 
 // Any sequence of edit operations leaves a graph whose saved form loads back equal.

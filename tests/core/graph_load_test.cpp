@@ -180,12 +180,11 @@ TEST(GraphLoad, MissingField) {
                            "  {\"id\": \"a\"}]}";
   Result r = load(text);
   EXPECT_FALSE(r.graph);
-  // The missing type, and no outputs connected: both reported in one go.
-  ASSERT_EQ(r.diags.all().size(), 2u) << dump(r.diags);
+  // The missing type; no outputs connected is resolve's to report, not the loader's.
+  ASSERT_EQ(r.diags.all().size(), 1u) << dump(r.diags);
   EXPECT_EQ(r.diags.all()[0].code, DiagCode::MissingField);
   EXPECT_EQ(r.diags.all()[0].message, "node is missing \"type\"");
   EXPECT_EQ(lc(r.diags.all()[0].where), "2:3");
-  EXPECT_EQ(r.diags.all()[1].code, DiagCode::NoOutputs);
 
   auto e = one(R"({"version": 1, "name": "g", "outputs": {"fragment": {"alpha": 1}}})",
                DiagCode::MissingField);
@@ -299,9 +298,17 @@ TEST(GraphLoad, Outputs) {
             "unknown output slot 'vertex.foo' (vertex: position, normal; fragment: color, alpha)");
   one(withNodes("[]", R"({"geometry": {"foo": 1}, "fragment": {"alpha": 1}})"),
       DiagCode::UnknownOutputSlot);
-  e = one(withNodes("[]", "{\"vertex\": {}}"), DiagCode::NoOutputs);
-  EXPECT_EQ(e.message, "the graph connects no outputs");
-  EXPECT_EQ(lc(e.where), "1:53");
+}
+
+// A graph whose outputs are all disconnected loads (the editor saves one while the user
+// rewires, and it must open again) and keeps where its "outputs" object is, for resolve's
+// WG031 (tests/core/resolve_test.cpp).
+TEST(GraphLoad, AGraphConnectingNoOutputsLoads) {
+  Result r = load(withNodes("[]", "{\"vertex\": {}}"));
+  ASSERT_TRUE(r.graph) << dump(r.diags);
+  EXPECT_TRUE(r.diags.empty()) << dump(r.diags);
+  EXPECT_TRUE(r.graph->outputs.empty());
+  EXPECT_EQ(lc(r.graph->outputsWhere), "1:53");
 }
 
 TEST(GraphLoad, Limits) {
