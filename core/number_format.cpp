@@ -6,7 +6,9 @@
 namespace wg {
 
 std::string formatNumber(double x) {
-  if (x == 0.0) return "0";  // also folds -0 to 0, so fmt never writes "-0"
+  // -0 keeps its sign as "-0.0": a JSON reader takes "-0" for the integer 0, and 1 / -0 is
+  // -inf where 1 / 0 is +inf, so fmt must not turn one into the other.
+  if (x == 0.0) return std::signbit(x) ? "-0.0" : "0";
   char buf[64];
   auto res = std::to_chars(buf, buf + sizeof buf, x);
   return std::string(buf, res.ptr);

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "core/graph_io.h"
@@ -232,7 +233,8 @@ TEST(GraphSave, ProgrammaticGraphRoundTrips) {
   EXPECT_EQ(saveGraph(back), text);
   EXPECT_NE(text.find("\"default\": [0.1, 0.3333333333333333, 1e-07, 1]"), std::string::npos) << text;
   EXPECT_NE(text.find("\"max\": 1e+20"), std::string::npos) << text;
-  EXPECT_NE(text.find("\"min\": 0,"), std::string::npos) << text;  // -0 is written as 0
+  EXPECT_NE(text.find("\"min\": -0.0,"), std::string::npos) << text;  // -0 keeps its sign
+  EXPECT_TRUE(std::signbit(*back.parameters[0].min));
   // Options and inputs are written sorted by name.
   EXPECT_LT(text.find("\"alpha\": -3"), text.find("\"zeta\""));
   EXPECT_LT(text.find("\"a\": [0.1, 0.2]"), text.find("\"b\": \"$tint\""));
@@ -258,6 +260,22 @@ TEST(GraphSave, MinimalGraph) {
             "    }\n"
             "  }\n"
             "}\n");
+}
+
+// A literal -0.0 keeps its sign through fmt (1 / -0 is -inf, 1 / 0 is +inf): it is written
+// "-0.0", because a JSON reader takes "-0" for the integer 0; +0 stays "0".
+TEST(GraphSave, NegativeZeroKeepsItsSign) {
+  Graph g = parseOk(R"({"version": 1, "name": "z", "parameters": {"p": {"type": "vec2", "default": [-0.0, 0]}},
+      "nodes": [], "outputs": {"fragment": {"alpha": -0.0}}})");
+  std::string saved = saveGraph(g);
+  EXPECT_NE(saved.find("\"alpha\": -0.0"), std::string::npos) << saved;
+  EXPECT_NE(saved.find("\"default\": [-0.0, 0]"), std::string::npos) << saved;
+  Graph again = parseOk(saved);
+  ASSERT_EQ(again.outputs.size(), 1u);
+  ASSERT_EQ(again.outputs[0].source.literal.size(), 1u);
+  EXPECT_TRUE(std::signbit(again.outputs[0].source.literal[0]));
+  EXPECT_FALSE(std::signbit(again.parameters[0].defaultValue[1]));
+  EXPECT_EQ(saveGraph(again), saved);
 }
 
 TEST(GraphSave, CrlfInputSavesAsLf) {
