@@ -11,6 +11,7 @@
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/check.h"
 #include "codegen/compile.h"
+#include "codegen/texture_files.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
@@ -66,6 +67,11 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         auto report = accuracy::checkGraph(*result, path, target, std::stoi(m[1]), std::stoi(m[2]));
         std::cout << accuracy::formatCheckText(report);
         if (report.nanInf()) exit = std::max(exit, kExitGraphError);
+      } catch (const rt::TextureLoadError& e) {
+        Diagnostics textureDiags;
+        reportUnusableTexture(result->program, &*graph, e.source(), e.why(), textureDiags);
+        printDiagnostics(textureDiags, global);
+        exit = std::max(exit, kExitGraphError);
       } catch (const rt::RuntimeError& e) {
         std::cerr << path << ": error: " << e.what() << "\n";
         exit = std::max(exit, e.exitCode());

@@ -9,6 +9,7 @@
 
 #ifdef WG_HAVE_RUNTIME
 #include "codegen/compile.h"
+#include "codegen/texture_files.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "runtime/image.h"
@@ -110,6 +111,11 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
     rt::Preview p = rt::renderPreview(*result, target, settings, args.frames, /*warmup=*/args.stats);
     rt::writePng(args.output, p.image);
     if (args.stats) printStats(args, graphBaseName(args.graph), p);
+  } catch (const rt::TextureLoadError& e) {
+    Diagnostics textureDiags;
+    reportUnusableTexture(result->program, &*graph, e.source(), e.why(), textureDiags);
+    printDiagnostics(textureDiags, global);
+    return kExitGraphError;
   } catch (const rt::RuntimeError& e) {
     std::cerr << args.graph << ": error: " << e.what() << "\n";
     return e.exitCode();

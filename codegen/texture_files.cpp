@@ -53,6 +53,21 @@ SourceRef optionPosition(const Graph* graph, const Op& op, const std::string& op
 
 }  // namespace
 
+void reportUnusableTexture(const Program& program, const Graph* graph, const std::string& source,
+                           const std::string& why, Diagnostics& diags) {
+  // The graph names a texture that cannot be decoded: a fault of the graph's input, as a
+  // path outside its folder is, not of the tool's I/O.
+  std::string option;
+  const Op* op = samplingOp(program, source, &option);
+  if (!op) {
+    diags.error(DiagCode::InvalidOption, SourceRef{graph ? graph->file : std::string(), 1, 1},
+                "texture '" + source + "' is not usable: " + why);
+    return;
+  }
+  diags.error(DiagCode::InvalidOption, optionPosition(graph, *op, option), "option '" + option + "' is not usable: " + why,
+              op->nodeId, "option '" + option + "'");
+}
+
 std::string textureFileName(const std::string& graphName, const std::string& sampler) {
   return graphName + "." + sampler + ".png";
 }
@@ -74,10 +89,7 @@ std::vector<OutputFile> textureFiles(const CompileResult& result, const std::str
     std::string why;
     auto img = loadTexture(source, dir, &why);
     if (!img) {
-      // The graph names a texture that cannot be decoded: a fault of the graph's input, as
-      // a path outside its folder is, not of the tool's I/O.
-      diags.error(DiagCode::InvalidOption, where, "option '" + option + "' is not usable: " + why, node,
-                  "option '" + option + "'");
+      reportUnusableTexture(result.program, graph, source, why, diags);
       continue;
     }
     std::string png = encodePng(*img);

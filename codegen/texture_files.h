@@ -22,4 +22,10 @@ std::string textureFileName(const std::string& graphName, const std::string& sam
 std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags,
                                      const Graph* graph = nullptr);
 
+// Reports texture `source` of the compiled graph as unusable (`why`): WG030 at the option
+// naming it (at the node without `graph`), naming the node. For the runtime's
+// rt::TextureLoadError too, so `render` and `check` say what `compile --textures` says.
+void reportUnusableTexture(const Program& program, const Graph* graph, const std::string& source,
+                           const std::string& why, Diagnostics& diags);
+
 }  // namespace wg

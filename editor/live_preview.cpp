@@ -1,5 +1,6 @@
 #include "editor/live_preview.h"
 
+#include "codegen/texture_files.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 
@@ -25,6 +26,9 @@ bool LivePreview::rebuild(const Graph& graph, const Registry& registry, Diagnost
                                                    settings_, false, rt::textureOrigins(*result), &cache_);
     retired_ = std::move(renderer_);
     renderer_ = std::move(renderer);
+  } catch (const rt::TextureLoadError& e) {
+    reportUnusableTexture(result->program, &graph, e.source(), e.why(), diags);  // at its option
+    return false;
   } catch (const rt::RuntimeError& e) {
     // The driver or the runtime refused what glslang accepted: still an error of this graph.
     diags.error(DiagCode::RuntimeRejected, SourceRef{graph.file, 0, 0}, e.what());

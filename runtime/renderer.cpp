@@ -245,9 +245,10 @@ struct Renderer::Impl {
       std::string why;
       auto img = loadTexture(source, dir, &why);
       if (!img || img->width <= 0 || img->height <= 0 ||
-          img->rgba.size() != static_cast<size_t>(img->width) * static_cast<size_t>(img->height) * 4)
-        throw RuntimeError(RuntimeError::Kind::Manifest,
-                           owner + ": texture '" + source + "' cannot be loaded: " + (why.empty() ? "no image data" : why));
+          img->rgba.size() != static_cast<size_t>(img->width) * static_cast<size_t>(img->height) * 4) {
+        if (why.empty()) why = "no image data";
+        throw TextureLoadError(owner + ": texture '" + source + "' cannot be loaded: " + why, source, why);
+      }
       return makeRepeatingRgba8Texture(img->width, img->height, img->rgba.data());
     };
     if (!cache) return std::make_shared<const Texture>(upload());

@@ -22,4 +22,19 @@ class RuntimeError : public std::runtime_error {
   Kind kind_;
 };
 
+// A texture the graph names that the runtime cannot load (a PNG whose header passed the
+// compile-time check but whose data does not decode, a file gone since): a fault of the
+// graph's input. Callers that hold the graph report it as WG030 at the option naming the
+// texture (codegen/texture_files.h, reportUnusableTexture); exit 1.
+class TextureLoadError : public RuntimeError {
+ public:
+  TextureLoadError(const std::string& message, std::string source, std::string why)
+      : RuntimeError(Kind::Manifest, message), source_(std::move(source)), why_(std::move(why)) {}
+  const std::string& source() const { return source_; }  // as the graph names it
+  const std::string& why() const { return why_; }
+
+ private:
+  std::string source_, why_;
+};
+
 }  // namespace wg::rt

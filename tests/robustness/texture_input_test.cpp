@@ -182,6 +182,29 @@ TEST_F(TextureInput, ADecodeFailureIsAGraphErrorAtThePath) {
   EXPECT_TRUE(test::listFilesRecursive(root + "/out").empty());
 }
 
+#ifdef WG_HAVE_RUNTIME
+// The same PNG through `render` and `check`: compile passes (the header is fine), the
+// runtime's decode fails, and both report it as the graph's WG030 at the texture option,
+// exit 1, writing no image: not a bare runtime message.
+TEST_F(TextureInput, ADecodeFailureAtRenderTimeIsAGraphErrorAtThePath) {
+  std::string good = pngBytes(4, 4);
+  test::writeFile(dir + "/broken.png", good.substr(0, 33) + std::string(40, 'x'));
+  test::writeFile(dir + "/g.json", edgeFoamGraph("broken.png"));
+  const std::string wg = test::shellQuote(test::watergraphBinary());
+  for (const std::string command : {" render --size 32x32 " + dir + "/g.json -o " + root + "/frame.png",
+                                    " check --size 16x16 --target es300 " + dir + "/g.json"}) {
+    std::string out, err;
+    int code = test::runCommandSplit(wg + command, &out, &err);
+    EXPECT_EQ(code, 1) << command << "\n" << err;
+    EXPECT_NE(err.find("g.json:1:"), std::string::npos) << err;
+    EXPECT_NE(err.find("error: [WG030] option 'texture' is not usable: cannot decode texture"), std::string::npos)
+        << command << "\n" << err;
+    EXPECT_NE(err.find("(node 'f'"), std::string::npos) << err;
+  }
+  EXPECT_FALSE(fs::exists(root + "/frame.png"));
+}
+#endif
+
 TEST(PngHeader, ReadsTheDeclaredSize) {
   std::string h = pngHeaderDeclaring(640, 480);
   PngSize size;
