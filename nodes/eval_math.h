@@ -100,8 +100,12 @@ inline double safeTan(double x) {
 }
 inline double safeAsin(double x) { return std::asin(clamp(x, -1.0, 1.0)); }
 inline double safeAcos(double x) { return std::acos(clamp(x, -1.0, 1.0)); }
-// atan(y, x) with the origin, which GLSL leaves undefined, at angle 0.
-inline double safeAtan2(double y, double x) { return x == 0.0 && y == 0.0 ? 0.0 : std::atan2(y, x); }
+// atan(y, x) with the origin, which GLSL leaves undefined, at angle 0. y = -0 counts as
+// +0 (the negative x axis is pi): GPUs do not all keep the sign of a zero.
+inline double safeAtan2(double y, double x) {
+  if (y == 0.0) return x < 0.0 ? 3.14159265358979323846 : 0.0;
+  return std::atan2(y, x);
+}
 inline double safeSinh(double x) { return std::sinh(clamp(x, -kHyperbolicArgMax, kHyperbolicArgMax)); }
 inline double safeCosh(double x) { return std::cosh(clamp(x, -kHyperbolicArgMax, kHyperbolicArgMax)); }
 inline double safeTanh(double x) { return std::tanh(clamp(x, -kTanhArgMax, kTanhArgMax)); }

@@ -90,7 +90,7 @@ NodeSpec atanNode() {
 NodeSpec atan2Node() {
   NodeSpec s = math::mathNode("atan2",
                               "Angle of the point (x, y) in [-pi, pi] (GLSL's atan(y, x)); the origin gives 0 (GLSL "
-                              "leaves atan(0, 0) undefined).",
+                              "leaves atan(0, 0) undefined), and the negative x axis pi whatever the sign of a zero y.",
                               "out = x == 0 && y == 0 ? 0 : atan(y, x)");
   s.inputs = {ports::gen("y", "the vertical component (numerator)"), ports::gen("x", 1, "the horizontal component")};
   s.outputs = {ports::gen("out", "the angle in radians")};
