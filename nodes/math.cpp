@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "nodes/eval_math.h"
+#include "nodes/math_builders.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 
@@ -15,17 +16,10 @@ namespace {
 using glsl::map1;
 using glsl::map2;
 using glsl::map3;
-
-NodeSpec mathNode(std::string type, std::string summary, std::string formula) {
-  NodeSpec s;
-  s.type = std::move(type);
-  s.family = "math";
-  s.summary = std::move(summary);
-  s.formula = std::move(formula);
-  s.cost = "one ALU instruction per component";
-  s.tolerance = 1e-6;
-  return s;
-}
+using math::binaryFunction;
+using math::mathNode;
+using math::typedName;
+using math::unaryFunction;
 
 // out = a OP b, component-wise.
 template <class F>
@@ -34,27 +28,6 @@ NodeSpec binaryOperator(std::string type, std::string op, std::string summary, d
   s.inputs = {ports::gen("a", defA, "left operand"), ports::gen("b", defB, "right operand")};
   s.outputs = {ports::gen("out", "the result")};
   s.emit = [op](EmitContext& ctx) { ctx.output(0, "(" + ctx.input(0) + " " + op + " " + ctx.input(1) + ")"); };
-  s.eval = [f](EvalContext& ctx) { ctx.output(0, map2(ctx.input(0), ctx.input(1), ctx.outputType(0), f)); };
-  return s;
-}
-
-// out = fn(x) for a GLSL built-in `fn` (or a library function), component-wise.
-template <class F>
-NodeSpec unaryFunction(std::string type, std::string fn, std::string summary, std::string formula, F f) {
-  NodeSpec s = mathNode(std::move(type), std::move(summary), std::move(formula));
-  s.inputs = {ports::gen("x", "the argument")};
-  s.outputs = {ports::gen("out", "the result")};
-  s.emit = [fn](EmitContext& ctx) { ctx.output(0, EmitContext::call(fn, {ctx.input(0)})); };
-  s.eval = [f](EvalContext& ctx) { ctx.output(0, map1(ctx.input(0), ctx.outputType(0), f)); };
-  return s;
-}
-
-template <class F>
-NodeSpec binaryFunction(std::string type, std::string fn, std::string summary, F f) {
-  NodeSpec s = mathNode(std::move(type), std::move(summary), "out = " + fn + "(a, b) (component-wise)");
-  s.inputs = {ports::gen("a", "first argument"), ports::gen("b", "second argument")};
-  s.outputs = {ports::gen("out", "the result")};
-  s.emit = [fn](EmitContext& ctx) { ctx.output(0, EmitContext::call(fn, {ctx.input(0), ctx.input(1)})); };
   s.eval = [f](EvalContext& ctx) { ctx.output(0, map2(ctx.input(0), ctx.input(1), ctx.outputType(0), f)); };
   return s;
 }
@@ -79,9 +52,6 @@ bool requireFloatVector(InferContext& ctx, int port, int minComponents) {
   }
   return true;
 }
-
-// The library names one variant per type: wg_safe_pow_vec3.
-std::string typedName(const std::string& fn, Type t) { return fn + "_" + std::string(typeName(t)); }
 
 int swizzleIndex(char c) {
   switch (c) {

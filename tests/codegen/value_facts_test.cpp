@@ -186,5 +186,64 @@ TEST(ValueFacts, OutputRangesHoldOnlyForInputsThatKeepThem) {
   EXPECT_EQ(shine.find("_nonempty"), std::string::npos) << shine;
 }
 
+// The math vocabulary: each guarded form gives way to the raw built-in only where the
+// facts of its input make the guard dead, and stays where they do not.
+TEST(ValueFacts, VocabularyPicksTheRawBuiltinOnlyWhereItsGuardIsDead) {
+  auto unary = [](const std::string& type, const std::string& param) {
+    return fragmentOf(compiledProgram(graphJson(R"({"id": "f", "type": ")" + type + R"(", "inputs": {"x": "$p"}})",
+                                                R"("fragment": {"alpha": "f.out"})", R"("p": )" + param)));
+  };
+  struct Expect {
+    const char* type;
+    const char* raw;       // the built-in call
+    const char* guarded;   // the library call
+    const char* provenSafe;
+    const char* unproven;
+  };
+  const char* positive = R"({"type": "float", "default": 2, "min": 0.001, "max": 50})";
+  const char* any = R"({"type": "float", "default": 2})";
+  for (const Expect& e : std::vector<Expect>{
+           {"log", " log(", "wg_safe_log_float(", positive, R"({"type": "float", "default": 2, "min": 0})"},
+           {"log2", " log2(", "wg_safe_log2_float(", positive, any},
+           {"sqrt", " sqrt(", "wg_safe_sqrt_float(", R"({"type": "float", "default": 2, "min": 0})", any},
+           {"inversesqrt", " inversesqrt(", "wg_safe_inversesqrt_float(", positive, any},
+           {"exp", " exp(", "wg_safe_exp_float(", positive, R"({"type": "float", "default": 2, "max": 100})"},
+           {"exp2", " exp2(", "wg_safe_exp2_float(", positive, R"({"type": "float", "default": 2, "max": 200})"},
+           {"asin", " asin(", "wg_safe_asin_float(", R"({"type": "float", "default": 0.5, "min": -1, "max": 1})", any},
+           {"acos", " acos(", "wg_safe_acos_float(", R"({"type": "float", "default": 0.5, "min": -1, "max": 1})",
+            R"({"type": "float", "default": 0.5, "min": -1, "max": 1.0000001})"},
+           {"tan", " tan(", "wg_safe_tan_float(", R"({"type": "float", "default": 0.5, "min": -1, "max": 1})",
+            R"({"type": "float", "default": 0.5, "min": -1, "max": 2})"},
+           {"sinh", " sinh(", "wg_safe_sinh_float(", positive, any},
+           {"tanh", " tanh(", "wg_safe_tanh_float(", R"({"type": "float", "default": 0.5, "min": -10, "max": 10})", R"({"type": "float", "default": 0.5, "min": 0, "max": 11})"}}) {
+    SCOPED_TRACE(e.type);
+    std::string proven = unary(e.type, e.provenSafe), unproven = unary(e.type, e.unproven);
+    EXPECT_NE(proven.find(e.raw), std::string::npos) << proven;
+    EXPECT_EQ(proven.find(e.guarded), std::string::npos) << proven;
+    EXPECT_NE(unproven.find(e.guarded), std::string::npos) << unproven;
+  }
+  // Facts flow through the vocabulary: sqrt of a fract is raw (fract lies in [0, 1]); a
+  // mod by 1 cannot overflow its quotient; atan of a point with x > 0 is never the origin.
+  std::string chained = fragmentOf(compiledProgram(graphJson(
+      R"({"id": "t", "type": "time"}, {"id": "f", "type": "fract", "inputs": {"x": "t.out"}},
+         {"id": "r", "type": "sqrt", "inputs": {"x": "f.out"}},
+         {"id": "m", "type": "mod", "inputs": {"x": "t.out", "y": 1.0}},
+         {"id": "a", "type": "atan2", "inputs": {"y": "t.out", "x": 2.0}},
+         {"id": "s1", "type": "add", "inputs": {"a": "r.out", "b": "m.out"}},
+         {"id": "s2", "type": "add", "inputs": {"a": "s1.out", "b": "a.out"}})",
+      R"("fragment": {"alpha": "s2.out"})")));
+  EXPECT_EQ(chained.find("wg_safe_sqrt"), std::string::npos) << chained;
+  EXPECT_EQ(chained.find("wg_safe_mod"), std::string::npos) << chained;
+  EXPECT_EQ(chained.find("wg_safe_atan2"), std::string::npos) << chained;
+  std::string unknown = fragmentOf(compiledProgram(graphJson(
+      R"({"id": "t", "type": "time"}, {"id": "w", "type": "world_position"},
+         {"id": "r", "type": "sqrt", "inputs": {"x": "w.out"}},
+         {"id": "m", "type": "mod", "inputs": {"x": "t.out", "y": "w.out"}},
+         {"id": "s1", "type": "add", "inputs": {"a": "r.out", "b": "m.out"}})",
+      R"("fragment": {"color": "s1.out"})")));
+  EXPECT_NE(unknown.find("wg_safe_sqrt_vec3("), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("wg_safe_mod_vec3("), std::string::npos) << unknown;
+}
+
 }  // namespace
 }  // namespace wg
