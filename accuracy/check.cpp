@@ -97,11 +97,7 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
   if (report.reference.empty() && target != Target::Glsl330) report.reference = "reference on glsl330 only (ES cannot read depth)";
   bool compare = report.reference.empty();
   if (compare) report.reference = "cpu";
-  bool underwater = false;
-  const std::string deferredPass(renderPassRow(RenderPass::DeferredWater).name);
-  if (result.manifest.contains("passes"))
-    for (const auto& pass : result.manifest["passes"])
-      underwater |= pass.is_string() ? pass.get<std::string>() == deferredPass : pass.value("name", "") == deferredPass;
+  const bool underwater = result.manifest.lists(RenderPass::DeferredWater);
   bool es = target == Target::Es300;
   for (const auto& view : checkSweep(underwater)) {
     rt::RenderSettings settings;

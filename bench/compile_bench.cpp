@@ -25,7 +25,7 @@
 #include "bench/synthetic_graph.h"
 #include "codegen/compile.h"
 #include "codegen/glslang_validate.h"
-#include "codegen/manifest.h"
+#include "codegen/manifest_build.h"
 #include "codegen/passes.h"
 #include "core/graph_io.h"
 #include "core/resolve.h"
@@ -196,8 +196,7 @@ void manifest(benchmark::State& state, Case* c) {
   const auto& prep = c->prepared();
   std::string base = graphBaseName(c->file);
   for (auto _ : state) {
-    nlohmann::json m = buildManifest(prep.program, prep.emitted, base);
-    std::string text = m.dump(2);
+    std::string text = buildManifest(prep.program, prep.emitted, base).toJson().dump(2);
     benchmark::DoNotOptimize(text);
   }
 }

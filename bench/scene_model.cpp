@@ -27,10 +27,10 @@ std::string mib(size_t bytes) {
 
 // Every pass the runtime implements, planned together: the whole menu a graph picks from.
 wg::rt::PassPlan everyPass(const wg::rt::PlanOptions& options) {
-  return wg::rt::planPasses(nlohmann::json{{"passes", {"environment_cubemap", "depth_prepass", "planar_reflection",
-                                                        "refraction", "scene_color_copy", "deferred_water",
-                                                        "water_surface"}}},
-                            options);
+  wg::Manifest all;
+  for (const auto& row : wg::renderPassTable())
+    if (row.id != wg::RenderPass::OpaqueScene) all.passes.push_back(row.id);  // always runs, never listed
+  return wg::rt::planPasses(all, options);
 }
 
 }  // namespace
@@ -69,9 +69,9 @@ int main(int argc, char** argv) {
     std::string passes;
     for (auto p : used.passes) passes += std::string(passes.empty() ? "" : ", ") + rt::passName(p);
     size_t parameters = g->parameters.size();
-    size_t uniforms = m.at("uniforms").size(), fromParameters = 0;
-    for (const auto& u : m.at("uniforms")) fromParameters += u.contains("parameter");
-    size_t samplers = m.at("textures").size();
+    size_t uniforms = m.uniforms.size(), fromParameters = 0;
+    for (const auto& u : m.uniforms) fromParameters += u.parameter.has_value();
+    size_t samplers = m.textures.size();
     std::string reflection;
     for (Target t : allTargets()) {
       EmitResult er = emitProgram(r->program, t, "g.json");
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
     std::printf("| %s | %d/%d | %zu/%zu: %s | %zu/%zu: %s of %s | %zu + %zu/%zu | %zu | %zu/%zu | %s |\n", g->name.c_str(),
                 r->nodesKept, r->nodesTotal, used.passes.size(), all.passes.size(), passes.c_str(), used.targets.size(),
                 all.targets.size(), mib(used.totalBytes()).c_str(), mib(all.totalBytes()).c_str(), uniforms - fromParameters,
-                fromParameters, parameters, samplers, m.at("functions").size(), libraryFunctions, reflection.c_str());
+                fromParameters, parameters, samplers, m.functions.size(), libraryFunctions, reflection.c_str());
   }
   return status;
 }

@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "codegen/glslang_validate.h"
-#include "codegen/manifest.h"
+#include "codegen/manifest_build.h"
 #include "codegen/passes.h"
 #include "core/preset.h"
 #include "core/resolve.h"
@@ -125,8 +125,8 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   }
   if (!ok) return std::nullopt;
   result.manifest = buildManifest(*program, emitted, base);
-  if (!options.preset.empty()) result.manifest["preset"] = options.preset;
-  result.files.push_back({base + ".manifest.json", result.manifest.dump(2) + "\n"});
+  result.manifest.preset = options.preset;
+  result.files.push_back({base + ".manifest.json", result.manifest.toJson().dump(2) + "\n"});
   result.program = std::move(*program);
   return result;
 }

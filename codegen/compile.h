@@ -5,9 +5,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "codegen/emit_glsl.h"
+#include "codegen/manifest.h"
 #include "codegen/target.h"
 #include "core/diagnostic.h"
 #include "core/graph.h"
@@ -31,7 +30,7 @@ struct OutputFile {
 struct CompileResult {
   Program program;  // after the passes
   std::vector<OutputFile> files;  // shaders, SPIR-V and the manifest, in a stable order
-  nlohmann::json manifest;
+  Manifest manifest;  // also among `files`, as JSON
   int nodesTotal = 0;
   int nodesKept = 0;
 };

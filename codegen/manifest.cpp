@@ -1,16 +1,10 @@
 #include "codegen/manifest.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace wg {
 namespace {
-
-nlohmann::json valueJson(const Value& v) {
-  if (v.size() == 1) return v[0];
-  nlohmann::json a = nlohmann::json::array();
-  for (int i = 0; i < v.size(); ++i) a.push_back(v[i]);
-  return a;
-}
 
 nlohmann::json stagesJson(unsigned stages) {
   nlohmann::json a = nlohmann::json::array();
@@ -19,101 +13,108 @@ nlohmann::json stagesJson(unsigned stages) {
   return a;
 }
 
+// A scalar for one component, else an array.
+nlohmann::json numbersJson(const std::vector<double>& v) {
+  if (v.size() == 1) return v[0];
+  return v;
+}
+
+nlohmann::json targetJson(const ManifestTarget& target) {
+  nlohmann::json t = nlohmann::json::object();
+  nlohmann::json entryPoints = nlohmann::json::object();
+  for (const auto& f : target.files) {
+    const std::string ext(stageExtension(f.stage));
+    t[ext] = f.file;
+    if (!f.spirv.empty()) t[ext + ".spv"] = f.spirv;
+    if (!f.entryPoint.empty()) entryPoints[ext] = f.entryPoint;
+  }
+  if (!target.from.empty()) {
+    t["entry_points"] = std::move(entryPoints);
+    t["from"] = target.from;
+  }
+  return t;
+}
+
+nlohmann::json uniformJson(const ManifestUniform& u) {
+  nlohmann::json j{{"name", u.name}, {"type", std::string(typeName(u.type))}, {"stages", stagesJson(u.stages)}};
+  if (const auto& p = u.parameter) {
+    j["parameter"] = p->name;
+    j["default"] = numbersJson(p->defaultValue);
+    if (p->min) j["min"] = *p->min;
+    if (p->max) j["max"] = *p->max;
+    if (!p->hint.empty()) j["hint"] = p->hint;
+    if (!p->description.empty()) j["description"] = p->description;
+  } else {
+    j["builtin"] = std::string(builtinUniformRow(u.builtin).meaning);
+    if (u.builtin == BuiltinUniform::TimePhase) j["angular_frequency"] = u.angularFrequency;
+  }
+  return j;
+}
+
+nlohmann::json textureJson(const TextureInfo& t) {
+  nlohmann::json j{{"name", t.name}, {"type", std::string(typeName(t.type))}, {"binding", t.binding},
+                   {"stages", stagesJson(t.stages)}};
+  if (!t.source.empty()) j["source"] = t.source;
+  if (t.scene) j["resource"] = std::string(sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
+  return j;
+}
+
 }  // namespace
 
-nlohmann::json buildManifest(const Program& program, const std::vector<std::pair<Target, EmitResult>>& emitted,
-                             const std::string& baseName) {
+const ManifestTarget* Manifest::target(std::string_view name) const {
+  for (const auto& t : targets)
+    if (t.name == name) return &t;
+  return nullptr;
+}
+
+bool Manifest::lists(RenderPass pass) const { return std::find(passes.begin(), passes.end(), pass) != passes.end(); }
+
+nlohmann::json Manifest::toJson() const {
   nlohmann::json m;
-  m["format"] = kManifestFormat;
-  m["graph"] = program.graphName;
-  if (!program.description.empty()) m["description"] = program.description;
+  m["format"] = format;
+  m["graph"] = graph;
+  if (!description.empty()) m["description"] = description;
+  if (!preset.empty()) m["preset"] = preset;
 
-  nlohmann::json targets = nlohmann::json::object();
-  for (const auto& [target, er] : emitted) {
-    nlohmann::json t;
-    std::string prefix = baseName + "." + std::string(targetName(target)) + ".";
-    for (const auto& sh : er.shaders) {
-      std::string ext(stageExtension(sh.stage));
-      t[ext] = prefix + ext;
-      if (target == Target::Vk450) t[ext + ".spv"] = prefix + ext + ".spv";
-    }
-    targets[std::string(targetName(target))] = std::move(t);
-  }
-  m["targets"] = std::move(targets);
+  nlohmann::json& targetsJson = m["targets"] = nlohmann::json::object();
+  for (const auto& t : targets) targetsJson[t.name] = targetJson(t);
 
-  // The interface is the same for every target (names, order); take it from the first.
-  if (!emitted.empty()) {
-    const EmitResult& er = emitted.front().second;
-    nlohmann::json attributes = nlohmann::json::array();
-    for (const auto& a : er.attributes)
-      attributes.push_back({{"name", a.name}, {"type", std::string(typeName(a.type))}, {"location", a.location}});
-    m["attributes"] = std::move(attributes);
-    nlohmann::json uniforms = nlohmann::json::array();
-    for (const auto& u : er.uniforms) {
-      nlohmann::json j{{"name", u.name}, {"type", std::string(typeName(u.type))}, {"stages", stagesJson(u.stages)}};
-      if (u.parameter >= 0) {
-        const ProgramParameter& p = program.parameters[static_cast<size_t>(u.parameter)];
-        j["parameter"] = p.name;
-        j["default"] = valueJson(p.defaultValue);
-        if (p.min) j["min"] = *p.min;
-        if (p.max) j["max"] = *p.max;
-        if (!p.hint.empty()) j["hint"] = p.hint;
-        if (!p.description.empty()) j["description"] = p.description;
-      } else {
-        j["builtin"] = std::string(builtinUniformRow(u.builtin).meaning);
-        if (u.builtin == BuiltinUniform::TimePhase) j["angular_frequency"] = u.omega;
-      }
-      uniforms.push_back(std::move(j));
-    }
-    m["uniforms"] = std::move(uniforms);
-    nlohmann::json varyings = nlohmann::json::array();
-    for (const auto& v : er.varyings)
-      varyings.push_back({{"name", v.name}, {"type", std::string(typeName(v.type))}, {"carries", v.carries}});
-    m["varyings"] = std::move(varyings);
-    m["functions"] = er.functions;
-    nlohmann::json textures = nlohmann::json::array();
-    for (const auto& t : er.textures) {
-      nlohmann::json j{{"name", t.name}, {"type", std::string(typeName(t.type))}, {"binding", t.binding},
-                       {"stages", stagesJson(t.stages)}};
-      if (!t.source.empty()) j["source"] = t.source;
-      if (t.scene) j["resource"] = std::string(sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
-      textures.push_back(std::move(j));
-    }
-    m["textures"] = std::move(textures);
-  }
-  // Tessellation, per target (GLSL ES 3.00 has none: es300 draws the mesh as it is).
-  for (const auto& [target, er] : emitted)
-    if (er.tessellation) {
-      nlohmann::json& t = m["tessellation"];
-      t["patch_vertices"] = 3;
-      t["min_distance"] = er.tessellation->minDistance;
-      t["max_distance"] = er.tessellation->maxDistance;
-      t["factor"] = er.tessellation->factor;
-      t["targets"].push_back(std::string(targetName(target)));
-    }
-  // Resources and the passes producing them in table order; the water surface last.
-  nlohmann::json& resources = m["resources"] = nlohmann::json::array();
-  nlohmann::json& passes = m["passes"] = nlohmann::json::array();
-  for (SceneResource r : program.sceneResources()) {
-    const SceneResourceRow& row = sceneResourceRow(r);
-    resources.push_back(std::string(row.name));
-    passes.push_back(std::string(renderPassRow(row.pass).name));
-  }
-  passes.push_back(std::string(renderPassRow(RenderPass::WaterSurface).name));
+  nlohmann::json& attributesJson = m["attributes"] = nlohmann::json::array();
+  for (const auto& a : attributes)
+    attributesJson.push_back({{"name", a.name}, {"type", std::string(typeName(a.type))}, {"location", a.location}});
+  nlohmann::json& uniformsJson = m["uniforms"] = nlohmann::json::array();
+  for (const auto& u : uniforms) uniformsJson.push_back(uniformJson(u));
+  nlohmann::json& varyingsJson = m["varyings"] = nlohmann::json::array();
+  for (const auto& v : varyings)
+    varyingsJson.push_back({{"name", v.name}, {"type", std::string(typeName(v.type))}, {"carries", v.carries}});
+  m["functions"] = functions;
+  nlohmann::json& texturesJson = m["textures"] = nlohmann::json::array();
+  for (const auto& t : textures) texturesJson.push_back(textureJson(t));
 
-  nlohmann::json kept = nlohmann::json::array();
-  for (const auto& op : program.ops) {
-    nlohmann::json k{{"node", op.nodeId}, {"type", op.spec->type}, {"stages", stagesJson(op.stage)}};
-    if (!op.mergedIds.empty()) k["merged"] = op.mergedIds;
-    kept.push_back(std::move(k));
+  if (tessellation) {
+    nlohmann::json& t = m["tessellation"];
+    t["patch_vertices"] = kPatchVertices;
+    t["min_distance"] = tessellation->settings.minDistance;
+    t["max_distance"] = tessellation->settings.maxDistance;
+    t["factor"] = tessellation->settings.factor;
+    t["targets"] = tessellation->targets;
   }
-  nlohmann::json removed = nlohmann::json::array();
-  for (const auto& r : program.removed) removed.push_back({{"what", r.what}, {"reason", r.reason}});
-  // Moved in, not copied: an initializer list would copy both arrays (one object per op).
+
+  nlohmann::json& resourcesJson = m["resources"] = nlohmann::json::array();
+  for (SceneResource r : resources) resourcesJson.push_back(std::string(sceneResourceRow(r).name));
+  nlohmann::json& passesJson = m["passes"] = nlohmann::json::array();
+  for (RenderPass p : passes) passesJson.push_back(std::string(renderPassRow(p).name));
+
   nlohmann::json& nodes = m["nodes"];
-  nodes["total"] = program.totalNodes;
-  nodes["kept"] = std::move(kept);
-  nodes["removed"] = std::move(removed);
+  nodes["total"] = nodesTotal;
+  nlohmann::json& keptJson = nodes["kept"] = nlohmann::json::array();
+  for (const auto& k : kept) {
+    nlohmann::json j{{"node", k.node}, {"type", k.type}, {"stages", stagesJson(k.stages)}};
+    if (!k.merged.empty()) j["merged"] = k.merged;
+    keptJson.push_back(std::move(j));
+  }
+  nlohmann::json& removedJson = nodes["removed"] = nlohmann::json::array();
+  for (const auto& r : removed) removedJson.push_back({{"what", r.what}, {"reason", r.reason}});
   return m;
 }
 

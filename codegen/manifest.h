@@ -2,20 +2,114 @@
 // The manifest beside the shaders: what a runtime or engine needs to drive them
 // (attributes, uniforms with defaults and ranges, varyings, scene resources, render
 // passes) and what the compiler kept and removed, so a user can see what each choice costs.
+//
+// A plain value. The compiler builds it (codegen/manifest_build.h) and writes it as JSON
+// (toJson); the runtime takes it as it is when it runs a graph compiled in the same
+// process, and only a manifest read from disk goes through fromJson. Scene resources,
+// passes and builtin uniforms are enumerators of core/interface_tables.h, so nothing
+// compares names after the JSON is read.
+#include <optional>
+#include <stdexcept>
 #include <string>
-#include <utility>
+#include <string_view>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "codegen/emit_glsl.h"
-#include "core/program.h"
+#include "codegen/target.h"
+#include "core/interface_tables.h"
+#include "core/node_spec.h"
+#include "core/types.h"
 
 namespace wg {
 
 inline constexpr int kManifestFormat = 1;
+// Tessellated targets draw the water as patches of this many vertices.
+inline constexpr int kPatchVertices = 3;
 
-nlohmann::json buildManifest(const Program& program, const std::vector<std::pair<Target, EmitResult>>& emitted,
-                             const std::string& baseName);
+// A manifest Manifest::fromJson cannot read; the message names the member at fault.
+class ManifestError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ManifestStageFile {
+  ShaderStage stage{};
+  std::string file;        // "lake.glsl330.vert"
+  std::string spirv;       // vk450: "lake.vk450.vert.spv"; "" for the others
+  std::string entryPoint;  // targets made by SPIRV-Cross: "main0" (MSL), "main" (HLSL); "" for GLSL
+};
+
+struct ManifestTarget {
+  std::string name;                      // "glsl330", ..., or a cross target: "msl", "hlsl"
+  std::vector<ManifestStageFile> files;  // in pipeline order
+  std::string from;                      // cross targets: how the files were made; "" for GLSL
+};
+
+// What a parameter uniform holds: the graph parameter, its default and its range.
+struct ManifestParameter {
+  std::string name;
+  std::vector<double> defaultValue;  // one per component
+  std::optional<double> min, max;    // every uploaded value is clamped into them
+  std::string hint;
+  std::string description;
+};
+
+struct ManifestUniform {
+  std::string name;  // GLSL name
+  Type type = Type::Float;
+  unsigned stages = 0;
+  std::optional<ManifestParameter> parameter;     // set for a graph parameter
+  BuiltinUniform builtin = BuiltinUniform::Time;  // what it holds otherwise
+  double angularFrequency = 0;                    // TimePhase: mod(omega * time, 2 pi)
+};
+
+struct ManifestTessellation {
+  TessellationSettings settings;
+  std::vector<std::string> targets;  // the targets that tessellate, in target order
+};
+
+struct ManifestKeptNode {
+  std::string node;
+  std::string type;
+  unsigned stages = 0;
+  std::vector<std::string> merged;  // ids of the nodes cse merged into this one
+};
+
+struct ManifestRemoval {
+  std::string what;
+  std::string reason;
+};
+
+struct Manifest {
+  int format = kManifestFormat;
+  std::string graph;
+  std::string description;  // "" when the graph has none
+  std::string preset;       // the preset whose values became the defaults; "" for none
+  std::vector<ManifestTarget> targets;
+  // The shader interface, the same for every target (names, order, bindings).
+  std::vector<AttributeInfo> attributes;
+  std::vector<ManifestUniform> uniforms;    // declaration order
+  std::vector<VaryingInfo> varyings;
+  std::vector<std::string> functions;       // GLSL library items emitted, in order
+  std::vector<TextureInfo> textures;        // node textures by first use, then scene samplers
+  std::optional<ManifestTessellation> tessellation;
+  std::vector<SceneResource> resources;     // table order
+  std::vector<RenderPass> passes;           // the passes producing them, then WaterSurface
+  int nodesTotal = 0;
+  std::vector<ManifestKeptNode> kept;
+  std::vector<ManifestRemoval> removed;
+
+  const ManifestTarget* target(std::string_view name) const;  // null when not compiled for it
+  bool lists(RenderPass pass) const;
+
+  // The manifest file's contents.
+  nlohmann::json toJson() const;
+  // Reads a manifest file's JSON. Lists other than "passes" may be absent (none); every
+  // entry must have the members the compiler writes, and no others, so toJson gives back
+  // the JSON that was read. Throws ManifestError.
+  static Manifest fromJson(const nlohmann::json& json);
+};
 
 }  // namespace wg

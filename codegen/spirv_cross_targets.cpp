@@ -173,7 +173,7 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
   const std::vector<StageSpirv> modules = modulesOf(*result);
   // SPIRV-Cross writes no HLSL hull or domain shaders: HLSL gets the graph compiled without
   // tessellation (the mesh drawn as it is, as es300), and the manifest says so.
-  const bool tessellated = result->manifest.contains("tessellation");
+  const bool tessellated = result->manifest.tessellation.has_value();
   std::vector<StageSpirv> untessellated;
   if (tessellated && std::find(cross.begin(), cross.end(), CrossTarget::Hlsl) != cross.end()) {
     CompileOptions flat = options;
@@ -184,12 +184,12 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
     untessellated = modulesOf(*flatResult);
   }
 
-  nlohmann::json crossManifest = nlohmann::json::object();
+  std::vector<ManifestTarget> crossTargets;
   std::vector<OutputFile> crossFiles;
   bool ok = true;
   for (CrossTarget t : cross) {
-    nlohmann::json files = nlohmann::json::object();
-    nlohmann::json entries = nlohmann::json::object();
+    ManifestTarget entry;
+    entry.name = crossTargetName(t);
     const bool flat = t == CrossTarget::Hlsl && tessellated;
     for (const auto& m : flat ? untessellated : modules) {
       std::string name = base + "." + std::string(crossTargetName(t)) + "." + std::string(stageExtension(m.stage));
@@ -203,15 +203,13 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
         continue;
       }
       crossFiles.push_back({name, header(t, sourceName) + shader->text});
-      files[std::string(stageExtension(m.stage))] = name;
-      entries[std::string(stageExtension(m.stage))] = shader->entryPoint;
+      entry.files.push_back({m.stage, name, "", shader->entryPoint});
     }
-    files["entry_points"] = entries;
-    files["from"] = flat ? "vk450 SPIR-V compiled without tessellation (SPIRV-Cross writes no HLSL hull or domain "
-                           "shaders), through SPIRV-Cross"
-                         : "vk450 SPIR-V through SPIRV-Cross";
-    crossManifest[std::string(crossTargetName(t))] = files;
-    if (tessellated && !flat) result->manifest["tessellation"]["targets"].push_back(std::string(crossTargetName(t)));
+    entry.from = flat ? "vk450 SPIR-V compiled without tessellation (SPIRV-Cross writes no HLSL hull or domain "
+                        "shaders), through SPIRV-Cross"
+                      : "vk450 SPIR-V through SPIRV-Cross";
+    if (tessellated && !flat) result->manifest.tessellation->targets.push_back(entry.name);
+    crossTargets.push_back(std::move(entry));
   }
   if (!ok) return std::nullopt;
 
@@ -223,16 +221,14 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
     files.push_back(std::move(f));
   }
   for (auto& f : crossFiles) files.push_back(std::move(f));
-  nlohmann::json& manifestTargets = result->manifest["targets"];
+  Manifest& manifest = result->manifest;
   if (!vkRequested) {
-    manifestTargets.erase("vk450");
-    if (result->manifest.contains("tessellation")) {
-      auto& tessTargets = result->manifest["tessellation"]["targets"];
-      tessTargets.erase(std::remove(tessTargets.begin(), tessTargets.end(), nlohmann::json("vk450")), tessTargets.end());
-    }
+    const std::string vk(targetName(Target::Vk450));
+    std::erase_if(manifest.targets, [&](const ManifestTarget& mt) { return mt.name == vk; });
+    if (manifest.tessellation) std::erase(manifest.tessellation->targets, vk);
   }
-  for (auto& [name, entry] : crossManifest.items()) manifestTargets[name] = entry;
-  files.push_back({base + ".manifest.json", result->manifest.dump(2) + "\n"});
+  for (auto& entry : crossTargets) manifest.targets.push_back(std::move(entry));
+  files.push_back({base + ".manifest.json", manifest.toJson().dump(2) + "\n"});
   result->files = std::move(files);
   return result;
 }

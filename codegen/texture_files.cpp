@@ -75,11 +75,10 @@ std::string textureFileName(const std::string& graphName, const std::string& sam
 std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags,
                                      const Graph* graph) {
   std::vector<OutputFile> files;
-  const auto& textures = result.manifest.value("textures", nlohmann::json::array());
-  for (const auto& t : textures) {
-    if (!t.contains("source")) continue;  // a scene resource: rendered by a pass, not a file
-    std::string source = t.value("source", "");
-    std::string sampler = t.value("name", "");
+  for (const auto& t : result.manifest.textures) {
+    if (t.source.empty()) continue;  // a scene resource: rendered by a pass, not a file
+    const std::string& source = t.source;
+    const std::string& sampler = t.name;
     std::string option;
     const Op* op = samplingOp(result.program, source, &option);
     SourceRef where = op ? optionPosition(graph, *op, option) : SourceRef{};

@@ -45,27 +45,16 @@ size_t PassPlan::totalBytes() const {
   return n;
 }
 
-PassPlan planPasses(const nlohmann::json& manifest, const PlanOptions& options) {
+PassPlan planPasses(const Manifest& manifest, const PlanOptions& options) {
   if (options.width <= 0 || options.height <= 0 || options.environmentSize <= 0)
     fail("render size must be positive");
-  auto it = manifest.find("passes");
-  if (it == manifest.end() || !it->is_array()) fail("the manifest has no \"passes\" list");
-  const auto passes = renderPassTable();
-  std::vector<bool> listed(passes.size(), false);
-  for (const auto& p : *it) {
-    if (!p.is_string()) fail("the manifest's \"passes\" list holds a non-string entry");
-    std::string name = p.get<std::string>();
-    auto kind = parsePassName(name);
-    if (!kind || *kind == PassKind::OpaqueScene) fail("the manifest lists an unknown pass '" + name + "'");
-    listed[static_cast<size_t>(*kind)] = true;
-  }
-  if (!listed[static_cast<size_t>(PassKind::WaterSurface)]) fail("the manifest's \"passes\" list lacks water_surface");
+  if (!manifest.lists(PassKind::WaterSurface)) fail("the manifest's \"passes\" list lacks water_surface");
   PassPlan plan;
   const ColorFormat frameColor = options.floatColor ? ColorFormat::Rgba32f : ColorFormat::Rgba8;
   plan.targets.push_back({"frame", PassKind::WaterSurface, "", frameColor, DepthFormat::Depth32f, options.width,
                           options.height, false});
-  for (const auto& pass : passes) {
-    if (pass.id != PassKind::OpaqueScene && !listed[static_cast<size_t>(pass.id)]) continue;
+  for (const auto& pass : renderPassTable()) {
+    if (pass.id != PassKind::OpaqueScene && !manifest.lists(pass.id)) continue;
     plan.passes.push_back(pass.id);
     // The targets of the pass: the samplers of the resources it produces.
     for (const auto& sampler : sceneSamplerTable()) {

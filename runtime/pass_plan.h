@@ -1,6 +1,6 @@
 #pragma once
 // Which passes a frame runs and which render targets exist, decided from the manifest's
-// "passes" list alone (no GL here, so it is tested with hand-made manifests). A pass runs
+// passes alone (no GL here, so it is tested with hand-made manifests). A pass runs
 // only when the manifest lists it; a render target is created only for a pass that runs:
 // "frame" (colour + depth, always), then one per scene sampler whose resource the pass
 // produces (core/interface_tables.h: renderPassTable in execution order, sceneSamplerTable
@@ -12,8 +12,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "codegen/manifest.h"
 #include "core/interface_tables.h"
 
 namespace wg::rt {
@@ -54,8 +53,8 @@ struct PassPlan {
 size_t bytesPerPixel(ColorFormat f);
 size_t bytesPerPixel(DepthFormat f);
 
-// Throws RuntimeError(Kind::Manifest) for a missing or malformed "passes" list, an unknown
-// pass, a list without water_surface, or a pass the runtime does not implement yet.
-PassPlan planPasses(const nlohmann::json& manifest, const PlanOptions& options);
+// Throws RuntimeError(Kind::Manifest) for passes without water_surface or a render size
+// that is not positive. Duplicates count once; the opaque scene always runs.
+PassPlan planPasses(const Manifest& manifest, const PlanOptions& options);
 
 }  // namespace wg::rt

@@ -16,24 +16,26 @@ GlApi apiFor(Target target) {
   throw RuntimeError(RuntimeError::Kind::Manifest, "target vk450 is not run by the GL runtime (use glsl330 or es300)");
 }
 
+GLenum glShaderStage(ShaderStage stage) {
+  switch (stage) {
+    case ShaderStage::Vertex: return GL_VERTEX_SHADER;
+    case ShaderStage::TessControl: return GL_TESS_CONTROL_SHADER;
+    case ShaderStage::TessEvaluation: return GL_TESS_EVALUATION_SHADER;
+    case ShaderStage::Fragment: return GL_FRAGMENT_SHADER;
+  }
+  return GL_FRAGMENT_SHADER;
+}
+
 std::vector<ShaderSource> waterShaderSources(const CompileResult& result, Target target) {
   std::string t(targetName(target));
-  const auto& targets = result.manifest.value("targets", nlohmann::json::object());
-  if (!targets.contains(t)) throw RuntimeError(RuntimeError::Kind::Manifest, "the graph was not compiled for " + t);
-  const auto& files = targets.at(t);
-  struct StageKey {
-    const char* key;
-    GLenum stage;
-  };
+  const ManifestTarget* files = result.manifest.target(t);
+  if (!files) throw RuntimeError(RuntimeError::Kind::Manifest, "the graph was not compiled for " + t);
   std::vector<ShaderSource> out;
-  for (StageKey k : {StageKey{"vert", GL_VERTEX_SHADER}, StageKey{"tesc", GL_TESS_CONTROL_SHADER},
-                     StageKey{"tese", GL_TESS_EVALUATION_SHADER}, StageKey{"frag", GL_FRAGMENT_SHADER}}) {
-    if (!files.contains(k.key)) continue;
-    std::string name = files.at(k.key).get<std::string>();
-    auto it = std::find_if(result.files.begin(), result.files.end(), [&](const OutputFile& f) { return f.name == name; });
+  for (const ManifestStageFile& f : files->files) {
+    auto it = std::find_if(result.files.begin(), result.files.end(), [&](const OutputFile& o) { return o.name == f.file; });
     if (it == result.files.end())
-      throw RuntimeError(RuntimeError::Kind::Manifest, "the manifest names " + name + " but the compile produced no such file");
-    out.push_back({k.stage, name, it->contents});
+      throw RuntimeError(RuntimeError::Kind::Manifest, "the manifest names " + f.file + " but the compile produced no such file");
+    out.push_back({glShaderStage(f.stage), f.file, it->contents});
   }
   bool vert = false, frag = false;
   for (const auto& s : out) vert |= s.stage == GL_VERTEX_SHADER, frag |= s.stage == GL_FRAGMENT_SHADER;
@@ -44,10 +46,9 @@ std::vector<ShaderSource> waterShaderSources(const CompileResult& result, Target
 
 std::map<std::string, TextureOrigin> textureOrigins(const CompileResult& result) {
   std::map<std::string, TextureOrigin> out;
-  const auto& textures = result.manifest.value("textures", nlohmann::json::array());
-  for (const auto& t : textures) {
-    if (!t.contains("source")) continue;
-    std::string source = t.value("source", "");
+  for (const auto& t : result.manifest.textures) {
+    if (t.source.empty()) continue;  // a scene texture: a render target, not a file
+    const std::string& source = t.source;
     for (const auto& op : result.program.ops) {
       if (!op.options.is_object()) continue;
       bool uses = false;

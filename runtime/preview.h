@@ -16,6 +16,9 @@ namespace wg::rt {
 // (RuntimeError Kind::Manifest).
 GlApi apiFor(Target target);
 
+// GL_VERTEX_SHADER, GL_TESS_CONTROL_SHADER, ... for a stage.
+GLenum glShaderStage(ShaderStage stage);
+
 // The shader files of `target` named by the manifest's "targets" entry, with their texts
 // from the compile result. Throws RuntimeError(Kind::Manifest) when one is missing.
 std::vector<ShaderSource> waterShaderSources(const CompileResult& result, Target target);

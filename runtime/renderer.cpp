@@ -91,18 +91,6 @@ GpuMesh uploadMesh(const Mesh& m, const std::vector<std::pair<GLuint, int>>& att
   return g;
 }
 
-std::vector<float> numbers(const nlohmann::json& v) {
-  std::vector<float> out;
-  if (v.is_number()) out.push_back(v.get<float>());
-  else if (v.is_boolean()) out.push_back(v.get<bool>() ? 1.0f : 0.0f);
-  else if (v.is_array())
-    for (const auto& x : v) {
-      if (!x.is_number()) return {};
-      out.push_back(x.get<float>());
-    }
-  return out;
-}
-
 // A node texture's identity: the source and folder, and for a file its size and time of
 // last change (builtin:* sources are made in memory and never change).
 std::string textureCacheKey(const std::string& source, const std::string& dir) {
@@ -315,15 +303,12 @@ struct Renderer::Impl {
     return v;
   }
 
-  // Resolved when the manifest is read, so a frame compares no names. The runtime
-  // provides a builtin when it has a value for it (not the probe's per-case ones).
-  BuiltinUniform runtimeBuiltin(const WaterUniform& u, const std::string& meaning) const {
-    auto b = parseBuiltinUniform(meaning);
-    WaterUniform asked = u;
-    if (b) asked.builtin = *b;
-    if (!b || builtinValue(asked).empty())
-      manifestError("uniform " + u.name + " asks for builtin '" + meaning + "', which the runtime does not provide");
-    return *b;
+  // Checked when the manifest is read, so a frame meets no builtin it cannot set. The
+  // runtime provides a builtin when it has a value for it (not the probe's per-case ones).
+  void checkRuntimeBuiltin(const WaterUniform& u) const {
+    if (builtinValue(u).empty())
+      manifestError("uniform " + u.name + " asks for builtin '" + std::string(builtinUniformRow(u.builtin).meaning) +
+                    "', which the runtime does not provide");
   }
 
   void setUniform(const WaterUniform& u, const std::vector<float>& v) const {
@@ -363,84 +348,68 @@ struct Renderer::Impl {
     }
   }
 
-  void setupWaterUniforms(const nlohmann::json& manifest, const std::map<std::string, TextureOrigin>& origins) {
-    auto list = manifest.find("uniforms");
-    if (list != manifest.end() && !list->is_array()) manifestError("the manifest's \"uniforms\" is not a list");
-    if (list != manifest.end()) {
-      for (const auto& m : *list) {
-        WaterUniform u;
-        u.name = m.value("name", "");
-        std::string type = m.value("type", "");
-        if (u.name.empty() || type.empty()) manifestError("a manifest uniform lacks \"name\" or \"type\"");
-        auto parsed = parseType(type);
-        if (!parsed || isSampler(*parsed) || *parsed == Type::Invalid)
-          manifestError("uniform " + u.name + " has a type the runtime cannot set: " + type);
-        u.type = *parsed;
-        if (m.contains("parameter")) {
-          u.parameter = m["parameter"].is_string() ? m["parameter"].get<std::string>() : u.name;
-          u.value = numbers(m.value("default", nlohmann::json()));
-          if (u.value.empty()) manifestError("parameter uniform " + u.name + " has no numeric \"default\"");
-          if (m.contains("min") && m["min"].is_number()) u.lo = m["min"].get<float>();
-          if (m.contains("max") && m["max"].is_number()) u.hi = m["max"].get<float>();
-          clampParameter(u);
-        } else {
-          u.angularFrequency = m.value("angular_frequency", 0.0);
-          u.builtin = runtimeBuiltin(u, m.value("builtin", ""));
-        }
-        for (GLuint program : waterPrograms()) {
-          GLint loc = glGetUniformLocation(program, u.name.c_str());
-          if (loc >= 0) u.locations.emplace_back(program, loc);  // else optimised out by the driver
-        }
-        setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);  // errors now, not at the first frame
-        uniforms.push_back(std::move(u));
+  void setupWaterUniforms(const Manifest& manifest, const std::map<std::string, TextureOrigin>& origins) {
+    for (const ManifestUniform& m : manifest.uniforms) {
+      WaterUniform u;
+      u.name = m.name;
+      u.type = m.type;
+      if (isSampler(u.type))
+        manifestError("uniform " + u.name + " has a type the runtime cannot set: " + std::string(typeName(u.type)));
+      if (m.parameter) {
+        u.parameter = m.parameter->name;
+        u.value.assign(m.parameter->defaultValue.begin(), m.parameter->defaultValue.end());
+        if (m.parameter->min) u.lo = static_cast<float>(*m.parameter->min);
+        if (m.parameter->max) u.hi = static_cast<float>(*m.parameter->max);
+        clampParameter(u);
+      } else {
+        u.builtin = m.builtin;
+        u.angularFrequency = m.angularFrequency;
+        checkRuntimeBuiltin(u);
       }
+      for (GLuint program : waterPrograms()) {
+        GLint loc = glGetUniformLocation(program, u.name.c_str());
+        if (loc >= 0) u.locations.emplace_back(program, loc);  // else optimised out by the driver
+      }
+      setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);  // errors now, not at the first frame
+      uniforms.push_back(std::move(u));
     }
     // Samplers: node textures (loaded here) and scene textures (render targets of the
     // planned passes), one texture unit each in manifest order.
     GLuint nextUnit = 0;
-    auto textures = manifest.find("textures");
-    if (textures != manifest.end() && !textures->is_array()) manifestError("the manifest's \"textures\" is not a list");
-    std::vector<std::string> declared;
-    if (textures != manifest.end()) {
-      for (const auto& t : *textures) {
-        std::string name = t.value("name", "");
-        std::string type = t.value("type", "sampler2D");
-        if (name.empty()) manifestError("a manifest texture lacks \"name\"");
-        declared.push_back(name);
-        GLuint texture = 0;
-        GLenum bindTarget = type == "samplerCube" ? GLenum(GL_TEXTURE_CUBE_MAP) : GLenum(GL_TEXTURE_2D);
-        if (t.contains("resource")) {
-          std::string resource = t.value("resource", "");
-          const GpuTarget* target = nullptr;
-          for (const auto& g : targets)
-            if (g.spec.sampler == name) target = &g;
-          if (!target)
-            manifestError("texture " + name + " (scene resource '" + resource +
-                          "') is not rendered by any pass the manifest lists");
-          if ((type == "samplerCube") != target->spec.cube) manifestError("texture " + name + " has the wrong sampler type " + type);
-          texture = target->color ? target->color.id() : target->depth.id();
-        } else if (t.contains("source")) {
-          if (type != "sampler2D") manifestError("node texture " + name + " must be a sampler2D, not " + type);
-          nodeTextures.push_back(nodeTexture(name, t.value("source", ""), origins));
-          texture = nodeTextures.back()->id();
-        } else {
-          manifestError("texture " + name + " has neither a \"source\" nor a \"resource\"");
-        }
-        bool used = false;
-        for (GLuint program : waterPrograms()) {
-          GLint loc = glGetUniformLocation(program, name.c_str());
-          if (loc < 0) continue;
-          if (!used) waterBindings.push_back({nextUnit++, bindTarget, texture});
-          used = true;
-          samplerUnits.push_back({program, loc, static_cast<GLint>(waterBindings.back().unit)});  // set each frame
-        }
+    for (const TextureInfo& t : manifest.textures) {
+      const bool cube = t.type == Type::SamplerCube;
+      GLuint texture = 0;
+      if (t.scene) {
+        const GpuTarget* target = find(*t.scene);
+        if (!target)
+          manifestError("texture " + t.name + " (scene resource '" +
+                        std::string(sceneResourceRow(sceneSamplerRow(*t.scene).resource).name) +
+                        "') is not rendered by any pass the manifest lists");
+        if (cube != target->spec.cube)
+          manifestError("texture " + t.name + " has the wrong sampler type " + std::string(typeName(t.type)));
+        texture = target->color ? target->color.id() : target->depth.id();
+      } else {
+        if (t.type != Type::Sampler2D)
+          manifestError("node texture " + t.name + " must be a sampler2D, not " + std::string(typeName(t.type)));
+        nodeTextures.push_back(nodeTexture(t.name, t.source, origins));
+        texture = nodeTextures.back()->id();
+      }
+      bool used = false;
+      for (GLuint program : waterPrograms()) {
+        GLint loc = glGetUniformLocation(program, t.name.c_str());
+        if (loc < 0) continue;
+        if (!used) waterBindings.push_back({nextUnit++, cube ? GLenum(GL_TEXTURE_CUBE_MAP) : GLenum(GL_TEXTURE_2D), texture});
+        used = true;
+        samplerUnits.push_back({program, loc, static_cast<GLint>(waterBindings.back().unit)});  // set each frame
       }
     }
     // A scene sampler the shader reads but the manifest does not list is a contract break.
     for (const auto& row : sceneSamplerTable()) {
       const std::string s(row.glslName);
+      const bool listed = std::any_of(manifest.textures.begin(), manifest.textures.end(),
+                                      [&](const TextureInfo& t) { return t.name == s; });
       for (GLuint program : waterPrograms())
-        if (glGetUniformLocation(program, s.c_str()) >= 0 && std::find(declared.begin(), declared.end(), s) == declared.end())
+        if (glGetUniformLocation(program, s.c_str()) >= 0 && !listed)
           manifestError("the water shader samples " + s + " but the manifest's \"textures\" does not list it");
     }
     checkGl("setting the water uniforms and textures");
@@ -659,7 +628,7 @@ struct Renderer::Impl {
   }
 };
 
-Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> waterSources, const RenderSettings& settings,
+Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSources, const RenderSettings& settings,
                    bool es, const std::map<std::string, TextureOrigin>& origins, GpuCache* cache)
     : impl_(std::make_unique<Impl>()) {
   Impl& r = *impl_;
@@ -680,15 +649,11 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   r.plan = planPasses(manifest, po);
 
   // The attributes the graph reads must be the ones the grid provides, where it provides them.
-  if (auto a = manifest.find("attributes"); a != manifest.end() && a->is_array()) {
-    for (const auto& attr : *a) {
-      std::string name = attr.value("name", "");
-      int loc = attr.value("location", -1);
-      bool ok = (name == iface::kPositionAttribute && loc == iface::kPositionLocation) ||
-                (name == iface::kNormalAttribute && loc == iface::kNormalLocation) ||
-                (name == iface::kUvAttribute && loc == iface::kUvLocation);
-      if (!ok) manifestError("the water grid has no attribute " + name + " at location " + std::to_string(loc));
-    }
+  for (const AttributeInfo& a : manifest.attributes) {
+    bool ok = (a.name == iface::kPositionAttribute && a.location == iface::kPositionLocation) ||
+              (a.name == iface::kNormalAttribute && a.location == iface::kNormalLocation) ||
+              (a.name == iface::kUvAttribute && a.location == iface::kUvLocation);
+    if (!ok) manifestError("the water grid has no attribute " + a.name + " at location " + std::to_string(a.location));
   }
   // Tessellated graphs (manifest "tessellation") bring control and evaluation stages; the
   // water grid is then drawn as patches of three vertices.
@@ -728,8 +693,7 @@ Renderer::Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> wat
   r.sceneMesh = uploadMesh(buildSceneMesh(), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});
   // A tessellated draw stays within its budget of generated triangles (tessellation_budget.h).
   int gridQuads = settings.waterGridQuads;
-  if (r.tessellated && manifest.contains("tessellation"))
-    gridQuads = tessellatedGridQuads(gridQuads, manifest["tessellation"].value("factor", 64.0));
+  if (r.tessellated && manifest.tessellation) gridQuads = tessellatedGridQuads(gridQuads, manifest.tessellation->settings.factor);
   r.waterMesh = uploadMesh(buildWaterGrid(gridQuads),
                            {{iface::kPositionLocation, 3}, {iface::kNormalLocation, 3}, {iface::kUvLocation, 2}});
   r.emptyVao = makeVertexArray();

@@ -11,8 +11,7 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "codegen/manifest.h"
 #include "runtime/gl_resources.h"
 #include "runtime/pass_plan.h"
 #include "runtime/scene.h"
@@ -53,16 +52,18 @@ struct TextureOrigin {
 
 class Renderer {
  public:
-  // `water` are the compiled shaders of one target (vertex and fragment). Throws
-  // RuntimeError: Manifest for passes, attributes, uniforms or textures the runtime cannot
-  // provide; Driver when the GL driver rejects a shader or a target is incomplete.
+  // `water` are the compiled shaders of one target (vertex and fragment), `manifest` the
+  // compile's (CompileResult::manifest in the same process; Manifest::fromJson of a
+  // manifest file). Throws RuntimeError: Manifest for passes, attributes, uniforms or
+  // textures the runtime cannot provide; Driver when the GL driver rejects a shader or a
+  // target is incomplete.
   // Node textures are loaded through wg::loadTexture (builtin:* or a PNG); `origins` maps
   // each manifest texture "source" to where it came from (missing: current folder).
   // With a `cache` (used only while constructing), programs whose texts it has linked
   // before and node textures it has uploaded are taken from it, not made again: an editor
   // rebuilding the Renderer after each edit keeps the scene's programs, and the water's
   // when only parameter values changed, with their machine code.
-  Renderer(const nlohmann::json& manifest, std::vector<ShaderSource> water, const RenderSettings& settings, bool es,
+  Renderer(const Manifest& manifest, std::vector<ShaderSource> water, const RenderSettings& settings, bool es,
            const std::map<std::string, TextureOrigin>& origins = {}, GpuCache* cache = nullptr);
   ~Renderer();
   Renderer(const Renderer&) = delete;

@@ -11,13 +11,10 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
-#include <nlohmann/json.hpp>
-
 #include "codegen/compile.h"
 #include "codegen/glslang_validate.h"
 #include "codegen/target.h"
-#include "runtime/gl_resources.h"
+#include "runtime/preview.h"
 
 namespace wg::handwritten {
 
@@ -27,20 +24,20 @@ inline const std::vector<std::string>& graphs() {
   return names;
 }
 
-inline constexpr ShaderStage kStages[] = {ShaderStage::Vertex, ShaderStage::TessControl, ShaderStage::TessEvaluation,
-                                          ShaderStage::Fragment};
+// The glsl330 files of a manifest, in pipeline order.
+inline const std::vector<ManifestStageFile>& glsl330Files(const Manifest& manifest) {
+  const ManifestTarget* target = manifest.target(targetName(Target::Glsl330));
+  if (!target) throw std::runtime_error("the graph was not compiled for glsl330");
+  return target->files;
+}
 
 // The generated glsl330 shaders of a compile, in pipeline order.
 inline std::vector<ShaderSource> generatedShaders(const CompileResult& result) {
-  const auto& files = result.manifest.at("targets").at("glsl330");
   std::vector<ShaderSource> out;
-  for (ShaderStage s : kStages) {
-    std::string ext(stageExtension(s));
-    if (!files.contains(ext)) continue;
-    std::string name = files.at(ext).get<std::string>();
-    auto it = std::find_if(result.files.begin(), result.files.end(), [&](const OutputFile& f) { return f.name == name; });
-    if (it == result.files.end()) throw std::runtime_error("the manifest names " + name + " but the compile has no such file");
-    out.push_back({s, name, it->contents});
+  for (const ManifestStageFile& f : glsl330Files(result.manifest)) {
+    auto it = std::find_if(result.files.begin(), result.files.end(), [&](const OutputFile& o) { return o.name == f.file; });
+    if (it == result.files.end()) throw std::runtime_error("the manifest names " + f.file + " but the compile has no such file");
+    out.push_back({f.stage, f.file, it->contents});
   }
   return out;
 }
@@ -48,18 +45,15 @@ inline std::vector<ShaderSource> generatedShaders(const CompileResult& result) {
 // bench/handwritten/<graph>.glsl330.<stage> for every stage the generated manifest has.
 // Throws std::runtime_error naming the file when one is missing.
 inline std::vector<ShaderSource> handwrittenShaders(const std::string& sourceDir, const std::string& graph,
-                                                    const nlohmann::json& manifest) {
-  const auto& files = manifest.at("targets").at("glsl330");
+                                                    const Manifest& manifest) {
   std::vector<ShaderSource> out;
-  for (ShaderStage s : kStages) {
-    std::string ext(stageExtension(s));
-    if (!files.contains(ext)) continue;
-    std::string path = sourceDir + "/bench/handwritten/" + graph + ".glsl330." + ext;
+  for (const ManifestStageFile& f : glsl330Files(manifest)) {
+    std::string path = sourceDir + "/bench/handwritten/" + graph + ".glsl330." + std::string(stageExtension(f.stage));
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(path + ": cannot read the hand-written shader");
     std::ostringstream text;
     text << in.rdbuf();
-    out.push_back({s, path, text.str()});
+    out.push_back({f.stage, path, text.str()});
   }
   return out;
 }
@@ -67,13 +61,7 @@ inline std::vector<ShaderSource> handwrittenShaders(const std::string& sourceDir
 // For the GL runtime.
 inline std::vector<rt::ShaderSource> forRuntime(const std::vector<ShaderSource>& shaders) {
   std::vector<rt::ShaderSource> out;
-  for (const auto& s : shaders) {
-    GLenum stage = s.stage == ShaderStage::Vertex           ? GL_VERTEX_SHADER
-                   : s.stage == ShaderStage::TessControl    ? GL_TESS_CONTROL_SHADER
-                   : s.stage == ShaderStage::TessEvaluation ? GL_TESS_EVALUATION_SHADER
-                                                            : GL_FRAGMENT_SHADER;
-    out.push_back({stage, s.fileName, s.text});
-  }
+  for (const auto& s : shaders) out.push_back({rt::glShaderStage(s.stage), s.fileName, s.text});
   return out;
 }
 

@@ -80,7 +80,7 @@ TEST(Emit, OnlyCalledLibraryFunctionsAppear) {
     EXPECT_EQ(frag.find("wg_depth_tint_smooth"), std::string::npos);
     EXPECT_EQ(vert.find("wg_fresnel"), std::string::npos) << "the vertex stage calls no fresnel";
   }
-  auto functions = lake.result->manifest.at("functions");
+  const auto& functions = lake.result->manifest.functions;
   EXPECT_NE(std::find(functions.begin(), functions.end(), "wg_fresnel_schlick"), functions.end());
   EXPECT_EQ(std::find(functions.begin(), functions.end(), "wg_fresnel_exact"), functions.end());
 
@@ -173,10 +173,10 @@ TEST(Emit, UnusedParametersProduceNoUniform) {
   EXPECT_EQ(glsl.find("p_ior"), std::string::npos) << "'ior' is declared but never read";
   EXPECT_EQ(glsl.find("p_slope"), std::string::npos) << "'slope' is static: compiled in";
   EXPECT_NE(glsl.find("p_sky"), std::string::npos);
-  for (const auto& u : shelf.result->manifest.at("uniforms")) {
-    if (!u.contains("parameter")) continue;
-    EXPECT_NE(u["parameter"], "ior");
-    EXPECT_NE(u["parameter"], "slope");
+  for (const auto& u : shelf.result->manifest.uniforms) {
+    if (!u.parameter) continue;
+    EXPECT_NE(u.parameter->name, "ior");
+    EXPECT_NE(u.parameter->name, "slope");
   }
 
   Compiled c = compileText(graphJson(R"({"id": "u", "type": "uv"}, {"id": "l", "type": "length", "inputs": {"x": "u.out"}})",

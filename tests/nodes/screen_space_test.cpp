@@ -376,19 +376,19 @@ TEST(ScreenSpaceGraphs, EachNodeCompilesForEveryTarget) {
   std::string messages;
   auto r = compileText(g, &messages);
   ASSERT_TRUE(r) << messages;
-  auto passes = r->manifest["passes"];
-  for (const char* p : {"depth_prepass", "scene_color_copy", "planar_reflection", "environment_cubemap", "water_surface"})
-    EXPECT_NE(std::find(passes.begin(), passes.end(), p), passes.end()) << p;
-  EXPECT_EQ(std::find(passes.begin(), passes.end(), "deferred_water"), passes.end());
+  for (RenderPass p : {RenderPass::DepthPrepass, RenderPass::SceneColorCopy, RenderPass::PlanarReflection,
+                       RenderPass::EnvironmentCubemap, RenderPass::WaterSurface})
+    EXPECT_TRUE(r->manifest.lists(p)) << renderPassRow(p).name;
+  EXPECT_FALSE(r->manifest.lists(RenderPass::DeferredWater));
 }
 
 TEST(ScreenSpaceGraphs, UnderwaterRunsDeferredWithoutVaryings) {
   std::string messages;
   auto r = compileText(underwaterGraph("auto"), &messages);
   ASSERT_TRUE(r) << messages;
-  auto passes = r->manifest["passes"];
-  for (const char* p : {"depth_prepass", "scene_color_copy", "deferred_water", "water_surface"})
-    EXPECT_NE(std::find(passes.begin(), passes.end(), p), passes.end()) << p;
+  for (RenderPass p : {RenderPass::DepthPrepass, RenderPass::SceneColorCopy, RenderPass::DeferredWater,
+                       RenderPass::WaterSurface})
+    EXPECT_TRUE(r->manifest.lists(p)) << renderPassRow(p).name;
   for (const char* target : {".glsl330.frag", ".es300.frag", ".vk450.frag"}) {
     SCOPED_TRACE(target);
     std::string frag = fileOf(*r, target);

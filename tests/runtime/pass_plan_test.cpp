@@ -9,11 +9,13 @@
 namespace wg::rt {
 namespace {
 
-nlohmann::json manifestWith(std::vector<std::string> passes) {
+nlohmann::json manifestJsonWith(std::vector<std::string> passes) {
   nlohmann::json m;
   m["passes"] = passes;
   return m;
 }
+
+Manifest manifestWith(std::vector<std::string> passes) { return Manifest::fromJson(manifestJsonWith(std::move(passes))); }
 
 PlanOptions small() {
   PlanOptions o;
@@ -110,10 +112,21 @@ TEST(PassPlan, DuplicatesCountOnce) {
   EXPECT_EQ(p.targets.size(), 2u);
 }
 
-void expectManifestError(const nlohmann::json& m, const std::string& fragment) {
+// A "passes" list the manifest reader refuses.
+void expectUnreadable(const nlohmann::json& m, const std::string& fragment) {
+  try {
+    Manifest::fromJson(m);
+    ADD_FAILURE() << "no error for " << m.dump();
+  } catch (const ManifestError& e) {
+    EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+  }
+}
+
+// A manifest that reads but that the runtime cannot run.
+void expectUnplannable(const Manifest& m, const std::string& fragment) {
   try {
     planPasses(m, small());
-    ADD_FAILURE() << "no error for " << m.dump();
+    ADD_FAILURE() << "no error for " << m.toJson().dump();
   } catch (const RuntimeError& e) {
     EXPECT_EQ(e.kind(), RuntimeError::Kind::Manifest);
     EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
@@ -143,13 +156,16 @@ TEST(PassPlan, DeferredWaterCreatesTheFloatGbuffer) {
 }
 
 TEST(PassPlan, Errors) {
-  expectManifestError(nlohmann::json::object(), "no \"passes\"");
-  expectManifestError(manifestWith({"planar_reflection"}), "lacks water_surface");
-  expectManifestError(manifestWith({"water_surface", "ssao"}), "unknown pass 'ssao'");
-  expectManifestError(manifestWith({"water_surface", "opaque_scene"}), "unknown pass 'opaque_scene'");
+  expectUnreadable(nlohmann::json::object(), "no \"passes\"");
+  expectUnplannable(manifestWith({"planar_reflection"}), "lacks water_surface");
+  expectUnreadable(manifestJsonWith({"water_surface", "ssao"}), "unknown pass 'ssao'");
+  expectUnreadable(manifestJsonWith({"water_surface", "opaque_scene"}), "unknown pass 'opaque_scene'");
   nlohmann::json m;
   m["passes"] = {"water_surface", 3};
-  expectManifestError(m, "non-string");
+  expectUnreadable(m, "non-string");
+  PlanOptions empty = small();
+  empty.width = 0;
+  EXPECT_THROW(planPasses(manifestWith({"water_surface"}), empty), RuntimeError);
 }
 
 // The compiler's manifests for the example graphs plan without errors, and a graph that
@@ -159,8 +175,8 @@ TEST(PassPlan, ExampleGraphManifests) {
     SCOPED_TRACE(name);
     CompileResult r = test::compileExample(name);
     PassPlan p = planPasses(r.manifest, small());
-    size_t expected = r.manifest["passes"].size();
-    for (const auto& pass : r.manifest["passes"]) expected += pass == "deferred_water";  // the G-buffer: two targets
+    size_t expected = r.manifest.passes.size();
+    for (RenderPass pass : r.manifest.passes) expected += pass == RenderPass::DeferredWater;  // the G-buffer: two targets
     EXPECT_EQ(p.targets.size(), expected) << "one target per listed pass besides the frame";
     EXPECT_TRUE(p.runs(PassKind::WaterSurface));
   }

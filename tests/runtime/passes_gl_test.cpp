@@ -25,7 +25,8 @@ const std::vector<std::string> kAllSamplers = {"u_scene_depth", "u_scene_color",
 Image renderWith(EglContext& ctx, const std::vector<std::string>& passes, const std::vector<std::string>& samplers,
                  RenderSettings s = test::smallSettings(), int* targetCount = nullptr, size_t* bytes = nullptr,
                  size_t* plannedBytes = nullptr) {
-  Renderer r(test::handManifest(passes, samplers), test::handWaterShaders(ctx.isEs(), samplers), s, ctx.isEs());
+  Renderer r(Manifest::fromJson(test::handManifest(passes, samplers)), test::handWaterShaders(ctx.isEs(), samplers), s,
+             ctx.isEs());
   r.renderFrame();
   if (targetCount) *targetCount = r.createdTargetCount();
   if (bytes) *bytes = r.createdTargetBytes();
@@ -76,7 +77,7 @@ TEST_P(PassesGl, ReflectionAndRefractionDiffer) {
 
 TEST_P(PassesGl, SamplingATextureWhosePassIsNotListedIsAnError) {
   auto ctx = EglContext::create(GetParam());
-  nlohmann::json m = test::handManifest({}, {});  // no passes, no textures listed
+  Manifest m = Manifest::fromJson(test::handManifest({}, {}));  // no passes, no textures listed
   try {
     Renderer r(m, test::handWaterShaders(ctx->isEs(), {"u_reflection"}), test::smallSettings(), ctx->isEs());
     ADD_FAILURE() << "no error";
@@ -85,7 +86,7 @@ TEST_P(PassesGl, SamplingATextureWhosePassIsNotListedIsAnError) {
     EXPECT_NE(std::string(e.what()).find("u_reflection"), std::string::npos) << e.what();
   }
   // Listed as a texture but its pass is not: also an error.
-  nlohmann::json m2 = test::handManifest({}, {"u_reflection"});
+  Manifest m2 = Manifest::fromJson(test::handManifest({}, {"u_reflection"}));
   EXPECT_THROW(Renderer(m2, test::handWaterShaders(ctx->isEs(), {"u_reflection"}), test::smallSettings(), ctx->isEs()),
                RuntimeError);
 }
@@ -98,7 +99,7 @@ TEST(DriverErrors, ARejectedShaderNamesTheFileAndCarriesTheLog) {
   auto shaders = test::handWaterShaders(false, {});
   shaders[1].text = "#version 330 core\nout vec4 o_color;\nvoid main() { o_color = undefined_thing; }\n";
   try {
-    Renderer r(test::handManifest({}, {}), shaders, test::smallSettings(), false);
+    Renderer r(Manifest::fromJson(test::handManifest({}, {})), shaders, test::smallSettings(), false);
     ADD_FAILURE() << "no error";
   } catch (const RuntimeError& e) {
     EXPECT_EQ(e.kind(), RuntimeError::Kind::Driver);
@@ -109,14 +110,23 @@ TEST(DriverErrors, ARejectedShaderNamesTheFileAndCarriesTheLog) {
   }
 }
 
-TEST(ManifestErrors, UnknownBuiltinAndBadAttribute) {
+// A builtin that only the probe sets (an unknown one is refused by Manifest::fromJson) and an
+// attribute the water grid does not have.
+TEST(ManifestErrors, ProbeBuiltinAndBadAttribute) {
   auto ctx = EglContext::create(GlApi::DesktopGl45);
   nlohmann::json m = test::handManifest({}, {});
-  m["uniforms"].push_back({{"name", "u_wind"}, {"type", "vec2"}, {"builtin", "wind"}});
-  EXPECT_THROW(Renderer(m, test::handWaterShaders(false, {}), test::smallSettings(), false), RuntimeError);
+  m["uniforms"].push_back({{"name", "u_probe_uv"}, {"type", "vec2"}, {"stages", {"fragment"}}, {"builtin", "uv"}});
+  try {
+    Renderer r(Manifest::fromJson(m), test::handWaterShaders(false, {}), test::smallSettings(), false);
+    ADD_FAILURE() << "no error";
+  } catch (const RuntimeError& e) {
+    EXPECT_EQ(e.kind(), RuntimeError::Kind::Manifest);
+    EXPECT_NE(std::string(e.what()).find("does not provide"), std::string::npos) << e.what();
+  }
   nlohmann::json m2 = test::handManifest({}, {});
   m2["attributes"].push_back({{"name", "a_tangent"}, {"type", "vec4"}, {"location", 3}});
-  EXPECT_THROW(Renderer(m2, test::handWaterShaders(false, {}), test::smallSettings(), false), RuntimeError);
+  EXPECT_THROW(Renderer(Manifest::fromJson(m2), test::handWaterShaders(false, {}), test::smallSettings(), false),
+               RuntimeError);
 }
 
 TEST(NodeTextures, AMalformedPngIsAnErrorNamingTheNode) {
@@ -124,10 +134,11 @@ TEST(NodeTextures, AMalformedPngIsAnErrorNamingTheNode) {
   std::string dir = test::makeTempDir("wg_tex_");
   { std::ofstream(dir + "/broken.png") << "not a png at all"; }
   nlohmann::json m = test::handManifest({}, {});
-  m["textures"].push_back({{"name", "t0_broken"}, {"type", "sampler2D"}, {"source", "broken.png"}});
+  m["textures"].push_back(
+      {{"name", "t0_broken"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "broken.png"}});
   std::map<std::string, TextureOrigin> origins{{"broken.png", {dir, "pond.json:7:5: node 'foam'"}}};
   try {
-    Renderer r(m, test::handWaterShaders(false, {}), test::smallSettings(), false, origins);
+    Renderer r(Manifest::fromJson(m), test::handWaterShaders(false, {}), test::smallSettings(), false, origins);
     ADD_FAILURE() << "no error";
   } catch (const RuntimeError& e) {
     std::string msg = e.what();
@@ -135,10 +146,11 @@ TEST(NodeTextures, AMalformedPngIsAnErrorNamingTheNode) {
     EXPECT_NE(msg.find("broken.png"), std::string::npos) << msg;
   }
   nlohmann::json missing = test::handManifest({}, {});
-  missing["textures"].push_back({{"name", "t0_gone"}, {"type", "sampler2D"}, {"source", "gone.png"}});
+  missing["textures"].push_back(
+      {{"name", "t0_gone"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "gone.png"}});
   std::map<std::string, TextureOrigin> o2{{"gone.png", {dir, "pond.json:9:5: node 'ripples'"}}};
   try {
-    Renderer r(missing, test::handWaterShaders(false, {}), test::smallSettings(), false, o2);
+    Renderer r(Manifest::fromJson(missing), test::handWaterShaders(false, {}), test::smallSettings(), false, o2);
     ADD_FAILURE() << "no error";
   } catch (const RuntimeError& e) {
     EXPECT_NE(std::string(e.what()).find("node 'ripples'"), std::string::npos) << e.what();
@@ -149,8 +161,9 @@ TEST(NodeTextures, AMalformedPngIsAnErrorNamingTheNode) {
 TEST(NodeTextures, ABuiltinTextureLoads) {
   auto ctx = EglContext::create(GlApi::DesktopGl45);
   nlohmann::json m = test::handManifest({}, {});
-  m["textures"].push_back({{"name", "t0_foam"}, {"type", "sampler2D"}, {"source", "builtin:foam"}});
-  EXPECT_NO_THROW(Renderer(m, test::handWaterShaders(false, {}), test::smallSettings(), false));
+  m["textures"].push_back(
+      {{"name", "t0_foam"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "builtin:foam"}});
+  EXPECT_NO_THROW(Renderer(Manifest::fromJson(m), test::handWaterShaders(false, {}), test::smallSettings(), false));
 }
 
 }  // namespace

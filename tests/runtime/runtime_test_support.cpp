@@ -97,16 +97,18 @@ nlohmann::json handManifest(const std::vector<std::string>& passes, const std::v
   m["passes"].push_back("water_surface");
   m["attributes"] = {{{"name", "a_position"}, {"type", "vec3"}, {"location", 0}}};
   m["uniforms"] = nlohmann::json::array({
-      {{"name", "u_model"}, {"type", "mat4"}, {"builtin", "model"}},
-      {{"name", "u_view_projection"}, {"type", "mat4"}, {"builtin", "view_projection"}},
-      {{"name", "u_viewport_size"}, {"type", "vec2"}, {"builtin", "viewport_size"}},
-      {{"name", "u_camera_position"}, {"type", "vec3"}, {"builtin", "camera_position"}},
+      {{"name", "u_model"}, {"type", "mat4"}, {"stages", {"vertex"}}, {"builtin", "model"}},
+      {{"name", "u_view_projection"}, {"type", "mat4"}, {"stages", {"vertex"}}, {"builtin", "view_projection"}},
+      {{"name", "u_viewport_size"}, {"type", "vec2"}, {"stages", {"fragment"}}, {"builtin", "viewport_size"}},
+      {{"name", "u_camera_position"}, {"type", "vec3"}, {"stages", {"fragment"}}, {"builtin", "camera_position"}},
   });
   m["textures"] = nlohmann::json::array();
   for (const auto& s : samplers) {
     const auto& info = samplerInfo(s);
     m["textures"].push_back({{"name", s},
                              {"type", std::string(typeName(info.type))},
+                             {"binding", static_cast<int>(m["textures"].size()) + 1},
+                             {"stages", {"fragment"}},
                              {"resource", std::string(sceneResourceRow(info.resource).name)}});
   }
   return m;

@@ -22,8 +22,9 @@ rt::RenderSettings smallSettings();
 // A water shader written by hand that samples the given scene textures (u_reflection, ...)
 // at the screen position and sums them with weights; for pass tests.
 std::vector<rt::ShaderSource> handWaterShaders(bool es, const std::vector<std::string>& samplers);
-// A manifest listing `passes` (plus water_surface), the builtins the hand shaders use and
-// a texture entry per sampler.
+// The JSON of a manifest listing `passes` (plus water_surface), the builtins the hand
+// shaders use and a texture entry per sampler (Manifest::fromJson reads it, as it would
+// a hand-written manifest file).
 nlohmann::json handManifest(const std::vector<std::string>& passes, const std::vector<std::string>& samplers);
 
 }  // namespace wg::test

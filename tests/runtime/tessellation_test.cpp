@@ -57,14 +57,14 @@ TEST(Tessellation, StagesPerTarget) {
   EXPECT_TRUE(hasFile(r, "tess.vk450.tese.spv"));
   EXPECT_FALSE(hasFile(r, "tess.es300.tesc"));
   EXPECT_FALSE(hasFile(r, "tess.es300.tese"));
-  ASSERT_TRUE(r.manifest.contains("tessellation"));
-  EXPECT_EQ(r.manifest["tessellation"]["patch_vertices"], 3);
-  EXPECT_EQ(r.manifest["tessellation"]["factor"], 8.0);
-  EXPECT_EQ(r.manifest["tessellation"]["targets"], nlohmann::json::array({"glsl330", "vk450"}));
+  ASSERT_TRUE(r.manifest.tessellation);
+  EXPECT_EQ(r.manifest.toJson()["tessellation"]["patch_vertices"], 3);
+  EXPECT_EQ(r.manifest.tessellation->settings.factor, 8.0);
+  EXPECT_EQ(r.manifest.tessellation->targets, (std::vector<std::string>{"glsl330", "vk450"}));
 
   CompileResult flat = compile(wavesGraph("none"));
   EXPECT_FALSE(hasFile(flat, "tess.glsl330.tesc"));
-  EXPECT_FALSE(flat.manifest.contains("tessellation"));
+  EXPECT_FALSE(flat.manifest.tessellation);
 }
 
 TEST(Tessellation, WavesRunInTheEvaluationStage) {

@@ -1,0 +1,297 @@
+// Manifest::fromJson: a manifest file back into the value, refusing what the compiler
+// would not have written (an unknown member, pass, resource, builtin or type; a member of
+// the wrong kind) with a message that names the entry, so a hand-edited manifest fails
+// when it is read, not in the middle of a frame.
+#include <initializer_list>
+
+#include "codegen/manifest.h"
+
+namespace wg {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& message) { throw ManifestError(message); }
+
+// `what` names the entry in messages: "uniform u_time", "the manifest's \"tessellation\"".
+void onlyMembers(const json& object, std::initializer_list<std::string_view> known, const std::string& what) {
+  for (const auto& [key, value] : object.items()) {
+    bool listed = false;
+    for (std::string_view k : known) listed |= key == k;
+    if (!listed) fail(what + " has an unknown member \"" + key + "\"");
+  }
+}
+
+const json* member(const json& object, const char* key) {
+  auto it = object.find(key);
+  return it == object.end() ? nullptr : &*it;
+}
+
+std::string text(const json& object, const char* key, const std::string& what) {
+  const json* v = member(object, key);
+  if (!v || !v->is_string()) fail(what + " lacks the string \"" + key + "\"");
+  return v->get<std::string>();
+}
+
+std::string optionalText(const json& object, const char* key, const std::string& what) {
+  return member(object, key) ? text(object, key, what) : std::string();
+}
+
+double number(const json& object, const char* key, const std::string& what) {
+  const json* v = member(object, key);
+  if (!v || !v->is_number()) fail(what + " lacks the number \"" + key + "\"");
+  return v->get<double>();
+}
+
+int integer(const json& object, const char* key, const std::string& what) {
+  const json* v = member(object, key);
+  if (!v || !v->is_number_integer()) fail(what + " lacks the integer \"" + key + "\"");
+  return v->get<int>();
+}
+
+Type typeOf(const json& object, const std::string& what) {
+  const std::string name = text(object, "type", what);
+  auto t = parseType(name);
+  if (!t || *t == Type::Invalid) fail(what + " has an unknown type '" + name + "'");
+  return *t;
+}
+
+unsigned stagesOf(const json& object, const std::string& what) {
+  const json* v = member(object, "stages");
+  if (!v || !v->is_array()) fail(what + " lacks the list \"stages\"");
+  unsigned stages = 0;
+  for (const auto& s : *v) {
+    if (s == "vertex") stages |= kVertexStage;
+    else if (s == "fragment") stages |= kFragmentStage;
+    else fail(what + " lists an unknown stage " + s.dump());
+  }
+  return stages;
+}
+
+std::vector<std::string> texts(const json& list, const std::string& what) {
+  if (!list.is_array()) fail(what + " is not a list");
+  std::vector<std::string> out;
+  for (const auto& s : list) {
+    if (!s.is_string()) fail(what + " holds a non-string entry");
+    out.push_back(s.get<std::string>());
+  }
+  return out;
+}
+
+// The objects of a top-level list ("uniforms", ...); an absent list has none.
+const json& objects(const json& manifest, const char* key) {
+  static const json kNone = json::array();
+  const json* list = member(manifest, key);
+  if (!list) return kNone;
+  const std::string what = std::string("the manifest's \"") + key + "\"";
+  if (!list->is_array()) fail(what + " is not a list");
+  for (const auto& e : *list)
+    if (!e.is_object()) fail(what + " holds an entry that is not an object");
+  return *list;
+}
+
+std::vector<RenderPass> passesOf(const json& manifest) {
+  const json* list = member(manifest, "passes");
+  if (!list || !list->is_array()) fail("the manifest has no \"passes\" list");
+  std::vector<RenderPass> passes;
+  for (const auto& p : *list) {
+    if (!p.is_string()) fail("the manifest's \"passes\" list holds a non-string entry");
+    const std::string name = p.get<std::string>();
+    auto pass = parseRenderPass(name);
+    // The opaque scene always runs: a manifest never lists it.
+    if (!pass || *pass == RenderPass::OpaqueScene) fail("the manifest lists an unknown pass '" + name + "'");
+    passes.push_back(*pass);
+  }
+  return passes;
+}
+
+ManifestTarget targetOf(const std::string& name, const json& files) {
+  const std::string what = "target " + name;
+  if (!files.is_object()) fail(what + " is not an object");
+  ManifestTarget t;
+  t.name = name;
+  const json* entryPoints = member(files, "entry_points");
+  if (entryPoints && !entryPoints->is_object()) fail(what + "'s \"entry_points\" is not an object");
+  if (!entryPoints != !member(files, "from")) fail(what + " has one of \"entry_points\" and \"from\" without the other");
+  if (entryPoints) t.from = text(files, "from", what);
+  size_t known = entryPoints ? 2 : 0;
+  for (ShaderStage stage : {ShaderStage::Vertex, ShaderStage::TessControl, ShaderStage::TessEvaluation, ShaderStage::Fragment}) {
+    const std::string ext(stageExtension(stage));
+    if (!member(files, ext.c_str())) continue;
+    ManifestStageFile f;
+    f.stage = stage;
+    f.file = text(files, ext.c_str(), what);
+    f.spirv = optionalText(files, (ext + ".spv").c_str(), what);
+    if (entryPoints) f.entryPoint = text(*entryPoints, ext.c_str(), what + "'s \"entry_points\"");
+    known += f.spirv.empty() ? 1 : 2;
+    t.files.push_back(std::move(f));
+  }
+  if (known != files.size()) fail(what + " has a member that is not a shader stage (vert, tesc, tese, frag, <stage>.spv)");
+  if (entryPoints && entryPoints->size() != t.files.size()) fail(what + "'s \"entry_points\" names a stage it has no file for");
+  return t;
+}
+
+AttributeInfo attributeOf(const json& a) {
+  AttributeInfo out;
+  out.name = text(a, "name", "a manifest attribute");
+  const std::string what = "attribute " + out.name;
+  onlyMembers(a, {"name", "type", "location"}, what);
+  out.type = typeOf(a, what);
+  out.location = integer(a, "location", what);
+  return out;
+}
+
+std::vector<double> defaultOf(const json& u, const std::string& what) {
+  const json* v = member(u, "default");
+  std::vector<double> values;
+  if (v && v->is_number()) values.push_back(v->get<double>());
+  if (v && v->is_array())
+    for (const auto& x : *v) {
+      if (!x.is_number()) return {};
+      values.push_back(x.get<double>());
+    }
+  if (values.empty()) fail(what + " has no numeric \"default\"");
+  return values;
+}
+
+ManifestUniform uniformOf(const json& u) {
+  ManifestUniform out;
+  out.name = text(u, "name", "a manifest uniform");
+  const std::string what = "uniform " + out.name;
+  out.type = typeOf(u, what);
+  out.stages = stagesOf(u, what);
+  if (member(u, "parameter")) {
+    onlyMembers(u, {"name", "type", "stages", "parameter", "default", "min", "max", "hint", "description"}, what);
+    ManifestParameter& p = out.parameter.emplace();
+    p.name = text(u, "parameter", what);
+    p.defaultValue = defaultOf(u, "parameter " + what);
+    if (member(u, "min")) p.min = number(u, "min", what);
+    if (member(u, "max")) p.max = number(u, "max", what);
+    p.hint = optionalText(u, "hint", what);
+    p.description = optionalText(u, "description", what);
+    return out;
+  }
+  const std::string meaning = text(u, "builtin", what);
+  auto builtin = parseBuiltinUniform(meaning);
+  if (!builtin) fail(what + " asks for builtin '" + meaning + "', which is not a builtin uniform");
+  out.builtin = *builtin;
+  if (out.builtin == BuiltinUniform::TimePhase) {
+    onlyMembers(u, {"name", "type", "stages", "builtin", "angular_frequency"}, what);
+    out.angularFrequency = number(u, "angular_frequency", what);
+  } else {
+    onlyMembers(u, {"name", "type", "stages", "builtin"}, what);
+  }
+  return out;
+}
+
+VaryingInfo varyingOf(const json& v) {
+  VaryingInfo out;
+  out.name = text(v, "name", "a manifest varying");
+  const std::string what = "varying " + out.name;
+  onlyMembers(v, {"name", "type", "carries"}, what);
+  out.type = typeOf(v, what);
+  out.carries = text(v, "carries", what);
+  return out;
+}
+
+TextureInfo textureOf(const json& t) {
+  TextureInfo out;
+  out.name = text(t, "name", "a manifest texture");
+  const std::string what = "texture " + out.name;
+  onlyMembers(t, {"name", "type", "binding", "stages", "source", "resource"}, what);
+  out.type = typeOf(t, what);
+  out.binding = integer(t, "binding", what);
+  out.stages = stagesOf(t, what);
+  if (member(t, "source") && member(t, "resource")) fail(what + " has both a \"source\" and a \"resource\"");
+  if (member(t, "source")) {
+    out.source = text(t, "source", what);
+  } else if (member(t, "resource")) {
+    // A scene texture is one of its resource's samplers, named as the shader declares it.
+    const std::string resource = text(t, "resource", what);
+    if (!parseSceneResource(resource)) fail(what + " names an unknown scene resource '" + resource + "'");
+    const SceneSamplerRow* sampler = findSceneSampler(out.name);
+    if (!sampler || sceneResourceRow(sampler->resource).name != resource)
+      fail(what + " is not a sampler of scene resource '" + resource + "'");
+    out.scene = sampler->id;
+  } else {
+    fail(what + " has neither a \"source\" nor a \"resource\"");
+  }
+  return out;
+}
+
+ManifestTessellation tessellationOf(const json& t) {
+  const std::string what = "the manifest's \"tessellation\"";
+  if (!t.is_object()) fail(what + " is not an object");
+  onlyMembers(t, {"patch_vertices", "min_distance", "max_distance", "factor", "targets"}, what);
+  if (integer(t, "patch_vertices", what) != kPatchVertices)
+    fail(what + " has patches of other than " + std::to_string(kPatchVertices) + " vertices");
+  ManifestTessellation out;
+  out.settings.minDistance = number(t, "min_distance", what);
+  out.settings.maxDistance = number(t, "max_distance", what);
+  out.settings.factor = number(t, "factor", what);
+  const json* targets = member(t, "targets");
+  if (!targets) fail(what + " lacks the list \"targets\"");
+  out.targets = texts(*targets, what + "'s \"targets\"");
+  return out;
+}
+
+void nodesOf(const json& nodes, Manifest& m) {
+  const std::string what = "the manifest's \"nodes\"";
+  if (!nodes.is_object()) fail(what + " is not an object");
+  onlyMembers(nodes, {"total", "kept", "removed"}, what);
+  m.nodesTotal = integer(nodes, "total", what);
+  for (const char* list : {"kept", "removed"})
+    if (const json* l = member(nodes, list); !l || !l->is_array()) fail(what + " lacks the list \"" + list + "\"");
+  for (const auto& k : nodes["kept"]) {
+    if (!k.is_object()) fail(what + "'s \"kept\" holds an entry that is not an object");
+    ManifestKeptNode& n = m.kept.emplace_back();
+    n.node = text(k, "node", "a kept node");
+    const std::string nodeWhat = "kept node " + n.node;
+    onlyMembers(k, {"node", "type", "stages", "merged"}, nodeWhat);
+    n.type = text(k, "type", nodeWhat);
+    n.stages = stagesOf(k, nodeWhat);
+    if (const json* merged = member(k, "merged")) n.merged = texts(*merged, nodeWhat + "'s \"merged\"");
+  }
+  for (const auto& r : nodes["removed"]) {
+    if (!r.is_object()) fail(what + "'s \"removed\" holds an entry that is not an object");
+    onlyMembers(r, {"what", "reason"}, "a removed node");
+    m.removed.push_back({text(r, "what", "a removed node"), text(r, "reason", "a removed node")});
+  }
+}
+
+}  // namespace
+
+Manifest Manifest::fromJson(const json& j) {
+  if (!j.is_object()) fail("the manifest is not a JSON object");
+  Manifest m;
+  m.passes = passesOf(j);
+  onlyMembers(j,
+              {"format", "graph", "description", "preset", "targets", "attributes", "uniforms", "varyings", "functions",
+               "textures", "tessellation", "resources", "passes", "nodes"},
+              "the manifest");
+  if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
+    fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));
+  m.graph = optionalText(j, "graph", "the manifest");
+  m.description = optionalText(j, "description", "the manifest");
+  m.preset = optionalText(j, "preset", "the manifest");
+  if (const json* targets = member(j, "targets")) {
+    if (!targets->is_object()) fail("the manifest's \"targets\" is not an object");
+    for (const auto& [name, files] : targets->items()) m.targets.push_back(targetOf(name, files));
+  }
+  for (const auto& a : objects(j, "attributes")) m.attributes.push_back(attributeOf(a));
+  for (const auto& u : objects(j, "uniforms")) m.uniforms.push_back(uniformOf(u));
+  for (const auto& v : objects(j, "varyings")) m.varyings.push_back(varyingOf(v));
+  if (const json* functions = member(j, "functions")) m.functions = texts(*functions, "the manifest's \"functions\"");
+  for (const auto& t : objects(j, "textures")) m.textures.push_back(textureOf(t));
+  if (const json* t = member(j, "tessellation")) m.tessellation = tessellationOf(*t);
+  if (const json* resources = member(j, "resources"))
+    for (const std::string& name : texts(*resources, "the manifest's \"resources\"")) {
+      auto r = parseSceneResource(name);
+      if (!r) fail("the manifest lists an unknown scene resource '" + name + "'");
+      m.resources.push_back(*r);
+    }
+  if (const json* nodes = member(j, "nodes")) nodesOf(*nodes, m);
+  return m;
+}
+
+}  // namespace wg

@@ -1,0 +1,163 @@
+// The manifest value and its JSON: what the compiler writes reads back into the same value
+// (toJson after fromJson gives the file byte for byte), for every example graph, with a
+// preset and with the SPIRV-Cross targets; and fromJson refuses what the compiler would not
+// write, naming the entry.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <optional>
+
+#include "codegen/compile.h"
+#include "codegen/manifest.h"
+#include "codegen/spirv_cross_targets.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "test_support.h"
+
+namespace wg {
+namespace {
+
+std::optional<Graph> loadExample(const std::string& path) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(path, diags);
+  EXPECT_TRUE(graph) << path;
+  return graph;
+}
+
+const OutputFile& manifestFile(const CompileResult& r) {
+  for (const auto& f : r.files)
+    if (f.name.ends_with(".manifest.json")) return f;
+  throw std::logic_error("the compile wrote no manifest");
+}
+
+// The manifest file of a compile, read back as a runtime reading it from disk would, is the
+// value the compile returned: written again, it is the same bytes.
+void expectRoundTrip(const CompileResult& r) {
+  const std::string& text = manifestFile(r).contents;
+  EXPECT_EQ(r.manifest.toJson().dump(2) + "\n", text) << "CompileResult::manifest is what the file says";
+  Manifest read = Manifest::fromJson(nlohmann::json::parse(text));
+  EXPECT_EQ(read.toJson().dump(2) + "\n", text);
+}
+
+TEST(Manifest, EveryExampleGraphReadsBackByteForByte) {
+  for (const auto& path : test::exampleGraphs()) {
+    SCOPED_TRACE(path);
+    auto graph = loadExample(path);
+    ASSERT_TRUE(graph);
+    CompileOptions options;
+    options.validate = false;  // the manifest does not depend on glslang
+    Diagnostics diags;
+    auto r = compileGraph(*graph, defaultRegistry(), options, diags);
+    ASSERT_TRUE(r);
+    expectRoundTrip(*r);
+  }
+}
+
+TEST(Manifest, PresetAndCrossTargetsReadBack) {
+  auto graph = loadExample(test::sourcePath("graphs/stylized.json"));  // tessellated: HLSL gets the flat mesh
+  ASSERT_TRUE(graph);
+  Diagnostics diags;
+  CompileOptions options;
+  options.targets = {Target::Glsl330};
+  auto r = compileGraphWithCross(*graph, defaultRegistry(), options, allCrossTargets(), diags);
+  ASSERT_TRUE(r);
+  const ManifestTarget* msl = r->manifest.target("msl");
+  ASSERT_TRUE(msl);
+  EXPECT_FALSE(msl->from.empty());
+  EXPECT_EQ(msl->files.front().entryPoint, "main0");
+  EXPECT_FALSE(r->manifest.target("vk450")) << "vk450 was only the cross targets' input";
+  expectRoundTrip(*r);
+
+  auto topdown = loadExample(test::sourcePath("graphs/topdown.json"));
+  ASSERT_TRUE(topdown);
+  CompileOptions calm;
+  calm.preset = "calm";
+  calm.validate = false;
+  auto withPreset = compileGraph(*topdown, defaultRegistry(), calm, diags);
+  ASSERT_TRUE(withPreset);
+  EXPECT_EQ(withPreset->manifest.preset, "calm");
+  expectRoundTrip(*withPreset);
+}
+
+// The stylized graph's manifest (textures, time phases, parameters, tessellation) as JSON.
+nlohmann::json stylizedManifest() {
+  return nlohmann::json::parse(test::readFile(test::sourcePath("tests/golden/stylized/stylized.manifest.json")));
+}
+
+nlohmann::json& firstWith(nlohmann::json& list, const std::string& key, const nlohmann::json& value = nullptr) {
+  for (auto& e : list)
+    if (e.contains(key) && (value.is_null() || e[key] == value)) return e;
+  throw std::logic_error("no entry with " + key);
+}
+
+TEST(Manifest, MergedNodesReadBack) {
+  nlohmann::json m = stylizedManifest();
+  m["nodes"]["kept"][0]["merged"] = {"twin", "triplet"};
+  EXPECT_EQ(Manifest::fromJson(m).toJson(), m);
+  EXPECT_EQ(Manifest::fromJson(m).kept[0].merged, (std::vector<std::string>{"twin", "triplet"}));
+}
+
+struct BadManifest {
+  const char* what;
+  std::function<void(nlohmann::json&)> edit;
+  const char* message;  // a part of the error
+};
+
+TEST(Manifest, FromJsonNamesWhatIsWrong) {
+  const std::vector<BadManifest> cases = {
+      {"not an object", [](auto& m) { m = nlohmann::json::array(); }, "not a JSON object"},
+      {"no passes", [](auto& m) { m.erase("passes"); }, "no \"passes\" list"},
+      {"unknown pass", [](auto& m) { m["passes"].push_back("ssao"); }, "unknown pass 'ssao'"},
+      {"unknown member", [](auto& m) { m["shaders"] = 1; }, "the manifest has an unknown member \"shaders\""},
+      {"other format", [](auto& m) { m["format"] = 2; }, "format 2"},
+      {"uniforms not a list", [](auto& m) { m["uniforms"] = nlohmann::json::object(); }, "\"uniforms\" is not a list"},
+      {"unknown builtin", [](auto& m) { firstWith(m["uniforms"], "builtin")["builtin"] = "wind"; },
+       "uniform u_model asks for builtin 'wind'"},
+      {"unknown type", [](auto& m) { firstWith(m["uniforms"], "builtin")["type"] = "vec5"; }, "unknown type 'vec5'"},
+      {"no stages", [](auto& m) { firstWith(m["uniforms"], "builtin").erase("stages"); }, "lacks the list \"stages\""},
+      {"unknown stage", [](auto& m) { firstWith(m["uniforms"], "builtin")["stages"] = {"geometry"}; },
+       "unknown stage \"geometry\""},
+      {"time phase without frequency",
+       [](auto& m) { firstWith(m["uniforms"], "builtin", "time_phase").erase("angular_frequency"); },
+       "lacks the number \"angular_frequency\""},
+      {"frequency on another builtin", [](auto& m) { firstWith(m["uniforms"], "builtin")["angular_frequency"] = 1.0; },
+       "unknown member \"angular_frequency\""},
+      {"default not numeric", [](auto& m) { firstWith(m["uniforms"], "parameter")["default"] = "blue"; },
+       "no numeric \"default\""},
+      {"texture without origin", [](auto& m) { firstWith(m["textures"], "source").erase("source"); },
+       "neither a \"source\" nor a \"resource\""},
+      {"unknown resource", [](auto& m) { firstWith(m["textures"], "resource")["resource"] = "ssao"; },
+       "unknown scene resource 'ssao'"},
+      {"sampler of another resource", [](auto& m) { firstWith(m["textures"], "resource")["resource"] = "refraction"; },
+       "is not a sampler of scene resource 'refraction'"},
+      {"patches of four", [](auto& m) { m["tessellation"]["patch_vertices"] = 4; }, "patches of other than 3"},
+      {"target member", [](auto& m) { m["targets"]["glsl330"]["geom"] = "x.geom"; }, "not a shader stage"},
+      {"entry points without from", [](auto& m) { m["targets"]["glsl330"]["entry_points"] = nlohmann::json::object(); },
+       "without the other"},
+      {"resource list", [](auto& m) { m["resources"].push_back("ssao"); }, "unknown scene resource 'ssao'"},
+      {"kept node", [](auto& m) { m["nodes"]["kept"][0].erase("type"); }, "kept node waves lacks the string \"type\""},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.what);
+    nlohmann::json m = stylizedManifest();
+    c.edit(m);
+    try {
+      Manifest::fromJson(m);
+      ADD_FAILURE() << "no error";
+    } catch (const ManifestError& e) {
+      EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Lists other than "passes" may be left out of a hand-written manifest: it has none.
+TEST(Manifest, OnlyPassesAreRequired) {
+  Manifest m = Manifest::fromJson({{"passes", {"planar_reflection", "water_surface"}}});
+  EXPECT_EQ(m.passes, (std::vector<RenderPass>{RenderPass::PlanarReflection, RenderPass::WaterSurface}));
+  EXPECT_TRUE(m.uniforms.empty());
+  EXPECT_TRUE(m.textures.empty());
+  EXPECT_FALSE(m.tessellation);
+}
+
+}  // namespace
+}  // namespace wg
