@@ -93,6 +93,8 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
           }
           rt::writePng(file, map);
           std::cout << "  error map: " << file << "\n";
+        } else if (options.errorMaps) {
+          std::cout << "  error map: none (nothing compared; reference: " << report.reference << ")\n";
         }
       } catch (const rt::RuntimeError& e) {
         std::cerr << path << ": error: " << e.what() << "\n";
