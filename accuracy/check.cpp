@@ -1,10 +1,14 @@
 #include "accuracy/check.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include <glm/glm.hpp>
 
+#include "accuracy/error_bound.h"
 #include "codegen/cpu_backend.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
@@ -68,9 +72,33 @@ long CheckReport::nanInf() const {
   return n;
 }
 
+int CheckReport::samples() const {
+  int n = 0;
+  for (const auto& v : views) n += v.referenceSamples;
+  return n;
+}
+
 double CheckReport::maxError() const {
   double m = 0;
   for (const auto& v : views) m = std::max(m, v.maxError);
+  return m;
+}
+
+double CheckReport::meanError() const {
+  double sum = 0;
+  for (const auto& v : views) sum += v.meanError * v.referenceSamples;
+  return samples() ? sum / samples() : 0.0;
+}
+
+int CheckReport::overBound() const {
+  int n = 0;
+  for (const auto& v : views) n += v.overBound;
+  return n;
+}
+
+double CheckReport::worstRatio() const {
+  double m = 0;
+  for (const auto& v : views) m = std::max(m, v.worstRatio);
   return m;
 }
 
@@ -86,8 +114,22 @@ std::string referenceUnavailable(const CompileResult& result) {
   return "";
 }
 
-CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, Target target, int width, int height,
-                       int referenceStride) {
+namespace {
+
+// The builtins a drawn fragment shader computes with in float32 (interpolated varyings
+// and uniforms), as the probe perturbs them; time phases carry no rounding (double).
+const std::vector<BuiltinUniform>& perPixelBuiltins() {
+  static const std::vector<BuiltinUniform> b = {
+      BuiltinUniform::CameraPosition, BuiltinUniform::CameraNearFar,   BuiltinUniform::ProbeUv,
+      BuiltinUniform::ProbeWorldPosition, BuiltinUniform::ProbeNormal, BuiltinUniform::ProbeViewDirection,
+      BuiltinUniform::ProbeScreenUv,  BuiltinUniform::ProbeFragDepth,  BuiltinUniform::SunDirection};
+  return b;
+}
+
+}  // namespace
+
+CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, Target target, const CheckOptions& options) {
+  const int width = options.width, height = options.height, referenceStride = std::max(1, options.referenceStride);
   CheckReport report;
   report.graph = graphFile;
   report.target = target;
@@ -99,6 +141,29 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
   if (compare) report.reference = "cpu";
   const bool underwater = result.manifest.lists(RenderPass::DeferredWater);
   bool es = target == Target::Es300;
+  std::vector<rt::ShaderSource> sources = rt::waterShaderSources(result, target);
+  if (options.mutation.active()) {
+    if (options.mutation.find.find('\n') != std::string::npos || options.mutation.replace.find('\n') != std::string::npos)
+      throw std::invalid_argument("a shader mutation edits within one line");
+    bool found = false;
+    for (auto& stage : sources)
+      for (size_t at = stage.text.find(options.mutation.find); at != std::string::npos;
+           at = stage.text.find(options.mutation.find, at + options.mutation.replace.size())) {
+        stage.text.replace(at, options.mutation.find.size(), options.mutation.replace);
+        found = true;
+      }
+    if (!found) throw std::invalid_argument("the mutation's text '" + options.mutation.find + "' is not in the water shaders");
+  }
+  const ErrorModel model = programErrorModel(result.program);
+  std::vector<Value> parameters;
+  for (const auto& p : result.program.parameters) parameters.push_back(p.defaultValue);
+  size_t colorIndex = 0;
+  for (size_t k = 0; k < result.program.outputs.size(); ++k)
+    if (result.program.outputs[k].slot == OutputSlot::FragmentColor) colorIndex = k;
+  // The conditioning term reads the first output: a program whose first is the colour.
+  Program colorProgram = result.program;
+  if (compare) std::swap(colorProgram.outputs[0], colorProgram.outputs[colorIndex]);
+
   for (const auto& view : checkSweep(underwater)) {
     rt::RenderSettings settings;
     settings.width = width;
@@ -108,7 +173,7 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
     settings.floatColor = true;
     settings.environmentSize = 32;  // the sky cube map: small frames need no more
     settings.waterGridQuads = 64;
-    rt::Renderer renderer(result.manifest, rt::waterShaderSources(result, target), settings, es, rt::textureOrigins(result));
+    rt::Renderer renderer(result.manifest, sources, settings, es, rt::textureOrigins(result));
     renderer.renderFrame();
     rt::Image img = renderer.readRgba32f();
     CheckViewResult v;
@@ -121,6 +186,10 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
       else if (std::isinf(x)) ++v.inf;
     }
     if (compare) {
+      if (options.errorMaps) {
+        v.errors.assign(static_cast<size_t>(width) * height, -1.0f);
+        v.ratios.assign(static_cast<size_t>(width) * height, -1.0f);
+      }
       std::vector<float> depth = renderer.readDepth();
       const rt::Camera& cam = view.camera;
       double aspect = static_cast<double>(width) / height;
@@ -150,8 +219,9 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
         return std::abs(depth[static_cast<size_t>(py) * width + px] - d) < 1e-5;
       };
       double sum = 0;
-      for (int py = referenceStride / 2; py < height; py += referenceStride)
-        for (int px = referenceStride / 2; px < width; px += referenceStride) {
+      int stride = options.errorMaps ? 1 : referenceStride, first = options.errorMaps ? 0 : referenceStride / 2;
+      for (int py = first; py < height; py += stride)
+        for (int px = first; px < width; px += stride) {
           // Away from silhouettes: the pixel and its four neighbours show the water.
           if (!visible(px, py) || !visible(px - 1, py) || !visible(px + 1, py) || !visible(px, py - 1) || !visible(px, py + 1))
             continue;
@@ -171,25 +241,68 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
           env.fragDepth = Value::scalar(d);
           env.cameraNearFar = Value::vector({cam.nearPlane, cam.farPlane});
           env.sunDirection = Value::vector({sun.x, sun.y, sun.z});
-          CpuResult ref = evaluateProgram(result.program, env);
-          const ProgramOutput* color = result.program.output(OutputSlot::FragmentColor);
-          Value c;
-          for (size_t k = 0; k < result.program.outputs.size(); ++k)
-            if (&result.program.outputs[k] == color) c = ref.outputs[k];
+          CpuResult ref = evaluateProgram(result.program, env, parameters);
+          const Value& c = ref.outputs[colorIndex];
           const float* g = &img.rgba32f[(static_cast<size_t>(py) * width + px) * 4];
+          double err[3], worst = 0, ratio = 0;
+          bool within = true;
           for (int ch = 0; ch < 3; ++ch) {
-            double err = std::abs(static_cast<double>(g[ch]) - c[ch]);
-            if (std::isnan(err)) err = INFINITY;
-            v.maxError = std::max(v.maxError, err);
-            sum += err;
+            err[ch] = std::abs(static_cast<double>(g[ch]) - c[ch]);
+            if (std::isnan(err[ch])) err[ch] = INFINITY;
+            within &= err[ch] <= model.tolerance * std::max(1.0, std::abs(c[ch]));
+            worst = std::max(worst, err[ch]);
+            sum += err[ch];
+          }
+          // The error bound of the probe: the tolerance, and where that is exceeded, the
+          // conditioning of the pixel's float32 inputs (measured only then: it costs a
+          // few hundred evaluations).
+          std::array<double, 4> conditioning{};
+          if (!within) conditioning = conditioningTerm(colorProgram, env, parameters, perPixelBuiltins(), model.roundings);
+          bool over = false;
+          for (int ch = 0; ch < 3; ++ch) {
+            double bound = model.tolerance * std::max(1.0, std::abs(c[ch])) + conditioning[static_cast<size_t>(ch)];
+            ratio = std::max(ratio, err[ch] / bound);
+            over |= !(err[ch] <= bound);
+          }
+          v.maxError = std::max(v.maxError, worst);
+          v.worstRatio = std::max(v.worstRatio, ratio);
+          v.overBound += over ? 1 : 0;
+          if (options.errorMaps) {
+            v.errors[static_cast<size_t>(py) * width + px] = static_cast<float>(worst);
+            v.ratios[static_cast<size_t>(py) * width + px] = static_cast<float>(ratio);
           }
           ++v.referenceSamples;
         }
       if (v.referenceSamples) v.meanError = sum / (3.0 * v.referenceSamples);
     }
-    report.views.push_back(v);
+    report.views.push_back(std::move(v));
   }
   return report;
+}
+
+rt::Image errorMapImage(const CheckReport& report) {
+  const CheckViewResult* pick = nullptr;
+  for (const auto& v : report.views)
+    if (!v.errors.empty() && v.referenceSamples > 0 && (!pick || v.worstRatio > pick->worstRatio)) pick = &v;
+  rt::Image img;
+  if (!pick) return img;
+  img.width = report.width;
+  img.height = report.height;
+  img.rgba8.resize(static_cast<size_t>(img.width) * img.height * 4);
+  for (size_t i = 0; i < pick->errors.size(); ++i) {
+    uint8_t* px = &img.rgba8[i * 4];
+    float e = pick->errors[i], r = pick->ratios[i];
+    if (e < 0) {
+      px[0] = 0, px[1] = 0, px[2] = 64;
+    } else if (!(r <= 1)) {
+      px[0] = 255, px[1] = 0, px[2] = 0;
+    } else {
+      double t = e > 0 ? std::clamp((std::log10(static_cast<double>(e)) + 8.0) / 5.0, 0.0, 1.0) : 0.0;
+      px[0] = px[1] = px[2] = static_cast<uint8_t>(std::lround(255 * t));
+    }
+    px[3] = 255;
+  }
+  return img;
 }
 
 std::string formatCheckText(const CheckReport& r) {
@@ -201,13 +314,19 @@ std::string formatCheckText(const CheckReport& r) {
     std::snprintf(buf, sizeof buf, "  %-28s nan %ld  inf %ld", v.label.c_str(), v.nan, v.inf);
     out += buf;
     if (v.referenceSamples) {
-      std::snprintf(buf, sizeof buf, "  vs cpu: %d px, max %.2e, mean %.2e", v.referenceSamples, v.maxError, v.meanError);
+      std::snprintf(buf, sizeof buf, "  vs cpu: %d px, max %.2e, mean %.2e, error/bound %.3g", v.referenceSamples, v.maxError,
+                    v.meanError, v.worstRatio);
       out += buf;
     }
     out += "\n";
   }
-  std::snprintf(buf, sizeof buf, "%s: %ld NaN/Inf pixel values over %zu views\n", r.nanInf() ? "FAIL" : "ok", r.nanInf(),
-                r.views.size());
+  if (r.samples()) {
+    std::snprintf(buf, sizeof buf, "  against the cpu: %d px, max %.2e, mean %.2e, worst error/bound %.3g, over the bound %d\n",
+                  r.samples(), r.maxError(), r.meanError(), r.worstRatio(), r.overBound());
+    out += buf;
+  }
+  std::snprintf(buf, sizeof buf, "%s: %ld NaN/Inf pixel values, %d pixels over the error bound, over %zu views\n",
+                r.failed() ? "FAIL" : "ok", r.nanInf(), r.overBound(), r.views.size());
   return out + buf;
 }
 

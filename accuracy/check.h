@@ -5,10 +5,13 @@
 // pixels. Where the graph has a full CPU reference (no vertex outputs, no scene
 // resources, an opaque colour) the frame is compared, on a grid of sampled pixels where
 // the flat water is visible, with the double reference evaluated at that pixel's surface
-// point (desktop GL only: the visibility test reads the depth buffer back).
+// point (desktop GL only: the visibility test reads the depth buffer back), and each
+// sample is held to the graph's error bound (accuracy/error_bound.h), as the probe holds
+// a case: the largest tolerance of its ops plus the conditioning of the pixel's inputs.
 #include <string>
 #include <vector>
 
+#include "accuracy/probe.h"
 #include "codegen/compile.h"
 #include "runtime/renderer.h"
 
@@ -23,11 +26,23 @@ struct CheckView {
 // The sweep; `underwater` adds views from below the surface.
 std::vector<CheckView> checkSweep(bool underwater);
 
+struct CheckOptions {
+  int width = 160, height = 90;
+  int referenceStride = 8;  // every Nth pixel in each direction is compared
+  bool errorMaps = false;   // keep every view's per-pixel errors (CheckViewResult::errors)
+  ShaderMutation mutation;  // applied to the water shaders: a wrong node, for tests
+};
+
 struct CheckViewResult {
   std::string label;
   long pixels = 0, nan = 0, inf = 0;
   int referenceSamples = 0;  // pixels compared with the CPU reference (0: none)
   double maxError = 0, meanError = 0;
+  int overBound = 0;          // samples with a component over its error bound
+  double worstRatio = 0;      // largest error / bound over the samples
+  // With CheckOptions::errorMaps, per pixel (rows top to bottom): the largest error over
+  // R, G and B, and the largest error / bound; -1 where the pixel was not compared.
+  std::vector<float> errors, ratios;
 };
 
 struct CheckReport {
@@ -37,16 +52,29 @@ struct CheckReport {
   std::string reference;  // "cpu" when compared, else why not
   std::vector<CheckViewResult> views;
   long nanInf() const;
+  int samples() const;     // compared pixels over every view
   double maxError() const;
+  double meanError() const;  // over every compared component of every view
+  int overBound() const;
+  double worstRatio() const;
+  bool failed() const { return nanInf() > 0 || overBound() > 0; }
 };
 
 // Why the graph has no full CPU reference, or "" when it has one.
 std::string referenceUnavailable(const CompileResult& result);
 
 // Renders every view on the current context (API matching `target`). Throws
-// rt::RuntimeError for driver or manifest problems.
-CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, Target target, int width, int height,
-                       int referenceStride = 8);
+// rt::RuntimeError for driver or manifest problems, std::invalid_argument for a mutation
+// whose text is not in the water shaders.
+CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, Target target,
+                       const CheckOptions& options = {});
+
+// The error image of the view with the largest error/bound (the first compared view when
+// none has an error): per compared pixel a grey level on a log scale, black at 1e-8 or
+// less, white at 1e-3; red where the pixel is over its error bound; dark blue where the
+// pixel was not compared (not water, near a silhouette, or no reference). Empty (0 x 0)
+// without error maps or compared pixels.
+rt::Image errorMapImage(const CheckReport& report);
 
 std::string formatCheckText(const CheckReport& report);
 

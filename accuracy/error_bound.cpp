@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iterator>
+#include <memory>
 
 #include "codegen/cpu_backend.h"
+#include "nodes/rounded_intermediates.h"
 
 namespace wg::accuracy {
 namespace {
@@ -21,14 +24,16 @@ Value* builtinValue(EvalEnvironment& env, BuiltinUniform u) {
   return &(env.*row.environment);
 }
 
-// Adds, per component, the larger move of the result when `x` moves by `delta` either way.
-void addMoves(double& x, double delta, const std::array<double, 4>& base, int n, std::array<double, 4>& sum,
-              const std::function<Value()>& evaluate) {
-  if (!(delta > 0) || !std::isfinite(delta)) return;
-  double saved = x;
+// Where in [x - delta, x + delta] the result is sampled: both ends.
+constexpr double kSamples[] = {1.0, -1.0};
+
+// Adds, per component, the larger move of the result over the samples of `set`, which
+// puts the evaluation at a fraction of its interval (0: where it was).
+void addMoves(const std::function<void(double fraction)>& set, const std::array<double, 4>& base, int n,
+              std::array<double, 4>& sum, const std::function<Value()>& evaluate) {
   std::array<double, 4> move{};
-  for (double sign : {1.0, -1.0}) {
-    x = saved + sign * delta;
+  for (double fraction : kSamples) {
+    set(fraction);
     Value v = evaluate();
     for (int k = 0; k < n; ++k) {
       double d = std::abs(v[k] - base[static_cast<size_t>(k)]);
@@ -36,7 +41,7 @@ void addMoves(double& x, double delta, const std::array<double, 4>& base, int n,
       if (std::isfinite(d)) move[static_cast<size_t>(k)] = std::max(move[static_cast<size_t>(k)], d);
     }
   }
-  x = saved;
+  set(0.0);
   for (int k = 0; k < n; ++k) sum[static_cast<size_t>(k)] += move[static_cast<size_t>(k)];
 }
 
@@ -59,13 +64,19 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
   if (roundings <= 0) return sum;
   EvalEnvironment e = env;
   std::vector<Value> params = parameters;
-  auto evaluate = [&] { return evaluateProgram(program, e, params).outputs.front(); };
+  Program varied = program;  // ops' options replaced one intermediate at a time
+  auto evaluate = [&] { return evaluateProgram(varied, e, params).outputs.front(); };
   Value ref = evaluate();
   int n = std::min(ref.size(), 4);
   std::array<double, 4> base{};
   for (int k = 0; k < n; ++k) base[static_cast<size_t>(k)] = ref[k];
   auto perturb = [&](Value& v) {
-    for (int i = 0; i < v.size(); ++i) addMoves(v[i], roundings * kUnitRoundoff * std::abs(v[i]), base, n, sum, evaluate);
+    for (int i = 0; i < v.size(); ++i) {
+      double saved = v[i], delta = roundings * kUnitRoundoff * std::abs(saved);
+      if (!(delta > 0) || !std::isfinite(delta)) continue;
+      addMoves([&](double fraction) { v[i] = saved + fraction * delta; }, base, n, sum, evaluate);
+      v[i] = saved;
+    }
   };
   for (auto& p : params) perturb(p);
   std::vector<BuiltinUniform> seen;
@@ -73,6 +84,23 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
     if (std::find(seen.begin(), seen.end(), u) != seen.end()) continue;
     seen.push_back(u);
     if (Value* v = builtinValue(e, u)) perturb(*v);
+  }
+  // Intermediates that round on their own (nodes/rounded_intermediates.h), one at a time.
+  for (size_t i = 0; i < program.ops.size(); ++i) {
+    const Op& op = program.ops[i];
+    const nodes::RoundedIntermediates* intermediates = nodes::roundedIntermediates(op.spec->type);
+    if (!intermediates || !op.parsedOptions) continue;
+    double relative = roundings * kUnitRoundoff;
+    std::array<std::vector<std::shared_ptr<const ParsedOptions>>, std::size(kSamples)> variants;
+    for (size_t s = 0; s < std::size(kSamples); ++s) variants[s] = (*intermediates)(*op.parsedOptions, kSamples[s] * relative);
+    for (size_t j = 0; j < variants[0].size(); ++j)
+      addMoves(
+          [&](double fraction) {
+            const auto* at = std::find(std::begin(kSamples), std::end(kSamples), fraction);
+            varied.ops[i].parsedOptions =
+                at == std::end(kSamples) ? op.parsedOptions : variants[at - std::begin(kSamples)][j];
+          },
+          base, n, sum, evaluate);
   }
   return sum;
 }

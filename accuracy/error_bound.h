@@ -4,8 +4,10 @@
 //   |gpu - ref| <= tolerance * max(1, |ref|) + conditioning,
 // where `conditioning` is measured on the double reference itself: every float32 input
 // component x the probe shader computes with (graph parameters, and the builtins it reads
-// as plain uniforms) is moved by roundings * 2^-24 * |x| each way, one at a time, and the
-// largest move of the result per input is summed over the inputs. To first order this is
+// as plain uniforms) is moved by roundings * 2^-24 * |x| either way, one at a time, and
+// the larger move of the result per input is summed over the inputs; so is each float32
+// intermediate a node names
+// (nodes/rounded_intermediates.h: a wave's phase), moved by its own roundings. To first order this is
 // roundings * 2^-24 * sum |df/dx| |x|, the formula's condition number times the rounding;
 // at a singular point (the slope of a sqrt at 0) it stays finite and is what float32
 // rounding of the inputs does there. Time phases are excluded: the runtime computes them

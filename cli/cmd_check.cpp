@@ -1,7 +1,9 @@
 // check: render graphs into a float frame over a sweep of cameras (grazing to top-down,
 // under water where the graph has the deferred pass), times up to 1e6 s and sun
-// positions; count NaN/Inf pixels and, where the graph has a full CPU reference, compare.
-// Exit 1 on any NaN or Inf.
+// positions; count NaN/Inf pixels and, where the graph has a full CPU reference, compare
+// sampled pixels with it, each held to the graph's error bound; --error-map writes the
+// per-pixel errors of the worst view. Exit 1 on any NaN or Inf or a pixel over its bound.
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <regex>
@@ -15,6 +17,7 @@
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
+#include "runtime/image.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 #endif
@@ -26,6 +29,8 @@ struct CheckArgs {
   std::vector<std::string> graphs;
   std::string target = "all";
   std::string size = "160x90";
+  std::string errorMap;  // FILE.png: the error image (several graphs: FILE-GRAPH.png)
+  std::string mutate;    // FIND=>REPLACE in the water shaders
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -36,6 +41,18 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
       std::stoi(m[2]) > 4096) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT with each side 8..4096, e.g. 160x90 (got '" << args.size << "')\n";
     return kExitUsageOrIo;
+  }
+  accuracy::CheckOptions options;
+  options.width = std::stoi(m[1]);
+  options.height = std::stoi(m[2]);
+  options.errorMaps = !args.errorMap.empty();
+  if (!args.mutate.empty()) {
+    auto at = args.mutate.find("=>");  // GLSL has '=' but no "=>"
+    if (at == std::string::npos || at == 0) {
+      std::cerr << "watergraph: --mutate must be FIND=>REPLACE (got '" << args.mutate << "')\n";
+      return kExitUsageOrIo;
+    }
+    options.mutation = {args.mutate.substr(0, at), args.mutate.substr(at + 2)};
   }
   std::vector<Target> targets;
   if (args.target == "all") targets = {Target::Glsl330, Target::Es300};
@@ -64,9 +81,22 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         continue;
       }
       try {
-        auto report = accuracy::checkGraph(*result, path, target, std::stoi(m[1]), std::stoi(m[2]));
+        auto report = accuracy::checkGraph(*result, path, target, options);
         std::cout << accuracy::formatCheckText(report);
-        if (report.nanInf()) exit = std::max(exit, kExitGraphError);
+        if (report.failed()) exit = std::max(exit, kExitGraphError);
+        rt::Image map = accuracy::errorMapImage(report);
+        if (map.width > 0) {
+          std::string file = args.errorMap;
+          if (args.graphs.size() > 1) {
+            std::filesystem::path f(file);
+            f.replace_filename(f.stem().string() + "-" + std::filesystem::path(path).stem().string() + f.extension().string());
+            file = f.string();
+          }
+          rt::writePng(file, map);
+          std::cout << "  error map: " << file << "\n";
+        } else if (options.errorMaps) {
+          std::cout << "  error map: none (nothing compared; reference: " << report.reference << ")\n";
+        }
       } catch (const rt::TextureLoadError& e) {
         Diagnostics textureDiags;
         reportUnusableTexture(result->program, &*graph, e.source(), e.why(), textureDiags);
@@ -75,6 +105,9 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
       } catch (const rt::RuntimeError& e) {
         std::cerr << path << ": error: " << e.what() << "\n";
         exit = std::max(exit, e.exitCode());
+      } catch (const std::invalid_argument& e) {
+        std::cerr << "watergraph: --mutate: " << e.what() << "\n";
+        return kExitUsageOrIo;
       }
     }
   }
@@ -90,16 +123,24 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
       "check",
       "Render graphs headless into an RGBA32F frame over a sweep: camera elevation 0.5 to 89.5 degrees, under water "
       "(graphs with the underwater node), times 13107, 524288 and 1e6 s, sun near the horizon, overhead and below it. "
-      "Counts NaN and Inf pixels; where a graph has a full CPU reference, compares sampled water pixels with it. See "
-      "docs/accuracy.md.\n\nExamples:\n  watergraph check graphs/*.json\n"
-      "  watergraph check graphs/lake.json --target es300 --size 320x180\n\n"
-      "Exit codes: 0 no NaN/Inf; 1 a NaN/Inf pixel, graph errors or a shader the driver rejects; 2 usage, I/O, or no "
-      "EGL/GL context.");
+      "Counts NaN and Inf pixels; where a graph has a full CPU reference (glsl330), compares sampled water pixels with "
+      "it, each held to the graph's error bound (the probe's: the largest tolerance of its ops plus the conditioning of "
+      "the pixel's inputs), and reports max and mean error per view and per graph. See docs/accuracy.md.\n\n"
+      "Examples:\n  watergraph check graphs/*.json\n"
+      "  watergraph check graphs/lake.json --target glsl330 --size 320x180 --error-map lake-error.png\n\n"
+      "Exit codes: 0 no NaN/Inf and every compared pixel within its bound; 1 a NaN/Inf pixel, a pixel over its bound, "
+      "graph errors or a shader the driver rejects; 2 usage, I/O, or no EGL/GL context.");
   cmd->add_option("graphs", args->graphs, "graph files (.json)")->required();
   cmd->add_option("--target", args->target, "glsl330, es300 or all")
       ->check(CLI::IsMember({"glsl330", "es300", "all"}))
       ->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frame")->capture_default_str();
+  cmd->add_option("--error-map", args->errorMap,
+                  "write the per-pixel error against the CPU of the worst view as a PNG (the frame's size; every water "
+                  "pixel compared): grey on a log scale from 1e-8 (black) to 1e-3 (white), red over the error bound, "
+                  "dark blue not compared. With several graphs, FILE-GRAPH.png per graph");
+  cmd->add_option("--mutate", args->mutate,
+                  "FIND=>REPLACE: edit the water shaders before rendering (a wrong node: check must fail)");
 #ifdef WG_HAVE_RUNTIME
   return [args, &global] { return runCheck(*args, global); };
 #else

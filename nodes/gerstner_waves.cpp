@@ -11,6 +11,7 @@
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
+#include "nodes/rounded_intermediates.h"
 #include "nodes/waves_common.h"
 
 namespace wg::nodes {
@@ -125,6 +126,24 @@ GerstnerFrame gerstnerReference(const std::vector<GerstnerWave>& ws, double x, d
   return f;
 }
 
+// Each wave rounds its own phase argument D.(x, z) (two products, a sum, the mod's
+// product: about 3 roundings of |Dx x| + |Dz z|). Moving the position cannot stand for
+// that: the waves' slopes can cancel in the sum while their rounding errors add. So each
+// wave's Dx and Dz are moved on their own (its phase by k r 2^-24 |Dx x|, ...).
+std::vector<std::shared_ptr<const ParsedOptions>> gerstnerRoundedIntermediates(const ParsedOptions& options,
+                                                                                double relative) {
+  const auto& ws = options.as<std::vector<GerstnerWave>>();
+  std::vector<std::shared_ptr<const ParsedOptions>> variants;
+  for (size_t i = 0; i < ws.size(); ++i)
+    for (double GerstnerWave::*component : {&GerstnerWave::dirX, &GerstnerWave::dirZ}) {
+      if (ws[i].*component == 0.0) continue;
+      std::vector<GerstnerWave> moved = ws;
+      moved[i].*component *= 1.0 + relative;
+      variants.push_back(std::make_shared<const OptionsOf<std::vector<GerstnerWave>>>(std::move(moved)));
+    }
+  return variants;
+}
+
 namespace {
 
 // The `waves` option, parsed once into the waves the emitter and the reference iterate.
@@ -210,7 +229,9 @@ NodeSpec gerstnerWavesNode() {
   // float32: phases k * mod(D.x, L) carry ~1e-6 relative error; positions of a few metres.
   s.tolerance = 1e-4;
   s.conditionRoundings = 4;
-  s.conditionWhy = "grows with the phases k x of positions (float32 spacing 7.8 mm at 1e5 m) and at the cusp, where the normal turns fast";
+  s.conditionWhy = "grows with the phases k x of positions (float32 spacing 7.8 mm at 1e5 m), counted per wave, and at "
+                   "the cusp, where the normal turns fast";
+  // Each wave also rounds its own phase argument: gerstnerRoundedIntermediates below.
   auto cusp = nlohmann::json::parse(R"([{"direction": [1, 0], "steepness": 1, "wavelength": 8}])");
   auto threeAtCusp = nlohmann::json::parse(R"([
     {"direction": [1, 0], "steepness": 0.8, "wavelength": 8},

@@ -107,8 +107,15 @@ NodeSpec valueNoiseNode() {
     Value q = scaled(ctx);
     ctx.output(0, Value::scalar(q.size() == 2 ? noise::valueNoise2(q[0], q[1]) : noise::valueNoise3(q[0], q[1], q[2])));
   };
-  // Float32 fract(p) near |p| = 1e3 carries ~6e-5 of error, times the Hermite slope 1.5.
-  s.tolerance = 1e-4;
+  // The evaluation, from float32 q: floor and q - floor(q) are exact; u = f^2 (3 - 2f)
+  // rounds about 5 times (|error| <= 5 * 2^-24, u <= 1); each mix a + u (b - a) adds its
+  // own 3 roundings to |b - a| times u's error, and 2D nests two levels, 3D three:
+  // <= 3 * (5 + 3) * 2^-24 = 1.43e-6. The lattice values are exact (24-bit hashes).
+  s.tolerance = 2e-6;
+  // q = p * scale rounds once in float32 (the reference multiplies in double): at |q| =
+  // 1e3 that moves q by 6e-5 and the noise by up to 1.5 times as much.
+  s.conditionRoundings = 1;
+  s.conditionWhy = "grows with the coordinate q = p scale, whose float32 product rounds (|q| 2^-24 times the Hermite slope 1.5)";
   s.hardCases = {
       {"huge coordinates 1e5 m", {{"p", Value::vector({1e5, 3.5, -1e5})}}, {}, "in [0, 1)", 0, 1},
       {"beyond the int range", {{"p", Value::vector({1e30, -1e30})}}, {}, "clamped cell, in [0, 1)", 0, 1},
@@ -147,10 +154,15 @@ NodeSpec fbmNode() {
     ctx.output(0, Value::scalar(q.size() == 2 ? noise::fbm2(q[0], q[1], octaves, lac, gain)
                                               : noise::fbm3(q[0], q[1], q[2], octaves, lac, gain)));
   };
-  // Measured on llvmpipe: 1.5e-6 for |p scale| < 60 with 4 octaves. The finest octave
-  // multiplies p by lacunarity^(octaves - 1), so float32 fract() error grows with it: at
-  // 1e5 m, 4 octaves, the GPU differs by up to ~3e-3.
-  s.tolerance = 1e-3;
+  // The evaluation: octave i samples value noise (its own bound, 2e-6) at q_i + i c,
+  // c = (17.31, 9.73[, 5.47]). The GPU's coordinate is off by up to (3 i |c| + |q_i|) 2^-24:
+  // c rounded to float32, the product i c and the sum each round. The |q_i| part grows with
+  // p and is the conditioning below (p lacunarity^i rounds as p does); the constant part,
+  // at most 3 * 7 * (17.31 + 9.73 + 5.47) 2^-24 = 4.1e-5 summed over the axes, times the
+  // Hermite slope 1.5, with every weight on the last octave (gain 4): 6.1e-5, plus the
+  // noise's 2e-6 and the weighted sum's few roundings. Measured on llvmpipe: 1.5e-6 for
+  // |p scale| < 60 with 4 octaves.
+  s.tolerance = 1e-4;
   s.conditionRoundings = 4;
   s.conditionWhy = "grows with the octave coordinates p lacunarity^i (large coordinates, gain or lacunarity) and at cell edges";
   s.hardCases = {

@@ -36,6 +36,7 @@ for target in glsl330 es300; do
   sweep value_noise-x value_noise p.x:0:100000:10000 '{}' $target
   sweep fbm-x fbm p.x:0:1000:10000 '{}' $target
   sweep voronoi-x voronoi p.x:0:1000:10000 '{}' $target
+  sweep voronoi_caustics-x voronoi_caustics p.x:0:250:10000 '{}' $target
 done
 
 command -v gnuplot >/dev/null 2>&1 || { echo "gnuplot not found; install gnuplot-nox (scripts/setup.sh)" >&2; exit 2; }

@@ -5,8 +5,12 @@
 // where a closed form exists the double reference must equal an independent oracle:
 // Fresnel from the s- and p-amplitude laws, Snell's law from angles, Gerstner normals by
 // finite differences of the displacement, Beer-Lambert from tabulated coefficients, linear
-// depth from the projection, the hash from its reference bit pattern. The suite
-// (hard_cases_test) then holds the GPU to that reference within the error bound.
+// depth from the projection, the hash from its reference bit pattern, value noise, fbm and
+// the Voronoi caustics from PCG3D written out here. A case at ordinary inputs also shows
+// that the constant its nodes are named for (a path length, a fade, an octave offset, a
+// feature point's centre) moves the result by more than the node's tolerance there. The
+// suite (hard_cases_test) then holds the GPU to that reference within the error bound.
+#include <algorithm>
 #include <cmath>
 #include <array>
 #include <cstdint>
@@ -57,6 +61,48 @@ std::array<uint32_t, 3> pcg3d(uint32_t x, uint32_t y, uint32_t z) {
   mix();
   return {v[0], v[1], v[2]};
 }
+
+double hashUnit(uint32_t h) { return std::ldexp(static_cast<double>(h >> 8u), -24); }
+uint32_t cellBits(double x) { return static_cast<uint32_t>(static_cast<int32_t>(std::floor(x))); }
+
+// 2D value noise: the PCG3D lattice value of each corner (cell (x, y, 0), first word), the
+// fade written as smoothstep's cubic with its leading constant `three` (3), and the four
+// corners weighted bilinearly (the node nests three mixes).
+double valueNoiseOracle(double x, double y, double three = 3.0) {
+  double fx = x - std::floor(x), fy = y - std::floor(y);
+  double ux = three * fx * fx - 2 * fx * fx * fx, uy = three * fy * fy - 2 * fy * fy * fy;
+  uint32_t cx = cellBits(x), cy = cellBits(y);
+  auto l = [](uint32_t i, uint32_t j) { return hashUnit(pcg3d(i, j, 0)[0]); };
+  return (1 - ux) * (1 - uy) * l(cx, cy) + ux * (1 - uy) * l(cx + 1, cy) + (1 - ux) * uy * l(cx, cy + 1) +
+         ux * uy * l(cx + 1, cy + 1);
+}
+
+// fbm with the node's defaults (4 octaves, lacunarity 2, gain 1/2): octave i at 2^i p
+// shifted by i `offset`, weighted 2^-i, normalised by the weights' sum 15/8.
+double fbmOracle(double x, double y, double offsetX = 17.31, double offsetY = 9.73) {
+  double sum = 0;
+  for (int i = 0; i < 4; ++i) sum += std::ldexp(valueNoiseOracle(std::ldexp(x, i) + i * offsetX, std::ldexp(y, i) + i * offsetY), -i);
+  return sum / 1.875;
+}
+
+// Voronoi F1 by brute force over the 5x5 cells around p, each point orbiting its cell's
+// centre `centre` (0.5) as the node's default animation does: centre + jitter/2
+// (sin(phase + 2 pi h.x), cos(phase + 2 pi h.y)), h the PCG3D bits of the cell.
+double voronoiF1Oracle(double x, double y, double jitter, double phase, double centre = 0.5) {
+  double best = 1e30;
+  for (int i = -2; i <= 2; ++i)
+    for (int j = -2; j <= 2; ++j) {
+      double cx = std::floor(x) + i, cy = std::floor(y) + j;
+      auto h = pcg3d(cellBits(cx), cellBits(cy), 0);
+      double px = cx + centre + jitter * 0.5 * std::sin(phase + 2 * kPi * hashUnit(h[0]));
+      double py = cy + centre + jitter * 0.5 * std::cos(phase + 2 * kPi * hashUnit(h[1]));
+      best = std::min(best, std::hypot(px - x, py - y));
+    }
+  return best;
+}
+
+// The node's documented tolerance (NodeSpec::tolerance).
+double toleranceOf(const std::string& type) { return defaultRegistry().find(type)->tolerance; }
 
 // What a case gives a node's port: its "inputs" entry, else the builtin of the same meaning.
 Value given(const ProbeCase& c, const std::string& port) {
@@ -399,6 +445,60 @@ const std::map<std::string, Check>& checks() {
          for (int i = 0; i < 3; ++i) why = all({why, near(t[i], std::exp(-table[i] * d), 0, "transmittance")});
          return why;
        }},
+      {"beer_lambert_path",
+       [](const ProbeCase& c) {
+         // Pope & Fry (1997) pure-water absorption at 680, 550 and 440 nm, 1/m, as tabulated.
+         const double table[3] = {0.340, 0.0565, 0.00922};
+         double d = given(c, "distance")[0];
+         auto t = eval("absorption", nlohmann::json::object(), c, {{"distance", given(c, "distance")}})[0];
+         std::string why;
+         for (int i = 0; i < 3; ++i) {
+           double want = std::exp(-table[i] * d);
+           if (!(want > 1e-3 && want < 0.999)) return std::string("a channel's transmittance is not strictly inside (0, 1)");
+           // The path length reaches every channel: 1e-4 more of it moves T by more than 4 tolerances.
+           if (!(std::abs(std::exp(-table[i] * d * 1.0001) - want) > 4 * toleranceOf("absorption")))
+             return std::string("the transmittance does not depend on the path length beyond the tolerance");
+           why = all({why, near(t[i], want, 1e-12, "transmittance")});
+         }
+         return why;
+       }},
+      {"noise_cell_interior",
+       [](const ProbeCase& c) {
+         Value p = given(c, "p");
+         for (int i = 0; i < 2; ++i) {
+           double f = p[i] - std::floor(p[i]);
+           if (!(f > 0.05 && f < 0.95)) return std::string("p is not inside a lattice cell (fade weights near 0 or 1)");
+         }
+         std::vector<std::pair<std::string, Value>> in = {{"p", p}};
+         double vn = eval("value_noise", nlohmann::json::object(), c, in)[0][0];
+         double fb = eval("fbm", nlohmann::json::object(), c, in)[0][0];
+         double ca = eval("voronoi_caustics", nlohmann::json::object(), c, in)[0][0];
+         // The caustics' defaults: scale 4, jitter 1, two layers averaged, the second at
+         // 1.3 q + 5 orbiting 1.2 times as fast; each (1 - clamp(F1, 0, 1))^3.
+         const NodeSpec& spec = *defaultRegistry().find("voronoi_caustics");
+         double speed = spec.options[static_cast<size_t>(spec.optionIndex("speed"))].defaultValue.get<double>();
+         double t = c.env.time[0];
+         auto caustics = [&](double centre, bool* clamped) {
+           double qx = p[0] * 4, qy = p[1] * 4;
+           double f1 = voronoiF1Oracle(qx, qy, 1.0, std::fmod(speed * t, 2 * kPi), centre);
+           double f2 = voronoiF1Oracle(qx * 1.3 + 5, qy * 1.3 + 5, 1.0, std::fmod(1.2 * speed * t, 2 * kPi), centre);
+           *clamped = f1 >= 1 || f2 >= 1;
+           return 0.5 * (std::pow(1 - std::min(f1, 1.0), 3) + std::pow(1 - std::min(f2, 1.0), 3));
+         };
+         bool clamped = false, unused = false;
+         double causticsWant = caustics(0.5, &clamped);
+         if (clamped) return std::string("a caustic layer's F1 is 1 or more: the clamp hides the feature points");
+         // The named constants reach the result: a 1e-4 change of the fade's 3, of the first
+         // octave offset, of the feature points' centre moves it by more than 4 tolerances.
+         if (!(std::abs(valueNoiseOracle(p[0], p[1], 3.0001) - valueNoiseOracle(p[0], p[1])) > 4 * toleranceOf("value_noise")))
+           return std::string("value noise does not depend on the fade beyond its tolerance");
+         if (!(std::abs(fbmOracle(p[0], p[1], 17.32) - fbmOracle(p[0], p[1])) > 4 * toleranceOf("fbm")))
+           return std::string("fbm does not depend on its octave offsets beyond its tolerance");
+         if (!(std::abs(caustics(0.5001, &unused) - causticsWant) > 4 * toleranceOf("voronoi_caustics")))
+           return std::string("the caustics do not depend on the feature points beyond their tolerance");
+         return all({near(vn, valueNoiseOracle(p[0], p[1]), 1e-12, "value_noise"), near(fb, fbmOracle(p[0], p[1]), 1e-12, "fbm"),
+                     near(ca, causticsWant, 1e-12, "voronoi_caustics")});
+       }},
       {"voronoi_f1_above_one",
        [](const ProbeCase& c) {
          // F1 by brute force over 5x5 cells, each point orbiting its cell centre as the
@@ -575,7 +675,7 @@ using test_suite::loadSuite;
 
 TEST(HardCaseRegions, EveryCaseNamesARegionAndReachesIt) {
   ProbeCaseFile suite = loadSuite();
-  ASSERT_EQ(suite.cases.size(), 56u);
+  ASSERT_EQ(suite.cases.size(), 58u);
   for (const auto& c : suite.cases) {
     auto check = checks().find(c.region);
     if (check == checks().end()) {
@@ -589,7 +689,8 @@ TEST(HardCaseRegions, EveryCaseNamesARegionAndReachesIt) {
 
 // The checks can fail: the "from below" cases as they were (an upward normal with a
 // downward view, N.V < 0, so every node clamped to grazing) are rejected, and so are a
-// Gerstner wave train short of the cusp and each math vocabulary case moved off its guard.
+// Gerstner wave train short of the cusp, noise on a lattice point, a path of length 0 and
+// each math vocabulary case moved off its guard.
 TEST(HardCaseRegions, CasesThatMissTheirRegionAreRejected) {
   ProbeCaseFile suite = loadSuite();
   int rejected = 0, tried = 0;
@@ -602,6 +703,12 @@ TEST(HardCaseRegions, CasesThatMissTheirRegionAreRejected) {
       broken.env.normal = Value::vector({0, 1, 0});
     } else if (c.region == "gerstner_cusp") {
       broken.options["gerstner_waves"]["waves"][0]["steepness"] = 0.9;
+    } else if (c.region == "noise_cell_interior") {
+      for (auto& [port, v] : broken.inputs)
+        if (port == "p") v = Value::vector({3, 5});  // a lattice point: the fade weights are 0
+    } else if (c.region == "beer_lambert_path") {
+      for (auto& [port, v] : broken.inputs)
+        if (port == "distance") v = Value::scalar(0);  // no path: T = 1 whatever the coefficients
     } else if (auto moved = vocabularyMiss().find(c.region); moved != vocabularyMiss().end()) {
       // The math vocabulary's cases with the input that puts them there moved off it.
       for (auto& [port, v] : broken.inputs)
@@ -612,7 +719,7 @@ TEST(HardCaseRegions, CasesThatMissTheirRegionAreRejected) {
     ++tried;
     rejected += checks().at(c.region)(broken).empty() ? 0 : 1;
   }
-  EXPECT_EQ(tried, 8 + 12);
+  EXPECT_EQ(tried, 10 + 12);
   EXPECT_EQ(rejected, tried);
 }
 
