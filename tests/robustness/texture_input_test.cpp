@@ -191,7 +191,7 @@ TEST_F(TextureInput, ADecodeFailureAtRenderTimeIsAGraphErrorAtThePath) {
   test::writeFile(dir + "/broken.png", good.substr(0, 33) + std::string(40, 'x'));
   test::writeFile(dir + "/g.json", edgeFoamGraph("broken.png"));
   const std::string wg = test::shellQuote(test::watergraphBinary());
-  for (const std::string command : {" render --size 32x32 " + dir + "/g.json -o " + root + "/frame.png",
+  for (const std::string& command : {" render --size 32x32 " + dir + "/g.json -o " + root + "/frame.png",
                                     " check --size 16x16 --target es300 " + dir + "/g.json"}) {
     std::string out, err;
     int code = test::runCommandSplit(wg + command, &out, &err);
