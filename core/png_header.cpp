@@ -23,4 +23,22 @@ std::string readPngSize(const unsigned char* bytes, std::size_t count, PngSize* 
   return "";
 }
 
+std::string checkPngChunks(const unsigned char* bytes, std::size_t count) {
+  std::size_t at = 8;  // after the signature
+  while (at < count) {
+    if (count - at < 12) return "it ends inside a chunk's header at byte " + std::to_string(at);
+    unsigned long length = bigEndian32(bytes + at);
+    std::string type(reinterpret_cast<const char*>(bytes + at + 4), 4);
+    for (char& c : type)
+      if (!((c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z'))) c = '?';
+    // Chunk lengths are at most 2^31 - 1 (the PNG specification, 5.3).
+    if (length > 0x7fffffffUL || length > count - at - 12)
+      return "its " + type + " chunk at byte " + std::to_string(at) + " declares " + std::to_string(length) +
+             " bytes of data; the file has " + std::to_string(count) + " bytes";
+    if (type == "IEND") return "";
+    at += 12 + length;
+  }
+  return "it has no IEND chunk";
+}
+
 }  // namespace wg

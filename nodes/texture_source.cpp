@@ -7,7 +7,9 @@
 #include <cstring>
 #include <fcntl.h>
 #include <stdexcept>
+#include <sys/stat.h>
 #include <unistd.h>
+#include <vector>
 
 #include <stb/stb_image.h>
 
@@ -44,9 +46,34 @@ Value TextureImage::sample(double u, double v) const {
 
 namespace {
 
+// The largest PNG file read: twice the raw RGBA bytes of the largest texture allowed, room
+// for a stored (uncompressed) image and its chunk overhead.
+constexpr std::size_t kMaxPngFileBytes = std::size_t{2} * 4 * kMaxTextureSide * kMaxTextureSide;
+
+// Reads the open file `fd` whole, up to kMaxPngFileBytes; "" or why not.
+std::string readWhole(int fd, std::vector<unsigned char>* bytes) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) return std::strerror(errno);
+  if (!S_ISREG(st.st_mode)) return "it is not a regular file";
+  if (static_cast<unsigned long long>(st.st_size) > kMaxPngFileBytes)
+    return "the file has " + std::to_string(st.st_size) + " bytes; the limit is " + std::to_string(kMaxPngFileBytes);
+  bytes->resize(static_cast<std::size_t>(st.st_size));
+  std::size_t got = 0;
+  while (got < bytes->size()) {
+    ssize_t n = ::read(fd, bytes->data() + got, bytes->size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return std::strerror(errno);
+    if (n == 0) break;  // shrank since fstat: decode what is there
+    got += static_cast<std::size_t>(n);
+  }
+  bytes->resize(got);
+  return "";
+}
+
 // Decodes the PNG that checkTextureSource resolved. The file is opened once, without
-// following a link, and its header is checked again on that open file before decoding: it
-// may have been replaced since it was checked.
+// following a link, and read whole; its header is checked again on those bytes (the file
+// may have been replaced since it was checked), and every chunk must fit inside the file
+// before the decoder sees it.
 stbi_uc* decodePng(const TextureFile& file, int* w, int* h, std::string* error) {
   auto fail = [&](const std::string& why) -> stbi_uc* {
     if (error) *error = "cannot decode texture '" + file.realPath + "': " + why;
@@ -54,24 +81,18 @@ stbi_uc* decodePng(const TextureFile& file, int* w, int* h, std::string* error) 
   };
   int fd = ::open(file.realPath.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
   if (fd < 0) return fail(std::strerror(errno));
-  std::FILE* f = ::fdopen(fd, "rb");
-  if (!f) {
-    ::close(fd);
-    return fail(std::strerror(errno));
-  }
-  unsigned char header[kPngHeaderBytes];
+  std::vector<unsigned char> bytes;
+  std::string why = readWhole(fd, &bytes);
+  ::close(fd);
   PngSize size;
-  std::size_t n = std::fread(header, 1, sizeof header, f);
-  std::string why = readPngSize(header, n, &size);
+  if (why.empty()) why = readPngSize(bytes.data(), bytes.size(), &size);
   if (why.empty()) why = checkTextureSize(size.width, size.height);
-  stbi_uc* pixels = nullptr;
-  if (why.empty() && std::fseek(f, 0, SEEK_SET) == 0) {
-    int channels = 0;
-    pixels = stbi_load_from_file(f, w, h, &channels, 4);
-    if (!pixels) why = stbi_failure_reason() ? stbi_failure_reason() : "unknown error";
-  }
-  std::fclose(f);
-  return pixels ? pixels : fail(why.empty() ? "cannot rewind the file" : why);
+  if (why.empty()) why = checkPngChunks(bytes.data(), bytes.size());
+  if (!why.empty()) return fail(why);
+  int channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), w, h, &channels, 4);
+  if (!pixels) return fail(stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
+  return pixels;
 }
 
 }  // namespace
