@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "accuracy/node_probe.h"
+#include "accuracy/number_text.h"
 #include "codegen/emit_glsl.h"
 #include "nodes/registry.h"
 #include "runtime/runtime_error.h"
@@ -57,12 +58,6 @@ bool takesInput(const NodeSpec& spec, const ProbeCase& c) {
   for (const auto& [port, value] : c.inputs)
     if (spec.inputIndex(port) >= 0) return true;
   return false;
-}
-
-std::string fmt(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
 }
 
 }  // namespace
@@ -146,8 +141,8 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, Target target, const Su
             if (!c.gpuFinite || !c.referenceFinite) ++result.nanInf;
             std::string gpu, ref;
             for (int i = 0; i < c.components; ++i) {
-              gpu += (i ? ", " : "") + fmt(c.gpu[static_cast<size_t>(i)]);
-              ref += (i ? ", " : "") + fmt(c.reference[static_cast<size_t>(i)]);
+              gpu += (i ? ", " : "") + significantDigits(c.gpu[static_cast<size_t>(i)], 6);
+              ref += (i ? ", " : "") + significantDigits(c.reference[static_cast<size_t>(i)], 6);
             }
             result.failureLines.push_back(std::string(targetName(target)) + " " + label + " case '" + c.name +
                                           "': " + c.failure() + " (gpu " + gpu + "; ref " + ref + ")");

@@ -9,6 +9,7 @@
 #include <epoxy/gl.h>
 
 #include "accuracy/error_bound.h"
+#include "accuracy/number_text.h"
 #include "accuracy/probe_gpu.h"
 #include "codegen/cpu_backend.h"
 #include "codegen/emit_glsl.h"
@@ -20,14 +21,6 @@
 namespace wg::accuracy {
 namespace {
 
-std::string fmt(double x) {
-  if (std::isnan(x)) return "nan";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", x);
-  return buf;
-}
-
 std::string fmtShort(double x) {
   if (std::isnan(x)) return "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
@@ -37,9 +30,9 @@ std::string fmtShort(double x) {
 }
 
 std::string vectorText(const std::array<double, 4>& v, int n) {
-  if (n == 1) return fmt(v[0]);
+  if (n == 1) return significantDigits(v[0], 9);
   std::string s = "(";
-  for (int i = 0; i < n; ++i) s += (i ? ", " : "") + fmt(v[static_cast<size_t>(i)]);
+  for (int i = 0; i < n; ++i) s += (i ? ", " : "") + significantDigits(v[static_cast<size_t>(i)], 9);
   return s + ")";
 }
 
@@ -94,7 +87,7 @@ ProbeCaseResult compare(const ProbeCase& c, const std::array<float, 4>& gpu, con
 std::string ProbeCaseResult::failure() const {
   if (!gpuFinite) return "GPU NaN/Inf";
   if (!referenceFinite) return "reference NaN/Inf";
-  if (!inRange) return "outside [" + fmt(range->first) + ", " + fmt(range->second) + "]";
+  if (!inRange) return "outside [" + significantDigits(range->first, 9) + ", " + significantDigits(range->second, 9) + "]";
   if (!withinTolerance)
     return "error " + fmtShort(absError) + " > bound " + fmtShort(bound) + " (tolerance " + fmtShort(tolerance) +
            ", conditioning " + fmtShort(conditioning) + ")";

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "accuracy/number_text.h"
+
 namespace wg::accuracy {
 namespace {
 
@@ -36,12 +38,6 @@ Value inputOrDefault(const NodeSpec& spec, const ProbeCase& c, int port) {
   if (p.defaultValue) return *p.defaultValue;
   if (p.defaultBuiltin) return c.env.builtin(*p.defaultBuiltin);
   return Value::ofType(p.type == Type::Invalid ? Type::Float : p.type);
-}
-
-std::string fmt(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.9g", x);
-  return buf;
 }
 
 }  // namespace
@@ -95,7 +91,7 @@ std::vector<ProbeCase> sweepCases(const NodeSpec& spec, const SweepAxis& axis, c
   for (int i = 0; i < axis.count; ++i) {
     double x = axis.at(i);
     ProbeCase c = base;
-    c.name = axis.name + (axis.component >= 0 ? std::string(".") + "xyzw"[axis.component] : "") + "=" + fmt(x);
+    c.name = axis.name + (axis.component >= 0 ? std::string(".") + "xyzw"[axis.component] : "") + "=" + significantDigits(x, 9);
     if (axis.name == "angle") {
       double r = x * M_PI / 180.0;
       Value n = toFloat32(Value::vector({0, 1, 0})), v = toFloat32(Value::vector({std::sin(r), std::cos(r), 0}));
@@ -129,8 +125,8 @@ std::string sweepTable(const SweepAxis& axis, const ProbeReport& report) {
     size_t k = 0;  // the component the report names (closest to its bound)
     for (int j = 0; j < c.components; ++j)
       if (std::abs(c.gpu[static_cast<size_t>(j)] - c.reference[static_cast<size_t>(j)]) == c.absError) k = static_cast<size_t>(j);
-    out += fmt(axis.at(static_cast<int>(i))) + " " + fmt(c.gpu[k]) + " " + fmt(c.reference[k]) + " " + fmt(c.absError) +
-           " " + fmt(c.bound) + "\n";
+    for (double x : {axis.at(static_cast<int>(i)), c.gpu[k], c.reference[k], c.absError}) out += significantDigits(x, 9) + " ";
+    out += significantDigits(c.bound, 9) + "\n";
   }
   return out;
 }

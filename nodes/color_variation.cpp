@@ -13,11 +13,10 @@ namespace wg::nodes {
 namespace {
 
 constexpr double kNoisePeriod = 256.0;  // the noise lattice's period (color_variation.glsl)
-constexpr double kTwoPi = 6.283185307179586;
 
 // The drift as a time phase: offset = drift * t mod 256 = phase * 256 / (2 pi) with
 // phase = mod(omega t, 2 pi), omega = 2 pi drift / 256.
-double driftOmega(double drift) { return kTwoPi * drift / kNoisePeriod; }
+double variationDriftOmega(double drift) { return glsl::kTau * drift / kNoisePeriod; }
 
 }  // namespace
 
@@ -71,7 +70,7 @@ NodeSpec colorVariationNode() {
     const auto& [scale, drift] = ctx.options<ColorVariationOptions>();
     std::string p = "(" + ctx.input("position") + ".xz * " + ctx.literal(scale) + ")";
     if (drift != 0.0)
-      p = "(" + p + " + vec2(" + ctx.timePhase(driftOmega(drift)) + " * " + ctx.literal(kNoisePeriod / kTwoPi) + "))";
+      p = "(" + p + " + vec2(" + ctx.timePhase(variationDriftOmega(drift)) + " * " + ctx.literal(kNoisePeriod / glsl::kTau) + "))";
     std::string noise = ctx.temporary(Type::Float, EmitContext::call("wg_color_variation_noise", {p}));
     ctx.output(0, EmitContext::call("wg_color_variation",
                                     {ctx.input("color"), ctx.input("normal"), ctx.input("sun"), ctx.input("height"),
@@ -84,7 +83,7 @@ NodeSpec colorVariationNode() {
     const Value& pos = ctx.input("position");
     double offset = 0.0;
     if (drift != 0.0)
-      offset = glsl::mod(driftOmega(drift) * ctx.environment().time[0], kTwoPi) * (kNoisePeriod / kTwoPi);
+      offset = glsl::mod(variationDriftOmega(drift) * ctx.environment().time[0], glsl::kTau) * (kNoisePeriod / glsl::kTau);
     double noise = colorVariationNoise(pos[0] * scale + offset, pos[2] * scale + offset);
     ctx.output(0, colorVariationReference(ctx.input("color"), ctx.input("normal"), ctx.input("sun"), ctx.scalar("height"),
                                           noise, ctx.scalar("slope_strength"), ctx.scalar("noise_strength"),

@@ -12,7 +12,6 @@
 namespace wg::nodes {
 namespace {
 
-constexpr double kTau = 6.283185307179586;
 // The noise lattice repeats every 256 cells, so a drift wrapped to 256 is seamless.
 constexpr double kPeriod = 256.0;
 constexpr std::uint32_t kMask = 255u;
@@ -20,7 +19,7 @@ constexpr std::uint32_t kMask = 255u;
 constexpr double kDrift1 = 0.3, kDrift2 = 0.2;
 
 // The angular speed whose phase, scaled by period / 2 pi, is mod(rate t, period).
-double driftOmega(double rate) { return kTau * rate / kPeriod; }
+double crestDriftOmega(double rate) { return glsl::kTau * rate / kPeriod; }
 
 }  // namespace
 
@@ -80,9 +79,9 @@ NodeSpec crestFoamNode() {
     double ns = ctx.options<CrestFoamOptions>().noiseSpeed;
     std::string drift = "vec2(0.0)";
     if (ns != 0.0) {
-      std::string p1 = ctx.timePhase(driftOmega(kDrift1 * ns));  // one call per statement: a stable order
-      std::string p2 = ctx.timePhase(driftOmega(kDrift2 * ns));
-      drift = "vec2(" + p1 + ", " + p2 + ") * " + ctx.literal(kPeriod / kTau);
+      std::string p1 = ctx.timePhase(crestDriftOmega(kDrift1 * ns));  // one call per statement: a stable order
+      std::string p2 = ctx.timePhase(crestDriftOmega(kDrift2 * ns));
+      drift = "vec2(" + p1 + ", " + p2 + ") * " + ctx.literal(kPeriod / glsl::kTau);
     }
     drift = ctx.temporary(Type::Vec2, drift);
     std::string height = ctx.input("height");
@@ -97,8 +96,8 @@ NodeSpec crestFoamNode() {
     double t = ctx.environment().time[0];
     double d1 = 0, d2 = 0;
     if (ns != 0.0) {
-      d1 = glsl::mod(driftOmega(kDrift1 * ns) * t, kTau) * (kPeriod / kTau);
-      d2 = glsl::mod(driftOmega(kDrift2 * ns) * t, kTau) * (kPeriod / kTau);
+      d1 = glsl::mod(crestDriftOmega(kDrift1 * ns) * t, glsl::kTau) * (kPeriod / glsl::kTau);
+      d2 = glsl::mod(crestDriftOmega(kDrift2 * ns) * t, glsl::kTau) * (kPeriod / glsl::kTau);
     }
     const Value& pos = ctx.input("position");
     ctx.output(0, Value::scalar(crestFoamReference(ctx.scalar("height"), ctx.input("normal"), pos[0], pos[2], d1, d2,

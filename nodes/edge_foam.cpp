@@ -11,8 +11,6 @@
 namespace wg::nodes {
 namespace {
 
-constexpr double kTau = 6.283185307179586;
-
 // The stylized water shader: layer 1 scrolls by t speed (1, 0.5), layer 2 by t speed (-0.5, 1), at
 // 0.1 and 0.08 texture repeats per metre times foam_scale.
 constexpr double kLayer1Scale = 0.1, kLayer2Scale = 0.08;
@@ -79,9 +77,9 @@ NodeSpec edgeFoamNode() {
     // mod(speed t, 1) = mod(2 pi speed t, 2 pi) / 2 pi, and the same at half the speed.
     std::string off = "vec2(0.0)";
     if (speed != 0.0) {
-      std::string p1 = ctx.timePhase(kTau * speed);  // one call per statement: a stable emission order
-      std::string p2 = ctx.timePhase(0.5 * kTau * speed);
-      off = "vec2(" + p1 + ", " + p2 + ") * " + ctx.literal(1.0 / kTau);
+      std::string p1 = ctx.timePhase(glsl::kTau * speed);  // one call per statement: a stable emission order
+      std::string p2 = ctx.timePhase(0.5 * glsl::kTau * speed);
+      off = "vec2(" + p1 + ", " + p2 + ") * " + ctx.literal(1.0 / glsl::kTau);
     }
     off = ctx.temporary(Type::Vec2, off);
     std::string position = ctx.input("position");
@@ -100,8 +98,8 @@ NodeSpec edgeFoamNode() {
     double t = ctx.environment().time[0];
     double ox = 0, oy = 0;
     if (speed != 0.0) {
-      ox = glsl::mod(kTau * speed * t, kTau) * (1.0 / kTau);
-      oy = glsl::mod(0.5 * kTau * speed * t, kTau) * (1.0 / kTau);
+      ox = glsl::mod(glsl::kTau * speed * t, glsl::kTau) * (1.0 / glsl::kTau);
+      oy = glsl::mod(0.5 * glsl::kTau * speed * t, glsl::kTau) * (1.0 / glsl::kTau);
     }
     const Value& pos = ctx.input("position");
     double k = ctx.scalar("foam_scale"), x = pos[0] * k, z = pos[2] * k;

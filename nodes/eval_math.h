@@ -9,6 +9,8 @@
 
 namespace wg::glsl {
 
+inline constexpr double kTau = 6.283185307179586;  // 2 pi, the period of GLSL's sin and cos
+
 template <class F>
 Value map1(const Value& a, Type out, F f) {
   Value r = Value::ofType(out);

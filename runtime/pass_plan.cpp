@@ -7,7 +7,7 @@
 namespace wg::rt {
 namespace {
 
-[[noreturn]] void fail(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
+[[noreturn]] void failManifest(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
 
 }  // namespace
 
@@ -47,8 +47,8 @@ size_t PassPlan::totalBytes() const {
 
 PassPlan planPasses(const Manifest& manifest, const PlanOptions& options) {
   if (options.width <= 0 || options.height <= 0 || options.environmentSize <= 0)
-    fail("render size must be positive");
-  if (!manifest.lists(PassKind::WaterSurface)) fail("the manifest's \"passes\" list lacks water_surface");
+    failManifest("render size must be positive");
+  if (!manifest.lists(PassKind::WaterSurface)) failManifest("the manifest's \"passes\" list lacks water_surface");
   PassPlan plan;
   const ColorFormat frameColor = options.floatColor ? ColorFormat::Rgba32f : ColorFormat::Rgba8;
   plan.targets.push_back({"frame", PassKind::WaterSurface, "", frameColor, DepthFormat::Depth32f, options.width,

@@ -11,6 +11,11 @@
 #include <sys/wait.h>
 
 namespace wg::test {
+
+double secondsSince(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
 namespace {
 // Mesa's shader disk cache would make GL tests depend on earlier runs: off for every test
 // process, before main (TOOLCHAIN.md).

@@ -1,10 +1,14 @@
 #pragma once
 // Helpers shared by the test suites: paths into the source tree, reading files, running
 // the watergraph binary.
+#include <chrono>
 #include <string>
 #include <vector>
 
 namespace wg::test {
+
+// Wall-clock seconds since t0 (the robustness tests print how long the hard inputs take).
+double secondsSince(std::chrono::steady_clock::time_point t0);
 
 std::string sourceDir();                     // the repository root
 std::string sourcePath(const std::string& rel);

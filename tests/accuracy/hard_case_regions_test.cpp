@@ -11,13 +11,13 @@
 // feature point's centre) moves the result by more than the node's tolerance there. The
 // suite (hard_cases_test) then holds the GPU to that reference within the error bound.
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <functional>
-#include <algorithm>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -31,7 +31,6 @@ namespace wg::accuracy {
 namespace {
 
 constexpr double kIor = 1.333;
-constexpr double kPi = 3.14159265358979323846;
 
 struct V3 {
   double x = 0, y = 0, z = 0;
@@ -94,8 +93,8 @@ double voronoiF1Oracle(double x, double y, double jitter, double phase, double c
     for (int j = -2; j <= 2; ++j) {
       double cx = std::floor(x) + i, cy = std::floor(y) + j;
       auto h = pcg3d(cellBits(cx), cellBits(cy), 0);
-      double px = cx + centre + jitter * 0.5 * std::sin(phase + 2 * kPi * hashUnit(h[0]));
-      double py = cy + centre + jitter * 0.5 * std::cos(phase + 2 * kPi * hashUnit(h[1]));
+      double px = cx + centre + jitter * 0.5 * std::sin(phase + 2 * std::numbers::pi * hashUnit(h[0]));
+      double py = cy + centre + jitter * 0.5 * std::cos(phase + 2 * std::numbers::pi * hashUnit(h[1]));
       best = std::min(best, std::hypot(px - x, py - y));
     }
   return best;
@@ -247,7 +246,7 @@ const std::map<std::string, Check>& checks() {
        [](const ProbeCase& c) {
          if (dot32(given(c, "normal"), given(c, "view")) != 0.0f) return std::string("N.V is not 0 in float32");
          // At 90 degrees the amplitude laws give |rs| = |rp| = 1 from either side.
-         return all({fresnelIs(c, "air_to_water", fresnelOracle(kPi / 2, 1, kIor), 1),
+         return all({fresnelIs(c, "air_to_water", fresnelOracle(std::numbers::pi / 2, 1, kIor), 1),
                      fresnelIs(c, "water_to_air", 1, 1)});
        }},
       {"back_facing",
@@ -341,12 +340,12 @@ const std::map<std::string, Check>& checks() {
          const auto& waves = c.options.at("gerstner_waves").at("waves");
          double sum = 0;
          for (const auto& w : waves) {
-           double q = w.at("steepness"), k = 2 * kPi / w.at("wavelength").get<double>();
+           double q = w.at("steepness"), k = 2 * std::numbers::pi / w.at("wavelength").get<double>();
            sum += q * k * w.value("amplitude", q / k);
          }
          if (std::abs(sum - 1) > 1e-12) return std::string("sum Q k A is not 1: not at the cusp limit");
          const auto& w = waves.at(0);
-         double k = 2 * kPi / w.at("wavelength").get<double>(), q = w.at("steepness"), a = q / k;
+         double k = 2 * std::numbers::pi / w.at("wavelength").get<double>(), q = w.at("steepness"), a = q / k;
          double omega = std::sqrt(9.81 * k);
          double t = c.env.time[0];
          auto displaced = [&](double x0, double z0) {
@@ -375,7 +374,7 @@ const std::map<std::string, Check>& checks() {
          if (!(std::nextafter(tf, INFINITY) - tf >= 0x1p-10f)) return std::string("time too small to lose float32 digits");
          // One Gerstner wave, phase k x - omega t taken modulo 2 pi in long double.
          nlohmann::json waves = nlohmann::json::parse(R"([{"direction": [1, 0], "steepness": 0.5, "wavelength": 10}])");
-         double k = 2 * kPi / 10, q = 0.5, a = q / k;
+         double k = 2 * std::numbers::pi / 10, q = 0.5, a = q / k;
          long double omega = std::sqrt(9.81L * k);
          double phase = static_cast<double>(std::fmod(-omega * static_cast<long double>(t), 2 * 3.141592653589793238462643L));
          auto out = eval("gerstner_waves", {{"waves", waves}}, c, {{"position", Value::vector({3, 0, 0})}});
@@ -395,8 +394,8 @@ const std::map<std::string, Check>& checks() {
          if (!has(c, "position")) return std::string();
          V3 p = v3(given(c, "position"));
          nlohmann::json waves = nlohmann::json::parse(R"([{"direction": [1, 0], "steepness": 0.5, "wavelength": 10}])");
-         double k = 2 * kPi / 10, q = 0.5, a = q / k;
-         double th = std::fmod(k * p.x, 2 * kPi);
+         double k = 2 * std::numbers::pi / 10, q = 0.5, a = q / k;
+         double th = std::fmod(k * p.x, 2 * std::numbers::pi);
          auto out = eval("gerstner_waves", {{"waves", waves}}, c, {{"position", value(p)}});
          V3 want{p.x + q * a * std::cos(th), a * std::sin(th), p.z};
          return near(length(sub(v3(out[0]), want)), 0, 1e-6, "|gerstner position - oracle| at 1e5 m");
@@ -480,8 +479,8 @@ const std::map<std::string, Check>& checks() {
          double t = c.env.time[0];
          auto caustics = [&](double centre, bool* clamped) {
            double qx = p[0] * 4, qy = p[1] * 4;
-           double f1 = voronoiF1Oracle(qx, qy, 1.0, std::fmod(speed * t, 2 * kPi), centre);
-           double f2 = voronoiF1Oracle(qx * 1.3 + 5, qy * 1.3 + 5, 1.0, std::fmod(1.2 * speed * t, 2 * kPi), centre);
+           double f1 = voronoiF1Oracle(qx, qy, 1.0, std::fmod(speed * t, 2 * std::numbers::pi), centre);
+           double f2 = voronoiF1Oracle(qx * 1.3 + 5, qy * 1.3 + 5, 1.0, std::fmod(1.2 * speed * t, 2 * std::numbers::pi), centre);
            *clamped = f1 >= 1 || f2 >= 1;
            return 0.5 * (std::pow(1 - std::min(f1, 1.0), 3) + std::pow(1 - std::min(f2, 1.0), 3));
          };
@@ -509,14 +508,14 @@ const std::map<std::string, Check>& checks() {
          double jitter = has(c, "jitter") ? given(c, "jitter")[0] : 1.0;
          const NodeSpec& spec = *defaultRegistry().find("voronoi");
          double speed = spec.options[static_cast<size_t>(spec.optionIndex("speed"))].defaultValue.get<double>();
-         double phase = std::fmod(speed * c.env.time[0], 2 * kPi);
+         double phase = std::fmod(speed * c.env.time[0], 2 * std::numbers::pi);
          double best = 1e30;
          for (int i = -2; i <= 2; ++i)
            for (int j = -2; j <= 2; ++j) {
              double cx = std::floor(p[0]) + i, cy = std::floor(p[1]) + j;
              auto h = pcg3d(static_cast<uint32_t>(static_cast<int32_t>(cx)), static_cast<uint32_t>(static_cast<int32_t>(cy)), 0);
-             double px = cx + 0.5 + jitter * 0.5 * std::sin(phase + 2 * kPi * std::ldexp(h[0] >> 8u, -24));
-             double py = cy + 0.5 + jitter * 0.5 * std::cos(phase + 2 * kPi * std::ldexp(h[1] >> 8u, -24));
+             double px = cx + 0.5 + jitter * 0.5 * std::sin(phase + 2 * std::numbers::pi * std::ldexp(h[0] >> 8u, -24));
+             double py = cy + 0.5 + jitter * 0.5 * std::cos(phase + 2 * std::numbers::pi * std::ldexp(h[1] >> 8u, -24));
              best = std::min(best, std::hypot(px - p[0], py - p[1]));
            }
          if (!(best > 1)) return std::string("F1 is not above 1: some point lies within distance 1");
@@ -600,7 +599,7 @@ const std::map<std::string, Check>& checks() {
        [](const ProbeCase& c) {
          float x = f32(c, "x");
          if (!(std::abs(x) > 1)) return std::string("|x| is not above 1 in float32");
-         return eachNode(c, {{"asin", x > 0 ? kPi / 2 : -kPi / 2}, {"acos", x > 0 ? 0.0 : kPi}}, 1e-15);
+         return eachNode(c, {{"asin", x > 0 ? std::numbers::pi / 2 : -std::numbers::pi / 2}, {"acos", x > 0 ? 0.0 : std::numbers::pi}}, 1e-15);
        }},
       {"mod_by_zero",
        [](const ProbeCase& c) {
@@ -627,8 +626,8 @@ const std::map<std::string, Check>& checks() {
        [](const ProbeCase& c) {
          double x = f32(c, "x");
          // Within float32 rounding of an odd multiple of pi/2: cos is (nearly) 0.
-         double k = (x - kPi / 2) / kPi;
-         if (!(std::abs(k - std::round(k)) * kPi < 1e-7)) return std::string("x is not within 1e-7 of a pole");
+         double k = (x - std::numbers::pi / 2) / std::numbers::pi;
+         if (!(std::abs(k - std::round(k)) * std::numbers::pi < 1e-7)) return std::string("x is not within 1e-7 of a pole");
          return eachNode(c, {{"tan", std::sin(x) / std::cos(x)}}, 1e-9);
        }},
       {"refract_total_internal_reflection",

@@ -2,29 +2,22 @@
 // case against every node that takes such an input, every option variant and output,
 // GPU float32 against the double reference. Zero NaN/Inf, every result within the node's
 // documented tolerance; a failure names the node, variant, output and case.
-#include <set>
-
 #include <cmath>
 #include <filesystem>
+#include <set>
 
 #include <gtest/gtest.h>
 
 #include "accuracy/hard_case_suite.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
+#include "suite_file.h"
 #include "test_support.h"
 
 namespace wg::accuracy {
 namespace {
 
-ProbeCaseFile loadSuite() {
-  Diagnostics diags;
-  auto suite = loadProbeCases(test::sourcePath("tests/hardcases/suite.json"), diags);
-  std::string why;
-  for (const auto& d : diags.all()) why += formatText(d) + "\n";
-  EXPECT_TRUE(suite) << why;
-  return suite ? *suite : ProbeCaseFile{};
-}
+using test_suite::loadSuite;
 
 TEST(HardCaseSuite, HasAtLeastThirtyNamedCasesEachWithItsExpectation) {
   ProbeCaseFile suite = loadSuite();

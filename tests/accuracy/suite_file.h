@@ -11,7 +11,9 @@ namespace wg::accuracy::test_suite {
 inline ProbeCaseFile loadSuite() {
   Diagnostics diags;
   auto suite = loadProbeCases(test::sourcePath("tests/hardcases/suite.json"), diags);
-  EXPECT_TRUE(suite);
+  std::string why;
+  for (const auto& d : diags.all()) why += formatText(d) + "\n";
+  EXPECT_TRUE(suite) << why;
   return suite ? *suite : ProbeCaseFile{};
 }
 

@@ -5,12 +5,13 @@
 #include <string>
 
 #include "core/graph_io.h"
+#include "diagnostic_text.h"
 #include "test_support.h"
 
 namespace wg {
 namespace {
 
-std::string lc(const SourceRef& r) { return std::to_string(r.line) + ":" + std::to_string(r.col); }
+using core_test::lc;
 
 const char* kValid = R"({
   "$schema": "https://example.com/watergraph-1.json",
@@ -56,11 +57,7 @@ std::string withNodes(const std::string& nodes, const std::string& outputs =
   return R"({"version": 1, "name": "g", "nodes": )" + nodes + R"(, "outputs": )" + outputs + "}";
 }
 
-std::string dump(const Diagnostics& d) {
-  std::string s;
-  for (const auto& e : d.all()) s += formatText(e) + "\n";
-  return s;
-}
+using core_test::dump;
 
 // Expects exactly one error, with this code; returns it.
 Diagnostic one(const std::string& text, DiagCode code) {

@@ -5,15 +5,12 @@
 #include <string>
 
 #include "core/graph_io.h"
+#include "diagnostic_text.h"
 
 namespace wg {
 namespace {
 
-std::string dump(const Diagnostics& d) {
-  std::string s;
-  for (const auto& e : d.all()) s += formatText(e) + "\n";
-  return s;
-}
+using core_test::dump;
 
 Graph parseOk(const std::string& text) {
   Diagnostics d;

@@ -3,11 +3,12 @@
 #include <string>
 
 #include "core/json_source.h"
+#include "diagnostic_text.h"
 
 namespace wg {
 namespace {
 
-std::string lc(const SourceRef& r) { return std::to_string(r.line) + ":" + std::to_string(r.col); }
+using core_test::lc;
 
 TEST(JsonSource, ParsesValuesAndRecordsPositions) {
   const std::string text =

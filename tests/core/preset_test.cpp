@@ -21,7 +21,7 @@ const char* kWeather = R"({
   "outputs": {"fragment": {"color": "$tint"}}
 })";
 
-Graph parseOk(const std::string& text) {
+Graph parsePresetGraph(const std::string& text) {
   Diagnostics d;
   auto g = parseGraph(text, "w.json", d);
   EXPECT_TRUE(g) << (d.all().empty() ? "" : formatText(d.all().front()));
@@ -29,7 +29,7 @@ Graph parseOk(const std::string& text) {
 }
 
 TEST(Presets, LoadInFileOrderWithPositions) {
-  Graph g = parseOk(kWeather);
+  Graph g = parsePresetGraph(kWeather);
   ASSERT_EQ(g.presets.size(), 2u);
   EXPECT_EQ(g.presets[0].name, "choppy");
   EXPECT_EQ(g.presets[1].name, "calm");
@@ -41,7 +41,7 @@ TEST(Presets, LoadInFileOrderWithPositions) {
 }
 
 TEST(Presets, SaveKeepsThemAndRoundTrips) {
-  Graph g = parseOk(kWeather);
+  Graph g = parsePresetGraph(kWeather);
   std::string text = saveGraph(g);
   EXPECT_NE(text.find("\"presets\": {\n    \"choppy\": {\n      \"tint\": [0.1, 0.3, 0.5],\n      \"height\": 1\n"),
             std::string::npos)
@@ -49,11 +49,11 @@ TEST(Presets, SaveKeepsThemAndRoundTrips) {
   // Between the parameters and the nodes, as docs/graph-format.md lists the keys.
   EXPECT_LT(text.find("\"parameters\""), text.find("\"presets\""));
   EXPECT_LT(text.find("\"presets\""), text.find("\"nodes\""));
-  EXPECT_EQ(saveGraph(parseOk(text)), text);
+  EXPECT_EQ(saveGraph(parsePresetGraph(text)), text);
 }
 
 TEST(Presets, ApplyMakesTheValuesDefaults) {
-  Graph g = parseOk(kWeather);
+  Graph g = parsePresetGraph(kWeather);
   Diagnostics d;
   ASSERT_TRUE(applyPreset(g, "choppy", d));
   EXPECT_EQ(g.findParameter("height")->defaultValue, (std::vector<double>{1}));
@@ -65,7 +65,7 @@ TEST(Presets, ApplyMakesTheValuesDefaults) {
 }
 
 TEST(Presets, UnknownNameIsWG052ListingThePresets) {
-  Graph g = parseOk(kWeather);
+  Graph g = parsePresetGraph(kWeather);
   Graph before = g;
   Diagnostics d;
   EXPECT_FALSE(applyPreset(g, "clam", d));
@@ -79,7 +79,7 @@ TEST(Presets, UnknownNameIsWG052ListingThePresets) {
 }
 
 TEST(Presets, AGraphWithoutPresetsSaysSo) {
-  Graph g = parseOk(R"({"version": 1, "name": "n", "nodes": [], "outputs": {"fragment": {"color": [1, 0, 0]}}})");
+  Graph g = parsePresetGraph(R"({"version": 1, "name": "n", "nodes": [], "outputs": {"fragment": {"color": [1, 0, 0]}}})");
   Diagnostics d;
   EXPECT_FALSE(applyPreset(g, "calm", d));
   ASSERT_EQ(d.all().size(), 1u);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
@@ -16,7 +17,6 @@ namespace {
 
 using test::runNode;
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kFltMin = std::numeric_limits<float>::min();
 
 // Arguments that reach every branch: signs, zero, halves, integers, tiny, huge, a float
@@ -103,8 +103,8 @@ TEST(MathVocabulary, ExponentialFamilyFollowsGlslAndItsGuards) {
 
 TEST(MathVocabulary, TrigonometricFamilyFollowsGlslAndItsGuards) {
   unaryAgainst("tan", [](double x) { return std::sin(x) / std::cos(x); }, 1e-12);
-  unaryAgainst("asin", [](double x) { return x > 1 ? kPi / 2 : x < -1 ? -kPi / 2 : std::asin(x); });
-  unaryAgainst("acos", [](double x) { return x > 1 ? 0.0 : x < -1 ? kPi : std::acos(x); });
+  unaryAgainst("asin", [](double x) { return x > 1 ? std::numbers::pi / 2 : x < -1 ? -std::numbers::pi / 2 : std::asin(x); });
+  unaryAgainst("acos", [](double x) { return x > 1 ? 0.0 : x < -1 ? std::numbers::pi : std::acos(x); });
   unaryAgainst("atan", [](double x) { return std::atan(x); });
   auto hyperbolic = [](double x, int kind) {
     double c = std::max(-88.0, std::min(88.0, x));  // documented clamp
@@ -121,8 +121,8 @@ TEST(MathVocabulary, TrigonometricFamilyFollowsGlslAndItsGuards) {
   binaryAgainst("atan2", "y", "x", [](double y, double x) {
     if (x == 0 && y == 0) return 0.0;
     double a = std::atan(std::abs(y) / std::abs(x));  // first quadrant, then unfolded
-    if (x == 0) a = kPi / 2;
-    if (x < 0) a = kPi - a;
+    if (x == 0) a = std::numbers::pi / 2;
+    if (x < 0) a = std::numbers::pi - a;
     return y < 0 ? -a : a;
   }, 1e-15);
 }
@@ -141,7 +141,7 @@ TEST(MathVocabulary, GeometricFamilyFollowsGlslDefinitions) {
   // refract by Snell's law in angles: sin t = eta sin i, the tangential direction kept.
   for (double degrees : {0.0, 20.0, 45.0, 60.0, 80.0}) {
     for (double eta : {1 / 1.333, 1.333}) {
-      double i = degrees * kPi / 180, s = eta * std::sin(i);
+      double i = degrees * std::numbers::pi / 180, s = eta * std::sin(i);
       Value dir = v3(std::sin(i), -std::cos(i), 0);
       Value t = runNode("refract", {{"incident", dir}, {"normal", n}, {"eta", Value::scalar(eta)}}).values[0];
       std::string at = "refract at " + std::to_string(degrees) + " deg, eta " + std::to_string(eta);
@@ -205,13 +205,13 @@ TEST(MathVocabulary, HardInputsGiveTheirDocumentedFiniteValues) {
   EXPECT_DOUBLE_EQ(at("log2", x(0)), -126.0);
   EXPECT_EQ(at("sqrt", x(-1)), 0.0);
   EXPECT_EQ(at("acos", x(beyondOne)), 0.0);
-  EXPECT_DOUBLE_EQ(at("asin", x(-beyondOne)), -kPi / 2);
+  EXPECT_DOUBLE_EQ(at("asin", x(-beyondOne)), -std::numbers::pi / 2);
   EXPECT_EQ(at("mod", {{"x", Value::scalar(5.3)}, {"y", Value::scalar(0)}}), 0.0);
   EXPECT_EQ(at("atan2", {{"y", Value::scalar(0)}, {"x", Value::scalar(0)}}), 0.0);
   EXPECT_DOUBLE_EQ(at("exp", x(100)), std::exp(88.0));
   EXPECT_EQ(at("inversesqrt", x(0)), std::ldexp(1.0, 63));
   // pi/2 as float32 lies 4.37e-8 past the pole: tan is large and negative, and finite.
-  double pole = at("tan", x(static_cast<float>(kPi / 2)));
+  double pole = at("tan", x(static_cast<float>(std::numbers::pi / 2)));
   EXPECT_LT(pole, -2e7);
   EXPECT_GT(pole, -3e7);
   EXPECT_DOUBLE_EQ(at("sinh", x(1000)), std::sinh(88.0));

@@ -3,23 +3,23 @@
 // the seed formulas written out), plus the total-internal-reflection boundary and the GGX
 // energy checks.
 #include <cmath>
+#include <numbers>
 
 #include <gtest/gtest.h>
 
+#include "node_eval.h"
 #include "nodes/eval_math.h"
 #include "nodes/shading_reference.h"
-#include "node_eval.h"
 
 namespace wg {
 namespace {
 
 using test::runNode;
 
-const double kPi = 3.14159265358979323846;
 Value up() { return Value::vector({0, 1, 0}); }
 // A unit vector in the x/y plane at `degrees` from the +y normal.
 Value at(double degrees) {
-  double r = degrees * kPi / 180.0;
+  double r = degrees * std::numbers::pi / 180.0;
   return Value::vector({std::sin(r), std::cos(r), 0});
 }
 void expectVec(const Value& v, double x, double y, double z, double tol) {
@@ -49,7 +49,7 @@ TEST(RefractDir, SnellFromAir) {
   for (double deg : {0.0, 10.0, 30.0, 60.0, 89.0}) {
     SCOPED_TRACE(deg);
     auto r = runNode("refract_dir", {{"normal", up()}, {"view", at(deg)}});
-    double sinT = std::sin(deg * kPi / 180) / 1.333;
+    double sinT = std::sin(deg * std::numbers::pi / 180) / 1.333;
     // The transmitted ray goes down, keeping the tangential direction of -V.
     expectVec(r["direction"], -sinT, -std::sqrt(1 - sinT * sinT), 0, 1e-12);
     EXPECT_EQ(r.scalar("tir"), 0.0);
@@ -57,7 +57,7 @@ TEST(RefractDir, SnellFromAir) {
 }
 
 TEST(RefractDir, SnellFromBelowAndTheCriticalAngle) {
-  double critical = std::asin(1.0 / 1.333) * 180.0 / kPi;
+  double critical = std::asin(1.0 / 1.333) * 180.0 / std::numbers::pi;
   EXPECT_NEAR(critical, 48.6066, 5e-5);
   nlohmann::json below{{"direction", "water_to_air"}};
   // Below the critical angle, Snell with the viewer in water: sin(t) = 1.333 sin(i). (The
@@ -65,7 +65,7 @@ TEST(RefractDir, SnellFromBelowAndTheCriticalAngle) {
   for (double deg : {0.0, 20.0, 40.0, 48.6}) {
     SCOPED_TRACE(deg);
     auto r = runNode("refract_dir", {{"normal", up()}, {"view", at(deg)}}, below);
-    double sinT = 1.333 * std::sin(deg * kPi / 180);
+    double sinT = 1.333 * std::sin(deg * std::numbers::pi / 180);
     ASSERT_LT(sinT, 1.0);
     expectVec(r["direction"], -sinT, -std::sqrt(1 - sinT * sinT), 0, 1e-9);
     EXPECT_EQ(r.scalar("tir"), 0.0);
@@ -87,7 +87,7 @@ TEST(RefractDir, SnellFromBelowAndTheCriticalAngle) {
 
 TEST(RefractDir, IorOptionAndUnitLength) {
   auto r = runNode("refract_dir", {{"normal", up()}, {"view", at(45)}}, {{"ior", 1.5}});
-  double sinT = std::sin(kPi / 4) / 1.5;
+  double sinT = std::sin(std::numbers::pi / 4) / 1.5;
   expectVec(r["direction"], -sinT, -std::sqrt(1 - sinT * sinT), 0, 1e-12);
   Value n = Value::vector({0.2, 1, 0.1}), v = Value::vector({0.5, 0.4, -0.3});
   EXPECT_NEAR(len(runNode("refract_dir", {{"normal", n}, {"view", v}})["direction"]), 1.0, 1e-12);
@@ -110,7 +110,7 @@ TEST(BlinnPhong, HalfVector) {
               1e-12);
   // L along N, V at 60 degrees: H at 30 degrees, specular cos(30)^64.
   auto r = runNode("blinn_phong", {{"normal", up()}, {"view", at(60)}, {"light", up()}, {"strength", Value::scalar(2)}});
-  EXPECT_NEAR(r.scalar("specular"), 2 * std::pow(std::cos(kPi / 6), 64), 1e-12);
+  EXPECT_NEAR(r.scalar("specular"), 2 * std::pow(std::cos(std::numbers::pi / 6), 64), 1e-12);
   EXPECT_NEAR(r.scalar("diffuse"), 1.0, 1e-12);
   expectVec(r["color"], r.scalar("specular"), r.scalar("specular"), r.scalar("specular"), 1e-12);
 }
@@ -128,7 +128,7 @@ TEST(PhongSpecular, SeedOneSunAndEnvironment) {
               1.0, 1e-12);
   // View straight down, sun at 30 degrees: cos(30)^20 = 0.0563.
   auto r = runNode("phong_specular", {{"normal", up()}, {"view", up()}, {"sun", at(30)}});
-  EXPECT_NEAR(r.scalar("sun_specular"), std::pow(std::cos(kPi / 6), 20), 1e-12);
+  EXPECT_NEAR(r.scalar("sun_specular"), std::pow(std::cos(std::numbers::pi / 6), 20), 1e-12);
   EXPECT_NEAR(r.scalar("sun_specular"), seed(up(), up(), at(30), 20), 1e-12);
   // Environment from the zenith, no exponent: R = N, R.V = 1.
   EXPECT_NEAR(r.scalar("environment_specular"), 1.0, 1e-12);
@@ -149,7 +149,7 @@ double textbookGgx(const Value& n, const Value& v, const Value& l, double roughn
   double ndoth = std::max(glsl::dot(n, h), 0.0), ndotv = std::max(glsl::dot(n, v), 0.0);
   double ndotl = std::max(glsl::dot(n, l), 0.0);
   double denom = ndoth * ndoth * (a2 - 1) + 1;
-  double d = a2 / (kPi * denom * denom);
+  double d = a2 / (std::numbers::pi * denom * denom);
   double f = f0 + (1 - f0) * std::pow(1 - std::max(glsl::dot(h, v), 0.0), 5);
   double k = (roughness + 1) * (roughness + 1) / 8;
   double g = ndotv / (ndotv * (1 - k) + k) * ndotl / (ndotl * (1 - k) + k);
@@ -161,8 +161,8 @@ TEST(GgxSpecular, MatchesTheTextbookFormWhereDefined) {
     for (double vd : {0.0, 40.0, 75.0})
       for (double ld : {-60.0, -10.0, 30.0}) {
         SCOPED_TRACE(std::to_string(r) + " " + std::to_string(vd) + " " + std::to_string(ld));
-        Value v = at(vd), l = Value::vector({std::sin(ld * kPi / 180) * 0.6, std::cos(ld * kPi / 180),
-                                             std::sin(ld * kPi / 180) * 0.8});
+        Value v = at(vd), l = Value::vector({std::sin(ld * std::numbers::pi / 180) * 0.6, std::cos(ld * std::numbers::pi / 180),
+                                             std::sin(ld * std::numbers::pi / 180) * 0.8});
         l = glsl::safeNormalize(l);
         auto g = runNode("ggx_specular", {{"normal", up()}, {"view", v}, {"light", l}, {"roughness", Value::scalar(r)}});
         double expect = textbookGgx(up(), v, l, r, 0.02);
@@ -173,7 +173,7 @@ TEST(GgxSpecular, MatchesTheTextbookFormWhereDefined) {
   auto g = runNode("ggx_specular", {{"normal", up()}, {"view", up()}, {"light", up()}});
   EXPECT_NEAR(g.scalar("fresnel"), 0.02, 1e-12);
   // D at the peak: 1 / (pi a^2), a = 0.05^2.
-  EXPECT_NEAR(g.scalar("distribution"), 1 / (kPi * std::pow(0.05, 4)), 1e-6);
+  EXPECT_NEAR(g.scalar("distribution"), 1 / (std::numbers::pi * std::pow(0.05, 4)), 1e-6);
 }
 
 // The GGX distribution is normalised: the projected microfacet area is 1,
@@ -188,11 +188,11 @@ TEST(GgxSpecular, DistributionIntegratesToOne) {
     double lo = std::log(1e-14), sum = 0, prev = 0;
     for (int i = 0; i <= steps; ++i) {
       double s = std::exp(lo + (0 - lo) * i / steps);
-      double f = kPi * nodes::ggxDistributionReference(std::sqrt(1 - s), a2) * s;
+      double f = std::numbers::pi * nodes::ggxDistributionReference(std::sqrt(1 - s), a2) * s;
       if (i > 0) sum += 0.5 * (f + prev) * (-lo / steps);
       prev = f;
     }
-    sum += kPi * nodes::ggxDistributionReference(1.0, a2) * 1e-14;
+    sum += std::numbers::pi * nodes::ggxDistributionReference(1.0, a2) * 1e-14;
     EXPECT_NEAR(sum, 1.0, 5e-4);
   }
 }
@@ -207,12 +207,12 @@ TEST(GgxSpecular, EnergyAndFiniteness) {
       const int nt = 300, np = 300;
       double albedo = 0;
       for (int i = 0; i < nt; ++i) {
-        double th = (i + 0.5) * (kPi / 2) / nt;
+        double th = (i + 0.5) * (std::numbers::pi / 2) / nt;
         for (int j = 0; j < np; ++j) {
-          double ph = (j + 0.5) * 2 * kPi / np;
+          double ph = (j + 0.5) * 2 * std::numbers::pi / np;
           Value l = Value::vector({std::sin(th) * std::cos(ph), std::cos(th), std::sin(th) * std::sin(ph)});
           nodes::GgxTerms g = nodes::ggxSpecularReference(up(), v, l, r, 1.0);
-          albedo += g.brdf * g.ndotl * std::sin(th) * (kPi / 2 / nt) * (2 * kPi / np);
+          albedo += g.brdf * g.ndotl * std::sin(th) * (std::numbers::pi / 2 / nt) * (2 * std::numbers::pi / np);
         }
       }
       EXPECT_LE(albedo, 1.0);
@@ -226,7 +226,7 @@ TEST(GgxSpecular, EnergyAndFiniteness) {
     for (const Value& out : g.values) EXPECT_TRUE(out.allFinite());
     auto h = runNode("ggx_specular", {{"normal", up()}, {"view", up()}, {"light", up()}, {"roughness", Value::scalar(rough)}});
     for (const Value& out : h.values) EXPECT_TRUE(out.allFinite());
-    EXPECT_LE(h.scalar("distribution"), 1 / (kPi * 1e-12) * (1 + 1e-12));
+    EXPECT_LE(h.scalar("distribution"), 1 / (std::numbers::pi * 1e-12) * (1 + 1e-12));
     auto k = runNode("ggx_specular", {{"normal", up()}, {"view", at(30)}, {"light", Value::vector({1, 0, 0})},
                                       {"roughness", Value::scalar(rough)}});
     EXPECT_EQ(k.scalar("specular"), 0.0);

@@ -19,25 +19,25 @@ namespace {
 
 using test::runNode;
 
-struct V3 {
+struct Vec3d {
   double x, y, z;
 };
-V3 sub(V3 a, V3 b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
-double dot(V3 a, V3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V3 cross(V3 a, V3 b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
-V3 normalize(V3 a) {
-  double l = std::sqrt(dot(a, a));
+Vec3d sub(Vec3d a, Vec3d b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+double dot3d(Vec3d a, Vec3d b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+Vec3d cross3d(Vec3d a, Vec3d b) { return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x}; }
+Vec3d normalize(Vec3d a) {
+  double l = std::sqrt(dot3d(a, a));
   return {a.x / l, a.y / l, a.z / l};
 }
 
 // Column-major mat4 Values as GLSL (and glm) hold them: m[col][row] = c[col * 4 + row].
-Value lookAt(V3 eye, V3 centre, V3 up) {
-  V3 f = normalize(sub(centre, eye)), s = normalize(cross(f, up)), u = cross(s, f);
+Value lookAt(Vec3d eye, Vec3d centre, Vec3d up) {
+  Vec3d f = normalize(sub(centre, eye)), s = normalize(cross3d(f, up)), u = cross3d(s, f);
   Value m = Value::ofType(Type::Mat4);
   m[0] = s.x, m[4] = s.y, m[8] = s.z;
   m[1] = u.x, m[5] = u.y, m[9] = u.z;
   m[2] = -f.x, m[6] = -f.y, m[10] = -f.z;
-  m[12] = -dot(s, eye), m[13] = -dot(u, eye), m[14] = dot(f, eye), m[15] = 1;
+  m[12] = -dot3d(s, eye), m[13] = -dot3d(u, eye), m[14] = dot3d(f, eye), m[15] = 1;
   return m;
 }
 Value perspective(double fovyDegrees, double aspect, double n, double f) {
@@ -59,7 +59,7 @@ void mulPoint(const Value& m, const double p[4], double out[4]) {
 // Depth-buffer value of a linear view depth L (inverse of linearize_depth).
 double depthOf(double linear, double n, double f) { return (1 - n / linear) / (1 - n / f); }
 
-EvalEnvironment cameraEnv(V3 eye, V3 centre, V3 up = {0, 1, 0}) {
+EvalEnvironment cameraEnv(Vec3d eye, Vec3d centre, Vec3d up = {0, 1, 0}) {
   EvalEnvironment env;
   env.cameraPosition = Value::vector({eye.x, eye.y, eye.z});
   env.view = lookAt(eye, centre, up);
@@ -159,10 +159,10 @@ TEST(Ssr, EdgeFadeIsSeed001s) {
 
 TEST(Ssr, FindsTheSceneWhereTheRayMeetsItsDepth) {
   // Camera above and behind a water point at the origin; the reflected ray climbs away.
-  V3 eye{0, 5, 10};
+  Vec3d eye{0, 5, 10};
   EvalEnvironment env = cameraEnv(eye, {0, 0, 0});
-  V3 vdir = normalize(eye);  // from the surface point to the camera
-  V3 r{-vdir.x, vdir.y, -vdir.z};  // reflect(-V, up)
+  Vec3d vdir = normalize(eye);  // from the surface point to the camera
+  Vec3d r{-vdir.x, vdir.y, -vdir.z};  // reflect(-V, up)
   double stride = 1.0 / std::max(0.6, r.y * r.y);
   // The 4th ray point (i = 3, t = 3.5 stride): put the scene exactly at its view depth.
   double t3 = 3.5 * stride;
@@ -178,7 +178,7 @@ TEST(Ssr, FindsTheSceneWhereTheRayMeetsItsDepth) {
   double u = c3[0] / c3[3] * 0.5 + 0.5, v = c3[1] / c3[3] * 0.5 + 0.5;
   EXPECT_NEAR(out["uv"][0], u, 1e-9);
   EXPECT_NEAR(out["uv"][1], v, 1e-9);
-  double dist = std::sqrt(dot(eye, eye));  // the surface's view depth: the camera looks at it
+  double dist = std::sqrt(dot3d(eye, eye));  // the surface's view depth: the camera looks at it
   double conf = nodes::ssrFadeReference(u, v, dist, 20);
   EXPECT_GT(conf, 0.1);
   EXPECT_NEAR(out.scalar("confidence"), conf, 1e-12);
@@ -195,7 +195,7 @@ TEST(Ssr, ToleranceGrowsPerStep) {
   // With the scene a little behind the ray everywhere, a growing tolerance eventually
   // accepts it; with growth 1 it never does.
   EvalEnvironment env = cameraEnv({0, 5, 10}, {0, 0, 0});
-  V3 vdir = normalize({0, 5, 10});
+  Vec3d vdir = normalize({0, 5, 10});
   Value r = Value::vector({0, vdir.y, -vdir.z});
   auto run = [&](double growth) {
     return nodes::ssrMarchReference(depthOf(14.0, 0.1, 100), Value::vector({0, 0, 0}), r, r[1], env.view,

@@ -2,11 +2,12 @@
 // validation, cusp, huge coordinates and times), trochoid_wave (bisection lands on the
 // surface), sine_normals and ripple_normals against the seeds' formulas, and the texture
 // nodes against hand computations from TextureImage::sample; graphs using them compile.
-#include <gtest/gtest.h>
-
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
+
+#include <gtest/gtest.h>
 
 #include "codegen/compile.h"
 #include "codegen/cpu_backend.h"
@@ -19,7 +20,6 @@
 namespace wg {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 struct V3 {
   double x, y, z;
@@ -83,7 +83,7 @@ V3 displaced(const nlohmann::json& waves, double x, double z, double t) {
     dx /= len;
     dz /= len;
     double q = w["steepness"], lambda = w["wavelength"];
-    double k = 2 * kPi / lambda, omega = std::sqrt(9.81 * k);
+    double k = 2 * std::numbers::pi / lambda, omega = std::sqrt(9.81 * k);
     double a = w.contains("amplitude") ? w["amplitude"].get<double>() : q / k;
     double phi = w.contains("phase") ? w["phase"].get<double>() : 0.0;
     double theta = k * (dx * x + dz * z) - omega * t + phi;
@@ -141,7 +141,7 @@ TEST(GerstnerWaves, GpuGemsSimplifiedNormalIsExactOnlyForOneWave) {
       double dx = w["direction"][0], dz = w["direction"][1], len = std::hypot(dx, dz);
       dx /= len;
       dz /= len;
-      double q = w["steepness"], k = 2 * kPi / w["wavelength"].get<double>(), a = q / k;
+      double q = w["steepness"], k = 2 * std::numbers::pi / w["wavelength"].get<double>(), a = q / k;
       double theta = k * (dx * x + dz * z) - std::sqrt(9.81 * k) * t;
       n = n + V3{-dx * k * a * std::cos(theta), -q * k * a * std::sin(theta), -dz * k * a * std::cos(theta)};
     }
@@ -245,7 +245,7 @@ TEST(GerstnerWaves, HugeCoordinatesAndTimesStayAccurate) {
     }
   // One wave is periodic in time with period 2 pi / omega: the wrapped phase sees that at t = 1e6.
   auto one = nlohmann::json::parse(R"([{"direction": [1, 2], "steepness": 0.7, "wavelength": 9}])");
-  double period = 2 * kPi / std::sqrt(9.81 * 2 * kPi / 9);
+  double period = 2 * std::numbers::pi / std::sqrt(9.81 * 2 * std::numbers::pi / 9);
   auto a = evalNode("gerstner_waves", {{"waves", one}}, {{"position", Value::vector({3, 0, 4})}}, atTime(1e6));
   auto b = evalNode("gerstner_waves", {{"waves", one}}, {{"position", Value::vector({3, 0, 4})}}, atTime(1e6 + period));
   EXPECT_LE(dist(v3(a[0]), v3(b[0])), 1e-8);

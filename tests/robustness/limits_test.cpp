@@ -21,9 +21,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point t0) {
-  return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+using test::secondsSince;
 
 // The first error's code string, or "" when there is none.
 std::string firstCode(const Diagnostics& diags) {
