@@ -79,7 +79,9 @@ stbi_uc* decodePng(const TextureFile& file, int* w, int* h, std::string* error) 
     if (error) *error = "cannot decode texture '" + file.realPath + "': " + why;
     return nullptr;
   };
-  int fd = ::open(file.realPath.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+  // O_NONBLOCK: a FIFO swapped in since the check must not hang the open; readWhole then
+  // refuses anything but a regular file.
+  int fd = ::open(file.realPath.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
   if (fd < 0) return fail(std::strerror(errno));
   std::vector<unsigned char> bytes;
   std::string why = readWhole(fd, &bytes);
