@@ -23,7 +23,7 @@ const char* arithmeticNode(const std::string& op) {
   return "div";
 }
 
-struct Stop {
+struct LoweringStop {
   FormulaError error;
 };
 
@@ -47,7 +47,7 @@ class Lowering {
   }
 
  private:
-  [[noreturn]] static void fail(Span span, std::string message) { throw Stop{{span, std::move(message)}}; }
+  [[noreturn]] static void fail(Span span, std::string message) { throw LoweringStop{{span, std::move(message)}}; }
 
   ValueRef operand(const Node& n, std::size_t k) const { return values_[static_cast<std::size_t>(n.operands[k])]; }
 
@@ -159,7 +159,7 @@ std::variant<LoweredFormula, FormulaError> lowerFormula(const Ast& ast, const st
   try {
     LoweredFormula lowered = Lowering(ast, types, context, program).run();
     return lowered;
-  } catch (const Stop& stop) {
+  } catch (const LoweringStop& stop) {
     program.ops.resize(before);  // nothing half-appended
     return stop.error;
   }

@@ -7,7 +7,7 @@ namespace wg::expr {
 namespace {
 
 // Thrown inside the parser only, caught by parseFormula: the first error ends the parse.
-struct Stop {
+struct ParseStop {
   FormulaError error;
 };
 
@@ -26,7 +26,7 @@ class Parser {
   bool atSymbol(std::string_view s) const { return peek().kind == TokenKind::Symbol && peek().text == s; }
   const Token& next() { return tokens_[pos_ < tokens_.size() - 1 ? pos_++ : pos_]; }
 
-  [[noreturn]] static void fail(Span span, std::string message) { throw Stop{{span, std::move(message)}}; }
+  [[noreturn]] static void fail(Span span, std::string message) { throw ParseStop{{span, std::move(message)}}; }
 
   static std::string describe(const Token& t) {
     switch (t.kind) {
@@ -222,7 +222,7 @@ std::variant<Ast, FormulaError> parseFormula(std::string_view formula) {
   if (error) return *error;
   try {
     return Parser(std::move(tokens)).parse();
-  } catch (const Stop& stop) {
+  } catch (const ParseStop& stop) {
     return stop.error;
   }
 }
