@@ -20,7 +20,7 @@ struct PngSize {
 std::string readPngSize(const unsigned char* bytes, std::size_t count, PngSize* size);
 
 // "" when the chunks of the whole file `bytes` each fit inside it, up to IEND; else which
-// chunk declares more bytes than the file has. A 78-byte file whose IDAT declares 1.9 GB
+// chunk declares more bytes than the file has. A 71-byte file whose IDAT declares 1.9 GB
 // would otherwise make the decoder grow its buffer towards that size before it finds out.
 std::string checkPngChunks(const unsigned char* bytes, std::size_t count);
 

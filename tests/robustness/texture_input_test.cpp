@@ -206,7 +206,7 @@ TEST_F(TextureInput, ADecodeFailureAtRenderTimeIsAGraphErrorAtThePath) {
 #endif
 
 // The texture fuzz target's find (tests/fuzz/corpus/texture/idat_declares_1.9GB): a 2 x 2
-// PNG of 70 bytes whose IDAT chunk declares 1,912,649,216 bytes. The decoder grew its
+// PNG of 71 bytes whose IDAT chunk declares 1,912,649,216 bytes. The decoder grew its
 // buffer towards that size before finding the file short (5.6 s under ASan). Refused now
 // from the chunk lengths, before the decoder sees the bytes.
 std::string pngWithChunkPastTheEnd() {
