@@ -1,6 +1,8 @@
 #include "core/expression_parser.h"
 
+#include <initializer_list>
 #include <optional>
+#include <string_view>
 #include <utility>
 
 namespace wg::expr {
@@ -85,36 +87,27 @@ class Parser {
     return add(std::move(n));
   }
 
+  // One left-associative level: operands from `operand`, joined by any of `ops`.
+  template <class Operand>
+  int leftAssociative(int depth, NodeKind kind, std::initializer_list<std::string_view> ops, Operand operand) {
+    int left = (this->*operand)(depth);
+    auto atOne = [&] {
+      for (std::string_view op : ops)
+        if (atSymbol(op)) return true;
+      return false;
+    };
+    while (atOne()) {
+      std::string op = next().text;
+      left = binary(kind, op, left, (this->*operand)(depth));
+    }
+    return left;
+  }
+
   int compare(int depth) {
-    int left = sum(depth);
-    while (peek().kind == TokenKind::Symbol && isComparison(peek().text)) {
-      std::string op = next().text;
-      left = binary(NodeKind::Compare, op, left, sum(depth));
-    }
-    return left;
+    return leftAssociative(depth, NodeKind::Compare, {"<", "<=", ">", ">=", "==", "!="}, &Parser::sum);
   }
-
-  static bool isComparison(const std::string& s) {
-    return s == "<" || s == "<=" || s == ">" || s == ">=" || s == "==" || s == "!=";
-  }
-
-  int sum(int depth) {
-    int left = product(depth);
-    while (atSymbol("+") || atSymbol("-")) {
-      std::string op = next().text;
-      left = binary(NodeKind::Binary, op, left, product(depth));
-    }
-    return left;
-  }
-
-  int product(int depth) {
-    int left = unary(depth);
-    while (atSymbol("*") || atSymbol("/")) {
-      std::string op = next().text;
-      left = binary(NodeKind::Binary, op, left, unary(depth));
-    }
-    return left;
-  }
+  int sum(int depth) { return leftAssociative(depth, NodeKind::Binary, {"+", "-"}, &Parser::product); }
+  int product(int depth) { return leftAssociative(depth, NodeKind::Binary, {"*", "/"}, &Parser::unary); }
 
   int unary(int depth) {
     std::vector<std::size_t> minus;  // offsets of the '-' signs, outermost first
