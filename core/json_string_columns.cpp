@@ -55,15 +55,4 @@ int jsonStringByteColumn(std::string_view line, int quoteColumn, std::size_t dec
   return static_cast<int>(at) + 1;  // the closing quote (or the line's end)
 }
 
-std::string_view lineOfText(std::string_view text, int line) {
-  std::size_t start = 0;
-  for (int l = 1; l < line; ++l) {
-    std::size_t nl = text.find('\n', start);
-    if (nl == std::string_view::npos) return {};
-    start = nl + 1;
-  }
-  std::size_t end = text.find('\n', start);
-  return text.substr(start, end == std::string_view::npos ? std::string_view::npos : end - start);
-}
-
 }  // namespace wg

@@ -14,7 +14,4 @@ namespace wg {
 // line's end).
 int jsonStringByteColumn(std::string_view line, int quoteColumn, std::size_t decoded);
 
-// The text of 1-based line `line` of `text`, without its '\n'; empty past the end.
-std::string_view lineOfText(std::string_view text, int line);
-
 }  // namespace wg

@@ -46,14 +46,5 @@ TEST(JsonStringColumns, RawUtf8AndAQuoteOutsideTheLine) {
   EXPECT_EQ(jsonStringByteColumn("\"ab", 1, 5), 4);  // no closing quote: the line's end
 }
 
-TEST(JsonStringColumns, LinesOfText) {
-  const std::string text = "one\ntwo\n\nfour";
-  EXPECT_EQ(lineOfText(text, 1), "one");
-  EXPECT_EQ(lineOfText(text, 2), "two");
-  EXPECT_EQ(lineOfText(text, 3), "");
-  EXPECT_EQ(lineOfText(text, 4), "four");
-  EXPECT_EQ(lineOfText(text, 5), "");
-}
-
 }  // namespace
 }  // namespace wg
