@@ -9,6 +9,7 @@
 #include "accuracy/node_probe.h"
 #include "accuracy/number_text.h"
 #include "codegen/emit_glsl.h"
+#include "core/node_options.h"
 #include "nodes/registry.h"
 #include "runtime/runtime_error.h"
 
@@ -53,10 +54,13 @@ std::vector<ProbeCase> specHardCases(const NodeSpec& spec) {
   return out;
 }
 
-// The options of a run with every default filled in, so a report names each value.
+// Whether case `c` gives an input of the node in its default options (an expression's
+// inputs are those its default options declare).
 bool takesInput(const NodeSpec& spec, const ProbeCase& c) {
+  NodePorts ports = portsOfNode(spec, nlohmann::json::object());
   for (const auto& [port, value] : c.inputs)
-    if (spec.inputIndex(port) >= 0) return true;
+    for (const auto& p : ports.inputs)
+      if (p.name == port) return true;
   return false;
 }
 

@@ -1,5 +1,7 @@
 #include "accuracy/node_probe.h"
 
+#include "core/node_options.h"
+
 namespace wg::accuracy {
 namespace {
 
@@ -20,11 +22,12 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
   node.id = "n";
   node.type = spec.type;
   for (auto it = options.begin(); it != options.end(); ++it) node.options.push_back({it.key(), it.value(), {}, {}});
+  const std::vector<PortSpec> inputs = portsOfNode(spec, options).inputs;  // an expression's follow from its options
 
   // The type of each input parameter: the port's own, or (Gen, Custom) the first value given.
-  std::vector<Type> paramType(spec.inputs.size(), Type::Invalid);
-  for (size_t k = 0; k < spec.inputs.size(); ++k) {
-    const PortSpec& port = spec.inputs[k];
+  std::vector<Type> paramType(inputs.size(), Type::Invalid);
+  for (size_t k = 0; k < inputs.size(); ++k) {
+    const PortSpec& port = inputs[k];
     if (port.kind == PortKind::Fixed) {
       bool given = false;
       for (const auto& c : cases) given |= findInput(c, port.name) != nullptr;
@@ -35,15 +38,15 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
       if (const Value* v = findInput(c, port.name); v && paramType[k] == Type::Invalid) paramType[k] = v->type;
     if (paramType[k] == Type::Invalid && port.required()) paramType[k] = port.kind == PortKind::Custom ? Type::Vec3 : Type::Float;
   }
-  for (size_t k = 0; k < spec.inputs.size(); ++k) {
+  for (size_t k = 0; k < inputs.size(); ++k) {
     if (paramType[k] == Type::Invalid) continue;
     Parameter p;
-    p.name = "in_" + spec.inputs[k].name;
+    p.name = "in_" + inputs[k].name;
     p.type = paramType[k];
     p.defaultValue.assign(static_cast<size_t>(componentCount(p.type)), 0.5);
     g.parameters.push_back(p);
     NodeInput in;
-    in.port = spec.inputs[k].name;
+    in.port = inputs[k].name;
     in.source.kind = InputSource::Kind::Parameter;
     in.source.parameter = p.name;
     node.inputs.push_back(in);
@@ -60,9 +63,9 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
     ProbeCase pc = c;
     pc.parameters.clear();
     bool fits = true;
-    for (size_t k = 0; k < spec.inputs.size(); ++k) {
+    for (size_t k = 0; k < inputs.size(); ++k) {
       if (paramType[k] == Type::Invalid) continue;
-      const PortSpec& port = spec.inputs[k];
+      const PortSpec& port = inputs[k];
       Value v = Value::ofType(paramType[k], 0.5);
       if (const Value* given = findInput(c, port.name)) {
         if (given->type != paramType[k] && given->type != Type::Float) fits = false;
@@ -88,7 +91,7 @@ std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json&
                                      const ShaderMutation& mutation) {
   NodeProbeSetup setup = makeNodeProbe(spec, options, cases);
   if (setup.cases.cases.empty()) return ProbeReport{};
-  ProbeOutput out{"n", output.empty() ? spec.outputs.front().name : output};
+  ProbeOutput out{"n", output.empty() ? portsOfNode(spec, options).outputs.at(0).name : output};
   // The node-probe keys are spent here (options chose the graph; ranges apply below).
   ProbeCaseFile graphCases = setup.cases;
   for (auto& c : graphCases.cases) {

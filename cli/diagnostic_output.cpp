@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "core/text_lines.h"
 
 namespace wg::cli {
 namespace {
@@ -62,17 +63,8 @@ class ColumnConverter {
   const std::vector<std::string_view>& linesOf(const std::string& file) {
     auto it = cache_.find(file);
     if (it != cache_.end()) return it->second;
-    std::vector<std::string_view> lines;
-    if (const std::string* text = diags_.source(file)) {
-      std::string_view rest = *text;
-      while (!rest.empty()) {
-        size_t nl = rest.find('\n');
-        lines.push_back(rest.substr(0, nl));
-        if (nl == std::string_view::npos) break;
-        rest.remove_prefix(nl + 1);
-      }
-    }
-    return cache_.emplace(file, std::move(lines)).first->second;
+    const std::string* text = diags_.source(file);
+    return cache_.emplace(file, text ? splitLines(*text) : std::vector<std::string_view>{}).first->second;
   }
   const Diagnostics& diags_;
   std::map<std::string, std::vector<std::string_view>> cache_;

@@ -4,6 +4,8 @@
 
 #include "core/node_options.h"
 #include "core/port_typing.h"
+#include "core/resolve.h"
+#include "nodes/registry.h"
 #include "nodes/texture_source.h"
 
 namespace wg {
@@ -49,6 +51,70 @@ std::string namesOf(const std::vector<Named>& list) {
   return s;
 }
 
+// A node that expands into ops (an expression), evaluated as resolve would build it: a
+// one-node graph whose inputs are parameters holding the given values, resolved with the
+// default registry (the math nodes the expansion is made of) and run through the backend.
+std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& options, const NodeSpec& withItsPorts,
+                                    const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env) {
+  Graph g;
+  g.file = "node '" + spec.type + "'";
+  g.name = "eval_" + spec.type;
+  Node node;
+  node.id = "n";
+  node.type = spec.type;
+  if (options.is_object())
+    for (auto it = options.begin(); it != options.end(); ++it) node.options.push_back({it.key(), it.value(), {}, {}});
+  std::vector<Value> values;
+  for (const auto& p : withItsPorts.inputs) {
+    const Value* given = nullptr;
+    for (const auto& [name, value] : inputs)
+      if (name == p.name) given = &value;
+    Value v = given ? *given : p.defaultValue ? *p.defaultValue : p.defaultBuiltin ? env.builtin(*p.defaultBuiltin) : Value{};
+    if (v.type == Type::Invalid) throw std::invalid_argument(spec.type + ": required input '" + p.name + "' is not given");
+    if (!implicitlyConvertible(v.type, p.type))
+      throw std::invalid_argument(spec.type + ": input '" + p.name + "' expects " + std::string(typeName(p.type)) + ", but the value given is " + std::string(typeName(v.type)));
+    Parameter param;
+    param.name = "in_" + p.name;
+    param.type = p.type;
+    param.defaultValue.assign(static_cast<size_t>(componentCount(p.type)), 0);
+    g.parameters.push_back(param);
+    values.push_back(v.convertedTo(p.type));
+    NodeInput in;
+    in.port = p.name;
+    in.source.kind = InputSource::Kind::Parameter;
+    in.source.parameter = param.name;
+    node.inputs.push_back(in);
+  }
+  g.nodes.push_back(node);
+  GraphOutput out;
+  out.slot = OutputSlot::FragmentAlpha;  // resolve wants one; the node's own outputs are read
+  out.source.kind = InputSource::Kind::Literal;
+  out.source.literal = {0.0};
+  g.outputs.push_back(out);
+  Diagnostics diags;
+  NodeOutputValues nodeOutputs;
+  auto program = resolveGraph(g, defaultRegistry(), diags, nodeOutputs);
+  if (!program) {
+    std::string why;
+    for (const auto& d : diags.sorted()) why += (why.empty() ? "" : "; ") + d.message;
+    throw std::invalid_argument(spec.type + ": " + why);
+  }
+  CpuResult result = evaluateProgram(*program, env, values);
+  std::vector<Value> outputs;
+  for (const auto& o : nodeOutputs.at("n")) {
+    switch (o.value.kind) {
+      case ValueRef::Kind::Op:
+        outputs.push_back(result.opOutputs[static_cast<size_t>(o.value.index)][static_cast<size_t>(o.value.port)]);
+        break;
+      case ValueRef::Kind::Param: outputs.push_back(values[static_cast<size_t>(o.value.index)]); break;
+      case ValueRef::Kind::Const: outputs.push_back(o.value.constant); break;
+      case ValueRef::Kind::Builtin: outputs.push_back(env.builtin(static_cast<Builtin>(o.value.index))); break;
+      case ValueRef::Kind::None: throw std::logic_error(spec.type + ": an output expanded into nothing");
+    }
+  }
+  return outputs;
+}
+
 }  // namespace
 
 std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env,
@@ -78,8 +144,11 @@ std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& opti
     std::string why = checkOption(spec.options[static_cast<size_t>(oi)], it.value(), graphDir);
     if (!why.empty()) throw std::invalid_argument(spec.type + ": option '" + it.key() + "' " + why);
   }
+  NodeSpec withItsPorts = withPorts(spec, *parseOptions(spec, completeOptions(spec, options)));
   for (const auto& [name, value] : inputs)
-    if (spec.inputIndex(name) < 0) throw std::invalid_argument(spec.type + ": no input '" + name + "'" + namesOf(spec.inputs));
+    if (withItsPorts.inputIndex(name) < 0)
+      throw std::invalid_argument(spec.type + ": no input '" + name + "'" + namesOf(withItsPorts.inputs));
+  if (spec.expand) return evaluateExpanded(spec, options, withItsPorts, inputs, env);
   Op op;
   op.spec = &spec;
   op.nodeId = spec.type;

@@ -17,46 +17,47 @@ std::optional<ProbeOutput> parseProbeOutput(const std::string& text) {
 
 std::optional<Program> buildProbeProgram(const Graph& graph, const Registry& registry, const ProbeOutput& output,
                                          Diagnostics& diags) {
-  auto program = resolveGraph(graph, registry, diags);
+  NodeOutputValues nodeOutputs;
+  auto program = resolveGraph(graph, registry, diags, nodeOutputs);
   if (!program) return std::nullopt;
   if (!output.node.empty()) {
-    // resolve keeps every node as an op (prune runs later), so the chosen one is there.
-    int found = -1;
-    std::vector<std::string> ids;
-    for (size_t i = 0; i < program->ops.size(); ++i) {
-      ids.push_back(program->ops[i].nodeId);
-      if (program->ops[i].nodeId == output.node) found = static_cast<int>(i);
-    }
     const Node* node = graph.findNode(output.node);
-    if (found < 0) {
+    auto found = nodeOutputs.find(output.node);
+    if (found == nodeOutputs.end()) {
+      std::vector<std::string> ids;
+      for (const auto& [id, values] : nodeOutputs) ids.push_back(id);
       diags.error(DiagCode::DanglingReference, SourceRef{graph.file, 1, 1},
                   "the probe output names node '" + output.node + "', which the graph does not have" +
                       didYouMean(output.node, ids));
       return std::nullopt;
     }
-    const Op& op = program->ops[static_cast<size_t>(found)];
-    int port = output.port.empty() ? 0 : op.spec->outputIndex(output.port);
-    if (port < 0) {
-      std::vector<std::string> ports;
-      for (const auto& p : op.spec->outputs) ports.push_back(p.name);
+    const std::vector<NodeOutputValue>& ports = found->second;
+    const NodeOutputValue* chosen = ports.empty() ? nullptr : &ports.front();
+    if (!output.port.empty()) {
+      chosen = nullptr;
+      for (const auto& p : ports)
+        if (p.port == output.port) chosen = &p;
+    }
+    std::string type = node ? " (" + node->type + ")" : "";
+    if (!chosen) {
+      std::vector<std::string> names;
+      for (const auto& p : ports) names.push_back(p.port);
       diags.error(DiagCode::UnknownOutputPort, node ? node->where : SourceRef{graph.file, 1, 1},
-                  "node '" + output.node + "' (" + op.spec->type + ") has no output '" + output.port + "'" +
-                      didYouMean(output.port, ports),
+                  "node '" + output.node + "'" + type + " has no output '" + output.port + "'" + didYouMean(output.port, names),
                   output.node);
       return std::nullopt;
     }
-    if (op.outputTypes[static_cast<size_t>(port)] == Type::Invalid) {
+    if (chosen->type == Type::Invalid) {
       diags.error(DiagCode::UnknownOutputPort, node ? node->where : SourceRef{graph.file, 1, 1},
-                  "node '" + output.node + "' (" + op.spec->type + ") has no output '" + op.spec->outputs[static_cast<size_t>(port)].name +
-                      "' for its input types",
+                  "node '" + output.node + "'" + type + " has no output '" + chosen->port + "' for its input types",
                   output.node);
       return std::nullopt;
     }
     ProgramOutput out;
     out.slot = OutputSlot::FragmentColor;
-    out.value = ValueRef::op(found, port);
-    out.type = op.outputTypes[static_cast<size_t>(port)];
-    out.where = op.where;
+    out.value = chosen->value;
+    out.type = chosen->type;
+    out.where = node ? node->where : SourceRef{graph.file, 1, 1};
     program->outputs = {out};
   } else {
     const ProgramOutput* color = program->output(OutputSlot::FragmentColor);

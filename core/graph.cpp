@@ -20,6 +20,12 @@ const Preset* Graph::findPreset(std::string_view name) const {
   return nullptr;
 }
 
+nlohmann::json writtenOptions(const Node& node) {
+  nlohmann::json written = nlohmann::json::object();
+  for (const auto& o : node.options) written[o.name] = o.value;
+  return written;
+}
+
 bool isIdentifier(std::string_view s) {
   if (s.empty() || s.size() > 64) return false;
   auto alpha = [](char c) { return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z') || c == '_'; };

@@ -105,4 +105,7 @@ struct Graph {
 // True for [A-Za-z_][A-Za-z0-9_]*, at most 64 characters.
 bool isIdentifier(std::string_view s);
 
+// A node's options as written, as one JSON object (name -> value).
+nlohmann::json writtenOptions(const Node& node);
+
 }  // namespace wg

@@ -5,6 +5,7 @@
 #include <set>
 
 #include "core/load_limits.h"
+#include "core/node_options.h"
 #include "core/number_format.h"
 
 namespace wg {
@@ -52,8 +53,11 @@ std::string GraphEditor::checkTarget(const InputTarget& target) const {
   if (!isIdentifier(target.port)) return "'" + target.port + "' is not an input name";
   if (registry_) {
     const NodeSpec* spec = registry_->find(n->type);
-    if (spec && spec->inputIndex(target.port) < 0)
-      return "node '" + target.node + "' (" + n->type + ") has no input '" + target.port + "'";
+    if (spec) {
+      NodePorts ports = portsOfNode(*spec, writtenOptions(*n));  // an expression's follow from its options
+      if (std::none_of(ports.inputs.begin(), ports.inputs.end(), [&](const PortSpec& p) { return p.name == target.port; }))
+        return "node '" + target.node + "' (" + n->type + ") has no input '" + target.port + "'";
+    }
   }
   return "";
 }
@@ -174,6 +178,9 @@ std::string GraphEditor::setOption(const std::string& node, const std::string& n
           if ((o.min && x < *o.min) || (o.max && x > *o.max)) return what + " is out of its range";
           break;
         }
+        case OptionSpec::Kind::Text:
+          if (!value.is_string()) return what + " must be a string";
+          break;
         case OptionSpec::Kind::Texture:
         case OptionSpec::Kind::Json: break;
       }
@@ -203,8 +210,11 @@ std::string GraphEditor::connect(const std::string& fromNode, const std::string&
   if (!isIdentifier(fromPort)) return "'" + fromPort + "' is not an output name";
   if (registry_) {
     const NodeSpec* spec = registry_->find(from->type);
-    if (spec && spec->outputIndex(fromPort) < 0)
-      return "node '" + fromNode + "' (" + from->type + ") has no output '" + fromPort + "'";
+    if (spec) {
+      NodePorts ports = portsOfNode(*spec, writtenOptions(*from));
+      if (std::none_of(ports.outputs.begin(), ports.outputs.end(), [&](const PortSpec& p) { return p.name == fromPort; }))
+        return "node '" + fromNode + "' (" + from->type + ") has no output '" + fromPort + "'";
+    }
   }
   if (!target.node.empty()) {
     // A cycle: the target node is already upstream of (or is) the source node.

@@ -563,6 +563,9 @@ std::optional<Graph> parseGraph(std::string_view text, const std::string& file, 
                 "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
     return std::nullopt;
   }
+  // Positions after parsing need the lines (an expression's formula error is placed by the
+  // escapes before it; SARIF counts UTF-16 columns): the text parsed is kept, never read twice.
+  diags.keepSource(file, std::string(text));
   Loader loader(file, diags, expectedNodes(text));
   if (!parseJsonEvents(text, file, diags, loader)) return std::nullopt;
   return loader.load();
@@ -613,7 +616,6 @@ std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& d
                 "cannot read '" + path + "': " + std::strerror(err ? err : EIO));
     return std::nullopt;
   }
-  diags.keepSource(path, text);  // for output formats that need its lines: never read twice
   return text;
 }
 

@@ -39,6 +39,9 @@ bool OptionReader::flag(std::string_view name) const {
 const nlohmann::json& OptionReader::json(std::string_view name) const {
   return value(name, static_cast<int>(OptionSpec::Kind::Json));
 }
+const std::string& OptionReader::text(std::string_view name) const {
+  return value(name, static_cast<int>(OptionSpec::Kind::Text)).get_ref<const std::string&>();
+}
 const std::string& OptionReader::choiceName(std::string_view name) const {
   return value(name, static_cast<int>(OptionSpec::Kind::Enum)).get_ref<const std::string&>();
 }
@@ -100,6 +103,9 @@ std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std:
       return v.is_boolean() ? "" : "must be true or false";
     case OptionSpec::Kind::Json:
       return o.validate ? o.validate(v) : "";
+    case OptionSpec::Kind::Text:
+      if (!v.is_string()) return "must be a string";
+      return o.validate ? o.validate(v) : "";
     case OptionSpec::Kind::Texture: {
       if (!v.is_string()) return "must be a string: \"builtin:<name>\" or a .png path relative to the graph";
       std::string why = checkTextureSource(v.get<std::string>(), graphDir, texture);
@@ -107,6 +113,18 @@ std::string checkOption(const OptionSpec& o, const nlohmann::json& v, const std:
     }
   }
   return "";
+}
+
+NodePorts portsOfNode(const NodeSpec& spec, const nlohmann::json& written) {
+  if (!spec.portsFor) return {spec.inputs, spec.outputs};
+  if (written.is_object())
+    for (auto it = written.begin(); it != written.end(); ++it) {
+      int oi = spec.optionIndex(it.key());
+      if (oi < 0) continue;  // an unknown option changes no port
+      const OptionSpec& o = spec.options[static_cast<size_t>(oi)];
+      if (o.kind != OptionSpec::Kind::Texture && !checkOption(o, it.value(), "").empty()) return {};
+    }
+  return spec.portsFor(*parseOptions(spec, completeOptions(spec, written)));
 }
 
 }  // namespace wg

@@ -63,6 +63,7 @@ class OptionReader {
   int integer(std::string_view name) const;     // Integer
   bool flag(std::string_view name) const;       // Bool
   const nlohmann::json& json(std::string_view name) const;  // Json
+  const std::string& text(std::string_view name) const;     // Text
   // An Enum option's value, for nodes that build a GLSL name from it.
   const std::string& choiceName(std::string_view name) const;
   // Whether an Enum option is `value`, which must be one of its choices.
@@ -110,6 +111,12 @@ nlohmann::json completeOptions(const NodeSpec& spec, const nlohmann::json& given
 // Parses complete, valid options with the spec's parseOptions (an empty ParsedOptions
 // for a node without one).
 std::shared_ptr<const ParsedOptions> parseOptions(const NodeSpec& spec, const nlohmann::json& complete);
+
+// The ports of a graph node of type `spec` whose options are `written` (as in the file):
+// the spec's own, or for a node whose ports follow from its options (NodeSpec::portsFor)
+// those its options give; none when those options are not valid (resolve says why).
+struct NodePorts;
+NodePorts portsOfNode(const NodeSpec& spec, const nlohmann::json& written);
 
 struct TextureFile;  // core/texture_check.h
 // Checks one option value against its spec; returns "" or the reason it is refused. A

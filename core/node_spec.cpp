@@ -22,6 +22,16 @@ int NodeSpec::optionIndex(std::string_view name) const {
   return -1;
 }
 
+NodeSpec withPorts(const NodeSpec& spec, const ParsedOptions& options) {
+  NodeSpec s = spec;
+  if (spec.portsFor) {
+    NodePorts ports = spec.portsFor(options);
+    s.inputs = std::move(ports.inputs);
+    s.outputs = std::move(ports.outputs);
+  }
+  return s;
+}
+
 int EmitContext::inputIndex(std::string_view port) const {
   int i = spec().inputIndex(port);
   if (i < 0) throw std::logic_error("node '" + spec().type + "' has no input '" + std::string(port) + "'");

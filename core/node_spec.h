@@ -59,7 +59,8 @@ struct PortSpec {
 
 struct OptionSpec {
   // Texture: a string, "builtin:<name>" or a .png path relative to the graph file.
-  enum class Kind { Enum, Number, Integer, Bool, Json, Texture };
+  // Text: a string (`validate` may check it); an expression's formula.
+  enum class Kind { Enum, Number, Integer, Bool, Json, Texture, Text };
   std::string name;
   Kind kind = Kind::Enum;
   nlohmann::json defaultValue;
@@ -86,6 +87,13 @@ struct HardCase {
 };
 
 struct NodeSpec;
+struct ExpandContext;  // core/expand.h
+
+// The ports of a node whose ports follow from its options (NodeSpec::portsFor).
+struct NodePorts {
+  std::vector<PortSpec> inputs;
+  std::vector<PortSpec> outputs;
+};
 
 // What infer sees and decides: input types (Invalid when unconnected without default)
 // and the node's options; it sets output types and any Custom input types.
@@ -230,6 +238,14 @@ struct NodeSpec {
   std::function<std::vector<ValueFact>(const std::vector<ValueFact>& inputs, const ParsedOptions& options)> facts;
   std::function<void(EmitContext&)> emit;
   std::function<void(EvalContext&)> eval;
+  // A node that is not one op but a piece of program built from its options (an
+  // expression's formula): resolve calls `expand` in place of making an op, so the ops it
+  // appends go through every pass, the emitter and the CPU backend as if wired by hand.
+  // Such a node has neither emit nor eval. `portsFor` gives its ports from its parsed
+  // options (an expression declares its inputs); `inputs` and `outputs` then hold only
+  // what every instance has, for the docs.
+  std::function<void(ExpandContext&)> expand;
+  std::function<NodePorts(const ParsedOptions& options)> portsFor;
   std::vector<HardCase> hardCases;
   // The error bound of float32 GPU against the double reference, per output component:
   //   |gpu - ref| <= tolerance * max(1, |ref|) + conditioning
@@ -251,5 +267,10 @@ struct NodeSpec {
   int outputIndex(std::string_view name) const;
   int optionIndex(std::string_view name) const;
 };
+
+// `spec` with the ports its options give (NodeSpec::portsFor); `spec` itself, copied, when
+// its ports are fixed. Whatever checks a node's ports against a graph (resolve, the node
+// probe, the editor) reads this one.
+NodeSpec withPorts(const NodeSpec& spec, const ParsedOptions& options);
 
 }  // namespace wg

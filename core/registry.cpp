@@ -1,5 +1,6 @@
 #include "core/registry.h"
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 
@@ -32,9 +33,6 @@ static void checkHardCaseNames(const NodeSpec& s, const HardCase& hc) {
   auto fail = [&](const std::string& why) {
     throw std::logic_error("node spec '" + s.type + "', hard case '" + hc.name + "': " + why);
   };
-  for (const auto& [port, value] : hc.inputs)
-    if (s.inputIndex(port) < 0) fail("no input '" + port + "'");
-  if (!hc.output.empty() && s.outputIndex(hc.output) < 0) fail("no output '" + hc.output + "'");
   if (!hc.options.is_object() && !hc.options.is_null()) fail("options are not an object");  // `{}` is null
   for (auto it = hc.options.begin(); it != hc.options.end(); ++it) {
     int oi = s.optionIndex(it.key());
@@ -44,7 +42,26 @@ static void checkHardCaseNames(const NodeSpec& s, const HardCase& hc) {
     std::string why = checkOption(o, it.value(), "");
     if (!why.empty()) fail("option '" + it.key() + "' " + why);
   }
+  NodePorts ports = portsOfNode(s, hc.options);  // an expression's inputs follow from its options
+  auto has = [](const std::vector<PortSpec>& list, const std::string& name) {
+    return std::any_of(list.begin(), list.end(), [&](const PortSpec& p) { return p.name == name; });
+  };
+  for (const auto& [port, value] : hc.inputs)
+    if (!has(ports.inputs, port)) fail("no input '" + port + "'");
+  if (!hc.output.empty() && !has(ports.outputs, hc.output)) fail("no output '" + hc.output + "'");
   if (s.parseOptions) s.parseOptions(OptionReader(s, completeOptions(s, hc.options)));
+}
+
+// A node that expands into ops (NodeSpec::expand) has no emit or eval of its own, and the
+// ports its options give are Fixed: resolve converts each input to its port's type before
+// the expansion sees it.
+static void checkExpansion(const NodeSpec& s) {
+  auto fail = [&](const std::string& why) { throw std::logic_error("node spec '" + s.type + "': " + why); };
+  if (s.emit || s.eval) fail("expands into ops and also has emit or eval");
+  if (!s.portsFor) return;
+  NodePorts ports = s.portsFor(*parseOptions(s, completeOptions(s, nlohmann::json::object())));
+  for (const auto& p : ports.inputs)
+    if (p.kind != PortKind::Fixed) fail("input '" + p.name + "' of an expanding node is not Fixed");
 }
 
 // A malformed spec is a programming error in nodes/, caught by the first test that
@@ -54,8 +71,13 @@ static void checkSpec(const NodeSpec& s) {
     throw std::logic_error("node spec '" + s.type + "': " + why);
   };
   if (s.type.empty()) fail("empty type name");
-  if (!s.emit) fail("no emit function");
-  if (!s.eval) fail("no eval function (every node has a double reference)");
+  if (s.portsFor && !s.expand) fail("ports that follow from the options, but no expand function");
+  if (s.expand) {
+    checkExpansion(s);
+  } else {
+    if (!s.emit) fail("no emit function");
+    if (!s.eval) fail("no eval function (every node has a double reference)");
+  }
   if (s.outputs.empty()) fail("no outputs");
   if (s.summary.empty()) fail("no summary");
   std::set<std::string> names;
@@ -68,7 +90,7 @@ static void checkSpec(const NodeSpec& s) {
   bool custom = false;
   for (const auto& p : s.inputs) custom |= p.kind == PortKind::Custom;
   for (const auto& p : s.outputs) custom |= p.kind == PortKind::Custom;
-  if (custom && !s.infer) fail("custom-typed ports need an infer function");
+  if (custom && !s.infer && !s.expand) fail("custom-typed ports need an infer function");
   checkOptionsParse(s);
   for (const auto& hc : s.hardCases) checkHardCaseNames(s, hc);
 }

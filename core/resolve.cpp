@@ -1,6 +1,7 @@
 #include "core/resolve.h"
 
 #include <algorithm>
+#include <deque>
 #include <cmath>
 #include <optional>
 #include <set>
@@ -9,9 +10,12 @@
 
 #include <filesystem>
 
+#include "core/expand.h"
+#include "core/json_string_columns.h"
 #include "core/node_options.h"
 #include "core/port_typing.h"
 #include "core/suggest.h"
+#include "core/text_lines.h"
 #include "core/texture_check.h"
 
 namespace wg {
@@ -39,7 +43,7 @@ class Resolver {
  public:
   Resolver(const Graph& g, const Registry& r, Diagnostics& d) : graph_(g), registry_(r), diags_(d) {}
 
-  std::optional<Program> run() {
+  std::optional<Program> run(NodeOutputValues* nodeOutputs = nullptr) {
     size_t errorsBefore = diags_.errorCount();
     program_.graphName = graph_.name;
     program_.description = graph_.description;
@@ -54,6 +58,7 @@ class Resolver {
     buildOps(order);
     resolveOutputs();
     if (diags_.errorCount() > errorsBefore) return std::nullopt;
+    if (nodeOutputs) listNodeOutputs(*nodeOutputs);
     return std::move(program_);
   }
 
@@ -103,17 +108,7 @@ class Resolver {
                      "unknown node type '" + n.type + "'" + types.didYouMean(n.type), n.id);
         continue;
       }
-      specs_[i] = spec;
-      // The name lists for "did you mean" are made only when there is an error to report.
-      for (const auto& in : n.inputs)
-        if (spec->inputIndex(in.port) < 0) {
-          std::vector<std::string> inputNames;
-          for (const auto& p : spec->inputs) inputNames.push_back(p.name);
-          diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
-                       "node type '" + spec->type + "' has no input '" + in.port + "'" +
-                           didYouMean(in.port, inputNames),
-                       n.id, inputLabel(in.port));
-        }
+      bool optionsValid = true;
       for (const auto& opt : n.options) {
         int oi = spec->optionIndex(opt.name);
         if (oi < 0) {
@@ -128,11 +123,39 @@ class Resolver {
         TextureFile texture;
         std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, program_.directory, &texture);
         if (why.empty()) why = chargeTextureBudget(texture);
-        if (!why.empty())
+        if (!why.empty()) {
           diags_.error(DiagCode::InvalidOption, opt.where, "option '" + opt.name + "' " + why, n.id,
                        optionLabel(opt.name));
+          optionsValid = false;
+        }
       }
+      if (spec->portsFor) {
+        // Its ports follow from its options: without valid options there are none to check
+        // against (the options are reported), and the node is left out like an unknown type.
+        if (!optionsValid) continue;
+        specsWithPorts_.push_back(withPorts(*spec, *parseOptions(*spec, completeOptions(*spec, declaredOptions(n, *spec)))));
+        spec = &specsWithPorts_.back();
+      }
+      specs_[i] = spec;
+      // The name lists for "did you mean" are made only when there is an error to report.
+      for (const auto& in : n.inputs)
+        if (spec->inputIndex(in.port) < 0) {
+          std::vector<std::string> inputNames;
+          for (const auto& p : spec->inputs) inputNames.push_back(p.name);
+          diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
+                       "node type '" + spec->type + "' has no input '" + in.port + "'" +
+                           didYouMean(in.port, inputNames),
+                       n.id, inputLabel(in.port));
+        }
     }
+  }
+
+  // The options a node writes that its type declares (the others are reported).
+  static nlohmann::json declaredOptions(const Node& node, const NodeSpec& spec) {
+    nlohmann::json written = writtenOptions(node);
+    for (const auto& o : node.options)
+      if (spec.optionIndex(o.name) < 0) written.erase(o.name);
+    return written;
   }
 
   // All of a graph's PNG textures together stay within kMaxGraphTextureTexels (each file
@@ -302,6 +325,11 @@ class Resolver {
           if (it == nodeIndex_.end()) return std::nullopt;
           node = it->second;
         }
+        if (const auto& values = expandedOutputs_[static_cast<size_t>(node)]; !values.empty()) {
+          int port = specs_[static_cast<size_t>(node)]->outputIndex(s.port);
+          if (port < 0) return std::nullopt;
+          return values[static_cast<size_t>(port)];
+        }
         int opIndex = opOfNode_[static_cast<size_t>(node)];
         if (opIndex < 0) return std::nullopt;
         const Op& op = program_.ops[static_cast<size_t>(opIndex)];
@@ -327,6 +355,7 @@ class Resolver {
 
   void buildOps(const std::vector<int>& order) {
     opOfNode_.assign(graph_.nodes.size(), -1);
+    expandedOutputs_.assign(graph_.nodes.size(), {});
     program_.ops.reserve(order.size());
     for (int ni : order) {
       const Node& node = graph_.nodes[static_cast<size_t>(ni)];
@@ -336,10 +365,7 @@ class Resolver {
       op.spec = spec;
       op.nodeId = node.id;
       op.where = node.where;
-      nlohmann::json written = nlohmann::json::object();
-      for (const auto& o : node.options)
-        if (spec->optionIndex(o.name) >= 0) written[o.name] = o.value;
-      op.options = completeOptions(*spec, written);
+      op.options = completeOptions(*spec, declaredOptions(node, *spec));
       op.parsedOptions = parseOptions(*spec, op.options);  // valid: lookUpSpecs checked each value
 
       size_t nin = spec->inputs.size();
@@ -382,10 +408,113 @@ class Resolver {
         }
       }
       if (!ok) continue;
+      if (spec->expand) {
+        expandNode(ni, op, sourceTypes, given);
+        continue;
+      }
       if (!typeOp(op, node, sourceTypes, given)) continue;
       opOfNode_[static_cast<size_t>(ni)] = static_cast<int>(program_.ops.size());
       program_.ops.push_back(std::move(op));
     }
+  }
+
+  void listNodeOutputs(NodeOutputValues& out) const {
+    for (size_t i = 0; i < graph_.nodes.size(); ++i) {
+      const NodeSpec* spec = specs_[i];
+      if (!spec) continue;
+      std::vector<NodeOutputValue> values;
+      if (!expandedOutputs_[i].empty()) {
+        for (size_t p = 0; p < spec->outputs.size(); ++p)
+          values.push_back({spec->outputs[p].name, expandedOutputs_[i][p], program_.typeOf(expandedOutputs_[i][p])});
+      } else if (int op = opOfNode_[i]; op >= 0) {
+        const Op& o = program_.ops[static_cast<size_t>(op)];
+        for (size_t p = 0; p < spec->outputs.size(); ++p)
+          values.push_back({spec->outputs[p].name, ValueRef::op(op, static_cast<int>(p)), o.outputTypes[p]});
+      } else {
+        continue;
+      }
+      out[graph_.nodes[i].id] = std::move(values);
+    }
+  }
+
+  // A node that expands into ops (an expression): its inputs, checked against the ports
+  // its options declare and converted to their types, go to the spec's expand function;
+  // the values it names become the node's outputs.
+  void expandNode(int ni, const Op& op, const std::vector<Type>& sourceTypes, const std::vector<const NodeInput*>& given) {
+    const Node& node = graph_.nodes[static_cast<size_t>(ni)];
+    const NodeSpec& spec = *op.spec;
+    std::vector<ValueRef> inputs(spec.inputs.size());
+    for (size_t pi = 0; pi < spec.inputs.size(); ++pi) {
+      Type want = spec.inputs[pi].type;  // expanding nodes' ports are Fixed (registry check)
+      if (!implicitlyConvertible(sourceTypes[pi], want)) {
+        mismatch(node, given[pi], spec.inputs[pi].name,
+                 "input '" + spec.inputs[pi].name + "' expects " + std::string(typeName(want)) + ", but " +
+                     sourceName(given[pi]) + " is " + std::string(typeName(sourceTypes[pi])));
+        return;
+      }
+      inputs[pi] = splat(op.inputs[pi], want, node);
+    }
+    ExpandContext ctx{spec, *op.parsedOptions, registry_, node.id, node.where, std::move(inputs), program_,
+                      [&](std::string_view option, size_t offset) { return optionWhere(node, option, offset); },
+                      {}, DiagCode::InvalidOption, {}, {}, {}};
+    size_t opsBefore = program_.ops.size();
+    spec.expand(ctx);
+    if (!ctx.error.empty()) {
+      program_.ops.resize(opsBefore);
+      diags_.error(ctx.errorCode, ctx.errorWhere.line > 0 ? ctx.errorWhere : node.where, ctx.error, node.id, ctx.errorPort);
+      return;
+    }
+    if (ctx.outputs.size() != spec.outputs.size())
+      throw std::logic_error("node type '" + spec.type + "' expanded into " + std::to_string(ctx.outputs.size()) +
+                             " outputs for its " + std::to_string(spec.outputs.size()) + " output ports");
+    expandedOutputs_[static_cast<size_t>(ni)] = std::move(ctx.outputs);
+  }
+
+  // `v` as type `want`: a float splats to a vector (as a port does), a constant at once,
+  // anything else through a `combine` op named after the node.
+  ValueRef splat(const ValueRef& v, Type want, const Node& node) {
+    Type have = program_.typeOf(v);
+    if (have == want) return v;
+    if (v.kind == ValueRef::Kind::Const) return ValueRef::constant_(v.constant.convertedTo(want));
+    const NodeSpec* combine = registry_.find("combine");
+    if (!combine) throw std::logic_error("the registry has no 'combine' node to splat an input with");
+    Op op;
+    op.spec = combine;
+    op.nodeId = node.id;
+    op.where = node.where;
+    op.options = completeOptions(*combine, {{"type", std::string(typeName(want))}});
+    op.parsedOptions = parseOptions(*combine, op.options);
+    int n = componentCount(want);
+    op.inputs.assign(combine->inputs.size(), ValueRef::constant_(Value::scalar(0)));
+    std::vector<Type> types(combine->inputs.size(), Type::Float);
+    for (int k = 0; k < n; ++k) op.inputs[static_cast<size_t>(k)] = v;
+    PortTyping t = typePorts(*combine, *op.parsedOptions, types, [](int) { return std::string(); });
+    if (!t.error.empty()) throw std::logic_error("splatting an input: " + t.error);
+    op.inputTypes = std::move(t.inputTypes);
+    op.outputTypes = std::move(t.outputTypes);
+    program_.ops.push_back(std::move(op));
+    return ValueRef::op(static_cast<int>(program_.ops.size()) - 1, 0);
+  }
+
+  // Where byte `offset` of the string of option `option` of `node` is in the file: the
+  // column counts the escapes written before it. The option's own position when the
+  // file's text is not at hand (a graph built in memory), the node's when it is not written.
+  SourceRef optionWhere(const Node& node, std::string_view option, size_t offset) {
+    for (const auto& o : node.options) {
+      if (o.name != option) continue;
+      SourceRef at = o.where;
+      if (at.line <= 0) return at;
+      if (!sourceLines_) {
+        const std::string* text = diags_.source(graph_.file);
+        sourceLines_ = text ? splitLines(*text) : std::vector<std::string_view>{};
+      }
+      if (static_cast<size_t>(at.line) <= sourceLines_->size())
+        at.col = jsonStringByteColumn((*sourceLines_)[static_cast<size_t>(at.line - 1)], at.col, offset);
+      else
+        at.col += 1 + static_cast<int>(offset);
+      return at;
+    }
+    return node.where;
   }
 
   SourceRef portWhere(const Node& node, const NodeInput* given) const {
@@ -457,6 +586,10 @@ class Resolver {
   std::set<std::string> texturesCounted_;                  // real paths of PNG textures
   long long textureTexels_ = 0;
   std::vector<int> opOfNode_;  // by node index: its op, or -1
+  // By node index, for a node that expanded into ops: the value of each output port.
+  std::vector<std::vector<ValueRef>> expandedOutputs_;
+  std::deque<NodeSpec> specsWithPorts_;  // specs_ of nodes whose ports follow from their options
+  std::optional<std::vector<std::string_view>> sourceLines_;  // the graph file's, split on first use
   // Node i's inputs[k] reads node inputNode_[inputBase_[i] + k] (-1: not a node output).
   std::vector<size_t> inputBase_;
   std::vector<int> inputNode_;
@@ -466,6 +599,11 @@ class Resolver {
 
 std::optional<Program> resolveGraph(const Graph& graph, const Registry& registry, Diagnostics& diags) {
   return Resolver(graph, registry, diags).run();
+}
+
+std::optional<Program> resolveGraph(const Graph& graph, const Registry& registry, Diagnostics& diags,
+                                    NodeOutputValues& nodeOutputs) {
+  return Resolver(graph, registry, diags).run(&nodeOutputs);
 }
 
 }  // namespace wg

@@ -68,6 +68,7 @@ std::vector<nlohmann::json> optionSets(const NodeSpec& spec) {
 }  // namespace
 
 void checkGlslCalls(const NodeSpec& spec, const GlslLibrary& library) {
+  if (spec.expand) return;  // no GLSL of its own: the nodes it expands into are checked
   bool generic = false;
   for (const auto& p : spec.inputs) generic |= p.kind != PortKind::Fixed;
   std::vector<Type> candidates = generic ? std::vector<Type>{Type::Float, Type::Vec2, Type::Vec3, Type::Vec4}

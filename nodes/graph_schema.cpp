@@ -3,6 +3,7 @@
 #include <map>
 
 #include "core/graph.h"
+#include "core/load_limits.h"
 #include "core/node_spec.h"
 #include "core/texture_check.h"
 #include "core/types.h"
@@ -15,7 +16,6 @@ using OJ = nlohmann::ordered_json;
 constexpr const char* kIdentifierPattern = "^[A-Za-z_][A-Za-z0-9_]*$";
 constexpr const char* kNodeOutputPattern = "^[A-Za-z_][A-Za-z0-9_]*\\.[A-Za-z_][A-Za-z0-9_]*$";
 constexpr const char* kParameterPattern = "^\\$[A-Za-z_][A-Za-z0-9_]*$";
-constexpr double kFloat32Max = 3.4028234663852886e38;
 
 OJ defRef(const std::string& name) { return OJ{{"$ref", "#/definitions/" + name}}; }
 // A description beside a $ref (draft-07 ignores siblings of $ref when validating, editors show them).
@@ -68,6 +68,11 @@ OJ portSchema(const PortSpec& p) {
 // Json options check themselves in C++ (OptionSpec::validate); the schema knows the shape
 // of the ones the registry has today. An option not listed here accepts any JSON value.
 OJ knownJsonOptionSchema(const std::string& type, const std::string& option) {
+  if (type == "expression" && option == "inputs")
+    return OJ{{"type", "object"},
+              {"maxProperties", 32},
+              {"propertyNames", defRef("identifier")},
+              {"additionalProperties", {{"enum", {"float", "vec2", "vec3", "vec4"}}}}};
   if (type == "swizzle" && option == "mask")
     return OJ{{"type", "string"}, {"pattern", "^[xyzwrgba]{1,4}$"}};
   if (type == "gerstner_waves" && option == "waves") {
@@ -115,6 +120,10 @@ OJ optionSchema(const NodeSpec& spec, const OptionSpec& o) {
                                  {"pattern", "^(?![/\\\\])(?!(.*/)?\\.\\.(/|$)).*\\.png$"}}});
       break;
     }
+    case OptionSpec::Kind::Text:
+      s["type"] = "string";
+      s["maxLength"] = kMaxStringBytes;
+      break;
     case OptionSpec::Kind::Json:
     {
       OJ known = knownJsonOptionSchema(spec.type, o.name);
@@ -136,6 +145,10 @@ OJ nodeTypeSchema(const NodeSpec& spec) {
   }
   inputs["properties"] = inputProps;
   if (!required.empty()) inputs["required"] = required;
+  if (spec.portsFor) {  // ports that the options declare (an expression's inputs): any identifier
+    inputs["propertyNames"] = defRef("identifier");
+    inputs["additionalProperties"] = described("an input the node's options declare", defRef("source"));
+  }
 
   OJ options{{"type", "object"}, {"additionalProperties", false}};
   OJ optionProps = OJ::object();

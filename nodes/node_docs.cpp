@@ -38,6 +38,7 @@ std::string optionKind(const OptionSpec& o) {
     }
     case OptionSpec::Kind::Bool: return "bool";
     case OptionSpec::Kind::Json: return "JSON";
+    case OptionSpec::Kind::Text: return "text";
     case OptionSpec::Kind::Texture: return "texture: `builtin:<name>` or a .png path relative to the graph";
   }
   return "?";
