@@ -8,6 +8,7 @@
 #include "codegen/compile.h"
 #include "codegen/cpu_backend.h"
 #include "core/graph_io.h"
+#include "core/node_options.h"
 #include "nodes/registry.h"
 #include "nodes/texture_source.h"
 #include "test_support.h"
@@ -28,7 +29,7 @@ nlohmann::json literalFor(const PortSpec& p) {
 std::string singleNodeGraph(const NodeSpec& spec, const std::string& output, Type outputType) {
   nlohmann::json node{{"id", "subject"}, {"type", spec.type}};
   nlohmann::json inputs = nlohmann::json::object();
-  for (const auto& p : spec.inputs)
+  for (const auto& p : portsOfNode(spec, nlohmann::json::object()).inputs)  // an expression's: its default options
     if (p.required()) inputs[p.name] = literalFor(p);
   if (!inputs.empty()) node["inputs"] = inputs;
   nlohmann::json nodes = nlohmann::json::array({node});
