@@ -25,7 +25,7 @@ ROOT=$PWD
 SECONDS_EACH=${1:-60}
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen texture edit_ops)
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen texture edit_ops formula)
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
@@ -41,6 +41,7 @@ cmake --build "$BUILD_DIR" -j "$JOBS" --target "${build_targets[@]}"
 FUZZ_DIR=$ROOT/$BUILD_DIR/fuzz
 mkdir -p "$FUZZ_DIR"
 "$BUILD_DIR/bin/wg_fuzz_dict" > "$FUZZ_DIR/graph.dict"
+"$BUILD_DIR/bin/wg_fuzz_dict" --formula > "$FUZZ_DIR/formula.dict"
 
 # Leaks are bugs here too (the fuzzers load no GL driver). UB aborts (the build makes it fatal).
 export ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=1}
@@ -65,6 +66,7 @@ fuzz_one() {
     graphgen) limits=(-max_len=2048 -len_control=0 -timeout=30 -rss_limit_mb=4096) ;;
     texture) limits=(-max_len=4096 -timeout=10 -rss_limit_mb=4096) ;;
     edit_ops) limits=(-max_len=1024 -timeout=10 -rss_limit_mb=4096) ;;
+    formula) limits=(-max_len=4200 -timeout=30 -rss_limit_mb=4096) ;;
   esac
   # The texture and edit-sequence targets check cheap properties over a small input space:
   # half the time.
@@ -77,8 +79,9 @@ fuzz_one() {
   # Run inside the corpus folder: relative texture paths in inputs resolve there.
   local seeds=("$ROOT/graphs" "$ROOT/tests/bad" "$ROOT/tests/fuzz/regressions")
   local dict=(-dict="$FUZZ_DIR/graph.dict")
-  case $t in graphgen|texture|edit_ops) seeds=() && dict=() ;; esac  # their inputs are choices, not JSON
+  case $t in graphgen|texture|edit_ops|formula) seeds=() && dict=() ;; esac  # their inputs are not graph files
   [ "$t" = texture ] && dict=(-dict="$ROOT/tests/fuzz/texture.dict")
+  [ "$t" = formula ] && dict=(-dict="$FUZZ_DIR/formula.dict")
   [ -d "$ROOT/tests/fuzz/corpus/$t" ] && seeds+=("$ROOT/tests/fuzz/corpus/$t")
   local rc
   (cd "$corpus" && "$ROOT/$BUILD_DIR/bin/wg_fuzz_$t" "$corpus" ${seeds[@]+"${seeds[@]}"} ${dict[@]+"${dict[@]}"} -max_total_time="$seconds" \

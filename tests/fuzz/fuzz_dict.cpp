@@ -2,13 +2,33 @@
 // every node type, port, option and option choice in the registry, so the fuzzers reach
 // the resolver and the emitters instead of spending their time on unknown names.
 // scripts/fuzz.sh writes it to <build>/fuzz/graph.dict on every run (always current).
+// With --formula: the words of the expression language instead (the formula target's
+// dictionary): its functions, constructors, swizzles and operators.
 #include <cstdio>
 #include <set>
 #include <string>
 
+#include "core/expression_types.h"
 #include "nodes/registry.h"
 
-int main() {
+namespace {
+
+std::set<std::string> formulaWords() {
+  std::set<std::string> words = {"(", ")", ",", ".", "+", "-", "*", "/", "<", "<=", ">", ">=", "==", "!=", "?", ":",
+                                 "vec2(", "vec3(", "vec4(", ".xyz", ".rgba", ".stp", "1.0", "0.5", "1e30", "1e-7",
+                                 "a", "b", "c", "d"};
+  for (const auto& f : wg::expr::formulaFunctions()) words.insert(std::string(f.name) + "(");
+  return words;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "--formula") {
+    int i = 0;
+    for (const auto& w : formulaWords()) std::printf("f%d=\"%s\"\n", i++, w.c_str());
+    return 0;
+  }
   std::set<std::string> words = {
       "{", "}", "[", "]", ",", ":", "\"", "true", "false", "null", "-", ".", "e", "1e38", "3.5e38",
       "\"version\"", "\"name\"", "\"description\"", "\"parameters\"", "\"nodes\"", "\"outputs\"",

@@ -16,6 +16,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/expression_types.h"
+#include "core/node_options.h"
 #include "fuzz_properties.h"
 
 namespace {
@@ -53,6 +55,46 @@ int widthOf(Type t) {
   }
 }
 
+// A formula for an `expression` node over its inputs a and b: every construct of the
+// language (literals, names, operators, calls of the vocabulary, constructors, swizzles,
+// ?:), nested a few levels, so most are well-formed and many are well-typed.
+std::string formula(FuzzedDataProvider& fdp, int depth) {
+  static const char* kNames[] = {"a", "b", "1.0", "0.0", "-2.5", "1e30", "3.0e-7"};
+  if (depth <= 0 || fdp.remaining_bytes() == 0)
+    return kNames[fdp.ConsumeIntegralInRange<size_t>(0, std::size(kNames) - 1)];
+  switch (fdp.ConsumeIntegralInRange(0, 6)) {
+    case 0: return "-" + formula(fdp, depth - 1);
+    case 1: {
+      static const char* kOps[] = {" + ", " - ", " * ", " / "};
+      return "(" + formula(fdp, depth - 1) + kOps[fdp.ConsumeIntegralInRange(0, 3)] + formula(fdp, depth - 1) + ")";
+    }
+    case 2: {
+      const auto& fns = wg::expr::formulaFunctions();
+      const auto& f = fns[fdp.ConsumeIntegralInRange<size_t>(0, fns.size() - 1)];
+      std::string call = std::string(f.name) + "(";
+      for (int i = 0; i < f.arity; ++i) call += (i ? ", " : "") + formula(fdp, depth - 1);
+      return call + ")";
+    }
+    case 3: {
+      int n = fdp.ConsumeIntegralInRange(2, 4);
+      std::string call = "vec" + std::to_string(n) + "(";
+      int args = fdp.ConsumeIntegralInRange(1, n);
+      for (int i = 0; i < args; ++i) call += (i ? ", " : "") + formula(fdp, depth - 1);
+      return call + ")";
+    }
+    case 4: {
+      static const char* kMasks[] = {"x", "xy", "zyx", "rgba", "s", "wwww"};
+      return formula(fdp, depth - 1) + "." + kMasks[fdp.ConsumeIntegralInRange<size_t>(0, std::size(kMasks) - 1)];
+    }
+    case 5: {
+      static const char* kCmp[] = {" < ", " <= ", " > ", " >= ", " == ", " != "};
+      return "(" + formula(fdp, depth - 1) + kCmp[fdp.ConsumeIntegralInRange(0, 5)] + formula(fdp, depth - 1) + " ? " +
+             formula(fdp, depth - 1) + " : " + formula(fdp, depth - 1) + ")";
+    }
+    default: return kNames[fdp.ConsumeIntegralInRange<size_t>(0, 1)];
+  }
+}
+
 json optionValue(FuzzedDataProvider& fdp, const OptionSpec& o) {
   if (fdp.ConsumeIntegralInRange(0, 3) == 0) return o.defaultValue;
   switch (o.kind) {
@@ -76,7 +118,13 @@ json optionValue(FuzzedDataProvider& fdp, const OptionSpec& o) {
       static const char* kTex[] = {"builtin:foam", "builtin:dudv", "builtin:height", "builtin:water_normal"};
       return kTex[fdp.ConsumeIntegralInRange<size_t>(0, std::size(kTex) - 1)];
     }
+    case OptionSpec::Kind::Text:
+      return formula(fdp, fdp.ConsumeIntegralInRange(0, 4));
     case OptionSpec::Kind::Json:
+      if (o.name == "inputs") {  // an expression's declared inputs: a and b, of any type
+        static const char* kTypes[] = {"float", "vec2", "vec3", "vec4"};
+        return json{{"a", kTypes[fdp.ConsumeIntegralInRange(0, 3)]}, {"b", kTypes[fdp.ConsumeIntegralInRange(0, 3)]}};
+      }
       if (o.name == "mask") {
         std::string m;
         int n = fdp.ConsumeIntegralInRange(1, 4);
@@ -119,7 +167,8 @@ std::string generate(FuzzedDataProvider& fdp) {
     json node = {{"id", id}, {"type", spec->type}};
     for (const auto& o : spec->options)
       if (fdp.ConsumeBool()) node["options"][o.name] = optionValue(fdp, o);
-    for (const auto& port : spec->inputs) {
+    // An expression's ports are those its options declare.
+    for (const auto& port : wg::portsOfNode(*spec, node.contains("options") ? node["options"] : json::object()).inputs) {
       int how = fdp.ConsumeIntegralInRange(0, 9);
       if (!port.required() && how < 3) continue;  // default
       // An earlier output that fits: same fixed type, or any for Gen/Custom ports.
@@ -135,7 +184,7 @@ std::string generate(FuzzedDataProvider& fdp) {
       else
         node["inputs"][port.name] = literalOf(fdp, width);
     }
-    for (const auto& o : spec->outputs) outs.push_back({id + "." + o.name, o.kind, o.type});
+    for (const auto& o : spec->outputs) outs.push_back({id + "." + o.name, o.kind, o.type});  // expression: out, Custom
     g["nodes"].push_back(node);
   }
   // Outputs: color and alpha (and sometimes the vertex slots) from the last nodes.

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "fuzz/edit_sequence.h"
+#include "fuzz/formula_property.h"
 #include "fuzz/fuzz_properties.h"
 #include "fuzz/texture_property.h"
 #include "test_support.h"
@@ -73,6 +74,26 @@ TEST(FuzzCorpus, EditSequencePropertyHoldsForEveryKeptInput) {
   auto inputs = corpus("edit_ops");
   EXPECT_FALSE(inputs.empty());
   for (const auto& path : inputs) EXPECT_EQ(fuzz::editSequenceProperty(test::readFile(test::sourcePath(path))), "") << path;
+}
+
+TEST(FuzzCorpus, FormulaPropertyHoldsForEveryKeptInput) {
+  auto inputs = corpus("formula");
+  EXPECT_FALSE(inputs.empty());
+  for (const auto& path : inputs) EXPECT_EQ(fuzz::formulaProperty(test::readFile(test::sourcePath(path))), "") << path;
+}
+
+// The property itself reaches both of its sides: well-formed formulas compile, and faulty
+// ones (escaped characters before the fault included) are placed on the formula's string.
+TEST(FuzzCorpus, FormulaPropertySeesBothOutcomes) {
+  for (const char* formula : {"mix(c, vec3(1.0), a)", "d.x", "\"\\\t\u00e9 + zz", "a +", "c + b", "((a)"})
+    EXPECT_EQ(fuzz::formulaProperty(formula), "") << formula;
+  Diagnostics diags;
+  auto graph = parseGraph(fuzz::formulaGraph("\ta +\t nosuch", Type::Invalid), "fuzz.json", diags);
+  ASSERT_TRUE(graph);
+  EXPECT_FALSE(buildProgram(*graph, defaultRegistry(), diags));
+  ASSERT_TRUE(diags.hasErrors());
+  // `nosuch` at decoded offset 6, after \ta +\t written in 8 bytes; the string starts at column 17.
+  EXPECT_EQ(diags.sorted().front().where.col, 17 + 8);
 }
 
 }  // namespace
