@@ -7,6 +7,10 @@
 #include <cmath>
 #include <vector>
 
+#include "core/expression_parser.h"
+#include "core/expression_types.h"
+#include "core/load_limits.h"
+#include "core/node_options.h"
 #include "core/number_format.h"
 
 namespace wg::editor {
@@ -21,6 +25,74 @@ bool editFloats(const char* label, std::vector<float>& v, float lo, float hi, bo
   int n = static_cast<int>(v.size());
   if (bounded) return ImGui::SliderScalarN(label, ImGuiDataType_Float, v.data(), n, &lo, &hi, "%.3f");
   return ImGui::DragScalarN(label, ImGuiDataType_Float, v.data(), n, 0.01f, nullptr, nullptr, "%.3f");
+}
+
+// The first fault of an expression's formula over the inputs its options declare, found
+// by the parser and type rules that compile it: shown under the field while the user
+// types, before the graph is compiled. None while the declared inputs are not valid
+// (their own field says why).
+std::optional<expr::FormulaError> formulaFault(const std::string& formula, const nlohmann::json& declared) {
+  expr::FormulaInputs inputs;
+  if (!declared.is_object()) return std::nullopt;
+  for (auto it = declared.begin(); it != declared.end(); ++it) {
+    auto type = it.value().is_string() ? parseType(it.value().get<std::string>()) : std::nullopt;
+    if (!type || !isFloatScalarOrVector(*type)) return std::nullopt;
+    inputs.emplace_back(it.key(), *type);
+  }
+  auto parsed = expr::parseFormula(formula);
+  if (auto* e = std::get_if<expr::FormulaError>(&parsed)) return *e;
+  auto typed = expr::typeFormula(std::get<expr::Ast>(parsed), inputs);
+  if (auto* e = std::get_if<expr::FormulaError>(&typed)) return *e;
+  return std::nullopt;
+}
+
+// The fault in red, then the formula's line it is on with a caret under its character
+// (ImGui's default font is monospaced).
+void drawFormulaFault(const std::string& formula, const expr::FormulaError& fault) {
+  ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
+  ImGui::TextWrapped("%s", fault.message.c_str());
+  size_t offset = std::min(fault.span.offset, formula.size());
+  size_t lineStart = formula.rfind('\n', offset == 0 ? 0 : offset - 1);
+  lineStart = lineStart == std::string::npos || offset == 0 ? 0 : lineStart + 1;
+  size_t lineEnd = formula.find('\n', offset);
+  std::string line = formula.substr(lineStart, lineEnd == std::string::npos ? std::string::npos : lineEnd - lineStart);
+  ImGui::TextUnformatted(line.c_str());
+  ImGui::TextUnformatted((std::string(offset - lineStart, ' ') + "^").c_str());
+  ImGui::PopStyleColor();
+}
+
+// A text field over a string option; the option is set as the user types (one undo step
+// per edit, sealed when the field is left).
+void editTextOption(GraphEditor& editor, const std::string& id, const OptionSpec& o, const std::string& label,
+                    const std::string& text) {
+  std::vector<char> buffer(kMaxStringBytes + 1, '\0');
+  std::copy_n(text.begin(), std::min(text.size(), kMaxStringBytes), buffer.begin());
+  if (ImGui::InputTextMultiline(label.c_str(), buffer.data(), buffer.size(), ImVec2(-1, ImGui::GetTextLineHeight() * 3.5f)))
+    editor.setOption(id, o.name, std::string(buffer.data()));
+  sealAfterEdit(editor);
+}
+
+// A JSON option as text: set when the text is valid JSON and the field is left (Enter);
+// otherwise the parse error shows under it and the option keeps its value.
+void editJsonOption(GraphEditor& editor, const std::string& id, const OptionSpec& o, const std::string& label,
+                    const nlohmann::json& value) {
+  ImGui::PushID("json");
+  ImGuiStorage* storage = ImGui::GetStateStorage();
+  ImGuiID errorKey = ImGui::GetID("error");
+  std::string text = value.dump();
+  std::vector<char> buffer(kMaxStringBytes + 1, '\0');
+  std::copy_n(text.begin(), std::min(text.size(), kMaxStringBytes), buffer.begin());
+  if (ImGui::InputText(label.c_str(), buffer.data(), buffer.size(), ImGuiInputTextFlags_EnterReturnsTrue)) {
+    nlohmann::json parsed = nlohmann::json::parse(buffer.data(), nullptr, false);
+    storage->SetBool(errorKey, parsed.is_discarded());
+    if (!parsed.is_discarded()) {
+      std::string why = editor.setOption(id, o.name, parsed);
+      if (!why.empty()) storage->SetBool(errorKey, true);
+      editor.seal();
+    }
+  }
+  if (storage->GetBool(errorKey)) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "not set: the text is not valid JSON for this option");
+  ImGui::PopID();
 }
 
 }  // namespace
@@ -74,7 +146,8 @@ void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
   if (!spec) return;
   ImGui::Separator();
   std::string id = n->id;  // `n` may move when an edit reallocates the node list
-  for (const PortSpec& port : spec->inputs) {
+  const NodePorts ports = portsOfNode(*spec, writtenOptions(*n));  // an expression's follow from its options
+  for (const PortSpec& port : ports.inputs) {
     ImGui::PushID(port.name.c_str());
     const InputSource* src = nullptr;
     for (const auto& in : editor.graph().findNode(id)->inputs)
@@ -142,9 +215,23 @@ void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
         sealAfterEdit(editor);
         break;
       }
-      case OptionSpec::Kind::Texture:
+      case OptionSpec::Kind::Text: {
+        std::string text = value.is_string() ? value.get<std::string>() : "";
+        editTextOption(editor, id, o, label, text);
+        if (spec->type == "expression" && o.name == "formula") {
+          const Node* edited = editor.graph().findNode(id);
+          nlohmann::json written = edited ? writtenOptions(*edited) : nlohmann::json::object();
+          nlohmann::json declared = written.contains("inputs") ? written["inputs"] : spec->options[static_cast<size_t>(spec->optionIndex("inputs"))].defaultValue;
+          std::string now = written.contains("formula") && written["formula"].is_string() ? written["formula"].get<std::string>() : text;
+          if (auto fault = formulaFault(now, declared)) drawFormulaFault(now, *fault);
+        }
+        break;
+      }
       case OptionSpec::Kind::Json:
-        // Lists and paths: edited in the file (hot reload shows them).
+        editJsonOption(editor, id, o, label, value);
+        break;
+      case OptionSpec::Kind::Texture:
+        // Paths: edited in the file (hot reload shows them).
         ImGui::TextWrapped("%s = %s", label.c_str(), value.dump().c_str());
         break;
     }

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/node_options.h"
 #include "core/number_format.h"
 
 namespace wg::editor {
@@ -138,8 +139,9 @@ NodeCanvas::Layout NodeCanvas::layout(const Graph& g, const Registry& registry, 
     b.title = n.id + " : " + n.type;
     std::vector<std::string> ins, outs;
     if (const NodeSpec* spec = registry.find(n.type)) {
-      for (const auto& port : spec->inputs) ins.push_back(port.name);
-      for (const auto& port : spec->outputs) outs.push_back(port.name);
+      NodePorts ports = portsOfNode(*spec, writtenOptions(n));  // an expression's follow from its options
+      for (const auto& port : ports.inputs) ins.push_back(port.name);
+      for (const auto& port : ports.outputs) outs.push_back(port.name);
     } else {
       for (const auto& in : n.inputs) ins.push_back(in.port);
     }

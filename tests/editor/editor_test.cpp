@@ -8,7 +8,9 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "codegen/compile.h"
 #include "core/graph_io.h"
+#include "nodes/registry.h"
 #include "runtime/image.h"
 #include "test_support.h"
 
@@ -28,11 +30,11 @@ struct EditorRun {
 // write into the user's cache). The X authority file lives in the test's folder: with its
 // own temporary folder, xvfb-run sometimes fails to remove it and exits 5 instead of
 // passing on the editor's status.
-EditorRun runEditor(const std::string& dir, const std::string& args) {
+EditorRun runEditor(const std::string& dir, const std::string& args, const std::string& window = "640x360") {
   EditorRun r;
   std::string cmd = "MESA_SHADER_CACHE_DISABLE=true xvfb-run -a -f " + test::shellQuote(dir + "/Xauthority") +
-                    " -s '-screen 0 800x600x24' " + test::shellQuote(editorBinary()) +
-                    " --size 640x360 --preview-size 320x180 " + args;
+                    " -s '-screen 0 1280x1024x24' " + test::shellQuote(editorBinary()) +
+                    " --size " + window + " --preview-size 320x180 " + args;
   r.status = test::runCommandSplit(cmd, &r.out, &r.err);
   return r;
 }
@@ -203,6 +205,63 @@ TEST(Editor, ARefusedScriptEditFailsWithItsReason) {
   EXPECT_NE(r.err.find("step 1 (connect)"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("cycle"), std::string::npos) << r.err;
   EXPECT_EQ(test::readFile(ws.graph), original) << "the script stops at the failed step";
+}
+
+// Pixels of the fault colour (ImGui text in (1, 0.45, 0.4), anti-aliased) in the
+// inspector's column above the errors panel (the right 38 % of the window, top 65 %).
+size_t faultColouredPixels(const rt::Image& img) {
+  size_t n = 0;
+  for (int y = 0; y < img.height * 65 / 100; ++y)
+    for (int x = img.width * 62 / 100; x < img.width; ++x) {
+      size_t i = (static_cast<size_t>(y) * static_cast<size_t>(img.width) + static_cast<size_t>(x)) * 4;
+      int r = img.rgba8[i], g = img.rgba8[i + 1], b = img.rgba8[i + 2];
+      n += r > 200 && g > 90 && g < 140 && b > 80 && b < 125;
+    }
+  return n;
+}
+
+TEST(Editor, AnExpressionIsDeclaredWiredAndEditedWithItsFaultShownInline) {
+  Workspace ws;
+  auto p = [&](const char* name) { return ws.path(name); };
+  EditorRun r = runEditor(ws.dir, ws.script(R"JSON([
+    {"op": "add_node", "type": "expression", "id": "formula", "x": 700, "y": 120},
+    {"op": "set_option", "node": "formula", "name": "inputs", "value": {"c": "vec3", "k": "float"}},
+    {"op": "connect", "from": "shore.out", "to": "formula.k"},
+    {"op": "set_input", "node": "formula", "port": "c", "value": [0.1, 0.5, 0.6]},
+    {"op": "connect", "from": "formula.out", "to_output": "fragment.color"},
+    {"op": "select", "node": "formula"},
+    {"op": "set_option", "node": "formula", "name": "formula", "value": "mixx(c, vec3(1.0), k)"},
+    {"op": "frames", "count": 2},
+    {"op": "screenshot", "path": ")JSON" + p("fault.png") + R"JSON("},
+    {"op": "set_option", "node": "formula", "name": "formula", "value": "mix(c, vec3(1.0), clamp(k, 0.0, 1.0))"},
+    {"op": "frames", "count": 2},
+    {"op": "screenshot", "path": ")JSON" + p("fixed.png") + R"JSON("},
+    {"op": "save"}
+  ])JSON") + " " + test::shellQuote(ws.graph), "1200x1000");  // tall enough to show the selected node's options
+  ASSERT_EQ(r.status, 0) << r.err;
+  // The faulty formula's message and caret are drawn in the inspector; the fixed one's are not.
+  size_t withFault = faultColouredPixels(rt::readPng(p("fault.png")));
+  size_t fixed = faultColouredPixels(rt::readPng(p("fixed.png")));
+  EXPECT_GT(withFault, 30u);
+  EXPECT_LT(fixed, withFault / 4) << "fault " << withFault << ", fixed " << fixed;
+  Diagnostics d;
+  auto g = loadGraphFile(ws.graph, d);
+  ASSERT_TRUE(g);
+  const Node* formula = g->findNode("formula");
+  ASSERT_TRUE(formula);
+  EXPECT_EQ(writtenOptions(*formula)["formula"], "mix(c, vec3(1.0), clamp(k, 0.0, 1.0))");
+  auto compiled = compileGraph(*g, defaultRegistry(), CompileOptions{}, d);
+  EXPECT_TRUE(compiled) << (d.all().empty() ? "" : formatText(d.all().front()));
+}
+
+TEST(Editor, AnInputTheExpressionDoesNotDeclareIsRefused) {
+  Workspace ws;
+  EditorRun r = runEditor(ws.dir, ws.script(R"([
+    {"op": "add_node", "type": "expression", "id": "formula"},
+    {"op": "connect", "from": "shore.out", "to": "formula.k"}
+  ])") + " " + test::shellQuote(ws.graph));
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("has no input 'k'"), std::string::npos) << r.err;
 }
 
 }  // namespace
