@@ -236,6 +236,20 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
           env.cameraPosition = Value::vector({eye.x, eye.y, eye.z});
           env.uv = Value::vector({(p.x + rt::kWaterHalfSize) / (2 * rt::kWaterHalfSize),
                                   (p.z + rt::kWaterHalfSize) / (2 * rt::kWaterHalfSize)});
+          // The uv gradient a mipmapped look-up takes its level from: llvmpipe derives one
+          // per 2x2 quad (window rows run bottom-up), from the quad's lower-left pixel
+          // and its neighbours across and above.
+          {
+            int gx0 = px & ~1, gy0 = (height - 1 - py) & ~1;
+            glm::dvec3 p00, p10, p01;
+            double ignored = 0;
+            if (water(gx0, height - 1 - gy0, &p00, &ignored) && water(gx0 + 1, height - 1 - gy0, &p10, &ignored) &&
+                water(gx0, height - 2 - gy0, &p01, &ignored)) {
+              const double span = 2 * rt::kWaterHalfSize;  // uv = (x, z) / span + 0.5
+              env.uvDx = Value::vector({(p10.x - p00.x) / span, (p10.z - p00.z) / span});
+              env.uvDy = Value::vector({(p01.x - p00.x) / span, (p01.z - p00.z) / span});
+            }
+          }
           env.time = Value::scalar(static_cast<double>(view.scene.time));
           env.screenUv = Value::vector({(px + 0.5) / width, 1 - (py + 0.5) / height});
           env.fragDepth = Value::scalar(d);

@@ -176,7 +176,7 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
     const auto& c = cases[i];
     if (!r.object(c, p, "a case")) continue;
     r.unknownKeys(c, p,
-                  {"name", "expect", "region", "uv", "world_position", "normal", "view_direction", "camera_position", "time",
+                  {"name", "expect", "region", "uv", "uv_dx", "uv_dy", "world_position", "normal", "view_direction", "camera_position", "time",
                    "screen_uv", "frag_depth", "near_far", "sun_direction", "view", "projection", "camera", "scene", "parameters", "range",
                    "tolerance", "inputs", "options", "ranges", "nodes"},
                   "a case");
@@ -233,6 +233,8 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
       int count;
     };
     const Field fields[] = {{"uv", &env.uv, 2},
+                            {"uv_dx", &env.uvDx, 2},
+                            {"uv_dy", &env.uvDy, 2},
                             {"world_position", &env.worldPosition, 3},
                             {"normal", &env.normal, 3},
                             {"view_direction", &env.viewDirection, 3},
@@ -313,7 +315,7 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
       pc.tolerance = t;
     }
     // What the GPU sees is float32; the reference gets the same inputs.
-    for (Value* v : {&env.uv, &env.worldPosition, &env.normal, &env.viewDirection, &env.cameraPosition, &env.time,
+    for (Value* v : {&env.uv, &env.uvDx, &env.uvDy, &env.worldPosition, &env.normal, &env.viewDirection, &env.cameraPosition, &env.time,
                      &env.screenUv, &env.fragDepth, &env.cameraNearFar, &env.view, &env.projection, &env.sunDirection, &env.sceneDepth,
                      &env.sceneColor, &env.reflectionColor, &env.refractionColor, &env.environmentColor})
       *v = toFloat32(*v);

@@ -5,6 +5,7 @@
 
 #include "nodes/texture_source.h"
 #include "runtime/gl_resources.h"
+#include "runtime/node_texture.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::accuracy {
@@ -26,6 +27,7 @@ Value builtinValue(const UniformInfo& u, const EvalEnvironment& env) {
   if (row.carries) return env.builtin(*row.carries);
   switch (u.builtin) {
     case BuiltinUniform::ViewportSize: return Value::vector({1, 1});
+    case BuiltinUniform::ProbeUvGradient: return Value::vector({env.uvDx[0], env.uvDx[1], env.uvDy[0], env.uvDy[1]});
     case BuiltinUniform::TimePhase: {
       // As the runtime does: mod(omega * t, 2 pi) in double (the eval does the same).
       double phase = u.omega * env.time[0];
@@ -57,7 +59,7 @@ rt::Texture makeNodeTexture(const TextureInfo& t, const std::string& graphDir) {
   auto img = loadTexture(t.source, graphDir, &why);
   if (!img || img->width <= 0 || img->height <= 0)
     throw RuntimeError(RuntimeError::Kind::Manifest, "texture '" + t.source + "' cannot be loaded: " + why);
-  return rt::makeRepeatingRgba8Texture(img->width, img->height, img->rgba.data());
+  return rt::makeNodeTexture(img->width, img->height, img->rgba.data(), t.sampler);
 }
 
 // A 1x1 RGBA32F texture (six faces for a cube), nearest: every fetch returns the texel.
@@ -146,6 +148,9 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
         v = p.defaultValue;
         for (const auto& [name, value] : c.parameters)
           if (name == p.name) v = value.convertedTo(p.type);
+      } else if (u.builtin == BuiltinUniform::ProbePixel) {
+        // gl_FragCoord at the centre of the pixel the case is drawn into (the viewport below).
+        v = Value::vector({static_cast<double>(i % 1024) + 0.5, static_cast<double>(i / 1024) + 0.5});
       } else {
         v = builtinValue(u, c.env);
       }

@@ -3,7 +3,10 @@
 // RGBA32F target per case, drawn by a full-screen triangle restricted to that pixel, with
 // the case's builtins, time phases and parameters in the uniforms and the scene textures
 // replaced by 1x1 float textures holding the case's values (what any fetch returns, as the
-// CPU reference assumes). Node textures are uploaded as the runtime uploads them.
+// CPU reference assumes). Node textures are uploaded as the runtime uploads them, with
+// their sampler state. The uv builtin varies by the case's gradient across the pixel's
+// quad (u_probe_uv_gradient about u_probe_pixel), so a mipmapped look-up picks the
+// level the reference picks.
 #include <array>
 #include <string>
 #include <vector>

@@ -6,6 +6,7 @@
 #include "core/port_typing.h"
 #include "core/resolve.h"
 #include "nodes/registry.h"
+#include "nodes/texture_sampling.h"
 #include "nodes/texture_source.h"
 
 namespace wg {
@@ -27,9 +28,17 @@ class OpEvalContext final : public EvalContext {
   void output(int port, Value v) override { outputs_.at(static_cast<size_t>(port)) = v; }
   const EvalEnvironment& environment() const override { return env_; }
   const NodeSpec& spec() const override { return *op_.spec; }
-  Value sampleTexture(std::string_view option, double u, double v) const override {
+  using EvalContext::sampleTexture;
+  Value sampleTexture(std::string_view option, double u, double v, const SamplerState& sampler,
+                      const UvGradient& gradient) const override {
     if (!textures_) throw std::logic_error("eval of '" + op_.spec->type + "' samples a texture without a texture cache");
-    return textures_->get(op_.options.at(std::string(option)).get<std::string>(), graphDir_).sample(u, v);
+    const std::string source = op_.options.at(std::string(option)).get<std::string>();
+    const TextureImage& base = textures_->get(source, graphDir_);
+    // The chain is built only for a look-up that can reach it.
+    const std::vector<TextureImage>* chain = nullptr;
+    if (sampler.filter == TextureFilter::Mipmapped && levelOfDetail(base, gradient) > 0)
+      chain = &textures_->mipChain(source, graphDir_, sampler.colorSpace);
+    return wg::sampleTexture(base, chain, u, v, sampler, gradient);
   }
   std::vector<Value> take() { return std::move(outputs_); }
 

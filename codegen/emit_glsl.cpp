@@ -118,7 +118,8 @@ class OpEmitContext final : public EmitContext {
   std::string temporary(Type type, std::string expression) override;
   unsigned stage() const override { return w_.stage; }
   std::string timePhase(double omega) override;
-  std::string texture(std::string_view option) override;
+  using EmitContext::texture;
+  std::string texture(std::string_view option, const SamplerState& sampler) override;
   std::string sceneTexture(SceneResource resource) override;
   const NodeSpec& spec() const override;
   ValueFact inputFact(int port) const override;
@@ -349,6 +350,13 @@ class Emitter {
 
   std::string builtinExpr(StageWriter& w, Builtin b) {
     w.builtins.insert(b);
+    if (probe_ && b == Builtin::Uv) {
+      // b_uv (builtinLocals): the case's uv, varying across the quad by its gradient.
+      useUniform(w, BuiltinUniform::ProbeUvGradient);
+      useUniform(w, BuiltinUniform::ProbePixel);
+      useUniform(w, builtinRow(b).uniform);
+      return "b_uv";
+    }
     if (probe_) return useUniform(w, builtinRow(b).uniform);
     bool vertex = w.stage == kVertexStage;
     switch (b) {
@@ -404,9 +412,12 @@ class Emitter {
     return u.name;
   }
 
-  std::string nodeTexture(StageWriter& w, const std::string& source) {
+  // One sampler per distinct (source, sampler state): GL 3.3 keeps wrap and filter in the
+  // texture object (the runtime uses no sampler objects) and sRGB is its internal format,
+  // so a PNG read two ways is two textures, each with its own unit.
+  std::string nodeTexture(StageWriter& w, const std::string& source, const SamplerState& sampler) {
     for (auto& t : textures_)
-      if (!t.scene && t.source == source) {
+      if (!t.scene && t.source == source && t.sampler == sampler) {
         t.stages |= w.stage;
         return t.name;
       }
@@ -415,6 +426,7 @@ class Emitter {
     TextureInfo t;
     t.name = "t" + std::to_string(textures_.size()) + "_" + sanitiseIdentifier(stem);
     t.source = source;
+    t.sampler = sampler;
     t.stages = w.stage;
     textures_.push_back(t);
     return t.name;
@@ -502,7 +514,18 @@ class Emitter {
   // Builtin locals at the top of main, in a fixed order, for what the body used.
   std::vector<std::string> builtinLocals(StageWriter& w) {
     std::vector<std::string> lines;
-    if (probe_) return lines;  // every builtin is a uniform
+    if (probe_) {
+      // Every builtin is a uniform; uv also moves by the case's gradient per pixel away from
+      // the case's pixel, so dFdx(uv) and dFdy(uv) (the level of detail of a mipmapped
+      // texture()) are the gradient, while at the pixel itself the offset is exactly 0 and
+      // uv is the case's value bit for bit.
+      if (w.builtins.count(Builtin::Uv))
+        lines.push_back("vec2 b_uv = " + uniformName(BuiltinUniform::ProbeUv) + " + " +
+                        uniformName(BuiltinUniform::ProbeUvGradient) + ".xy * (gl_FragCoord.x - " +
+                        uniformName(BuiltinUniform::ProbePixel) + ".x) + " + uniformName(BuiltinUniform::ProbeUvGradient) +
+                        ".zw * (gl_FragCoord.y - " + uniformName(BuiltinUniform::ProbePixel) + ".y);");
+      return lines;
+    }
     bool vertex = w.stage == kVertexStage;
     if (vertex && tess_) {
       // The evaluation stage: the patch's corners, interpolated at gl_TessCoord.
@@ -771,10 +794,10 @@ const ParsedOptions& OpEmitContext::parsedOptions() const {
 void OpEmitContext::output(int port, std::string expression) { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
 std::string OpEmitContext::builtin(Builtin b) { return e_.builtinExpr(w_, b); }
 std::string OpEmitContext::timePhase(double omega) { return e_.phaseUniform(w_, omega); }
-std::string OpEmitContext::texture(std::string_view option) {
+std::string OpEmitContext::texture(std::string_view option, const SamplerState& sampler) {
   const nlohmann::json& v = e_.program().ops[static_cast<size_t>(opIndex_)].options.at(option);
   if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
-  return e_.nodeTexture(w_, v.get<std::string>());
+  return e_.nodeTexture(w_, v.get<std::string>(), sampler);
 }
 std::string OpEmitContext::sceneTexture(SceneResource resource) {
   const auto& resources = spec().resources;

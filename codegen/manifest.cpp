@@ -55,6 +55,13 @@ nlohmann::json textureJson(const TextureInfo& t) {
   nlohmann::json j{{"name", t.name}, {"type", std::string(typeName(t.type))}, {"binding", t.binding},
                    {"stages", stagesJson(t.stages)}};
   if (!t.source.empty()) j["source"] = t.source;
+  // Only a state other than the default (repeat, linear, linear data) is written, so the
+  // manifests of graphs that sample every texture the default way keep their bytes; the
+  // entry then holds all three, so a client reads one complete state or none.
+  if (!t.source.empty() && !t.sampler.isDefault())
+    j["sampler"] = {{"wrap", std::string(wrapName(t.sampler.wrap))},
+                    {"filter", std::string(filterName(t.sampler.filter))},
+                    {"color_space", std::string(colorSpaceName(t.sampler.colorSpace))}};
   if (t.scene) j["resource"] = std::string(sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
   return j;
 }

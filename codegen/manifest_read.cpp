@@ -194,17 +194,39 @@ VaryingInfo varyingOf(const json& v) {
   return out;
 }
 
+// A node texture's "sampler": all three members, each one of its names.
+SamplerState samplerOf(const json& s, const std::string& texture) {
+  const std::string what = texture + "'s \"sampler\"";
+  if (!s.is_object()) fail(what + " is not an object");
+  onlyMembers(s, {"wrap", "filter", "color_space"}, what);
+  auto named = [&](const char* key, auto parse, const char* choices) {
+    const std::string name = text(s, key, what);
+    auto v = parse(name);
+    if (!v) fail(what + " has an unknown " + key + " '" + name + "' (" + choices + ")");
+    return *v;
+  };
+  SamplerState out;
+  out.wrap = named("wrap", parseWrap, "repeat, clamp or mirror");
+  out.filter = named("filter", parseFilter, "nearest, linear or mipmapped");
+  out.colorSpace = named("color_space", parseColorSpace, "linear or srgb");
+  // The compiler leaves the default state out; reading it would not give the file back.
+  if (out.isDefault()) fail(what + " is the default state (repeat, linear, linear), which a manifest leaves out");
+  return out;
+}
+
 TextureInfo textureOf(const json& t) {
   TextureInfo out;
   out.name = text(t, "name", "a manifest texture");
   const std::string what = "texture " + out.name;
-  onlyMembers(t, {"name", "type", "binding", "stages", "source", "resource"}, what);
+  onlyMembers(t, {"name", "type", "binding", "stages", "source", "resource", "sampler"}, what);
   out.type = typeOf(t, what);
   out.binding = integer(t, "binding", what);
   out.stages = stagesOf(t, what);
   if (member(t, "source") && member(t, "resource")) fail(what + " has both a \"source\" and a \"resource\"");
+  if (member(t, "sampler") && !member(t, "source")) fail(what + " has a \"sampler\" but no \"source\"");
   if (member(t, "source")) {
     out.source = text(t, "source", what);
+    if (const json* s = member(t, "sampler")) out.sampler = samplerOf(*s, what);
   } else if (member(t, "resource")) {
     // A scene texture is one of its resource's samplers, named as the shader declares it.
     const std::string resource = text(t, "resource", what);

@@ -59,6 +59,8 @@ const BuiltinUniformRow kBuiltinUniforms[] = {
      {"view_direction", "camera", "camera_position", "world_position"}},
     {U::ProbeScreenUv, "screen_uv", "u_probe_screen_uv", Type::Vec2, Builtin::ScreenUv, {"screen_uv"}},
     {U::ProbeFragDepth, "frag_depth", "u_probe_frag_depth", Type::Float, Builtin::FragDepth, {"frag_depth"}},
+    {U::ProbeUvGradient, "uv_gradient", "u_probe_uv_gradient", Type::Vec4, std::nullopt, {"uv_dx", "uv_dy"}},
+    {U::ProbePixel, "probe_pixel", "u_probe_pixel", Type::Vec2, std::nullopt, {}},
     {U::SunDirection, "sun_direction", "u_sun_direction", Type::Vec3, Builtin::SunDirection, {"sun_direction"}},
     {U::TimePhase, "time_phase", "u_phase", Type::Float, std::nullopt, {"time"}},
 };

@@ -60,6 +60,11 @@ enum class BuiltinUniform {
   ProbeViewDirection,
   ProbeScreenUv,
   ProbeFragDepth,
+  // Probe shaders: the uv builtin's screen-space derivatives (du/dx, dv/dx, du/dy, dv/dy)
+  // and the case's pixel centre; uv varies by them across the pixel's quad, so implicit
+  // derivatives (a mipmapped texture()) see the case's gradient (EvalEnvironment::uvDx).
+  ProbeUvGradient,
+  ProbePixel,
   SunDirection,        // vec3, unit, towards the sun
   TimePhase,           // float, mod(omega * time, 2 pi) in double; "u_phase<k>", one per omega
 };

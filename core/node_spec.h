@@ -14,6 +14,7 @@
 
 #include "core/interface_tables.h"
 #include "core/node_options.h"
+#include "core/sampler_state.h"
 #include "core/types.h"
 #include "core/value.h"
 
@@ -128,9 +129,12 @@ class EmitContext {
   // precision each frame, so time-driven phases stay exact at t = 1e6 s where a float
   // u_time has 0.06 s steps. The CPU reference computes the same in double.
   virtual std::string timePhase(double omega) = 0;
-  // The sampler2D that holds the texture named by a Texture option (declared once per
-  // distinct source, listed in the manifest).
-  virtual std::string texture(std::string_view option) = 0;
+  // The sampler2D that holds the texture named by a Texture option, sampled with
+  // `sampler` (declared once per distinct source and state, listed in the manifest; two
+  // states of one source are two samplers, each with its own texture object).
+  virtual std::string texture(std::string_view option, const SamplerState& sampler) = 0;
+  // With the default state: GL_REPEAT, GL_LINEAR, no mipmaps, linear data.
+  std::string texture(std::string_view option) { return texture(option, SamplerState{}); }
   // The sampler the runtime binds for a scene resource the node lists in `resources`
   // (SceneDepth -> u_scene_depth; see core/interface_tables.h).
   virtual std::string sceneTexture(SceneResource resource) = 0;
@@ -174,6 +178,12 @@ struct EvalEnvironment {
   Value reflectionColor = Value::vector({0, 0, 0});
   Value refractionColor = Value::vector({0, 0, 0});
   Value environmentColor = Value::vector({0, 0, 0});
+  // The screen-space derivatives of the uv builtin, (du/dx, dv/dx) and (du/dy, dv/dy):
+  // what a mipmapped texture look-up at uv chooses its level from. Zero (level 0) unless
+  // a probe case gives "uv_dx"/"uv_dy"; the probe's GPU path draws uv varying by them
+  // across the pixel's quad, so the shader's implicit derivatives are these.
+  Value uvDx = Value::vector({0, 0});
+  Value uvDy = Value::vector({0, 0});
   const Value& builtin(Builtin b) const;
 };
 
@@ -190,8 +200,14 @@ class EvalContext {
   virtual void output(int port, Value v) = 0;
   virtual const EvalEnvironment& environment() const = 0;
   virtual const NodeSpec& spec() const = 0;
-  // The texture of a Texture option sampled as GL_LINEAR + GL_REPEAT would: vec4.
-  virtual Value sampleTexture(std::string_view option, double u, double v) const = 0;
+  // The texture of a Texture option sampled as GL would with `sampler`, the level of
+  // detail of a mipmapped look-up taken from `gradient` (nodes/texture_sampling.h): vec4.
+  virtual Value sampleTexture(std::string_view option, double u, double v, const SamplerState& sampler,
+                              const UvGradient& gradient) const = 0;
+  // With the default state (GL_LINEAR + GL_REPEAT, linear data), which needs no gradient.
+  Value sampleTexture(std::string_view option, double u, double v) const {
+    return sampleTexture(option, u, v, SamplerState{}, UvGradient{});
+  }
 
   const Value& input(std::string_view port) const;
   double scalar(std::string_view port) const { return input(port)[0]; }

@@ -27,7 +27,8 @@ class RecordingEmitContext final : public EmitContext {
   }
   unsigned stage() const override { return spec_.stages & kFragmentStage ? kFragmentStage : kVertexStage; }
   std::string timePhase(double) override { return "phase"; }
-  std::string texture(std::string_view) override { return "sampler"; }
+  using EmitContext::texture;
+  std::string texture(std::string_view, const SamplerState&) override { return "sampler"; }
   std::string sceneTexture(SceneResource) override { return "scene_sampler"; }
   const NodeSpec& spec() const override { return spec_; }
 

@@ -14,34 +14,12 @@
 #include <stb/stb_image.h>
 
 #include "core/png_header.h"
+#include "nodes/texture_sampling.h"
 
 namespace wg {
 
 Value TextureImage::sample(double u, double v) const {
-  Value out = Value::ofType(Type::Vec4);
-  if (width <= 0 || height <= 0) return out;
-  double x = u * width - 0.5, y = v * height - 0.5;
-  // A non-finite coordinate reads from the origin rather than feeding NaN into an index.
-  if (!std::isfinite(x)) x = 0;
-  if (!std::isfinite(y)) y = 0;
-  double fx = std::floor(x), fy = std::floor(y);
-  double tx = x - fx, ty = y - fy;
-  // Wrap in double: a coordinate of 1e31 texels has no integer type to go through.
-  auto wrap = [](double i, int n) {
-    double m = std::fmod(i, static_cast<double>(n));
-    if (m < 0) m += n;
-    int k = static_cast<int>(m);
-    return k >= n ? 0 : k;
-  };
-  int x0 = wrap(fx, width), x1 = wrap(fx + 1, width);
-  int y0 = wrap(fy, height), y1 = wrap(fy + 1, height);
-  for (int c = 0; c < 4; ++c) {
-    double a = at(x0, y0, c) / 255.0, b = at(x1, y0, c) / 255.0;
-    double d = at(x0, y1, c) / 255.0, e = at(x1, y1, c) / 255.0;
-    double top = a + (b - a) * tx, bottom = d + (e - d) * tx;
-    out[c] = top + (bottom - top) * ty;
-  }
-  return out;
+  return sampleLevel(*this, u, v, TextureWrap::Repeat, TextureFilter::Linear, TextureColorSpace::Linear);
 }
 
 namespace {
@@ -132,6 +110,15 @@ const TextureImage& TextureCache::get(const std::string& source, const std::stri
   auto& slot = images_[key];
   slot = std::make_unique<TextureImage>(std::move(*img));
   return *slot;
+}
+
+const std::vector<TextureImage>& TextureCache::mipChain(const std::string& source, const std::string& graphDir,
+                                                        TextureColorSpace colorSpace) {
+  std::string key = graphDir + "\n" + source + "\n" + std::string(colorSpaceName(colorSpace));
+  auto it = chains_.find(key);
+  if (it != chains_.end()) return *it->second;
+  auto chain = std::make_unique<std::vector<TextureImage>>(buildMipChain(get(source, graphDir), colorSpace));
+  return *(chains_[key] = std::move(chain));
 }
 
 }  // namespace wg

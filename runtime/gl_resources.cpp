@@ -30,19 +30,6 @@ Texture makeTexture() {
   return Texture(id);
 }
 
-Texture makeRepeatingRgba8Texture(int width, int height, const unsigned char* rgba) {
-  Texture t = makeTexture();
-  glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  return t;
-}
 Framebuffer makeFramebuffer() {
   GLuint id = 0;
   glGenFramebuffers(1, &id);

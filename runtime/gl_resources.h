@@ -58,10 +58,7 @@ VertexArray makeVertexArray();
 Texture makeTexture();
 Framebuffer makeFramebuffer();
 
-// A node texture as the GLSL library and the CPU reference sample it: RGBA8, one level,
-// GL_LINEAR and GL_REPEAT (TextureImage::sample). `rgba` holds width * height * 4 bytes,
-// row 0 first.
-Texture makeRepeatingRgba8Texture(int width, int height, const unsigned char* rgba);
+// Node textures (with their sampler state): runtime/node_texture.h.
 
 struct ShaderSource {
   GLenum stage;      // GL_VERTEX_SHADER, GL_FRAGMENT_SHADER, ...

@@ -12,6 +12,7 @@
 
 #include "codegen/shader_interface.h"
 #include "nodes/texture_source.h"
+#include "runtime/node_texture.h"
 #include "runtime/gpu_cache.h"
 #include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
@@ -220,11 +221,12 @@ struct Renderer::Impl {
     checkGl("creating render targets");
   }
 
-  // Uploads a node texture as the CPU reference samples it: RGBA8, GL_LINEAR, GL_REPEAT,
-  // no mipmaps, row 0 at v = 0. Through the cache when there is one, keyed by the source,
-  // its folder and, for a file, its size and modification time: a PNG saved again while
-  // the editor runs is loaded again.
+  // Uploads a node texture as the CPU reference samples it: its sampler state
+  // (runtime/node_texture.h), row 0 at v = 0. Through the cache when there is one, keyed
+  // by the source, its folder, the state and, for a file, its size and modification time:
+  // a PNG saved again while the editor runs is loaded again.
   std::shared_ptr<const Texture> nodeTexture(const std::string& sampler, const std::string& source,
+                                             const SamplerState& state,
                                              const std::map<std::string, TextureOrigin>& origins) {
     auto o = origins.find(source);
     std::string dir = o != origins.end() ? o->second.graphDir : ".";
@@ -237,10 +239,12 @@ struct Renderer::Impl {
         if (why.empty()) why = "no image data";
         throw TextureLoadError(owner + ": texture '" + source + "' cannot be loaded: " + why, source, why);
       }
-      return makeRepeatingRgba8Texture(img->width, img->height, img->rgba.data());
+      return makeNodeTexture(img->width, img->height, img->rgba.data(), state);
     };
     if (!cache) return std::make_shared<const Texture>(upload());
-    return cache->texture(textureCacheKey(source, dir), upload);
+    std::string key = textureCacheKey(source, dir) + '\n' + std::string(wrapName(state.wrap)) + ' ' +
+                      std::string(filterName(state.filter)) + ' ' + std::string(colorSpaceName(state.colorSpace));
+    return cache->texture(key, upload);
   }
 
   // A water uniform from the manifest: a graph parameter (its value kept here, so the
@@ -298,7 +302,9 @@ struct Renderer::Impl {
       case BuiltinUniform::ProbeNormal:
       case BuiltinUniform::ProbeViewDirection:
       case BuiltinUniform::ProbeScreenUv:
-      case BuiltinUniform::ProbeFragDepth: break;  // refused when the manifest is read
+      case BuiltinUniform::ProbeFragDepth:
+      case BuiltinUniform::ProbeUvGradient:
+      case BuiltinUniform::ProbePixel: break;  // refused when the manifest is read
     }
     return v;
   }
@@ -391,7 +397,7 @@ struct Renderer::Impl {
       } else {
         if (t.type != Type::Sampler2D)
           manifestError("node texture " + t.name + " must be a sampler2D, not " + std::string(typeName(t.type)));
-        nodeTextures.push_back(nodeTexture(t.name, t.source, origins));
+        nodeTextures.push_back(nodeTexture(t.name, t.source, t.sampler, origins));
         texture = nodeTextures.back()->id();
       }
       bool used = false;

@@ -293,10 +293,44 @@ async function fetchOk(url, what) {
   return response;
 }
 
+// The sampler state of a manifest texture, as the runtime sets it (runtime/node_texture.h):
+// its "sampler" entry, or without one the default every node texture had before
+// texture_sample (repeat, linear, linear data).
+const DEFAULT_SAMPLER = { wrap: 'repeat', filter: 'linear', color_space: 'linear' };
+const WRAPS = {
+  repeat: THREE.RepeatWrapping,
+  clamp: THREE.ClampToEdgeWrapping,
+  mirror: THREE.MirroredRepeatWrapping,
+};
+const FILTERS = {  // [minFilter, magFilter, generateMipmaps]
+  nearest: [THREE.NearestFilter, THREE.NearestFilter, false],
+  linear: [THREE.LinearFilter, THREE.LinearFilter, false],
+  mipmapped: [THREE.LinearMipmapLinearFilter, THREE.LinearFilter, true],
+};
+const COLOR_SPACES = { linear: THREE.NoColorSpace, srgb: THREE.SRGBColorSpace };
+
+// Sets `texture`'s wrap, filters, mipmaps and colour space from `sampler` (a manifest
+// texture's "sampler", or undefined for the default). sRGB: three.js uploads SRGB8_ALPHA8,
+// so WebGL decodes each texel before filtering, as GL does in the runtime; mipmapped:
+// gl.generateMipmap, as glGenerateMipmap there.
+export function applySamplerState(texture, sampler = undefined) {
+  const s = { ...DEFAULT_SAMPLER, ...(sampler ?? {}) };
+  const wrap = WRAPS[s.wrap], filter = FILTERS[s.filter], colorSpace = COLOR_SPACES[s.color_space];
+  if (wrap === undefined || filter === undefined || colorSpace === undefined)
+    throw new WaterGraphError(`unknown sampler state ${JSON.stringify(sampler)} (wrap: repeat, clamp or mirror; ` +
+      'filter: nearest, linear or mipmapped; color_space: linear or srgb)');
+  texture.wrapS = texture.wrapT = wrap;
+  [texture.minFilter, texture.magFilter, texture.generateMipmaps] = filter;
+  texture.colorSpace = colorSpace;
+  texture.needsUpdate = true;
+  return texture;
+}
+
 // A node texture written by `watergraph compile --textures` as <graph>.<sampler>.png, with
 // the sampling the runtime sets up: RGBA8 as stored (no premultiplication, no colour-space
-// conversion), GL_LINEAR, GL_REPEAT, no mipmaps, the picture's bottom row at v = 0.
-export async function loadNodeTexture(url, what = url) {
+// conversion of the bytes), the bottom row at v = 0, and the manifest entry's sampler
+// state (applySamplerState; the default without one).
+export async function loadNodeTexture(url, what = url, sampler = undefined) {
   const blob = await (await fetchOk(url, what)).blob();
   const bitmap = await createImageBitmap(blob, {
     imageOrientation: 'flipY',
@@ -306,12 +340,7 @@ export async function loadNodeTexture(url, what = url) {
   const t = new THREE.Texture(bitmap);
   t.flipY = false;  // WebGL ignores it for ImageBitmap; the bitmap is already flipped
   t.premultiplyAlpha = false;
-  t.colorSpace = THREE.NoColorSpace;
-  t.wrapS = t.wrapT = THREE.RepeatWrapping;
-  t.magFilter = t.minFilter = THREE.LinearFilter;
-  t.generateMipmaps = false;
-  t.needsUpdate = true;
-  return t;
+  return applySamplerState(t, sampler);
 }
 
 // Loads <graph>.manifest.json from `manifestUrl`, the es300 shaders and the node textures
@@ -334,7 +363,7 @@ export async function loadWaterGraph(manifestUrl, { resources = {} } = {}) {
     const file = `${baseName}.${t.name}.png`;
     textures[t.name] = await loadNodeTexture(
       new URL(file, base),
-      `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``);
+      `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``, t.sampler);
   }
   return new WaterGraph({ manifest, vertexShader, fragmentShader, textures, resources });
 }

@@ -130,7 +130,7 @@ TEST_F(ThreeClient, UnsupportedPassesAreAClearError) {
 }
 
 // The API without a browser (clients/three/test/api.test.mjs under node --test): the
-// resources option, update(), time phases, the grid.
+// resources option, update(), time phases, the grid, the sampler state of node textures.
 TEST_F(ThreeClient, ApiChecksPassUnderNode) {
   TempDir dir("wg_three_");
   CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath("tests/ecosystem/data/three_environment.json")) +
@@ -139,7 +139,7 @@ TEST_F(ThreeClient, ApiChecksPassUnderNode) {
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && WG_THREE_FIXTURES=" + test::shellQuote(dir.path()) +
                    " timeout 50 node --test test/api.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 5"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 6"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 

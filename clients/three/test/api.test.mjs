@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import * as THREE from 'three';
-import { WaterGraph, WaterGraphError, timePhase, createWaterGridGeometry } from '../watergraph-three.js';
+import { WaterGraph, WaterGraphError, timePhase, createWaterGridGeometry, applySamplerState } from '../watergraph-three.js';
 
 const dir = process.env.WG_THREE_FIXTURES;
 const graph = () => {
@@ -63,4 +63,29 @@ test('the water grid is the runtime one: 40 m across, uv 0..1, (n+1)^2 vertices'
   assert.deepEqual(Array.from(g.getAttribute('a_position').array.slice(-3)), [20, 0, 20]);
   assert.deepEqual(Array.from(g.getAttribute('a_uv').array.slice(-2)), [1, 1]);
   assert.deepEqual(Array.from(g.index.array.slice(0, 6)), [0, 5, 1, 1, 5, 6]);
+});
+
+test('a manifest texture\'s sampler state sets wrap, filters, mipmaps and colour space', () => {
+  // No "sampler": the default every node texture had, as the runtime uploads it.
+  const plain = applySamplerState(new THREE.Texture());
+  assert.equal(plain.wrapS, THREE.RepeatWrapping);
+  assert.equal(plain.wrapT, THREE.RepeatWrapping);
+  assert.equal(plain.minFilter, THREE.LinearFilter);
+  assert.equal(plain.magFilter, THREE.LinearFilter);
+  assert.equal(plain.generateMipmaps, false);
+  assert.equal(plain.colorSpace, THREE.NoColorSpace);
+  const mip = applySamplerState(new THREE.Texture(), { wrap: 'mirror', filter: 'mipmapped', color_space: 'srgb' });
+  assert.equal(mip.wrapS, THREE.MirroredRepeatWrapping);
+  assert.equal(mip.wrapT, THREE.MirroredRepeatWrapping);
+  assert.equal(mip.minFilter, THREE.LinearMipmapLinearFilter);
+  assert.equal(mip.magFilter, THREE.LinearFilter);
+  assert.equal(mip.generateMipmaps, true);
+  assert.equal(mip.colorSpace, THREE.SRGBColorSpace);
+  const near = applySamplerState(new THREE.Texture(), { wrap: 'clamp', filter: 'nearest', color_space: 'linear' });
+  assert.equal(near.wrapS, THREE.ClampToEdgeWrapping);
+  assert.equal(near.minFilter, THREE.NearestFilter);
+  assert.equal(near.magFilter, THREE.NearestFilter);
+  assert.equal(near.colorSpace, THREE.NoColorSpace);
+  assert.throws(() => applySamplerState(new THREE.Texture(), { wrap: 'border', filter: 'linear', color_space: 'srgb' }),
+    (e) => e instanceof WaterGraphError && e.message.includes('unknown sampler state'));
 });
