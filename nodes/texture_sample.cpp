@@ -53,7 +53,9 @@ NodeSpec textureSampleNode() {
       "lambda <= 0 and in the vertex stage); color_space srgb decodes r, g, b of each texel to linear before "
       "filtering (GL_SRGB8_ALPHA8), linear reads the bytes / 255 (data: flow, height). rgb = rgba.rgb, alpha = rgba.a. GPU against this reference: within 4/255, one 8-bit level for each of the u, v "
       "and mip-level filter weights (8-bit weights on 8-bit textures) and one for the 8-bit values of the generated mip "
-      "levels.";
+      "levels. The reference takes the derivatives from the case (probe keys uv_dx, uv_dy; in `watergraph check`, "
+      "those of the uv builtin over the flat water): with mipmapped filtering of a uv computed otherwise (a scaled "
+      "world position) the GPU may pick another level than the reference, and check reports those pixels.";
   s.cost = "one texture fetch (mipmapped: two levels, eight texels; the runtime builds the chain once at upload)";
   s.inputs = {ports::fromBuiltin("uv", Type::Vec2, Builtin::Uv, "texture coordinate; (0, 0) is the picture's bottom left")};
   s.outputs = {ports::fixed("rgb", Type::Vec3, "the filtered colour, linear, in [0, 1]"),

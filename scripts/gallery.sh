@@ -17,7 +17,7 @@ render() {  # graph camera [preset]
     ${preset:+--preset "$preset"}
   echo "wrote $out/$name.png"
 }
-for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river; do
+for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river lagoon; do
   render "$g" above
   render "$g" grazing
 done
