@@ -136,7 +136,17 @@ const BUILTIN_INITIAL = {
   time_phase: () => 0,
   viewport_size: () => new THREE.Vector2(1, 1),
   camera_near_far: () => new THREE.Vector2(0.1, 200),
+  // The unit vector towards the sun; until setSunDirection, the runtime's default scene sun
+  // (azimuth 110 degrees from +x towards +z, elevation 30 degrees).
+  sun_direction: () => sunFromAngles(110, 30),
 };
+
+// The direction towards a sun at `azimuth` degrees (from +x towards +z) and `elevation`
+// degrees above the horizon, as the runtime's scene computes it.
+export function sunFromAngles(azimuth, elevation) {
+  const az = (azimuth * Math.PI) / 180, el = (elevation * Math.PI) / 180;
+  return new THREE.Vector3(Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)).normalize();
+}
 
 // Removes the shader's own "#version 300 es": three.js puts its #defines first and then
 // needs glslVersion GLSL3 to place the #version line before them.
@@ -253,6 +263,14 @@ export class WaterGraph {
   setModelMatrix(matrix) {
     const name = this.builtins.model;
     if (name) this.uniforms[name].value.copy(matrix);
+  }
+
+  // Sets the sun the graph's sun_direction builtin reads (normalised here; a zero vector is refused).
+  setSunDirection(direction) {
+    const name = this.builtins.sun_direction;
+    if (!name) return;
+    if (!(direction.lengthSq() > 0)) throw new WaterGraphError('the sun direction must not be a zero vector');
+    this.uniforms[name].value.copy(direction).normalize();
   }
 
   setViewportSize(width, height) {

@@ -110,6 +110,13 @@ TEST_F(ThreeClient, TexturedWavesMatchTheRuntime) {
   EXPECT_GE(comparedPsnr("tests/ecosystem/data/textured_waves.json", "grazing"), kTexturedWavesMinPsnrDb);
 }
 
+// A user's PNG through texture_sample (repeat, bilinear, linear data: the manifest's
+// sampler state set on the three.js texture), expressions, u_time and the sun direction:
+// the lagoon example (measured 43.0 dB).
+TEST_F(ThreeClient, TheLagoonsOwnTextureMatchesTheRuntime) {
+  EXPECT_GE(comparedPsnr("graphs/lagoon.json", "above"), kTexturedWavesMinPsnrDb);
+}
+
 // A graph needing passes the client does not render fails in the page with one clear
 // message naming them, instead of drawing something wrong.
 TEST_F(ThreeClient, UnsupportedPassesAreAClearError) {
@@ -139,7 +146,7 @@ TEST_F(ThreeClient, ApiChecksPassUnderNode) {
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && WG_THREE_FIXTURES=" + test::shellQuote(dir.path()) +
                    " timeout 50 node --test test/api.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 6"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 7"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 

@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import * as THREE from 'three';
-import { WaterGraph, WaterGraphError, timePhase, createWaterGridGeometry, applySamplerState } from '../watergraph-three.js';
+import { WaterGraph, WaterGraphError, timePhase, createWaterGridGeometry, applySamplerState, sunFromAngles } from '../watergraph-three.js';
 
 const dir = process.env.WG_THREE_FIXTURES;
 const graph = () => {
@@ -53,6 +53,14 @@ test('time phases are mod(omega t, 2 pi) in double precision, also at large time
   assert.ok(p >= 0 && p < 2 * Math.PI);
   assert.ok(Math.abs(p - ((1.3 * 1e7) % (2 * Math.PI))) < 1e-6);
   assert.equal(timePhase(-1, 1), 2 * Math.PI - 1);
+});
+
+test("the default sun is the runtime's default scene sun, a unit vector", () => {
+  // runtime/scene.cpp: (cos el cos az, sin el, cos el sin az) at azimuth 110, elevation 30 degrees.
+  const sun = sunFromAngles(110, 30);
+  const expected = [-0.29619813272602386, 0.5, 0.8137976813493738];
+  sun.toArray().forEach((x, i) => assert.ok(Math.abs(x - expected[i]) < 1e-12, `component ${i}: ${x}`));
+  assert.ok(Math.abs(sun.length() - 1) < 1e-12);
 });
 
 test('the water grid is the runtime one: 40 m across, uv 0..1, (n+1)^2 vertices', () => {
