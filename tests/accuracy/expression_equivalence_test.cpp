@@ -20,7 +20,7 @@
 namespace wg::accuracy {
 namespace {
 
-using Inputs = std::vector<std::pair<std::string, Value>>;
+using FormulaCaseInputs = std::vector<std::pair<std::string, Value>>;
 
 // One technique: the built-in node's output, and the formula standing for it. The
 // formula's inputs carry the node's port names, so one input set feeds both.
@@ -30,15 +30,15 @@ struct Technique {
   nlohmann::json nodeOptions;
   std::string output;
   nlohmann::json expression;  // the expression node's options
-  std::vector<Inputs> cases;
+  std::vector<FormulaCaseInputs> cases;
 };
 
-Value v3(double x, double y, double z) { return Value::vector({x, y, z}); }
-Value s(double x) { return Value::scalar(x); }
+Value vec3Of(double x, double y, double z) { return Value::vector({x, y, z}); }
+Value scalarOf(double x) { return Value::scalar(x); }
 
-Value unit(double x, double y, double z) {
+Value unitVector(double x, double y, double z) {
   double n = std::sqrt(x * x + y * y + z * z);
-  return v3(x / n, y / n, z / n);
+  return vec3Of(x / n, y / n, z / n);
 }
 
 const std::vector<Technique>& techniques() {
@@ -53,7 +53,7 @@ const std::vector<Technique>& techniques() {
     for (double angle : {0.0, 20.0, 45.0, 60.0, 75.0, 85.0, 89.0, 89.9, 95.0}) {
       double a = angle * std::acos(-1.0) / 180;
       for (double f0 : {0.02, 0.2})
-        schlick.cases.push_back({{"normal", v3(0, 1, 0)}, {"view", unit(std::sin(a), std::cos(a), 0)}, {"f0", s(f0)}});
+        schlick.cases.push_back({{"normal", vec3Of(0, 1, 0)}, {"view", unitVector(std::sin(a), std::cos(a), 0)}, {"f0", s(f0)}});
     }
     t.push_back(schlick);
     // Beer-Lambert: color * exp(-max(sigma, 0) * clamp(d, 0, 1e30)); negative and huge
@@ -63,8 +63,8 @@ const std::vector<Technique>& techniques() {
                     {"formula", "color * exp(-max(sigma, 0.0) * clamp(distance, 0.0, 1e30))"}},
                    {}};
     for (double d : {-2.0, 0.0, 0.5, 3.0, 10.0, 40.0, 1e30})
-      beer.cases.push_back({{"color", v3(0.9, 0.8, 0.7)}, {"sigma", v3(0.34, 0.0565, 0.00922)}, {"distance", s(d)}});
-    beer.cases.push_back({{"color", v3(1, 1, 1)}, {"sigma", v3(-0.5, 0.2, 0)}, {"distance", s(4)}});
+      beer.cases.push_back({{"color", vec3Of(0.9, 0.8, 0.7)}, {"sigma", vec3Of(0.34, 0.0565, 0.00922)}, {"distance", s(d)}});
+    beer.cases.push_back({{"color", vec3Of(1, 1, 1)}, {"sigma", vec3Of(-0.5, 0.2, 0)}, {"distance", scalarOf(4)}});
     t.push_back(beer);
     // Linear depth tint: mix(shallow, deep, saturate(depth / max(max_depth, 1e-6))).
     Technique tint{"depth_tint", "depth_tint", {{"curve", "linear"}}, "color",
@@ -72,8 +72,8 @@ const std::vector<Technique>& techniques() {
                     {"formula", "mix(shallow, deep, clamp(depth / max(max_depth, 1e-6), 0.0, 1.0))"}},
                    {}};
     for (double depth : {-1.0, 0.0, 2.5, 7.0, 10.0, 25.0, 1e30})
-      tint.cases.push_back({{"depth", s(depth)}, {"shallow", v3(0, 0.8, 0.7)}, {"deep", v3(0, 0.1, 0.3)}, {"max_depth", s(10)}});
-    tint.cases.push_back({{"depth", s(3)}, {"shallow", v3(0, 0.8, 0.7)}, {"deep", v3(0, 0.1, 0.3)}, {"max_depth", s(0)}});
+      tint.cases.push_back({{"depth", s(depth)}, {"shallow", vec3Of(0, 0.8, 0.7)}, {"deep", vec3Of(0, 0.1, 0.3)}, {"max_depth", scalarOf(10)}});
+    tint.cases.push_back({{"depth", scalarOf(3)}, {"shallow", vec3Of(0, 0.8, 0.7)}, {"deep", vec3Of(0, 0.1, 0.3)}, {"max_depth", scalarOf(0)}});
     t.push_back(tint);
     return t;
   }();
