@@ -53,7 +53,7 @@ const std::vector<Technique>& techniques() {
     for (double angle : {0.0, 20.0, 45.0, 60.0, 75.0, 85.0, 89.0, 89.9, 95.0}) {
       double a = angle * std::acos(-1.0) / 180;
       for (double f0 : {0.02, 0.2})
-        schlick.cases.push_back({{"normal", vec3Of(0, 1, 0)}, {"view", unitVector(std::sin(a), std::cos(a), 0)}, {"f0", s(f0)}});
+        schlick.cases.push_back({{"normal", vec3Of(0, 1, 0)}, {"view", unitVector(std::sin(a), std::cos(a), 0)}, {"f0", scalarOf(f0)}});
     }
     t.push_back(schlick);
     // Beer-Lambert: color * exp(-max(sigma, 0) * clamp(d, 0, 1e30)); negative and huge
@@ -63,7 +63,7 @@ const std::vector<Technique>& techniques() {
                     {"formula", "color * exp(-max(sigma, 0.0) * clamp(distance, 0.0, 1e30))"}},
                    {}};
     for (double d : {-2.0, 0.0, 0.5, 3.0, 10.0, 40.0, 1e30})
-      beer.cases.push_back({{"color", vec3Of(0.9, 0.8, 0.7)}, {"sigma", vec3Of(0.34, 0.0565, 0.00922)}, {"distance", s(d)}});
+      beer.cases.push_back({{"color", vec3Of(0.9, 0.8, 0.7)}, {"sigma", vec3Of(0.34, 0.0565, 0.00922)}, {"distance", scalarOf(d)}});
     beer.cases.push_back({{"color", vec3Of(1, 1, 1)}, {"sigma", vec3Of(-0.5, 0.2, 0)}, {"distance", scalarOf(4)}});
     t.push_back(beer);
     // Linear depth tint: mix(shallow, deep, saturate(depth / max(max_depth, 1e-6))).
@@ -72,7 +72,7 @@ const std::vector<Technique>& techniques() {
                     {"formula", "mix(shallow, deep, clamp(depth / max(max_depth, 1e-6), 0.0, 1.0))"}},
                    {}};
     for (double depth : {-1.0, 0.0, 2.5, 7.0, 10.0, 25.0, 1e30})
-      tint.cases.push_back({{"depth", s(depth)}, {"shallow", vec3Of(0, 0.8, 0.7)}, {"deep", vec3Of(0, 0.1, 0.3)}, {"max_depth", scalarOf(10)}});
+      tint.cases.push_back({{"depth", scalarOf(depth)}, {"shallow", vec3Of(0, 0.8, 0.7)}, {"deep", vec3Of(0, 0.1, 0.3)}, {"max_depth", scalarOf(10)}});
     tint.cases.push_back({{"depth", scalarOf(3)}, {"shallow", vec3Of(0, 0.8, 0.7)}, {"deep", vec3Of(0, 0.1, 0.3)}, {"max_depth", scalarOf(0)}});
     t.push_back(tint);
     return t;
