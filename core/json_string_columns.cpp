@@ -10,7 +10,7 @@ int hexDigit(char c) {
   return -1;
 }
 
-// The code unit of the \uXXXX escape at `raw` (which starts with the backslash); -1 if
+// The code unit of the \u escape (four hex digits) at `raw` (which starts with the backslash); -1 if
 // it is not one.
 long unicodeEscape(std::string_view raw) {
   if (raw.size() < 6 || raw[0] != '\\' || raw[1] != 'u') return -1;

@@ -22,6 +22,14 @@ namespace wg {
 namespace {
 
 std::string inputLabel(const std::string& port) { return "input '" + port + "'"; }
+
+// The names of a spec's ports or options, for "did you mean" (made only when reporting).
+template <class Named>
+std::vector<std::string> namesOf(const std::vector<Named>& list) {
+  std::vector<std::string> names;
+  for (const auto& x : list) names.push_back(x.name);
+  return names;
+}
 std::string optionLabel(const std::string& name) { return "option '" + name + "'"; }
 
 std::string describeSource(const InputSource& s) {
@@ -112,11 +120,9 @@ class Resolver {
       for (const auto& opt : n.options) {
         int oi = spec->optionIndex(opt.name);
         if (oi < 0) {
-          std::vector<std::string> optionNames;
-          for (const auto& o : spec->options) optionNames.push_back(o.name);
           diags_.error(DiagCode::UnknownOption, opt.keyWhere,
                        "node type '" + spec->type + "' has no option '" + opt.name + "'" +
-                           didYouMean(opt.name, optionNames),
+                           didYouMean(opt.name, namesOf(spec->options)),
                        n.id, optionLabel(opt.name));
           continue;
         }
@@ -140,11 +146,9 @@ class Resolver {
       // The name lists for "did you mean" are made only when there is an error to report.
       for (const auto& in : n.inputs)
         if (spec->inputIndex(in.port) < 0) {
-          std::vector<std::string> inputNames;
-          for (const auto& p : spec->inputs) inputNames.push_back(p.name);
           diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
                        "node type '" + spec->type + "' has no input '" + in.port + "'" +
-                           didYouMean(in.port, inputNames),
+                           didYouMean(in.port, namesOf(spec->inputs)),
                        n.id, inputLabel(in.port));
         }
     }
