@@ -63,7 +63,7 @@ std::string namesOf(const std::vector<Named>& list) {
 // A node that expands into ops (an expression), evaluated as resolve would build it: a
 // one-node graph whose inputs are parameters holding the given values, resolved with the
 // default registry (the math nodes the expansion is made of) and run through the backend.
-std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& options, const NodeSpec& withItsPorts,
+std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& options, const NodePorts& ports,
                                     const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env) {
   Graph g;
   g.file = "node '" + spec.type + "'";
@@ -74,7 +74,7 @@ std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& 
   if (options.is_object())
     for (auto it = options.begin(); it != options.end(); ++it) node.options.push_back({it.key(), it.value(), {}, {}});
   std::vector<Value> values;
-  for (const auto& p : withItsPorts.inputs) {
+  for (const auto& p : ports.inputs) {
     const Value* given = nullptr;
     for (const auto& [name, value] : inputs)
       if (name == p.name) given = &value;
@@ -153,11 +153,10 @@ std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& opti
     std::string why = checkOption(spec.options[static_cast<size_t>(oi)], it.value(), graphDir);
     if (!why.empty()) throw std::invalid_argument(spec.type + ": option '" + it.key() + "' " + why);
   }
-  NodeSpec withItsPorts = withPorts(spec, *parseOptions(spec, completeOptions(spec, options)));
+  NodePorts ports = portsOfNode(spec, options);  // the options are valid: checked above
   for (const auto& [name, value] : inputs)
-    if (withItsPorts.inputIndex(name) < 0)
-      throw std::invalid_argument(spec.type + ": no input '" + name + "'" + namesOf(withItsPorts.inputs));
-  if (spec.expand) return evaluateExpanded(spec, options, withItsPorts, inputs, env);
+    if (ports.inputIndex(name) < 0) throw std::invalid_argument(spec.type + ": no input '" + name + "'" + namesOf(ports.inputs));
+  if (spec.expand) return evaluateExpanded(spec, options, ports, inputs, env);
   Op op;
   op.spec = &spec;
   op.nodeId = spec.type;

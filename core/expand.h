@@ -5,6 +5,7 @@
 // diagnostic that points at the place it is about.
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,7 +18,8 @@
 namespace wg {
 
 struct ExpandContext {
-  const NodeSpec& spec;            // with the ports the options give (withPorts)
+  const NodeSpec& spec;            // the registry's
+  const NodePorts& ports;          // the ports the node's options give (NodeSpec::portsFor)
   const ParsedOptions& options;
   const Registry& registry;        // the node types the expansion is made of
   std::string nodeId;              // every appended op carries it
@@ -30,11 +32,24 @@ struct ExpandContext {
 
   std::vector<ValueRef> outputs;   // to fill: one per output port
 
-  // To refuse: set `error` (and leave the program as it was).
+  // To refuse: set `error`, and where the fault is: byte `errorOffset` of the string of
+  // Text option `errorOption` (resolve turns it into the file's column), or no option for
+  // the node as a whole. What was appended to the program is dropped.
   DiagCode errorCode = DiagCode::InvalidOption;
-  SourceRef errorWhere;
   std::string error;
-  std::string errorPort;           // the label: "option 'formula'", "input 'k'"
+  std::string errorOption;
+  std::size_t errorOffset = 0;
 };
+
+// The fault an expanding node's expansion finds with these options (as written), without
+// a graph around it: its inputs stand for values of their ports' types. For an editor that
+// shows a formula's fault as it is typed. None when the expansion succeeds, and when the
+// options themselves are not valid (checkOption says why).
+struct ExpansionFault {
+  std::string option;  // "" for the node as a whole
+  std::size_t offset = 0;
+  std::string message;
+};
+std::optional<ExpansionFault> expansionFault(const Registry& registry, const NodeSpec& spec, const nlohmann::json& written);
 
 }  // namespace wg

@@ -55,7 +55,7 @@ std::string GraphEditor::checkTarget(const InputTarget& target) const {
     const NodeSpec* spec = registry_->find(n->type);
     if (spec) {
       NodePorts ports = portsOfNode(*spec, writtenOptions(*n));  // an expression's follow from its options
-      if (std::none_of(ports.inputs.begin(), ports.inputs.end(), [&](const PortSpec& p) { return p.name == target.port; }))
+      if (ports.inputIndex(target.port) < 0)
         return "node '" + target.node + "' (" + n->type + ") has no input '" + target.port + "'";
     }
   }
@@ -212,7 +212,7 @@ std::string GraphEditor::connect(const std::string& fromNode, const std::string&
     const NodeSpec* spec = registry_->find(from->type);
     if (spec) {
       NodePorts ports = portsOfNode(*spec, writtenOptions(*from));
-      if (std::none_of(ports.outputs.begin(), ports.outputs.end(), [&](const PortSpec& p) { return p.name == fromPort; }))
+      if (ports.outputIndex(fromPort) < 0)
         return "node '" + fromNode + "' (" + from->type + ") has no output '" + fromPort + "'";
     }
   }

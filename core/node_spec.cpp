@@ -8,28 +8,18 @@ namespace wg {
 
 const Value& EvalEnvironment::builtin(Builtin b) const { return this->*builtinRow(b).environment; }
 
-static int indexByName(const std::vector<PortSpec>& ports, std::string_view name) {
+int portIndex(const std::vector<PortSpec>& ports, std::string_view name) {
   for (size_t i = 0; i < ports.size(); ++i)
     if (ports[i].name == name) return static_cast<int>(i);
   return -1;
 }
 
-int NodeSpec::inputIndex(std::string_view name) const { return indexByName(inputs, name); }
-int NodeSpec::outputIndex(std::string_view name) const { return indexByName(outputs, name); }
+int NodeSpec::inputIndex(std::string_view name) const { return portIndex(inputs, name); }
+int NodeSpec::outputIndex(std::string_view name) const { return portIndex(outputs, name); }
 int NodeSpec::optionIndex(std::string_view name) const {
   for (size_t i = 0; i < options.size(); ++i)
     if (options[i].name == name) return static_cast<int>(i);
   return -1;
-}
-
-NodeSpec withPorts(const NodeSpec& spec, const ParsedOptions& options) {
-  NodeSpec s = spec;
-  if (spec.portsFor) {
-    NodePorts ports = spec.portsFor(options);
-    s.inputs = std::move(ports.inputs);
-    s.outputs = std::move(ports.outputs);
-  }
-  return s;
 }
 
 int EmitContext::inputIndex(std::string_view port) const {

@@ -91,9 +91,14 @@ struct NodeSpec;
 struct ExpandContext;  // core/expand.h
 
 // The ports of a node whose ports follow from its options (NodeSpec::portsFor).
+// The index of the port named `name` in `ports`, or -1.
+int portIndex(const std::vector<PortSpec>& ports, std::string_view name);
+
 struct NodePorts {
   std::vector<PortSpec> inputs;
   std::vector<PortSpec> outputs;
+  int inputIndex(std::string_view name) const { return portIndex(inputs, name); }
+  int outputIndex(std::string_view name) const { return portIndex(outputs, name); }
 };
 
 // What infer sees and decides: input types (Invalid when unconnected without default)
@@ -284,9 +289,5 @@ struct NodeSpec {
   int optionIndex(std::string_view name) const;
 };
 
-// `spec` with the ports its options give (NodeSpec::portsFor); `spec` itself, copied, when
-// its ports are fixed. Whatever checks a node's ports against a graph (resolve, the node
-// probe, the editor) reads this one.
-NodeSpec withPorts(const NodeSpec& spec, const ParsedOptions& options);
 
 }  // namespace wg

@@ -1,6 +1,5 @@
 #include "core/registry.h"
 
-#include <algorithm>
 #include <set>
 #include <stdexcept>
 
@@ -43,12 +42,9 @@ static void checkHardCaseNames(const NodeSpec& s, const HardCase& hc) {
     if (!why.empty()) fail("option '" + it.key() + "' " + why);
   }
   NodePorts ports = portsOfNode(s, hc.options);  // an expression's inputs follow from its options
-  auto has = [](const std::vector<PortSpec>& list, const std::string& name) {
-    return std::any_of(list.begin(), list.end(), [&](const PortSpec& p) { return p.name == name; });
-  };
   for (const auto& [port, value] : hc.inputs)
-    if (!has(ports.inputs, port)) fail("no input '" + port + "'");
-  if (!hc.output.empty() && !has(ports.outputs, hc.output)) fail("no output '" + hc.output + "'");
+    if (ports.inputIndex(port) < 0) fail("no input '" + port + "'");
+  if (!hc.output.empty() && ports.outputIndex(hc.output) < 0) fail("no output '" + hc.output + "'");
   if (s.parseOptions) s.parseOptions(OptionReader(s, completeOptions(s, hc.options)));
 }
 

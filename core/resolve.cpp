@@ -1,8 +1,8 @@
 #include "core/resolve.h"
 
 #include <algorithm>
-#include <deque>
 #include <cmath>
+#include <memory>
 #include <optional>
 #include <set>
 #include <stdexcept>
@@ -22,6 +22,7 @@ namespace wg {
 namespace {
 
 std::string inputLabel(const std::string& port) { return "input '" + port + "'"; }
+std::string optionLabel(const std::string& name) { return "option '" + name + "'"; }
 
 // The names of a spec's ports or options, for "did you mean" (made only when reporting).
 template <class Named>
@@ -30,7 +31,6 @@ std::vector<std::string> namesOf(const std::vector<Named>& list) {
   for (const auto& x : list) names.push_back(x.name);
   return names;
 }
-std::string optionLabel(const std::string& name) { return "option '" + name + "'"; }
 
 std::string describeSource(const InputSource& s) {
   switch (s.kind) {
@@ -105,6 +105,7 @@ class Resolver {
 
   void lookUpSpecs() {
     specs_.assign(graph_.nodes.size(), nullptr);
+    ports_.resize(graph_.nodes.size());
     std::vector<std::string> typeNames;
     for (const NodeSpec* s : registry_.all()) typeNames.push_back(s->type);
     NameSuggester types(std::move(typeNames));
@@ -139,20 +140,24 @@ class Resolver {
         // Its ports follow from its options: without valid options there are none to check
         // against (the options are reported), and the node is left out like an unknown type.
         if (!optionsValid) continue;
-        specsWithPorts_.push_back(withPorts(*spec, *parseOptions(*spec, completeOptions(*spec, declaredOptions(n, *spec)))));
-        spec = &specsWithPorts_.back();
+        ports_[i] = std::make_unique<NodePorts>(
+            spec->portsFor(*parseOptions(*spec, completeOptions(*spec, declaredOptions(n, *spec)))));
       }
       specs_[i] = spec;
-      // The name lists for "did you mean" are made only when there is an error to report.
+      const std::vector<PortSpec>& inputs = inputsOf(i);
       for (const auto& in : n.inputs)
-        if (spec->inputIndex(in.port) < 0) {
+        if (portIndex(inputs, in.port) < 0) {
           diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
                        "node type '" + spec->type + "' has no input '" + in.port + "'" +
-                           didYouMean(in.port, namesOf(spec->inputs)),
+                           didYouMean(in.port, namesOf(inputs)),
                        n.id, inputLabel(in.port));
         }
     }
   }
+
+  // Node i's ports: its type's, or (an expression's) those its options give.
+  const std::vector<PortSpec>& inputsOf(size_t i) const { return ports_[i] ? ports_[i]->inputs : specs_[i]->inputs; }
+  const std::vector<PortSpec>& outputsOf(size_t i) const { return ports_[i] ? ports_[i]->outputs : specs_[i]->outputs; }
 
   // The options a node writes that its type declares (the others are reported).
   static nlohmann::json declaredOptions(const Node& node, const NodeSpec& spec) {
@@ -188,13 +193,10 @@ class Resolver {
       return -1;
     }
     const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
-    if (spec && spec->outputIndex(s.port) < 0) {
+    if (spec && portIndex(outputsOf(static_cast<size_t>(it->second)), s.port) < 0) {
+      std::vector<std::string> names = namesOf(outputsOf(static_cast<size_t>(it->second)));
       std::string outs;
-      std::vector<std::string> names;
-      for (const auto& o : spec->outputs) {
-        outs += (outs.empty() ? "" : ", ") + o.name;
-        names.push_back(o.name);
-      }
+      for (const auto& name : names) outs += (outs.empty() ? "" : ", ") + name;
       diags_.error(DiagCode::UnknownOutputPort, s.where,
                    "node '" + s.node + "' (" + spec->type + ") has no output '" + s.port +
                        "'; its outputs are: " + outs + didYouMean(s.port, names),
@@ -330,7 +332,7 @@ class Resolver {
           node = it->second;
         }
         if (const auto& values = expandedOutputs_[static_cast<size_t>(node)]; !values.empty()) {
-          int port = specs_[static_cast<size_t>(node)]->outputIndex(s.port);
+          int port = portIndex(outputsOf(static_cast<size_t>(node)), s.port);
           if (port < 0) return std::nullopt;
           return values[static_cast<size_t>(port)];
         }
@@ -372,14 +374,15 @@ class Resolver {
       op.options = completeOptions(*spec, declaredOptions(node, *spec));
       op.parsedOptions = parseOptions(*spec, op.options);  // valid: lookUpSpecs checked each value
 
-      size_t nin = spec->inputs.size();
+      const std::vector<PortSpec>& ports = inputsOf(static_cast<size_t>(ni));
+      size_t nin = ports.size();
       op.inputs.assign(nin, ValueRef{});
       std::vector<Type> sourceTypes(nin, Type::Invalid);
       std::vector<const NodeInput*> given(nin, nullptr);
       bool ok = true;
       for (size_t k = 0; k < node.inputs.size(); ++k) {
         const NodeInput& in = node.inputs[k];
-        int pi = spec->inputIndex(in.port);
+        int pi = portIndex(ports, in.port);
         if (pi < 0) continue;
         given[static_cast<size_t>(pi)] = &in;
         // The referenced node was found by id once, in topologicalOrder.
@@ -397,7 +400,7 @@ class Resolver {
       }
       for (size_t pi = 0; pi < nin; ++pi) {
         if (given[pi]) continue;
-        const PortSpec& port = spec->inputs[pi];
+        const PortSpec& port = ports[pi];
         if (port.defaultValue) {
           op.inputs[pi] = ValueRef::constant_(*port.defaultValue);
           sourceTypes[pi] = port.defaultValue->type;
@@ -424,16 +427,16 @@ class Resolver {
 
   void listNodeOutputs(NodeOutputValues& out) const {
     for (size_t i = 0; i < graph_.nodes.size(); ++i) {
-      const NodeSpec* spec = specs_[i];
-      if (!spec) continue;
+      if (!specs_[i]) continue;
+      const std::vector<PortSpec>& ports = outputsOf(i);
       std::vector<NodeOutputValue> values;
       if (!expandedOutputs_[i].empty()) {
-        for (size_t p = 0; p < spec->outputs.size(); ++p)
-          values.push_back({spec->outputs[p].name, expandedOutputs_[i][p], program_.typeOf(expandedOutputs_[i][p])});
+        for (size_t p = 0; p < ports.size(); ++p)
+          values.push_back({ports[p].name, expandedOutputs_[i][p], program_.typeOf(expandedOutputs_[i][p])});
       } else if (int op = opOfNode_[i]; op >= 0) {
         const Op& o = program_.ops[static_cast<size_t>(op)];
-        for (size_t p = 0; p < spec->outputs.size(); ++p)
-          values.push_back({spec->outputs[p].name, ValueRef::op(op, static_cast<int>(p)), o.outputTypes[p]});
+        for (size_t p = 0; p < ports.size(); ++p)
+          values.push_back({ports[p].name, ValueRef::op(op, static_cast<int>(p)), o.outputTypes[p]});
       } else {
         continue;
       }
@@ -447,30 +450,37 @@ class Resolver {
   void expandNode(int ni, const Op& op, const std::vector<Type>& sourceTypes, const std::vector<const NodeInput*>& given) {
     const Node& node = graph_.nodes[static_cast<size_t>(ni)];
     const NodeSpec& spec = *op.spec;
-    std::vector<ValueRef> inputs(spec.inputs.size());
-    for (size_t pi = 0; pi < spec.inputs.size(); ++pi) {
-      Type want = spec.inputs[pi].type;  // expanding nodes' ports are Fixed (registry check)
-      if (!implicitlyConvertible(sourceTypes[pi], want)) {
-        mismatch(node, given[pi], spec.inputs[pi].name,
-                 "input '" + spec.inputs[pi].name + "' expects " + std::string(typeName(want)) + ", but " +
+    NodePorts fixedPorts;  // an expanding type whose ports do not depend on its options
+    if (!ports_[static_cast<size_t>(ni)]) fixedPorts = {spec.inputs, spec.outputs};
+    const NodePorts& ports = ports_[static_cast<size_t>(ni)] ? *ports_[static_cast<size_t>(ni)] : fixedPorts;
+    std::vector<ValueRef> inputs(ports.inputs.size());
+    for (size_t pi = 0; pi < ports.inputs.size(); ++pi) {
+      const PortSpec& port = ports.inputs[pi];
+      if (port.kind != PortKind::Fixed)  // what a port of another kind means is the expansion's to say
+        throw std::logic_error("node type '" + spec.type + "' gives its input '" + port.name + "' no fixed type");
+      if (!implicitlyConvertible(sourceTypes[pi], port.type)) {
+        mismatch(node, given[pi], port.name,
+                 "input '" + port.name + "' expects " + std::string(typeName(port.type)) + ", but " +
                      sourceName(given[pi]) + " is " + std::string(typeName(sourceTypes[pi])));
         return;
       }
-      inputs[pi] = splat(op.inputs[pi], want, node);
+      inputs[pi] = splat(op.inputs[pi], port.type, node);
     }
-    ExpandContext ctx{spec, *op.parsedOptions, registry_, node.id, node.where, std::move(inputs), program_,
+    ExpandContext ctx{spec, ports, *op.parsedOptions, registry_, node.id, node.where, std::move(inputs), program_,
                       [&](std::string_view option, size_t offset) { return optionWhere(node, option, offset); },
-                      {}, DiagCode::InvalidOption, {}, {}, {}};
+                      {}, DiagCode::InvalidOption, {}, {}, 0};
     size_t opsBefore = program_.ops.size();
     spec.expand(ctx);
     if (!ctx.error.empty()) {
       program_.ops.resize(opsBefore);
-      diags_.error(ctx.errorCode, ctx.errorWhere.line > 0 ? ctx.errorWhere : node.where, ctx.error, node.id, ctx.errorPort);
+      bool atOption = !ctx.errorOption.empty();
+      diags_.error(ctx.errorCode, atOption ? optionWhere(node, ctx.errorOption, ctx.errorOffset) : node.where, ctx.error,
+                   node.id, atOption ? optionLabel(ctx.errorOption) : "");
       return;
     }
-    if (ctx.outputs.size() != spec.outputs.size())
+    if (ctx.outputs.size() != ports.outputs.size())
       throw std::logic_error("node type '" + spec.type + "' expanded into " + std::to_string(ctx.outputs.size()) +
-                             " outputs for its " + std::to_string(spec.outputs.size()) + " output ports");
+                             " outputs for its " + std::to_string(ports.outputs.size()) + " output ports");
     expandedOutputs_[static_cast<size_t>(ni)] = std::move(ctx.outputs);
   }
 
@@ -592,7 +602,8 @@ class Resolver {
   std::vector<int> opOfNode_;  // by node index: its op, or -1
   // By node index, for a node that expanded into ops: the value of each output port.
   std::vector<std::vector<ValueRef>> expandedOutputs_;
-  std::deque<NodeSpec> specsWithPorts_;  // specs_ of nodes whose ports follow from their options
+  // By node index, for a node whose ports follow from its options: those ports (null: the type's).
+  std::vector<std::unique_ptr<NodePorts>> ports_;
   std::optional<std::vector<std::string_view>> sourceLines_;  // the graph file's, split on first use
   // Node i's inputs[k] reads node inputNode_[inputBase_[i] + k] (-1: not a node output).
   std::vector<size_t> inputBase_;

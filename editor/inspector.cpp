@@ -7,8 +7,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/expression_parser.h"
-#include "core/expression_types.h"
+#include "core/expand.h"
 #include "core/load_limits.h"
 #include "core/node_options.h"
 #include "core/number_format.h"
@@ -27,38 +26,32 @@ bool editFloats(const char* label, std::vector<float>& v, float lo, float hi, bo
   return ImGui::DragScalarN(label, ImGuiDataType_Float, v.data(), n, 0.01f, nullptr, nullptr, "%.3f");
 }
 
-// The first fault of an expression's formula over the inputs its options declare, found
-// by the parser and type rules that compile it: shown under the field while the user
-// types, before the graph is compiled. None while the declared inputs are not valid
-// (their own field says why).
-std::optional<expr::FormulaError> formulaFault(const std::string& formula, const nlohmann::json& declared) {
-  expr::FormulaInputs inputs;
-  if (!declared.is_object()) return std::nullopt;
-  for (auto it = declared.begin(); it != declared.end(); ++it) {
-    auto type = it.value().is_string() ? parseType(it.value().get<std::string>()) : std::nullopt;
-    if (!type || !isFloatScalarOrVector(*type)) return std::nullopt;
-    inputs.emplace_back(it.key(), *type);
-  }
-  auto parsed = expr::parseFormula(formula);
-  if (auto* e = std::get_if<expr::FormulaError>(&parsed)) return *e;
-  auto typed = expr::typeFormula(std::get<expr::Ast>(parsed), inputs);
-  if (auto* e = std::get_if<expr::FormulaError>(&typed)) return *e;
-  return std::nullopt;
-}
-
-// The fault in red, then the formula's line it is on with a caret under its character
-// (ImGui's default font is monospaced).
-void drawFormulaFault(const std::string& formula, const expr::FormulaError& fault) {
+// The fault in red, then the line of the option's text it is on with a caret under its
+// byte (ImGui's default font is monospaced).
+void drawTextFault(const std::string& text, std::size_t offset, const std::string& message) {
   ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.4f, 1.0f));
-  ImGui::TextWrapped("%s", fault.message.c_str());
-  size_t offset = std::min(fault.span.offset, formula.size());
-  size_t lineStart = formula.rfind('\n', offset == 0 ? 0 : offset - 1);
-  lineStart = lineStart == std::string::npos || offset == 0 ? 0 : lineStart + 1;
-  size_t lineEnd = formula.find('\n', offset);
-  std::string line = formula.substr(lineStart, lineEnd == std::string::npos ? std::string::npos : lineEnd - lineStart);
-  ImGui::TextUnformatted(line.c_str());
+  ImGui::TextWrapped("%s", message.c_str());
+  offset = std::min(offset, text.size());
+  size_t lineStart = offset == 0 ? std::string::npos : text.rfind('\n', offset - 1);
+  lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
+  size_t lineEnd = text.find('\n', offset);
+  ImGui::TextUnformatted(text.substr(lineStart, lineEnd == std::string::npos ? std::string::npos : lineEnd - lineStart).c_str());
   ImGui::TextUnformatted((std::string(offset - lineStart, ' ') + "^").c_str());
   ImGui::PopStyleColor();
+}
+
+// The expansion's fault for a node's written options, computed again only when they
+// change (the inspector is drawn every frame).
+const std::optional<ExpansionFault>& cachedExpansionFault(const Registry& registry, const NodeSpec& spec,
+                                                          const nlohmann::json& written) {
+  static std::string key;
+  static std::optional<ExpansionFault> fault;
+  std::string now = spec.type + written.dump();
+  if (now != key) {
+    key = std::move(now);
+    fault = expansionFault(registry, spec, written);
+  }
+  return fault;
 }
 
 // A text field over a string option; the option is set as the user types (one undo step
@@ -216,14 +209,14 @@ void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
         break;
       }
       case OptionSpec::Kind::Text: {
-        std::string text = value.is_string() ? value.get<std::string>() : "";
-        editTextOption(editor, id, o, label, text);
-        if (spec->type == "expression" && o.name == "formula") {
-          const Node* edited = editor.graph().findNode(id);
-          nlohmann::json written = edited ? writtenOptions(*edited) : nlohmann::json::object();
-          nlohmann::json declared = written.contains("inputs") ? written["inputs"] : spec->options[static_cast<size_t>(spec->optionIndex("inputs"))].defaultValue;
-          std::string now = written.contains("formula") && written["formula"].is_string() ? written["formula"].get<std::string>() : text;
-          if (auto fault = formulaFault(now, declared)) drawFormulaFault(now, *fault);
+        editTextOption(editor, id, o, label, value.is_string() ? value.get<std::string>() : "");
+        // A node that expands its options (an expression's formula): the fault inline.
+        const Node* edited = editor.graph().findNode(id);
+        if (spec->expand && edited) {
+          nlohmann::json written = writtenOptions(*edited);
+          const auto& fault = cachedExpansionFault(registry, *spec, written);
+          if (fault && fault->option == o.name && value.is_string())
+            drawTextFault(value.get<std::string>(), fault->offset, fault->message);
         }
         break;
       }

@@ -79,9 +79,9 @@ void expandExpression(ExpandContext& ctx) {
   const auto& o = ctx.options.as<ExpressionOptions>();
   auto refuse = [&](DiagCode code, const expr::FormulaError& e) {
     ctx.errorCode = code;
-    ctx.errorWhere = ctx.optionWhere("formula", e.span.offset);
     ctx.error = e.message;
-    ctx.errorPort = "option 'formula'";
+    ctx.errorOption = "formula";
+    ctx.errorOffset = e.span.offset;
   };
   auto parsed = expr::parseFormula(o.formula);
   if (const auto* e = std::get_if<expr::FormulaError>(&parsed)) return refuse(DiagCode::FormulaSyntax, *e);
@@ -149,20 +149,13 @@ NodeSpec expressionNode() {
       "division as on the GPU).";
   s.cost = "the sum of the nodes it expands into; the passes fold constants and merge repeats across formulas";
   s.outputs = {ports::custom("out", "the formula's value: float or vecN, by GLSL's rules")};
-  OptionSpec formula;
-  formula.name = "formula";
-  formula.kind = OptionSpec::Kind::Text;
-  formula.defaultValue = "x";
-  formula.doc = "the formula, e.g. \"mix(shallow, deep, 1.0 - exp(-k * d))\" (at most 4096 bytes, 64 levels of brackets, calls and ?: inside each other)";
-  formula.validate = checkFormulaText;
-  OptionSpec inputs;
-  inputs.name = "inputs";
-  inputs.kind = OptionSpec::Kind::Json;
-  inputs.defaultValue = {{"x", "float"}};
-  inputs.doc = "the inputs the formula reads and their types: {\"name\": \"float\" | \"vec2\" | \"vec3\" | \"vec4\"} "
-               "(at most 32); each is an input port of the node, required";
-  inputs.validate = checkDeclaredInputs;
-  s.options = {formula, inputs};
+  s.options = {
+      ports::checked(OptionSpec::Kind::Text, "formula", "x", checkFormulaText,
+                     "the formula, e.g. \"mix(shallow, deep, 1.0 - exp(-k * d))\" (at most 4096 bytes, 64 levels of "
+                     "brackets, calls and ?: inside each other)"),
+      ports::checked(OptionSpec::Kind::Json, "inputs", {{"x", "float"}}, checkDeclaredInputs,
+                     "the inputs the formula reads and their types: {\"name\": \"float\" | \"vec2\" | \"vec3\" | "
+                     "\"vec4\"} (at most 32); each is an input port of the node, required")};
   s.parseOptions = optionParser(parseExpressionOptions);
   s.hardCases = formulaHardCases();
   s.portsFor = expressionPorts;

@@ -180,20 +180,16 @@ NodeSpec gerstnerWavesNode() {
                ports::fixed("normal", Type::Vec3, "unit normal of the displaced surface, y >= 0"),
                ports::fixed("tangent", Type::Vec3, "unit dP/dx (the surface's x direction)"),
                ports::fixed("binormal", Type::Vec3, "unit dP/dz (the surface's z direction)")};
-  OptionSpec wavesOpt;
-  wavesOpt.name = "waves";
-  wavesOpt.kind = OptionSpec::Kind::Json;
-  wavesOpt.defaultValue = nlohmann::json::parse(R"([
+  s.options = {ports::checked(
+      OptionSpec::Kind::Json, "waves", nlohmann::json::parse(R"([
     {"direction": [1, 0], "steepness": 0.5, "wavelength": 10},
     {"direction": [0, 1], "steepness": 0.25, "wavelength": 20},
     {"direction": [1, 1], "steepness": 0.15, "wavelength": 10}
-  ])");
-  wavesOpt.doc =
+  ])"),
+      validateGerstnerWaves,
       "1 to 16 waves, each {\"direction\": [x, z] (normalised; not zero), \"steepness\": Q in [0, 1], "
       "\"wavelength\": metres > 0, \"amplitude\": metres (optional, default Q/k as in the stylized water shader), \"phase\": radians "
-      "(optional)}. The sum of Q k A over the waves must not exceed 1, or the surface folds over.";
-  wavesOpt.validate = validateGerstnerWaves;
-  s.options = {wavesOpt};
+      "(optional)}. The sum of Q k A over the waves must not exceed 1, or the surface folds over.")};
   s.isSource = true;
   s.parseOptions = optionParser(parseGerstnerOptions);
   s.emit = [](EmitContext& ctx) {

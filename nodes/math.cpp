@@ -257,13 +257,8 @@ NodeSpec swizzleNode() {
   NodeSpec s = mathNode("swizzle", "Picks and reorders components, as GLSL's .xyzw.", "out = x.<mask>");
   s.inputs = {ports::custom("x", "float or vector")};
   s.outputs = {ports::custom("out", "float or vecN, N = mask length")};
-  OptionSpec mask;
-  mask.name = "mask";
-  mask.kind = OptionSpec::Kind::Json;
-  mask.defaultValue = "xyz";
-  mask.doc = "1 to 4 of x y z w (or r g b a), e.g. \"xz\" or \"zyx\"";
-  mask.validate = checkSwizzleMask;
-  s.options = {mask};
+  s.options = {ports::checked(OptionSpec::Kind::Json, "mask", "xyz", checkSwizzleMask,
+                              "1 to 4 of x y z w (or r g b a), e.g. \"xz\" or \"zyx\"")};
   s.parseOptions = optionParser(parseSwizzleOptions);
   s.infer = [](InferContext& ctx) {
     if (!requireFloatVector(ctx, 0, 1)) return;

@@ -1,6 +1,7 @@
 #pragma once
 // Short constructors for the ports and options of a NodeSpec, so a node file reads as a
 // declaration.
+#include <functional>
 #include <string>
 
 #include "core/node_spec.h"
@@ -79,6 +80,17 @@ inline OptionSpec texture(std::string name, std::string def, std::string doc) {
   o.name = std::move(name);
   o.kind = OptionSpec::Kind::Texture;
   o.defaultValue = std::move(def);
+  o.doc = std::move(doc);
+  return o;
+}
+// A Json or Text option that checks its own value: `validate` returns "" or why it is refused.
+inline OptionSpec checked(OptionSpec::Kind kind, std::string name, nlohmann::json def,
+                          std::function<std::string(const nlohmann::json&)> validate, std::string doc) {
+  OptionSpec o;
+  o.name = std::move(name);
+  o.kind = kind;
+  o.defaultValue = std::move(def);
+  o.validate = std::move(validate);
   o.doc = std::move(doc);
   return o;
 }

@@ -9,6 +9,7 @@
 
 #include "codegen/compile.h"
 #include "codegen/probe_program.h"
+#include "core/expand.h"
 #include "core/graph_io.h"
 #include "core/resolve.h"
 #include "nodes/registry.h"
@@ -238,6 +239,24 @@ TEST(ExpressionNode, AFormulaLongerThanAStringOfTheFormatIsRefusedWhenSet) {
   ASSERT_EQ(diags.errorCount(), 1u);
   EXPECT_EQ(codeString(diags.all()[0].code), "WG030");
   EXPECT_NE(diags.all()[0].message.find("at most 4096"), std::string::npos) << diags.all()[0].message;
+}
+
+// What the editor shows as a formula is typed: the fault with its byte in the formula,
+// from the same expansion resolve runs, without a graph around the node.
+TEST(ExpressionNode, TheExpansionsFaultIsFoundWithoutAGraph) {
+  const NodeSpec& spec = *defaultRegistry().find("expression");
+  nlohmann::json declared = {{"c", "vec3"}, {"k", "float"}};
+  auto fault = expansionFault(defaultRegistry(), spec, {{"inputs", declared}, {"formula", "c * mixx(k)"}});
+  ASSERT_TRUE(fault);
+  EXPECT_EQ(fault->option, "formula");
+  EXPECT_EQ(fault->offset, 4u);
+  EXPECT_EQ(fault->message, "unknown function 'mixx' (did you mean 'mix'?)");
+  auto typeFault = expansionFault(defaultRegistry(), spec, {{"inputs", declared}, {"formula", "c + vec2(k)"}});
+  ASSERT_TRUE(typeFault);
+  EXPECT_EQ(typeFault->offset, 0u);
+  EXPECT_FALSE(expansionFault(defaultRegistry(), spec, {{"inputs", declared}, {"formula", "c * k"}}));
+  // Options that are not valid are checkOption's to report, not the expansion's.
+  EXPECT_FALSE(expansionFault(defaultRegistry(), spec, {{"inputs", {{"c", "colour"}}}, {"formula", "c"}}));
 }
 
 TEST(ExpressionNode, DiagnosticsOfAGraphBuiltInMemoryStillNameTheOption) {
