@@ -104,6 +104,7 @@ nlohmann::json sarifLog(const Diagnostics& diags) {
       text += d.port + ")";
     }
     for (const auto& note : d.notes) text += "\nnote: " + note;
+    for (const auto& note : d.locatedNotes) text += "\nnote: " + note.message;
     nlohmann::json r{{"ruleId", codeString(d.code)},
                      {"level", sarifLevel(d.severity)},
                      {"message", {{"text", text}}}};
@@ -121,6 +122,19 @@ nlohmann::json sarifLog(const Diagnostics& diags) {
         loc["logicalLocations"] = nlohmann::json::array({{{"name", d.node}, {"kind", "object"}}});
       r["locations"] = nlohmann::json::array({loc});
     }
+    // The subgraph instances it lies in, innermost first.
+    nlohmann::json related = nlohmann::json::array();
+    for (const auto& note : d.locatedNotes) {
+      nlohmann::json phys{{"artifactLocation", {{"uri", pathToUri(note.where.file)}}}};
+      if (note.where.line > 0) {
+        nlohmann::json region{{"startLine", note.where.line}};
+        if (note.where.col > 0)
+          region["startColumn"] = columns.utf16Column(note.where.file, note.where.line, note.where.col);
+        phys["region"] = region;
+      }
+      related.push_back({{"id", related.size()}, {"physicalLocation", phys}, {"message", {{"text", note.message}}}});
+    }
+    if (!related.empty()) r["relatedLocations"] = related;
     nlohmann::json props = nlohmann::json::object();
     if (!d.node.empty()) props["node"] = d.node;
     if (!d.port.empty()) props["port"] = d.port;

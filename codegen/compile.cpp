@@ -61,7 +61,7 @@ void reportValidation(const ValidationResult& vr, const std::vector<EmittedShade
     std::string where = m.fileName.empty() ? "link" : m.fileName + (m.line ? ":" + std::to_string(m.line) : "");
     if (op >= 0) {
       const Op& o = program.ops[static_cast<size_t>(op)];
-      diags.error(code, o.where, "generated GLSL rejected at " + where + ": " + m.text, o.nodeId);
+      withInstanceNotes(diags.error(code, o.where, "generated GLSL rejected at " + where + ": " + m.text, o.nodeId), o);
     } else {
       diags.error(code, SourceRef{program.file, 0, 0}, "generated GLSL rejected at " + where + ": " + m.text);
     }

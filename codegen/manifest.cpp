@@ -82,6 +82,7 @@ nlohmann::json Manifest::toJson() const {
   m["graph"] = graph;
   if (!description.empty()) m["description"] = description;
   if (!preset.empty()) m["preset"] = preset;
+  if (!imports.empty()) m["imports"] = imports;
 
   nlohmann::json& targetsJson = m["targets"] = nlohmann::json::object();
   for (const auto& t : targets) targetsJson[t.name] = targetJson(t);

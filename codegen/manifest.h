@@ -87,6 +87,8 @@ struct Manifest {
   std::string graph;
   std::string description;  // "" when the graph has none
   std::string preset;       // the preset whose values became the defaults; "" for none
+  // The graph files the graph imports (its subgraphs), relative to its folder, each once.
+  std::vector<std::string> imports;
   std::vector<ManifestTarget> targets;
   // The shader interface, the same for every target (names, order, bindings).
   std::vector<AttributeInfo> attributes;

@@ -30,6 +30,7 @@ Manifest buildManifest(const Program& program, const std::vector<std::pair<Targe
                        const std::string& baseName) {
   Manifest m;
   m.graph = program.graphName;
+  m.imports = program.importedFiles;
   m.description = program.description;
 
   for (const auto& [target, er] : emitted) {

@@ -288,7 +288,7 @@ Manifest Manifest::fromJson(const json& j) {
   Manifest m;
   m.passes = passesOf(j);
   onlyMembers(j,
-              {"format", "graph", "description", "preset", "targets", "attributes", "uniforms", "varyings", "functions",
+              {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
                "textures", "tessellation", "resources", "passes", "nodes"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
@@ -296,6 +296,7 @@ Manifest Manifest::fromJson(const json& j) {
   m.graph = optionalText(j, "graph", "the manifest");
   m.description = optionalText(j, "description", "the manifest");
   m.preset = optionalText(j, "preset", "the manifest");
+  if (const json* imports = member(j, "imports")) m.imports = texts(*imports, "the manifest's \"imports\"");
   if (const json* targets = member(j, "targets")) {
     if (!targets->is_object()) fail("the manifest's \"targets\" is not an object");
     for (const auto& [name, files] : targets->items()) m.targets.push_back(targetOf(name, files));

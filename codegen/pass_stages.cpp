@@ -52,10 +52,11 @@ PassResult stagePass(Program& program, PassContext& ctx) {
     for (const auto& in : op.inputs)
       fragmentOnly |= in.kind == ValueRef::Kind::Builtin && isFragmentOnlyBuiltin(static_cast<Builtin>(in.index));
     if (fragmentOnly) {
-      ctx.diags.error(DiagCode::StageMismatch, op.where,
-                      "'" + op.spec->type + "' runs only in the fragment stage, but it feeds the vertex output '" +
-                          vertexSlot[i] + "'",
-                      op.nodeId);
+      withInstanceNotes(ctx.diags.error(DiagCode::StageMismatch, op.where,
+                                        "'" + op.spec->type + "' runs only in the fragment stage, but it feeds the vertex output '" +
+                                            vertexSlot[i] + "'",
+                                        op.nodeId),
+                        op);
       failed = true;
     }
   }
@@ -92,9 +93,10 @@ PassResult stagePass(Program& program, PassContext& ctx) {
     Op& op = program.ops[i];
     op.stage = (inVertex[i] ? kVertexStage : 0u) | (inFragment[i] ? kFragmentStage : 0u);
     if (inFragment[i] && !(op.spec->stages & kFragmentStage)) {
-      ctx.diags.error(DiagCode::StageMismatch, op.where,
-                      "'" + op.spec->type + "' runs only in the vertex stage, but the fragment stage needs it",
-                      op.nodeId);
+      withInstanceNotes(ctx.diags.error(DiagCode::StageMismatch, op.where,
+                                        "'" + op.spec->type + "' runs only in the vertex stage, but the fragment stage needs it",
+                                        op.nodeId),
+                        op);
       failed = true;
     }
     for (size_t p = 0; p < varyingPorts[i].size(); ++p)

@@ -64,8 +64,9 @@ void reportUnusableTexture(const Program& program, const Graph* graph, const std
                 "texture '" + source + "' is not usable: " + why);
     return;
   }
-  diags.error(DiagCode::InvalidOption, optionPosition(graph, *op, option), "option '" + option + "' is not usable: " + why,
-              op->nodeId, "option '" + option + "'");
+  withInstanceNotes(diags.error(DiagCode::InvalidOption, optionPosition(graph, *op, option),
+                                "option '" + option + "' is not usable: " + why, op->nodeId, "option '" + option + "'"),
+                    *op);
 }
 
 std::string textureFileName(const std::string& graphName, const std::string& sampler) {

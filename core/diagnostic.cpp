@@ -56,6 +56,10 @@ void Diagnostics::append(const Diagnostics& other) {
   for (const auto& [file, text] : other.sources_) sources_.emplace(file, text);
 }
 
+void Diagnostics::addLocatedNoteFrom(size_t first, const LocatedNote& note) {
+  for (size_t i = first; i < list_.size(); ++i) list_[i].locatedNotes.push_back(note);
+}
+
 bool Diagnostics::hasErrors() const { return errorCount() > 0; }
 
 size_t Diagnostics::errorCount() const {
@@ -124,16 +128,21 @@ std::string oneLine(const std::string& text) {
 }
 }  // namespace
 
-std::string formatText(const Diagnostic& d) {
-  std::string s;
-  if (!d.where.file.empty()) {
-    s += oneLine(d.where.file);
-    if (d.where.line > 0) {
-      s += ':' + std::to_string(d.where.line);
-      if (d.where.col > 0) s += ':' + std::to_string(d.where.col);
-    }
-    s += ": ";
+namespace {
+// "file:line:col: " (as much of it as is known), or "".
+std::string locationPrefix(const SourceRef& where) {
+  if (where.file.empty()) return "";
+  std::string s = oneLine(where.file);
+  if (where.line > 0) {
+    s += ':' + std::to_string(where.line);
+    if (where.col > 0) s += ':' + std::to_string(where.col);
   }
+  return s + ": ";
+}
+}  // namespace
+
+std::string formatText(const Diagnostic& d) {
+  std::string s = locationPrefix(d.where);
   s += severityName(d.severity);
   s += ": [" + codeString(d.code) + "] " + oneLine(d.message);
   if (!d.node.empty() || !d.port.empty()) {
@@ -144,6 +153,7 @@ std::string formatText(const Diagnostic& d) {
     s += ")";
   }
   for (const auto& note : d.notes) s += "\n  note: " + oneLine(note);
+  for (const auto& note : d.locatedNotes) s += "\n" + locationPrefix(note.where) + "note: " + oneLine(note.message);
   return s;
 }
 
@@ -158,6 +168,12 @@ nlohmann::json toJson(const Diagnostic& d) {
   if (!d.node.empty()) j["node"] = d.node;
   if (!d.port.empty()) j["port"] = d.port;
   if (!d.notes.empty()) j["notes"] = d.notes;
+  if (!d.locatedNotes.empty()) {
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& n : d.locatedNotes)
+      list.push_back({{"file", n.where.file.str()}, {"line", n.where.line}, {"column", n.where.col}, {"message", n.message}});
+    j["located_notes"] = std::move(list);
+  }
   return j;
 }
 

@@ -29,6 +29,13 @@ std::string codeString(DiagCode code);  // "WG029"
 
 enum class Severity { Error, Warning, Note };
 
+// A note that points somewhere else: each instance of a subgraph that a diagnostic inside
+// it lies in, innermost first (`lake.json:12:5: note: in instance 'foam' of 'lib/foam.json'`).
+struct LocatedNote {
+  SourceRef where;
+  std::string message;
+};
+
 struct Diagnostic {
   DiagCode code{};
   Severity severity = Severity::Error;
@@ -37,6 +44,7 @@ struct Diagnostic {
   std::string node;  // node id, when one is involved
   std::string port;  // "input 'normal'", "option 'model'", "output 'color'"
   std::vector<std::string> notes;
+  std::vector<LocatedNote> locatedNotes;
 };
 
 // A hostile file can hold a million faults; each file keeps its first kMaxPerFile
@@ -59,6 +67,9 @@ class Diagnostics {
   // The diagnostics kept (at most kMaxPerFile per file), without the WG036 notes.
   const std::vector<Diagnostic>& all() const { return list_; }
   bool empty() const { return list_.empty(); }
+  // Adds `note` to every diagnostic kept from the `first`-th on (an index into all()):
+  // those reported while resolving one subgraph instance get the instance's note.
+  void addLocatedNoteFrom(size_t first, const LocatedNote& note);
   // Stable order for printing: by file, line, column, then insertion; then, for each file
   // over the cap, the note saying how many were left out.
   std::vector<Diagnostic> sorted() const;

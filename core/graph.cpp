@@ -20,6 +20,12 @@ const Preset* Graph::findPreset(std::string_view name) const {
   return nullptr;
 }
 
+const Import* Graph::findImport(std::string_view name) const {
+  for (const auto& i : imports)
+    if (i.name == name) return &i;
+  return nullptr;
+}
+
 nlohmann::json writtenOptions(const Node& node) {
   nlohmann::json written = nlohmann::json::object();
   for (const auto& o : node.options) written[o.name] = o.value;

@@ -3,6 +3,7 @@
 // element with the file:line:col it came from. Nothing here knows the node registry;
 // core/resolve.h turns a Graph into a typed Program.
 #include <array>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -85,12 +86,42 @@ struct GraphOutput {
   SourceRef keyWhere;
 };
 
+struct Graph;
+
+// `"imports": {"foam": "lib/shore_foam.json"}`: the graph at that path (relative to this
+// file) becomes the node type `foam` here. core/graph_imports.h loads it.
+struct Import {
+  std::string name;                    // the node type it becomes
+  std::string path;                    // as written
+  SourceRef where;                     // the key
+  SourceRef pathWhere;                 // the path string
+  std::shared_ptr<const Graph> graph;  // set by loadImports; one Graph per file, shared
+};
+
+// A function graph's outputs, `"interface": {"outputs": {"foam": {...}}}`: what an instance
+// of it offers as `instance.port`. Its inputs are its parameters (docs/graph-format.md).
+struct InterfaceOutput {
+  std::string name;
+  Type type = Type::Float;
+  InputSource source;
+  std::string description;
+  SourceRef where;  // the output's key
+};
+
+struct GraphInterface {
+  std::string description;
+  std::vector<InterfaceOutput> outputs;  // file order
+  SourceRef where;                       // the "interface" object
+};
+
 struct Graph {
   std::string file;      // path as given, used in diagnostics
   std::string schema;    // optional "$schema", kept for editors
   int version = kGraphFormatVersion;
   std::string name;
   std::string description;
+  std::vector<Import> imports;               // file order
+  std::optional<GraphInterface> interface;  // set: a function graph, usable as a node type
   std::vector<Parameter> parameters;  // file order
   std::vector<Preset> presets;        // file order
   std::vector<Node> nodes;            // file order
@@ -100,6 +131,7 @@ struct Graph {
   const Node* findNode(std::string_view id) const;
   const Parameter* findParameter(std::string_view name) const;
   const Preset* findPreset(std::string_view name) const;
+  const Import* findImport(std::string_view name) const;
 };
 
 // True for [A-Za-z_][A-Za-z0-9_]*, at most 64 characters.

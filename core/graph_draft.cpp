@@ -81,9 +81,12 @@ void GraphDraftReader::startContainer(bool isArray, JsonPosition at) {
     switch (open_.back().level) {
       case Level::Root:
         if (!isArray && named({"parameters", "presets", "outputs"})) structured = true, level = Level::Section;
+        if (!isArray && s.name == "imports") structured = true, level = Level::Record;
+        if (!isArray && s.name == "interface") structured = true, level = Level::Interface;
         if (isArray && s.name == "nodes") structured = true, level = Level::Nodes;
         break;
       case Level::Section: structured = !isArray, level = Level::Record; break;
+      case Level::Interface: structured = !isArray, level = Level::Section; break;
       case Level::Nodes: structured = !isArray, level = Level::Node; break;
       case Level::Node: structured = !isArray && named({"options", "inputs", "editor"}), level = Level::Record; break;
       case Level::Record: break;

@@ -13,7 +13,8 @@ namespace wg {
 // Parses `text` as a graph file named `file` (used in diagnostics). On any error, the
 // diagnostics say why and the result is empty.
 std::optional<Graph> parseGraph(std::string_view text, const std::string& file, Diagnostics& diags);
-// Reads and parses a file; an unreadable file is WG050.
+// Reads and parses a file, and the graphs it imports (core/graph_imports.h); an unreadable
+// file is WG050.
 std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags);
 // The whole file, read once (WG050 unreadable, WG035 over 16 MiB). loadGraphFile parses
 // this one snapshot; a caller that also needs the bytes (fmt) reads them here, never twice.

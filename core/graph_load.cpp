@@ -14,6 +14,7 @@
 #include <unordered_map>
 
 #include "core/graph_io.h"
+#include "core/graph_imports.h"
 #include "core/graph_draft.h"
 #include "core/load_limits.h"
 #include "core/number_format.h"
@@ -96,7 +97,8 @@ class Loader : public GraphDraftReader {
     diags_.append(limits_);
 
     checkKeys(root, "the graph",
-              {"$schema", "version", "name", "description", "parameters", "presets", "nodes", "outputs"});
+              {"$schema", "version", "name", "description", "imports", "interface", "parameters", "presets", "nodes",
+               "outputs"});
 
     if (!loadVersion(root, g)) return std::nullopt;  // a newer format: the rest is moot
 
@@ -114,6 +116,7 @@ class Loader : public GraphDraftReader {
     if (auto* v = field(root, "description", json::value_t::string, "'description'"))
       g.description = v->value.get<std::string>();
 
+    if (auto* v = field(root, "imports", json::value_t::object, "'imports'")) loadImportList(*v, g);
     if (auto* v = field(root, "parameters", json::value_t::object, "'parameters'")) loadParameters(*v, g);
     if (auto* v = field(root, "presets", json::value_t::object, "'presets'")) loadPresets(*v, g);
 
@@ -130,11 +133,15 @@ class Loader : public GraphDraftReader {
       }
     }
 
+    // A function graph needs no output slots: it is used through its interface (and may
+    // still connect slots, to be previewed on its own).
     if (!root.member("outputs")) {
-      missing(root, "the graph is missing \"outputs\"");
+      if (!root.member("interface")) missing(root, "the graph is missing \"outputs\"");
+      g.outputsWhere = ref(root.at);
     } else if (auto* v = field(root, "outputs", json::value_t::object, "'outputs'")) {
       loadOutputs(*v, g);
     }
+    if (auto* v = field(root, "interface", json::value_t::object, "'interface'")) loadInterface(*v, g);
 
     if (diags_.errorCount() > before) return std::nullopt;
     return g;
@@ -398,6 +405,92 @@ class Loader : public GraphDraftReader {
     }
   }
 
+  // "imports": {"foam": "lib/shore_foam.json"}: names (identifiers) for graph files, which
+  // core/graph_imports.h loads; whether a name is free of node types is resolve's to say.
+  void loadImportList(const DraftValue& imports, Graph& g) {
+    for (const DraftValue& iv : imports.members) {
+      Import im;
+      im.name = iv.name;
+      im.where = ref(iv.key);
+      im.pathWhere = ref(iv.at);
+      if (!isIdentifier(im.name))
+        diags_.error(DiagCode::InvalidIdentifier, im.where,
+                     "import name '" + im.name + "' is not an identifier " + kIdentifierRule);
+      if (iv.type != json::value_t::string) {
+        diags_.error(DiagCode::WrongJsonType, ref(iv.at),
+                     "import '" + im.name + "' must be a path (a string), found " + jsonTypeName(iv.type));
+        continue;
+      }
+      im.path = iv.value.get<std::string>();
+      if (im.path.empty()) {
+        diags_.error(DiagCode::ImportMissing, im.pathWhere, "import '" + im.name + "' names no file (an empty path)");
+        continue;
+      }
+      g.imports.push_back(std::move(im));
+    }
+  }
+
+  // "interface": {"description": "...", "outputs": {"foam": {"type": "float", "source":
+  // "mask.out", "description": "..."}}}: what an instance offers; its inputs are the
+  // parameters. Sources are checked like output slots' (they refer to this graph's nodes).
+  void loadInterface(const DraftValue& iv, Graph& g) {
+    GraphInterface itf;
+    itf.where = ref(iv.at);
+    checkKeys(iv, "the interface", {"description", "outputs"});
+    if (auto* v = field(iv, "description", json::value_t::string, "the interface's 'description'"))
+      itf.description = v->value.get<std::string>();
+    const DraftValue* outs = iv.member("outputs");
+    if (!outs) {
+      missing(iv, "the interface is missing \"outputs\"");
+    } else if (auto* ov = field(iv, "outputs", json::value_t::object, "the interface's 'outputs'")) {
+      if (ov->members.empty())
+        diags_.error(DiagCode::MissingField, ref(ov->at), "the interface declares no outputs; a subgraph needs at least one");
+      for (const DraftValue& o : ov->members) loadInterfaceOutput(o, itf);
+    }
+    g.interface = std::move(itf);
+  }
+
+  void loadInterfaceOutput(const DraftValue& o, GraphInterface& itf) {
+    InterfaceOutput out;
+    out.name = o.name;
+    out.where = ref(o.key);
+    const std::string what = "interface output '" + o.name + "'";
+    if (!isIdentifier(out.name))
+      diags_.error(DiagCode::InvalidIdentifier, out.where, what + " is not an identifier " + kIdentifierRule);
+    if (o.type != json::value_t::object) {
+      diags_.error(DiagCode::WrongJsonType, ref(o.at),
+                   what + " must be an object with \"type\" and \"source\", found " + jsonTypeName(o.type));
+      return;
+    }
+    checkKeys(o, what, {"type", "source", "description"});
+    bool ok = true;
+    if (!o.member("type")) {
+      missing(o, what + " is missing \"type\"");
+      ok = false;
+    } else if (auto* t = field(o, "type", json::value_t::string, "'type' of " + what)) {
+      const auto& typeText = t->value.get_ref<const std::string&>();
+      auto type = parseType(typeText);
+      if (!type || !isFloatScalarOrVector(*type)) {
+        diags_.error(DiagCode::InvalidParameter, ref(t->at),
+                     what + " has type '" + typeText + "'; an interface output is float, vec2, vec3 or vec4");
+        ok = false;
+      } else {
+        out.type = *type;
+      }
+    } else {
+      ok = false;
+    }
+    if (!o.member("source")) {
+      missing(o, what + " is missing \"source\"");
+      ok = false;
+    } else if (const DraftValue* src = o.member("source")) {
+      ok = parseSource(src->value, ref(src->at), out.source, {}, [&] { return "output '" + o.name + "'"; }, diags_) && ok;
+    }
+    if (auto* v = field(o, "description", json::value_t::string, "'description' of " + what))
+      out.description = v->value.get<std::string>();
+    if (ok) itf.outputs.push_back(std::move(out));
+  }
+
   // One element of "nodes", as soon as it ends; its diagnostics wait in nodeDiags_ for
   // their turn (after the presets), its Node in nodes_.
   void node(DraftValue& nv) override {
@@ -574,7 +667,9 @@ std::optional<Graph> parseGraph(std::string_view text, const std::string& file, 
 std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags) {
   auto text = readGraphFile(path, diags);
   if (!text) return std::nullopt;
-  return parseGraph(*text, path, diags);
+  auto graph = parseGraph(*text, path, diags);
+  if (graph && !loadImports(*graph, diags)) return std::nullopt;
+  return graph;
 }
 
 std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& diags) {

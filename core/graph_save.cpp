@@ -221,6 +221,28 @@ std::string outputsText(const Graph& g, int level) {
   return out;
 }
 
+// The interface's outputs in file order (the order an instance's ports are listed in).
+std::string interfaceText(const GraphInterface& itf, int level) {
+  std::string out;
+  ObjectWriter w(out, level);
+  if (!itf.description.empty()) w.member("description", quote(itf.description));
+  std::string outputs;
+  ObjectWriter ow(outputs, level + 1);
+  for (const auto& o : itf.outputs) {
+    std::string text;
+    ObjectWriter one(text, level + 2);
+    one.member("type", quote(typeName(o.type)));
+    one.member("source", sourceText(o.source));
+    if (!o.description.empty()) one.member("description", quote(o.description));
+    one.finish();
+    ow.member(o.name, std::move(text));
+  }
+  ow.finish();
+  w.member("outputs", std::move(outputs));
+  w.finish();
+  return out;
+}
+
 }  // namespace
 
 std::string saveGraph(const Graph& graph) {
@@ -230,6 +252,14 @@ std::string saveGraph(const Graph& graph) {
   w.member("version", std::to_string(graph.version));
   w.member("name", quote(graph.name));
   if (!graph.description.empty()) w.member("description", quote(graph.description));
+  if (!graph.imports.empty()) {
+    std::string text;
+    ObjectWriter iw(text, 1);
+    for (const auto& im : graph.imports) iw.member(im.name, quote(im.path));
+    iw.finish();
+    w.member("imports", std::move(text));
+  }
+  if (graph.interface) w.member("interface", interfaceText(*graph.interface, 1));
   if (!graph.parameters.empty()) {
     std::string text;
     ObjectWriter pw(text, 1);
@@ -260,7 +290,7 @@ std::string saveGraph(const Graph& graph) {
     }
     w.member("nodes", std::move(text));
   }
-  w.member("outputs", outputsText(graph, 1));
+  if (!graph.outputs.empty() || !graph.interface) w.member("outputs", outputsText(graph, 1));
   w.finish();
   out += '\n';
   return out;

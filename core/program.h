@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/diagnostic.h"
 #include "core/graph.h"
 #include "core/node_spec.h"
 #include "core/source_ref.h"
@@ -43,8 +44,17 @@ struct Op {
   std::vector<Type> inputTypes;     // the port types (after unification)
   std::vector<Type> outputTypes;
   std::vector<std::string> mergedIds;  // node ids CSE folded into this op
+  // Inside a subgraph: the instances it was inlined through, innermost first (`where` is
+  // in the subgraph's file). Diagnostics about the op carry them as notes.
+  std::shared_ptr<const std::vector<LocatedNote>> instanceChain;
   unsigned stage = 0;               // set by the stage pass: kVertexStage / kFragmentStage
 };
+
+// A diagnostic about `op` names the subgraph instances it lies in.
+inline Diagnostic& withInstanceNotes(Diagnostic& d, const Op& op) {
+  if (op.instanceChain) d.locatedNotes.insert(d.locatedNotes.end(), op.instanceChain->begin(), op.instanceChain->end());
+  return d;
+}
 
 struct ProgramParameter {
   std::string name;
@@ -75,7 +85,9 @@ struct Program {
   std::string description;
   std::string file;
   std::string directory;  // the graph file's folder: texture paths are relative to it
-  int totalNodes = 0;  // nodes in the graph file
+  int totalNodes = 0;  // nodes in the graph file, with every subgraph instance's inlined
+  // The graph files it imports, relative to `directory`, each once (the manifest's "imports").
+  std::vector<std::string> importedFiles;
   std::vector<ProgramParameter> parameters;
   std::vector<Op> ops;  // topological: inputs come before their users
   std::vector<ProgramOutput> outputs;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <memory>
 #include <optional>
 #include <set>
@@ -11,7 +12,9 @@
 #include <filesystem>
 
 #include "core/expand.h"
+#include "core/graph_imports.h"
 #include "core/json_string_columns.h"
+#include "core/number_format.h"
 #include "core/node_options.h"
 #include "core/port_typing.h"
 #include "core/suggest.h"
@@ -47,9 +50,32 @@ Value literalValue(const std::vector<double>& xs) {
   return v;
 }
 
+// What the resolvers of one graph and of every subgraph instance in it share.
+struct SharedState {
+  std::string topDirectory;            // the top-level graph's folder: texture paths end relative to it
+  std::set<std::string> texturesCounted;  // real paths of PNG textures
+  long long textureTexels = 0;
+  // One node type per imported function graph, made on its first instance.
+  std::map<const Graph*, std::unique_ptr<NodeSpec>> instanceSpecs;
+  NodeOutputValues* nodeOutputs = nullptr;
+};
+
+// A subgraph instance being inlined: its nodes' ids take the prefix, its parameters read
+// the instance's inputs, its interface outputs are what the instance's outputs are.
+struct InstanceScope {
+  std::string idPrefix;  // "foam/" (nested: "shore/foam/")
+  std::unordered_map<std::string, ValueRef> inputs;
+  // The instances this one lies in, innermost first: every op it makes carries them.
+  std::shared_ptr<const std::vector<LocatedNote>> chain;
+  std::vector<ValueRef> outputs;  // filled: one per interface output
+};
+
 class Resolver {
  public:
-  Resolver(const Graph& g, const Registry& r, Diagnostics& d) : graph_(g), registry_(r), diags_(d) {}
+  Resolver(const Graph& g, const Registry& r, Diagnostics& d)
+      : graph_(g), registry_(r), diags_(d), program_(ownProgram_), shared_(ownShared_) {}
+  Resolver(const Graph& g, const Registry& r, Diagnostics& d, Program& program, SharedState& shared, InstanceScope& scope)
+      : graph_(g), registry_(r), diags_(d), program_(program), shared_(shared), scope_(&scope) {}
 
   std::optional<Program> run(NodeOutputValues* nodeOutputs = nullptr) {
     size_t errorsBefore = diags_.errorCount();
@@ -58,19 +84,48 @@ class Resolver {
     program_.file = graph_.file;
     program_.directory = std::filesystem::path(graph_.file).parent_path().string();
     program_.totalNodes = static_cast<int>(graph_.nodes.size());
+    shared_.topDirectory = program_.directory;
+    std::vector<std::string> files = graphFilesRead(graph_);
+    for (size_t k = 1; k < files.size(); ++k) {
+      namespace fs = std::filesystem;
+      fs::path top = program_.directory.empty() ? fs::path(".") : fs::path(program_.directory);
+      program_.importedFiles.push_back(fs::path(files[k]).lexically_normal().lexically_relative(top.lexically_normal()).generic_string());
+    }
+    shared_.nodeOutputs = nodeOutputs;
     collectParameters();
-    indexNodes();
-    lookUpSpecs();
-    std::vector<int> order = topologicalOrder();
+    resolveBody();
     if (diags_.errorCount() > errorsBefore) return std::nullopt;
-    buildOps(order);
     resolveOutputs();
     if (diags_.errorCount() > errorsBefore) return std::nullopt;
     if (nodeOutputs) listNodeOutputs(*nodeOutputs);
     return std::move(program_);
   }
 
+  // A subgraph instance: its ops go into the shared program. False after reporting.
+  bool runInstance() {
+    size_t errorsBefore = diags_.errorCount();
+    program_.totalNodes += static_cast<int>(graph_.nodes.size());
+    for (const auto& p : graph_.parameters) paramValue_.emplace(p.name, scope_->inputs.at(p.name));
+    resolveBody();
+    if (diags_.errorCount() > errorsBefore) return false;
+    resolveInterfaceOutputs();
+    if (diags_.errorCount() > errorsBefore) return false;
+    if (shared_.nodeOutputs) listNodeOutputs(*shared_.nodeOutputs);
+    return true;
+  }
+
  private:
+  void resolveBody() {
+    size_t errorsBefore = diags_.errorCount();
+    directory_ = std::filesystem::path(graph_.file).parent_path().string();
+    checkImportNames();
+    indexNodes();
+    lookUpSpecs();
+    std::vector<int> order = topologicalOrder();
+    if (diags_.errorCount() > errorsBefore) return;
+    buildOps(order);
+  }
+
   void collectParameters() {
     for (const auto& p : graph_.parameters) {
       ProgramParameter pp;
@@ -84,7 +139,7 @@ class Resolver {
       pp.description = p.description;
       pp.isStatic = p.isStatic;
       pp.where = p.where;
-      paramIndex_[p.name] = static_cast<int>(program_.parameters.size());
+      paramValue_[p.name] = ValueRef::param(static_cast<int>(program_.parameters.size()));
       program_.parameters.push_back(std::move(pp));
     }
   }
@@ -103,18 +158,59 @@ class Resolver {
     }
   }
 
+  // An import's name becomes a node type here, so it may not be one already.
+  void checkImportNames() {
+    for (const auto& im : graph_.imports)
+      if (registry_.find(im.name))
+        diags_.error(DiagCode::ImportShadowsNode, im.where,
+                     "import name '" + im.name + "' is already a node type; choose another name for '" + im.path + "'");
+  }
+
+  // The node type an imported function graph stands for: its parameters are the inputs
+  // (a parameter's default is the input's), its interface outputs the outputs.
+  const NodeSpec* instanceSpec(const Import& im) {
+    auto& slot = shared_.instanceSpecs[im.graph.get()];
+    if (!slot) {
+      auto spec = std::make_unique<NodeSpec>();
+      spec->type = im.name;
+      spec->family = "subgraph";
+      spec->summary = im.graph->interface->description;
+      NodePorts ports = interfacePorts(*im.graph);
+      spec->inputs = std::move(ports.inputs);
+      spec->outputs = std::move(ports.outputs);
+      slot = std::move(spec);
+    }
+    // The name is this graph's (two graphs may import one file under two names).
+    if (slot->type == im.name) return slot.get();
+    auto& renamed = renamedSpecs_[im.name];
+    if (!renamed) {
+      renamed = std::make_unique<NodeSpec>(*slot);
+      renamed->type = im.name;
+    }
+    return renamed.get();
+  }
+
   void lookUpSpecs() {
     specs_.assign(graph_.nodes.size(), nullptr);
     ports_.resize(graph_.nodes.size());
-    std::vector<std::string> typeNames;
-    for (const NodeSpec* s : registry_.all()) typeNames.push_back(s->type);
-    NameSuggester types(std::move(typeNames));
+    instanceOf_.assign(graph_.nodes.size(), nullptr);
+    std::optional<NameSuggester> types;  // made on the first unknown type
     for (size_t i = 0; i < graph_.nodes.size(); ++i) {
       const Node& n = graph_.nodes[i];
       const NodeSpec* spec = registry_.find(n.type);
+      if (const Import* im = spec ? nullptr : graph_.findImport(n.type); im && im->graph) {
+        spec = instanceSpec(*im);
+        instanceOf_[i] = im;
+      }
       if (!spec) {
+        if (!types) {
+          std::vector<std::string> typeNames;
+          for (const NodeSpec* s : registry_.all()) typeNames.push_back(s->type);
+          for (const auto& im : graph_.imports) typeNames.push_back(im.name);
+          types.emplace(std::move(typeNames));
+        }
         diags_.error(DiagCode::UnknownNodeType, n.typeWhere,
-                     "unknown node type '" + n.type + "'" + types.didYouMean(n.type), n.id);
+                     "unknown node type '" + n.type + "'" + types->didYouMean(n.type), n.id);
         continue;
       }
       bool optionsValid = true;
@@ -128,7 +224,7 @@ class Resolver {
           continue;
         }
         TextureFile texture;
-        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, program_.directory, &texture);
+        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, directory_, &texture);
         if (why.empty()) why = chargeTextureBudget(texture);
         if (!why.empty()) {
           diags_.error(DiagCode::InvalidOption, opt.where, "option '" + opt.name + "' " + why, n.id,
@@ -170,10 +266,10 @@ class Resolver {
   // All of a graph's PNG textures together stay within kMaxGraphTextureTexels (each file
   // counted once, however many nodes sample it): "" or why the one that overflows it is refused.
   std::string chargeTextureBudget(const TextureFile& texture) {
-    if (texture.realPath.empty() || !texturesCounted_.insert(texture.realPath).second) return "";
-    textureTexels_ += texture.width * texture.height;
-    if (textureTexels_ <= kMaxGraphTextureTexels) return "";
-    return "is not usable: the graph's PNG textures would hold " + std::to_string(textureTexels_) +
+    if (texture.realPath.empty() || !shared_.texturesCounted.insert(texture.realPath).second) return "";
+    shared_.textureTexels += texture.width * texture.height;
+    if (shared_.textureTexels <= kMaxGraphTextureTexels) return "";
+    return "is not usable: the graph's PNG textures would hold " + std::to_string(shared_.textureTexels) +
            " texels together; the limit per graph is " + std::to_string(kMaxGraphTextureTexels);
   }
 
@@ -221,7 +317,7 @@ class Resolver {
       for (size_t k = 0; k < node.inputs.size(); ++k) {
         const NodeInput& in = node.inputs[k];
         if (in.source.kind == InputSource::Kind::Parameter) {
-          if (!paramIndex_.count(in.source.parameter)) {
+          if (!paramValue_.count(in.source.parameter)) {
             if (!parameterNames_) {
               std::vector<std::string> names;
               for (const auto& p : graph_.parameters) names.push_back(p.name);
@@ -321,9 +417,9 @@ class Resolver {
     switch (s.kind) {
       case InputSource::Kind::Literal: return ValueRef::constant_(literalValue(s.literal));
       case InputSource::Kind::Parameter: {
-        auto it = paramIndex_.find(s.parameter);
-        if (it == paramIndex_.end()) return std::nullopt;
-        return ValueRef::param(it->second);
+        auto it = paramValue_.find(s.parameter);
+        if (it == paramValue_.end()) return std::nullopt;
+        return it->second;
       }
       case InputSource::Kind::NodeOutput: {
         if (node < 0) {
@@ -369,9 +465,11 @@ class Resolver {
       if (!spec) continue;
       Op op;
       op.spec = spec;
-      op.nodeId = node.id;
+      op.nodeId = idOf(node);
       op.where = node.where;
+      if (scope_) op.instanceChain = scope_->chain;
       op.options = completeOptions(*spec, declaredOptions(node, *spec));
+      if (scope_) retargetTexturePaths(*spec, op.options);
       op.parsedOptions = parseOptions(*spec, op.options);  // valid: lookUpSpecs checked each value
 
       const std::vector<PortSpec>& ports = inputsOf(static_cast<size_t>(ni));
@@ -415,6 +513,10 @@ class Resolver {
         }
       }
       if (!ok) continue;
+      if (instanceOf_[static_cast<size_t>(ni)]) {
+        inlineInstance(ni, op, sourceTypes, given);
+        continue;
+      }
       if (spec->expand) {
         expandNode(ni, op, sourceTypes, given);
         continue;
@@ -440,7 +542,7 @@ class Resolver {
       } else {
         continue;
       }
-      out[graph_.nodes[i].id] = std::move(values);
+      out[idOf(graph_.nodes[i])] = std::move(values);
     }
   }
 
@@ -453,20 +555,10 @@ class Resolver {
     NodePorts fixedPorts;  // an expanding type whose ports do not depend on its options
     if (!ports_[static_cast<size_t>(ni)]) fixedPorts = {spec.inputs, spec.outputs};
     const NodePorts& ports = ports_[static_cast<size_t>(ni)] ? *ports_[static_cast<size_t>(ni)] : fixedPorts;
-    std::vector<ValueRef> inputs(ports.inputs.size());
-    for (size_t pi = 0; pi < ports.inputs.size(); ++pi) {
-      const PortSpec& port = ports.inputs[pi];
-      if (port.kind != PortKind::Fixed)  // what a port of another kind means is the expansion's to say
-        throw std::logic_error("node type '" + spec.type + "' gives its input '" + port.name + "' no fixed type");
-      if (!implicitlyConvertible(sourceTypes[pi], port.type)) {
-        mismatch(node, given[pi], port.name,
-                 "input '" + port.name + "' expects " + std::string(typeName(port.type)) + ", but " +
-                     sourceName(given[pi]) + " is " + std::string(typeName(sourceTypes[pi])));
-        return;
-      }
-      inputs[pi] = splat(op.inputs[pi], port.type, node);
-    }
-    ExpandContext ctx{spec, ports, *op.parsedOptions, registry_, node.id, node.where, std::move(inputs), program_,
+    auto inputs = convertedInputs(node, op, ports.inputs, sourceTypes, given);
+    if (!inputs) return;
+    size_t firstOp = program_.ops.size();
+    ExpandContext ctx{spec, ports, *op.parsedOptions, registry_, idOf(node), node.where, std::move(*inputs), program_,
                       [&](std::string_view option, size_t offset) { return optionWhere(node, option, offset); },
                       {}, DiagCode::InvalidOption, {}, {}, 0};
     size_t opsBefore = program_.ops.size();
@@ -481,7 +573,135 @@ class Resolver {
     if (ctx.outputs.size() != ports.outputs.size())
       throw std::logic_error("node type '" + spec.type + "' expanded into " + std::to_string(ctx.outputs.size()) +
                              " outputs for its " + std::to_string(ports.outputs.size()) + " output ports");
+    if (scope_)
+      for (size_t k = firstOp; k < program_.ops.size(); ++k) program_.ops[k].instanceChain = scope_->chain;
     expandedOutputs_[static_cast<size_t>(ni)] = std::move(ctx.outputs);
+  }
+
+  // An expanding node's or an instance's inputs, each of its port's type (a float splats),
+  // or nothing after reporting the one that does not fit.
+  std::optional<std::vector<ValueRef>> convertedInputs(const Node& node, const Op& op, const std::vector<PortSpec>& ports,
+                                                       const std::vector<Type>& sourceTypes,
+                                                       const std::vector<const NodeInput*>& given) {
+    std::vector<ValueRef> inputs(ports.size());
+    for (size_t pi = 0; pi < ports.size(); ++pi) {
+      const PortSpec& port = ports[pi];
+      if (port.kind != PortKind::Fixed)  // what a port of another kind means is the expansion's to say
+        throw std::logic_error("node type '" + op.spec->type + "' gives its input '" + port.name + "' no fixed type");
+      if (!implicitlyConvertible(sourceTypes[pi], port.type)) {
+        mismatch(node, given[pi], port.name,
+                 "input '" + port.name + "' expects " + std::string(typeName(port.type)) + ", but " +
+                     sourceName(given[pi]) + " is " + std::string(typeName(sourceTypes[pi])));
+        return std::nullopt;
+      }
+      inputs[pi] = splat(op.inputs[pi], port.type, node);
+    }
+    return inputs;
+  }
+
+  // A subgraph instance: the imported graph's nodes resolved into this program with its
+  // parameters reading the instance's inputs, as if written out here. Its faults are
+  // reported where they are in its file, with a note naming this instance.
+  void inlineInstance(int ni, const Op& op, const std::vector<Type>& sourceTypes,
+                      const std::vector<const NodeInput*>& given) {
+    const Node& node = graph_.nodes[static_cast<size_t>(ni)];
+    const Import& im = *instanceOf_[static_cast<size_t>(ni)];
+    const Graph& sub = *im.graph;
+    auto inputs = convertedInputs(node, op, op.spec->inputs, sourceTypes, given);
+    if (!inputs) return;
+    InstanceScope scope;
+    scope.idPrefix = idOf(node) + "/";
+    auto chain = std::make_shared<std::vector<LocatedNote>>();
+    LocatedNote here{node.where, "in instance '" + idOf(node) + "' of '" + im.path + "'"};
+    chain->push_back(here);
+    if (scope_ && scope_->chain) chain->insert(chain->end(), scope_->chain->begin(), scope_->chain->end());
+    scope.chain = std::move(chain);
+    bool inRange = true;
+    for (size_t pi = 0; pi < sub.parameters.size(); ++pi) {
+      const Parameter& p = sub.parameters[pi];
+      const ValueRef& v = (*inputs)[pi];
+      if (v.kind == ValueRef::Kind::Const && !fitsRange(v.constant, p)) {
+        diags_.error(DiagCode::InterfaceMismatch, portWhere(node, given[pi]),
+                     "input '" + p.name + "' of '" + im.name + "' is " + describeConstant(v.constant) +
+                         ", outside its range " + rangeText(p),
+                     idOf(node), inputLabel(p.name));
+        inRange = false;
+      }
+      scope.inputs.emplace(p.name, v);
+    }
+    if (!inRange) return;
+    size_t firstDiag = diags_.all().size();
+    size_t firstOp = program_.ops.size();
+    bool ok = Resolver(sub, registry_, diags_, program_, shared_, scope).runInstance();
+    diags_.addLocatedNoteFrom(firstDiag, here);
+    if (!ok) {
+      program_.ops.resize(firstOp);
+      return;
+    }
+    expandedOutputs_[static_cast<size_t>(ni)] = std::move(scope.outputs);
+  }
+
+  static bool fitsRange(const Value& v, const Parameter& p) {
+    for (int k = 0; k < componentCount(v.type); ++k)
+      if ((p.min && v[k] < *p.min) || (p.max && v[k] > *p.max)) return false;
+    return true;
+  }
+  static std::string rangeText(const Parameter& p) {
+    return "[" + (p.min ? formatNumber(*p.min) : std::string("-inf")) + ", " +
+           (p.max ? formatNumber(*p.max) : std::string("inf")) + "]";
+  }
+  static std::string describeConstant(const Value& v) {
+    if (componentCount(v.type) == 1) return formatNumber(v[0]);
+    std::string s = "[";
+    for (int k = 0; k < componentCount(v.type); ++k) s += (k ? ", " : "") + formatNumber(v[k]);
+    return s + "]";
+  }
+
+  // A subgraph's interface outputs: each the value of its source, of its declared type.
+  void resolveInterfaceOutputs() {
+    for (const auto& out : graph_.interface->outputs) {
+      std::string label = "interface output '" + out.name + "'";
+      if (out.source.kind == InputSource::Kind::NodeOutput) {
+        if (referencedNode(out.source, "", [&] { return label; }) < 0) continue;
+      } else if (out.source.kind == InputSource::Kind::Parameter && !paramValue_.count(out.source.parameter)) {
+        diags_.error(DiagCode::UnknownParameter, out.source.where, "no parameter named '" + out.source.parameter + "'",
+                     "", label);
+        continue;
+      }
+      auto ref = sourceRef(out.source);
+      if (!ref) continue;  // the node itself failed and was reported
+      if (!existsForItsInputs(*ref, out.source, "", [&] { return label; })) continue;
+      Type got = program_.typeOf(*ref);
+      if (got != out.type) {
+        diags_.error(DiagCode::InterfaceMismatch, out.source.where,
+                     label + " is declared " + std::string(typeName(out.type)) + ", but " + describeSource(out.source) +
+                         " is " + std::string(typeName(got)),
+                     out.source.kind == InputSource::Kind::NodeOutput ? prefixed(out.source.node) : "", label);
+        continue;
+      }
+      scope_->outputs.push_back(*ref);
+    }
+  }
+
+  // A node's id in the program: inside an instance, prefixed with the instance's path.
+  std::string idOf(const Node& node) const { return prefixed(node.id); }
+  std::string prefixed(const std::string& id) const { return scope_ ? scope_->idPrefix + id : id; }
+
+  // A PNG path in a subgraph is relative to the subgraph's file; the program reads every
+  // texture relative to the top-level graph's folder (the import check keeps the
+  // subgraph inside it, so the path needs no "..").
+  void retargetTexturePaths(const NodeSpec& spec, nlohmann::json& options) const {
+    for (const auto& o : spec.options) {
+      if (o.kind != OptionSpec::Kind::Texture) continue;
+      auto it = options.find(o.name);
+      if (it == options.end() || !it->is_string()) continue;
+      const std::string& path = it->get_ref<const std::string&>();
+      if (path.rfind(kBuiltinTexturePrefix, 0) == 0) continue;
+      namespace fs = std::filesystem;
+      fs::path top = shared_.topDirectory.empty() ? fs::path(".") : fs::path(shared_.topDirectory);
+      fs::path here = directory_.empty() ? fs::path(".") : fs::path(directory_);
+      *it = (here / path).lexically_normal().lexically_relative(top.lexically_normal()).generic_string();
+    }
   }
 
   // `v` as type `want`: a float splats to a vector (as a port does), a constant at once,
@@ -494,8 +714,9 @@ class Resolver {
     if (!combine) throw std::logic_error("the registry has no 'combine' node to splat an input with");
     Op op;
     op.spec = combine;
-    op.nodeId = node.id;
+    op.nodeId = idOf(node);
     op.where = node.where;
+    if (scope_) op.instanceChain = scope_->chain;
     op.options = completeOptions(*combine, {{"type", std::string(typeName(want))}});
     op.parsedOptions = parseOptions(*combine, op.options);
     int n = componentCount(want);
@@ -566,7 +787,7 @@ class Resolver {
       std::string label = "output '" + std::string(outputSlotName(out.slot)) + "'";
       if (out.source.kind == InputSource::Kind::NodeOutput) {
         if (referencedNode(out.source, "", [&] { return label; }) < 0) continue;
-      } else if (out.source.kind == InputSource::Kind::Parameter && !paramIndex_.count(out.source.parameter)) {
+      } else if (out.source.kind == InputSource::Kind::Parameter && !paramValue_.count(out.source.parameter)) {
         diags_.error(DiagCode::UnknownParameter, out.source.where,
                      "no parameter named '" + out.source.parameter + "'", "", label);
         continue;
@@ -592,13 +813,18 @@ class Resolver {
   const Graph& graph_;
   const Registry& registry_;
   Diagnostics& diags_;
-  Program program_;
+  Program ownProgram_;       // the top-level resolver's; an instance's resolver adds to its parent's
+  Program& program_;
+  SharedState ownShared_;
+  SharedState& shared_;
+  InstanceScope* scope_ = nullptr;  // set: resolving a subgraph instance
+  std::string directory_;           // this graph file's folder (its texture paths are relative to it)
   std::vector<const NodeSpec*> specs_;
+  std::vector<const Import*> instanceOf_;  // by node index: the import it instances, or null
+  std::map<std::string, std::unique_ptr<NodeSpec>> renamedSpecs_;
   std::unordered_map<std::string, int> nodeIndex_;
-  std::unordered_map<std::string, int> paramIndex_;
+  std::unordered_map<std::string, ValueRef> paramValue_;  // what `$name` reads
   std::optional<NameSuggester> nodeIds_, parameterNames_;  // made on the first unknown name
-  std::set<std::string> texturesCounted_;                  // real paths of PNG textures
-  long long textureTexels_ = 0;
   std::vector<int> opOfNode_;  // by node index: its op, or -1
   // By node index, for a node that expanded into ops: the value of each output port.
   std::vector<std::vector<ValueRef>> expandedOutputs_;

@@ -1,0 +1,203 @@
+#include "core/graph_imports.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <set>
+#include <system_error>
+#include <unordered_map>
+
+#include "core/graph_io.h"
+#include "core/load_limits.h"
+
+namespace wg {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool holdsControlCharacter(std::string_view s) {
+  return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
+}
+
+// `path` lies inside `folder` (both free of symbolic links and "..").
+bool pathLiesInside(const fs::path& path, const fs::path& folder) {
+  fs::path rel = path.lexically_relative(folder);
+  return !rel.empty() && *rel.begin() != ".." && rel != ".";
+}
+
+class ImportLoader {
+ public:
+  ImportLoader(const Graph& top, Diagnostics& diags) : diags_(diags) {
+    std::error_code ec;
+    fs::path file = fs::absolute(top.file, ec);
+    topDir_ = fs::weakly_canonical(file.parent_path(), ec);
+    fs::path real = fs::weakly_canonical(file, ec);
+    chain_.push_back({real.string(), top.file});
+  }
+
+  bool load(Graph& g) {
+    size_t errorsBefore = diags_.errorCount();
+    loadImportsOf(g);
+    return diags_.errorCount() == errorsBefore;
+  }
+
+ private:
+  struct Link {
+    std::string realPath;
+    std::string shownPath;  // as diagnostics name the file
+  };
+
+  void loadImportsOf(Graph& g) {
+    for (Import& im : g.imports) im.graph = loadOne(g, im);
+  }
+
+  std::shared_ptr<const Graph> loadOne(const Graph& from, const Import& im) {
+    const std::string what = "import '" + im.name + "' ('" + im.path + "')";
+    if (holdsControlCharacter(im.path)) {
+      diags_.error(DiagCode::ImportOutsideTree, im.pathWhere, what + " holds a control character");
+      return nullptr;
+    }
+    fs::path written(im.path);
+    if (written.is_absolute()) {
+      diags_.error(DiagCode::ImportOutsideTree, im.pathWhere,
+                   what + " is an absolute path; an import is relative to the file that writes it");
+      return nullptr;
+    }
+    fs::path shown = (fs::path(from.file).parent_path() / written).lexically_normal();
+    std::error_code ec;
+    if (!fs::is_regular_file(shown, ec)) {
+      diags_.error(DiagCode::ImportMissing, im.pathWhere,
+                   what + ": there is no file '" + shown.string() + "'" +
+                       (fs::exists(shown, ec) ? " (it is not a regular file)" : ""));
+      return nullptr;
+    }
+    fs::path real = fs::canonical(shown, ec);
+    if (ec) {
+      diags_.error(DiagCode::ImportMissing, im.pathWhere, what + ": cannot read '" + shown.string() + "': " + ec.message());
+      return nullptr;
+    }
+    if (!pathLiesInside(real, topDir_)) {
+      diags_.error(DiagCode::ImportOutsideTree, im.pathWhere,
+                   what + " leaves the folder of the top-level graph ('" + topDir_.string() + "')");
+      return nullptr;
+    }
+    auto onChain = std::find_if(chain_.begin(), chain_.end(), [&](const Link& l) { return l.realPath == real.string(); });
+    if (onChain != chain_.end()) {
+      std::string cycle;
+      for (auto it = onChain; it != chain_.end(); ++it) cycle += "'" + it->shownPath + "' -> ";
+      cycle += "'" + shown.string() + "'";
+      diags_.error(DiagCode::ImportCycle, im.pathWhere, "graph files import each other in a cycle: " + cycle);
+      return nullptr;
+    }
+    if (auto cached = loaded_.find(real.string()); cached != loaded_.end()) return cached->second;
+    if (static_cast<int>(chain_.size()) > kMaxImportDepth) {
+      std::string chain;
+      for (const Link& l : chain_) chain += "'" + l.shownPath + "' -> ";
+      diags_.error(DiagCode::ImportTooDeep, im.pathWhere,
+                   what + " would make the chain of imports " + std::to_string(chain_.size()) +
+                       " deep; the limit is " + std::to_string(kMaxImportDepth) + ": " + chain + "'" + shown.string() + "'");
+      return nullptr;
+    }
+
+    size_t first = diags_.all().size();
+    std::shared_ptr<Graph> sub;
+    if (auto parsed = loadFile(shown.string())) sub = std::make_shared<Graph>(std::move(*parsed));
+    if (sub && !sub->interface) {
+      diags_.error(DiagCode::NotAFunctionGraph, im.pathWhere,
+                   what + ": '" + shown.string() +
+                       "' declares no \"interface\"; only a function graph (one with an interface) can be used as a node type");
+      sub.reset();
+    }
+    if (sub) {
+      chain_.push_back({real.string(), shown.string()});
+      loadImportsOf(*sub);
+      chain_.pop_back();
+    }
+    // What went wrong inside the file says where it was imported from.
+    diags_.addLocatedNoteFrom(first, {im.where, "imported as '" + im.name + "' from here"});
+    std::shared_ptr<const Graph> result = sub;
+    if (diags_.all().size() > first) result = nullptr;
+    loaded_[real.string()] = result;
+    return result;
+  }
+
+  std::optional<Graph> loadFile(const std::string& path) {
+    auto text = readGraphFile(path, diags_);
+    if (!text) return std::nullopt;
+    return parseGraph(*text, path, diags_);
+  }
+
+  Diagnostics& diags_;
+  fs::path topDir_;
+  std::vector<Link> chain_;  // the top-level file, then each file being loaded below it
+  std::map<std::string, std::shared_ptr<const Graph>> loaded_;  // by real path; null: failed
+};
+
+size_t countInlined(const Graph& g, std::unordered_map<const Graph*, size_t>& memo) {
+  if (auto it = memo.find(&g); it != memo.end()) return it->second;
+  constexpr size_t cap = kMaxNodes + 1;
+  std::unordered_map<std::string_view, const Graph*> byName;
+  for (const auto& im : g.imports)
+    if (im.graph) byName.emplace(im.name, im.graph.get());
+  size_t n = 0;
+  for (const auto& node : g.nodes) {
+    auto it = byName.find(node.type);
+    n += it == byName.end() ? 1 : std::max<size_t>(1, countInlined(*it->second, memo));
+    if (n >= cap) {
+      n = cap;
+      break;
+    }
+  }
+  memo[&g] = n;
+  return n;
+}
+
+}  // namespace
+
+NodePorts interfacePorts(const Graph& g) {
+  NodePorts ports;
+  for (const auto& p : g.parameters) {
+    Value def = Value::ofType(p.type, p.defaultValue.empty() ? 0 : p.defaultValue[0]);
+    if (static_cast<int>(p.defaultValue.size()) == componentCount(p.type))
+      for (size_t k = 0; k < p.defaultValue.size(); ++k) def[static_cast<int>(k)] = p.defaultValue[k];
+    ports.inputs.push_back(PortSpec{p.name, PortKind::Fixed, p.type, def, std::nullopt, p.description});
+  }
+  if (g.interface)
+    for (const auto& o : g.interface->outputs)
+      ports.outputs.push_back(PortSpec{o.name, PortKind::Fixed, o.type, std::nullopt, std::nullopt, o.description});
+  return ports;
+}
+
+bool loadImports(Graph& graph, Diagnostics& diags) {
+  if (graph.imports.empty()) return true;
+  if (!ImportLoader(graph, diags).load(graph)) return false;
+  size_t n = inlinedNodeCount(graph);
+  if (n > kMaxNodes) {
+    diags.error(DiagCode::LimitExceeded, SourceRef{graph.file, 1, 1},
+                "the graph has more than " + std::to_string(kMaxNodes) +
+                    " nodes with every subgraph instance inlined; the limit is " + std::to_string(kMaxNodes));
+    return false;
+  }
+  return true;
+}
+
+size_t inlinedNodeCount(const Graph& graph) {
+  std::unordered_map<const Graph*, size_t> memo;
+  return countInlined(graph, memo);
+}
+
+std::vector<std::string> graphFilesRead(const Graph& graph) {
+  std::vector<std::string> files{graph.file};
+  std::set<const Graph*> seen{&graph};
+  std::vector<const Graph*> todo{&graph};
+  for (size_t i = 0; i < todo.size(); ++i)
+    for (const auto& im : todo[i]->imports)
+      if (im.graph && seen.insert(im.graph.get()).second) {
+        files.push_back(im.graph->file);
+        todo.push_back(im.graph.get());
+      }
+  return files;
+}
+
+}  // namespace wg

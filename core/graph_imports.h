@@ -1,0 +1,35 @@
+#pragma once
+// Function graphs used as node types (docs/graph-format.md, "Subgraphs"): loading what a
+// graph imports, and what follows from the whole tree of files.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/diagnostic.h"
+#include "core/graph.h"
+#include "core/node_spec.h"
+
+namespace wg {
+
+// Loads every graph that `graph` imports, and the ones they import, into Import::graph:
+// each file once however many imports reach it. A path is relative to the file that
+// writes it and must stay inside the folder of `graph`'s file (after symbolic links);
+// an imported graph must declare an interface. Cycles, missing files, paths that leave
+// the folder, chains deeper than kMaxImportDepth and more than kMaxNodes nodes with every
+// instance inlined are errors (WG070-WG075, WG035), as are the faults of each imported
+// file, which carry a note naming the import. False after reporting.
+bool loadImports(Graph& graph, Diagnostics& diags);
+
+// The files `graph` is made of: its own, then every imported one, each once, in the order
+// first reached (a build system's dependencies). Paths as the diagnostics name them.
+std::vector<std::string> graphFilesRead(const Graph& graph);
+
+// The ports a function graph has as a node type: an input per parameter (fixed to the
+// parameter's type, its default the parameter's), an output per interface output.
+NodePorts interfacePorts(const Graph& functionGraph);
+
+// Nodes with every subgraph instance replaced by the subgraph's nodes, counted up to
+// kMaxNodes + 1 (larger graphs report that).
+std::size_t inlinedNodeCount(const Graph& graph);
+
+}  // namespace wg
