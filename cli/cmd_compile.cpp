@@ -16,10 +16,13 @@
 
 #include "cli/commands.h"
 #include "codegen/compile.h"
+#include "codegen/depfile.h"
 #include "codegen/output_files.h"
 #include "codegen/spirv_cross_targets.h"
 #include "codegen/texture_files.h"
+#include "core/graph_imports.h"
 #include "core/graph_io.h"
+#include "core/texture_check.h"
 #include "nodes/registry.h"
 
 namespace wg::cli {
@@ -38,6 +41,7 @@ struct CompileArgs {
   int watchIntervalMs = 250;
   std::string preset;
   bool textures = false;  // also write <graph>.<sampler>.png for every node texture
+  std::string depfile;    // write a Make/Ninja depfile here
 };
 
 struct TargetSet {
@@ -83,6 +87,7 @@ struct GraphOutcome {
   size_t errors = 0;
   size_t files = 0;
   double ms = 0;
+  DepfileRule dependencies;  // when written: the files written and the files read
 };
 
 void printSummary(std::FILE* to, const std::vector<GraphOutcome>& outcomes, const TargetSet& targets) {
@@ -138,6 +143,19 @@ std::string nowHms() {
   return buf;
 }
 
+// What a build system needs to know about one compiled graph: the files written into
+// `dir` depend on the graph's file, every graph it imports and every PNG it samples.
+DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, const std::string& dir) {
+  DepfileRule rule;
+  for (const auto& f : result.files) rule.outputs.push_back(dir + "/" + f.name);
+  rule.inputs = graphFilesRead(graph);
+  std::filesystem::path graphDir = std::filesystem::path(graph.file).parent_path();
+  for (const auto& t : result.manifest.textures)
+    if (!t.source.empty() && t.source.rfind(kBuiltinTexturePrefix, 0) != 0)
+      rule.inputs.push_back((graphDir / t.source).lexically_normal().string());
+  return rule;
+}
+
 // Compiles one graph (and writes it when `write`). Diagnostics go to `diags`.
 GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const TargetSet& targets, bool write,
                         Diagnostics& diags) {
@@ -151,7 +169,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     options.targets = targets.glsl;
     options.preset = args.preset;
     result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
-    outcome.total = static_cast<int>(graph->nodes.size());
+    outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }
   if (result && args.textures) {
     auto pngs = textureFiles(*result, outcome.name, diags, &*graph);
@@ -164,6 +182,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     if (write) {
       std::string dir = args.subdirs ? args.outDir + "/" + outcome.name : args.outDir;
       outcome.ok = writeOutputFiles(dir, result->files, diags);
+      if (outcome.ok) outcome.dependencies = dependenciesOf(*graph, *result, dir);
     } else {
       outcome.ok = true;
     }
@@ -187,7 +206,8 @@ std::string outcomeLine(const std::string& path, const GraphOutcome& o, const Co
 std::atomic<bool> gStop{false};
 extern "C" void onStopSignal(int) { gStop = true; }
 
-// Polls the graph files' modification times and sizes; recompiles a graph when they change.
+// Polls the modification times and sizes of the graph files and of every graph they
+// import; recompiles a graph when any of its files changes.
 int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOptions& global) {
   namespace fs = std::filesystem;
   struct Stamp {
@@ -205,8 +225,16 @@ int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOpt
     s.exists = !ec;
     return s;
   };
-  std::vector<Stamp> stamps;
-  for (const auto& p : args.graphs) stamps.push_back(stampOf(p));
+  // Per graph: each file it is made of, with its stamp (re-listed after each change: an
+  // edit may add or drop an import).
+  using Watched = std::vector<std::pair<std::string, Stamp>>;
+  auto watchedOf = [&](const std::string& graph) {
+    Watched files;
+    for (const auto& f : graphFilesToWatch(graph)) files.emplace_back(f, stampOf(f));
+    return files;
+  };
+  std::vector<Watched> watched;
+  for (const auto& p : args.graphs) watched.push_back(watchedOf(p));
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
   std::cout << "watching " << args.graphs.size() << " graph" << (args.graphs.size() == 1 ? "" : "s")
@@ -214,10 +242,15 @@ int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOpt
   while (!gStop) {
     std::this_thread::sleep_for(std::chrono::milliseconds(args.watchIntervalMs));
     for (size_t i = 0; i < args.graphs.size() && !gStop; ++i) {
-      Stamp now = stampOf(args.graphs[i]);
-      if (!(now != stamps[i])) continue;
-      stamps[i] = now;
-      if (!now.exists) continue;  // mid-save by an editor; the next change brings it back
+      bool changed = false;
+      for (auto& [file, stamp] : watched[i]) {
+        Stamp now = stampOf(file);
+        changed |= now != stamp;
+        stamp = now;
+      }
+      if (!changed) continue;
+      if (!stampOf(args.graphs[i]).exists) continue;  // mid-save by an editor; the next change brings it back
+      watched[i] = watchedOf(args.graphs[i]);
       Diagnostics diags;
       GraphOutcome o = compileOne(args.graphs[i], args, targets, true, diags);
       printDiagnostics(diags, global);
@@ -257,6 +290,11 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
   }
   progress.show(args.graphs.size(), "done");
   progress.clear();
+  if (write && !args.depfile.empty() && !all.hasErrors()) {
+    std::vector<DepfileRule> rules;
+    for (const auto& o : outcomes) rules.push_back(o.dependencies);
+    writeFileAtomically(args.depfile, depfileText(rules), all);
+  }
   printDiagnostics(all, global);
   if (args.summary) printSummary(info, outcomes, targets);
   int code = kExitOk;
@@ -315,6 +353,9 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("-w,--watch", args->watch,
                 "after compiling, keep running and recompile a graph whenever its file changes (polls modification "
                 "times); stop with Ctrl-C");
+  cmd->add_option("--depfile", args->depfile,
+                  "also write a Make/Ninja depfile: the files written for each graph depend on its file, every graph "
+                  "it imports and every PNG texture it samples (for build systems: CMake's DEPFILE, Ninja's depfile)");
   cmd->add_option("--watch-interval", args->watchIntervalMs, "milliseconds between polls in --watch")
       ->check(CLI::Range(10, 60000))
       ->capture_default_str();

@@ -96,6 +96,7 @@ struct Import {
   SourceRef where;                     // the key
   SourceRef pathWhere;                 // the path string
   std::shared_ptr<const Graph> graph;  // set by loadImports; one Graph per file, shared
+  std::string file;  // set by loadImports: the path it names, as diagnostics name it (also when it failed)
 };
 
 // A function graph's outputs, `"interface": {"outputs": {"foam": {...}}}`: what an instance

@@ -52,7 +52,7 @@ class ImportLoader {
     for (Import& im : g.imports) im.graph = loadOne(g, im);
   }
 
-  std::shared_ptr<const Graph> loadOne(const Graph& from, const Import& im) {
+  std::shared_ptr<const Graph> loadOne(const Graph& from, Import& im) {
     const std::string what = "import '" + im.name + "' ('" + im.path + "')";
     if (holdsControlCharacter(im.path)) {
       diags_.error(DiagCode::ImportOutsideTree, im.pathWhere, what + " holds a control character");
@@ -65,6 +65,7 @@ class ImportLoader {
       return nullptr;
     }
     fs::path shown = (fs::path(from.file).parent_path() / written).lexically_normal();
+    im.file = shown.string();
     std::error_code ec;
     if (!fs::is_regular_file(shown, ec)) {
       diags_.error(DiagCode::ImportMissing, im.pathWhere,
@@ -155,6 +156,16 @@ size_t countInlined(const Graph& g, std::unordered_map<const Graph*, size_t>& me
 
 }  // namespace
 
+std::vector<std::string> graphFilesToWatch(const std::string& path) {
+  Diagnostics ignored;
+  auto text = readGraphFile(path, ignored);
+  if (!text) return {path};
+  auto graph = parseGraph(*text, path, ignored);
+  if (!graph) return {path};
+  loadImports(*graph, ignored);
+  return graphFilesRead(*graph);
+}
+
 NodePorts interfacePorts(const Graph& g) {
   NodePorts ports;
   for (const auto& p : g.parameters) {
@@ -189,14 +200,15 @@ size_t inlinedNodeCount(const Graph& graph) {
 
 std::vector<std::string> graphFilesRead(const Graph& graph) {
   std::vector<std::string> files{graph.file};
+  std::set<std::string> listed{graph.file};
   std::set<const Graph*> seen{&graph};
   std::vector<const Graph*> todo{&graph};
   for (size_t i = 0; i < todo.size(); ++i)
-    for (const auto& im : todo[i]->imports)
-      if (im.graph && seen.insert(im.graph.get()).second) {
-        files.push_back(im.graph->file);
-        todo.push_back(im.graph.get());
-      }
+    for (const auto& im : todo[i]->imports) {
+      const std::string& file = im.graph ? im.graph->file : im.file;
+      if (!file.empty() && listed.insert(file).second) files.push_back(file);
+      if (im.graph && seen.insert(im.graph.get()).second) todo.push_back(im.graph.get());
+    }
   return files;
 }
 

@@ -21,8 +21,14 @@ namespace wg {
 bool loadImports(Graph& graph, Diagnostics& diags);
 
 // The files `graph` is made of: its own, then every imported one, each once, in the order
-// first reached (a build system's dependencies). Paths as the diagnostics name them.
+// first reached (a build system's dependencies; what a watcher follows). Paths as the
+// diagnostics name them. An import that failed to load is listed by the path it names,
+// so that a watcher sees it repaired.
 std::vector<std::string> graphFilesRead(const Graph& graph);
+
+// graphFilesRead of the graph file at `path`, read afresh, whatever its faults: the files
+// a watcher follows (at least `path` itself, even when it cannot be read).
+std::vector<std::string> graphFilesToWatch(const std::string& path);
 
 // The ports a function graph has as a node type: an input per parameter (fixed to the
 // parameter's type, its default the parameter's), an output per interface output.

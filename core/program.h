@@ -85,7 +85,7 @@ struct Program {
   std::string description;
   std::string file;
   std::string directory;  // the graph file's folder: texture paths are relative to it
-  int totalNodes = 0;  // nodes in the graph file, with every subgraph instance's inlined
+  int totalNodes = 0;  // nodes in the graph file, each subgraph instance counted as the nodes it inlines
   // The graph files it imports, relative to `directory`, each once (the manifest's "imports").
   std::vector<std::string> importedFiles;
   std::vector<ProgramParameter> parameters;

@@ -96,6 +96,9 @@ class Resolver {
     resolveBody();
     if (diags_.errorCount() > errorsBefore) return std::nullopt;
     resolveOutputs();
+    // A function graph compiled on its own keeps its interface's promises too.
+    std::vector<ValueRef> interfaceValues;
+    if (graph_.interface) resolveInterfaceOutputs(interfaceValues);
     if (diags_.errorCount() > errorsBefore) return std::nullopt;
     if (nodeOutputs) listNodeOutputs(*nodeOutputs);
     return std::move(program_);
@@ -108,7 +111,7 @@ class Resolver {
     for (const auto& p : graph_.parameters) paramValue_.emplace(p.name, scope_->inputs.at(p.name));
     resolveBody();
     if (diags_.errorCount() > errorsBefore) return false;
-    resolveInterfaceOutputs();
+    resolveInterfaceOutputs(scope_->outputs);
     if (diags_.errorCount() > errorsBefore) return false;
     if (shared_.nodeOutputs) listNodeOutputs(*shared_.nodeOutputs);
     return true;
@@ -201,6 +204,7 @@ class Resolver {
       if (const Import* im = spec ? nullptr : graph_.findImport(n.type); im && im->graph) {
         spec = instanceSpec(*im);
         instanceOf_[i] = im;
+        --program_.totalNodes;  // it stands for the nodes it inlines, which count instead
       }
       if (!spec) {
         if (!types) {
@@ -658,7 +662,7 @@ class Resolver {
   }
 
   // A subgraph's interface outputs: each the value of its source, of its declared type.
-  void resolveInterfaceOutputs() {
+  void resolveInterfaceOutputs(std::vector<ValueRef>& values) {
     for (const auto& out : graph_.interface->outputs) {
       std::string label = "interface output '" + out.name + "'";
       if (out.source.kind == InputSource::Kind::NodeOutput) {
@@ -679,7 +683,7 @@ class Resolver {
                      out.source.kind == InputSource::Kind::NodeOutput ? prefixed(out.source.node) : "", label);
         continue;
       }
-      scope_->outputs.push_back(*ref);
+      values.push_back(*ref);
     }
   }
 

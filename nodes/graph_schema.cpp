@@ -185,6 +185,29 @@ OJ parameterSchema() {
             {"allOf", byType}};
 }
 
+// A function graph's interface: its outputs (its inputs are its parameters).
+OJ interfaceSchema() {
+  OJ output{{"type", "object"},
+            {"additionalProperties", false},
+            {"required", {"type", "source"}},
+            {"properties",
+             {{"type", {{"description", "the output's type: the source must have exactly this type"},
+                        {"enum", {"float", "vec2", "vec3", "vec4"}}}},
+              {"source", defRef("source")},
+              {"description", {{"type", "string"}}}}}};
+  return OJ{{"description", "makes the graph a function graph: a node type for the graphs that import it; its "
+                            "parameters are the inputs"},
+            {"type", "object"},
+            {"additionalProperties", false},
+            {"required", {"outputs"}},
+            {"properties",
+             {{"description", {{"type", "string"}}},
+              {"outputs", {{"type", "object"},
+                           {"minProperties", 1},
+                           {"propertyNames", defRef("identifier")},
+                           {"additionalProperties", output}}}}}};
+}
+
 OJ outputsSchema() {
   OJ stages = OJ::object();
   for (const auto& row : outputSlotTable()) {
@@ -239,9 +262,11 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
                     {"required", {"id", "type"}},
                     {"properties",
                      {{"id", described("unique in the graph", defRef("identifier"))},
-                      {"type", {{"description", "a registered node type (watergraph nodes)"},
-                                {"enum", typeNames},
-                                {"enumDescriptions", typeDocs}}},
+                      {"type", {{"anyOf", OJ::array({OJ{{"description", "a registered node type (watergraph nodes)"},
+                                                           {"enum", typeNames},
+                                                           {"enumDescriptions", typeDocs}},
+                                                        described("a name from the graph's \"imports\" (a subgraph)",
+                                                                  defRef("identifier"))})}}},
                       {"options", {{"type", "object"}}},
                       {"inputs", {{"type", "object"}}},
                       {"editor", defRef("editor")}}},
@@ -256,12 +281,19 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
       "do not edit by hand.";
   root["type"] = "object";
   root["additionalProperties"] = false;
-  root["required"] = {"version", "name", "nodes", "outputs"};
+  root["required"] = {"version", "name", "nodes"};
+  // A function graph may leave its output slots out: it is used through its interface.
+  root["anyOf"] = OJ::array({OJ{{"required", {"outputs"}}}, OJ{{"required", {"interface"}}}});
   root["properties"] = OJ{
       {"$schema", {{"description", "this schema, for editors; kept as is"}, {"type", "string"}}},
       {"version", {{"description", "the format version"}, {"const", kGraphFormatVersion}}},
       {"name", described("the graph's name", defRef("identifier"))},
       {"description", {{"type", "string"}}},
+      {"imports", {{"description", "node type name -> path of a function graph, relative to this file (a subgraph)"},
+                   {"type", "object"},
+                   {"propertyNames", defRef("identifier")},
+                   {"additionalProperties", {{"type", "string"}, {"minLength", 1}}}}},
+      {"interface", interfaceSchema()},
       {"parameters", {{"description", "parameter name -> parameter (uniforms, or constants with static)"},
                       {"type", "object"},
                       {"propertyNames", defRef("identifier")},

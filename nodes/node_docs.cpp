@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "core/graph_imports.h"
 #include "core/number_format.h"
 
 namespace wg {
@@ -50,6 +51,54 @@ std::string stagesText(unsigned s) {
 }
 
 }  // namespace
+
+nlohmann::json functionGraphJson(const std::string& type, const Graph& g) {
+  NodePorts ports = interfacePorts(g);
+  nlohmann::json j;
+  j["type"] = type;
+  j["family"] = "subgraph";
+  j["file"] = g.file;
+  j["summary"] = g.interface ? g.interface->description : "";
+  nlohmann::json inputs = nlohmann::json::array();
+  for (size_t i = 0; i < ports.inputs.size(); ++i) {
+    const Parameter& p = g.parameters[i];
+    nlohmann::json pj{{"name", p.name}, {"type", portType(ports.inputs[i])}, {"doc", p.description},
+                      {"default", portDefault(ports.inputs[i])}};
+    if (p.min) pj["min"] = *p.min;
+    if (p.max) pj["max"] = *p.max;
+    inputs.push_back(pj);
+  }
+  nlohmann::json outputs = nlohmann::json::array();
+  for (const auto& o : ports.outputs) outputs.push_back({{"name", o.name}, {"type", portType(o)}, {"doc", o.doc}});
+  j["inputs"] = inputs;
+  j["outputs"] = outputs;
+  return j;
+}
+
+std::string functionGraphText(const std::string& type, const Graph& g) {
+  nlohmann::json j = functionGraphJson(type, g);
+  std::string s = type + "  (subgraph, " + g.file + ")\n";
+  if (!j["summary"].get<std::string>().empty()) s += "  " + j["summary"].get<std::string>() + "\n";
+  s += "  inputs:\n";
+  if (j["inputs"].empty()) s += "    (none)\n";
+  for (const auto& in : j["inputs"]) {
+    std::string range;
+    if (in.contains("min") || in.contains("max"))
+      range = " in [" + (in.contains("min") ? formatNumber(in["min"].get<double>()) : std::string("-inf")) + ", " +
+              (in.contains("max") ? formatNumber(in["max"].get<double>()) : std::string("inf")) + "]";
+    s += "    " + in["name"].get<std::string>() + ": " + in["type"].get<std::string>() + ", default " +
+         in["default"].get<std::string>() + range;
+    if (!in["doc"].get<std::string>().empty()) s += " — " + in["doc"].get<std::string>();
+    s += "\n";
+  }
+  s += "  outputs:\n";
+  for (const auto& out : j["outputs"]) {
+    s += "    " + out["name"].get<std::string>() + ": " + out["type"].get<std::string>();
+    if (!out["doc"].get<std::string>().empty()) s += " — " + out["doc"].get<std::string>();
+    s += "\n";
+  }
+  return s;
+}
 
 nlohmann::json nodesJson(const Registry& registry) {
   nlohmann::json all = nlohmann::json::array();
