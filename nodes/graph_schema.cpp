@@ -257,14 +257,15 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
     perType.push_back(OJ{{"if", {{"properties", {{"type", {{"const", s->type}}}}}, {"required", {"type"}}}},
                          {"then", defRef("node_" + s->type)}});
   }
+  defs["node_type"] = OJ{{"description", "a registered node type (watergraph nodes)"},
+                         {"enum", typeNames},
+                         {"enumDescriptions", typeDocs}};
   defs["node"] = OJ{{"type", "object"},
                     {"additionalProperties", false},
                     {"required", {"id", "type"}},
                     {"properties",
                      {{"id", described("unique in the graph", defRef("identifier"))},
-                      {"type", {{"anyOf", OJ::array({OJ{{"description", "a registered node type (watergraph nodes)"},
-                                                           {"enum", typeNames},
-                                                           {"enumDescriptions", typeDocs}},
+                      {"type", {{"anyOf", OJ::array({defRef("node_type"),
                                                         described("a name from the graph's \"imports\" (a subgraph)",
                                                                   defRef("identifier"))})}}},
                       {"options", {{"type", "object"}}},
@@ -283,7 +284,13 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
   root["additionalProperties"] = false;
   root["required"] = {"version", "name", "nodes"};
   // A function graph may leave its output slots out: it is used through its interface.
-  root["anyOf"] = OJ::array({OJ{{"required", {"outputs"}}}, OJ{{"required", {"interface"}}}});
+  // Without imports, every node type is a registered one (the schema cannot match a type
+  // against the names a graph imports, so with imports any identifier passes here).
+  OJ registeredTypesOnly{
+      {"if", {{"not", {{"required", {"imports"}}}}}},
+      {"then", {{"properties", {{"nodes", {{"items", {{"properties", {{"type", defRef("node_type")}}}}}}}}}}}};
+  root["allOf"] = OJ::array({OJ{{"anyOf", OJ::array({OJ{{"required", {"outputs"}}}, OJ{{"required", {"interface"}}}})}},
+                             registeredTypesOnly});
   root["properties"] = OJ{
       {"$schema", {{"description", "this schema, for editors; kept as is"}, {"type", "string"}}},
       {"version", {{"description", "the format version"}, {"const", kGraphFormatVersion}}},

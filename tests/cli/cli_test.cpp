@@ -346,9 +346,11 @@ TEST(CliFmt, FormattingExampleGraphCopiesIsIdempotent) {
     TempDir tmp;
     std::string path = tmp / fs::path(g).filename().string();
     test::writeFile(path, test::readFile(g));
-    // The textures a graph reads lie beside it (lagoon_ripples.png): copied with it.
+    // The textures a graph reads lie beside it (lagoon_ripples.png), the subgraphs it
+    // imports in lib/: copied with it.
     std::string folder = fs::path(g).parent_path().string();
     for (const auto& png : test::listFiles(folder, ".png")) fs::copy_file(folder + "/" + png, tmp / png);
+    fs::copy(folder + "/lib", tmp / "lib", fs::copy_options::recursive);
     ASSERT_EQ(wgRun("fmt " + shellQuote(path)).exit, 0);
     std::string once = test::readFile(path);
     ASSERT_EQ(wgRun("fmt " + shellQuote(path)).exit, 0);

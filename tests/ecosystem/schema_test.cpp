@@ -49,7 +49,7 @@ TEST(Schema, ListsEveryNodeTypeWithItsPortsAndOptions) {
   auto schema = nlohmann::json::parse(test::readFile(schemaPath()));
   auto nodes = nlohmann::json::parse(eco::wgRun("nodes --json").out);
   const auto& defs = schema["definitions"];
-  std::vector<std::string> types = defs["node"]["properties"]["type"]["enum"];
+  std::vector<std::string> types = defs["node_type"]["enum"];
   ASSERT_EQ(types.size(), nodes.size());
   for (const auto& n : nodes) {
     std::string type = n["type"];
