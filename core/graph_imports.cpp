@@ -104,19 +104,17 @@ class ImportLoader {
     size_t first = diags_.all().size();
     std::shared_ptr<Graph> sub;
     if (auto parsed = loadFile(shown.string())) sub = std::make_shared<Graph>(std::move(*parsed));
-    if (sub && !sub->interface) {
-      diags_.error(DiagCode::NotAFunctionGraph, im.pathWhere,
-                   what + ": '" + shown.string() +
-                       "' declares no \"interface\"; only a function graph (one with an interface) can be used as a node type");
-      sub.reset();
-    }
     if (sub) {
       chain_.push_back({real.string(), shown.string()});
       loadImportsOf(*sub);
       chain_.pop_back();
     }
-    // What went wrong inside the file says where it was imported from.
+    // What went wrong inside the file (or below it) says where it was imported from.
     diags_.addLocatedNoteFrom(first, {im.where, "imported as '" + im.name + "' from here"});
+    if (sub && !sub->interface)
+      diags_.error(DiagCode::NotAFunctionGraph, im.pathWhere,
+                   what + ": '" + shown.string() +
+                       "' declares no \"interface\"; only a function graph (one with an interface) can be used as a node type");
     std::shared_ptr<const Graph> result = sub;
     if (diags_.all().size() > first) result = nullptr;
     loaded_[real.string()] = result;
@@ -183,12 +181,21 @@ NodePorts interfacePorts(const Graph& g) {
 bool loadImports(Graph& graph, Diagnostics& diags) {
   if (graph.imports.empty()) return true;
   if (!ImportLoader(graph, diags).load(graph)) return false;
-  size_t n = inlinedNodeCount(graph);
-  if (n > kMaxNodes) {
-    diags.error(DiagCode::LimitExceeded, SourceRef{graph.file, 1, 1},
-                "the graph has more than " + std::to_string(kMaxNodes) +
-                    " nodes with every subgraph instance inlined; the limit is " + std::to_string(kMaxNodes));
-    return false;
+  // Reported at the instance that takes the count past the limit.
+  std::unordered_map<const Graph*, size_t> memo;
+  std::unordered_map<std::string_view, const Graph*> byName;
+  for (const auto& im : graph.imports) byName.emplace(im.name, im.graph.get());
+  size_t n = 0;
+  for (const auto& node : graph.nodes) {
+    auto it = byName.find(node.type);
+    n += it == byName.end() ? 1 : countInlined(*it->second, memo);
+    if (n > kMaxNodes) {
+      diags.error(DiagCode::LimitExceeded, node.where,
+                  "with instance '" + node.id + "' the graph has more than " + std::to_string(kMaxNodes) +
+                      " nodes with every subgraph instance inlined; the limit is " + std::to_string(kMaxNodes),
+                  node.id);
+      return false;
+    }
   }
   return true;
 }

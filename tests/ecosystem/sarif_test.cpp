@@ -117,5 +117,27 @@ TEST(Sarif, JsonFormatIsUnchanged) {
   EXPECT_GT(j["diagnostics"][0]["line"].get<int>(), 0);
 }
 
+// A fault inside a subgraph: the result lies in the subgraph's file, and the instance that
+// reached it is a related location (and a note line in the message text).
+TEST(Sarif, AFaultInsideASubgraphNamesItsInstanceAsARelatedLocation) {
+  std::string bad = test::sourcePath("tests/bad/WG025_inside_a_subgraph.json");
+  auto r = eco::wgRun("validate " + shellQuote(bad) + " --diagnostics-format sarif");
+  EXPECT_EQ(r.exit, 1);
+  auto log = parseSarif(r.out);
+  const auto& result = log["runs"][0]["results"][0];
+  EXPECT_EQ(result["ruleId"], "WG025");
+  std::string uri = result["locations"][0]["physicalLocation"]["artifactLocation"]["uri"];
+  EXPECT_TRUE(uri.ends_with("tests/bad/imports/broken_reference.json")) << uri;
+  ASSERT_EQ(result["relatedLocations"].size(), 1u) << result.dump(2);
+  const auto& related = result["relatedLocations"][0];
+  std::string relatedUri = related["physicalLocation"]["artifactLocation"]["uri"];
+  EXPECT_TRUE(relatedUri.ends_with("tests/bad/WG025_inside_a_subgraph.json")) << relatedUri;
+  EXPECT_EQ(related["physicalLocation"]["region"]["startLine"], 5);
+  EXPECT_EQ(related["physicalLocation"]["region"]["startColumn"], 13);
+  EXPECT_EQ(related["message"]["text"], "in instance 'b' of 'imports/broken_reference.json'");
+  std::string text = result["message"]["text"];
+  EXPECT_NE(text.find("\nnote: in instance 'b'"), std::string::npos) << text;
+}
+
 }  // namespace
 }  // namespace wg

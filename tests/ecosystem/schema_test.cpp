@@ -92,6 +92,16 @@ TEST(Schema, ValidatorAcceptsEveryExampleGraph) {
   for (const auto& g : graphs) EXPECT_NE(r.out.find(g + ": valid"), std::string::npos) << r.out;
 }
 
+TEST(Schema, ValidatorAcceptsEveryLibraryFunctionGraph) {
+  std::vector<std::string> graphs;
+  for (const auto& name : test::listFiles(test::sourcePath("graphs/lib"), ".json"))
+    graphs.push_back(test::sourcePath("graphs/lib/" + name));
+  ASSERT_GE(graphs.size(), 4u);
+  auto r = sh(validatorCommand(graphs, false));
+  ASSERT_NE(r.exit, 3) << r.out;
+  EXPECT_EQ(r.exit, 0) << r.out << r.err;
+}
+
 TEST(Schema, ValidatorRejectsBadGraphs) {
   auto bad = schemaBadGraphs();
   ASSERT_GE(bad.size(), 2u);

@@ -6,6 +6,8 @@
 #include <filesystem>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "eco_support.h"
 
 namespace wg {
@@ -144,6 +146,74 @@ TEST(Usability, WatchRecompilesOnChange) {
   eco::sh("kill " + std::to_string(pid));
   text = waitFor(log, "watch stopped");
   EXPECT_NE(text.find("watch stopped"), std::string::npos) << text;
+}
+
+// --watch follows the graphs a graph imports: saving a subgraph recompiles its user.
+TEST(Usability, WatchRecompilesWhenAnImportedSubgraphChanges) {
+  eco::TempDir tmp;
+  fs::create_directories(tmp / "lib");
+  fs::copy_file(test::sourcePath("graphs/pool.json"), tmp / "pool.json");
+  for (const char* lib : {"floor_caustics.json", "fresnel_sky.json"})
+    fs::copy_file(test::sourcePath(std::string("graphs/lib/") + lib), tmp / (std::string("lib/") + lib));
+  std::string log = tmp / "watch.log";
+  std::string out = tmp / "out";
+  auto start = eco::sh(shellQuote(test::watergraphBinary()) + " compile " + shellQuote(tmp / "pool.json") + " -o " +
+                       shellQuote(out) + " --watch --watch-interval 50 > " + shellQuote(log) + " 2>&1 & echo $!");
+  ASSERT_EQ(start.exit, 0);
+  int pid = std::stoi(start.out);
+  struct Killer {
+    int pid;
+    ~Killer() { eco::sh("kill " + std::to_string(pid) + " 2>/dev/null"); }
+  } killer{pid};
+  std::string text = waitFor(log, "watching 1 graph");
+  ASSERT_NE(text.find("watching 1 graph"), std::string::npos) << text;
+
+  std::string sky = tmp / "lib/fresnel_sky.json";
+  std::string json = test::readFile(sky);
+  size_t at = json.find("\"default\": 0.02");
+  ASSERT_NE(at, std::string::npos);
+  test::writeFile(sky, json.substr(0, at) + "\"default\": 0.0371" + json.substr(at + 15));
+  text = waitFor(log, "recompiled ");
+  EXPECT_NE(text.find("recompiled " + std::string(tmp / "pool.json") + ": ok"), std::string::npos) << text;
+  EXPECT_NE(test::readFile(out + "/pool.glsl330.frag").find("0.0371"), std::string::npos);
+}
+
+TEST(Usability, DepfileListsEveryGraphFileAndTextureAGraphIsMadeOf) {
+  eco::TempDir tmp;
+  std::string river = test::sourcePath("graphs/river.json");
+  std::string lagoon = test::sourcePath("graphs/lagoon.json");
+  auto r = eco::wgRun("compile " + shellQuote(river) + " " + shellQuote(lagoon) + " -o " + shellQuote(tmp / "out") +
+                      " --target glsl330 --depfile " + shellQuote(tmp / "shaders.d"));
+  ASSERT_EQ(r.exit, 0) << r.err;
+  std::string d = test::readFile(tmp / "shaders.d");
+  std::string outDir = tmp / "out";
+  // One rule per graph: its files written, then the files read.
+  EXPECT_NE(d.find(outDir + "/river.glsl330.vert " + outDir + "/river.glsl330.frag " + outDir + "/river.manifest.json:"),
+            std::string::npos)
+      << d;
+  for (const char* lib : {"depth_colour.json", "fresnel_sky.json", "shore_foam.json"})
+    EXPECT_NE(d.find(test::sourcePath(std::string("graphs/lib/") + lib)), std::string::npos) << lib << "\n" << d;
+  EXPECT_NE(d.find(" \\\n  " + river), std::string::npos) << d;
+  EXPECT_NE(d.find(test::sourcePath("graphs/lagoon_ripples.png")), std::string::npos) << d;
+  // validate writes nothing and takes no depfile.
+  EXPECT_EQ(eco::wgRun("validate " + shellQuote(river) + " --depfile x.d").exit, 2);
+}
+
+TEST(Usability, NodesPrintsAFunctionGraphsInterface) {
+  auto text = eco::wgRun("nodes --graph " + shellQuote(test::sourcePath("graphs/lib/fresnel_sky.json")));
+  ASSERT_EQ(text.exit, 0) << text.err;
+  EXPECT_NE(text.out.find("fresnel_sky  (subgraph, "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("    f0: float, default 0.02 in [0, 1]"), std::string::npos) << text.out;
+  // A user graph lists what it imports, under the names it imports them as.
+  auto json = eco::wgRun("nodes --json --graph " + shellQuote(test::sourcePath("graphs/pool.json")));
+  ASSERT_EQ(json.exit, 0) << json.err;
+  auto list = nlohmann::json::parse(json.out);
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(list[0]["type"], "floor_caustics");
+  EXPECT_EQ(list[1]["type"], "fresnel_sky");
+  EXPECT_EQ(list[1]["outputs"][0]["name"], "color");
+  EXPECT_EQ(list[1]["inputs"][2]["name"], "f0");
+  EXPECT_EQ(list[1]["inputs"][2]["max"], 1);
 }
 
 }  // namespace
