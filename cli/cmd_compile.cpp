@@ -1,6 +1,7 @@
 // compile: graphs -> GLSL files + manifest (and MSL / HLSL through SPIRV-Cross); validate:
 // the same checks, nothing written. Batch runs draw a progress bar when stdout is a
 // terminal; --watch recompiles a graph when its file changes.
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <csignal>
@@ -148,6 +149,10 @@ std::string nowHms() {
 DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, const std::string& dir) {
   DepfileRule rule;
   for (const auto& f : result.files) rule.outputs.push_back(dir + "/" + f.name);
+  // The manifest first: Ninja takes a depfile's first target for the build edge's first
+  // output, and watergraph_add_shaders (cmake/WatergraphShaders.cmake) lists it first.
+  std::stable_partition(rule.outputs.begin(), rule.outputs.end(),
+                        [](const std::string& f) { return f.ends_with(".manifest.json"); });
   rule.inputs = graphFilesRead(graph);
   std::filesystem::path graphDir = std::filesystem::path(graph.file).parent_path();
   for (const auto& t : result.manifest.textures)

@@ -3,14 +3,20 @@
 #
 # Compiles graphs with watergraph at build time, before <target> builds. Each graph gives
 # <dir>/<name>.<target>.vert/.frag (vk450 also .vert.spv/.frag.spv) and <dir>/<name>.manifest.json;
-# a graph is recompiled when its file (or the watergraph executable) changes. TARGETS defaults
+# a graph is recompiled when its file, a graph it imports (a subgraph), a PNG texture it
+# samples, or the watergraph executable changes (watergraph writes a depfile, <dir>/<name>.d,
+# which the build reads through add_custom_command's DEPFILE). TARGETS defaults
 # to glsl330 es300 vk450, OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/watergraph. Relative graph
 # paths are relative to ${CMAKE_CURRENT_SOURCE_DIR}.
 #
 # Sets on <target>: the property WATERGRAPH_SHADER_DIR (the output folder), and appends the
-# generated files to WATERGRAPH_SHADERS. PNG textures a graph names are not tracked: touch the
-# graph after changing one.
+# generated files to WATERGRAPH_SHADERS.
 include_guard(GLOBAL)
+# Depfile paths are absolute; CMP0116 NEW makes Ninja builds read them as such (functions
+# keep the policies in effect where they are defined).
+if(POLICY CMP0116)
+  cmake_policy(SET CMP0116 NEW)
+endif()
 
 function(watergraph_add_shaders)
   cmake_parse_arguments(PARSE_ARGV 0 WG "" "TARGET;OUTPUT_DIR" "GRAPHS;TARGETS")
@@ -51,10 +57,13 @@ function(watergraph_add_shaders)
         endif()
       endforeach()
     endforeach()
+    set(depfile ${WG_OUTPUT_DIR}/${name}.d)
     add_custom_command(
       OUTPUT ${outputs}
       COMMAND watergraph::watergraph compile "${graph_abs}" -o "${WG_OUTPUT_DIR}" --target ${target_arg} --quiet
+              --depfile "${depfile}"
       DEPENDS "${graph_abs}" watergraph::watergraph
+      DEPFILE "${depfile}"
       COMMENT "watergraph: compiling ${name}.json (${target_arg})"
       VERBATIM)
     list(APPEND all_outputs ${outputs})

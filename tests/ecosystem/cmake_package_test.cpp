@@ -1,6 +1,7 @@
 // `cmake --install` gives a package that find_package(watergraph) finds; the example
 // consumer (examples/cmake-consumer) builds against it, its shaders are compiled at build
-// time by watergraph_add_shaders, and editing the graph recompiles them.
+// time by watergraph_add_shaders, and editing the graph, or the subgraph it imports,
+// recompiles them.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -76,6 +77,19 @@ TEST(CMakePackage, InstallFindPackageAndRebuildOnGraphChange) {
   ASSERT_EQ(r.exit, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("watergraph: compiling pond.json"), std::string::npos) << r.out;
   EXPECT_NE(test::readFile(bin + "/shaders/pond.manifest.json").find("0.75"), std::string::npos);
+
+  // Edit the subgraph pond.json imports: the depfile makes the build recompile pond.json.
+  std::string sub = src + "/graphs/lib/sky_blend.json";
+  text = test::readFile(sub);
+  at = text.find("\"default\": 0.02");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 15, "\"default\": 0.0371");
+  test::writeFile(sub, text);
+  bumpMtime(sub);
+  r = eco::sh("cmake --build " + shellQuote(bin));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("watergraph: compiling pond.json"), std::string::npos) << r.out;
+  EXPECT_NE(test::readFile(bin + "/shaders/pond.glsl330.frag").find("0.0371"), std::string::npos);
 }
 
 TEST(CMakePackage, BadArgumentsFailAtConfigureTime) {
