@@ -9,11 +9,13 @@
 // targets are about: t(10k)/t(1k) and our time against glslang's on the same output.
 #include <benchmark/benchmark.h>
 #include <time.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -27,6 +29,7 @@
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest_build.h"
 #include "codegen/passes.h"
+#include "core/graph_imports.h"
 #include "core/graph_io.h"
 #include "core/resolve.h"
 #include "nodes/registry.h"
@@ -72,7 +75,7 @@ struct Case {
     auto p = std::make_unique<Prepared>();
     Diagnostics diags;
     auto g = parseGraph(text, file, diags);
-    if (!g) throw std::runtime_error(name + ": does not load");
+    if (!g || !loadImports(*g, diags)) throw std::runtime_error(name + ": does not load");
     p->graph = std::move(*g);
     auto r = resolveGraph(p->graph, defaultRegistry(), diags);
     if (!r) throw std::runtime_error(name + ": does not resolve");
@@ -93,6 +96,40 @@ struct Case {
   std::unique_ptr<Prepared> prep_;
 };
 
+// instances_N.json for each N, importing lib/unit.json, into `dir`.
+void writeInstanceGraphs(const std::filesystem::path& dir, const std::vector<int>& counts) {
+  std::filesystem::create_directories(dir / "lib");
+  std::ofstream(dir / "lib/unit.json") << R"({"version": 1, "name": "unit",
+  "interface": {"outputs": {"color": {"type": "vec3", "source": "lit.out"}}},
+  "parameters": {"seed": {"type": "float", "default": 1}, "f0": {"type": "float", "default": 0.02, "min": 0, "max": 1}},
+  "nodes": [
+    {"id": "p", "type": "world_position"},
+    {"id": "s", "type": "mul", "inputs": {"a": "p.out", "b": "$seed"}},
+    {"id": "l", "type": "length", "inputs": {"x": "s.out"}},
+    {"id": "w", "type": "sin", "inputs": {"x": "l.out"}},
+    {"id": "f", "type": "fresnel", "inputs": {"f0": "$f0"}},
+    {"id": "m", "type": "mix", "inputs": {"a": [0, 0.2, 0.3], "b": [0.5, 0.7, 0.9], "t": "f.reflectance"}},
+    {"id": "k", "type": "mul", "inputs": {"a": "w.out", "b": 0.1}},
+    {"id": "lit", "type": "add", "inputs": {"a": "m.out", "b": "k.out"}}
+  ]})";
+  for (int n : counts) {
+    std::string nodes;
+    for (int i = 0; i < n; ++i) {
+      std::string id = "u" + std::to_string(i);
+      nodes += R"(    {"id": ")" + id + R"(", "type": "unit", "inputs": {"seed": )" + std::to_string(i + 1) + "}},\n";
+      if (i == 0) continue;
+      std::string sumSoFar = i == 1 ? "u0.color" : "sum" + std::to_string(i - 1) + ".out";
+      nodes += R"(    {"id": "sum)" + std::to_string(i) + R"(", "type": "add", "inputs": {"a": ")" + sumSoFar +
+               R"(", "b": ")" + id + R"(.color"}},)" + "\n";
+    }
+    std::string last = n == 1 ? "u0.color" : "sum" + std::to_string(n - 1) + ".out";
+    nodes.resize(nodes.size() - 2);  // the last ",\n"
+    std::ofstream(dir / ("instances_" + std::to_string(n) + ".json"))
+        << R"({"version": 1, "name": "instances", "imports": {"unit": "lib/unit.json"}, "nodes": [)" << "\n"
+        << nodes << "\n  ],\n" << R"(  "outputs": {"fragment": {"color": ")" << last << R"("}}})" << "\n";
+  }
+}
+
 std::vector<std::unique_ptr<Case>>& cases() {
   static std::vector<std::unique_ptr<Case>> all;
   return all;
@@ -100,11 +137,12 @@ std::vector<std::unique_ptr<Case>>& cases() {
 
 double seconds(Clock::duration d) { return std::chrono::duration<double>(d).count(); }
 
+// The file and the subgraphs it imports (each read and parsed once).
 void load(benchmark::State& state, Case* c) {
   for (auto _ : state) {
     Diagnostics diags;
     auto g = parseGraph(c->text, c->file, diags);
-    if (!g) state.SkipWithError("load failed");
+    if (!g || !loadImports(*g, diags)) state.SkipWithError("load failed");
     benchmark::DoNotOptimize(g);
   }
   state.counters["bytes"] = static_cast<double>(c->text.size());
@@ -113,6 +151,7 @@ void load(benchmark::State& state, Case* c) {
   {
     Diagnostics diags;
     auto g = parseGraph(c->text, c->file, diags);
+    if (g) loadImports(*g, diags);
   }
   state.counters["peak_MiB"] = static_cast<double>(stopHeapWindow()) / (1024.0 * 1024.0);
 }
@@ -205,7 +244,7 @@ void manifest(benchmark::State& state, Case* c) {
 CompileResult compileWithoutGlslang(const Case& c) {
   Diagnostics diags;
   auto g = parseGraph(c.text, c.file, diags);
-  if (!g) throw std::runtime_error(c.name + ": does not load");
+  if (!g || !loadImports(*g, diags)) throw std::runtime_error(c.name + ": does not load");
   CompileOptions options;
   options.validate = false;
   auto r = compileGraph(*g, defaultRegistry(), options, diags);
@@ -375,6 +414,19 @@ int main(int argc, char** argv) {
     registerCase(c.get(), n);
     cases().push_back(std::move(c));
   }
+  // A graph of N instances of one function graph (graphs/lib-like, eight nodes), each fed
+  // a different literal so that none merges: compile time against the inlined size.
+  std::filesystem::path instancesDir = std::filesystem::temp_directory_path() / ("wg_bench_instances_" + std::to_string(::getpid()));
+  writeInstanceGraphs(instancesDir, {1, 10, 100, 1000});
+  for (int n : {1, 10, 100, 1000}) {
+    auto c = std::make_unique<Case>();
+    c->name = "instances_" + std::to_string(n);
+    c->file = (instancesDir / (c->name + ".json")).string();
+    wg::Diagnostics diags;
+    c->text = *wg::readGraphFile(c->file, diags);
+    registerCase(c.get(), n * 9);
+    cases().push_back(std::move(c));
+  }
   std::vector<std::filesystem::path> graphs;
   for (const auto& e : std::filesystem::directory_iterator(std::string(WG_SOURCE_DIR) + "/graphs"))
     if (e.path().extension() == ".json") graphs.push_back(e.path());
@@ -395,5 +447,7 @@ int main(int argc, char** argv) {
   SummaryReporter reporter;
   benchmark::RunSpecifiedBenchmarks(&reporter);
   benchmark::Shutdown();
+  std::error_code ec;
+  std::filesystem::remove_all(instancesDir, ec);
   return 0;
 }
