@@ -25,7 +25,7 @@ ROOT=$PWD
 SECONDS_EACH=${1:-60}
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen texture edit_ops formula)
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen texture edit_ops formula imports)
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
@@ -67,11 +67,12 @@ fuzz_one() {
     texture) limits=(-max_len=4096 -timeout=10 -rss_limit_mb=4096) ;;
     edit_ops) limits=(-max_len=1024 -timeout=10 -rss_limit_mb=4096) ;;
     formula) limits=(-max_len=4200 -timeout=30 -rss_limit_mb=4096) ;;
+    imports) limits=(-max_len=16384 -timeout=30 -rss_limit_mb=4096) ;;
   esac
-  # The texture and edit-sequence targets check cheap properties over a small input space:
-  # half the time.
+  # The texture and edit-sequence targets check cheap properties over a small input space,
+  # the importer one what the compile target already covers for each file: half the time.
   local seconds=$SECONDS_EACH
-  case $t in texture|edit_ops) seconds=$(( (SECONDS_EACH + 1) / 2 )) ;; esac
+  case $t in texture|edit_ops|imports) seconds=$(( (SECONDS_EACH + 1) / 2 )) ;; esac
   local marker=$FUZZ_DIR/.start-$t
   touch "$marker"
   local log=$FUZZ_DIR/$t.log

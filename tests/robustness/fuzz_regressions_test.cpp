@@ -13,6 +13,7 @@
 #include "fuzz/edit_sequence.h"
 #include "fuzz/formula_property.h"
 #include "fuzz/fuzz_properties.h"
+#include "fuzz/imports_property.h"
 #include "fuzz/texture_property.h"
 #include "test_support.h"
 
@@ -67,6 +68,33 @@ TEST(FuzzCorpus, TexturePropertyHoldsForEveryKeptInput) {
   EXPECT_FALSE(inputs.empty());
   for (const auto& path : inputs)
     EXPECT_EQ(fuzz::textureProperty(test::readFile(test::sourcePath(path)), scratch + "/run"), "") << path;
+  std::filesystem::remove_all(scratch);
+}
+
+TEST(FuzzCorpus, ImportsPropertyHoldsForEveryKeptInput) {
+  std::string scratch = test::makeTempDir("wg_imports_replay_");
+  auto inputs = corpus("imports");
+  EXPECT_GE(inputs.size(), 4u);
+  for (const auto& path : inputs)
+    EXPECT_EQ(fuzz::importsProperty(test::readFile(test::sourcePath(path)), scratch + "/run"), "") << path;
+  std::filesystem::remove_all(scratch);
+}
+
+// The seeds reach both sides: a tree of files that compiles, and faulty trees reported.
+TEST(FuzzCorpus, ImportsSeedsCompileAndFail) {
+  std::string scratch = test::makeTempDir("wg_imports_sides_");
+  auto outcome = [&](const std::string& seed) {
+    auto files = fuzz::writeImportFiles(test::readFile(test::sourcePath("tests/fuzz/corpus/imports/" + seed)), scratch);
+    Diagnostics diags;
+    auto g = loadGraphFile(files[0], diags);
+    std::optional<CompileResult> r;
+    if (g) r = compileGraph(*g, defaultRegistry(), CompileOptions{}, diags);
+    return r ? std::string("ok") : diags.sorted().empty() ? "?" : codeString(diags.sorted()[0].code);
+  };
+  EXPECT_EQ(outcome("two_instances"), "ok");
+  EXPECT_EQ(outcome("nested"), "ok");
+  EXPECT_EQ(outcome("cycle"), "WG072");
+  EXPECT_EQ(outcome("interface_mismatch"), "WG074");
   std::filesystem::remove_all(scratch);
 }
 
