@@ -49,7 +49,16 @@ std::optional<Program> buildProgram(const Graph& graph, const Registry& registry
 namespace {
 
 // A glslang message mapped back to the node whose code is on that line.
-void reportValidation(const ValidationResult& vr, const std::vector<EmittedShader>& shaders,
+std::string spirvBytes(const std::vector<uint32_t>& words) {
+  std::string bytes(words.size() * 4, '\0');
+  for (size_t i = 0; i < words.size(); ++i)
+    for (int b = 0; b < 4; ++b) bytes[i * 4 + static_cast<size_t>(b)] = static_cast<char>((words[i] >> (8 * b)) & 0xffu);
+  return bytes;
+}
+
+}  // namespace
+
+void reportRejectedShaders(const ValidationResult& vr, const std::vector<EmittedShader>& shaders,
                       const std::vector<ShaderSource>& sources, const Program& program, DiagCode code,
                       Diagnostics& diags) {
   for (const auto& m : vr.errors) {
@@ -67,15 +76,6 @@ void reportValidation(const ValidationResult& vr, const std::vector<EmittedShade
     }
   }
 }
-
-std::string spirvBytes(const std::vector<uint32_t>& words) {
-  std::string bytes(words.size() * 4, '\0');
-  for (size_t i = 0; i < words.size(); ++i)
-    for (int b = 0; b < 4; ++b) bytes[i * 4 + static_cast<size_t>(b)] = static_cast<char>((words[i] >> (8 * b)) & 0xffu);
-  return bytes;
-}
-
-}  // namespace
 
 std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
                                           const CompileOptions& options, Diagnostics& diags) {
@@ -113,7 +113,7 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
       ValidationResult vr = validateShaders(target, sources);
       if (!vr.ok) {
         bool spirvStage = !vr.errors.empty() && vr.errors.front().text.rfind("spirv-val", 0) == 0;
-        reportValidation(vr, er.shaders, sources, *program, spirvStage ? DiagCode::SpirvRejected : DiagCode::GlslRejected, diags);
+        reportRejectedShaders(vr, er.shaders, sources, *program, spirvStage ? DiagCode::SpirvRejected : DiagCode::GlslRejected, diags);
         ok = false;
       } else {
         for (size_t s = 0; s < vr.spirv.size() && s < sources.size(); ++s)

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "codegen/emit_glsl.h"
+#include "codegen/glslang_validate.h"
 #include "codegen/manifest.h"
 #include "codegen/target.h"
 #include "core/diagnostic.h"
@@ -34,6 +35,12 @@ struct CompileResult {
   int nodesTotal = 0;
   int nodesKept = 0;
 };
+
+// glslang's messages about generated shaders as diagnostics at the graph node whose op wrote
+// the line (and the subgraph instances it lies in), or at the graph file for a line no op wrote.
+void reportRejectedShaders(const ValidationResult& vr, const std::vector<EmittedShader>& shaders,
+                           const std::vector<ShaderSource>& sources, const Program& program, DiagCode code,
+                           Diagnostics& diags);
 
 // Runs resolve and the pass recipe; the Program is ready to emit.
 std::optional<Program> buildProgram(const Graph& graph, const Registry& registry, Diagnostics& diags);

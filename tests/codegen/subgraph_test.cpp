@@ -96,7 +96,7 @@ struct Built {
   Diagnostics diags;
 };
 
-Built compileFile(const std::string& path) {
+Built compileTree(const std::string& path) {
   Built b;
   auto graph = loadGraphFile(path, b.diags);
   if (graph) b.result = compileGraph(*graph, defaultRegistry(), CompileOptions{}, b.diags);
@@ -127,8 +127,8 @@ Value colourAt(const Program& p, double cosine) {
 TEST(Subgraph, TwoInstancesWithDifferentInputsComputeWhatTheWrittenOutNodesCompute) {
   GraphTree tree;
   tree.write("lib/sky_blend.json", kSkyBlend);
-  Built inlined = compileFile(tree.write("parent.json", kTwoInstances));
-  Built written = compileFile(tree.write("written.json", kWrittenOut));
+  Built inlined = compileTree(tree.write("parent.json", kTwoInstances));
+  Built written = compileTree(tree.write("written.json", kWrittenOut));
   ASSERT_TRUE(inlined.result) << diagnosticsText(inlined.diags);
   ASSERT_TRUE(written.result) << diagnosticsText(written.diags);
   EXPECT_EQ(inlined.result->nodesKept, written.result->nodesKept);
@@ -148,7 +148,7 @@ TEST(Subgraph, TwoInstancesWithDifferentInputsComputeWhatTheWrittenOutNodesCompu
 TEST(Subgraph, TwoInstancesFedTheSameValuesBecomeOne) {
   GraphTree tree;
   tree.write("lib/sky_blend.json", kSkyBlend);
-  Built b = compileFile(tree.write("parent.json", R"({
+  Built b = compileTree(tree.write("parent.json", R"({
   "version": 1, "name": "same",
   "imports": {"sky_blend": "lib/sky_blend.json"},
   "parameters": {"deep": {"type": "vec3", "default": [0, 0.1, 0.3], "min": 0, "max": 1}},
@@ -169,7 +169,7 @@ TEST(Subgraph, TwoInstancesFedTheSameValuesBecomeOne) {
 TEST(Subgraph, AnOutputNobodyReadsIsNotComputed) {
   GraphTree tree;
   tree.write("lib/sky_blend.json", kSkyBlend);
-  Built b = compileFile(tree.write("parent.json", R"({
+  Built b = compileTree(tree.write("parent.json", R"({
   "version": 1, "name": "only_reflectance",
   "imports": {"sky_blend": "lib/sky_blend.json"},
   "nodes": [{"id": "a", "type": "sky_blend"}],
@@ -196,7 +196,7 @@ TEST(Subgraph, SubgraphsUsingSubgraphsFourLevelsDeep) {
     next = name + ".json";
     nextType = name;
   }
-  Built b = compileFile(tree.write("parent.json", R"({
+  Built b = compileTree(tree.write("parent.json", R"({
   "version": 1, "name": "deep",
   "imports": {"level1": "lib/level1.json"},
   "nodes": [{"id": "top", "type": "level1", "inputs": {"f0": 0.5}}],
@@ -243,7 +243,7 @@ TEST(Subgraph, AFaultInsideASubgraphPointsIntoItsFileWithANotePerInstance) {
   broken.replace(broken.find("\"t\": \"fresnel.reflectance\""), 26, "\"t\": \"fresnel.reflectanc\"");
   std::string lib = tree.write("lib/sky_blend.json", broken);
   std::string parent = tree.write("parent.json", kTwoInstances);
-  Built b = compileFile(parent);
+  Built b = compileTree(parent);
   ASSERT_FALSE(b.result);
   auto sorted = b.diags.sorted();
   ASSERT_EQ(sorted.size(), 2u) << diagnosticsText(b.diags);  // once per instance
@@ -278,7 +278,7 @@ TEST(Subgraph, NestedInstancesAreNamedInnermostFirst) {
   "interface": {"outputs": {"v": {"type": "float", "source": "inner.v"}}},
   "nodes": [{"id": "inner", "type": "leaf"}]
 })");
-  Built b = compileFile(tree.write("parent.json", R"({
+  Built b = compileTree(tree.write("parent.json", R"({
   "version": 1, "name": "p",
   "imports": {"middle": "lib/middle.json"},
   "nodes": [{"id": "outer", "type": "middle"}],
@@ -305,7 +305,7 @@ TEST(Subgraph, AStageFaultInsideASubgraphCarriesTheInstanceNote) {
   "interface": {"outputs": {"u": {"type": "float", "source": "u.out"}}},
   "nodes": [{"id": "s", "type": "screen_uv"}, {"id": "u", "type": "swizzle", "options": {"mask": "x"}, "inputs": {"x": "s.out"}}]
 })");
-  Built b = compileFile(tree.write("parent.json", R"({
+  Built b = compileTree(tree.write("parent.json", R"({
   "version": 1, "name": "p",
   "imports": {"screen": "lib/screen.json"},
   "nodes": [{"id": "here", "type": "screen"},
@@ -321,10 +321,42 @@ TEST(Subgraph, AStageFaultInsideASubgraphCarriesTheInstanceNote) {
   EXPECT_EQ(sorted[0].locatedNotes[0].message, "in instance 'here' of 'lib/screen.json'");
 }
 
+// glslang's messages about a line of generated code map back to the node in the subgraph's
+// file, with the instance that put it there (a compiler bug, so the message is made up here).
+TEST(Subgraph, AGlslangMessageAboutInlinedCodeNamesTheInstance) {
+  GraphTree tree;
+  tree.write("lib/sky_blend.json", kSkyBlend);
+  Diagnostics diags;
+  auto g = loadGraphFile(tree.write("parent.json", kTwoInstances), diags);
+  ASSERT_TRUE(g) << diagnosticsText(diags);
+  auto program = buildProgram(*g, defaultRegistry(), diags);
+  ASSERT_TRUE(program) << diagnosticsText(diags);
+  EmitResult er = emitPrograms(*program, {Target::Glsl330}, "parent.json").at(0);
+  int line = -1;
+  for (size_t i = 0; i < er.shaders[1].lineOp.size() && line < 0; ++i) {
+    int op = er.shaders[1].lineOp[i];
+    if (op >= 0 && program->ops[static_cast<size_t>(op)].nodeId == "b/blend") line = static_cast<int>(i) + 1;
+  }
+  ASSERT_GT(line, 0);
+  std::vector<ShaderSource> sources{{er.shaders[0].stage, "p.vert", ""}, {er.shaders[1].stage, "p.frag", ""}};
+  ValidationResult vr;
+  vr.errors.push_back({"p.frag", line, "'x' : undeclared identifier"});
+  Diagnostics reported;
+  reportRejectedShaders(vr, er.shaders, sources, *program, DiagCode::GlslRejected, reported);
+  ASSERT_EQ(reported.all().size(), 1u);
+  const Diagnostic& d = reported.all()[0];
+  EXPECT_EQ(d.where.file, tree.path("lib/sky_blend.json"));
+  EXPECT_EQ(d.where.line, 15);  // the blend node
+  EXPECT_EQ(d.node, "b/blend");
+  ASSERT_EQ(d.locatedNotes.size(), 1u);
+  EXPECT_EQ(d.locatedNotes[0].message, "in instance 'b' of 'lib/sky_blend.json'");
+  EXPECT_EQ(d.locatedNotes[0].where.line, 8);
+}
+
 TEST(Subgraph, InstanceInputsAreTypeCheckedAndLiteralsRangeChecked) {
   GraphTree tree;
   tree.write("lib/sky_blend.json", kSkyBlend);
-  Built wrongType = compileFile(tree.write("t.json", R"({
+  Built wrongType = compileTree(tree.write("t.json", R"({
   "version": 1, "name": "t",
   "imports": {"sky_blend": "lib/sky_blend.json"},
   "nodes": [{"id": "a", "type": "sky_blend", "inputs": {"water": [0.1, 0.2]}}],
@@ -334,7 +366,7 @@ TEST(Subgraph, InstanceInputsAreTypeCheckedAndLiteralsRangeChecked) {
   EXPECT_EQ(wrongType.diags.sorted().at(0).code, DiagCode::TypeMismatch) << diagnosticsText(wrongType.diags);
   EXPECT_NE(diagnosticsText(wrongType.diags).find("input 'water' expects vec3, but the literal is vec2"), std::string::npos);
 
-  Built outOfRange = compileFile(tree.write("r.json", R"({
+  Built outOfRange = compileTree(tree.write("r.json", R"({
   "version": 1, "name": "r",
   "imports": {"sky_blend": "lib/sky_blend.json"},
   "nodes": [{"id": "a", "type": "sky_blend", "inputs": {"f0": 1.5}}],
@@ -349,7 +381,7 @@ TEST(Subgraph, InstanceInputsAreTypeCheckedAndLiteralsRangeChecked) {
   EXPECT_NE(d.message.find("outside its range [0, 1]"), std::string::npos) << d.message;
 
   // A float splats to the vec3 input, as it does into any vec3 port.
-  Built splat = compileFile(tree.write("s.json", R"({
+  Built splat = compileTree(tree.write("s.json", R"({
   "version": 1, "name": "s",
   "imports": {"sky_blend": "lib/sky_blend.json"},
   "nodes": [{"id": "a", "type": "sky_blend", "inputs": {"water": 0.25}}],
@@ -367,13 +399,13 @@ TEST(Subgraph, AnInterfaceOutputMustHaveItsDeclaredType) {
   "outputs": {"fragment": {"alpha": "n.out"}}
 })");
   // On its own (the interface is checked when the function graph is compiled alone) ...
-  Built alone = compileFile(lib);
+  Built alone = compileTree(lib);
   ASSERT_FALSE(alone.result);
   EXPECT_EQ(alone.diags.sorted().at(0).code, DiagCode::InterfaceMismatch) << diagnosticsText(alone.diags);
   EXPECT_EQ(alone.diags.sorted().at(0).where.line, 3);
   EXPECT_EQ(alone.diags.sorted().at(0).where.col, 61);
   // ... and through an instance.
-  Built used = compileFile(tree.write("p.json", R"({
+  Built used = compileTree(tree.write("p.json", R"({
   "version": 1, "name": "p",
   "imports": {"wrong": "lib/wrong.json"},
   "nodes": [{"id": "w", "type": "wrong"}],
@@ -416,7 +448,7 @@ TEST(Subgraph, ImportRulesAreDiagnostics) {
   // ".." that stays inside is fine: lib/a.json imports ../lib/sky_blend.json.
   tree.write("lib/a.json", R"({"version": 1, "name": "a", "imports": {"s": "../lib/sky_blend.json"},
     "interface": {"outputs": {"c": {"type": "vec3", "source": "i.color"}}}, "nodes": [{"id": "i", "type": "s"}]})");
-  Built ok = compileFile(tree.write("q.json", R"({"version": 1, "name": "q", "imports": {"a": "lib/a.json"},
+  Built ok = compileTree(tree.write("q.json", R"({"version": 1, "name": "q", "imports": {"a": "lib/a.json"},
     "nodes": [{"id": "x", "type": "a"}], "outputs": {"fragment": {"color": "x.c"}}})"));
   EXPECT_TRUE(ok.result) << diagnosticsText(ok.diags);
 }
@@ -459,7 +491,7 @@ TEST(Subgraph, ImportChainsAreLimitedTo16) {
   for (int levels : {16, 17}) {
     GraphTree tree;
     writeChain(tree, levels);
-    Built b = compileFile(tree.write("p.json", R"({"version": 1, "name": "p", "imports": {"l": "lib/level_1.json"},
+    Built b = compileTree(tree.write("p.json", R"({"version": 1, "name": "p", "imports": {"l": "lib/level_1.json"},
       "nodes": [{"id": "x", "type": "l"}], "outputs": {"fragment": {"alpha": "x.v"}}})"));
     if (levels == 16) {
       EXPECT_TRUE(b.result) << diagnosticsText(b.diags);
@@ -498,7 +530,7 @@ TEST(Subgraph, ATexturePathInASubgraphIsRelativeToItsFile) {
   tree.write("lib/tex.json", R"({"version": 1, "name": "tex",
     "interface": {"outputs": {"c": {"type": "vec3", "source": "t.rgb"}}},
     "nodes": [{"id": "t", "type": "texture_sample", "options": {"texture": "textures/ripples.png"}}]})");
-  Built b = compileFile(tree.write("p.json", R"({"version": 1, "name": "p", "imports": {"tex": "lib/tex.json"},
+  Built b = compileTree(tree.write("p.json", R"({"version": 1, "name": "p", "imports": {"tex": "lib/tex.json"},
     "nodes": [{"id": "x", "type": "tex"}], "outputs": {"fragment": {"color": "x.c"}}})"));
   ASSERT_TRUE(b.result) << diagnosticsText(b.diags);
   ASSERT_FALSE(b.result->manifest.textures.empty());
@@ -523,7 +555,7 @@ TEST(Subgraph, EveryLibraryGraphCompilesOnItsOwnAndIsUsedByAnExample) {
   auto names = test::listFiles(test::sourcePath("graphs/lib"), ".json");
   EXPECT_GE(names.size(), 4u);
   for (const auto& name : names) {
-    Built b = compileFile(test::sourcePath("graphs/lib/" + name));
+    Built b = compileTree(test::sourcePath("graphs/lib/" + name));
     EXPECT_TRUE(b.result) << name << "\n" << diagnosticsText(b.diags);
     EXPECT_NE(users.find("\"lib/" + name + "\""), std::string::npos) << name << " is imported by no example graph";
   }
