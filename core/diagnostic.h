@@ -34,6 +34,7 @@ enum class Severity { Error, Warning, Note };
 struct LocatedNote {
   SourceRef where;
   std::string message;
+  std::string node;  // the instance's id in the graph of `where` ("" for a note naming no node)
 };
 
 struct Diagnostic {

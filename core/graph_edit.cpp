@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "core/graph_node_type.h"
 #include "core/load_limits.h"
 #include "core/node_options.h"
 #include "core/number_format.h"
@@ -51,14 +52,9 @@ std::string GraphEditor::checkTarget(const InputTarget& target) const {
   const Node* n = graph_.findNode(target.node);
   if (!n) return "no node '" + target.node + "'";
   if (!isIdentifier(target.port)) return "'" + target.port + "' is not an input name";
-  if (registry_) {
-    const NodeSpec* spec = registry_->find(n->type);
-    if (spec) {
-      NodePorts ports = portsOfNode(*spec, writtenOptions(*n));  // an expression's follow from its options
-      if (ports.inputIndex(target.port) < 0)
-        return "node '" + target.node + "' (" + n->type + ") has no input '" + target.port + "'";
-    }
-  }
+  if (registry_)
+    if (auto ports = portsOfGraphNode(graph_, *registry_, *n); ports && ports->inputIndex(target.port) < 0)
+      return "node '" + target.node + "' (" + n->type + ") has no input '" + target.port + "'";
   return "";
 }
 
@@ -158,7 +154,10 @@ std::string GraphEditor::setOption(const std::string& node, const std::string& n
   if (name.size() > kMaxStringBytes) return "an option name is longer than " + std::to_string(kMaxStringBytes) + " bytes";
   if (std::string why = checkJsonLimits(value, kOptionValueDepth); !why.empty()) return what + ": " + why;
   if (registry_) {
-    if (const NodeSpec* spec = registry_->find(n->type)) {
+    GraphNodeType type = nodeTypeOf(graph_, *registry_, n->type);
+    if (type.isInstance())
+      return "node '" + node + "' is an instance of the subgraph '" + type.import->path + "', which has no options";
+    if (const NodeSpec* spec = type.spec) {
       int index = spec->optionIndex(name);
       if (index < 0) return "node '" + node + "' (" + n->type + ") has no option '" + name + "'";
       const OptionSpec& o = spec->options[static_cast<size_t>(index)];
@@ -208,14 +207,9 @@ std::string GraphEditor::connect(const std::string& fromNode, const std::string&
   const Node* from = graph_.findNode(fromNode);
   if (!from) return "no node '" + fromNode + "'";
   if (!isIdentifier(fromPort)) return "'" + fromPort + "' is not an output name";
-  if (registry_) {
-    const NodeSpec* spec = registry_->find(from->type);
-    if (spec) {
-      NodePorts ports = portsOfNode(*spec, writtenOptions(*from));
-      if (ports.outputIndex(fromPort) < 0)
-        return "node '" + fromNode + "' (" + from->type + ") has no output '" + fromPort + "'";
-    }
-  }
+  if (registry_)
+    if (auto ports = portsOfGraphNode(graph_, *registry_, *from); ports && ports->outputIndex(fromPort) < 0)
+      return "node '" + fromNode + "' (" + from->type + ") has no output '" + fromPort + "'";
   if (!target.node.empty()) {
     // A cycle: the target node is already upstream of (or is) the source node.
     std::vector<std::string> stack{fromNode};
@@ -261,7 +255,7 @@ std::string GraphEditor::disconnect(const InputTarget& target) {
 
 std::string GraphEditor::addNode(const std::string& type, const std::string& id, std::array<double, 2> position,
                                  std::string* usedId) {
-  if (registry_ && !registry_->find(type)) return "no node type '" + type + "'";
+  if (registry_ && !nodeTypeOf(graph_, *registry_, type)) return "no node type '" + type + "'";
   if (!isIdentifier(type)) return "'" + type + "' is not a node type name";
   std::string newId = id;
   if (newId.empty()) {
@@ -303,6 +297,16 @@ std::string GraphEditor::moveNode(const std::string& id, std::array<double, 2> p
   record("move node '" + id + "'", "move:" + id);
   findNode(id)->editorPosition = position;
   return "";
+}
+
+void GraphEditor::adoptImports(const Graph& loaded) {
+  auto adopt = [&](Graph& g) {
+    for (Import& im : g.imports)
+      if (const Import* now = loaded.findImport(im.name); now && now->path == im.path && now->graph) im.graph = now->graph;
+  };
+  adopt(graph_);
+  for (Step& s : undo_) adopt(s.graph);
+  for (Step& s : redo_) adopt(s.graph);
 }
 
 void GraphEditor::replace(Graph graph, const std::string& label) {

@@ -23,8 +23,9 @@ struct InputTarget {
 
 class GraphEditor {
  public:
-  // With a registry, node types and port names are checked against it; without one only
-  // what the file format itself requires is.
+  // With a registry, node types and port names are checked against it and the graph's
+  // imports (a loaded subgraph's ports are its interface's, core/graph_node_type.h);
+  // without one only what the file format itself requires is.
   explicit GraphEditor(Graph graph, const Registry* registry = nullptr);
 
   const Graph& graph() const { return graph_; }
@@ -52,6 +53,11 @@ class GraphEditor {
   std::string moveNode(const std::string& id, std::array<double, 2> position);
   // Replaces the whole graph (a reload from disk), undoably.
   void replace(Graph graph, const std::string& label);
+  // Takes the imported graphs of `loaded` (the same graph with its imports loaded again)
+  // where an import has the same name and path and loaded, in the graph and in every undo
+  // and redo state: what a subgraph file holds now is not part of the edit history, so
+  // this is no edit and changes no revision.
+  void adoptImports(const Graph& loaded);
 
   // Consecutive parameter or move edits of the same thing (a slider or a drag) become one
   // undo step until sealed; the UI seals when the drag ends.

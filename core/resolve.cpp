@@ -13,6 +13,7 @@
 
 #include "core/expand.h"
 #include "core/graph_imports.h"
+#include "core/graph_node_type.h"
 #include "core/json_string_columns.h"
 #include "core/number_format.h"
 #include "core/node_options.h"
@@ -200,10 +201,11 @@ class Resolver {
     std::optional<NameSuggester> types;  // made on the first unknown type
     for (size_t i = 0; i < graph_.nodes.size(); ++i) {
       const Node& n = graph_.nodes[i];
-      const NodeSpec* spec = registry_.find(n.type);
-      if (const Import* im = spec ? nullptr : graph_.findImport(n.type); im && im->graph) {
-        spec = instanceSpec(*im);
-        instanceOf_[i] = im;
+      GraphNodeType type = nodeTypeOf(graph_, registry_, n.type);
+      const NodeSpec* spec = type.spec;
+      if (type.import && type.import->graph) {
+        spec = instanceSpec(*type.import);
+        instanceOf_[i] = type.import;
         --program_.totalNodes;  // it stands for the nodes it inlines, which count instead
       }
       if (!spec) {
@@ -616,7 +618,7 @@ class Resolver {
     InstanceScope scope;
     scope.idPrefix = idOf(node) + "/";
     auto chain = std::make_shared<std::vector<LocatedNote>>();
-    LocatedNote here{node.where, "in instance '" + idOf(node) + "' of '" + im.path + "'"};
+    LocatedNote here{node.where, "in instance '" + idOf(node) + "' of '" + im.path + "'", idOf(node)};
     chain->push_back(here);
     if (scope_ && scope_->chain) chain->insert(chain->end(), scope_->chain->begin(), scope_->chain->end());
     scope.chain = std::move(chain);

@@ -16,8 +16,11 @@
 
 #include "codegen/output_files.h"
 #include "core/graph_edit.h"
+#include "core/graph_imports.h"
 #include "core/graph_io.h"
+#include "core/graph_node_type.h"
 #include "editor/edit_script.h"
+#include "editor/error_list.h"
 #include "editor/file_watcher.h"
 #include "editor/graph_change.h"
 #include "editor/graph_layout.h"
@@ -65,7 +68,7 @@ struct Latency {
 class App : private ScriptHost {
  public:
   App(const EditorOptions& options, rt::GlfwContext& window)
-      : options_(options), window_(window), registry_(defaultRegistry()), editor_(Graph{}, &registry_),
+      : options_(options), window_(window), registry_(defaultRegistry()), path_(options.graphPath), editor_(Graph{}, &registry_),
         watcher_(options.graphPath), preview_(previewSettings(options.previewWidth, options.previewHeight, 128)) {
     auto preset = rt::cameraPreset(options.camera);  // checked by main
     orbit_ = OrbitCamera::fromCamera(preset ? *preset : rt::Camera{});
@@ -86,6 +89,8 @@ class App : private ScriptHost {
 
   // --- model and files ---
   bool loadFromDisk(bool initial);
+  bool reloadImports();
+  void recompile();
   bool writeGraph(const std::string& path);  // the editor's graph to `path`; false when it could not
   void setErrors(const Diagnostics& d, const std::string& context);
   std::optional<Graph> graphToCompile(Diagnostics& d) const;
@@ -103,7 +108,7 @@ class App : private ScriptHost {
   bool graphLoaded() const override { return haveGraph_; }
   GraphEditor& graphEditor() override { return editor_; }
   void edited() override { noteEdit(); }
-  const std::string& graphPath() const override { return options_.graphPath; }
+  const std::string& graphPath() const override { return path_; }
   int diskEvents() const override { return diskEvents_; }
   std::string save(const std::string& path) override { return writeGraph(path) ? "" : "cannot save " + path; }
   std::string screenshot(const std::string& path) override;
@@ -112,18 +117,25 @@ class App : private ScriptHost {
   std::string select(const std::string& node, int port) override;
   std::string camera(const std::string& preset) override;
   void setTime(float seconds) override;
+  // --- subgraphs: the file being edited, and the ones it was opened from ---
+  std::string openSubgraph(const std::string& node) override;
+  std::string back(bool discard) override;
+  void showFileName();
+  void navigate();  // what the UI asked for in the last frame
   // --- UI ---
   void drawUi();
   void drawPreviewPanel(float x, float y, float w, float h);
   void drawInspectorPanel(float x, float y, float w, float h);
   void drawErrorPanel(float x, float y, float w, float h);
   void drawCanvasPanel(float x, float y, float w, float h);
+  void drawSubgraphBar();
   void shortcuts();
   void writeScreenshot(const std::string& path);
 
   EditorOptions options_;
   rt::GlfwContext& window_;
   const Registry& registry_;
+  std::string path_;         // the file being edited: the graph opened, or a subgraph opened from it
   GraphEditor editor_;
   bool haveGraph_ = false;   // a graph has loaded (saving is allowed)
   std::string diskText_;     // the file as last loaded or saved
@@ -159,6 +171,21 @@ class App : private ScriptHost {
   std::optional<ScriptRunner> script_;
   std::string pendingScreenshot_;
   bool scriptFailed_ = false;
+
+  // A graph left open below a subgraph, as it was, to come back to (its unsaved edits and
+  // undo history included).
+  struct OpenParent {
+    std::string path;
+    GraphEditor editor;
+    std::string diskText;
+    Graph diskGraph;
+    long diskRevision = -1;
+    std::string instance;  // the node whose subgraph was opened: selected again on the way back
+    NodeCanvas canvas;
+  };
+  std::vector<OpenParent> parents_;
+  std::string openRequest_;   // an instance to open, asked for by the UI
+  bool backRequest_ = false;  // back to the parent, asked for by the UI (saved or discarded first)
 };
 
 // ---------------------------------------------------------------------------------------
@@ -166,16 +193,19 @@ class App : private ScriptHost {
 
 bool App::loadFromDisk(bool initial) {
   Diagnostics d;
-  auto text = readGraphFile(options_.graphPath, d);
-  if (text && haveGraph_ && *text == diskText_) return false;  // our own save, or touched only
+  auto text = readGraphFile(path_, d);
+  if (text && haveGraph_ && *text == diskText_) return reloadImports();  // an imported file changed, or ours was touched
   std::optional<Graph> g;
-  if (text) g = parseGraph(*text, options_.graphPath, d);
+  if (text) g = parseGraph(*text, path_, d);
   if (!g) {
     setErrors(d, haveGraph_ ? "the file on disk does not load; the editor keeps the last good graph"
                             : "the file does not load; fix it in any editor and it reloads here");
     return false;
   }
   Graph loaded = *g;
+  // Imports that do not load leave their instances without ports; compiling lists why.
+  Diagnostics importErrors;
+  loadImports(loaded, importErrors);
   layoutUnplacedNodes(loaded);
   if (initial || !haveGraph_) editor_ = GraphEditor(loaded, &registry_);
   else editor_.replace(loaded, "reload from disk");
@@ -184,11 +214,36 @@ bool App::loadFromDisk(bool initial) {
   diskGraph_ = loaded;
   diskRevision_ = editor_.revision();
   haveGraph_ = true;
+  watcher_.watch(filesToWatch(editor_.graph()));
   if (!initial) {
     status_ = "reloaded from disk (undo brings back what was there before)";
     noteEdit();  // a change on disk counts from when it was noticed
   }
   return true;
+}
+
+// The graph file is as loaded but what it imports may not be: the instances' ports and
+// the preview follow the imported files as they are now (those that no longer load keep
+// their last good version for the ports; compiling lists their errors).
+bool App::reloadImports() {
+  if (editor_.graph().imports.empty()) return false;
+  Graph now = editor_.graph();
+  Diagnostics reportedByCompiling;
+  loadImports(now, reportedByCompiling);
+  editor_.adoptImports(now);
+  watcher_.watch(filesToWatch(editor_.graph()));
+  recompile();
+  status_ = "imported graphs read again from disk";
+  noteEdit();
+  return true;
+}
+
+// Compiles the graph again at the next frame, whatever its revision: what it imports changed,
+// or another file was shown in the preview.
+void App::recompile() {
+  goodGraph_.reset();
+  attemptedRevision_ = -1;
+  thumbStale_ = true;
 }
 
 bool App::writeGraph(const std::string& path) {
@@ -204,11 +259,11 @@ bool App::writeGraph(const std::string& path) {
     std::cerr << status_ << "\n";
     return false;
   }
-  if (path == options_.graphPath) {
+  if (path == path_) {
     Diagnostics ignore;
     if (auto g = parseGraph(text, path, ignore)) diskGraph_ = *g;
     diskText_ = text;
-    watcher_.acknowledge();
+    watcher_.acknowledge(path);
     editor_.markSaved();
     diskRevision_ = editor_.revision();
   }
@@ -223,10 +278,18 @@ void App::setErrors(const Diagnostics& d, const std::string& context) {
 }
 
 // The graph as loaded keeps the positions of the real file; an edited graph is compiled
-// from the text Save would write, so its errors point at lines of that text.
+// from the text Save would write, so its errors point at lines of that text. Imports are
+// loaded again each time, as `watergraph compile` would: the subgraph files as they are
+// now, their errors in their own files.
 std::optional<Graph> App::graphToCompile(Diagnostics& d) const {
-  if (editor_.revision() == diskRevision_) return diskGraph_;
-  return parseGraph(saveGraph(editor_.graph()), options_.graphPath, d);
+  std::optional<Graph> g;
+  if (editor_.revision() == diskRevision_) g = diskGraph_;
+  else g = parseGraph(saveGraph(editor_.graph()), path_, d);
+  if (!g || !loadImports(*g, d)) return std::nullopt;
+  // A function graph needs no output slots; without any it shows its first interface output.
+  std::string why;
+  if (auto shown = interfaceOutputGraph(*g, &why)) return shown;
+  return g;
 }
 
 // ---------------------------------------------------------------------------------------
@@ -285,14 +348,14 @@ void App::rebuildThumbnail() {
   retiredThumb_ = std::move(thumb_);  // this frame's draw data may still show it
   thumbMessage_.clear();
   const Node* n = editor_.graph().findNode(selected_);
-  const NodeSpec* spec = n ? registry_.find(n->type) : nullptr;
-  if (!spec || spec->outputs.empty()) {
+  std::optional<NodePorts> ports = n ? portsOfGraphNode(editor_.graph(), registry_, *n) : std::nullopt;
+  if (!ports || ports->outputs.empty()) {
     thumbMessage_ = "no output to preview";
     return;
   }
-  thumbPort_ = std::clamp(thumbPort_, 0, static_cast<int>(spec->outputs.size()) - 1);
+  thumbPort_ = std::clamp(thumbPort_, 0, static_cast<int>(ports->outputs.size()) - 1);
   std::string why;
-  auto g = nodeOutputGraph(editor_.graph(), registry_, selected_, spec->outputs[static_cast<size_t>(thumbPort_)].name, &why);
+  auto g = nodeOutputGraph(editor_.graph(), registry_, selected_, ports->outputs[static_cast<size_t>(thumbPort_)].name, &why);
   if (!g) {
     thumbMessage_ = why;
     return;
@@ -314,7 +377,7 @@ void App::renderPreviews() {
   if (preview_.ready()) frameMs_ = preview_.render(cam, scene_, &error);
   if (!error.empty()) {
     Diagnostics d;
-    d.error(DiagCode::RuntimeRejected, SourceRef{options_.graphPath, 0, 0}, error);
+    d.error(DiagCode::RuntimeRejected, SourceRef{path_, 0, 0}, error);
     setErrors(d, "the preview failed to render; edit the graph to try again");
     goodGraph_.reset();
   }
@@ -381,6 +444,76 @@ void App::setTime(float seconds) {
 }
 
 // ---------------------------------------------------------------------------------------
+// Subgraphs: one file is edited at a time; opening an instance's subgraph keeps the graph
+// it was opened from (unsaved edits, undo history, canvas) to come back to.
+
+std::string App::openSubgraph(const std::string& node) {
+  if (!haveGraph_) return "the graph has not loaded";
+  const Node* n = editor_.graph().findNode(node);
+  if (!n) return "no node '" + node + "'";
+  GraphNodeType type = nodeTypeOf(editor_.graph(), registry_, n->type);
+  if (!type.isInstance()) return "node '" + node + "' (" + n->type + ") is not a subgraph instance";
+  if (!type.import->graph) return "the subgraph '" + type.import->path + "' of node '" + node + "' did not load (see the errors)";
+  std::string file = type.import->graph->file;
+  std::string written = type.import->path;  // the import as the parent writes it: short, and what the user knows
+  parents_.push_back({path_, std::move(editor_), std::move(diskText_), std::move(diskGraph_), diskRevision_, node, std::move(canvas_)});
+  path_ = file;
+  editor_ = GraphEditor(Graph{}, &registry_);
+  haveGraph_ = false;
+  diskText_.clear();
+  diskRevision_ = -1;
+  canvas_ = NodeCanvas{};
+  selected_.clear();
+  if (!loadFromDisk(true)) {
+    std::string why = errors_.empty() ? "cannot read " + file : formatText(errors_.front());
+    OpenParent p = std::move(parents_.back());
+    parents_.pop_back();
+    path_ = p.path, editor_ = std::move(p.editor), diskText_ = std::move(p.diskText), diskGraph_ = std::move(p.diskGraph);
+    diskRevision_ = p.diskRevision, canvas_ = std::move(p.canvas), selected_ = p.instance, haveGraph_ = true;
+    watcher_.watch(filesToWatch(editor_.graph()));
+    recompile();
+    return "cannot open the subgraph: " + why;
+  }
+  recompile();
+  showFileName();
+  status_ = "editing " + written + ", the subgraph of node '" + node + "'; save it, then go back";
+  return "";
+}
+
+std::string App::back(bool discard) {
+  if (parents_.empty()) return "no graph to go back to: this is the one the editor opened";
+  if (editor_.dirty() && !discard)
+    return path_ + " has unsaved changes: save them first (or go back with \"discard\": true)";
+  OpenParent p = std::move(parents_.back());
+  parents_.pop_back();
+  path_ = p.path, editor_ = std::move(p.editor), diskText_ = std::move(p.diskText), diskGraph_ = std::move(p.diskGraph);
+  diskRevision_ = p.diskRevision, canvas_ = std::move(p.canvas), selected_ = p.instance, haveGraph_ = true;
+  watcher_.watch(filesToWatch(editor_.graph()));
+  // The subgraph may have been saved, and this file changed on disk meanwhile: both read again.
+  loadFromDisk(false);
+  recompile();
+  pending_.active = false;  // coming back is not an edit to time
+  showFileName();
+  status_ = "back to " + std::filesystem::path(path_).filename().string() + ", compiled with its subgraphs as saved";
+  return "";
+}
+
+void App::showFileName() {
+  std::string title = "watergraph-editor - " + std::filesystem::path(path_).filename().string();
+  glfwSetWindowTitle(window_.window(), title.c_str());
+}
+
+// Between frames, so that no panel draws half of one file and half of another.
+void App::navigate() {
+  std::string why;
+  if (backRequest_) why = back(true);  // unsaved changes were saved or let go in the dialog
+  else if (!openRequest_.empty()) why = openSubgraph(openRequest_);
+  if (!why.empty()) status_ = why;
+  backRequest_ = false;
+  openRequest_.clear();
+}
+
+// ---------------------------------------------------------------------------------------
 // UI
 
 constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
@@ -444,10 +577,41 @@ void App::drawPreviewPanel(float x, float y, float w, float h) {
   ImGui::End();
 }
 
+// Above the inspector while a subgraph is open: the files it was opened from, and the
+// way back (asking first when the subgraph has unsaved changes).
+void App::drawSubgraphBar() {
+  if (parents_.empty()) return;
+  std::string trail;
+  for (const auto& p : parents_) trail += std::filesystem::path(p.path).filename().string() + " > ";
+  ImGui::TextDisabled("%s%s", trail.c_str(), std::filesystem::path(path_).filename().c_str());
+  std::string label = "back to " + std::filesystem::path(parents_.back().path).filename().string();
+  if (ImGui::Button(label.c_str())) {
+    if (editor_.dirty()) ImGui::OpenPopup("unsaved subgraph");
+    else backRequest_ = true;
+  }
+  if (ImGui::BeginPopupModal("unsaved subgraph", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::Text("%s has unsaved changes.", std::filesystem::path(path_).filename().c_str());
+    if (ImGui::Button("save, then go back")) {
+      if (writeGraph(path_)) backRequest_ = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("discard them")) {
+      backRequest_ = true;
+      ImGui::CloseCurrentPopup();
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("cancel")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+  ImGui::Separator();
+}
+
 void App::drawInspectorPanel(float x, float y, float w, float h) {
   placeNext(x, y, w, h);
   ImGui::Begin("Inspector", nullptr, kPanel);
-  if (ImGui::Button("save")) writeGraph(options_.graphPath);
+  drawSubgraphBar();
+  if (ImGui::Button("save")) writeGraph(path_);
   ImGui::SameLine();
   ImGui::BeginDisabled(!editor_.canUndo());
   if (ImGui::Button("undo")) editor_.undo();
@@ -461,27 +625,28 @@ void App::drawInspectorPanel(float x, float y, float w, float h) {
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled) && editor_.canRedo())
     ImGui::SetTooltip("redo %s", editor_.redoLabel().c_str());
   ImGui::SameLine();
-  ImGui::TextDisabled("%s%s", std::filesystem::path(options_.graphPath).filename().c_str(), editor_.dirty() ? " (modified)" : "");
+  ImGui::TextDisabled("%s%s", std::filesystem::path(path_).filename().c_str(), editor_.dirty() ? " (modified)" : "");
   if (ImGui::CollapsingHeader("Parameters", ImGuiTreeNodeFlags_DefaultOpen)) drawParameterInspector(editor_);
   if (ImGui::CollapsingHeader("Selected node", ImGuiTreeNodeFlags_DefaultOpen)) {
     // The thumbnail first, so it stays in view above a long list of inputs and options.
     const Node* n = editor_.graph().findNode(selected_);
-    const NodeSpec* spec = n ? registry_.find(n->type) : nullptr;
+    std::vector<PortSpec> outputs;
+    if (auto ports = n ? portsOfGraphNode(editor_.graph(), registry_, *n) : std::nullopt) outputs = std::move(ports->outputs);
     if (thumb_ && thumb_->ready())
       ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumb_->texture())), ImVec2(192, 108), ImVec2(0, 1),
                    ImVec2(1, 0));
     else if (!selected_.empty() && !thumbMessage_.empty())
       ImGui::TextDisabled("no thumbnail: %s", thumbMessage_.c_str());
-    if (spec && spec->outputs.size() > 1) {
+    if (outputs.size() > 1) {
       ImGui::SetNextItemWidth(140);
-      if (ImGui::BeginCombo("output", spec->outputs[static_cast<size_t>(std::min<int>(thumbPort_, static_cast<int>(spec->outputs.size()) - 1))].name.c_str())) {
-        for (int i = 0; i < static_cast<int>(spec->outputs.size()); ++i)
-          if (ImGui::Selectable(spec->outputs[static_cast<size_t>(i)].name.c_str(), i == thumbPort_))
+      if (ImGui::BeginCombo("output", outputs[static_cast<size_t>(std::min<int>(thumbPort_, static_cast<int>(outputs.size()) - 1))].name.c_str())) {
+        for (int i = 0; i < static_cast<int>(outputs.size()); ++i)
+          if (ImGui::Selectable(outputs[static_cast<size_t>(i)].name.c_str(), i == thumbPort_))
             thumbPort_ = i, thumbStale_ = true;
         ImGui::EndCombo();
       }
     }
-    drawNodeInspector(editor_, registry_, selected_);
+    if (drawNodeInspector(editor_, registry_, selected_)) openRequest_ = selected_;
   }
   ImGui::End();
 }
@@ -494,9 +659,15 @@ void App::drawErrorPanel(float x, float y, float w, float h) {
     ImGui::TextColored(ImVec4(0.5f, 0.9f, 0.5f, 1), "no errors");
   } else {
     ImGui::TextColored(ImVec4(1, 0.6f, 0.4f, 1), "%s", errorContext_.c_str());
-    for (const auto& e : errors_) {
-      std::string line = formatText(e);
-      if (ImGui::Selectable(line.c_str(), !e.node.empty() && e.node == selected_) && !e.node.empty()) selected_ = e.node;
+    // Paths relative to the opened graph's folder, where every subgraph lies.
+    std::string folder = std::filesystem::path(options_.graphPath).parent_path().string();
+    for (size_t i = 0; i < errors_.size(); ++i) {
+      const Diagnostic& e = errors_[i];
+      std::string node = nodeToSelect(e, editor_.graph());
+      ImGui::PushID(static_cast<int>(i));
+      if (ImGui::Selectable(errorListText(e, folder).c_str(), !node.empty() && node == selected_) && !node.empty())
+        selected_ = node;
+      ImGui::PopID();
     }
   }
   ImGui::End();
@@ -507,6 +678,7 @@ void App::drawCanvasPanel(float x, float y, float w, float h) {
   ImGui::Begin("Nodes", nullptr, kPanel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   ImGui::TextDisabled("drag: move / link from an output | right-click: add node, disconnect | Del: delete | Ctrl+Z / Ctrl+Y");
   if (haveGraph_) canvas_.draw(editor_, registry_, selected_);
+  if (std::string node = canvas_.takeOpenRequest(); !node.empty()) openRequest_ = node;
   ImGui::End();
 }
 
@@ -515,7 +687,7 @@ void App::shortcuts() {
   if (!io.KeyCtrl || io.WantTextInput) return;
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) io.KeyShift ? editor_.redo() : editor_.undo();
   if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) editor_.redo();
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) writeGraph(options_.graphPath);
+  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) writeGraph(path_);
 }
 
 void App::drawUi() {
@@ -584,6 +756,7 @@ int App::run() {
       ++diskEvents_;
       loadFromDisk(false);
     }
+    navigate();
     // A step sees every earlier step on screen; its own edit is shown in this frame.
     if (script_ && !scriptFailed_ && !script_->step(*this)) {
       std::cerr << script_->error() << "\n";

@@ -2,24 +2,61 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
+#include <filesystem>
+#include <set>
+
+#include "core/graph_imports.h"
+
 namespace wg::editor {
 
-FileWatcher::FileWatcher(std::string path) : path_(std::move(path)) { last_ = stamp(); }
+std::vector<std::string> filesToWatch(const Graph& graph) {
+  std::vector<std::string> files = graphFilesRead(graph);
+  std::set<const Graph*> seen{&graph};
+  std::vector<const Graph*> todo{&graph};
+  for (size_t i = 0; i < todo.size(); ++i)
+    for (const Import& im : todo[i]->imports) {
+      if (im.graph) {
+        if (seen.insert(im.graph.get()).second) todo.push_back(im.graph.get());
+        continue;
+      }
+      std::string where = (std::filesystem::path(todo[i]->file).parent_path() / im.path).lexically_normal().string();
+      if (std::find(files.begin(), files.end(), where) == files.end()) files.push_back(where);
+    }
+  return files;
+}
 
-FileWatcher::Stamp FileWatcher::stamp() const {
+FileWatcher::Stamp FileWatcher::stamp(const std::string& path) {
   struct stat st {};
-  if (::stat(path_.c_str(), &st) != 0) return {};
+  if (::stat(path.c_str(), &st) != 0) return {};
   return {static_cast<long long>(st.st_mtim.tv_sec) * 1000000000LL + st.st_mtim.tv_nsec, static_cast<long long>(st.st_size),
           static_cast<long long>(st.st_ino)};
 }
 
-bool FileWatcher::changed() {
-  Stamp now = stamp();
-  if (now == last_) return false;
-  last_ = now;
-  return now.size >= 0;  // a file that disappeared (mid-rename) is not a change yet
+void FileWatcher::watch(const std::vector<std::string>& paths) {
+  std::vector<Stamp> stamps;
+  for (const auto& p : paths) {
+    auto known = std::find(paths_.begin(), paths_.end(), p);
+    stamps.push_back(known != paths_.end() ? last_[static_cast<size_t>(known - paths_.begin())] : stamp(p));
+  }
+  paths_ = paths;
+  last_ = std::move(stamps);
 }
 
-void FileWatcher::acknowledge() { last_ = stamp(); }
+bool FileWatcher::changed() {
+  bool any = false;
+  for (size_t i = 0; i < paths_.size(); ++i) {
+    Stamp now = stamp(paths_[i]);
+    if (now == last_[i]) continue;
+    last_[i] = now;
+    any |= now.size >= 0;  // a file that disappeared (mid-rename) is not a change yet
+  }
+  return any;
+}
+
+void FileWatcher::acknowledge(const std::string& path) {
+  for (size_t i = 0; i < paths_.size(); ++i)
+    if (paths_[i] == path) last_[i] = stamp(path);
+}
 
 }  // namespace wg::editor

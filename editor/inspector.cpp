@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <vector>
 
 #include "core/expand.h"
+#include "core/graph_node_type.h"
 #include "core/load_limits.h"
 #include "core/node_options.h"
 #include "core/number_format.h"
@@ -88,6 +90,15 @@ void editJsonOption(GraphEditor& editor, const std::string& id, const OptionSpec
   ImGui::PopID();
 }
 
+// A port's type (a subgraph's are all fixed) and what it is.
+std::string portTooltip(const PortSpec& port) {
+  std::string type = port.kind == PortKind::Fixed ? std::string(typeName(port.type))
+                     : port.kind == PortKind::Gen ? "float to vec4"
+                                                  : "";
+  if (port.doc.empty() || type.empty()) return type + port.doc;
+  return type + ": " + port.doc;
+}
+
 }  // namespace
 
 void drawParameterInspector(GraphEditor& editor) {
@@ -127,19 +138,31 @@ void drawParameterInspector(GraphEditor& editor) {
   }
 }
 
-void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std::string& nodeId) {
+bool drawNodeInspector(GraphEditor& editor, const Registry& registry, const std::string& nodeId) {
   const Node* n = editor.graph().findNode(nodeId);
   if (!n) {
     ImGui::TextDisabled("no node selected (click one on the canvas)");
-    return;
+    return false;
   }
-  const NodeSpec* spec = registry.find(n->type);
+  const GraphNodeType type = nodeTypeOf(editor.graph(), registry, n->type);
+  const NodeSpec* spec = type.spec;
   ImGui::Text("%s : %s", n->id.c_str(), n->type.c_str());
   if (spec) ImGui::TextWrapped("%s", spec->summary.c_str());
-  if (!spec) return;
+  bool open = false;
+  if (type.isInstance()) {
+    const Graph* sub = type.import->graph.get();
+    if (sub && sub->interface && !sub->interface->description.empty()) ImGui::TextWrapped("%s", sub->interface->description.c_str());
+    ImGui::TextDisabled("subgraph %s%s", type.import->path.c_str(), sub ? "" : " (did not load: see the errors)");
+    ImGui::BeginDisabled(!sub);
+    open = ImGui::Button("Open subgraph");
+    ImGui::EndDisabled();
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("edit %s here; \"back\" returns to this graph", type.import->path.c_str());
+  }
+  std::optional<NodePorts> known = portsOfGraphNode(editor.graph(), registry, *n);
+  if (!known) return open;
   ImGui::Separator();
   std::string id = n->id;  // `n` may move when an edit reallocates the node list
-  const NodePorts ports = portsOfNode(*spec, writtenOptions(*n));  // an expression's follow from its options
+  const NodePorts ports = std::move(*known);
   for (const PortSpec& port : ports.inputs) {
     ImGui::PushID(port.name.c_str());
     const InputSource* src = nullptr;
@@ -162,14 +185,15 @@ void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
       }
       sealAfterEdit(editor);
     }
+    if (std::string tip = portTooltip(port); ImGui::IsItemHovered() && !tip.empty()) ImGui::SetTooltip("%s", tip.c_str());
     if (src) {
       ImGui::SameLine();
       if (ImGui::SmallButton("x")) editor.disconnect(target);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("disconnect: back to the port's default");
     }
-    if (ImGui::IsItemHovered() && !port.doc.empty()) ImGui::SetTooltip("%s", port.doc.c_str());
     ImGui::PopID();
   }
+  if (!spec) return open;  // an instance has no options
   if (!spec->options.empty()) ImGui::Separator();
   for (const OptionSpec& o : spec->options) {
     const Node* now = editor.graph().findNode(id);
@@ -231,6 +255,7 @@ void drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
     if (ImGui::IsItemHovered() && !o.doc.empty()) ImGui::SetTooltip("%s", o.doc.c_str());
     ImGui::PopID();
   }
+  return open;
 }
 
 }  // namespace wg::editor

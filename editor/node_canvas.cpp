@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <optional>
 #include <vector>
 
-#include "core/node_options.h"
+#include "core/graph_node_type.h"
 #include "core/number_format.h"
+#include "editor/node_palette.h"
 
 namespace wg::editor {
 namespace {
@@ -18,6 +18,10 @@ constexpr float kNodeWidth = 180, kHeader = 22, kRow = 18, kPortRadius = 5;
 
 // The graph's output slots (outputSlotTable()) are drawn as one more node right of the others.
 constexpr const char* kOutputsId = "";  // the pseudo node's id in InputTarget terms
+// A function graph's interface outputs, shown under the output slots. Read-only: the edit
+// model does not change the interface (it is edited in the file), so nothing links to it.
+// Not an identifier, so never a node's id.
+constexpr const char* kInterfaceId = "#interface";
 
 struct Port {
   std::string name;
@@ -30,6 +34,7 @@ struct Box {
   ImVec2 min, max;
   std::vector<Port> inputs, outputs;
   std::vector<std::string> inputNotes;  // per input: "$param", a constant, or ""
+  bool instance = false;                // a subgraph instance: its own header colour
 };
 
 std::string sourceNote(const InputSource& s) {
@@ -95,7 +100,7 @@ struct NodeCanvas::Layout {
   std::optional<InputTarget> inputAt(ImVec2 m) const {
     for (const auto& b : boxes)
       for (const auto& p : b.inputs)
-        if (distance(p.at, m) <= kPortRadius + 4) return InputTarget{b.id, p.name};
+        if (b.id != kInterfaceId && distance(p.at, m) <= kPortRadius + 4) return InputTarget{b.id, p.name};
     return std::nullopt;
   }
   std::optional<std::pair<std::string, std::string>> outputAt(ImVec2 m) const {
@@ -106,10 +111,15 @@ struct NodeCanvas::Layout {
   }
   const Box* nodeAt(ImVec2 m) const {
     for (auto it = boxes.rbegin(); it != boxes.rend(); ++it)
-      if (!it->id.empty() && m.x >= it->min.x && m.x <= it->max.x && m.y >= it->min.y && m.y <= it->max.y) return &*it;
+      if (!it->id.empty() && it->id != kInterfaceId && m.x >= it->min.x && m.x <= it->max.x && m.y >= it->min.y && m.y <= it->max.y) return &*it;
     return nullptr;
   }
   const InputSource* sourceOf(const InputTarget& t) const {
+    if (t.node == kInterfaceId && g.interface) {
+      for (const auto& o : g.interface->outputs)
+        if (o.name == t.port) return &o.source;
+      return nullptr;
+    }
     if (t.node.empty()) {
       auto slot = parseOutputSlot(t.port);
       return slot ? findSlot(g, *slot) : nullptr;
@@ -137,11 +147,11 @@ NodeCanvas::Layout NodeCanvas::layout(const Graph& g, const Registry& registry, 
     Box b;
     b.id = n.id;
     b.title = n.id + " : " + n.type;
+    b.instance = nodeTypeOf(g, registry, n.type).isInstance();
     std::vector<std::string> ins, outs;
-    if (const NodeSpec* spec = registry.find(n.type)) {
-      NodePorts ports = portsOfNode(*spec, writtenOptions(n));  // an expression's follow from its options
-      for (const auto& port : ports.inputs) ins.push_back(port.name);
-      for (const auto& port : ports.outputs) outs.push_back(port.name);
+    if (auto ports = portsOfGraphNode(g, registry, n)) {
+      for (const auto& port : ports->inputs) ins.push_back(port.name);
+      for (const auto& port : ports->outputs) outs.push_back(port.name);
     } else {
       for (const auto& in : n.inputs) ins.push_back(in.port);
     }
@@ -168,7 +178,21 @@ NodeCanvas::Layout NodeCanvas::layout(const Graph& g, const Registry& registry, 
     const InputSource* s = findSlot(g, slots[i].id);
     b.inputNotes.push_back(s ? sourceNote(*s) : "");
   }
+  ImVec2 below(b.min.x, b.max.y + 20);
   l.boxes.push_back(std::move(b));
+  if (g.interface) {
+    Box in;
+    in.id = kInterfaceId;
+    in.title = "interface (edit in the file)";
+    in.min = below;
+    in.max = ImVec2(in.min.x + kNodeWidth, in.min.y + kHeader + kRow * static_cast<float>(std::max<size_t>(g.interface->outputs.size(), 1)) + 4);
+    for (size_t i = 0; i < g.interface->outputs.size(); ++i) {
+      const InterfaceOutput& o = g.interface->outputs[i];
+      in.inputs.push_back({o.name, ImVec2(in.min.x, in.min.y + kHeader + kRow * (static_cast<float>(i) + 0.5f))});
+      in.inputNotes.push_back(sourceNote(o.source));
+    }
+    l.boxes.push_back(std::move(in));
+  }
   return l;
 }
 
@@ -261,8 +285,8 @@ void NodeCanvas::drawBoxes(const Layout& l, ImDrawList* dl, const std::string& s
   for (const auto& b : l.boxes) {
     bool isSelected = !b.id.empty() && b.id == selected;
     dl->AddRectFilled(b.min, b.max, IM_COL32(52, 56, 66, 240), 5);
-    dl->AddRectFilled(b.min, ImVec2(b.max.x, b.min.y + kHeader),
-                      b.id.empty() ? IM_COL32(110, 70, 40, 255) : IM_COL32(40, 80, 120, 255), 5);
+    ImU32 header = b.id.empty() || b.id == kInterfaceId ? IM_COL32(110, 70, 40, 255) : b.instance ? IM_COL32(60, 105, 70, 255) : IM_COL32(40, 80, 120, 255);
+    dl->AddRectFilled(b.min, ImVec2(b.max.x, b.min.y + kHeader), header, 5);
     dl->AddRect(b.min, b.max, isSelected ? IM_COL32(255, 220, 120, 255) : IM_COL32(90, 95, 110, 255), 5, 0,
                 isSelected ? 2.5f : 1.0f);
     dl->AddText(ImVec2(b.min.x + 6, b.min.y + 4), IM_COL32(235, 235, 235, 255), b.title.c_str());
@@ -281,27 +305,23 @@ void NodeCanvas::drawBoxes(const Layout& l, ImDrawList* dl, const std::string& s
   }
 }
 
-// Every registered node type, by family, filtered by name; the chosen one is added where
-// the palette was opened.
+// The graph's subgraphs and every registered node type (editor/node_palette.h), by family,
+// filtered by name; the chosen one is added where the palette was opened.
 void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected) {
   if (!ImGui::BeginPopup("palette")) return;
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
   ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
-  std::map<std::string, std::vector<const NodeSpec*>> families;
-  for (const NodeSpec* spec : registry.all())
-    if (spec->type.find(filter_) != std::string::npos) families[spec->family].push_back(spec);
   ImGui::BeginChild("types", ImVec2(260, 320));
-  for (const auto& [family, specs] : families) {
-    ImGui::TextDisabled("%s", family.c_str());
-    for (const NodeSpec* spec : specs) {
-      if (ImGui::Selectable(spec->type.c_str())) {
-        std::string id;
-        if (editor.addNode(spec->type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty())
-          selected = id;
-        ImGui::CloseCurrentPopup();
-      }
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", spec->summary.c_str());
+  std::string family;
+  for (const PaletteEntry& e : paletteEntries(editor.graph(), registry, filter_)) {
+    if (e.family != family) ImGui::TextDisabled("%s", e.family.c_str());
+    family = e.family;
+    if (ImGui::Selectable(e.type.c_str())) {
+      std::string id;
+      if (editor.addNode(e.type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty()) selected = id;
+      ImGui::CloseCurrentPopup();
     }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.summary.c_str());
   }
   ImGui::EndChild();
   ImGui::EndPopup();
@@ -324,6 +344,8 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
 
   Layout l = layout(editor.graph(), registry, origin);
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) startDrag(l, mouse, selected);
+  if (const Box* b = hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) ? l.nodeAt(mouse) : nullptr; b && b->instance)
+    openRequest_ = b->id;
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) drag_ = Drag::Pan;
   if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right)) rightClick(editor, l, mouse, origin, selected);
   continueDrag(editor, l, mouse, dl);

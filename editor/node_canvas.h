@@ -2,10 +2,13 @@
 // The node canvas: the graph drawn with ImGui draw lists (nodes, ports, links and the
 // graph's output slots) and edited through the GraphEditor: select, move, connect (drag
 // from an output port to an input port), disconnect (drag a link off its input, or
-// right-click the input), add from the registry palette (right-click the background),
-// delete (Delete key). Node positions are the file's "editor": {x, y}.
+// right-click the input), add from the palette (right-click the background: the graph's
+// subgraphs and the registry's types), delete (Delete key), open a subgraph instance
+// (double-click). A function graph's interface outputs are shown, read-only, under the
+// output slots. Node positions are the file's "editor": {x, y}.
 #include <array>
 #include <string>
+#include <utility>
 
 #include "core/graph_edit.h"
 #include "core/registry.h"
@@ -20,6 +23,9 @@ class NodeCanvas {
   // Draws into the current ImGui window, filling the rest of it. `selected` is the selected
   // node id ("" for none) and may be changed.
   void draw(GraphEditor& editor, const Registry& registry, std::string& selected);
+  // The instance node double-clicked since the last call ("" for none): the app opens
+  // its subgraph between frames.
+  std::string takeOpenRequest() { return std::exchange(openRequest_, {}); }
 
  private:
   struct Layout;  // this frame's boxes and ports, and hit tests on them
@@ -44,6 +50,7 @@ class NodeCanvas {
   bool hasDetached_ = false;
   std::array<float, 2> paletteAt_{};  // canvas position for a node added from the palette
   char filter_[64] = "";
+  std::string openRequest_;
 };
 
 }  // namespace wg::editor

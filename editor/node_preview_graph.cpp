@@ -29,34 +29,21 @@ void setOutput(Graph& g, OutputSlot slot, InputSource source) {
   g.outputs.push_back(std::move(o));
 }
 
-}  // namespace
+void setOpaque(Graph& g) {
+  InputSource one;
+  one.kind = InputSource::Kind::Literal;
+  one.literal = {1.0};
+  setOutput(g, OutputSlot::FragmentAlpha, std::move(one));
+}
 
-std::optional<Graph> nodeOutputGraph(const Graph& graph, const Registry& registry, const std::string& nodeId,
-                                     const std::string& port, std::string* why) {
-  Diagnostics diags;
-  auto program = resolveGraph(graph, registry, diags);
-  if (!program) {
-    *why = "the graph does not compile";
-    return std::nullopt;
-  }
-  auto op = std::find_if(program->ops.begin(), program->ops.end(), [&](const Op& o) { return o.nodeId == nodeId; });
-  if (op == program->ops.end()) {
-    *why = "no node '" + nodeId + "'";
-    return std::nullopt;
-  }
-  int index = op->spec->outputIndex(port);
-  if (index < 0) {
-    *why = "node '" + nodeId + "' has no output '" + port + "'";
-    return std::nullopt;
-  }
-  Type type = op->outputTypes[static_cast<size_t>(index)];
-  Graph g = graph;
-  InputSource color = fromNode(nodeId, port);
+// Routes `value` (of `type`) to the fragment colour of `g`, converted to vec3.
+bool routeToColour(Graph& g, InputSource value, Type type, std::string* why) {
+  InputSource color = value;
   if (type == Type::Vec2) {
     Node split, combine;
     split.id = freeId(g, "wg_preview_split");
     split.type = "split";
-    split.inputs.push_back({"v", fromNode(nodeId, port), {}});
+    split.inputs.push_back({"v", value, {}});
     combine.id = freeId(g, "wg_preview_combine");
     combine.type = "combine";
     combine.inputs.push_back({"x", fromNode(split.id, "x"), {}});
@@ -69,18 +56,54 @@ std::optional<Graph> nodeOutputGraph(const Graph& graph, const Registry& registr
     swizzle.id = freeId(g, "wg_preview_xyz");
     swizzle.type = "swizzle";
     swizzle.options.push_back({"mask", "xyz", {}, {}});
-    swizzle.inputs.push_back({"x", fromNode(nodeId, port), {}});
+    swizzle.inputs.push_back({"x", value, {}});
     color = fromNode(swizzle.id, "out");
     g.nodes.push_back(std::move(swizzle));
   } else if (type != Type::Float && type != Type::Vec3) {
     *why = "a " + std::string(typeName(type)) + " output has no colour to show";
-    return std::nullopt;
+    return false;
   }
   setOutput(g, OutputSlot::FragmentColor, std::move(color));
-  InputSource one;
-  one.kind = InputSource::Kind::Literal;
-  one.literal = {1.0};
-  setOutput(g, OutputSlot::FragmentAlpha, std::move(one));
+  return true;
+}
+
+}  // namespace
+
+std::optional<Graph> nodeOutputGraph(const Graph& graph, const Registry& registry, const std::string& nodeId,
+                                     const std::string& port, std::string* why) {
+  // Opaque first: the preview is, and a function graph that connects no outputs then
+  // resolves too.
+  Graph g = graph;
+  setOpaque(g);
+  Diagnostics diags;
+  NodeOutputValues outputs;  // every node's, an instance's and an expression's included
+  if (!resolveGraph(g, registry, diags, outputs)) {
+    *why = "the graph does not compile";
+    return std::nullopt;
+  }
+  auto node = outputs.find(nodeId);
+  if (node == outputs.end()) {
+    *why = "no node '" + nodeId + "'";
+    return std::nullopt;
+  }
+  auto value = std::find_if(node->second.begin(), node->second.end(), [&](const NodeOutputValue& v) { return v.port == port; });
+  if (value == node->second.end()) {
+    *why = "node '" + nodeId + "' has no output '" + port + "'";
+    return std::nullopt;
+  }
+  if (!routeToColour(g, fromNode(nodeId, port), value->type, why)) return std::nullopt;
+  return g;
+}
+
+std::optional<Graph> interfaceOutputGraph(const Graph& graph, std::string* why) {
+  if (!graph.interface || graph.interface->outputs.empty() || !graph.outputs.empty()) {
+    *why = "not a function graph without output slots";
+    return std::nullopt;
+  }
+  const InterfaceOutput& first = graph.interface->outputs.front();
+  Graph g = graph;
+  setOpaque(g);
+  if (!routeToColour(g, first.source, first.type, why)) return std::nullopt;
   return g;
 }
 

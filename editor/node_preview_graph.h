@@ -12,8 +12,14 @@
 namespace wg::editor {
 
 // Empty, with *why set, when the output cannot be shown as a colour (a matrix, a sampler,
-// an unknown node or port) or the graph does not resolve.
+// an unknown node or port) or the graph does not resolve. The node may be a subgraph
+// instance, and the graph a function graph that connects no outputs.
 std::optional<Graph> nodeOutputGraph(const Graph& graph, const Registry& registry, const std::string& nodeId,
                                      const std::string& port, std::string* why);
+
+// A function graph that connects no output slots (it needs none to be used as a node
+// type) previewed through its first interface output, the same way; empty, with *why
+// set, for any other graph.
+std::optional<Graph> interfaceOutputGraph(const Graph& graph, std::string* why);
 
 }  // namespace wg::editor

@@ -66,8 +66,14 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     waitFrames_ = a.contains("count") && a["count"].is_number_integer() ? a["count"].get<int>() : 1;
     return true;
   }
+  if (step.op == "open_subgraph") return done(host.openSubgraph(str("node")));
+  if (step.op == "back") {
+    if (a.contains("discard") && !a["discard"].is_boolean()) return fail(where, "\"discard\" must be true or false");
+    return done(host.back(a.value("discard", false)));
+  }
   if (step.op == "external_write") {
-    // Another program writing the graph file in place, as a text editor does.
+    // Another program writing the graph file (or, with "path", another file such as an
+    // imported one) in place, as a text editor does.
     std::string text = str("text");
     if (!str("from").empty()) {
       std::ifstream in(str("from"), std::ios::binary);
@@ -76,9 +82,10 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
       ss << in.rdbuf();
       text = ss.str();
     }
-    std::ofstream out(host.graphPath(), std::ios::binary | std::ios::trunc);
+    std::string path = str("path").empty() ? host.graphPath() : str("path");
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out << text;
-    if (!out) return fail(where, "cannot write " + host.graphPath());
+    if (!out) return fail(where, "cannot write " + path);
     eventsBeforeWrite_ = host.diskEvents();
     return true;
   }

@@ -17,7 +17,7 @@ class ScriptHost {
   virtual bool graphLoaded() const = 0;
   virtual GraphEditor& graphEditor() = 0;
   virtual void edited() = 0;  // a step changed the graph: the edit-to-pixels clock starts
-  virtual const std::string& graphPath() const = 0;
+  virtual const std::string& graphPath() const = 0;  // the file being edited (a subgraph's, when one is open)
   virtual int diskEvents() const = 0;  // changes on disk noticed so far
   // Each returns "" on success, else why not.
   virtual std::string save(const std::string& path) = 0;
@@ -27,6 +27,12 @@ class ScriptHost {
   virtual std::string select(const std::string& node, int port) = 0;
   virtual std::string camera(const std::string& preset) = 0;
   virtual void setTime(float seconds) = 0;
+  // Edits the subgraph file of instance node `node` instead, until back().
+  virtual std::string openSubgraph(const std::string& node) = 0;
+  // Back to the graph the open subgraph was opened from, compiled again with the
+  // subgraph as it is on disk; refused while the subgraph has unsaved changes unless
+  // `discard`.
+  virtual std::string back(bool discard) = 0;
 };
 
 class ScriptRunner {

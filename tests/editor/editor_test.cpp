@@ -1,6 +1,5 @@
 // watergraph-editor run as a user would, without a person: under xvfb-run, with scripted
-// edits (--script) and screenshots, checking the saved file and the images. Small window
-// and preview sizes keep each run to a second or two on llvmpipe.
+// edits (--script) and screenshots, checking the saved file and the images.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -10,6 +9,7 @@
 
 #include "codegen/compile.h"
 #include "core/graph_io.h"
+#include "editor_run.h"
 #include "nodes/registry.h"
 #include "runtime/image.h"
 #include "test_support.h"
@@ -19,24 +19,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string editorBinary() { return (fs::path(test::watergraphBinary()).parent_path() / "watergraph-editor").string(); }
+using test::editorBinary;
+using test::EditorRun;
 
-struct EditorRun {
-  int status = -1;
-  std::string out, err;
-};
-
-// Runs the editor under a virtual X server; Mesa's shader cache stays off (tests must not
-// write into the user's cache). The X authority file lives in the test's folder: with its
-// own temporary folder, xvfb-run sometimes fails to remove it and exits 5 instead of
-// passing on the editor's status.
 EditorRun runEditor(const std::string& dir, const std::string& args, const std::string& window = "640x360") {
-  EditorRun r;
-  std::string cmd = "MESA_SHADER_CACHE_DISABLE=true xvfb-run -a -f " + test::shellQuote(dir + "/Xauthority") +
-                    " -s '-screen 0 1280x1024x24' " + test::shellQuote(editorBinary()) +
-                    " --size " + window + " --preview-size 320x180 " + args;
-  r.status = test::runCommandSplit(cmd, &r.out, &r.err);
-  return r;
+  return test::runEditorProgram(dir, args, window);
 }
 
 // A temporary folder holding a copy of graphs/lake.json.

@@ -2,6 +2,7 @@
 // asked for, so the order of steps, the waiting and the messages are checked directly.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -41,6 +42,8 @@ class FakeHost : public ScriptHost {
   }
   std::string camera(const std::string& preset) override { return call("camera " + preset); }
   void setTime(float seconds) override { calls.push_back("time " + std::to_string(seconds)); }
+  std::string openSubgraph(const std::string& node) override { return call("open_subgraph " + node); }
+  std::string back(bool discard) override { return call(discard ? "back discard" : "back"); }
 
  private:
   std::string call(std::string what) {
@@ -126,6 +129,25 @@ TEST(ScriptRunner, HostStepsGetTheirArgumentsAndTheirRefusalsFailTheScript) {
   ScriptRunner refused(steps(nlohmann::json::parse(R"([{"op": "camera", "preset": "sideways"}])")), "s.json");
   EXPECT_FALSE(refused.step(host));
   EXPECT_EQ(refused.error(), "s.json: step 1 (camera): no camera preset 'sideways'");
+}
+
+TEST(ScriptRunner, SubgraphStepsGoToTheHostAndAnotherFileCanBeWritten) {
+  std::string dir = test::makeTempDir("script_runner_subgraph");
+  FakeHost host(dir + "/g.json");
+  ScriptRunner run(steps(nlohmann::json::parse(R"([{"op": "open_subgraph", "node": "near"}, {"op": "back"},
+    {"op": "back", "discard": true}, {"op": "external_write", "path": ")" + dir + R"(/lib.json", "text": "[]"}])")),
+                   "s.json");
+  while (!run.done()) ASSERT_TRUE(run.step(host)) << run.error();
+  EXPECT_EQ(host.calls, (std::vector<std::string>{"open_subgraph near", "back", "back discard"}));
+  std::ifstream in(dir + "/lib.json");
+  std::stringstream text;
+  text << in.rdbuf();
+  EXPECT_EQ(text.str(), "[]");
+
+  ScriptRunner badDiscard(steps(nlohmann::json::parse(R"([{"op": "back", "discard": "yes"}])")), "s.json");
+  EXPECT_FALSE(badDiscard.step(host));
+  EXPECT_EQ(badDiscard.error(), "s.json: step 1 (back): \"discard\" must be true or false");
+  std::filesystem::remove_all(dir);
 }
 
 TEST(ScriptRunner, ExternalWriteThenWaitReloadWaitsForTheChangeOnDisk) {
