@@ -10,21 +10,9 @@
 
 namespace wg::editor {
 
-std::vector<std::string> filesToWatch(const Graph& graph) {
-  std::vector<std::string> files = graphFilesRead(graph);
-  std::set<const Graph*> seen{&graph};
-  std::vector<const Graph*> todo{&graph};
-  for (size_t i = 0; i < todo.size(); ++i)
-    for (const Import& im : todo[i]->imports) {
-      if (im.graph) {
-        if (seen.insert(im.graph.get()).second) todo.push_back(im.graph.get());
-        continue;
-      }
-      std::string where = (std::filesystem::path(todo[i]->file).parent_path() / im.path).lexically_normal().string();
-      if (std::find(files.begin(), files.end(), where) == files.end()) files.push_back(where);
-    }
-  return files;
-}
+// graphFilesRead lists an import that did not load by the path it names (Import::file), so
+// that repairing or creating that file is noticed.
+std::vector<std::string> filesToWatch(const Graph& graph) { return graphFilesRead(graph); }
 
 FileWatcher::Stamp FileWatcher::stamp(const std::string& path) {
   struct stat st {};

@@ -210,6 +210,7 @@ TEST(SubgraphWatch, TheWatcherFollowsEveryImportedFileAndOnesThatDoNotLoad) {
   Graph missing = g;
   missing.imports[0].graph = nullptr;  // as when lib/tint.json did not load
   missing.imports[0].path = "lib/later.json";
+  missing.imports[0].file = ws.path("lib/later.json");  // what loadImports sets for a path it tried
   EXPECT_EQ(filesToWatch(missing), (std::vector<std::string>{ws.pond, ws.path("lib/later.json")}));
 }
 
