@@ -209,12 +209,12 @@ std::vector<std::string> graphFilesRead(const Graph& graph) {
   std::vector<std::string> files{graph.file};
   std::set<std::string> listed{graph.file};
   std::set<const Graph*> seen{&graph};
-  std::vector<const Graph*> todo{&graph};
-  for (size_t i = 0; i < todo.size(); ++i)
-    for (const auto& im : todo[i]->imports) {
+  std::vector<const Graph*> toVisit{&graph};
+  for (size_t i = 0; i < toVisit.size(); ++i)
+    for (const auto& im : toVisit[i]->imports) {
       const std::string& file = im.graph ? im.graph->file : im.file;
       if (!file.empty() && listed.insert(file).second) files.push_back(file);
-      if (im.graph && seen.insert(im.graph.get()).second) todo.push_back(im.graph.get());
+      if (im.graph && seen.insert(im.graph.get()).second) toVisit.push_back(im.graph.get());
     }
   return files;
 }

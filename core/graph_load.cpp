@@ -263,20 +263,7 @@ class Loader : public GraphDraftReader {
       const std::string what = "parameter '" + name + "'";
       checkKeys(pv, what, {"type", "default", "min", "max", "hint", "description", "static"});
 
-      bool typeOk = false;
-      if (!pv.member("type")) {
-        missing(pv, what + " is missing \"type\"");
-      } else if (auto* t = field(pv, "type", json::value_t::string, "'type' of " + what)) {
-        const auto& typeText = t->value.get_ref<const std::string&>();
-        auto type = parseType(typeText);
-        if (!type || !isFloatScalarOrVector(*type)) {
-          diags_.error(DiagCode::InvalidParameter, ref(t->at),
-                       what + " has type '" + typeText + "'; a parameter is float, vec2, vec3 or vec4");
-        } else {
-          p.type = *type;
-          typeOk = true;
-        }
-      }
+      bool typeOk = readValueType(pv, what, "a parameter", p.type);
       ok = typeOk;
 
       const DraftValue* def = pv.member("default");
@@ -321,6 +308,26 @@ class Loader : public GraphDraftReader {
 
       g.parameters.push_back(std::move(p));
     }
+  }
+
+  // The "type" member of `obj` (`what`, a `kind`): float, vec2, vec3 or vec4 into `type`;
+  // false after reporting it missing, not a string, or another type (WG011).
+  bool readValueType(const DraftValue& obj, const std::string& what, const char* kind, Type& type) {
+    if (!obj.member("type")) {
+      missing(obj, what + " is missing \"type\"");
+      return false;
+    }
+    auto* t = field(obj, "type", json::value_t::string, "'type' of " + what);
+    if (!t) return false;
+    const auto& typeText = t->value.get_ref<const std::string&>();
+    auto parsed = parseType(typeText);
+    if (!parsed || !isFloatScalarOrVector(*parsed)) {
+      diags_.error(DiagCode::InvalidParameter, ref(t->at),
+                   what + " has type '" + typeText + "'; " + kind + " is float, vec2, vec3 or vec4");
+      return false;
+    }
+    type = *parsed;
+    return true;
   }
 
   // A value for parameter `p`: a number for float, an array of n numbers for vecN; WG011
@@ -463,23 +470,7 @@ class Loader : public GraphDraftReader {
       return;
     }
     checkKeys(o, what, {"type", "source", "description"});
-    bool ok = true;
-    if (!o.member("type")) {
-      missing(o, what + " is missing \"type\"");
-      ok = false;
-    } else if (auto* t = field(o, "type", json::value_t::string, "'type' of " + what)) {
-      const auto& typeText = t->value.get_ref<const std::string&>();
-      auto type = parseType(typeText);
-      if (!type || !isFloatScalarOrVector(*type)) {
-        diags_.error(DiagCode::InvalidParameter, ref(t->at),
-                     what + " has type '" + typeText + "'; an interface output is float, vec2, vec3 or vec4");
-        ok = false;
-      } else {
-        out.type = *type;
-      }
-    } else {
-      ok = false;
-    }
+    bool ok = readValueType(o, what, "an interface output", out.type);
     if (!o.member("source")) {
       missing(o, what + " is missing \"source\"");
       ok = false;

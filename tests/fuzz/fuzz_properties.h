@@ -53,6 +53,15 @@ inline std::string loaderProperty(std::string_view text) {
   return "";
 }
 
+// glslang rejecting generated code (WG040, WG041) for a graph the resolver accepted: a
+// compiler bug even though it is reported. "" when it did not.
+inline std::string generatedCodeRejected(const Diagnostics& diags) {
+  for (const auto& d : diags.all())
+    if (d.severity == Severity::Error && (d.code == DiagCode::GlslRejected || d.code == DiagCode::SpirvRejected))
+      return failure("glslang rejected generated code for a graph the compiler accepted", diags);
+  return "";
+}
+
 // The whole pipeline, every target, glslang validation on: a clear error, or GLSL that
 // glslang accepts for every target. glslang rejecting generated code (WG040, WG041) is a
 // compiler bug even though it is reported: a graph the resolver accepted must give valid
@@ -64,9 +73,7 @@ inline std::string pipelineProperty(std::string_view text) {
   if (!graph) return checkErrors(diags);
   CompileOptions options;  // every target, validation on
   auto result = compileGraph(*graph, defaultRegistry(), options, diags);
-  for (const auto& d : diags.all())
-    if (d.severity == Severity::Error && (d.code == DiagCode::GlslRejected || d.code == DiagCode::SpirvRejected))
-      return failure("glslang rejected generated code for a graph the compiler accepted", diags);
+  if (std::string why = generatedCodeRejected(diags); !why.empty()) return why;
   if (!result) return checkErrors(diags);
   if (diags.hasErrors()) return failure("a result returned with errors", diags);
   bool manifest = false, spirv = false;

@@ -54,9 +54,7 @@ inline std::string importsProperty(std::string_view data, const std::string& dir
     if (!inFolder(f)) return failure("the graph says it read " + f, diags);
   CompileOptions options;
   auto result = compileGraph(*graph, defaultRegistry(), options, diags);
-  for (const auto& d : diags.all())
-    if (d.severity == Severity::Error && (d.code == DiagCode::GlslRejected || d.code == DiagCode::SpirvRejected))
-      return failure("glslang rejected generated code for a graph the compiler accepted", diags);
+  if (std::string why = generatedCodeRejected(diags); !why.empty()) return why;
   if (!result) return checkErrors(diags);
   if (diags.hasErrors()) return failure("a result returned with errors", diags);
   return "";
