@@ -103,7 +103,7 @@ class ImportLoader {
 
     size_t first = diags_.all().size();
     std::shared_ptr<Graph> sub;
-    if (auto parsed = loadFile(shown.string())) sub = std::make_shared<Graph>(std::move(*parsed));
+    if (auto parsed = loadFile(shown.string(), im)) sub = std::make_shared<Graph>(std::move(*parsed));
     if (sub) {
       chain_.push_back({real.string(), shown.string()});
       loadImportsOf(*sub);
@@ -121,9 +121,18 @@ class ImportLoader {
     return result;
   }
 
-  std::optional<Graph> loadFile(const std::string& path) {
+  // Each file is within kMaxFileBytes; all of them together within kMaxImportedBytes, so a
+  // graph naming thousands of large files cannot make one compile hold gigabytes.
+  std::optional<Graph> loadFile(const std::string& path, const Import& im) {
     auto text = readGraphFile(path, diags_);
     if (!text) return std::nullopt;
+    bytesRead_ += text->size();
+    if (bytesRead_ > kMaxImportedBytes) {
+      diags_.error(DiagCode::LimitExceeded, im.pathWhere,
+                   "import '" + im.name + "' would make the imported graph files " + std::to_string(bytesRead_) +
+                       " bytes together; the limit is " + std::to_string(kMaxImportedBytes / (1024 * 1024)) + " MiB");
+      return std::nullopt;
+    }
     return parseGraph(*text, path, diags_);
   }
 
@@ -131,6 +140,7 @@ class ImportLoader {
   fs::path topDir_;
   std::vector<Link> chain_;  // the top-level file, then each file being loaded below it
   std::map<std::string, std::shared_ptr<const Graph>> loaded_;  // by real path; null: failed
+  std::size_t bytesRead_ = 0;  // of every imported file read
 };
 
 size_t countInlined(const Graph& g, std::unordered_map<const Graph*, size_t>& memo) {

@@ -12,6 +12,7 @@ namespace wg {
 inline constexpr std::size_t kMaxFileBytes = 16u * 1024u * 1024u;
 inline constexpr std::size_t kMaxNodes = 200000;  // in a file, and in a graph with its subgraphs inlined
 inline constexpr int kMaxImportDepth = 16;         // graphs importing graphs, the top-level one not counted
+inline constexpr std::size_t kMaxImportedBytes = 64u * 1024u * 1024u;  // all imported files of one graph together
 inline constexpr std::size_t kMaxStringBytes = 4096;  // every string and key
 inline constexpr double kFloat32Max = 3.4028234663852886e38;
 inline constexpr int kMaxJsonDepth = 64;  // nested arrays and objects, the file's top level included

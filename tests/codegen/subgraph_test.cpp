@@ -523,6 +523,29 @@ TEST(Subgraph, TheNodeLimitCountsInlinedNodes) {
   EXPECT_NE(diags.sorted()[0].message.find("with every subgraph instance inlined"), std::string::npos);
 }
 
+// Files of 15 MiB each (a small graph padded with spaces): four pass, the fifth takes the
+// imported bytes past 64 MiB.
+TEST(Subgraph, AllImportedFilesTogetherAreLimited) {
+  GraphTree tree;
+  std::string padded = std::string(R"({"version": 1, "name": "pad", "interface": {"outputs": {"v": {"type": "float", "source": 1}}},
+    "nodes": []})") + std::string(15u * 1024u * 1024u, ' ') + "\n";
+  std::string imports, nodes;
+  for (int i = 0; i < 5; ++i) {
+    std::string n = std::to_string(i);
+    tree.write("lib/pad" + n + ".json", padded);
+    imports += std::string(i ? ", " : "") + "\"p" + n + "\": \"lib/pad" + n + ".json\"";
+  }
+  Diagnostics diags;
+  EXPECT_FALSE(loadGraphFile(tree.write("p.json", R"({"version": 1, "name": "p", "imports": {)" + imports +
+                                                      R"(}, "nodes": [], "outputs": {"fragment": {"alpha": 1}}})"),
+                             diags));
+  auto sorted = diags.sorted();
+  ASSERT_EQ(sorted.size(), 1u) << diagnosticsText(diags);
+  EXPECT_EQ(sorted[0].code, DiagCode::LimitExceeded);
+  EXPECT_NE(sorted[0].message.find("import 'p4' would make the imported graph files"), std::string::npos)
+      << sorted[0].message;
+}
+
 TEST(Subgraph, ATexturePathInASubgraphIsRelativeToItsFile) {
   GraphTree tree;
   fs::create_directories(tree.path("lib/textures"));
