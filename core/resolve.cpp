@@ -8,6 +8,7 @@
 #include <set>
 #include <stdexcept>
 #include <unordered_map>
+#include <utility>
 
 #include <filesystem>
 
@@ -56,8 +57,9 @@ struct SharedState {
   std::string topDirectory;            // the top-level graph's folder: texture paths end relative to it
   std::set<std::string> texturesCounted;  // real paths of PNG textures
   long long textureTexels = 0;
-  // One node type per imported function graph, made on its first instance.
-  std::map<const Graph*, std::unique_ptr<NodeSpec>> instanceSpecs;
+  // One node type per imported function graph and name it is imported under (two graphs
+  // may import one file under two names), made on its first instance.
+  std::map<std::pair<const Graph*, std::string>, std::unique_ptr<NodeSpec>> instanceSpecs;
   NodeOutputValues* nodeOutputs = nullptr;
 };
 
@@ -173,7 +175,7 @@ class Resolver {
   // The node type an imported function graph stands for: its parameters are the inputs
   // (a parameter's default is the input's), its interface outputs the outputs.
   const NodeSpec* instanceSpec(const Import& im) {
-    auto& slot = shared_.instanceSpecs[im.graph.get()];
+    auto& slot = shared_.instanceSpecs[{im.graph.get(), im.name}];
     if (!slot) {
       auto spec = std::make_unique<NodeSpec>();
       spec->type = im.name;
@@ -184,14 +186,7 @@ class Resolver {
       spec->outputs = std::move(ports.outputs);
       slot = std::move(spec);
     }
-    // The name is this graph's (two graphs may import one file under two names).
-    if (slot->type == im.name) return slot.get();
-    auto& renamed = renamedSpecs_[im.name];
-    if (!renamed) {
-      renamed = std::make_unique<NodeSpec>(*slot);
-      renamed->type = im.name;
-    }
-    return renamed.get();
+    return slot.get();
   }
 
   void lookUpSpecs() {
@@ -628,7 +623,7 @@ class Resolver {
       const ValueRef& v = (*inputs)[pi];
       if (v.kind == ValueRef::Kind::Const && !fitsRange(v.constant, p)) {
         diags_.error(DiagCode::InterfaceMismatch, portWhere(node, given[pi]),
-                     "input '" + p.name + "' of '" + im.name + "' is " + describeConstant(v.constant) +
+                     "input '" + p.name + "' of '" + im.name + "' is " + v.constant.toString() +
                          ", outside its range " + rangeText(p),
                      idOf(node), inputLabel(p.name));
         inRange = false;
@@ -655,12 +650,6 @@ class Resolver {
   static std::string rangeText(const Parameter& p) {
     return "[" + (p.min ? formatNumber(*p.min) : std::string("-inf")) + ", " +
            (p.max ? formatNumber(*p.max) : std::string("inf")) + "]";
-  }
-  static std::string describeConstant(const Value& v) {
-    if (componentCount(v.type) == 1) return formatNumber(v[0]);
-    std::string s = "[";
-    for (int k = 0; k < componentCount(v.type); ++k) s += (k ? ", " : "") + formatNumber(v[k]);
-    return s + "]";
   }
 
   // A subgraph's interface outputs: each the value of its source, of its declared type.
@@ -827,7 +816,6 @@ class Resolver {
   std::string directory_;           // this graph file's folder (its texture paths are relative to it)
   std::vector<const NodeSpec*> specs_;
   std::vector<const Import*> instanceOf_;  // by node index: the import it instances, or null
-  std::map<std::string, std::unique_ptr<NodeSpec>> renamedSpecs_;
   std::unordered_map<std::string, int> nodeIndex_;
   std::unordered_map<std::string, ValueRef> paramValue_;  // what `$name` reads
   std::optional<NameSuggester> nodeIds_, parameterNames_;  // made on the first unknown name

@@ -235,6 +235,10 @@ TEST(Subgraph, AFileImportedThroughTwoPathsIsLoadedOnce) {
   EXPECT_EQ(viaLeft, viaRight);
   EXPECT_EQ(viaLeft, g->imports[2].graph.get());
   EXPECT_EQ(graphFilesRead(*g).size(), 4u);  // parent, left, right, sky_blend
+  // One file under two names ("sky" in left and right, "again" here) is a node type under each.
+  auto r = compileGraph(*g, defaultRegistry(), CompileOptions{}, diags);
+  ASSERT_TRUE(r) << diagnosticsText(diags);
+  EXPECT_EQ(r->nodesKept, 3);  // l/s and r/s are the same computation: one fresnel, one mix, the add
 }
 
 TEST(Subgraph, AFaultInsideASubgraphPointsIntoItsFileWithANotePerInstance) {

@@ -99,20 +99,30 @@ std::string waitFor(const std::string& path, const std::string& needle, int ms =
   return text;
 }
 
+// `watergraph compile GRAPH -o OUT --watch` in the background, printing into LOG; killed
+// when the returned value goes out of scope (kill(1) on a finished process does nothing).
+struct WatchProcess {
+  int pid = 0;
+  WatchProcess(const WatchProcess&) = delete;
+  WatchProcess& operator=(const WatchProcess&) = delete;
+  WatchProcess(const std::string& graph, const std::string& out, const std::string& log) {
+    auto start = eco::sh(shellQuote(test::watergraphBinary()) + " compile " + shellQuote(graph) + " -o " +
+                         shellQuote(out) + " --watch --watch-interval 50 > " + shellQuote(log) + " 2>&1 & echo $!");
+    if (start.exit == 0) pid = std::stoi(start.out);
+  }
+  ~WatchProcess() {
+    if (pid > 0) eco::sh("kill " + std::to_string(pid) + " 2>/dev/null");
+  }
+};
+
 TEST(Usability, WatchRecompilesOnChange) {
   eco::TempDir tmp;
   std::string graph = tmp / "lake.json";
   fs::copy_file(test::sourcePath("graphs/lake.json"), graph);
   std::string log = tmp / "watch.log";
   std::string out = tmp / "out";
-  auto start = eco::sh(shellQuote(test::watergraphBinary()) + " compile " + shellQuote(graph) + " -o " + shellQuote(out) +
-                       " --watch --watch-interval 50 > " + shellQuote(log) + " 2>&1 & echo $!");
-  ASSERT_EQ(start.exit, 0);
-  int pid = std::stoi(start.out);
-  struct Killer {
-    int pid;
-    ~Killer() { eco::sh("kill " + std::to_string(pid) + " 2>/dev/null"); }
-  } killer{pid};
+  WatchProcess watch(graph, out, log);
+  ASSERT_GT(watch.pid, 0);
 
   std::string text = waitFor(log, "watching 1 graph");
   ASSERT_NE(text.find("watching 1 graph"), std::string::npos) << text;
@@ -143,7 +153,7 @@ TEST(Usability, WatchRecompilesOnChange) {
   EXPECT_NE(text.find("recompiled " + graph + ": ok", failed), std::string::npos) << text;
 
   // SIGTERM stops it cleanly.
-  eco::sh("kill " + std::to_string(pid));
+  eco::sh("kill " + std::to_string(watch.pid));
   text = waitFor(log, "watch stopped");
   EXPECT_NE(text.find("watch stopped"), std::string::npos) << text;
 }
@@ -157,14 +167,8 @@ TEST(Usability, WatchRecompilesWhenAnImportedSubgraphChanges) {
     fs::copy_file(test::sourcePath(std::string("graphs/lib/") + lib), tmp / (std::string("lib/") + lib));
   std::string log = tmp / "watch.log";
   std::string out = tmp / "out";
-  auto start = eco::sh(shellQuote(test::watergraphBinary()) + " compile " + shellQuote(tmp / "pool.json") + " -o " +
-                       shellQuote(out) + " --watch --watch-interval 50 > " + shellQuote(log) + " 2>&1 & echo $!");
-  ASSERT_EQ(start.exit, 0);
-  int pid = std::stoi(start.out);
-  struct Killer {
-    int pid;
-    ~Killer() { eco::sh("kill " + std::to_string(pid) + " 2>/dev/null"); }
-  } killer{pid};
+  WatchProcess watch(tmp / "pool.json", out, log);
+  ASSERT_GT(watch.pid, 0);
   std::string text = waitFor(log, "watching 1 graph");
   ASSERT_NE(text.find("watching 1 graph"), std::string::npos) << text;
 
