@@ -235,7 +235,7 @@ void manifest(benchmark::State& state, Case* c) {
   const auto& prep = c->prepared();
   std::string base = graphBaseName(c->file);
   for (auto _ : state) {
-    std::string text = buildManifest(prep.program, prep.emitted, base).toJson().dump(2);
+    std::string text = buildManifest(prep.program, prep.emitted, base).fileText();
     benchmark::DoNotOptimize(text);
   }
 }

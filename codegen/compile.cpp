@@ -126,7 +126,7 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   if (!ok) return std::nullopt;
   result.manifest = buildManifest(*program, emitted, base);
   result.manifest.preset = options.preset;
-  result.files.push_back({base + ".manifest.json", result.manifest.toJson().dump(2) + "\n"});
+  result.files.push_back({base + ".manifest.json", result.manifest.fileText()});
   result.program = std::move(*program);
   return result;
 }

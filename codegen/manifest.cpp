@@ -3,67 +3,139 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/json_text_writer.h"
+
 namespace wg {
 namespace {
 
-nlohmann::json stagesJson(unsigned stages) {
-  nlohmann::json a = nlohmann::json::array();
-  if (stages & kVertexStage) a.push_back("vertex");
-  if (stages & kFragmentStage) a.push_back("fragment");
-  return a;
+// Every object below writes its members in byte order of their keys: the writer checks it,
+// and it is the order the JSON had when it was built as an nlohmann DOM (a std::map).
+
+void writeStages(JsonTextWriter& w, unsigned stages) {
+  w.beginArray();
+  if (stages & kVertexStage) w.string("vertex");
+  if (stages & kFragmentStage) w.string("fragment");
+  w.endArray();
 }
 
 // A scalar for one component, else an array.
-nlohmann::json numbersJson(const std::vector<double>& v) {
-  if (v.size() == 1) return v[0];
-  return v;
+void writeNumbers(JsonTextWriter& w, const std::vector<double>& v) {
+  if (v.size() == 1) return w.number(v[0]);
+  w.beginArray();
+  for (double d : v) w.number(d);
+  w.endArray();
 }
 
-nlohmann::json targetJson(const ManifestTarget& target) {
-  nlohmann::json t = nlohmann::json::object();
-  nlohmann::json entryPoints = nlohmann::json::object();
+void writeStrings(JsonTextWriter& w, const std::vector<std::string>& v) {
+  w.beginArray();
+  for (const auto& s : v) w.string(s);
+  w.endArray();
+}
+
+void writeTarget(JsonTextWriter& w, const ManifestTarget& target) {
+  // Members named by stage extensions ("frag", "vert", "vert.spv"): gathered, then sorted.
+  std::vector<std::pair<std::string, const std::string*>> files;
   for (const auto& f : target.files) {
     const std::string ext(stageExtension(f.stage));
-    t[ext] = f.file;
-    if (!f.spirv.empty()) t[ext + ".spv"] = f.spirv;
-    if (!f.entryPoint.empty()) entryPoints[ext] = f.entryPoint;
+    files.emplace_back(ext, &f.file);
+    if (!f.spirv.empty()) files.emplace_back(ext + ".spv", &f.spirv);
   }
+  std::string entryKey = "entry_points", fromKey = "from";
   if (!target.from.empty()) {
-    t["entry_points"] = std::move(entryPoints);
-    t["from"] = target.from;
+    files.emplace_back(entryKey, nullptr);
+    files.emplace_back(fromKey, &target.from);
   }
-  return t;
+  std::sort(files.begin(), files.end());
+  w.beginObject();
+  for (const auto& [key, value] : files) {
+    w.key(key);
+    if (value) {
+      w.string(*value);
+      continue;
+    }
+    std::vector<std::pair<std::string, const std::string*>> entries;
+    for (const auto& f : target.files)
+      if (!f.entryPoint.empty()) entries.emplace_back(std::string(stageExtension(f.stage)), &f.entryPoint);
+    std::sort(entries.begin(), entries.end());
+    w.beginObject();
+    for (const auto& [stage, entry] : entries) w.member(stage, *entry);
+    w.endObject();
+  }
+  w.endObject();
 }
 
-nlohmann::json uniformJson(const ManifestUniform& u) {
-  nlohmann::json j{{"name", u.name}, {"type", std::string(typeName(u.type))}, {"stages", stagesJson(u.stages)}};
-  if (const auto& p = u.parameter) {
-    j["parameter"] = p->name;
-    j["default"] = numbersJson(p->defaultValue);
-    if (p->min) j["min"] = *p->min;
-    if (p->max) j["max"] = *p->max;
-    if (!p->hint.empty()) j["hint"] = p->hint;
-    if (!p->description.empty()) j["description"] = p->description;
-  } else {
-    j["builtin"] = std::string(builtinUniformRow(u.builtin).meaning);
-    if (u.builtin == BuiltinUniform::TimePhase) j["angular_frequency"] = u.angularFrequency;
+void writeUniform(JsonTextWriter& w, const ManifestUniform& u) {
+  w.beginObject();
+  const auto& p = u.parameter;
+  if (!p && u.builtin == BuiltinUniform::TimePhase) w.memberNumber("angular_frequency", u.angularFrequency);
+  if (!p) w.member("builtin", builtinUniformRow(u.builtin).meaning);
+  if (p) {
+    w.key("default");
+    writeNumbers(w, p->defaultValue);
+    if (!p->description.empty()) w.member("description", p->description);
+    if (!p->hint.empty()) w.member("hint", p->hint);
+    if (p->max) w.memberNumber("max", *p->max);
+    if (p->min) w.memberNumber("min", *p->min);
   }
-  return j;
+  w.member("name", u.name);
+  if (p) w.member("parameter", p->name);
+  w.key("stages");
+  writeStages(w, u.stages);
+  w.member("type", typeName(u.type));
+  w.endObject();
 }
 
-nlohmann::json textureJson(const TextureInfo& t) {
-  nlohmann::json j{{"name", t.name}, {"type", std::string(typeName(t.type))}, {"binding", t.binding},
-                   {"stages", stagesJson(t.stages)}};
-  if (!t.source.empty()) j["source"] = t.source;
+void writeTexture(JsonTextWriter& w, const TextureInfo& t) {
+  w.beginObject();
+  w.memberInteger("binding", t.binding);
+  w.member("name", t.name);
+  if (t.scene) w.member("resource", sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
   // Only a state other than the default (repeat, linear, linear data) is written, so the
   // manifests of graphs that sample every texture the default way keep their bytes; the
   // entry then holds all three, so a client reads one complete state or none.
-  if (!t.source.empty() && !t.sampler.isDefault())
-    j["sampler"] = {{"wrap", std::string(wrapName(t.sampler.wrap))},
-                    {"filter", std::string(filterName(t.sampler.filter))},
-                    {"color_space", std::string(colorSpaceName(t.sampler.colorSpace))}};
-  if (t.scene) j["resource"] = std::string(sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
-  return j;
+  if (!t.source.empty() && !t.sampler.isDefault()) {
+    w.key("sampler");
+    w.beginObject();
+    w.member("color_space", colorSpaceName(t.sampler.colorSpace));
+    w.member("filter", filterName(t.sampler.filter));
+    w.member("wrap", wrapName(t.sampler.wrap));
+    w.endObject();
+  }
+  if (!t.source.empty()) w.member("source", t.source);
+  w.key("stages");
+  writeStages(w, t.stages);
+  w.member("type", typeName(t.type));
+  w.endObject();
+}
+
+void writeNodes(JsonTextWriter& w, const Manifest& m) {
+  w.beginObject();
+  w.key("kept");
+  w.beginArray();
+  for (const auto& k : m.kept) {
+    w.beginObject();
+    if (!k.merged.empty()) {
+      w.key("merged");
+      writeStrings(w, k.merged);
+    }
+    w.member("node", k.node);
+    w.key("stages");
+    writeStages(w, k.stages);
+    w.member("type", k.type);
+    w.endObject();
+  }
+  w.endArray();
+  w.key("removed");
+  w.beginArray();
+  for (const auto& r : m.removed) {
+    w.beginObject();
+    w.member("reason", r.reason);
+    w.member("what", r.what);
+    w.endObject();
+  }
+  w.endArray();
+  w.memberInteger("total", m.nodesTotal);
+  w.endObject();
 }
 
 }  // namespace
@@ -76,54 +148,86 @@ const ManifestTarget* Manifest::target(std::string_view name) const {
 
 bool Manifest::lists(RenderPass pass) const { return std::find(passes.begin(), passes.end(), pass) != passes.end(); }
 
-nlohmann::json Manifest::toJson() const {
-  nlohmann::json m;
-  m["format"] = format;
-  m["graph"] = graph;
-  if (!description.empty()) m["description"] = description;
-  if (!preset.empty()) m["preset"] = preset;
-  if (!imports.empty()) m["imports"] = imports;
-
-  nlohmann::json& targetsJson = m["targets"] = nlohmann::json::object();
-  for (const auto& t : targets) targetsJson[t.name] = targetJson(t);
-
-  nlohmann::json& attributesJson = m["attributes"] = nlohmann::json::array();
-  for (const auto& a : attributes)
-    attributesJson.push_back({{"name", a.name}, {"type", std::string(typeName(a.type))}, {"location", a.location}});
-  nlohmann::json& uniformsJson = m["uniforms"] = nlohmann::json::array();
-  for (const auto& u : uniforms) uniformsJson.push_back(uniformJson(u));
-  nlohmann::json& varyingsJson = m["varyings"] = nlohmann::json::array();
-  for (const auto& v : varyings)
-    varyingsJson.push_back({{"name", v.name}, {"type", std::string(typeName(v.type))}, {"carries", v.carries}});
-  m["functions"] = functions;
-  nlohmann::json& texturesJson = m["textures"] = nlohmann::json::array();
-  for (const auto& t : textures) texturesJson.push_back(textureJson(t));
-
+std::string Manifest::fileText() const {
+  std::string text;
+  text.reserve(256 + 96 * kept.size());
+  JsonTextWriter w(text);
+  w.beginObject();
+  w.key("attributes");
+  w.beginArray();
+  for (const auto& a : attributes) {
+    w.beginObject();
+    w.memberInteger("location", a.location);
+    w.member("name", a.name);
+    w.member("type", typeName(a.type));
+    w.endObject();
+  }
+  w.endArray();
+  if (!description.empty()) w.member("description", description);
+  w.memberInteger("format", format);
+  w.key("functions");
+  writeStrings(w, functions);
+  w.member("graph", graph);
+  if (!imports.empty()) {
+    w.key("imports");
+    writeStrings(w, imports);
+  }
+  w.key("nodes");
+  writeNodes(w, *this);
+  w.key("passes");
+  w.beginArray();
+  for (RenderPass p : passes) w.string(renderPassRow(p).name);
+  w.endArray();
+  if (!preset.empty()) w.member("preset", preset);
+  w.key("resources");
+  w.beginArray();
+  for (SceneResource r : resources) w.string(sceneResourceRow(r).name);
+  w.endArray();
+  // Target names are unique; nlohmann's object kept them in byte order.
+  std::vector<const ManifestTarget*> byName;
+  for (const auto& t : targets) byName.push_back(&t);
+  std::stable_sort(byName.begin(), byName.end(), [](const ManifestTarget* a, const ManifestTarget* b) { return a->name < b->name; });
+  w.key("targets");
+  w.beginObject();
+  for (const ManifestTarget* t : byName) {
+    w.key(t->name);
+    writeTarget(w, *t);
+  }
+  w.endObject();
   if (tessellation) {
-    nlohmann::json& t = m["tessellation"];
-    t["patch_vertices"] = kPatchVertices;
-    t["min_distance"] = tessellation->settings.minDistance;
-    t["max_distance"] = tessellation->settings.maxDistance;
-    t["factor"] = tessellation->settings.factor;
-    t["targets"] = tessellation->targets;
+    w.key("tessellation");
+    w.beginObject();
+    w.memberNumber("factor", tessellation->settings.factor);
+    w.memberNumber("max_distance", tessellation->settings.maxDistance);
+    w.memberNumber("min_distance", tessellation->settings.minDistance);
+    w.memberInteger("patch_vertices", kPatchVertices);
+    w.key("targets");
+    writeStrings(w, tessellation->targets);
+    w.endObject();
   }
-
-  nlohmann::json& resourcesJson = m["resources"] = nlohmann::json::array();
-  for (SceneResource r : resources) resourcesJson.push_back(std::string(sceneResourceRow(r).name));
-  nlohmann::json& passesJson = m["passes"] = nlohmann::json::array();
-  for (RenderPass p : passes) passesJson.push_back(std::string(renderPassRow(p).name));
-
-  nlohmann::json& nodes = m["nodes"];
-  nodes["total"] = nodesTotal;
-  nlohmann::json& keptJson = nodes["kept"] = nlohmann::json::array();
-  for (const auto& k : kept) {
-    nlohmann::json j{{"node", k.node}, {"type", k.type}, {"stages", stagesJson(k.stages)}};
-    if (!k.merged.empty()) j["merged"] = k.merged;
-    keptJson.push_back(std::move(j));
+  w.key("textures");
+  w.beginArray();
+  for (const auto& t : textures) writeTexture(w, t);
+  w.endArray();
+  w.key("uniforms");
+  w.beginArray();
+  for (const auto& u : uniforms) writeUniform(w, u);
+  w.endArray();
+  w.key("varyings");
+  w.beginArray();
+  for (const auto& v : varyings) {
+    w.beginObject();
+    w.member("carries", v.carries);
+    w.member("name", v.name);
+    w.member("type", typeName(v.type));
+    w.endObject();
   }
-  nlohmann::json& removedJson = nodes["removed"] = nlohmann::json::array();
-  for (const auto& r : removed) removedJson.push_back({{"what", r.what}, {"reason", r.reason}});
-  return m;
+  w.endArray();
+  w.endObject();
+  text += '\n';
+  return text;
 }
+
+nlohmann::json Manifest::toJson() const { return nlohmann::json::parse(fileText()); }
 
 }  // namespace wg

@@ -4,7 +4,7 @@
 // passes) and what the compiler kept and removed, so a user can see what each choice costs.
 //
 // A plain value. The compiler builds it (codegen/manifest_build.h) and writes it as JSON
-// (toJson); the runtime takes it as it is when it runs a graph compiled in the same
+// (fileText); the runtime takes it as it is when it runs a graph compiled in the same
 // process, and only a manifest read from disk goes through fromJson. Scene resources,
 // passes and builtin uniforms are enumerators of core/interface_tables.h, so nothing
 // compares names after the JSON is read.
@@ -106,7 +106,10 @@ struct Manifest {
   const ManifestTarget* target(std::string_view name) const;  // null when not compiled for it
   bool lists(RenderPass pass) const;
 
-  // The manifest file's contents.
+  // The manifest file's contents, written straight into one string (no DOM): the bytes
+  // nlohmann's dump(2) of the same members gives, and a final newline.
+  std::string fileText() const;
+  // The same as JSON (parsed from fileText, so the two cannot differ).
   nlohmann::json toJson() const;
   // Reads a manifest file's JSON. Lists other than "passes" may be absent (none); every
   // entry must have the members the compiler writes, and no others, so toJson gives back

@@ -228,7 +228,7 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
     if (manifest.tessellation) std::erase(manifest.tessellation->targets, vk);
   }
   for (auto& entry : crossTargets) manifest.targets.push_back(std::move(entry));
-  files.push_back({base + ".manifest.json", manifest.toJson().dump(2) + "\n"});
+  files.push_back({base + ".manifest.json", manifest.fileText()});
   result->files = std::move(files);
   return result;
 }

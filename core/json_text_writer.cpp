@@ -1,0 +1,98 @@
+#include "core/json_text_writer.h"
+
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+namespace wg {
+namespace {
+
+// Bytes nlohmann writes as they are: printable ASCII other than '"' and '\'. Anything
+// else (escapes, UTF-8 sequences, which it validates) goes through nlohmann itself, so
+// the two can never disagree.
+bool writtenVerbatim(std::string_view s) {
+  for (unsigned char c : s)
+    if (c < 0x20 || c >= 0x80 || c == '"' || c == '\\') return false;
+  return true;
+}
+
+}  // namespace
+
+void JsonTextWriter::newLine(size_t depth) {
+  out_ += '\n';
+  out_.append(2 * depth, ' ');
+}
+
+void JsonTextWriter::beforeValue() {
+  if (afterKey_) {
+    afterKey_ = false;
+    return;
+  }
+  if (levels_.empty()) return;
+  Level& level = levels_.back();
+  if (level.object) throw std::logic_error("JsonTextWriter: a value in an object needs a key");
+  if (!level.empty) out_ += ',';
+  level.empty = false;
+  newLine(levels_.size());
+}
+
+void JsonTextWriter::key(std::string_view k) {
+  if (levels_.empty() || !levels_.back().object || afterKey_)
+    throw std::logic_error("JsonTextWriter: a key outside an object");
+  Level& level = levels_.back();
+  if (!level.empty && !(level.lastKey < k))
+    throw std::logic_error("JsonTextWriter: key '" + std::string(k) + "' after '" + std::string(level.lastKey) +
+                           "' (keys go in byte order)");
+  if (!level.empty) out_ += ',';
+  level.empty = false;
+  level.lastKey = k;
+  newLine(levels_.size());
+  quoted(k);
+  out_ += ": ";
+  afterKey_ = true;
+}
+
+void JsonTextWriter::open(char bracket, bool object) {
+  beforeValue();
+  out_ += bracket;
+  levels_.push_back({object, true, {}});
+}
+
+void JsonTextWriter::close(char bracket) {
+  bool empty = levels_.back().empty;
+  levels_.pop_back();
+  if (!empty) newLine(levels_.size());
+  out_ += bracket;
+}
+
+void JsonTextWriter::beginObject() { open('{', true); }
+void JsonTextWriter::beginArray() { open('[', false); }
+void JsonTextWriter::endObject() { close('}'); }
+void JsonTextWriter::endArray() { close(']'); }
+
+void JsonTextWriter::quoted(std::string_view s) {
+  if (writtenVerbatim(s)) {
+    out_ += '"';
+    out_.append(s);
+    out_ += '"';
+  } else {
+    out_ += nlohmann::json(std::string(s)).dump();
+  }
+}
+
+void JsonTextWriter::string(std::string_view s) {
+  beforeValue();
+  quoted(s);
+}
+
+void JsonTextWriter::number(double d) {
+  beforeValue();
+  out_ += nlohmann::json(d).dump();
+}
+
+void JsonTextWriter::integer(long long i) {
+  beforeValue();
+  out_ += std::to_string(i);
+}
+
+}  // namespace wg
