@@ -61,6 +61,9 @@ struct SharedState {
   // may import one file under two names), made on its first instance.
   std::map<std::pair<const Graph*, std::string>, std::unique_ptr<NodeSpec>> instanceSpecs;
   NodeOutputValues* nodeOutputs = nullptr;
+  // A node type's options when a node declares none: completed and parsed once per type
+  // (most nodes of a large graph are math nodes that declare no options).
+  std::unordered_map<const NodeSpec*, std::pair<nlohmann::json, std::shared_ptr<const ParsedOptions>>> defaultOptions;
 };
 
 // A subgraph instance being inlined: its nodes' ids take the prefix, its parameters read
@@ -469,15 +472,28 @@ class Resolver {
       op.nodeId = idOf(node);
       op.where = node.where;
       if (scope_) op.instanceChain = scope_->chain;
-      op.options = completeOptions(*spec, declaredOptions(node, *spec));
-      if (scope_) retargetTexturePaths(*spec, op.options);
-      op.parsedOptions = parseOptions(*spec, op.options);  // valid: lookUpSpecs checked each value
+      if (node.options.empty() && !scope_) {
+        auto [it, fresh] = shared_.defaultOptions.try_emplace(spec);
+        if (fresh) {
+          it->second.first = completeOptions(*spec, nlohmann::json::object());
+          it->second.second = parseOptions(*spec, it->second.first);
+        }
+        op.options = it->second.first;
+        op.parsedOptions = it->second.second;
+      } else {
+        op.options = completeOptions(*spec, declaredOptions(node, *spec));
+        if (scope_) retargetTexturePaths(*spec, op.options);
+        op.parsedOptions = parseOptions(*spec, op.options);  // valid: lookUpSpecs checked each value
+      }
 
       const std::vector<PortSpec>& ports = inputsOf(static_cast<size_t>(ni));
       size_t nin = ports.size();
       op.inputs.assign(nin, ValueRef{});
-      std::vector<Type> sourceTypes(nin, Type::Invalid);
-      std::vector<const NodeInput*> given(nin, nullptr);
+      // Reused from node to node (two allocations per node on a large graph otherwise).
+      std::vector<Type>& sourceTypes = sourceTypes_;
+      std::vector<const NodeInput*>& given = given_;
+      sourceTypes.assign(nin, Type::Invalid);
+      given.assign(nin, nullptr);
       bool ok = true;
       for (size_t k = 0; k < node.inputs.size(); ++k) {
         const NodeInput& in = node.inputs[k];
@@ -816,8 +832,10 @@ class Resolver {
   std::string directory_;           // this graph file's folder (its texture paths are relative to it)
   std::vector<const NodeSpec*> specs_;
   std::vector<const Import*> instanceOf_;  // by node index: the import it instances, or null
-  std::unordered_map<std::string, int> nodeIndex_;
-  std::unordered_map<std::string, ValueRef> paramValue_;  // what `$name` reads
+  // Keyed by views of the graph's own strings (the graph outlives the resolver): a 10,000-node
+  // graph would otherwise copy every id once more.
+  std::unordered_map<std::string_view, int> nodeIndex_;
+  std::unordered_map<std::string_view, ValueRef> paramValue_;  // what `$name` reads
   std::optional<NameSuggester> nodeIds_, parameterNames_;  // made on the first unknown name
   std::vector<int> opOfNode_;  // by node index: its op, or -1
   // By node index, for a node that expanded into ops: the value of each output port.
@@ -828,6 +846,8 @@ class Resolver {
   // Node i's inputs[k] reads node inputNode_[inputBase_[i] + k] (-1: not a node output).
   std::vector<size_t> inputBase_;
   std::vector<int> inputNode_;
+  std::vector<Type> sourceTypes_;         // buildOps: the node's input types
+  std::vector<const NodeInput*> given_;   // buildOps: the node's written inputs by port
 };
 
 }  // namespace
