@@ -31,6 +31,7 @@ struct CheckArgs {
   std::string size = "160x90";
   std::string errorMap;  // FILE.png: the error image (several graphs: FILE-GRAPH.png)
   std::string mutate;    // FIND=>REPLACE in the water shaders
+  std::string preset;    // a preset of each graph, applied before compiling
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -73,6 +74,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
       if (graph) {
         CompileOptions options;
         options.targets = {target};
+        options.preset = args.preset;
         result = compileGraph(*graph, defaultRegistry(), options, diags);
       }
       printDiagnostics(diags, global);
@@ -135,6 +137,8 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::IsMember({"glsl330", "es300", "all"}))
       ->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frame")->capture_default_str();
+  cmd->add_option("--preset", args->preset,
+                  "a preset from each graph's \"presets\" table: its parameter values and node options apply");
   cmd->add_option("--error-map", args->errorMap,
                   "write the per-pixel error against the CPU of the worst view as a PNG (the frame's size; every water "
                   "pixel compared): grey on a log scale from 1e-8 (black) to 1e-3 (white), red over the error bound, "

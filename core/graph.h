@@ -68,10 +68,19 @@ struct Parameter {
 // A named set of parameter values (weather presets such as calm | moderate | choppy):
 // `--preset NAME` makes them the parameters' defaults before compiling, so static
 // parameters fold and uniform ones start there.
+// One member of a preset: a parameter's value ("depth": 3), or a node option's value
+// ("detail.octaves": 2: node id, '.', option name), which resolve checks against the node's
+// type like an option written on the node.
 struct PresetValue {
-  std::string parameter;
+  std::string parameter;      // a parameter's value: its name; "" for a node option
   std::vector<double> value;  // componentCount of the parameter's type
+  std::string node;           // a node option's value: the node id,
+  std::string option;         // the option's name
+  nlohmann::json optionValue; // and the value as written
   SourceRef where;            // the value's position
+  SourceRef keyWhere;         // the key's position
+
+  bool isOption() const { return !node.empty(); }
 };
 
 struct Preset {

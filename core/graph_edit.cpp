@@ -1,5 +1,7 @@
 #include "core/graph_edit.h"
 
+#include "core/preset.h"
+
 #include <algorithm>
 #include <cmath>
 #include <set>
@@ -8,6 +10,7 @@
 #include "core/load_limits.h"
 #include "core/node_options.h"
 #include "core/number_format.h"
+#include "core/preset.h"
 
 namespace wg {
 namespace {
@@ -112,12 +115,16 @@ std::string GraphEditor::applyPreset(const std::string& name) {
   if (preset == graph_.presets.end()) return "no preset '" + name + "'";
   Graph next = graph_;
   for (const PresetValue& v : preset->values) {
+    if (v.isOption()) {
+      if (!next.findNode(v.node)) return "preset '" + name + "' names no node '" + v.node + "'";
+      continue;
+    }
     auto p = std::find_if(next.parameters.begin(), next.parameters.end(), [&](const Parameter& q) { return q.name == v.parameter; });
     if (p == next.parameters.end()) return "preset '" + name + "' names no parameter '" + v.parameter + "'";
     if (v.value.size() != p->defaultValue.size())
       return "preset '" + name + "': parameter '" + v.parameter + "' takes " + std::to_string(p->defaultValue.size()) + " number(s)";
-    p->defaultValue = v.value;
   }
+  writePresetInto(next, *preset);
   record("apply preset '" + name + "'", "");
   graph_ = std::move(next);
   return "";

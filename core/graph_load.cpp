@@ -12,6 +12,7 @@
 #include <string>
 #include <system_error>
 #include <unordered_map>
+#include <unordered_set>
 
 #include "core/graph_io.h"
 #include "core/graph_imports.h"
@@ -368,9 +369,47 @@ class Loader : public GraphDraftReader {
     }
   }
 
-  // "presets": {"calm": {"amplitude": 0.1, ...}, ...}: each value names a declared
-  // parameter and fits its type and range (checked after the parameters are loaded).
+  // A preset member "node.option": the node is one of the graph's (an identifier before
+  // the first '.', an identifier after it); the option and its value are the node type's
+  // business, checked by resolve as for an option written on the node.
+  struct NodeIdsOfFile {
+    bool complete = false;  // false when the file has more nodes than the limit (reported)
+    std::unordered_set<std::string_view> ids;
+    std::optional<NameSuggester> suggester;  // made on the first unknown id
+  };
+  std::optional<PresetValue> presetOption(const std::string& preset, const DraftValue& value, NodeIdsOfFile& nodeIds) {
+    const std::string& key = value.name;
+    size_t dot = key.find('.');
+    PresetValue v;
+    v.node = key.substr(0, dot);
+    v.option = key.substr(dot + 1);
+    v.where = ref(value.at);
+    v.keyWhere = ref(value.key);
+    if (!isIdentifier(v.node) || !isIdentifier(v.option)) {
+      diags_.error(DiagCode::InvalidIdentifier, v.keyWhere,
+                   "preset '" + preset + "' sets '" + key +
+                       "': a node option is written \"node.option\", each an identifier " + kIdentifierRule);
+      return std::nullopt;
+    }
+    if (nodeIds.complete && !nodeIds.ids.count(v.node)) {
+      if (!nodeIds.suggester) nodeIds.suggester.emplace(std::vector<std::string>(nodeIds.ids.begin(), nodeIds.ids.end()));
+      diags_.error(DiagCode::DanglingReference, v.keyWhere,
+                   "preset '" + preset + "' sets an option of node '" + v.node + "', which the graph does not have" +
+                       nodeIds.suggester->didYouMean(v.node));
+      return std::nullopt;
+    }
+    v.optionValue = value.value;  // a preset's members are held as written (a Record)
+    return v;
+  }
+
+  // "presets": {"calm": {"amplitude": 0.1, "detail.octaves": 2, ...}, ...}: each value
+  // names a declared parameter and fits its type and range (checked after the parameters
+  // are loaded), or names a node's option (checked by resolve against the node's type).
   void loadPresets(const DraftValue& presets, Graph& g) {
+    NodeIdsOfFile nodeIds;
+    nodeIds.complete = nodeCount() <= kMaxNodes;
+    if (nodeIds.complete)
+      for (const auto& n : nodes_) nodeIds.ids.insert(n.id);
     std::vector<std::string> paramNames;
     std::unordered_map<std::string_view, const Parameter*> parameterByName;  // not a scan per value
     for (const auto& p : g.parameters) {
@@ -393,6 +432,10 @@ class Loader : public GraphDraftReader {
       }
       for (const DraftValue& value : pv.members) {
         const std::string& param = value.name;
+        if (param.find('.') != std::string::npos) {
+          if (auto option = presetOption(name, value, nodeIds)) preset.values.push_back(std::move(*option));
+          continue;
+        }
         auto found = parameterByName.find(param);
         const Parameter* p = found == parameterByName.end() ? nullptr : found->second;
         if (!p) {
@@ -406,7 +449,12 @@ class Loader : public GraphDraftReader {
         auto values = readValue(*p, value, label);
         if (!values) continue;
         checkRange(*p, *values, value.at, label);
-        preset.values.push_back({param, std::move(*values), ref(value.at)});
+        PresetValue v;
+        v.parameter = param;
+        v.value = std::move(*values);
+        v.where = ref(value.at);
+        v.keyWhere = ref(value.key);
+        preset.values.push_back(std::move(v));
       }
       g.presets.push_back(std::move(preset));
     }

@@ -147,8 +147,15 @@ std::string parameterText(const Parameter& p, int level) {
 std::string presetText(const Preset& preset, int level) {
   std::string out;
   ObjectWriter w(out, level);
-  for (const auto& v : preset.values)
+  for (const auto& v : preset.values) {
+    if (v.isOption()) {
+      std::string value;
+      writeJson(value, v.optionValue, level + 1);
+      w.member(v.node + "." + v.option, std::move(value));
+      continue;
+    }
     w.member(v.parameter, v.value.size() == 1 ? formatNumber(v.value[0]) : numberArray(v.value));
+  }
   w.finish();
   return out;
 }

@@ -1,5 +1,6 @@
 #include "core/preset.h"
 
+#include <algorithm>
 #include <string_view>
 #include <unordered_map>
 
@@ -23,12 +24,31 @@ bool applyPreset(Graph& graph, std::string_view name, Diagnostics& diags) {
     diags.error(DiagCode::UnknownPreset, where, std::move(message));
     return false;
   }
-  // By name, not a scan of the parameters per value: a preset may set 20,000 of them.
-  std::unordered_map<std::string_view, Parameter*> byName;
-  for (auto& p : graph.parameters) byName.emplace(p.name, &p);
-  for (const auto& v : preset->values)
-    if (auto it = byName.find(v.parameter); it != byName.end()) it->second->defaultValue = v.value;
+  writePresetInto(graph, *preset);
   return true;
+}
+
+void writePresetInto(Graph& graph, const Preset& preset) {
+  // By name, not a scan of the parameters per value: a preset may set 20,000 of them.
+  std::unordered_map<std::string_view, Parameter*> parameters;
+  for (auto& p : graph.parameters) parameters.emplace(p.name, &p);
+  std::unordered_map<std::string_view, Node*> nodes;
+  for (auto& n : graph.nodes) nodes.emplace(n.id, &n);
+  for (const auto& v : preset.values) {
+    if (!v.isOption()) {
+      if (auto it = parameters.find(v.parameter); it != parameters.end()) it->second->defaultValue = v.value;
+      continue;
+    }
+    auto it = nodes.find(v.node);
+    if (it == nodes.end()) continue;
+    std::vector<NodeOption>& options = it->second->options;
+    auto written = std::find_if(options.begin(), options.end(), [&](const NodeOption& o) { return o.name == v.option; });
+    NodeOption option{v.option, v.optionValue, v.where, v.keyWhere};
+    if (written == options.end())
+      options.push_back(std::move(option));
+    else
+      *written = std::move(option);
+  }
 }
 
 }  // namespace wg

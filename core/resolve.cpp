@@ -130,6 +130,7 @@ class Resolver {
     checkImportNames();
     indexNodes();
     lookUpSpecs();
+    if (!scope_) checkPresetOptions();
     std::vector<int> order = topologicalOrder();
     if (diags_.errorCount() > errorsBefore) return;
     buildOps(order);
@@ -165,6 +166,37 @@ class Resolver {
                           std::to_string(first.idWhere.col));
       }
     }
+  }
+
+  // Every preset's node options, whichever preset is applied: each names an option of the
+  // node's type and a value it accepts, reported at the preset's member. A value written
+  // onto its node by applyPreset (same position) is checked there instead, once.
+  void checkPresetOptions() {
+    for (const Preset& preset : graph_.presets)
+      for (const PresetValue& v : preset.values) {
+        if (!v.isOption()) continue;
+        auto it = nodeIndex_.find(v.node);
+        if (it == nodeIndex_.end()) continue;  // reported by the loader
+        const Node& node = graph_.nodes[static_cast<size_t>(it->second)];
+        const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
+        if (!spec) continue;  // an unknown type, reported
+        bool applied = std::any_of(node.options.begin(), node.options.end(),
+                                   [&](const NodeOption& o) { return o.name == v.option && o.where == v.where; });
+        if (applied) continue;
+        std::string label = "preset '" + preset.name + "'";
+        int oi = spec->optionIndex(v.option);
+        if (oi < 0) {
+          diags_.error(DiagCode::UnknownOption, v.keyWhere,
+                       label + ": node type '" + spec->type + "' has no option '" + v.option + "'" +
+                           didYouMean(v.option, namesOf(spec->options)),
+                       node.id, optionLabel(v.option));
+          continue;
+        }
+        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], v.optionValue, directory_, nullptr);
+        if (!why.empty())
+          diags_.error(DiagCode::InvalidOption, v.where, label + ": option '" + v.option + "' " + why, node.id,
+                       optionLabel(v.option));
+      }
   }
 
   // An import's name becomes a node type here, so it may not be one already.

@@ -41,6 +41,8 @@ struct SourceRef {
   FileName file;
   int line = 0;
   int col = 0;
+
+  friend bool operator==(const SourceRef&, const SourceRef&) = default;
 };
 
 }  // namespace wg

@@ -14,6 +14,8 @@ namespace {
 using OJ = nlohmann::ordered_json;
 
 constexpr const char* kIdentifierPattern = "^[A-Za-z_][A-Za-z0-9_]*$";
+// A preset member that sets a node's option: "node.option".
+constexpr const char* kPresetOptionPattern = "^[A-Za-z_][A-Za-z0-9_]*\\.[A-Za-z_][A-Za-z0-9_]*$";
 constexpr const char* kNodeOutputPattern = "^[A-Za-z_][A-Za-z0-9_]*\\.[A-Za-z_][A-Za-z0-9_]*$";
 constexpr const char* kParameterPattern = "^\\$[A-Za-z_][A-Za-z0-9_]*$";
 
@@ -305,13 +307,16 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
                       {"type", "object"},
                       {"propertyNames", defRef("identifier")},
                       {"additionalProperties", defRef("parameter")}}},
-      {"presets", {{"description", "preset name -> {parameter: value}: chosen with --preset, its values become the "
-                                   "parameter defaults"},
+      {"presets", {{"description", "preset name -> {parameter: value, \"node.option\": value}: chosen with --preset, "
+                                   "its values become the parameter defaults and the nodes' options"},
                    {"type", "object"},
                    {"propertyNames", defRef("identifier")},
-                   {"additionalProperties", {{"type", "object"},
-                                             {"propertyNames", defRef("identifier")},
-                                             {"additionalProperties", {{"anyOf", {defRef("number"), vectorLiteral(0)}}}}}}}},
+                   {"additionalProperties",
+                    {{"type", "object"},
+                     {"propertyNames", {{"anyOf", {defRef("identifier"), {{"pattern", kPresetOptionPattern}}}}}},
+                     // A node's option: the node type's option schema applies (checked by the compiler).
+                     {"patternProperties", {{kPresetOptionPattern, OJ::object()}}},
+                     {"additionalProperties", {{"anyOf", {defRef("number"), vectorLiteral(0)}}}}}}}},
       {"nodes", {{"type", "array"}, {"items", defRef("node")}}},
       {"outputs", defRef("outputs")}};
   defs["outputs"] = outputsSchema();
