@@ -62,7 +62,7 @@ struct Case {
     Graph graph;
     Program resolved;  // before the passes
     Program program;   // after them
-    std::vector<std::pair<Target, EmitResult>> emitted;
+    TargetPlans plans;  // what the manifest is built from
     std::map<Target, std::vector<ShaderSource>> sources;
   };
   const Prepared& prepared() {
@@ -84,12 +84,13 @@ struct Case {
     p->program = std::move(*r);
     if (!runPassRecipe(p->program, ctx)) throw std::runtime_error(name + ": a pass failed");
     std::string base = graphBaseName(file);
-    for (Target t : allTargets()) {
-      EmitResult er = emitProgram(p->program, t, file);
+    p->plans = planTargets(p->program, allTargets(), file);
+    for (size_t i = 0; i < allTargets().size(); ++i) {
+      Target t = allTargets()[i];
+      EmitResult er = emitGlsl(p->plans.of(i), t);
       auto& src = p->sources[t];
       for (const auto& sh : er.shaders)
         src.push_back({sh.stage, base + "." + std::string(targetName(t)) + "." + std::string(stageExtension(sh.stage)), sh.text});
-      p->emitted.emplace_back(t, std::move(er));
     }
     return p;
   }
@@ -235,7 +236,7 @@ void manifest(benchmark::State& state, Case* c) {
   const auto& prep = c->prepared();
   std::string base = graphBaseName(c->file);
   for (auto _ : state) {
-    std::string text = buildManifest(prep.program, prep.emitted, base).fileText();
+    std::string text = buildManifest(prep.program, prep.plans, base).fileText();
     benchmark::DoNotOptimize(text);
   }
 }

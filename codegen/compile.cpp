@@ -94,15 +94,15 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   std::string sourceName = std::filesystem::path(graph.file).filename().string();
   for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
   bool ok = true;
-  std::vector<std::pair<Target, EmitResult>> emitted;
-  std::vector<EmitResult> emits =
-      emitPrograms(*program, options.targets, sourceName.empty() ? graph.name : sourceName, options.tessellation);
+  // One plan per distinct tessellation choice; each target wraps its plan in its dialect.
+  TargetPlans plans =
+      planTargets(*program, options.targets, sourceName.empty() ? graph.name : sourceName, options.tessellation);
   for (size_t ti = 0; ti < options.targets.size(); ++ti) {
     Target target = options.targets[ti];
-    EmitResult er = std::move(emits[ti]);
+    EmitResult er = emitGlsl(plans.of(ti), target);
     // The text moves into `sources` and from there into the result (a big graph's shaders
-    // are megabytes); what stays in `er` (stages, line map, interface) is all the manifest
-    // and the validation messages read.
+    // are megabytes); what stays in `er` (stages, line map) is what the validation
+    // messages read.
     std::vector<ShaderSource> sources;
     for (auto& sh : er.shaders)
       sources.push_back({sh.stage, base + "." + std::string(targetName(target)) + "." + std::string(stageExtension(sh.stage)),
@@ -121,10 +121,9 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
       }
     }
     for (size_t s = 0; s < sources.size(); ++s) result.files[firstFile + s].contents = std::move(sources[s].text);
-    emitted.emplace_back(target, std::move(er));
   }
   if (!ok) return std::nullopt;
-  result.manifest = buildManifest(*program, emitted, base);
+  result.manifest = buildManifest(*program, plans, base);
   result.manifest.preset = options.preset;
   result.files.push_back({base + ".manifest.json", result.manifest.fileText()});
   result.program = std::move(*program);

@@ -26,46 +26,42 @@ ManifestUniform manifestUniform(const Program& program, const UniformInfo& u) {
 
 }  // namespace
 
-Manifest buildManifest(const Program& program, const std::vector<std::pair<Target, EmitResult>>& emitted,
-                       const std::string& baseName) {
+Manifest buildManifest(const Program& program, const TargetPlans& plans, const std::string& baseName) {
   Manifest m;
   m.graph = program.graphName;
   m.imports = program.importedFiles;
   m.description = program.description;
 
-  for (const auto& [target, er] : emitted) {
+  for (size_t i = 0; i < plans.targets.size(); ++i) {
+    const Target target = plans.targets[i];
     ManifestTarget& t = m.targets.emplace_back();
     t.name = targetName(target);
     const std::string prefix = baseName + "." + t.name + ".";
-    for (const auto& sh : er.shaders) {
+    for (const auto& stage : plans.of(i).stages) {
       ManifestStageFile& f = t.files.emplace_back();
-      f.stage = sh.stage;
-      f.file = prefix + std::string(stageExtension(sh.stage));
+      f.stage = stage.stage;
+      f.file = prefix + std::string(stageExtension(stage.stage));
       if (target == Target::Vk450) f.spirv = f.file + ".spv";
     }
   }
 
-  if (!emitted.empty()) {
-    const EmitResult& er = emitted.front().second;
-    m.attributes = er.attributes;
-    for (const auto& u : er.uniforms) m.uniforms.push_back(manifestUniform(program, u));
-    m.varyings = er.varyings;
-    m.functions = er.functions;
-    m.textures = er.textures;
-  }
+  ShaderPlan noTarget;  // resources and passes still listed when no target is compiled
+  if (plans.targets.empty()) planResources(program, noTarget);
+  const ShaderPlan& first = plans.targets.empty() ? noTarget : plans.of(0);
+  m.attributes = first.attributes;
+  for (const auto& u : first.uniforms) m.uniforms.push_back(manifestUniform(program, u));
+  m.varyings = first.varyings;
+  m.functions = first.functions;
+  m.textures = first.textures;
   // Tessellation, per target (GLSL ES 3.00 has none: es300 draws the mesh as it is).
-  for (const auto& [target, er] : emitted)
-    if (er.tessellation) {
-      if (!m.tessellation) m.tessellation.emplace().settings = *er.tessellation;
-      m.tessellation->targets.emplace_back(targetName(target));
+  for (size_t i = 0; i < plans.targets.size(); ++i)
+    if (const auto& tess = plans.of(i).tessellation) {
+      if (!m.tessellation) m.tessellation.emplace().settings = *tess;
+      m.tessellation->targets.emplace_back(targetName(plans.targets[i]));
     }
-
   // Resources and the passes producing them in table order; the water surface last.
-  for (SceneResource r : program.sceneResources()) {
-    m.resources.push_back(r);
-    m.passes.push_back(sceneResourceRow(r).pass);
-  }
-  m.passes.push_back(RenderPass::WaterSurface);
+  m.resources = first.resources;
+  m.passes = first.passes;
 
   m.nodesTotal = program.totalNodes;
   m.kept.reserve(program.ops.size());

@@ -1,0 +1,298 @@
+#include "codegen/plan_body.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+#include "codegen/shader_interface.h"
+#include "core/number_format.h"
+#include "core/texture_check.h"
+
+namespace wg {
+namespace {
+
+std::string glslLiteral(const Value& v) {
+  if (v.size() == 1) return formatGlslFloat(v[0]);
+  std::string s(typeName(v.type));
+  s += '(';
+  bool same = true;
+  for (int i = 1; i < v.size(); ++i) same &= v[i] == v[0] && std::signbit(v[i]) == std::signbit(v[0]);  // -0.0 is not 0.0
+  if (same) return s + formatGlslFloat(v[0]) + ')';
+  for (int i = 0; i < v.size(); ++i) s += (i ? ", " : "") + formatGlslFloat(v[i]);
+  return s + ')';
+}
+
+bool isGlslName(const std::string& e) {
+  if (e.empty() || (e[0] >= '0' && e[0] <= '9')) return false;
+  for (char c : e)
+    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
+  return true;
+}
+
+// Scene samplers are declared in the order of their resources' table rows.
+int sceneSamplerRank(const TextureInfo& t) { return static_cast<int>(sceneSamplerRow(*t.scene).resource); }
+
+// What an op's emit() sees: its inputs as expressions, and the writer to name the rest.
+class PlanOpContext final : public EmitContext {
+ public:
+  PlanOpContext(BodyWriter& w, StageBody& b, int opIndex) : w_(w), b_(b), opIndex_(opIndex) {}
+  std::string input(int port) override {
+    return w_.valueExpr(b_, op().inputs.at(static_cast<size_t>(port)), op().inputTypes.at(static_cast<size_t>(port)));
+  }
+  Type inputType(int port) const override { return op().inputTypes.at(static_cast<size_t>(port)); }
+  Type outputType(int port) const override { return op().outputTypes.at(static_cast<size_t>(port)); }
+  const ParsedOptions& parsedOptions() const override {
+    if (!op().parsedOptions) throw std::logic_error("op '" + op().nodeId + "' has no parsed options");
+    return *op().parsedOptions;
+  }
+  void output(int port, std::string expression) override { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
+  std::string builtin(Builtin b) override { return w_.builtinExpr(b_, b); }
+  std::string temporary(Type type, std::string expression) override {
+    std::string name = w_.opName(opIndex_) + "_t" + std::to_string(temps_++);
+    b_.line(opIndex_, typeName(type), " ", name, " = ", expression, ";");
+    return name;
+  }
+  unsigned stage() const override { return b_.stage; }
+  std::string timePhase(double omega) override { return w_.phaseUniform(b_, omega); }
+  using EmitContext::texture;
+  std::string texture(std::string_view option, const SamplerState& sampler) override {
+    const nlohmann::json& v = op().options.at(option);
+    if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
+    return w_.nodeTexture(b_, v.get<std::string>(), sampler);
+  }
+  std::string sceneTexture(SceneResource resource) override {
+    const auto& resources = spec().resources;
+    const SceneResourceRow& row = sceneResourceRow(resource);
+    if (std::find(resources.begin(), resources.end(), resource) == resources.end())
+      throw std::logic_error("node '" + spec().type + "' samples scene resource '" + std::string(row.name) +
+                             "' without listing it in its resources");
+    return w_.sceneSampler(b_, row.sampler);
+  }
+  const NodeSpec& spec() const override { return *op().spec; }
+  ValueFact inputFact(int port) const override {
+    const ValueRef& in = op().inputs.at(static_cast<size_t>(port));
+    ValueFact f = w_.facts().of(in, op().inputTypes.at(static_cast<size_t>(port)));
+    // Read through a varying: interpolation keeps a range (a convex combination) but not
+    // unit length.
+    if (in.kind == ValueRef::Kind::Op && b_.stage == kFragmentStage &&
+        !(w_.program().ops[static_cast<size_t>(in.index)].stage & kFragmentStage))
+      f.normalized = false;
+    return f;
+  }
+  ValueFact knownBuiltin(Builtin b) const override { return w_.knowsFacts() ? builtinFact(b) : ValueFact{}; }
+  std::optional<Value> inputConstant(int port) const override {
+    const ValueRef& in = op().inputs.at(static_cast<size_t>(port));
+    if (in.kind != ValueRef::Kind::Const) return std::nullopt;
+    return in.constant.convertedTo(op().inputTypes.at(static_cast<size_t>(port)));
+  }
+
+  std::vector<std::string> outputs;
+
+ private:
+  const Op& op() const { return w_.program().ops[static_cast<size_t>(opIndex_)]; }
+  BodyWriter& w_;
+  StageBody& b_;
+  int opIndex_;
+  int temps_ = 0;
+};
+
+}  // namespace
+
+std::string StageBody::use(BuiltinUniform u) {
+  builtinUniforms.insert(u);
+  return std::string(builtinUniformRow(u).glslName);
+}
+
+BodyWriter::BodyWriter(const Program& p, bool knowFacts, BuiltinNamer namer)
+    : program_(p), knowFacts_(knowFacts), namer_(std::move(namer)) {
+  if (knowFacts_) facts_ = ValueFacts(p);
+  opNames_.reserve(p.ops.size());
+  portBase_.reserve(p.ops.size() + 1);
+  portBase_.push_back(0);
+  for (size_t i = 0; i < p.ops.size(); ++i) {
+    opNames_.push_back("n" + std::to_string(i) + "_" + sanitiseIdentifier(p.ops[i].nodeId));
+    portBase_.push_back(portBase_.back() + p.ops[i].outputTypes.size());
+  }
+  std::set<std::string> taken;
+  for (const auto& param : p.parameters) {
+    std::string name = "p_" + sanitiseIdentifier(param.name);
+    if (!taken.insert(name).second) name = "p" + std::to_string(paramNames_.size()) + "_" + sanitiseIdentifier(param.name);
+    taken.insert(name);
+    paramNames_.push_back(name);
+  }
+  varyingNames_.resize(portBase_.back());
+  for (size_t k = 0; k < p.varyings.size(); ++k) {
+    const ValueRef& v = p.varyings[k];
+    const Op& op = p.ops[static_cast<size_t>(v.index)];
+    varyingNames_[portBase_[static_cast<size_t>(v.index)] + static_cast<size_t>(v.port)] =
+        "v" + std::to_string(k) + "_" + sanitiseIdentifier(op.nodeId) +
+        (op.outputTypes.size() > 1 ? "_" + op.spec->outputs[static_cast<size_t>(v.port)].name : "");
+  }
+}
+
+void BodyWriter::writeOps(StageBody& w) {
+  // Which outputs of which ops this stage reads.
+  std::vector<char> used(portBase_.back(), 0);  // by port index
+  auto use = [&](const ValueRef& r) {
+    if (r.kind != ValueRef::Kind::Op) return;
+    used[portBase_[static_cast<size_t>(r.index)] + static_cast<size_t>(r.port)] = 1;
+  };
+  for (size_t i = 0; i < program_.ops.size(); ++i)
+    if (program_.ops[i].stage & w.stage)
+      for (const auto& in : program_.ops[i].inputs) use(in);
+  for (const auto& out : program_.outputs)
+    if (outputSlotRow(out.slot).stage == w.stage) use(out.value);
+  if (w.stage == kVertexStage)
+    for (const auto& v : program_.varyings) use(v);
+
+  for (size_t i = 0; i < program_.ops.size(); ++i) {
+    const Op& op = program_.ops[i];
+    if (!(op.stage & w.stage)) continue;
+    PlanOpContext ctx(*this, w, static_cast<int>(i));
+    ctx.outputs.assign(op.outputTypes.size(), "");
+    op.spec->emit(ctx);
+    for (size_t p = 0; p < op.outputTypes.size(); ++p) {
+      if (!used[portBase_[i] + p]) continue;
+      if (ctx.outputs[p].empty())
+        throw std::logic_error("node '" + op.spec->type + "' emitted no expression for output '" +
+                               op.spec->outputs[p].name + "'");
+      if (isGlslName(ctx.outputs[p])) {
+        if (w.aliases.empty()) w.aliases.resize(portBase_.back());
+        w.aliases[portBase_[i] + p] = std::move(ctx.outputs[p]);
+        continue;
+      }
+      const int at = static_cast<int>(i);
+      if (op.outputTypes.size() > 1)
+        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], "_", op.spec->outputs[p].name, " = ", ctx.outputs[p], ";");
+      else
+        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], " = ", ctx.outputs[p], ";");
+    }
+  }
+}
+
+std::string BodyWriter::valueExpr(StageBody& w, const ValueRef& r, Type want) {
+  std::string e;
+  Type have = program_.typeOf(r);
+  switch (r.kind) {
+    case ValueRef::Kind::Const: return glslLiteral(r.constant.convertedTo(want));
+    case ValueRef::Kind::Param:
+      w.parameters.insert(r.index);
+      e = paramNames_[static_cast<size_t>(r.index)];
+      break;
+    case ValueRef::Kind::Builtin: e = builtinExpr(w, static_cast<Builtin>(r.index)); break;
+    case ValueRef::Kind::Op: {
+      const Op& op = program_.ops[static_cast<size_t>(r.index)];
+      e = w.stage == kFragmentStage && !(op.stage & kFragmentStage) ? varyingName(r.index, r.port) : opOutput(w, r.index, r.port);
+      break;
+    }
+    case ValueRef::Kind::None: throw std::logic_error("emit: unset value");
+  }
+  if (have != want && have == Type::Float) return std::string(typeName(want)) + "(" + e + ")";
+  return e;
+}
+
+std::string BodyWriter::outputExpr(StageBody& w, OutputSlot slot, std::string fallback) {
+  const ProgramOutput* out = program_.output(slot);
+  if (!out) return fallback;
+  return valueExpr(w, out->value, out->type);
+}
+
+std::string BodyWriter::builtinExpr(StageBody& w, Builtin b) {
+  w.builtins.insert(b);
+  return namer_(w, b);
+}
+
+std::string BodyWriter::opOutput(const StageBody& w, int op, int port) const {
+  size_t at = portBase_[static_cast<size_t>(op)] + static_cast<size_t>(port);
+  if (at < w.aliases.size() && !w.aliases[at].empty()) return w.aliases[at];
+  return tempName(op, port);
+}
+
+std::string BodyWriter::tempName(int op, int port) const {
+  const Op& o = program_.ops[static_cast<size_t>(op)];
+  return o.outputTypes.size() > 1 ? opNames_[static_cast<size_t>(op)] + "_" + o.spec->outputs[static_cast<size_t>(port)].name
+                                   : opNames_[static_cast<size_t>(op)];
+}
+
+const std::string& BodyWriter::varyingName(int op, int port) const {
+  const std::string& name = varyingNames_.at(portBase_[static_cast<size_t>(op)] + static_cast<size_t>(port));
+  if (name.empty()) throw std::logic_error("emit: the fragment stage reads a vertex-stage value that is no varying");
+  return name;
+}
+
+std::string BodyWriter::phaseUniform(StageBody& w, double omega) {
+  for (auto& p : phases_)
+    if (p.omega == omega) {
+      p.stages |= w.stage;
+      return p.name;
+    }
+  UniformInfo u{std::string(builtinUniformRow(BuiltinUniform::TimePhase).glslName) + std::to_string(phases_.size()),
+                Type::Float, -1, BuiltinUniform::TimePhase, w.stage, omega};
+  phases_.push_back(u);
+  return u.name;
+}
+
+// One sampler per distinct (source, sampler state): GL 3.3 keeps wrap and filter in the
+// texture object (the runtime uses no sampler objects) and sRGB is its internal format,
+// so a PNG read two ways is two textures, each with its own unit.
+std::string BodyWriter::nodeTexture(StageBody& w, const std::string& source, const SamplerState& sampler) {
+  for (auto& t : nodeTextures_)
+    if (t.source == source && t.sampler == sampler) {
+      t.stages |= w.stage;
+      return t.name;
+    }
+  std::string stem = source.rfind(kBuiltinTexturePrefix, 0) == 0 ? source.substr(kBuiltinTexturePrefix.size())
+                                                                   : std::filesystem::path(source).stem().string();
+  TextureInfo t;
+  t.name = "t" + std::to_string(nodeTextures_.size()) + "_" + sanitiseIdentifier(stem);
+  t.source = source;
+  t.sampler = sampler;
+  t.stages = w.stage;
+  nodeTextures_.push_back(t);
+  return t.name;
+}
+
+std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
+  for (auto& t : sceneTextures_)
+    if (t.scene == sampler) {
+      t.stages |= w.stage;
+      return t.name;
+    }
+  const SceneSamplerRow& row = sceneSamplerRow(sampler);
+  TextureInfo t;
+  t.name = row.glslName;
+  t.type = row.type;
+  t.scene = sampler;
+  t.stages = w.stage;
+  sceneTextures_.push_back(t);
+  return t.name;
+}
+
+std::vector<UniformInfo> BodyWriter::uniforms(const StageBody* vert, const StageBody& frag) const {
+  std::vector<UniformInfo> out;
+  for (const auto& row : builtinUniformTable()) {
+    unsigned stages = (vert && vert->builtinUniforms.count(row.id) ? kVertexStage : 0u) |
+                      (frag.builtinUniforms.count(row.id) ? kFragmentStage : 0u);
+    if (stages) out.push_back({std::string(row.glslName), row.type, -1, row.id, stages});
+  }
+  out.insert(out.end(), phases_.begin(), phases_.end());
+  for (size_t i = 0; i < program_.parameters.size(); ++i) {
+    unsigned stages = (vert && vert->parameters.count(static_cast<int>(i)) ? kVertexStage : 0u) |
+                      (frag.parameters.count(static_cast<int>(i)) ? kFragmentStage : 0u);
+    if (stages) out.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), {}, stages});
+  }
+  return out;
+}
+
+std::vector<TextureInfo> BodyWriter::textures() const {
+  std::vector<TextureInfo> scene = sceneTextures_;
+  std::stable_sort(scene.begin(), scene.end(),
+                   [](const TextureInfo& a, const TextureInfo& b) { return sceneSamplerRank(a) < sceneSamplerRank(b); });
+  std::vector<TextureInfo> out = nodeTextures_;
+  out.insert(out.end(), scene.begin(), scene.end());
+  for (size_t i = 0; i < out.size(); ++i) out[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
+  return out;
+}
+
+}  // namespace wg

@@ -1,0 +1,119 @@
+#pragma once
+// Inside the planner (codegen/plan_*.cpp): the writer of stage bodies that every kind of
+// plan shares. It runs each op's emit() for one stage, names op outputs, parameters, time
+// phases and samplers, and records what the body used; how a builtin is named is the one
+// thing each kind of plan decides for itself (the BuiltinNamer it is given).
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "codegen/shader_plan.h"
+#include "codegen/value_facts.h"
+#include "core/program.h"
+
+namespace wg {
+
+// One stage's body being written into one buffer ("  " + line + '\n' each, no string per
+// line), with the op that wrote each line, and what it used.
+struct StageBody {
+  unsigned stage = 0;  // kVertexStage or kFragmentStage
+  std::string body;
+  std::vector<int> lineOp;
+  std::set<Builtin> builtins;
+  std::set<int> parameters;
+  std::set<BuiltinUniform> builtinUniforms;
+  // Op outputs whose expression is already a name (a builtin, another temporary): used
+  // directly instead of copying into a new local. By the writer's port index ("" none; a
+  // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
+  std::vector<std::string> aliases;
+
+  explicit StageBody(unsigned s) : stage(s) {}
+  // One line of the body, from its parts.
+  template <class... Parts>
+  void line(int op, const Parts&... parts) {
+    body += "  ";
+    (body.append(std::string_view(parts)), ...);
+    body += '\n';
+    lineOp.push_back(op);
+  }
+  // Records that the body reads uniform `u`; returns its GLSL name.
+  std::string use(BuiltinUniform u);
+};
+
+class BodyWriter {
+ public:
+  // The expression for builtin `b` in `body` (which uniforms it needs go into body).
+  using BuiltinNamer = std::function<std::string(StageBody& body, Builtin b)>;
+  // `knowFacts` false: the builtins and parameters may hold anything (probe cases), so
+  // nodes are told nothing about their inputs.
+  BodyWriter(const Program& program, bool knowFacts, BuiltinNamer namer);
+
+  // Every op of body.stage, one local per used output that is not already a name.
+  void writeOps(StageBody& body);
+  std::string valueExpr(StageBody& body, const ValueRef& r, Type want);
+  std::string outputExpr(StageBody& body, OutputSlot slot, std::string fallback);
+  std::string builtinExpr(StageBody& body, Builtin b);
+  std::string opOutput(const StageBody& body, int op, int port) const;
+  const std::string& varyingName(int op, int port) const;
+  std::string phaseUniform(StageBody& body, double omega);
+  std::string nodeTexture(StageBody& body, const std::string& source, const SamplerState& sampler);
+  std::string sceneSampler(StageBody& body, SceneSampler sampler);
+
+  // The interface the bodies made: builtin uniforms in table order, then the time phases,
+  // then the parameters `vertex` (may be null) and `fragment` read.
+  std::vector<UniformInfo> uniforms(const StageBody* vertex, const StageBody& fragment) const;
+  // Node textures by first use, then scene textures in the manifest's resource order;
+  // vk450 bindings follow the uniform block's.
+  std::vector<TextureInfo> textures() const;
+
+  const Program& program() const { return program_; }
+  const ValueFacts& facts() const { return facts_; }
+  bool knowsFacts() const { return knowFacts_; }
+  const std::string& opName(int op) const { return opNames_[static_cast<size_t>(op)]; }
+
+ private:
+  std::string tempName(int op, int port) const;
+
+  const Program& program_;
+  bool knowFacts_;
+  ValueFacts facts_;  // empty unless knowFacts_
+  BuiltinNamer namer_;
+  std::vector<std::string> opNames_;
+  std::vector<size_t> portBase_;  // op i's outputs are port indices portBase_[i] ... portBase_[i + 1] - 1
+  std::vector<std::string> paramNames_;
+  std::vector<std::string> varyingNames_;   // by port index ("" for no varying)
+  std::vector<UniformInfo> phases_;         // time phases, by first use
+  std::vector<TextureInfo> nodeTextures_;   // by first use
+  std::vector<TextureInfo> sceneTextures_;  // by first use (sorted by textures())
+};
+
+// Around the bodies (codegen/plan_stage.cpp).
+// The planned stage for a written body: its locals, and the library items both call.
+PlannedStage plannedStage(ShaderStage stage, StageBody&& body, std::vector<std::string> locals);
+// The library items `code` calls, dependencies first.
+std::vector<const GlslItem*> libraryFor(std::string_view code);
+// The union of the stages' library items, in library order.
+std::vector<std::string> functionsOf(const std::vector<PlannedStage>& stages);
+// Loose uniforms of `plan` that `wanted` selects (indices).
+std::vector<size_t> uniformsWhere(const ShaderPlan& plan, const std::function<bool(const UniformInfo&)>& wanted);
+// Textures of `plan` sampled in stage bit `bit` (indices).
+std::vector<size_t> texturesIn(const ShaderPlan& plan, unsigned bit);
+
+// The pieces each kind of plan adds (codegen/plan_deferred.cpp, codegen/plan_tessellation.cpp).
+// Deferred: declares the G-buffer samplers the fragment body's builtins need.
+void planDeferredSamplers(BodyWriter& writer, StageBody& fragment);
+// Deferred: the fragment's surface builtins read from the G-buffer, under the varyings' names.
+std::vector<std::string> deferredLocals(const StageBody& fragment);
+// Tessellation asked for by a vertex-stage node, if any.
+std::optional<TessellationSettings> requestedTessellation(const Program& program);
+// Tessellated: the evaluation stage's builtin locals (the patch corners interpolated).
+std::vector<std::string> tessEvaluationLocals(const StageBody& geometry);
+// Tessellated: the vertex shader (mesh into world space) and the control stage (levels by
+// camera distance), from what the geometry stage reads.
+PlannedStage tessVertexStage(const ShaderPlan& plan, const StageBody& geometry);
+PlannedStage tessControlStage(const ShaderPlan& plan, const StageBody& geometry);
+// What travels from the vertex shader through the control stage to the evaluation stage.
+std::vector<StageVariable> patchVariables(const StageBody& geometry, const std::string& prefix);
+
+}  // namespace wg

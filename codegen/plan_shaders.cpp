@@ -1,0 +1,182 @@
+// planShaders: the vertex (or tessellated geometry) and fragment stages of a drawn surface
+// or of the deferred pass, and the interface between them; planTargets shares one plan
+// among the targets that tessellate alike.
+#include <stdexcept>
+
+#include "codegen/plan_body.h"
+#include "codegen/shader_interface.h"
+
+namespace wg {
+namespace {
+
+std::string surfaceUniformName(BuiltinUniform u) { return std::string(builtinUniformRow(u).glslName); }
+
+// How a surface's (or the deferred pass's) stage bodies name the builtins: vertex stages
+// compute them as locals from the attributes (or the patch), fragment stages from the
+// varyings (or the G-buffer).
+std::string surfaceBuiltin(const ShaderPlan& plan, StageBody& w, Builtin b) {
+  bool vertex = w.stage == kVertexStage;
+  switch (b) {
+    case Builtin::Uv: return vertex ? (plan.tessellation ? "b_uv" : iface::kUvAttribute) : "v_uv";
+    case Builtin::WorldPosition:
+      if (vertex) w.use(BuiltinUniform::Model);
+      return vertex ? "b_world_position" : "v_world_position";
+    case Builtin::Normal:
+      if (vertex) w.use(BuiltinUniform::Model);
+      return "b_normal";
+    case Builtin::ViewDirection:
+      w.use(BuiltinUniform::CameraPosition);
+      if (vertex) w.use(BuiltinUniform::Model);
+      return "b_view_direction";
+    case Builtin::ScreenUv: w.use(BuiltinUniform::ViewportSize); return "b_screen_uv";
+    case Builtin::FragDepth:
+      return plan.kind == ShaderPlan::Kind::Deferred && !vertex ? "b_water_surface.w" : "gl_FragCoord.z";
+    case Builtin::CameraPosition:
+    case Builtin::Time:
+    case Builtin::CameraNearFar:
+    case Builtin::View:
+    case Builtin::Projection:
+    case Builtin::SunDirection: return w.use(builtinRow(b).uniform);
+  }
+  return "";
+}
+
+// The untessellated vertex shader's builtin locals: the mesh in world space.
+std::vector<std::string> vertexLocals(const StageBody& w) {
+  const std::string model = surfaceUniformName(BuiltinUniform::Model);
+  std::vector<std::string> lines;
+  lines.push_back("vec3 b_world_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
+  if (w.builtins.count(Builtin::Normal))
+    lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");");
+  if (w.builtins.count(Builtin::ViewDirection))
+    lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
+                    " - b_world_position);");
+  return lines;
+}
+
+// The fragment shader's builtin locals, from the varyings (deferred: from the G-buffer).
+std::vector<std::string> fragmentLocals(const ShaderPlan& plan, const StageBody& w) {
+  const bool deferred = plan.kind == ShaderPlan::Kind::Deferred;
+  std::vector<std::string> lines = deferred ? deferredLocals(w) : std::vector<std::string>{};
+  if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(v_normal);");
+  if (w.builtins.count(Builtin::ViewDirection))
+    lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
+                    " - v_world_position);");
+  if (w.builtins.count(Builtin::ScreenUv) && !deferred)
+    lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + surfaceUniformName(BuiltinUniform::ViewportSize) + ";");
+  return lines;
+}
+
+}  // namespace
+
+ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate) {
+  ShaderPlan plan;
+  plan.sourceName = std::move(sourceName);
+  plan.graphName = program.graphName;
+  plan.kind = program.reads(SceneResource::Underwater) ? ShaderPlan::Kind::Deferred : ShaderPlan::Kind::Surface;
+  if (tessellate) plan.tessellation = requestedTessellation(program);
+  const bool deferred = plan.kind == ShaderPlan::Kind::Deferred;
+  BodyWriter writer(program, true, [&plan](StageBody& w, Builtin b) { return surfaceBuiltin(plan, w, b); });
+
+  StageBody frag(kFragmentStage);
+  writer.writeOps(frag);
+  std::string color = writer.outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
+  std::string alpha = writer.outputExpr(frag, OutputSlot::FragmentAlpha, "1.0");
+  frag.line(-1, iface::kColorOutput, " = vec4(", color, ", ", alpha, ");");
+  if (deferred) planDeferredSamplers(writer, frag);
+
+  StageBody vert(kVertexStage);
+  writer.writeOps(vert);
+  // What the fragment stage reads from the vertex stage.
+  bool fragNeedsPosition = frag.builtins.count(Builtin::WorldPosition) || frag.builtins.count(Builtin::ViewDirection);
+  bool fragNeedsNormal = frag.builtins.count(Builtin::Normal) > 0;
+  bool fragNeedsUv = frag.builtins.count(Builtin::Uv) > 0;
+  // Deferred: the vertex shader feeds the runtime's G-buffer pass, which stores all three.
+  if (deferred) fragNeedsPosition = fragNeedsNormal = fragNeedsUv = true;
+  std::string position = writer.outputExpr(vert, OutputSlot::VertexPosition, writer.builtinExpr(vert, Builtin::WorldPosition));
+  vert.line(-1, "gl_Position = ", vert.use(BuiltinUniform::ViewProjection), " * vec4(", position, ", 1.0);");
+  if (fragNeedsPosition) vert.line(-1, "v_world_position = ", position, ";");
+  if (fragNeedsNormal) {
+    std::string normal = program.output(OutputSlot::VertexNormal) ? writer.outputExpr(vert, OutputSlot::VertexNormal, "")
+                                                                   : writer.builtinExpr(vert, Builtin::Normal);
+    vert.line(-1, "v_normal = ", normal, ";");
+  }
+  if (fragNeedsUv) {
+    vert.builtins.insert(Builtin::Uv);
+    vert.line(-1, "v_uv = ", plan.tessellation ? "b_uv" : iface::kUvAttribute, ";");
+  }
+  for (const auto& v : program.varyings)
+    vert.line(-1, writer.varyingName(v.index, v.port), " = ", writer.opOutput(vert, v.index, v.port), ";");
+  if (plan.tessellation) {
+    // The vertex shader places the mesh (model), the control stage measures distances.
+    vert.use(BuiltinUniform::Model);
+    vert.use(BuiltinUniform::CameraPosition);
+  }
+
+  // The interface.
+  plan.attributes.push_back({iface::kPositionAttribute, Type::Vec3, iface::kPositionLocation});
+  if (vert.builtins.count(Builtin::Normal)) plan.attributes.push_back({iface::kNormalAttribute, Type::Vec3, iface::kNormalLocation});
+  if (vert.builtins.count(Builtin::Uv)) plan.attributes.push_back({iface::kUvAttribute, Type::Vec2, iface::kUvLocation});
+  if (fragNeedsPosition) plan.varyings.push_back({"v_world_position", Type::Vec3, "world_position"});
+  if (fragNeedsNormal) plan.varyings.push_back({"v_normal", Type::Vec3, "normal"});
+  if (fragNeedsUv) plan.varyings.push_back({"v_uv", Type::Vec2, "uv"});
+  for (const auto& v : program.varyings) {
+    const Op& op = program.ops[static_cast<size_t>(v.index)];
+    plan.varyings.push_back({writer.varyingName(v.index, v.port), op.outputTypes[static_cast<size_t>(v.port)],
+                             "node '" + op.nodeId + "' output '" + op.spec->outputs[static_cast<size_t>(v.port)].name + "'"});
+  }
+  plan.uniforms = writer.uniforms(&vert, frag);
+  plan.textures = writer.textures();
+  planResources(program, plan);
+
+  // The stages, each with what it declares.
+  std::vector<StageVariable> varyings;
+  for (const auto& v : plan.varyings) varyings.push_back({v.type, v.name});
+  const std::string model = surfaceUniformName(BuiltinUniform::Model);
+  if (plan.tessellation) {
+    plan.stages.push_back(tessVertexStage(plan, vert));
+    plan.stages.push_back(tessControlStage(plan, vert));
+    std::vector<StageVariable> patch = patchVariables(vert, "te_");
+    PlannedStage& eval = plan.stages.emplace_back(plannedStage(ShaderStage::TessEvaluation, std::move(vert), tessEvaluationLocals(vert)));
+    eval.inputs = std::move(patch);
+    eval.arrayedInputs = true;
+    eval.outputs = varyings;
+    // The model matrix served the earlier stages; the evaluation stage is in world space.
+    eval.uniforms = uniformsWhere(plan, [&](const UniformInfo& u) { return (u.stages & kVertexStage) && u.name != model; });
+    eval.textures = texturesIn(plan, kVertexStage);
+  } else {
+    PlannedStage& vs = plan.stages.emplace_back(plannedStage(ShaderStage::Vertex, std::move(vert), vertexLocals(vert)));
+    vs.attributes = plan.attributes;
+    vs.outputs = varyings;
+    vs.uniforms = uniformsWhere(plan, [](const UniformInfo& u) { return (u.stages & kVertexStage) != 0; });
+    vs.textures = texturesIn(plan, kVertexStage);
+  }
+  PlannedStage& fs = plan.stages.emplace_back(plannedStage(ShaderStage::Fragment, std::move(frag), fragmentLocals(plan, frag)));
+  // Deferred: the full-screen fragment shader reads the G-buffer instead of varyings.
+  if (!deferred) fs.inputs = varyings;
+  fs.uniforms = uniformsWhere(plan, [](const UniformInfo& u) { return (u.stages & kFragmentStage) != 0; });
+  fs.textures = texturesIn(plan, kFragmentStage);
+  plan.functions = functionsOf(plan.stages);
+  return plan;
+}
+
+TargetPlans planTargets(const Program& program, const std::vector<Target>& targets, const std::string& sourceName,
+                        bool allowTessellation) {
+  TargetPlans out;
+  out.targets = targets;
+  // At most two plans: the geometry stage tessellated or not.
+  std::optional<size_t> byChoice[2];
+  const bool asked = requestedTessellation(program).has_value();
+  for (Target t : targets) {
+    bool tess = asked && tessellates(t, allowTessellation);
+    std::optional<size_t>& at = byChoice[tess ? 1 : 0];
+    if (!at) {
+      at = out.plans.size();
+      out.plans.push_back(planShaders(program, sourceName, tess));
+    }
+    out.planOf.push_back(*at);
+  }
+  return out;
+}
+
+}  // namespace wg

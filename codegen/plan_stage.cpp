@@ -1,0 +1,91 @@
+// The parts of a plan around the written bodies: a planned stage from a body, which
+// uniforms, samplers and library items each stage declares, the scene resources, and the
+// names every plan shares.
+#include <algorithm>
+
+#include "codegen/plan_body.h"
+#include "nodes/glsl_library.h"
+
+namespace wg {
+
+std::vector<const GlslItem*> libraryFor(std::string_view code) { return GlslLibrary::builtin().itemsFor(code); }
+
+PlannedStage plannedStage(ShaderStage stage, StageBody&& w, std::vector<std::string> locals) {
+  // Only lines that name a library item ("wg_"/"WG_" words) can call one: the scan reads
+  // those instead of a copy of the whole body.
+  auto callsLibrary = [](std::string_view l) {
+    return l.find("wg_") != std::string_view::npos || l.find("WG_") != std::string_view::npos;
+  };
+  std::string code;
+  for (const auto& l : locals)
+    if (callsLibrary(l)) code.append(l).push_back('\n');
+  const std::string_view body = w.body;
+  for (size_t start = 0; start < body.size();) {
+    size_t end = body.find('\n', start) + 1;  // every body line ends in '\n'
+    if (callsLibrary(body.substr(start, end - start))) code.append(body.substr(start, end - start));
+    start = end;
+  }
+  PlannedStage s;
+  s.stage = stage;
+  s.locals = std::move(locals);
+  s.body = std::move(w.body);
+  s.lineOp = std::move(w.lineOp);
+  s.builtins = std::move(w.builtins);
+  s.library = libraryFor(code);
+  return s;
+}
+
+std::vector<std::string> functionsOf(const std::vector<PlannedStage>& stages) {
+  std::set<std::string> called;
+  for (const auto& s : stages)
+    for (const GlslItem* item : s.library) called.insert(item->name);
+  std::vector<std::string> out;
+  for (const auto& item : GlslLibrary::builtin().items())
+    if (called.count(item.name) && std::find(out.begin(), out.end(), item.name) == out.end()) out.push_back(item.name);
+  return out;
+}
+
+std::vector<size_t> uniformsWhere(const ShaderPlan& plan, const std::function<bool(const UniformInfo&)>& wanted) {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < plan.uniforms.size(); ++i)
+    if (wanted(plan.uniforms[i])) out.push_back(i);
+  return out;
+}
+
+std::vector<size_t> texturesIn(const ShaderPlan& plan, unsigned bit) {
+  std::vector<size_t> out;
+  for (size_t i = 0; i < plan.textures.size(); ++i)
+    if (plan.textures[i].stages & bit) out.push_back(i);
+  return out;
+}
+
+void planResources(const Program& program, ShaderPlan& plan) {
+  for (SceneResource r : program.sceneResources()) {
+    plan.resources.push_back(r);
+    plan.passes.push_back(sceneResourceRow(r).pass);
+  }
+  plan.passes.push_back(RenderPass::WaterSurface);
+}
+
+const PlannedStage* ShaderPlan::stage(ShaderStage s) const {
+  for (const auto& st : stages)
+    if (st.stage == s) return &st;
+  return nullptr;
+}
+
+bool tessellates(Target target, bool allowed) { return allowed && target != Target::Es300; }
+
+std::string sanitiseIdentifier(std::string_view id) {
+  std::string out;
+  for (char c : id) {
+    bool ok = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+    char ch = ok ? c : '_';
+    if (ch == '_' && (out.empty() || out.back() == '_')) continue;
+    out += ch;
+    if (out.size() >= 24) break;
+  }
+  while (!out.empty() && out.back() == '_') out.pop_back();
+  return out.empty() ? "x" : out;
+}
+
+}  // namespace wg

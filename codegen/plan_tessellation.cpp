@@ -1,0 +1,97 @@
+// Tessellation: a vertex-stage node (a displacement that wants finer geometry near the
+// camera) asks for it; the vertex-stage nodes then run in the evaluation stage on the
+// interpolated patch, after a vertex shader that only places the mesh in world space and a
+// control stage that picks the levels from each corner's distance to the camera.
+#include <algorithm>
+
+#include "codegen/plan_body.h"
+#include "codegen/shader_interface.h"
+#include "core/number_format.h"
+
+namespace wg {
+namespace {
+
+std::string tessUniformName(BuiltinUniform u) { return std::string(builtinUniformRow(u).glslName); }
+
+// A stage whose body is fixed text (no op wrote it). Its library items come from the
+// whole body: its lines are few and short.
+PlannedStage fixedStage(ShaderStage stage, std::string body) {
+  PlannedStage s;
+  s.stage = stage;
+  s.lineOp.assign(static_cast<size_t>(std::count(body.begin(), body.end(), '\n')), -1);
+  s.library = libraryFor(body);
+  s.body = std::move(body);
+  return s;
+}
+
+}  // namespace
+
+std::optional<TessellationSettings> requestedTessellation(const Program& p) {
+  for (const auto& op : p.ops)
+    if ((op.stage & kVertexStage) && op.spec->tessellation)
+      if (auto settings = op.spec->tessellation(*op.parsedOptions)) return settings;
+  return std::nullopt;
+}
+
+std::vector<StageVariable> patchVariables(const StageBody& geometry, const std::string& prefix) {
+  std::vector<StageVariable> vars = {{Type::Vec3, prefix + "position"}};
+  if (geometry.builtins.count(Builtin::Normal)) vars.push_back({Type::Vec3, prefix + "normal"});
+  if (geometry.builtins.count(Builtin::Uv)) vars.push_back({Type::Vec2, prefix + "uv"});
+  return vars;
+}
+
+// The patch's corners, interpolated at gl_TessCoord.
+std::vector<std::string> tessEvaluationLocals(const StageBody& w) {
+  auto lerp3 = [](const std::string& a) {
+    return "gl_TessCoord.x * " + a + "[0] + gl_TessCoord.y * " + a + "[1] + gl_TessCoord.z * " + a + "[2]";
+  };
+  std::vector<std::string> lines;
+  lines.push_back("vec3 b_world_position = " + lerp3("te_position") + ";");
+  if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(" + lerp3("te_normal") + ");");
+  if (w.builtins.count(Builtin::Uv)) lines.push_back("vec2 b_uv = " + lerp3("te_uv") + ";");
+  if (w.builtins.count(Builtin::ViewDirection))
+    lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + tessUniformName(BuiltinUniform::CameraPosition) +
+                    " - b_world_position);");
+  return lines;
+}
+
+PlannedStage tessVertexStage(const ShaderPlan& plan, const StageBody& geometry) {
+  const std::string model = tessUniformName(BuiltinUniform::Model);
+  std::string body = "  tc_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;\n";
+  if (geometry.builtins.count(Builtin::Normal))
+    body += "  tc_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");\n";
+  if (geometry.builtins.count(Builtin::Uv)) body += "  tc_uv = " + std::string(iface::kUvAttribute) + ";\n";
+  body += "  gl_Position = vec4(tc_position, 1.0);\n";
+  PlannedStage s = fixedStage(ShaderStage::Vertex, body);
+  s.attributes = plan.attributes;
+  s.outputs = patchVariables(geometry, "tc_");
+  s.uniforms = uniformsWhere(plan, [&](const UniformInfo& u) { return u.name == model; });
+  return s;
+}
+
+// Levels from the camera distance of each corner; an edge takes the mean of its two ends,
+// so neighbouring patches agree on it and no cracks open.
+PlannedStage tessControlStage(const ShaderPlan& plan, const StageBody& geometry) {
+  const TessellationSettings& t = *plan.tessellation;
+  const std::string camera = tessUniformName(BuiltinUniform::CameraPosition);
+  std::string body;
+  for (const auto& v : patchVariables(geometry, ""))
+    body += "  te_" + v.name + "[gl_InvocationID] = tc_" + v.name + "[gl_InvocationID];\n";
+  body += "  if (gl_InvocationID == 0) {\n";
+  for (int i = 0; i < 3; ++i)
+    body += "    float f" + std::to_string(i) + " = wg_tess_distance_factor(tc_position[" + std::to_string(i) + "], " + camera +
+            ", " + formatGlslFloat(t.minDistance) + ", " + formatGlslFloat(t.maxDistance) + ", " + formatGlslFloat(t.factor) + ");\n";
+  body += "    gl_TessLevelOuter[0] = 0.5 * (f1 + f2);\n";
+  body += "    gl_TessLevelOuter[1] = 0.5 * (f2 + f0);\n";
+  body += "    gl_TessLevelOuter[2] = 0.5 * (f0 + f1);\n";
+  body += "    gl_TessLevelInner[0] = (f0 + f1 + f2) / 3.0;\n";
+  body += "  }\n";
+  PlannedStage s = fixedStage(ShaderStage::TessControl, body);
+  s.inputs = patchVariables(geometry, "tc_");
+  s.outputs = patchVariables(geometry, "te_");
+  s.arrayedInputs = s.arrayedOutputs = true;
+  s.uniforms = uniformsWhere(plan, [&](const UniformInfo& u) { return u.name == camera; });
+  return s;
+}
+
+}  // namespace wg

@@ -1,0 +1,136 @@
+#pragma once
+// The plan between the passes and the emitters: one plain value, built once from the final
+// Program, holding everything about the shaders that does not depend on the GLSL dialect —
+// the interface (attributes, varyings, uniforms, samplers with their vk450 bindings), the
+// scene resources and passes, tessellation, and per stage its body with the line -> op map
+// and the library items it calls. Each target's emitter (codegen/emit_glsl.h) only wraps a
+// plan in its dialect's declarations; the manifest (codegen/manifest_build.h) reads the
+// plan too, so the two cannot disagree. Identifiers are generated; no string from the
+// graph file is pasted.
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "codegen/target.h"
+#include "core/interface_tables.h"
+#include "core/program.h"
+
+namespace wg {
+
+struct GlslItem;
+
+struct UniformInfo {
+  std::string name;  // GLSL name
+  Type type = Type::Float;
+  int parameter = -1;       // index into Program::parameters, or -1 for a builtin uniform
+  BuiltinUniform builtin = BuiltinUniform::Time;  // what it holds, when parameter < 0
+  unsigned stages = 0;      // where it is declared
+  double omega = 0;         // time_phase: the value is mod(omega * time, 2 pi)
+};
+
+struct AttributeInfo {
+  std::string name;
+  Type type = Type::Float;
+  int location = 0;
+};
+
+struct VaryingInfo {
+  std::string name;
+  Type type = Type::Float;
+  std::string carries;  // "world_position", or "node 'wave' output 'normal'"
+};
+
+struct TextureInfo {
+  std::string name;      // GLSL sampler name
+  Type type = Type::Sampler2D;
+  std::string source;    // node texture: "builtin:foam" or a path relative to the graph
+  SamplerState sampler;  // node texture: how it is sampled (scene textures: the default, unused)
+  std::optional<SceneSampler> scene;  // a scene texture (then source is "")
+  int binding = 0;       // vk450 binding (set 0); the uniform block is binding 0
+  unsigned stages = 0;
+};
+
+// One variable of a stage's `in` or `out` interface (vk450 numbers them from 0 per list).
+struct StageVariable {
+  Type type = Type::Float;
+  std::string name;
+};
+
+// One shader of the pipeline, before any target's declarations are wrapped around it.
+struct PlannedStage {
+  ShaderStage stage{};
+  std::vector<std::string> locals;  // builtin locals at the top of main (no indent, no '\n')
+  std::string body;                 // "  " + line + '\n' per line, after the locals
+  std::vector<int> lineOp;          // per body line: the op that wrote it, or -1
+  std::set<Builtin> builtins;       // the builtins the body reads
+  std::vector<AttributeInfo> attributes;  // vertex inputs it declares
+  std::vector<StageVariable> inputs, outputs;
+  bool arrayedInputs = false, arrayedOutputs = false;  // tessellation patches: "name[]"
+  std::vector<size_t> uniforms;  // indices into ShaderPlan::uniforms declared loose here
+  std::vector<size_t> textures;  // indices into ShaderPlan::textures sampled here
+  std::vector<const GlslItem*> library;  // items of GlslLibrary::builtin() called, dependencies first
+};
+
+struct ShaderPlan {
+  // Surface: a drawn mesh. Deferred: an op reads the underwater resource, so the fragment
+  // stage runs as a full-screen pass taking the surface builtins from the water G-buffer.
+  // Probe: one fragment shader for `watergraph probe` (see planProbe).
+  enum class Kind { Surface, Deferred, Probe };
+  Kind kind = Kind::Surface;
+  // Set when the geometry stage is tessellated: the stages are then vertex, tess control,
+  // tess evaluation (where the vertex-stage nodes run) and fragment; patches of 3.
+  std::optional<TessellationSettings> tessellation;
+  std::vector<PlannedStage> stages;  // pipeline order
+  // The interface, the same in every target.
+  std::vector<AttributeInfo> attributes;
+  std::vector<VaryingInfo> varyings;
+  std::vector<UniformInfo> uniforms;   // builtins in table order, time phases, parameters
+  std::vector<TextureInfo> textures;   // node textures by first use, then scene textures
+  std::vector<std::string> functions;  // library items of all stages, in library order
+  std::vector<SceneResource> resources;  // table order
+  std::vector<RenderPass> passes;        // the passes producing them, then WaterSurface
+  // For the header comment of every shader.
+  std::string sourceName;
+  std::string graphName;
+
+  const PlannedStage* stage(ShaderStage s) const;  // null when the plan has none
+};
+
+// Whether `target` can run a tessellated geometry stage when `allowed` (GLSL ES 3.00 has
+// no such stages; HLSL through SPIRV-Cross asks for none).
+bool tessellates(Target target, bool allowed);
+
+// The vertex and fragment stages of a drawn surface, or of the deferred pass.
+// `tessellate`: tessellate the geometry stage where a vertex-stage node asks for it.
+ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate);
+
+// Probe: one fragment shader for `watergraph probe`, run on a full-screen triangle the
+// runtime supplies. Every op runs in it; the surface builtins (uv, world position, normal,
+// view direction, screen uv, fragment depth) are uniforms named "u_probe_<builtin>"
+// (UniformInfo::builtin says which), taken verbatim from the case, so a case can hand a
+// node any value, a zero-length normal included; the program's first output, padded with
+// zeros to a vec4, is o_color.
+ShaderPlan planProbe(const Program& program, std::string sourceName);
+
+// The plans for several targets: one per distinct tessellation choice, shared by every
+// target that tessellates alike.
+struct TargetPlans {
+  std::vector<Target> targets;
+  std::vector<ShaderPlan> plans;
+  std::vector<size_t> planOf;  // per target: its index in plans
+  const ShaderPlan& of(size_t targetIndex) const { return plans[planOf[targetIndex]]; }
+};
+TargetPlans planTargets(const Program& program, const std::vector<Target>& targets, const std::string& sourceName,
+                        bool allowTessellation = true);
+
+// Sets plan.resources and plan.passes: the scene resources the program reads and the
+// passes producing them (table order), then the water surface pass.
+void planResources(const Program& program, ShaderPlan& plan);
+
+// A graph identifier made safe as part of a GLSL name: [A-Za-z0-9_] only, no "__",
+// at most 24 characters.
+std::string sanitiseIdentifier(std::string_view id);
+
+}  // namespace wg
