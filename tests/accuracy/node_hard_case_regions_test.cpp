@@ -187,8 +187,8 @@ const std::map<std::string, RegionCheck>& regionChecks() {
   static const std::map<std::string, RegionCheck> m = {
       {"grazing",
        [](const Subject& s) {
-         return eachPort(s, [&](double) { return true; }, "") +
-                unless(dotF32(surfaceNormal(s), givenInput(s, portsOf(s).at(0))) == 0.0f, "N." + portsOf(s).at(0) + " is not 0 in float32");
+         std::string dir = portsOf(s).at(0);
+         return unless(dotF32(surfaceNormal(s), givenInput(s, dir)) == 0.0f, "N." + dir + " is not 0 in float32");
        }},
       {"back_facing",
        [](const Subject& s) { return unless(dotF32(surfaceNormal(s), givenInput(s, portsOf(s).at(0))) < 0.0f, "N.V is not negative in float32"); }},
