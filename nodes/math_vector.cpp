@@ -105,7 +105,7 @@ NodeSpec refractNode() {
   };
   s.hardCases = {{"total internal reflection", {{"incident", at(60)}, {"normal", up()}, {"eta", Value::scalar(1.333)}}, {},
                   "the zero vector", 0, 0},
-                 {"grazing from air", {{"incident", at(90)}, {"normal", up()}}, {}, "unit, finite", -1, 1},
+                 {"grazing from air", {{"incident", Value::vector({1, 0, 0})}, {"normal", up()}}, {}, "unit, finite", -1, 1},
                  {"head-on", {{"incident", at(0)}, {"normal", up()}}, {}, "straight through: (0, -1, 0)", -1, 0}};
   return s;
 }

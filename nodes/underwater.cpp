@@ -173,7 +173,7 @@ NodeSpec underwaterNode() {
   };
   s.tolerance = 1e-5;
   s.hardCases = {
-      {"sky behind, no camera matrices (the default scene)", {}, {}, "case 1: the scene colour, finite", 0, 1},
+      {"sky behind (the default scene)", {}, {}, "case 1: the scene colour, finite", 0, 1},
       {"camera fixed below, sky depth 1.0", {}, {{"camera", "below"}}, "case 2 or 3, finite", 0, 1},
       {"zero haze distance, zero absorption", {{"haze_distance", Value::scalar(0)}, {"sigma", Value::vector({0, 0, 0})}},
        {}, "finite", 0, 1},

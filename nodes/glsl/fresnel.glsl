@@ -5,12 +5,17 @@
 // Cosine of incidence, kept in [0, 1].
 float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
 
-// Schlick's approximation seen from the denser side uses the transmitted angle's cosine,
-// which exists only below the critical angle; beyond it the reflection is total.
-// eta = n_incident / n_transmitted. Returns -1 for total internal reflection.
-float wg_transmitted_cos(float cosi, float eta) {
-  float sin2t = eta * eta * (1.0 - cosi * cosi);
-  return sin2t >= 1.0 ? -1.0 : sqrt(1.0 - sin2t);
+// The transmitted angle's cosine for eta = n_incident / n_transmitted, which exists only
+// inside the critical angle; beyond it the reflection is total. Snell's law gives
+// cos_t^2 = 1 - eta^2 (1 - cos_i^2); it is formed as eta^2 (cos_i^2 - cos_c^2), where
+// eta2 = eta^2 and cosCrit2 = cos_c^2 = 1 - 1/eta^2 (the critical angle's squared cosine,
+// negative from the less dense side, where there is none) are formed in double by the
+// compiler. Near the critical angle cos_i^2 - cos_c^2 subtracts two close numbers, which
+// float32 does exactly, where 1 - eta^2 (1 - cos_i^2) cancels after two roundings: a tenth
+// of the error there (docs/accuracy.md). Returns -1 for total internal reflection (k <= 0).
+float wg_transmitted_cos(float cosi, float eta2, float cosCrit2) {
+  float k = eta2 * (cosi * cosi - cosCrit2);
+  return k <= 0.0 ? -1.0 : sqrt(k);
 }
 
 // Schlick (1994): F0 + (1 - F0)(1 - cos)^5, with cos taken in the less dense medium.
@@ -19,15 +24,16 @@ float wg_fresnel_schlick(float cosi, float f0) {
   float m2 = m * m;
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
-float wg_fresnel_schlick_from_below(float cosi, float f0, float eta) {
-  float cost = wg_transmitted_cos(cosi, eta);
+float wg_fresnel_schlick_from_below(float cosi, float f0, float eta2, float cosCrit2) {
+  float cost = wg_transmitted_cos(cosi, eta2, cosCrit2);
   return cost < 0.0 ? 1.0 : wg_fresnel_schlick(cost, f0);
 }
 
 // Exact unpolarised dielectric Fresnel: the mean of the s and p reflectances, 1 under
-// total internal reflection. n1 is the viewer's medium, n2 the other.
-float wg_fresnel_exact(float cosi, float n1, float n2) {
-  float cost = wg_transmitted_cos(cosi, n1 / n2);
+// total internal reflection. n1 is the viewer's medium, n2 the other; eta2 = (n1/n2)^2 and
+// cosCrit2 as for wg_transmitted_cos.
+float wg_fresnel_exact(float cosi, float n1, float n2, float eta2, float cosCrit2) {
+  float cost = wg_transmitted_cos(cosi, eta2, cosCrit2);
   if (cost < 0.0) return 1.0;
   float rs = (n1 * cosi - n2 * cost) / (n1 * cosi + n2 * cost);
   float rp = (n1 * cost - n2 * cosi) / (n1 * cost + n2 * cosi);

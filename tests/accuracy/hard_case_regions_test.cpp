@@ -646,6 +646,14 @@ const std::map<std::string, Check>& checks() {
          if (f32(c, "a") != f32(c, "b")) return std::string("the range is not empty");
          return eachNode(c, {{"inverse_mix", 0.0}}, 0);
        }},
+      {"no_camera_matrices",
+       [](const ProbeCase& c) {
+         // Every entry of both matrices is 0: no perspective scale to divide by.
+         for (const Value* m : {&c.env.view, &c.env.projection})
+           for (int i = 0; i < 16; ++i)
+             if (m->size() != 16 || (*m)[i] != 0) return std::string("the view or projection matrix is not zero");
+         return std::string();
+       }},
       {"screen_uv_outside",
        [](const ProbeCase& c) {
          Value uv = has(c, "screen_uv") ? given(c, "screen_uv") : c.env.screenUv;
@@ -674,7 +682,7 @@ using test_suite::loadSuite;
 
 TEST(HardCaseRegions, EveryCaseNamesARegionAndReachesIt) {
   ProbeCaseFile suite = loadSuite();
-  ASSERT_EQ(suite.cases.size(), 58u);
+  ASSERT_EQ(suite.cases.size(), 59u);
   for (const auto& c : suite.cases) {
     auto check = checks().find(c.region);
     if (check == checks().end()) {
@@ -705,6 +713,8 @@ TEST(HardCaseRegions, CasesThatMissTheirRegionAreRejected) {
     } else if (c.region == "noise_cell_interior") {
       for (auto& [port, v] : broken.inputs)
         if (port == "p") v = Value::vector({3, 5});  // a lattice point: the fade weights are 0
+    } else if (c.region == "no_camera_matrices") {
+      broken.env.view = defaultProbeEnvironment().view;  // the probe's camera, as a node's own case gets it
     } else if (c.region == "beer_lambert_path") {
       for (auto& [port, v] : broken.inputs)
         if (port == "distance") v = Value::scalar(0);  // no path: T = 1 whatever the coefficients
@@ -718,7 +728,7 @@ TEST(HardCaseRegions, CasesThatMissTheirRegionAreRejected) {
     ++tried;
     rejected += checks().at(c.region)(broken).empty() ? 0 : 1;
   }
-  EXPECT_EQ(tried, 10 + 12);
+  EXPECT_EQ(tried, 11 + 12);
   EXPECT_EQ(rejected, tried);
 }
 

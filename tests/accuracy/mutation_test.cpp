@@ -26,7 +26,7 @@ struct Mutation {
 const std::vector<Mutation>& mutations() {
   static const std::vector<Mutation> m = {
       {"fresnel", "index of refraction 1.333 -> 1.3331", {"1.333", "1.3331"}},
-      {"refract_dir", "eta^2 in Snell's k scaled by 1.0001", {"1.0 - eta * eta", "1.0 - 1.0001 * eta * eta"}},
+      {"refract_dir", "the critical angle's squared cosine in Snell's k scaled by 1.0001", {"c * c - cosCrit2", "c * c - 1.0001 * cosCrit2"}},
       {"reflect_dir", "the normal scaled by 1.0001 before reflect", {"reflect(-vv, nn)", "reflect(-vv, nn * 1.0001)"}},
       {"gerstner_waves", "phase scale k -> 1.0001 k", {"float theta = k * mod(", "float theta = 1.0001 * k * mod("}},
       {"trochoid_wave", "phase scale 1.0001", {"dot(waveVector, xz) + timePhase", "dot(waveVector, xz) * 1.0001 + timePhase"}},

@@ -94,12 +94,17 @@ float wg_pow_known_safe_float(float x, float y) { return pow(x, y); }
 // Cosine of incidence, kept in [0, 1].
 float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
 
-// Schlick's approximation seen from the denser side uses the transmitted angle's cosine,
-// which exists only below the critical angle; beyond it the reflection is total.
-// eta = n_incident / n_transmitted. Returns -1 for total internal reflection.
-float wg_transmitted_cos(float cosi, float eta) {
-  float sin2t = eta * eta * (1.0 - cosi * cosi);
-  return sin2t >= 1.0 ? -1.0 : sqrt(1.0 - sin2t);
+// The transmitted angle's cosine for eta = n_incident / n_transmitted, which exists only
+// inside the critical angle; beyond it the reflection is total. Snell's law gives
+// cos_t^2 = 1 - eta^2 (1 - cos_i^2); it is formed as eta^2 (cos_i^2 - cos_c^2), where
+// eta2 = eta^2 and cosCrit2 = cos_c^2 = 1 - 1/eta^2 (the critical angle's squared cosine,
+// negative from the less dense side, where there is none) are formed in double by the
+// compiler. Near the critical angle cos_i^2 - cos_c^2 subtracts two close numbers, which
+// float32 does exactly, where 1 - eta^2 (1 - cos_i^2) cancels after two roundings: a tenth
+// of the error there (docs/accuracy.md). Returns -1 for total internal reflection (k <= 0).
+float wg_transmitted_cos(float cosi, float eta2, float cosCrit2) {
+  float k = eta2 * (cosi * cosi - cosCrit2);
+  return k <= 0.0 ? -1.0 : sqrt(k);
 }
 
 // Schlick (1994): F0 + (1 - F0)(1 - cos)^5, with cos taken in the less dense medium.
@@ -109,8 +114,8 @@ float wg_fresnel_schlick(float cosi, float f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
-float wg_fresnel_schlick_from_below(float cosi, float f0, float eta) {
-  float cost = wg_transmitted_cos(cosi, eta);
+float wg_fresnel_schlick_from_below(float cosi, float f0, float eta2, float cosCrit2) {
+  float cost = wg_transmitted_cos(cosi, eta2, cosCrit2);
   return cost < 0.0 ? 1.0 : wg_fresnel_schlick(cost, f0);
 }
 
@@ -547,7 +552,7 @@ void main() {
   vec3 n7_ssr_color = mix(n6_sky_color, textureLod(u_scene_color, n7_ssr_t2.xy, 0.0).rgb, n7_ssr_t3);
   vec3 n8_down = (n4_detail_normal * vec3(-1.0));
   float n9_below_t0 = wg_cos_incidence(n8_down, b_view_direction);
-  float n9_below_t1 = wg_fresnel_schlick_from_below(n9_below_t0, 0.02, 1.333);
+  float n9_below_t1 = wg_fresnel_schlick_from_below(n9_below_t0, 0.02, 1.776889, 0.43721864);
   float n9_below_transmittance = (1.0 - n9_below_t1);
   vec3 n10_mirror = (vec3(n9_below_t1) * vec3(0.05, 0.3, 0.4));
   float n11_fresnel_t0 = wg_cos_incidence(n4_detail_normal, b_view_direction);

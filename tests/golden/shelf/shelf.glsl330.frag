@@ -29,18 +29,24 @@ float wg_depth_tint_smooth(float depth, float max_depth) {
 // Cosine of incidence, kept in [0, 1].
 float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
 
-// Schlick's approximation seen from the denser side uses the transmitted angle's cosine,
-// which exists only below the critical angle; beyond it the reflection is total.
-// eta = n_incident / n_transmitted. Returns -1 for total internal reflection.
-float wg_transmitted_cos(float cosi, float eta) {
-  float sin2t = eta * eta * (1.0 - cosi * cosi);
-  return sin2t >= 1.0 ? -1.0 : sqrt(1.0 - sin2t);
+// The transmitted angle's cosine for eta = n_incident / n_transmitted, which exists only
+// inside the critical angle; beyond it the reflection is total. Snell's law gives
+// cos_t^2 = 1 - eta^2 (1 - cos_i^2); it is formed as eta^2 (cos_i^2 - cos_c^2), where
+// eta2 = eta^2 and cosCrit2 = cos_c^2 = 1 - 1/eta^2 (the critical angle's squared cosine,
+// negative from the less dense side, where there is none) are formed in double by the
+// compiler. Near the critical angle cos_i^2 - cos_c^2 subtracts two close numbers, which
+// float32 does exactly, where 1 - eta^2 (1 - cos_i^2) cancels after two roundings: a tenth
+// of the error there (docs/accuracy.md). Returns -1 for total internal reflection (k <= 0).
+float wg_transmitted_cos(float cosi, float eta2, float cosCrit2) {
+  float k = eta2 * (cosi * cosi - cosCrit2);
+  return k <= 0.0 ? -1.0 : sqrt(k);
 }
 
 // Exact unpolarised dielectric Fresnel: the mean of the s and p reflectances, 1 under
-// total internal reflection. n1 is the viewer's medium, n2 the other.
-float wg_fresnel_exact(float cosi, float n1, float n2) {
-  float cost = wg_transmitted_cos(cosi, n1 / n2);
+// total internal reflection. n1 is the viewer's medium, n2 the other; eta2 = (n1/n2)^2 and
+// cosCrit2 as for wg_transmitted_cos.
+float wg_fresnel_exact(float cosi, float n1, float n2, float eta2, float cosCrit2) {
+  float cost = wg_transmitted_cos(cosi, eta2, cosCrit2);
   if (cost < 0.0) return 1.0;
   float rs = (n1 * cosi - n2 * cost) / (n1 * cosi + n2 * cost);
   float rp = (n1 * cost - n2 * cosi) / (n1 * cost + n2 * cosi);
@@ -54,7 +60,7 @@ void main() {
   float n2_tint_t0 = wg_depth_tint_smooth(n1_along_x, 10.0);
   vec3 n2_tint_color = mix(vec3(0.0, 0.8, 0.7), vec3(0.0, 0.1, 0.3), n2_tint_t0);
   float n3_fresnel_t0 = wg_cos_incidence(b_normal, b_view_direction);
-  float n3_fresnel_t1 = wg_fresnel_exact(n3_fresnel_t0, 1.0, 1.333);
+  float n3_fresnel_t1 = wg_fresnel_exact(n3_fresnel_t0, 1.0, 1.333, 0.56278133, -0.776889);
   vec3 n4_color = mix(n2_tint_color, p_sky, vec3(n3_fresnel_t1));
   o_color = vec4(n4_color, 1.0);
 }

@@ -157,14 +157,18 @@ vec3 wg_reflect_dir(vec3 n, vec3 v) {
 
 // The refracted direction of the ray -V through a surface whose normal N faces the viewer;
 // eta = n_viewer / n_other (1/1.333 from air, 1.333 from water). The cosine of incidence is
-// clamped to [0, 1] so grazing and back-facing views stay finite. When 1 - eta^2 (1 - c^2)
+// clamped to [0, 1] so grazing and back-facing views stay finite. When k = 1 - eta^2 (1 - c^2)
 // < 0 no refracted ray exists (total internal reflection, from below past the critical
 // angle): the mirror reflection 2cN - V is returned instead, with w = 1; otherwise w = 0.
-vec4 wg_refract_dir(vec3 n, vec3 v, float eta) {
+// k is formed as eta^2 (c^2 - cos_c^2) from eta2 = eta^2 and cosCrit2 = 1 - 1/eta^2 (the
+// critical angle's squared cosine), both formed in double by the compiler: near the
+// critical angle the difference of squares is exact in float32 where 1 - eta^2 (1 - c^2)
+// cancels after two roundings (see wg_transmitted_cos in fresnel.glsl).
+vec4 wg_refract_dir(vec3 n, vec3 v, float eta, float eta2, float cosCrit2) {
   vec3 nn = wg_safe_normalize_vec3(n);
   vec3 vv = wg_safe_normalize_vec3(v);
   float c = clamp(dot(nn, vv), 0.0, 1.0);
-  float k = 1.0 - eta * eta * (1.0 - c * c);
+  float k = eta2 * (c * c - cosCrit2);
   if (k < 0.0) return vec4(wg_safe_normalize_vec3(2.0 * c * nn - vv), 1.0);
   return vec4(wg_safe_normalize_vec3(-eta * vv + (eta * c - sqrt(k)) * nn), 0.0);
 }
@@ -225,7 +229,7 @@ void main() {
   vec3 n3_detail_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, vec2(-0.03, 0.07), n3_detail_t0)));
   vec3 n3_detail_t3 = wg_normal_map_scroll_add(n3_detail_t1, n3_detail_t2);
   vec3 n3_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_detail_t3, 0.35), b_normal);
-  vec4 n4_bent_t0 = wg_refract_dir(n3_detail_normal, b_view_direction, 0.7501876);
+  vec4 n4_bent_t0 = wg_refract_dir(n3_detail_normal, b_view_direction, 0.7501876, 0.56278133, -0.776889);
   vec3 n4_bent_direction = n4_bent_t0.xyz;
   vec2 n5_detail_xz = n3_detail_normal.xz;
   vec2 n6_mirror_offset = (n5_detail_xz * vec2(0.03));
