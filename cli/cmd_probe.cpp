@@ -17,6 +17,7 @@
 #include "nodes/registry.h"
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
+#include "core/preset.h"
 #include "runtime/egl_context.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
@@ -37,6 +38,7 @@ struct ProbeArgs {
   std::string options;    // with --node --sweep: the node's options, a JSON object
   std::string table;      // with --sweep: where the error curve goes
   std::string mutate;     // FIND=>REPLACE in the probe shader
+  std::string preset;     // graph mode: a preset of the graph, applied before probing
 };
 
 
@@ -190,6 +192,10 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     std::cerr << "watergraph: --sweep needs --node TYPE\n";
     return kExitUsageOrIo;
   }
+  if (!args.preset.empty() && !args.node.empty()) {
+    std::cerr << "watergraph: --preset needs a GRAPH (a node probed alone has no presets; give it --options)\n";
+    return kExitUsageOrIo;
+  }
   if (!args.node.empty()) return runNodeProbe(args, global, *parseTarget(args.target), mutation);
   if (args.cases.empty()) {
     std::cerr << "watergraph: probe GRAPH needs --cases FILE\n";
@@ -208,6 +214,7 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
   auto cases = accuracy::loadProbeCases(args.cases, diags);
+  if (graph && !args.preset.empty() && !applyPreset(*graph, args.preset, diags)) graph.reset();
   if (!graph || !cases) {
     printDiagnostics(diags, global);
     return exitCodeFor(diags);
@@ -250,6 +257,8 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
       "errors; 2 usage, I/O, or no EGL/GL context.");
   cmd->add_option("graph", args->graph, "graph file (.json); or --node");
   cmd->add_option("--output", args->output, "the node output to probe, NODE.PORT (default: the fragment colour)");
+  cmd->add_option("--preset", args->preset,
+                  "graph mode: a preset from the graph's \"presets\" table: its parameter values and node options apply");
   cmd->add_option("--cases", args->cases, "cases file (.json), see docs/accuracy.md (with --sweep: its first case is the base)");
   cmd->add_option("--target", args->target, "glsl330 (OpenGL 4.5 core) or es300 (OpenGL ES 3.2)")
       ->check(CLI::IsMember({"glsl330", "es300"}))

@@ -190,3 +190,48 @@ TEST(ProbeCli, JsonOutputAndExitOneOnInfinity) {
 
 }  // namespace
 }  // namespace wg::accuracy
+
+namespace wg::accuracy {
+namespace {
+
+// probe GRAPH --preset NAME probes the graph as the preset makes it; check --preset too.
+TEST(PresetCli, ProbeAndCheckApplyAPresetAndNameAMissingOne) {
+  std::string dir = test::makeTempDir("wg_probe_preset");
+  test::writeFile(dir + "/d.json", R"({"version": 1, "name": "d",
+    "parameters": {"b": {"type": "float", "default": 1, "static": true}},
+    "presets": {"half": {"b": 2}},
+    "nodes": [{"id": "q", "type": "div", "inputs": {"a": 1, "b": "$b"}}], "outputs": {"fragment": {"alpha": "q.out"}}})");
+  test::writeFile(dir + "/c.json", R"({"cases": [{"name": "at_rest"}]})");
+  const std::string graph = test::shellQuote(dir + "/d.json"), cases = test::shellQuote(dir + "/c.json");
+  auto gpuValue = [&](const std::string& extra) {
+    std::string out, err;
+    int rc = test::runCommandSplit(test::shellQuote(test::watergraphBinary()) + " probe " + graph +
+                                       " --output q.out --cases " + cases + " --json" + extra,
+                                   &out, &err);
+    EXPECT_EQ(rc, 0) << out << err;
+    return nlohmann::json::parse(out.substr(out.find('{')))["cases"][0]["gpu"][0].get<double>();
+  };
+  EXPECT_EQ(gpuValue(""), 1.0);
+  EXPECT_EQ(gpuValue(" --preset half"), 0.5);
+
+  int rc = 0;
+  std::string out;
+  rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " probe " + graph + " --cases " + cases +
+                            " --preset stormy", &out);
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_NE(out.find("[WG052] graph 'd' has no preset 'stormy'; its presets: half"), std::string::npos) << out;
+  rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " probe --node pow --cases " + cases +
+                            " --preset half", &out);
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_NE(out.find("--preset needs a GRAPH"), std::string::npos) << out;
+  rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check " + graph + " --target glsl330 --size 16x9 --preset stormy",
+                        &out);
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_NE(out.find("[WG052]"), std::string::npos) << out;
+  rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check " + graph + " --target glsl330 --size 16x9 --preset half",
+                        &out);
+  EXPECT_EQ(rc, 0) << out;
+}
+
+}  // namespace
+}  // namespace wg::accuracy
