@@ -1,7 +1,5 @@
 #include "core/graph_edit.h"
 
-#include "core/preset.h"
-
 #include <algorithm>
 #include <cmath>
 #include <set>
