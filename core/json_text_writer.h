@@ -27,9 +27,18 @@ class JsonTextWriter {
   void integer(long long i);
 
   // One member with a plain value, for the common case.
-  void member(std::string_view k, std::string_view s) { key(k), string(s); }
-  void memberNumber(std::string_view k, double d) { key(k), number(d); }
-  void memberInteger(std::string_view k, long long i) { key(k), integer(i); }
+  void member(std::string_view k, std::string_view s) {
+    key(k);
+    string(s);
+  }
+  void memberNumber(std::string_view k, double d) {
+    key(k);
+    number(d);
+  }
+  void memberInteger(std::string_view k, long long i) {
+    key(k);
+    integer(i);
+  }
 
  private:
   struct Level {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "core/node_options.h"
+#include "core/texture_check.h"
 
 namespace wg {
 
@@ -87,6 +88,12 @@ static void checkSpec(const NodeSpec& s) {
   for (const auto& p : s.inputs) custom |= p.kind == PortKind::Custom;
   for (const auto& p : s.outputs) custom |= p.kind == PortKind::Custom;
   if (custom && !s.infer && !s.expand) fail("custom-typed ports need an infer function");
+  // A texture option's default is a builtin texture: a path would be relative to no graph
+  // (and resolve shares one completed default per type between graph files).
+  for (const auto& o : s.options)
+    if (o.kind == OptionSpec::Kind::Texture &&
+        !(o.defaultValue.is_string() && o.defaultValue.get_ref<const std::string&>().rfind(kBuiltinTexturePrefix, 0) == 0))
+      fail("texture option '" + o.name + "' must default to a builtin texture");
   checkOptionsParse(s);
   for (const auto& hc : s.hardCases) checkHardCaseNames(s, hc);
 }

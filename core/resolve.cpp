@@ -504,7 +504,10 @@ class Resolver {
       op.nodeId = idOf(node);
       op.where = node.where;
       if (scope_) op.instanceChain = scope_->chain;
-      if (node.options.empty() && !scope_) {
+      // A node that declares no options takes its type's defaults, completed and parsed once
+      // per type. Inside an instance too: texture defaults are builtin names, which
+      // retargetTexturePaths leaves as they are (Registry::add checks that).
+      if (node.options.empty()) {
         auto [it, fresh] = shared_.defaultOptions.try_emplace(spec);
         if (fresh) {
           it->second.first = completeOptions(*spec, nlohmann::json::object());

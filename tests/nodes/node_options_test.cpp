@@ -69,6 +69,16 @@ TEST(NodeOptions, ParsedFromTheSpecDefaultsAndTheGivenValues) {
 
 TEST(NodeOptions, AValidToyNodeRegisters) { EXPECT_EQ(registrationError(toyNode()), ""); }
 
+// A texture option defaults to a builtin texture: a path would be relative to no graph, and
+// resolve shares one completed default per type between graph files and subgraphs.
+TEST(NodeOptions, ATextureOptionThatDefaultsToAPathFailsAtRegistration) {
+  NodeSpec s = toyNode();
+  s.options.push_back(ports::texture("map", "builtin:foam", "a texture"));
+  EXPECT_EQ(registrationError(s), "");
+  s.options.back() = ports::texture("map", "foam.png", "a texture");
+  EXPECT_EQ(registrationError(s), "node spec 'toy': texture option 'map' must default to a builtin texture");
+}
+
 TEST(NodeOptions, ReadingAnUndeclaredOptionFailsAtRegistration) {
   NodeSpec s = toyNode();
   s.parseOptions = optionParser<ToyOptions>([](const OptionReader& o) -> ToyOptions {
