@@ -18,6 +18,7 @@
 #include "accuracy/spirv_count.h"
 #include "codegen/compile.h"
 #include "core/graph_io.h"
+#include "core/preset.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
 #include "runtime/preview.h"
@@ -28,8 +29,9 @@ namespace {
 
 using ordered = nlohmann::ordered_json;
 
+// Errors name the configuration file, or the graph for `bench GRAPH`.
 [[noreturn]] void configError(const BenchSettings& s, const std::string& m) {
-  throw std::runtime_error(s.configFile + ": error: " + m);
+  throw std::runtime_error((s.graphFile.empty() ? s.configFile : s.graphFile) + ": error: " + m);
 }
 
 double median(std::vector<double> v) {
@@ -64,17 +66,63 @@ Graph withOptions(const Graph& base, const ordered& overrides, const BenchSettin
   return g;
 }
 
-struct Prepared {
-  BenchLevel level;
-  CompileResult compiled;
-  std::unique_ptr<rt::Renderer> renderer;
-  std::vector<double> ms, ratios;
-  rt::Image image;
+// One family to measure: a graph and its levels (option values per node id), one of
+// which is the reference the others' error is measured against.
+struct Family {
+  std::string name, node, camera;
+  Graph base;
+  std::vector<std::pair<std::string, ordered>> levels;
+  std::string reference;
 };
 
-}  // namespace
+// A level's name: the knob's value as a user writes it ("3x3", 10, true).
+std::string levelName(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
-BenchResult runBench(const BenchSettings& settings) {
+// The quality knob `option` of node `nodeId` (NodeSpec options with levels), or null.
+const OptionSpec* knobOf(const Graph& g, const std::string& nodeId, const std::string& option) {
+  for (const auto& n : g.nodes)
+    if (n.id == nodeId)
+      if (const NodeSpec* spec = defaultRegistry().find(n.type)) {
+        int i = spec->optionIndex(option);
+        if (i >= 0 && !spec->options[static_cast<size_t>(i)].levels.empty()) return &spec->options[static_cast<size_t>(i)];
+      }
+  return nullptr;
+}
+
+// Every quality knob of the graph's nodes, in file order: (node id, option).
+std::vector<std::pair<std::string, const OptionSpec*>> knobsOf(const Graph& g) {
+  std::vector<std::pair<std::string, const OptionSpec*>> knobs;
+  for (const auto& n : g.nodes)
+    if (const NodeSpec* spec = defaultRegistry().find(n.type))
+      for (const auto& o : spec->options)
+        if (!o.levels.empty()) knobs.push_back({n.id, &o});
+  return knobs;
+}
+
+// A graph's own families: one per quality knob, each level with every other knob at its
+// most exact level (together: the reference), and "as written" against that reference.
+std::vector<Family> knobFamilies(const Graph& g, const BenchSettings& s) {
+  auto knobs = knobsOf(g);
+  if (knobs.empty()) configError(s, "the graph has no node with a quality knob (`watergraph nodes` lists them)");
+  ordered exact = ordered::object();
+  for (const auto& [id, o] : knobs) exact[id][o->name] = o->levels.back();
+  std::vector<Family> families;
+  for (const auto& [id, o] : knobs) {
+    Family f{id + "." + o->name, id, s.camera, g, {}, levelName(o->levels.back())};
+    for (const auto& level : o->levels) {
+      ordered options = exact;
+      options[id][o->name] = level;
+      f.levels.push_back({levelName(level), options});
+    }
+    families.push_back(std::move(f));
+  }
+  families.push_back({"as written", "graph", s.camera, g, {{"reference", exact}, {"as written", ordered::object()}}, "reference"});
+  return families;
+}
+
+// The families of a configuration file (bench/variants.json). A family lists its levels,
+// or names a quality knob ("knob": "node.option") whose levels the node declares.
+std::vector<Family> configFamilies(const BenchSettings& settings) {
   std::ifstream in(settings.configFile);
   if (!in) configError(settings, "cannot read the file");
   ordered config;
@@ -84,8 +132,7 @@ BenchResult runBench(const BenchSettings& settings) {
     configError(settings, std::string("not valid JSON: ") + e.what());
   }
   if (!config.contains("families") || !config["families"].is_array()) configError(settings, "needs \"families\": [...]");
-  Target target = settings.target;
-  std::vector<Prepared> levels;
+  std::vector<Family> families;
   for (const auto& fam : config["families"]) {
     std::string name = fam.value("name", "");
     if (!settings.families.empty() &&
@@ -100,21 +147,68 @@ BenchResult runBench(const BenchSettings& settings) {
     else
       configError(settings, "family '" + name + "' has neither \"graph\" nor \"graph_file\"");
     if (!base) configError(settings, "family '" + name + "': the graph does not load:" + diagText(diags));
-    if (!fam.contains("levels") || !fam["levels"].is_object()) configError(settings, "family '" + name + "' needs \"levels\"");
-    std::string reference = fam.value("reference", "");
-    if (!fam["levels"].contains(reference)) configError(settings, "family '" + name + "': reference level '" + reference + "' is not among its levels");
-    for (auto it = fam["levels"].begin(); it != fam["levels"].end(); ++it) {
+    Family f{name, fam.value("node", ""), fam.value("camera", "above"), *base, {}, fam.value("reference", "")};
+    if (fam.contains("knob")) {
+      std::string knob = fam["knob"].is_string() ? fam["knob"].get<std::string>() : "";
+      size_t dot = knob.find('.');
+      const OptionSpec* o = dot == std::string::npos ? nullptr : knobOf(*base, knob.substr(0, dot), knob.substr(dot + 1));
+      if (!o) configError(settings, "family '" + name + "': \"knob\" must name a quality knob as \"node.option\" (got '" + knob + "')");
+      for (const auto& level : o->levels)
+        f.levels.push_back({levelName(level), ordered{{knob.substr(0, dot), {{o->name, level}}}}});
+      f.reference = levelName(o->levels.back());
+    } else {
+      if (!fam.contains("levels") || !fam["levels"].is_object()) configError(settings, "family '" + name + "' needs \"levels\" or \"knob\"");
+      for (auto it = fam["levels"].begin(); it != fam["levels"].end(); ++it) f.levels.push_back({it.key(), it.value()});
+      bool found = false;
+      for (const auto& l : f.levels) found |= l.first == f.reference;
+      if (!found) configError(settings, "family '" + name + "': reference level '" + f.reference + "' is not among its levels");
+    }
+    families.push_back(std::move(f));
+  }
+  return families;
+}
+
+std::vector<Family> familiesToRun(const BenchSettings& settings) {
+  if (settings.graphFile.empty()) return configFamilies(settings);
+  Diagnostics diags;
+  auto g = loadGraphFile(settings.graphFile, diags);
+  if (!g) configError(settings, "the graph does not load:" + diagText(diags));
+  if (!settings.preset.empty() && !applyPreset(*g, settings.preset, diags))
+    configError(settings, "the preset does not apply:" + diagText(diags));
+  std::vector<Family> families;
+  for (auto& f : knobFamilies(*g, settings))
+    if (settings.families.empty() || std::find(settings.families.begin(), settings.families.end(), f.name) != settings.families.end())
+      families.push_back(std::move(f));
+  return families;
+}
+
+struct Prepared {
+  BenchLevel level;
+  CompileResult compiled;
+  std::unique_ptr<rt::Renderer> renderer;
+  std::vector<double> ms, ratios;
+  rt::Image image;
+};
+
+}  // namespace
+
+BenchResult runBench(const BenchSettings& settings) {
+  Target target = settings.target;
+  std::vector<Prepared> levels;
+  for (const Family& fam : familiesToRun(settings)) {
+    for (const auto& [levelName, overrides] : fam.levels) {
       Prepared p;
-      p.level.family = name;
-      p.level.level = it.key();
-      p.level.node = fam.value("node", "");
-      p.level.camera = fam.value("camera", "above");
-      p.level.reference = it.key() == reference;
-      Graph g = withOptions(*base, it.value(), settings, "family '" + name + "' level '" + it.key() + "'");
+      p.level.family = fam.name;
+      p.level.level = levelName;
+      p.level.node = fam.node;
+      p.level.camera = fam.camera;
+      p.level.reference = levelName == fam.reference;
+      Graph g = withOptions(fam.base, overrides, settings, "family '" + fam.name + "' level '" + levelName + "'");
+      Diagnostics diags;
       CompileOptions options;
       options.targets = {target, Target::Vk450};
       auto compiled = compileGraph(g, defaultRegistry(), options, diags);
-      if (!compiled) configError(settings, "family '" + name + "' level '" + it.key() + "' does not compile:" + diagText(diags));
+      if (!compiled) configError(settings, "family '" + fam.name + "' level '" + levelName + "' does not compile:" + diagText(diags));
       for (const auto& f : compiled->files)
         if (f.name.size() > 15 && f.name.compare(f.name.size() - 15, 15, ".vk450.frag.spv") == 0)
           p.level.spirvInstructions = optimisedInstructionCount(spirvWords(f.contents));

@@ -1,8 +1,10 @@
 #pragma once
 // `watergraph bench`: speed against error. bench/variants.json lists families — a graph
-// and its quality levels (option values per node id) — e.g. Fresnel models, Voronoi cell
-// search, wave count, bisection and SSR steps, normal blends, caustic layers, and the
-// underwater graph's fast / balanced / reference presets. Every level is rendered on the
+// and its quality levels (option values per node id, or a node's quality knob, whose
+// levels its spec declares) — e.g. Fresnel models, Voronoi cell search, wave count,
+// bisection and SSR steps, normal blends, caustic layers, and the underwater graph's
+// fast / balanced / reference presets. `bench GRAPH` measures every quality knob of one
+// graph instead: a family per knob, the other knobs at their most exact level. Every level is rendered on the
 // GL runtime into an RGBA32F frame, in interleaved runs (run 1: every level, run 2: every
 // level, ...) together with a pass-through graph (the interpolated normal as colour), so
 // the medians share the machine's state; cost is ms per megapixel and its ratio to the
@@ -18,6 +20,9 @@ namespace wg::accuracy {
 
 struct BenchSettings {
   std::string configFile = "bench/variants.json";
+  // `bench GRAPH`: the graph's own quality knobs instead of the configuration's families,
+  // with `preset` applied first and every family seen from `camera`.
+  std::string graphFile, preset, camera = "above";
   std::string root = ".";  // graph_file entries are relative to it
   int width = 320, height = 320;
   int runs = 5;

@@ -49,7 +49,7 @@ struct ThreadCpuClock {
 };
 using Clock = ThreadCpuClock;
 
-const char* const kPasses[] = {"specialise", "prune", "fold", "simplify", "cse", "prune_final", "stages"};
+const char* const kPasses[] = {"bypass", "specialise", "prune", "fold", "simplify", "cse", "prune_final", "stages"};
 
 // One graph to measure, and the values each phase starts from (made once, on first use,
 // so filtered-out cases cost nothing).

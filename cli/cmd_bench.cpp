@@ -1,7 +1,7 @@
 // bench: speed against error. Renders every quality level of every family in
 // bench/variants.json (Fresnel models, Voronoi cell search, wave count, bisection and SSR
-// steps, normal blends, caustic layers, the underwater graph's presets) in interleaved
-// runs beside a pass-through shader; prints a markdown table of ms per megapixel, ratio,
+// steps, normal blends, caustic layers, the underwater graph's presets), or of every
+// quality knob of one graph (`bench GRAPH`), in interleaved runs beside a pass-through shader; prints a markdown table of ms per megapixel, ratio,
 // SPIR-V size after spirv-opt and error against the reference level, and draws the plot.
 #include <fstream>
 #include <iostream>
@@ -19,6 +19,8 @@ namespace wg::cli {
 namespace {
 
 struct BenchArgs {
+  std::string graph;  // `bench GRAPH`: the graph's own quality knobs
+  std::string preset, camera = "above";
   std::string config = "bench/variants.json";
   std::string size = "320x320";
   int runs = 5;
@@ -36,12 +38,23 @@ int runBenchCommand(const BenchArgs& args) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT, each side 8..9999 (got '" << args.size << "')\n";
     return kExitUsageOrIo;
   }
-  if (!std::ifstream(args.config)) {
+  if (args.graph.empty() && !std::ifstream(args.config)) {
     std::cerr << args.config << ": error: [WG050] cannot read the bench configuration\n";
+    return kExitUsageOrIo;
+  }
+  if (!args.graph.empty() && !std::ifstream(args.graph)) {
+    std::cerr << args.graph << ": error: [WG050] cannot read the file\n";
+    return kExitUsageOrIo;
+  }
+  if (args.graph.empty() && !args.preset.empty()) {
+    std::cerr << "watergraph: bench: --preset applies to a GRAPH (bench GRAPH --preset NAME)\n";
     return kExitUsageOrIo;
   }
   accuracy::BenchSettings s;
   s.configFile = args.config;
+  s.graphFile = args.graph;
+  s.preset = args.preset;
+  s.camera = args.camera;
   s.width = std::stoi(m[1]);
   s.height = std::stoi(m[2]);
   s.runs = args.runs;
@@ -86,19 +99,25 @@ Runner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       "bench",
       "Speed against error: render every quality level of the families in bench/variants.json (Fresnel models, Voronoi "
       "cell search, wave count, bisection steps, SSR steps, normal blends, caustic layers, the underwater graph's "
-      "fast/balanced/reference presets) in interleaved runs beside a pass-through shader. Prints a markdown table: ms "
+      "fast/balanced/reference presets) in interleaved runs beside a pass-through shader. With a GRAPH, measure that "
+      "graph's own quality knobs instead (node options whose levels the node declares, `watergraph nodes` lists them, "
+      "and `bypass` on nodes that add detail): one family per knob, named node.option, with every other knob at its "
+      "most exact level (the reference), and the graph as written against that reference. Prints a markdown table: ms "
       "per megapixel (median), ratio to the pass-through, SPIR-V instructions after spirv-opt -O, max/mean abs error and "
       "PSNR against the reference level; --plot draws cost against error with the Pareto front (gnuplot).\n\n"
-      "Examples:\n  watergraph bench\n  watergraph bench --runs 9 --markdown bench.md --plot docs/images/speed-vs-error.png\n"
+      "Examples:\n  watergraph bench\n  watergraph bench graphs/stylized.json --camera grazing\n  watergraph bench --runs 9 --markdown bench.md --plot docs/images/speed-vs-error.png\n"
       "  watergraph bench --family 'SSR steps' --size 640x360\n\n"
       "Exit codes: 0 ok; 1 a family that does not load or compile; 2 usage, I/O, no gnuplot for --plot, or no EGL/GL.");
+  cmd->add_option("graph", args->graph, "measure this graph's quality knobs instead of the configuration's families");
+  cmd->add_option("--preset", args->preset, "with GRAPH: apply this preset of the graph first");
+  cmd->add_option("--camera", args->camera, "with GRAPH: the camera preset every family is seen from")->capture_default_str();
   cmd->add_option("--config", args->config, "families and levels (.json)")->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();
   cmd->add_option("--runs", args->runs, "interleaved timed runs (after one warm-up frame each)")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
-  cmd->add_option("--family", args->families, "run only this family (repeatable)");
+  cmd->add_option("--family", args->families, "run only this family (repeatable; with GRAPH: node.option or 'as written')");
   cmd->add_option("--markdown", args->markdown, "also write the table to this file");
   cmd->add_option("--plot", args->plot, "draw cost against error with the Pareto front into this PNG (needs gnuplot)");
 #ifdef WG_HAVE_RUNTIME

@@ -24,6 +24,7 @@ bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks) {
     if (hooks && hooks->after) hooks->after(name);
     return r;
   };
+  run("bypass", bypassPass);
   run("specialise", specialisePass);
   run("prune", prunePass);
   // fold, simplify and cse expose more of each other's work, so they repeat until none

@@ -1,7 +1,7 @@
 #pragma once
 // The compiler's passes, each a function from one Program to the next (one file each).
-// compile.cpp runs them as a recipe: specialise -> prune -> (fold -> simplify -> cse, repeated
-// until none changes anything) -> prune -> stages (runPassRecipe below).
+// compile.cpp runs them as a recipe: bypass -> specialise -> prune -> (fold -> simplify -> cse,
+// repeated until none changes anything) -> prune -> stages (runPassRecipe below).
 #include <functional>
 #include <string>
 #include <string_view>
@@ -18,6 +18,8 @@ struct PassContext {
   Diagnostics& diags;
 };
 
+// Ops whose `bypass` option is on become the values their node declares for "off".
+PassResult bypassPass(Program& program, PassContext& ctx);
 // Static parameters become constants (never uniforms), so folding can remove them.
 PassResult specialisePass(Program& program, PassContext& ctx);
 // Removes ops and parameters that no output reaches; records why in program.removed.
@@ -32,14 +34,14 @@ PassResult csePass(Program& program, PassContext& ctx);
 // vertex output is an error.
 PassResult stagePass(Program& program, PassContext& ctx);
 
-// Called before and after each pass the recipe runs, with the pass's name ("specialise",
+// Called before and after each pass the recipe runs, with the pass's name ("bypass", "specialise",
 // "prune", "fold", "simplify", "cse", "prune_final", "stages"): the compile benchmarks time
 // each pass through these without a second copy of the recipe.
 struct PassHooks {
   std::function<void(std::string_view pass)> before, after;
 };
 
-// The recipe: specialise -> prune -> (fold -> simplify -> cse, until none changes
+// The recipe: bypass -> specialise -> prune -> (fold -> simplify -> cse, until none changes
 // anything) -> prune -> stages. False when a pass failed (its diagnostics say why).
 bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks = nullptr);
 

@@ -70,6 +70,10 @@ struct OptionSpec {
   std::string doc;
   // Json options (e.g. a list of waves) check themselves: "" when valid, else why not.
   std::function<std::string(const nlohmann::json&)> validate;
+  // A quality knob: the values that trade speed for accuracy, from the cheapest to the
+  // most exact (`watergraph bench GRAPH` measures each; the last is the reference). Empty:
+  // not a knob. Every level is a valid value of the option.
+  std::vector<nlohmann::json> levels;
 };
 
 // A named input set with the behaviour it must keep: every output finite, and the
@@ -226,6 +230,9 @@ struct TessellationSettings {
   double factor = 16;
 };
 
+// The option Registry::add gives every node that declares NodeSpec::bypass.
+inline constexpr const char* kBypassOption = "bypass";
+
 struct NodeSpec {
   std::string type;     // "fresnel"
   std::string family;   // "optics", "math", "inputs", ...
@@ -283,6 +290,18 @@ struct NodeSpec {
   // Scene resources the node reads; each makes the runtime run the pass that produces it
   // (core/interface_tables.h says which).
   std::vector<SceneResource> resources;
+  // A node that adds detail (caustics, foam, scattering, ripples) says what each output is
+  // when it is switched off: one of its inputs passed through, or a constant. Registry::add
+  // then gives it the Bool option `bypass` (kBypassOption), a quality knob whose cheaper
+  // level is on; the bypass pass (codegen/pass_bypass.cpp) replaces a bypassed op by these
+  // values before any other pass, so what only it needed (the ops feeding it, the scene
+  // resources it reads) is pruned with it.
+  struct BypassValue {
+    std::string output;
+    std::string input;              // this input passes through, or
+    std::optional<Value> constant;  // this constant stands in
+  };
+  std::vector<BypassValue> bypass;
 
   int inputIndex(std::string_view name) const;
   int outputIndex(std::string_view name) const;

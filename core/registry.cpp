@@ -13,8 +13,8 @@ namespace wg {
 // fetch by name (EmitContext::texture, EvalContext::sampleTexture).
 static void checkOptionsParse(const NodeSpec& s) {
   auto fail = [&](const std::string& why) { throw std::logic_error("node spec '" + s.type + "': " + why); };
-  bool readsAny = false;
-  for (const auto& o : s.options) readsAny |= o.kind != OptionSpec::Kind::Texture;
+  bool readsAny = false;  // textures are fetched by name, and `bypass` is the bypass pass's
+  for (const auto& o : s.options) readsAny |= o.kind != OptionSpec::Kind::Texture && o.name != kBypassOption;
   if (!s.parseOptions) {
     if (readsAny) fail("options without a parseOptions function");
     return;
@@ -23,7 +23,7 @@ static void checkOptionsParse(const NodeSpec& s) {
   OptionReader reader(s, defaults);
   if (!s.parseOptions(reader)) fail("parseOptions returned nothing");
   for (const auto& o : s.options)
-    if (o.kind != OptionSpec::Kind::Texture && !reader.namesRead().count(o.name))
+    if (o.kind != OptionSpec::Kind::Texture && o.name != kBypassOption && !reader.namesRead().count(o.name))
       fail("parseOptions does not read option '" + o.name + "'");
 }
 
@@ -61,6 +61,48 @@ static void checkExpansion(const NodeSpec& s) {
     if (p.kind != PortKind::Fixed) fail("input '" + p.name + "' of an expanding node is not Fixed");
 }
 
+// A quality knob's levels are valid, distinct values of the option, at least two.
+static void checkLevels(const NodeSpec& s, const OptionSpec& o) {
+  if (o.levels.empty()) return;
+  auto fail = [&](const std::string& why) {
+    throw std::logic_error("node spec '" + s.type + "': option '" + o.name + "': " + why);
+  };
+  if (o.levels.size() < 2) fail("a quality knob needs at least two levels");
+  for (size_t i = 0; i < o.levels.size(); ++i) {
+    std::string why = checkOption(o, o.levels[i], "");
+    if (!why.empty()) fail("level " + o.levels[i].dump() + ": " + why);
+    for (size_t j = 0; j < i; ++j)
+      if (o.levels[j] == o.levels[i]) fail("level " + o.levels[i].dump() + " listed twice");
+  }
+}
+
+// Every output is bypassed exactly once, by an input of its own fixed type or a constant
+// of it.
+static void checkBypass(const NodeSpec& s) {
+  if (s.bypass.empty()) return;
+  auto fail = [&](const std::string& why) { throw std::logic_error("node spec '" + s.type + "': bypass: " + why); };
+  if (s.expand) fail("an expanding node has no op to bypass");
+  for (const auto& out : s.outputs) {
+    int count = 0;
+    for (const auto& b : s.bypass) count += b.output == out.name;
+    if (count != 1) fail("output '" + out.name + "' needs exactly one bypass value, has " + std::to_string(count));
+    if (out.kind != PortKind::Fixed) fail("output '" + out.name + "' is not of a fixed type");
+  }
+  for (const auto& b : s.bypass) {
+    int o = s.outputIndex(b.output);
+    if (o < 0) fail("no output '" + b.output + "'");
+    Type want = s.outputs[static_cast<size_t>(o)].type;
+    if (b.constant.has_value() == !b.input.empty()) fail("output '" + b.output + "': an input or a constant, not both");
+    if (b.constant && b.constant->type != want) fail("output '" + b.output + "': the constant is not of its type");
+    if (!b.input.empty()) {
+      int i = s.inputIndex(b.input);
+      if (i < 0) fail("no input '" + b.input + "'");
+      const PortSpec& in = s.inputs[static_cast<size_t>(i)];
+      if (in.kind != PortKind::Fixed || in.type != want) fail("input '" + b.input + "' is not of the type of '" + b.output + "'");
+    }
+  }
+}
+
 // A malformed spec is a programming error in nodes/, caught by the first test that
 // builds the registry, never a user-facing condition.
 static void checkSpec(const NodeSpec& s) {
@@ -94,11 +136,30 @@ static void checkSpec(const NodeSpec& s) {
     if (o.kind == OptionSpec::Kind::Texture &&
         !(o.defaultValue.is_string() && o.defaultValue.get_ref<const std::string&>().rfind(kBuiltinTexturePrefix, 0) == 0))
       fail("texture option '" + o.name + "' must default to a builtin texture");
+  for (const auto& o : s.options) checkLevels(s, o);
+  checkBypass(s);
   checkOptionsParse(s);
   for (const auto& hc : s.hardCases) checkHardCaseNames(s, hc);
 }
 
+// What the bypass option's doc says the outputs become ("caustics = 0").
+static std::string bypassText(const NodeSpec& s) {
+  std::string text;
+  for (const auto& b : s.bypass)
+    text += (text.empty() ? "" : ", ") + b.output + " = " + (b.constant ? b.constant->toString() : "the input " + b.input);
+  return text;
+}
+
 void Registry::add(NodeSpec spec) {
+  if (!spec.bypass.empty()) {
+    OptionSpec o;
+    o.name = kBypassOption;
+    o.kind = OptionSpec::Kind::Bool;
+    o.defaultValue = false;
+    o.doc = "switch the node off: " + bypassText(spec);
+    o.levels = {true, false};
+    spec.options.push_back(std::move(o));
+  }
   checkSpec(spec);
   std::string key = spec.type;
   if (specs_.count(key)) throw std::logic_error("node type registered twice: " + key);

@@ -78,7 +78,7 @@ NodeSpec sineNormalsNode() {
   };
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit normal of a y-up plane tilted by the sines"),
                ports::fixed("slope", Type::Vec2, "the tilt (dn.x, dn.z) before strength and normalisation")};
-  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the source's three layers (quality level)")};
+  s.options = {ports::knob(ports::integer("octaves", 3, 1, 3, "how many of the source's three layers"), {1, 2, 3})};
   s.parseOptions = optionParser(parseOctaveOptions);
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
@@ -156,7 +156,7 @@ NodeSpec rippleNormalsNode() {
   };
   s.outputs = {ports::fixed("normal", Type::Vec3, "the perturbed unit normal (up when it degenerates)"),
                ports::fixed("ripple", Type::Vec2, "the ripple noise r, in [-1, 1]")};
-  s.options = {ports::integer("octaves", 3, 1, 3, "how many of the source's three layers (quality level)")};
+  s.options = {ports::knob(ports::integer("octaves", 3, 1, 3, "how many of the source's three layers"), {1, 2, 3})};
   s.parseOptions = optionParser(parseOctaveOptions);
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {

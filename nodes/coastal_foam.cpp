@@ -58,6 +58,7 @@ NodeSpec coastalFoamNode() {
   };
   s.outputs = {ports::fixed("foam", Type::Float, "foam amount in [0, 1]"),
                ports::fixed("specular_scale", Type::Float, "factor for the specular highlight, in [0, 1]")};
+  s.bypass = {{"foam", "", Value::scalar(0)}, {"specular_scale", "", Value::scalar(1)}};
   s.isSource = true;  // samples a texture
   s.parseOptions = optionParser(parseCoastalFoamOptions);
   s.emit = [](EmitContext& ctx) {

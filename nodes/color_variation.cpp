@@ -59,6 +59,7 @@ NodeSpec colorVariationNode() {
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "the varied colour"),
                ports::fixed("noise", Type::Float, "the value noise in [0, 1)")};
+  s.bypass = {{"color", "color", std::nullopt}, {"noise", "", Value::scalar(0)}};
   s.options = {
       ports::number("noise_scale", 0.02, 1e-6, 1e6, "noise frequency per world unit (the top-down water plan: 0.02)"),
       ports::number("drift", 0.05, 0.0, 1e3,

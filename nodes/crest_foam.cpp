@@ -70,6 +70,7 @@ NodeSpec crestFoamNode() {
       ports::fixed("sharpness", Type::Float, Value::scalar(3.0), "edge sharpness: foam^(1/sharpness) (the top-down water plan: 3)"),
   };
   s.outputs = {ports::fixed("foam", Type::Float, "foam amount in [0, 1]")};
+  s.bypass = {{"foam", "", Value::scalar(0)}};
   s.options = {ports::number("noise_speed", 1.0, -100.0, 100.0,
                              "multiplies the top-down water plan's noise drift rates 0.3 and 0.2 per second (compile-time: the drift "
                              "is a double-precision time phase, seamless at t = 1e6 s)")};

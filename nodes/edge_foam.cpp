@@ -69,6 +69,7 @@ NodeSpec edgeFoamNode() {
       ports::fixed("foam_scale", Type::Float, Value::scalar(1.0), "foam texture scale (the stylized water shader's _FoamScale)"),
   };
   s.outputs = {ports::fixed("foam", Type::Float, "foam amount in [0, 1]")};
+  s.bypass = {{"foam", "", Value::scalar(0)}};
   s.isSource = true;  // samples a texture, reads time phases
   s.parseOptions = optionParser(parseEdgeFoamOptions);
   s.emit = [](EmitContext& ctx) {

@@ -45,7 +45,8 @@ NodeSpec fresnelNode() {
   s.outputs = {ports::fixed("reflectance", Type::Float, "F, in [0, 1]"),
                ports::fixed("transmittance", Type::Float, "1 - F")};
   s.options = {
-      ports::choice("model", {"schlick", "exact", "power"}, "schlick", "which formula"),
+      ports::knob(ports::choice("model", {"schlick", "exact", "power"}, "schlick", "which formula"),
+                  {"power", "schlick", "exact"}),
       ports::choice("direction", {"air_to_water", "water_to_air"}, "air_to_water",
                     "the viewer's medium: from below, total internal reflection past the critical angle "
                     "(schlick, exact)"),

@@ -23,6 +23,14 @@ std::string portDefault(const PortSpec& p) {
   return "required";
 }
 
+// A quality knob's levels for the option's doc cell.
+std::string knobText(const OptionSpec& o) {
+  if (o.levels.empty()) return "";
+  std::string s = ". Quality knob, cheapest to most exact: ";
+  for (size_t i = 0; i < o.levels.size(); ++i) s += (i ? " < `" : "`") + o.levels[i].dump() + "`";
+  return s;
+}
+
 std::string optionKind(const OptionSpec& o) {
   switch (o.kind) {
     case OptionSpec::Kind::Enum: {
@@ -126,8 +134,11 @@ nlohmann::json nodesJson(const Registry& registry) {
     j["inputs"] = ports(s->inputs, true);
     j["outputs"] = ports(s->outputs, false);
     nlohmann::json opts = nlohmann::json::array();
-    for (const auto& o : s->options)
-      opts.push_back({{"name", o.name}, {"values", optionKind(o)}, {"default", o.defaultValue}, {"doc", o.doc}});
+    for (const auto& o : s->options) {
+      nlohmann::json opt = {{"name", o.name}, {"values", optionKind(o)}, {"default", o.defaultValue}, {"doc", o.doc}};
+      if (!o.levels.empty()) opt["levels"] = o.levels;
+      opts.push_back(std::move(opt));
+    }
     j["options"] = opts;
     nlohmann::json hard = nlohmann::json::array();
     for (const auto& h : s->hardCases) hard.push_back({{"name", h.name}, {"expectation", h.expectation}});
@@ -182,7 +193,7 @@ std::string nodesMarkdown(const Registry& registry) {
       if (!s->options.empty()) {
         md += "\n| option | values | default | |\n|---|---|---|---|\n";
         for (const auto& o : s->options)
-          md += "| `" + o.name + "` | " + optionKind(o) + " | `" + o.defaultValue.dump() + "` | " + o.doc + " |\n";
+          md += "| `" + o.name + "` | " + optionKind(o) + " | `" + o.defaultValue.dump() + "` | " + o.doc + knobText(o) + " |\n";
       }
       if (!s->hardCases.empty()) {
         md += "\nHard cases:\n";

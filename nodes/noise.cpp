@@ -38,7 +38,8 @@ PortSpec positionPort(std::string doc) {
 }
 
 OptionSpec octavesOption() {
-  return ports::integer("octaves", 4, 1, 8, "number of value-noise layers (quality level: each octave costs one value_noise)");
+  return ports::knob(ports::integer("octaves", 4, 1, 8, "number of value-noise layers (each octave costs one value_noise)"),
+                    {1, 2, 3, 4, 5, 6, 7, 8});
 }
 
 struct FbmOptions {

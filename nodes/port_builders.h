@@ -106,4 +106,10 @@ inline OptionSpec integer(std::string name, int def, int min, int max, std::stri
   return o;
 }
 
+// Marks `o` a quality knob with `levels` from the cheapest to the most exact.
+inline OptionSpec knob(OptionSpec o, std::vector<nlohmann::json> levels) {
+  o.levels = std::move(levels);
+  return o;
+}
+
 }  // namespace wg::ports

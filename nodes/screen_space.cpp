@@ -235,7 +235,8 @@ NodeSpec ssrNode() {
   s.outputs = {ports::fixed("color", Type::Vec3, "the reflection: the hit's scene colour blended with the fallback"),
                ports::fixed("confidence", Type::Float, "hit * fade, in [0, 1] (0: only the fallback)"),
                ports::fixed("uv", Type::Vec2, "screen position of the hit ((0.5, 0.5) when nothing was hit)")};
-  s.options = {ports::integer("steps", 10, 1, 64, "ray-march steps, the quality level (the deferred water article: 10); cost grows linearly")};
+  s.options = {ports::knob(ports::integer("steps", 10, 1, 64, "ray-march steps (the deferred water article: 10); cost grows linearly"),
+                          {4, 10, 20, 40, 64})};
   s.parseOptions = optionParser(parseSsrOptions);
   s.stages = kFragmentStage;
   s.isSource = true;

@@ -36,6 +36,7 @@ NodeSpec subsurfaceNode() {
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "color * intensity"),
                ports::fixed("intensity", Type::Float, "strength * V.(-H)^power * height factor")};
+  s.bypass = {{"color", "", Value::vector({0, 0, 0})}, {"intensity", "", Value::scalar(0)}};
   s.emit = [](EmitContext& ctx) {
     bool known = ctx.inputFact("normal").normalized && ctx.inputFact("view").normalized &&
                  ctx.inputFact("light").normalized && ctx.inputFact("power").above(0);

@@ -39,6 +39,7 @@ NodeSpec textureCausticsNode() {
       ports::fixed("intensity", Type::Float, Value::scalar(1.0), "brightness (the deferred water article's CausticsValues.y)"),
   };
   s.outputs = {ports::fixed("caustics", Type::Float, "caustic intensity, in [0, intensity]")};
+  s.bypass = {{"caustics", "", Value::scalar(0)}};
   s.isSource = true;  // samples a texture
   s.emit = [](EmitContext& ctx) {
     std::string sampler = ctx.texture("texture");

@@ -81,10 +81,12 @@ NodeSpec normalMapScrollNode() {
   for (auto& p : framePorts()) s.inputs.push_back(p);
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit world-space normal"),
                ports::fixed("tangent_normal", Type::Vec3, "the blended unit tangent-space normal, before strength")};
+  s.bypass = {{"normal", "normal", std::nullopt}, {"tangent_normal", "", Value::vector({0, 0, 1})}};
   s.options = {
       ports::texture("texture", "builtin:water_normal", "the tangent-space normal map (rgb = n * 0.5 + 0.5)"),
-      ports::choice("blend", {"add", "whiteout", "rnm"}, "add",
-                    "how the layers combine: the sources' normalize(a + b), whiteout, or reoriented normal mapping"),
+      ports::knob(ports::choice("blend", {"add", "whiteout", "rnm"}, "add",
+                               "how the layers combine: the sources' normalize(a + b), whiteout, or reoriented normal mapping"),
+                  {"add", "whiteout", "rnm"}),
   };
   s.isSource = true;
   // wg_waves_tangent_to_world: unit, or the up vector when degenerate.

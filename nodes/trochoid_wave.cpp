@@ -79,7 +79,7 @@ NodeSpec trochoidWaveNode() {
                ports::fixed("height", Type::Float, "the wave height h above surface_height at the hit point"),
                ports::fixed("normal", Type::Vec3, "unit normal of the wave surface at the hit point")};
   s.options = {
-      ports::integer("steps", 10, 1, 32, "bisection steps (quality level): each halves the position error"),
+      ports::knob(ports::integer("steps", 10, 1, 32, "bisection steps: each halves the position error"), {2, 5, 10, 20, 32}),
       ports::number("omega", 1.0, 0.0, 100.0, "angular speed of the phase in rad/s (the deferred water article adds the time itself: 1)"),
       ports::texture("texture", "builtin:height", "the height texture (red channel) of the detail"),
   };

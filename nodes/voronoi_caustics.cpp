@@ -76,8 +76,10 @@ NodeSpec voronoiCausticsNode() {
               ports::fixed("time", Type::Float, Value::scalar(0.0), "seconds, used when animation = time_input"),
               ports::fixed("intensity", Type::Float, Value::scalar(1.0), "brightness multiplier")};
   s.outputs = {ports::fixed("caustics", Type::Float, "caustic intensity, in [0, intensity]")};
+  s.bypass = {{"caustics", "", Value::scalar(0)}};
   s.options = voronoiOptions(1.0);
-  s.options.push_back(ports::choice("layers", {"2", "1"}, "2", "quality: two layers (the stylized water shader) or one (half the cost)"));
+  s.options.push_back(ports::knob(
+      ports::choice("layers", {"2", "1"}, "2", "two layers (the stylized water shader) or one (half the cost)"), {"1", "2"}));
   s.options.push_back(ports::choice("combine", {"average", "min", "multiply"}, "average",
                                     "how two layers combine: average (the stylized water shader), min (thinner lines), multiply (sparser)"));
   s.parseOptions = optionParser(parseVoronoiCausticsOptions);

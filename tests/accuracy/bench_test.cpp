@@ -1,6 +1,7 @@
 // The bench's mechanics on one small family (not its timings, which are benchmarks): every
 // level measured, the reference has zero error, the others' error is what the images say,
-// the Pareto front is marked and the table lists every level.
+// the Pareto front is marked and the table lists every level. `bench GRAPH` makes its
+// families from the graph's quality knobs.
 #include <cmath>
 #include <filesystem>
 
@@ -41,6 +42,50 @@ TEST(Bench, MeasuresEveryLevelAgainstItsReference) {
   std::string table = benchMarkdown(r);
   for (const char* level : {"| rnm (reference) |", "| whiteout |", "| add |"})
     EXPECT_NE(table.find(level), std::string::npos) << table;
+}
+
+// A graph with one knob, written at its middle level: the knob's family has the node's
+// three levels against the exact one, and "as written" is the middle level again.
+TEST(Bench, AGraphsOwnKnobsAreItsFamilies) {
+  std::string dir = test::makeTempDir("wg_bench_graph");
+  test::writeFile(dir + "/g.json", R"({"version": 1, "name": "g", "nodes": [
+    {"id": "f", "type": "fresnel", "options": {"model": "schlick"}},
+    {"id": "tint", "type": "mix", "inputs": {"a": [0, 0.15, 0.25], "b": [0.6, 0.75, 0.9], "t": "f.reflectance"}}],
+    "outputs": {"fragment": {"color": "tint.out"}}})");
+  BenchSettings s;
+  s.graphFile = dir + "/g.json";
+  s.camera = "grazing";
+  s.width = s.height = 48;
+  s.runs = 1;
+  BenchResult r = runBench(s);
+  std::vector<std::string> names;
+  for (const auto& l : r.levels) names.push_back(l.family + "/" + l.level + (l.reference ? " (ref)" : ""));
+  EXPECT_EQ(names, (std::vector<std::string>{"f.model/power", "f.model/schlick", "f.model/exact (ref)",
+                                             "as written/reference (ref)", "as written/as written"}));
+  ASSERT_EQ(r.levels.size(), 5u);
+  EXPECT_EQ(r.levels[2].maxError, 0);
+  EXPECT_GT(r.levels[0].maxError, 0);
+  EXPECT_GT(r.levels[1].maxError, 0);
+  EXPECT_EQ(r.levels[4].maxError, r.levels[1].maxError);  // as written = schlick
+  EXPECT_EQ(r.levels[4].spirvInstructions, r.levels[1].spirvInstructions);
+  s.families = {"nope"};
+  EXPECT_THROW(runBench(s), std::runtime_error);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Bench, AGraphWithoutKnobsIsAClearError) {
+  std::string dir = test::makeTempDir("wg_bench_graph");
+  test::writeFile(dir + "/g.json", R"({"version": 1, "name": "g", "nodes": [{"id": "n", "type": "normal"}],
+    "outputs": {"fragment": {"color": "n.out"}}})");
+  BenchSettings s;
+  s.graphFile = dir + "/g.json";
+  try {
+    runBench(s);
+    ADD_FAILURE() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("g.json: error: the graph has no node with a quality knob"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Bench, ABadConfigIsOneLineNamingTheFile) {

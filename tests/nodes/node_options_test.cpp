@@ -125,6 +125,54 @@ TEST(NodeOptions, OptionsWithoutAParseFunctionFailAtRegistration) {
   EXPECT_NE(registrationError(std::move(s)).find("without a parseOptions"), std::string::npos);
 }
 
+TEST(QualityKnob, LevelsAreValidDistinctValuesAndAtLeastTwo) {
+  NodeSpec s = toyNode();
+  s.options[1] = ports::knob(s.options[1], {1, 5, 10});
+  EXPECT_EQ(registrationError(s), "");
+  s.options[1].levels = {5};
+  EXPECT_NE(registrationError(s).find("option 'size': a quality knob needs at least two levels"), std::string::npos);
+  s.options[1].levels = {1, 11};  // size is in [0, 10]
+  EXPECT_NE(registrationError(s).find("option 'size': level 11:"), std::string::npos) << registrationError(s);
+  s.options[1].levels = {1, 1};
+  EXPECT_NE(registrationError(s).find("level 1 listed twice"), std::string::npos);
+  s.options[0] = ports::knob(s.options[0], {"round", "oval"});
+  s.options[1].levels.clear();
+  EXPECT_NE(registrationError(s).find("option 'shape': level \"oval\":"), std::string::npos) << registrationError(s);
+}
+
+TEST(Bypass, RegistrationAddsTheBypassKnob) {
+  NodeSpec s = toyNode();
+  s.bypass = {{"out", "x", std::nullopt}};
+  Registry r;
+  r.add(s);
+  const NodeSpec* toy = r.find("toy");
+  int i = toy->optionIndex(kBypassOption);
+  ASSERT_GE(i, 0);
+  const OptionSpec& o = toy->options[static_cast<size_t>(i)];
+  EXPECT_EQ(o.defaultValue, false);
+  EXPECT_EQ(o.levels, (std::vector<nlohmann::json>{true, false}));  // on is the cheaper level
+  EXPECT_NE(o.doc.find("out = the input x"), std::string::npos) << o.doc;
+  EXPECT_EQ(toyNode().optionIndex(kBypassOption), -1);  // only nodes that declare a bypass
+}
+
+TEST(Bypass, EveryOutputOnceByAnInputOrConstantOfItsType) {
+  NodeSpec s = toyNode();
+  s.outputs.push_back(ports::fixed("glow", Type::Vec3, "glow"));
+  s.bypass = {{"out", "x", std::nullopt}};
+  EXPECT_NE(registrationError(s).find("output 'glow' needs exactly one bypass value, has 0"), std::string::npos);
+  s.bypass.push_back({"glow", "", Value::scalar(0)});
+  EXPECT_NE(registrationError(s).find("output 'glow': the constant is not of its type"), std::string::npos);
+  s.bypass.back() = {"glow", "x", std::nullopt};
+  EXPECT_NE(registrationError(s).find("input 'x' is not of the type of 'glow'"), std::string::npos);
+  s.bypass.back() = {"glow", "", Value::vector({0, 0, 0})};
+  EXPECT_EQ(registrationError(s), "");
+  s.bypass.push_back({"out", "", Value::scalar(0)});
+  EXPECT_NE(registrationError(s).find("output 'out' needs exactly one bypass value, has 2"), std::string::npos);
+  s.bypass.pop_back();
+  s.bypass[0] = {"out", "x", Value::scalar(0)};
+  EXPECT_NE(registrationError(s).find("an input or a constant, not both"), std::string::npos);
+}
+
 TEST(NodeOptions, AHardCaseNamingAPortOrOptionTheNodeLacksFailsAtRegistration) {
   NodeSpec s = toyNode();
   s.hardCases = {{"misspelt input", {{"xx", Value::scalar(1)}}, {}, "", 0, 1}};
