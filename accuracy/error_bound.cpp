@@ -59,13 +59,13 @@ ErrorModel programErrorModel(const Program& program) {
 
 std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
                                        const std::vector<Value>& parameters, const std::vector<BuiltinUniform>& builtins,
-                                       double roundings) {
+                                       double roundings, const std::map<std::string, std::vector<Value>>* fetches) {
   std::array<double, 4> sum{};
   if (roundings <= 0) return sum;
   EvalEnvironment e = env;
   std::vector<Value> params = parameters;
   Program varied = program;  // ops' options replaced one intermediate at a time
-  auto evaluate = [&] { return evaluateProgram(varied, e, params).outputs.front(); };
+  auto evaluate = [&] { return evaluateProgram(varied, e, params, fetches).outputs.front(); };
   Value ref = evaluate();
   int n = std::min(ref.size(), 4);
   std::array<double, 4> base{};
