@@ -1,9 +1,10 @@
 // watergraph check on every graph in graphs/ (globbed, so new example graphs are checked
 // as they arrive), both targets, at 48x27: no NaN or Inf pixel anywhere in the sweep;
-// graphs with a full CPU reference agree with it on the sampled water pixels, each within
-// the graph's error bound. The CLI: exit 0 for the examples, 1 for a graph that renders
-// NaN and for a wrong node (a constant of the lake's Fresnel changed); --error-map writes
-// a PNG of the frame's size.
+// every graph but deferred water agrees with the CPU reference on its read-back inputs at
+// the sampled water pixels, each within the graph's error bound. The CLI: exit 0 for the
+// examples, 1 for a graph that renders NaN and for a wrong node (a constant of the lake's
+// Fresnel, the pool's depth tint, the ocean's F0 changed); --error-map writes a PNG of the
+// frame's size.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
