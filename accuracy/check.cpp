@@ -4,11 +4,14 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 #include <glm/glm.hpp>
 
 #include "accuracy/error_bound.h"
+#include "accuracy/fragment_program.h"
+#include "accuracy/readback.h"
 #include "codegen/cpu_backend.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
@@ -104,13 +107,9 @@ double CheckReport::worstRatio() const {
 
 std::string referenceUnavailable(const CompileResult& result) {
   const Program& p = result.program;
-  if (p.output(OutputSlot::VertexPosition) || p.output(OutputSlot::VertexNormal))
-    return "vertex outputs move the surface off the flat grid";
-  for (const auto& op : p.ops)
-    if (!op.spec->resources.empty()) return "node '" + op.nodeId + "' reads scene resources";
+  if (!p.output(OutputSlot::FragmentColor)) return "no fragment colour";
   if (const ProgramOutput* a = p.output(OutputSlot::FragmentAlpha))
     if (!(a->value.kind == ValueRef::Kind::Const && a->value.constant[0] == 1.0)) return "the colour is blended by alpha";
-  if (!p.output(OutputSlot::FragmentColor)) return "no fragment colour";
   return "";
 }
 
@@ -126,6 +125,81 @@ const std::vector<BuiltinUniform>& perPixelBuiltins() {
   return b;
 }
 
+Value matrixValue(const glm::mat4& m) {
+  Value v = Value::ofType(Type::Mat4);
+  for (int c = 0; c < 4; ++c)
+    for (int r = 0; r < 4; ++r) v[c * 4 + r] = m[c][r];  // column-major, as GLSL
+  return v;
+}
+
+Value channelValue(const ReadbackImage& taps, int px, int py, int channel, int size) {
+  static const Type kTypes[] = {Type::Float, Type::Vec2, Type::Vec3, Type::Vec4};
+  Value v = Value::ofType(kTypes[size - 1]);
+  for (int k = 0; k < size; ++k) v[k] = taps.at(px, py, channel + k);
+  return v;
+}
+
+// The reference's inputs at pixel (px, py) (rows top to bottom) from the read-back: the
+// pixel's interpolated varyings and depth, its scene look-ups, the uv gradient of its 2x2
+// quad, the view's uniforms. False where the pixel is not comparable: not water, near a
+// silhouette (the pixel, its four neighbours and its quad must all show the water), or
+// two look-ups of one scene texture that returned different values (the reference has
+// one value per texture and pixel).
+bool pixelInputs(const ReadbackImage& taps, const ReadbackPlan& plan, int px, int py, const CheckView& view, float aspect,
+                 EvalEnvironment* envOut) {
+  const int height = taps.height;
+  auto water = [&](int x, int y) { return taps.water(x, y, plan); };
+  if (!water(px, py) || !water(px - 1, py) || !water(px + 1, py) || !water(px, py - 1) || !water(px, py + 1)) return false;
+  // llvmpipe derives a quad's derivatives from its lower-left pixel (window rows run
+  // bottom-up) and the neighbours across and above.
+  const int gx0 = px & ~1, row0 = height - 1 - ((height - 1 - py) & ~1), row1 = row0 - 1;
+  if (!water(gx0, row0) || !water(gx0 + 1, row0) || !water(gx0, row1)) return false;
+  EvalEnvironment env;
+  for (const auto& lookup : plan.lookups) {
+    Value v = channelValue(taps, px, py, lookup.channel, lookup.size);
+    Value* field = lookupField(env, lookup.sampler);
+    bool first = true;
+    for (const auto& earlier : plan.lookups) {
+      if (&earlier == &lookup) break;
+      first &= earlier.sampler != lookup.sampler;
+    }
+    if (first) *field = v;
+    else if (!(*field == v)) return false;
+  }
+  const rt::Camera& cam = view.camera;
+  const glm::dvec3 eye(cam.position);
+  env.cameraPosition = Value::vector({eye.x, eye.y, eye.z});
+  if (plan.worldPosition >= 0) {
+    env.worldPosition = channelValue(taps, px, py, plan.worldPosition, 3);
+    glm::dvec3 p(env.worldPosition[0], env.worldPosition[1], env.worldPosition[2]);
+    glm::dvec3 vd = eye - p;
+    if (glm::length(vd) > 0) vd = glm::normalize(vd);
+    env.viewDirection = Value::vector({vd.x, vd.y, vd.z});
+  }
+  if (plan.normal >= 0) {
+    glm::dvec3 n(taps.at(px, py, plan.normal), taps.at(px, py, plan.normal + 1), taps.at(px, py, plan.normal + 2));
+    if (glm::length(n) > 0) n = glm::normalize(n);  // as the shader's safe normalisation
+    env.normal = Value::vector({n.x, n.y, n.z});
+  }
+  if (plan.uv >= 0) {
+    env.uv = channelValue(taps, px, py, plan.uv, 2);
+    Value u00 = channelValue(taps, gx0, row0, plan.uv, 2), u10 = channelValue(taps, gx0 + 1, row0, plan.uv, 2),
+          u01 = channelValue(taps, gx0, row1, plan.uv, 2);
+    env.uvDx = Value::vector({u10[0] - u00[0], u10[1] - u00[1]});
+    env.uvDy = Value::vector({u01[0] - u00[0], u01[1] - u00[1]});
+  }
+  env.fragDepth = Value::scalar(taps.at(px, py, plan.fragDepth));
+  env.screenUv = Value::vector({(px + 0.5) / taps.width, 1 - (py + 0.5) / height});
+  env.time = Value::scalar(static_cast<double>(view.scene.time));
+  env.cameraNearFar = Value::vector({cam.nearPlane, cam.farPlane});
+  env.view = matrixValue(cam.view());
+  env.projection = matrixValue(cam.projection(aspect));
+  const glm::vec3 sun = rt::sunDirection(view.scene);  // as the renderer sets u_sun_direction
+  env.sunDirection = Value::vector({sun.x, sun.y, sun.z});
+  *envOut = env;
+  return true;
+}
+
 }  // namespace
 
 CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, Target target, const CheckOptions& options) {
@@ -135,10 +209,6 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
   report.target = target;
   report.width = width;
   report.height = height;
-  report.reference = referenceUnavailable(result);
-  if (report.reference.empty() && target != Target::Glsl330) report.reference = "reference on glsl330 only (ES cannot read depth)";
-  bool compare = report.reference.empty();
-  if (compare) report.reference = "cpu";
   const bool underwater = result.manifest.lists(RenderPass::DeferredWater);
   bool es = target == Target::Es300;
   std::vector<rt::ShaderSource> sources = rt::waterShaderSources(result, target);
@@ -154,25 +224,39 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
       }
     if (!found) throw std::invalid_argument("the mutation's text '" + options.mutation.find + "' is not in the water shaders");
   }
-  const ErrorModel model = programErrorModel(result.program);
+  rt::RenderSettings settings;
+  settings.width = width;
+  settings.height = height;
+  settings.floatColor = true;
+  settings.environmentSize = 32;  // the sky cube map: small frames need no more
+  settings.waterGridQuads = 64;
+
+  // The reference: the fragment stage in double on the inputs the GPU read back.
+  ReadbackPlan plan;
+  report.reference = referenceUnavailable(result);
+  if (report.reference.empty()) {
+    std::string fragmentText;
+    for (const auto& stage : sources)
+      if (stage.stage == GL_FRAGMENT_SHADER) fragmentText = stage.text;
+    report.reference = planReadback(result, fragmentText, &plan);
+  }
+  if (report.reference.empty() && target != Target::Glsl330) report.reference = "reference on glsl330 only";
+  const bool compare = report.reference.empty();
+  if (compare) report.reference = "cpu";
+  std::optional<ReadbackRenderer> readback;
+  FragmentProgram fragment;
+  ErrorModel model;
   std::vector<Value> parameters;
-  for (const auto& p : result.program.parameters) parameters.push_back(p.defaultValue);
-  size_t colorIndex = 0;
-  for (size_t k = 0; k < result.program.outputs.size(); ++k)
-    if (result.program.outputs[k].slot == OutputSlot::FragmentColor) colorIndex = k;
-  // The conditioning term reads the first output: a program whose first is the colour.
-  Program colorProgram = result.program;
-  if (compare) std::swap(colorProgram.outputs[0], colorProgram.outputs[colorIndex]);
+  if (compare) {
+    readback.emplace(result, sources, plan, settings, es);
+    fragment = fragmentProgram(result.program);
+    model = programErrorModel(fragment.program);
+    for (const auto& p : fragment.program.parameters) parameters.push_back(p.defaultValue);
+  }
 
   for (const auto& view : checkSweep(underwater)) {
-    rt::RenderSettings settings;
-    settings.width = width;
-    settings.height = height;
     settings.customCamera = view.camera;
     settings.scene = view.scene;
-    settings.floatColor = true;
-    settings.environmentSize = 32;  // the sky cube map: small frames need no more
-    settings.waterGridQuads = 64;
     rt::Renderer renderer(result.manifest, sources, settings, es, rt::textureOrigins(result));
     renderer.renderFrame();
     rt::Image img = renderer.readRgba32f();
@@ -190,73 +274,23 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
         v.errors.assign(static_cast<size_t>(width) * height, -1.0f);
         v.ratios.assign(static_cast<size_t>(width) * height, -1.0f);
       }
-      std::vector<float> depth = renderer.readDepth();
-      const rt::Camera& cam = view.camera;
-      double aspect = static_cast<double>(width) / height;
-      glm::dmat4 viewM = glm::dmat4(cam.view()), proj = glm::dmat4(cam.projection(static_cast<float>(aspect)));
-      glm::dmat4 inv = glm::inverse(proj * viewM);
-      glm::dvec3 eye(cam.position);
-      const glm::vec3 sun = rt::sunDirection(view.scene);  // as the renderer sets u_sun_direction
-      // The flat water at pixel (px, py) (top-down rows): the world point and its depth value.
-      auto water = [&](int px, int py, glm::dvec3* point, double* depthValue) {
-        double ndcX = (px + 0.5) / width * 2 - 1, ndcY = 1 - (py + 0.5) / height * 2;
-        glm::dvec4 far = inv * glm::dvec4(ndcX, ndcY, 1, 1);
-        glm::dvec3 dir = glm::dvec3(far) / far.w - eye;
-        if (std::abs(dir.y) < 1e-12) return false;
-        double t = -eye.y / dir.y;
-        if (t <= 0) return false;
-        *point = eye + t * dir;
-        if (std::abs(point->x) > rt::kWaterHalfSize - 0.5 || std::abs(point->z) > rt::kWaterHalfSize - 0.5) return false;
-        glm::dvec4 clip = proj * viewM * glm::dvec4(*point, 1);
-        *depthValue = 0.5 * clip.z / clip.w + 0.5;
-        return true;
-      };
-      auto visible = [&](int px, int py) {
-        if (px < 0 || py < 0 || px >= width || py >= height) return false;
-        glm::dvec3 p;
-        double d = 0;
-        if (!water(px, py, &p, &d)) return false;
-        return std::abs(depth[static_cast<size_t>(py) * width + px] - d) < 1e-5;
-      };
+      ReadbackImage taps = readback->read(view.camera, view.scene);
+      const float aspect = static_cast<float>(width) / static_cast<float>(height);
       double sum = 0;
       int stride = options.errorMaps ? 1 : referenceStride, first = options.errorMaps ? 0 : referenceStride / 2;
       for (int py = first; py < height; py += stride)
         for (int px = first; px < width; px += stride) {
-          // Away from silhouettes: the pixel and its four neighbours show the water.
-          if (!visible(px, py) || !visible(px - 1, py) || !visible(px + 1, py) || !visible(px, py - 1) || !visible(px, py + 1))
-            continue;
-          glm::dvec3 p;
-          double d = 0;
-          water(px, py, &p, &d);
           EvalEnvironment env;
-          env.worldPosition = Value::vector({p.x, p.y, p.z});
-          env.normal = Value::vector({0, 1, 0});
-          glm::dvec3 vd = glm::normalize(eye - p);
-          env.viewDirection = Value::vector({vd.x, vd.y, vd.z});
-          env.cameraPosition = Value::vector({eye.x, eye.y, eye.z});
-          env.uv = Value::vector({(p.x + rt::kWaterHalfSize) / (2 * rt::kWaterHalfSize),
-                                  (p.z + rt::kWaterHalfSize) / (2 * rt::kWaterHalfSize)});
-          // The uv gradient a mipmapped look-up takes its level from: llvmpipe derives one
-          // per 2x2 quad (window rows run bottom-up), from the quad's lower-left pixel
-          // and its neighbours across and above.
-          {
-            int gx0 = px & ~1, gy0 = (height - 1 - py) & ~1;
-            glm::dvec3 p00, p10, p01;
-            double ignored = 0;
-            if (water(gx0, height - 1 - gy0, &p00, &ignored) && water(gx0 + 1, height - 1 - gy0, &p10, &ignored) &&
-                water(gx0, height - 2 - gy0, &p01, &ignored)) {
-              const double span = 2 * rt::kWaterHalfSize;  // uv = (x, z) / span + 0.5
-              env.uvDx = Value::vector({(p10.x - p00.x) / span, (p10.z - p00.z) / span});
-              env.uvDy = Value::vector({(p01.x - p00.x) / span, (p01.z - p00.z) / span});
-            }
+          if (!pixelInputs(taps, plan, px, py, view, aspect, &env)) continue;
+          for (size_t k = 0; k < plan.varyings.size(); ++k) {
+            int param = fragment.varyingParameters[k];
+            Type type = fragment.program.parameters[static_cast<size_t>(param)].type;
+            parameters[static_cast<size_t>(param)] = channelValue(taps, px, py, plan.varyings[k], componentCount(type));
           }
-          env.time = Value::scalar(static_cast<double>(view.scene.time));
-          env.screenUv = Value::vector({(px + 0.5) / width, 1 - (py + 0.5) / height});
-          env.fragDepth = Value::scalar(d);
-          env.cameraNearFar = Value::vector({cam.nearPlane, cam.farPlane});
-          env.sunDirection = Value::vector({sun.x, sun.y, sun.z});
-          CpuResult ref = evaluateProgram(result.program, env, parameters);
-          const Value& c = ref.outputs[colorIndex];
+          TextureFetches fetches;
+          for (const auto& f : plan.textureFetches) fetches[f.source].push_back(channelValue(taps, px, py, f.channel, 4));
+          CpuResult ref = evaluateProgram(fragment.program, env, parameters, &fetches);
+          const Value& c = ref.outputs.front();
           const float* g = &img.rgba32f[(static_cast<size_t>(py) * width + px) * 4];
           double err[3], worst = 0, ratio = 0;
           bool within = true;
@@ -271,7 +305,7 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
           // conditioning of the pixel's float32 inputs (measured only then: it costs a
           // few hundred evaluations).
           std::array<double, 4> conditioning{};
-          if (!within) conditioning = conditioningTerm(colorProgram, env, parameters, perPixelBuiltins(), model.roundings);
+          if (!within) conditioning = conditioningTerm(fragment.program, env, parameters, perPixelBuiltins(), model.roundings, &fetches);
           bool over = false;
           for (int ch = 0; ch < 3; ++ch) {
             double bound = model.tolerance * std::max(1.0, std::abs(c[ch])) + conditioning[static_cast<size_t>(ch)];

@@ -2,12 +2,13 @@
 // `watergraph check`: a compiled graph rendered into an RGBA32F frame over a sweep of
 // views — camera elevation from grazing to top-down, under water when the graph has the
 // deferred underwater pass, times up to 1e6 s, sun positions — counting NaN and Inf
-// pixels. Where the graph has a full CPU reference (no vertex outputs, no scene
-// resources, an opaque colour) the frame is compared, on a grid of sampled pixels where
-// the flat water is visible, with the double reference evaluated at that pixel's surface
-// point (desktop GL only: the visibility test reads the depth buffer back), and each
-// sample is held to the graph's error bound (accuracy/error_bound.h), as the probe holds
-// a case: the largest tolerance of its ops plus the conditioning of the pixel's inputs.
+// pixels. On glsl330 the frame is compared, on a grid of sampled water pixels, with the
+// double reference of the graph's fragment stage evaluated on the inputs the GPU's
+// fragment shader had there, read back (accuracy/readback.h: varyings of the displaced
+// surface, depth, scene and node texture look-ups), and each sample is held to the
+// graph's error bound (accuracy/error_bound.h), as the probe holds a case: the largest
+// tolerance of its ops plus the conditioning of the pixel's float32 inputs. A graph whose
+// inputs cannot be read back that way (deferred water) is only checked for NaN and Inf.
 #include <string>
 #include <vector>
 
@@ -60,7 +61,8 @@ struct CheckReport {
   bool failed() const { return nanInf() > 0 || overBound() > 0; }
 };
 
-// Why the graph has no full CPU reference, or "" when it has one.
+// Why the graph's colour cannot be compared at all (none, or blended by alpha), or "";
+// checkGraph adds the read-back's reasons (planReadback).
 std::string referenceUnavailable(const CompileResult& result);
 
 // Renders every view on the current context (API matching `target`). Throws

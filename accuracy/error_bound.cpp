@@ -5,6 +5,7 @@
 #include <functional>
 #include <iterator>
 #include <memory>
+#include <optional>
 
 #include "codegen/cpu_backend.h"
 #include "nodes/rounded_intermediates.h"
@@ -59,13 +60,15 @@ ErrorModel programErrorModel(const Program& program) {
 
 std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
                                        const std::vector<Value>& parameters, const std::vector<BuiltinUniform>& builtins,
-                                       double roundings) {
+                                       double roundings, const std::map<std::string, std::vector<Value>>* fetches) {
   std::array<double, 4> sum{};
   if (roundings <= 0) return sum;
   EvalEnvironment e = env;
   std::vector<Value> params = parameters;
   Program varied = program;  // ops' options replaced one intermediate at a time
-  auto evaluate = [&] { return evaluateProgram(varied, e, params).outputs.front(); };
+  std::optional<TextureFetches> texels;
+  if (fetches) texels = *fetches;
+  auto evaluate = [&] { return evaluateProgram(varied, e, params, texels ? &*texels : nullptr).outputs.front(); };
   Value ref = evaluate();
   int n = std::min(ref.size(), 4);
   std::array<double, 4> base{};
@@ -79,6 +82,10 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
     }
   };
   for (auto& p : params) perturb(p);
+  // Read-back texels are float32 inputs of the shader's arithmetic like the uniforms.
+  if (texels)
+    for (auto& [source, values] : *texels)
+      for (auto& v : values) perturb(v);
   std::vector<BuiltinUniform> seen;
   for (BuiltinUniform u : builtins) {
     if (std::find(seen.begin(), seen.end(), u) != seen.end()) continue;

@@ -13,6 +13,7 @@
 // rounding of the inputs does there. Time phases are excluded: the runtime computes them
 // in double, so they carry no float32 rounding.
 #include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -32,8 +33,10 @@ ErrorModel programErrorModel(const Program& program);
 // The conditioning term per output component of `program`'s first output, perturbing the
 // parameters and the builtin uniforms in `builtins` (UniformInfo::builtin of the shader's
 // non-parameter uniforms). Zero when roundings is 0.
+// `fetches`: node texture look-ups taken as given (codegen/cpu_backend.h), each value
+// perturbed like a parameter (a float32 input of the shader's arithmetic).
 std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
                                        const std::vector<Value>& parameters, const std::vector<BuiltinUniform>& builtins,
-                                       double roundings);
+                                       double roundings, const std::map<std::string, std::vector<Value>>* fetches = nullptr);
 
 }  // namespace wg::accuracy

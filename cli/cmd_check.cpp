@@ -1,7 +1,7 @@
 // check: render graphs into a float frame over a sweep of cameras (grazing to top-down,
 // under water where the graph has the deferred pass), times up to 1e6 s and sun
-// positions; count NaN/Inf pixels and, where the graph has a full CPU reference, compare
-// sampled pixels with it, each held to the graph's error bound; --error-map writes the
+// positions; count NaN/Inf pixels and compare sampled pixels with the CPU reference on
+// the inputs read back from the GPU, each held to the graph's error bound; --error-map writes the
 // per-pixel errors of the worst view. Exit 1 on any NaN or Inf or a pixel over its bound.
 #include <filesystem>
 #include <iostream>
@@ -125,8 +125,8 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
       "check",
       "Render graphs headless into an RGBA32F frame over a sweep: camera elevation 0.5 to 89.5 degrees, under water "
       "(graphs with the underwater node), times 13107, 524288 and 1e6 s, sun near the horizon, overhead and below it. "
-      "Counts NaN and Inf pixels; where a graph has a full CPU reference (glsl330), compares sampled water pixels with "
-      "it, each held to the graph's error bound (the probe's: the largest tolerance of its ops plus the conditioning of "
+      "Counts NaN and Inf pixels; on glsl330 compares sampled water pixels with the CPU reference evaluated on the "
+      "inputs the GPU's fragment shader had there (read back: varyings, depth, scene and texture look-ups), each held to the graph's error bound (the probe's: the largest tolerance of its ops plus the conditioning of "
       "the pixel's inputs), and reports max and mean error per view and per graph. See docs/accuracy.md.\n\n"
       "Examples:\n  watergraph check graphs/*.json\n"
       "  watergraph check graphs/lake.json --target glsl330 --size 320x180 --error-map lake-error.png\n\n"

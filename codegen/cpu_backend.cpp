@@ -1,5 +1,6 @@
 #include "codegen/cpu_backend.h"
 
+#include <map>
 #include <stdexcept>
 
 #include "core/node_options.h"
@@ -12,11 +13,18 @@
 namespace wg {
 namespace {
 
+// Where a program's evaluation is in each source's list of texture fetches.
+struct FetchCursor {
+  const TextureFetches* fetches = nullptr;
+  std::map<std::string, size_t> next;
+};
+
 class OpEvalContext final : public EvalContext {
  public:
   OpEvalContext(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env, TextureCache* textures,
-                const std::string& graphDir)
-      : op_(op), inputs_(inputs), env_(env), textures_(textures), graphDir_(graphDir), outputs_(op.outputTypes.size()) {}
+                const std::string& graphDir, FetchCursor* cursor = nullptr)
+      : op_(op), inputs_(inputs), env_(env), textures_(textures), graphDir_(graphDir), cursor_(cursor),
+        outputs_(op.outputTypes.size()) {}
 
   const Value& input(int port) const override { return inputs_.at(static_cast<size_t>(port)); }
   Type inputType(int port) const override { return op_.inputTypes.at(static_cast<size_t>(port)); }
@@ -33,6 +41,15 @@ class OpEvalContext final : public EvalContext {
                       const UvGradient& gradient) const override {
     if (!textures_) throw std::logic_error("eval of '" + op_.spec->type + "' samples a texture without a texture cache");
     const std::string source = op_.options.at(std::string(option)).get<std::string>();
+    if (cursor_) {
+      auto listed = cursor_->fetches->find(source);
+      if (listed != cursor_->fetches->end()) {
+        size_t& k = cursor_->next[source];
+        if (k >= listed->second.size())
+          throw std::logic_error("eval of '" + op_.spec->type + "' samples '" + source + "' more often than the fetches given");
+        return listed->second[k++];
+      }
+    }
     const TextureImage& base = textures_->get(source, graphDir_);
     // The chain is built only for a look-up that can reach it.
     const std::vector<TextureImage>* chain = nullptr;
@@ -48,6 +65,7 @@ class OpEvalContext final : public EvalContext {
   const EvalEnvironment& env_;
   TextureCache* textures_;
   const std::string& graphDir_;
+  FetchCursor* cursor_;
   std::vector<Value> outputs_;
 };
 
@@ -126,11 +144,13 @@ std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& 
 
 }  // namespace
 
-std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env,
-                              TextureCache* textures, const std::string& graphDir) {
+namespace {
+
+std::vector<Value> evaluateOpAt(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env,
+                                TextureCache* textures, const std::string& graphDir, FetchCursor* cursor) {
   std::vector<Value> converted(inputs.size());
   for (size_t i = 0; i < inputs.size(); ++i) converted[i] = inputs[i].convertedTo(op.inputTypes[i]);
-  OpEvalContext ctx(op, converted, env, textures, graphDir);
+  OpEvalContext ctx(op, converted, env, textures, graphDir, cursor);
   op.spec->eval(ctx);
   std::vector<Value> out = ctx.take();
   for (size_t i = 0; i < out.size(); ++i)
@@ -139,6 +159,13 @@ std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, co
                              " for output '" + op.spec->outputs[i].name + "' typed " +
                              std::string(typeName(op.outputTypes[i])));
   return out;
+}
+
+}  // namespace
+
+std::vector<Value> evaluateOp(const Op& op, const std::vector<Value>& inputs, const EvalEnvironment& env,
+                              TextureCache* textures, const std::string& graphDir) {
+  return evaluateOpAt(op, inputs, env, textures, graphDir, nullptr);
 }
 
 std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& options,
@@ -181,9 +208,11 @@ std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& opti
   return evaluateOp(op, values, env, textures, graphDir);
 }
 
-CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, const std::vector<Value>& parameters) {
+CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, const std::vector<Value>& parameters,
+                          const TextureFetches* fetches) {
   CpuResult result;
   TextureCache textures;
+  FetchCursor cursor{fetches, {}};
   result.opOutputs.resize(program.ops.size());
   auto valueOf = [&](const ValueRef& r) -> Value {
     switch (r.kind) {
@@ -203,7 +232,7 @@ CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, co
     std::vector<Value> inputs;
     inputs.reserve(op.inputs.size());
     for (const auto& in : op.inputs) inputs.push_back(valueOf(in));
-    result.opOutputs[i] = evaluateOp(op, inputs, env, &textures, program.directory);
+    result.opOutputs[i] = evaluateOpAt(op, inputs, env, &textures, program.directory, fetches ? &cursor : nullptr);
   }
   for (const auto& out : program.outputs) result.outputs.push_back(valueOf(out.value).convertedTo(out.type));
   return result;

@@ -2,6 +2,7 @@
 // The double-precision reference: a Program interpreted through each node's `eval`. The
 // fold pass, the probe and the accuracy checks use it, so the reference is part of the
 // compiler, not a second implementation beside it.
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,8 +32,14 @@ struct CpuResult {
   std::vector<Value> outputs;                 // per program output, same order
 };
 
+// Node texture look-ups made elsewhere (by the GPU, read back: accuracy/readback.h), per
+// texture source ("builtin:foam", a PNG path) in the order the program's ops make them.
+using TextureFetches = std::map<std::string, std::vector<Value>>;
+
 // Evaluates the whole program. `parameters` overrides defaults by index (empty: defaults).
+// With `fetches`, a look-up of a listed source returns its next value instead of sampling
+// the image (std::logic_error when the list runs out).
 CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env,
-                          const std::vector<Value>& parameters = {});
+                          const std::vector<Value>& parameters = {}, const TextureFetches* fetches = nullptr);
 
 }  // namespace wg

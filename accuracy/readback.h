@@ -1,0 +1,84 @@
+#pragma once
+// What the double reference of one drawn pixel needs from the GPU, read back: the water
+// fragment shader's interpolated inputs (world position, normal, uv, gl_FragCoord.z and
+// each value the vertex stage hands over, displacement included) and every scene texture
+// look-up it makes (depth, scene colour, reflection, refraction, environment) as the
+// passes rendered them and the shader fetched them, and its node texture look-ups (as
+// llvmpipe filtered them: the reference's own filtering differs in the last bits, which
+// steep formulas downstream, a GGX highlight, would amplify past any bound). Each quantity is a GLSL float
+// expression valid at the end of the fragment shader's main(); a "tap" shader writes
+// three of them as the colour in place of the graph's, into the RGBA32F frame, so each
+// float comes back exactly. The vertex shader and every other pass are the graph's own,
+// so the same fragments win the depth test as in the graph's frame.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "codegen/compile.h"
+#include "core/interface_tables.h"
+#include "core/node_spec.h"
+#include "runtime/renderer.h"
+
+namespace wg::accuracy {
+
+struct ReadbackPlan {
+  std::vector<std::string> channels;  // one float GLSL expression each
+  // First channel of each quantity; -1 where the fragment shader does not read it.
+  int mask = -1;  // holds kWaterMark wherever the water surface was drawn
+  int fragDepth = -1, worldPosition = -1, normal = -1, uv = -1;
+  std::vector<int> varyings;  // per Program::varyings entry
+  struct Lookup {
+    SceneSampler sampler;
+    int channel = -1;
+    int size = 0;  // 1 for depth, 3 for colours
+  };
+  std::vector<Lookup> lookups;  // in the order main() makes them
+  // Node texture look-ups (vec4 each), in the order main() makes them: the reference takes
+  // these values (codegen/cpu_backend.h TextureFetches) instead of sampling on the CPU.
+  struct NodeFetch {
+    std::string source;
+    int channel = -1;
+  };
+  std::vector<NodeFetch> textureFetches;
+  int frames() const { return (static_cast<int>(channels.size()) + 2) / 3; }
+};
+
+// A value no scene colour takes: the mask channel's literal.
+inline constexpr float kWaterMark = -3.0f;
+
+// Plans the read-back of `fragmentText` (the water fragment shader of `result`). Returns
+// why the per-pixel reference cannot be built from it ("" when it can): the water
+// G-buffer of deferred water, or a scene texture sampled inside a library function (many
+// look-ups a pixel, where the reference has one value per texture).
+std::string planReadback(const CompileResult& result, const std::string& fragmentText, ReadbackPlan* plan);
+
+// `water` (vertex and fragment) with the fragment colour replaced by channels
+// 3*frame .. 3*frame+2 of `plan`.
+std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ReadbackPlan& plan, int frame);
+
+// One view's channels, per pixel (rows top to bottom).
+struct ReadbackImage {
+  int width = 0, height = 0, channels = 0;
+  std::vector<float> values;  // [(py * width + px) * channels + c]
+  float at(int px, int py, int c) const { return values[(static_cast<size_t>(py) * width + px) * channels + c]; }
+  bool water(int px, int py, const ReadbackPlan& plan) const;  // false outside the frame
+};
+
+// The tap renderers of a graph: one per frame of the plan, reused over the views.
+class ReadbackRenderer {
+ public:
+  ReadbackRenderer(const CompileResult& result, const std::vector<rt::ShaderSource>& water, ReadbackPlan plan,
+                   const rt::RenderSettings& settings, bool es);
+  ReadbackImage read(const rt::Camera& camera, const rt::SceneOptions& scene);
+  const ReadbackPlan& plan() const { return plan_; }
+
+ private:
+  ReadbackPlan plan_;
+  std::vector<std::unique_ptr<rt::Renderer>> renderers_;
+};
+
+// The environment field a scene look-up through `sampler` sets in the reference; null for
+// the water G-buffer, which the reference does not read as one value.
+Value* lookupField(EvalEnvironment& env, SceneSampler sampler);
+
+}  // namespace wg::accuracy

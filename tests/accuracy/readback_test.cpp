@@ -1,0 +1,86 @@
+// What check reads back for the reference (accuracy/readback.h) and the fragment stage it
+// evaluates (accuracy/fragment_program.h), planned from compiled example graphs: no GPU.
+#include <algorithm>
+
+#include <gtest/gtest.h>
+
+#include "accuracy/fragment_program.h"
+#include "accuracy/readback.h"
+#include "codegen/compile.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "runtime/preview.h"
+#include "test_support.h"
+
+namespace wg::accuracy {
+namespace {
+
+CompileResult compiled(const std::string& name) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/" + name), diags);
+  EXPECT_TRUE(graph) << name;
+  CompileOptions o;
+  o.targets = {Target::Glsl330};
+  auto result = compileGraph(*graph, defaultRegistry(), o, diags);
+  EXPECT_TRUE(result) << name;
+  return *result;
+}
+
+std::string fragmentText(const std::vector<rt::ShaderSource>& sources) {
+  for (const auto& s : sources)
+    if (s.stage == GL_FRAGMENT_SHADER) return s.text;
+  return "";
+}
+
+// classic_webgl: the varyings, one look-up each of depth, refraction and reflection, and
+// the two water_normal look-ups main() makes; its dudv texture is sampled inside a library
+// function, so the reference samples that one itself.
+TEST(ReadbackPlan, ListsTheVaryingsAndLookUpsOfTheFragmentShader) {
+  CompileResult r = compiled("classic_webgl.json");
+  auto sources = rt::waterShaderSources(r, Target::Glsl330);
+  ReadbackPlan plan;
+  ASSERT_EQ(planReadback(r, fragmentText(sources), &plan), "");
+  EXPECT_GE(plan.mask, 0);
+  EXPECT_GE(plan.fragDepth, 0);
+  EXPECT_GE(plan.worldPosition, 0);
+  EXPECT_GE(plan.normal, 0);
+  EXPECT_GE(plan.uv, 0);
+  EXPECT_EQ(plan.varyings.size(), r.program.varyings.size());
+  ASSERT_EQ(plan.lookups.size(), 3u);
+  for (SceneSampler s : {SceneSampler::SceneDepth, SceneSampler::Refraction, SceneSampler::Reflection})
+    EXPECT_EQ(std::count_if(plan.lookups.begin(), plan.lookups.end(), [&](const auto& l) { return l.sampler == s; }), 1);
+  ASSERT_EQ(plan.textureFetches.size(), 2u);
+  for (const auto& f : plan.textureFetches) EXPECT_EQ(f.source, "builtin:water_normal");
+  EXPECT_EQ(plan.frames(), (static_cast<int>(plan.channels.size()) + 2) / 3);
+
+  // A tap frame writes its three channels as the colour instead of the graph's.
+  auto tapped = tapShaders(sources, plan, 0);
+  std::string text = fragmentText(tapped);
+  EXPECT_NE(text.find("o_color = vec4(float(-3.0), float(gl_FragCoord.z), float((v_world_position).x), 1.0);"),
+            std::string::npos)
+      << text;
+  EXPECT_EQ(text.find("o_color = vec4(n14_color, 1.0);"), std::string::npos);
+}
+
+TEST(ReadbackPlan, RefusesDeferredWaterWithItsReason) {
+  CompileResult r = compiled("deferred_underwater.json");
+  ReadbackPlan plan;
+  std::string why = planReadback(r, fragmentText(rt::waterShaderSources(r, Target::Glsl330)), &plan);
+  EXPECT_NE(why.find("inside a library function"), std::string::npos) << why;
+}
+
+// ocean: the vertex stage's Gerstner ops are left out; what the fragment reads of them
+// arrives through varyings turned into parameters.
+TEST(FragmentProgram, KeepsOnlyFragmentOpsWithVaryingsAsParameters) {
+  CompileResult r = compiled("ocean.json");
+  FragmentProgram f = fragmentProgram(r.program);
+  EXPECT_LT(f.program.ops.size(), r.program.ops.size());
+  for (const auto& op : f.program.ops) EXPECT_TRUE(op.stage & kFragmentStage) << op.nodeId;
+  EXPECT_EQ(f.varyingParameters.size(), r.program.varyings.size());
+  EXPECT_EQ(f.program.parameters.size(), r.program.parameters.size() + r.program.varyings.size());
+  ASSERT_EQ(f.program.outputs.size(), 1u);
+  EXPECT_EQ(f.program.outputs[0].slot, OutputSlot::FragmentColor);
+}
+
+}  // namespace
+}  // namespace wg::accuracy
