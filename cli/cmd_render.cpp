@@ -87,6 +87,10 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
     return kExitUsageOrIo;
   }
   Target target = *parseTarget(args.target);
+  if (args.vulkanValidation && target != Target::Vk450) {
+    std::cerr << "watergraph: --vk-validation needs --target vk450 (the layer checks Vulkan calls)\n";
+    return kExitUsageOrIo;
+  }
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
   std::optional<CompileResult> result;

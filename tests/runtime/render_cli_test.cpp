@@ -71,8 +71,11 @@ TEST(RenderCli, UsageErrorsExit2) {
   EXPECT_NE(out.find("sideways"), std::string::npos) << out;
   out = render(lake + " -o " + dir + "/x.png --size 12by8", &code);
   EXPECT_EQ(code, 2) << out;
-  out = render(lake + " -o " + dir + "/x.png --target vk450", &code);
+  out = render(lake + " -o " + dir + "/x.png --target msl", &code);  // compiled, never run here
   EXPECT_EQ(code, 2) << out;
+  out = render(lake + " -o " + dir + "/x.png --vk-validation", &code);  // the layer checks Vulkan only
+  EXPECT_EQ(code, 2) << out;
+  EXPECT_NE(out.find("--vk-validation needs --target vk450"), std::string::npos) << out;
   out = render(test::sourcePath("graphs/no_such_graph.json") + " -o " + dir + "/x.png", &code);
   EXPECT_EQ(code, 2) << out;
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
