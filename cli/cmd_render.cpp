@@ -1,5 +1,5 @@
-// render: compile one graph for glsl330 or es300 and run it headless (EGL, Mesa llvmpipe)
-// in the built-in scene; write the frame as a PNG, optionally with pass and timing stats.
+// render: compile one graph for glsl330, es300 (EGL, Mesa llvmpipe) or vk450 (Vulkan, Mesa
+// lavapipe) and run it headless in the built-in scene; write the frame as a PNG, optionally with pass and timing stats.
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -15,6 +15,7 @@
 #include "runtime/image.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
+#include "runtime/vk_preview.h"
 #endif
 
 namespace wg::cli {
@@ -35,6 +36,7 @@ struct RenderArgs {
   std::string preset;
   bool obliqueReflection = false;
   std::string scene = "builtin";
+  bool vulkanValidation = false;
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -85,6 +87,10 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
     return kExitUsageOrIo;
   }
   Target target = *parseTarget(args.target);
+  if (args.vulkanValidation && target != Target::Vk450) {
+    std::cerr << "watergraph: --vk-validation needs --target vk450 (the layer checks Vulkan calls)\n";
+    return kExitUsageOrIo;
+  }
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
   std::optional<CompileResult> result;
@@ -108,7 +114,9 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   settings.scene.sunElevationDegrees = args.sunElevation;
   settings.scene.drawScene = args.scene == "builtin";
   try {
-    rt::Preview p = rt::renderPreview(*result, target, settings, args.frames, /*warmup=*/args.stats);
+    rt::Preview p = target == Target::Vk450
+                        ? rt::renderVulkanPreview(*result, settings, args.frames, /*warmup=*/args.stats, args.vulkanValidation)
+                        : rt::renderPreview(*result, target, settings, args.frames, /*warmup=*/args.stats);
     rt::writePng(args.output, p.image);
     if (args.stats) printStats(args, graphBaseName(args.graph), p);
   } catch (const rt::TextureLoadError& e) {
@@ -130,15 +138,17 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<RenderArgs>();
   CLI::App* cmd = app.add_subcommand(
       "render",
-      "Compile a graph and run it headless (EGL; Mesa llvmpipe works everywhere) in the built-in scene: a sky with a "
+      "Compile a graph and run it headless (EGL or Vulkan; Mesa llvmpipe and lavapipe work everywhere) in the built-in scene: a sky with a "
       "sun, a tiled pool sloping up to a sandy shore towards -x, pillars and rocks crossing the water. Only the passes "
       "the manifest lists run. Writes the frame as a PNG.\n\nExamples:\n"
       "  watergraph render graphs/lake.json -o lake.png\n"
       "  watergraph render graphs/lake.json -o lake.png --size 640x360 --camera grazing --time 2\n"
       "  watergraph render graphs/lake.json -o lake.png --target es300 --frames 20 --stats\n"
       "  watergraph render graphs/topdown.json -o choppy.png --preset choppy --camera topdown\n"
-      "  watergraph render graphs/lake.json -o water.png --target es300 --scene none   # the water alone, on black\n\n"
-      "Exit codes: 0 ok; 1 graph errors or a shader the GL driver rejects; 2 usage, I/O, or no EGL/GL context.");
+      "  watergraph render graphs/lake.json -o water.png --target es300 --scene none   # the water alone, on black\n"
+      "  watergraph render graphs/lake.json -o lake_vk.png --target vk450 --vk-validation\n\n"
+      "Exit codes: 0 ok; 1 graph errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no "
+      "EGL/GL context or Vulkan device.");
   cmd->add_option("graph", args->graph, "graph file (.json)")->required();
   cmd->add_option("-o,--output", args->output, "PNG file to write (written atomically)")->required();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
@@ -146,9 +156,12 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--camera", args->camera, "camera preset: above, grazing, underwater, topdown")
       ->check(CLI::IsMember({"above", "grazing", "underwater", "topdown"}))
       ->capture_default_str();
-  cmd->add_option("--target", args->target, "shaders to run: glsl330 (OpenGL 4.5 core) or es300 (OpenGL ES 3.2)")
-      ->check(CLI::IsMember({"glsl330", "es300"}))
+  cmd->add_option("--target", args->target,
+                  "shaders to run: glsl330 (OpenGL 4.5 core), es300 (OpenGL ES 3.2) or vk450 (the SPIR-V on Vulkan 1.3)")
+      ->check(CLI::IsMember({"glsl330", "es300", "vk450"}))
       ->capture_default_str();
+  cmd->add_flag("--vk-validation", args->vulkanValidation,
+                "vk450: run under the Khronos validation layer; any message it reports fails the render (exit 1)");
   cmd->add_option("--frames", args->frames, "frames to time; --stats renders one untimed warm-up frame first and reports the median")
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();

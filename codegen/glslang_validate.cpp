@@ -1,6 +1,7 @@
 // glslang (12.0) + SPIRV-Tools (2023.1) validation of emitted shaders. See
 // docs/validation.md for what is checked per target and how messages map back.
 #include "codegen/glslang_validate.h"
+#include "codegen/glslang_reflection.h"
 #include "codegen/glslang_stage.h"
 
 #include <glslang/MachineIndependent/localintermediate.h>
@@ -346,6 +347,19 @@ std::optional<std::vector<std::string>> activeUniforms(Target target, const std:
   for (int i = 0; i < linked.program.getNumUniformVariables(); ++i)
     names.insert(linked.program.getUniform(i).name);
   return std::vector<std::string>(names.begin(), names.end());
+}
+
+std::optional<std::map<std::string, int>> uniformBlockOffsets(Target target, const std::vector<ShaderSource>& shaders) {
+  LinkedProgram linked;
+  std::vector<ShaderMessage> errors;
+  if (!compileAndLink(target, shaders, linked, errors)) return std::nullopt;
+  if (!linked.program.buildReflection(EShReflectionDefault | EShReflectionAllBlockVariables)) return std::nullopt;
+  std::map<std::string, int> offsets;
+  for (int i = 0; i < linked.program.getNumUniformVariables(); ++i) {
+    const glslang::TObjectReflection& u = linked.program.getUniform(i);
+    if (u.offset >= 0) offsets[u.name] = u.offset;  // -1: not a block member
+  }
+  return offsets;
 }
 
 ValidationResult validateShaders(Target target, const std::vector<ShaderSource>& shaders) {

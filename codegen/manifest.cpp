@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "codegen/manifest_vulkan.h"
 #include "core/json_text_writer.h"
 
 namespace wg {
@@ -223,6 +224,10 @@ std::string Manifest::fileText() const {
     w.endObject();
   }
   w.endArray();
+  if (writesVulkanSection(*this)) {
+    w.key("vulkan");
+    writeVulkanSection(w, *this);
+  }
   w.endObject();
   text += '\n';
   return text;

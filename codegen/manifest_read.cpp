@@ -289,7 +289,7 @@ Manifest Manifest::fromJson(const json& j) {
   m.passes = passesOf(j);
   onlyMembers(j,
               {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
-               "textures", "tessellation", "resources", "passes", "nodes"},
+               "textures", "tessellation", "resources", "passes", "nodes", "vulkan"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
     fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));
@@ -314,6 +314,14 @@ Manifest Manifest::fromJson(const json& j) {
       m.resources.push_back(*r);
     }
   if (const json* nodes = member(j, "nodes")) nodesOf(*nodes, m);
+  // "vulkan" is derived from the rest (codegen/manifest_vulkan.h): it must be what the
+  // compiler would write for it, so an engine and the runtime read the same bindings.
+  const json* vulkan = member(j, "vulkan");
+  const json written = json::parse(m.fileText());
+  if (written.contains("vulkan") != (vulkan != nullptr))
+    fail(vulkan ? "the manifest has a \"vulkan\" section but no vk450 target" : "the manifest has a vk450 target but no \"vulkan\" section");
+  if (vulkan && *vulkan != written["vulkan"])
+    fail("the manifest's \"vulkan\" section does not match its uniforms, textures, attributes and varyings");
   return m;
 }
 

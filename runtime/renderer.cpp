@@ -17,6 +17,7 @@
 #include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
 #include "runtime/tessellation_budget.h"
+#include "runtime/uniform_values.h"
 
 namespace wg::rt {
 namespace {
@@ -262,51 +263,19 @@ struct Renderer::Impl {
     std::vector<std::pair<GLuint, GLint>> locations;  // (program, location) where it is used
   };
   std::vector<WaterUniform> uniforms;
-  // Into [lo, hi] per component; NaN becomes lo (or hi when lo is unbounded).
-  static void clampParameter(WaterUniform& u) {
-    for (float& x : u.value) {
-      if (!(x >= u.lo)) x = std::isfinite(u.lo) ? u.lo : (std::isfinite(u.hi) ? u.hi : x);
-      if (x > u.hi) x = u.hi;
-    }
-  }
+  static void clampParameter(WaterUniform& u) { clampIntoRange(u.value, u.lo, u.hi); }
 
   std::vector<float> builtinValue(const WaterUniform& u) const {
-    std::vector<float> v;
-    auto mat = [&](const glm::mat4& m4) { v.assign(glm::value_ptr(m4), glm::value_ptr(m4) + 16); };
-    switch (u.builtin) {
-      case BuiltinUniform::Model: mat(glm::mat4(1.0f)); break;
-      case BuiltinUniform::ViewProjection: mat(viewProjection); break;
-      case BuiltinUniform::View: mat(view); break;
-      case BuiltinUniform::Projection: mat(projection); break;
-      case BuiltinUniform::CameraPosition: v = {camera.position.x, camera.position.y, camera.position.z}; break;
-      case BuiltinUniform::Time: v = {settings.scene.time}; break;
-      case BuiltinUniform::ViewportSize: v = {static_cast<float>(settings.width), static_cast<float>(settings.height)}; break;
-      case BuiltinUniform::CameraNearFar: {
-        // Each plane clamped into [1e-6, 1e30] (NaN to 1e-6; an infinite far plane to
-        // 1e30): the generated shader relies on it (builtinFact(CameraNearFar)).
-        auto plane = [](float x) { return !(x >= 1e-6f) ? 1e-6f : std::min(x, 1e30f); };
-        v = {plane(camera.nearPlane), plane(camera.farPlane)};
-        break;
-      }
-      case BuiltinUniform::SunDirection: v = {sun.x, sun.y, sun.z}; break;
-      case BuiltinUniform::TimePhase: {
-        // mod(omega * time, 2 pi) in double, so phases stay exact at large times.
-        double twoPi = 6.283185307179586;
-        double phase = u.angularFrequency * static_cast<double>(settings.scene.time);
-        phase -= twoPi * std::floor(phase / twoPi);
-        v = {static_cast<float>(phase)};
-        break;
-      }
-      case BuiltinUniform::ProbeUv:
-      case BuiltinUniform::ProbeWorldPosition:
-      case BuiltinUniform::ProbeNormal:
-      case BuiltinUniform::ProbeViewDirection:
-      case BuiltinUniform::ProbeScreenUv:
-      case BuiltinUniform::ProbeFragDepth:
-      case BuiltinUniform::ProbeUvGradient:
-      case BuiltinUniform::ProbePixel: break;  // refused when the manifest is read
-    }
-    return v;
+    FrameValues f;
+    f.camera = camera;
+    f.view = view;
+    f.projection = projection;
+    f.viewProjection = viewProjection;
+    f.sun = sun;
+    f.time = settings.scene.time;
+    f.width = settings.width;
+    f.height = settings.height;
+    return builtinUniformValue(u.builtin, u.angularFrequency, f);
   }
 
   // Checked when the manifest is read, so a frame meets no builtin it cannot set. The

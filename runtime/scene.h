@@ -68,5 +68,16 @@ struct SceneShaderSources {
   std::string fullscreenVertex, waterGbufferFragment;
 };
 SceneShaderSources sceneShaderSources(bool es);
+// The same bodies for any API. Vulkan (GLSL 450, compiled to SPIR-V by the Vulkan runtime):
+// every in/out has a location, the uniforms of the sky and the opaque scene are push
+// constants (sky: mat4 u_inverse_view_projection at 0, vec3 u_sun_direction at 64;
+// opaque: mat4 u_view_projection at 0, vec4 u_clip_plane at 64, vec3 u_sun_direction at
+// 80), and the G-buffer fragment shader reads the graph's varyings at the locations its
+// vertex shader writes them (the manifest's varyings order).
+enum class SceneShaderApi { Gl330, Es300, Vulkan450 };
+struct GbufferInputLocations {
+  int worldPosition = 0, normal = 1, uv = 2;
+};
+SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer = {});
 
 }  // namespace wg::rt

@@ -1,18 +1,46 @@
 // GLSL for the runtime's own passes: the sky and the lit opaque scene. One body per shader,
-// with a per-API header: desktop GL clips with gl_ClipDistance, ES 3.0 (no clip distances
-// without an extension) discards fragments on the wrong side of the plane instead.
+// with a per-API header and uniform declarations: desktop GL and Vulkan clip with
+// gl_ClipDistance, ES 3.0 (no clip distances without an extension) discards fragments on
+// the wrong side of the plane instead. Vulkan GLSL has no loose uniforms and needs a
+// location on every in/out: its header defines WG_LOCATION(n) as the layout qualifier
+// (the GL headers as nothing, GLSL 330 and ES 300 allow none on varyings) and each
+// program's uniforms become one push-constant block.
+#include <initializer_list>
+#include <string>
+
 #include "runtime/scene.h"
 
 namespace wg::rt {
 namespace {
 
-constexpr const char* kGlHeader = "#version 330 core\n#define WG_CLIP_DISTANCE 1\n";
-constexpr const char* kEsHeader = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+// WG_VERTEX_ID: Vulkan GLSL names the vertex index gl_VertexIndex.
+constexpr const char* kGlHeader =
+    "#version 330 core\n#define WG_CLIP_DISTANCE 1\n#define WG_LOCATION(n)\n#define WG_VERTEX_ID gl_VertexID\n";
+constexpr const char* kEsHeader =
+    "#version 300 es\nprecision highp float;\nprecision highp int;\n#define WG_LOCATION(n)\n"
+    "#define WG_VERTEX_ID gl_VertexID\n";
+constexpr const char* kVulkanHeader =
+    "#version 450\n#define WG_CLIP_DISTANCE 1\n#define WG_LOCATION(n) layout(location = n)\n"
+    "#define WG_VERTEX_ID gl_VertexIndex\n";
+
+// A program's uniforms: loose for GL, one push-constant block for Vulkan (the runtime's
+// own passes have a few matrices and vectors, well under the 128 bytes every Vulkan
+// device offers; the block's std140-like offsets are the members' order: mat4 0, then
+// 16-byte aligned vectors).
+std::string uniforms(SceneShaderApi api, const char* block, std::initializer_list<const char*> members) {
+  std::string s;
+  if (api == SceneShaderApi::Vulkan450) {
+    s = std::string("layout(push_constant) uniform ") + block + " {\n";
+    for (const char* m : members) s += std::string("  ") + m + ";\n";
+    return s + "};\n";
+  }
+  for (const char* m : members) s += std::string("uniform ") + m + ";\n";
+  return s;
+}
 
 // The sky as a function of a unit direction: a gradient from the horizon to the zenith, a
 // darker ground below the horizon, a sun glow and a sun disk. Finite for every input.
 constexpr const char* kSkyFunction = R"glsl(
-uniform vec3 u_sun_direction;
 vec3 wg_scene_sky(vec3 d) {
   vec3 zenith = vec3(0.16, 0.34, 0.70);
   vec3 horizon = vec3(0.70, 0.80, 0.90);
@@ -28,18 +56,17 @@ vec3 wg_scene_sky(vec3 d) {
 )glsl";
 
 constexpr const char* kSkyVertex = R"glsl(
-out vec2 v_ndc;
+WG_LOCATION(0) out vec2 v_ndc;
 void main() {
   // One triangle covering the viewport, at the far plane (depth 1).
-  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  vec2 p = vec2(WG_VERTEX_ID == 1 ? 3.0 : -1.0, WG_VERTEX_ID == 2 ? 3.0 : -1.0);
   v_ndc = p;
   gl_Position = vec4(p, 1.0, 1.0);
 }
 )glsl";
 
 constexpr const char* kSkyFragment = R"glsl(
-uniform mat4 u_inverse_view_projection;
-in vec2 v_ndc;
+WG_LOCATION(0) in vec2 v_ndc;
 layout(location = 0) out vec4 o_color;
 void main() {
   vec4 n = u_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
@@ -54,11 +81,9 @@ constexpr const char* kOpaqueVertex = R"glsl(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 3) in float a_material;
-uniform mat4 u_view_projection;
-uniform vec4 u_clip_plane;  // keep dot(plane, (p, 1)) >= 0
-out vec3 v_world;
-out vec3 v_normal;
-flat out float v_material;
+WG_LOCATION(0) out vec3 v_world;
+WG_LOCATION(1) out vec3 v_normal;
+WG_LOCATION(2) flat out float v_material;
 void main() {
   v_world = a_position;
   v_normal = a_normal;
@@ -71,10 +96,9 @@ void main() {
 )glsl";
 
 constexpr const char* kOpaqueFragment = R"glsl(
-uniform vec4 u_clip_plane;
-in vec3 v_world;
-in vec3 v_normal;
-flat in float v_material;
+WG_LOCATION(0) in vec3 v_world;
+WG_LOCATION(1) in vec3 v_normal;
+WG_LOCATION(2) flat in float v_material;
 layout(location = 0) out vec4 o_color;
 
 vec3 terrainAlbedo(vec3 p) {
@@ -115,7 +139,7 @@ void main() {
 // everything it needs from textures.
 constexpr const char* kFullscreenVertex = R"glsl(
 void main() {
-  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);
+  vec2 p = vec2(WG_VERTEX_ID == 1 ? 3.0 : -1.0, WG_VERTEX_ID == 2 ? 3.0 : -1.0);
   gl_Position = vec4(p, 0.0, 1.0);
 }
 )glsl";
@@ -124,9 +148,6 @@ void main() {
 // included) from its fixed-name varyings: world position and depth-buffer value; the
 // upward unit normal's x and z (y is recovered as sqrt(1 - x^2 - z^2)) and the uv.
 constexpr const char* kWaterGbufferFragment = R"glsl(
-in vec3 v_world_position;
-in vec3 v_normal;
-in vec2 v_uv;
 layout(location = 0) out vec4 o_surface;
 layout(location = 1) out vec4 o_normal_uv;
 void main() {
@@ -140,16 +161,29 @@ void main() {
 
 }  // namespace
 
-SceneShaderSources sceneShaderSources(bool es) {
-  std::string h = es ? kEsHeader : kGlHeader;
+SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer) {
+  const std::string h = api == SceneShaderApi::Es300 ? kEsHeader : api == SceneShaderApi::Gl330 ? kGlHeader : kVulkanHeader;
+  const std::string sky = uniforms(api, "SkyConstants", {"mat4 u_inverse_view_projection", "vec3 u_sun_direction"});
+  // u_clip_plane (keep dot(plane, (p, 1)) >= 0) before u_sun_direction: at 64 and 80.
+  const std::string opaque =
+      uniforms(api, "OpaqueConstants", {"mat4 u_view_projection", "vec4 u_clip_plane", "vec3 u_sun_direction"});
+  auto in = [&](int location, const char* declaration) {
+    return (api == SceneShaderApi::Vulkan450 ? "layout(location = " + std::to_string(location) + ") " : std::string()) +
+           "in " + declaration + ";\n";
+  };
   SceneShaderSources s;
   s.skyVertex = h + kSkyVertex;
-  s.skyFragment = h + kSkyFunction + kSkyFragment;
-  s.opaqueVertex = h + kOpaqueVertex;
-  s.opaqueFragment = h + kSkyFunction + kOpaqueFragment;
+  s.skyFragment = h + sky + kSkyFunction + kSkyFragment;
+  s.opaqueVertex = h + opaque + kOpaqueVertex;
+  s.opaqueFragment = h + opaque + kSkyFunction + kOpaqueFragment;
   s.fullscreenVertex = h + kFullscreenVertex;
-  s.waterGbufferFragment = h + kWaterGbufferFragment;
+  s.waterGbufferFragment = h + in(gbuffer.worldPosition, "vec3 v_world_position") + in(gbuffer.normal, "vec3 v_normal") +
+                           in(gbuffer.uv, "vec2 v_uv") + kWaterGbufferFragment;
   return s;
+}
+
+SceneShaderSources sceneShaderSources(bool es) {
+  return sceneShaderSources(es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
 }
 
 }  // namespace wg::rt

@@ -47,6 +47,21 @@ TEST(RenderCli, Es300Target) {
   std::filesystem::remove_all(dir);
 }
 
+// The vk450 SPIR-V on Vulkan under the validation layer, with the stats naming the device.
+TEST(RenderCli, Vk450TargetUnderValidation) {
+  std::string dir = test::makeTempDir("wg_render_");
+  int code = -1;
+  std::string out = render(test::sourcePath("graphs/classic_webgl.json") + " -o " + dir +
+                               "/c.png --size 64x36 --target vk450 --vk-validation --stats",
+                           &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_TRUE(std::filesystem::exists(dir + "/c.png"));
+  EXPECT_NE(out.find("vk450 on llvmpipe"), std::string::npos) << out;
+  EXPECT_NE(out.find("(Vulkan 1."), std::string::npos) << out;
+  EXPECT_NE(out.find("passes: depth_prepass, planar_reflection, refraction, opaque_scene, water_surface"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(RenderCli, UsageErrorsExit2) {
   std::string dir = test::makeTempDir("wg_render_");
   std::string lake = test::sourcePath("graphs/lake.json");
@@ -56,8 +71,11 @@ TEST(RenderCli, UsageErrorsExit2) {
   EXPECT_NE(out.find("sideways"), std::string::npos) << out;
   out = render(lake + " -o " + dir + "/x.png --size 12by8", &code);
   EXPECT_EQ(code, 2) << out;
-  out = render(lake + " -o " + dir + "/x.png --target vk450", &code);
+  out = render(lake + " -o " + dir + "/x.png --target msl", &code);  // compiled, never run here
   EXPECT_EQ(code, 2) << out;
+  out = render(lake + " -o " + dir + "/x.png --vk-validation", &code);  // the layer checks Vulkan only
+  EXPECT_EQ(code, 2) << out;
+  EXPECT_NE(out.find("--vk-validation needs --target vk450"), std::string::npos) << out;
   out = render(test::sourcePath("graphs/no_such_graph.json") + " -o " + dir + "/x.png", &code);
   EXPECT_EQ(code, 2) << out;
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));

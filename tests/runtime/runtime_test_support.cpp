@@ -19,13 +19,13 @@ std::vector<std::string> exampleGraphNames() {
   return names;
 }
 
-CompileResult compileExample(const std::string& name) {
+CompileResult compileExample(const std::string& name, const std::vector<Target>& targets) {
   Diagnostics diags;
   auto graph = loadGraphFile(sourcePath("graphs/" + name + ".json"), diags);
   std::optional<CompileResult> result;
   if (graph) {
     CompileOptions options;
-    options.targets = {Target::Glsl330, Target::Es300};
+    options.targets = targets;
     result = compileGraph(*graph, defaultRegistry(), options, diags);
   }
   std::string messages;

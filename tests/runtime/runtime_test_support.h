@@ -13,8 +13,8 @@ namespace wg::test {
 
 // graphs/*.json in the source tree, sorted, as base names ("lake").
 std::vector<std::string> exampleGraphNames();
-// Compiles graphs/<name>.json for glsl330 and es300 (validated); fails the test on errors.
-CompileResult compileExample(const std::string& name);
+// Compiles graphs/<name>.json for `targets` (validated); fails the test on errors.
+CompileResult compileExample(const std::string& name, const std::vector<Target>& targets = {Target::Glsl330, Target::Es300});
 
 // The settings of every checked-in preview: 320 x 180, camera above, time 3.5 s.
 rt::RenderSettings smallSettings();
