@@ -67,8 +67,10 @@ try {
     page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
     await page.goto(`http://127.0.0.1:${server.address().port}/`);
     // A few frames of the first graph, then each graph asked for, picked in the <select>.
+    // (or an error the page reports, which ends the check at once)
     const settle = (name) => page.waitForFunction(
-      (n) => window.wgGallery?.ready && window.wgGallery.graph === n && window.wgGallery.frames >= 3, name, { timeout: 60000 });
+      (n) => window.wgGallery?.errors?.length || (window.wgGallery?.ready && window.wgGallery.graph === n && window.wgGallery.frames >= 3),
+      name, { timeout: 60000 });
     await settle(graphs[0].name);
     const switched = [];
     for (const name of (args.switch ?? '').split(',').filter(Boolean)) {
