@@ -3,13 +3,16 @@
 // writes the built-in scene's description (`watergraph scene`) and the list of graphs,
 // then serves them with this client and its node_modules/three.
 //
-//   node clients/three/example/serve.mjs [--watergraph build/cli/watergraph] [--port 8080]
+//   node clients/three/example/serve.mjs [--watergraph PATH] [--port 8080]
+//
+// --watergraph: the watergraph binary (default: build/bin/watergraph in this repository,
+// else `watergraph` on PATH).
 //
 // Nothing is fetched from elsewhere; the compiled files go to a temporary folder removed
 // on exit. Exit status 2 for usage or a failed compile (its message on stderr).
 import { createServer } from 'node:http';
 import { execFileSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync, mkdirSync } from 'node:fs';
+import { existsSync, mkdtempSync, readFileSync, readdirSync, rmSync, writeFileSync, mkdirSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -76,7 +79,8 @@ if (process.argv[1] && path.resolve(process.argv[1]) === fileURLToPath(import.me
     process.stderr.write(`serve: ${e.message}\n`);
     process.exit(2);
   }
-  const watergraph = args.watergraph ?? path.join(repoDir, 'build', 'cli', 'watergraph');
+  const built = path.join(repoDir, 'build', 'bin', 'watergraph');
+  const watergraph = args.watergraph ?? (existsSync(built) ? built : 'watergraph');
   const port = Number(args.port ?? 8080);
   const outDir = mkdtempSync(path.join(tmpdir(), 'wg_gallery_'));
   const cleanUp = () => rmSync(outDir, { recursive: true, force: true });
