@@ -5,10 +5,13 @@
 // water G-buffer) come from the scene description `watergraph scene` writes.
 import * as THREE from 'three';
 
-export class WaterPassError extends Error {
+// Thrown for a manifest or description the client cannot run (a pass it cannot provide, an
+// unknown builtin uniform or type) and for files that cannot be loaded; watergraph-three.js
+// exports it too.
+export class WaterGraphError extends Error {
   constructor(message) {
     super(message);
-    this.name = 'WaterGraphError';  // one error type for the application to catch
+    this.name = 'WaterGraphError';
   }
 }
 
@@ -21,9 +24,9 @@ const SCENE_FORMAT = 'watergraph-scene-1';
 // Checks the parts of a scene description (`watergraph scene`) the passes use.
 export function checkSceneDescription(description) {
   if (!description || description.format !== SCENE_FORMAT)
-    throw new WaterPassError(`not a scene description of format ${SCENE_FORMAT} (write one with \`watergraph scene -o scene.json\`)`);
+    throw new WaterGraphError(`not a scene description of format ${SCENE_FORMAT} (write one with \`watergraph scene -o scene.json\`)`);
   for (const key of ['render_passes', 'render_targets', 'shaders', 'environment', 'sun_direction', 'clear_color'])
-    if (!(key in description)) throw new WaterPassError(`the scene description has no "${key}"`);
+    if (!(key in description)) throw new WaterGraphError(`the scene description has no "${key}"`);
   return description;
 }
 
@@ -33,10 +36,10 @@ export function checkSceneDescription(description) {
 // environmentSize square), "frame" first. frameFloat: the frame's colour is RGBA32F.
 export function planPasses(manifest, description, { width, height, environmentSize, frameFloat = false }) {
   const listed = new Set(manifest.passes ?? []);
-  if (!listed.has('water_surface')) throw new WaterPassError(`graph '${manifest.graph}': the manifest's "passes" list lacks water_surface`);
-  if (!(width > 0 && height > 0 && environmentSize > 0)) throw new WaterPassError('render size must be positive');
+  if (!listed.has('water_surface')) throw new WaterGraphError(`graph '${manifest.graph}': the manifest's "passes" list lacks water_surface`);
+  if (!(width > 0 && height > 0 && environmentSize > 0)) throw new WaterGraphError('render size must be positive');
   for (const pass of listed)
-    if (!description.render_passes.includes(pass)) throw new WaterPassError(`graph '${manifest.graph}' lists an unknown pass '${pass}'`);
+    if (!description.render_passes.includes(pass)) throw new WaterGraphError(`graph '${manifest.graph}' lists an unknown pass '${pass}'`);
   const frameColor = frameFloat ? 'rgba32f' : 'rgba8';
   const plan = { passes: [], targets: [{ name: 'frame', pass: 'water_surface', sampler: '', color: frameColor, depth: true, width, height, cube: false }] };
   for (const pass of description.render_passes) {
@@ -67,7 +70,7 @@ export function glPerspective(fovYDegrees, aspect, near, far, target = new THREE
 
 function withoutVersion(source, what) {
   const m = /^\s*#version\s+300\s+es[^\n]*\n/.exec(source);
-  if (!m) throw new WaterPassError(`${what} does not start with "#version 300 es"`);
+  if (!m) throw new WaterGraphError(`${what} does not start with "#version 300 es"`);
   return source.slice(m[0].length);
 }
 
@@ -251,7 +254,7 @@ export class WaterPasses {
             renderer.autoClear = true;
             break;
           }
-          default: throw new WaterPassError(`the client has no pass '${pass}'`);
+          default: throw new WaterGraphError(`the client has no pass '${pass}'`);
         }
       }
       if (!output) this.#present(renderer);

@@ -2,7 +2,7 @@
 // from the description `watergraph scene` writes: its mesh, sun and the runtime's own
 // ES 3.00 shaders, so it is drawn as `watergraph render` draws it.
 import * as THREE from 'three';
-import { checkSceneDescription, createSky, runtimeMaterial, objectClipPlane } from './watergraph-passes.js';
+import { checkSceneDescription, createSky, runtimeMaterial, objectClipPlane, WaterGraphError } from './watergraph-passes.js';
 
 // Loads a scene description (JSON) from `url`.
 export async function loadSceneDescription(url) {
@@ -10,9 +10,9 @@ export async function loadSceneDescription(url) {
   try {
     response = await fetch(url);
   } catch (e) {
-    throw new Error(`cannot load the scene description from ${url}: ${e.message}`);
+    throw new WaterGraphError(`cannot load the scene description from ${url}: ${e.message}`);
   }
-  if (!response.ok) throw new Error(`cannot load the scene description from ${url}: HTTP ${response.status}`);
+  if (!response.ok) throw new WaterGraphError(`cannot load the scene description from ${url}: HTTP ${response.status}`);
   return checkSceneDescription(await response.json());
 }
 
@@ -22,7 +22,7 @@ export async function loadSceneDescription(url) {
 export function createOpaqueScene(description, sunDirection) {
   const m = description.mesh;
   const stride = m.attributes.reduce((n, a) => n + a.components, 0);
-  if (m.vertices.length % stride !== 0) throw new Error('the scene description\'s mesh vertices do not fill whole vertices');
+  if (m.vertices.length % stride !== 0) throw new WaterGraphError('the scene description\'s mesh vertices do not fill whole vertices');
   const interleaved = new THREE.InterleavedBuffer(new Float32Array(m.vertices), stride);
   const geometry = new THREE.BufferGeometry();
   let offset = 0;
@@ -67,7 +67,7 @@ export function createBuiltinScene(description) {
 // THREE.PerspectiveCamera for `aspect`.
 export function presetCamera(description, name, aspect) {
   const c = description.cameras?.[name];
-  if (!c) throw new Error(`the scene description has no camera '${name}'`);
+  if (!c) throw new WaterGraphError(`the scene description has no camera '${name}'`);
   const camera = new THREE.PerspectiveCamera(c.fov_y_degrees, aspect, c.near, c.far);
   camera.position.fromArray(c.position);
   camera.up.fromArray(c.up);

@@ -3,16 +3,9 @@
 // (runtime/renderer.cpp) gives the same shaders, so both draw the same pixels.
 // See README.md beside this file for the API and what is not supported.
 import * as THREE from 'three';
-import { WaterPasses, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
+import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
 
-// Thrown for a manifest this client cannot run (a pass it cannot provide, an unknown
-// builtin uniform or type) and for files that cannot be loaded.
-export class WaterGraphError extends Error {
-  constructor(message) {
-    super(message);
-    this.name = 'WaterGraphError';
-  }
-}
+export { WaterGraphError };
 
 const TWO_PI = 6.283185307179586;
 
