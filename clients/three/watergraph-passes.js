@@ -15,6 +15,10 @@ export class WaterGraphError extends Error {
   }
 }
 
+// The passes render() knows how to run.
+const CLIENT_PASSES = new Set(['environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction', 'opaque_scene',
+  'scene_color_copy', 'deferred_water', 'water_surface']);
+
 // The layer the water's own meshes live on: scene passes leave it out, the water pass
 // draws only it.
 export const WATER_LAYER = 31;
@@ -142,6 +146,10 @@ export class WaterPasses {
     this.environmentScene = environment ?? new THREE.Scene().add(createSky(description));
     this.resources = {};
     this.#createTargets(width, height);
+    // A pass the runtime has and this client does not (a newer description) is refused now,
+    // not at the first frame.
+    const unknown = this.plan.passes.filter((p) => !CLIENT_PASSES.has(p));
+    if (unknown.length) throw new WaterGraphError(`graph '${manifest.graph}' needs passes this client cannot render: ${unknown.join(', ')}`);
     this.deferred = this.plan.passes.includes('deferred_water');
     this.sceneColorCopy = this.plan.passes.includes('scene_color_copy');
   }

@@ -143,4 +143,9 @@ test('with a scene description the client renders the passes and binds their tex
   const mesh = water.createMesh();
   assert.ok(mesh.layers.isEnabled(WATER_LAYER) && mesh.layers.isEnabled(0));
   assert.equal(water.deferred, false);
+  // A pass a newer runtime describes and this client cannot run: refused by name at once.
+  const newer = description();
+  newer.render_passes.splice(1, 0, 'shadow_map');
+  assert.throws(() => new WaterGraph({ ...graph(), manifest: { ...graph().manifest, passes: ['shadow_map', 'water_surface'] },
+    description: newer }), /graph 'three_environment' needs passes this client cannot render: shadow_map/);
 });
