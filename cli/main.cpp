@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   Runner probe = addProbeCommand(app, global);
   Runner check = addCheckCommand(app, global);
   Runner bench = addBenchCommand(app, global);
+  Runner scene = addSceneCommand(app, global);
 
   try {
     app.parse(argc, argv);
@@ -41,6 +42,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("probe")) return probe();
     if (app.got_subcommand("check")) return check();
     if (app.got_subcommand("bench")) return bench();
+    if (app.got_subcommand("scene")) return scene();
   } catch (const std::exception& e) {
     // A bug, not a graph problem: say so plainly rather than crash.
     std::cerr << "watergraph: internal error: " << e.what() << "\n";

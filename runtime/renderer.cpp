@@ -451,9 +451,7 @@ struct Renderer::Impl {
 
   void environmentPass() {
     GpuTarget* t = find(SceneSampler::Environment);
-    static const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-    static const glm::vec3 ups[6] = {{0, -1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, -1, 0}, {0, -1, 0}};
-    glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, 0.1f, 10.0f);
+    glm::mat4 p = glm::perspective(glm::radians(90.0f), 1.0f, kEnvironmentNear, kEnvironmentFar);
     glBindFramebuffer(GL_FRAMEBUFFER, t->fbo.id());
     glViewport(0, 0, t->spec.width, t->spec.height);
     for (int f = 0; f < 6; ++f) {
@@ -461,7 +459,8 @@ struct Renderer::Impl {
                              t->color.id(), 0);
       glClearColor(0, 0, 0, 1);  // what stays there without the scene (drawScene false)
       glClear(GL_COLOR_BUFFER_BIT);
-      drawSky(p * glm::lookAt(glm::vec3(0.0f), dirs[f], ups[f]));
+      const EnvironmentFace& face = environmentFaces()[static_cast<size_t>(f)];
+      drawSky(p * glm::lookAt(glm::vec3(0.0f), face.direction, face.up));
     }
   }
 

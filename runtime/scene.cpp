@@ -187,6 +187,14 @@ Mesh buildSceneMesh() {
   return m;
 }
 
+const std::vector<EnvironmentFace>& environmentFaces() {
+  static const std::vector<EnvironmentFace> faces = {
+      {{1, 0, 0}, {0, -1, 0}}, {{-1, 0, 0}, {0, -1, 0}}, {{0, 1, 0}, {0, 0, 1}},
+      {{0, -1, 0}, {0, 0, -1}}, {{0, 0, 1}, {0, -1, 0}}, {{0, 0, -1}, {0, -1, 0}},
+  };
+  return faces;
+}
+
 Mesh buildWaterGrid(int quadsPerSide) {
   Mesh m;
   m.floatsPerVertex = 8;  // position, normal, uv

@@ -54,6 +54,15 @@ inline constexpr int kSceneMaterialLocation = 3;
 Mesh buildSceneMesh();
 float terrainHeight(float x, float z);  // the floor / shore height field
 
+// The environment_cubemap pass: six 90-degree views from the origin, one per cube face in
+// GL's face order (+x, -x, +y, -y, +z, -z), with GL's up vector for each face, and the
+// projection's near and far planes. Only the sky is drawn into them.
+struct EnvironmentFace {
+  glm::vec3 direction, up;
+};
+const std::vector<EnvironmentFace>& environmentFaces();
+inline constexpr float kEnvironmentNear = 0.1f, kEnvironmentFar = 10.0f;
+
 // Water grid: a_position (0), a_normal (1), a_uv (2) per codegen/shader_interface.h.
 inline constexpr float kWaterHalfSize = 20.0f;
 Mesh buildWaterGrid(int quadsPerSide = 128);

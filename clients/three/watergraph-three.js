@@ -3,15 +3,9 @@
 // (runtime/renderer.cpp) gives the same shaders, so both draw the same pixels.
 // See README.md beside this file for the API and what is not supported.
 import * as THREE from 'three';
+import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
 
-// Thrown for a manifest this client cannot run (a pass it cannot provide, an unknown
-// builtin uniform or type) and for files that cannot be loaded.
-export class WaterGraphError extends Error {
-  constructor(message) {
-    super(message);
-    this.name = 'WaterGraphError';
-  }
-}
+export { WaterGraphError };
 
 const TWO_PI = 6.283185307179586;
 
@@ -22,12 +16,12 @@ export function timePhase(angularFrequency, time) {
   return phase - TWO_PI * Math.floor(phase / TWO_PI);
 }
 
-// The scene resources a manifest may list, the pass that renders each, and the sampler it
-// is bound to (codegen/manifest.cpp, codegen/shader_interface.h). The client renders none
-// of these passes; an application that renders one itself passes the texture in
+// The scene resources a manifest may list and the pass that renders each
+// (codegen/manifest.cpp). Given a scene description (`watergraph scene`), WaterPasses
+// renders them; without one, an application that renders one itself passes the texture in
 // options.resources. `underwater` (deferred water) also changes how the water is drawn (a
-// full-screen pass over a G-buffer), which this client does not do.
-const RESOURCE_PASSES = {
+// full-screen pass over a G-buffer): only WaterPasses does that.
+export const RESOURCE_PASSES = {
   scene_depth: 'depth_prepass',
   scene_color: 'scene_color_copy',
   planar_reflection: 'planar_reflection',
@@ -35,7 +29,7 @@ const RESOURCE_PASSES = {
   environment: 'environment_cubemap',
   underwater: 'deferred_water',
 };
-const NEVER_SUPPORTED = new Set(['underwater']);
+const NEEDS_PASSES = new Set(['underwater']);
 
 // The water grid of runtime/scene.cpp (buildWaterGrid): quadsPerSide^2 quads over a square
 // of 2 * halfSize metres at y = 0, centred on the origin, normal +y, uv (0,0) at
@@ -79,7 +73,7 @@ export function createWaterGridGeometry(quadsPerSide = 128, halfSize = 20) {
 // Attribute name -> item size the grid provides (codegen/shader_interface.h locations).
 const GRID_ATTRIBUTES = { a_position: [0, 3], a_normal: [1, 3], a_uv: [2, 2] };
 
-function checkPasses(manifest, resources) {
+function checkPasses(manifest, resources, hasPasses = false) {
   const passes = manifest.passes;
   if (!Array.isArray(passes) || !passes.includes('water_surface'))
     throw new WaterGraphError(`graph '${manifest.graph}': the manifest has no "passes" list with water_surface`);
@@ -87,13 +81,15 @@ function checkPasses(manifest, resources) {
   for (const resource of manifest.resources ?? []) {
     const pass = RESOURCE_PASSES[resource];
     if (!pass) missing.push(`${resource} (an unknown scene resource)`);
-    else if (NEVER_SUPPORTED.has(resource)) missing.push(`${pass} (resource ${resource}: deferred water is not supported)`);
+    else if (hasPasses) continue;
+    else if (NEEDS_PASSES.has(resource))
+      missing.push(`${pass} (resource ${resource}: deferred water needs the client's passes: give a scene description)`);
     else if (!resources[resource]) missing.push(`${pass} (resource ${resource}: pass it in options.resources)`);
   }
   if (missing.length)
     throw new WaterGraphError(
       `graph '${manifest.graph}' needs render passes the three.js client does not provide: ${missing.join('; ')}. ` +
-        'The client draws only the water_surface pass.');
+        'Without a scene description (`watergraph scene`) the client draws only the water_surface pass.');
 }
 
 // A parameter's manifest default as a THREE value of its type (raw numbers: no colour
@@ -161,10 +157,18 @@ export class WaterGraph {
   // manifest: the parsed <graph>.manifest.json; vertexShader / fragmentShader: the texts of
   // <graph>.es300.vert / .frag; textures: sampler name -> THREE.Texture for every manifest
   // texture with a "source" (loadWaterGraph loads them); resources: scene resource name ->
-  // THREE texture the application renders itself (see RESOURCE_PASSES).
-  constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {} }) {
+  // THREE texture the application renders itself (see RESOURCE_PASSES). description: a
+  // scene description (`watergraph scene`): the client then renders every pass the
+  // manifest lists itself (WaterPasses), and render() draws a frame.
+  constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {}, description = null }) {
     if (!manifest || typeof manifest !== 'object') throw new WaterGraphError('no manifest given');
-    checkPasses(manifest, resources);
+    checkPasses(manifest, resources, description !== null);
+    if (description) {
+      checkSceneDescription(description);
+      this.passes = new WaterPasses(manifest, description, { width: 1, height: 1 });
+      resources = this.passes.resources;
+    }
+    this.meshes = [];
     for (const a of manifest.attributes ?? []) {
       const want = GRID_ATTRIBUTES[a.name];
       if (!want || want[0] !== a.location)
@@ -192,7 +196,9 @@ export class WaterGraph {
         texture = textures[t.name];
         if (!texture) throw new WaterGraphError(`texture ${t.name} (${t.source}) was not given`);
       } else if ('resource' in t) {
-        texture = resources[t.resource];  // checkPasses made sure it is there
+        // By sampler first: the G-buffer's two samplers share the resource `underwater`.
+        texture = resources[t.name] ?? resources[t.resource];  // checkPasses made sure it is there
+        if (!texture) throw new WaterGraphError(`texture ${t.name} (resource ${t.resource}) was not given`);
       } else {
         throw new WaterGraphError(`texture ${t.name} has neither a "source" nor a "resource"`);
       }
@@ -202,11 +208,30 @@ export class WaterGraph {
     }
     const es300 = manifest.targets?.es300;
     if (!es300) throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
+    const vertex = withoutVersionLine(vertexShader, es300.vert), fragment = withoutVersionLine(fragmentShader, es300.frag);
+    this.deferred = this.passes?.deferred === true;
+    if (this.deferred) {
+      // As the runtime: the graph's vertex shader writes the G-buffer (the runtime's
+      // G-buffer fragment shader behind it), and its fragment shader runs full-screen.
+      const shaders = description.shaders;
+      this.gbufferMaterial = new THREE.RawShaderMaterial({
+        name: `watergraph ${manifest.graph} G-buffer`,
+        glslVersion: THREE.GLSL3,
+        vertexShader: vertex,
+        fragmentShader: withoutVersionLine(shaders.water_gbuffer_fragment, 'the description\'s water_gbuffer_fragment'),
+        uniforms: this.uniforms,
+        side: THREE.DoubleSide,
+        depthFunc: THREE.LessEqualDepth,
+      });
+      this.gbufferScene = new THREE.Scene();
+      this.gbufferScene.add(this.#trackedMesh(createWaterGridGeometry(description.water.grid_quads, description.water.half_size),
+        this.gbufferMaterial));
+    }
     this.material = new THREE.RawShaderMaterial({
       name: `watergraph ${manifest.graph}`,
       glslVersion: THREE.GLSL3,
-      vertexShader: withoutVersionLine(vertexShader, es300.vert),
-      fragmentShader: withoutVersionLine(fragmentShader, es300.frag),
+      vertexShader: this.deferred ? withoutVersionLine(description.shaders.fullscreen_vertex, 'the description\'s fullscreen_vertex') : vertex,
+      fragmentShader: fragment,
       uniforms: this.uniforms,
       side: THREE.DoubleSide,  // the runtime draws without face culling
       // The runtime blends by the water's alpha (src alpha, 1 - src alpha) into an opaque frame.
@@ -217,16 +242,18 @@ export class WaterGraph {
       blendDst: THREE.OneMinusSrcAlphaFactor,
       blendSrcAlpha: THREE.OneFactor,
       blendDstAlpha: THREE.OneMinusSrcAlphaFactor,
-      depthTest: true,
-      depthWrite: true,
+      depthTest: !this.deferred,  // the full-screen pass shades every pixel
+      depthWrite: !this.deferred,
       depthFunc: THREE.LessEqualDepth,
     });
+    // The description's sun, which its sky and scene are lit by.
+    if (description && this.builtins.sun_direction)
+      this.uniforms[this.builtins.sun_direction].value.fromArray(description.sun_direction);
   }
 
-  // A mesh of the water grid (or `geometry`) with this material. Its world matrix becomes
-  // u_model and the renderer's drawing-buffer size u_viewport_size at every draw.
-  createMesh(geometry = createWaterGridGeometry()) {
-    const mesh = new THREE.Mesh(geometry, this.material);
+  // A mesh whose world matrix becomes u_model and the drawing-buffer size u_viewport_size.
+  #trackedMesh(geometry, material) {
+    const mesh = new THREE.Mesh(geometry, material);
     mesh.frustumCulled = false;  // displaced waves may leave the flat grid's bounds
     const size = new THREE.Vector2();
     mesh.onBeforeRender = (renderer) => {
@@ -235,9 +262,47 @@ export class WaterGraph {
       this.setViewportSize(size.x, size.y);
       // three.js skips the upload when the previous draw used the same material: several
       // meshes sharing it would all get the first one's u_model.
-      this.material.uniformsNeedUpdate = true;
+      material.uniformsNeedUpdate = true;
     };
     return mesh;
+  }
+
+  // A mesh of the water grid (or `geometry`) with this material. Its world matrix becomes
+  // u_model and the renderer's drawing-buffer size u_viewport_size at every draw.
+  // With deferred water the mesh is a full-screen triangle (the G-buffer has its own grid,
+  // resized by setGridQuads). The mesh is also on WATER_LAYER, which render() draws last.
+  createMesh(geometry = createWaterGridGeometry()) {
+    const mesh = this.#trackedMesh(this.deferred ? fullScreenTriangle() : geometry, this.material);
+    mesh.layers.enable(WATER_LAYER);
+    this.meshes.push(mesh);
+    return mesh;
+  }
+
+  // Deferred water: the G-buffer's grid with `quads` per side (the runtime's --grid).
+  setGridQuads(quads) {
+    if (!this.deferred) return;
+    const mesh = this.gbufferScene.children[0], old = mesh.geometry;
+    mesh.geometry = createWaterGridGeometry(quads, this.passes.description.water.half_size);
+    old.dispose();
+  }
+
+  // One frame into `output` (a render target; null: the canvas): with a scene description,
+  // every pass the manifest lists around `scene` (which holds the water mesh), as the
+  // runtime runs them; without one, plainly renderer.render(scene, camera). Call update()
+  // first.
+  render(renderer, scene, camera, output = null) {
+    if (!this.passes) {
+      renderer.setRenderTarget(output);
+      renderer.render(scene, camera);
+      return;
+    }
+    const size = output ? new THREE.Vector2(output.width, output.height) : renderer.getDrawingBufferSize(new THREE.Vector2());
+    if (size.x !== this.passes.width || size.y !== this.passes.height) {
+      this.passes.setSize(size.x, size.y);
+      for (const t of this.manifest.textures ?? [])
+        if ('resource' in t) this.uniforms[t.name].value = this.passes.resources[t.name] ?? this.passes.resources[t.resource];
+    }
+    this.passes.render(renderer, scene, camera, this, output);
   }
 
   // Sets every time and camera uniform the graph declares. `time` in seconds; `camera` a
@@ -295,6 +360,8 @@ export class WaterGraph {
 
   dispose() {
     this.material.dispose();
+    this.gbufferMaterial?.dispose();
+    this.passes?.dispose();
     for (const t of this.manifest.textures ?? [])
       if ('source' in t) this.uniforms[t.name]?.value?.dispose();
   }
@@ -364,10 +431,10 @@ export async function loadNodeTexture(url, what = url, sampler = undefined) {
 // Loads <graph>.manifest.json from `manifestUrl`, the es300 shaders and the node textures
 // beside it (compile with `--target es300 --textures`), and builds the WaterGraph.
 // options.resources: scene resource textures the application renders (see README.md).
-export async function loadWaterGraph(manifestUrl, { resources = {} } = {}) {
+export async function loadWaterGraph(manifestUrl, { resources = {}, description = null } = {}) {
   const base = new URL(manifestUrl, globalThis.location?.href);
   const manifest = await (await fetchOk(base, 'the manifest')).json();
-  checkPasses(manifest, resources);  // before fetching anything else
+  checkPasses(manifest, resources, description !== null);  // before fetching anything else
   const es300 = manifest.targets?.es300;
   if (!es300?.vert || !es300?.frag)
     throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
@@ -383,5 +450,5 @@ export async function loadWaterGraph(manifestUrl, { resources = {} } = {}) {
       new URL(file, base),
       `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``, t.sampler);
   }
-  return new WaterGraph({ manifest, vertexShader, fragmentShader, textures, resources });
+  return new WaterGraph({ manifest, vertexShader, fragmentShader, textures, resources, description });
 }

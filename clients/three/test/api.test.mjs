@@ -1,13 +1,14 @@
 // Checks of the client's API that need no browser (node --test). WG_THREE_FIXTURES names
 // a folder with three_environment.{manifest.json,es300.vert,es300.frag} compiled from
-// tests/ecosystem/data/three_environment.json; tests/ecosystem/three_client_test.cpp
-// compiles it and runs this file.
+// tests/ecosystem/data/three_environment.json and scene.json from `watergraph scene`;
+// tests/ecosystem/three_client_test.cpp writes them and runs this file.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import path from 'node:path';
 import * as THREE from 'three';
-import { WaterGraph, WaterGraphError, timePhase, createWaterGridGeometry, applySamplerState, sunFromAngles } from '../watergraph-three.js';
+import { WaterGraph, WaterGraphError, timePhase, createWaterGridGeometry, applySamplerState, sunFromAngles, RESOURCE_PASSES } from '../watergraph-three.js';
+import { planPasses, WATER_LAYER } from '../watergraph-passes.js';
 
 const dir = process.env.WG_THREE_FIXTURES;
 const graph = () => {
@@ -20,7 +21,9 @@ const graph = () => {
   };
 };
 
-test('a pass the client does not render is an error naming it', () => {
+const description = () => JSON.parse(readFileSync(path.join(dir, 'scene.json'), 'utf8'));
+
+test('without a scene description, a pass the client does not render is an error naming it', () => {
   assert.throws(() => new WaterGraph(graph()), (e) => e instanceof WaterGraphError &&
     e.message.includes("graph 'three_environment' needs render passes the three.js client does not provide: " +
       'environment_cubemap (resource environment: pass it in options.resources)'));
@@ -96,4 +99,53 @@ test('a manifest texture\'s sampler state sets wrap, filters, mipmaps and colour
   assert.equal(near.colorSpace, THREE.NoColorSpace);
   assert.throws(() => applySamplerState(new THREE.Texture(), { wrap: 'border', filter: 'linear', color_space: 'srgb' }),
     (e) => e instanceof WaterGraphError && e.message.includes('unknown sampler state'));
+});
+
+test("the passes and render targets follow the runtime's planner (runtime/pass_plan.cpp)", () => {
+  const all = ['environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction', 'scene_color_copy',
+    'deferred_water', 'water_surface'];
+  const plan = planPasses({ graph: 'all', passes: [...all].reverse() }, description(),
+    { width: 320, height: 180, environmentSize: 64 });
+  // Execution order whatever the manifest's, the opaque scene always.
+  assert.deepEqual(plan.passes, ['environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction',
+    'opaque_scene', 'scene_color_copy', 'deferred_water', 'water_surface']);
+  assert.deepEqual(plan.targets.map((t) => [t.name, t.width, t.height, t.color, t.depth]), [
+    ['frame', 320, 180, 'rgba8', true],
+    ['environment', 64, 64, 'rgba8', false],
+    ['scene_depth', 320, 180, null, true],
+    ['reflection', 320, 180, 'rgba8', true],
+    ['refraction', 320, 180, 'rgba8', true],
+    ['scene_color', 320, 180, 'rgba8', false],
+    ['water_normal', 320, 180, 'rgba32f', false],
+    ['water_position', 320, 180, 'rgba32f', true],
+  ]);
+  // Only what is listed.
+  const lake = planPasses({ graph: 'lake', passes: ['water_surface'] }, description(), { width: 8, height: 8, environmentSize: 4 });
+  assert.deepEqual(lake.passes, ['opaque_scene', 'water_surface']);
+  assert.deepEqual(lake.targets.map((t) => t.name), ['frame']);
+  assert.throws(() => planPasses({ graph: 'x', passes: ['water_surface', 'shadow_map'] }, description(),
+    { width: 8, height: 8, environmentSize: 4 }), /graph 'x' lists an unknown pass 'shadow_map'/);
+  assert.throws(() => planPasses({ graph: 'x', passes: ['depth_prepass'] }, description(),
+    { width: 8, height: 8, environmentSize: 4 }), /lacks water_surface/);
+});
+
+test("the client's resource -> pass table is the runtime's", () => {
+  const runtime = Object.fromEntries(description().render_targets.map((t) => [t.resource, t.pass]));
+  assert.deepEqual(RESOURCE_PASSES, runtime);
+});
+
+test('with a scene description the client renders the passes and binds their textures', () => {
+  const water = new WaterGraph({ ...graph(), description: description() });
+  assert.deepEqual(water.passes.plan.passes, ['environment_cubemap', 'opaque_scene', 'water_surface']);
+  const env = water.uniforms.u_environment.value;
+  assert.ok(env.isCubeTexture && env.isRenderTargetTexture, 'u_environment is the environment pass\'s cube');
+  assert.equal(water.passes.targets.environment.target.width, description().environment.size);
+  const mesh = water.createMesh();
+  assert.ok(mesh.layers.isEnabled(WATER_LAYER) && mesh.layers.isEnabled(0));
+  assert.equal(water.deferred, false);
+  // A pass a newer runtime describes and this client cannot run: refused by name at once.
+  const newer = description();
+  newer.render_passes.splice(1, 0, 'shadow_map');
+  assert.throws(() => new WaterGraph({ ...graph(), manifest: { ...graph().manifest, passes: ['shadow_map', 'water_surface'] },
+    description: newer }), /graph 'three_environment' needs passes this client cannot render: shadow_map/);
 });

@@ -1,7 +1,11 @@
-// The page's script: one frame of a graph over opaque black, as `watergraph render
-// --scene none` draws it. Reports through window.wgResult for render_graph.mjs.
+// The page's script: one frame of a graph, as `watergraph render` draws it. Without a
+// description, the water alone over opaque black (`--scene none`) with the client drawing
+// only water_surface; with `description` (a `watergraph scene` file), every pass the
+// manifest lists, and with `builtin=1` the built-in scene around the water. Reports
+// through window.wgResult for render_graph.mjs.
 import * as THREE from 'three';
 import { loadWaterGraph, createWaterGridGeometry } from '../watergraph-three.js';
+import { loadSceneDescription, createBuiltinScene } from '../watergraph-scene.js';
 
 const q = new URLSearchParams(location.search);
 const vec = (name) => q.get(name).split(',').map(Number);
@@ -19,11 +23,15 @@ async function main() {
   camera.up.set(...vec('up'));
   camera.lookAt(...vec('target'));
 
-  const water = await loadWaterGraph(q.get('manifest'));
+  const description = q.get('description') ? await loadSceneDescription(q.get('description')) : null;
+  const water = await loadWaterGraph(q.get('manifest'), { description });
+  const grid = Number(q.get('grid'));
+  water.setGridQuads(grid);
   const scene = new THREE.Scene();
-  scene.add(water.createMesh(createWaterGridGeometry(Number(q.get('grid')))));
+  if (q.get('builtin') === '1') scene.add(createBuiltinScene(description));
+  scene.add(water.createMesh(createWaterGridGeometry(grid)));
   water.update(Number(q.get('time')), camera);
-  renderer.render(scene, camera);
+  water.render(renderer, scene, camera);
   const gl = renderer.getContext();
   return { renderer: gl.getParameter(gl.getExtension('WEBGL_debug_renderer_info')?.UNMASKED_RENDERER_WEBGL ?? gl.RENDERER) };
 }

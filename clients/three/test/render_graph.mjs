@@ -1,14 +1,20 @@
-// Renders one compiled graph with the three.js client in headless Chromium and writes a
-// screenshot of the canvas. Serves this client folder (module, page, node_modules/three)
-// and the compiled graph's folder from a throw-away HTTP server on 127.0.0.1 (a free port);
-// nothing is fetched from elsewhere. Used by tests/ecosystem/three_client_test.cpp.
+// Renders compiled graphs with the three.js client in headless Chromium and writes a
+// screenshot of the canvas for each. Serves this client folder (modules, page,
+// node_modules/three), each compiled graph's folder and the scene description from a
+// throw-away HTTP server on 127.0.0.1 (a free port); nothing is fetched from elsewhere.
+// One browser renders every job. Used by tests/ecosystem/three_client_test.cpp.
 //
 //   node render_graph.mjs --dir OUT --manifest lake.manifest.json --size 320x180 \
 //     --eye=14,7,-12 --target=-4,-1.5,4 --up=0,1,0 --fov 55 --near 0.1 --far 200 \
-//     --time 3.5 --grid 128 --screenshot three.png [--chromium /usr/bin/chromium]
+//     --time 3.5 --grid 128 --screenshot three.png [--description scene.json [--builtin]] \
+//     [--chromium /usr/bin/chromium]
+//   node render_graph.mjs --batch jobs.json [--description scene.json] [--chromium ...]
 //
-// Exit status: 0 written; 1 the page failed (message on stderr); 2 usage or environment
-// (no Chromium, no playwright-core).
+// --description: a `watergraph scene` file; the client then runs every pass the manifest
+// lists, and --builtin draws the built-in scene around the water. --batch: a JSON array of
+// jobs, each an object with the single-job options as keys ("dir", "manifest", ...,
+// "builtin": true). Exit status: 0 all written; 1 a page failed (message on stderr; the
+// other jobs still run); 2 usage or environment (no Chromium, no playwright-core).
 import { createServer } from 'node:http';
 import { readFile, access } from 'node:fs/promises';
 import { constants } from 'node:fs';
@@ -23,21 +29,36 @@ function fail(code, message) {
   process.exit(code);
 }
 
+const JOB_KEYS = ['dir', 'manifest', 'size', 'eye', 'target', 'up', 'fov', 'near', 'far', 'time', 'grid', 'screenshot'];
 let args;
 try {
   ({ values: args } = parseArgs({
-    options: Object.fromEntries(
-      ['dir', 'manifest', 'size', 'eye', 'target', 'up', 'fov', 'near', 'far', 'time', 'grid', 'screenshot', 'chromium']
-        .map((k) => [k, { type: 'string' }])),
+    options: {
+      ...Object.fromEntries([...JOB_KEYS, 'chromium', 'batch', 'description'].map((k) => [k, { type: 'string' }])),
+      builtin: { type: 'boolean' },
+    },
   }));
 } catch (e) {
   fail(2, e.message);
 }
-for (const k of ['dir', 'manifest', 'size', 'eye', 'target', 'up', 'fov', 'near', 'far', 'time', 'grid', 'screenshot'])
-  if (args[k] === undefined) fail(2, `missing --${k}`);
-const size = /^(\d+)x(\d+)$/.exec(args.size);
-if (!size) fail(2, `--size must be WIDTHxHEIGHT (got '${args.size}')`);
-const [width, height] = [Number(size[1]), Number(size[2])];
+let jobs;
+if (args.batch) {
+  try {
+    jobs = JSON.parse(await readFile(args.batch, 'utf8'));
+  } catch (e) {
+    fail(2, `cannot read --batch ${args.batch}: ${e.message}`);
+  }
+  if (!Array.isArray(jobs) || jobs.length === 0) fail(2, `--batch ${args.batch} must hold a non-empty JSON array of jobs`);
+} else {
+  jobs = [{ ...args }];
+}
+jobs.forEach((job, i) => {
+  for (const k of JOB_KEYS) if (job[k] === undefined) fail(2, `missing --${k}${args.batch ? ` in job ${i}` : ''}`);
+  const size = /^(\d+)x(\d+)$/.exec(job.size);
+  if (!size) fail(2, `--size must be WIDTHxHEIGHT (got '${job.size}')`);
+  [job.width, job.height] = [Number(size[1]), Number(size[2])];
+  if (job.builtin && !args.description) fail(2, '--builtin needs --description (a `watergraph scene` file)');
+});
 const chromiumPath = args.chromium ?? '/usr/bin/chromium';
 try {
   await access(chromiumPath, constants.X_OK);
@@ -53,9 +74,13 @@ try {
 
 const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json',
   '.png': 'image/png' };
-const roots = { '/client/': clientDir, '/out/': path.resolve(args.dir) };
 
-// Static files under the two roots; anything else (or outside them) is a 404.
+// /client/: this folder; /out<i>/: job i's compiled graph; /scene/: the description's folder.
+const roots = { '/client/': clientDir };
+jobs.forEach((job, i) => { roots[`/out${i}/`] = path.resolve(job.dir); });
+if (args.description) roots['/scene/'] = path.dirname(path.resolve(args.description));
+
+// Static files under the roots; anything else (or outside them) is a 404.
 const server = createServer(async (req, res) => {
   const url = new URL(req.url, 'http://127.0.0.1');
   const prefix = Object.keys(roots).find((p) => url.pathname.startsWith(p));
@@ -75,10 +100,6 @@ const server = createServer(async (req, res) => {
 await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
 const origin = `http://127.0.0.1:${server.address().port}`;
 
-const query = new URLSearchParams({
-  manifest: `/out/${args.manifest}`, width, height, eye: args.eye, target: args.target, up: args.up,
-  fov: args.fov, near: args.near, far: args.far, time: args.time, grid: args.grid,
-});
 // WebGL 2 without a GPU: ANGLE on SwiftShader (Chromium ships it).
 const browser = await chromium.launch({
   executablePath: chromiumPath,
@@ -87,25 +108,37 @@ const browser = await chromium.launch({
 }).catch((e) => fail(2, `cannot start Chromium at ${chromiumPath}: ${e.message}`));
 let code = 0;
 try {
-  const page = await browser.newPage({ viewport: { width, height }, deviceScaleFactor: 1 });
-  const problems = [];
-  page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
-  page.on('pageerror', (e) => problems.push(e.message));
-  page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
-  await page.goto(`${origin}/client/test/render.html?${query}`);
-  await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 30000 });
-  const result = await page.evaluate(() => window.wgResult);
-  if (!result.ok) problems.unshift(result.error);
-  if (problems.length) {
-    process.stderr.write(`render_graph: the page failed:\n  ${problems.join('\n  ')}\n`);
-    code = 1;
-  } else {
-    await page.locator('canvas').screenshot({ path: args.screenshot });
-    process.stdout.write(`render_graph: ${args.manifest} ${width}x${height} on ${result.renderer} -> ${args.screenshot}\n`);
+  for (const [i, job] of jobs.entries()) {
+    const query = new URLSearchParams({
+      manifest: `/out${i}/${job.manifest}`, width: job.width, height: job.height, eye: job.eye, target: job.target,
+      up: job.up, fov: job.fov, near: job.near, far: job.far, time: job.time, grid: job.grid,
+    });
+    if (args.description) query.set('description', `/scene/${path.basename(args.description)}`);
+    if (job.builtin) query.set('builtin', '1');
+    const page = await browser.newPage({ viewport: { width: job.width, height: job.height }, deviceScaleFactor: 1 });
+    const problems = [];
+    page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
+    page.on('pageerror', (e) => problems.push(e.message));
+    page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
+    try {
+      await page.goto(`${origin}/client/test/render.html?${query}`);
+      await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 30000 });
+      const result = await page.evaluate(() => window.wgResult);
+      if (!result.ok) problems.unshift(result.error);
+      if (problems.length) {
+        process.stderr.write(`render_graph: ${job.manifest}: the page failed:\n  ${problems.join('\n  ')}\n`);
+        code = 1;
+      } else {
+        await page.locator('canvas').screenshot({ path: job.screenshot });
+        process.stdout.write(`render_graph: ${job.manifest} ${job.width}x${job.height} on ${result.renderer} -> ${job.screenshot}\n`);
+      }
+    } catch (e) {
+      process.stderr.write(`render_graph: ${job.manifest}: ${e.message}\n`);
+      code = 1;
+    } finally {
+      await page.close();
+    }
   }
-} catch (e) {
-  process.stderr.write(`render_graph: ${e.message}\n`);
-  code = 1;
 } finally {
   await browser.close();
   server.close();

@@ -1,0 +1,77 @@
+// The runtime's built-in scene (sky, pool floor, shore, pillars, rocks) in three.js, built
+// from the description `watergraph scene` writes: its mesh, sun and the runtime's own
+// ES 3.00 shaders, so it is drawn as `watergraph render` draws it.
+import * as THREE from 'three';
+import { checkSceneDescription, createSky, runtimeMaterial, objectClipPlane, WaterGraphError } from './watergraph-passes.js';
+
+// Loads a scene description (JSON) from `url`.
+export async function loadSceneDescription(url) {
+  let response;
+  try {
+    response = await fetch(url);
+  } catch (e) {
+    throw new WaterGraphError(`cannot load the scene description from ${url}: ${e.message}`);
+  }
+  if (!response.ok) throw new WaterGraphError(`cannot load the scene description from ${url}: HTTP ${response.status}`);
+  return checkSceneDescription(await response.json());
+}
+
+// The opaque scene mesh with the runtime's lit shader. Its clip plane is the renderer's
+// first clipping plane (the passes set it for reflection and refraction), in the mesh's
+// own space, as the runtime's u_clip_plane.
+export function createOpaqueScene(description, sunDirection) {
+  const m = description.mesh;
+  const stride = m.attributes.reduce((n, a) => n + a.components, 0);
+  if (m.vertices.length % stride !== 0) throw new WaterGraphError('the scene description\'s mesh vertices do not fill whole vertices');
+  const interleaved = new THREE.InterleavedBuffer(new Float32Array(m.vertices), stride);
+  const geometry = new THREE.BufferGeometry();
+  let offset = 0;
+  for (const a of m.attributes) {
+    geometry.setAttribute(a.name, new THREE.InterleavedBufferAttribute(interleaved, a.components, offset));
+    offset += a.components;
+  }
+  geometry.setIndex(new THREE.BufferAttribute(new Uint32Array(m.indices), 1));
+  // Positions are not in "position", which three.js bounds by: the mesh is never culled,
+  // and this sphere only orders it among opaque objects.
+  geometry.boundingSphere = new THREE.Sphere(new THREE.Vector3(), 60);
+  const uniforms = {
+    u_view_projection: { value: new THREE.Matrix4() },
+    u_clip_plane: { value: new THREE.Vector4(0, 0, 0, 1) },
+    u_sun_direction: { value: sunDirection },
+  };
+  const mesh = new THREE.Mesh(geometry, runtimeMaterial(description, 'opaque_vertex', 'opaque_fragment', uniforms));
+  mesh.name = 'watergraph opaque scene';
+  mesh.frustumCulled = false;
+  mesh.onBeforeRender = (renderer, scene, camera) => {
+    // The shader has no model matrix: the world matrix goes into the view-projection.
+    uniforms.u_view_projection.value.multiplyMatrices(camera.projectionMatrix, camera.matrixWorldInverse).multiply(mesh.matrixWorld);
+    objectClipPlane(renderer, mesh, uniforms.u_clip_plane.value);
+    mesh.material.uniformsNeedUpdate = true;
+  };
+  return mesh;
+}
+
+// The whole built-in scene as one group (add it to your scene): the opaque mesh and the
+// sky. group.userData.sunDirection is the sun both read; set it to move the sun.
+export function createBuiltinScene(description) {
+  checkSceneDescription(description);
+  const sun = new THREE.Vector3().fromArray(description.sun_direction);
+  const group = new THREE.Group();
+  group.name = 'watergraph built-in scene';
+  group.add(createOpaqueScene(description, sun), createSky(description, sun));
+  group.userData.sunDirection = sun;
+  return group;
+}
+
+// A camera preset of the description ("above", "grazing", "underwater", "topdown") as a
+// THREE.PerspectiveCamera for `aspect`.
+export function presetCamera(description, name, aspect) {
+  const c = description.cameras?.[name];
+  if (!c) throw new WaterGraphError(`the scene description has no camera '${name}'`);
+  const camera = new THREE.PerspectiveCamera(c.fov_y_degrees, aspect, c.near, c.far);
+  camera.position.fromArray(c.position);
+  camera.up.fromArray(c.up);
+  camera.lookAt(new THREE.Vector3().fromArray(c.target));
+  camera.updateMatrixWorld();
+  return camera;
+}

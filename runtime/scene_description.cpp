@@ -1,0 +1,74 @@
+#include "runtime/scene_description.h"
+
+#include <nlohmann/json.hpp>
+
+#include "core/interface_tables.h"
+#include "runtime/renderer.h"
+
+namespace wg::rt {
+namespace {
+
+using nlohmann::json;
+
+// Floats go in as their exact doubles, so a reader gets every bit back.
+json vec3(const glm::vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+json camera(const Camera& c) {
+  return {{"position", vec3(c.position)}, {"target", vec3(c.target)}, {"up", vec3(c.up())},
+          {"fov_y_degrees", c.fovYDegrees}, {"near", c.nearPlane}, {"far", c.farPlane}};
+}
+
+const char* colorName(TargetColor c) {
+  switch (c) {
+    case TargetColor::None: return "none";
+    case TargetColor::FrameFormat: return "frame";
+    case TargetColor::Float32: return "float32";
+  }
+  return "none";
+}
+
+}  // namespace
+
+std::string sceneDescriptionJson(const SceneOptions& options) {
+  json d;
+  d["format"] = kSceneDescriptionFormat;
+  for (const auto& name : cameraPresetNames()) d["cameras"][name] = camera(*cameraPreset(name));
+  d["sun_direction"] = vec3(sunDirection(options));
+  // Every pass clears its colour to opaque black before drawing (renderer.cpp bindTarget).
+  d["clear_color"] = json::array({0.0, 0.0, 0.0, 1.0});
+
+  json faces = json::array();
+  for (const EnvironmentFace& f : environmentFaces()) faces.push_back({{"direction", vec3(f.direction)}, {"up", vec3(f.up)}});
+  d["environment"] = {{"faces", faces}, {"fov_y_degrees", 90.0}, {"near", kEnvironmentNear}, {"far", kEnvironmentFar},
+                      {"size", RenderSettings{}.environmentSize}};
+  d["water"] = {{"grid_quads", RenderSettings{}.waterGridQuads}, {"half_size", kWaterHalfSize}};
+
+  const Mesh mesh = buildSceneMesh();
+  d["mesh"] = {{"attributes", json::array({{{"name", "a_position"}, {"location", 0}, {"components", 3}},
+                                           {{"name", "a_normal"}, {"location", 1}, {"components", 3}},
+                                           {{"name", "a_material"}, {"location", kSceneMaterialLocation}, {"components", 1}}})},
+               {"vertices", mesh.vertices},
+               {"indices", mesh.indices}};
+
+  // The pass planner's inputs (runtime/pass_plan.cpp): passes in execution order, and per
+  // scene sampler its render target, the pass and resource that make it and its format
+  // ("frame": the frame's colour format; "float32": RGBA32F; "none": depth only).
+  json passes = json::array(), targets = json::array();
+  for (const auto& pass : renderPassTable()) passes.push_back(pass.name);
+  for (const auto& row : sceneSamplerTable()) {
+    const SceneResourceRow& resource = sceneResourceRow(row.resource);
+    targets.push_back({{"sampler", row.glslName}, {"target", row.target}, {"resource", resource.name},
+                       {"pass", renderPassRow(resource.pass).name}, {"color", colorName(row.color)},
+                       {"depth", row.depth}, {"cube", row.type == Type::SamplerCube}});
+  }
+  d["render_passes"] = passes;
+  d["render_targets"] = targets;
+
+  const SceneShaderSources s = sceneShaderSources(true);
+  d["shaders"] = {{"sky_vertex", s.skyVertex},           {"sky_fragment", s.skyFragment},
+                  {"opaque_vertex", s.opaqueVertex},     {"opaque_fragment", s.opaqueFragment},
+                  {"fullscreen_vertex", s.fullscreenVertex}, {"water_gbuffer_fragment", s.waterGbufferFragment}};
+  return d.dump() + "\n";
+}
+
+}  // namespace wg::rt
