@@ -22,7 +22,6 @@
 namespace wg::rt {
 namespace {
 
-[[noreturn]] void manifestError(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
 
 // One render target: colour and/or depth textures and the framebuffer drawing into them.
 struct GpuTarget {

@@ -37,4 +37,9 @@ class TextureLoadError : public RuntimeError {
   std::string source_, why_;
 };
 
+// The manifest asks for something the runtime cannot do (the GL and Vulkan renderers).
+[[noreturn]] inline void manifestError(const std::string& message) {
+  throw RuntimeError(RuntimeError::Kind::Manifest, message);
+}
+
 }  // namespace wg::rt

@@ -26,8 +26,6 @@ glm::mat4 vulkanDepthRangeCorrection() {
 
 namespace {
 
-[[noreturn]] void manifestError(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
-
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 VkFormat colorFormat(ColorFormat f) {
@@ -47,10 +45,15 @@ struct OpaqueConstants {
 constexpr uint32_t kPushConstantBytes = sizeof(OpaqueConstants);
 static_assert(sizeof(SkyConstants) <= kPushConstantBytes && kPushConstantBytes <= 128, "within every device's push constants");
 
+}  // namespace
+
+// Outside the anonymous namespace: VkRenderer::Impl, declared in a header, holds two.
 struct VkMesh {
   VkBufferOwner vertices, indices;
   uint32_t indexCount = 0;
 };
+
+namespace {
 
 VkMesh uploadMesh(VkContext& context, const Mesh& m) {
   VkMesh g;

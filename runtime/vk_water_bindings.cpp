@@ -11,8 +11,6 @@
 namespace wg::rt {
 namespace {
 
-[[noreturn]] void manifestError(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
-
 VkSamplerAddressMode addressMode(TextureWrap w) {
   switch (w) {
     case TextureWrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
