@@ -13,7 +13,7 @@ packages=(
   python3-jsonschema  # tests/ecosystem: a real JSON Schema validator for docs/watergraph.schema.json
   chromium  # tests/ecosystem: renders clients/three/ (three.js, WebGL 2) headless for the comparison
   gnuplot-nox  # watergraph bench --plot: the cost-against-error plot
-  # The Vulkan runtime (render/probe/check --target vk450): the loader and headers, lavapipe
+  # The Vulkan runtime (render --target vk450): the loader and headers, lavapipe
   # (Vulkan 1.3 on llvmpipe, headless), and the Khronos validation layer its tests run under
   # (a missing layer fails those tests; they never skip).
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers
