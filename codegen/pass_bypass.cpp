@@ -19,10 +19,7 @@ PassResult bypassPass(Program& program, PassContext&) {
   bool changed = false;
   for (size_t i = 0; i < n; ++i) {
     Op& op = program.ops[i];
-    // An input may come from an op bypassed before this one (ops are in topological order).
-    for (auto& in : op.inputs)
-      if (in.kind == ValueRef::Kind::Op && !replace[static_cast<size_t>(in.index)].empty())
-        in = replace[static_cast<size_t>(in.index)][static_cast<size_t>(in.port)];
+    forwardReplacedInputs(op, replace);
     if (!bypassed(op)) continue;
     for (const auto& out : op.spec->outputs) {
       for (const auto& b : op.spec->bypass) {

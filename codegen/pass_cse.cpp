@@ -82,9 +82,7 @@ PassResult csePass(Program& program, PassContext&) {
   bool changed = false;
   for (size_t i = 0; i < n; ++i) {
     Op& op = program.ops[i];
-    for (auto& in : op.inputs)
-      if (in.kind == ValueRef::Kind::Op && !replace[static_cast<size_t>(in.index)].empty())
-        in = replace[static_cast<size_t>(in.index)][static_cast<size_t>(in.port)];
+    forwardReplacedInputs(op, replace);
     hashes[i] = computationHash(op);
     auto [it, inserted] = seen.insert(static_cast<int>(i));
     if (inserted) continue;

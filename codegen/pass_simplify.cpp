@@ -12,9 +12,7 @@ PassResult simplifyPass(Program& program, PassContext&) {
   bool changed = false;
   for (size_t i = 0; i < n; ++i) {
     Op& op = program.ops[i];
-    for (auto& in : op.inputs)
-      if (in.kind == ValueRef::Kind::Op && !replace[static_cast<size_t>(in.index)].empty())
-        in = replace[static_cast<size_t>(in.index)][static_cast<size_t>(in.port)];
+    forwardReplacedInputs(op, replace);
     if (!op.spec->identity || op.outputTypes.size() != 1) continue;
     std::vector<std::optional<Value>> constants;
     for (const auto& in : op.inputs)

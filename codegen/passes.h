@@ -49,6 +49,9 @@ bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks = 
 // keeps the reference), then drops ops whose `keep` is false, renumbering the rest.
 void rewriteProgram(Program& program, const std::vector<std::vector<ValueRef>>& replace,
                     const std::vector<bool>& keep);
+// Points `op`'s inputs that read an op already replaced in `replace` (earlier in
+// topological order) at its replacement: the passes that replace as they go call it first.
+void forwardReplacedInputs(Op& op, const std::vector<std::vector<ValueRef>>& replace);
 // For each op, whether some output reaches it.
 std::vector<bool> reachableOps(const Program& program);
 

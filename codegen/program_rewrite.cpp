@@ -16,6 +16,12 @@ std::vector<bool> reachableOps(const Program& program) {
   return live;
 }
 
+void forwardReplacedInputs(Op& op, const std::vector<std::vector<ValueRef>>& replace) {
+  for (auto& in : op.inputs)
+    if (in.kind == ValueRef::Kind::Op && !replace[static_cast<size_t>(in.index)].empty())
+      in = replace[static_cast<size_t>(in.index)][static_cast<size_t>(in.port)];
+}
+
 void rewriteProgram(Program& program, const std::vector<std::vector<ValueRef>>& replace,
                     const std::vector<bool>& keep) {
   std::vector<int> newIndex(program.ops.size(), -1);

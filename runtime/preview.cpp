@@ -84,12 +84,7 @@ Preview renderPreview(const CompileResult& result, Target target, const RenderSe
   p.version = context->version();
   {
     Renderer renderer(result.manifest, std::move(shaders), settings, context->isEs(), textureOrigins(result));
-    if (warmup) p.warmupMs = renderer.renderFrame();
-    for (int i = 0; i < std::max(frames, 1); ++i) p.frameMs.push_back(renderer.renderFrame());
-    p.image = settings.floatColor ? renderer.readRgba32f() : renderer.readRgba8();
-    p.plan = renderer.plan();
-    p.targetCount = renderer.createdTargetCount();
-    p.targetBytes = renderer.createdTargetBytes();
+    p.measure(renderer, settings, frames, warmup);
   }  // GL objects go before the context
   return p;
 }

@@ -38,6 +38,18 @@ struct Preview {
   std::string version;          // GL_VERSION
 
   double medianMs() const;
+
+  // Renders `frames` frames (after an untimed one with `warmup`) with a GL or Vulkan
+  // renderer and keeps the last image, the plan and the targets it created.
+  template <class AnyRenderer>
+  void measure(AnyRenderer& r, const RenderSettings& settings, int frames, bool warmup) {
+    if (warmup) warmupMs = r.renderFrame();
+    for (int i = 0; i < (frames > 1 ? frames : 1); ++i) frameMs.push_back(r.renderFrame());
+    image = settings.floatColor ? r.readRgba32f() : r.readRgba8();
+    plan = r.plan();
+    targetCount = r.createdTargetCount();
+    targetBytes = r.createdTargetBytes();
+  }
 };
 
 // Throws RuntimeError (see runtime_error.h for the kinds). With `warmup`, one frame is

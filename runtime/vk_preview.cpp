@@ -38,12 +38,7 @@ Preview renderVulkanPreview(const CompileResult& result, const RenderSettings& s
   p.version = "Vulkan " + context->apiVersion();
   {
     VkRenderer renderer(*context, result.manifest, std::move(water), settings, textureOrigins(result));
-    if (warmup) p.warmupMs = renderer.renderFrame();
-    for (int i = 0; i < std::max(frames, 1); ++i) p.frameMs.push_back(renderer.renderFrame());
-    p.image = settings.floatColor ? renderer.readRgba32f() : renderer.readRgba8();
-    p.plan = renderer.plan();
-    p.targetCount = renderer.createdTargetCount();
-    p.targetBytes = renderer.createdTargetBytes();
+    p.measure(renderer, settings, frames, warmup);
   }  // Vulkan objects go before the device
   context->throwOnValidationMessages("destroying the renderer");
   return p;
