@@ -17,9 +17,21 @@ double secondsSince(std::chrono::steady_clock::time_point t0) {
 }
 
 namespace {
-// Mesa's shader disk cache would make GL tests depend on earlier runs: off for every test
-// process, before main (TOOLCHAIN.md).
-const bool kMesaCacheDisabled = setenv("MESA_SHADER_CACHE_DISABLE", "true", 0) == 0;
+// Mesa's shader disk cache, set before main for the test process and every program it
+// starts: never the user's (~/.cache), so no test depends on what ran outside this build,
+// but the build tree's own, so the many tests that compile the same example graphs pay
+// llvmpipe's LLVM compile once per shader instead of once per process (most of the GL
+// tests' time). `make test` and scripts/sanitize.sh empty it first, so a run depends only
+// on itself; an entry is keyed by the shader and the driver's build, so a hit runs the same
+// code. A caller's own MESA_SHADER_CACHE_DIR or _DISABLE is kept.
+const bool kMesaCacheInBuildTree = [] {
+  if (std::getenv("MESA_SHADER_CACHE_DIR") || std::getenv("MESA_SHADER_CACHE_DISABLE")) return false;
+  std::error_code ec;
+  auto self = std::filesystem::read_symlink("/proc/self/exe", ec);  // build-dir/bin/wg_test_*
+  if (ec) return setenv("MESA_SHADER_CACHE_DISABLE", "true", 1) == 0;
+  auto dir = self.parent_path().parent_path() / "mesa-shader-cache";
+  return setenv("MESA_SHADER_CACHE_DIR", dir.c_str(), 1) == 0;
+}();
 }  // namespace
 
 std::string sourceDir() {

@@ -12,7 +12,7 @@ std::string editorBinary() {
 
 EditorRun runEditorProgram(const std::string& dir, const std::string& args, const std::string& window) {
   EditorRun r;
-  std::string cmd = "MESA_SHADER_CACHE_DISABLE=true xvfb-run -a -f " + shellQuote(dir + "/Xauthority") +
+  std::string cmd = "xvfb-run -a -f " + shellQuote(dir + "/Xauthority") +
                     " -s '-screen 0 1280x1024x24' " + shellQuote(editorBinary()) + " --size " + window +
                     " --preview-size 320x180 " + args;
   r.status = runCommandSplit(cmd, &r.out, &r.err);
