@@ -203,6 +203,66 @@ TEST_F(ThreeClient, EveryExampleGraphMatchesTheRuntimeInTheBuiltInScene) {
   }
 }
 
+// Pixels made red by adding the box: red up by more than 40 of 255 and more than green and
+// blue went up (the water and scene around it are blue, grey and sand).
+int reddenedPixels(const rt::Image& without, const rt::Image& with) {
+  int count = 0;
+  for (size_t p = 0; p + 3 < with.rgba8.size() && p + 3 < without.rgba8.size(); p += 4) {
+    int dr = with.rgba8[p] - without.rgba8[p], dg = with.rgba8[p + 1] - without.rgba8[p + 1],
+        db = with.rgba8[p + 2] - without.rgba8[p + 2];
+    count += dr > 40 && dr - std::max(dg, db) > 40 ? 1 : 0;
+  }
+  return count;
+}
+
+// A user's own three.js object in the scene the client's passes draw: classic_webgl
+// (planar reflection and refraction, clip planes, opaque water over them) from the `above`
+// camera, with an unlit red cube added to the page's scene. Above the water and above the
+// camera's view (35 degrees over the view axis; the frustum ends at 27.5), the cube can turn
+// the frame red only through the reflection pass; under the water, only through the
+// refraction pass (its top 0.1 under the flat surface), since the opaque water is drawn
+// over it. A pass that drew only the built-in scene, or clipped the user's objects on the
+// wrong side, leaves no red pixel.
+TEST_F(ThreeClient, AUsersOwnObjectIsReflectedAndRefracted) {
+  TempDir dir("wg_three_");
+  const std::string description = dir / "scene.json";
+  CmdResult s = wgRun("scene -o " + test::shellQuote(description));
+  ASSERT_EQ(s.exit, 0) << s.err;
+  const std::string out = dir / "classic_webgl";
+  CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath("graphs/classic_webgl.json")) + " -o " +
+                      test::shellQuote(out) + " --target es300 --textures --quiet");
+  ASSERT_EQ(c.exit, 0) << c.err;
+  auto cam = rt::cameraPreset("above");
+  ASSERT_TRUE(cam.has_value());
+  struct Job {
+    const char* name;
+    const char* box;  // x,y,z,edge; "" for none
+  };
+  const Job jobs[] = {{"none", ""}, {"above_water", "-4.7,14,4.6,3"}, {"under_water", "8,-0.5,-6,0.8"}};
+  nlohmann::json batch = nlohmann::json::array();
+  for (const Job& job : jobs) {
+    nlohmann::json j = {{"dir", out}, {"manifest", "classic_webgl.manifest.json"}, {"size", kSceneSize},
+                        {"eye", csv(cam->position)}, {"target", csv(cam->target)}, {"up", csv(cam->up())},
+                        {"fov", num(cam->fovYDegrees)}, {"near", num(cam->nearPlane)}, {"far", num(cam->farPlane)},
+                        {"time", kTime}, {"grid", std::to_string(kGrid)},
+                        {"screenshot", dir / (std::string(job.name) + ".png")}, {"builtin", true}};
+    if (*job.box) j["box"] = job.box;
+    batch.push_back(j);
+  }
+  const std::string batchFile = dir / "jobs.json";
+  std::ofstream(batchFile) << batch.dump(1);
+  CmdResult t = sh("timeout 120 node " + test::shellQuote(clientDir() + "/test/render_graph.mjs") + " --batch " +
+                   test::shellQuote(batchFile) + " --description " + test::shellQuote(description));
+  ASSERT_EQ(t.exit, 0) << t.out << t.err;
+  rt::Image none = rt::readPng(dir / "none.png");
+  int reflected = reddenedPixels(none, rt::readPng(dir / "above_water.png"));
+  int refracted = reddenedPixels(none, rt::readPng(dir / "under_water.png"));
+  std::printf("red cube over the water: %d pixels reddened (reflection); under the water: %d (refraction), of %s\n",
+              reflected, refracted, kSceneSize);
+  EXPECT_GE(reflected, 20);
+  EXPECT_GE(refracted, 20);
+}
+
 // The gallery (clients/three/example/) as a person opens it: every example graph compiled
 // with its presets, the page loaded, frames drawn, two graphs picked in turn (deferred
 // water among them), and no console error or failed request.

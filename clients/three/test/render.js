@@ -1,7 +1,8 @@
 // The page's script: one frame of a graph, as `watergraph render` draws it. Without a
 // description, the water alone over opaque black (`--scene none`) with the client drawing
 // only water_surface; with `description` (a `watergraph scene` file), every pass the
-// manifest lists, and with `builtin=1` the built-in scene around the water. Reports
+// manifest lists, and with `builtin=1` the built-in scene around the water; `box=x,y,z,size`
+// adds a user's own object, an unlit red cube, to the scene the passes draw. Reports
 // through window.wgResult for render_graph.mjs.
 import * as THREE from 'three';
 import { loadWaterGraph, createWaterGridGeometry } from '../watergraph-three.js';
@@ -29,6 +30,12 @@ async function main() {
   water.setGridQuads(grid);
   const scene = new THREE.Scene();
   if (q.get('builtin') === '1') scene.add(createBuiltinScene(description));
+  if (q.get('box')) {
+    const [x, y, z, size] = vec('box');
+    const box = new THREE.Mesh(new THREE.BoxGeometry(size, size, size), new THREE.MeshBasicMaterial({ color: 0xff0000 }));
+    box.position.set(x, y, z);
+    scene.add(box);
+  }
   scene.add(water.createMesh(createWaterGridGeometry(grid)));
   water.update(Number(q.get('time')), camera);
   water.render(renderer, scene, camera);

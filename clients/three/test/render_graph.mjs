@@ -7,11 +7,12 @@
 //   node render_graph.mjs --dir OUT --manifest lake.manifest.json --size 320x180 \
 //     --eye=14,7,-12 --target=-4,-1.5,4 --up=0,1,0 --fov 55 --near 0.1 --far 200 \
 //     --time 3.5 --grid 128 --screenshot three.png [--description scene.json [--builtin]] \
-//     [--chromium /usr/bin/chromium]
+//     [--box x,y,z,size] [--chromium /usr/bin/chromium]
 //   node render_graph.mjs --batch jobs.json [--description scene.json] [--chromium ...]
 //
 // --description: a `watergraph scene` file; the client then runs every pass the manifest
-// lists, and --builtin draws the built-in scene around the water. --batch: a JSON array of
+// lists, and --builtin draws the built-in scene around the water. --box adds a user's own
+// object to the scene: a red cube (unlit) of that centre and edge length. --batch: a JSON array of
 // jobs, each an object with the single-job options as keys ("dir", "manifest", ...,
 // "builtin": true). Exit status: 0 all written; 1 a page failed (message on stderr; the
 // other jobs still run); 2 usage or environment (no Chromium, no playwright-core).
@@ -34,7 +35,7 @@ let args;
 try {
   ({ values: args } = parseArgs({
     options: {
-      ...Object.fromEntries([...JOB_KEYS, 'chromium', 'batch', 'description'].map((k) => [k, { type: 'string' }])),
+      ...Object.fromEntries([...JOB_KEYS, 'chromium', 'batch', 'description', 'box'].map((k) => [k, { type: 'string' }])),
       builtin: { type: 'boolean' },
     },
   }));
@@ -115,6 +116,7 @@ try {
     });
     if (args.description) query.set('description', `/scene/${path.basename(args.description)}`);
     if (job.builtin) query.set('builtin', '1');
+    if (job.box) query.set('box', job.box);
     const page = await browser.newPage({ viewport: { width: job.width, height: job.height }, deviceScaleFactor: 1 });
     const problems = [];
     page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
