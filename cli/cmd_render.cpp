@@ -6,6 +6,7 @@
 #include <regex>
 
 #include "cli/commands.h"
+#include "cli/finite_number.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "codegen/compile.h"
@@ -152,7 +153,7 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("graph", args->graph, "graph file (.json)")->required();
   cmd->add_option("-o,--output", args->output, "PNG file to write (written atomically)")->required();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
-  cmd->add_option("--time", args->time, "scene time in seconds (u_time)")->capture_default_str();
+  cmd->add_option("--time", args->time, "scene time in seconds (u_time)")->check(finiteFloat())->capture_default_str();
   cmd->add_option("--camera", args->camera, "camera preset: above, grazing, underwater, topdown")
       ->check(CLI::IsMember({"above", "grazing", "underwater", "topdown"}))
       ->capture_default_str();
@@ -166,9 +167,11 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       ->check(CLI::Range(1, 10000))
       ->capture_default_str();
   cmd->add_flag("--stats", args->stats, "print the passes that ran, render targets (count, bytes) and ms per frame");
-  cmd->add_option("--sun-azimuth", args->sunAzimuth, "sun direction: degrees from +x towards +z")->capture_default_str();
+  cmd->add_option("--sun-azimuth", args->sunAzimuth, "sun direction: degrees from +x towards +z")
+      ->check(finiteFloat())
+      ->capture_default_str();
   cmd->add_option("--sun-elevation", args->sunElevation, "sun height above the horizon in degrees")
-      ->check(CLI::Range(-90.0f, 90.0f))
+      ->check(finiteFloat() & CLI::Range(-90.0f, 90.0f))
       ->capture_default_str();
   cmd->add_option("--scene", args->scene,
                   "builtin: the sky, pool, shore, pillars and rocks; none: only the water, over opaque black (nothing "

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/finite_number.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "codegen/output_files.h"
@@ -29,9 +30,11 @@ Runner addSceneCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph scene -o public/scene.json\n"
       "  watergraph scene --sun-elevation 10 > low_sun.json");
   cmd->add_option("-o,--output", args->output, "write the JSON to this file (atomically) instead of stdout");
-  cmd->add_option("--sun-azimuth", args->sunAzimuth, "sun direction: degrees from +x towards +z")->capture_default_str();
+  cmd->add_option("--sun-azimuth", args->sunAzimuth, "sun direction: degrees from +x towards +z")
+      ->check(finiteFloat())
+      ->capture_default_str();
   cmd->add_option("--sun-elevation", args->sunElevation, "sun height above the horizon in degrees")
-      ->check(CLI::Range(-90.0f, 90.0f))
+      ->check(finiteFloat() & CLI::Range(-90.0f, 90.0f))
       ->capture_default_str();
 #ifdef WG_HAVE_RUNTIME
   return [args, &global] {

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <regex>
 
+#include "cli/finite_number.h"
 #include "editor/editor_app.h"
 #include "runtime/scene.h"
 
@@ -30,7 +31,7 @@ int main(int argc, char** argv) {
   app.add_option("--size", windowSize, "window size WIDTHxHEIGHT (default 1280x720)");
   app.add_option("--preview-size", previewSize, "size the preview renders at (default 640x360)");
   app.add_option("--camera", o.camera, "starting camera preset: above, grazing, underwater, topdown");
-  auto* timeOpt = app.add_option("--time", time, "start paused at this time in seconds");
+  auto* timeOpt = app.add_option("--time", time, "start paused at this time in seconds")->check(wg::cli::finiteFloat());
   app.add_option("--script", o.script, "apply the edits in this JSON file (a list of steps), then exit");
   app.add_option("--screenshot", o.screenshot, "write the window as a PNG after the last frame, then exit");
   app.add_option("--frames", o.frames, "run this many frames (after the script), then exit");

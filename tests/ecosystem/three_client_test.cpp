@@ -287,6 +287,9 @@ TEST(SceneCommand, WritesTheDescriptionToAFileOrStdout) {
   EXPECT_EQ(nlohmann::json::parse(text)["format"], std::string("watergraph-scene-1"));
   CmdResult bad = wgRun("scene --sun-elevation 100");
   EXPECT_EQ(bad.exit, 2) << bad.out;
+  CmdResult nan = wgRun("scene --sun-azimuth nan");  // would write a NaN sun as JSON null
+  EXPECT_EQ(nan.exit, 2) << nan.out;
+  EXPECT_NE(nan.err.find("must be a finite number"), std::string::npos) << nan.err;
 }
 
 // The API without a browser (clients/three/test/api.test.mjs under node --test): the

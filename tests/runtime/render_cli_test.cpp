@@ -78,6 +78,14 @@ TEST(RenderCli, UsageErrorsExit2) {
   EXPECT_NE(out.find("--vk-validation needs --target vk450"), std::string::npos) << out;
   out = render(test::sourcePath("graphs/no_such_graph.json") + " -o " + dir + "/x.png", &code);
   EXPECT_EQ(code, 2) << out;
+  // Numbers that would reach a uniform as NaN or Inf (CLI11 converts "nan", "inf" and
+  // 1e300 without complaint, and its Range lets NaN through).
+  for (const char* bad : {"--time nan", "--time 1e300", "--time -inf", "--sun-azimuth nan", "--sun-elevation nan",
+                          "--sun-elevation inf"}) {
+    out = render(lake + " -o " + dir + "/x.png --size 16x9 " + bad, &code);
+    EXPECT_EQ(code, 2) << bad << ": " << out;
+    EXPECT_NE(out.find("must be a finite number within float range"), std::string::npos) << bad << ": " << out;
+  }
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
   std::filesystem::remove_all(dir);
 }
