@@ -120,6 +120,18 @@ std::vector<Family> knobFamilies(const Graph& g, const BenchSettings& s) {
   return families;
 }
 
+// Every --family asked for must exist: a misspelt one would otherwise be skipped without a
+// word, or, alone, end in "no family to run".
+void requireRequestedFamilies(const BenchSettings& settings, const std::vector<std::string>& available) {
+  for (const auto& wanted : settings.families) {
+    if (std::find(available.begin(), available.end(), wanted) != available.end()) continue;
+    std::string list;
+    for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
+    configError(settings, "no family '" + wanted + "'; " +
+                              (settings.graphFile.empty() ? "the configuration has: " : "the graph's knobs give: ") + list);
+  }
+}
+
 // The families of a configuration file (bench/variants.json). A family lists its levels,
 // or names a quality knob ("knob": "node.option") whose levels the node declares.
 std::vector<Family> configFamilies(const BenchSettings& settings) {
@@ -132,6 +144,9 @@ std::vector<Family> configFamilies(const BenchSettings& settings) {
     configError(settings, std::string("not valid JSON: ") + e.what());
   }
   if (!config.contains("families") || !config["families"].is_array()) configError(settings, "needs \"families\": [...]");
+  std::vector<std::string> names;
+  for (const auto& fam : config["families"]) names.push_back(fam.value("name", ""));
+  requireRequestedFamilies(settings, names);
   std::vector<Family> families;
   for (const auto& fam : config["families"]) {
     std::string name = fam.value("name", "");
@@ -175,8 +190,12 @@ std::vector<Family> familiesToRun(const BenchSettings& settings) {
   if (!g) configError(settings, "the graph does not load:" + diagText(diags));
   if (!settings.preset.empty() && !applyPreset(*g, settings.preset, diags))
     configError(settings, "the preset does not apply:" + diagText(diags));
+  std::vector<Family> all = knobFamilies(*g, settings);
+  std::vector<std::string> names;
+  for (const auto& f : all) names.push_back(f.name);
+  requireRequestedFamilies(settings, names);
   std::vector<Family> families;
-  for (auto& f : knobFamilies(*g, settings))
+  for (auto& f : all)
     if (settings.families.empty() || std::find(settings.families.begin(), settings.families.end(), f.name) != settings.families.end())
       families.push_back(std::move(f));
   return families;

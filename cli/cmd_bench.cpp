@@ -9,6 +9,7 @@
 #include <regex>
 
 #include "cli/commands.h"
+#include "codegen/output_files.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/bench.h"
@@ -65,10 +66,9 @@ int runBenchCommand(const BenchArgs& args) {
     std::string table = accuracy::benchMarkdown(r);
     std::cout << table;
     if (!args.markdown.empty()) {
-      std::ofstream out(args.markdown);
-      out << table;
-      if (!out) {
-        std::cerr << args.markdown << ": error: cannot write the table\n";
+      Diagnostics io;
+      if (!writeFileAtomically(args.markdown, table, io)) {
+        printDiagnostics(io, GlobalOptions{});
         return kExitUsageOrIo;
       }
     }

@@ -11,7 +11,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 
-#include "codegen/temp_file.h"
+#include "codegen/output_files.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
@@ -30,15 +30,12 @@ void writePng(const std::string& path, const Image& img) {
   };
   if (!stbi_write_png_to_func(append, &png, img.width, img.height, 4, img.rgba8.data(), img.width * 4))
     throw RuntimeError(RuntimeError::Kind::Io, "cannot write " + path + ": PNG encoding failed");
-  // A new temporary in the same folder (never a link planted there), so the rename is atomic.
-  int err = 0;
-  auto written = writeTemporaryBeside(target, png, &err);
-  if (!written) throw RuntimeError(RuntimeError::Kind::Io, "cannot write " + path + ": " + std::strerror(err));
-  const std::string& tmp = *written;
-  fs::rename(tmp, target, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw RuntimeError(RuntimeError::Kind::Io, "cannot write " + path + ": " + ec.message());
+  // Written as every output file is (codegen/output_files.h): a temporary beside it, then a
+  // rename; an existing FIFO, device, folder or read-only file is refused, not replaced.
+  Diagnostics diags;
+  if (!writeFileAtomically(path, png, diags)) {
+    std::string why = diags.all().empty() ? "cannot write" : diags.all().front().message;
+    throw RuntimeError(RuntimeError::Kind::Io, path + ": " + why);
   }
 }
 

@@ -88,6 +88,33 @@ TEST(Bench, AGraphWithoutKnobsIsAClearError) {
   std::filesystem::remove_all(dir);
 }
 
+// A --family that does not exist is an error naming the ones that do, for a graph's knobs
+// and for a configuration file alike (it used to be skipped without a word).
+TEST(Bench, AnUnknownFamilyIsNamedWithTheOnesThatExist) {
+  std::string dir = test::makeTempDir("wg_bench_family");
+  test::writeFile(dir + "/g.json", R"({"version": 1, "name": "g",
+    "nodes": [{"id": "f", "type": "fresnel"}, {"id": "c", "type": "combine", "inputs": {"x": "f.reflectance"}}],
+    "outputs": {"fragment": {"color": "c.out"}}})");
+  test::writeFile(dir + "/v.json", R"({"families": [{"name": "x", "graph_file": "g.json", "levels": {"a": {}}, "reference": "a"}]})");
+  BenchSettings fromGraph;
+  fromGraph.graphFile = dir + "/g.json";
+  fromGraph.families = {"f.model", "f.modle"};
+  BenchSettings fromConfig;
+  fromConfig.configFile = dir + "/v.json";
+  fromConfig.root = dir;
+  fromConfig.families = {"y"};
+  for (const auto& [s, expected] : {std::pair{fromGraph, "g.json: error: no family 'f.modle'; the graph's knobs give: f.model, as written"},
+                                    std::pair{fromConfig, "v.json: error: no family 'y'; the configuration has: x"}}) {
+    try {
+      runBench(s);
+      ADD_FAILURE() << "no error for " << expected;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(Bench, ABadConfigIsOneLineNamingTheFile) {
   std::string dir = test::makeTempDir("wg_bench");
   test::writeFile(dir + "/v.json", R"({"families": [{"name": "x", "graph_file": "nope.json", "levels": {"a": {}}, "reference": "a"}]})");

@@ -1,6 +1,10 @@
 // `watergraph render` as a user runs it.
 #include <algorithm>
 #include <filesystem>
+#include <string>
+#include <vector>
+
+#include <sys/stat.h>
 
 #include <gtest/gtest.h>
 
@@ -87,6 +91,30 @@ TEST(RenderCli, UsageErrorsExit2) {
     EXPECT_NE(out.find("must be a finite number within float range"), std::string::npos) << bad << ": " << out;
   }
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+  std::filesystem::remove_all(dir);
+}
+
+// The PNG is written as every output file is: a temporary, then a rename. A FIFO, a device
+// or a folder at the output path is refused, never replaced by a regular file (as root, a
+// rename onto /dev/full used to succeed and leave a regular file there).
+TEST(RenderCli, AnOutputPathThatIsNotARegularFileIsRefusedAndKept) {
+  std::string dir = test::makeTempDir("wg_render_");
+  std::string lake = test::sourcePath("graphs/lake.json");
+  std::string fifo = dir + "/fifo.png", folder = dir + "/folder.png";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  std::filesystem::create_directory(folder);
+  // (Not a real device: as root, a regression would replace it for the whole machine.)
+  for (const std::string& path : {fifo, folder}) {
+    int code = -1;
+    std::string out = render(lake + " --size 16x9 -o " + path, &code);
+    EXPECT_EQ(code, 2) << path << ": " << out;
+    EXPECT_NE(out.find(path + ": cannot replace: not a regular file"), std::string::npos) << out;
+  }
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_TRUE(std::filesystem::is_directory(folder));
+  std::vector<std::string> left;
+  for (const auto& e : std::filesystem::directory_iterator(dir)) left.push_back(e.path().filename().string());
+  EXPECT_EQ(left.size(), 2u) << "a temporary was left behind";
   std::filesystem::remove_all(dir);
 }
 
