@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   Runner check = addCheckCommand(app, global);
   Runner bench = addBenchCommand(app, global);
   Runner scene = addSceneCommand(app, global);
+  Runner tune = addTuneCommand(app, global);
 
   try {
     app.parse(argc, argv);
@@ -43,6 +44,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("check")) return check();
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("scene")) return scene();
+    if (app.got_subcommand("tune")) return tune();
   } catch (const std::exception& e) {
     // A bug, not a graph problem: say so plainly rather than crash.
     std::cerr << "watergraph: internal error: " << e.what() << "\n";

@@ -1,0 +1,211 @@
+#include "accuracy/tune_render.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "accuracy/spirv_count.h"
+#include "codegen/compile.h"
+#include "nodes/registry.h"
+#include "runtime/egl_context.h"
+#include "runtime/preview.h"
+#include "runtime/renderer.h"
+
+namespace wg::accuracy {
+
+struct GlTuneMeasurements::Entry {
+  CompileResult compiled;
+  std::unique_ptr<rt::Renderer> renderer;
+  int spirv = 0;
+};
+
+namespace {
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+std::string diagText(const Diagnostics& d) {
+  std::string s;
+  for (const auto& x : d.all()) s += "\n  " + formatText(x);
+  return s;
+}
+
+std::string key(const std::optional<TuneConfig>& config) {
+  if (!config) return "as written";
+  std::string s;
+  for (int l : *config) s += std::to_string(l) + ",";
+  return s;
+}
+
+}  // namespace
+
+std::vector<TuneKnob> graphKnobs(const Graph& graph) {
+  std::vector<TuneKnob> knobs;
+  for (const auto& n : graph.nodes)
+    if (const NodeSpec* spec = defaultRegistry().find(n.type))
+      for (const auto& o : spec->options)
+        if (!o.levels.empty()) knobs.push_back({n.id, o.name, o.levels});
+  return knobs;
+}
+
+GlTuneMeasurements::GlTuneMeasurements(const Graph& graph, std::vector<TuneKnob> knobs, TuneSweep sweep)
+    : graph_(graph), knobs_(std::move(knobs)), sweep_(std::move(sweep)) {
+  context_ = rt::EglContext::create(rt::apiFor(sweep_.target));
+  TuneConfig exact;
+  for (const auto& k : knobs_) exact.push_back(static_cast<int>(k.levels.size()) - 1);
+  std::unique_ptr<Entry> ref = make(exact);
+  if (sweep_.cameras.empty()) {
+    sweep_.cameras = {"above", "grazing", "topdown"};
+    // The view from below only where the graph draws it (the deferred underwater pass).
+    if (ref->compiled.manifest.lists(RenderPass::DeferredWater)) sweep_.cameras.push_back("underwater");
+  }
+  for (const auto& cam : sweep_.cameras) {
+    auto camera = rt::cameraPreset(cam);
+    if (!camera) throw std::runtime_error("unknown camera '" + cam + "'");
+    for (double t : sweep_.times) {
+      View v;
+      char label[96];
+      std::snprintf(label, sizeof label, "%s t=%g", cam.c_str(), t);
+      v.label = label;
+      v.camera = *camera;
+      v.scene.time = static_cast<float>(t);
+      views_.push_back(v);
+      labels_.push_back(label);
+    }
+  }
+  for (const auto& v : views_) {
+    ref->renderer->setCamera(v.camera);
+    ref->renderer->setScene(v.scene);
+    ref->renderer->renderFrame();
+    reference_.push_back(ref->renderer->readRgba32f().rgba32f);
+  }
+}
+
+GlTuneMeasurements::~GlTuneMeasurements() { cache_.clear(); }  // GL objects before the context
+
+std::string GlTuneMeasurements::renderer() const { return context_->renderer(); }
+
+std::unique_ptr<GlTuneMeasurements::Entry> GlTuneMeasurements::make(const std::optional<TuneConfig>& config) {
+  Graph g = graph_;
+  if (config)
+    for (size_t k = 0; k < knobs_.size(); ++k) {
+      const nlohmann::json& level = knobs_[k].levels[static_cast<size_t>((*config)[k])];
+      for (auto& n : g.nodes) {
+        if (n.id != knobs_[k].node) continue;
+        bool found = false;
+        for (auto& o : n.options)
+          if (o.name == knobs_[k].option) o.value = level, found = true;
+        if (!found) n.options.push_back({knobs_[k].option, level, {}, {}});
+      }
+    }
+  Diagnostics diags;
+  CompileOptions options;
+  options.targets = {sweep_.target, Target::Vk450};
+  auto compiled = compileGraph(g, defaultRegistry(), options, diags);
+  if (!compiled)
+    throw std::runtime_error((config ? configText(knobs_, *config) : std::string("the graph as written")) +
+                             " does not compile:" + diagText(diags));
+  auto e = std::make_unique<Entry>();
+  for (const auto& f : compiled->files)
+    if (f.name.size() > 15 && f.name.compare(f.name.size() - 15, 15, ".vk450.frag.spv") == 0)
+      e->spirv = optimisedInstructionCount(spirvWords(f.contents));
+  e->compiled = std::move(*compiled);
+  rt::RenderSettings rs;
+  rs.width = sweep_.width;
+  rs.height = sweep_.height;
+  rs.floatColor = true;
+  e->renderer = std::make_unique<rt::Renderer>(e->compiled.manifest, rt::waterShaderSources(e->compiled, sweep_.target), rs,
+                                               context_->isEs(), rt::textureOrigins(e->compiled));
+  return e;
+}
+
+GlTuneMeasurements::Entry& GlTuneMeasurements::entry(const std::optional<TuneConfig>& config) {
+  auto& slot = cache_[key(config)];
+  if (!slot) {
+    slot = make(config);
+    slot->renderer->renderFrame();  // llvmpipe compiles the shaders at the first draw
+  }
+  return *slot;
+}
+
+TuneError GlTuneMeasurements::compare(Entry& e) {
+  TuneError err;
+  for (size_t v = 0; v < views_.size(); ++v) {
+    e.renderer->setCamera(views_[v].camera);
+    e.renderer->setScene(views_[v].scene);
+    e.renderer->renderFrame();
+    std::vector<float> frame = e.renderer->readRgba32f().rgba32f;
+    const std::vector<float>& ref = reference_[v];
+    double sq = 0, mx = 0;
+    size_t n = 0;
+    bool finite = true;
+    for (size_t i = 0; i < frame.size(); ++i) {
+      if (!std::isfinite(frame[i])) finite = false;
+      if (i % 4 == 3) continue;  // colour error over R, G, B
+      double d = std::abs(static_cast<double>(frame[i]) - ref[i]);
+      sq += d * d, mx = std::max(mx, d), ++n;
+    }
+    if (!finite) {
+      err.finite = false;
+      err.worstFrame = views_[v].label;
+      return err;
+    }
+    double mse = n ? sq / static_cast<double>(n) : 0;
+    double psnr = mse > 0 ? 10 * std::log10(1.0 / mse) : INFINITY;
+    if (err.worstFrame.empty() || psnr < err.worstPsnr) err.worstPsnr = psnr, err.worstFrame = views_[v].label;
+    err.maxAbsError = std::max(err.maxAbsError, mx);
+  }
+  return err;
+}
+
+TuneError GlTuneMeasurements::error(const TuneConfig& config) {
+  cache_.erase(key(config));  // always a fresh compile and renderer
+  return compare(entry(config));
+}
+
+TuneError GlTuneMeasurements::verify(const TuneConfig& config) { return error(config); }
+
+TuneError GlTuneMeasurements::asWrittenError() {
+  cache_.erase(key(std::nullopt));
+  return compare(entry(std::nullopt));
+}
+
+std::vector<TuneCost> GlTuneMeasurements::cost(const std::vector<TuneConfig>& configs) {
+  std::vector<std::optional<TuneConfig>> all(configs.begin(), configs.end());
+  return costOf(all);
+}
+
+std::vector<TuneCost> GlTuneMeasurements::costOf(const std::vector<std::optional<TuneConfig>>& configs) {
+  std::vector<Entry*> entries;
+  for (const auto& c : configs) entries.push_back(&entry(c));
+  // Each repeat renders every configuration from every camera (at the first time), one
+  // configuration after another: the medians share the machine's state.
+  std::vector<std::vector<double>> ms(entries.size());
+  rt::SceneOptions scene;
+  scene.time = static_cast<float>(sweep_.times.front());
+  for (int run = 0; run < std::max(sweep_.runs, 1); ++run)
+    for (size_t i = 0; i < entries.size(); ++i) {
+      double sum = 0;
+      for (const auto& cam : sweep_.cameras) {
+        entries[i]->renderer->setCamera(*rt::cameraPreset(cam));
+        entries[i]->renderer->setScene(scene);
+        sum += entries[i]->renderer->renderFrame();
+      }
+      ms[i].push_back(sum);
+    }
+  double megapixels = sweep_.width * static_cast<double>(sweep_.height) * static_cast<double>(sweep_.cameras.size()) / 1e6;
+  std::vector<TuneCost> costs;
+  for (size_t i = 0; i < entries.size(); ++i) costs.push_back({median(ms[i]) / megapixels, entries[i]->spirv});
+  // Keep only what this round timed: the next round's candidates are new configurations.
+  std::vector<std::string> keep;
+  for (const auto& c : configs) keep.push_back(key(c));
+  for (auto it = cache_.begin(); it != cache_.end();)
+    it = std::find(keep.begin(), keep.end(), it->first) == keep.end() ? cache_.erase(it) : std::next(it);
+  return costs;
+}
+
+}  // namespace wg::accuracy

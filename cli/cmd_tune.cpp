@@ -1,0 +1,226 @@
+// tune: the cheapest configuration of a graph's quality knobs whose every frame of a sweep
+// of views and times stays within an error budget against the reference (every knob at its
+// most exact level). A greedy descent (accuracy/tune_search.h) over measurements on the GL
+// runtime (accuracy/tune_render.h); prints the path, optionally writes the result into the
+// graph as a preset and plots every tried configuration.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <regex>
+#include <sstream>
+
+#include <unistd.h>
+
+#include "cli/commands.h"
+#include "codegen/output_files.h"
+#include "core/graph_io.h"
+
+#ifdef WG_HAVE_RUNTIME
+#include "accuracy/tune_render.h"
+#include "accuracy/tune_report.h"
+#include "runtime/runtime_error.h"
+#include "runtime/scene.h"
+#endif
+
+namespace wg::cli {
+namespace {
+
+struct TuneArgs {
+  std::string graph;
+  double minPsnr = NAN, maxAbsError = NAN;
+  std::string cameras, times = "1,3.5,20", size = "160x90", target = "glsl330";
+  int runs = 5;
+  std::string writePreset, plot;
+};
+
+#ifdef WG_HAVE_RUNTIME
+std::vector<std::string> splitCommas(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  std::string item;
+  while (std::getline(in, item, ',')) out.push_back(item);
+  return out;
+}
+
+int usage(const std::string& message) {
+  std::cerr << "watergraph: tune: " << message << "\n";
+  return kExitUsageOrIo;
+}
+
+std::string fixed(double x, int digits) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", digits, x);
+  return buf;
+}
+
+int runTune(const TuneArgs& args) {
+  using namespace accuracy;
+  TuneBudget budget;
+  if (!std::isnan(args.minPsnr)) budget.minPsnr = args.minPsnr;
+  if (!std::isnan(args.maxAbsError)) budget.maxAbsError = args.maxAbsError;
+  if (!budget.minPsnr && !budget.maxAbsError) return usage("give a budget: --min-psnr DB and/or --max-abs-error E");
+  if (budget.maxAbsError && !(*budget.maxAbsError >= 0)) return usage("--max-abs-error must be >= 0");
+  TuneSweep sweep;
+  std::smatch m;
+  static const std::regex sizeRe("([0-9]{1,4})x([0-9]{1,4})");
+  if (!std::regex_match(args.size, m, sizeRe) || std::stoi(m[1]) < 8 || std::stoi(m[2]) < 8)
+    return usage("--size must be WIDTHxHEIGHT, each side 8..9999 (got '" + args.size + "')");
+  sweep.width = std::stoi(m[1]);
+  sweep.height = std::stoi(m[2]);
+  sweep.runs = args.runs;
+  sweep.target = *parseTarget(args.target);
+  if (!args.cameras.empty()) {
+    for (const auto& c : splitCommas(args.cameras)) {
+      if (!rt::cameraPreset(c)) {
+        std::string names;
+        for (const auto& n : rt::cameraPresetNames()) names += (names.empty() ? "" : ", ") + n;
+        return usage("unknown camera '" + c + "' in --cameras (the cameras: " + names + ")");
+      }
+      sweep.cameras.push_back(c);
+    }
+  }
+  sweep.times.clear();
+  for (const auto& t : splitCommas(args.times)) {
+    char* end = nullptr;
+    double v = std::strtod(t.c_str(), &end);
+    if (t.empty() || *end != '\0' || !std::isfinite(v)) return usage("--times must be numbers separated by commas (got '" + t + "')");
+    sweep.times.push_back(v);
+  }
+  if (sweep.times.empty()) return usage("--times needs at least one time");
+  if (!args.writePreset.empty() && !isIdentifier(args.writePreset))
+    return usage("--write-preset '" + args.writePreset + "' is not an identifier (letters, digits, _; not starting with a digit)");
+
+  Diagnostics diags;
+  auto snapshot = readGraphFile(args.graph, diags);
+  std::optional<Graph> graph;
+  if (snapshot) graph = loadGraphFile(args.graph, diags);
+  if (!graph) {
+    for (const auto& d : diags.all()) std::cerr << formatText(d) << "\n";
+    return exitCodeFor(diags);
+  }
+  std::vector<TuneKnob> knobs = graphKnobs(*graph);
+  if (knobs.empty()) {
+    std::cerr << args.graph << ": error: the graph has no quality knob to tune (options whose levels a node declares, "
+              << "and `bypass` on nodes that add detail; `watergraph nodes` lists them)\n";
+    return kExitGraphError;
+  }
+  const bool terminal = ::isatty(STDERR_FILENO);
+  auto started = std::chrono::steady_clock::now();
+  auto elapsed = [&] {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  };
+  try {
+    GlTuneMeasurements gl(*graph, knobs, sweep);
+    int measured = 0;
+    TuneProgress progress;
+    if (terminal)
+      progress = [&](const std::string& line) {
+        std::cerr << "tune [" << fixed(elapsed(), 0) << " s, " << ++measured << "] " << line << "\n";
+      };
+    std::string cameras;
+    for (const auto& c : gl.sweep().cameras) cameras += (cameras.empty() ? "" : ", ") + c;
+    std::string times;
+    for (double t : gl.sweep().times) times += (times.empty() ? "" : ", ") + fixed(t, 1);
+    std::cout << "tune " << args.graph << ": " << budget.text() << "; " << gl.viewLabels().size() << " frames ("
+              << cameras << " at t = " << times << " s), " << sweep.width << "x" << sweep.height << " RGBA32F, "
+              << args.target << " on " << gl.renderer() << "; " << knobs.size() << " knobs\n\n";
+    TuneResult result = tuneSearch(knobs, budget, gl, progress);
+    std::cout << tunePathTable(result) << "\n";
+    if (!args.plot.empty()) {
+      Diagnostics w;
+      if (!writeFileAtomically(args.plot, tunePlotSvg(result, budget, "watergraph tune " + args.graph + ": " + budget.text()), w)) {
+        for (const auto& d : w.all()) std::cerr << formatText(d) << "\n";
+        return kExitUsageOrIo;
+      }
+      std::cerr << "wrote " << args.plot << "\n";
+    }
+    if (!result.found) {
+      std::cerr << args.graph << ": error: " << result.why << " (" << budget.text() << ")\n";
+      return kExitGraphError;
+    }
+    const TuneStep& chosen = result.chosen();
+    TuneError asWritten = gl.asWrittenError();
+    std::vector<TuneCost> final = gl.costOf({result.path.front().config, std::nullopt, chosen.config});
+    std::cout << "chosen: " << configText(knobs, chosen.config) << "\n";
+    std::cout << "verified (rendered again): worst PSNR "
+              << (std::isinf(result.verified.worstPsnr) ? "inf" : fixed(result.verified.worstPsnr, 1)) << " dB"
+              << (std::isinf(result.verified.worstPsnr) ? "" : " (" + result.verified.worstFrame + ")") << ", max abs error "
+              << result.verified.maxAbsError << "\n";
+    std::cout << "cost, timed together (" << sweep.runs << " interleaved repeats): reference " << fixed(final[0].msPerMegapixel, 1)
+              << " ms/MP (" << final[0].spirvInstructions << " SPIR-V instr.), as written " << fixed(final[1].msPerMegapixel, 1)
+              << " ms/MP (" << final[1].spirvInstructions << "; worst PSNR "
+              << (asWritten.finite ? (std::isinf(asWritten.worstPsnr) ? std::string("inf") : fixed(asWritten.worstPsnr, 1)) : "NaN/Inf")
+              << " dB), chosen " << fixed(final[2].msPerMegapixel, 1) << " ms/MP (" << final[2].spirvInstructions << ")\n";
+    std::cout << "speed-up: " << fixed(final[0].msPerMegapixel / final[2].msPerMegapixel, 2) << "x against the reference, "
+              << fixed(final[1].msPerMegapixel / final[2].msPerMegapixel, 2) << "x against the graph as written\n";
+    std::cout << result.tried.size() << " configurations tried in " << fixed(elapsed(), 1) << " s\n";
+    if (!args.writePreset.empty()) {
+      Diagnostics w;
+      auto text = graphWithPreset(*snapshot, args.graph, args.writePreset, knobs, chosen.config, w);
+      // The file changed while tuning (an editor saved it): writing the old snapshot would lose that edit.
+      auto now = readGraphFile(args.graph, w);
+      if (text && now && *now != *snapshot)
+        w.error(DiagCode::FileWrite, SourceRef{args.graph, 0, 0}, "the file changed while it was being tuned; preset not written");
+      if (!text || w.hasErrors() || !writeFileAtomically(args.graph, *text, w)) {
+        for (const auto& d : w.all()) std::cerr << formatText(d) << "\n";
+        return exitCodeFor(w);
+      }
+      std::cout << "wrote preset '" << args.writePreset << "' into " << args.graph << "\n";
+    }
+  } catch (const rt::RuntimeError& e) {
+    std::cerr << "watergraph: tune: " << e.what() << "\n";
+    return e.exitCode();
+  } catch (const std::runtime_error& e) {
+    std::cerr << args.graph << ": error: " << e.what() << "\n";
+    return kExitGraphError;
+  }
+  return kExitOk;
+}
+#endif
+
+}  // namespace
+
+Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
+  auto args = std::make_shared<TuneArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "tune",
+      "The cheapest configuration of a graph's quality knobs within an error budget. The reference is the graph with "
+      "every knob (options whose levels a node declares, and `bypass` on nodes that add detail; `watergraph nodes` "
+      "lists them) at its most exact level, rendered into RGBA32F frames over a sweep: every camera (default above, "
+      "grazing, topdown, and underwater for graphs with the deferred underwater pass) at every time. From the reference, "
+      "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
+      "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost; the one with the "
+      "least error increase per ms/MP saved is taken (ties: fewer SPIR-V instructions, then the knob's name), until "
+      "none qualifies. Cost: ms per megapixel, the median of interleaved repeats of every camera at the first time, timed "
+      "beside the current configuration; SPIR-V instructions after spirv-opt -O. The chosen configuration is rendered "
+      "again and checked once more. Prints the path, then the chosen configuration timed beside the reference and the "
+      "graph as written.\n\n"
+      "Examples:\n  watergraph tune graphs/lake.json --min-psnr 45\n"
+      "  watergraph tune graphs/pool.json --min-psnr 45 --cameras above,grazing --times 0,5,30 --write-preset fast\n"
+      "  watergraph tune graphs/ocean.json --max-abs-error 0.02 --plot tune.svg\n\n"
+      "Exit codes: 0 a configuration found; 1 the graph has no knob, does not load or compile, or no configuration "
+      "cheaper than the reference meets the budget; 2 usage, I/O, or no EGL/GL.");
+  cmd->add_option("graph", args->graph, "the graph file (.json)")->required();
+  cmd->add_option("--min-psnr", args->minPsnr, "budget: every frame's PSNR (dB, peak 1) at least this");
+  cmd->add_option("--max-abs-error", args->maxAbsError, "budget: no colour channel of any pixel off by more than this");
+  cmd->add_option("--cameras", args->cameras, "camera presets, comma separated (above, grazing, underwater, topdown)");
+  cmd->add_option("--times", args->times, "scene times in seconds, comma separated")->capture_default_str();
+  cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();
+  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
+  cmd->add_option("--write-preset", args->writePreset,
+                  "write the chosen configuration into the graph as this preset (canonical form; replaces one of that name)");
+  cmd->add_option("--plot", args->plot, "draw every tried configuration, cost against worst PSNR, into this SVG");
+#ifdef WG_HAVE_RUNTIME
+  return [args] { return runTune(*args); };
+#else
+  return [] {
+    std::cerr << "watergraph: tune: this build has no GL runtime (configure with -DWG_BUILD_RUNTIME=ON)\n";
+    return kExitUsageOrIo;
+  };
+#endif
+}
+
+}  // namespace wg::cli

@@ -1,0 +1,101 @@
+// `watergraph tune` end to end on a graph small enough to know the answer: a Fresnel model
+// (any level below exact is far off at grazing angles) and a colour variation weighted so
+// lightly that switching it off (bypass) stays far within a 60 dB budget. The tuner must
+// switch the variation off and keep the exact Fresnel; a budget nothing meets is one
+// message and exit 1; --write-preset writes a preset that compiles and is canonical.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+namespace wg {
+namespace {
+
+struct CmdOut {
+  int exit = -1;
+  std::string out, err;
+};
+
+CmdOut wg(const std::string& args) {
+  CmdOut r;
+  r.exit = test::runCommandSplit(test::shellQuote(test::watergraphBinary()) + " " + args, &r.out, &r.err);
+  return r;
+}
+
+// `presets` is the graph's "presets" member ("" for none).
+std::string twoKnobGraph(const std::string& presets) {
+  return R"({"version": 1, "name": "two_knobs", )" + presets + R"("nodes": [
+    {"id": "f", "type": "fresnel", "options": {"model": "schlick"}},
+    {"id": "tint", "type": "mix", "inputs": {"a": [0, 0.15, 0.25], "b": [0.6, 0.75, 0.9], "t": "f.reflectance"}},
+    {"id": "cv", "type": "color_variation",
+     "inputs": {"color": "tint.out", "slope_strength": 0.001, "noise_strength": 0.001, "trough": 0}}],
+    "outputs": {"fragment": {"color": "cv.color"}}})";
+}
+
+const std::string kSmall = " --size 64x36 --runs 1 --cameras above,grazing --times 1,3.5,20";
+
+TEST(TuneCli, FindsTheKnownBestConfiguration) {
+  std::string dir = test::makeTempDir("wg_tune_");
+  test::writeFile(dir + "/g.json", twoKnobGraph(""));
+  CmdOut r = wg("tune " + test::shellQuote(dir + "/g.json") + " --min-psnr 60" + kSmall + " --plot " +
+                test::shellQuote(dir + "/tune.svg"));
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("chosen: f.model=exact, cv.bypass=true\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("| 1 | cv.bypass | true |"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("| 2 |"), std::string::npos) << "one step only:\n" << r.out;
+  std::string svg = test::readFile(dir + "/tune.svg");
+  EXPECT_EQ(svg.rfind("<svg", 0), 0u);
+  EXPECT_NE(svg.find("cv.bypass=true"), std::string::npos);
+  EXPECT_NE(svg.find("f.model=schlick"), std::string::npos);
+  EXPECT_NE(svg.find("Pareto"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(TuneCli, ABudgetNothingMeetsIsOneMessageAndExit1) {
+  std::string dir = test::makeTempDir("wg_tune_");
+  test::writeFile(dir + "/g.json", twoKnobGraph(""));
+  std::string before = test::readFile(dir + "/g.json");
+  CmdOut r = wg("tune " + test::shellQuote(dir + "/g.json") + " --max-abs-error 0 --write-preset fast" + kSmall);
+  EXPECT_EQ(r.exit, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("error: no configuration cheaper than the reference meets the budget"), std::string::npos) << r.err;
+  EXPECT_EQ(test::readFile(dir + "/g.json"), before) << "nothing written";
+  test::writeFile(dir + "/plain.json", R"({"version": 1, "name": "plain", "nodes": [{"id": "n", "type": "normal"}],
+    "outputs": {"fragment": {"color": "n.out"}}})");
+  r = wg("tune " + test::shellQuote(dir + "/plain.json") + " --min-psnr 45" + kSmall);
+  EXPECT_EQ(r.exit, 1);
+  EXPECT_NE(r.err.find("the graph has no quality knob to tune"), std::string::npos) << r.err;
+  r = wg("tune " + test::shellQuote(dir + "/g.json") + kSmall);
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("give a budget"), std::string::npos) << r.err;
+  std::filesystem::remove_all(dir);
+}
+
+// An existing preset of the name is replaced in its place; the file is canonical after
+// (fmt changes nothing) and `compile --preset fast` compiles the variation out.
+TEST(TuneCli, WritesAPresetThatCompilesAndIsCanonical) {
+  std::string dir = test::makeTempDir("wg_tune_");
+  test::writeFile(dir + "/g.json", twoKnobGraph(R"("presets": {"fast": {"f.model": "power"}, "exact": {"f.model": "exact"}}, )"));
+  std::string g = test::shellQuote(dir + "/g.json");
+  CmdOut r = wg("tune " + g + " --min-psnr 60 --write-preset fast" + kSmall);
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("wrote preset 'fast'"), std::string::npos) << r.out;
+  auto written = nlohmann::ordered_json::parse(test::readFile(dir + "/g.json"));
+  EXPECT_EQ(written["presets"].dump(), R"({"fast":{"f.model":"exact","cv.bypass":true},"exact":{"f.model":"exact"}})");
+  std::string text = test::readFile(dir + "/g.json");
+  CmdOut fmt = wg("fmt " + g);
+  EXPECT_EQ(fmt.exit, 0) << fmt.err;
+  EXPECT_EQ(test::readFile(dir + "/g.json"), text) << "fmt changed the written file";
+  CmdOut plain = wg("compile " + g + " -o " + test::shellQuote(dir + "/plain") + " --target glsl330");
+  CmdOut fast = wg("compile " + g + " -o " + test::shellQuote(dir + "/fast") + " --target glsl330 --preset fast");
+  ASSERT_EQ(plain.exit, 0) << plain.err;
+  ASSERT_EQ(fast.exit, 0) << fast.err;
+  EXPECT_NE(test::readFile(dir + "/plain/g.glsl330.frag").find("wg_color_variation"), std::string::npos);
+  EXPECT_EQ(test::readFile(dir + "/fast/g.glsl330.frag").find("wg_color_variation"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wg

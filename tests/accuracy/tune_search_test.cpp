@@ -1,0 +1,145 @@
+// The tuner's search on made-up measurements: which configuration it chooses, in which
+// order it lowers knobs, how ties break, and that NaN, an unmeetable budget and a failed
+// verification are handled. No renderer: the numbers are the test's.
+#include <cmath>
+#include <functional>
+#include <map>
+
+#include <gtest/gtest.h>
+
+#include "accuracy/tune_search.h"
+
+namespace wg::accuracy {
+namespace {
+
+// Measurements from two functions of the configuration.
+class FakeMeasurements : public TuneMeasurements {
+ public:
+  std::function<TuneError(const TuneConfig&)> errorOf;
+  std::function<TuneCost(const TuneConfig&)> costOf;
+  std::function<TuneError(const TuneConfig&)> verifyOf;  // default: errorOf
+  int errors = 0, costs = 0;
+
+  TuneError error(const TuneConfig& c) override { return ++errors, errorOf(c); }
+  std::vector<TuneCost> cost(const std::vector<TuneConfig>& configs) override {
+    ++costs;
+    std::vector<TuneCost> out;
+    for (const auto& c : configs) out.push_back(costOf(c));
+    return out;
+  }
+  TuneError verify(const TuneConfig& c) override { return verifyOf ? verifyOf(c) : errorOf(c); }
+};
+
+TuneError psnr(double db, double maxAbs = 0.01) { return {db, maxAbs, true, "above t=1"}; }
+
+std::vector<TuneKnob> twoKnobs() {
+  return {{"detail", "octaves", {1, 2, 3}}, {"f", "model", {"power", "schlick", "exact"}}};
+}
+
+std::vector<std::string> pathOf(const TuneResult& r) {
+  std::vector<std::string> p;
+  for (size_t i = 1; i < r.path.size(); ++i) p.push_back(r.path[i].knob + "=" + r.path[i].level);
+  return p;
+}
+
+TuneBudget minPsnr(double db) {
+  TuneBudget b;
+  b.minPsnr = db;
+  return b;
+}
+
+// Octaves are nearly free in error; any Fresnel model but the exact one is far off.
+TEST(TuneSearch, LowersTheFreeKnobAndKeepsTheCostlyOne) {
+  FakeMeasurements m;
+  m.errorOf = [](const TuneConfig& c) {
+    if (c[1] < 2) return psnr(30);
+    return c[0] == 2 ? psnr(INFINITY, 0) : psnr(70 - 5 * (1 - c[0]));
+  };
+  m.costOf = [](const TuneConfig& c) { return TuneCost{10.0 + 3 * c[0] + 5 * c[1], 100 + 10 * c[0] + 20 * c[1]}; };
+  TuneResult r = tuneSearch(twoKnobs(), minPsnr(45), m);
+  ASSERT_TRUE(r.found) << r.why;
+  EXPECT_EQ(pathOf(r), (std::vector<std::string>{"detail.octaves=2", "detail.octaves=1"}));
+  EXPECT_EQ(r.chosen().config, (TuneConfig{0, 2}));
+  EXPECT_EQ(r.verified.worstPsnr, 65);
+  // Tried: the reference, round 1 (octaves, model), round 2 (octaves, model), round 3 (model).
+  EXPECT_EQ(r.tried.size(), 6u);
+  EXPECT_FALSE(r.tried[2].meetsBudget);  // model=schlick from the reference
+}
+
+// Both knobs meet the budget; the one with less error per saved ms goes first, whatever
+// the knobs' order.
+TEST(TuneSearch, TakesTheLeastErrorPerSavedCostFirst) {
+  FakeMeasurements m;
+  // Usage of a 40 dB budget: octaves cost 1e-5 MSE per level and save 1 ms; the model
+  // costs 1e-5 per level and saves 4 ms.
+  m.errorOf = [](const TuneConfig& c) {
+    double mse = 1e-5 * ((2 - c[0]) + (2 - c[1]));
+    return mse == 0 ? psnr(INFINITY, 0) : psnr(10 * std::log10(1 / mse));
+  };
+  m.costOf = [](const TuneConfig& c) { return TuneCost{10.0 + 1 * c[0] + 4 * c[1], 100}; };
+  TuneResult r = tuneSearch(twoKnobs(), minPsnr(40), m);
+  ASSERT_TRUE(r.found) << r.why;
+  // 40 dB allows MSE 1e-4: all four steps fit; the model's two come first.
+  EXPECT_EQ(pathOf(r), (std::vector<std::string>{"f.model=schlick", "f.model=power", "detail.octaves=2", "detail.octaves=1"}));
+}
+
+// Equal error and equal time saved: fewer SPIR-V instructions first, then the knob's name;
+// two runs on the same measurements take the same path.
+TEST(TuneSearch, TiesBreakBySpirvThenNameAndRepeat) {
+  std::vector<TuneKnob> knobs{{"z", "bypass", {true, false}}, {"b", "bypass", {true, false}}, {"a", "bypass", {true, false}}};
+  FakeMeasurements m;
+  m.errorOf = [](const TuneConfig& c) { return c == TuneConfig{1, 1, 1} ? psnr(INFINITY, 0) : psnr(60); };
+  // z's level off saves as much time as the others but leaves more instructions.
+  m.costOf = [](const TuneConfig& c) { return TuneCost{3.0 + c[0] + c[1] + c[2], 300 - 50 * (1 - c[0]) - 60 * (1 - c[1]) - 60 * (1 - c[2])}; };
+  TuneResult first = tuneSearch(knobs, minPsnr(45), m);
+  TuneResult second = tuneSearch(knobs, minPsnr(45), m);
+  EXPECT_EQ(pathOf(first), (std::vector<std::string>{"a.bypass=true", "b.bypass=true", "z.bypass=true"}));
+  EXPECT_EQ(pathOf(first), pathOf(second));
+  ASSERT_EQ(first.tried.size(), second.tried.size());
+  for (size_t i = 0; i < first.tried.size(); ++i) EXPECT_EQ(first.tried[i].label, second.tried[i].label);
+}
+
+TEST(TuneSearch, ACandidateWithNaNIsNeverTaken) {
+  FakeMeasurements m;
+  m.errorOf = [](const TuneConfig& c) {
+    if (c[0] < 2) return TuneError{INFINITY, 0, false, "grazing t=20"};  // fewer octaves: NaN somewhere
+    return c[1] == 2 ? psnr(INFINITY, 0) : psnr(50);
+  };
+  m.costOf = [](const TuneConfig& c) { return TuneCost{1.0 + 100 * c[0] + c[1], 100}; };
+  TuneResult r = tuneSearch(twoKnobs(), minPsnr(45), m);
+  ASSERT_TRUE(r.found) << r.why;
+  EXPECT_EQ(pathOf(r), (std::vector<std::string>{"f.model=schlick", "f.model=power"}));
+}
+
+TEST(TuneSearch, ABudgetNothingMeetsIsNotFoundAndSaysSo) {
+  FakeMeasurements m;
+  m.errorOf = [](const TuneConfig& c) { return c == TuneConfig{2, 2} ? psnr(INFINITY, 0) : psnr(80, 1e-4); };
+  m.costOf = [](const TuneConfig& c) { return TuneCost{1.0 + c[0] + c[1], 100}; };
+  TuneBudget exact;
+  exact.maxAbsError = 0;
+  TuneResult r = tuneSearch(twoKnobs(), exact, m);
+  EXPECT_FALSE(r.found);
+  EXPECT_EQ(r.path.size(), 1u);
+  EXPECT_NE(r.why.find("no configuration cheaper than the reference meets the budget"), std::string::npos) << r.why;
+  // The reference itself, rendered again, differing from its first render (a noisy target).
+  m.errorOf = [](const TuneConfig&) { return psnr(90, 1e-5); };
+  r = tuneSearch(twoKnobs(), exact, m);
+  EXPECT_FALSE(r.found);
+  EXPECT_NE(r.why.find("even the reference"), std::string::npos) << r.why;
+}
+
+TEST(TuneSearch, AStepThatFailsVerificationIsUndone) {
+  FakeMeasurements m;
+  m.errorOf = [](const TuneConfig& c) { return c == TuneConfig{2, 2} ? psnr(INFINITY, 0) : psnr(60); };
+  m.costOf = [](const TuneConfig& c) { return TuneCost{1.0 + c[0] + 2 * c[1], 100}; };
+  // Rendered again, the lowest configuration comes out worse than it measured.
+  m.verifyOf = [](const TuneConfig& c) { return c == TuneConfig{0, 0} ? psnr(40) : psnr(60); };
+  TuneResult r = tuneSearch(twoKnobs(), minPsnr(45), m);
+  ASSERT_TRUE(r.found) << r.why;
+  // Path: model=schlick (saves more), then the zero-error ties by name: octaves, octaves, model.
+  EXPECT_EQ(r.chosen().config, (TuneConfig{0, 1}));
+  EXPECT_EQ(r.verified.worstPsnr, 60);
+}
+
+}  // namespace
+}  // namespace wg::accuracy
