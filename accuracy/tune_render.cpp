@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include <time.h>
+
 #include "accuracy/spirv_count.h"
 #include "codegen/compile.h"
 #include "nodes/registry.h"
@@ -32,6 +34,14 @@ std::string diagText(const Diagnostics& d) {
   std::string s;
   for (const auto& x : d.all()) s += "\n  " + formatText(x);
   return s;
+}
+
+// CPU time of the whole process, llvmpipe's rasterizer threads included: what a frame
+// costs, unlike wall time, does not grow when other programs share the cores.
+double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) * 1e3 + static_cast<double>(t.tv_nsec) * 1e-6;
 }
 
 std::string key(const std::optional<TuneConfig>& config) {
@@ -183,7 +193,8 @@ std::vector<TuneCost> GlTuneMeasurements::costOf(const std::vector<std::optional
   std::vector<Entry*> entries;
   for (const auto& c : configs) entries.push_back(&entry(c));
   // Each repeat renders every configuration from every camera (at the first time), one
-  // configuration after another: the medians share the machine's state.
+  // configuration after another: the medians share the machine's state. A frame's cost is
+  // the process's CPU time across it (the frame and its glFinish).
   std::vector<std::vector<double>> ms(entries.size());
   rt::SceneOptions scene;
   scene.time = static_cast<float>(sweep_.times.front());
@@ -193,7 +204,9 @@ std::vector<TuneCost> GlTuneMeasurements::costOf(const std::vector<std::optional
       for (const auto& cam : sweep_.cameras) {
         entries[i]->renderer->setCamera(*rt::cameraPreset(cam));
         entries[i]->renderer->setScene(scene);
-        sum += entries[i]->renderer->renderFrame();
+        double before = processCpuMs();
+        entries[i]->renderer->renderFrame();
+        sum += processCpuMs() - before;
       }
       ms[i].push_back(sum);
     }

@@ -2,7 +2,8 @@
 // The measurements of `watergraph tune` on the GL runtime: each configuration of a graph's
 // quality knobs is compiled, rendered into RGBA32F frames over a sweep of views (cameras x
 // times) and compared frame by frame with the reference's (every knob at its most exact
-// level); its cost is ms per megapixel, timed in interleaved repeats beside the other
+// level); its cost is CPU ms per megapixel (the process's CPU time, llvmpipe's threads
+// included, across each frame), timed in interleaved repeats beside the other
 // configurations of the same round, plus the fragment shader's SPIR-V instruction count
 // after spirv-opt -O.
 #include <map>

@@ -84,7 +84,7 @@ std::string tunePlotSvg(const TuneResult& result, const TuneBudget& budget, cons
          "\" text-anchor=\"end\">" + fixed(y, 0) + "</text>\n";
   s += "<text x=\"" + fixed(left - 6, 1) + "\" y=\"" + fixed(Y(INFINITY) + 4, 1) + "\" text-anchor=\"end\">identical</text>\n";
   s += "<text x=\"" + fixed((left + W - right) / 2, 1) + "\" y=\"" + fixed(H - 20, 1) +
-       "\" text-anchor=\"middle\">cost: ms per megapixel (median of interleaved repeats)</text>\n";
+       "\" text-anchor=\"middle\">cost: CPU ms per megapixel (median of interleaved repeats)</text>\n";
   s += "<text transform=\"translate(18," + fixed((top + H - bottom) / 2, 1) +
        ") rotate(-90)\" text-anchor=\"middle\">worst-frame PSNR against the reference, dB</text>\n";
   if (budget.minPsnr)

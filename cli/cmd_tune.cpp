@@ -125,9 +125,10 @@ int runTune(const TuneArgs& args) {
     for (double t : gl.sweep().times) times += (times.empty() ? "" : ", ") + fixed(t, 1);
     std::cout << "tune " << args.graph << ": " << budget.text() << "; " << gl.viewLabels().size() << " frames ("
               << cameras << " at t = " << times << " s), " << sweep.width << "x" << sweep.height << " RGBA32F, "
-              << args.target << " on " << gl.renderer() << "; " << knobs.size() << " knobs\n\n";
+              << args.target << " on " << gl.renderer() << "; " << knobs.size() << (knobs.size() == 1 ? " knob\n\n" : " knobs\n\n");
     TuneResult result = tuneSearch(knobs, budget, gl, progress);
-    std::cout << tunePathTable(result) << "\n";
+    std::cout << tunePathTable(result)
+              << "(each step's ms/MP as timed in the round that took it; the configurations below are timed together)\n\n";
     if (!args.plot.empty()) {
       Diagnostics w;
       if (!writeFileAtomically(args.plot, tunePlotSvg(result, budget, "watergraph tune " + args.graph + ": " + budget.text()), w)) {
@@ -193,7 +194,8 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
       "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost; the one with the "
       "least error increase per ms/MP saved is taken (ties: fewer SPIR-V instructions, then the knob's name), until "
-      "none qualifies. Cost: ms per megapixel, the median of interleaved repeats of every camera at the first time, timed "
+      "none qualifies. Cost: CPU ms per megapixel (the process's CPU time across each frame, llvmpipe's threads included, "
+      "so other programs on the machine do not inflate it), the median of interleaved repeats of every camera at the first time, timed "
       "beside the current configuration; SPIR-V instructions after spirv-opt -O. The chosen configuration is rendered "
       "again and checked once more. Prints the path, then the chosen configuration timed beside the reference and the "
       "graph as written.\n\n"
