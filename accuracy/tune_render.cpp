@@ -198,8 +198,11 @@ std::vector<TuneCost> GlTuneMeasurements::costOf(const std::vector<std::optional
   std::vector<std::vector<double>> ms(entries.size());
   rt::SceneOptions scene;
   scene.time = static_cast<float>(sweep_.times.front());
+  // The order rotates from repeat to repeat: whichever configuration comes first after
+  // another's frames does not always pay for the switch.
   for (int run = 0; run < std::max(sweep_.runs, 1); ++run)
-    for (size_t i = 0; i < entries.size(); ++i) {
+    for (size_t j = 0; j < entries.size(); ++j) {
+      size_t i = (j + static_cast<size_t>(run)) % entries.size();
       double sum = 0;
       for (const auto& cam : sweep_.cameras) {
         entries[i]->renderer->setCamera(*rt::cameraPreset(cam));
