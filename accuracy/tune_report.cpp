@@ -45,6 +45,26 @@ std::string tunePathTable(const TuneResult& result) {
   return o;
 }
 
+std::string tuneStopText(const TuneResult& result) {
+  std::string o;
+  for (size_t i = std::max<size_t>(result.lastRound, 1); i < result.tried.size(); ++i) {
+    const TuneTried& t = result.tried[i];
+    if (t.config == result.chosen().config) continue;
+    char buf[200];
+    if (!t.error.finite)
+      std::snprintf(buf, sizeof buf, "NaN/Inf in %s", t.error.worstFrame.c_str());
+    else if (!t.meetsBudget)
+      std::snprintf(buf, sizeof buf, "fails the budget: worst PSNR %s dB (%s), max abs error %.3g", psnrText(t.error.worstPsnr).c_str(),
+                    t.error.worstFrame.c_str(), t.error.maxAbsError);
+    else
+      std::snprintf(buf, sizeof buf, "saves nothing: %.1f ms/MP, %d SPIR-V instr. (the configuration it was tried from: %.1f, %d)",
+                    t.cost.msPerMegapixel, t.cost.spirvInstructions, result.lastRoundCurrent.msPerMegapixel,
+                    result.lastRoundCurrent.spirvInstructions);
+    o += "  " + t.label + ": " + buf + "\n";
+  }
+  return o.empty() ? o : "the descent stopped; the last round's candidates:\n" + o;
+}
+
 std::string tunePlotSvg(const TuneResult& result, const TuneBudget& budget, const std::string& title) {
   const double W = 760, H = 500, left = 70, right = 20, top = 40, bottom = 60;
   std::vector<const TuneTried*> pts;

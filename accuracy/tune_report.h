@@ -15,6 +15,10 @@ namespace wg::accuracy {
 // ms/MP and SPIR-V instructions.
 std::string tunePathTable(const TuneResult& result);
 
+// What ended the descent: each candidate of the last round, and why it was not taken
+// ("fails the budget: worst PSNR ...", "saves nothing: ..."); "" when there was none.
+std::string tuneStopText(const TuneResult& result);
+
 // Every tried configuration on cost (ms/MP) against worst PSNR; configurations that meet
 // the budget filled, the others hollow; the Pareto front ringed and joined; the chosen
 // configuration labelled; the PSNR budget (if any) a dashed line.

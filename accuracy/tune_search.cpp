@@ -128,12 +128,14 @@ TuneResult tuneSearch(const std::vector<TuneKnob>& knobs, const TuneBudget& budg
       candidates.push_back(std::move(c));
     }
     if (candidates.empty()) break;
+    result.lastRound = result.tried.size();
     // The current configuration is timed again beside its candidates: savings are measured
     // within one run.
     std::vector<TuneConfig> timed{current};
     for (const auto& c : candidates) timed.push_back(c.config);
     std::vector<TuneCost> costs = measure.cost(timed);
     currentCost = costs[0];
+    result.lastRoundCurrent = currentCost;
     const Candidate* best = nullptr;
     for (size_t i = 0; i < candidates.size(); ++i) {
       Candidate& c = candidates[i];

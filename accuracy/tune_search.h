@@ -82,6 +82,8 @@ struct TuneTried {
 struct TuneResult {
   std::vector<TuneStep> path;    // path[0]: the reference; the last step: the chosen one
   std::vector<TuneTried> tried;  // every configuration measured, in order
+  size_t lastRound = 0;          // tried[lastRound..]: the candidates of the round that ended the descent
+  TuneCost lastRoundCurrent;     // the configuration they were tried from, timed beside them
   TuneError verified;            // the chosen configuration rendered again
   bool found = false;            // a configuration cheaper than the reference meets the budget
   std::string why;               // when not found: why, as a sentence

@@ -128,7 +128,8 @@ int runTune(const TuneArgs& args) {
               << args.target << " on " << gl.renderer() << "; " << knobs.size() << (knobs.size() == 1 ? " knob\n\n" : " knobs\n\n");
     TuneResult result = tuneSearch(knobs, budget, gl, progress);
     std::cout << tunePathTable(result)
-              << "(each step's ms/MP as timed in the round that took it; the configurations below are timed together)\n\n";
+              << "(each step's ms/MP as timed in the round that took it; the configurations below are timed together)\n\n"
+              << tuneStopText(result) << "\n";
     if (!args.plot.empty()) {
       Diagnostics w;
       if (!writeFileAtomically(args.plot, tunePlotSvg(result, budget, "watergraph tune " + args.graph + ": " + budget.text()), w)) {

@@ -46,6 +46,7 @@ TEST(TuneCli, FindsTheKnownBestConfiguration) {
   EXPECT_NE(r.out.find("chosen: f.model=exact, cv.bypass=true\n"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("| 1 | cv.bypass | true |"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("| 2 |"), std::string::npos) << "one step only:\n" << r.out;
+  EXPECT_NE(r.out.find("  f.model=schlick: fails the budget: worst PSNR "), std::string::npos) << "why it stopped:\n" << r.out;
   std::string svg = test::readFile(dir + "/tune.svg");
   EXPECT_EQ(svg.rfind("<svg", 0), 0u);
   EXPECT_NE(svg.find("cv.bypass=true"), std::string::npos);
