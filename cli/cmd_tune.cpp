@@ -4,6 +4,7 @@
 // runtime (accuracy/tune_render.h); prints the path, optionally writes the result into the
 // graph as a preset and plots every tried configuration.
 #include <chrono>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +15,7 @@
 #include <unistd.h>
 
 #include "cli/commands.h"
+#include "cli/finite_number.h"
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
 
@@ -85,7 +87,8 @@ int runTune(const TuneArgs& args) {
   for (const auto& t : splitCommas(args.times)) {
     char* end = nullptr;
     double v = std::strtod(t.c_str(), &end);
-    if (t.empty() || *end != '\0' || !std::isfinite(v)) return usage("--times must be numbers separated by commas (got '" + t + "')");
+    if (t.empty() || *end != '\0' || !std::isfinite(v) || std::fabs(v) > FLT_MAX)  // u_time is a float
+      return usage("--times must be finite numbers within float range, separated by commas (got '" + t + "')");
     sweep.times.push_back(v);
   }
   if (sweep.times.empty()) return usage("--times needs at least one time");
@@ -206,8 +209,9 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "Exit codes: 0 a configuration found; 1 the graph has no knob, does not load or compile, or no configuration "
       "cheaper than the reference meets the budget; 2 usage, I/O, or no EGL/GL.");
   cmd->add_option("graph", args->graph, "the graph file (.json)")->required();
-  cmd->add_option("--min-psnr", args->minPsnr, "budget: every frame's PSNR (dB, peak 1) at least this");
-  cmd->add_option("--max-abs-error", args->maxAbsError, "budget: no colour channel of any pixel off by more than this");
+  cmd->add_option("--min-psnr", args->minPsnr, "budget: every frame's PSNR (dB, peak 1) at least this")->check(finiteFloat());
+  cmd->add_option("--max-abs-error", args->maxAbsError, "budget: no colour channel of any pixel off by more than this")
+      ->check(finiteFloat());
   cmd->add_option("--cameras", args->cameras, "camera presets, comma separated (above, grazing, underwater, topdown)");
   cmd->add_option("--times", args->times, "scene times in seconds, comma separated")->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();

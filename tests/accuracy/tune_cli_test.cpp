@@ -71,6 +71,14 @@ TEST(TuneCli, ABudgetNothingMeetsIsOneMessageAndExit1) {
   r = wg("tune " + test::shellQuote(dir + "/g.json") + kSmall);
   EXPECT_EQ(r.exit, 2);
   EXPECT_NE(r.err.find("give a budget"), std::string::npos) << r.err;
+  // A budget or time that is not a finite float would compare false everywhere or reach
+  // u_time as Inf: a usage error, before anything is rendered.
+  for (const char* bad : {" --min-psnr nan --times 1", " --max-abs-error inf --times 1", " --min-psnr 45 --times 1,1e300"}) {
+    r = wg("tune " + test::shellQuote(dir + "/g.json") + bad + " --size 64x36 --runs 1");
+    EXPECT_EQ(r.exit, 2) << bad;
+    EXPECT_NE(r.err.find("within float range"), std::string::npos) << bad << ": " << r.err;
+  }
+  EXPECT_EQ(test::readFile(dir + "/g.json"), before) << "nothing written";
   std::filesystem::remove_all(dir);
 }
 
