@@ -2,7 +2,8 @@
 # The hard-case suite through the CLI, per target: every node type with
 # tests/hardcases/suite.json, its option variants and its own hard cases
 # (`watergraph probe --node TYPE --variants --json`, as tests/accuracy runs the suite),
-# summed into one line: case runs, failures, NaN/Inf, the largest absolute error and the
+# summed into one line: case runs, failures, NaN/Inf, the largest error on the scale of the
+# tolerance (|gpu - ref| / max(1, |ref|), of the component closest to its bound) and the
 # largest error/bound. vk450 runs under the Khronos validation layer. The figures in
 # docs/accuracy.md ("The hard-case suite"). Not part of CI (the gtests run the suite).
 # Usage, from the repository root:
@@ -37,10 +38,11 @@ cases = [c for r in runs for c in r["cases"]]
 failed = sum(not c["passed"] for c in cases)
 naninf = sum(c["gpu_nan_inf"] or c["reference_nan_inf"] for c in cases)
 finite = [c for c in cases if not (c["gpu_nan_inf"] or c["reference_nan_inf"])]
-worst_abs = max((num(c["abs_error"]) for c in finite), default=0)
+# |gpu - ref| / max(1, |ref|): the absolute error below 1, the relative error above.
+worst_scaled = max((min(num(c["abs_error"]), num(c["rel_error"])) for c in finite), default=0)
 worst_ratio = max((num(c["abs_error"]) / num(c["bound"]) if num(c["bound"]) > 0 else (0 if num(c["abs_error"]) == 0 else math.inf)
                    for c in finite), default=0)
-print("%-8s %5d probe runs %6d case runs %3d failed %3d NaN/Inf  max abs error %.3g  worst error/bound %.3g"
-      % (sys.argv[1], len(runs), len(cases), failed, naninf, worst_abs, worst_ratio))
+print("%-8s %5d probe runs %6d case runs %3d failed %3d NaN/Inf  max error %.3g  worst error/bound %.3g"
+      % (sys.argv[1], len(runs), len(cases), failed, naninf, worst_scaled, worst_ratio))
 ' "$target"
 done
