@@ -2,7 +2,7 @@
 // `watergraph check`: a compiled graph rendered into an RGBA32F frame over a sweep of
 // views — camera elevation from grazing to top-down, under water when the graph has the
 // deferred underwater pass, times up to 1e6 s, sun positions — counting NaN and Inf
-// pixels. On glsl330 the frame is compared, on a grid of sampled water pixels, with the
+// pixels. On glsl330 and vk450 the frame is compared, on a grid of sampled water pixels, with the
 // double reference of the graph's fragment stage evaluated on the inputs the GPU's
 // fragment shader had there, read back (accuracy/readback.h: varyings of the displaced
 // surface, depth, scene and node texture look-ups), and each sample is held to the
@@ -65,9 +65,15 @@ struct CheckReport {
 // checkGraph adds the read-back's reasons (planReadback).
 std::string referenceUnavailable(const CompileResult& result);
 
-// Renders every view on the current context (API matching `target`). Throws
-// rt::RuntimeError for driver or manifest problems, std::invalid_argument for a mutation
-// whose text is not in the water shaders.
+class GpuExecutor;
+
+// Renders every view on `executor` (accuracy/gpu_executor.h; `result` compiled for its
+// target). Throws rt::RuntimeError for driver or manifest problems (on vk450 with
+// validation, any message of the layer), std::invalid_argument for a mutation whose text
+// is not in the water shaders.
+CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, GpuExecutor& executor,
+                       const CheckOptions& options = {});
+// The same on the current GL context, whose API must match `target` (glsl330 or es300).
 CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, Target target,
                        const CheckOptions& options = {});
 

@@ -6,6 +6,7 @@
 #include <set>
 #include <stdexcept>
 
+#include "accuracy/gpu_executor.h"
 #include "accuracy/node_probe.h"
 #include "accuracy/number_text.h"
 #include "codegen/emit_glsl.h"
@@ -87,6 +88,11 @@ std::vector<std::string> nodeReads(const NodeSpec& spec) {
 }
 
 SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, Target target, const SuiteOptions& options) {
+  return runHardCaseSuite(suite, *currentGlExecutor(target), options);
+}
+
+SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, GpuExecutor& executor, const SuiteOptions& options) {
+  const Target target = executor.target();
   SuiteResult result;
   for (const NodeSpec* spec : defaultRegistry().all()) {
     if (!options.nodes.empty() && std::find(options.nodes.begin(), options.nodes.end(), spec->type) == options.nodes.end())
@@ -119,7 +125,7 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, Target target, const Su
           std::optional<ProbeReport> report;
           std::string label = spec->type + " [" + variant + (key == variantOptions.dump() ? "" : ", " + key) + "]." + out.name;
           try {
-            report = probeNode(*spec, group.first, out.name, group.second, target, diags, options.mutation);
+            report = probeNode(*spec, group.first, out.name, group.second, executor, diags, options.mutation);
           } catch (const rt::RuntimeError& e) {
             result.errors.push_back(label + ": " + e.what());
             continue;

@@ -40,7 +40,9 @@ struct SuiteResult {
   std::vector<std::string> errors;        // nodes that could not be probed, and why
 };
 
-// On the current GL context, whose API must match `target`.
+// On `executor` (accuracy/gpu_executor.h): its target's probe shaders on its API.
+SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, GpuExecutor& executor, const SuiteOptions& options);
+// On the current GL context, whose API must match `target` (glsl330 or es300).
 SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, Target target, const SuiteOptions& options);
 
 // Which suite keys ("time", "scene.depth", ...) the node reads with its default options.

@@ -25,7 +25,11 @@ struct NodeProbeSetup {
 };
 NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options, const std::vector<ProbeCase>& cases);
 
-// Probes output `output` ("" = the first) of `spec` on the current context.
+// Probes output `output` ("" = the first) of `spec` on `executor`.
+std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
+                                     const std::vector<ProbeCase>& cases, GpuExecutor& executor, Diagnostics& diags,
+                                     const ShaderMutation& mutation = {});
+// The same on the current GL context, whose API must match `target` (glsl330 or es300).
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
                                      const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags,
                                      const ShaderMutation& mutation = {});

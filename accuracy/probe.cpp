@@ -6,11 +6,9 @@
 #include <limits>
 #include <stdexcept>
 
-#include <epoxy/gl.h>
-
 #include "accuracy/error_bound.h"
 #include "accuracy/number_text.h"
-#include "accuracy/probe_gpu.h"
+#include "accuracy/gpu_executor.h"
 #include "codegen/cpu_backend.h"
 #include "codegen/emit_glsl.h"
 #include "core/number_format.h"
@@ -114,6 +112,12 @@ void applyMutation(EmitResult& shader, const ShaderMutation& m) {
 
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
                                       Target target, Diagnostics& diags, const ShaderMutation& mutation) {
+  return probeGraph(graph, output, cases, *currentGlExecutor(target), diags, mutation);
+}
+
+std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
+                                      GpuExecutor& executor, Diagnostics& diags, const ShaderMutation& mutation) {
+  const Target target = executor.target();
   // Parameters a case sets must exist in the graph (they may be pruned from the program).
   for (const auto& c : cases.cases) {
     // The node-probe keys have no meaning for a graph: say which keys a graph case takes.
@@ -169,11 +173,9 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
   }
   report.type = program->outputs.front().type;
   report.target = target;
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  report.renderer = renderer ? renderer : "";
+  report.renderer = executor.deviceName();
   std::vector<std::array<float, 4>> gpu =
-      runProbeOnGpu(shader, *program, cases.cases, target == Target::Es300, graph.file + " (probe, " +
-                                                                                std::string(targetName(target)) + ")");
+      executor.runProbe(shader, *program, cases.cases, graph.file + " (probe, " + std::string(targetName(target)) + ")");
   for (size_t i = 0; i < cases.cases.size(); ++i) {
     const ProbeCase& c = cases.cases[i];
     std::vector<Value> params;

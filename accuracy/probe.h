@@ -44,7 +44,7 @@ struct ProbeReport {
   std::string output;  // "wave.normal" or "fragment.color"
   Type type = Type::Float;
   Target target = Target::Glsl330;
-  std::string renderer;  // GL_RENDERER
+  std::string renderer;  // GL_RENDERER, or the Vulkan device
   std::vector<ProbeCaseResult> cases;
   bool passed() const;
   int failures() const;
@@ -62,10 +62,15 @@ struct ShaderMutation {
 // Applies `m` to every stage of `shader` (see ShaderMutation).
 void applyMutation(EmitResult& shader, const ShaderMutation& m);
 
-// Builds the probe program and shader for `target`, checks the cases' parameter names
-// against the graph (WG060 at the case), runs the cases on the current GL context (whose
-// API must match the target) and in double. nullopt with diagnostics for graph or case
+class GpuExecutor;
+
+// Builds the probe program and shader for the executor's target, checks the cases'
+// parameter names against the graph (WG060 at the case), runs the cases on the executor
+// (accuracy/gpu_executor.h) and in double. nullopt with diagnostics for graph or case
 // problems; throws rt::RuntimeError for driver problems.
+std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
+                                      GpuExecutor& executor, Diagnostics& diags, const ShaderMutation& mutation = {});
+// The same on the current GL context, whose API must match `target` (glsl330 or es300).
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
                                       Target target, Diagnostics& diags, const ShaderMutation& mutation = {});
 

@@ -88,6 +88,19 @@ void fillSceneTexture(GLuint tex, bool cube, const std::array<float, 4>& texel) 
 
 }  // namespace
 
+Value probeUniformValue(const UniformInfo& u, const Program& program, const ProbeCase& c, size_t index) {
+  if (u.parameter >= 0) {
+    const ProgramParameter& p = program.parameters[static_cast<size_t>(u.parameter)];
+    Value v = p.defaultValue;
+    for (const auto& [name, value] : c.parameters)
+      if (name == p.name) v = value.convertedTo(p.type);
+    return v;
+  }
+  if (u.builtin == BuiltinUniform::ProbePixel)  // gl_FragCoord at the centre of the case's pixel
+    return Value::vector({static_cast<double>(index % 1024) + 0.5, static_cast<double>(index / 1024) + 0.5});
+  return builtinValue(u, c.env);
+}
+
 std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const Program& program,
                                                 const std::vector<ProbeCase>& cases, bool es, const std::string& what) {
   if (cases.empty()) return {};
@@ -142,19 +155,7 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
     for (size_t k = 0; k < shader.uniforms.size(); ++k) {
       const UniformInfo& u = shader.uniforms[k];
       if (locations[k] < 0) continue;  // optimised out by the driver
-      Value v;
-      if (u.parameter >= 0) {
-        const ProgramParameter& p = program.parameters[static_cast<size_t>(u.parameter)];
-        v = p.defaultValue;
-        for (const auto& [name, value] : c.parameters)
-          if (name == p.name) v = value.convertedTo(p.type);
-      } else if (u.builtin == BuiltinUniform::ProbePixel) {
-        // gl_FragCoord at the centre of the pixel the case is drawn into (the viewport below).
-        v = Value::vector({static_cast<double>(i % 1024) + 0.5, static_cast<double>(i / 1024) + 0.5});
-      } else {
-        v = builtinValue(u, c.env);
-      }
-      setUniform(locations[k], u.type, v);
+      setUniform(locations[k], u.type, probeUniformValue(u, program, c, i));
     }
     for (size_t k = 0; k < bound.size(); ++k) {
       glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(k));

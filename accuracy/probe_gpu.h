@@ -17,7 +17,14 @@
 
 namespace wg::accuracy {
 
-// Throws rt::RuntimeError (Driver: the driver rejected the shader; Manifest: a texture
+// The value uniform `u` of a probe shader takes for case `c`, drawn into pixel `index` (up
+// to 1024 a row): a parameter's (the case's, else the default), the case's builtin, or the
+// pixel's centre for u_probe_pixel. Every executor (GL here, Vulkan in vk_probe.h) sets
+// the uniforms from this one function. Throws rt::RuntimeError for a builtin the probe
+// cannot set.
+Value probeUniformValue(const UniformInfo& u, const Program& program, const ProbeCase& c, size_t index);
+
+// On the current GL context. Throws rt::RuntimeError (Driver: the driver rejected the shader; Manifest: a texture
 // cannot be loaded). `what` names the shader in errors.
 std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const Program& program,
                                                 const std::vector<ProbeCase>& cases, bool es, const std::string& what);

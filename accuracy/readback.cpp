@@ -3,6 +3,7 @@
 #include <cctype>
 #include <stdexcept>
 
+#include "accuracy/gpu_executor.h"
 #include "codegen/shader_interface.h"
 #include "runtime/preview.h"
 
@@ -150,23 +151,23 @@ bool ReadbackImage::water(int px, int py, const ReadbackPlan& plan) const {
   return at(px, py, plan.mask) == kWaterMark;
 }
 
-ReadbackRenderer::ReadbackRenderer(const CompileResult& result, const std::vector<rt::ShaderSource>& water,
-                                   ReadbackPlan plan, const rt::RenderSettings& settings, bool es)
+ReadbackRenderer::ReadbackRenderer(GpuExecutor& executor, const CompileResult& result,
+                                   const std::vector<rt::ShaderSource>& water, ReadbackPlan plan,
+                                   const rt::RenderSettings& settings)
     : plan_(std::move(plan)) {
   for (int f = 0; f < plan_.frames(); ++f)
-    renderers_.push_back(std::make_unique<rt::Renderer>(result.manifest, tapShaders(water, plan_, f), settings, es,
-                                                        rt::textureOrigins(result)));
+    renderers_.push_back(executor.waterFrames(result, tapShaders(water, plan_, f), /*edited=*/true, settings));
 }
+
+ReadbackRenderer::~ReadbackRenderer() = default;
 
 ReadbackImage ReadbackRenderer::read(const rt::Camera& camera, const rt::SceneOptions& scene) {
   ReadbackImage img;
   img.channels = static_cast<int>(plan_.channels.size());
   for (size_t f = 0; f < renderers_.size(); ++f) {
-    rt::Renderer& r = *renderers_[f];
-    r.setCamera(camera);
-    r.setScene(scene);
-    r.renderFrame();
-    rt::Image frame = r.readRgba32f();
+    WaterFrames& r = *renderers_[f];
+    r.setView(camera, scene);
+    rt::Image frame = r.render();
     if (f == 0) {
       img.width = frame.width, img.height = frame.height;
       img.values.assign(static_cast<size_t>(img.width) * img.height * img.channels, 0.0f);

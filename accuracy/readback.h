@@ -64,17 +64,22 @@ struct ReadbackImage {
   bool water(int px, int py, const ReadbackPlan& plan) const;  // false outside the frame
 };
 
-// The tap renderers of a graph: one per frame of the plan, reused over the views.
+class GpuExecutor;
+class WaterFrames;
+
+// The tap renderers of a graph: one per frame of the plan, reused over the views, on the
+// executor's API (the tap shaders are edited texts of its target's water shaders).
 class ReadbackRenderer {
  public:
-  ReadbackRenderer(const CompileResult& result, const std::vector<rt::ShaderSource>& water, ReadbackPlan plan,
-                   const rt::RenderSettings& settings, bool es);
+  ReadbackRenderer(GpuExecutor& executor, const CompileResult& result, const std::vector<rt::ShaderSource>& water,
+                   ReadbackPlan plan, const rt::RenderSettings& settings);
+  ~ReadbackRenderer();
   ReadbackImage read(const rt::Camera& camera, const rt::SceneOptions& scene);
   const ReadbackPlan& plan() const { return plan_; }
 
  private:
   ReadbackPlan plan_;
-  std::vector<std::unique_ptr<rt::Renderer>> renderers_;
+  std::vector<std::unique_ptr<WaterFrames>> renderers_;
 };
 
 // The environment field a scene look-up through `sampler` sets in the reference; null for

@@ -12,11 +12,11 @@
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/check.h"
+#include "accuracy/gpu_executor.h"
 #include "codegen/compile.h"
 #include "codegen/texture_files.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
-#include "runtime/egl_context.h"
 #include "runtime/image.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
@@ -32,6 +32,7 @@ struct CheckArgs {
   std::string errorMap;  // FILE.png: the error image (several graphs: FILE-GRAPH.png)
   std::string mutate;    // FIND=>REPLACE in the water shaders
   std::string preset;    // a preset of each graph, applied before compiling
+  bool vulkanValidation = false;  // vk450: under the Khronos validation layer
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -55,14 +56,21 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
     }
     options.mutation = {args.mutate.substr(0, at), args.mutate.substr(at + 2)};
   }
+  if (args.vulkanValidation && args.target != "vk450" && args.target != "all") {
+    std::cerr << "watergraph: --vk-validation needs --target vk450 or all (the layer checks Vulkan calls)\n";
+    return kExitUsageOrIo;
+  }
   std::vector<Target> targets;
-  if (args.target == "all") targets = {Target::Glsl330, Target::Es300};
+  if (args.target == "all") targets = {Target::Glsl330, Target::Es300, Target::Vk450};
   else targets = {*parseTarget(args.target)};
   int exit = kExitOk;
   for (Target target : targets) {
-    std::unique_ptr<rt::EglContext> context;
+    std::unique_ptr<accuracy::GpuExecutor> executor;
     try {
-      context = rt::EglContext::create(rt::apiFor(target));
+      accuracy::ExecutorOptions executorOptions;
+      executorOptions.vulkanValidation = args.vulkanValidation && target == Target::Vk450;
+      executorOptions.tessellation = true;  // a graph may tessellate its water
+      executor = accuracy::makeGpuExecutor(target, executorOptions);
     } catch (const rt::RuntimeError& e) {
       std::cerr << "watergraph: check: " << e.what() << "\n";
       return e.exitCode();
@@ -83,7 +91,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         continue;
       }
       try {
-        auto report = accuracy::checkGraph(*result, path, target, options);
+        auto report = accuracy::checkGraph(*result, path, *executor, options);
         std::cout << accuracy::formatCheckText(report);
         if (report.failed()) exit = std::max(exit, kExitGraphError);
         rt::Image map = accuracy::errorMapImage(report);
@@ -112,6 +120,12 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         return kExitUsageOrIo;
       }
     }
+    try {
+      executor->finish();
+    } catch (const rt::RuntimeError& e) {
+      std::cerr << "watergraph: check: " << e.what() << "\n";
+      exit = std::max(exit, e.exitCode());
+    }
   }
   return exit;
 }
@@ -125,17 +139,22 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
       "check",
       "Render graphs headless into an RGBA32F frame over a sweep: camera elevation 0.5 to 89.5 degrees, under water "
       "(graphs with the underwater node), times 13107, 524288 and 1e6 s, sun near the horizon, overhead and below it. "
-      "Counts NaN and Inf pixels; on glsl330 compares sampled water pixels with the CPU reference evaluated on the "
+      "glsl330 and es300 run on headless GL, vk450 (the SPIR-V compile writes) on Vulkan. "
+      "Counts NaN and Inf pixels; on glsl330 and vk450 compares sampled water pixels with the CPU reference evaluated on the "
       "inputs the GPU's fragment shader had there (read back: varyings, depth, scene and texture look-ups), each held to the graph's error bound (the probe's: the largest tolerance of its ops plus the conditioning of "
       "the pixel's inputs), and reports max and mean error per view and per graph. See docs/accuracy.md.\n\n"
       "Examples:\n  watergraph check graphs/*.json\n"
-      "  watergraph check graphs/lake.json --target glsl330 --size 320x180 --error-map lake-error.png\n\n"
+      "  watergraph check graphs/lake.json --target glsl330 --size 320x180 --error-map lake-error.png\n"
+      "  watergraph check graphs/*.json --target vk450 --vk-validation\n\n"
       "Exit codes: 0 no NaN/Inf and every compared pixel within its bound; 1 a NaN/Inf pixel, a pixel over its bound, "
-      "graph errors or a shader the driver rejects; 2 usage, I/O, or no EGL/GL context.");
+      "graph errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no EGL/GL context or Vulkan "
+      "device.");
   cmd->add_option("graphs", args->graphs, "graph files (.json)")->required();
-  cmd->add_option("--target", args->target, "glsl330, es300 or all")
-      ->check(CLI::IsMember({"glsl330", "es300", "all"}))
+  cmd->add_option("--target", args->target, "glsl330, es300, vk450 or all (the three)")
+      ->check(CLI::IsMember({"glsl330", "es300", "vk450", "all"}))
       ->capture_default_str();
+  cmd->add_flag("--vk-validation", args->vulkanValidation,
+                "vk450: run under the Khronos validation layer; any message it reports fails the graph (exit 1)");
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frame")->capture_default_str();
   cmd->add_option("--preset", args->preset,
                   "a preset from each graph's \"presets\" table: its parameter values and node options apply");

@@ -1,5 +1,6 @@
 // probe: one output of a graph evaluated per case on the GPU in float32 (one pixel of an
-// RGBA32F target per case) and by the double reference; prints both, the errors and the
+// RGBA32F target per case; GL for glsl330 and es300, Vulkan for vk450) and by the double
+// reference; prints both, the errors and the
 // NaN/Inf flags. Exit 1 when a case is NaN/Inf, out of its range or over its tolerance.
 #include <cmath>
 #include <iostream>
@@ -10,6 +11,7 @@
 #include "cli/commands.h"
 
 #ifdef WG_HAVE_RUNTIME
+#include "accuracy/gpu_executor.h"
 #include "accuracy/hard_case_suite.h"
 #include "accuracy/node_probe.h"
 #include "accuracy/probe.h"
@@ -18,8 +20,6 @@
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
 #include "core/preset.h"
-#include "runtime/egl_context.h"
-#include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 #endif
 
@@ -39,6 +39,7 @@ struct ProbeArgs {
   std::string table;      // with --sweep: where the error curve goes
   std::string mutate;     // FIND=>REPLACE in the probe shader
   std::string preset;     // graph mode: a preset of the graph, applied before probing
+  bool vulkanValidation = false;  // vk450: under the Khronos validation layer
 };
 
 
@@ -54,6 +55,7 @@ std::optional<accuracy::ShaderMutation> parseMutation(const std::string& text) {
 // the axis, one output, the options given; prints a summary, writes the curve to --table.
 int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec& spec, Target target,
              const accuracy::ShaderMutation& mutation) {
+  const accuracy::ExecutorOptions executorOptions{args.vulkanValidation};
   std::string why;
   auto axis = accuracy::parseSweepAxis(args.sweep, why);
   if (!axis) {
@@ -86,10 +88,11 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
     if (!cases->cases.empty()) base = cases->cases.front();
   }
   try {
-    auto context = rt::EglContext::create(rt::apiFor(target));
+    auto executor = accuracy::makeGpuExecutor(target, executorOptions);
     Diagnostics diags;
-    auto report = accuracy::probeNode(spec, options, args.output, accuracy::sweepCases(spec, *axis, base), target, diags,
+    auto report = accuracy::probeNode(spec, options, args.output, accuracy::sweepCases(spec, *axis, base), *executor, diags,
                                       mutation);
+    executor->finish();
     printDiagnostics(diags, global);
     if (!report) return exitCodeFor(diags);
     double worst = 0, worstAt = axis->from, maxError = 0;
@@ -143,12 +146,13 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
   printDiagnostics(diags, global);
   if (!cases) return exitCodeFor(diags);
   try {
-    auto context = rt::EglContext::create(rt::apiFor(target));
+    auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
     accuracy::SuiteOptions options;
     options.nodes = {spec->type};
     options.variants = args.variants;
     options.mutation = mutation;
-    accuracy::SuiteResult r = accuracy::runHardCaseSuite(*cases, target, options);
+    accuracy::SuiteResult r = accuracy::runHardCaseSuite(*cases, *executor, options);
+    executor->finish();
     nlohmann::json all = nlohmann::json::array();
     for (const auto& run : r.runs) {
       if (args.json) {
@@ -192,6 +196,10 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     std::cerr << "watergraph: --sweep needs --node TYPE\n";
     return kExitUsageOrIo;
   }
+  if (args.vulkanValidation && args.target != "vk450") {
+    std::cerr << "watergraph: --vk-validation needs --target vk450 (the layer checks Vulkan calls)\n";
+    return kExitUsageOrIo;
+  }
   if (!args.preset.empty() && !args.node.empty()) {
     std::cerr << "watergraph: --preset needs a GRAPH (a node probed alone has no presets; give it --options)\n";
     return kExitUsageOrIo;
@@ -220,8 +228,9 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     return exitCodeFor(diags);
   }
   try {
-    auto context = rt::EglContext::create(rt::apiFor(target));
-    auto report = accuracy::probeGraph(*graph, output, *cases, target, diags, mutation);
+    auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
+    auto report = accuracy::probeGraph(*graph, output, *cases, *executor, diags, mutation);
+    executor->finish();
     printDiagnostics(diags, global);
     if (!report) return exitCodeFor(diags);
     if (args.json) std::cout << accuracy::probeJson(*report).dump(2) << "\n";
@@ -243,26 +252,30 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
   auto args = std::make_shared<ProbeArgs>();
   CLI::App* cmd = app.add_subcommand(
       "probe",
-      "Evaluate one output of a graph per case on the GPU in float32 (headless GL, one pixel of an RGBA32F target per "
-      "case) and with the double reference; print GPU value, reference, absolute and relative error and NaN/Inf flags. "
+      "Evaluate one output of a graph per case on the GPU in float32 (headless: GL for glsl330 and es300, Vulkan for "
+      "vk450; one pixel of an RGBA32F target per case) and with the double reference; print GPU value, reference, absolute and relative error and NaN/Inf flags. "
       "A case sets the builtins (uv, world_position, normal, view_direction, time, camera, screen_uv, frag_depth, "
       "near_far), the scene textures' values and parameters; see docs/accuracy.md.\n\nExamples:\n"
       "  watergraph probe graphs/lake.json --cases tests/hardcases/lake.json\n"
       "  watergraph probe graphs/lake.json --output fresnel.reflectance --cases cases.json --target es300 --json\n"
       "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --variants\n"
+      "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --target vk450 --vk-validation\n"
       "  watergraph probe --node fresnel --options '{\"model\": \"exact\", \"direction\": \"water_to_air\"}' "
       "--sweep angle:0:90:10000 --table fresnel.dat\n"
       "  watergraph probe --node fresnel --cases c.json --mutate '1.333=>1.3331'\n\n"
       "Exit codes: 0 every case finite and within tolerance; 1 a NaN/Inf, a range or tolerance failure, or graph/case "
-      "errors; 2 usage, I/O, or no EGL/GL context.");
+      "errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no EGL/GL context or Vulkan device.");
   cmd->add_option("graph", args->graph, "graph file (.json); or --node");
   cmd->add_option("--output", args->output, "the node output to probe, NODE.PORT (default: the fragment colour)");
   cmd->add_option("--preset", args->preset,
                   "graph mode: a preset from the graph's \"presets\" table: its parameter values and node options apply");
   cmd->add_option("--cases", args->cases, "cases file (.json), see docs/accuracy.md (with --sweep: its first case is the base)");
-  cmd->add_option("--target", args->target, "glsl330 (OpenGL 4.5 core) or es300 (OpenGL ES 3.2)")
-      ->check(CLI::IsMember({"glsl330", "es300"}))
+  cmd->add_option("--target", args->target,
+                  "glsl330 (OpenGL 4.5 core), es300 (OpenGL ES 3.2) or vk450 (its SPIR-V on Vulkan 1.3)")
+      ->check(CLI::IsMember({"glsl330", "es300", "vk450"}))
       ->capture_default_str();
+  cmd->add_flag("--vk-validation", args->vulkanValidation,
+                "vk450: run under the Khronos validation layer; any message it reports fails the probe (exit 1)");
   cmd->add_flag("--json", args->json, "print the results as JSON on stdout");
   cmd->add_option("--node", args->node,
                   "probe a node type alone, every output, with the cases that apply to it (they may set \"inputs\", "

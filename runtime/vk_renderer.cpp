@@ -525,6 +525,19 @@ VkRenderer::~VkRenderer() {
 
 double VkRenderer::renderFrame() { return impl_->renderOneFrame(); }
 
+void VkRenderer::setCamera(const Camera& camera) {
+  Impl& r = *impl_;
+  r.camera = camera;
+  r.view = camera.view();
+  r.projection = camera.projection(static_cast<float>(r.settings.width) / static_cast<float>(std::max(r.settings.height, 1)));
+  r.viewProjection = r.projection * r.view;
+}
+
+void VkRenderer::setScene(const SceneOptions& scene) {
+  impl_->settings.scene = scene;
+  impl_->sun = sunDirection(scene);
+}
+
 Image VkRenderer::readRgba8() const {
   if (impl_->frame().spec.color != ColorFormat::Rgba8)
     throw RuntimeError(RuntimeError::Kind::Manifest, "an 8-bit read-back needs a renderer made without floatColor");

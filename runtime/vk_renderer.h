@@ -40,6 +40,9 @@ class VkRenderer {
   // CPU wall time in milliseconds around recording, submission and the wait. With
   // validation, throws RuntimeError(Kind::Driver) when the layer reported anything.
   double renderFrame();
+  // For the next frames, as Renderer's: another camera, another time and sun.
+  void setCamera(const Camera& camera);
+  void setScene(const SceneOptions& scene);
 
   Image readRgba8() const;
   Image readRgba32f() const;  // exact only when settings.floatColor

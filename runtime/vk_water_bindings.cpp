@@ -1,45 +1,12 @@
 #include "runtime/vk_water_bindings.h"
 
 #include <algorithm>
-#include <cstring>
 #include <limits>
 
 #include "codegen/shader_interface.h"
-#include "nodes/texture_source.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
-namespace {
-
-VkSamplerAddressMode addressMode(TextureWrap w) {
-  switch (w) {
-    case TextureWrap::Repeat: return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-    case TextureWrap::Clamp: return VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-    case TextureWrap::Mirror: return VK_SAMPLER_ADDRESS_MODE_MIRRORED_REPEAT;
-  }
-  return VK_SAMPLER_ADDRESS_MODE_REPEAT;
-}
-
-// As GL's sampler state: min = mag filter, plus linear between levels when mipmapped.
-VkSamplerHandle makeSampler(VkDevice device, bool linear, VkSamplerAddressMode address, bool mipmapped) {
-  VkSamplerCreateInfo sci{VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO};
-  sci.magFilter = sci.minFilter = linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST;
-  sci.mipmapMode = mipmapped ? VK_SAMPLER_MIPMAP_MODE_LINEAR : VK_SAMPLER_MIPMAP_MODE_NEAREST;
-  sci.addressModeU = sci.addressModeV = sci.addressModeW = address;
-  sci.maxLod = mipmapped ? VK_LOD_CLAMP_NONE : 0.0f;
-  VkSampler s = VK_NULL_HANDLE;
-  checkVk(vkCreateSampler(device, &sci, nullptr, &s), "creating a sampler");
-  return VkSamplerHandle(device, s);
-}
-
-uint32_t fullChainLevels(int width, int height) {
-  uint32_t levels = 1;
-  for (int side = std::max(width, height); side > 1; side /= 2) ++levels;
-  return levels;
-}
-
-}  // namespace
-
 VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
                                  const std::function<SceneImage(SceneSampler)>& sceneImage,
                                  const std::map<std::string, TextureOrigin>& origins)
@@ -92,7 +59,7 @@ VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
                       std::string(sceneResourceRow(sceneSamplerRow(*t.scene).resource).name) +
                       "') is not rendered by any pass the manifest lists");
       if (cube != s.image->spec().cube) manifestError("texture " + t.name + " has the wrong sampler type " + std::string(typeName(t.type)));
-      samplers_.push_back(makeSampler(device, !s.nearest, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false));
+      samplers_.push_back(makeVkSampler(device, !s.nearest, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false));
       info.imageView = s.image->view();
       if (std::find(sceneImages_.begin(), sceneImages_.end(), s.image) == sceneImages_.end()) sceneImages_.push_back(s.image);
     } else {
@@ -100,23 +67,9 @@ VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
       auto o = origins.find(t.source);
       std::string dir = o != origins.end() ? o->second.graphDir : ".";
       std::string owner = o != origins.end() ? o->second.owner : "texture " + t.name;
-      std::string why;
-      auto img = loadTexture(t.source, dir, &why);
-      if (!img || img->width <= 0 || img->height <= 0 ||
-          img->rgba.size() != static_cast<size_t>(img->width) * static_cast<size_t>(img->height) * 4) {
-        if (why.empty()) why = "no image data";
-        throw TextureLoadError(owner + ": texture '" + t.source + "' cannot be loaded: " + why, t.source, why);
-      }
-      const bool mipmapped = t.sampler.filter == TextureFilter::Mipmapped;
-      VkImageSpec spec;
-      spec.format = t.sampler.colorSpace == TextureColorSpace::Srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
-      spec.width = static_cast<uint32_t>(img->width);
-      spec.height = static_cast<uint32_t>(img->height);
-      spec.mipLevels = mipmapped ? fullChainLevels(img->width, img->height) : 1;
-      spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-      nodeTextures_.emplace_back(context, spec);
-      uploadRgba8(context, nodeTextures_.back(), img->rgba.data());  // row 0 at v = 0, as GL
-      samplers_.push_back(makeSampler(device, t.sampler.filter != TextureFilter::Nearest, addressMode(t.sampler.wrap), mipmapped));
+      VkNodeTexture loaded = loadVkNodeTexture(context, t, dir, owner);
+      nodeTextures_.push_back(std::move(loaded.image));
+      samplers_.push_back(std::move(loaded.sampler));
       info.imageView = nodeTextures_.back().view();
     }
     info.sampler = samplers_.back().get();
@@ -169,20 +122,8 @@ void VkWaterBindings::writeUniforms(const FrameValues& frame) {
   if (blockSize_ == 0) return;
   std::vector<unsigned char> bytes(blockSize_, 0);
   for (const Uniform& u : uniforms_) {
-    std::vector<float> v = u.isParameter ? u.value : builtinUniformValue(u.builtin, u.angularFrequency, frame);
-    unsigned char* at = bytes.data() + u.member.offset;
-    switch (u.type) {
-      case Type::Int:
-      case Type::Bool: {
-        int32_t i = static_cast<int32_t>(v[0]);
-        std::memcpy(at, &i, 4);
-        break;
-      }
-      case Type::Mat3:  // three columns, each padded to 16 bytes
-        for (int c = 0; c < 3; ++c) std::memcpy(at + 16 * c, v.data() + 3 * c, 12);
-        break;
-      default: std::memcpy(at, v.data(), v.size() * sizeof(float)); break;
-    }
+    writeBlockMember(bytes.data(), u.member, u.type,
+                     u.isParameter ? u.value : builtinUniformValue(u.builtin, u.angularFrequency, frame));
   }
   block_.write(bytes.data(), bytes.size());
 }

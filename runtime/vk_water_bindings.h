@@ -15,6 +15,7 @@
 #include "runtime/uniform_values.h"
 #include "runtime/vk_pipelines.h"
 #include "runtime/vk_resources.h"
+#include "runtime/vk_shader_inputs.h"
 
 namespace wg::rt {
 

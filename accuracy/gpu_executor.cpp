@@ -1,0 +1,16 @@
+#include "accuracy/gpu_executor.h"
+
+#include "runtime/runtime_error.h"
+
+namespace wg::accuracy {
+
+std::unique_ptr<GpuExecutor> makeGpuExecutor(Target target, const ExecutorOptions& options) {
+  if (target == Target::Vk450) return makeVkExecutor(options);
+  if (options.vulkanValidation)
+    throw rt::RuntimeError(rt::RuntimeError::Kind::Manifest,
+                           "Vulkan validation needs the vk450 target (the layer checks Vulkan calls), not " +
+                               std::string(targetName(target)));
+  return makeGlExecutor(target);
+}
+
+}  // namespace wg::accuracy

@@ -1,0 +1,93 @@
+// The Vulkan side of GpuExecutor (gpu_executor.h): one VkContext (with the validation
+// layer when asked), probe shaders through runProbeOnVulkan, water frames through
+// rt::VkRenderer from the compile's vk450 SPIR-V. With validation, anything the layer
+// reports fails the probe run or the frame that caused it.
+#include <algorithm>
+
+#include "accuracy/gpu_executor.h"
+#include "accuracy/vk_probe.h"
+#include "codegen/glslang_validate.h"
+#include "runtime/runtime_error.h"
+#include "runtime/preview.h"
+#include "runtime/vk_preview.h"
+#include "runtime/vk_renderer.h"
+
+namespace wg::accuracy {
+namespace {
+
+ShaderStage stageOf(GLenum glStage) {
+  for (ShaderStage s : {ShaderStage::Vertex, ShaderStage::TessControl, ShaderStage::TessEvaluation, ShaderStage::Fragment})
+    if (rt::glShaderStage(s) == glStage) return s;
+  throw std::logic_error("a water shader of an unknown stage");
+}
+
+// Edited vk450 texts (tap shaders, a mutation) to SPIR-V, as the compile makes its modules.
+std::vector<rt::VkShaderCode> compileEdited(const std::vector<rt::ShaderSource>& water) {
+  std::vector<ShaderSource> sources;
+  for (const auto& s : water) sources.push_back({stageOf(s.stage), s.name, s.text});
+  ValidationResult r = validateShaders(Target::Vk450, sources);
+  if (!r.ok) {
+    std::string text = "glslang rejects the edited vk450 water shaders:";
+    for (const auto& e : r.errors) text += "\n  " + e.fileName + ":" + std::to_string(e.line) + ": " + e.text;
+    throw rt::RuntimeError(rt::RuntimeError::Kind::Driver, text);
+  }
+  std::vector<rt::VkShaderCode> out;
+  for (size_t i = 0; i < sources.size(); ++i) out.push_back({sources[i].stage, sources[i].fileName, std::move(r.spirv[i])});
+  return out;
+}
+
+class VkWaterFrames : public WaterFrames {
+ public:
+  VkWaterFrames(rt::VkContext& context, const CompileResult& result, std::vector<rt::VkShaderCode> water,
+                const rt::RenderSettings& settings)
+      : renderer_(context, result.manifest, std::move(water), settings, rt::textureOrigins(result)) {}
+  void setView(const rt::Camera& camera, const rt::SceneOptions& scene) override {
+    renderer_.setCamera(camera);
+    renderer_.setScene(scene);
+  }
+  rt::Image render() override {
+    renderer_.renderFrame();
+    return renderer_.readRgba32f();
+  }
+
+ private:
+  rt::VkRenderer renderer_;
+};
+
+class VkExecutor : public GpuExecutor {
+ public:
+  explicit VkExecutor(const ExecutorOptions& options) : tessellation_(options.tessellation) {
+    rt::VulkanOptions vo;
+    vo.validation = options.vulkanValidation;
+    vo.tessellation = options.tessellation;
+    context_ = rt::VkContext::create(vo);
+  }
+  Target target() const override { return Target::Vk450; }
+  void finish() override { context_->throwOnValidationMessages("destroying the frames"); }
+  std::string deviceName() const override { return context_->deviceName(); }
+  std::vector<std::array<float, 4>> runProbe(const EmitResult& shader, const Program& program,
+                                             const std::vector<ProbeCase>& cases, const std::string& what) override {
+    return runProbeOnVulkan(*context_, shader, program, cases, what);
+  }
+  std::unique_ptr<WaterFrames> waterFrames(const CompileResult& result, const std::vector<rt::ShaderSource>& water, bool edited,
+                                           const rt::RenderSettings& settings) override {
+    std::vector<rt::VkShaderCode> modules = edited ? compileEdited(water) : rt::waterSpirv(result);
+    const bool tessellated = std::any_of(modules.begin(), modules.end(), [](const rt::VkShaderCode& c) {
+      return c.stage == ShaderStage::TessControl || c.stage == ShaderStage::TessEvaluation;
+    });
+    if (tessellated && !tessellation_)
+      throw rt::RuntimeError(rt::RuntimeError::Kind::Environment,
+                             "the water is tessellated and this Vulkan executor was made without tessellation shaders");
+    return std::make_unique<VkWaterFrames>(*context_, result, std::move(modules), settings);
+  }
+
+ private:
+  bool tessellation_;
+  std::unique_ptr<rt::VkContext> context_;
+};
+
+}  // namespace
+
+std::unique_ptr<GpuExecutor> makeVkExecutor(const ExecutorOptions& options) { return std::make_unique<VkExecutor>(options); }
+
+}  // namespace wg::accuracy
