@@ -154,6 +154,14 @@ int runCommandSplit(const std::string& command, std::string* out, std::string* e
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+CmdResult runSplit(const std::string& command) {
+  CmdResult r;
+  r.exit = runCommandSplit(command, &r.out, &r.err);
+  return r;
+}
+
+CmdResult runWatergraph(const std::string& args) { return runSplit(shellQuote(watergraphBinary()) + " " + args); }
+
 std::vector<std::string> splitLines(const std::string& text) {
   std::vector<std::string> lines;
   size_t start = 0;

@@ -32,6 +32,14 @@ std::vector<std::string> exampleGraphs();
 std::string shellQuote(const std::string& s);
 // Runs a shell command with stdout and stderr captured separately; returns its exit status.
 int runCommandSplit(const std::string& command, std::string* out, std::string* err);
+// A command's exit status and its stdout and stderr apart.
+struct CmdResult {
+  int exit = -1;
+  std::string out, err;
+};
+CmdResult runSplit(const std::string& command);
+// `watergraph <args>` (args already shell-quoted where needed), the build's own binary.
+CmdResult runWatergraph(const std::string& args);
 // The lines of `text`, without their '\n'; a final empty line is dropped.
 std::vector<std::string> splitLines(const std::string& text);
 // WG_UPDATE_GOLDEN=1 in the environment: tests with golden files (GLSL, manifests, images)

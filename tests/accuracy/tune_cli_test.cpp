@@ -14,16 +14,8 @@
 namespace wg {
 namespace {
 
-struct CmdOut {
-  int exit = -1;
-  std::string out, err;
-};
-
-CmdOut wg(const std::string& args) {
-  CmdOut r;
-  r.exit = test::runCommandSplit(test::shellQuote(test::watergraphBinary()) + " " + args, &r.out, &r.err);
-  return r;
-}
+using test::CmdResult;
+CmdResult wg(const std::string& args) { return test::runWatergraph(args); }
 
 // `presets` is the graph's "presets" member ("" for none).
 std::string twoKnobGraph(const std::string& presets) {
@@ -40,7 +32,7 @@ const std::string kSmall = " --size 64x36 --runs 1 --cameras above,grazing --tim
 TEST(TuneCli, FindsTheKnownBestConfiguration) {
   std::string dir = test::makeTempDir("wg_tune_");
   test::writeFile(dir + "/g.json", twoKnobGraph(""));
-  CmdOut r = wg("tune " + test::shellQuote(dir + "/g.json") + " --min-psnr 60" + kSmall + " --plot " +
+  CmdResult r = wg("tune " + test::shellQuote(dir + "/g.json") + " --min-psnr 60" + kSmall + " --plot " +
                 test::shellQuote(dir + "/tune.svg"));
   ASSERT_EQ(r.exit, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("chosen: f.model=exact, cv.bypass=true\n"), std::string::npos) << r.out;
@@ -59,7 +51,7 @@ TEST(TuneCli, ABudgetNothingMeetsIsOneMessageAndExit1) {
   std::string dir = test::makeTempDir("wg_tune_");
   test::writeFile(dir + "/g.json", twoKnobGraph(""));
   std::string before = test::readFile(dir + "/g.json");
-  CmdOut r = wg("tune " + test::shellQuote(dir + "/g.json") + " --max-abs-error 0 --write-preset fast" + kSmall);
+  CmdResult r = wg("tune " + test::shellQuote(dir + "/g.json") + " --max-abs-error 0 --write-preset fast" + kSmall);
   EXPECT_EQ(r.exit, 1) << r.out << r.err;
   EXPECT_NE(r.err.find("error: no configuration cheaper than the reference meets the budget"), std::string::npos) << r.err;
   EXPECT_EQ(test::readFile(dir + "/g.json"), before) << "nothing written";
@@ -88,17 +80,17 @@ TEST(TuneCli, WritesAPresetThatCompilesAndIsCanonical) {
   std::string dir = test::makeTempDir("wg_tune_");
   test::writeFile(dir + "/g.json", twoKnobGraph(R"("presets": {"fast": {"f.model": "power"}, "exact": {"f.model": "exact"}}, )"));
   std::string g = test::shellQuote(dir + "/g.json");
-  CmdOut r = wg("tune " + g + " --min-psnr 60 --write-preset fast" + kSmall);
+  CmdResult r = wg("tune " + g + " --min-psnr 60 --write-preset fast" + kSmall);
   ASSERT_EQ(r.exit, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("wrote preset 'fast'"), std::string::npos) << r.out;
   auto written = nlohmann::ordered_json::parse(test::readFile(dir + "/g.json"));
   EXPECT_EQ(written["presets"].dump(), R"({"fast":{"f.model":"exact","cv.bypass":true},"exact":{"f.model":"exact"}})");
   std::string text = test::readFile(dir + "/g.json");
-  CmdOut fmt = wg("fmt " + g);
+  CmdResult fmt = wg("fmt " + g);
   EXPECT_EQ(fmt.exit, 0) << fmt.err;
   EXPECT_EQ(test::readFile(dir + "/g.json"), text) << "fmt changed the written file";
-  CmdOut plain = wg("compile " + g + " -o " + test::shellQuote(dir + "/plain") + " --target glsl330");
-  CmdOut fast = wg("compile " + g + " -o " + test::shellQuote(dir + "/fast") + " --target glsl330 --preset fast");
+  CmdResult plain = wg("compile " + g + " -o " + test::shellQuote(dir + "/plain") + " --target glsl330");
+  CmdResult fast = wg("compile " + g + " -o " + test::shellQuote(dir + "/fast") + " --target glsl330 --preset fast");
   ASSERT_EQ(plain.exit, 0) << plain.err;
   ASSERT_EQ(fast.exit, 0) << fast.err;
   EXPECT_NE(test::readFile(dir + "/plain/g.glsl330.frag").find("wg_color_variation"), std::string::npos);

@@ -19,18 +19,9 @@ namespace {
 namespace fs = std::filesystem;
 using test::shellQuote;
 
-struct CmdResult {
-  int exit = -1;
-  std::string out;
-  std::string err;
-};
-
+using test::CmdResult;
 // Runs `watergraph <args>` (args already shell-quoted where needed).
-CmdResult wgRun(const std::string& args) {
-  CmdResult r;
-  r.exit = test::runCommandSplit(shellQuote(test::watergraphBinary()) + " " + args, &r.out, &r.err);
-  return r;
-}
+CmdResult wgRun(const std::string& args) { return test::runWatergraph(args); }
 
 std::string badGraph(const std::string& name) { return test::sourcePath("tests/bad/" + name); }
 

@@ -14,23 +14,15 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CmdOut {
-  int exit = -1;
-  std::string out, err;
-};
-
-CmdOut wg(const std::string& args) {
-  CmdOut r;
-  r.exit = test::runCommandSplit(test::shellQuote(test::watergraphBinary()) + " " + args, &r.out, &r.err);
-  return r;
-}
+using test::CmdResult;
+CmdResult wg(const std::string& args) { return test::runWatergraph(args); }
 
 std::string topdown() { return test::shellQuote(test::sourcePath("graphs/topdown.json")); }
 
 TEST(CliPreset, PlainCompilesFoamRipplesAndVariationOut) {
   std::string dir = test::makeTempDir("wg_preset_");
-  CmdOut full = wg("compile " + topdown() + " -o " + dir + "/full --target glsl330");
-  CmdOut plain = wg("compile " + topdown() + " -o " + dir + "/plain --target glsl330 --preset plain");
+  CmdResult full = wg("compile " + topdown() + " -o " + dir + "/full --target glsl330");
+  CmdResult plain = wg("compile " + topdown() + " -o " + dir + "/plain --target glsl330 --preset plain");
   ASSERT_EQ(full.exit, 0) << full.err;
   ASSERT_EQ(plain.exit, 0) << plain.err;
   std::string a = test::readFile(dir + "/full/topdown.glsl330.frag");
@@ -60,12 +52,12 @@ TEST(CliPreset, WeatherPresetsChangeTheFoldedConstants) {
 
 TEST(CliPreset, UnknownPresetIsWG052AndWritesNothing) {
   std::string dir = test::makeTempDir("wg_preset_");
-  CmdOut r = wg("compile " + topdown() + " -o " + dir + "/out --preset stormy");
+  CmdResult r = wg("compile " + topdown() + " -o " + dir + "/out --preset stormy");
   EXPECT_EQ(r.exit, 2);
   EXPECT_NE(r.err.find("error: [WG052] graph 'topdown' has no preset 'stormy'"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("its presets: calm, moderate, choppy, plain, debug"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out/topdown.manifest.json"));
-  CmdOut v = wg("validate " + topdown() + " --preset clam");
+  CmdResult v = wg("validate " + topdown() + " --preset clam");
   EXPECT_EQ(v.exit, 2);
   EXPECT_NE(v.err.find("did you mean 'calm'?"), std::string::npos) << v.err;
   fs::remove_all(dir);
@@ -77,7 +69,7 @@ TEST(CliPreset, EveryPresetOfEveryExampleValidates) {
     if (!g.contains("presets")) continue;
     for (const auto& [name, values] : g["presets"].items()) {
       SCOPED_TRACE(path + " --preset " + name);
-      CmdOut r = wg("validate " + test::shellQuote(path) + " --preset " + name);
+      CmdResult r = wg("validate " + test::shellQuote(path) + " --preset " + name);
       EXPECT_EQ(r.exit, 0) << r.err;
     }
   }

@@ -4,14 +4,6 @@
 
 namespace wg::eco {
 
-CmdResult sh(const std::string& command) {
-  CmdResult r;
-  r.exit = test::runCommandSplit(command, &r.out, &r.err);
-  return r;
-}
-
-CmdResult wgRun(const std::string& args) { return sh(test::shellQuote(test::watergraphBinary()) + " " + args); }
-
 bool haveTool(const std::string& tool) { return sh("command -v " + test::shellQuote(tool)).exit == 0; }
 
 std::string debianPython() {

@@ -7,16 +7,11 @@
 
 namespace wg::eco {
 
-struct CmdResult {
-  int exit = -1;
-  std::string out;
-  std::string err;
-};
-
+using test::CmdResult;
 // Runs `watergraph <args>` (args already shell-quoted where needed).
-CmdResult wgRun(const std::string& args);
+inline CmdResult wgRun(const std::string& args) { return test::runWatergraph(args); }
 // Runs a shell command, stdout and stderr apart.
-CmdResult sh(const std::string& command);
+inline CmdResult sh(const std::string& command) { return test::runSplit(command); }
 // True when `tool` is on PATH.
 bool haveTool(const std::string& tool);
 // Debian's python3 (where apt's python3-jsonschema lives) when present, else python3 on PATH.
