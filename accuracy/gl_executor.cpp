@@ -11,24 +11,6 @@
 namespace wg::accuracy {
 namespace {
 
-class GlWaterFrames : public WaterFrames {
- public:
-  GlWaterFrames(const CompileResult& result, const std::vector<rt::ShaderSource>& water, const rt::RenderSettings& settings,
-                bool es)
-      : renderer_(result.manifest, water, settings, es, rt::textureOrigins(result)) {}
-  void setView(const rt::Camera& camera, const rt::SceneOptions& scene) override {
-    renderer_.setCamera(camera);
-    renderer_.setScene(scene);
-  }
-  rt::Image render() override {
-    renderer_.renderFrame();
-    return renderer_.readRgba32f();
-  }
-
- private:
-  rt::Renderer renderer_;
-};
-
 class GlExecutor : public GpuExecutor {
  public:
   GlExecutor(Target target, std::unique_ptr<rt::EglContext> context) : target_(target), context_(std::move(context)) {
@@ -47,7 +29,8 @@ class GlExecutor : public GpuExecutor {
   }
   std::unique_ptr<WaterFrames> waterFrames(const CompileResult& result, const std::vector<rt::ShaderSource>& water, bool,
                                            const rt::RenderSettings& settings) override {
-    return std::make_unique<GlWaterFrames>(result, water, settings, target_ == Target::Es300);
+    return std::make_unique<RendererFrames<rt::Renderer>>(result.manifest, water, settings, target_ == Target::Es300,
+                                                          rt::textureOrigins(result));
   }
 
  private:

@@ -9,6 +9,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "accuracy/probe_cases.h"
@@ -35,6 +36,26 @@ class WaterFrames {
   virtual void setView(const rt::Camera& camera, const rt::SceneOptions& scene) = 0;
   // Renders one frame and reads it back, rows top to bottom.
   virtual rt::Image render() = 0;
+};
+
+// WaterFrames over a runtime renderer (rt::Renderer, rt::VkRenderer): both set a view and
+// read a frame back the same way; only their construction differs.
+template <class Renderer>
+class RendererFrames : public WaterFrames {
+ public:
+  template <class... Args>
+  explicit RendererFrames(Args&&... args) : renderer_(std::forward<Args>(args)...) {}
+  void setView(const rt::Camera& camera, const rt::SceneOptions& scene) override {
+    renderer_.setCamera(camera);
+    renderer_.setScene(scene);
+  }
+  rt::Image render() override {
+    renderer_.renderFrame();
+    return renderer_.readRgba32f();
+  }
+
+ private:
+  Renderer renderer_;
 };
 
 class GpuExecutor {

@@ -36,24 +36,6 @@ std::vector<rt::VkShaderCode> compileEdited(const std::vector<rt::ShaderSource>&
   return out;
 }
 
-class VkWaterFrames : public WaterFrames {
- public:
-  VkWaterFrames(rt::VkContext& context, const CompileResult& result, std::vector<rt::VkShaderCode> water,
-                const rt::RenderSettings& settings)
-      : renderer_(context, result.manifest, std::move(water), settings, rt::textureOrigins(result)) {}
-  void setView(const rt::Camera& camera, const rt::SceneOptions& scene) override {
-    renderer_.setCamera(camera);
-    renderer_.setScene(scene);
-  }
-  rt::Image render() override {
-    renderer_.renderFrame();
-    return renderer_.readRgba32f();
-  }
-
- private:
-  rt::VkRenderer renderer_;
-};
-
 class VkExecutor : public GpuExecutor {
  public:
   explicit VkExecutor(const ExecutorOptions& options) : tessellation_(options.tessellation) {
@@ -78,7 +60,8 @@ class VkExecutor : public GpuExecutor {
     if (tessellated && !tessellation_)
       throw rt::RuntimeError(rt::RuntimeError::Kind::Environment,
                              "the water is tessellated and this Vulkan executor was made without tessellation shaders");
-    return std::make_unique<VkWaterFrames>(*context_, result, std::move(modules), settings);
+    return std::make_unique<RendererFrames<rt::VkRenderer>>(*context_, result.manifest, std::move(modules), settings,
+                                                            rt::textureOrigins(result));
   }
 
  private:

@@ -4,7 +4,6 @@
 // runtime (accuracy/tune_render.h); prints the path, optionally writes the result into the
 // graph as a preset and plots every tried configuration.
 #include <chrono>
-#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -87,7 +86,7 @@ int runTune(const TuneArgs& args) {
   for (const auto& t : splitCommas(args.times)) {
     char* end = nullptr;
     double v = std::strtod(t.c_str(), &end);
-    if (t.empty() || *end != '\0' || !std::isfinite(v) || std::fabs(v) > FLT_MAX)  // u_time is a float
+    if (t.empty() || *end != '\0' || !fitsFiniteFloat(v))  // u_time is a float
       return usage("--times must be finite numbers within float range, separated by commas (got '" + t + "')");
     sweep.times.push_back(v);
   }

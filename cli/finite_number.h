@@ -3,7 +3,6 @@
 // angles): the text must be a finite number within float range. CLI11's own conversion
 // takes "nan", "inf" and 1e300, which would reach the shader as NaN or Inf and render a
 // wrong frame with exit status 0; CLI11's Range lets NaN through (no comparison holds).
-#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstdlib>
@@ -13,15 +12,17 @@
 
 namespace wg::cli {
 
+// True when `v` reaches a float uniform as a finite value.
+inline bool fitsFiniteFloat(double v) { return std::isfinite(v) && std::fabs(v) <= FLT_MAX; }
+
 inline CLI::Validator finiteFloat() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         const char* begin = text.c_str();
         char* end = nullptr;
-        errno = 0;
-        double v = std::strtod(begin, &end);
+        double v = std::strtod(begin, &end);  // overflow gives +-HUGE_VAL, caught below
         if (end == begin || *end != '\0') return "";  // not a number: CLI11's conversion says so
-        if (!std::isfinite(v) || std::fabs(v) > FLT_MAX || errno == ERANGE)
+        if (!fitsFiniteFloat(v))
           return "must be a finite number within float range (got '" + text + "')";
         return "";
       },
