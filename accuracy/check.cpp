@@ -142,12 +142,13 @@ Value channelValue(const ReadbackImage& taps, int px, int py, int channel, int s
 
 // The reference's inputs at pixel (px, py) (rows top to bottom) from the read-back: the
 // pixel's interpolated varyings and depth, its scene look-ups, the uv gradient of its 2x2
-// quad, the view's uniforms. False where the pixel is not comparable: not water, near a
+// quad, the view's uniforms, the whole scene textures read back (`images`, one per
+// plan.images entry). False where the pixel is not comparable: not water, near a
 // silhouette (the pixel, its four neighbours and its quad must all show the water), or
 // two look-ups of one scene texture that returned different values (the reference has
-// one value per texture and pixel).
-bool pixelInputs(const ReadbackImage& taps, const ReadbackPlan& plan, int px, int py, const CheckView& view, float aspect,
-                 EvalEnvironment* envOut) {
+// one value per texture and pixel where it has no image).
+bool pixelInputs(const ReadbackImage& taps, const ReadbackPlan& plan, const std::vector<SceneImage>& images, int px,
+                 int py, const CheckView& view, float aspect, EvalEnvironment* envOut) {
   const int height = taps.height;
   auto water = [&](int x, int y) { return taps.water(x, y, plan); };
   if (!water(px, py) || !water(px - 1, py) || !water(px + 1, py) || !water(px, py - 1) || !water(px, py + 1)) return false;
@@ -158,7 +159,7 @@ bool pixelInputs(const ReadbackImage& taps, const ReadbackPlan& plan, int px, in
   EvalEnvironment env;
   for (const auto& lookup : plan.lookups) {
     Value v = channelValue(taps, px, py, lookup.channel, lookup.size);
-    Value* field = lookupField(env, lookup.sampler);
+    Value* field = &(env.*sceneSamplerRow(lookup.sampler).environment);
     bool first = true;
     for (const auto& earlier : plan.lookups) {
       if (&earlier == &lookup) break;
@@ -189,7 +190,8 @@ bool pixelInputs(const ReadbackImage& taps, const ReadbackPlan& plan, int px, in
     env.uvDx = Value::vector({u10[0] - u00[0], u10[1] - u00[1]});
     env.uvDy = Value::vector({u01[0] - u00[0], u01[1] - u00[1]});
   }
-  env.fragDepth = Value::scalar(taps.at(px, py, plan.fragDepth));
+  for (size_t k = 0; k < plan.images.size(); ++k) env.sceneImages[static_cast<size_t>(plan.images[k].sampler)] = &images[k];
+  if (plan.fragDepth >= 0) env.fragDepth = Value::scalar(taps.at(px, py, plan.fragDepth));
   env.screenUv = Value::vector({(px + 0.5) / taps.width, 1 - (py + 0.5) / height});
   env.time = Value::scalar(static_cast<double>(view.scene.time));
   env.cameraNearFar = Value::vector({cam.nearPlane, cam.farPlane});
@@ -281,13 +283,15 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
         v.ratios.assign(static_cast<size_t>(width) * height, -1.0f);
       }
       ReadbackImage taps = readback->read(view.camera, view.scene);
+      std::vector<SceneImage> images;
+      for (const auto& image : plan.images) images.push_back(taps.sceneImage(image, readback->samplesNearest(image.sampler)));
       const float aspect = static_cast<float>(width) / static_cast<float>(height);
       double sum = 0;
       int stride = options.errorMaps ? 1 : referenceStride, first = options.errorMaps ? 0 : referenceStride / 2;
       for (int py = first; py < height; py += stride)
         for (int px = first; px < width; px += stride) {
           EvalEnvironment env;
-          if (!pixelInputs(taps, plan, px, py, view, aspect, &env)) continue;
+          if (!pixelInputs(taps, plan, images, px, py, view, aspect, &env)) continue;
           for (size_t k = 0; k < plan.varyings.size(); ++k) {
             int param = fragment.varyingParameters[k];
             Type type = fragment.program.parameters[static_cast<size_t>(param)].type;
@@ -311,7 +315,8 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
           // conditioning of the pixel's float32 inputs (measured only then: it costs a
           // few hundred evaluations).
           std::array<double, 4> conditioning{};
-          if (!within) conditioning = conditioningTerm(fragment.program, env, parameters, perPixelBuiltins(), model.roundings, &fetches);
+          if (!within) conditioning = conditioningTerm(fragment.program, env, parameters, perPixelBuiltins(), model.roundings, &fetches,
+                                                      /*filterPrecision=*/true);
           bool over = false;
           for (int ch = 0; ch < 3; ++ch) {
             double bound = model.tolerance * std::max(1.0, std::abs(c[ch])) + conditioning[static_cast<size_t>(ch)];

@@ -60,7 +60,8 @@ ErrorModel programErrorModel(const Program& program) {
 
 std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
                                        const std::vector<Value>& parameters, const std::vector<BuiltinUniform>& builtins,
-                                       double roundings, const std::map<std::string, std::vector<Value>>* fetches) {
+                                       double roundings, const std::map<std::string, std::vector<Value>>* fetches,
+                                       bool filterPrecision) {
   std::array<double, 4> sum{};
   if (roundings <= 0) return sum;
   EvalEnvironment e = env;
@@ -68,7 +69,8 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
   Program varied = program;  // ops' options replaced one intermediate at a time
   std::optional<TextureFetches> texels;
   if (fetches) texels = *fetches;
-  auto evaluate = [&] { return evaluateProgram(varied, e, params, texels ? &*texels : nullptr).outputs.front(); };
+  FilterNudge nudge;
+  auto evaluate = [&] { return evaluateProgram(varied, e, params, texels ? &*texels : nullptr, &nudge).outputs.front(); };
   Value ref = evaluate();
   int n = std::min(ref.size(), 4);
   std::array<double, 4> base{};
@@ -92,6 +94,19 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
     seen.push_back(u);
     if (Value* v = builtinValue(e, u)) perturb(*v);
   }
+  // The look-ups the reference filters itself, counted by the evaluation above.
+  if (filterPrecision) {
+    nudge.nudged = -1;
+    evaluate();  // counts them
+  }
+  if (filterPrecision)
+    for (int k = 0, lookups = nudge.count; k < lookups; ++k)
+      addMoves(
+          [&](double fraction) {
+            nudge.nudged = fraction == 0.0 ? -1 : k;
+            nudge.fraction = fraction;
+          },
+          base, n, sum, evaluate);
   // Intermediates that round on their own (nodes/rounded_intermediates.h), one at a time.
   for (size_t i = 0; i < program.ops.size(); ++i) {
     const Op& op = program.ops[i];

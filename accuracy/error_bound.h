@@ -35,8 +35,13 @@ ErrorModel programErrorModel(const Program& program);
 // non-parameter uniforms). Zero when roundings is 0.
 // `fetches`: node texture look-ups taken as given (codegen/cpu_backend.h), each value
 // perturbed like a parameter (a float32 input of the shader's arithmetic).
+// `filterPrecision`: each look-up the reference filters itself (one a library function
+// makes, which cannot be read back) also moves by its filterUncertainty, one at a time:
+// the GPU's subtexel precision, which `check` meets where the shader samples a texture
+// in a loop (a ray march through a height map).
 std::array<double, 4> conditioningTerm(const Program& program, const EvalEnvironment& env,
                                        const std::vector<Value>& parameters, const std::vector<BuiltinUniform>& builtins,
-                                       double roundings, const std::map<std::string, std::vector<Value>>* fetches = nullptr);
+                                       double roundings, const std::map<std::string, std::vector<Value>>* fetches = nullptr,
+                                       bool filterPrecision = false);
 
 }  // namespace wg::accuracy

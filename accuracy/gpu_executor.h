@@ -36,6 +36,8 @@ class WaterFrames {
   virtual void setView(const rt::Camera& camera, const rt::SceneOptions& scene) = 0;
   // Renders one frame and reads it back, rows top to bottom.
   virtual rt::Image render() = 0;
+  // Whether the frames sample the scene texture `s` with nearest filtering (else linear).
+  virtual bool samplesNearest(SceneSampler s) const = 0;
 };
 
 // WaterFrames over a runtime renderer (rt::Renderer, rt::VkRenderer): both set a view and
@@ -53,6 +55,7 @@ class RendererFrames : public WaterFrames {
     renderer_.renderFrame();
     return renderer_.readRgba32f();
   }
+  bool samplesNearest(SceneSampler s) const override { return renderer_.samplesNearest(s); }
 
  private:
   Renderer renderer_;

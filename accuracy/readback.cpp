@@ -69,29 +69,25 @@ SamplerUse samplerUse(const std::string& text, const MainBody& main, const std::
 
 }  // namespace
 
-Value* lookupField(EvalEnvironment& env, SceneSampler sampler) {
-  switch (sampler) {
-    case SceneSampler::SceneDepth: return &env.sceneDepth;
-    case SceneSampler::SceneColor: return &env.sceneColor;
-    case SceneSampler::Reflection: return &env.reflectionColor;
-    case SceneSampler::Refraction: return &env.refractionColor;
-    case SceneSampler::Environment: return &env.environmentColor;
-    case SceneSampler::WaterNormalUv:
-    case SceneSampler::WaterSurface: return nullptr;
-  }
-  return nullptr;
-}
-
 std::string planReadback(const CompileResult& result, const std::string& text, ReadbackPlan* out) {
   ReadbackPlan plan;
   MainBody main = findMain(text);
   if (main.colorLine == std::string::npos) return "the fragment shader writes no colour in main()";
+  // Deferred water draws its fragment shader over the whole screen and takes the surface
+  // builtins from G-buffer locals of main() (codegen/plan_deferred.cpp) under the names
+  // of the forward varyings, which it then does not declare.
+  const bool deferred = result.manifest.lists(RenderPass::DeferredWater);
+  auto declaredLocal = [&](const std::string& name) {
+    return text.find(" " + name + " = ", main.begin) < main.colorLine;
+  };
   plan.mask = addChannels(plan, "-3.0", 1);  // kWaterMark
-  plan.fragDepth = addChannels(plan, "gl_FragCoord.z", 1);
+  if (!deferred) plan.fragDepth = addChannels(plan, "gl_FragCoord.z", 1);
+  else if (declaredLocal("b_water_surface")) plan.fragDepth = addChannels(plan, "b_water_surface.w", 1);
   const auto& varyings = result.manifest.varyings;
   size_t nodeVaryings = 0;
   for (const auto& v : varyings) {
     int size = componentCount(v.type);
+    if (deferred && !declaredLocal(v.name)) continue;
     if (v.carries == "world_position") plan.worldPosition = addChannels(plan, v.name, size);
     else if (v.carries == "normal") plan.normal = addChannels(plan, v.name, size);
     else if (v.carries == "uv") plan.uv = addChannels(plan, v.name, size);
@@ -105,14 +101,26 @@ std::string planReadback(const CompileResult& result, const std::string& text, R
     std::string name(row.glslName);
     SamplerUse use = samplerUse(text, main, name);
     if (use.uses == 0) continue;
-    EvalEnvironment env;
-    if (!lookupField(env, row.id))
-      return "it reads the water G-buffer (" + name + "), a texture the reference has no per-pixel value of";
     // The declaration is the one other use: anything more is a library function sampling it.
-    if (use.uses != use.fetches.size() + 1)
+    const bool onlyInMain = use.uses == use.fetches.size() + 1;
+    if (!row.environment) {
+      // The G-buffer: the reference takes it as this pixel's surface builtins.
+      bool atThisPixel = deferred && onlyInMain;
+      for (const auto& call : use.fetches) atThisPixel &= call == "texture(" + name + ", b_screen_uv)";
+      if (!atThisPixel)
+        return "it reads the water G-buffer (" + name + ") other than at the pixel's own position";
+      continue;
+    }
+    int size = row.id == SceneSampler::SceneDepth ? 1 : 3;
+    if (deferred && row.type == Type::Sampler2D) {
+      static const char* const kSwizzle[] = {"", ".r", "", ".rgb"};
+      plan.images.push_back(
+          {row.id, addChannels(plan, "texelFetch(" + name + ", ivec2(gl_FragCoord.xy), 0)" + kSwizzle[size], size), size});
+      continue;
+    }
+    if (!onlyInMain)
       return "the fragment shader samples " + name +
              " inside a library function (several look-ups a pixel, where the reference has one value per texture)";
-    int size = row.id == SceneSampler::SceneDepth ? 1 : 3;
     for (const auto& call : use.fetches) plan.lookups.push_back({row.id, addChannels(plan, call, size), size});
   }
   // Node textures sampled only in main() are read back too; one a library function
@@ -150,6 +158,19 @@ bool ReadbackImage::water(int px, int py, const ReadbackPlan& plan) const {
   if (px < 0 || py < 0 || px >= width || py >= height) return false;
   return at(px, py, plan.mask) == kWaterMark;
 }
+
+SceneImage ReadbackImage::sceneImage(const ReadbackPlan::Image& image, bool nearest) const {
+  SceneImage out;
+  out.width = width, out.height = height, out.channels = image.size, out.nearest = nearest;
+  out.texels.resize(static_cast<size_t>(width) * height * image.size);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i)
+      for (int c = 0; c < image.size; ++c)
+        out.texels[(static_cast<size_t>(j) * width + i) * image.size + c] = at(i, height - 1 - j, image.channel + c);
+  return out;
+}
+
+bool ReadbackRenderer::samplesNearest(SceneSampler s) const { return renderers_.front()->samplesNearest(s); }
 
 ReadbackRenderer::ReadbackRenderer(GpuExecutor& executor, const CompileResult& result,
                                    const std::vector<rt::ShaderSource>& water, ReadbackPlan plan,

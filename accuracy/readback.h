@@ -40,6 +40,17 @@ struct ReadbackPlan {
     int channel = -1;
   };
   std::vector<NodeFetch> textureFetches;
+  // Deferred water, whose fragment shader runs on every pixel: each 2D scene texture it
+  // samples is read back whole (texelFetch at gl_FragCoord; scene targets are the frame's
+  // size), and the reference samples that image wherever the shader does: an SSR march,
+  // a refracted look-up (EvalEnvironment::sceneImages). The G-buffer needs no channel:
+  // its look-ups at this pixel are the surface builtins read back above.
+  struct Image {
+    SceneSampler sampler;
+    int channel = -1;
+    int size = 0;  // 1 for depth, 3 for colours
+  };
+  std::vector<Image> images;
   int frames() const { return (static_cast<int>(channels.size()) + 2) / 3; }
 };
 
@@ -47,9 +58,10 @@ struct ReadbackPlan {
 inline constexpr float kWaterMark = -3.0f;
 
 // Plans the read-back of `fragmentText` (the water fragment shader of `result`). Returns
-// why the per-pixel reference cannot be built from it ("" when it can): the water
-// G-buffer of deferred water, or a scene texture sampled inside a library function (many
-// look-ups a pixel, where the reference has one value per texture).
+// why the per-pixel reference cannot be built from it ("" when it can): a scene texture
+// sampled inside a library function of forward-drawn water (many look-ups a pixel, where
+// the reference has one value per texture and the water does not cover the screen to read
+// the texture whole), or the G-buffer read other than at this pixel.
 std::string planReadback(const CompileResult& result, const std::string& fragmentText, ReadbackPlan* plan);
 
 // `water` (vertex and fragment) with the fragment colour replaced by channels
@@ -62,6 +74,8 @@ struct ReadbackImage {
   std::vector<float> values;  // [(py * width + px) * channels + c]
   float at(int px, int py, int c) const { return values[(static_cast<size_t>(py) * width + px) * channels + c]; }
   bool water(int px, int py, const ReadbackPlan& plan) const;  // false outside the frame
+  // The scene texture of `image` as the reference samples it, rows bottom-up as GL's t.
+  SceneImage sceneImage(const ReadbackPlan::Image& image, bool nearest) const;
 };
 
 class GpuExecutor;
@@ -76,14 +90,12 @@ class ReadbackRenderer {
   ~ReadbackRenderer();
   ReadbackImage read(const rt::Camera& camera, const rt::SceneOptions& scene);
   const ReadbackPlan& plan() const { return plan_; }
+  bool samplesNearest(SceneSampler s) const;  // as the frames filter the scene texture
 
  private:
   ReadbackPlan plan_;
   std::vector<std::unique_ptr<WaterFrames>> renderers_;
 };
 
-// The environment field a scene look-up through `sampler` sets in the reference; null for
-// the water G-buffer, which the reference does not read as one value.
-Value* lookupField(EvalEnvironment& env, SceneSampler sampler);
 
 }  // namespace wg::accuracy

@@ -17,6 +17,7 @@ namespace {
 struct FetchCursor {
   const TextureFetches* fetches = nullptr;
   std::map<std::string, size_t> next;
+  FilterNudge* nudge = nullptr;
 };
 
 class OpEvalContext final : public EvalContext {
@@ -41,7 +42,7 @@ class OpEvalContext final : public EvalContext {
                       const UvGradient& gradient) const override {
     if (!textures_) throw std::logic_error("eval of '" + op_.spec->type + "' samples a texture without a texture cache");
     const std::string source = op_.options.at(std::string(option)).get<std::string>();
-    if (cursor_) {
+    if (cursor_ && cursor_->fetches) {
       auto listed = cursor_->fetches->find(source);
       if (listed != cursor_->fetches->end()) {
         size_t& k = cursor_->next[source];
@@ -55,7 +56,14 @@ class OpEvalContext final : public EvalContext {
     const std::vector<TextureImage>* chain = nullptr;
     if (sampler.filter == TextureFilter::Mipmapped && levelOfDetail(base, gradient) > 0)
       chain = &textures_->mipChain(source, graphDir_, sampler.colorSpace);
-    return wg::sampleTexture(base, chain, u, v, sampler, gradient);
+    Value value = wg::sampleTexture(base, chain, u, v, sampler, gradient);
+    if (FilterNudge* nudge = cursor_ ? cursor_->nudge : nullptr) {
+      if (nudge->count++ == nudge->nudged) {
+        double delta = nudge->fraction * filterUncertainty(base, u, v, sampler);
+        for (int c = 0; c < value.size(); ++c) value[c] += delta;
+      }
+    }
+    return value;
   }
   std::vector<Value> take() { return std::move(outputs_); }
 
@@ -209,10 +217,11 @@ std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& opti
 }
 
 CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, const std::vector<Value>& parameters,
-                          const TextureFetches* fetches) {
+                          const TextureFetches* fetches, FilterNudge* nudge) {
   CpuResult result;
   TextureCache textures;
-  FetchCursor cursor{fetches, {}};
+  FetchCursor cursor{fetches, {}, nudge};
+  if (nudge) nudge->count = 0;
   result.opOutputs.resize(program.ops.size());
   auto valueOf = [&](const ValueRef& r) -> Value {
     switch (r.kind) {
@@ -232,7 +241,7 @@ CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, co
     std::vector<Value> inputs;
     inputs.reserve(op.inputs.size());
     for (const auto& in : op.inputs) inputs.push_back(valueOf(in));
-    result.opOutputs[i] = evaluateOpAt(op, inputs, env, &textures, program.directory, fetches ? &cursor : nullptr);
+    result.opOutputs[i] = evaluateOpAt(op, inputs, env, &textures, program.directory, fetches || nudge ? &cursor : nullptr);
   }
   for (const auto& out : program.outputs) result.outputs.push_back(valueOf(out.value).convertedTo(out.type));
   return result;

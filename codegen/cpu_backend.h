@@ -36,10 +36,21 @@ struct CpuResult {
 // texture source ("builtin:foam", a PNG path) in the order the program's ops make them.
 using TextureFetches = std::map<std::string, std::vector<Value>>;
 
+// How `check` bounds the device's filtering precision (accuracy/error_bound.h): the node
+// texture look-ups the reference samples itself (not given as fetches) are counted in
+// order, and the `nudged`-th one moves each component by `fraction` times its
+// filterUncertainty (nodes/texture_sampling.h).
+struct FilterNudge {
+  int nudged = -1;
+  double fraction = 0;
+  int count = 0;  // such look-ups in the last evaluation
+};
+
 // Evaluates the whole program. `parameters` overrides defaults by index (empty: defaults).
 // With `fetches`, a look-up of a listed source returns its next value instead of sampling
 // the image (std::logic_error when the list runs out).
 CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env,
-                          const std::vector<Value>& parameters = {}, const TextureFetches* fetches = nullptr);
+                          const std::vector<Value>& parameters = {}, const TextureFetches* fetches = nullptr,
+                          FilterNudge* nudge = nullptr);
 
 }  // namespace wg

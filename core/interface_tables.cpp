@@ -104,36 +104,38 @@ std::array<float, 4> rgb1(const Value& v) {
 
 const SceneSamplerRow kSceneSamplers[] = {
     {SceneSampler::SceneDepth, SceneResource::SceneDepth, "u_scene_depth", Type::Sampler2D, "scene_depth", TargetColor::None,
-     true,
+     true, &E::sceneDepth,
      [](const E& e) {
        float d = static_cast<float>(e.sceneDepth[0]);
        return std::array<float, 4>{d, d, d, 1};
      }},
     {SceneSampler::SceneColor, SceneResource::SceneColor, "u_scene_color", Type::Sampler2D, "scene_color",
-     TargetColor::FrameFormat, false, [](const E& e) { return rgb1(e.sceneColor); }},
+     TargetColor::FrameFormat, false, &E::sceneColor, [](const E& e) { return rgb1(e.sceneColor); }},
     {SceneSampler::Reflection, SceneResource::PlanarReflection, "u_reflection", Type::Sampler2D, "reflection",
-     TargetColor::FrameFormat, true, [](const E& e) { return rgb1(e.reflectionColor); }},
+     TargetColor::FrameFormat, true, &E::reflectionColor, [](const E& e) { return rgb1(e.reflectionColor); }},
     {SceneSampler::Refraction, SceneResource::Refraction, "u_refraction", Type::Sampler2D, "refraction",
-     TargetColor::FrameFormat, true, [](const E& e) { return rgb1(e.refractionColor); }},
+     TargetColor::FrameFormat, true, &E::refractionColor, [](const E& e) { return rgb1(e.refractionColor); }},
     {SceneSampler::Environment, SceneResource::Environment, "u_environment", Type::SamplerCube, "environment",
-     TargetColor::FrameFormat, false, [](const E& e) { return rgb1(e.environmentColor); }},
+     TargetColor::FrameFormat, false, &E::environmentColor, [](const E& e) { return rgb1(e.environmentColor); }},
     // The water G-buffer, RGBA32F (positions need float precision whatever the frame's
     // format), nearest. The upward normal's x and z and the mesh uv; created first, as
     // water_position's framebuffer draws into it too.
     {SceneSampler::WaterNormalUv, SceneResource::Underwater, "u_water_normal_uv", Type::Sampler2D, "water_normal",
-     TargetColor::Float32, false,
+     TargetColor::Float32, false, nullptr,
      [](const E& e) {
        return std::array<float, 4>{static_cast<float>(e.normal[0]), static_cast<float>(e.normal[2]),
                                    static_cast<float>(e.uv[0]), static_cast<float>(e.uv[1])};
      }},
     // The surface's world position (xyz) and depth-buffer value (w; 1.0 where no water).
     {SceneSampler::WaterSurface, SceneResource::Underwater, "u_water_surface", Type::Sampler2D, "water_position",
-     TargetColor::Float32, true,
+     TargetColor::Float32, true, nullptr,
      [](const E& e) {
        return std::array<float, 4>{static_cast<float>(e.worldPosition[0]), static_cast<float>(e.worldPosition[1]),
                                    static_cast<float>(e.worldPosition[2]), static_cast<float>(e.fragDepth[0])};
      }},
 };
+
+static_assert(std::size(kSceneSamplers) == kSceneSamplerCount);
 
 const BuiltinTextureRow kBuiltinTextures[] = {
     {BuiltinTexture::Dudv, "dudv"},

@@ -145,6 +145,7 @@ enum class SceneResource { SceneDepth, SceneColor, PlanarReflection, Refraction,
 // The samplers behind the resources (the water G-buffer has two). A sampler is one
 // render target of its resource's pass; targets are created in this order.
 enum class SceneSampler { SceneDepth, SceneColor, Reflection, Refraction, Environment, WaterNormalUv, WaterSurface };
+inline constexpr size_t kSceneSamplerCount = 7;
 
 struct SceneResourceRow {
   SceneResource id;
@@ -169,6 +170,9 @@ struct SceneSamplerRow {
   std::string_view target;    // the runtime's render target: "scene_depth"
   TargetColor color;
   bool depth;                 // has a DEPTH_COMPONENT32F attachment
+  // The reference's value of a look-up at this pixel; null for the water G-buffer, which
+  // the reference reads as the surface builtins (world position, depth, normal, uv).
+  Value EvalEnvironment::*environment;
   // What every texel holds in a probe case (the probe binds 1x1 textures of it).
   std::array<float, 4> (*caseTexel)(const EvalEnvironment& env);
 };

@@ -8,6 +8,13 @@ namespace wg {
 
 const Value& EvalEnvironment::builtin(Builtin b) const { return this->*builtinRow(b).environment; }
 
+Value EvalEnvironment::sceneAt(SceneSampler s, double u, double v) const {
+  if (const SceneImage* image = sceneImages[static_cast<size_t>(s)]) return image->sample(u, v);
+  Value EvalEnvironment::*field = sceneSamplerRow(s).environment;
+  if (!field) throw std::logic_error("the reference reads the water G-buffer as builtins, not by look-up");
+  return this->*field;
+}
+
 int portIndex(const std::vector<PortSpec>& ports, std::string_view name) {
   for (size_t i = 0; i < ports.size(); ++i)
     if (ports[i].name == name) return static_cast<int>(i);

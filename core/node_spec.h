@@ -3,6 +3,7 @@
 // precision reference, its hard cases and its documentation. The registry (nodes/) holds
 // one NodeSpec per type; resolve, codegen, the CPU reference, the docs and the editor's
 // palette all read it, so nothing lists the nodes a second time.
+#include <array>
 #include <functional>
 #include <limits>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "core/interface_tables.h"
 #include "core/node_options.h"
 #include "core/sampler_state.h"
+#include "core/scene_image.h"
 #include "core/types.h"
 #include "core/value.h"
 
@@ -193,7 +195,15 @@ struct EvalEnvironment {
   // across the pixel's quad, so the shader's implicit derivatives are these.
   Value uvDx = Value::vector({0, 0});
   Value uvDy = Value::vector({0, 0});
+  // Scene textures whose whole image the reference has (per SceneSampler; null: the one
+  // value of the field above). `check` sets them for deferred water, whose shader samples
+  // scene depth and colour at positions it computes (core/scene_image.h).
+  std::array<const SceneImage*, kSceneSamplerCount> sceneImages{};
   const Value& builtin(Builtin b) const;
+  // What a look-up of the 2D scene texture `s` at screen position (u, v) returns: the
+  // image sampled as the GPU does where there is one, else this pixel's field value.
+  Value sceneAt(SceneSampler s, double u, double v) const;
+  Value sceneAt(SceneSampler s, const Value& uv) const { return sceneAt(s, uv[0], uv[1]); }
 };
 
 class EvalContext {

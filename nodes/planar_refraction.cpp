@@ -21,7 +21,7 @@ NodeSpec planarRefractionNode() {
              "0.03); advanced shaders tutorial (refraction FBO in the multi-pass loop)";
   s.cost = "one texture fetch + 4 ALU; runs the refraction pass: a second draw of the opaque scene into an RGBA8 + "
            "depth target (8 bytes/pixel)";
-  makeScreenLookup(s, SceneResource::Refraction, &EvalEnvironment::refractionColor,
+  makeScreenLookup(s, SceneResource::Refraction,
                    "offset in screen units (the classic WebGL water renderer: (dudv * 2 - 1) * 0.03)", "the scene below the surface");
   s.hardCases = {
       {"distortion far off screen", {{"distortion", Value::vector({3, -8})}}, {}, "uv clamped to (1, 0)", 0, 1, "uv"},

@@ -5,8 +5,8 @@
 
 namespace wg::nodes {
 
-void makeScreenLookup(NodeSpec& s, SceneResource resource, Value EvalEnvironment::*color,
-                      const std::string& distortionDoc, const std::string& colorDoc) {
+void makeScreenLookup(NodeSpec& s, SceneResource resource, const std::string& distortionDoc,
+                      const std::string& colorDoc) {
   s.inputs = {ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv,
                                  "screen position to read, (0,0) bottom left to (1,1) top right (default: this pixel)"),
               ports::fixed("distortion", Type::Vec2, Value::vector({0, 0}), distortionDoc)};
@@ -21,9 +21,11 @@ void makeScreenLookup(NodeSpec& s, SceneResource resource, Value EvalEnvironment
     ctx.output(0, "texture(" + ctx.sceneTexture(resource) + ", " + uv + ").rgb");
     ctx.output(1, uv);
   };
-  s.eval = [color](EvalContext& ctx) {
-    ctx.output(0, ctx.environment().*color);
-    ctx.output(1, sceneColorUvReference(ctx.input("screen_uv"), ctx.input("distortion")));
+  const SceneSampler sampler = sceneResourceRow(resource).sampler;
+  s.eval = [sampler](EvalContext& ctx) {
+    Value uv = sceneColorUvReference(ctx.input("screen_uv"), ctx.input("distortion"));
+    ctx.output(0, ctx.environment().sceneAt(sampler, uv));
+    ctx.output(1, uv);
   };
   s.tolerance = 1e-6;
 }

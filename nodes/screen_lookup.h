@@ -10,8 +10,8 @@
 namespace wg::nodes {
 
 // Fills inputs, outputs, stages, resources, emit, eval and tolerance of `s` for the scene
-// texture `resource`, whose reference colour is `environment.*color`.
-void makeScreenLookup(NodeSpec& s, SceneResource resource, Value EvalEnvironment::*color,
-                      const std::string& distortionDoc, const std::string& colorDoc);
+// texture `resource` (the reference reads it through EvalEnvironment::sceneAt).
+void makeScreenLookup(NodeSpec& s, SceneResource resource, const std::string& distortionDoc,
+                      const std::string& colorDoc);
 
 }  // namespace wg::nodes

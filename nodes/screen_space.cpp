@@ -74,7 +74,7 @@ NodeSpec sceneDepthNode() {
   };
   s.eval = [](EvalContext& ctx) {
     const EvalEnvironment& env = ctx.environment();
-    double raw = env.sceneDepth[0];
+    double raw = env.sceneAt(SceneSampler::SceneDepth, ctx.input("screen_uv"))[0];
     double lin = linearizeDepthReference(raw, env.cameraNearFar[0], env.cameraNearFar[1]);
     ctx.output(0, Value::scalar(raw));
     ctx.output(1, Value::scalar(lin));
@@ -102,7 +102,7 @@ NodeSpec sceneColorNode() {
   s.source = "stylized water shader (refraction from the grabbed screen, GrabPass); advanced shaders tutorial (screen-space distorted refraction); classic WebGL water renderer "
              "(distortion (dudv * 2 - 1) * 0.03)";
   s.cost = "one texture fetch + 4 ALU; runs the scene_color_copy pass (a blit of the frame, 4 bytes/pixel RGBA8)";
-  makeScreenLookup(s, SceneResource::SceneColor, &EvalEnvironment::sceneColor,
+  makeScreenLookup(s, SceneResource::SceneColor,
                    "offset in screen units (e.g. dudv_distortion.offset or normal.xz * 0.03)",
                    "scene colour seen through the water");
   s.hardCases = {
@@ -153,7 +153,7 @@ NodeSpec planarReflectionNode() {
   s.eval = [](EvalContext& ctx) {
     Value uv = sceneColorUvReference(ctx.input("screen_uv"), ctx.input("distortion"));
     if (ctx.options<PlanarReflectionOptions>().flipY) uv[1] = 1.0 - uv[1];
-    ctx.output(0, ctx.environment().reflectionColor);
+    ctx.output(0, ctx.environment().sceneAt(SceneSampler::Reflection, uv));
     ctx.output(1, uv);
   };
   s.tolerance = 1e-6;
@@ -212,7 +212,8 @@ NodeSpec ssrNode() {
       "clip.xy / clip.w / 2 + 1/2 leaves [0, 1]; hit when (-q.z - linear(scene_depth(uv)))^2 < tolerance^2 "
       "growth^i. fade = max(1 - (0.01 + |2 uv - 1|^2)^(1/4), 0) * min(1, fade_distance / d), d = the surface's "
       "view depth; confidence = hit * fade; color = mix(fallback, scene_color(uv), confidence). The reference "
-      "marches against the environment's scene depth, the same at every screen position.";
+      "marches against the scene depth image where it has one (check, deferred water), else against one depth at "
+      "every screen position.";
   s.source = "deferred water article (listing 8: 10 steps, step 7 / max(0.6, (R.N)^2), squared tolerance 16 growing by 1.1 per step, "
              "edge fade (0.01 + dx^2 + dy^2)^(1/4), distance fade, fall back to the background); the defaults here are "
              "scaled from the source's units (haze over 2000) to the metres of the built-in scene";
@@ -267,14 +268,15 @@ NodeSpec ssrNode() {
     const Value& pos = ctx.input("position");
     Value r = reflectDirReference(n, ctx.input("view"));
     double c = glsl::dot(r, glsl::safeNormalize(n));
-    SsrMarch m = ssrMarchReference(env.sceneDepth[0], pos, r, c, env.view, env.projection, env.cameraNearFar,
+    auto depthAt = [&env](double u, double v) { return env.sceneAt(SceneSampler::SceneDepth, u, v)[0]; };
+    SsrMarch m = ssrMarchReference(depthAt, pos, r, c, env.view, env.projection, env.cameraNearFar,
                                    ctx.options<SsrOptions>().steps, ctx.scalar("step"), ctx.scalar("tolerance"),
                                    ctx.scalar("growth"));
     // -(View * (p, 1)).z: row 2 of the column-major view matrix.
     const Value& v = env.view;
     double dist = -(v[2] * pos[0] + v[6] * pos[1] + v[10] * pos[2] + v[14]);
     double conf = (m.hit ? 1.0 : 0.0) * ssrFadeReference(m.u, m.v, dist, ctx.scalar("fade_distance"));
-    ctx.output(0, mixVec3(ctx.input("fallback"), env.sceneColor, conf));
+    ctx.output(0, mixVec3(ctx.input("fallback"), env.sceneAt(SceneSampler::SceneColor, m.u, m.v), conf));
     ctx.output(1, Value::scalar(conf));
     ctx.output(2, Value::vector({m.u, m.v}));
   };

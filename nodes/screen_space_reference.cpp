@@ -49,11 +49,17 @@ Value sceneColorUvReference(const Value& uv, const Value& offset) {
 SsrMarch ssrMarchReference(double sceneDepth, const Value& origin, const Value& dir, double cosRn, const Value& view,
                            const Value& proj, const Value& nearFar, int steps, double stepLength, double tolerance,
                            double growth) {
+  return ssrMarchReference([sceneDepth](double, double) { return sceneDepth; }, origin, dir, cosRn, view, proj, nearFar,
+                           steps, stepLength, tolerance, growth);
+}
+
+SsrMarch ssrMarchReference(const SceneDepthAt& depthAt, const Value& origin, const Value& dir, double cosRn,
+                           const Value& view, const Value& proj, const Value& nearFar, int steps, double stepLength,
+                           double tolerance, double growth) {
   double stride = std::max(stepLength, 1e-4) / std::max(0.6, cosRn * cosRn);
   double t = 0.5 * stride;
   double tol2 = tolerance * tolerance;
   double g = std::max(growth, 0.0);
-  double sceneLinear = linearizeDepthReference(sceneDepth, nearFar[0], nearFar[1]);
   SsrMarch m;
   for (int i = 0; i < steps; ++i) {
     m.steps = i + 1;
@@ -65,7 +71,7 @@ SsrMarch ssrMarchReference(double sceneDepth, const Value& origin, const Value& 
     if (clip[3] <= 1e-6) break;
     double u = clip[0] / clip[3] * 0.5 + 0.5, v = clip[1] / clip[3] * 0.5 + 0.5;
     if (u < 0.0 || u > 1.0 || v < 0.0 || v > 1.0) break;
-    double diff = -vp[2] - sceneLinear;
+    double diff = -vp[2] - linearizeDepthReference(depthAt(u, v), nearFar[0], nearFar[1]);
     if (diff * diff < tol2) {
       m.u = u, m.v = v, m.hit = true;
       return m;
@@ -84,15 +90,16 @@ double ssrFadeReference(double u, double v, double dist, double fadeDistance) {
 UnderwaterResult underwaterFromAboveReference(const UnderwaterInputs& in) {
   bool covered = in.water[3] < 1.0;
   double height = covered ? in.water[1] : in.level;
-  if (!covered || height - in.scene[1] <= 0.0) return {in.sceneColor, 1};
+  if (!covered || height - in.scene[1] <= 0.0) return {in.sceneColorAt(in.uv[0], in.uv[1]), 1};
   double dw = distance3(in.water, in.camera);
   double ds = in.sky > 0.5 ? 1e30 : distance3(in.scene, in.camera);
   Value t = beerLambertReference(in.sigma, std::max(ds - dw, 0.0));
   Value body = v3(in.waterColor[0] * in.diffuse, in.waterColor[1] * in.diffuse, in.waterColor[2] * in.diffuse);
   int which = 5;
   if (max3(t) > 0.00390625 && ds < in.hazeDistance) {
-    // The refracted look-up reads the same scene colour wherever it lands.
-    const Value& refr = in.sceneColor;
+    Value offset = Value::vector({in.strength * (1.0 - t[2]) * in.normal[0], in.strength * (1.0 - t[2]) * in.normal[2]});
+    Value ruv = sceneColorUvReference(in.uv, offset);
+    Value refr = in.sceneColorAt(ruv[0], ruv[1]);
     double c = in.caustics * max3(refr);
     for (int i = 0; i < 3; ++i)
       body[i] = t[i] * (refr[i] + in.causticsColor[i] * c) + (1.0 - t[i]) * in.waterColor[i] * in.diffuse;
@@ -109,8 +116,8 @@ UnderwaterResult underwaterFromBelowReference(const UnderwaterInputs& in) {
   double height = covered ? in.water[1] : in.level;
   double k = std::min(1.0, std::max(in.depthLight, 0.0) / std::max(in.level - in.camera[1], 1e-6));
   Value out = Value::ofType(Type::Vec3);
-  const Value& col = in.sceneColor;
   if (!covered || height - in.scene[1] > 0.0) {
+    Value col = in.sceneColorAt(in.uv[0], in.uv[1]);
     double ds = in.sky > 0.5 ? 1e30 : distance3(in.scene, in.camera);
     Value t = beerLambertReference(in.sigma, ds);
     double c = in.caustics * max3(col);
@@ -119,8 +126,10 @@ UnderwaterResult underwaterFromBelowReference(const UnderwaterInputs& in) {
     return {out, 2};
   }
   Value t = beerLambertReference(in.sigma, distance3(in.water, in.camera));
+  Value suv = sceneColorUvReference(in.uv, Value::vector({in.strength * in.normal[0], in.strength * in.normal[2]}));
+  Value seen = in.sceneColorAt(suv[0], suv[1]);
   for (int i = 0; i < 3; ++i)
-    out[i] = k * (t[i] * (in.transmittance * col[i] + in.surface[i]) + (1.0 - t[i]) * in.waterColor[i] * in.diffuse);
+    out[i] = k * (t[i] * (in.transmittance * seen[i] + in.surface[i]) + (1.0 - t[i]) * in.waterColor[i] * in.diffuse);
   return {out, 3};
 }
 

@@ -2,8 +2,10 @@
 // Double-precision references of the screen-space and scene nodes (scene_depth,
 // scene_color, planar_reflection, ssr, underwater). Each mirrors its GLSL function in
 // nodes/glsl/ line for line (same clamps, same guards). Texture look-ups of scene
-// resources return what the EvalEnvironment says this pixel sees: the same value at every
-// screen position (the documented simplification of the reference).
+// resources go through EvalEnvironment::sceneAt: the read-back image where `check` has
+// one, else the one value the environment gives for this pixel.
+#include <functional>
+
 #include "core/value.h"
 
 namespace wg::nodes {
@@ -21,7 +23,15 @@ struct SsrMarch {
   bool hit = false;
   int steps = 0;  // steps taken before the hit or the end (for tests)
 };
-// wg_ssr_march against a scene depth texture that holds `sceneDepth` everywhere.
+// A scene texture look-up at screen position (u, v).
+using SceneDepthAt = std::function<double(double u, double v)>;
+using SceneColorAt = std::function<Value(double u, double v)>;
+
+// wg_ssr_march against the scene depth `depthAt` gives at each step's screen position.
+SsrMarch ssrMarchReference(const SceneDepthAt& depthAt, const Value& origin, const Value& dir, double cosRn,
+                           const Value& view, const Value& proj, const Value& nearFar, int steps, double stepLength,
+                           double tolerance, double growth);
+// Against a scene depth texture that holds `sceneDepth` everywhere.
 SsrMarch ssrMarchReference(double sceneDepth, const Value& origin, const Value& dir, double cosRn, const Value& view,
                            const Value& proj, const Value& nearFar, int steps, double stepLength, double tolerance,
                            double growth);
@@ -34,7 +44,7 @@ struct UnderwaterInputs {
   Value surface, waterColor, sigma, causticsColor, hazeColor;
   double transmittance = 1, diffuse = 0.35, strength = 0.03, caustics = 0, hazeDistance = 120, level = 0,
          depthLight = 4;
-  Value sceneColor;  // what a look-up of u_scene_color returns anywhere
+  SceneColorAt sceneColorAt;  // a look-up of u_scene_color at (u, v)
 };
 // wg_underwater_from_above / _from_below: colour (vec3) and the case taken (1..5).
 struct UnderwaterResult {

@@ -141,4 +141,19 @@ Value sampleTexture(const TextureImage& base, const std::vector<TextureImage>* c
   return out;
 }
 
+double filterUncertainty(const TextureImage& base, double u, double v, const SamplerState& sampler) {
+  if (sampler.filter == TextureFilter::Nearest || base.width <= 0 || base.height <= 0) return 0.0;
+  // Nearest look-ups half a texel either side read the texels a bilinear look-up blends.
+  const double du = 0.5 / base.width, dv = 0.5 / base.height;
+  std::array<double, 4> lo{INFINITY, INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY, -INFINITY};
+  for (double su : {-du, du})
+    for (double sv : {-dv, dv}) {
+      Value t = sampleLevel(base, u + su, v + sv, sampler.wrap, TextureFilter::Nearest, sampler.colorSpace);
+      for (size_t c = 0; c < 4; ++c) lo[c] = std::min(lo[c], t[static_cast<int>(c)]), hi[c] = std::max(hi[c], t[static_cast<int>(c)]);
+    }
+  double spread = 0;
+  for (size_t c = 0; c < 4; ++c) spread = std::max(spread, hi[c] - lo[c]);
+  return std::ldexp(spread, -7) + std::ldexp(1.0, -9);
+}
+
 }  // namespace wg

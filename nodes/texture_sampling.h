@@ -48,6 +48,15 @@ std::vector<TextureImage> buildMipChain(const TextureImage& base, TextureColorSp
 // gradient).
 double levelOfDetail(const TextureImage& base, const UvGradient& gradient);
 
+// How far the value a GPU filters from an 8-bit texture may lie from sampleTexture's exact
+// one: GL leaves the subtexel precision of filter weights to the implementation (Vulkan's
+// minimum is 4 bits), and llvmpipe (lavapipe: subTexelPrecisionBits 8) blends 8-bit
+// textures with 8-bit weights into an 8-bit result. With weights off by up to 2^-8 in
+// each direction and the result rounded to 1/255: 2^-7 * spread + 2^-9, spread being the
+// largest range of one component over the 2x2 level-0 footprint at (u, v). Zero for
+// nearest filtering (stored values come back exactly).
+double filterUncertainty(const TextureImage& base, double u, double v, const SamplerState& sampler);
+
 // The full rule: `chain` (levels 1..q of `base` for the state's colour space) is read
 // only when the filter is Mipmapped and lambda > 0.
 Value sampleTexture(const TextureImage& base, const std::vector<TextureImage>* chain, double u, double v,

@@ -139,7 +139,7 @@ NodeSpec underwaterNode() {
     in.uv = ctx.input("screen_uv");
     const Value& wp = env.worldPosition;
     in.water = Value::vector({wp[0], wp[1], wp[2], env.fragDepth[0]});
-    double raw = env.sceneDepth[0];
+    double raw = env.sceneAt(SceneSampler::SceneDepth, in.uv)[0];
     double lin = linearizeDepthReference(raw, env.cameraNearFar[0], env.cameraNearFar[1]);
     in.camera = env.cameraPosition;
     in.scene = sceneDepthPositionReference(in.uv, lin, in.camera, env.view, env.projection);
@@ -155,7 +155,7 @@ NodeSpec underwaterNode() {
     in.hazeColor = ctx.input("haze_color");
     in.level = ctx.scalar("water_level");
     in.depthLight = ctx.scalar("depth_light");
-    in.sceneColor = env.sceneColor;
+    in.sceneColorAt = [&env](double u, double v) { return env.sceneAt(SceneSampler::SceneColor, u, v); };
     UnderwaterCamera mode = ctx.options<UnderwaterOptions>().camera;
     bool below = mode == UnderwaterCamera::Below || (mode == UnderwaterCamera::Auto && in.camera[1] < in.level);
     UnderwaterResult r;

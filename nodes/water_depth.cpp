@@ -118,7 +118,7 @@ NodeSpec waterDepthNode() {
   s.eval = [](EvalContext& ctx) {
     const EvalEnvironment& env = ctx.environment();
     const Value& nf = env.cameraNearFar;
-    double scene = linearizeDepthReference(env.sceneDepth[0], nf[0], nf[1]);
+    double scene = linearizeDepthReference(env.sceneAt(SceneSampler::SceneDepth, ctx.input("screen_uv"))[0], nf[0], nf[1]);
     double surface = linearizeDepthReference(env.fragDepth[0], nf[0], nf[1]);
     const Value& view = ctx.input("view");
     double factor = waterDepthRayFactorReference(env.view, view);

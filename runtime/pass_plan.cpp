@@ -39,6 +39,11 @@ const TargetSpec* PassPlan::target(const std::string& name) const {
   return nullptr;
 }
 
+bool sampledNearest(const TargetSpec& target, bool floatLinear) {
+  return target.color == ColorFormat::None || target.producedBy == PassKind::DeferredWater ||
+         (target.color == ColorFormat::Rgba32f && !floatLinear);
+}
+
 size_t PassPlan::totalBytes() const {
   size_t n = 0;
   for (const auto& t : targets) n += t.bytes();

@@ -51,6 +51,12 @@ struct PassPlan {
 };
 
 size_t bytesPerPixel(ColorFormat f);
+
+// Whether the renderers sample `target` with nearest filtering: depth and the water
+// G-buffer are read texel for texel; colour is linear, except float colour on a device
+// that cannot filter float textures (`floatLinear` false: OpenGL ES without
+// GL_OES_texture_float_linear, a Vulkan device without the format feature).
+bool sampledNearest(const TargetSpec& target, bool floatLinear);
 size_t bytesPerPixel(DepthFormat f);
 
 // Throws RuntimeError(Kind::Manifest) for passes without water_surface or a render size

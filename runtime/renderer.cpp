@@ -166,8 +166,10 @@ struct Renderer::Impl {
   }
   const GpuTarget& frame() const { return targets.front(); }
 
+  bool floatLinear = true;
+
   void createTargets() {
-    bool floatLinear = !es || epoxy_has_gl_extension("GL_OES_texture_float_linear");
+    floatLinear = !es || epoxy_has_gl_extension("GL_OES_texture_float_linear");
     for (const TargetSpec& spec : plan.targets) {
       GpuTarget t;
       t.spec = spec;
@@ -177,9 +179,7 @@ struct Renderer::Impl {
         t.color = makeTexture();
         glBindTexture(texTarget, t.color.id());
         glTexStorage2D(texTarget, 1, colorInternalFormat(spec.color), spec.width, spec.height);
-        // The water G-buffer is read texel for texel: nearest.
-        setFilter(texTarget, (spec.color == ColorFormat::Rgba32f && !floatLinear) || spec.producedBy == PassKind::DeferredWater
-                                 ? GL_NEAREST : GL_LINEAR);
+        setFilter(texTarget, sampledNearest(spec, floatLinear) ? GL_NEAREST : GL_LINEAR);
         t.allocatedBytes += measuredBytes(texTarget);
       }
       if (spec.depth != DepthFormat::None) {
@@ -697,6 +697,12 @@ std::vector<float> Renderer::readDepth() const {
   return depth;
 }
 const PassPlan& Renderer::plan() const { return impl_->plan; }
+
+bool Renderer::samplesNearest(SceneSampler s) const {
+  const GpuTarget* t = impl_->find(s);
+  if (!t) throw std::logic_error("samplesNearest: the plan has no target for this sampler");
+  return sampledNearest(t->spec, impl_->floatLinear);
+}
 int Renderer::createdTargetCount() const { return static_cast<int>(impl_->targets.size()); }
 size_t Renderer::createdTargetBytes() const {
   size_t n = 0;

@@ -90,6 +90,9 @@ class Renderer {
   GLuint frameTexture() const;
 
   const PassPlan& plan() const;
+  // Whether the scene texture bound to `s` is sampled nearest (runtime/pass_plan.h); the
+  // plan must create it.
+  bool samplesNearest(SceneSampler s) const;
   int createdTargetCount() const;     // GL render targets actually allocated
   size_t createdTargetBytes() const;  // their image memory
   const RenderSettings& settings() const;

@@ -501,9 +501,7 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
         Impl::Target* t = r.find(s);
         if (!t) return out;
         out.image = t->color ? &t->color : &t->depth;
-        // Depth and the G-buffer are read texel for texel; float colour linear where the device filters it.
-        out.nearest = !t->color || t->spec.producedBy == PassKind::DeferredWater ||
-                      (t->spec.color == ColorFormat::Rgba32f && !r.floatLinear);
+        out.nearest = sampledNearest(t->spec, r.floatLinear);
         return out;
       },
       origins);
@@ -563,6 +561,12 @@ std::vector<float> VkRenderer::readDepth() const {
 }
 
 const PassPlan& VkRenderer::plan() const { return impl_->plan; }
+
+bool VkRenderer::samplesNearest(SceneSampler s) const {
+  const Impl::Target* t = impl_->find(s);
+  if (!t) throw std::logic_error("samplesNearest: the plan has no target for this sampler");
+  return sampledNearest(t->spec, impl_->floatLinear);
+}
 int VkRenderer::createdTargetCount() const { return static_cast<int>(impl_->targets.size()); }
 size_t VkRenderer::createdTargetBytes() const {
   size_t n = 0;

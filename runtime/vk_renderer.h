@@ -49,6 +49,7 @@ class VkRenderer {
   std::vector<float> readDepth() const;  // rows top to bottom, as Renderer::readDepth
 
   const PassPlan& plan() const;
+  bool samplesNearest(SceneSampler s) const;  // as Renderer::samplesNearest
   int createdTargetCount() const;
   size_t createdTargetBytes() const;  // level 0 of every image, from the formats
 

@@ -90,10 +90,11 @@ TEST(CheckCli, ExitsOneOnNanPixels) {
 
 // The CLI over every example graph at a small size on glsl330: exit 0 (no NaN/Inf, no
 // compared pixel over its bound), one "ok" per graph, and every graph compared with the
-// CPU on its read-back inputs but deferred water (its library functions sample the scene
-// many times a pixel; the reference has one value per texture), which names that reason.
-// Each compared graph: enough pixels, none over the bound, max error under 1e-3 (a quarter
-// of an 8-bit step; node textures are read back, so no filter difference remains).
+// CPU on its read-back inputs. Each: enough pixels, none over the bound, and for forward
+// water a max error under 1e-3 (a quarter of an 8-bit step; node textures are read back,
+// so no filter difference remains). Deferred water's wave march samples its height map
+// inside a library function, filtered by the reference itself: its max error stays under
+// the graph's tolerance (2e-2) instead, each pixel held to the filter precision's bound.
 TEST(CheckCli, EveryExampleGraphIsWithinItsBound) {
   std::string cmd = test::shellQuote(test::watergraphBinary()) + " check --target glsl330 --size 48x27";
   auto graphs = test::exampleGraphs();
@@ -104,14 +105,13 @@ TEST(CheckCli, EveryExampleGraphIsWithinItsBound) {
   EXPECT_EQ(rc, 0) << out;
   size_t deferred = 0;
   for (const auto& path : graphs) {
-    bool isDeferred = test::readFile(path).find("\"underwater\"") != std::string::npos;
-    deferred += isDeferred ? 1 : 0;
+    deferred += test::readFile(path).find("\"underwater\"") != std::string::npos ? 1 : 0;
     size_t header = out.find("check " + path + " on ");
     ASSERT_NE(header, std::string::npos) << path << "\n" << out;
     std::string line = out.substr(header, out.find('\n', header) - header);
-    if (isDeferred) EXPECT_NE(line.find("inside a library function"), std::string::npos) << line;
-    else EXPECT_NE(line.find("reference: cpu"), std::string::npos) << line;
+    EXPECT_NE(line.find("reference: cpu"), std::string::npos) << line;
   }
+  EXPECT_GT(deferred, 0u) << "an example graph with deferred water";
   size_t compared = 0;
   for (size_t at = out.find("against the cpu:"); at != std::string::npos; at = out.find("against the cpu:", at + 1)) {
     ++compared;
@@ -128,9 +128,10 @@ TEST(CheckCli, EveryExampleGraphIsWithinItsBound) {
     EXPECT_GT(pixels, 50) << graph << ": " << line;
     EXPECT_EQ(over, 0) << graph << ": " << line;
     EXPECT_LE(ratio, 1.0) << graph << ": " << line;
-    EXPECT_LT(maxError, 1e-3) << graph << ": " << line;
+    bool isDeferred = test::readFile(graph).find("\"underwater\"") != std::string::npos;
+    EXPECT_LT(maxError, isDeferred ? 2e-2 : 1e-3) << graph << ": " << line;
   }
-  EXPECT_EQ(compared, graphs.size() - deferred) << out;
+  EXPECT_EQ(compared, graphs.size()) << out;
   size_t ok = 0;
   for (size_t at = out.find("\nok: "); at != std::string::npos; at = out.find("\nok: ", at + 1)) ++ok;
   EXPECT_EQ(ok, graphs.size()) << out;
@@ -201,6 +202,41 @@ TEST(CheckCli, FailsWhenANodeIsWrongOnReadBackInputs) {
     EXPECT_NE(out.find("reference: cpu"), std::string::npos) << out;
     EXPECT_EQ(out.find("over the bound 0\n"), std::string::npos) << out;
   }
+}
+
+}  // namespace
+}  // namespace wg::accuracy
+
+namespace wg::accuracy {
+namespace {
+
+// Deferred water against the CPU (every pixel at 64x36, --error-map): the graph as written passes,
+// and each break of a look-up the shader makes at a position of its own fails: the
+// refraction offset of the underwater node reversed, the SSR march's view depth scaled by
+// 1.05, and the SSR hit's colour read at (v, u). The reference samples the read-back
+// scene depth and colour images at those positions (core/scene_image.h).
+TEST(CheckCli, DeferredWaterIsComparedAndFailsWhenALookUpIsWrong) {
+  std::string dir = test::makeTempDir("wg_check_deferred");
+  const std::string base = test::shellQuote(test::watergraphBinary()) + " check " +
+                           test::shellQuote(test::sourcePath("graphs/deferred_underwater.json")) +
+                           " --target glsl330 --size 64x36 --error-map " + test::shellQuote(dir + "/map.png");
+  std::string out;
+  int rc = test::runCommand(base, &out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("reference: cpu"), std::string::npos) << out;
+  EXPECT_NE(out.find("over the bound 0\n"), std::string::npos) << out;
+  const char* mutations[] = {
+      "vec2 ruv = wg_scene_color_uv(uv, strength=>vec2 ruv = wg_scene_color_uv(uv, -strength",
+      "float diff = -vp.z - =>float diff = -vp.z * 1.05 - ",
+      "textureLod(u_scene_color, n7_ssr_t2.xy, 0.0)=>textureLod(u_scene_color, n7_ssr_t2.yx, 0.0)",
+  };
+  for (const char* mutation : mutations) {
+    SCOPED_TRACE(mutation);
+    rc = test::runCommand(base + " --mutate " + test::shellQuote(mutation), &out);
+    EXPECT_EQ(rc, 1) << out;
+    EXPECT_EQ(out.find("over the bound 0\n"), std::string::npos) << out;
+  }
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -62,11 +62,40 @@ TEST(ReadbackPlan, ListsTheVaryingsAndLookUpsOfTheFragmentShader) {
   EXPECT_EQ(text.find("o_color = vec4(n14_color, 1.0);"), std::string::npos);
 }
 
-TEST(ReadbackPlan, RefusesDeferredWaterWithItsReason) {
+// Deferred water: the surface builtins come from the G-buffer locals of main() (no
+// look-up of the G-buffer is read back), and the scene depth and colour, which its SSR
+// march and underwater node sample at positions of their own, are read back whole.
+TEST(ReadbackPlan, PlansDeferredWaterFromTheGBufferAndWholeSceneTextures) {
   CompileResult r = compiled("deferred_underwater.json");
   ReadbackPlan plan;
   std::string why = planReadback(r, fragmentText(rt::waterShaderSources(r, Target::Glsl330)), &plan);
-  EXPECT_NE(why.find("inside a library function"), std::string::npos) << why;
+  ASSERT_EQ(why, "");
+  ASSERT_GE(plan.worldPosition, 0);
+  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.worldPosition)], "(v_world_position).x");
+  ASSERT_GE(plan.fragDepth, 0);
+  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.fragDepth)], "b_water_surface.w");
+  EXPECT_EQ(plan.normal, -1);  // not declared by this shader: nothing reads the G-buffer normal
+  ASSERT_EQ(plan.images.size(), 2u);
+  EXPECT_EQ(plan.images[0].sampler, SceneSampler::SceneDepth);
+  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.images[0].channel)], "texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r");
+  EXPECT_EQ(plan.images[1].sampler, SceneSampler::SceneColor);
+  EXPECT_EQ(plan.images[1].size, 3);
+  for (const auto& lookup : plan.lookups) EXPECT_EQ(lookup.sampler, SceneSampler::Environment);
+  EXPECT_EQ(plan.lookups.size(), 1u);
+}
+
+// Forward water that samples a scene texture inside a library function keeps the refusal:
+// the water does not cover the screen, so the texture cannot be read back whole.
+TEST(ReadbackPlan, RefusesALibraryLookUpOfForwardWater) {
+  CompileResult r = compiled("deferred_underwater.json");
+  std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));
+  Manifest forward = r.manifest;
+  forward.passes.erase(std::remove(forward.passes.begin(), forward.passes.end(), RenderPass::DeferredWater),
+                       forward.passes.end());
+  r.manifest = forward;
+  ReadbackPlan plan;
+  std::string why = planReadback(r, text, &plan);
+  EXPECT_NE(why.find("u_scene_depth inside a library function"), std::string::npos) << why;
 }
 
 // ocean: the vertex stage's Gerstner ops are left out; what the fragment reads of them
