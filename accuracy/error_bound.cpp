@@ -72,6 +72,7 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
   FilterNudge nudge;
   auto evaluate = [&] { return evaluateProgram(varied, e, params, texels ? &*texels : nullptr, &nudge).outputs.front(); };
   Value ref = evaluate();
+  const int lookups = nudge.count;
   int n = std::min(ref.size(), 4);
   std::array<double, 4> base{};
   for (int k = 0; k < n; ++k) base[static_cast<size_t>(k)] = ref[k];
@@ -94,19 +95,15 @@ std::array<double, 4> conditioningTerm(const Program& program, const EvalEnviron
     seen.push_back(u);
     if (Value* v = builtinValue(e, u)) perturb(*v);
   }
-  // The look-ups the reference filters itself, counted by the evaluation above.
-  if (filterPrecision) {
-    nudge.nudged = -1;
-    evaluate();  // counts them
-  }
-  if (filterPrecision)
-    for (int k = 0, lookups = nudge.count; k < lookups; ++k)
-      addMoves(
-          [&](double fraction) {
-            nudge.nudged = fraction == 0.0 ? -1 : k;
-            nudge.fraction = fraction;
-          },
-          base, n, sum, evaluate);
+  // The look-ups the reference filters itself, one at a time (the unperturbed
+  // evaluation counted them: a nudge changes no look-up before its own).
+  for (int k = 0; filterPrecision && k < lookups; ++k)
+    addMoves(
+        [&](double fraction) {
+          nudge.nudged = fraction == 0.0 ? -1 : k;
+          nudge.fraction = fraction;
+        },
+        base, n, sum, evaluate);
   // Intermediates that round on their own (nodes/rounded_intermediates.h), one at a time.
   for (size_t i = 0; i < program.ops.size(); ++i) {
     const Op& op = program.ops[i];

@@ -109,6 +109,13 @@ std::string planReadback(const CompileResult& result, const std::string& text, R
       for (const auto& call : use.fetches) atThisPixel &= call == "texture(" + name + ", b_screen_uv)";
       if (!atThisPixel)
         return "it reads the water G-buffer (" + name + ") other than at the pixel's own position";
+      // A shader that reads the surface only inside a node (the underwater node's water
+      // term) declares no surface locals: fetch the texel itself.
+      if (row.id == SceneSampler::WaterSurface) {
+        const std::string texel = "texelFetch(" + name + ", ivec2(gl_FragCoord.xy), 0)";
+        if (plan.worldPosition < 0) plan.worldPosition = addChannels(plan, texel + ".xyz", 3);
+        if (plan.fragDepth < 0) plan.fragDepth = addChannels(plan, texel + ".w", 1);
+      }
       continue;
     }
     int size = row.id == SceneSampler::SceneDepth ? 1 : 3;

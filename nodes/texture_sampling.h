@@ -54,7 +54,8 @@ double levelOfDetail(const TextureImage& base, const UvGradient& gradient);
 // textures with 8-bit weights into an 8-bit result. With weights off by up to 2^-8 in
 // each direction and the result rounded to 1/255: 2^-7 * spread + 2^-9, spread being the
 // largest range of one component over the 2x2 level-0 footprint at (u, v). Zero for
-// nearest filtering (stored values come back exactly).
+// nearest filtering (stored values come back exactly). A minified mipmapped look-up blends
+// coarser levels whose footprints this does not see: it is sized for level 0 only.
 double filterUncertainty(const TextureImage& base, double u, double v, const SamplerState& sampler);
 
 // The full rule: `chain` (levels 1..q of `base` for the state's colour space) is read

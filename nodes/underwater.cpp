@@ -48,7 +48,8 @@ NodeSpec underwaterNode() {
       "colour; case 3 otherwise (looking up through the surface): T = exp(-sigma d_W), color = k (T "
       "(transmittance_below scene_color(clamp(uv + refraction_strength N.xz)) + surface_below) + (1 - T) "
       "water_color diffuse). The reference reads the G-buffer as (world_position, frag_depth) of the environment "
-      "and every scene look-up as the environment's scene colour.";
+      "and the scene depth and colour through the environment at the look-up's position (the read-back images in "
+      "check, else the one value of this pixel).";
   s.source = "deferred water article (deferred water rendering: listings 5 and 10-18, the five cases, diffuseIntensityWater 0.35, "
              "absorption over the in-water view distance, depth-dependent light, distortion by (1 - T.b) N.xz, "
              "caustics times the brightest channel, haze by the surface distance); classic WebGL water renderer (deep colour (0, 0.1, 0.2), "

@@ -84,6 +84,64 @@ TEST(ReadbackPlan, PlansDeferredWaterFromTheGBufferAndWholeSceneTextures) {
   EXPECT_EQ(plan.lookups.size(), 1u);
 }
 
+CompileResult compiledText(const std::string& json) {
+  Diagnostics diags;
+  auto graph = parseGraph(json, "inline.json", diags);
+  EXPECT_TRUE(graph);
+  CompileOptions o;
+  o.targets = {Target::Glsl330};
+  auto result = compileGraph(*graph, defaultRegistry(), o, diags);
+  EXPECT_TRUE(result);
+  return *result;
+}
+
+// Deferred water that reads the surface only inside the underwater node (no surface
+// builtin of its own, so no G-buffer locals): the surface texel is fetched at the pixel
+// for the reference's world position and depth.
+TEST(ReadbackPlan, FetchesTheSurfaceTexelWhereNoLocalHoldsIt) {
+  CompileResult r = compiledText(R"({"version": 1, "name": "t", "nodes": [
+      {"id": "water", "type": "underwater", "inputs": {"normal": [0, 1, 0]}}],
+    "outputs": {"fragment": {"color": "water.color"}}})");
+  std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));
+  ASSERT_EQ(text.find("vec3 v_world_position = "), std::string::npos) << text;
+  ReadbackPlan plan;
+  ASSERT_EQ(planReadback(r, text, &plan), "");
+  ASSERT_GE(plan.worldPosition, 0);
+  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.worldPosition)],
+            "(texelFetch(u_water_surface, ivec2(gl_FragCoord.xy), 0).xyz).x");
+  ASSERT_GE(plan.fragDepth, 0);
+  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.fragDepth)], "texelFetch(u_water_surface, ivec2(gl_FragCoord.xy), 0).w");
+}
+
+// The reference takes the G-buffer as this pixel's builtins, so a look-up of it anywhere
+// else is refused with that reason.
+TEST(ReadbackPlan, RefusesAGBufferLookUpAwayFromThePixel) {
+  CompileResult r = compiled("deferred_underwater.json");
+  std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));
+  const std::string own = "vec4 n22_water_t0 = texture(u_water_surface, b_screen_uv);";
+  size_t at = text.find(own);
+  ASSERT_NE(at, std::string::npos) << text;
+  text.replace(at, own.size(), "vec4 n22_water_t0 = texture(u_water_surface, b_screen_uv * 0.5);");
+  ReadbackPlan plan;
+  std::string why = planReadback(r, text, &plan);
+  EXPECT_NE(why.find("u_water_surface) other than at the pixel's own position"), std::string::npos) << why;
+}
+
+// A read-back image's rows run top to bottom; the scene image the reference samples has
+// GL's rows, bottom first.
+TEST(ReadbackImage, SceneImagesHaveGlsRowOrder) {
+  ReadbackImage taps;
+  taps.width = 2, taps.height = 2, taps.channels = 2;
+  // Channel 1 holds 10 * row-from-top + column.
+  taps.values = {0, 0, 0, 1, 0, 10, 0, 11};
+  SceneImage img = taps.sceneImage({SceneSampler::SceneDepth, 1, 1}, true);
+  EXPECT_EQ(img.texel(0, 0, 0), 10.0f);  // bottom row = the image's last row
+  EXPECT_EQ(img.texel(1, 0, 0), 11.0f);
+  EXPECT_EQ(img.texel(0, 1, 0), 0.0f);
+  EXPECT_EQ(img.texel(1, 1, 0), 1.0f);
+  EXPECT_TRUE(img.nearest);
+}
+
 // Forward water that samples a scene texture inside a library function keeps the refusal:
 // the water does not cover the screen, so the texture cannot be read back whole.
 TEST(ReadbackPlan, RefusesALibraryLookUpOfForwardWater) {
