@@ -24,7 +24,10 @@ void collectKnobs(const Graph& graph, const std::string& prefix, int depth, std:
   }
 }
 
-// Everything the compiler writes for a configuration: shaders, SPIR-V and the manifest.
+// The shaders the compiler writes for a configuration (the tessellation factor is a
+// constant of the control stage, the passes follow from the samplers the shaders declare).
+// Not the manifest: it lists the bypassed nodes, so switching off a node whose output
+// nothing reads would count as a change.
 std::string compiledText(const Graph& graph, Target target) {
   Diagnostics diags;
   CompileOptions options;
@@ -33,7 +36,8 @@ std::string compiledText(const Graph& graph, Target target) {
   auto compiled = compileGraph(graph, defaultRegistry(), options, diags);
   if (!compiled) return "";  // does not compile: distinct from anything that does (tune reports it)
   std::string all;
-  for (const auto& f : compiled->files) all += f.name + '\0' + f.contents + '\0';
+  for (const auto& f : compiled->files)
+    if (!f.name.ends_with(".manifest.json")) all += f.name + '\0' + f.contents + '\0';
   return all;
 }
 

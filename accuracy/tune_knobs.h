@@ -17,7 +17,7 @@ namespace wg::accuracy {
 std::vector<TuneKnob> graphKnobs(const Graph& graph);
 
 // `knobs` with only the levels that change what this graph compiles to for `target`: a level
-// whose shaders and manifest are those of the next more exact level (every other knob at
+// whose shaders are those of the next more exact level (every other knob at
 // its most exact) stands for nothing of its own and is left out (a wave count of 12 on a
 // list of three waves, a tessellation factor on an untessellated surface). A knob left with
 // one level is dropped and its name added to `unchanged`; the search would otherwise time

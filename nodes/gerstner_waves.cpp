@@ -198,9 +198,8 @@ NodeSpec gerstnerWavesNode() {
       "\"wavelength\": metres > 0, \"amplitude\": metres (optional, default Q/k as in the stylized water shader), \"phase\": radians "
       "(optional)}. The sum of Q k A over the waves must not exceed 1, or the surface folds over."),
                ports::knob(ports::integer("max_waves", kMaxGerstnerWaves, 1, kMaxGerstnerWaves,
-                                          "sum only the first this many waves of the list, in the order written (a "
-                                          "quality knob: list the waves that matter most first); the default keeps "
-                                          "every wave"),
+                                          "sum only the first this many waves of the list, in the order written "
+                                          "(list the waves that matter most first); the default keeps every wave"),
                            {1, 2, 3, 4, 6, 8, 12, kMaxGerstnerWaves})};
   s.isSource = true;
   s.parseOptions = optionParser(parseGerstnerOptions);

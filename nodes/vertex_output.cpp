@@ -48,8 +48,8 @@ NodeSpec vertexOutputNode() {
       // A quality knob: a lower factor generates fewer vertices (the vertex-stage nodes run
       // once per generated vertex) and follows the displacement more coarsely.
       ports::knob(ports::number("factor", 16, 1, 64,
-                                "the largest tessellation level (a quality knob: lower is cheaper and follows the "
-                                "displacement more coarsely; no effect without tessellation)"),
+                                "the largest tessellation level (lower: fewer vertices, the displacement followed "
+                                "more coarsely; no effect without tessellation)"),
                   {1, 2, 4, 8, 16}),
   };
   s.parseOptions = optionParser(parseVertexOutputOptions);
