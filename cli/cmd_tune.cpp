@@ -205,7 +205,9 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "tune",
       "The cheapest configuration of a graph's quality knobs within an error budget. The reference is the graph with "
       "every knob (options whose levels a node declares, and `bypass` on nodes that add detail; `watergraph nodes` "
-      "lists them) at its most exact level, rendered into RGBA32F frames over a sweep: every camera (default above, "
+      "lists them; those of nodes inside a subgraph instance are named instance/node.option; levels that compile to "
+      "the same shaders as the next more exact one are left out) at its most exact level, rendered into RGBA32F "
+      "frames over a sweep: every camera (default above, "
       "grazing, topdown, and underwater for graphs with the deferred underwater pass) at every time. From the reference, "
       "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
       "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost; the one with the "
