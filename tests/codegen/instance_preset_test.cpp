@@ -8,6 +8,7 @@
 #include <string>
 
 #include "codegen/compile.h"
+#include "core/graph_edit.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "test_support.h"
@@ -151,6 +152,32 @@ TEST(InstancePresetOptions, AnOptionTheInnerTypeLacksOrAValueItRefusesIsReported
     EXPECT_FALSE(b.result) << preset;
     EXPECT_NE(b.firstError().find("p2.json:5:43: error: [WG030]"), std::string::npos) << preset << ": " << b.firstError();
   }
+}
+
+// The editor's preset list applies them too, as one undoable edit: its preview compiles the
+// instance with the option; undone, the instance is as written again.
+TEST(InstancePresetOptions, TheEditorAppliesThemToThePreview) {
+  Tree tree;
+  std::string path = tree.write("parent.json", parent(R"("a/fresnel.model": "exact")"));
+  Diagnostics d;
+  auto g = loadGraphFile(path, d);
+  ASSERT_TRUE(g);
+  GraphEditor e(*g);
+  EXPECT_EQ(e.applyPreset("fast"), "");
+  CompileOptions options;
+  options.targets = {Target::Glsl330};
+  options.validate = false;
+  auto fragment = [&] {
+    Diagnostics cd;
+    auto r = compileGraph(e.graph(), defaultRegistry(), options, cd);
+    EXPECT_TRUE(r);
+    for (const auto& f : r->files)
+      if (f.name.ends_with(".glsl330.frag")) return f.contents;
+    return std::string();
+  };
+  EXPECT_EQ(calls(fragment(), "wg_fresnel_exact"), 1u);
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(calls(fragment(), "wg_fresnel_exact"), 0u);
 }
 
 }  // namespace
