@@ -16,6 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "accuracy/spirv_count.h"
+#include "accuracy/tune_knobs.h"
 #include "codegen/compile.h"
 #include "core/graph_io.h"
 #include "core/preset.h"
@@ -51,6 +52,18 @@ std::string diagText(const Diagnostics& d) {
 Graph withOptions(const Graph& base, const ordered& overrides, const BenchSettings& s, const std::string& where) {
   Graph g = base;
   for (auto it = overrides.begin(); it != overrides.end(); ++it) {
+    if (it.key().find('/') != std::string::npos) {  // a node inside a subgraph instance ("foam/edge")
+      Preset preset;
+      for (auto o = it.value().begin(); o != it.value().end(); ++o) {
+        PresetValue v;
+        v.node = it.key();
+        v.option = o.key();
+        v.optionValue = nlohmann::json::parse(o.value().dump());
+        preset.values.push_back(std::move(v));
+      }
+      writePresetInto(g, preset);
+      continue;
+    }
     Node* node = nullptr;
     for (auto& n : g.nodes)
       if (n.id == it.key()) node = &n;
@@ -89,29 +102,20 @@ const OptionSpec* knobOf(const Graph& g, const std::string& nodeId, const std::s
   return nullptr;
 }
 
-// Every quality knob of the graph's nodes, in file order: (node id, option).
-std::vector<std::pair<std::string, const OptionSpec*>> knobsOf(const Graph& g) {
-  std::vector<std::pair<std::string, const OptionSpec*>> knobs;
-  for (const auto& n : g.nodes)
-    if (const NodeSpec* spec = defaultRegistry().find(n.type))
-      for (const auto& o : spec->options)
-        if (!o.levels.empty()) knobs.push_back({n.id, &o});
-  return knobs;
-}
-
 // A graph's own families: one per quality knob, each level with every other knob at its
 // most exact level (together: the reference), and "as written" against that reference.
 std::vector<Family> knobFamilies(const Graph& g, const BenchSettings& s) {
-  auto knobs = knobsOf(g);
+  // The graph's own nodes' knobs and those inside its subgraph instances ("foam/edge.bypass").
+  auto knobs = graphKnobs(g);
   if (knobs.empty()) configError(s, "the graph has no node with a quality knob (`watergraph nodes` lists them)");
   ordered exact = ordered::object();
-  for (const auto& [id, o] : knobs) exact[id][o->name] = o->levels.back();
+  for (const auto& k : knobs) exact[k.node][k.option] = k.levels.back();
   std::vector<Family> families;
-  for (const auto& [id, o] : knobs) {
-    Family f{id + "." + o->name, id, s.camera, g, {}, levelName(o->levels.back())};
-    for (const auto& level : o->levels) {
+  for (const auto& k : knobs) {
+    Family f{k.name(), k.node, s.camera, g, {}, levelName(k.levels.back())};
+    for (const auto& level : k.levels) {
       ordered options = exact;
-      options[id][o->name] = level;
+      options[k.node][k.option] = level;
       f.levels.push_back({levelName(level), options});
     }
     families.push_back(std::move(f));

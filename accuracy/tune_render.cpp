@@ -8,6 +8,7 @@
 #include <time.h>
 
 #include "accuracy/spirv_count.h"
+#include "accuracy/tune_knobs.h"
 #include "codegen/compile.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
@@ -53,15 +54,6 @@ std::string key(const std::optional<TuneConfig>& config) {
 
 }  // namespace
 
-std::vector<TuneKnob> graphKnobs(const Graph& graph) {
-  std::vector<TuneKnob> knobs;
-  for (const auto& n : graph.nodes)
-    if (const NodeSpec* spec = defaultRegistry().find(n.type))
-      for (const auto& o : spec->options)
-        if (!o.levels.empty()) knobs.push_back({n.id, o.name, o.levels});
-  return knobs;
-}
-
 GlTuneMeasurements::GlTuneMeasurements(const Graph& graph, std::vector<TuneKnob> knobs, TuneSweep sweep)
     : graph_(graph), knobs_(std::move(knobs)), sweep_(std::move(sweep)) {
   context_ = rt::EglContext::create(rt::apiFor(sweep_.target));
@@ -100,18 +92,7 @@ GlTuneMeasurements::~GlTuneMeasurements() { cache_.clear(); }  // GL objects bef
 std::string GlTuneMeasurements::renderer() const { return context_->renderer(); }
 
 std::unique_ptr<GlTuneMeasurements::Entry> GlTuneMeasurements::make(const std::optional<TuneConfig>& config) {
-  Graph g = graph_;
-  if (config)
-    for (size_t k = 0; k < knobs_.size(); ++k) {
-      const nlohmann::json& level = knobs_[k].levels[static_cast<size_t>((*config)[k])];
-      for (auto& n : g.nodes) {
-        if (n.id != knobs_[k].node) continue;
-        bool found = false;
-        for (auto& o : n.options)
-          if (o.name == knobs_[k].option) o.value = level, found = true;
-        if (!found) n.options.push_back({knobs_[k].option, level, {}, {}});
-      }
-    }
+  Graph g = config ? withKnobLevels(graph_, knobs_, *config) : graph_;
   Diagnostics diags;
   CompileOptions options;
   options.targets = {sweep_.target, Target::Vk450};

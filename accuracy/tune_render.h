@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "accuracy/tune_knobs.h"
 #include "accuracy/tune_search.h"
 #include "codegen/target.h"
 #include "core/graph.h"
@@ -30,10 +31,6 @@ struct TuneSweep {
   int runs = 5;  // interleaved timed repeats
   Target target = Target::Glsl330;
 };
-
-// The graph file's own quality knobs (nodes whose spec declares levels, `bypass` included),
-// in file order.
-std::vector<TuneKnob> graphKnobs(const Graph& graph);
 
 class GlTuneMeasurements : public TuneMeasurements {
  public:

@@ -102,10 +102,21 @@ int runTune(const TuneArgs& args) {
     for (const auto& d : diags.all()) std::cerr << formatText(d) << "\n";
     return exitCodeFor(diags);
   }
-  std::vector<TuneKnob> knobs = graphKnobs(*graph);
-  if (knobs.empty()) {
+  std::vector<TuneKnob> declared = graphKnobs(*graph);
+  if (declared.empty()) {
     std::cerr << args.graph << ": error: the graph has no quality knob to tune (options whose levels a node declares, "
               << "and `bypass` on nodes that add detail; `watergraph nodes` lists them)\n";
+    return kExitGraphError;
+  }
+  // Levels that compile to the same shaders as the next more exact one stand for nothing
+  // here: tuning them would time identical shaders against each other.
+  std::vector<std::string> unchanged;
+  std::vector<TuneKnob> knobs = distinctKnobLevels(*graph, declared, sweep.target, unchanged);
+  std::string unchangedText;
+  for (const auto& u : unchanged) unchangedText += (unchangedText.empty() ? "" : ", ") + u;
+  if (knobs.empty()) {
+    std::cerr << args.graph << ": error: no quality knob changes this graph's shaders (" << unchangedText
+              << ": every level compiles to the same shaders here)\n";
     return kExitGraphError;
   }
   const bool terminal = ::isatty(STDERR_FILENO);
@@ -127,7 +138,9 @@ int runTune(const TuneArgs& args) {
     for (double t : gl.sweep().times) times += (times.empty() ? "" : ", ") + fixed(t, 1);
     std::cout << "tune " << args.graph << ": " << budget.text() << "; " << gl.viewLabels().size() << " frames ("
               << cameras << " at t = " << times << " s), " << sweep.width << "x" << sweep.height << " RGBA32F, "
-              << args.target << " on " << gl.renderer() << "; " << knobs.size() << (knobs.size() == 1 ? " knob\n\n" : " knobs\n\n");
+              << args.target << " on " << gl.renderer() << "; " << knobs.size() << (knobs.size() == 1 ? " knob" : " knobs")
+              << (unchanged.empty() ? "" : " (not tuned, no level changes the shaders here: " + unchangedText + ")")
+              << "\n\n";
     TuneResult result = tuneSearch(knobs, budget, gl, progress);
     std::cout << tunePathTable(result)
               << "(each step's ms/MP as timed in the round that took it; the configurations below are timed together)\n\n"
@@ -192,7 +205,9 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "tune",
       "The cheapest configuration of a graph's quality knobs within an error budget. The reference is the graph with "
       "every knob (options whose levels a node declares, and `bypass` on nodes that add detail; `watergraph nodes` "
-      "lists them) at its most exact level, rendered into RGBA32F frames over a sweep: every camera (default above, "
+      "lists them; those of nodes inside a subgraph instance are named instance/node.option; levels that compile to "
+      "the same shaders as the next more exact one are left out) at its most exact level, rendered into RGBA32F "
+      "frames over a sweep: every camera (default above, "
       "grazing, topdown, and underwater for graphs with the deferred underwater pass) at every time. From the reference, "
       "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
       "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost; the one with the "

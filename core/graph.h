@@ -74,7 +74,7 @@ struct Parameter {
 struct PresetValue {
   std::string parameter;      // a parameter's value: its name; "" for a node option
   std::vector<double> value;  // componentCount of the parameter's type
-  std::string node;           // a node option's value: the node id,
+  std::string node;           // a node option's value: the node id ("instance/node" inside a subgraph instance),
   std::string option;         // the option's name
   nlohmann::json optionValue; // and the value as written
   SourceRef where;            // the value's position
@@ -124,6 +124,16 @@ struct GraphInterface {
   SourceRef where;                       // the "interface" object
 };
 
+// An option of a node inside a subgraph instance, set from outside the subgraph's file: a
+// preset member "instance/node.option" (nested: "a/b/node.option") once the preset is
+// applied, or a configuration `watergraph tune` tries. Resolve gives it to that node when it
+// inlines the instance, replacing the value written there; the subgraph's file is shared by
+// every instance and stays as written.
+struct InstanceOption {
+  std::string node;  // the qualified id: "instance/node", as the resolved program names it
+  NodeOption option;
+};
+
 struct Graph {
   std::string file;      // path as given, used in diagnostics
   std::string schema;    // optional "$schema", kept for editors
@@ -137,6 +147,7 @@ struct Graph {
   std::vector<Node> nodes;            // file order
   std::vector<GraphOutput> outputs;   // saved in OutputSlot order; may be empty (resolve refuses it)
   SourceRef outputsWhere;             // the "outputs" object, for "connects no outputs"
+  std::vector<InstanceOption> instanceOptions;  // set by applyPreset (never read from or saved to a file)
 
   const Node* findNode(std::string_view id) const;
   const Parameter* findParameter(std::string_view name) const;

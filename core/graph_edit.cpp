@@ -114,7 +114,11 @@ std::string GraphEditor::applyPreset(const std::string& name) {
   Graph next = graph_;
   for (const PresetValue& v : preset->values) {
     if (v.isOption()) {
-      if (!next.findNode(v.node)) return "preset '" + name + "' names no node '" + v.node + "'";
+      // A node inside a subgraph instance ("foam/edge") lies in the instance's file: only the
+      // instance is this graph's; the option goes to Graph::instanceOptions (the preview
+      // applies it; the file keeps it in the preset, the subgraph's file stays as written).
+      std::string node = v.node.substr(0, v.node.find('/'));
+      if (!next.findNode(node)) return "preset '" + name + "' names no node '" + node + "'";
       continue;
     }
     auto p = std::find_if(next.parameters.begin(), next.parameters.end(), [&](const Parameter& q) { return q.name == v.parameter; });

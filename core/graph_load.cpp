@@ -370,8 +370,10 @@ class Loader : public GraphDraftReader {
   }
 
   // A preset member "node.option": the node is one of the graph's (an identifier before
-  // the first '.', an identifier after it); the option and its value are the node type's
-  // business, checked by resolve as for an option written on the node.
+  // the first '.', an identifier after it), or a node inside one of its subgraph instances
+  // ("instance/node.option", nested "a/b/node.option": identifiers joined by '/', the first
+  // a node of this graph); the option and its value, and the nodes inside the instance, are
+  // checked by resolve as for an option written on the node.
   struct NodeIdsOfFile {
     bool complete = false;  // false when the file has more nodes than the limit (reported)
     std::unordered_set<std::string_view> ids;
@@ -385,17 +387,28 @@ class Loader : public GraphDraftReader {
     v.option = key.substr(dot + 1);
     v.where = ref(value.at);
     v.keyWhere = ref(value.key);
-    if (!isIdentifier(v.node) || !isIdentifier(v.option)) {
+    bool pathValid = true;
+    std::string first;  // the node of this graph: the whole path, or the instance it lies in
+    for (size_t start = 0;;) {
+      size_t slash = v.node.find('/', start);
+      std::string segment = v.node.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+      pathValid = pathValid && isIdentifier(segment);
+      if (start == 0) first = segment;
+      if (slash == std::string::npos) break;
+      start = slash + 1;
+    }
+    if (dot == std::string::npos || !pathValid || !isIdentifier(v.option)) {
       diags_.error(DiagCode::InvalidIdentifier, v.keyWhere,
                    "preset '" + preset + "' sets '" + key +
-                       "': a node option is written \"node.option\", each an identifier " + kIdentifierRule);
+                       "': a node option is written \"node.option\" (inside a subgraph instance "
+                       "\"instance/node.option\"), each an identifier " + kIdentifierRule);
       return std::nullopt;
     }
-    if (nodeIds.complete && !nodeIds.ids.count(v.node)) {
+    if (nodeIds.complete && !nodeIds.ids.count(first)) {
       if (!nodeIds.suggester) nodeIds.suggester.emplace(std::vector<std::string>(nodeIds.ids.begin(), nodeIds.ids.end()));
       diags_.error(DiagCode::DanglingReference, v.keyWhere,
-                   "preset '" + preset + "' sets an option of node '" + v.node + "', which the graph does not have" +
-                       nodeIds.suggester->didYouMean(v.node));
+                   "preset '" + preset + "' sets an option of node '" + first + "', which the graph does not have" +
+                       nodeIds.suggester->didYouMean(first));
       return std::nullopt;
     }
     v.optionValue = value.value;  // a preset's members are held as written (a Record)

@@ -39,6 +39,18 @@ void writePresetInto(Graph& graph, const Preset& preset) {
       if (auto it = parameters.find(v.parameter); it != parameters.end()) it->second->defaultValue = v.value;
       continue;
     }
+    if (v.node.find('/') != std::string::npos) {  // a node inside a subgraph instance: resolve applies it
+      auto& inner = graph.instanceOptions;
+      auto written = std::find_if(inner.begin(), inner.end(), [&](const InstanceOption& o) {
+        return o.node == v.node && o.option.name == v.option;
+      });
+      InstanceOption option{v.node, {v.option, v.optionValue, v.where, v.keyWhere}};
+      if (written == inner.end())
+        inner.push_back(std::move(option));
+      else
+        *written = std::move(option);
+      continue;
+    }
     auto it = nodes.find(v.node);
     if (it == nodes.end()) continue;
     std::vector<NodeOption>& options = it->second->options;

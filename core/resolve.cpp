@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <map>
 #include <memory>
 #include <optional>
@@ -61,6 +62,10 @@ struct SharedState {
   // may import one file under two names), made on its first instance.
   std::map<std::pair<const Graph*, std::string>, std::unique_ptr<NodeSpec>> instanceSpecs;
   NodeOutputValues* nodeOutputs = nullptr;
+  // The top-level graph's options for nodes inside instances, and the subgraphs copied to
+  // carry them (a deque: the resolvers hold references to them).
+  const std::vector<InstanceOption>* instanceOptions = nullptr;
+  std::deque<Graph> instanceGraphs;
   // A node type's options when a node declares none: completed and parsed once per type
   // (most nodes of a large graph are math nodes that declare no options).
   std::unordered_map<const NodeSpec*, std::pair<nlohmann::json, std::shared_ptr<const ParsedOptions>>> defaultOptions;
@@ -98,6 +103,7 @@ class Resolver {
       program_.importedFiles.push_back(fs::path(files[k]).lexically_normal().lexically_relative(top.lexically_normal()).generic_string());
     }
     shared_.nodeOutputs = nodeOutputs;
+    shared_.instanceOptions = &graph_.instanceOptions;
     collectParameters();
     resolveBody();
     if (diags_.errorCount() > errorsBefore) return std::nullopt;
@@ -175,6 +181,10 @@ class Resolver {
     for (const Preset& preset : graph_.presets)
       for (const PresetValue& v : preset.values) {
         if (!v.isOption()) continue;
+        if (v.node.find('/') != std::string::npos) {
+          checkInstancePresetOption(preset, v);
+          continue;
+        }
         auto it = nodeIndex_.find(v.node);
         if (it == nodeIndex_.end()) continue;  // reported by the loader
         const Node& node = graph_.nodes[static_cast<size_t>(it->second)];
@@ -197,6 +207,64 @@ class Resolver {
           diags_.error(DiagCode::InvalidOption, v.where, label + ": option '" + v.option + "' " + why, node.id,
                        optionLabel(v.option));
       }
+  }
+
+  // A preset member "instance/node.option": each step of the path is a node of the graph
+  // before it (the first of this graph; the others of the subgraph the step before
+  // instances), the last a registered node type that has the option, and the value one it
+  // accepts. A value applyPreset has handed to the instance is checked when the instance is
+  // inlined, as an option written on that node.
+  void checkInstancePresetOption(const Preset& preset, const PresetValue& v) {
+    std::string label = "preset '" + preset.name + "'";
+    const Graph* g = &graph_;
+    const Node* node = nullptr;
+    std::string path;
+    for (size_t start = 0;;) {
+      size_t slash = v.node.find('/', start);
+      std::string id = v.node.substr(start, slash == std::string::npos ? std::string::npos : slash - start);
+      node = g->findNode(id);
+      path += (path.empty() ? "" : "/") + id;
+      if (!node) {
+        if (g != &graph_)  // the first step is the loader's to report
+          diags_.error(DiagCode::DanglingReference, v.keyWhere,
+                       label + " sets an option of node '" + v.node + "', but '" + g->name + "' has no node '" + id + "'");
+        return;
+      }
+      if (slash == std::string::npos) break;
+      GraphNodeType type = nodeTypeOf(*g, registry_, node->type);
+      if (!type.import || !type.import->graph) {
+        if (type.import) return;  // its import did not load: reported
+        diags_.error(DiagCode::DanglingReference, v.keyWhere,
+                     label + " sets an option of node '" + v.node + "', but '" + path + "' is a '" + node->type +
+                         "' node, not a subgraph instance");
+        return;
+      }
+      g = type.import->graph.get();
+      start = slash + 1;
+    }
+    const NodeSpec* spec = registry_.find(node->type);
+    if (!spec) {
+      if (nodeTypeOf(*g, registry_, node->type).import)
+        diags_.error(DiagCode::UnknownOption, v.keyWhere,
+                     label + ": '" + v.node + "' is a subgraph instance, which takes no options");
+      return;  // an unknown type, reported where the subgraph is checked
+    }
+    bool applied = std::any_of(graph_.instanceOptions.begin(), graph_.instanceOptions.end(),
+                               [&](const InstanceOption& o) { return o.node == v.node && o.option.where == v.where; });
+    int oi = spec->optionIndex(v.option);
+    if (oi < 0) {
+      diags_.error(DiagCode::UnknownOption, v.keyWhere,
+                   label + ": node type '" + spec->type + "' has no option '" + v.option + "'" +
+                       didYouMean(v.option, namesOf(spec->options)),
+                   v.node, optionLabel(v.option));
+      return;
+    }
+    if (applied) return;
+    std::string directory = std::filesystem::path(g->file).parent_path().string();
+    std::string why = checkOption(spec->options[static_cast<size_t>(oi)], v.optionValue, directory, nullptr);
+    if (!why.empty())
+      diags_.error(DiagCode::InvalidOption, v.where, label + ": option '" + v.option + "' " + why, v.node,
+                   optionLabel(v.option));
   }
 
   // An import's name becomes a node type here, so it may not be one already.
@@ -684,13 +752,36 @@ class Resolver {
     if (!inRange) return;
     size_t firstDiag = diags_.all().size();
     size_t firstOp = program_.ops.size();
-    bool ok = Resolver(sub, registry_, diags_, program_, shared_, scope).runInstance();
+    bool ok = Resolver(withInstanceOptions(sub, scope.idPrefix), registry_, diags_, program_, shared_, scope).runInstance();
     diags_.addLocatedNoteFrom(firstDiag, here);
     if (!ok) {
       program_.ops.resize(firstOp);
       return;
     }
     expandedOutputs_[static_cast<size_t>(ni)] = std::move(scope.outputs);
+  }
+
+  // The subgraph an instance inlines: `sub` as written, or, where options of its own nodes
+  // are set from outside (Graph::instanceOptions of the top-level graph, qualified by
+  // `prefix`), a copy with them in place, kept for the program's lifetime of this resolve.
+  const Graph& withInstanceOptions(const Graph& sub, const std::string& prefix) {
+    if (!shared_.instanceOptions) return sub;
+    Graph* copy = nullptr;
+    for (const InstanceOption& o : *shared_.instanceOptions) {
+      if (o.node.size() <= prefix.size() || o.node.compare(0, prefix.size(), prefix) != 0) continue;
+      std::string id = o.node.substr(prefix.size());
+      if (id.find('/') != std::string::npos) continue;  // deeper: the nested instance's business
+      if (!copy) copy = &shared_.instanceGraphs.emplace_back(sub);
+      for (auto& n : copy->nodes) {
+        if (n.id != id) continue;
+        auto written = std::find_if(n.options.begin(), n.options.end(), [&](const NodeOption& w) { return w.name == o.option.name; });
+        if (written == n.options.end())
+          n.options.push_back(o.option);
+        else
+          *written = o.option;
+      }
+    }
+    return copy ? *copy : sub;
   }
 
   static bool fitsRange(const Value& v, const Parameter& p) {

@@ -147,7 +147,14 @@ std::vector<std::shared_ptr<const ParsedOptions>> gerstnerRoundedIntermediates(c
 namespace {
 
 // The `waves` option, parsed once into the waves the emitter and the reference iterate.
-std::vector<GerstnerWave> parseGerstnerOptions(const OptionReader& o) { return parseGerstnerWaves(o.json("waves")); }
+// Only the first `max_waves` of the list are summed (the quality knob: the list is ordered as
+// the user wrote it, so the waves kept are the ones written first).
+std::vector<GerstnerWave> parseGerstnerOptions(const OptionReader& o) {
+  std::vector<GerstnerWave> ws = parseGerstnerWaves(o.json("waves"));
+  size_t keep = static_cast<size_t>(o.integer("max_waves"));
+  if (ws.size() > keep) ws.resize(keep);
+  return ws;
+}
 
 }  // namespace
 
@@ -189,7 +196,11 @@ NodeSpec gerstnerWavesNode() {
       validateGerstnerWaves,
       "1 to 16 waves, each {\"direction\": [x, z] (normalised; not zero), \"steepness\": Q in [0, 1], "
       "\"wavelength\": metres > 0, \"amplitude\": metres (optional, default Q/k as in the stylized water shader), \"phase\": radians "
-      "(optional)}. The sum of Q k A over the waves must not exceed 1, or the surface folds over.")};
+      "(optional)}. The sum of Q k A over the waves must not exceed 1, or the surface folds over."),
+               ports::knob(ports::integer("max_waves", kMaxGerstnerWaves, 1, kMaxGerstnerWaves,
+                                          "sum only the first this many waves of the list, in the order written "
+                                          "(list the waves that matter most first); the default keeps every wave"),
+                           {1, 2, 3, 4, 6, 8, 12, kMaxGerstnerWaves})};
   s.isSource = true;
   s.parseOptions = optionParser(parseGerstnerOptions);
   s.emit = [](EmitContext& ctx) {

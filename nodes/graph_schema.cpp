@@ -14,8 +14,10 @@ namespace {
 using OJ = nlohmann::ordered_json;
 
 constexpr const char* kIdentifierPattern = "^[A-Za-z_][A-Za-z0-9_]*$";
-// A preset member that sets a node's option: "node.option".
-constexpr const char* kPresetOptionPattern = "^[A-Za-z_][A-Za-z0-9_]*\\.[A-Za-z_][A-Za-z0-9_]*$";
+// A preset member that sets a node's option: "node.option", or inside a subgraph instance
+// "instance/node.option" (nested instances: "a/b/node.option").
+constexpr const char* kPresetOptionPattern =
+    "^[A-Za-z_][A-Za-z0-9_]*(/[A-Za-z_][A-Za-z0-9_]*)*\\.[A-Za-z_][A-Za-z0-9_]*$";
 constexpr const char* kNodeOutputPattern = "^[A-Za-z_][A-Za-z0-9_]*\\.[A-Za-z_][A-Za-z0-9_]*$";
 constexpr const char* kParameterPattern = "^\\$[A-Za-z_][A-Za-z0-9_]*$";
 
@@ -307,8 +309,9 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
                       {"type", "object"},
                       {"propertyNames", defRef("identifier")},
                       {"additionalProperties", defRef("parameter")}}},
-      {"presets", {{"description", "preset name -> {parameter: value, \"node.option\": value}: chosen with --preset, "
-                                   "its values become the parameter defaults and the nodes' options"},
+      {"presets", {{"description", "preset name -> {parameter: value, \"node.option\": value, "
+                                   "\"instance/node.option\": value}: chosen with --preset, its values become the parameter "
+                                   "defaults and the nodes' options"},
                    {"type", "object"},
                    {"propertyNames", defRef("identifier")},
                    {"additionalProperties",

@@ -45,7 +45,12 @@ NodeSpec vertexOutputNode() {
                     "subdivide the mesh near the camera (glsl330, vk450; es300 draws the mesh as it is)"),
       ports::number("min_distance", 5, 0, 1e6, "distance (m) within which the full factor applies"),
       ports::number("max_distance", 50, 0, 1e6, "distance (m) at which the factor has fallen to 1%"),
-      ports::number("factor", 16, 1, 64, "the largest tessellation level"),
+      // A quality knob: a lower factor generates fewer vertices (the vertex-stage nodes run
+      // once per generated vertex) and follows the displacement more coarsely.
+      ports::knob(ports::number("factor", 16, 1, 64,
+                                "the largest tessellation level (lower: fewer vertices, the displacement followed "
+                                "more coarsely; no effect without tessellation)"),
+                  {1, 2, 4, 8, 16}),
   };
   s.parseOptions = optionParser(parseVertexOutputOptions);
   s.tessellation = [](const ParsedOptions& o) { return o.as<std::optional<TessellationSettings>>(); };

@@ -98,5 +98,52 @@ TEST(TuneCli, WritesAPresetThatCompilesAndIsCanonical) {
   std::filesystem::remove_all(dir);
 }
 
+// A knob inside a subgraph instance is tuned like the graph's own, named by the instance
+// ("v/cv.bypass"), and the preset written sets it: compiled with it, the variation is gone.
+TEST(TuneCli, TunesAndWritesAKnobInsideASubgraphInstance) {
+  std::string dir = test::makeTempDir("wg_tune_");
+  std::filesystem::create_directories(dir + "/lib");
+  test::writeFile(dir + "/lib/vary.json", R"({"version": 1, "name": "vary",
+    "interface": {"outputs": {"color": {"type": "vec3", "source": "cv.color"}}},
+    "parameters": {"color": {"type": "vec3", "default": [0, 0, 0], "min": 0, "max": 1}},
+    "nodes": [{"id": "cv", "type": "color_variation",
+               "inputs": {"color": "$color", "slope_strength": 0.001, "noise_strength": 0.001, "trough": 0}}]})");
+  test::writeFile(dir + "/g.json", R"({"version": 1, "name": "nested", "imports": {"vary": "lib/vary.json"}, "nodes": [
+    {"id": "f", "type": "fresnel", "options": {"model": "schlick"}},
+    {"id": "tint", "type": "mix", "inputs": {"a": [0, 0.15, 0.25], "b": [0.6, 0.75, 0.9], "t": "f.reflectance"}},
+    {"id": "v", "type": "vary", "inputs": {"color": "tint.out"}}],
+    "outputs": {"fragment": {"color": "v.color"}}})");
+  std::string g = test::shellQuote(dir + "/g.json");
+  CmdResult r = wg("tune " + g + " --min-psnr 60 --write-preset fast" + kSmall);
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("chosen: f.model=exact, v/cv.bypass=true\n"), std::string::npos) << r.out;
+  auto written = nlohmann::ordered_json::parse(test::readFile(dir + "/g.json"));
+  EXPECT_EQ(written["presets"].dump(), R"({"fast":{"f.model":"exact","v/cv.bypass":true}})");
+  CmdResult plain = wg("compile " + g + " -o " + test::shellQuote(dir + "/plain") + " --target glsl330");
+  CmdResult fast = wg("compile " + g + " -o " + test::shellQuote(dir + "/fast") + " --target glsl330 --preset fast");
+  ASSERT_EQ(plain.exit, 0) << plain.err;
+  ASSERT_EQ(fast.exit, 0) << fast.err;
+  EXPECT_NE(test::readFile(dir + "/plain/g.glsl330.frag").find("wg_color_variation"), std::string::npos);
+  EXPECT_EQ(test::readFile(dir + "/fast/g.glsl330.frag").find("wg_color_variation"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// The wave count: the third wave is a 10 micrometre ripple, the second a real wave. The
+// tuner keeps the first two (max_waves 2, the level below the whole list) and no fewer.
+TEST(TuneCli, DropsTheWavesThatStayWithinTheBudget) {
+  std::string dir = test::makeTempDir("wg_tune_");
+  test::writeFile(dir + "/w.json", R"({"version": 1, "name": "w", "nodes": [
+    {"id": "waves", "type": "gerstner_waves", "options": {"waves": [
+      {"direction": [1, 0.2], "steepness": 0.4, "wavelength": 8},
+      {"direction": [0.3, 1], "steepness": 0.3, "wavelength": 5},
+      {"direction": [-0.7, 0.6], "steepness": 0.2, "wavelength": 3, "amplitude": 0.00001}]}}],
+    "outputs": {"fragment": {"color": "waves.normal"}}})");
+  CmdResult r = wg("tune " + test::shellQuote(dir + "/w.json") + " --min-psnr 60" + kSmall);
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  EXPECT_NE(r.out.find("chosen: waves.max_waves=2\n"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("  waves.max_waves=1: fails the budget"), std::string::npos) << r.out;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace wg

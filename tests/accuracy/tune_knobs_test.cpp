@@ -1,0 +1,138 @@
+// The knobs tune searches (accuracy/tune_knobs.h): those of the graph's own nodes and of the
+// nodes inside its subgraph instances ("a/fresnel.model"); only the levels that change what
+// the graph compiles to (a wave count above the list's length, a tessellation factor on an
+// untessellated surface stand for nothing); a configuration applied changes the shaders.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "accuracy/tune_knobs.h"
+#include "codegen/compile.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "test_support.h"
+
+namespace wg::accuracy {
+namespace {
+
+// Three Gerstner waves on a surface tessellated by distance (or not).
+std::string wavesGraph(const std::string& tessellation) {
+  return R"({"version": 1, "name": "waves", "nodes": [
+    {"id": "waves", "type": "gerstner_waves", "options": {"waves": [
+      {"direction": [1, 0.2], "steepness": 0.4, "wavelength": 8},
+      {"direction": [0.3, 1], "steepness": 0.3, "wavelength": 5},
+      {"direction": [-0.7, 0.6], "steepness": 0.2, "wavelength": 3}]}},
+    {"id": "surface", "type": "vertex_output", "options": {"tessellation": ")" + tessellation + R"("},
+     "inputs": {"position": "waves.position", "normal": "waves.normal"}},
+    {"id": "n", "type": "normal"}],
+    "outputs": {"vertex": {"position": "surface.position", "normal": "surface.normal"},
+                "fragment": {"color": "n.out"}}})";
+}
+
+Graph parse(const std::string& text) {
+  Diagnostics d;
+  auto g = parseGraph(text, "waves.json", d);
+  EXPECT_TRUE(g) << (d.all().empty() ? "" : formatText(d.all().front()));
+  return *g;
+}
+
+const TuneKnob* find(const std::vector<TuneKnob>& knobs, const std::string& name) {
+  auto it = std::find_if(knobs.begin(), knobs.end(), [&](const TuneKnob& k) { return k.name() == name; });
+  return it == knobs.end() ? nullptr : &*it;
+}
+
+std::string fileOf(const Graph& g, const std::string& suffix) {
+  Diagnostics d;
+  CompileOptions o;
+  o.targets = {Target::Glsl330};
+  o.validate = false;
+  auto r = compileGraph(g, defaultRegistry(), o, d);
+  EXPECT_TRUE(r) << (d.all().empty() ? "" : formatText(d.all().front()));
+  for (const auto& f : r->files)
+    if (f.name.ends_with(suffix)) return f.contents;
+  return "";
+}
+
+// Calls of the GLSL library function `fn` in `text`, not counting its definition (the
+// line "type fn(...").
+size_t calls(const std::string& text, const std::string& fn) {
+  size_t n = 0;
+  for (size_t at = text.find(fn + "("); at != std::string::npos; at = text.find(fn + "(", at + 1)) {
+    size_t lineStart = text.rfind('\n', at);
+    lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
+    std::string before = text.substr(lineStart, at - lineStart);
+    bool definition = !before.empty() && before.back() == ' ' && before.find_first_of(" =(,") == before.size() - 1;
+    if (!definition) ++n;
+  }
+  return n;
+}
+
+TEST(TuneKnobs, WaveCountAndTessellationFactorAreKnobsWithTheirDistinctLevels) {
+  Graph g = parse(wavesGraph("distance"));
+  std::vector<TuneKnob> declared = graphKnobs(g);
+  ASSERT_TRUE(find(declared, "waves.max_waves"));
+  ASSERT_TRUE(find(declared, "surface.factor"));
+  std::vector<std::string> unchanged;
+  std::vector<TuneKnob> knobs = distinctKnobLevels(g, declared, Target::Glsl330, unchanged);
+  EXPECT_TRUE(unchanged.empty());
+  // Three waves: 3, 4, ... 12 waves are the whole list, as the most exact level (16) is.
+  const TuneKnob* waves = find(knobs, "waves.max_waves");
+  ASSERT_TRUE(waves);
+  EXPECT_EQ(nlohmann::json(waves->levels).dump(), "[1,2,16]");
+  const TuneKnob* factor = find(knobs, "surface.factor");
+  ASSERT_TRUE(factor);
+  EXPECT_EQ(nlohmann::json(factor->levels).dump(), "[1,2,4,8,16]");
+
+  // A level changes the shaders: the first wave only; a factor of 4 in the control stage.
+  TuneConfig exact(knobs.size());
+  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
+  TuneConfig cheap = exact;
+  cheap[static_cast<size_t>(waves - knobs.data())] = 0;
+  cheap[static_cast<size_t>(factor - knobs.data())] = 2;
+  Graph exactGraph = withKnobLevels(g, knobs, exact), cheapGraph = withKnobLevels(g, knobs, cheap);
+  EXPECT_EQ(calls(fileOf(exactGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 3u) << fileOf(exactGraph, ".glsl330.tese");
+  EXPECT_EQ(calls(fileOf(cheapGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 1u);
+  EXPECT_NE(fileOf(exactGraph, ".glsl330.tesc").find(", 16.0);"), std::string::npos) << fileOf(exactGraph, ".glsl330.tesc");
+  EXPECT_NE(fileOf(cheapGraph, ".glsl330.tesc").find(", 4.0);"), std::string::npos) << fileOf(cheapGraph, ".glsl330.tesc");
+}
+
+TEST(TuneKnobs, AKnobNoLevelOfWhichChangesTheShadersIsNotTuned) {
+  Graph g = parse(wavesGraph("none"));
+  std::vector<std::string> unchanged;
+  std::vector<TuneKnob> knobs = distinctKnobLevels(g, graphKnobs(g), Target::Glsl330, unchanged);
+  EXPECT_EQ(unchanged, std::vector<std::string>{"surface.factor"});
+  EXPECT_FALSE(find(knobs, "surface.factor"));
+  EXPECT_TRUE(find(knobs, "waves.max_waves"));
+}
+
+TEST(TuneKnobs, KnobsInsideSubgraphInstancesAreNamedByTheInstance) {
+  std::string dir = test::makeTempDir("wg_tune_knobs");
+  std::filesystem::create_directories(dir + "/lib");
+  test::writeFile(dir + "/lib/blend.json", R"({"version": 1, "name": "blend",
+    "interface": {"outputs": {"color": {"type": "vec3", "source": "m.out"}}},
+    "nodes": [{"id": "f", "type": "fresnel"},
+              {"id": "m", "type": "mix", "inputs": {"a": [0, 0.2, 0.3], "b": [0.6, 0.7, 0.9], "t": "f.reflectance"}}]})");
+  test::writeFile(dir + "/g.json", R"({"version": 1, "name": "g", "imports": {"blend": "lib/blend.json"},
+    "nodes": [{"id": "own", "type": "fresnel"}, {"id": "near", "type": "blend"},
+              {"id": "sum", "type": "add", "inputs": {"a": "near.color", "b": "own.reflectance"}}],
+    "outputs": {"fragment": {"color": "sum.out"}}})");
+  Diagnostics d;
+  auto g = loadGraphFile(dir + "/g.json", d);
+  ASSERT_TRUE(g);
+  std::vector<TuneKnob> knobs = graphKnobs(*g);
+  ASSERT_EQ(knobs.size(), 2u);
+  EXPECT_EQ(knobs[0].name(), "own.model");
+  EXPECT_EQ(knobs[1].name(), "near/f.model");
+  // Applied: the instance's Fresnel takes Schlick (power < schlick < exact), the graph's own
+  // stays exact.
+  TuneConfig config{static_cast<int>(knobs[0].levels.size()) - 1, 1};
+  std::string frag = fileOf(withKnobLevels(*g, knobs, config), ".glsl330.frag");
+  EXPECT_EQ(calls(frag, "wg_fresnel_exact"), 1u) << frag;
+  EXPECT_EQ(calls(frag, "wg_fresnel_schlick"), 1u) << frag;
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wg::accuracy
