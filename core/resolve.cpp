@@ -340,11 +340,11 @@ class Resolver {
 
   // Kahn's algorithm over node references: iterative, so a 100,000-node chain needs no
   // deep recursion. Nodes left over lie on or behind a cycle; each cycle is named.
+  // The edges live in flat arrays (inputNode_ for dependencies, userBase/users for the
+  // reverse), not a vector per node: two allocations per node on a large graph otherwise.
   std::vector<int> topologicalOrder() {
     size_t n = graph_.nodes.size();
-    std::vector<std::vector<int>> users(n);
     std::vector<int> pending(n, 0);
-    std::vector<std::vector<int>> deps(n);
     inputBase_.assign(n + 1, 0);
     for (size_t i = 0; i < n; ++i) inputBase_[i + 1] = inputBase_[i] + graph_.nodes[i].inputs.size();
     inputNode_.assign(inputBase_[n], -1);
@@ -375,11 +375,20 @@ class Resolver {
                        inputLabel(in.port));
           continue;
         }
-        deps[i].push_back(dep);
-        users[static_cast<size_t>(dep)].push_back(static_cast<int>(i));
         ++pending[i];
       }
     }
+    // Each node's users, in the order of (user, input): counted, then placed.
+    std::vector<size_t> userBase(n + 1, 0);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t e = inputBase_[i]; e < inputBase_[i + 1]; ++e)
+        if (int d = inputNode_[e]; d >= 0 && static_cast<size_t>(d) != i) ++userBase[static_cast<size_t>(d) + 1];
+    for (size_t i = 0; i < n; ++i) userBase[i + 1] += userBase[i];
+    std::vector<int> users(userBase[n]);
+    std::vector<size_t> fill(userBase.begin(), userBase.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t e = inputBase_[i]; e < inputBase_[i + 1]; ++e)
+        if (int d = inputNode_[e]; d >= 0 && static_cast<size_t>(d) != i) users[fill[static_cast<size_t>(d)]++] = static_cast<int>(i);
     std::vector<int> order;
     order.reserve(n);
     std::vector<int> ready;
@@ -392,10 +401,10 @@ class Resolver {
       ready.pop_back();
       order.push_back(i);
       done[static_cast<size_t>(i)] = true;
-      for (int u : users[static_cast<size_t>(i)])
-        if (--pending[static_cast<size_t>(u)] == 0) ready.push_back(u);
+      for (size_t e = userBase[static_cast<size_t>(i)]; e < userBase[static_cast<size_t>(i) + 1]; ++e)
+        if (--pending[static_cast<size_t>(users[e])] == 0) ready.push_back(users[e]);
     }
-    if (order.size() < n) reportCycles(deps, done);
+    if (order.size() < n) reportCycles(done);
     return order;
   }
 
@@ -404,7 +413,8 @@ class Resolver {
   // a new cycle (reported); one that reaches a node of an earlier walk leads into a cycle
   // already reported. Each node is walked once, so disjoint cycles are each named in
   // linear time.
-  void reportCycles(const std::vector<std::vector<int>>& deps, const std::vector<bool>& done) {
+  // A node's dependencies are its inputs' nodes (inputNode_), a reference to itself aside.
+  void reportCycles(const std::vector<bool>& done) {
     std::vector<size_t> walkOf(done.size(), 0);  // 0: not walked; else the walk's number
     std::vector<size_t> placeInWalk(done.size(), 0);
     size_t walkNumber = 0;
@@ -419,8 +429,8 @@ class Resolver {
         placeInWalk[static_cast<size_t>(cur)] = walk.size();
         walk.push_back(cur);
         int next = -1;
-        for (int d : deps[static_cast<size_t>(cur)])
-          if (!done[static_cast<size_t>(d)]) {
+        for (size_t e = inputBase_[static_cast<size_t>(cur)]; e < inputBase_[static_cast<size_t>(cur) + 1]; ++e)
+          if (int d = inputNode_[e]; d >= 0 && d != cur && !done[static_cast<size_t>(d)]) {
             next = d;
             break;
           }
