@@ -15,6 +15,7 @@
 #include "core/expand.h"
 #include "core/graph_imports.h"
 #include "core/graph_node_type.h"
+#include "core/id_index.h"
 #include "core/json_string_columns.h"
 #include "core/number_format.h"
 #include "core/node_options.h"
@@ -158,9 +159,9 @@ class Resolver {
     nodeIndex_.reserve(graph_.nodes.size());
     for (size_t i = 0; i < graph_.nodes.size(); ++i) {
       const Node& n = graph_.nodes[i];
-      auto [it, inserted] = nodeIndex_.emplace(n.id, static_cast<int>(i));
+      auto [firstIndex, inserted] = nodeIndex_.emplace(n.id, static_cast<int>(i));
       if (!inserted) {
-        const Node& first = graph_.nodes[static_cast<size_t>(it->second)];
+        const Node& first = graph_.nodes[static_cast<size_t>(firstIndex)];
         auto& d = diags_.error(DiagCode::DuplicateNodeId, n.idWhere, "duplicate node id '" + n.id + "'", n.id);
         d.notes.push_back("first defined at " + std::to_string(first.idWhere.line) + ":" +
                           std::to_string(first.idWhere.col));
@@ -175,10 +176,10 @@ class Resolver {
     for (const Preset& preset : graph_.presets)
       for (const PresetValue& v : preset.values) {
         if (!v.isOption()) continue;
-        auto it = nodeIndex_.find(v.node);
-        if (it == nodeIndex_.end()) continue;  // reported by the loader
-        const Node& node = graph_.nodes[static_cast<size_t>(it->second)];
-        const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
+        int ni = nodeIndex_.find(v.node);
+        if (ni < 0) continue;  // reported by the loader
+        const Node& node = graph_.nodes[static_cast<size_t>(ni)];
+        const NodeSpec* spec = specs_[static_cast<size_t>(ni)];
         if (!spec) continue;  // an unknown type, reported
         bool applied = std::any_of(node.options.begin(), node.options.end(),
                                    [&](const NodeOption& o) { return o.name == v.option && o.where == v.where; });
@@ -313,8 +314,8 @@ class Resolver {
   // `label()` makes the diagnostic's label, only when there is one to report.
   template <typename Label>
   int referencedNode(const InputSource& s, const std::string& user, const Label& label) {
-    auto it = nodeIndex_.find(s.node);
-    if (it == nodeIndex_.end()) {
+    int found = nodeIndex_.find(s.node);
+    if (found < 0) {
       if (!nodeIds_) {  // indexed once, on the first dangling reference
         std::vector<std::string> ids;
         for (const auto& n : graph_.nodes) ids.push_back(n.id);
@@ -324,9 +325,9 @@ class Resolver {
                    "no node with id '" + s.node + "'" + nodeIds_->didYouMean(s.node), user, label());
       return -1;
     }
-    const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
-    if (spec && portIndex(outputsOf(static_cast<size_t>(it->second)), s.port) < 0) {
-      std::vector<std::string> names = namesOf(outputsOf(static_cast<size_t>(it->second)));
+    const NodeSpec* spec = specs_[static_cast<size_t>(found)];
+    if (spec && portIndex(outputsOf(static_cast<size_t>(found)), s.port) < 0) {
+      std::vector<std::string> names = namesOf(outputsOf(static_cast<size_t>(found)));
       std::string outs;
       for (const auto& name : names) outs += (outs.empty() ? "" : ", ") + name;
       diags_.error(DiagCode::UnknownOutputPort, s.where,
@@ -335,7 +336,7 @@ class Resolver {
                    user, label());
       return -1;
     }
-    return it->second;
+    return found;
   }
 
   // Kahn's algorithm over node references: iterative, so a 100,000-node chain needs no
@@ -469,9 +470,8 @@ class Resolver {
       }
       case InputSource::Kind::NodeOutput: {
         if (node < 0) {
-          auto it = nodeIndex_.find(s.node);
-          if (it == nodeIndex_.end()) return std::nullopt;
-          node = it->second;
+          node = nodeIndex_.find(s.node);
+          if (node < 0) return std::nullopt;
         }
         if (const auto& values = expandedOutputs_[static_cast<size_t>(node)]; !values.empty()) {
           int port = portIndex(outputsOf(static_cast<size_t>(node)), s.port);
@@ -879,7 +879,7 @@ class Resolver {
   std::vector<const Import*> instanceOf_;  // by node index: the import it instances, or null
   // Keyed by views of the graph's own strings (the graph outlives the resolver): a 10,000-node
   // graph would otherwise copy every id once more.
-  std::unordered_map<std::string_view, int> nodeIndex_;
+  IdIndex nodeIndex_;
   std::unordered_map<std::string_view, ValueRef> paramValue_;  // what `$name` reads
   std::optional<NameSuggester> nodeIds_, parameterNames_;  // made on the first unknown name
   std::vector<int> opOfNode_;  // by node index: its op, or -1
