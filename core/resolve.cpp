@@ -16,6 +16,7 @@
 #include "core/expand.h"
 #include "core/graph_imports.h"
 #include "core/graph_node_type.h"
+#include "core/id_index.h"
 #include "core/json_string_columns.h"
 #include "core/number_format.h"
 #include "core/node_options.h"
@@ -164,9 +165,9 @@ class Resolver {
     nodeIndex_.reserve(graph_.nodes.size());
     for (size_t i = 0; i < graph_.nodes.size(); ++i) {
       const Node& n = graph_.nodes[i];
-      auto [it, inserted] = nodeIndex_.emplace(n.id, static_cast<int>(i));
+      auto [firstIndex, inserted] = nodeIndex_.emplace(n.id, static_cast<int>(i));
       if (!inserted) {
-        const Node& first = graph_.nodes[static_cast<size_t>(it->second)];
+        const Node& first = graph_.nodes[static_cast<size_t>(firstIndex)];
         auto& d = diags_.error(DiagCode::DuplicateNodeId, n.idWhere, "duplicate node id '" + n.id + "'", n.id);
         d.notes.push_back("first defined at " + std::to_string(first.idWhere.line) + ":" +
                           std::to_string(first.idWhere.col));
@@ -185,10 +186,10 @@ class Resolver {
           checkInstancePresetOption(preset, v);
           continue;
         }
-        auto it = nodeIndex_.find(v.node);
-        if (it == nodeIndex_.end()) continue;  // reported by the loader
-        const Node& node = graph_.nodes[static_cast<size_t>(it->second)];
-        const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
+        int ni = nodeIndex_.find(v.node);
+        if (ni < 0) continue;  // reported by the loader
+        const Node& node = graph_.nodes[static_cast<size_t>(ni)];
+        const NodeSpec* spec = specs_[static_cast<size_t>(ni)];
         if (!spec) continue;  // an unknown type, reported
         bool applied = std::any_of(node.options.begin(), node.options.end(),
                                    [&](const NodeOption& o) { return o.name == v.option && o.where == v.where; });
@@ -381,8 +382,8 @@ class Resolver {
   // `label()` makes the diagnostic's label, only when there is one to report.
   template <typename Label>
   int referencedNode(const InputSource& s, const std::string& user, const Label& label) {
-    auto it = nodeIndex_.find(s.node);
-    if (it == nodeIndex_.end()) {
+    int found = nodeIndex_.find(s.node);
+    if (found < 0) {
       if (!nodeIds_) {  // indexed once, on the first dangling reference
         std::vector<std::string> ids;
         for (const auto& n : graph_.nodes) ids.push_back(n.id);
@@ -392,9 +393,9 @@ class Resolver {
                    "no node with id '" + s.node + "'" + nodeIds_->didYouMean(s.node), user, label());
       return -1;
     }
-    const NodeSpec* spec = specs_[static_cast<size_t>(it->second)];
-    if (spec && portIndex(outputsOf(static_cast<size_t>(it->second)), s.port) < 0) {
-      std::vector<std::string> names = namesOf(outputsOf(static_cast<size_t>(it->second)));
+    const NodeSpec* spec = specs_[static_cast<size_t>(found)];
+    if (spec && portIndex(outputsOf(static_cast<size_t>(found)), s.port) < 0) {
+      std::vector<std::string> names = namesOf(outputsOf(static_cast<size_t>(found)));
       std::string outs;
       for (const auto& name : names) outs += (outs.empty() ? "" : ", ") + name;
       diags_.error(DiagCode::UnknownOutputPort, s.where,
@@ -403,16 +404,16 @@ class Resolver {
                    user, label());
       return -1;
     }
-    return it->second;
+    return found;
   }
 
   // Kahn's algorithm over node references: iterative, so a 100,000-node chain needs no
   // deep recursion. Nodes left over lie on or behind a cycle; each cycle is named.
+  // The edges live in flat arrays (inputNode_ for dependencies, userBase/users for the
+  // reverse), not a vector per node: two allocations per node on a large graph otherwise.
   std::vector<int> topologicalOrder() {
     size_t n = graph_.nodes.size();
-    std::vector<std::vector<int>> users(n);
     std::vector<int> pending(n, 0);
-    std::vector<std::vector<int>> deps(n);
     inputBase_.assign(n + 1, 0);
     for (size_t i = 0; i < n; ++i) inputBase_[i + 1] = inputBase_[i] + graph_.nodes[i].inputs.size();
     inputNode_.assign(inputBase_[n], -1);
@@ -443,11 +444,20 @@ class Resolver {
                        inputLabel(in.port));
           continue;
         }
-        deps[i].push_back(dep);
-        users[static_cast<size_t>(dep)].push_back(static_cast<int>(i));
         ++pending[i];
       }
     }
+    // Each node's users, in the order of (user, input): counted, then placed.
+    std::vector<size_t> userBase(n + 1, 0);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t e = inputBase_[i]; e < inputBase_[i + 1]; ++e)
+        if (int d = inputNode_[e]; d >= 0 && static_cast<size_t>(d) != i) ++userBase[static_cast<size_t>(d) + 1];
+    for (size_t i = 0; i < n; ++i) userBase[i + 1] += userBase[i];
+    std::vector<int> users(userBase[n]);
+    std::vector<size_t> fill(userBase.begin(), userBase.end() - 1);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t e = inputBase_[i]; e < inputBase_[i + 1]; ++e)
+        if (int d = inputNode_[e]; d >= 0 && static_cast<size_t>(d) != i) users[fill[static_cast<size_t>(d)]++] = static_cast<int>(i);
     std::vector<int> order;
     order.reserve(n);
     std::vector<int> ready;
@@ -460,10 +470,10 @@ class Resolver {
       ready.pop_back();
       order.push_back(i);
       done[static_cast<size_t>(i)] = true;
-      for (int u : users[static_cast<size_t>(i)])
-        if (--pending[static_cast<size_t>(u)] == 0) ready.push_back(u);
+      for (size_t e = userBase[static_cast<size_t>(i)]; e < userBase[static_cast<size_t>(i) + 1]; ++e)
+        if (--pending[static_cast<size_t>(users[e])] == 0) ready.push_back(users[e]);
     }
-    if (order.size() < n) reportCycles(deps, done);
+    if (order.size() < n) reportCycles(done);
     return order;
   }
 
@@ -472,7 +482,8 @@ class Resolver {
   // a new cycle (reported); one that reaches a node of an earlier walk leads into a cycle
   // already reported. Each node is walked once, so disjoint cycles are each named in
   // linear time.
-  void reportCycles(const std::vector<std::vector<int>>& deps, const std::vector<bool>& done) {
+  // A node's dependencies are its inputs' nodes (inputNode_), a reference to itself aside.
+  void reportCycles(const std::vector<bool>& done) {
     std::vector<size_t> walkOf(done.size(), 0);  // 0: not walked; else the walk's number
     std::vector<size_t> placeInWalk(done.size(), 0);
     size_t walkNumber = 0;
@@ -487,8 +498,8 @@ class Resolver {
         placeInWalk[static_cast<size_t>(cur)] = walk.size();
         walk.push_back(cur);
         int next = -1;
-        for (int d : deps[static_cast<size_t>(cur)])
-          if (!done[static_cast<size_t>(d)]) {
+        for (size_t e = inputBase_[static_cast<size_t>(cur)]; e < inputBase_[static_cast<size_t>(cur) + 1]; ++e)
+          if (int d = inputNode_[e]; d >= 0 && d != cur && !done[static_cast<size_t>(d)]) {
             next = d;
             break;
           }
@@ -527,9 +538,8 @@ class Resolver {
       }
       case InputSource::Kind::NodeOutput: {
         if (node < 0) {
-          auto it = nodeIndex_.find(s.node);
-          if (it == nodeIndex_.end()) return std::nullopt;
-          node = it->second;
+          node = nodeIndex_.find(s.node);
+          if (node < 0) return std::nullopt;
         }
         if (const auto& values = expandedOutputs_[static_cast<size_t>(node)]; !values.empty()) {
           int port = portIndex(outputsOf(static_cast<size_t>(node)), s.port);
@@ -960,7 +970,7 @@ class Resolver {
   std::vector<const Import*> instanceOf_;  // by node index: the import it instances, or null
   // Keyed by views of the graph's own strings (the graph outlives the resolver): a 10,000-node
   // graph would otherwise copy every id once more.
-  std::unordered_map<std::string_view, int> nodeIndex_;
+  IdIndex nodeIndex_;
   std::unordered_map<std::string_view, ValueRef> paramValue_;  // what `$name` reads
   std::optional<NameSuggester> nodeIds_, parameterNames_;  // made on the first unknown name
   std::vector<int> opOfNode_;  // by node index: its op, or -1
