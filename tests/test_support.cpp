@@ -185,4 +185,16 @@ bool updatingGoldens() {
   return env && std::string(env) == "1";
 }
 
+size_t glslCalls(const std::string& text, const std::string& fn) {
+  size_t n = 0;
+  for (size_t at = text.find(fn + "("); at != std::string::npos; at = text.find(fn + "(", at + 1)) {
+    size_t lineStart = text.rfind('\n', at);
+    lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
+    std::string before = text.substr(lineStart, at - lineStart);
+    bool definition = !before.empty() && before.back() == ' ' && before.find_first_of(" =(,") == before.size() - 1;
+    if (!definition) ++n;
+  }
+  return n;
+}
+
 }  // namespace wg::test

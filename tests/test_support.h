@@ -42,6 +42,10 @@ CmdResult runSplit(const std::string& command);
 CmdResult runWatergraph(const std::string& args);
 // The lines of `text`, without their '\n'; a final empty line is dropped.
 std::vector<std::string> splitLines(const std::string& text);
+
+// Calls of the GLSL library function `fn` in shader `text`, not counting its definition
+// (the line "type fn(...").
+size_t glslCalls(const std::string& text, const std::string& fn);
 // WG_UPDATE_GOLDEN=1 in the environment: tests with golden files (GLSL, manifests, images)
 // rewrite them instead of comparing (tests/golden/README.md).
 bool updatingGoldens();

@@ -5,26 +5,15 @@
 
 #include "accuracy/error_bound.h"
 #include "accuracy/fragment_program.h"
-#include "codegen/compile.h"
 #include "codegen/cpu_backend.h"
-#include "core/graph_io.h"
-#include "nodes/registry.h"
+#include "compile_text.h"
 #include "nodes/texture_sampling.h"
 #include "nodes/texture_source.h"
 
 namespace wg::accuracy {
 namespace {
 
-Program fragmentOf(const std::string& json) {
-  Diagnostics diags;
-  auto graph = parseGraph(json, "inline.json", diags);
-  EXPECT_TRUE(graph);
-  CompileOptions o;
-  o.targets = {Target::Glsl330};
-  auto result = compileGraph(*graph, defaultRegistry(), o, diags);
-  EXPECT_TRUE(result);
-  return fragmentProgram(result->program).program;
-}
+Program fragmentOf(const std::string& json) { return fragmentProgram(test::compileText(json).program).program; }
 
 // One bilinear look-up of the height map, its red channel the colour: the term grows by
 // exactly that look-up's uncertainty, and an evaluation with a nudge counts the look-up.

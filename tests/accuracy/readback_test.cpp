@@ -10,6 +10,7 @@
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "runtime/preview.h"
+#include "compile_text.h"
 #include "test_support.h"
 
 namespace wg::accuracy {
@@ -84,22 +85,11 @@ TEST(ReadbackPlan, PlansDeferredWaterFromTheGBufferAndWholeSceneTextures) {
   EXPECT_EQ(plan.lookups.size(), 1u);
 }
 
-CompileResult compiledText(const std::string& json) {
-  Diagnostics diags;
-  auto graph = parseGraph(json, "inline.json", diags);
-  EXPECT_TRUE(graph);
-  CompileOptions o;
-  o.targets = {Target::Glsl330};
-  auto result = compileGraph(*graph, defaultRegistry(), o, diags);
-  EXPECT_TRUE(result);
-  return *result;
-}
-
 // Deferred water that reads the surface only inside the underwater node (no surface
 // builtin of its own, so no G-buffer locals): the surface texel is fetched at the pixel
 // for the reference's world position and depth.
 TEST(ReadbackPlan, FetchesTheSurfaceTexelWhereNoLocalHoldsIt) {
-  CompileResult r = compiledText(R"({"version": 1, "name": "t", "nodes": [
+  CompileResult r = test::compileText(R"({"version": 1, "name": "t", "nodes": [
       {"id": "water", "type": "underwater", "inputs": {"normal": [0, 1, 0]}}],
     "outputs": {"fragment": {"color": "water.color"}}})");
   std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));

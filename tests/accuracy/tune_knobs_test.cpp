@@ -55,20 +55,6 @@ std::string fileOf(const Graph& g, const std::string& suffix) {
   return "";
 }
 
-// Calls of the GLSL library function `fn` in `text`, not counting its definition (the
-// line "type fn(...").
-size_t calls(const std::string& text, const std::string& fn) {
-  size_t n = 0;
-  for (size_t at = text.find(fn + "("); at != std::string::npos; at = text.find(fn + "(", at + 1)) {
-    size_t lineStart = text.rfind('\n', at);
-    lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
-    std::string before = text.substr(lineStart, at - lineStart);
-    bool definition = !before.empty() && before.back() == ' ' && before.find_first_of(" =(,") == before.size() - 1;
-    if (!definition) ++n;
-  }
-  return n;
-}
-
 TEST(TuneKnobs, WaveCountAndTessellationFactorAreKnobsWithTheirDistinctLevels) {
   Graph g = parse(wavesGraph("distance"));
   std::vector<TuneKnob> declared = graphKnobs(g);
@@ -92,8 +78,8 @@ TEST(TuneKnobs, WaveCountAndTessellationFactorAreKnobsWithTheirDistinctLevels) {
   cheap[static_cast<size_t>(waves - knobs.data())] = 0;
   cheap[static_cast<size_t>(factor - knobs.data())] = 2;
   Graph exactGraph = withKnobLevels(g, knobs, exact), cheapGraph = withKnobLevels(g, knobs, cheap);
-  EXPECT_EQ(calls(fileOf(exactGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 3u) << fileOf(exactGraph, ".glsl330.tese");
-  EXPECT_EQ(calls(fileOf(cheapGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 1u);
+  EXPECT_EQ(test::glslCalls(fileOf(exactGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 3u) << fileOf(exactGraph, ".glsl330.tese");
+  EXPECT_EQ(test::glslCalls(fileOf(cheapGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 1u);
   EXPECT_NE(fileOf(exactGraph, ".glsl330.tesc").find(", 16.0);"), std::string::npos) << fileOf(exactGraph, ".glsl330.tesc");
   EXPECT_NE(fileOf(cheapGraph, ".glsl330.tesc").find(", 4.0);"), std::string::npos) << fileOf(cheapGraph, ".glsl330.tesc");
 }
@@ -129,8 +115,8 @@ TEST(TuneKnobs, KnobsInsideSubgraphInstancesAreNamedByTheInstance) {
   // stays exact.
   TuneConfig config{static_cast<int>(knobs[0].levels.size()) - 1, 1};
   std::string frag = fileOf(withKnobLevels(*g, knobs, config), ".glsl330.frag");
-  EXPECT_EQ(calls(frag, "wg_fresnel_exact"), 1u) << frag;
-  EXPECT_EQ(calls(frag, "wg_fresnel_schlick"), 1u) << frag;
+  EXPECT_EQ(test::glslCalls(frag, "wg_fresnel_exact"), 1u) << frag;
+  EXPECT_EQ(test::glslCalls(frag, "wg_fresnel_schlick"), 1u) << frag;
   std::filesystem::remove_all(dir);
 }
 

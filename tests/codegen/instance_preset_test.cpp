@@ -83,20 +83,6 @@ Built build(const std::string& path, const std::string& preset) {
   return b;
 }
 
-// Calls of the GLSL library function `fn` in `text`, not counting its definition (the
-// line "type fn(...").
-size_t calls(const std::string& text, const std::string& fn) {
-  size_t n = 0;
-  for (size_t at = text.find(fn + "("); at != std::string::npos; at = text.find(fn + "(", at + 1)) {
-    size_t lineStart = text.rfind('\n', at);
-    lineStart = lineStart == std::string::npos ? 0 : lineStart + 1;
-    std::string before = text.substr(lineStart, at - lineStart);
-    bool definition = !before.empty() && before.back() == ' ' && before.find_first_of(" =(,") == before.size() - 1;
-    if (!definition) ++n;
-  }
-  return n;
-}
-
 TEST(InstancePresetOptions, SetTheOptionOfTheNodeInsideThatInstanceOnly) {
   Tree tree;
   std::string path = tree.write("parent.json", parent(R"("a/fresnel.model": "exact")"));
@@ -105,10 +91,10 @@ TEST(InstancePresetOptions, SetTheOptionOfTheNodeInsideThatInstanceOnly) {
   ASSERT_TRUE(fast.result) << fast.firstError();
   // Written: both instances take Schlick of the same inputs, one computation after CSE.
   // With the preset, `a` takes the exact Fresnel and `b` keeps Schlick: one call of each.
-  EXPECT_EQ(calls(plain.fragment(), "wg_fresnel_schlick"), 1u) << plain.fragment();
-  EXPECT_EQ(calls(plain.fragment(), "wg_fresnel_exact"), 0u);
-  EXPECT_EQ(calls(fast.fragment(), "wg_fresnel_schlick"), 1u) << fast.fragment();
-  EXPECT_EQ(calls(fast.fragment(), "wg_fresnel_exact"), 1u) << fast.fragment();
+  EXPECT_EQ(test::glslCalls(plain.fragment(), "wg_fresnel_schlick"), 1u) << plain.fragment();
+  EXPECT_EQ(test::glslCalls(plain.fragment(), "wg_fresnel_exact"), 0u);
+  EXPECT_EQ(test::glslCalls(fast.fragment(), "wg_fresnel_schlick"), 1u) << fast.fragment();
+  EXPECT_EQ(test::glslCalls(fast.fragment(), "wg_fresnel_exact"), 1u) << fast.fragment();
   // The subgraph's file is shared and stays as written: a second compile without the
   // preset is the first again.
   EXPECT_EQ(build(path, "").fragment(), plain.fragment());
@@ -175,9 +161,9 @@ TEST(InstancePresetOptions, TheEditorAppliesThemToThePreview) {
       if (f.name.ends_with(".glsl330.frag")) return f.contents;
     return std::string();
   };
-  EXPECT_EQ(calls(fragment(), "wg_fresnel_exact"), 1u);
+  EXPECT_EQ(test::glslCalls(fragment(), "wg_fresnel_exact"), 1u);
   ASSERT_TRUE(e.undo());
-  EXPECT_EQ(calls(fragment(), "wg_fresnel_exact"), 0u);
+  EXPECT_EQ(test::glslCalls(fragment(), "wg_fresnel_exact"), 0u);
 }
 
 }  // namespace
