@@ -215,6 +215,21 @@ namespace {
 // refraction offset of the underwater node reversed, the SSR march's view depth scaled by
 // 1.05, and the SSR hit's colour read at (v, u). The reference samples the read-back
 // scene depth and colour images at those positions (core/scene_image.h).
+// Every pixel at 32x18: the deferred read-back (G-buffer locals, whole scene images, the
+// filter-precision term) within its bound. The sanitizer run's sibling of the test below.
+TEST(CheckCli, DeferredWaterIsComparedWithTheCpu) {
+  std::string dir = test::makeTempDir("wg_check_deferred_small");
+  std::string out;
+  int rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check " +
+                                test::shellQuote(test::sourcePath("graphs/deferred_underwater.json")) +
+                                " --target glsl330 --size 32x18 --error-map " + test::shellQuote(dir + "/map.png"),
+                            &out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("reference: cpu"), std::string::npos) << out;
+  EXPECT_NE(out.find("over the bound 0\n"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CheckCli, DeferredWaterIsComparedAndFailsWhenALookUpIsWrong) {
   std::string dir = test::makeTempDir("wg_check_deferred");
   const std::string base = test::shellQuote(test::watergraphBinary()) + " check " +
