@@ -194,20 +194,32 @@ class Resolver {
         bool applied = std::any_of(node.options.begin(), node.options.end(),
                                    [&](const NodeOption& o) { return o.name == v.option && o.where == v.where; });
         if (applied) continue;
-        std::string label = "preset '" + preset.name + "'";
-        int oi = spec->optionIndex(v.option);
-        if (oi < 0) {
-          diags_.error(DiagCode::UnknownOption, v.keyWhere,
-                       label + ": node type '" + spec->type + "' has no option '" + v.option + "'" +
-                           didYouMean(v.option, namesOf(spec->options)),
-                       node.id, optionLabel(v.option));
-          continue;
-        }
-        std::string why = checkOption(spec->options[static_cast<size_t>(oi)], v.optionValue, directory_, nullptr);
-        if (!why.empty())
-          diags_.error(DiagCode::InvalidOption, v.where, label + ": option '" + v.option + "' " + why, node.id,
-                       optionLabel(v.option));
+        if (const OptionSpec* option = presetOptionSpec(preset, v, *spec, node.id))
+          checkPresetOptionValue(preset, v, *option, node.id, directory_);
       }
+  }
+
+  // The option of `spec` that preset member `v` sets on node `nodeId`; null, reported,
+  // when the type has none of that name.
+  const OptionSpec* presetOptionSpec(const Preset& preset, const PresetValue& v, const NodeSpec& spec,
+                                     const std::string& nodeId) {
+    int oi = spec.optionIndex(v.option);
+    if (oi >= 0) return &spec.options[static_cast<size_t>(oi)];
+    diags_.error(DiagCode::UnknownOption, v.keyWhere,
+                 "preset '" + preset.name + "': node type '" + spec.type + "' has no option '" + v.option + "'" +
+                     didYouMean(v.option, namesOf(spec.options)),
+                 nodeId, optionLabel(v.option));
+    return nullptr;
+  }
+
+  // The value preset member `v` gives `option`, checked as an option written on the node
+  // (texture paths relative to `directory`, the file of the graph that holds the node).
+  void checkPresetOptionValue(const Preset& preset, const PresetValue& v, const OptionSpec& option,
+                              const std::string& nodeId, const std::string& directory) {
+    std::string why = checkOption(option, v.optionValue, directory, nullptr);
+    if (!why.empty())
+      diags_.error(DiagCode::InvalidOption, v.where, "preset '" + preset.name + "': option '" + v.option + "' " + why,
+                   nodeId, optionLabel(v.option));
   }
 
   // A preset member "instance/node.option": each step of the path is a node of the graph
@@ -252,20 +264,9 @@ class Resolver {
     }
     bool applied = std::any_of(graph_.instanceOptions.begin(), graph_.instanceOptions.end(),
                                [&](const InstanceOption& o) { return o.node == v.node && o.option.where == v.where; });
-    int oi = spec->optionIndex(v.option);
-    if (oi < 0) {
-      diags_.error(DiagCode::UnknownOption, v.keyWhere,
-                   label + ": node type '" + spec->type + "' has no option '" + v.option + "'" +
-                       didYouMean(v.option, namesOf(spec->options)),
-                   v.node, optionLabel(v.option));
-      return;
-    }
-    if (applied) return;
-    std::string directory = std::filesystem::path(g->file).parent_path().string();
-    std::string why = checkOption(spec->options[static_cast<size_t>(oi)], v.optionValue, directory, nullptr);
-    if (!why.empty())
-      diags_.error(DiagCode::InvalidOption, v.where, label + ": option '" + v.option + "' " + why, v.node,
-                   optionLabel(v.option));
+    const OptionSpec* option = presetOptionSpec(preset, v, *spec, v.node);
+    if (!option || applied) return;
+    checkPresetOptionValue(preset, v, *option, v.node, std::filesystem::path(g->file).parent_path().string());
   }
 
   // An import's name becomes a node type here, so it may not be one already.
