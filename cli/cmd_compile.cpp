@@ -18,6 +18,7 @@
 #include "cli/commands.h"
 #include "codegen/compile.h"
 #include "codegen/depfile.h"
+#include "codegen/frequency_report.h"
 #include "codegen/output_files.h"
 #include "codegen/spirv_cross_targets.h"
 #include "codegen/texture_files.h"
@@ -43,6 +44,7 @@ struct CompileArgs {
   std::string preset;
   bool textures = false;  // also write <graph>.<sampler>.png for every node texture
   std::string depfile;    // write a Make/Ninja depfile here
+  bool explainFrequency = false;  // print each graph's frequency report (codegen/frequency_report.h)
 };
 
 struct TargetSet {
@@ -89,6 +91,7 @@ struct GraphOutcome {
   size_t files = 0;
   double ms = 0;
   DepfileRule dependencies;  // when written: the files written and the files read
+  std::string frequency;     // --explain-frequency: the graph's report
 };
 
 void printSummary(std::FILE* to, const std::vector<GraphOutcome>& outcomes, const TargetSet& targets) {
@@ -183,6 +186,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
   }
   if (result) {
     outcome.kept = result->nodesKept;
+    if (args.explainFrequency) outcome.frequency = formatFrequencyReport(result->program, frequencyReport(result->program));
     outcome.files = result->files.size();
     if (write) {
       std::string dir = args.subdirs ? args.outDir + "/" + outcome.name : args.outDir;
@@ -301,6 +305,7 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
     writeFileAtomically(args.depfile, depfileText(rules), all);
   }
   printDiagnostics(all, global);
+  for (const auto& o : outcomes) std::fputs(o.frequency.c_str(), info);
   if (args.summary) printSummary(info, outcomes, targets);
   int code = kExitOk;
   if (!all.hasErrors()) {
@@ -328,6 +333,10 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   cmd->add_option("--preset", args.preset,
                   "a preset from the graph's \"presets\" table (e.g. calm, moderate, choppy): its values become the "
                   "parameter defaults; static parameters fold into the shader");
+  cmd->add_flag("--explain-frequency", args.explainFrequency,
+                "print, per graph, how many ops are constant, per-draw, per-vertex and per-fragment, and the per-draw "
+                "values the fragment stage computes for every pixel (candidates for uniforms computed once per draw), "
+                "each with its estimated operations per pixel");
 }
 
 }  // namespace
@@ -375,7 +384,8 @@ Runner addValidateCommand(CLI::App& app, const GlobalOptions& global) {
       "pass, 1 with one line per failure.\n\nExamples:\n  watergraph validate graphs/*.json\n"
       "  watergraph validate graphs/lake.json --diagnostics-format json\n"
       "  watergraph validate graphs/*.json --diagnostics-format sarif > watergraph.sarif   # for code scanning\n"
-      "  watergraph validate graphs/*.json --target glsl330,hlsl --quiet");
+      "  watergraph validate graphs/*.json --target glsl330,hlsl --quiet\n"
+      "  watergraph validate graphs/*.json --explain-frequency   # what is the same for every pixel of a draw");
   cmd->add_option("graphs", args->graphs, "graph files (.json)")->required();
   addCommonOptions(cmd, *args);
   return [args, &global] { return runCompile(*args, global, false); };

@@ -2,16 +2,13 @@
 // outputs reach runs in the fragment stage. A value computed per vertex that the fragment
 // stage needs becomes a varying, except sources and uniform-only values, which the
 // fragment stage recomputes (an attribute read, or the same value for every vertex).
+#include "codegen/frequency.h"
 #include "codegen/passes.h"
 
 namespace wg {
 namespace {
 
 bool isFragmentOnlyBuiltin(Builtin b) { return b == Builtin::ScreenUv || b == Builtin::FragDepth; }
-bool isUniformBuiltin(Builtin b) {
-  return b == Builtin::Time || b == Builtin::CameraPosition || b == Builtin::CameraNearFar || b == Builtin::View ||
-         b == Builtin::Projection || b == Builtin::SunDirection;
-}
 
 }  // namespace
 
@@ -24,7 +21,7 @@ PassResult stagePass(Program& program, PassContext& ctx) {
     bool v = op.spec->isSource && !op.spec->isUniformSource;
     for (const auto& in : op.inputs) {
       if (in.kind == ValueRef::Kind::Op) v = v || perVertex[static_cast<size_t>(in.index)];
-      if (in.kind == ValueRef::Kind::Builtin) v = v || !isUniformBuiltin(static_cast<Builtin>(in.index));
+      if (in.kind == ValueRef::Kind::Builtin) v = v || !isPerDrawBuiltin(static_cast<Builtin>(in.index));
     }
     perVertex[i] = v;
   }
