@@ -58,6 +58,25 @@ std::string num(float f) {
   return buf;
 }
 
+// One job of render_graph.mjs's batch: the graph compiled into `out` drawn by the client in
+// the built-in scene from `cam`, written to `screenshot`.
+nlohmann::json builtinSceneJob(const std::string& out, const std::string& manifest, const rt::Camera& cam,
+                               const std::string& screenshot) {
+  return {{"dir", out}, {"manifest", manifest}, {"size", kSceneSize},
+          {"eye", csv(cam.position)}, {"target", csv(cam.target)}, {"up", csv(cam.up())},
+          {"fov", num(cam.fovYDegrees)}, {"near", num(cam.nearPlane)}, {"far", num(cam.farPlane)},
+          {"time", kTime}, {"grid", std::to_string(kGrid)}, {"screenshot", screenshot}, {"builtin", true}};
+}
+
+// Runs the client over a batch of jobs (written to dir/jobs.json) in one browser.
+CmdResult renderBatch(const std::string& dir, const nlohmann::json& batch, const std::string& description,
+                      int seconds) {
+  const std::string batchFile = dir + "/jobs.json";
+  std::ofstream(batchFile) << batch.dump(1);
+  return sh("timeout " + std::to_string(seconds) + " node " + test::shellQuote(clientDir() + "/test/render_graph.mjs") +
+            " --batch " + test::shellQuote(batchFile) + " --description " + test::shellQuote(description));
+}
+
 class ThreeClient : public ::testing::Test {
  protected:
   // npm ci once per lock file (cached in clients/three/node_modules); Chromium must exist.
@@ -181,17 +200,11 @@ TEST_F(ThreeClient, EveryExampleGraphMatchesTheRuntimeInTheBuiltInScene) {
                           " --target es300 --size " + kSceneSize + " --camera " + camera + " --time " + kTime);
       ASSERT_EQ(r.exit, 0) << g << ": " << r.err;
       auto cam = rt::cameraPreset(camera);
-      batch.push_back({{"dir", out}, {"manifest", g + ".manifest.json"}, {"size", kSceneSize},
-                       {"eye", csv(cam->position)}, {"target", csv(cam->target)}, {"up", csv(cam->up())},
-                       {"fov", num(cam->fovYDegrees)}, {"near", num(cam->nearPlane)}, {"far", num(cam->farPlane)},
-                       {"time", kTime}, {"grid", std::to_string(kGrid)}, {"screenshot", job.three}, {"builtin", true}});
+      batch.push_back(builtinSceneJob(out, g + ".manifest.json", *cam, job.three));
       jobs.push_back(job);
     }
   }
-  const std::string batchFile = dir / "jobs.json";
-  std::ofstream(batchFile) << batch.dump(1);
-  CmdResult t = sh("timeout 300 node " + test::shellQuote(clientDir() + "/test/render_graph.mjs") + " --batch " +
-                   test::shellQuote(batchFile) + " --description " + test::shellQuote(description));
+  CmdResult t = renderBatch(dir.path(), batch, description, 300);
   ASSERT_EQ(t.exit, 0) << t.out << t.err;
   for (const Job& job : jobs) {
     rt::Image a = rt::readPng(job.reference), b = rt::readPng(job.three);
@@ -241,16 +254,10 @@ TEST_F(ThreeClient, HalfResolutionScenePassesMatchTheRuntime) {
     CmdResult r = wgRun("render " + test::shellQuote(file) + " -o " + test::shellQuote(job.reference) +
                         " --target es300 --size " + kSceneSize + " --camera above --time " + kTime);
     ASSERT_EQ(r.exit, 0) << g << ": " << r.err;
-    batch.push_back({{"dir", out}, {"manifest", std::string(g) + ".manifest.json"}, {"size", kSceneSize},
-                     {"eye", csv(cam->position)}, {"target", csv(cam->target)}, {"up", csv(cam->up())},
-                     {"fov", num(cam->fovYDegrees)}, {"near", num(cam->nearPlane)}, {"far", num(cam->farPlane)},
-                     {"time", kTime}, {"grid", std::to_string(kGrid)}, {"screenshot", job.three}, {"builtin", true}});
+    batch.push_back(builtinSceneJob(out, std::string(g) + ".manifest.json", *cam, job.three));
     jobs.push_back(job);
   }
-  const std::string batchFile = dir / "jobs.json";
-  std::ofstream(batchFile) << batch.dump(1);
-  CmdResult t = sh("timeout 120 node " + test::shellQuote(clientDir() + "/test/render_graph.mjs") + " --batch " +
-                   test::shellQuote(batchFile) + " --description " + test::shellQuote(description));
+  CmdResult t = renderBatch(dir.path(), batch, description, 120);
   ASSERT_EQ(t.exit, 0) << t.out << t.err;
   for (const Job& job : jobs) {
     rt::Image a = rt::readPng(job.reference), b = rt::readPng(job.three);
@@ -300,18 +307,11 @@ TEST_F(ThreeClient, AUsersOwnObjectIsReflectedAndRefracted) {
   const Job jobs[] = {{"none", ""}, {"above_water", "-4.7,14,4.6,3"}, {"under_water", "8,-0.5,-6,0.8"}};
   nlohmann::json batch = nlohmann::json::array();
   for (const Job& job : jobs) {
-    nlohmann::json j = {{"dir", out}, {"manifest", "classic_webgl.manifest.json"}, {"size", kSceneSize},
-                        {"eye", csv(cam->position)}, {"target", csv(cam->target)}, {"up", csv(cam->up())},
-                        {"fov", num(cam->fovYDegrees)}, {"near", num(cam->nearPlane)}, {"far", num(cam->farPlane)},
-                        {"time", kTime}, {"grid", std::to_string(kGrid)},
-                        {"screenshot", dir / (std::string(job.name) + ".png")}, {"builtin", true}};
+    nlohmann::json j = builtinSceneJob(out, "classic_webgl.manifest.json", *cam, dir / (std::string(job.name) + ".png"));
     if (*job.box) j["box"] = job.box;
     batch.push_back(j);
   }
-  const std::string batchFile = dir / "jobs.json";
-  std::ofstream(batchFile) << batch.dump(1);
-  CmdResult t = sh("timeout 120 node " + test::shellQuote(clientDir() + "/test/render_graph.mjs") + " --batch " +
-                   test::shellQuote(batchFile) + " --description " + test::shellQuote(description));
+  CmdResult t = renderBatch(dir.path(), batch, description, 120);
   ASSERT_EQ(t.exit, 0) << t.out << t.err;
   rt::Image none = rt::readPng(dir / "none.png");
   int reflected = reddenedPixels(none, rt::readPng(dir / "above_water.png"));
