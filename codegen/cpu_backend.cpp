@@ -1,5 +1,6 @@
 #include "codegen/cpu_backend.h"
 
+#include <filesystem>
 #include <map>
 #include <stdexcept>
 
@@ -86,13 +87,16 @@ std::string namesOf(const std::vector<Named>& list) {
   return s;
 }
 
-// A node that expands into ops (an expression), evaluated as resolve would build it: a
-// one-node graph whose inputs are parameters holding the given values, resolved with the
-// default registry (the math nodes the expansion is made of) and run through the backend.
+// A node that expands into ops (an expression) or derives inputs of its own (NodeSpec::
+// derive), evaluated as resolve would build it: a one-node graph whose inputs are
+// parameters holding the given values, resolved with the default registry (the nodes the
+// expansion or derivation is made of) and run through the backend.
 std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& options, const NodePorts& ports,
-                                    const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env) {
+                                    const std::vector<std::pair<std::string, Value>>& inputs, const EvalEnvironment& env,
+                                    const std::string& graphDir) {
   Graph g;
-  g.file = "node '" + spec.type + "'";
+  // In graphDir, so texture options name files relative to it as evaluateNode's do.
+  g.file = (std::filesystem::path(graphDir) / ("node '" + spec.type + "'")).string();
   g.name = "eval_" + spec.type;
   Node node;
   node.id = "n";
@@ -101,19 +105,22 @@ std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& 
     for (auto it = options.begin(); it != options.end(); ++it) node.options.push_back({it.key(), it.value(), {}, {}});
   std::vector<Value> values;
   for (const auto& p : ports.inputs) {
+    if (p.derived) continue;  // the node computes it from the others
     const Value* given = nullptr;
     for (const auto& [name, value] : inputs)
       if (name == p.name) given = &value;
     Value v = given ? *given : p.defaultValue ? *p.defaultValue : p.defaultBuiltin ? env.builtin(*p.defaultBuiltin) : Value{};
     if (v.type == Type::Invalid) throw std::invalid_argument(spec.type + ": required input '" + p.name + "' is not given");
-    if (!implicitlyConvertible(v.type, p.type))
-      throw std::invalid_argument(spec.type + ": input '" + p.name + "' expects " + std::string(typeName(p.type)) + ", but the value given is " + std::string(typeName(v.type)));
+    // A Gen or Custom port takes the type of the value given; resolve types the node from it.
+    Type type = p.kind == PortKind::Fixed ? p.type : v.type;
+    if (!implicitlyConvertible(v.type, type))
+      throw std::invalid_argument(spec.type + ": input '" + p.name + "' expects " + std::string(typeName(type)) + ", but the value given is " + std::string(typeName(v.type)));
     Parameter param;
     param.name = "in_" + p.name;
-    param.type = p.type;
-    param.defaultValue.assign(static_cast<size_t>(componentCount(p.type)), 0);
+    param.type = type;
+    param.defaultValue.assign(static_cast<size_t>(componentCount(type)), 0);
     g.parameters.push_back(param);
-    values.push_back(v.convertedTo(p.type));
+    values.push_back(v.convertedTo(type));
     NodeInput in;
     in.port = p.name;
     in.source.kind = InputSource::Kind::Parameter;
@@ -191,7 +198,10 @@ std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& opti
   NodePorts ports = portsOfNode(spec, options);  // the options are valid: checked above
   for (const auto& [name, value] : inputs)
     if (ports.inputIndex(name) < 0) throw std::invalid_argument(spec.type + ": no input '" + name + "'" + namesOf(ports.inputs));
-  if (spec.expand) return evaluateExpanded(spec, options, ports, inputs, env);
+  for (const auto& [name, value] : inputs)
+    if (ports.inputs[static_cast<size_t>(ports.inputIndex(name))].derived)
+      throw std::invalid_argument(spec.type + ": input '" + name + "' is computed by the node itself");
+  if (spec.expand || spec.derive) return evaluateExpanded(spec, options, ports, inputs, env, graphDir);
   Op op;
   op.spec = &spec;
   op.nodeId = spec.type;

@@ -56,8 +56,13 @@ struct PortSpec {
   std::optional<Value> defaultValue;       // inputs: used when unconnected
   std::optional<Builtin> defaultBuiltin;   // inputs: or fed by a builtin when unconnected
   std::string doc;
+  // A per-draw input the node computes for itself: resolve fills it with ops of their own
+  // through NodeSpec::derive, so the part of the node that is the same for every pixel is
+  // visible to the frequency analysis (and to derived uniforms) as ops. A graph file cannot
+  // connect it; the docs list it apart.
+  bool derived = false;
 
-  bool required() const { return !defaultValue && !defaultBuiltin; }
+  bool required() const { return !defaultValue && !defaultBuiltin && !derived; }
 };
 
 struct OptionSpec {
@@ -95,6 +100,7 @@ struct HardCase {
 
 struct NodeSpec;
 struct ExpandContext;  // core/expand.h
+struct DeriveContext;  // core/derive.h
 
 // The ports of a node whose ports follow from its options (NodeSpec::portsFor).
 // The index of the port named `name` in `ports`, or -1.
@@ -294,6 +300,11 @@ struct NodeSpec {
   // what every instance has, for the docs.
   std::function<void(ExpandContext&)> expand;
   std::function<NodePorts(const ParsedOptions& options)> portsFor;
+  // A node with `derived` input ports (PortSpec::derived): given the values of its other
+  // inputs, it appends the ops that compute the derived ones (from math nodes and small
+  // per-draw nodes) and names their values. resolve calls it before typing the op; the op
+  // itself then reads them as inputs, so emit and eval see them like any other input.
+  std::function<void(DeriveContext&)> derive;
   std::vector<HardCase> hardCases;
   // The error bound of float32 GPU against the double reference, per output component:
   //   |gpu - ref| <= tolerance * max(1, |ref|) + conditioning

@@ -49,8 +49,11 @@ static void checkHardCaseNames(const NodeSpec& s, const HardCase& hc) {
     if (!why.empty()) fail("option '" + it.key() + "' " + why);
   }
   NodePorts ports = portsOfNode(s, hc.options);  // an expression's inputs follow from its options
-  for (const auto& [port, value] : hc.inputs)
-    if (ports.inputIndex(port) < 0) fail("no input '" + port + "'");
+  for (const auto& [port, value] : hc.inputs) {
+    int pi = ports.inputIndex(port);
+    if (pi < 0) fail("no input '" + port + "'");
+    if (ports.inputs[static_cast<size_t>(pi)].derived) fail("input '" + port + "' is derived by the node itself");
+  }
   if (!hc.output.empty() && ports.outputIndex(hc.output) < 0) fail("no output '" + hc.output + "'");
   if (s.parseOptions) s.parseOptions(OptionReader(s, completeOptions(s, hc.options)));
 }
@@ -132,6 +135,16 @@ static void checkSpec(const NodeSpec& s) {
     if (!names.insert("out:" + p.name).second) fail("duplicate output " + p.name);
   for (const auto& o : s.options)
     if (!names.insert("opt:" + o.name).second) fail("duplicate option " + o.name);
+  // Derived inputs (PortSpec::derived) are Fixed, without defaults, and named by derive.
+  bool derives = false;
+  for (const auto& p : s.inputs) {
+    if (!p.derived) continue;
+    derives = true;
+    if (p.kind != PortKind::Fixed || p.defaultValue || p.defaultBuiltin)
+      fail("derived input " + p.name + " must be Fixed and have no default");
+  }
+  if (derives != static_cast<bool>(s.derive)) fail(derives ? "derived inputs without a derive function" : "a derive function without derived inputs");
+  if (derives && (s.expand || s.portsFor)) fail("derived inputs on an expanding node");
   bool custom = false;
   for (const auto& p : s.inputs) custom |= p.kind == PortKind::Custom;
   for (const auto& p : s.outputs) custom |= p.kind == PortKind::Custom;

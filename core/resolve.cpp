@@ -13,6 +13,7 @@
 
 #include <filesystem>
 
+#include "core/derive.h"
 #include "core/expand.h"
 #include "core/graph_imports.h"
 #include "core/graph_node_type.h"
@@ -347,13 +348,20 @@ class Resolver {
       }
       specs_[i] = spec;
       const std::vector<PortSpec>& inputs = inputsOf(i);
-      for (const auto& in : n.inputs)
-        if (portIndex(inputs, in.port) < 0) {
+      for (const auto& in : n.inputs) {
+        int pi = portIndex(inputs, in.port);
+        // A derived input is the node's own (NodeSpec::derive): not a port of the file.
+        if (pi >= 0 && inputs[static_cast<size_t>(pi)].derived)
+          diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
+                       "input '" + in.port + "' of node type '" + spec->type +
+                           "' is computed by the node itself and cannot be connected",
+                       n.id, inputLabel(in.port));
+        else if (pi < 0)
           diags_.error(DiagCode::UnknownInputPort, in.keyWhere,
                        "node type '" + spec->type + "' has no input '" + in.port + "'" +
                            didYouMean(in.port, namesOf(inputs)),
                        n.id, inputLabel(in.port));
-        }
+      }
     }
   }
 
@@ -630,6 +638,7 @@ class Resolver {
       for (size_t pi = 0; pi < nin; ++pi) {
         if (given[pi]) continue;
         const PortSpec& port = ports[pi];
+        if (port.derived) continue;  // filled below by the node's derive
         if (port.defaultValue) {
           op.inputs[pi] = ValueRef::constant_(*port.defaultValue);
           sourceTypes[pi] = port.defaultValue->type;
@@ -651,6 +660,13 @@ class Resolver {
       if (spec->expand) {
         expandNode(ni, op, sourceTypes, given);
         continue;
+      }
+      if (spec->derive) {
+        size_t firstDerived = program_.ops.size();
+        deriveInputs(*spec, *op.parsedOptions, registry_, op.nodeId, op.where, op.inputs, program_);
+        for (size_t k = firstDerived; k < program_.ops.size(); ++k) program_.ops[k].instanceChain = op.instanceChain;
+        for (size_t pi = 0; pi < nin; ++pi)
+          if (ports[pi].derived) sourceTypes[pi] = program_.typeOf(op.inputs[pi]);
       }
       if (!typeOp(op, node, sourceTypes, given)) continue;
       opOfNode_[static_cast<size_t>(ni)] = static_cast<int>(program_.ops.size());

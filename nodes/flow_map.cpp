@@ -2,6 +2,7 @@
 // cross-faded by triangle-wave weights so neither phase's reset shows (the stylized water shader).
 #include <cmath>
 
+#include "core/derive.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -38,6 +39,10 @@ NodeSpec flowMapNode() {
       ports::fixed("speed", Type::Float, Value::scalar(1.0), "phase cycles per second (source: 1)"),
       ports::fixed("strength", Type::Float, Value::scalar(1.0), "texture units the flow moves the texture per cycle"),
   };
+  s.inputs.push_back(ports::derived("progress_a", Type::Float, "phase A's progress fract(time * speed)"));
+  s.inputs.push_back(ports::derived("progress_b", Type::Float, "phase B's progress fract(time * speed + 0.5)"));
+  s.inputs.push_back(ports::derived("fade_a", Type::Float, "phase A's weight 1 - |1 - 2 progress_a|"));
+  s.inputs.push_back(ports::derived("fade_b", Type::Float, "phase B's weight 1 - |1 - 2 progress_b|"));
   s.outputs = {ports::fixed("sample", Type::Vec4, "the blended texture sample"),
                ports::fixed("weight_a", Type::Float, "weight of phase A, in [0, 1]"),
                ports::fixed("weight_b", Type::Float, "weight of phase B, 1 - weight_a")};
@@ -49,6 +54,21 @@ NodeSpec flowMapNode() {
   };
   s.isSource = true;
   s.parseOptions = optionParser(parseFlowMapOptions);
+  // The phases and their weights are the same for every pixel of a draw: ops of their own,
+  // each the math node of the GLSL it replaces (fract(t * speed + offset), 1 - |1 - 2 p|).
+  s.derive = [](DeriveContext& ctx) {
+    ValueRef cycles = ctx.op("mul", {ctx.input("time"), ctx.input("speed")});
+    auto weight = [&](const ValueRef& p) {
+      ValueRef twice = ctx.op("mul", {ValueRef::constant_(Value::scalar(2.0)), p});
+      return ctx.op("one_minus", {ctx.op("abs", {ctx.op("one_minus", {twice})})});
+    };
+    ValueRef pa = ctx.op("fract", {cycles});
+    ValueRef pb = ctx.op("fract", {ctx.op("add", {cycles, ValueRef::constant_(Value::scalar(0.5))})});
+    ctx.set("progress_a", pa);
+    ctx.set("progress_b", pb);
+    ctx.set("fade_a", weight(pa));
+    ctx.set("fade_b", weight(pb));
+  };
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
     std::string uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
@@ -57,12 +77,8 @@ NodeSpec flowMapNode() {
             ? EmitContext::call("wg_flow_map_decode", {"texture(" + ctx.texture("flow_texture") + ", " + uv + ")"})
             : ctx.input("flow");
     std::string drag = ctx.temporary(Type::Vec2, "(" + flow + ") * " + ctx.input("strength"));
-    std::string time = ctx.temporary(Type::Float, ctx.input("time"));
-    std::string speed = ctx.temporary(Type::Float, ctx.input("speed"));
-    std::string pa = ctx.temporary(Type::Float, EmitContext::call("wg_flow_map_progress", {time, speed, "0.0"}));
-    std::string pb = ctx.temporary(Type::Float, EmitContext::call("wg_flow_map_progress", {time, speed, "0.5"}));
-    std::string wa = ctx.temporary(Type::Float, EmitContext::call("wg_flow_map_weight", {pa}));
-    std::string wb = ctx.temporary(Type::Float, EmitContext::call("wg_flow_map_weight", {pb}));
+    std::string pa = ctx.input("progress_a"), pb = ctx.input("progress_b");
+    std::string wa = ctx.input("fade_a"), wb = ctx.input("fade_b");
     ctx.output(0, "(texture(" + tex + ", " + uv + " - " + drag + " * " + pa + ") * " + wa + " + texture(" + tex + ", " +
                       uv + " - " + drag + " * " + pb + ") * " + wb + ")");
     ctx.output(1, wa);
@@ -82,9 +98,8 @@ NodeSpec flowMapNode() {
     double k = ctx.scalar("strength");
     fx *= k;
     fy *= k;
-    double time = ctx.scalar("time"), speed = ctx.scalar("speed");
-    double pa = glsl::fract(time * speed), pb = glsl::fract(time * speed + 0.5);
-    double wa = 1.0 - std::abs(1.0 - 2.0 * pa), wb = 1.0 - std::abs(1.0 - 2.0 * pb);
+    double pa = ctx.scalar("progress_a"), pb = ctx.scalar("progress_b");
+    double wa = ctx.scalar("fade_a"), wb = ctx.scalar("fade_b");
     Value a = ctx.sampleTexture("texture", uv[0] - fx * pa, uv[1] - fy * pa);
     Value b = ctx.sampleTexture("texture", uv[0] - fx * pb, uv[1] - fy * pb);
     Value out = Value::ofType(Type::Vec4);

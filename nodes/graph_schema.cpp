@@ -144,6 +144,7 @@ OJ nodeTypeSchema(const NodeSpec& spec) {
   OJ inputProps = OJ::object();
   OJ required = OJ::array();
   for (const auto& p : spec.inputs) {
+    if (p.derived) continue;  // the node computes it (NodeSpec::derive): not in the file
     inputProps[p.name] = portSchema(p);
     if (p.required()) required.push_back(p.name);
   }

@@ -125,6 +125,7 @@ nlohmann::json nodesJson(const Registry& registry) {
     auto ports = [](const std::vector<PortSpec>& ps, bool input) {
       nlohmann::json a = nlohmann::json::array();
       for (const auto& p : ps) {
+        if (p.derived) continue;  // not a port a graph connects: listed under "derived_inputs"
         nlohmann::json pj{{"name", p.name}, {"type", portType(p)}, {"doc", p.doc}};
         if (input) pj["default"] = portDefault(p);
         a.push_back(pj);
@@ -132,6 +133,10 @@ nlohmann::json nodesJson(const Registry& registry) {
       return a;
     };
     j["inputs"] = ports(s->inputs, true);
+    nlohmann::json derived = nlohmann::json::array();
+    for (const auto& p : s->inputs)
+      if (p.derived) derived.push_back({{"name", p.name}, {"type", portType(p)}, {"doc", p.doc}});
+    if (!derived.empty()) j["derived_inputs"] = derived;
     j["outputs"] = ports(s->outputs, false);
     nlohmann::json opts = nlohmann::json::array();
     for (const auto& o : s->options) {
@@ -186,7 +191,13 @@ std::string nodesMarkdown(const Registry& registry) {
       if (!s->inputs.empty()) {
         md += "\n| input | type | default | |\n|---|---|---|---|\n";
         for (const auto& p : s->inputs)
-          md += "| `" + p.name + "` | " + portType(p) + " | " + portDefault(p) + " | " + p.doc + " |\n";
+          if (!p.derived) md += "| `" + p.name + "` | " + portType(p) + " | " + portDefault(p) + " | " + p.doc + " |\n";
+        std::string derived;
+        for (const auto& p : s->inputs)
+          if (p.derived) derived += "\n  - `" + p.name + "` (" + portType(p) + "): " + p.doc;
+        if (!derived.empty())
+          md += "\nComputed once per draw by ops of their own (the frequency analysis classifies them per-draw; a "
+                "graph cannot connect them):" + derived + "\n";
       }
       md += "\n| output | type | |\n|---|---|---|\n";
       for (const auto& p : s->outputs) md += "| `" + p.name + "` | " + portType(p) + " | " + p.doc + " |\n";

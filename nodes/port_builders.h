@@ -26,6 +26,12 @@ inline PortSpec fromBuiltin(std::string name, Type t, Builtin b, std::string doc
   p.defaultBuiltin = b;
   return p;
 }
+// An input the node computes itself, once per draw (PortSpec::derived, NodeSpec::derive).
+inline PortSpec derived(std::string name, Type t, std::string doc) {
+  PortSpec p = fixed(std::move(name), t, std::move(doc));
+  p.derived = true;
+  return p;
+}
 inline PortSpec gen(std::string name, std::string doc) {
   PortSpec p;
   p.name = std::move(name);

@@ -52,6 +52,9 @@ NodeSpec sceneDepthNode() {
   s.cost = "one depth-texture fetch (runs the depth_prepass: one extra draw of the opaque scene, 4 bytes/pixel); "
            "linear ~8 ALU; position ~25 ALU";
   s.inputs = {ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv, kScreenUvDoc)};
+  for (auto& p : nearRatioPorts()) s.inputs.push_back(p);
+  // Near and near / far are the same for every pixel of a draw: a near_far_ratio op.
+  s.derive = [](DeriveContext& ctx) { deriveNearRatio(ctx, ValueRef::builtin(Builtin::CameraNearFar)); };
   s.outputs = {ports::fixed("depth", Type::Float, "depth-buffer value in [0, 1]; 1.0 where only sky is behind"),
                ports::fixed("linear", Type::Float, "linear view depth of the scene point (the far plane for the sky)"),
                ports::fixed("position", Type::Vec3, "world position of the scene point (e.g. where caustics fall)")};
@@ -64,8 +67,8 @@ NodeSpec sceneDepthNode() {
   s.emit = [](EmitContext& ctx) {
     std::string uv = ctx.input("screen_uv");
     std::string raw = ctx.temporary(Type::Float, "texture(" + ctx.sceneTexture("scene_depth") + ", " + uv + ").r");
-    std::string fn = linearizeDepthFunction(kDepthTextureFact, ctx.knownBuiltin(Builtin::CameraNearFar));
-    std::string lin = ctx.temporary(Type::Float, EmitContext::call(fn, {raw, ctx.builtin(Builtin::CameraNearFar)}));
+    std::string fn = linearizeDepthRatioFunction(kDepthTextureFact, ctx.knownBuiltin(Builtin::CameraNearFar));
+    std::string lin = ctx.temporary(Type::Float, EmitContext::call(fn, {raw, ctx.input("near"), ctx.input("ratio")}));
     ctx.output(0, raw);
     ctx.output(1, lin);
     ctx.output(2, EmitContext::call("wg_scene_depth_position", {uv, lin, ctx.builtin(Builtin::CameraPosition),
@@ -75,7 +78,7 @@ NodeSpec sceneDepthNode() {
   s.eval = [](EvalContext& ctx) {
     const EvalEnvironment& env = ctx.environment();
     double raw = env.sceneAt(SceneSampler::SceneDepth, ctx.input("screen_uv"))[0];
-    double lin = linearizeDepthReference(raw, env.cameraNearFar[0], env.cameraNearFar[1]);
+    double lin = linearizeDepthRatioReference(raw, ctx.scalar("near"), ctx.scalar("ratio"));
     ctx.output(0, Value::scalar(raw));
     ctx.output(1, Value::scalar(lin));
     ctx.output(2, sceneDepthPositionReference(ctx.input("screen_uv"), lin, env.cameraPosition, env.view, env.projection));

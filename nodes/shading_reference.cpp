@@ -83,9 +83,17 @@ GgxTerms ggxSpecularReference(const Value& n, const Value& v, const Value& l, do
   return t;
 }
 
-double linearizeDepthReference(double depth, double nearPlane, double farPlane) {
+NearFarRatio nearFarRatioReference(double nearPlane, double farPlane) {
   double n = std::max(nearPlane, 1e-6);
-  double r = n / std::max(farPlane, n);
+  return {n, n / std::max(farPlane, n)};
+}
+
+double linearizeDepthReference(double depth, double nearPlane, double farPlane) {
+  NearFarRatio nr = nearFarRatioReference(nearPlane, farPlane);
+  return linearizeDepthRatioReference(depth, nr.nearPlane, nr.ratio);
+}
+
+double linearizeDepthRatioReference(double depth, double n, double r) {
   double d = clamp(depth, 0.0, 1.0);
   double denom = (1.0 - d) + d * r;
   return std::min(n / std::max(denom, n * 1e-30), kMaxLinearDepth);
@@ -96,6 +104,12 @@ double waterDepthRayFactorReference(const Value& view, const Value& v) {
   Value fwd = vec3(-view[2], -view[6], -view[10]);
   if (dot(fwd, fwd) < 0.5) return 1.0;
   double c = dot(mul(safeNormalize(v), -1.0), safeNormalize(fwd));
+  return 1.0 / std::max(c, 0.1);
+}
+
+double waterDepthRayFactorAxisReference(const Value& axis, const Value& v) {
+  if (dot(axis, axis) < 0.25) return 1.0;
+  double c = dot(mul(safeNormalize(v), -1.0), axis);
   return 1.0 / std::max(c, 0.1);
 }
 

@@ -37,8 +37,17 @@ GgxTerms ggxSpecularReference(const Value& n, const Value& v, const Value& l, do
 // n / ((1 - d) + d n / f), guarded as linearize_depth.glsl; never above kMaxLinearDepth.
 inline constexpr double kMaxLinearDepth = 1e30;
 double linearizeDepthReference(double depth, double nearPlane, double farPlane);
+// Its per-draw part (near_far_ratio): n = max(near, 1e-6) and r = n / max(far, n)...
+struct NearFarRatio {
+  double nearPlane, ratio;
+};
+NearFarRatio nearFarRatioReference(double nearPlane, double farPlane);
+// ...and the per-pixel rest, given n and r.
+double linearizeDepthRatioReference(double depth, double n, double r);
 // `view` is a column-major mat4 Value.
 double waterDepthRayFactorReference(const Value& view, const Value& v);
+// The same from the camera's unit axis (camera_forward: zero for a degenerate view matrix).
+double waterDepthRayFactorAxisReference(const Value& axis, const Value& v);
 double waterDepthThicknessReference(double sceneLinear, double surfaceLinear, double factor, double vertical);
 
 Value beerLambertReference(const Value& sigma, double distance);

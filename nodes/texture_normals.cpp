@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/derive.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -53,6 +54,18 @@ D3 normalMapBlend(NormalBlend mode, const D3& a, const D3& b) {
   return waves::safeNormalize(a + b);
 }
 
+// The scroll fract(speed * time) as ops of their own (NodeSpec::derive): the same for every
+// pixel of a draw. A speed written as zero scrolls by exactly 0 (the runtime's time is
+// finite), so no op computes it.
+ValueRef deriveScroll(DeriveContext& ctx, const ValueRef& speed, const ValueRef& time) {
+  if (speed.kind == ValueRef::Kind::Const) {
+    bool zero = true;
+    for (int k = 0; k < speed.constant.size(); ++k) zero = zero && speed.constant[k] == 0;
+    if (zero) return ValueRef::constant_(Value::ofType(speed.constant.type));
+  }
+  return ctx.op("fract", {ctx.op("mul", {speed, time})});
+}
+
 }  // namespace
 
 NodeSpec normalMapScrollNode() {
@@ -79,6 +92,8 @@ NodeSpec normalMapScrollNode() {
       ports::fixed("strength", Type::Float, Value::scalar(1.0), "multiplies the blended normal's slope (xy)"),
   };
   for (auto& p : framePorts()) s.inputs.push_back(p);
+  s.inputs.push_back(ports::derived("scroll_a", Type::Vec2, "the first layer's scroll fract(speed_a * time)"));
+  s.inputs.push_back(ports::derived("scroll_b", Type::Vec2, "the second layer's scroll fract(speed_b * time)"));
   s.outputs = {ports::fixed("normal", Type::Vec3, "unit world-space normal"),
                ports::fixed("tangent_normal", Type::Vec3, "the blended unit tangent-space normal, before strength")};
   s.bypass = {{"normal", "normal", std::nullopt}, {"tangent_normal", "", Value::vector({0, 0, 1})}};
@@ -95,21 +110,23 @@ NodeSpec normalMapScrollNode() {
     ValueFact unit{-1, 1, true};
     return std::vector<ValueFact>{unit, unit};
   };
+  s.derive = [](DeriveContext& ctx) {
+    ctx.set("scroll_a", deriveScroll(ctx, ctx.input("speed_a"), ctx.input("time")));
+    ctx.set("scroll_b", deriveScroll(ctx, ctx.input("speed_b"), ctx.input("time")));
+  };
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
-    std::string time = ctx.temporary(Type::Float, ctx.input("time"));
-    auto layer = [&](const char* scale, const char* speed) {
+    auto layer = [&](const char* scale, const char* scroll) {
       // A layer that neither scales nor scrolls reads the texture at uv itself: uv * 1.0 +
-      // fract(vec2(0.0) * t) is uv exactly for the finite time the runtime sends, but
-      // glslang and spirv-opt keep it (0 * t is NaN for an infinite t).
-      bool still = ctx.inputFact(scale).isConstant(1) && ctx.inputFact(speed).isConstant(0);
+      // 0.0 is uv exactly, but glslang and spirv-opt keep it.
+      bool still = ctx.inputFact(scale).isConstant(1) && ctx.inputFact(scroll).isConstant(0);
       std::string uv = still ? ctx.input("uv")
                              : EmitContext::call("wg_normal_map_scroll_uv",
-                                                 {ctx.input("uv"), ctx.input(scale), ctx.input(speed), time});
+                                                 {ctx.input("uv"), ctx.input(scale), ctx.input(scroll)});
       return ctx.temporary(Type::Vec3,
                            EmitContext::call("wg_normal_map_scroll_unpack", {"texture(" + tex + ", " + uv + ")"}));
     };
-    std::string a = layer("scale_a", "speed_a"), b = layer("scale_b", "speed_b");
+    std::string a = layer("scale_a", "scroll_a"), b = layer("scale_b", "scroll_b");
     std::string n = ctx.temporary(
         Type::Vec3, EmitContext::call(ctx.options<NormalMapScrollOptions>().blendFunction, {a, b}));
     std::string ts = EmitContext::call("wg_normal_map_scroll_strength", {n, ctx.input("strength")});
@@ -122,15 +139,13 @@ NodeSpec normalMapScrollNode() {
     ctx.output(1, n);
   };
   s.eval = [](EvalContext& ctx) {
-    double time = ctx.scalar("time");
     const Value& uv = ctx.input("uv");
-    auto layer = [&](const char* scale, const char* speed) {
+    auto layer = [&](const char* scale, const char* scroll) {
       double k = ctx.scalar(scale);
-      const Value& v = ctx.input(speed);
-      return unpack(
-          ctx.sampleTexture("texture", uv[0] * k + glsl::fract(v[0] * time), uv[1] * k + glsl::fract(v[1] * time)));
+      const Value& v = ctx.input(scroll);
+      return unpack(ctx.sampleTexture("texture", uv[0] * k + v[0], uv[1] * k + v[1]));
     };
-    D3 a = layer("scale_a", "speed_a"), b = layer("scale_b", "speed_b");
+    D3 a = layer("scale_a", "scroll_a"), b = layer("scale_b", "scroll_b");
     D3 n = normalMapBlend(ctx.options<NormalMapScrollOptions>().blend, a, b);
     double k = ctx.scalar("strength");
     ctx.output(0, waves::value(tangentToWorld({n.x * k, n.y * k, n.z}, ctx)));
@@ -266,13 +281,15 @@ NodeSpec dudvDistortionNode() {
   s.outputs = {ports::fixed("offset", Type::Vec2, "the distortion, within [-strength, strength]"),
                ports::fixed("uv", Type::Vec2, "target_uv + offset"),
                ports::fixed("move", Type::Float, "the scroll fract(time * wave_speed), in [0, 1)")};
+  s.inputs.push_back(ports::derived("scroll", Type::Float, "the scroll fract(time * wave_speed)"));
   s.options = {ports::texture("texture", "builtin:dudv", "the du/dv map (rg)")};
+  // The scroll is the same for every pixel of a draw: ops of its own.
+  s.derive = [](DeriveContext& ctx) { ctx.set("scroll", deriveScroll(ctx, ctx.input("wave_speed"), ctx.input("time"))); };
   s.stages = kFragmentStage;  // target_uv defaults to the screen position
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
-    std::string move = ctx.temporary(
-        Type::Float, EmitContext::call("wg_dudv_distortion_move", {ctx.input("time"), ctx.input("wave_speed")}));
+    std::string move = ctx.input("scroll");
     std::string d = ctx.temporary(
         Type::Vec2, EmitContext::call("wg_dudv_distortion_offset",
                                       {tex, ctx.input("uv"), ctx.input("tiling"), move, ctx.input("strength")}));
@@ -281,7 +298,7 @@ NodeSpec dudvDistortionNode() {
     ctx.output(2, move);
   };
   s.eval = [](EvalContext& ctx) {
-    double move = glsl::fract(ctx.scalar("time") * ctx.scalar("wave_speed"));
+    double move = ctx.scalar("scroll");
     const Value& uv = ctx.input("uv");
     double tiling = ctx.scalar("tiling"), k = ctx.scalar("strength");
     Value t = ctx.sampleTexture("texture", uv[0] * tiling + move, uv[1] * tiling);

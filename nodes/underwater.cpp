@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "nodes/eval_math.h"
+#include "nodes/linearize_depth_call.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 #include "nodes/screen_space_reference.h"
@@ -90,6 +91,9 @@ NodeSpec underwaterNode() {
       ports::fixed("depth_light", Type::Float, Value::scalar(4.0),
                    "camera depth in metres down to which the light is full; deeper it falls as depth_light / depth"),
   };
+  for (auto& p : nearRatioPorts()) s.inputs.push_back(p);
+  // Near and near / far are the same for every pixel of a draw: a near_far_ratio op.
+  s.derive = [](DeriveContext& ctx) { deriveNearRatio(ctx, ValueRef::builtin(Builtin::CameraNearFar)); };
   s.outputs = {ports::fixed("color", Type::Vec3, "the pixel's final colour"),
                ports::fixed("case", Type::Float, "which of the deferred water article's cases shaded it: 1 to 5")};
   s.options = {ports::choice("camera", {"auto", "above", "below"}, "auto",
@@ -105,7 +109,7 @@ NodeSpec underwaterNode() {
     std::string water = ctx.temporary(Type::Vec4, "texture(" + ctx.sceneTexture("underwater") + ", " + uv + ")");
     std::string raw = ctx.temporary(Type::Float, "texture(" + ctx.sceneTexture("scene_depth") + ", " + uv + ").r");
     std::string cam = ctx.builtin(Builtin::CameraPosition);
-    std::string lin = EmitContext::call("wg_linearize_depth", {raw, ctx.builtin(Builtin::CameraNearFar)});
+    std::string lin = EmitContext::call("wg_linearize_depth_ratio", {raw, ctx.input("near"), ctx.input("ratio")});
     std::string scene = ctx.temporary(
         Type::Vec3, EmitContext::call("wg_scene_depth_position",
                                       {uv, lin, cam, ctx.builtin(Builtin::View), ctx.builtin(Builtin::Projection)}));
@@ -141,7 +145,7 @@ NodeSpec underwaterNode() {
     const Value& wp = env.worldPosition;
     in.water = Value::vector({wp[0], wp[1], wp[2], env.fragDepth[0]});
     double raw = env.sceneAt(SceneSampler::SceneDepth, in.uv)[0];
-    double lin = linearizeDepthReference(raw, env.cameraNearFar[0], env.cameraNearFar[1]);
+    double lin = linearizeDepthRatioReference(raw, ctx.scalar("near"), ctx.scalar("ratio"));
     in.camera = env.cameraPosition;
     in.scene = sceneDepthPositionReference(in.uv, lin, in.camera, env.view, env.projection);
     in.sky = raw >= 1.0 ? 1.0 : 0.0;

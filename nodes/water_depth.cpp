@@ -39,14 +39,17 @@ NodeSpec linearizeDepthNode() {
       ports::fromBuiltin("near_far", Type::Vec2, Builtin::CameraNearFar,
                          "the projection's near and far planes; far may be inf or 1e38"),
   };
+  for (auto& p : nearRatioPorts()) s.inputs.push_back(p);
   s.outputs = {ports::fixed("linear", Type::Float, "view-space depth (distance along the camera axis), <= 1e30")};
+  s.derive = [](DeriveContext& ctx) { deriveNearRatio(ctx, ctx.input("near_far")); };
+  // The facts of near_far still choose the form: the known one where they prove what
+  // wg_linearize_depth_known needs (linearize_depth_call.h).
   s.emit = [](EmitContext& ctx) {
-    ctx.output(0, EmitContext::call(linearizeDepthFunction(ctx.inputFact("depth"), ctx.inputFact("near_far")),
-                                    {ctx.input("depth"), ctx.input("near_far")}));
+    ctx.output(0, EmitContext::call(linearizeDepthRatioFunction(ctx.inputFact("depth"), ctx.inputFact("near_far")),
+                                    {ctx.input("depth"), ctx.input("near"), ctx.input("ratio")}));
   };
   s.eval = [](EvalContext& ctx) {
-    const Value& nf = ctx.input("near_far");
-    ctx.output(0, Value::scalar(linearizeDepthReference(ctx.scalar("depth"), nf[0], nf[1])));
+    ctx.output(0, Value::scalar(linearizeDepthRatioReference(ctx.scalar("depth"), ctx.scalar("near"), ctx.scalar("ratio"))));
   };
   s.tolerance = 1e-5;  // relative; near d = 1 the depth buffer's own float precision dominates
   s.hardCases = {
@@ -85,7 +88,9 @@ NodeSpec waterDepthNode() {
       ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv, "where to read the scene depth (default: this "
                                                                      "pixel)"),
       ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection, "direction from the surface to the viewer"),
+      ports::derived("camera_axis", Type::Vec3, "camera_forward.forward: the unit camera axis, zero for a degenerate view matrix"),
   };
+  for (auto& p : nearRatioPorts()) s.inputs.push_back(p);
   s.outputs = {ports::fixed("thickness", Type::Float, "water thickness in world units (>= 0, <= 1e30)"),
                ports::fixed("scene_distance", Type::Float, "linear view depth of the scene behind the water"),
                ports::fixed("surface_distance", Type::Float, "linear view depth of the water surface")};
@@ -95,20 +100,23 @@ NodeSpec waterDepthNode() {
   s.stages = kFragmentStage;
   s.isSource = true;
   s.resources = {SceneResource::SceneDepth};
+  // The per-draw parts (the camera axis, near and near / far) are ops of their own.
+  s.derive = [](DeriveContext& ctx) {
+    ctx.set("camera_axis", ctx.op("camera_forward", {}));
+    deriveNearRatio(ctx, ValueRef::builtin(Builtin::CameraNearFar));
+  };
   s.emit = [](EmitContext& ctx) {
-    std::string nf = ctx.builtin(Builtin::CameraNearFar);
+    std::string n = ctx.input("near"), r = ctx.input("ratio");
     // The scene depth is a depth texture; the surface's is gl_FragCoord.z.
     ValueFact nearFar = ctx.knownBuiltin(Builtin::CameraNearFar);
-    std::string sceneFn = linearizeDepthFunction(kDepthTextureFact, nearFar);
-    std::string surfaceFn = linearizeDepthFunction(ctx.knownBuiltin(Builtin::FragDepth), nearFar);
+    std::string sceneFn = linearizeDepthRatioFunction(kDepthTextureFact, nearFar);
+    std::string surfaceFn = linearizeDepthRatioFunction(ctx.knownBuiltin(Builtin::FragDepth), nearFar);
     std::string sceneDepth = "texture(" + ctx.sceneTexture("scene_depth") + ", " + ctx.input("screen_uv") + ").r";
-    std::string scene = ctx.temporary(Type::Float, EmitContext::call(sceneFn, {sceneDepth, nf}));
-    std::string surface =
-        ctx.temporary(Type::Float, EmitContext::call(surfaceFn, {ctx.builtin(Builtin::FragDepth), nf}));
+    std::string scene = ctx.temporary(Type::Float, EmitContext::call(sceneFn, {sceneDepth, n, r}));
+    std::string surface = ctx.temporary(Type::Float, EmitContext::call(surfaceFn, {ctx.builtin(Builtin::FragDepth), n, r}));
     std::string view = ctx.input("view");
-    std::string factor = EmitContext::call(
-        ctx.inputFact("view").normalized ? "wg_water_depth_ray_factor_unit_view" : "wg_water_depth_ray_factor",
-        {ctx.builtin(Builtin::View), view});
+    std::string unitView = ctx.inputFact("view").normalized ? view : EmitContext::call("wg_safe_normalize_vec3", {view});
+    std::string factor = EmitContext::call("wg_water_depth_ray_factor_axis", {ctx.input("camera_axis"), unitView});
     bool vertical = ctx.options<WaterDepthOptions>().vertical;
     std::string v = vertical ? "abs(" + EmitContext::call("wg_safe_normalize_vec3", {view}) + ".y)" : "1.0";
     ctx.output(0, EmitContext::call("wg_water_depth_thickness", {scene, surface, factor, v}));
@@ -117,11 +125,11 @@ NodeSpec waterDepthNode() {
   };
   s.eval = [](EvalContext& ctx) {
     const EvalEnvironment& env = ctx.environment();
-    const Value& nf = env.cameraNearFar;
-    double scene = linearizeDepthReference(env.sceneAt(SceneSampler::SceneDepth, ctx.input("screen_uv"))[0], nf[0], nf[1]);
-    double surface = linearizeDepthReference(env.fragDepth[0], nf[0], nf[1]);
+    double n = ctx.scalar("near"), r = ctx.scalar("ratio");
+    double scene = linearizeDepthRatioReference(env.sceneAt(SceneSampler::SceneDepth, ctx.input("screen_uv"))[0], n, r);
+    double surface = linearizeDepthRatioReference(env.fragDepth[0], n, r);
     const Value& view = ctx.input("view");
-    double factor = waterDepthRayFactorReference(env.view, view);
+    double factor = waterDepthRayFactorAxisReference(ctx.input("camera_axis"), view);
     double v = ctx.options<WaterDepthOptions>().vertical ? std::abs(glsl::safeNormalize(view)[1]) : 1.0;
     ctx.output(0, Value::scalar(waterDepthThicknessReference(scene, surface, factor, v)));
     ctx.output(1, Value::scalar(scene));

@@ -23,3 +23,13 @@ float wg_linearize_depth_known(float depth, vec2 near_far) {
   float r = n / max(near_far.y, n);
   return n / ((1.0 - depth) + depth * r);
 }
+
+// The two forms above with their per-draw part computed apart, once per draw
+// (near_far_ratio: n = max(near, 1e-6), r = n / max(f, n)): the same operations on the same
+// values, so the same results.
+float wg_linearize_depth_ratio(float depth, float n, float r) {
+  float d = clamp(depth, 0.0, 1.0);
+  float denom = (1.0 - d) + d * r;
+  return min(n / max(denom, n * 1e-30), 1e30);
+}
+float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }

@@ -1,9 +1,10 @@
 // Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
-// The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
-// so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
-vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
-  return uv * scale + fract(speed * time);
+// The layer's texture coordinate: uv * scale + scroll, where scroll = fract(speed * time)
+// is computed once per draw by ops of its own (the node's derived inputs). The texture
+// repeats, so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
+vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 scroll) {
+  return uv * scale + scroll;
 }
 
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
