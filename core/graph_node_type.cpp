@@ -14,7 +14,12 @@ GraphNodeType nodeTypeOf(const Graph& graph, const Registry& registry, std::stri
 
 std::optional<NodePorts> portsOfGraphNode(const Graph& graph, const Registry& registry, const Node& node) {
   GraphNodeType t = nodeTypeOf(graph, registry, node.type);
-  if (t.spec) return portsOfNode(*t.spec, writtenOptions(node));  // an expression's follow from its options
+  if (t.spec) {
+    NodePorts ports = portsOfNode(*t.spec, writtenOptions(node));  // an expression's follow from its options
+    // A derived input is the node's own (NodeSpec::derive): not a port the graph connects.
+    std::erase_if(ports.inputs, [](const PortSpec& p) { return p.derived; });
+    return ports;
+  }
   if (t.import && t.import->graph) return interfacePorts(*t.import->graph);
   return std::nullopt;
 }

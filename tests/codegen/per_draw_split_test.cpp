@@ -99,6 +99,30 @@ TEST(PerDrawSplit, NormalMapScrollShiftsTheLookupByTheFractOfSpeedTimesTime) {
   }
 }
 
+TEST(PerDrawSplit, FlowMapPhasesAndWeightsArePerDrawOps) {
+  expectDerivedPerDraw(graphJson(R"({"id": "f", "type": "flow_map"},
+                                    {"id": "c", "type": "swizzle", "inputs": {"x": "f.sample"}, "options": {"mask": "xyz"}})",
+                                 R"("fragment": {"color": "c.out"})"),
+                       "f", "flow_map",
+                       {{"progress_a", "fract"}, {"progress_b", "fract"}, {"fade_a", "one_minus"}, {"fade_b", "one_minus"}});
+}
+
+TEST(PerDrawSplit, FlowMapWeightsAreTheTriangleWavesOfTheFractOfTimeTimesSpeed) {
+  for (double t : {0.0, 0.3, 13107.0, 524288.0})
+    for (double speed : {1.0, 0.15}) {
+      std::vector<Value> out = evaluate("flow_map", {{"time", Value::scalar(t)}, {"speed", Value::scalar(speed)}});
+      double pa = glsl::fract(t * speed), pb = glsl::fract(t * speed + 0.5);
+      EXPECT_EQ(out[1][0], 1.0 - std::abs(1.0 - 2.0 * pa)) << "t " << t << " speed " << speed;
+      EXPECT_EQ(out[2][0], 1.0 - std::abs(1.0 - 2.0 * pb)) << "t " << t << " speed " << speed;
+    }
+}
+
+TEST(PerDrawSplit, SceneDepthRatioIsAPerDrawOp) {
+  expectDerivedPerDraw(graphJson(R"({"id": "s", "type": "scene_depth"})",
+                                 R"("fragment": {"alpha": "s.linear", "color": [1, 0, 0]})"),
+                       "s", "scene_depth", {{"near", "near_far_ratio"}, {"ratio", "near_far_ratio"}});
+}
+
 TEST(PerDrawSplit, LinearizeDepthRatioIsAPerDrawOp) {
   expectDerivedPerDraw(graphJson(R"({"id": "u", "type": "uv"}, {"id": "l", "type": "length", "inputs": {"x": "u.out"}},
                                     {"id": "z", "type": "linearize_depth", "inputs": {"depth": "l.out"}})",

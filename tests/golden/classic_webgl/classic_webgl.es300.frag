@@ -33,6 +33,16 @@ uniform highp sampler2D u_refraction;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// camera_forward: the camera's forward axis from the view matrix.
+
+// -(row 2) of the view matrix (column-major: view[col][2]), safe-normalised. A degenerate
+// view matrix (|row 2|^2 < 0.5, e.g. all zero) gives the zero vector, which its readers
+// (wg_water_depth_ray_factor_axis) take as "no axis"; a rigid one has |row 2| = 1.
+vec3 wg_camera_forward(mat4 view) {
+  vec3 f = -vec3(view[0][2], view[1][2], view[2][2]);
+  return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
+}
+
 // Native pow where the compiler proved x >= 0 and y > 0 for every input the shader
 // receives (value facts: e.g. a clamped cosine raised to a parameter with min > 0). GLSL
 // defines pow there (only x < 0, and x = 0 with y <= 0, are undefined) and it equals
@@ -46,11 +56,9 @@ float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(
 // The classic WebGL water renderer's du/dv distortion: a scrolling du/dv map turned into a small UV offset that
 // ripples the refraction and reflection lookups.
 
-// The scroll: fract(time * speed), wrapped because the texture repeats (finite and exact
-// in period at t = 524288 s).
-float wg_dudv_distortion_move(float time, float speed) { return fract(time * speed); }
-
-// (dudv(uv * tiling + (move, 0)).rg * 2 - 1) * strength.
+// (dudv(uv * tiling + (move, 0)).rg * 2 - 1) * strength. The scroll move = fract(time *
+// speed), wrapped because the texture repeats, is computed once per draw by ops of its own
+// (the node's derived input `scroll`).
 vec2 wg_dudv_distortion_offset(sampler2D dudv, vec2 uv, float tiling, float move, float strength) {
   return (texture(dudv, uv * tiling + vec2(move, 0.0)).xy * 2.0 - 1.0) * strength;
 }
@@ -66,23 +74,18 @@ float wg_cos_incidence(vec3 n, vec3 v) { return clamp(dot(n, v), 0.0, 1.0); }
 // [0, 1], so native pow is defined and equals the safe one.
 float wg_fresnel_power_cos_positive(float cosi, float strength) { return 1.0 - pow(cosi, strength); }
 
-// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
-// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
-// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
-// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
-// wg_linearize_depth is dead, and the values are the same.
-float wg_linearize_depth_known(float depth, vec2 near_far) {
-  float n = near_far.x;
-  float r = n / max(near_far.y, n);
-  return n / ((1.0 - depth) + depth * r);
-}
+float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }
+
+// r = n / max(f, n) for n >= 1e-6: in [0, 1]; f = inf gives 0, f <= n gives 1.
+float wg_near_far_ratio(float n, float far_plane) { return n / max(far_plane, n); }
 
 // Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
-// The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
-// so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
-vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
-  return uv * scale + fract(speed * time);
+// The layer's texture coordinate: uv * scale + scroll, where scroll = fract(speed * time)
+// is computed once per draw by ops of its own (the node's derived inputs). The texture
+// repeats, so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
+vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 scroll) {
+  return uv * scale + scroll;
 }
 
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
@@ -114,21 +117,25 @@ float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float 
 // the screen, no stretched border texels).
 vec2 wg_scene_color_uv(vec2 uv, vec2 offset) { return clamp(uv + offset, vec2(0.0), vec2(1.0)); }
 
+// water_depth: how much water lies between the surface and the scene behind it.
+
+// The factor that turns a view-depth difference into a distance along the view ray:
+// 1 / cos(ray, camera forward), from the unit camera axis (camera_forward, computed once
+// per draw: -(row 2) of the view matrix, normalised) and the unit direction v towards the
+// viewer. The cosine is floored at 0.1 (rays up to 84 degrees off-axis); a degenerate view
+// matrix, whose axis camera_forward gives as zero, counts as a ray along the axis (factor
+// 1). Chosen with ?: between computed values, so it compiles to a select, not branches.
+float wg_water_depth_ray_factor_axis(vec3 axis, vec3 v) {
+  float factor = 1.0 / max(dot(-v, axis), 0.1);
+  return dot(axis, axis) < 0.25 ? 1.0 : factor;
+}
+
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
-}
-
-// The ray factor where v is proven normalized (value facts: the safe-normalised view
-// direction): re-normalising it changes nothing, so only the camera axis is normalised.
-float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-v, wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -154,32 +161,38 @@ void main() {
   vec3 b_normal = wg_safe_normalize_vec3(v_normal);
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   vec2 b_screen_uv = gl_FragCoord.xy / u_viewport_size;
-  float n0_dudv_t0 = wg_dudv_distortion_move(u_time, p_wave_speed);
-  vec2 n0_dudv_t1 = wg_dudv_distortion_offset(t0_dudv, v_uv, 4.0, n0_dudv_t0, p_distortion);
-  vec2 n0_dudv_uv = (b_screen_uv + n0_dudv_t1);
-  float n1_normal_t0 = u_time;
-  vec3 n1_normal_t1 = wg_normal_map_scroll_unpack(texture(t1_water_normal, n0_dudv_uv));
-  vec3 n1_normal_t2 = wg_normal_map_scroll_unpack(texture(t1_water_normal, wg_normal_map_scroll_uv(n0_dudv_uv, 0.5, vec2(0.01, -0.02), n1_normal_t0)));
-  vec3 n1_normal_t3 = wg_normal_map_scroll_add(n1_normal_t1, n1_normal_t2);
-  vec3 n1_normal_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n1_normal_t3, 0.6), b_normal);
-  float n2_fresnel_t0 = wg_cos_incidence(n1_normal_normal, b_view_direction);
-  float n2_fresnel_t1 = wg_fresnel_power_cos_positive(n2_fresnel_t0, p_fresnel_strength);
-  vec2 n3_refraction_t0 = wg_scene_color_uv(b_screen_uv, n0_dudv_t1);
-  vec3 n3_refraction_color = texture(u_refraction, n3_refraction_t0).rgb;
-  vec2 n4_reflection_t0 = wg_scene_color_uv(b_screen_uv, n0_dudv_t1);
-  vec3 n4_reflection_color = texture(u_reflection, n4_reflection_t0).rgb;
-  float n5_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n5_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
-  float n5_depth_thickness = wg_water_depth_thickness(n5_depth_t0, n5_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
-  float n6_shore_fade = wg_remap_clamped_nonempty_float(n5_depth_thickness, 0.0, p_edge_softness, 0.0, 1.0);
-  float n7_highlight_strength = (p_reflectivity * n6_shore_fade);
-  float n8_tint_t0 = wg_depth_tint_linear_floored(n5_depth_thickness, p_tint_depth);
-  vec3 n8_tint_color = mix(p_shallow_color, p_deep_color, n8_tint_t0);
-  vec3 n9_tinted = mix(n3_refraction_color, n8_tint_color, vec3(p_tint_strength));
-  vec3 n10_surface = mix(n9_tinted, n4_reflection_color, vec3(n2_fresnel_t1));
-  float n12_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n1_normal_normal, b_view_direction, u_sun_direction), p_shine_damper);
-  float n12_phong_t1 = wg_phong_specular_lobe_unit(n1_normal_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
-  float n13_highlight = (n12_phong_t0 * n7_highlight_strength);
-  vec3 n14_color = (n10_surface + vec3(n13_highlight));
-  o_color = vec4(n14_color, 1.0);
+  float n0_dudv = (p_wave_speed * u_time);
+  float n1_dudv = fract(n0_dudv);
+  vec2 n2_dudv_t0 = wg_dudv_distortion_offset(t0_dudv, v_uv, 4.0, n1_dudv, p_distortion);
+  vec2 n2_dudv_uv = (b_screen_uv + n2_dudv_t0);
+  vec2 n3_normal = (vec2(0.01, -0.02) * vec2(u_time));
+  vec2 n4_normal = fract(n3_normal);
+  vec3 n5_normal_t0 = wg_normal_map_scroll_unpack(texture(t1_water_normal, n2_dudv_uv));
+  vec3 n5_normal_t1 = wg_normal_map_scroll_unpack(texture(t1_water_normal, wg_normal_map_scroll_uv(n2_dudv_uv, 0.5, n4_normal)));
+  vec3 n5_normal_t2 = wg_normal_map_scroll_add(n5_normal_t0, n5_normal_t1);
+  vec3 n5_normal_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n5_normal_t2, 0.6), b_normal);
+  float n6_fresnel_t0 = wg_cos_incidence(n5_normal_normal, b_view_direction);
+  float n6_fresnel_t1 = wg_fresnel_power_cos_positive(n6_fresnel_t0, p_fresnel_strength);
+  vec2 n7_refraction_t0 = wg_scene_color_uv(b_screen_uv, n2_dudv_t0);
+  vec3 n7_refraction_color = texture(u_refraction, n7_refraction_t0).rgb;
+  vec2 n8_reflection_t0 = wg_scene_color_uv(b_screen_uv, n2_dudv_t0);
+  vec3 n8_reflection_color = texture(u_reflection, n8_reflection_t0).rgb;
+  vec3 n9_depth = wg_camera_forward(u_view);
+  vec2 n10_depth_t0 = u_camera_near_far;
+  float n10_depth_t1 = n10_depth_t0.x;
+  float n10_depth_ratio = wg_near_far_ratio(n10_depth_t1, n10_depth_t0.y);
+  float n11_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n10_depth_t1, n10_depth_ratio);
+  float n11_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n10_depth_t1, n10_depth_ratio);
+  float n11_depth_thickness = wg_water_depth_thickness(n11_depth_t0, n11_depth_t1, wg_water_depth_ray_factor_axis(n9_depth, b_view_direction), 1.0);
+  float n12_shore_fade = wg_remap_clamped_nonempty_float(n11_depth_thickness, 0.0, p_edge_softness, 0.0, 1.0);
+  float n13_highlight_strength = (p_reflectivity * n12_shore_fade);
+  float n14_tint_t0 = wg_depth_tint_linear_floored(n11_depth_thickness, p_tint_depth);
+  vec3 n14_tint_color = mix(p_shallow_color, p_deep_color, n14_tint_t0);
+  vec3 n15_tinted = mix(n7_refraction_color, n14_tint_color, vec3(p_tint_strength));
+  vec3 n16_surface = mix(n15_tinted, n8_reflection_color, vec3(n6_fresnel_t1));
+  float n18_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n5_normal_normal, b_view_direction, u_sun_direction), p_shine_damper);
+  float n18_phong_t1 = wg_phong_specular_lobe_unit(n5_normal_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
+  float n19_highlight = (n18_phong_t0 * n13_highlight_strength);
+  vec3 n20_color = (n16_surface + vec3(n19_highlight));
+  o_color = vec4(n20_color, 1.0);
 }

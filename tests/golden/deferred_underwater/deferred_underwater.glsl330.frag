@@ -56,6 +56,16 @@ float wg_coastal_foam_specular_cubic(float foam, float k) {
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// camera_forward: the camera's forward axis from the view matrix.
+
+// -(row 2) of the view matrix (column-major: view[col][2]), safe-normalised. A degenerate
+// view matrix (|row 2|^2 < 0.5, e.g. all zero) gives the zero vector, which its readers
+// (wg_water_depth_ray_factor_axis) take as "no axis"; a rigid one has |row 2| = 1.
+vec3 wg_camera_forward(mat4 view) {
+  vec3 f = -vec3(view[0][2], view[1][2], view[2][2]);
+  return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
+}
+
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
 // Guarded functions here compute both sides first and choose with ?: between plain values:
@@ -161,16 +171,19 @@ float wg_linearize_depth(float depth, vec2 near_far) {
   return min(n / max(denom, n * 1e-30), 1e30);
 }
 
-// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
-// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
-// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
-// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
-// wg_linearize_depth is dead, and the values are the same.
-float wg_linearize_depth_known(float depth, vec2 near_far) {
-  float n = near_far.x;
-  float r = n / max(near_far.y, n);
-  return n / ((1.0 - depth) + depth * r);
+// The two forms above with their per-draw part computed apart, once per draw
+// (near_far_ratio: n = max(near, 1e-6), r = n / max(f, n)): the same operations on the same
+// values, so the same results.
+float wg_linearize_depth_ratio(float depth, float n, float r) {
+  float d = clamp(depth, 0.0, 1.0);
+  float denom = (1.0 - d) + d * r;
+  return min(n / max(denom, n * 1e-30), 1e30);
 }
+
+float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }
+
+// r = n / max(f, n) for n >= 1e-6: in [0, 1]; f = inf gives 0, f <= n gives 1.
+float wg_near_far_ratio(float n, float far_plane) { return n / max(far_plane, n); }
 
 // A normal from a height texture by central differences (the deferred water article's wave normals).
 
@@ -480,21 +493,25 @@ float wg_crest_foam(float height, vec3 normal, vec2 xz, vec2 drift, float thresh
   return wg_safe_pow_float(clamp(base * mask * intensity, 0.0, 1.0), 1.0 / max(sharpness, 1e-3));
 }
 
+// water_depth: how much water lies between the surface and the scene behind it.
+
+// The factor that turns a view-depth difference into a distance along the view ray:
+// 1 / cos(ray, camera forward), from the unit camera axis (camera_forward, computed once
+// per draw: -(row 2) of the view matrix, normalised) and the unit direction v towards the
+// viewer. The cosine is floored at 0.1 (rays up to 84 degrees off-axis); a degenerate view
+// matrix, whose axis camera_forward gives as zero, counts as a ray along the axis (factor
+// 1). Chosen with ?: between computed values, so it compiles to a select, not branches.
+float wg_water_depth_ray_factor_axis(vec3 axis, vec3 v) {
+  float factor = 1.0 / max(dot(-v, axis), 0.1);
+  return dot(axis, axis) < 0.25 ? 1.0 : factor;
+}
+
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
-}
-
-// The ray factor where v is proven normalized (value facts: the safe-normalised view
-// direction): re-normalising it changes nothing, so only the camera axis is normalised.
-float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-v, wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -558,26 +575,30 @@ void main() {
   float n14_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe(n4_detail_normal, b_view_direction, u_sun_direction), 120.0);
   float n14_phong_t1 = wg_phong_specular_lobe(n4_detail_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
   vec3 n14_phong_color = (n14_phong_t0 * vec3(1.0) + n14_phong_t1 * vec3(0.3, 0.35, 0.4));
-  float n15_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n15_depth_t1 = wg_linearize_depth_known(b_water_surface.w, u_camera_near_far);
-  float n15_depth_thickness = wg_water_depth_thickness(n15_depth_t0, n15_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), abs(wg_safe_normalize_vec3(b_view_direction).y));
-  float n16_coast_t0 = clamp(wg_coastal_foam_amount(n15_depth_thickness, p_foam_depth, 1.0, n5_crest) * texture(t1_foam, wg_coastal_foam_uv(v_world_position, n4_detail_normal, 0.1, 0.05)).r, 0.0, 1.0);
-  float n16_coast_specular_scale = wg_coastal_foam_specular_cubic(n16_coast_t0, 1.0);
-  vec3 n17_specular = (n14_phong_color * vec3(n16_coast_specular_scale));
-  vec3 n18_lit = (n12_reflected + n17_specular);
-  vec3 n19_surface = mix(n18_lit, vec3(0.9, 0.95, 1.0), vec3(n16_coast_t0));
-  float n20_scene_t0 = texture(u_scene_depth, b_screen_uv).r;
-  float n20_scene_t1 = wg_linearize_depth_known(n20_scene_t0, u_camera_near_far);
-  vec3 n20_scene_position = wg_scene_depth_position(b_screen_uv, n20_scene_t1, u_camera_position, u_view, u_projection);
-  vec2 n21_caustics_t0 = wg_texture_caustics_uv(n20_scene_position, 0.15);
-  vec2 n21_caustics_t1 = mod(u_time * vec2(0.02, 0.01), 1.0);
-  float n21_caustics_t2 = texture(t0_height, n21_caustics_t0 + n21_caustics_t1).r;
-  float n21_caustics_t3 = texture(t0_height, 1.5 * n21_caustics_t0 - n21_caustics_t1).r;
-  float n21_caustics = (0.8 * wg_texture_caustics_shape(n21_caustics_t2, n21_caustics_t3));
-  vec4 n22_water_t0 = texture(u_water_surface, b_screen_uv);
-  float n22_water_t1 = texture(u_scene_depth, b_screen_uv).r;
-  vec3 n22_water_t2 = wg_scene_depth_position(b_screen_uv, wg_linearize_depth(n22_water_t1, u_camera_near_far), u_camera_position, u_view, u_projection);
-  vec4 n22_water_t3 = (u_camera_position.y < 0.0 ? wg_underwater_from_below(u_scene_color, b_screen_uv, n22_water_t0, n22_water_t2, (n22_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n10_mirror, n9_below_transmittance, p_water_color, 0.35, p_sigma, 0.03, n21_caustics, vec3(1.0), 4.0, 0.0) : wg_underwater_from_above(u_scene_color, b_screen_uv, n22_water_t0, n22_water_t2, (n22_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n19_surface, n11_fresnel_transmittance, p_water_color, 0.35, p_sigma, 0.03, n21_caustics, vec3(1.0), p_haze_distance, vec3(0.7, 0.8, 0.9), 0.0));
-  vec3 n22_water_color = n22_water_t3.rgb;
-  o_color = vec4(n22_water_color, 1.0);
+  vec3 n15_depth = wg_camera_forward(u_view);
+  vec2 n16_depth_t0 = u_camera_near_far;
+  float n16_depth_t1 = n16_depth_t0.x;
+  float n16_depth_ratio = wg_near_far_ratio(n16_depth_t1, n16_depth_t0.y);
+  float n17_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n16_depth_t1, n16_depth_ratio);
+  float n17_depth_t1 = wg_linearize_depth_ratio_known(b_water_surface.w, n16_depth_t1, n16_depth_ratio);
+  float n17_depth_thickness = wg_water_depth_thickness(n17_depth_t0, n17_depth_t1, wg_water_depth_ray_factor_axis(n15_depth, b_view_direction), abs(wg_safe_normalize_vec3(b_view_direction).y));
+  float n18_coast_t0 = clamp(wg_coastal_foam_amount(n17_depth_thickness, p_foam_depth, 1.0, n5_crest) * texture(t1_foam, wg_coastal_foam_uv(v_world_position, n4_detail_normal, 0.1, 0.05)).r, 0.0, 1.0);
+  float n18_coast_specular_scale = wg_coastal_foam_specular_cubic(n18_coast_t0, 1.0);
+  vec3 n19_specular = (n14_phong_color * vec3(n18_coast_specular_scale));
+  vec3 n20_lit = (n12_reflected + n19_specular);
+  vec3 n21_surface = mix(n20_lit, vec3(0.9, 0.95, 1.0), vec3(n18_coast_t0));
+  float n22_scene_t0 = texture(u_scene_depth, b_screen_uv).r;
+  float n22_scene_t1 = wg_linearize_depth_ratio_known(n22_scene_t0, n16_depth_t1, n16_depth_ratio);
+  vec3 n22_scene_position = wg_scene_depth_position(b_screen_uv, n22_scene_t1, u_camera_position, u_view, u_projection);
+  vec2 n23_caustics_t0 = wg_texture_caustics_uv(n22_scene_position, 0.15);
+  vec2 n23_caustics_t1 = mod(u_time * vec2(0.02, 0.01), 1.0);
+  float n23_caustics_t2 = texture(t0_height, n23_caustics_t0 + n23_caustics_t1).r;
+  float n23_caustics_t3 = texture(t0_height, 1.5 * n23_caustics_t0 - n23_caustics_t1).r;
+  float n23_caustics = (0.8 * wg_texture_caustics_shape(n23_caustics_t2, n23_caustics_t3));
+  vec4 n24_water_t0 = texture(u_water_surface, b_screen_uv);
+  float n24_water_t1 = texture(u_scene_depth, b_screen_uv).r;
+  vec3 n24_water_t2 = wg_scene_depth_position(b_screen_uv, wg_linearize_depth_ratio(n24_water_t1, n16_depth_t1, n16_depth_ratio), u_camera_position, u_view, u_projection);
+  vec4 n24_water_t3 = (u_camera_position.y < 0.0 ? wg_underwater_from_below(u_scene_color, b_screen_uv, n24_water_t0, n24_water_t2, (n24_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n10_mirror, n9_below_transmittance, p_water_color, 0.35, p_sigma, 0.03, n23_caustics, vec3(1.0), 4.0, 0.0) : wg_underwater_from_above(u_scene_color, b_screen_uv, n24_water_t0, n24_water_t2, (n24_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n21_surface, n11_fresnel_transmittance, p_water_color, 0.35, p_sigma, 0.03, n23_caustics, vec3(1.0), p_haze_distance, vec3(0.7, 0.8, 0.9), 0.0));
+  vec3 n24_water_color = n24_water_t3.rgb;
+  o_color = vec4(n24_water_color, 1.0);
 }

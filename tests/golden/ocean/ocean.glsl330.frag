@@ -122,10 +122,11 @@ float wg_hash_unit_float(uint h) { return float(h >> 8u) * 5.9604644775390625e-8
 
 // Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
-// The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
-// so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
-vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
-  return uv * scale + fract(speed * time);
+// The layer's texture coordinate: uv * scale + scroll, where scroll = fract(speed * time)
+// is computed once per draw by ops of its own (the node's derived inputs). The texture
+// repeats, so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
+vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 scroll) {
+  return uv * scale + scroll;
 }
 
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
@@ -230,27 +231,30 @@ vec3 wg_waves_tangent_to_world_flat(vec3 ts, vec3 n) {
 void main() {
   vec3 b_normal = wg_safe_normalize_vec3(v_normal);
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
-  float n3_detail_t0 = u_time;
-  vec3 n3_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 6.0, vec2(0.05, 0.03), n3_detail_t0)));
-  vec3 n3_detail_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 11.0, vec2(-0.03, 0.07), n3_detail_t0)));
-  vec3 n3_detail_t3 = wg_normal_map_scroll_add(n3_detail_t1, n3_detail_t2);
-  vec3 n3_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_detail_t3, 0.3), b_normal);
-  float n4_body_fresnel_t0 = wg_cos_incidence(n3_detail_normal, b_view_direction);
-  float n4_body_fresnel_t1 = wg_fresnel_schlick(n4_body_fresnel_t0, 0.02);
-  vec3 n5_body_sky_t0 = wg_reflect_dir(n3_detail_normal, b_view_direction);
-  vec3 n5_body_sky_color = texture(u_environment, n5_body_sky_t0).rgb;
-  vec3 n6_body_blend = mix(p_deep_color, n5_body_sky_color, vec3(n4_body_fresnel_t1));
-  vec4 n8_ggx_t0 = wg_ggx_specular(n3_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
-  float n8_ggx_t1 = (n8_ggx_t0.x * n8_ggx_t0.w);
-  vec3 n8_ggx_color = (vec3(1.0, 0.92, 0.8) * n8_ggx_t1);
-  float n10_p_split_y = v_world_position.y;
-  float n11_sss_t0 = (p_sss_strength * wg_subsurface_intensity_unit(n3_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n10_p_split_y));
-  vec3 n11_sss_color = (p_sss_color * n11_sss_t0);
-  vec3 n12_glow = (n6_body_blend + n11_sss_color);
-  vec3 n13_lit = (n12_glow + n8_ggx_color);
-  float n14_height = wg_remap_clamped_nonempty_float(n10_p_split_y, -1.2, 1.2, 0.0, 1.0);
-  vec2 n15_crest_t0 = vec2(u_phase0, u_phase1) * 40.743664;
-  float n15_crest = wg_crest_foam(n14_height, b_normal, v_world_position.xz, n15_crest_t0, p_foam_threshold, 0.7, 0.4, 3.0);
-  vec3 n16_color = mix(n13_lit, vec3(0.92, 0.95, 0.97), vec3(n15_crest));
-  o_color = vec4(n16_color, 1.0);
+  vec2 n3_detail = (vec2(0.05, 0.03) * vec2(u_time));
+  vec2 n4_detail = fract(n3_detail);
+  vec2 n5_detail = (vec2(-0.03, 0.07) * vec2(u_time));
+  vec2 n6_detail = fract(n5_detail);
+  vec3 n7_detail_t0 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 6.0, n4_detail)));
+  vec3 n7_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 11.0, n6_detail)));
+  vec3 n7_detail_t2 = wg_normal_map_scroll_add(n7_detail_t0, n7_detail_t1);
+  vec3 n7_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n7_detail_t2, 0.3), b_normal);
+  float n8_body_fresnel_t0 = wg_cos_incidence(n7_detail_normal, b_view_direction);
+  float n8_body_fresnel_t1 = wg_fresnel_schlick(n8_body_fresnel_t0, 0.02);
+  vec3 n9_body_sky_t0 = wg_reflect_dir(n7_detail_normal, b_view_direction);
+  vec3 n9_body_sky_color = texture(u_environment, n9_body_sky_t0).rgb;
+  vec3 n10_body_blend = mix(p_deep_color, n9_body_sky_color, vec3(n8_body_fresnel_t1));
+  vec4 n12_ggx_t0 = wg_ggx_specular(n7_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
+  float n12_ggx_t1 = (n12_ggx_t0.x * n12_ggx_t0.w);
+  vec3 n12_ggx_color = (vec3(1.0, 0.92, 0.8) * n12_ggx_t1);
+  float n14_p_split_y = v_world_position.y;
+  float n15_sss_t0 = (p_sss_strength * wg_subsurface_intensity_unit(n7_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n14_p_split_y));
+  vec3 n15_sss_color = (p_sss_color * n15_sss_t0);
+  vec3 n16_glow = (n10_body_blend + n15_sss_color);
+  vec3 n17_lit = (n16_glow + n12_ggx_color);
+  float n18_height = wg_remap_clamped_nonempty_float(n14_p_split_y, -1.2, 1.2, 0.0, 1.0);
+  vec2 n19_crest_t0 = vec2(u_phase0, u_phase1) * 40.743664;
+  float n19_crest = wg_crest_foam(n18_height, b_normal, v_world_position.xz, n19_crest_t0, p_foam_threshold, 0.7, 0.4, 3.0);
+  vec3 n20_color = mix(n17_lit, vec3(0.92, 0.95, 0.97), vec3(n19_crest));
+  o_color = vec4(n20_color, 1.0);
 }

@@ -31,6 +31,16 @@ uniform highp samplerCube u_environment;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// camera_forward: the camera's forward axis from the view matrix.
+
+// -(row 2) of the view matrix (column-major: view[col][2]), safe-normalised. A degenerate
+// view matrix (|row 2|^2 < 0.5, e.g. all zero) gives the zero vector, which its readers
+// (wg_water_depth_ray_factor_axis) take as "no axis"; a rigid one has |row 2| = 1.
+vec3 wg_camera_forward(mat4 view) {
+  vec3 f = -vec3(view[0][2], view[1][2], view[2][2]);
+  return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
+}
+
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
 // Guarded functions here compute both sides first and choose with ?: between plain values:
@@ -98,16 +108,10 @@ float wg_lambert(vec3 n, vec3 l) {
   return clamp(dot(wg_safe_normalize_vec3(n), wg_safe_normalize_vec3(l)), 0.0, 1.0);
 }
 
-// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
-// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
-// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
-// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
-// wg_linearize_depth is dead, and the values are the same.
-float wg_linearize_depth_known(float depth, vec2 near_far) {
-  float n = near_far.x;
-  float r = n / max(near_far.y, n);
-  return n / ((1.0 - depth) + depth * r);
-}
+float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }
+
+// r = n / max(f, n) for n >= 1e-6: in [0, 1]; f = inf gives 0, f <= n gives 1.
+float wg_near_far_ratio(float n, float far_plane) { return n / max(far_plane, n); }
 
 // reflect_dir: the mirror direction of the view ray about the surface normal, for
 // reflection look-ups (cube map, sky colour, screen-space reflection).
@@ -224,21 +228,25 @@ float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated
   return m * m * m;
 }
 
+// water_depth: how much water lies between the surface and the scene behind it.
+
+// The factor that turns a view-depth difference into a distance along the view ray:
+// 1 / cos(ray, camera forward), from the unit camera axis (camera_forward, computed once
+// per draw: -(row 2) of the view matrix, normalised) and the unit direction v towards the
+// viewer. The cosine is floored at 0.1 (rays up to 84 degrees off-axis); a degenerate view
+// matrix, whose axis camera_forward gives as zero, counts as a ray along the axis (factor
+// 1). Chosen with ?: between computed values, so it compiles to a select, not branches.
+float wg_water_depth_ray_factor_axis(vec3 axis, vec3 v) {
+  float factor = 1.0 / max(dot(-v, axis), 0.1);
+  return dot(axis, axis) < 0.25 ? 1.0 : factor;
+}
+
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
-}
-
-// The ray factor where v is proven normalized (value facts: the safe-normalised view
-// direction): re-normalising it changes nothing, so only the camera axis is normalised.
-float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-v, wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 void main() {
@@ -252,31 +260,35 @@ void main() {
   vec2 n2_offset = (n1_ripple_xz * vec2(0.05));
   vec2 n4_caustics_shifted = (b_screen_uv + n2_offset);
   vec2 n5_caustics_uv = clamp(n4_caustics_shifted, 0.0, 1.0);
-  float n6_caustics_floor_t0 = texture(u_scene_depth, n5_caustics_uv).r;
-  float n6_caustics_floor_t1 = wg_linearize_depth_known(n6_caustics_floor_t0, u_camera_near_far);
-  vec3 n6_caustics_floor_position = wg_scene_depth_position(n5_caustics_uv, n6_caustics_floor_t1, u_camera_position, u_view, u_projection);
-  vec2 n7_caustics_floor_xz = n6_caustics_floor_position.xz;
-  vec2 n8_caustics_thin_t0 = (n7_caustics_floor_xz * 0.8);
-  float n8_caustics_thin_t1 = wg_voronoi_caustics_layer(n8_caustics_thin_t0, 1.0, u_phase6, true, true);
-  float n8_caustics_thin_t2 = wg_voronoi_caustics_layer((n8_caustics_thin_t0 * 1.3 + 5.0), 1.0, u_phase7, true, true);
-  float n8_caustics_thin = (p_caustics_strength * min(n8_caustics_thin_t1, n8_caustics_thin_t2));
-  vec2 n9_refraction_t0 = wg_scene_color_uv(b_screen_uv, n2_offset);
-  vec3 n9_refraction_color = texture(u_scene_color, n9_refraction_t0).rgb;
-  vec3 n10_lit_floor = (n9_refraction_color * vec3(n8_caustics_thin));
-  vec3 n11_floor_color = (n9_refraction_color + n10_lit_floor);
-  float n12_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n12_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
-  float n12_depth_thickness = wg_water_depth_thickness(n12_depth_t0, n12_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
-  float n13_tint_t0 = wg_depth_tint_linear_floored(n12_depth_thickness, p_tint_depth);
-  vec3 n13_tint_color = mix(vec3(1.0), p_tint_color, n13_tint_t0);
-  vec3 n14_body = (n11_floor_color * n13_tint_color);
-  float n15_surface_fresnel_t0 = wg_cos_incidence(n0_ripples_normal, b_view_direction);
-  float n15_surface_fresnel_t1 = wg_fresnel_schlick(n15_surface_fresnel_t0, 0.02);
-  vec3 n16_surface_sky_t0 = wg_reflect_dir(n0_ripples_normal, b_view_direction);
-  vec3 n16_surface_sky_color = texture(u_environment, n16_surface_sky_t0).rgb;
-  vec3 n17_surface_blend = mix(n14_body, n16_surface_sky_color, vec3(n15_surface_fresnel_t1));
-  float n19_glint_t0 = (1.5 * wg_blinn_phong_specular(n0_ripples_normal, b_view_direction, u_sun_direction, 400.0));
-  float n19_glint_t1 = wg_lambert(n0_ripples_normal, u_sun_direction);
-  vec3 n20_color = (n17_surface_blend + vec3(n19_glint_t0));
-  o_color = vec4(n20_color, 1.0);
+  vec2 n6_caustics_floor_t0 = u_camera_near_far;
+  float n6_caustics_floor_t1 = n6_caustics_floor_t0.x;
+  float n6_caustics_floor_ratio = wg_near_far_ratio(n6_caustics_floor_t1, n6_caustics_floor_t0.y);
+  float n7_caustics_floor_t0 = texture(u_scene_depth, n5_caustics_uv).r;
+  float n7_caustics_floor_t1 = wg_linearize_depth_ratio_known(n7_caustics_floor_t0, n6_caustics_floor_t1, n6_caustics_floor_ratio);
+  vec3 n7_caustics_floor_position = wg_scene_depth_position(n5_caustics_uv, n7_caustics_floor_t1, u_camera_position, u_view, u_projection);
+  vec2 n8_caustics_floor_xz = n7_caustics_floor_position.xz;
+  vec2 n9_caustics_thin_t0 = (n8_caustics_floor_xz * 0.8);
+  float n9_caustics_thin_t1 = wg_voronoi_caustics_layer(n9_caustics_thin_t0, 1.0, u_phase6, true, true);
+  float n9_caustics_thin_t2 = wg_voronoi_caustics_layer((n9_caustics_thin_t0 * 1.3 + 5.0), 1.0, u_phase7, true, true);
+  float n9_caustics_thin = (p_caustics_strength * min(n9_caustics_thin_t1, n9_caustics_thin_t2));
+  vec2 n10_refraction_t0 = wg_scene_color_uv(b_screen_uv, n2_offset);
+  vec3 n10_refraction_color = texture(u_scene_color, n10_refraction_t0).rgb;
+  vec3 n11_lit_floor = (n10_refraction_color * vec3(n9_caustics_thin));
+  vec3 n12_floor_color = (n10_refraction_color + n11_lit_floor);
+  vec3 n13_depth = wg_camera_forward(u_view);
+  float n14_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n6_caustics_floor_t1, n6_caustics_floor_ratio);
+  float n14_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n6_caustics_floor_t1, n6_caustics_floor_ratio);
+  float n14_depth_thickness = wg_water_depth_thickness(n14_depth_t0, n14_depth_t1, wg_water_depth_ray_factor_axis(n13_depth, b_view_direction), 1.0);
+  float n15_tint_t0 = wg_depth_tint_linear_floored(n14_depth_thickness, p_tint_depth);
+  vec3 n15_tint_color = mix(vec3(1.0), p_tint_color, n15_tint_t0);
+  vec3 n16_body = (n12_floor_color * n15_tint_color);
+  float n17_surface_fresnel_t0 = wg_cos_incidence(n0_ripples_normal, b_view_direction);
+  float n17_surface_fresnel_t1 = wg_fresnel_schlick(n17_surface_fresnel_t0, 0.02);
+  vec3 n18_surface_sky_t0 = wg_reflect_dir(n0_ripples_normal, b_view_direction);
+  vec3 n18_surface_sky_color = texture(u_environment, n18_surface_sky_t0).rgb;
+  vec3 n19_surface_blend = mix(n16_body, n18_surface_sky_color, vec3(n17_surface_fresnel_t1));
+  float n21_glint_t0 = (1.5 * wg_blinn_phong_specular(n0_ripples_normal, b_view_direction, u_sun_direction, 400.0));
+  float n21_glint_t1 = wg_lambert(n0_ripples_normal, u_sun_direction);
+  vec3 n22_color = (n19_surface_blend + vec3(n21_glint_t0));
+  o_color = vec4(n22_color, 1.0);
 }

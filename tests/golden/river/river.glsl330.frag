@@ -27,6 +27,16 @@ uniform samplerCube u_environment;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// camera_forward: the camera's forward axis from the view matrix.
+
+// -(row 2) of the view matrix (column-major: view[col][2]), safe-normalised. A degenerate
+// view matrix (|row 2|^2 < 0.5, e.g. all zero) gives the zero vector, which its readers
+// (wg_water_depth_ray_factor_axis) take as "no axis"; a rigid one has |row 2| = 1.
+vec3 wg_camera_forward(mat4 view) {
+  vec3 f = -vec3(view[0][2], view[1][2], view[2][2]);
+  return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
+}
+
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -59,12 +69,10 @@ float wg_edge_foam(float tex, float mask, float cutoff, float softness, float st
 // flow vector in two phases half a cycle apart, cross-faded by triangle waves so the
 // reset of each phase is never seen.
 
-// A phase's progress in [0, 1): fract(time * speed + offset).
-float wg_flow_map_progress(float time, float speed, float offset) { return fract(time * speed + offset); }
-
-// Triangle-wave weight 1 - |1 - 2 progress|: 0 at the reset, 1 half-way. The weights of
-// two phases half a cycle apart sum to 1.
-float wg_flow_map_weight(float progress) { return 1.0 - abs(1.0 - 2.0 * progress); }
+// A phase's progress fract(time * speed + offset), in [0, 1), and its triangle-wave weight
+// 1 - |1 - 2 progress| (0 at the reset, 1 half-way; two phases half a cycle apart sum to
+// 1) are the same for every pixel of a draw: the node computes them by math ops of their
+// own (its derived inputs), and the shader reads them.
 
 // The flow vector of a flow texture: xy * 2 - 1.
 vec2 wg_flow_map_decode(vec4 texel) { return texel.xy * 2.0 - 1.0; }
@@ -83,16 +91,10 @@ float wg_fresnel_schlick(float cosi, float f0) {
   return f0 + (1.0 - f0) * m2 * m2 * m;
 }
 
-// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
-// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
-// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
-// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
-// wg_linearize_depth is dead, and the values are the same.
-float wg_linearize_depth_known(float depth, vec2 near_far) {
-  float n = near_far.x;
-  float r = n / max(near_far.y, n);
-  return n / ((1.0 - depth) + depth * r);
-}
+float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }
+
+// r = n / max(f, n) for n >= 1e-6: in [0, 1]; f = inf gives 0, f <= n gives 1.
+float wg_near_far_ratio(float n, float far_plane) { return n / max(far_plane, n); }
 
 // reflect_dir: the mirror direction of the view ray about the surface normal, for
 // reflection look-ups (cube map, sky colour, screen-space reflection).
@@ -129,6 +131,19 @@ float wg_shore_waves(float depth, float frequency, float phase, float amplitude,
   return clamp(w * amplitude * (1.0 - d / dmax), 0.0, 1.0);
 }
 
+// water_depth: how much water lies between the surface and the scene behind it.
+
+// The factor that turns a view-depth difference into a distance along the view ray:
+// 1 / cos(ray, camera forward), from the unit camera axis (camera_forward, computed once
+// per draw: -(row 2) of the view matrix, normalised) and the unit direction v towards the
+// viewer. The cosine is floored at 0.1 (rays up to 84 degrees off-axis); a degenerate view
+// matrix, whose axis camera_forward gives as zero, counts as a ray along the axis (factor
+// 1). Chosen with ?: between computed values, so it compiles to a select, not branches.
+float wg_water_depth_ray_factor_axis(vec3 axis, vec3 v) {
+  float factor = 1.0 / max(dot(-v, axis), 0.1);
+  return dot(axis, axis) < 0.25 ? 1.0 : factor;
+}
+
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
@@ -137,54 +152,55 @@ float wg_water_depth_thickness(float scene_linear, float surface_linear, float f
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
 }
 
-// The ray factor where v is proven normalized (value facts: the safe-normalised view
-// direction): re-normalising it changes nothing, so only the camera axis is normalised.
-float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-v, wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
-}
-
 void main() {
   vec3 b_normal = wg_safe_normalize_vec3(v_normal);
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   vec2 b_screen_uv = gl_FragCoord.xy / u_viewport_size;
-  vec2 n0_flow_t0 = v_uv;
-  vec2 n0_flow_t1 = (wg_flow_map_decode(texture(t1_dudv, n0_flow_t0))) * p_flow_strength;
-  float n0_flow_t2 = u_time;
-  float n0_flow_t3 = p_flow_speed;
-  float n0_flow_t4 = wg_flow_map_progress(n0_flow_t2, n0_flow_t3, 0.0);
-  float n0_flow_t5 = wg_flow_map_progress(n0_flow_t2, n0_flow_t3, 0.5);
-  float n0_flow_t6 = wg_flow_map_weight(n0_flow_t4);
-  float n0_flow_t7 = wg_flow_map_weight(n0_flow_t5);
-  vec4 n0_flow_sample = (texture(t0_water_normal, n0_flow_t0 - n0_flow_t1 * n0_flow_t4) * n0_flow_t6 + texture(t0_water_normal, n0_flow_t0 - n0_flow_t1 * n0_flow_t5) * n0_flow_t7);
-  vec3 n1_tangent = n0_flow_sample.xzy;
-  vec3 n2_tangent_n = wg_remap_nonempty_vec3(n1_tangent, vec3(0.0), vec3(1.0), vec3(-1.0), vec3(1.0));
-  vec3 n3_tilt = (n2_tangent_n * vec3(0.8, 0.0, 0.8));
-  vec3 n5_tilted = (b_normal + n3_tilt);
-  vec3 n6_nrm = wg_safe_normalize_vec3(n5_tilted);
-  vec2 n7_nrm_xz = n6_nrm.xz;
-  vec2 n8_offset = (n7_nrm_xz * vec2(0.03));
-  float n9_body_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n9_body_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
-  float n9_body_depth_thickness = wg_water_depth_thickness(n9_body_depth_t0, n9_body_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
-  float n10_body_tint_smooth_t0 = wg_depth_tint_smooth(n9_body_depth_thickness, p_max_depth);
-  vec3 n10_body_tint_smooth_color = mix(p_shallow_color, p_deep_color, n10_body_tint_smooth_t0);
-  vec2 n11_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n8_offset);
-  vec3 n11_body_refraction_color = texture(u_scene_color, n11_body_refraction_t0).rgb;
-  vec3 n12_body_body = mix(n11_body_refraction_color, n10_body_tint_smooth_color, vec3(n10_body_tint_smooth_t0));
-  vec2 n13_foam_edge_smooth_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
-  vec2 n13_foam_edge_smooth_t1 = v_world_position.xz * 1.0;
-  float n13_foam_edge_smooth_t2 = 0.5 * (texture(t2_foam, n13_foam_edge_smooth_t1 * 0.1 + n13_foam_edge_smooth_t0).r + texture(t2_foam, n13_foam_edge_smooth_t1 * 0.08 + vec2(-n13_foam_edge_smooth_t0.y, n13_foam_edge_smooth_t0.x)).r);
-  float n13_foam_edge_smooth = wg_edge_foam(n13_foam_edge_smooth_t2, wg_edge_foam_mask_smooth(n9_body_depth_thickness, 0.4), 0.25, 0.0, 1.0);
-  float n14_foam_shore = wg_shore_waves(n9_body_depth_thickness, 7.0, u_phase2, 0.7, 1.2);
-  float n15_foam_foam = max(n14_foam_shore, n13_foam_edge_smooth);
-  float n16_surface_fresnel_t0 = wg_cos_incidence(n6_nrm, b_view_direction);
-  float n16_surface_fresnel_t1 = wg_fresnel_schlick(n16_surface_fresnel_t0, 0.02);
-  vec3 n17_surface_sky_t0 = wg_reflect_dir(n6_nrm, b_view_direction);
-  vec3 n17_surface_sky_color = texture(u_environment, n17_surface_sky_t0).rgb;
-  vec3 n18_surface_blend = mix(n12_body_body, n17_surface_sky_color, vec3(n16_surface_fresnel_t1));
-  vec3 n19_color = mix(n18_surface_blend, vec3(0.9, 0.92, 0.88), vec3(n15_foam_foam));
-  o_color = vec4(n19_color, 1.0);
+  float n0_flow = (u_time * p_flow_speed);
+  float n1_flow = fract(n0_flow);
+  float n2_flow = (n0_flow + 0.5);
+  float n3_flow = fract(n2_flow);
+  float n4_flow = (2.0 * n1_flow);
+  float n5_flow = (1.0 - n4_flow);
+  float n6_flow = abs(n5_flow);
+  float n7_flow = (1.0 - n6_flow);
+  float n8_flow = (2.0 * n3_flow);
+  float n9_flow = (1.0 - n8_flow);
+  float n10_flow = abs(n9_flow);
+  float n11_flow = (1.0 - n10_flow);
+  vec2 n12_flow_t0 = v_uv;
+  vec2 n12_flow_t1 = (wg_flow_map_decode(texture(t1_dudv, n12_flow_t0))) * p_flow_strength;
+  vec4 n12_flow_sample = (texture(t0_water_normal, n12_flow_t0 - n12_flow_t1 * n1_flow) * n7_flow + texture(t0_water_normal, n12_flow_t0 - n12_flow_t1 * n3_flow) * n11_flow);
+  vec3 n13_tangent = n12_flow_sample.xzy;
+  vec3 n14_tangent_n = wg_remap_nonempty_vec3(n13_tangent, vec3(0.0), vec3(1.0), vec3(-1.0), vec3(1.0));
+  vec3 n15_tilt = (n14_tangent_n * vec3(0.8, 0.0, 0.8));
+  vec3 n17_tilted = (b_normal + n15_tilt);
+  vec3 n18_nrm = wg_safe_normalize_vec3(n17_tilted);
+  vec2 n19_nrm_xz = n18_nrm.xz;
+  vec2 n20_offset = (n19_nrm_xz * vec2(0.03));
+  vec3 n21_body_depth = wg_camera_forward(u_view);
+  vec2 n22_body_depth_t0 = u_camera_near_far;
+  float n22_body_depth_t1 = n22_body_depth_t0.x;
+  float n22_body_depth_ratio = wg_near_far_ratio(n22_body_depth_t1, n22_body_depth_t0.y);
+  float n23_body_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n22_body_depth_t1, n22_body_depth_ratio);
+  float n23_body_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n22_body_depth_t1, n22_body_depth_ratio);
+  float n23_body_depth_thickness = wg_water_depth_thickness(n23_body_depth_t0, n23_body_depth_t1, wg_water_depth_ray_factor_axis(n21_body_depth, b_view_direction), 1.0);
+  float n24_body_tint_smooth_t0 = wg_depth_tint_smooth(n23_body_depth_thickness, p_max_depth);
+  vec3 n24_body_tint_smooth_color = mix(p_shallow_color, p_deep_color, n24_body_tint_smooth_t0);
+  vec2 n25_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n20_offset);
+  vec3 n25_body_refraction_color = texture(u_scene_color, n25_body_refraction_t0).rgb;
+  vec3 n26_body_body = mix(n25_body_refraction_color, n24_body_tint_smooth_color, vec3(n24_body_tint_smooth_t0));
+  vec2 n27_foam_edge_smooth_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
+  vec2 n27_foam_edge_smooth_t1 = v_world_position.xz * 1.0;
+  float n27_foam_edge_smooth_t2 = 0.5 * (texture(t2_foam, n27_foam_edge_smooth_t1 * 0.1 + n27_foam_edge_smooth_t0).r + texture(t2_foam, n27_foam_edge_smooth_t1 * 0.08 + vec2(-n27_foam_edge_smooth_t0.y, n27_foam_edge_smooth_t0.x)).r);
+  float n27_foam_edge_smooth = wg_edge_foam(n27_foam_edge_smooth_t2, wg_edge_foam_mask_smooth(n23_body_depth_thickness, 0.4), 0.25, 0.0, 1.0);
+  float n28_foam_shore = wg_shore_waves(n23_body_depth_thickness, 7.0, u_phase2, 0.7, 1.2);
+  float n29_foam_foam = max(n28_foam_shore, n27_foam_edge_smooth);
+  float n30_surface_fresnel_t0 = wg_cos_incidence(n18_nrm, b_view_direction);
+  float n30_surface_fresnel_t1 = wg_fresnel_schlick(n30_surface_fresnel_t0, 0.02);
+  vec3 n31_surface_sky_t0 = wg_reflect_dir(n18_nrm, b_view_direction);
+  vec3 n31_surface_sky_color = texture(u_environment, n31_surface_sky_t0).rgb;
+  vec3 n32_surface_blend = mix(n26_body_body, n31_surface_sky_color, vec3(n30_surface_fresnel_t1));
+  vec3 n33_color = mix(n32_surface_blend, vec3(0.9, 0.92, 0.88), vec3(n29_foam_foam));
+  o_color = vec4(n33_color, 1.0);
 }

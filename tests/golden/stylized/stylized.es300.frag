@@ -37,6 +37,16 @@ uniform highp sampler2D u_reflection;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// camera_forward: the camera's forward axis from the view matrix.
+
+// -(row 2) of the view matrix (column-major: view[col][2]), safe-normalised. A degenerate
+// view matrix (|row 2|^2 < 0.5, e.g. all zero) gives the zero vector, which its readers
+// (wg_water_depth_ray_factor_axis) take as "no axis"; a rigid one has |row 2| = 1.
+vec3 wg_camera_forward(mat4 view) {
+  vec3 f = -vec3(view[0][2], view[1][2], view[2][2]);
+  return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
+}
+
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -65,12 +75,10 @@ float wg_edge_foam(float tex, float mask, float cutoff, float softness, float st
 // flow vector in two phases half a cycle apart, cross-faded by triangle waves so the
 // reset of each phase is never seen.
 
-// A phase's progress in [0, 1): fract(time * speed + offset).
-float wg_flow_map_progress(float time, float speed, float offset) { return fract(time * speed + offset); }
-
-// Triangle-wave weight 1 - |1 - 2 progress|: 0 at the reset, 1 half-way. The weights of
-// two phases half a cycle apart sum to 1.
-float wg_flow_map_weight(float progress) { return 1.0 - abs(1.0 - 2.0 * progress); }
+// A phase's progress fract(time * speed + offset), in [0, 1), and its triangle-wave weight
+// 1 - |1 - 2 progress| (0 at the reset, 1 half-way; two phases half a cycle apart sum to
+// 1) are the same for every pixel of a draw: the node computes them by math ops of their
+// own (its derived inputs), and the shader reads them.
 
 // The flow vector of a flow texture: xy * 2 - 1.
 vec2 wg_flow_map_decode(vec4 texel) { return texel.xy * 2.0 - 1.0; }
@@ -104,23 +112,18 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 
 vec3 wg_hash_unit_vec3(uvec3 h) { return vec3(h >> 8u) * 5.9604644775390625e-8; }
 
-// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
-// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
-// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
-// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
-// wg_linearize_depth is dead, and the values are the same.
-float wg_linearize_depth_known(float depth, vec2 near_far) {
-  float n = near_far.x;
-  float r = n / max(near_far.y, n);
-  return n / ((1.0 - depth) + depth * r);
-}
+float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }
+
+// r = n / max(f, n) for n >= 1e-6: in [0, 1]; f = inf gives 0, f <= n gives 1.
+float wg_near_far_ratio(float n, float far_plane) { return n / max(far_plane, n); }
 
 // Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
-// The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
-// so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
-vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
-  return uv * scale + fract(speed * time);
+// The layer's texture coordinate: uv * scale + scroll, where scroll = fract(speed * time)
+// is computed once per draw by ops of its own (the node's derived inputs). The texture
+// repeats, so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
+vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 scroll) {
+  return uv * scale + scroll;
 }
 
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
@@ -233,21 +236,25 @@ float wg_voronoi_caustics_layer(vec2 p, float jitter, float phase, bool animated
   return m * m * m;
 }
 
+// water_depth: how much water lies between the surface and the scene behind it.
+
+// The factor that turns a view-depth difference into a distance along the view ray:
+// 1 / cos(ray, camera forward), from the unit camera axis (camera_forward, computed once
+// per draw: -(row 2) of the view matrix, normalised) and the unit direction v towards the
+// viewer. The cosine is floored at 0.1 (rays up to 84 degrees off-axis); a degenerate view
+// matrix, whose axis camera_forward gives as zero, counts as a ray along the axis (factor
+// 1). Chosen with ?: between computed values, so it compiles to a select, not branches.
+float wg_water_depth_ray_factor_axis(vec3 axis, vec3 v) {
+  float factor = 1.0 / max(dot(-v, axis), 0.1);
+  return dot(axis, axis) < 0.25 ? 1.0 : factor;
+}
+
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
-}
-
-// The ray factor where v is proven normalized (value facts: the safe-normalised view
-// direction): re-normalising it changes nothing, so only the camera axis is normalised.
-float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-v, wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -273,64 +280,77 @@ void main() {
   vec3 b_normal = wg_safe_normalize_vec3(v_normal);
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   vec2 b_screen_uv = gl_FragCoord.xy / u_viewport_size;
-  float n3_scroll_t0 = u_time;
-  vec3 n3_scroll_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, vec2(0.05, 0.03), n3_scroll_t0)));
-  vec3 n3_scroll_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, vec2(-0.03, 0.07), n3_scroll_t0)));
-  vec3 n3_scroll_t3 = wg_normal_map_scroll_add(n3_scroll_t1, n3_scroll_t2);
-  vec3 n3_scroll_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_scroll_t3, 0.5), b_normal);
-  vec2 n4_flow_t0 = v_uv;
-  vec2 n4_flow_t1 = (wg_flow_map_decode(texture(t1_dudv, n4_flow_t0))) * 0.08;
-  float n4_flow_t2 = u_time;
-  float n4_flow_t3 = 0.15;
-  float n4_flow_t4 = wg_flow_map_progress(n4_flow_t2, n4_flow_t3, 0.0);
-  float n4_flow_t5 = wg_flow_map_progress(n4_flow_t2, n4_flow_t3, 0.5);
-  float n4_flow_t6 = wg_flow_map_weight(n4_flow_t4);
-  float n4_flow_t7 = wg_flow_map_weight(n4_flow_t5);
-  vec4 n4_flow_sample = (texture(t0_water_normal, n4_flow_t0 - n4_flow_t1 * n4_flow_t4) * n4_flow_t6 + texture(t0_water_normal, n4_flow_t0 - n4_flow_t1 * n4_flow_t5) * n4_flow_t7);
-  vec2 n5_flow_rgb = n4_flow_sample.xz;
-  vec2 n6_flow_tilt = wg_remap_nonempty_vec2(n5_flow_rgb, vec2(0.0), vec2(1.0), vec2(-0.25), vec2(0.25));
-  float n7_flow_x_x = n6_flow_tilt.x;
-  float n7_flow_x_y = n6_flow_tilt.y;
-  vec3 n8_flow_vec = vec3(n7_flow_x_x, 0.0, n7_flow_x_y);
-  vec3 n9_tilted = (n3_scroll_normal + n8_flow_vec);
-  vec3 n10_nrm = wg_safe_normalize_vec3(n9_tilted);
-  float n11_fresnel_t0 = wg_cos_incidence(n10_nrm, b_view_direction);
-  float n11_fresnel_t1 = wg_fresnel_power_rim_positive(n11_fresnel_t0, p_fresnel_power);
-  vec2 n12_nrm_xz = n10_nrm.xz;
-  vec2 n13_offset = (n12_nrm_xz * vec2(0.04));
-  vec2 n14_reflection_t0 = wg_scene_color_uv(b_screen_uv, n13_offset);
-  vec3 n14_reflection_color = texture(u_reflection, n14_reflection_t0).rgb;
-  float n15_body_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n15_body_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
-  float n15_body_depth_thickness = wg_water_depth_thickness(n15_body_depth_t0, n15_body_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
-  float n16_body_tint_linear_t0 = wg_depth_tint_linear_floored(n15_body_depth_thickness, p_max_distance);
-  vec3 n16_body_tint_linear_color = mix(p_shallow_color, p_deep_color, n16_body_tint_linear_t0);
-  vec2 n17_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n13_offset);
-  vec3 n17_body_refraction_color = texture(u_scene_color, n17_body_refraction_t0).rgb;
-  vec3 n18_body_body = mix(n17_body_refraction_color, n16_body_tint_linear_color, vec3(n16_body_tint_linear_t0));
-  vec2 n19_foam_edge_lin_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
-  vec2 n19_foam_edge_lin_t1 = v_world_position.xz * 1.0;
-  float n19_foam_edge_lin_t2 = 0.5 * (texture(t2_foam, n19_foam_edge_lin_t1 * 0.1 + n19_foam_edge_lin_t0).r + texture(t2_foam, n19_foam_edge_lin_t1 * 0.08 + vec2(-n19_foam_edge_lin_t0.y, n19_foam_edge_lin_t0.x)).r);
-  float n19_foam_edge_lin = wg_edge_foam(n19_foam_edge_lin_t2, wg_edge_foam_mask_linear(n15_body_depth_thickness, 0.5), 0.35, 0.0, 1.0);
-  float n20_foam_shore = wg_shore_waves(n15_body_depth_thickness, 5.0, u_phase2, 0.8, 1.5);
-  float n21_foam_foam = max(n20_foam_shore, n19_foam_edge_lin);
-  float n22_caustics_fade = (1.0 - n16_body_tint_linear_t0);
-  vec2 n24_caustics_uv = clamp(b_screen_uv, 0.0, 1.0);
-  float n25_caustics_floor_t0 = texture(u_scene_depth, n24_caustics_uv).r;
-  float n25_caustics_floor_t1 = wg_linearize_depth_known(n25_caustics_floor_t0, u_camera_near_far);
-  vec3 n25_caustics_floor_position = wg_scene_depth_position(n24_caustics_uv, n25_caustics_floor_t1, u_camera_position, u_view, u_projection);
-  vec2 n26_caustics_floor_xz = n25_caustics_floor_position.xz;
-  vec2 n27_caustics_average_t0 = (n26_caustics_floor_xz * 0.6);
-  float n27_caustics_average_t1 = wg_voronoi_caustics_layer(n27_caustics_average_t0, 1.0, u_phase3, true, true);
-  float n27_caustics_average_t2 = wg_voronoi_caustics_layer((n27_caustics_average_t0 * 1.3 + 5.0), 1.0, u_phase4, true, true);
-  float n27_caustics_average = (p_caustics_strength * (0.5 * (n27_caustics_average_t1 + n27_caustics_average_t2)));
-  float n28_caustics_light = (n27_caustics_average * n22_caustics_fade);
-  vec3 n29_body_lit = (n18_body_body + vec3(n28_caustics_light));
-  vec3 n30_surface_color = mix(n29_body_lit, n14_reflection_color, vec3(n11_fresnel_t1));
-  float n33_height_y = v_world_position.y;
-  float n34_sss_t0 = (0.6 * wg_subsurface_intensity_unit(n10_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n33_height_y));
-  vec3 n34_sss_color = (p_sss_color * n34_sss_t0);
-  vec3 n35_glow = (n30_surface_color + n34_sss_color);
-  vec3 n36_color = mix(n35_glow, p_foam_color, vec3(n21_foam_foam));
-  o_color = vec4(n36_color, 1.0);
+  vec2 n3_scroll = (vec2(0.05, 0.03) * vec2(u_time));
+  vec2 n4_scroll = fract(n3_scroll);
+  vec2 n5_scroll = (vec2(-0.03, 0.07) * vec2(u_time));
+  vec2 n6_scroll = fract(n5_scroll);
+  vec3 n7_scroll_t0 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, n4_scroll)));
+  vec3 n7_scroll_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, n6_scroll)));
+  vec3 n7_scroll_t2 = wg_normal_map_scroll_add(n7_scroll_t0, n7_scroll_t1);
+  vec3 n7_scroll_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n7_scroll_t2, 0.5), b_normal);
+  float n8_flow = (u_time * 0.15);
+  float n9_flow = fract(n8_flow);
+  float n10_flow = (n8_flow + 0.5);
+  float n11_flow = fract(n10_flow);
+  float n12_flow = (2.0 * n9_flow);
+  float n13_flow = (1.0 - n12_flow);
+  float n14_flow = abs(n13_flow);
+  float n15_flow = (1.0 - n14_flow);
+  float n16_flow = (2.0 * n11_flow);
+  float n17_flow = (1.0 - n16_flow);
+  float n18_flow = abs(n17_flow);
+  float n19_flow = (1.0 - n18_flow);
+  vec2 n20_flow_t0 = v_uv;
+  vec2 n20_flow_t1 = (wg_flow_map_decode(texture(t1_dudv, n20_flow_t0))) * 0.08;
+  vec4 n20_flow_sample = (texture(t0_water_normal, n20_flow_t0 - n20_flow_t1 * n9_flow) * n15_flow + texture(t0_water_normal, n20_flow_t0 - n20_flow_t1 * n11_flow) * n19_flow);
+  vec2 n21_flow_rgb = n20_flow_sample.xz;
+  vec2 n22_flow_tilt = wg_remap_nonempty_vec2(n21_flow_rgb, vec2(0.0), vec2(1.0), vec2(-0.25), vec2(0.25));
+  float n23_flow_x_x = n22_flow_tilt.x;
+  float n23_flow_x_y = n22_flow_tilt.y;
+  vec3 n24_flow_vec = vec3(n23_flow_x_x, 0.0, n23_flow_x_y);
+  vec3 n25_tilted = (n7_scroll_normal + n24_flow_vec);
+  vec3 n26_nrm = wg_safe_normalize_vec3(n25_tilted);
+  float n27_fresnel_t0 = wg_cos_incidence(n26_nrm, b_view_direction);
+  float n27_fresnel_t1 = wg_fresnel_power_rim_positive(n27_fresnel_t0, p_fresnel_power);
+  vec2 n28_nrm_xz = n26_nrm.xz;
+  vec2 n29_offset = (n28_nrm_xz * vec2(0.04));
+  vec2 n30_reflection_t0 = wg_scene_color_uv(b_screen_uv, n29_offset);
+  vec3 n30_reflection_color = texture(u_reflection, n30_reflection_t0).rgb;
+  vec3 n31_body_depth = wg_camera_forward(u_view);
+  vec2 n32_body_depth_t0 = u_camera_near_far;
+  float n32_body_depth_t1 = n32_body_depth_t0.x;
+  float n32_body_depth_ratio = wg_near_far_ratio(n32_body_depth_t1, n32_body_depth_t0.y);
+  float n33_body_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n32_body_depth_t1, n32_body_depth_ratio);
+  float n33_body_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n32_body_depth_t1, n32_body_depth_ratio);
+  float n33_body_depth_thickness = wg_water_depth_thickness(n33_body_depth_t0, n33_body_depth_t1, wg_water_depth_ray_factor_axis(n31_body_depth, b_view_direction), 1.0);
+  float n34_body_tint_linear_t0 = wg_depth_tint_linear_floored(n33_body_depth_thickness, p_max_distance);
+  vec3 n34_body_tint_linear_color = mix(p_shallow_color, p_deep_color, n34_body_tint_linear_t0);
+  vec2 n35_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n29_offset);
+  vec3 n35_body_refraction_color = texture(u_scene_color, n35_body_refraction_t0).rgb;
+  vec3 n36_body_body = mix(n35_body_refraction_color, n34_body_tint_linear_color, vec3(n34_body_tint_linear_t0));
+  vec2 n37_foam_edge_lin_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
+  vec2 n37_foam_edge_lin_t1 = v_world_position.xz * 1.0;
+  float n37_foam_edge_lin_t2 = 0.5 * (texture(t2_foam, n37_foam_edge_lin_t1 * 0.1 + n37_foam_edge_lin_t0).r + texture(t2_foam, n37_foam_edge_lin_t1 * 0.08 + vec2(-n37_foam_edge_lin_t0.y, n37_foam_edge_lin_t0.x)).r);
+  float n37_foam_edge_lin = wg_edge_foam(n37_foam_edge_lin_t2, wg_edge_foam_mask_linear(n33_body_depth_thickness, 0.5), 0.35, 0.0, 1.0);
+  float n38_foam_shore = wg_shore_waves(n33_body_depth_thickness, 5.0, u_phase2, 0.8, 1.5);
+  float n39_foam_foam = max(n38_foam_shore, n37_foam_edge_lin);
+  float n40_caustics_fade = (1.0 - n34_body_tint_linear_t0);
+  vec2 n42_caustics_uv = clamp(b_screen_uv, 0.0, 1.0);
+  float n43_caustics_floor_t0 = texture(u_scene_depth, n42_caustics_uv).r;
+  float n43_caustics_floor_t1 = wg_linearize_depth_ratio_known(n43_caustics_floor_t0, n32_body_depth_t1, n32_body_depth_ratio);
+  vec3 n43_caustics_floor_position = wg_scene_depth_position(n42_caustics_uv, n43_caustics_floor_t1, u_camera_position, u_view, u_projection);
+  vec2 n44_caustics_floor_xz = n43_caustics_floor_position.xz;
+  vec2 n45_caustics_average_t0 = (n44_caustics_floor_xz * 0.6);
+  float n45_caustics_average_t1 = wg_voronoi_caustics_layer(n45_caustics_average_t0, 1.0, u_phase3, true, true);
+  float n45_caustics_average_t2 = wg_voronoi_caustics_layer((n45_caustics_average_t0 * 1.3 + 5.0), 1.0, u_phase4, true, true);
+  float n45_caustics_average = (p_caustics_strength * (0.5 * (n45_caustics_average_t1 + n45_caustics_average_t2)));
+  float n46_caustics_light = (n45_caustics_average * n40_caustics_fade);
+  vec3 n47_body_lit = (n36_body_body + vec3(n46_caustics_light));
+  vec3 n48_surface_color = mix(n47_body_lit, n30_reflection_color, vec3(n27_fresnel_t1));
+  float n51_height_y = v_world_position.y;
+  float n52_sss_t0 = (0.6 * wg_subsurface_intensity_unit(n26_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n51_height_y));
+  vec3 n52_sss_color = (p_sss_color * n52_sss_t0);
+  vec3 n53_glow = (n48_surface_color + n52_sss_color);
+  vec3 n54_color = mix(n53_glow, p_foam_color, vec3(n39_foam_foam));
+  o_color = vec4(n54_color, 1.0);
 }

@@ -35,6 +35,16 @@ layout(set = 0, binding = 6) uniform samplerCube u_environment;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// camera_forward: the camera's forward axis from the view matrix.
+
+// -(row 2) of the view matrix (column-major: view[col][2]), safe-normalised. A degenerate
+// view matrix (|row 2|^2 < 0.5, e.g. all zero) gives the zero vector, which its readers
+// (wg_water_depth_ray_factor_axis) take as "no axis"; a rigid one has |row 2| = 1.
+vec3 wg_camera_forward(mat4 view) {
+  vec3 f = -vec3(view[0][2], view[1][2], view[2][2]);
+  return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
+}
+
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -119,23 +129,18 @@ vec4 wg_ggx_specular(vec3 n, vec3 v, vec3 l, float roughness, float f0) {
   return vec4(brdf, d, f, ndotl);
 }
 
-// The same where the compiler proved depth in [0, 1] and near, far in [1e-6, 1e30] (value
-// facts: gl_FragCoord.z or a depth texture, and the runtime's clamped camera_near_far).
-// Then r = n / max(f, n) lies in (0, 1], the denominator (1 - d) + d r >= r > 0, and the
-// result n / denominator <= n / r = max(f, n) <= 1e30: every floor and cap of
-// wg_linearize_depth is dead, and the values are the same.
-float wg_linearize_depth_known(float depth, vec2 near_far) {
-  float n = near_far.x;
-  float r = n / max(near_far.y, n);
-  return n / ((1.0 - depth) + depth * r);
-}
+float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }
+
+// r = n / max(f, n) for n >= 1e-6: in [0, 1]; f = inf gives 0, f <= n gives 1.
+float wg_near_far_ratio(float n, float far_plane) { return n / max(far_plane, n); }
 
 // Two scrolling samples of a tangent-space normal map, blended (the advanced shaders tutorial and the stylized water shader).
 
-// The layer's texture coordinate: uv * scale + fract(speed * time). The texture repeats,
-// so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
-vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 speed, float time) {
-  return uv * scale + fract(speed * time);
+// The layer's texture coordinate: uv * scale + scroll, where scroll = fract(speed * time)
+// is computed once per draw by ops of its own (the node's derived inputs). The texture
+// repeats, so the offset is wrapped to [0, 1) and stays small at t = 1e6 s.
+vec2 wg_normal_map_scroll_uv(vec2 uv, float scale, vec2 scroll) {
+  return uv * scale + scroll;
 }
 
 // A texel to a tangent-space vector in [-1, 1]^3 (x along T, y along B, z along N).
@@ -191,21 +196,25 @@ float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float 
 // the screen, no stretched border texels).
 vec2 wg_scene_color_uv(vec2 uv, vec2 offset) { return clamp(uv + offset, vec2(0.0), vec2(1.0)); }
 
+// water_depth: how much water lies between the surface and the scene behind it.
+
+// The factor that turns a view-depth difference into a distance along the view ray:
+// 1 / cos(ray, camera forward), from the unit camera axis (camera_forward, computed once
+// per draw: -(row 2) of the view matrix, normalised) and the unit direction v towards the
+// viewer. The cosine is floored at 0.1 (rays up to 84 degrees off-axis); a degenerate view
+// matrix, whose axis camera_forward gives as zero, counts as a ray along the axis (factor
+// 1). Chosen with ?: between computed values, so it compiles to a select, not branches.
+float wg_water_depth_ray_factor_axis(vec3 axis, vec3 v) {
+  float factor = 1.0 / max(dot(-v, axis), 0.1);
+  return dot(axis, axis) < 0.25 ? 1.0 : factor;
+}
+
 // Thickness of water from linear depths: scene minus surface, negative (scene in front of
 // the water) clamped to 0, times the ray factor, and for the vertical measure times |V.y|
 // (the vertical drop along the ray: exact for a straight ray, ignoring refraction).
 // Kept <= 1e30, so the sky stays finite.
 float wg_water_depth_thickness(float scene_linear, float surface_linear, float factor, float vertical) {
   return min(max(scene_linear - surface_linear, 0.0) * factor * vertical, 1e30);
-}
-
-// The ray factor where v is proven normalized (value facts: the safe-normalised view
-// direction): re-normalising it changes nothing, so only the camera axis is normalised.
-float wg_water_depth_ray_factor_unit_view(mat4 view, vec3 v) {
-  vec3 fwd = -vec3(view[0][2], view[1][2], view[2][2]);
-  float c = dot(-v, wg_safe_normalize_vec3(fwd));
-  float factor = 1.0 / max(c, 0.1);
-  return dot(fwd, fwd) < 0.5 ? 1.0 : factor;
 }
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
@@ -231,45 +240,52 @@ void main() {
   vec3 b_normal = wg_safe_normalize_vec3(v_normal);
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   vec2 b_screen_uv = gl_FragCoord.xy / u_viewport_size;
-  float n3_detail_t0 = u_time;
-  vec3 n3_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, vec2(0.05, 0.03), n3_detail_t0)));
-  vec3 n3_detail_t2 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, vec2(-0.03, 0.07), n3_detail_t0)));
-  vec3 n3_detail_t3 = wg_normal_map_scroll_add(n3_detail_t1, n3_detail_t2);
-  vec3 n3_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n3_detail_t3, 0.35), b_normal);
-  vec4 n4_bent_t0 = wg_refract_dir(n3_detail_normal, b_view_direction, 0.7501876, 0.56278133, -0.776889);
-  vec3 n4_bent_direction = n4_bent_t0.xyz;
-  vec2 n5_detail_xz = n3_detail_normal.xz;
-  vec2 n6_mirror_offset = (n5_detail_xz * vec2(0.03));
-  vec2 n7_planar_t0 = wg_scene_color_uv(b_screen_uv, n6_mirror_offset);
-  vec3 n7_planar_color = texture(u_reflection, n7_planar_t0).rgb;
-  vec3 n8_sky_t0 = wg_reflect_dir(n3_detail_normal, b_view_direction);
-  vec3 n8_sky_color = texture(u_environment, n8_sky_t0).rgb;
-  vec3 n9_reflection = mix(n8_sky_color, n7_planar_color, vec3(p_planar_weight));
-  float n10_fresnel_t0 = wg_cos_incidence(n3_detail_normal, b_view_direction);
-  float n10_fresnel_t1 = wg_fresnel_schlick(n10_fresnel_t0, 0.02);
-  float n11_depth_t0 = wg_linearize_depth_known(texture(u_scene_depth, b_screen_uv).r, u_camera_near_far);
-  float n11_depth_t1 = wg_linearize_depth_known(gl_FragCoord.z, u_camera_near_far);
-  float n11_depth_thickness = wg_water_depth_thickness(n11_depth_t0, n11_depth_t1, wg_water_depth_ray_factor_unit_view(u_view, b_view_direction), 1.0);
-  vec2 n12_foam_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
-  vec2 n12_foam_t1 = v_world_position.xz * 1.0;
-  float n12_foam_t2 = 0.5 * (texture(t1_foam, n12_foam_t1 * 0.1 + n12_foam_t0).r + texture(t1_foam, n12_foam_t1 * 0.08 + vec2(-n12_foam_t0.y, n12_foam_t0.x)).r);
-  float n12_foam = wg_edge_foam(n12_foam_t2, wg_edge_foam_mask_smooth(n11_depth_thickness, 0.6), 0.3, 0.1, 1.0);
-  float n13_depth_factor = wg_remap_clamped_nonempty_float(n11_depth_thickness, 0.0, 2.0, 0.0, 1.0);
-  float n14_bend_scale = (p_refraction_strength * n13_depth_factor);
-  vec3 n16_straight = (b_view_direction * vec3(-1.0));
-  vec3 n17_bend = (n4_bent_direction - n16_straight);
-  vec2 n18_bend_xz = n17_bend.xz;
-  vec2 n19_refraction_offset = (n18_bend_xz * vec2(n14_bend_scale));
-  float n20_body_tint_smooth_t0 = wg_depth_tint_smooth(n11_depth_thickness, p_max_depth);
-  vec3 n20_body_tint_smooth_color = mix(p_shallow_color, p_deep_color, n20_body_tint_smooth_t0);
-  vec2 n21_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n19_refraction_offset);
-  vec3 n21_body_refraction_color = texture(u_scene_color, n21_body_refraction_t0).rgb;
-  vec3 n22_body_body = mix(n21_body_refraction_color, n20_body_tint_smooth_color, vec3(n20_body_tint_smooth_t0));
-  vec3 n23_surface_color = mix(n22_body_body, n9_reflection, vec3(n10_fresnel_t1));
-  vec4 n25_ggx_t0 = wg_ggx_specular(n3_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
-  float n25_ggx_t1 = (n25_ggx_t0.x * n25_ggx_t0.w);
-  vec3 n25_ggx_color = (vec3(1.0, 0.95, 0.85) * n25_ggx_t1);
-  vec3 n26_lit = (n23_surface_color + n25_ggx_color);
-  vec3 n27_color = mix(n26_lit, vec3(0.95, 0.97, 1.0), vec3(n12_foam));
-  o_color = vec4(n27_color, 1.0);
+  vec2 n3_detail = (vec2(0.05, 0.03) * vec2(u_time));
+  vec2 n4_detail = fract(n3_detail);
+  vec2 n5_detail = (vec2(-0.03, 0.07) * vec2(u_time));
+  vec2 n6_detail = fract(n5_detail);
+  vec3 n7_detail_t0 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 4.0, n4_detail)));
+  vec3 n7_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 8.0, n6_detail)));
+  vec3 n7_detail_t2 = wg_normal_map_scroll_add(n7_detail_t0, n7_detail_t1);
+  vec3 n7_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n7_detail_t2, 0.35), b_normal);
+  vec4 n8_bent_t0 = wg_refract_dir(n7_detail_normal, b_view_direction, 0.7501876, 0.56278133, -0.776889);
+  vec3 n8_bent_direction = n8_bent_t0.xyz;
+  vec2 n9_detail_xz = n7_detail_normal.xz;
+  vec2 n10_mirror_offset = (n9_detail_xz * vec2(0.03));
+  vec2 n11_planar_t0 = wg_scene_color_uv(b_screen_uv, n10_mirror_offset);
+  vec3 n11_planar_color = texture(u_reflection, n11_planar_t0).rgb;
+  vec3 n12_sky_t0 = wg_reflect_dir(n7_detail_normal, b_view_direction);
+  vec3 n12_sky_color = texture(u_environment, n12_sky_t0).rgb;
+  vec3 n13_reflection = mix(n12_sky_color, n11_planar_color, vec3(p_planar_weight));
+  float n14_fresnel_t0 = wg_cos_incidence(n7_detail_normal, b_view_direction);
+  float n14_fresnel_t1 = wg_fresnel_schlick(n14_fresnel_t0, 0.02);
+  vec3 n15_depth = wg_camera_forward(u_view);
+  vec2 n16_depth_t0 = u_camera_near_far;
+  float n16_depth_t1 = n16_depth_t0.x;
+  float n16_depth_ratio = wg_near_far_ratio(n16_depth_t1, n16_depth_t0.y);
+  float n17_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n16_depth_t1, n16_depth_ratio);
+  float n17_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n16_depth_t1, n16_depth_ratio);
+  float n17_depth_thickness = wg_water_depth_thickness(n17_depth_t0, n17_depth_t1, wg_water_depth_ray_factor_axis(n15_depth, b_view_direction), 1.0);
+  vec2 n18_foam_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
+  vec2 n18_foam_t1 = v_world_position.xz * 1.0;
+  float n18_foam_t2 = 0.5 * (texture(t1_foam, n18_foam_t1 * 0.1 + n18_foam_t0).r + texture(t1_foam, n18_foam_t1 * 0.08 + vec2(-n18_foam_t0.y, n18_foam_t0.x)).r);
+  float n18_foam = wg_edge_foam(n18_foam_t2, wg_edge_foam_mask_smooth(n17_depth_thickness, 0.6), 0.3, 0.1, 1.0);
+  float n19_depth_factor = wg_remap_clamped_nonempty_float(n17_depth_thickness, 0.0, 2.0, 0.0, 1.0);
+  float n20_bend_scale = (p_refraction_strength * n19_depth_factor);
+  vec3 n22_straight = (b_view_direction * vec3(-1.0));
+  vec3 n23_bend = (n8_bent_direction - n22_straight);
+  vec2 n24_bend_xz = n23_bend.xz;
+  vec2 n25_refraction_offset = (n24_bend_xz * vec2(n20_bend_scale));
+  float n26_body_tint_smooth_t0 = wg_depth_tint_smooth(n17_depth_thickness, p_max_depth);
+  vec3 n26_body_tint_smooth_color = mix(p_shallow_color, p_deep_color, n26_body_tint_smooth_t0);
+  vec2 n27_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n25_refraction_offset);
+  vec3 n27_body_refraction_color = texture(u_scene_color, n27_body_refraction_t0).rgb;
+  vec3 n28_body_body = mix(n27_body_refraction_color, n26_body_tint_smooth_color, vec3(n26_body_tint_smooth_t0));
+  vec3 n29_surface_color = mix(n28_body_body, n13_reflection, vec3(n14_fresnel_t1));
+  vec4 n31_ggx_t0 = wg_ggx_specular(n7_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
+  float n31_ggx_t1 = (n31_ggx_t0.x * n31_ggx_t0.w);
+  vec3 n31_ggx_color = (vec3(1.0, 0.95, 0.85) * n31_ggx_t1);
+  vec3 n32_lit = (n29_surface_color + n31_ggx_color);
+  vec3 n33_color = mix(n32_lit, vec3(0.95, 0.97, 1.0), vec3(n18_foam));
+  o_color = vec4(n33_color, 1.0);
 }
