@@ -189,8 +189,8 @@ namespace {
 // position and normal arrive as varyings; the graph's normal_map_scroll holds it to 1e-2).
 TEST(CheckCli, FailsWhenANodeIsWrongOnReadBackInputs) {
   const std::pair<const char*, const char*> cases[] = {
-      {"graphs/pool.json", "mix(vec3(1.0), p_tint_color, n13_tint_t0)=>mix(vec3(0.999), p_tint_color, n13_tint_t0)"},
-      {"graphs/ocean.json", "wg_fresnel_schlick(n4_body_fresnel_t0, 0.02)=>wg_fresnel_schlick(n4_body_fresnel_t0, 0.04)"},
+      {"graphs/pool.json", "mix(vec3(1.0), p_tint_color, n15_tint_t0)=>mix(vec3(0.999), p_tint_color, n15_tint_t0)"},
+      {"graphs/ocean.json", "wg_fresnel_schlick(n8_body_fresnel_t0, 0.02)=>wg_fresnel_schlick(n8_body_fresnel_t0, 0.04)"},
   };
   for (const auto& [graph, mutation] : cases) {
     SCOPED_TRACE(graph);
