@@ -203,14 +203,31 @@ bool pixelInputs(const ReadbackImage& taps, const ReadbackPlan& plan, const std:
   return true;
 }
 
+// 0.5 -> "0.5": a pass scale as the manifest writes it.
+std::string formatScale(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", s);
+  return buf;
+}
+
 }  // namespace
 
 CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, Target target, const CheckOptions& options) {
   return checkGraph(result, graphFile, *currentGlExecutor(target), options);
 }
 
-CheckReport checkGraph(const CompileResult& result, const std::string& graphFile, GpuExecutor& executor,
+CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFile, GpuExecutor& executor,
                        const CheckOptions& options) {
+  // The read-back takes a deferred graph's scene images whole, a texel per frame pixel, and
+  // the reference compares the shader's maths pixel by pixel: check renders every scene pass
+  // at the frame's size. The `resolution` option changes no shader, only the pass sizes,
+  // so the shaders checked are the graph's own; the report says so.
+  std::optional<CompileResult> fullSize;
+  if (!compiled.manifest.passScales.empty()) {
+    fullSize = compiled;
+    fullSize->manifest.passScales.clear();
+  }
+  const CompileResult& result = fullSize ? *fullSize : compiled;
   const Target target = executor.target();
   const int width = options.width, height = options.height, referenceStride = std::max(1, options.referenceStride);
   CheckReport report;
@@ -218,6 +235,8 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
   report.target = target;
   report.width = width;
   report.height = height;
+  for (const auto& p : compiled.manifest.passScales)
+    report.scaledPasses.push_back(std::string(renderPassRow(p.pass).name) + " at " + formatScale(p.scale));
   const bool underwater = result.manifest.lists(RenderPass::DeferredWater);
   std::vector<rt::ShaderSource> sources = rt::waterShaderSources(result, target);
   if (options.mutation.active()) {
@@ -369,6 +388,11 @@ std::string formatCheckText(const CheckReport& r) {
   std::snprintf(buf, sizeof buf, "check %s on %s, %dx%d RGBA32F, reference: %s\n", r.graph.c_str(),
                 std::string(targetName(r.target)).c_str(), r.width, r.height, r.reference.c_str());
   std::string out = buf;
+  if (!r.scaledPasses.empty()) {
+    out += "  compared at full scene resolution: the graph renders";
+    for (size_t i = 0; i < r.scaledPasses.size(); ++i) out += (i ? ", " : " ") + r.scaledPasses[i];
+    out += " of the frame's size; check renders every scene pass at the frame's size\n";
+  }
   for (const auto& v : r.views) {
     std::snprintf(buf, sizeof buf, "  %-28s nan %ld  inf %ld", v.label.c_str(), v.nan, v.inf);
     out += buf;

@@ -51,6 +51,9 @@ struct CheckReport {
   Target target = Target::Glsl330;
   int width = 0, height = 0;
   std::string reference;  // "cpu" when compared, else why not
+  // The graph's scene passes below the frame's size ("depth_prepass at 0.5"): check renders
+  // them at the frame's size (the read-back reads scene images a texel per frame pixel).
+  std::vector<std::string> scaledPasses;
   std::vector<CheckViewResult> views;
   long nanInf() const;
   int samples() const;     // compared pixels over every view

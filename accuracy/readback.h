@@ -41,10 +41,11 @@ struct ReadbackPlan {
   };
   std::vector<NodeFetch> textureFetches;
   // Deferred water, whose fragment shader runs on every pixel: each 2D scene texture it
-  // samples is read back whole (texelFetch at gl_FragCoord; scene targets are the frame's
-  // size), and the reference samples that image wherever the shader does: an SSR march,
-  // a refracted look-up (EvalEnvironment::sceneImages). The G-buffer needs no channel:
-  // its look-ups at this pixel are the surface builtins read back above.
+  // samples is read back whole (texelFetch at gl_FragCoord: scene targets must be the frame's
+  // size, so checkGraph renders a graph with reduced "pass_scales" at full size), and the
+  // reference samples that image wherever the shader does: an SSR march, a refracted
+  // look-up (EvalEnvironment::sceneImages). The G-buffer needs no channel: its look-ups at
+  // this pixel are the surface builtins read back above.
   struct Image {
     SceneSampler sampler;
     int channel = -1;

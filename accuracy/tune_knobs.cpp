@@ -26,7 +26,7 @@ void collectKnobs(const Graph& graph, const std::string& prefix, int depth, std:
 
 // The shaders the compiler writes for a configuration (the tessellation factor is a
 // constant of the control stage, the passes follow from the samplers the shaders declare).
-// Not the manifest: it lists the bypassed nodes, so switching off a node whose output
+// Not the manifest (only its pass sizes): it lists the bypassed nodes, so switching off a node whose output
 // nothing reads would count as a change.
 std::string compiledText(const Graph& graph, Target target) {
   Diagnostics diags;
@@ -38,6 +38,9 @@ std::string compiledText(const Graph& graph, Target target) {
   std::string all;
   for (const auto& f : compiled->files)
     if (!f.name.ends_with(".manifest.json")) all += f.name + '\0' + f.contents + '\0';
+  // The scene passes' sizes: a `resolution` level changes no shader, only these.
+  for (const auto& p : compiled->manifest.passScales)
+    all += std::string(renderPassRow(p.pass).name) + '=' + std::to_string(p.scale) + '\0';
   return all;
 }
 

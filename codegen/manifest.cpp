@@ -149,6 +149,12 @@ const ManifestTarget* Manifest::target(std::string_view name) const {
 
 bool Manifest::lists(RenderPass pass) const { return std::find(passes.begin(), passes.end(), pass) != passes.end(); }
 
+double Manifest::scaleOf(RenderPass pass) const {
+  for (const auto& s : passScales)
+    if (s.pass == pass) return s.scale;
+  return 1;
+}
+
 std::string Manifest::fileText() const {
   std::string text;
   text.reserve(256 + 96 * kept.size());
@@ -175,6 +181,17 @@ std::string Manifest::fileText() const {
   }
   w.key("nodes");
   writeNodes(w, *this);
+  if (!passScales.empty()) {  // "pass_scales" sorts before "passes"; its keys by name
+    std::vector<const ManifestPassScale*> byName;
+    for (const auto& p : passScales) byName.push_back(&p);
+    std::stable_sort(byName.begin(), byName.end(), [](const ManifestPassScale* a, const ManifestPassScale* b) {
+      return renderPassRow(a->pass).name < renderPassRow(b->pass).name;
+    });
+    w.key("pass_scales");
+    w.beginObject();
+    for (const ManifestPassScale* p : byName) w.memberNumber(renderPassRow(p->pass).name, p->scale);
+    w.endObject();
+  }
   w.key("passes");
   w.beginArray();
   for (RenderPass p : passes) w.string(renderPassRow(p).name);

@@ -70,6 +70,13 @@ struct ManifestTessellation {
   std::vector<std::string> targets;  // the targets that tessellate, in target order
 };
 
+// A scene pass whose render targets are smaller than the frame: each is `scale` times the
+// frame's width and height (rounded, at least 1 pixel). Passes not listed are the frame's size.
+struct ManifestPassScale {
+  RenderPass pass = RenderPass::DepthPrepass;
+  double scale = 1;
+};
+
 struct ManifestKeptNode {
   std::string node;
   std::string type;
@@ -99,12 +106,17 @@ struct Manifest {
   std::optional<ManifestTessellation> tessellation;
   std::vector<SceneResource> resources;     // table order
   std::vector<RenderPass> passes;           // the passes producing them, then WaterSurface
+  // Listed passes rendered below the frame's size (the `resolution` option of the nodes that
+  // read them, core/node_spec.h kResolutionOption), in the order of `passes`; none by
+  // default, and then the file has no "pass_scales".
+  std::vector<ManifestPassScale> passScales;
   int nodesTotal = 0;
   std::vector<ManifestKeptNode> kept;
   std::vector<ManifestRemoval> removed;
 
   const ManifestTarget* target(std::string_view name) const;  // null when not compiled for it
   bool lists(RenderPass pass) const;
+  double scaleOf(RenderPass pass) const;  // 1 unless passScales lists it
 
   // The manifest file's contents, written straight into one string (no DOM): the bytes
   // nlohmann's dump(2) of the same members gives, and a final newline.

@@ -1,5 +1,7 @@
 #include "codegen/manifest_build.h"
 
+#include <algorithm>
+
 namespace wg {
 namespace {
 
@@ -22,6 +24,27 @@ ManifestUniform manifestUniform(const Program& program, const UniformInfo& u) {
     m.angularFrequency = u.omega;
   }
   return m;
+}
+
+// The size of each listed scene pass (in the order of `passes`), from the `resolution`
+// option of the ops that read its resources: the smallest wins, so lowering any one reader
+// lowers the pass (one target serves every reader, and `tune` lowers one knob at a time).
+// Only passes below 1 are listed, so a graph that sets no resolution has the manifest it
+// always had.
+std::vector<ManifestPassScale> passScales(const Program& program, const std::vector<RenderPass>& passes) {
+  std::vector<ManifestPassScale> out;
+  for (RenderPass pass : passes) {
+    if (pass == RenderPass::WaterSurface || pass == RenderPass::EnvironmentCubemap) continue;
+    double scale = 1;
+    for (const auto& op : program.ops)
+      for (SceneResource r : op.spec->resources) {
+        auto it = op.options.find(kResolutionOption);
+        if (sceneResourceRow(r).pass == pass && it != op.options.end() && it->is_number())
+          scale = std::min(scale, it->get<double>());
+      }
+    if (scale < 1) out.push_back({pass, scale});
+  }
+  return out;
 }
 
 }  // namespace
@@ -62,6 +85,7 @@ Manifest buildManifest(const Program& program, const TargetPlans& plans, const s
   // Resources and the passes producing them in table order; the water surface last.
   m.resources = first.resources;
   m.passes = first.passes;
+  m.passScales = passScales(program, m.passes);
 
   m.nodesTotal = program.totalNodes;
   m.kept.reserve(program.ops.size());

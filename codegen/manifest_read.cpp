@@ -2,6 +2,7 @@
 // would not have written (an unknown member, pass, resource, builtin or type; a member of
 // the wrong kind) with a message that names the entry, so a hand-edited manifest fails
 // when it is read, not in the middle of a frame.
+#include <algorithm>
 #include <initializer_list>
 
 #include "codegen/manifest.h"
@@ -103,6 +104,30 @@ std::vector<RenderPass> passesOf(const json& manifest) {
     passes.push_back(*pass);
   }
   return passes;
+}
+
+// "pass_scales": {"depth_prepass": 0.5}: listed scene passes with a size in [0.25, 1) of
+// the frame's (1 is what an absent entry means, so the compiler never writes it), in the
+// order of "passes", as the compiler builds them.
+std::vector<ManifestPassScale> passScalesOf(const json& j, const std::vector<RenderPass>& passes) {
+  if (!j.is_object()) fail("the manifest's \"pass_scales\" is not an object");
+  for (const auto& [name, value] : j.items()) {
+    const std::string what = "the manifest's \"pass_scales\" entry '" + name + "'";
+    auto pass = parseRenderPass(name);
+    if (!pass) fail("the manifest's \"pass_scales\" names an unknown pass '" + name + "'");
+    if (*pass == RenderPass::WaterSurface || *pass == RenderPass::OpaqueScene || *pass == RenderPass::EnvironmentCubemap)
+      fail(what + ": only a frame-sized scene pass can be scaled");
+    if (std::find(passes.begin(), passes.end(), *pass) == passes.end()) fail(what + " names a pass \"passes\" does not list");
+    if (!value.is_number() || !(value.get<double>() >= kMinResolution && value.get<double>() < 1))
+      fail(what + " must be a number >= 0.25 and < 1 (1, the frame's size, is left out)");
+  }
+  std::vector<ManifestPassScale> out;
+  for (RenderPass p : passes) {
+    auto it = j.find(std::string(renderPassRow(p).name));
+    if (it != j.end() && std::none_of(out.begin(), out.end(), [&](const ManifestPassScale& s) { return s.pass == p; }))
+      out.push_back({p, it->get<double>()});
+  }
+  return out;
 }
 
 ManifestTarget targetOf(const std::string& name, const json& files) {
@@ -287,9 +312,10 @@ Manifest Manifest::fromJson(const json& j) {
   if (!j.is_object()) fail("the manifest is not a JSON object");
   Manifest m;
   m.passes = passesOf(j);
+  if (const json* scales = member(j, "pass_scales")) m.passScales = passScalesOf(*scales, m.passes);
   onlyMembers(j,
               {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
-               "textures", "tessellation", "resources", "passes", "nodes", "vulkan"},
+               "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
     fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));

@@ -1,5 +1,6 @@
 #include "core/registry.h"
 
+#include <algorithm>
 #include <set>
 #include <stdexcept>
 
@@ -13,8 +14,13 @@ namespace wg {
 // fetch by name (EmitContext::texture, EvalContext::sampleTexture).
 static void checkOptionsParse(const NodeSpec& s) {
   auto fail = [&](const std::string& why) { throw std::logic_error("node spec '" + s.type + "': " + why); };
-  bool readsAny = false;  // textures are fetched by name, and `bypass` is the bypass pass's
-  for (const auto& o : s.options) readsAny |= o.kind != OptionSpec::Kind::Texture && o.name != kBypassOption;
+  // Textures are fetched by name, `bypass` is the bypass pass's and `resolution` the
+  // manifest's (codegen/manifest_build.cpp): none is the node's own to parse.
+  auto own = [](const OptionSpec& o) {
+    return o.kind != OptionSpec::Kind::Texture && o.name != kBypassOption && o.name != kResolutionOption;
+  };
+  bool readsAny = false;
+  for (const auto& o : s.options) readsAny |= own(o);
   if (!s.parseOptions) {
     if (readsAny) fail("options without a parseOptions function");
     return;
@@ -23,7 +29,7 @@ static void checkOptionsParse(const NodeSpec& s) {
   OptionReader reader(s, defaults);
   if (!s.parseOptions(reader)) fail("parseOptions returned nothing");
   for (const auto& o : s.options)
-    if (o.kind != OptionSpec::Kind::Texture && o.name != kBypassOption && !reader.namesRead().count(o.name))
+    if (own(o) && !reader.namesRead().count(o.name))
       fail("parseOptions does not read option '" + o.name + "'");
 }
 
@@ -150,6 +156,15 @@ static std::string bypassText(const NodeSpec& s) {
   return text;
 }
 
+// The frame-sized scene resources a node reads ("scene_depth, scene_color"), for the
+// resolution option's doc.
+static std::string resourceList(const NodeSpec& s) {
+  std::string text;
+  for (SceneResource r : s.resources)
+    if (r != SceneResource::Environment) text += (text.empty() ? "" : ", ") + std::string(sceneResourceRow(r).name);
+  return text;
+}
+
 void Registry::add(NodeSpec spec) {
   if (!spec.bypass.empty()) {
     OptionSpec o;
@@ -158,6 +173,20 @@ void Registry::add(NodeSpec spec) {
     o.defaultValue = false;
     o.doc = "switch the node off: " + bypassText(spec);
     o.levels = {true, false};
+    spec.options.push_back(std::move(o));
+  }
+  const bool readsFrameSized = std::any_of(spec.resources.begin(), spec.resources.end(),
+                                           [](SceneResource r) { return r != SceneResource::Environment; });
+  if (readsFrameSized) {
+    OptionSpec o;
+    o.name = kResolutionOption;
+    o.kind = OptionSpec::Kind::Number;
+    o.defaultValue = 1.0;
+    o.min = kMinResolution;
+    o.max = 1.0;
+    o.doc = "size of the scene passes this node reads (" + resourceList(spec) +
+            "), as a fraction of the frame's width and height; a pass read by several nodes takes the smallest";
+    for (double l : kResolutionLevels) o.levels.push_back(l);
     spec.options.push_back(std::move(o));
   }
   checkSpec(spec);

@@ -1,6 +1,7 @@
 #include "runtime/pass_plan.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "runtime/runtime_error.h"
 
@@ -10,6 +11,10 @@ namespace {
 [[noreturn]] void failManifest(const std::string& m) { throw RuntimeError(RuntimeError::Kind::Manifest, m); }
 
 }  // namespace
+
+int scaledSize(int frameSize, double scale) {
+  return std::max(1, static_cast<int>(std::lround(static_cast<double>(frameSize) * scale)));
+}
 
 const char* passName(PassKind p) { return renderPassRow(p).name.data(); }  // a literal: NUL-terminated
 
@@ -68,8 +73,11 @@ PassPlan planPasses(const Manifest& manifest, const PlanOptions& options) {
                                 : sampler.color == TargetColor::Float32 ? ColorFormat::Rgba32f
                                                                         : frameColor;
       const bool cube = sampler.type == Type::SamplerCube;
-      const int width = cube ? options.environmentSize : options.width;
-      const int height = cube ? options.environmentSize : options.height;
+      // A scaled pass (manifest "pass_scales") renders into targets that fraction of the
+      // frame's size; the water samples them by screen position in [0, 1], so any size works.
+      const double scale = manifest.scaleOf(pass.id);
+      const int width = cube ? options.environmentSize : scaledSize(options.width, scale);
+      const int height = cube ? options.environmentSize : scaledSize(options.height, scale);
       plan.targets.push_back({std::string(sampler.target), pass.id, std::string(sampler.glslName), color,
                               sampler.depth ? DepthFormat::Depth32f : DepthFormat::None, width, height, cube});
     }

@@ -4,7 +4,8 @@
 // only when the manifest lists it; a render target is created only for a pass that runs:
 // "frame" (colour + depth, always), then one per scene sampler whose resource the pass
 // produces (core/interface_tables.h: renderPassTable in execution order, sceneSamplerTable
-// for each target's name, format and the sampler it is bound to). With deferred_water,
+// for each target's name, format and the sampler it is bound to), the frame's size or the
+// fraction of it the manifest's "pass_scales" gives the pass. With deferred_water,
 // water_surface draws the graph's fragment shader full-screen (see docs/architecture.md,
 // "Deferred water").
 #include <cstddef>
@@ -51,6 +52,9 @@ struct PassPlan {
 };
 
 size_t bytesPerPixel(ColorFormat f);
+
+// A frame dimension times a pass's scale (Manifest::scaleOf), rounded, at least 1.
+int scaledSize(int frameSize, double scale);
 
 // Whether the renderers sample `target` with nearest filtering: depth and the water
 // G-buffer are read texel for texel; colour is linear, except float colour on a device

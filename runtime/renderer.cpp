@@ -504,8 +504,13 @@ struct Renderer::Impl {
     GpuTarget* copy = find(SceneSampler::SceneColor);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, copy->fbo.id());
-    glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, settings.width, settings.height, GL_COLOR_BUFFER_BIT,
-                      GL_NEAREST);
+    // At a reduced scene resolution (manifest "pass_scales") the blit also shrinks the frame,
+    // filtered where the colour format can be (float colour on ES without float filtering
+    // cannot: nearest there, as the water samples it).
+    const bool scaled = copy->spec.width != settings.width || copy->spec.height != settings.height;
+    const GLenum filter = scaled && !sampledNearest(copy->spec, floatLinear) ? GL_LINEAR : GL_NEAREST;
+    glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, copy->spec.width, copy->spec.height, GL_COLOR_BUFFER_BIT,
+                      filter);
   }
 
   // The water G-buffer: the graph's vertex shader (displacement included) writes the

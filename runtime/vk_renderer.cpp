@@ -353,11 +353,23 @@ struct VkRenderer::Impl {
     Target& copy = *find(SceneSampler::SceneColor);
     frame().color.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     copy.color.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    VkImageCopy region{};
-    region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    region.extent = {static_cast<uint32_t>(settings.width), static_cast<uint32_t>(settings.height), 1};
-    vkCmdCopyImage(cmd, frame().color.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.color.image(),
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+    if (copy.spec.width == settings.width && copy.spec.height == settings.height) {
+      VkImageCopy region{};
+      region.srcSubresource = region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+      region.extent = {static_cast<uint32_t>(settings.width), static_cast<uint32_t>(settings.height), 1};
+      vkCmdCopyImage(cmd, frame().color.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.color.image(),
+                     VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+      return;
+    }
+    // A reduced scene resolution (manifest "pass_scales"): the frame shrunk by a blit,
+    // filtered as the GL runtime's glBlitFramebuffer (nearest where float cannot be).
+    VkImageBlit blit{};
+    blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.srcOffsets[1] = {settings.width, settings.height, 1};
+    blit.dstOffsets[1] = {copy.spec.width, copy.spec.height, 1};
+    vkCmdBlitImage(cmd, frame().color.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.color.image(),
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
+                   sampledNearest(copy.spec, floatLinear) ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
   }
 
   // The water G-buffer: where no water is, the surface's depth w stays 1.

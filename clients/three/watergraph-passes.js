@@ -34,10 +34,17 @@ export function checkSceneDescription(description) {
   return description;
 }
 
+// A frame dimension times a pass's scale (the manifest's "pass_scales"; absent: 1),
+// rounded half away from zero as runtime/pass_plan.cpp's scaledSize, at least 1.
+export function scaledSize(size, scale) {
+  return Math.max(1, Math.round(size * scale));
+}
+
 // Which passes run and which render targets exist, as runtime/pass_plan.cpp decides them:
 // a pass runs only when the manifest lists it (the opaque scene always); each pass gets a
-// target per scene sampler of the resources it produces, frame-sized (cube faces
-// environmentSize square), "frame" first. frameFloat: the frame's colour is RGBA32F.
+// target per scene sampler of the resources it produces, frame-sized or the fraction of
+// the frame the manifest's "pass_scales" gives the pass (cube faces environmentSize
+// square), "frame" first. frameFloat: the frame's colour is RGBA32F.
 export function planPasses(manifest, description, { width, height, environmentSize, frameFloat = false }) {
   const listed = new Set(manifest.passes ?? []);
   if (!listed.has('water_surface')) throw new WaterGraphError(`graph '${manifest.graph}': the manifest's "passes" list lacks water_surface`);
@@ -46,16 +53,21 @@ export function planPasses(manifest, description, { width, height, environmentSi
     if (!description.render_passes.includes(pass)) throw new WaterGraphError(`graph '${manifest.graph}' lists an unknown pass '${pass}'`);
   const frameColor = frameFloat ? 'rgba32f' : 'rgba8';
   const plan = { passes: [], targets: [{ name: 'frame', pass: 'water_surface', sampler: '', color: frameColor, depth: true, width, height, cube: false }] };
+  const scales = manifest.pass_scales ?? {};
+  for (const pass of Object.keys(scales))
+    if (!listed.has(pass)) throw new WaterGraphError(`graph '${manifest.graph}' scales pass '${pass}', which it does not list`);
   for (const pass of description.render_passes) {
     if (pass !== 'opaque_scene' && !listed.has(pass)) continue;
     plan.passes.push(pass);
+    const scale = scales[pass] ?? 1;
     for (const t of description.render_targets) {
       if (t.pass !== pass) continue;
       plan.targets.push({
         name: t.target, pass, sampler: t.sampler, resource: t.resource,
         color: t.color === 'none' ? null : t.color === 'float32' ? 'rgba32f' : frameColor,
         depth: t.depth, cube: t.cube,
-        width: t.cube ? environmentSize : width, height: t.cube ? environmentSize : height,
+        width: t.cube ? environmentSize : scaledSize(width, scale),
+        height: t.cube ? environmentSize : scaledSize(height, scale),
       });
     }
   }
@@ -177,6 +189,11 @@ export class WaterPasses {
       if (t.cube) {
         target = new THREE.WebGLCubeRenderTarget(t.width, { ...linear, depthBuffer: false });
         texture = target.texture;
+      } else if (t.pass === 'scene_color_copy' && (t.width !== width || t.height !== height)) {
+        // Smaller than the frame ("pass_scales"): a target the frame is blitted into,
+        // filtered (the runtime's glBlitFramebuffer with GL_LINEAR).
+        target = new THREE.WebGLRenderTarget(t.width, t.height, { ...linear, depthBuffer: false });
+        texture = target.texture;
       } else if (t.pass === 'scene_color_copy') {
         // Copied from the frame's colour (the runtime blits it): RGBA8, linear, clamped.
         // (Copied from the frame target: a canvas without alpha cannot fill an RGBA texture.)
@@ -199,7 +216,7 @@ export class WaterPasses {
       // The water G-buffer: two RGBA32F attachments read texel for texel (nearest), in the
       // order of the description's targets (water_normal, water_position), and depth.
       const g = this.plan.targets.filter((t) => t.resource === 'underwater');
-      const target = new THREE.WebGLRenderTarget(width, height, {
+      const target = new THREE.WebGLRenderTarget(g[0].width, g[0].height, {
         count: g.length, type: THREE.FloatType, format: THREE.RGBAFormat, depthBuffer: true,
         minFilter: THREE.NearestFilter, magFilter: THREE.NearestFilter, generateMipmaps: false,
       });
@@ -247,8 +264,12 @@ export class WaterPasses {
           case 'refraction': this.#sceneInto(renderer, scene, camera, this.targets.refraction.target, new THREE.Plane(new THREE.Vector3(0, -side, 0), 0), false); break;
           case 'opaque_scene': this.#sceneInto(renderer, scene, camera, frame, null, false); break;
           case 'scene_color_copy':
-            renderer.setRenderTarget(frame);
-            renderer.copyFramebufferToTexture(this.targets.scene_color.texture);
+            if (this.targets.scene_color.target) {
+              this.#blit(renderer, frame, this.targets.scene_color.target);
+            } else {
+              renderer.setRenderTarget(frame);
+              renderer.copyFramebufferToTexture(this.targets.scene_color.texture);
+            }
             break;
           case 'deferred_water': this.#gbuffer(renderer, camera, water); break;
           case 'water_surface': {
@@ -308,6 +329,16 @@ export class WaterPasses {
     // Raw binds: three.js tracks no read framebuffer here, and binding null restores its view.
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, renderer.properties.get(this.frame).__webglFramebuffer);
     gl.blitFramebuffer(0, 0, this.width, this.height, 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
+  }
+
+  // The colour of `source` shrunk into the smaller `target`, filtered, as the runtime's
+  // scene colour copy at a reduced scene resolution.
+  #blit(renderer, source, target) {
+    renderer.setRenderTarget(target);  // three.js makes its framebuffer, bound for drawing
+    const gl = renderer.getContext();
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, renderer.properties.get(source).__webglFramebuffer);
+    gl.blitFramebuffer(0, 0, source.width, source.height, 0, 0, target.width, target.height, gl.COLOR_BUFFER_BIT, gl.LINEAR);
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
   }
 

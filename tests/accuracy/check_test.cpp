@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "accuracy/check.h"
 #include "codegen/compile.h"
@@ -225,6 +226,32 @@ TEST(CheckCli, DeferredWaterIsComparedWithTheCpu) {
                                 " --target glsl330 --size 32x18 --error-map " + test::shellQuote(dir + "/map.png"),
                             &out);
   EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("reference: cpu"), std::string::npos) << out;
+  EXPECT_NE(out.find("over the bound 0\n"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
+// A graph whose scene passes run at half the frame's size ("pass_scales"): check says it
+// compares at full scene resolution, renders them so (its read-back takes the scene images
+// a texel per frame pixel), and the shaders, which the resolution does not change, are
+// within their bound.
+TEST(CheckCli, ReducedScenePassesAreCheckedAtFullResolutionAndSaySo) {
+  std::string dir = test::makeTempDir("wg_check_half");
+  nlohmann::json graph = nlohmann::json::parse(test::readFile(test::sourcePath("graphs/deferred_underwater.json")));
+  for (auto& node : graph["nodes"]) {
+    const NodeSpec* spec = defaultRegistry().find(node["type"].get<std::string>());
+    if (spec && spec->optionIndex(kResolutionOption) >= 0) node["options"][kResolutionOption] = 0.5;
+  }
+  test::writeFile(dir + "/half.json", graph.dump(2));
+  std::string out;
+  int rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check " + test::shellQuote(dir + "/half.json") +
+                                " --target glsl330 --size 32x18",
+                            &out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("  compared at full scene resolution: the graph renders depth_prepass at 0.5, scene_color_copy at "
+                     "0.5, deferred_water at 0.5 of the frame's size; check renders every scene pass at the frame's size\n"),
+            std::string::npos)
+      << out;
   EXPECT_NE(out.find("reference: cpu"), std::string::npos) << out;
   EXPECT_NE(out.find("over the bound 0\n"), std::string::npos) << out;
   std::filesystem::remove_all(dir);

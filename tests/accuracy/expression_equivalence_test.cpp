@@ -13,6 +13,7 @@
 #include "accuracy/node_probe.h"
 #include "accuracy/probe_cases.h"
 #include "codegen/cpu_backend.h"
+#include "core/diagnostic_text.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
 #include "test_support.h"
@@ -113,11 +114,6 @@ std::vector<ProbeCase> probeCases(const Technique& t) {
   return cases;
 }
 
-std::string messages(const Diagnostics& diags) {
-  std::string s;
-  for (const auto& d : diags.all()) s += formatText(d) + "\n";
-  return s;
-}
 
 class ExpressionEquivalenceOnGpu : public ::testing::TestWithParam<Target> {};
 
@@ -131,9 +127,9 @@ TEST_P(ExpressionEquivalenceOnGpu, FormulasStayWithinTheBuiltInNodesErrorBound) 
     std::vector<ProbeCase> cases = probeCases(t);
     Diagnostics diags;
     auto builtIn = probeNode(*node, t.nodeOptions, t.output, cases, GetParam(), diags);
-    ASSERT_TRUE(builtIn) << t.name << ": " << messages(diags);
+    ASSERT_TRUE(builtIn) << t.name << ": " << core_test::dump(diags);
     auto formula = probeNode(*expression, t.expression, "out", cases, GetParam(), diags);
-    ASSERT_TRUE(formula) << t.name << ": " << messages(diags);
+    ASSERT_TRUE(formula) << t.name << ": " << core_test::dump(diags);
     ASSERT_EQ(builtIn->cases.size(), cases.size());
     ASSERT_EQ(formula->cases.size(), cases.size());
     EXPECT_TRUE(builtIn->passed()) << formatProbeText(*builtIn);

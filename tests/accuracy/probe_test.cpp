@@ -8,6 +8,7 @@
 
 #include "accuracy/node_probe.h"
 #include "accuracy/probe.h"
+#include "core/diagnostic_text.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
@@ -16,24 +17,19 @@
 namespace wg::accuracy {
 namespace {
 
-std::string messages(const Diagnostics& d) {
-  std::string s;
-  for (const auto& x : d.all()) s += formatText(x) + "\n";
-  return s;
-}
 
 TEST(ProbeCases, UnknownKeyIsReportedAtItsPosition) {
   Diagnostics diags;
   auto r = parseProbeCases("{\"cases\": [\n  {\"name\": \"a\",\n   \"tme\": 3}\n]}\n", "c.json", diags);
   EXPECT_FALSE(r);
-  EXPECT_NE(messages(diags).find("c.json:3:4: error: [WG060] unknown key 'tme'"), std::string::npos) << messages(diags);
+  EXPECT_NE(core_test::dump(diags).find("c.json:3:4: error: [WG060] unknown key 'tme'"), std::string::npos) << core_test::dump(diags);
 }
 
 TEST(ProbeCases, WrongSizeAndDuplicateNameAreErrors) {
   Diagnostics diags;
   auto r = parseProbeCases(R"({"cases": [{"name": "a", "normal": [0, 1]}, {"name": "a"}]})", "c.json", diags);
   EXPECT_FALSE(r);
-  std::string m = messages(diags);
+  std::string m = core_test::dump(diags);
   EXPECT_NE(m.find("c.json:1:36: error: [WG060] \"normal\" must be an array of 3 numbers"), std::string::npos) << m;
   EXPECT_NE(m.find("a second case named 'a'"), std::string::npos) << m;
 }
@@ -41,7 +37,7 @@ TEST(ProbeCases, WrongSizeAndDuplicateNameAreErrors) {
 TEST(ProbeCases, InfinityCameraAndDerivedViewDirection) {
   Diagnostics diags;
   auto r = parseProbeCases(R"({"cases": [{"name": "a", "camera": {"position": [0, 3, 4], "far": "inf"}}]})", "c.json", diags);
-  ASSERT_TRUE(r) << messages(diags);
+  ASSERT_TRUE(r) << core_test::dump(diags);
   const EvalEnvironment& env = r->cases[0].env;
   EXPECT_TRUE(std::isinf(env.cameraNearFar[1]));
   EXPECT_FLOAT_EQ(static_cast<float>(env.viewDirection[1]), 0.6f);
@@ -53,7 +49,7 @@ TEST(ProbeCases, InfinityCameraAndDerivedViewDirection) {
 TEST(ProbeCases, InvalidJsonIsWg001) {
   Diagnostics diags;
   EXPECT_FALSE(parseProbeCases("{\"cases\": [", "c.json", diags));
-  EXPECT_NE(messages(diags).find("[WG001]"), std::string::npos) << messages(diags);
+  EXPECT_NE(core_test::dump(diags).find("[WG001]"), std::string::npos) << core_test::dump(diags);
 }
 
 class ProbeOnGpu : public ::testing::TestWithParam<Target> {
@@ -67,13 +63,13 @@ class ProbeOnGpu : public ::testing::TestWithParam<Target> {
 TEST_P(ProbeOnGpu, EveryExampleGraphPassesTheGraphCases) {
   Diagnostics diags;
   auto cases = loadProbeCases(test::sourcePath("tests/hardcases/graphs.json"), diags);
-  ASSERT_TRUE(cases) << messages(diags);
+  ASSERT_TRUE(cases) << core_test::dump(diags);
   for (const auto& path : test::exampleGraphs()) {
     SCOPED_TRACE(path);
     auto graph = loadGraphFile(path, diags);
-    ASSERT_TRUE(graph) << messages(diags);
+    ASSERT_TRUE(graph) << core_test::dump(diags);
     auto report = probeGraph(*graph, {}, *cases, GetParam(), diags);
-    ASSERT_TRUE(report) << messages(diags);
+    ASSERT_TRUE(report) << core_test::dump(diags);
     EXPECT_EQ(report->cases.size(), cases->cases.size());
     EXPECT_TRUE(report->passed()) << formatProbeText(*report);
   }
@@ -84,12 +80,12 @@ TEST_P(ProbeOnGpu, DivisionByZeroIsFlaggedAsInfinite) {
   auto graph = parseGraph(R"({"version": 1, "name": "d", "parameters": {"b": {"type": "float", "default": 1}},
     "nodes": [{"id": "q", "type": "div", "inputs": {"a": 1, "b": "$b"}}],
     "outputs": {"fragment": {"alpha": "q.out"}}})", "d.json", diags);
-  ASSERT_TRUE(graph) << messages(diags);
+  ASSERT_TRUE(graph) << core_test::dump(diags);
   auto cases = parseProbeCases(R"({"cases": [{"name": "one", "parameters": {"b": 4}}, {"name": "zero", "parameters": {"b": 0}}]})",
                                "c.json", diags);
-  ASSERT_TRUE(cases) << messages(diags);
+  ASSERT_TRUE(cases) << core_test::dump(diags);
   auto report = probeGraph(*graph, ProbeOutput{"q", "out"}, *cases, GetParam(), diags);
-  ASSERT_TRUE(report) << messages(diags);
+  ASSERT_TRUE(report) << core_test::dump(diags);
   ASSERT_EQ(report->cases.size(), 2u);
   EXPECT_TRUE(report->cases[0].passed()) << formatProbeText(*report);
   EXPECT_DOUBLE_EQ(report->cases[0].gpu[0], 0.25);
@@ -102,19 +98,19 @@ TEST_P(ProbeOnGpu, UnknownParameterInACaseIsAnError) {
   Diagnostics diags;
   auto graph = loadGraphFile(test::sourcePath("graphs/lake.json"), diags);
   auto cases = parseProbeCases(R"({"cases": [{"name": "x", "parameters": {"shalow": 1}}]})", "c.json", diags);
-  ASSERT_TRUE(graph && cases) << messages(diags);
+  ASSERT_TRUE(graph && cases) << core_test::dump(diags);
   EXPECT_FALSE(probeGraph(*graph, {}, *cases, GetParam(), diags));
-  EXPECT_NE(messages(diags).find("c.json:1:12: error: [WG060] case 'x' sets parameter 'shalow'"), std::string::npos)
-      << messages(diags);
+  EXPECT_NE(core_test::dump(diags).find("c.json:1:12: error: [WG060] case 'x' sets parameter 'shalow'"), std::string::npos)
+      << core_test::dump(diags);
 }
 
 TEST_P(ProbeOnGpu, AStaticParameterCannotBeSetByACase) {
   Diagnostics diags;
   auto graph = loadGraphFile(test::sourcePath("graphs/shelf.json"), diags);
   auto cases = parseProbeCases(R"({"cases": [{"name": "s", "parameters": {"slope": 0.5}}]})", "c.json", diags);
-  ASSERT_TRUE(graph && cases) << messages(diags);
+  ASSERT_TRUE(graph && cases) << core_test::dump(diags);
   EXPECT_FALSE(probeGraph(*graph, {}, *cases, GetParam(), diags));
-  EXPECT_NE(messages(diags).find("which is static"), std::string::npos) << messages(diags);
+  EXPECT_NE(core_test::dump(diags).find("which is static"), std::string::npos) << core_test::dump(diags);
 }
 
 TEST_P(ProbeOnGpu, ANodeOutputCanBeProbedAndUnknownPortsAreNamed) {
@@ -128,7 +124,7 @@ TEST_P(ProbeOnGpu, ANodeOutputCanBeProbedAndUnknownPortsAreNamed) {
   cases.cases[0].env = defaultProbeEnvironment();
   auto bad = probeGraph(*graph, ProbeOutput{node, "no_such_port"}, cases, GetParam(), diags);
   EXPECT_FALSE(bad);
-  EXPECT_NE(messages(diags).find("has no output 'no_such_port'"), std::string::npos) << messages(diags);
+  EXPECT_NE(core_test::dump(diags).find("has no output 'no_such_port'"), std::string::npos) << core_test::dump(diags);
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, ProbeOnGpu, ::testing::Values(Target::Glsl330, Target::Es300),

@@ -93,6 +93,30 @@ TEST(TuneKnobs, AKnobNoLevelOfWhichChangesTheShadersIsNotTuned) {
   EXPECT_TRUE(find(knobs, "waves.max_waves"));
 }
 
+// The scene-pass resolution changes no shader, only the manifest's pass sizes: tune still
+// sees each level as distinct, and a configuration applied sizes the passes.
+TEST(TuneKnobs, SceneResolutionIsTunedThoughItChangesNoShader) {
+  Graph g = parse(R"({"version": 1, "name": "scene", "nodes": [
+    {"id": "d", "type": "scene_depth"}, {"id": "c", "type": "scene_color"},
+    {"id": "m", "type": "mul", "inputs": {"a": "c.color", "b": "d.linear"}}],
+    "outputs": {"fragment": {"color": "m.out"}}})");
+  std::vector<std::string> unchanged;
+  std::vector<TuneKnob> knobs = distinctKnobLevels(g, graphKnobs(g), Target::Glsl330, unchanged);
+  EXPECT_TRUE(unchanged.empty()) << unchanged.front();
+  const TuneKnob* depth = find(knobs, "d.resolution");
+  const TuneKnob* color = find(knobs, "c.resolution");
+  ASSERT_TRUE(depth && color);
+  EXPECT_EQ(nlohmann::json(depth->levels).dump(), "[0.25,0.5,1.0]");
+  TuneConfig config(knobs.size());
+  for (size_t k = 0; k < knobs.size(); ++k) config[k] = static_cast<int>(knobs[k].levels.size()) - 1;
+  config[static_cast<size_t>(depth - knobs.data())] = 1;
+  config[static_cast<size_t>(color - knobs.data())] = 0;
+  std::string manifest = fileOf(withKnobLevels(g, knobs, config), ".manifest.json");
+  EXPECT_NE(manifest.find(R"("depth_prepass": 0.5,)"), std::string::npos) << manifest;
+  EXPECT_NE(manifest.find(R"("scene_color_copy": 0.25)"), std::string::npos) << manifest;
+  EXPECT_EQ(fileOf(withKnobLevels(g, knobs, config), ".glsl330.frag"), fileOf(g, ".glsl330.frag"));
+}
+
 TEST(TuneKnobs, KnobsInsideSubgraphInstancesAreNamedByTheInstance) {
   std::string dir = test::makeTempDir("wg_tune_knobs");
   std::filesystem::create_directories(dir + "/lib");

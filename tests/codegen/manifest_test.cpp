@@ -136,6 +136,14 @@ TEST(Manifest, FromJsonNamesWhatIsWrong) {
        "without the other"},
       {"resource list", [](auto& m) { m["resources"].push_back("ssao"); }, "unknown scene resource 'ssao'"},
       {"kept node", [](auto& m) { m["nodes"]["kept"][0].erase("type"); }, "kept node waves lacks the string \"type\""},
+      {"scale of an unlisted pass", [](auto& m) { m["pass_scales"]["refraction"] = 0.5; },
+       "'refraction' names a pass \"passes\" does not list"},
+      {"scale of 1", [](auto& m) { m["pass_scales"]["depth_prepass"] = 1.0; }, "must be a number >= 0.25 and < 1"},
+      {"scale below a quarter", [](auto& m) { m["pass_scales"]["depth_prepass"] = 0.1; }, "must be a number >= 0.25"},
+      {"scaled water surface", [](auto& m) { m["pass_scales"]["water_surface"] = 0.5; },
+       "only a frame-sized scene pass can be scaled"},
+      {"scale of an unknown pass", [](auto& m) { m["pass_scales"]["ssao"] = 0.5; }, "names an unknown pass 'ssao'"},
+      {"pass scales not an object", [](auto& m) { m["pass_scales"] = 0.5; }, "\"pass_scales\" is not an object"},
   };
   for (const auto& c : cases) {
     SCOPED_TRACE(c.what);

@@ -54,8 +54,7 @@ TEST(LinearizeDepth, SkyAndInfiniteFarPlaneStayFinite) {
   EXPECT_NEAR(nodes::linearizeDepthReference(0.0, 0.0, 100), 1e-6, 1e-18);
 }
 
-// Depth-buffer value of a linear depth L: the inverse of n / ((1 - d) + d n / f).
-double depthOf(double linear, double n, double f) { return (1 - n / linear) / (1 - n / f); }
+using test::depthOf;
 
 EvalEnvironment sceneAt(double sceneLinear, double surfaceLinear) {
   EvalEnvironment env;

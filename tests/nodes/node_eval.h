@@ -43,6 +43,10 @@ inline EvalEnvironment atTime(double t) {
   return env;
 }
 
+// Depth-buffer value of a linear view depth L: the inverse of linearize_depth,
+// n / ((1 - d) + d n / f).
+inline double depthOf(double linear, double n, double f) { return (1 - n / linear) / (1 - n / f); }
+
 // Compiles a graph for every target (glslang validates each shader). Returns the result,
 // or nullopt with the diagnostics in *messages.
 inline std::optional<CompileResult> compileInline(const std::string& json, std::string* messages) {

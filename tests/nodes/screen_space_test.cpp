@@ -56,8 +56,7 @@ void mulPoint(const Value& m, const double p[4], double out[4]) {
     for (int c = 0; c < 4; ++c) out[r] += m[c * 4 + r] * p[c];
   }
 }
-// Depth-buffer value of a linear view depth L (inverse of linearize_depth).
-double depthOf(double linear, double n, double f) { return (1 - n / linear) / (1 - n / f); }
+using test::depthOf;
 
 EvalEnvironment cameraEnv(Vec3d eye, Vec3d centre, Vec3d up = {0, 1, 0}) {
   EvalEnvironment env;

@@ -15,6 +15,7 @@
 #include "nodes/gerstner_waves.h"
 #include "nodes/registry.h"
 #include "nodes/texture_source.h"
+#include "node_eval.h"
 #include "test_support.h"
 
 namespace wg {
@@ -42,11 +43,7 @@ std::vector<Value> evalNode(const std::string& type, const nlohmann::json& optio
   return evaluateNode(*spec, options, {inputs.begin(), inputs.end()}, env, &textures, test::sourceDir());
 }
 
-EvalEnvironment atTime(double t) {
-  EvalEnvironment env;
-  env.time = Value::scalar(t);
-  return env;
-}
+using test::atTime;
 
 const TextureImage& builtinTexture(const std::string& name) {
   static std::map<std::string, TextureImage> cache;

@@ -155,6 +155,31 @@ TEST(PassPlan, DeferredWaterCreatesTheFloatGbuffer) {
   EXPECT_FALSE(planPasses(manifestWith({"water_surface"}), small()).target("water_position"));
 }
 
+// "pass_scales": the targets of a scaled pass are that fraction of the frame (rounded, at
+// least a pixel); other passes and the environment cube keep their sizes.
+TEST(PassPlan, ScaledPassesGetSmallerTargets) {
+  nlohmann::json m = manifestJsonWith({"water_surface", "deferred_water", "depth_prepass", "scene_color_copy",
+                                       "planar_reflection", "environment_cubemap"});
+  m["pass_scales"] = {{"depth_prepass", 0.5}, {"deferred_water", 0.25}};
+  PlanOptions o = small();
+  o.width = 321, o.height = 181;
+  PassPlan plan = planPasses(Manifest::fromJson(m), o);
+  auto size = [&](const char* name) {
+    const TargetSpec* t = plan.target(name);
+    return t ? std::pair(t->width, t->height) : std::pair(-1, -1);
+  };
+  EXPECT_EQ(size("frame"), std::pair(321, 181));
+  EXPECT_EQ(size("scene_depth"), std::pair(161, 91)) << "160.5 and 90.5 round up";
+  EXPECT_EQ(size("water_position"), std::pair(80, 45));
+  EXPECT_EQ(size("water_normal"), std::pair(80, 45));
+  EXPECT_EQ(size("scene_color"), std::pair(321, 181));
+  EXPECT_EQ(size("reflection"), std::pair(321, 181));
+  EXPECT_EQ(size("environment"), std::pair(64, 64));
+  EXPECT_EQ(scaledSize(1, 0.25), 1) << "at least one pixel";
+  PassPlan full = planPasses(manifestWith({"water_surface", "depth_prepass"}), o);
+  EXPECT_EQ(full.totalBytes() - plan.target("frame")->bytes(), 321u * 181u * 4u);
+}
+
 TEST(PassPlan, Errors) {
   expectUnreadable(nlohmann::json::object(), "no \"passes\"");
   expectUnplannable(manifestWith({"planar_reflection"}), "lacks water_surface");

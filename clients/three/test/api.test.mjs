@@ -129,6 +129,22 @@ test("the passes and render targets follow the runtime's planner (runtime/pass_p
     { width: 8, height: 8, environmentSize: 4 }), /lacks water_surface/);
 });
 
+test('a scaled pass ("pass_scales") gets targets that fraction of the frame, rounded as the runtime', () => {
+  const all = ['environment_cubemap', 'depth_prepass', 'scene_color_copy', 'deferred_water', 'water_surface'];
+  const plan = planPasses({ graph: 'half', passes: all, pass_scales: { depth_prepass: 0.5, deferred_water: 0.25 } },
+    description(), { width: 321, height: 181, environmentSize: 64 });
+  assert.deepEqual(plan.targets.map((t) => [t.name, t.width, t.height]), [
+    ['frame', 321, 181],
+    ['environment', 64, 64],      // the cube map keeps its own size
+    ['scene_depth', 161, 91],     // 160.5 -> 161, 90.5 -> 91 (std::lround)
+    ['scene_color', 321, 181],    // not scaled
+    ['water_normal', 80, 45],
+    ['water_position', 80, 45],
+  ]);
+  assert.throws(() => planPasses({ graph: 'x', passes: ['water_surface'], pass_scales: { refraction: 0.5 } }, description(),
+    { width: 8, height: 8, environmentSize: 4 }), /scales pass 'refraction', which it does not list/);
+});
+
 test("the client's resource -> pass table is the runtime's", () => {
   const runtime = Object.fromEntries(description().render_targets.map((t) => [t.resource, t.pass]));
   assert.deepEqual(RESOURCE_PASSES, runtime);
