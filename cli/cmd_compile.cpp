@@ -45,6 +45,7 @@ struct CompileArgs {
   bool textures = false;  // also write <graph>.<sampler>.png for every node texture
   std::string depfile;    // write a Make/Ninja depfile here
   bool explainFrequency = false;  // print each graph's frequency report (codegen/frequency_report.h)
+  bool derivedUniforms = false;   // CompileOptions::derivedUniforms
 };
 
 struct TargetSet {
@@ -176,6 +177,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     CompileOptions options;
     options.targets = targets.glsl;
     options.preset = args.preset;
+    options.derivedUniforms = args.derivedUniforms;
     result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
     outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }
@@ -337,6 +339,9 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
                 "print, per graph, how many ops are constant, per-draw, per-vertex and per-fragment, and the per-draw "
                 "values the fragment stage computes for every pixel (candidates for uniforms computed once per draw), "
                 "each with its estimated operations per pixel");
+  cmd->add_flag("--derived-uniforms", args.derivedUniforms,
+                "per-draw values the fragment shader would compute for every pixel become uniforms (u_derived<k>) "
+                "that the runtime computes once per draw in double; the manifest holds how (experimental)");
 }
 
 }  // namespace

@@ -9,7 +9,7 @@
 #include "pass_test_support.h"
 
 namespace wg {
-namespace {
+namespace derived_program_test {
 
 using namespace passtest;
 
@@ -86,5 +86,5 @@ TEST(DerivedProgram, TheManifestFormRefusesWhatItCannotEvaluate) {
   EXPECT_FALSE(derivedFromJson(forward, defaultRegistry(), p.parameters, error));
 }
 
-}  // namespace
+}  // namespace derived_program_test
 }  // namespace wg
