@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "codegen/cpu_backend.h"
+#include "codegen/derived_vocabulary.h"
 #include "codegen/frequency.h"
 #include "core/node_options.h"
 
@@ -31,22 +32,6 @@ std::optional<Type> typeOfJson(const nlohmann::json& j) {
 }
 
 }  // namespace
-
-const std::vector<std::string_view>& derivableNodeTypes() {
-  // Kept short on purpose: every client implements each of them (docs/graph-format.md).
-  static const std::vector<std::string_view> types = {
-      "abs",       "add",       "camera_position", "clamp",  "combine", "compare",     "cos",   "cross",
-      "div",       "dot",       "exp",             "floor",  "fract",   "inversesqrt", "length", "log",
-      "max",       "min",       "mix",             "mod",    "mul",     "negate",      "normalize", "one_minus",
-      "pow",       "saturate",  "select",          "sin",    "smoothstep", "split",    "sqrt",  "step",
-      "sub",       "sun_direction", "swizzle",     "time"};
-  return types;
-}
-
-bool derivableNodeType(std::string_view type) {
-  const auto& t = derivableNodeTypes();
-  return std::binary_search(t.begin(), t.end(), type);
-}
 
 DerivedValue extractDerived(const Program& program, int root, int port) {
   const std::vector<Frequency> f = analyseFrequency(program);
@@ -124,7 +109,7 @@ std::optional<DerivedValue> derivedFromJson(const nlohmann::json& j, const Regis
     op.nodeId = jo.value("node", "");
     op.spec = registry.find(jo.value("type", ""));
     if (!op.spec || !op.spec->eval) return fail("unknown node type '" + jo.value("type", "") + "'");
-    if (!derivableNodeType(op.spec->type)) return fail("node type '" + op.spec->type + "' is not allowed in a derived value");
+    if (!isDerivedNodeType(op.spec->type)) return fail("node type '" + op.spec->type + "' is not allowed in a derived value");
     op.options = jo.value("options", nlohmann::json::object());
     try {
       op.options = completeOptions(*op.spec, op.options);

@@ -24,14 +24,7 @@ struct DerivedValue {
   Type type = Type::Invalid;
 };
 
-// Whether ops of node type `type` may appear in a derived program: the plain math nodes
-// whose options are simple and the per-draw input nodes (kDerivableNodeTypes). Each
-// client evaluating derived programs (the runtime's double CPU backend, the three.js
-// client, the C header) implements exactly these; a candidate with any other type stays
-// in the shader.
-bool derivableNodeType(std::string_view type);
-// The list itself, sorted, for documentation and clients' tests.
-const std::vector<std::string_view>& derivableNodeTypes();
+// Which node types a derived program may hold: codegen/derived_vocabulary.h.
 
 // The per-draw cone below op output (`root`, `port`) of `program`: every op it reads
 // through, renumbered. Throws std::logic_error when the cone reads a value that is not

@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "codegen/derived_vocabulary.h"
 #include "codegen/frequency_report.h"
 
 namespace wg {
@@ -31,7 +32,7 @@ DerivedPlan planDerived(const Program& program, const PlannedStage* fragment) {
         derivable = false;  // a cone the analysis cannot take out whole stays in the shader
         break;
       }
-      for (const Op& op : d.program.ops) derivable = derivable && derivableNodeType(op.spec->type);
+      for (const Op& op : d.program.ops) derivable = derivable && isDerivedNodeType(op.spec->type);
       values.push_back(std::move(d));
     }
     if (!derivable) continue;
