@@ -6,10 +6,12 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 
 #include <nlohmann/json.hpp>
 
 #include "codegen/cpu_backend.h"
+#include "codegen/manifest.h"
 #include "derived_samples.h"
 #include "eco_support.h"
 
@@ -89,6 +91,80 @@ TEST(DerivedJs, RefusesANodeTypeOutsideTheVocabulary) {
   CmdResult r = sh("timeout 60 node " + test::shellQuote(evaluator()) + " " + test::shellQuote(file));
   EXPECT_NE(r.exit, 0);
   EXPECT_NE(r.err.find("node type 'voronoi' cannot be computed outside the shader"), std::string::npos) << r.err;
+}
+
+// The client wired to a compiled graph (clients/three/test/derived_client.mjs): after
+// update(time, camera) and after setParameter of every parameter a derived program reads (to
+// a value past its range, which the client clamps), each derived uniform holds what the
+// runtime's evaluator computes from the same frame and parameters, and changes with them.
+TEST(DerivedJs, TheClientSetsDerivedUniformsAsTheRuntime) {
+  TempDir dir("wg_derived_client_");
+  CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath("graphs/lagoon.json")) + " -o " +
+                      test::shellQuote(dir.path()) + " --target es300 --derived-uniforms --quiet");
+  ASSERT_EQ(c.exit, 0) << c.err;
+  Manifest manifest = Manifest::fromJson(nlohmann::json::parse(test::readFile(dir / "lagoon.manifest.json")));
+  const std::vector<ProgramParameter> parameters = manifestParameters(manifest.uniforms);
+  std::vector<const ManifestUniform*> derived;
+  std::set<std::string> read;  // the parameters the derived programs read
+  for (const auto& u : manifest.uniforms)
+    if (u.derived) {
+      derived.push_back(&u);
+      for (const Op& op : u.derived->program.ops)
+        for (const ValueRef& r : op.inputs)
+          if (r.kind == ValueRef::Kind::Param) read.insert(parameters[static_cast<size_t>(r.index)].name);
+    }
+  ASSERT_FALSE(derived.empty());
+  ASSERT_FALSE(read.empty());
+  std::string sets;
+  for (const auto& p : parameters) {
+    if (!read.count(p.name)) continue;
+    nlohmann::json v = nlohmann::json::array();
+    for (int k = 0; k < p.defaultValue.size(); ++k) v.push_back(p.max ? *p.max + 5 : p.defaultValue[k] + 1);
+    sets += " " + test::shellQuote(p.name + "=" + (p.defaultValue.size() == 1 ? v[0].dump() : v.dump()));
+  }
+  CmdResult r = sh("cd " + test::shellQuote(test::sourcePath("clients/three")) + " && timeout 60 node test/derived_client.mjs " +
+                   test::shellQuote(dir.path()) + " lagoon" + sets);
+  ASSERT_EQ(r.exit, 0) << r.err;
+  nlohmann::json out = nlohmann::json::parse(r.out);
+  ASSERT_EQ(out["steps"].size(), 1 + read.size());
+  auto valueOf = [](const nlohmann::json& a) {
+    std::vector<double> v = a.get<std::vector<double>>();
+    Value r = Value::ofType(v.size() == 16 ? Type::Mat4 : floatVector(static_cast<int>(v.size())));
+    for (int i = 0; i < r.size(); ++i) r[i] = v[static_cast<size_t>(i)];
+    return r;
+  };
+  std::vector<std::vector<double>> first;
+  for (size_t s = 0; s < out["steps"].size(); ++s) {
+    const nlohmann::json& step = out["steps"][s];
+    const nlohmann::json& f = step["frame"];
+    EvalEnvironment env;
+    env.time = Value::scalar(f["time"].get<double>());
+    env.cameraPosition = valueOf(f["camera_position"]);
+    auto plane = [](double x) { return !(x >= 1e-6) ? 1e-6 : std::min(x, 1e30); };
+    env.cameraNearFar = Value::vector({plane(f["near"].get<double>()), plane(f["far"].get<double>())});
+    env.view = valueOf(f["view"]);
+    env.projection = valueOf(f["projection"]);
+    env.sunDirection = valueOf(f["sun_direction"]);
+    std::vector<Value> params;
+    for (const auto& p : parameters) {
+      Value v = valueOf(step["parameters"][p.name]);
+      if (p.max && s > 0 && read.count(p.name)) EXPECT_EQ(v[0], *p.max) << p.name << ": the client clamps";
+      params.push_back(v);
+    }
+    for (const ManifestUniform* u : derived) {
+      Value want = evaluateDerived(*u->derived, env, params);
+      std::vector<double> got = step["values"][u->name].get<std::vector<double>>();
+      ASSERT_EQ(got.size(), static_cast<size_t>(want.size())) << u->name;
+      for (int j = 0; j < want.size(); ++j)
+        EXPECT_TRUE(sameFloat(got[static_cast<size_t>(j)], want[j]))
+            << "step " << s << ", " << u->name << "[" << j << "]: client " << got[static_cast<size_t>(j)] << ", runtime " << want[j];
+      if (s == 0) first.push_back(got);
+    }
+  }
+  bool changed = false;  // setting the parameters moved some derived value
+  const nlohmann::json& last = out["steps"].back()["values"];
+  for (size_t k = 0; k < derived.size(); ++k) changed = changed || last[derived[k]->name].get<std::vector<double>>() != first[k];
+  EXPECT_TRUE(changed);
 }
 
 }  // namespace
