@@ -68,9 +68,10 @@ std::string comparisonOperator(const Op& op) {
 }
 
 const std::vector<std::string_view>& otherTypes() {
-  static const std::vector<std::string_view> t = {"camera_position", "combine", "compare", "cross", "distance",
-                                                  "dot",             "length",  "normalize", "remap", "select",
-                                                  "split",           "sun_direction", "swizzle", "time"};
+  static const std::vector<std::string_view> t = {"camera_forward", "camera_position", "combine",  "compare",
+                                                  "cross",          "distance",        "dot",      "length",
+                                                  "near_far_ratio", "normalize",       "remap",    "select",
+                                                  "split",          "sun_direction",   "swizzle",  "time"};
   return t;
 }
 
@@ -147,6 +148,17 @@ std::string derivedOpC(const Op& op, const std::vector<std::string>& in, const s
   if (type == "time" || type == "camera_position" || type == "sun_direction") {
     for (int i = 0; i < count(0); ++i) c += assign(out[0], i, "b_" + type + "[" + std::to_string(i) + "]");
     return c;
+  }
+  if (type == "camera_forward") {  // -(row 2) of the view matrix; zero for a degenerate one
+    c += "  {\n    const double f[3] = {-b_view[2], -b_view[6], -b_view[10]};\n";
+    c += "    const double l2 = " + dotC("f", Type::Vec3, "f", Type::Vec3, 3) + ";\n";
+    c += "    const double k = l2 < 0.5 ? 0.0 : 1.0 / sqrt(wgd_max(l2, 1e-30));\n";
+    for (int i = 0; i < 3; ++i) c += "  " + assign(out[0], i, "l2 < 0.5 ? 0.0 : f[" + std::to_string(i) + "] * k");
+    return c + "  }\n";
+  }
+  if (type == "near_far_ratio") {  // near floored at 1e-6, near / max(far, near)
+    c += assign(out[0], 0, "wgd_max(" + at(in[0], ti[0], 0) + ", 1e-6)");
+    return c + assign(out[1], 0, out[0] + "[0] / wgd_max(" + at(in[0], ti[0], 1) + ", " + out[0] + "[0])");
   }
   if (type == "compare" || type == "select") {
     std::string rel = comparisonOperator(op);

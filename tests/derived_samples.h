@@ -53,6 +53,11 @@ inline DerivedSample derivedVocabularySample() {
       node("split", type, {"$q"});
       continue;
     }
+    if (type == "near_far_ratio") {
+      node("near_far_ratio", type, {"$nf"});
+      node("near_far_ratio_b", type, {});  // the camera's near/far builtin
+      continue;
+    }
     std::vector<std::string> vec, flt, mixed;
     for (size_t k = 0; k < n; ++k) {
       const PortSpec& port = spec->inputs[k];
@@ -78,6 +83,7 @@ inline DerivedSample derivedVocabularySample() {
   node("time_scaled", "mul", {"time.out", "$v0"});
 
   std::string params = R"("q": {"type": "vec4", "default": [0.5, -1, 2, 0.25]},
+                          "nf": {"type": "vec2", "default": [0.1, 100]},
                           "r": {"type": "float", "default": 0.5, "min": 0, "max": 1})";
   for (int k = 0; k < 5; ++k)
     params += ",\n\"v" + std::to_string(k) + "\": {\"type\": \"vec3\", \"default\": [0.3, -0.7, 1.1]}" + ",\n\"f" +
@@ -128,6 +134,17 @@ inline std::vector<DerivedCase> derivedSampleCases(const std::vector<ProgramPara
     c.env.time = Value::scalar(valueOf(0, 7));
     c.env.cameraPosition = Value::vector({valueOf(1, 0), valueOf(2, 1), valueOf(3, 2)});
     c.env.sunDirection = Value::vector({0.6, 0.8, 0.0});
+    // A view matrix: a rotation by angles from the case, scaled (0 in "zeros": degenerate).
+    const double yaw = valueOf(1, 5), pitch = valueOf(2, 5), scale = valueOf(3, 5);
+    const double cy = std::cos(yaw), sy = std::sin(yaw), cp = std::cos(pitch), sp = std::sin(pitch);
+    const double rows[3][3] = {{cy, 0, -sy}, {sy * sp, cp, cy * sp}, {sy * cp, -sp, cy * cp}};
+    c.env.view = Value::ofType(Type::Mat4);
+    for (int col = 0; col < 3; ++col)
+      for (int row = 0; row < 3; ++row) c.env.view[col * 4 + row] = rows[row][col] * scale;
+    c.env.view[15] = 1;
+    // Near and far as the runtime clamps them (every client clamps the same way).
+    auto plane = [](double x) { return !(x >= 1e-6) ? 1e-6 : std::min(x, 1e30); };
+    c.env.cameraNearFar = Value::vector({plane(valueOf(0, 3)), plane(100 * valueOf(0, 4))});
     for (size_t i = 0; i < parameters.size(); ++i) {
       Value v = Value::ofType(parameters[i].type);
       for (int k = 0; k < v.size(); ++k) v[k] = valueOf(static_cast<int>(i) + 4, k);

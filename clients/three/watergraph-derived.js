@@ -133,6 +133,20 @@ function opFunction(op, what) {
     case 'camera_position':
     case 'sun_direction':
       return (xs, draw) => [typeof draw[type] === 'number' ? [draw[type]] : Array.from(draw[type])];
+    case 'camera_forward':
+      // -(row 2) of the column-major view matrix; the zero vector for a degenerate one.
+      return (xs, draw) => {
+        const f = [-draw.view[2], -draw.view[6], -draw.view[10]];
+        const l2 = dot(f, f);
+        if (l2 < 0.5) return [[0, 0, 0]];
+        const k = 1 / Math.sqrt(max(l2, 1e-30));
+        return [f.map((x) => x * k)];
+      };
+    case 'near_far_ratio':
+      return ([nf]) => {
+        const n = max(nf[0], 1e-6);
+        return [[n], [n / max(nf[1], n)]];
+      };
     case 'compare':
     case 'select': {
       const holds = COMPARISONS[options.op ?? 'less'];

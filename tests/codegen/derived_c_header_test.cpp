@@ -44,6 +44,9 @@ std::string driver(const DerivedSample& s, const std::vector<DerivedCase>& cases
       c += "    d.camera_position[" + std::to_string(j) + "] = " + cNumber(k.env.cameraPosition[j]) + ";\n";
       c += "    d.sun_direction[" + std::to_string(j) + "] = " + cNumber(k.env.sunDirection[j]) + ";\n";
     }
+    for (int j = 0; j < 16; ++j) c += "    d.view[" + std::to_string(j) + "] = " + cNumber(k.env.view[j]) + ";\n";
+    for (int j = 0; j < 2; ++j)
+      c += "    d.camera_near_far[" + std::to_string(j) + "] = " + cNumber(k.env.cameraNearFar[j]) + ";\n";
     c += "    " + pre + "compute_derived(&p, &d, &o);\n";
     for (const DerivedUniform& u : s.derived)
       for (int j = 0; j < componentCount(u.value.type); ++j)

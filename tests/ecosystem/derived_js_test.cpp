@@ -50,7 +50,8 @@ TEST(DerivedJs, ComputesWhatTheCpuBackendComputes) {
                              {"camera_position", valueJson(c.env.cameraPosition)},
                              {"near", c.env.cameraNearFar[0]},
                              {"far", c.env.cameraNearFar[1]},
-                             {"sun_direction", valueJson(c.env.sunDirection)}}}});
+                             {"sun_direction", valueJson(c.env.sunDirection)},
+                             {"view", valueJson(c.env.view)}}}});
   }
   TempDir dir("wg_derived_js_");
   const std::string file = dir / "programs.json";

@@ -13,7 +13,7 @@ const results = input.cases.map((c) => {
   const parameters = {};
   for (const [name, v] of Object.entries(c.parameters)) parameters[name] = Array.isArray(v) ? v.map(nan) : nan(v);
   const d = c.draw;
-  const draw = drawValues({ time: nan(d.time), cameraPosition: d.camera_position.map(nan), near: nan(d.near), far: nan(d.far), sunDirection: d.sun_direction.map(nan) });
+  const draw = drawValues({ time: nan(d.time), cameraPosition: d.camera_position.map(nan), near: nan(d.near), far: nan(d.far), sunDirection: d.sun_direction.map(nan), view: d.view.map(nan) });
   return functions.map((f) => f(parameters, draw));
 });
 const encode = (x) => (Number.isNaN(x) ? 'nan' : x === Infinity ? 'inf' : x === -Infinity ? '-inf' : x);
