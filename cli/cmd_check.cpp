@@ -32,6 +32,7 @@ struct CheckArgs {
   std::string errorMap;  // FILE.png: the error image (several graphs: FILE-GRAPH.png)
   std::string mutate;    // FIND=>REPLACE in the water shaders
   std::string preset;    // a preset of each graph, applied before compiling
+  bool derivedUniforms = false;  // CompileOptions::derivedUniforms
   bool vulkanValidation = false;  // vk450: under the Khronos validation layer
 };
 
@@ -83,6 +84,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         CompileOptions options;
         options.targets = {target};
         options.preset = args.preset;
+        options.derivedUniforms = args.derivedUniforms;
         result = compileGraph(*graph, defaultRegistry(), options, diags);
       }
       printDiagnostics(diags, global);
@@ -157,6 +159,9 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("--vk-validation", args->vulkanValidation,
                 "vk450: run under the Khronos validation layer; any message it reports fails the graph (exit 1)");
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frame")->capture_default_str();
+  cmd->add_flag("--derived-uniforms", args->derivedUniforms,
+                "per-draw values the fragment shader would compute for every pixel become uniforms computed once per "
+                "draw in double (experimental)");
   cmd->add_option("--preset", args->preset,
                   "a preset from each graph's \"presets\" table: its parameter values and node options apply");
   cmd->add_option("--error-map", args->errorMap,

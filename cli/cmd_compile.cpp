@@ -17,6 +17,7 @@
 
 #include "cli/commands.h"
 #include "codegen/compile.h"
+#include "codegen/derived_c_header.h"
 #include "codegen/depfile.h"
 #include "codegen/frequency_report.h"
 #include "codegen/output_files.h"
@@ -45,18 +46,26 @@ struct CompileArgs {
   bool textures = false;  // also write <graph>.<sampler>.png for every node texture
   std::string depfile;    // write a Make/Ninja depfile here
   bool explainFrequency = false;  // print each graph's frequency report (codegen/frequency_report.h)
+  bool derivedUniforms = false;   // CompileOptions::derivedUniforms
 };
+
+constexpr std::string_view kCHeaderTarget = "c-header";
 
 struct TargetSet {
   std::vector<Target> glsl;
   std::vector<CrossTarget> cross;
+  // c-header: <graph>.derived.h, a C header computing the derived uniforms
+  // (codegen/derived_c_header.h). It implies --derived-uniforms, so the shaders written
+  // beside it read what it computes.
+  bool cHeader = false;
   std::string list() const {
     std::string s;
     for (Target t : glsl) s += (s.empty() ? "" : ",") + std::string(targetName(t));
     for (CrossTarget t : cross) s += (s.empty() ? "" : ",") + std::string(crossTargetName(t));
+    if (cHeader) s += (s.empty() ? "" : ",") + std::string(kCHeaderTarget);
     return s;
   }
-  size_t size() const { return glsl.size() + cross.size(); }
+  size_t size() const { return glsl.size() + cross.size() + (cHeader ? 1 : 0); }
 };
 
 bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
@@ -69,12 +78,14 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
         bool dup = false;
         for (Target have : out.glsl) dup |= have == *t;
         if (!dup) out.glsl.push_back(*t);
+      } else if (part == kCHeaderTarget) {
+        out.cHeader = true;
       } else if (auto c = parseCrossTarget(part)) {
         bool dup = false;
         for (CrossTarget have : out.cross) dup |= have == *c;
         if (!dup) out.cross.push_back(*c);
       } else {
-        std::cerr << "watergraph: unknown target '" << part << "' (glsl330, es300, vk450, msl, hlsl)\n";
+        std::cerr << "watergraph: unknown target '" << part << "' (glsl330, es300, vk450, msl, hlsl, c-header)\n";
         return false;
       }
     }
@@ -164,6 +175,15 @@ DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, cons
   return rule;
 }
 
+// <graph>.derived.h: the derived uniforms of the manifest as C, the header's names made from
+// the graph's file name (wg_<name>_compute_derived).
+OutputFile derivedHeaderFile(const std::string& name, const Manifest& manifest) {
+  std::vector<DerivedUniform> derived;
+  for (const ManifestUniform& u : manifest.uniforms)
+    if (u.derived) derived.push_back({u.name, *u.derived});
+  return {name + ".derived.h", derivedCHeader(name, manifestParameters(manifest.uniforms), derived)};
+}
+
 // Compiles one graph (and writes it when `write`). Diagnostics go to `diags`.
 GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const TargetSet& targets, bool write,
                         Diagnostics& diags) {
@@ -176,7 +196,9 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     CompileOptions options;
     options.targets = targets.glsl;
     options.preset = args.preset;
+    options.derivedUniforms = args.derivedUniforms || targets.cHeader;
     result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
+    if (result && targets.cHeader) result->files.push_back(derivedHeaderFile(outcome.name, result->manifest));
     outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }
   if (result && args.textures) {
@@ -326,7 +348,8 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
 void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   cmd->add_option("--target", args.targets,
                   "targets, comma separated: glsl330, es300, vk450 (default: these three), msl, hlsl (from the vk450 "
-                  "SPIR-V through SPIRV-Cross)");
+                  "SPIR-V through SPIRV-Cross), c-header (<graph>.derived.h: C that computes the derived uniforms "
+                  "once per draw, for a renderer of your own; implies --derived-uniforms)");
   auto* quiet = cmd->add_flag("-q,--quiet", args.quiet, "print only errors");
   cmd->add_flag("-v,--verbose", args.verbose, "print one line per graph: nodes kept, files, time")->excludes(quiet);
   cmd->add_flag("--no-progress", args.noProgress, "no progress bar (it is drawn only when stdout is a terminal)");
@@ -337,6 +360,9 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
                 "print, per graph, how many ops are constant, per-draw, per-vertex and per-fragment, and the per-draw "
                 "values the fragment stage computes for every pixel (candidates for uniforms computed once per draw), "
                 "each with its estimated operations per pixel");
+  cmd->add_flag("--derived-uniforms", args.derivedUniforms,
+                "per-draw values the fragment shader would compute for every pixel become uniforms (u_derived<k>) "
+                "that the runtime computes once per draw in double; the manifest holds how (experimental)");
 }
 
 }  // namespace
@@ -352,6 +378,7 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph compile graphs/*.json -o out --subdirs --summary\n"
       "  watergraph compile graphs/lake.json -o out --target es300\n"
       "  watergraph compile graphs/lake.json -o out --target msl,hlsl\n"
+      "  watergraph compile graphs/lake.json -o out --target glsl330,c-header   # shaders + lake.derived.h\n"
       "  watergraph compile graphs/lake.json -o out --target es300 --textures   # for the three.js client\n"
       "  watergraph compile graphs/*.json -o out --verbose\n"
       "  watergraph compile graphs/lake.json -o out --watch        # recompile on every save\n"

@@ -39,6 +39,7 @@ struct ProbeArgs {
   std::string table;      // with --sweep: where the error curve goes
   std::string mutate;     // FIND=>REPLACE in the probe shader
   std::string preset;     // graph mode: a preset of the graph, applied before probing
+  bool derivedUniforms = false;  // graph mode: the probe shader reads derived uniforms (as --derived-uniforms compiles)
   bool vulkanValidation = false;  // vk450: under the Khronos validation layer
 };
 
@@ -229,7 +230,7 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
   }
   try {
     auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
-    auto report = accuracy::probeGraph(*graph, output, *cases, *executor, diags, mutation);
+    auto report = accuracy::probeGraph(*graph, output, *cases, *executor, diags, mutation, args.derivedUniforms);
     executor->finish();
     printDiagnostics(diags, global);
     if (!report) return exitCodeFor(diags);
@@ -267,6 +268,9 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
       "errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no EGL/GL context or Vulkan device.");
   cmd->add_option("graph", args->graph, "graph file (.json); or --node");
   cmd->add_option("--output", args->output, "the node output to probe, NODE.PORT (default: the fragment colour)");
+  cmd->add_flag("--derived-uniforms", args->derivedUniforms,
+                "per-draw values the fragment shader would compute for every pixel become uniforms computed once per "
+                "draw in double (experimental)");
   cmd->add_option("--preset", args->preset,
                   "graph mode: a preset from the graph's \"presets\" table: its parameter values and node options apply");
   cmd->add_option("--cases", args->cases, "cases file (.json), see docs/accuracy.md (with --sweep: its first case is the base)");

@@ -97,7 +97,8 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   bool ok = true;
   // One plan per distinct tessellation choice; each target wraps its plan in its dialect.
   TargetPlans plans =
-      planTargets(*program, options.targets, sourceName.empty() ? graph.name : sourceName, options.tessellation);
+      planTargets(*program, options.targets, sourceName.empty() ? graph.name : sourceName, options.tessellation,
+                  options.derivedUniforms);
   for (size_t ti = 0; ti < options.targets.size(); ++ti) {
     Target target = options.targets[ti];
     EmitResult er = emitGlsl(plans.of(ti), target);

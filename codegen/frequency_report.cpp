@@ -10,11 +10,9 @@ namespace {
 
 // Per op, the estimated operations of the lines it writes in the fragment stage; `total`:
 // those of the whole stage.
-std::vector<int> fragmentCosts(const Program& program, int& total) {
+std::vector<int> fragmentCosts(const Program& program, const PlannedStage* frag, int& total) {
   std::vector<int> cost(program.ops.size(), 0);
   total = 0;
-  ShaderPlan plan = planShaders(program, program.file, false);
-  const PlannedStage* frag = plan.stage(ShaderStage::Fragment);
   if (!frag) return cost;
   GlslCost glsl;
   for (const auto& local : frag->locals) total += glsl.of(local);
@@ -38,9 +36,14 @@ bool perDrawInFragment(const Program& program, const std::vector<Frequency>& f, 
 }  // namespace
 
 FrequencyReport frequencyReport(const Program& program) {
+  ShaderPlan plan = planShaders(program, program.file, false);
+  return frequencyReportOf(program, plan.stage(ShaderStage::Fragment));
+}
+
+FrequencyReport frequencyReportOf(const Program& program, const PlannedStage* fragment) {
   FrequencyReport r;
   r.ops = analyseFrequency(program);
-  r.fragmentCost = fragmentCosts(program, r.fragmentTotalCost);
+  r.fragmentCost = fragmentCosts(program, fragment, r.fragmentTotalCost);
   const size_t n = program.ops.size();
   for (size_t i = 0; i < n; ++i) {
     r.counts[static_cast<size_t>(r.ops[i])]++;

@@ -35,6 +35,10 @@ struct FrequencyReport {
 
 // `program` must have been through the pass recipe (stages decided).
 FrequencyReport frequencyReport(const Program& program);
+// The same over the fragment stage of a plan already made from `program` without derived
+// uniforms (planShaders, or planProbe, whose one stage runs every op).
+struct PlannedStage;
+FrequencyReport frequencyReportOf(const Program& program, const PlannedStage* fragment);
 
 // The report as text: a line of counts, then one line per candidate. Every line but the
 // first is indented by two spaces; ends with '\n'.

@@ -6,6 +6,7 @@
 #include <initializer_list>
 
 #include "codegen/manifest.h"
+#include "nodes/registry.h"
 
 namespace wg {
 namespace {
@@ -203,6 +204,10 @@ ManifestUniform uniformOf(const json& u) {
   if (out.builtin == BuiltinUniform::TimePhase) {
     onlyMembers(u, {"name", "type", "stages", "builtin", "angular_frequency"}, what);
     out.angularFrequency = number(u, "angular_frequency", what);
+  } else if (out.builtin == BuiltinUniform::Derived) {
+    // Its program is read once every parameter uniform is known (derivedOf).
+    onlyMembers(u, {"name", "type", "stages", "builtin", "derived"}, what);
+    if (!member(u, "derived")) fail(what + " is a derived uniform without \"derived\"");
   } else {
     onlyMembers(u, {"name", "type", "stages", "builtin"}, what);
   }
@@ -329,6 +334,20 @@ Manifest Manifest::fromJson(const json& j) {
   }
   for (const auto& a : objects(j, "attributes")) m.attributes.push_back(attributeOf(a));
   for (const auto& u : objects(j, "uniforms")) m.uniforms.push_back(uniformOf(u));
+  // Derived programs name parameters, which any parameter uniform may hold.
+  const std::vector<ProgramParameter> parameters = manifestParameters(m.uniforms);
+  size_t at = 0;
+  for (const auto& u : objects(j, "uniforms")) {
+    ManifestUniform& mu = m.uniforms[at++];
+    if (mu.parameter || mu.builtin != BuiltinUniform::Derived) continue;
+    std::string error;
+    auto d = derivedFromJson(*member(u, "derived"), defaultRegistry(), parameters, error);
+    if (!d) fail("uniform " + mu.name + "'s \"derived\": " + error);
+    if (d->type != mu.type)
+      fail("uniform " + mu.name + " of type " + std::string(typeName(mu.type)) + " holds a derived value of type " +
+           std::string(typeName(d->type)));
+    mu.derived = std::make_shared<const DerivedValue>(std::move(*d));
+  }
   for (const auto& v : objects(j, "varyings")) m.varyings.push_back(varyingOf(v));
   if (const json* functions = member(j, "functions")) m.functions = texts(*functions, "the manifest's \"functions\"");
   for (const auto& t : objects(j, "textures")) m.textures.push_back(textureOf(t));

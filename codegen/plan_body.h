@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "codegen/plan_derived.h"
 #include "codegen/shader_plan.h"
 #include "codegen/value_facts.h"
 #include "core/program.h"
@@ -23,6 +24,7 @@ struct StageBody {
   std::set<Builtin> builtins;
   std::set<int> parameters;
   std::set<BuiltinUniform> builtinUniforms;
+  std::set<int> derived;  // derived uniforms read (DerivedPlan indices)
   // Op outputs whose expression is already a name (a builtin, another temporary): used
   // directly instead of copying into a new local. By the writer's port index ("" none; a
   // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
@@ -48,6 +50,9 @@ class BodyWriter {
   // `knowFacts` false: the builtins and parameters may hold anything (probe cases), so
   // nodes are told nothing about their inputs.
   BodyWriter(const Program& program, bool knowFacts, BuiltinNamer namer);
+  // The fragment stage reads these derived uniforms instead of computing their cones;
+  // `derived` outlives the writer.
+  void useDerived(const DerivedPlan& derived) { derived_ = &derived; }
 
   // Every op of body.stage, one local per used output that is not already a name.
   void writeOps(StageBody& body);
@@ -61,7 +66,9 @@ class BodyWriter {
   std::string sceneSampler(StageBody& body, SceneSampler sampler);
 
   // The interface the bodies made: builtin uniforms in table order, then the time phases,
-  // then the parameters `vertex` (may be null) and `fragment` read.
+  // then the derived uniforms read, then the parameters `vertex` (may be null) and
+  // `fragment` read, and those only derived uniforms read (declared in no stage: the
+  // runtime needs their value and range).
   std::vector<UniformInfo> uniforms(const StageBody* vertex, const StageBody& fragment) const;
   // Node textures by first use, then scene textures in the manifest's resource order;
   // vk450 bindings follow the uniform block's.
@@ -79,6 +86,7 @@ class BodyWriter {
   bool knowFacts_;
   ValueFacts facts_;  // empty unless knowFacts_
   BuiltinNamer namer_;
+  const DerivedPlan* derived_ = nullptr;
   std::vector<std::string> opNames_;
   std::vector<size_t> portBase_;  // op i's outputs are port indices portBase_[i] ... portBase_[i + 1] - 1
   std::vector<std::string> paramNames_;

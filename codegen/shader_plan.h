@@ -7,6 +7,7 @@
 // plan in its dialect's declarations; the manifest (codegen/manifest_build.h) reads the
 // plan too, so the two cannot disagree. Identifiers are generated; no string from the
 // graph file is pasted.
+#include <memory>
 #include <optional>
 #include <set>
 #include <string>
@@ -20,6 +21,7 @@
 namespace wg {
 
 struct GlslItem;
+struct DerivedValue;
 
 struct UniformInfo {
   std::string name;  // GLSL name
@@ -28,6 +30,9 @@ struct UniformInfo {
   BuiltinUniform builtin = BuiltinUniform::Time;  // what it holds, when parameter < 0
   unsigned stages = 0;      // where it is declared
   double omega = 0;         // time_phase: the value is mod(omega * time, 2 pi)
+  // Derived: the program computing it once per draw (codegen/derived_program.h), over
+  // Program::parameters by index.
+  std::shared_ptr<const DerivedValue> derived;
 };
 
 struct AttributeInfo {
@@ -86,7 +91,10 @@ struct ShaderPlan {
   // The interface, the same in every target.
   std::vector<AttributeInfo> attributes;
   std::vector<VaryingInfo> varyings;
-  std::vector<UniformInfo> uniforms;   // builtins in table order, time phases, parameters
+  std::vector<UniformInfo> uniforms;   // builtins in table order, time phases, derived, parameters
+  // The derived uniforms' programs, in the order of their "u_derived<k>" uniforms (empty
+  // unless planned with derived uniforms).
+  std::vector<std::shared_ptr<const DerivedValue>> derived;
   std::vector<TextureInfo> textures;   // node textures by first use, then scene textures
   std::vector<std::string> functions;  // library items of all stages, in library order
   std::vector<SceneResource> resources;  // table order
@@ -104,7 +112,9 @@ bool tessellates(Target target, bool allowed);
 
 // The vertex and fragment stages of a drawn surface, or of the deferred pass.
 // `tessellate`: tessellate the geometry stage where a vertex-stage node asks for it.
-ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate);
+// `derive`: the per-draw values the fragment stage would compute per pixel at more than
+// kDerivedMinCost operations become derived uniforms (codegen/plan_derived.h).
+ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate, bool derive = false);
 
 // Probe: one fragment shader for `watergraph probe`, run on a full-screen triangle the
 // runtime supplies. Every op runs in it; the surface builtins (uv, world position, normal,
@@ -112,7 +122,8 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
 // (UniformInfo::builtin says which), taken verbatim from the case, so a case can hand a
 // node any value, a zero-length normal included; the program's first output, padded with
 // zeros to a vec4, is o_color.
-ShaderPlan planProbe(const Program& program, std::string sourceName);
+// `derive`: as planShaders, so a probe runs the split the runtime draws with.
+ShaderPlan planProbe(const Program& program, std::string sourceName, bool derive = false);
 
 // The plans for several targets: one per distinct tessellation choice, shared by every
 // target that tessellates alike.
@@ -123,7 +134,7 @@ struct TargetPlans {
   const ShaderPlan& of(size_t targetIndex) const { return plans[planOf[targetIndex]]; }
 };
 TargetPlans planTargets(const Program& program, const std::vector<Target>& targets, const std::string& sourceName,
-                        bool allowTessellation = true);
+                        bool allowTessellation = true, bool derive = false);
 
 // Sets plan.resources and plan.passes: the scene resources the program reads and the
 // passes producing them (table order), then the water surface pass.

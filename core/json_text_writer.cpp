@@ -95,4 +95,38 @@ void JsonTextWriter::integer(long long i) {
   out_ += std::to_string(i);
 }
 
+void JsonTextWriter::boolean(bool b) {
+  beforeValue();
+  out_ += b ? "true" : "false";
+}
+
+void JsonTextWriter::null() {
+  beforeValue();
+  out_ += "null";
+}
+
+void JsonTextWriter::value(const nlohmann::json& j) {
+  switch (j.type()) {
+    case nlohmann::json::value_t::object:
+      beginObject();
+      for (auto it = j.begin(); it != j.end(); ++it) {  // a std::map: keys in byte order
+        key(it.key());
+        value(it.value());
+      }
+      endObject();
+      return;
+    case nlohmann::json::value_t::array:
+      beginArray();
+      for (const auto& v : j) value(v);
+      endArray();
+      return;
+    case nlohmann::json::value_t::string: return string(j.get_ref<const std::string&>());
+    case nlohmann::json::value_t::boolean: return boolean(j.get<bool>());
+    case nlohmann::json::value_t::number_integer: return integer(j.get<long long>());
+    case nlohmann::json::value_t::number_unsigned: return integer(static_cast<long long>(j.get<unsigned long long>()));
+    case nlohmann::json::value_t::number_float: return number(j.get<double>());
+    default: return null();
+  }
+}
+
 }  // namespace wg

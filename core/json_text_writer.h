@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace wg {
 
 class JsonTextWriter {
@@ -25,6 +27,11 @@ class JsonTextWriter {
   void string(std::string_view s);
   void number(double d);  // as nlohmann writes a double (shortest round trip, "1.0")
   void integer(long long i);
+  void boolean(bool b);
+  void null();
+  // A whole nlohmann value, as its dump(2) writes it (objects' keys are already in byte
+  // order); its keys must outlive the writer's use of the enclosing object.
+  void value(const nlohmann::json& j);
 
   // One member with a plain value, for the common case.
   void member(std::string_view k, std::string_view s) {

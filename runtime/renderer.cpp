@@ -255,6 +255,7 @@ struct Renderer::Impl {
     Type type = Type::Float;
     BuiltinUniform builtin = BuiltinUniform::Time;  // when parameter is ""
     double angularFrequency = 0;  // time_phase
+    std::shared_ptr<const DerivedValue> derived;  // derived: computed every frame from the parameters
     std::vector<float> value;     // parameter values
     // The parameter's manifest min/max: every value is clamped into them on upload, as the
     // generated shader may rely on the range (codegen/value_facts.h).
@@ -274,7 +275,22 @@ struct Renderer::Impl {
     f.time = settings.scene.time;
     f.width = settings.width;
     f.height = settings.height;
+    if (u.derived) return derivedUniformValue(*u.derived, f, parameterValues());
     return builtinUniformValue(u.builtin, u.angularFrequency, f);
+  }
+
+  // The parameters' current (clamped) values in manifest order, as derived programs read
+  // them (manifestParameters): what setParameter last gave, so the editor's changes reach
+  // the derived uniforms at the next frame without a recompile.
+  std::vector<Value> parameterValues() const {
+    std::vector<Value> out;
+    for (const auto& u : uniforms) {
+      if (u.parameter.empty()) continue;
+      Value v = Value::ofType(u.type);
+      for (int i = 0; i < v.size() && static_cast<size_t>(i) < u.value.size(); ++i) v[i] = u.value[static_cast<size_t>(i)];
+      out.push_back(v);
+    }
+    return out;
   }
 
   // Checked when the manifest is read, so a frame meets no builtin it cannot set. The
@@ -338,15 +354,18 @@ struct Renderer::Impl {
       } else {
         u.builtin = m.builtin;
         u.angularFrequency = m.angularFrequency;
-        checkRuntimeBuiltin(u);
+        u.derived = m.derived;
+        if (u.builtin == BuiltinUniform::Derived && !u.derived) manifestError("derived uniform " + u.name + " has no program");
+        if (!u.derived) checkRuntimeBuiltin(u);
       }
       for (GLuint program : waterPrograms()) {
         GLint loc = glGetUniformLocation(program, u.name.c_str());
         if (loc >= 0) u.locations.emplace_back(program, loc);  // else optimised out by the driver
       }
-      setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);  // errors now, not at the first frame
       uniforms.push_back(std::move(u));
     }
+    // Errors now, not at the first frame (derived uniforms need every parameter first).
+    for (const auto& u : uniforms) setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);
     // Samplers: node textures (loaded here) and scene textures (render targets of the
     // planned passes), one texture unit each in manifest order.
     GLuint nextUnit = 0;

@@ -8,6 +8,7 @@
 
 #include <glm/glm.hpp>
 
+#include "codegen/derived_program.h"
 #include "core/interface_tables.h"
 #include "runtime/scene.h"
 
@@ -23,6 +24,13 @@ struct FrameValues {
 
 // Column-major matrices; empty for a builtin only `watergraph probe` sets (per case).
 std::vector<float> builtinUniformValue(BuiltinUniform builtin, double angularFrequency, const FrameValues& frame);
+
+// A derived uniform's value for this frame (issue #19): its program evaluated in double
+// with the frame's time, camera (near/far clamped as for u_camera_near_far), view,
+// projection and sun, and `parameters` (the manifest's parameter uniforms in order, see
+// manifestParameters, each already clamped into its range), rounded to float.
+std::vector<float> derivedUniformValue(const DerivedValue& derived, const FrameValues& frame,
+                                       const std::vector<Value>& parameters);
 
 // Into [lo, hi] per component; NaN becomes lo (or hi when lo is unbounded): the generated
 // shader may rely on the range (codegen/value_facts.h).

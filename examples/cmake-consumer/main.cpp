@@ -1,10 +1,14 @@
 // Reads the shaders watergraph generated at build time (see CMakeLists.txt) and prints what
-// a renderer would load: each file's size and #version line, and the manifest's uniforms.
+// a renderer would load: each file's size and #version line, the manifest's uniforms, and
+// the derived uniforms it would set before each draw, computed by the generated
+// pond.derived.h (the c-header target).
 #include <cstdio>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 #include <string>
+
+#include "pond.derived.h"
 
 namespace {
 
@@ -41,5 +45,15 @@ int main() {
     size_t start = at + 9, end = manifest.find('"', start);
     std::cout << "uniform " << manifest.substr(start, end - start) << "\n";
   }
+  // The shimmering sky colour is the same for every pixel of a draw: the shader reads it as
+  // u_derived0, and the renderer computes it once per draw, here at t = 2 s.
+  wg_pond_parameters parameters;
+  wg_pond_default_parameters(&parameters);
+  wg_pond_draw draw{};
+  draw.time = 2.0;
+  wg_pond_derived derived;
+  wg_pond_compute_derived(&parameters, &draw, &derived);
+  std::printf("u_derived0 at t = 2 s: %.6f %.6f %.6f\n", derived.u_derived0[0], derived.u_derived0[1],
+              derived.u_derived0[2]);
   return missing ? 1 : 0;
 }
