@@ -110,7 +110,7 @@ std::string referenceUnavailable(const CompileResult& result) {
   const Program& p = result.program;
   if (!p.output(OutputSlot::FragmentColor)) return "no fragment colour";
   if (const ProgramOutput* a = p.output(OutputSlot::FragmentAlpha))
-    if (!(a->value.kind == ValueRef::Kind::Const && a->value.constant[0] == 1.0)) return "the colour is blended by alpha";
+    if (!(a->value.kind == ValueRef::Kind::Const && a->value.constant()[0] == 1.0)) return "the colour is blended by alpha";
   return "";
 }
 

@@ -42,7 +42,7 @@ class OpEvalContext final : public EvalContext {
   Value sampleTexture(std::string_view option, double u, double v, const SamplerState& sampler,
                       const UvGradient& gradient) const override {
     if (!textures_) throw std::logic_error("eval of '" + op_.spec->type + "' samples a texture without a texture cache");
-    const std::string source = op_.options.at(std::string(option)).get<std::string>();
+    const std::string source = op_.options().at(std::string(option)).get<std::string>();
     if (cursor_ && cursor_->fetches) {
       auto listed = cursor_->fetches->find(source);
       if (listed != cursor_->fetches->end()) {
@@ -149,7 +149,7 @@ std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& 
         outputs.push_back(result.opOutputs[static_cast<size_t>(o.value.index)][static_cast<size_t>(o.value.port)]);
         break;
       case ValueRef::Kind::Param: outputs.push_back(values[static_cast<size_t>(o.value.index)]); break;
-      case ValueRef::Kind::Const: outputs.push_back(o.value.constant); break;
+      case ValueRef::Kind::Const: outputs.push_back(o.value.constant()); break;
       case ValueRef::Kind::Builtin: outputs.push_back(env.builtin(static_cast<Builtin>(o.value.index))); break;
       case ValueRef::Kind::None: throw std::logic_error(spec.type + ": an output expanded into nothing");
     }
@@ -205,8 +205,8 @@ std::vector<Value> evaluateNode(const NodeSpec& spec, const nlohmann::json& opti
   Op op;
   op.spec = &spec;
   op.nodeId = spec.type;
-  op.options = completeOptions(spec, options);
-  op.parsedOptions = parseOptions(spec, op.options);
+  op.setOptions(completeOptions(spec, options));
+  op.parsedOptions = parseOptions(spec, op.options());
   std::vector<Value> values;
   std::vector<Type> sourceTypes;
   for (const auto& p : spec.inputs) {
@@ -240,7 +240,7 @@ CpuResult evaluateProgram(const Program& program, const EvalEnvironment& env, co
       case ValueRef::Kind::Param:
         return static_cast<size_t>(r.index) < parameters.size() ? parameters[static_cast<size_t>(r.index)]
                                                                 : program.parameters[static_cast<size_t>(r.index)].defaultValue;
-      case ValueRef::Kind::Const: return r.constant;
+      case ValueRef::Kind::Const: return r.constant();
       case ValueRef::Kind::Builtin: return env.builtin(static_cast<Builtin>(r.index));
       case ValueRef::Kind::None: break;
     }

@@ -79,6 +79,10 @@ class StageAssembler {
     out.add("");
     out.add("void main() {");
     for (const auto& l : s.locals) out.add("  " + l);
+    // The body is most of a big graph's shader: room for it and the closing "}\n" at once,
+    // so the text is not doubled past its size while it grows (megabytes at 10,000 nodes).
+    out.shader.text.reserve(out.shader.text.size() + s.body.size() + 2);
+    out.shader.lineOp.reserve(out.shader.lineOp.size() + s.lineOp.size() + 1);
     out.addLines(s.body, &s.lineOp);
     out.add("}");
     return std::move(out.shader);

@@ -1,5 +1,7 @@
 #include "codegen/manifest.h"
 
+#include <bit>
+
 #include <algorithm>
 #include <utility>
 
@@ -145,6 +147,21 @@ void writeNodes(JsonTextWriter& w, const Manifest& m) {
   w.endObject();
 }
 
+// Room for the file with its node lists, which are nearly all of a big graph's manifest:
+// each entry's text as dump(2) indents it (an id that needs escapes may go past) and 16 KiB
+// for the rest. Reserved once, the text is not copied while it grows and does not hold up
+// to twice its size (1.2 MB at 10,000 nodes, kept with the shaders for the compile's end).
+size_t nodesTextBound(const Manifest& m) {
+  size_t n = 16384;
+  for (const auto& k : m.kept) {
+    n += 96 + k.node.size() + k.type.size() + 24 * static_cast<size_t>(std::popcount(k.stages));
+    if (!k.merged.empty()) n += 32;
+    for (const auto& id : k.merged) n += 16 + id.size();
+  }
+  for (const auto& r : m.removed) n += 64 + r.what.size() + r.reason.size();
+  return n;
+}
+
 }  // namespace
 
 std::vector<ProgramParameter> manifestParameters(const std::vector<ManifestUniform>& uniforms) {
@@ -181,7 +198,7 @@ double Manifest::scaleOf(RenderPass pass) const {
 
 std::string Manifest::fileText() const {
   std::string text;
-  text.reserve(256 + 96 * kept.size());
+  text.reserve(nodesTextBound(*this));
   JsonTextWriter w(text);
   w.beginObject();
   w.key("attributes");

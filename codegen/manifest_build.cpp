@@ -42,8 +42,8 @@ std::vector<ManifestPassScale> passScales(const Program& program, const std::vec
     double scale = 1;
     for (const auto& op : program.ops)
       for (SceneResource r : op.spec->resources) {
-        auto it = op.options.find(kResolutionOption);
-        if (sceneResourceRow(r).pass == pass && it != op.options.end() && it->is_number())
+        auto it = op.options().find(kResolutionOption);
+        if (sceneResourceRow(r).pass == pass && it != op.options().end() && it->is_number())
           scale = std::min(scale, it->get<double>());
       }
     if (scale < 1) out.push_back({pass, scale});

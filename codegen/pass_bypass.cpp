@@ -8,8 +8,8 @@ namespace wg {
 
 static bool bypassed(const Op& op) {
   if (op.spec->bypass.empty()) return false;
-  auto it = op.options.find(kBypassOption);
-  return it != op.options.end() && it->is_boolean() && it->get<bool>();
+  auto it = op.options().find(kBypassOption);
+  return it != op.options().end() && it->is_boolean() && it->get<bool>();
 }
 
 PassResult bypassPass(Program& program, PassContext&) {

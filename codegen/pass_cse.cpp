@@ -29,7 +29,7 @@ bool sameRef(const ValueRef& a, const ValueRef& b) {
     case ValueRef::Kind::Op: return a.index == b.index && a.port == b.port;
     case ValueRef::Kind::Param:
     case ValueRef::Kind::Builtin: return a.index == b.index;
-    case ValueRef::Kind::Const: return sameConstant(a.constant, b.constant);
+    case ValueRef::Kind::Const: return sameConstant(a.constant(), b.constant());
     case ValueRef::Kind::None: return true;
   }
   return false;
@@ -42,8 +42,8 @@ size_t refHash(const ValueRef& r) {
     case ValueRef::Kind::Param:
     case ValueRef::Kind::Builtin: return mixHash(h, static_cast<size_t>(r.index));
     case ValueRef::Kind::Const:
-      h = mixHash(h, static_cast<size_t>(r.constant.type));
-      for (int i = 0; i < r.constant.size(); ++i) h = mixHash(h, std::bit_cast<uint64_t>(r.constant[i]));
+      h = mixHash(h, static_cast<size_t>(r.constant().type));
+      for (int i = 0; i < r.constant().size(); ++i) h = mixHash(h, std::bit_cast<uint64_t>(r.constant()[i]));
       return h;
     case ValueRef::Kind::None: return h;
   }
@@ -53,7 +53,7 @@ size_t refHash(const ValueRef& r) {
 // What an op computes: its type, options, inputs and input types (not its id or place).
 size_t computationHash(const Op& op) {
   size_t h = std::hash<std::string_view>{}(op.spec->type);
-  if (!op.options.empty()) h = mixHash(h, std::hash<nlohmann::json>{}(op.options));
+  if (!op.options().empty()) h = mixHash(h, std::hash<nlohmann::json>{}(op.options()));
   for (const auto& in : op.inputs) h = mixHash(h, refHash(in));
   for (Type t : op.inputTypes) h = mixHash(h, static_cast<size_t>(t));
   return h;
@@ -64,7 +64,7 @@ bool sameComputation(const Op& a, const Op& b) {
   if (a.inputTypes != b.inputTypes || a.inputs.size() != b.inputs.size()) return false;
   for (size_t k = 0; k < a.inputs.size(); ++k)
     if (!sameRef(a.inputs[k], b.inputs[k])) return false;
-  return a.options == b.options;
+  return a.options() == b.options();
 }
 
 }  // namespace

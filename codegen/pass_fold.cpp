@@ -25,7 +25,7 @@ PassResult foldPass(Program& program, PassContext&) {
     for (const auto& in : op.inputs) allConst &= in.kind == ValueRef::Kind::Const;
     if (!allConst) continue;
     std::vector<Value> inputs;
-    for (const auto& in : op.inputs) inputs.push_back(in.constant);
+    for (const auto& in : op.inputs) inputs.push_back(in.constant());
     std::vector<Value> outs = evaluateOp(op, inputs, env);
     // A non-finite or float-overflowing result stays a GPU computation, so the shader
     // behaves exactly as the unfolded one would (no inf literal can be written).

@@ -16,7 +16,7 @@ PassResult simplifyPass(Program& program, PassContext&) {
     if (!op.spec->identity || op.outputTypes.size() != 1) continue;
     std::vector<std::optional<Value>> constants;
     for (const auto& in : op.inputs)
-      constants.push_back(in.kind == ValueRef::Kind::Const ? std::optional<Value>(in.constant) : std::nullopt);
+      constants.push_back(in.kind == ValueRef::Kind::Const ? std::optional<Value>(in.constant()) : std::nullopt);
     int which = op.spec->identity(constants);
     if (which < 0) continue;
     const ValueRef& kept = op.inputs[static_cast<size_t>(which)];

@@ -57,7 +57,7 @@ class PlanOpContext final : public EmitContext {
   std::string timePhase(double omega) override { return w_.phaseUniform(b_, omega); }
   using EmitContext::texture;
   std::string texture(std::string_view option, const SamplerState& sampler) override {
-    const nlohmann::json& v = op().options.at(option);
+    const nlohmann::json& v = op().options().at(option);
     if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
     return w_.nodeTexture(b_, v.get<std::string>(), sampler);
   }
@@ -84,7 +84,7 @@ class PlanOpContext final : public EmitContext {
   std::optional<Value> inputConstant(int port) const override {
     const ValueRef& in = op().inputs.at(static_cast<size_t>(port));
     if (in.kind != ValueRef::Kind::Const) return std::nullopt;
-    return in.constant.convertedTo(op().inputTypes.at(static_cast<size_t>(port)));
+    return in.constant().convertedTo(op().inputTypes.at(static_cast<size_t>(port)));
   }
 
   std::vector<std::string> outputs;
@@ -177,7 +177,7 @@ std::string BodyWriter::valueExpr(StageBody& w, const ValueRef& r, Type want) {
   std::string e;
   Type have = program_.typeOf(r);
   switch (r.kind) {
-    case ValueRef::Kind::Const: return glslLiteral(r.constant.convertedTo(want));
+    case ValueRef::Kind::Const: return glslLiteral(r.constant().convertedTo(want));
     case ValueRef::Kind::Param:
       w.parameters.insert(r.index);
       e = paramNames_[static_cast<size_t>(r.index)];

@@ -30,6 +30,10 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, std::vector<std::str
   s.locals = std::move(locals);
   s.body = std::move(w.body);
   s.lineOp = std::move(w.lineOp);
+  // Written by appending, the body may hold up to twice its size; the plan keeps it until
+  // the manifest is built, alongside every target's shader text (the compile's peak heap).
+  s.body.shrink_to_fit();
+  s.lineOp.shrink_to_fit();
   s.builtins = std::move(w.builtins);
   s.library = libraryFor(code);
   return s;

@@ -32,8 +32,8 @@ std::string encodePng(const TextureImage& img) {
 // and the name of the option that names it.
 const Op* samplingOp(const Program& program, const std::string& source, std::string* option) {
   for (const auto& op : program.ops) {
-    if (!op.options.is_object()) continue;
-    for (const auto& [key, value] : op.options.items())
+    if (!op.options().is_object()) continue;
+    for (const auto& [key, value] : op.options().items())
       if (value.is_string() && value.get<std::string>() == source) {
         *option = key;
         return &op;

@@ -65,7 +65,7 @@ ValueFacts::ValueFacts(const Program& program) : program_(&program) {
 ValueFact ValueFacts::of(const ValueRef& ref) const {
   if (!program_) return {};
   switch (ref.kind) {
-    case ValueRef::Kind::Const: return constantFact(ref.constant);
+    case ValueRef::Kind::Const: return constantFact(ref.constant());
     case ValueRef::Kind::Param: {
       const ProgramParameter& p = program_->parameters[static_cast<size_t>(ref.index)];
       ValueFact f;

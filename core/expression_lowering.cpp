@@ -60,8 +60,8 @@ class Lowering {
     op.spec = spec;
     op.nodeId = context_.nodeId;
     op.where = context_.where ? context_.where(span) : SourceRef{};
-    op.options = completeOptions(*spec, options);
-    op.parsedOptions = parseOptions(*spec, op.options);
+    op.setOptions(completeOptions(*spec, options));
+    op.parsedOptions = parseOptions(*spec, op.options());
     std::size_t n = spec->inputs.size();
     op.inputs.assign(n, ValueRef{});
     std::vector<Type> sourceTypes(n, Type::Invalid);

@@ -22,15 +22,29 @@ struct ValueRef {
   Kind kind = Kind::None;
   int index = -1;  // Op: op index; Param: parameter index; Builtin: Builtin enumerator
   int port = 0;    // Op: output port
-  Value constant;  // Const
 
-  static ValueRef op(int index, int port) { return {Kind::Op, index, port, {}}; }
-  static ValueRef param(int index) { return {Kind::Param, index, 0, {}}; }
-  static ValueRef constant_(Value v) { return {Kind::Const, -1, 0, v}; }
-  static ValueRef builtin(Builtin b) { return {Kind::Builtin, static_cast<int>(b), 0, {}}; }
+  static ValueRef op(int index, int port) { return {Kind::Op, index, port, nullptr}; }
+  static ValueRef param(int index) { return {Kind::Param, index, 0, nullptr}; }
+  static ValueRef constant_(const Value& v) { return {Kind::Const, -1, 0, std::make_shared<const Value>(v)}; }
+  // A constant another ref already holds (resolve shares one per distinct literal).
+  static ValueRef constant_(std::shared_ptr<const Value> v) { return {Kind::Const, -1, 0, std::move(v)}; }
+  static ValueRef builtin(Builtin b) { return {Kind::Builtin, static_cast<int>(b), 0, nullptr}; }
+  // Const: its value; any other kind: an invalid Value.
+  const Value& constant() const { return constant_value ? *constant_value : noConstant(); }
   bool operator==(const ValueRef& o) const {
     return kind == o.kind && index == o.index && port == o.port &&
-           (kind != Kind::Const || constant == o.constant);
+           (kind != Kind::Const || constant() == o.constant());
+  }
+
+  // Held out of line and shared: a Value is 136 bytes (room for a mat4) and a program holds
+  // a ref per op input, nearly all of them op outputs; inline, they made every input vector,
+  // copy and pass table several times larger than the references themselves.
+  std::shared_ptr<const Value> constant_value;
+
+ private:
+  static const Value& noConstant() {
+    static const Value none;
+    return none;
   }
 };
 
@@ -38,8 +52,13 @@ struct Op {
   const NodeSpec* spec = nullptr;
   std::string nodeId;               // the graph node it came from (for messages, manifest)
   SourceRef where;
-  nlohmann::json options;           // complete: defaults filled in
-  std::shared_ptr<const ParsedOptions> parsedOptions;  // `options` in the node's struct
+  // Complete (defaults filled in), and the same in the node's struct. Both are held once
+  // per distinct value and shared by the ops that have it: a large graph repeats a few
+  // option sets, and a JSON object per op was a map and its strings per op.
+  std::shared_ptr<const nlohmann::json> sharedOptions;
+  std::shared_ptr<const ParsedOptions> parsedOptions;
+  const nlohmann::json& options() const { return sharedOptions ? *sharedOptions : noOptions(); }
+  void setOptions(nlohmann::json complete) { sharedOptions = std::make_shared<const nlohmann::json>(std::move(complete)); }
   std::vector<ValueRef> inputs;     // one per spec input port
   std::vector<Type> inputTypes;     // the port types (after unification)
   std::vector<Type> outputTypes;
@@ -48,6 +67,12 @@ struct Op {
   // in the subgraph's file). Diagnostics about the op carry them as notes.
   std::shared_ptr<const std::vector<LocatedNote>> instanceChain;
   unsigned stage = 0;               // set by the stage pass: kVertexStage / kFragmentStage
+
+ private:
+  static const nlohmann::json& noOptions() {
+    static const nlohmann::json none;  // null, as a default-constructed member was
+    return none;
+  }
 };
 
 // A diagnostic about `op` names the subgraph instances it lies in.

@@ -20,6 +20,7 @@
 #include "core/id_index.h"
 #include "core/json_string_columns.h"
 #include "core/number_format.h"
+#include "core/interned_values.h"
 #include "core/node_options.h"
 #include "core/port_typing.h"
 #include "core/suggest.h"
@@ -70,7 +71,10 @@ struct SharedState {
   std::deque<Graph> instanceGraphs;
   // A node type's options when a node declares none: completed and parsed once per type
   // (most nodes of a large graph are math nodes that declare no options).
-  std::unordered_map<const NodeSpec*, std::pair<nlohmann::json, std::shared_ptr<const ParsedOptions>>> defaultOptions;
+  std::unordered_map<const NodeSpec*, SharedOptions> defaultOptions;
+  // Options that nodes declare, and constants, each held once per distinct value.
+  OptionsTable options;
+  ConstantTable constants;
 };
 
 // A subgraph instance being inlined: its nodes' ids take the prefix, its parameters read
@@ -539,7 +543,7 @@ class Resolver {
   // NodeOutput source when already known (-1: look it up by id).
   std::optional<ValueRef> sourceRef(const InputSource& s, int node = -1) {
     switch (s.kind) {
-      case InputSource::Kind::Literal: return ValueRef::constant_(literalValue(s.literal));
+      case InputSource::Kind::Literal: return ValueRef::constant_(shared_.constants.intern(literalValue(s.literal)));
       case InputSource::Kind::Parameter: {
         auto it = paramValue_.find(s.parameter);
         if (it == paramValue_.end()) return std::nullopt;
@@ -596,16 +600,16 @@ class Resolver {
       // retargetTexturePaths leaves as they are (Registry::add checks that).
       if (node.options.empty()) {
         auto [it, fresh] = shared_.defaultOptions.try_emplace(spec);
-        if (fresh) {
-          it->second.first = completeOptions(*spec, nlohmann::json::object());
-          it->second.second = parseOptions(*spec, it->second.first);
-        }
-        op.options = it->second.first;
-        op.parsedOptions = it->second.second;
+        if (fresh) it->second = shared_.options.intern(*spec, completeOptions(*spec, nlohmann::json::object()));
+        op.sharedOptions = it->second.json;
+        op.parsedOptions = it->second.parsed;
       } else {
-        op.options = completeOptions(*spec, declaredOptions(node, *spec));
-        if (scope_) retargetTexturePaths(*spec, op.options);
-        op.parsedOptions = parseOptions(*spec, op.options);  // valid: lookUpSpecs checked each value
+        nlohmann::json complete = completeOptions(*spec, declaredOptions(node, *spec));
+        if (scope_) retargetTexturePaths(*spec, complete);
+        // Valid: lookUpSpecs checked each value.
+        SharedOptions held = shared_.options.intern(*spec, std::move(complete));
+        op.sharedOptions = std::move(held.json);
+        op.parsedOptions = std::move(held.parsed);
       }
 
       const std::vector<PortSpec>& ports = inputsOf(static_cast<size_t>(ni));
@@ -640,7 +644,7 @@ class Resolver {
         const PortSpec& port = ports[pi];
         if (port.derived) continue;  // filled below by the node's derive
         if (port.defaultValue) {
-          op.inputs[pi] = ValueRef::constant_(*port.defaultValue);
+          op.inputs[pi] = ValueRef::constant_(shared_.constants.intern(*port.defaultValue));
           sourceTypes[pi] = port.defaultValue->type;
         } else if (port.defaultBuiltin) {
           op.inputs[pi] = ValueRef::builtin(*port.defaultBuiltin);
@@ -767,9 +771,9 @@ class Resolver {
     for (size_t pi = 0; pi < sub.parameters.size(); ++pi) {
       const Parameter& p = sub.parameters[pi];
       const ValueRef& v = (*inputs)[pi];
-      if (v.kind == ValueRef::Kind::Const && !fitsRange(v.constant, p)) {
+      if (v.kind == ValueRef::Kind::Const && !fitsRange(v.constant(), p)) {
         diags_.error(DiagCode::InterfaceMismatch, portWhere(node, given[pi]),
-                     "input '" + p.name + "' of '" + im.name + "' is " + v.constant.toString() +
+                     "input '" + p.name + "' of '" + im.name + "' is " + v.constant().toString() +
                          ", outside its range " + rangeText(p),
                      idOf(node), inputLabel(p.name));
         inRange = false;
@@ -873,7 +877,7 @@ class Resolver {
   ValueRef splat(const ValueRef& v, Type want, const Node& node) {
     Type have = program_.typeOf(v);
     if (have == want) return v;
-    if (v.kind == ValueRef::Kind::Const) return ValueRef::constant_(v.constant.convertedTo(want));
+    if (v.kind == ValueRef::Kind::Const) return ValueRef::constant_(shared_.constants.intern(v.constant().convertedTo(want)));
     const NodeSpec* combine = registry_.find("combine");
     if (!combine) throw std::logic_error("the registry has no 'combine' node to splat an input with");
     Op op;
@@ -881,10 +885,11 @@ class Resolver {
     op.nodeId = idOf(node);
     op.where = node.where;
     if (scope_) op.instanceChain = scope_->chain;
-    op.options = completeOptions(*combine, {{"type", std::string(typeName(want))}});
-    op.parsedOptions = parseOptions(*combine, op.options);
+    SharedOptions held = shared_.options.intern(*combine, completeOptions(*combine, {{"type", std::string(typeName(want))}}));
+    op.sharedOptions = std::move(held.json);
+    op.parsedOptions = std::move(held.parsed);
     int n = componentCount(want);
-    op.inputs.assign(combine->inputs.size(), ValueRef::constant_(Value::scalar(0)));
+    op.inputs.assign(combine->inputs.size(), ValueRef::constant_(shared_.constants.intern(Value::scalar(0))));
     std::vector<Type> types(combine->inputs.size(), Type::Float);
     for (int k = 0; k < n; ++k) op.inputs[static_cast<size_t>(k)] = v;
     PortTyping t = typePorts(*combine, *op.parsedOptions, types, [](int) { return std::string(); });

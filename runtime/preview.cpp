@@ -50,9 +50,9 @@ std::map<std::string, TextureOrigin> textureOrigins(const CompileResult& result)
     if (t.source.empty()) continue;  // a scene texture: a render target, not a file
     const std::string& source = t.source;
     for (const auto& op : result.program.ops) {
-      if (!op.options.is_object()) continue;
+      if (!op.options().is_object()) continue;
       bool uses = false;
-      for (const auto& [key, value] : op.options.items()) uses |= value.is_string() && value.get<std::string>() == source;
+      for (const auto& [key, value] : op.options().items()) uses |= value.is_string() && value.get<std::string>() == source;
       if (!uses) continue;
       TextureOrigin o;
       std::filesystem::path file(op.where.file.str());

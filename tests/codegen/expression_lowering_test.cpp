@@ -65,7 +65,7 @@ Result run(const std::string& formula) {
   CpuResult cpu = evaluateProgram(r.program, EvalEnvironment{});
   switch (root.kind) {
     case ValueRef::Kind::Op: r.value = cpu.opOutputs[static_cast<std::size_t>(root.index)][static_cast<std::size_t>(root.port)]; break;
-    case ValueRef::Kind::Const: r.value = root.constant; break;
+    case ValueRef::Kind::Const: r.value = root.constant(); break;
     case ValueRef::Kind::Param: r.value = kInputs[static_cast<std::size_t>(root.index)].value; break;
     default: ADD_FAILURE() << "the formula lowered to nothing";
   }

@@ -21,7 +21,7 @@ TEST(SpecialisePass, StaticParametersBecomeConstantsThenFoldAway) {
   const Op* k4 = findOp(p, "k4");
   ASSERT_TRUE(k4);
   ASSERT_EQ(k4->inputs[0].kind, ValueRef::Kind::Const);
-  EXPECT_EQ(k4->inputs[0].constant[0], 0.25);
+  EXPECT_EQ(k4->inputs[0].constant()[0], 0.25);
   // A uniform parameter is left alone.
   EXPECT_EQ(findOp(p, "n")->inputs[1].kind, ValueRef::Kind::Param);
 
@@ -43,7 +43,7 @@ TEST(SpecialisePass, StaticParameterFeedingAnOutput) {
   EXPECT_EQ(specialisePass(p, ps.ctx), PassResult::Changed);
   const ProgramOutput& color = outputOf(p, OutputSlot::FragmentColor);
   ASSERT_EQ(color.value.kind, ValueRef::Kind::Const);
-  EXPECT_EQ(color.value.constant, Value::vector({0.1, 0.2, 0.3}));
+  EXPECT_EQ(color.value.constant(), Value::vector({0.1, 0.2, 0.3}));
 }
 
 TEST(SpecialisePass, NothingStaticIsUnchanged) {
