@@ -90,8 +90,8 @@ std::string derivedBody(const DerivedUniform& d, const std::vector<std::string>&
       const ValueRef& r = op.inputs[i];
       sourceTypes.push_back(p.typeOf(r));
       if (r.kind == ValueRef::Kind::Const)
-        c += "    const double k" + std::to_string(k) + "_" + std::to_string(i) + "[" + std::to_string(r.constant.size()) +
-             "] = {" + componentsList(r.constant) + "};\n";
+        c += "    const double k" + std::to_string(k) + "_" + std::to_string(i) + "[" + std::to_string(r.constant().size()) +
+             "] = {" + componentsList(r.constant()) + "};\n";
       in.push_back(arrayOf(r, k, i));
     }
     for (size_t port = 0; port < op.outputTypes.size(); ++port) {

@@ -18,8 +18,8 @@ nlohmann::json valueRefJson(const Program& p, const ValueRef& r) {
     case ValueRef::Kind::Builtin: return {{"builtin", std::string(builtinName(static_cast<Builtin>(r.index)))}};
     case ValueRef::Kind::Const: {
       nlohmann::json c = nlohmann::json::array();
-      for (int i = 0; i < r.constant.size(); ++i) c.push_back(r.constant[i]);
-      return {{"constant", c}, {"type", std::string(typeName(r.constant.type))}};
+      for (int i = 0; i < r.constant().size(); ++i) c.push_back(r.constant()[i]);
+      return {{"constant", c}, {"type", std::string(typeName(r.constant().type))}};
     }
     case ValueRef::Kind::None: break;
   }
@@ -81,7 +81,7 @@ nlohmann::json derivedToJson(const DerivedValue& d) {
     for (Type t : op.outputTypes) outTypes.push_back(std::string(typeName(t)));
     ops.push_back({{"node", op.nodeId},
                    {"type", op.spec->type},
-                   {"options", op.options},
+                   {"options", op.options()},
                    {"inputs", inputs},
                    {"input_types", inTypes},
                    {"output_types", outTypes}});
@@ -110,10 +110,9 @@ std::optional<DerivedValue> derivedFromJson(const nlohmann::json& j, const Regis
     op.spec = registry.find(jo.value("type", ""));
     if (!op.spec || !op.spec->eval) return fail("unknown node type '" + jo.value("type", "") + "'");
     if (!isDerivedNodeType(op.spec->type)) return fail("node type '" + op.spec->type + "' is not allowed in a derived value");
-    op.options = jo.value("options", nlohmann::json::object());
     try {
-      op.options = completeOptions(*op.spec, op.options);
-      op.parsedOptions = parseOptions(*op.spec, op.options);
+      op.setOptions(completeOptions(*op.spec, jo.value("options", nlohmann::json::object())));
+      op.parsedOptions = parseOptions(*op.spec, op.options());
     } catch (const std::exception& e) {
       return fail("options of '" + op.nodeId + "': " + e.what());
     }

@@ -62,7 +62,7 @@ std::string comparisonOperator(const Op& op) {
   static const std::map<std::string, std::string> ops = {{"less", "<"},          {"less_equal", "<="},
                                                          {"greater", ">"},       {"greater_equal", ">="},
                                                          {"equal", "=="},        {"not_equal", "!="}};
-  auto it = ops.find(op.options.value("op", std::string("less")));
+  auto it = ops.find(op.options().value("op", std::string("less")));
   if (it == ops.end()) throw std::logic_error("derivedOpC: unknown comparison in '" + op.nodeId + "'");
   return it->second;
 }
@@ -192,7 +192,7 @@ std::string derivedOpC(const Op& op, const std::vector<std::string>& in, const s
     return c + assign(out[0], 2, a(0) + " * " + b(1) + " - " + a(1) + " * " + b(0));
   }
   if (type == "swizzle") {
-    std::string mask = op.options.value("mask", std::string("xyz"));
+    std::string mask = op.options().value("mask", std::string("xyz"));
     for (size_t i = 0; i < mask.size(); ++i)
       c += assign(out[0], static_cast<int>(i), at(in[0], ti[0], swizzleIndex(mask[i])));
     return c;
@@ -206,7 +206,7 @@ std::string derivedOpC(const Op& op, const std::vector<std::string>& in, const s
     return c;
   }
   if (type == "remap") {
-    bool clamped = op.options.value("clamp", false);
+    bool clamped = op.options().value("clamp", false);
     for (int i = 0; i < count(0); ++i) {
       std::string x = at(in[0], ti[0], i), a = at(in[1], ti[1], i), b = at(in[2], ti[2], i);
       std::string t = "(" + b + " == " + a + " ? 0.0 : (" + x + " - " + a + ") / (" + b + " - " + a + "))";

@@ -28,8 +28,8 @@ ValueRef DeriveContext::op(std::string_view type, const std::vector<ValueRef>& o
   o.spec = s;
   o.nodeId = nodeId;
   o.where = where;
-  o.options = completeOptions(*s, opOptions);
-  o.parsedOptions = parseOptions(*s, o.options);
+  o.setOptions(completeOptions(*s, opOptions));
+  o.parsedOptions = parseOptions(*s, o.options());
   size_t n = s->inputs.size();
   o.inputs.assign(n, ValueRef{});
   std::vector<Type> sourceTypes(n, Type::Invalid);

@@ -60,8 +60,8 @@ D3 normalMapBlend(NormalBlend mode, const D3& a, const D3& b) {
 ValueRef deriveScroll(DeriveContext& ctx, const ValueRef& speed, const ValueRef& time) {
   if (speed.kind == ValueRef::Kind::Const) {
     bool zero = true;
-    for (int k = 0; k < speed.constant.size(); ++k) zero = zero && speed.constant[k] == 0;
-    if (zero) return ValueRef::constant_(Value::ofType(speed.constant.type));
+    for (int k = 0; k < speed.constant().size(); ++k) zero = zero && speed.constant()[k] == 0;
+    if (zero) return ValueRef::constant_(Value::ofType(speed.constant().type));
   }
   return ctx.op("fract", {ctx.op("mul", {speed, time})});
 }
