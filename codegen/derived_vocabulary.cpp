@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "core/interface_tables.h"
+#include "nodes/math_builders.h"
 
 namespace wg {
 
@@ -96,16 +97,6 @@ std::string assign(const std::string& out, int i, const std::string& value) {
   return "  " + out + "[" + std::to_string(i) + "] = " + value + ";\n";
 }
 
-int swizzleIndex(char c) {
-  switch (c) {
-    case 'x': case 'r': return 0;
-    case 'y': case 'g': return 1;
-    case 'z': case 'b': return 2;
-    case 'w': case 'a': return 3;
-    default: return -1;
-  }
-}
-
 // sum of a[i] * b[i] from 0, in the order glsl::dot adds.
 std::string dotC(const std::string& a, Type ta, const std::string& b, Type tb, int n) {
   std::string s = "0.0";
@@ -194,7 +185,7 @@ std::string derivedOpC(const Op& op, const std::vector<std::string>& in, const s
   if (type == "swizzle") {
     std::string mask = op.options().value("mask", std::string("xyz"));
     for (size_t i = 0; i < mask.size(); ++i)
-      c += assign(out[0], static_cast<int>(i), at(in[0], ti[0], swizzleIndex(mask[i])));
+      c += assign(out[0], static_cast<int>(i), at(in[0], ti[0], nodes::math::swizzleIndex(mask[i])));
     return c;
   }
   if (type == "split") {

@@ -18,6 +18,7 @@ using glsl::map2;
 using glsl::map3;
 using math::binaryFunction;
 using math::mathNode;
+using math::swizzleIndex;
 using math::typedName;
 using math::unaryFunction;
 
@@ -51,16 +52,6 @@ bool requireFloatVector(InferContext& ctx, int port, int minComponents) {
     return false;
   }
   return true;
-}
-
-int swizzleIndex(char c) {
-  switch (c) {
-    case 'x': case 'r': return 0;
-    case 'y': case 'g': return 1;
-    case 'z': case 'b': return 2;
-    case 'w': case 'a': return 3;
-    default: return -1;
-  }
 }
 
 std::string checkSwizzleMask(const nlohmann::json& v) {

@@ -71,6 +71,18 @@ inline auto alwaysWithin(double lo, double hi) {
   return [lo, hi](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{{lo, hi, false}}; };
 }
 
+// The component a swizzle letter names (x/r 0, y/g 1, z/b 2, w/a 3), -1 for another
+// character: the swizzle node, and the C the derived-uniform header writes for it.
+inline int swizzleIndex(char c) {
+  switch (c) {
+    case 'x': case 'r': return 0;
+    case 'y': case 'g': return 1;
+    case 'z': case 'b': return 2;
+    case 'w': case 'a': return 3;
+    default: return -1;
+  }
+}
+
 // A hard case with one input `x`.
 inline HardCase hardX(std::string name, double x, std::string expectation, double lo, double hi) {
   return {std::move(name), {{"x", Value::scalar(x)}}, nlohmann::json::object(), std::move(expectation), lo, hi};

@@ -13,15 +13,6 @@ namespace derived_program_test {
 
 using namespace passtest;
 
-Program finalProgram(const std::string& json) {
-  Diagnostics diags;
-  auto graph = parseGraph(json, "test.json", diags);
-  EXPECT_TRUE(graph) << allText(diags);
-  if (!graph) return {};
-  auto program = buildProgram(*graph, defaultRegistry(), diags);
-  EXPECT_TRUE(program) << allText(diags);
-  return program ? std::move(*program) : Program{};
-}
 
 // dir = normalize($wind) * (k * 2 + time); shade reads it with the uv.
 const std::string kGraph = graphJson(

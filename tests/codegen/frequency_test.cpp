@@ -15,16 +15,6 @@ namespace {
 
 using namespace passtest;
 
-// The Program after the whole pass recipe, as compile and the report see it.
-Program finalProgram(const std::string& json) {
-  Diagnostics diags;
-  auto graph = parseGraph(json, "test.json", diags);
-  EXPECT_TRUE(graph) << allText(diags);
-  if (!graph) return {};
-  auto program = buildProgram(*graph, defaultRegistry(), diags);
-  EXPECT_TRUE(program) << allText(diags);
-  return program ? std::move(*program) : Program{};
-}
 
 Frequency opFrequency(const Program& p, const std::vector<Frequency>& f, const std::string& id) {
   int i = opIndex(p, id);

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "codegen/compile.h"
 #include "codegen/passes.h"
 #include "core/graph_io.h"
 #include "core/resolve.h"
@@ -31,6 +32,17 @@ inline Program resolveText(const std::string& json) {
   EXPECT_TRUE(program) << allText(diags);
   if (!program) return {};
   return std::move(*program);
+}
+
+// The Program after the whole pass recipe, as compile and the frequency report see it.
+inline Program finalProgram(const std::string& json) {
+  Diagnostics diags;
+  auto graph = parseGraph(json, "test.json", diags);
+  EXPECT_TRUE(graph) << allText(diags);
+  if (!graph) return {};
+  auto program = buildProgram(*graph, defaultRegistry(), diags);
+  EXPECT_TRUE(program) << allText(diags);
+  return program ? std::move(*program) : Program{};
 }
 
 inline const Op* findOp(const Program& p, const std::string& id) {

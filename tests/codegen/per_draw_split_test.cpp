@@ -20,16 +20,6 @@ namespace {
 
 using namespace passtest;
 
-// The Program after the whole pass recipe, as compile and the frequency report see it.
-Program finalProgram(const std::string& json) {
-  Diagnostics diags;
-  auto graph = parseGraph(json, "test.json", diags);
-  EXPECT_TRUE(graph) << allText(diags);
-  if (!graph) return {};
-  auto program = buildProgram(*graph, defaultRegistry(), diags);
-  EXPECT_TRUE(program) << allText(diags);
-  return program ? std::move(*program) : Program{};
-}
 
 // Node `id`'s own op (of its type, among the ops it derived): each derived input named in
 // `feeds` (port -> node type) is read from an op of that type that is per-draw.
