@@ -106,7 +106,7 @@ inline DerivedSample derivedVocabularySample() {
   s.parameters = program->parameters;
   for (size_t i = 0; i < program->ops.size(); ++i) {
     const Op& op = program->ops[i];
-    if (op.spec->type == "uv" || op.spec->type == "length" && op.nodeId == "uvl") continue;
+    if (op.nodeId == "uv" || op.nodeId == "uvl") continue;  // the per-pixel colour, not a sample
     for (size_t port = 0; port < op.outputTypes.size(); ++port) {
       if (op.outputTypes[port] == Type::Invalid) continue;
       DerivedUniform u;

@@ -107,6 +107,9 @@ const dot = (a, b) => {
   return s;
 };
 
+// Whether `port` names an output of `op` that has a value (split's missing components do not).
+const isPort = (op, port) => Number.isInteger(port) && port >= 0 && COMPONENTS[(op.output_types ?? [])[port]] !== undefined;
+
 function componentsOf(type, what) {
   const n = COMPONENTS[type];
   if (!n) throw new DerivedProgramError(`${what}: unknown type '${type}'`);
@@ -218,6 +221,7 @@ export function compileDerived(program, what = 'derived uniform') {
       if ('op' in input) {
         const j = input.op, port = input.port ?? 0;
         if (!(Number.isInteger(j) && j >= 0 && j < k)) throw new DerivedProgramError(`${name}: input ${i} reads no earlier op`);
+        if (!isPort(program.ops[j], port)) throw new DerivedProgramError(`${name}: input ${i} reads no output of op ${j}`);
         return (values) => values[j][port];
       }
       if ('parameter' in input) {
@@ -248,12 +252,13 @@ export function compileDerived(program, what = 'derived uniform') {
     });
     return { fn, inputs: widened };
   });
-  const { op: root, port } = program.value;
-  if (!(Number.isInteger(root) && root >= 0 && root < steps.length)) throw new DerivedProgramError(`${what}: the value is no op output`);
+  const { op: root, port = 0 } = program.value;
+  if (!(Number.isInteger(root) && root >= 0 && root < steps.length) || !isPort(program.ops[root], port))
+    throw new DerivedProgramError(`${what}: the value is no op output`);
   return (parameters, draw) => {
     const values = [];
     for (const s of steps) values.push(s.fn(s.inputs.map((input) => input(values, parameters, draw)), draw));
-    return values[root][port ?? 0];
+    return values[root][port];
   };
 }
 

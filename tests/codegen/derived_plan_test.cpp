@@ -107,7 +107,9 @@ TEST(DerivedPlan, TheWhitelistIsSortedAndEveryTypeIsANode) {
   const auto& types = derivedNodeTypes();
   for (size_t i = 0; i < types.size(); ++i) {
     EXPECT_NE(defaultRegistry().find(std::string(types[i])), nullptr) << types[i];
-    if (i) EXPECT_LT(types[i - 1], types[i]);
+    if (i) {
+      EXPECT_LT(types[i - 1], types[i]);
+    }
   }
 }
 

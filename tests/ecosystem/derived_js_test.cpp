@@ -94,6 +94,30 @@ TEST(DerivedJs, RefusesANodeTypeOutsideTheVocabulary) {
   EXPECT_NE(r.err.find("node type 'voronoi' cannot be computed outside the shader"), std::string::npos) << r.err;
 }
 
+// A hostile manifest: an input or the value naming an output port the op does not have is
+// refused when the program is compiled, not a TypeError at the first draw.
+TEST(DerivedJs, RefusesAPortTheOpDoesNotHave) {
+  auto timeOp = [] {
+    return nlohmann::json{{"node", "t"}, {"type", "time"}, {"options", nlohmann::json::object()},
+                          {"inputs", nlohmann::json::array()}, {"input_types", nlohmann::json::array()},
+                          {"output_types", {"float"}}};
+  };
+  nlohmann::json badInput = {{"type", "float"}, {"value", {{"op", 1}, {"port", 0}}},
+                             {"ops", {timeOp(), {{"node", "s"}, {"type", "sin"}, {"options", nlohmann::json::object()},
+                                                 {"inputs", {{{"op", 0}, {"port", 3}}}}, {"input_types", {"float"}},
+                                                 {"output_types", {"float"}}}}}};
+  nlohmann::json badValue = {{"type", "float"}, {"value", {{"op", 0}, {"port", 1}}}, {"ops", {timeOp()}}};
+  for (const auto& [program, message] : {std::pair{badInput, std::string("reads no output of op 0")},
+                                         std::pair{badValue, std::string("the value is no op output")}}) {
+    TempDir dir("wg_derived_js_");
+    const std::string file = dir / "programs.json";
+    std::ofstream(file) << nlohmann::json{{"programs", {program}}, {"cases", nlohmann::json::array()}}.dump();
+    CmdResult r = sh("timeout 60 node " + test::shellQuote(evaluator()) + " " + test::shellQuote(file));
+    EXPECT_NE(r.exit, 0);
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+}
+
 // The client wired to a compiled graph (clients/three/test/derived_client.mjs): after
 // update(time, camera) and after setParameter of every parameter a derived program reads (to
 // a value past its range, which the client clamps), each derived uniform holds what the
@@ -149,7 +173,9 @@ TEST(DerivedJs, TheClientSetsDerivedUniformsAsTheRuntime) {
     std::vector<Value> params;
     for (const auto& p : parameters) {
       Value v = valueOf(step["parameters"][p.name]);
-      if (p.max && s > 0 && read.count(p.name)) EXPECT_EQ(v[0], *p.max) << p.name << ": the client clamps";
+      if (p.max && s > 0 && read.count(p.name)) {
+        EXPECT_EQ(v[0], *p.max) << p.name << ": the client clamps";
+      }
       params.push_back(v);
     }
     for (const ManifestUniform* u : derived) {
