@@ -11,6 +11,13 @@ const DraftValue* DraftValue::member(const char* wanted) const {
   return nullptr;
 }
 
+DraftValue& DraftMembers::emplace_back() {
+  if (used_ == items_.size()) items_.emplace_back();
+  DraftValue& m = items_[used_++];
+  m.members.clear();
+  return m;
+}
+
 DraftValue& GraphDraftReader::slot(JsonPosition at) {
   DraftValue* s = nullptr;
   if (open_.empty()) {
@@ -55,7 +62,10 @@ void GraphDraftReader::scalar(JsonScalar& v, JsonPosition at) {
   }
   DraftValue& s = slot(at);
   s.type = v.type;
-  s.value = v.toJson();
+  if (v.type == nlohmann::json::value_t::string && s.value.is_string())
+    s.value.get_ref<std::string&>() = *v.string;  // into the reused member's string: no allocation
+  else
+    s.value = v.toJson();
   finished();
 }
 

@@ -16,6 +16,29 @@
 
 namespace wg {
 
+struct DraftValue;
+
+// A structured value's members, in file order. Clearing keeps the elements, and the next
+// emplace_back reuses one with the strings and member lists it holds: the node draft is
+// refilled once per node, so the nodes array allocates nothing per node but the Graph's own
+// storage (a vector that freed its elements made every node allocate its members again).
+class DraftMembers {
+ public:
+  DraftValue* begin();
+  DraftValue* end();
+  const DraftValue* begin() const;
+  const DraftValue* end() const;
+  std::size_t size() const { return used_; }
+  bool empty() const { return used_ == 0; }
+  DraftValue& back();
+  void clear() { used_ = 0; }
+  DraftValue& emplace_back();  // a member with no members; its name and value are the caller's to set
+
+ private:
+  std::vector<DraftValue> items_;
+  std::size_t used_ = 0;
+};
+
 struct DraftValue {
   std::string name;  // object members: the key
   JsonPosition key;  // object members: the key's opening quote
@@ -23,11 +46,17 @@ struct DraftValue {
   nlohmann::json::value_t type = nlohmann::json::value_t::null;
   bool structured = false;           // an object or array the format structures: see `members`
   nlohmann::json value;              // any other value, as written
-  std::vector<DraftValue> members;   // structured objects: members in file order
+  DraftMembers members;              // structured objects: members in file order
 
   const DraftValue* member(const char* wanted) const;  // the first of that name, or nullptr
   DraftValue* member(const char* wanted) { return const_cast<DraftValue*>(std::as_const(*this).member(wanted)); }
 };
+
+inline DraftValue* DraftMembers::begin() { return items_.data(); }
+inline DraftValue* DraftMembers::end() { return items_.data() + used_; }
+inline const DraftValue* DraftMembers::begin() const { return items_.data(); }
+inline const DraftValue* DraftMembers::end() const { return items_.data() + used_; }
+inline DraftValue& DraftMembers::back() { return items_[used_ - 1]; }
 
 class GraphDraftReader : public JsonEventHandler {
  public:
