@@ -78,27 +78,16 @@ void reportRejectedShaders(const ValidationResult& vr, const std::vector<Emitted
   }
 }
 
-std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
-                                          const CompileOptions& options, Diagnostics& diags) {
-  Graph withPreset;
-  if (!options.preset.empty()) {
-    withPreset = graphAsWritten;
-    if (!applyPreset(withPreset, options.preset, diags)) return std::nullopt;
-  }
-  const Graph& graph = options.preset.empty() ? graphAsWritten : withPreset;
-  auto program = buildProgram(graph, registry, diags);
-  if (!program) return std::nullopt;
-  CompileResult result;
-  result.nodesTotal = program->totalNodes;
-  result.nodesKept = static_cast<int>(program->ops.size());
-  std::string base = graphBaseName(graph.file.empty() ? graph.name : graph.file);
-  std::string sourceName = std::filesystem::path(graph.file).filename().string();
-  for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
+namespace {
+
+// Emits every target of `options` into `result.files` (validated when asked) and builds the
+// manifest; false when glslang rejected a shader.
+bool emitTargets(const Program& program, const CompileOptions& options, const std::string& base,
+                 const std::string& sourceName, CompileResult& result, Diagnostics& diags) {
   bool ok = true;
   // One plan per distinct tessellation choice; each target wraps its plan in its dialect.
   TargetPlans plans =
-      planTargets(*program, options.targets, sourceName.empty() ? graph.name : sourceName, options.tessellation,
-                  options.derivedUniforms);
+      planTargets(program, options.targets, sourceName, options.tessellation, options.derivedUniforms);
   for (size_t ti = 0; ti < options.targets.size(); ++ti) {
     Target target = options.targets[ti];
     EmitResult er = emitGlsl(plans.of(ti), target);
@@ -115,7 +104,7 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
       ValidationResult vr = validateShaders(target, sources);
       if (!vr.ok) {
         bool spirvStage = !vr.errors.empty() && vr.errors.front().text.rfind("spirv-val", 0) == 0;
-        reportRejectedShaders(vr, er.shaders, sources, *program, spirvStage ? DiagCode::SpirvRejected : DiagCode::GlslRejected, diags);
+        reportRejectedShaders(vr, er.shaders, sources, program, spirvStage ? DiagCode::SpirvRejected : DiagCode::GlslRejected, diags);
         ok = false;
       } else {
         for (size_t s = 0; s < vr.spirv.size() && s < sources.size(); ++s)
@@ -124,8 +113,33 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
     }
     for (size_t s = 0; s < sources.size(); ++s) result.files[firstFile + s].contents = std::move(sources[s].text);
   }
-  if (!ok) return std::nullopt;
-  result.manifest = buildManifest(*program, plans, base);
+  if (!ok) return false;
+  result.manifest = buildManifest(program, plans, base);
+  return true;
+}
+
+}  // namespace
+
+std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
+                                          const CompileOptions& options, Diagnostics& diags) {
+  Graph withPreset;
+  if (!options.preset.empty()) {
+    withPreset = graphAsWritten;
+    if (!applyPreset(withPreset, options.preset, diags)) return std::nullopt;
+  }
+  const Graph& graph = options.preset.empty() ? graphAsWritten : withPreset;
+  auto program = buildProgram(graph, registry, diags);
+  if (!program) return std::nullopt;
+  CompileResult result;
+  result.nodesTotal = program->totalNodes;
+  result.nodesKept = static_cast<int>(program->ops.size());
+  std::string base = graphBaseName(graph.file.empty() ? graph.name : graph.file);
+  std::string sourceName = std::filesystem::path(graph.file).filename().string();
+  for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
+  // The plans live inside emitTargets, so they are gone before the manifest's text is
+  // written: a big graph's plans are megabytes that nothing after the manifest reads.
+  if (!emitTargets(*program, options, base, sourceName.empty() ? graph.name : sourceName, result, diags))
+    return std::nullopt;
   result.manifest.preset = options.preset;
   result.files.push_back({base + ".manifest.json", result.manifest.fileText()});
   result.program = std::move(*program);
