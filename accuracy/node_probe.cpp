@@ -49,7 +49,7 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
     NodeInput in;
     in.port = inputs[k].name;
     in.source.kind = InputSource::Kind::Parameter;
-    in.source.parameter = p.name;
+    in.source.name = p.name;
     node.inputs.push_back(in);
   }
   g.nodes.push_back(node);

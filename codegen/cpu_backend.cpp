@@ -124,7 +124,7 @@ std::vector<Value> evaluateExpanded(const NodeSpec& spec, const nlohmann::json& 
     NodeInput in;
     in.port = p.name;
     in.source.kind = InputSource::Kind::Parameter;
-    in.source.parameter = param.name;
+    in.source.name = param.name;
     node.inputs.push_back(in);
   }
   g.nodes.push_back(node);

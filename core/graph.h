@@ -22,9 +22,10 @@ inline constexpr int kGraphFormatVersion = 1;
 struct InputSource {
   enum class Kind { NodeOutput, Parameter, Literal };
   Kind kind = Kind::Literal;
-  std::string node;            // NodeOutput: the referenced node id
+  // NodeOutput: the referenced node id; Parameter: the parameter's name (after '$'). One
+  // string for both: a large graph holds tens of thousands of inputs.
+  std::string name;
   std::string port;            // NodeOutput: its output port
-  std::string parameter;       // Parameter: the name after '$'
   std::vector<double> literal; // Literal: 1 number (float) or 2..4 (vecN)
   SourceRef where;             // the JSON value's position
 };

@@ -149,7 +149,7 @@ std::string GraphEditor::setInputParameter(const InputTarget& target, const std:
   if (!graph_.findParameter(parameter)) return "no parameter '" + parameter + "'";
   InputSource s;
   s.kind = InputSource::Kind::Parameter;
-  s.parameter = parameter;
+  s.name = parameter;
   record("feed " + describe(target) + " from $" + parameter, "");
   setSource(target, std::move(s));
   return "";
@@ -230,12 +230,12 @@ std::string GraphEditor::connect(const std::string& fromNode, const std::string&
       if (!seen.insert(id).second) continue;
       if (const Node* n = graph_.findNode(id))
         for (const auto& in : n->inputs)
-          if (in.source.kind == InputSource::Kind::NodeOutput) stack.push_back(in.source.node);
+          if (in.source.kind == InputSource::Kind::NodeOutput) stack.push_back(in.source.name);
     }
   }
   InputSource s;
   s.kind = InputSource::Kind::NodeOutput;
-  s.node = fromNode;
+  s.name = fromNode;
   s.port = fromPort;
   record("connect " + fromNode + "." + fromPort + " to " + describe(target), "");
   setSource(target, std::move(s));
@@ -292,7 +292,7 @@ std::string GraphEditor::addNode(const std::string& type, const std::string& id,
 std::string GraphEditor::deleteNode(const std::string& id) {
   if (!graph_.findNode(id)) return "no node '" + id + "'";
   record("delete node '" + id + "'", "");
-  auto reads = [&](const InputSource& s) { return s.kind == InputSource::Kind::NodeOutput && s.node == id; };
+  auto reads = [&](const InputSource& s) { return s.kind == InputSource::Kind::NodeOutput && s.name == id; };
   std::erase_if(graph_.nodes, [&](const Node& n) { return n.id == id; });
   for (auto& n : graph_.nodes) std::erase_if(n.inputs, [&](const NodeInput& in) { return reads(in.source); });
   std::erase_if(graph_.outputs, [&](const GraphOutput& o) { return reads(o.source); });

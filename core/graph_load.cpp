@@ -579,11 +579,11 @@ class Loader : public GraphDraftReader {
     }
     if (auto* v = field(nv, "inputs", json::value_t::object, "a node's 'inputs'", label, &out)) {
       n.inputs.reserve(v->members.size());
-      for (const DraftValue& e : v->members) {
+      for (DraftValue& e : v->members) {
         NodeInput in;
-        in.port = e.name;
+        in.port = std::move(e.name);
         in.keyWhere = ref(e.key);
-        if (parseSource(e.value, ref(e.at), in.source, label, [&] { return "input '" + e.name + "'"; }, out))
+        if (parseSource(e.value, ref(e.at), in.source, label, [&] { return "input '" + in.port + "'"; }, out))
           n.inputs.push_back(std::move(in));
       }
     }
@@ -619,17 +619,17 @@ class Loader : public GraphDraftReader {
         std::string name = s.substr(1);
         if (isIdentifier(name)) {
           out.kind = InputSource::Kind::Parameter;
-          out.parameter = name;
+          out.name = name;
           return true;
         }
       } else {
         auto dot = s.find('.');
         if (dot != std::string::npos && s.find('.', dot + 1) == std::string::npos) {
-          std::string nodeId = s.substr(0, dot), portName = s.substr(dot + 1);
+          std::string_view whole(s), nodeId = whole.substr(0, dot), portName = whole.substr(dot + 1);
           if (isIdentifier(nodeId) && isIdentifier(portName)) {
             out.kind = InputSource::Kind::NodeOutput;
-            out.node = nodeId;
-            out.port = portName;
+            out.name.assign(nodeId);
+            out.port.assign(portName);
             return true;
           }
         }

@@ -88,8 +88,8 @@ void writeJson(std::string& out, const json& v, int level) {
 
 std::string sourceText(const InputSource& s) {
   switch (s.kind) {
-    case InputSource::Kind::NodeOutput: return quote(s.node + "." + s.port);
-    case InputSource::Kind::Parameter: return quote("$" + s.parameter);
+    case InputSource::Kind::NodeOutput: return quote(s.name + "." + s.port);
+    case InputSource::Kind::Parameter: return quote("$" + s.name);
     case InputSource::Kind::Literal:
       if (s.literal.size() == 1) return formatNumber(s.literal[0]);
       return numberArray(s.literal);

@@ -43,8 +43,8 @@ std::vector<std::string> namesOf(const std::vector<Named>& list) {
 
 std::string describeSource(const InputSource& s) {
   switch (s.kind) {
-    case InputSource::Kind::NodeOutput: return "'" + s.node + "." + s.port + "'";
-    case InputSource::Kind::Parameter: return "'$" + s.parameter + "'";
+    case InputSource::Kind::NodeOutput: return "'" + s.name + "." + s.port + "'";
+    case InputSource::Kind::Parameter: return "'$" + s.name + "'";
     case InputSource::Kind::Literal: return "the literal";
   }
   return "?";
@@ -395,7 +395,7 @@ class Resolver {
   // `label()` makes the diagnostic's label, only when there is one to report.
   template <typename Label>
   int referencedNode(const InputSource& s, const std::string& user, const Label& label) {
-    int found = nodeIndex_.find(s.node);
+    int found = nodeIndex_.find(s.name);
     if (found < 0) {
       if (!nodeIds_) {  // indexed once, on the first dangling reference
         std::vector<std::string> ids;
@@ -403,7 +403,7 @@ class Resolver {
         nodeIds_.emplace(std::move(ids));
       }
       diags_.error(DiagCode::DanglingReference, s.where,
-                   "no node with id '" + s.node + "'" + nodeIds_->didYouMean(s.node), user, label());
+                   "no node with id '" + s.name + "'" + nodeIds_->didYouMean(s.name), user, label());
       return -1;
     }
     const NodeSpec* spec = specs_[static_cast<size_t>(found)];
@@ -412,7 +412,7 @@ class Resolver {
       std::string outs;
       for (const auto& name : names) outs += (outs.empty() ? "" : ", ") + name;
       diags_.error(DiagCode::UnknownOutputPort, s.where,
-                   "node '" + s.node + "' (" + spec->type + ") has no output '" + s.port +
+                   "node '" + s.name + "' (" + spec->type + ") has no output '" + s.port +
                        "'; its outputs are: " + outs + didYouMean(s.port, names),
                    user, label());
       return -1;
@@ -435,15 +435,15 @@ class Resolver {
       for (size_t k = 0; k < node.inputs.size(); ++k) {
         const NodeInput& in = node.inputs[k];
         if (in.source.kind == InputSource::Kind::Parameter) {
-          if (!paramValue_.count(in.source.parameter)) {
+          if (!paramValue_.count(in.source.name)) {
             if (!parameterNames_) {
               std::vector<std::string> names;
               for (const auto& p : graph_.parameters) names.push_back(p.name);
               parameterNames_.emplace(std::move(names));
             }
             diags_.error(DiagCode::UnknownParameter, in.source.where,
-                         "no parameter named '" + in.source.parameter + "'" +
-                             parameterNames_->didYouMean(in.source.parameter),
+                         "no parameter named '" + in.source.name + "'" +
+                             parameterNames_->didYouMean(in.source.name),
                          node.id, inputLabel(in.port));
           }
           continue;
@@ -545,13 +545,13 @@ class Resolver {
     switch (s.kind) {
       case InputSource::Kind::Literal: return ValueRef::constant_(shared_.constants.intern(literalValue(s.literal)));
       case InputSource::Kind::Parameter: {
-        auto it = paramValue_.find(s.parameter);
+        auto it = paramValue_.find(s.name);
         if (it == paramValue_.end()) return std::nullopt;
         return it->second;
       }
       case InputSource::Kind::NodeOutput: {
         if (node < 0) {
-          node = nodeIndex_.find(s.node);
+          node = nodeIndex_.find(s.name);
           if (node < 0) return std::nullopt;
         }
         if (const auto& values = expandedOutputs_[static_cast<size_t>(node)]; !values.empty()) {
@@ -577,7 +577,7 @@ class Resolver {
     std::string inputs;
     for (Type t : op.inputTypes) inputs += (inputs.empty() ? "" : ", ") + std::string(typeName(t));
     diags_.error(DiagCode::UnknownOutputPort, s.where,
-                 "node '" + s.node + "' (" + op.spec->type + ") has no output '" + s.port + "' for its input type " + inputs,
+                 "node '" + s.name + "' (" + op.spec->type + ") has no output '" + s.port + "' for its input type " + inputs,
                  user, label());
     return false;
   }
@@ -831,8 +831,8 @@ class Resolver {
       std::string label = "interface output '" + out.name + "'";
       if (out.source.kind == InputSource::Kind::NodeOutput) {
         if (referencedNode(out.source, "", [&] { return label; }) < 0) continue;
-      } else if (out.source.kind == InputSource::Kind::Parameter && !paramValue_.count(out.source.parameter)) {
-        diags_.error(DiagCode::UnknownParameter, out.source.where, "no parameter named '" + out.source.parameter + "'",
+      } else if (out.source.kind == InputSource::Kind::Parameter && !paramValue_.count(out.source.name)) {
+        diags_.error(DiagCode::UnknownParameter, out.source.where, "no parameter named '" + out.source.name + "'",
                      "", label);
         continue;
       }
@@ -844,7 +844,7 @@ class Resolver {
         diags_.error(DiagCode::InterfaceMismatch, out.source.where,
                      label + " is declared " + std::string(typeName(out.type)) + ", but " + describeSource(out.source) +
                          " is " + std::string(typeName(got)),
-                     out.source.kind == InputSource::Kind::NodeOutput ? prefixed(out.source.node) : "", label);
+                     out.source.kind == InputSource::Kind::NodeOutput ? prefixed(out.source.name) : "", label);
         continue;
       }
       values.push_back(*ref);
@@ -956,9 +956,9 @@ class Resolver {
       std::string label = "output '" + std::string(outputSlotName(out.slot)) + "'";
       if (out.source.kind == InputSource::Kind::NodeOutput) {
         if (referencedNode(out.source, "", [&] { return label; }) < 0) continue;
-      } else if (out.source.kind == InputSource::Kind::Parameter && !paramValue_.count(out.source.parameter)) {
+      } else if (out.source.kind == InputSource::Kind::Parameter && !paramValue_.count(out.source.name)) {
         diags_.error(DiagCode::UnknownParameter, out.source.where,
-                     "no parameter named '" + out.source.parameter + "'", "", label);
+                     "no parameter named '" + out.source.name + "'", "", label);
         continue;
       }
       auto ref = sourceRef(out.source);
@@ -970,7 +970,7 @@ class Resolver {
         diags_.error(DiagCode::TypeMismatch, out.source.where,
                      label + " expects " + std::string(typeName(want)) + ", but " + describeSource(out.source) +
                          " is " + std::string(typeName(got)),
-                     out.source.kind == InputSource::Kind::NodeOutput ? out.source.node : "", label);
+                     out.source.kind == InputSource::Kind::NodeOutput ? out.source.name : "", label);
         continue;
       }
       program_.outputs.push_back({out.slot, *ref, want, out.source.where});

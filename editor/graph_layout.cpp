@@ -14,8 +14,8 @@ int layoutUnplacedNodes(Graph& graph) {
     bool moved = false;
     for (const auto& n : graph.nodes)
       for (const auto& in : n.inputs) {
-        if (in.source.kind != InputSource::Kind::NodeOutput || !column.count(in.source.node)) continue;
-        int want = column[in.source.node] + 1;
+        if (in.source.kind != InputSource::Kind::NodeOutput || !column.count(in.source.name)) continue;
+        int want = column[in.source.name] + 1;
         if (want > column[n.id] && want <= static_cast<int>(graph.nodes.size())) column[n.id] = want, moved = true;
       }
     if (!moved) break;

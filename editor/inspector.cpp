@@ -170,9 +170,9 @@ bool drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
       if (in.port == port.name) src = &in.source;
     InputTarget target{id, port.name};
     if (src && src->kind == InputSource::Kind::NodeOutput) {
-      ImGui::Text("%s <- %s.%s", port.name.c_str(), src->node.c_str(), src->port.c_str());
+      ImGui::Text("%s <- %s.%s", port.name.c_str(), src->name.c_str(), src->port.c_str());
     } else if (src && src->kind == InputSource::Kind::Parameter) {
-      ImGui::Text("%s <- $%s", port.name.c_str(), src->parameter.c_str());
+      ImGui::Text("%s <- $%s", port.name.c_str(), src->name.c_str());
     } else {
       std::vector<float> v;
       if (src) v.assign(src->literal.begin(), src->literal.end());

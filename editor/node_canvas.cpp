@@ -39,7 +39,7 @@ struct Box {
 
 std::string sourceNote(const InputSource& s) {
   switch (s.kind) {
-    case InputSource::Kind::Parameter: return "$" + s.parameter;
+    case InputSource::Kind::Parameter: return "$" + s.name;
     case InputSource::Kind::Literal: {
       std::string t;
       for (size_t i = 0; i < s.literal.size(); ++i) t += (i ? ", " : "") + formatNumber(s.literal[i]);
@@ -205,7 +205,7 @@ void NodeCanvas::startDrag(const Layout& l, ImVec2 mouse, std::string& selected)
     // Picking a link up from its input: dropped elsewhere it is disconnected.
     const InputSource* s = l.sourceOf(*in);
     drag_ = Drag::Link;
-    linkFromNode_ = s->node, linkFromPort_ = s->port;
+    linkFromNode_ = s->name, linkFromPort_ = s->port;
     detached_ = *in;
     hasDetached_ = true;
   } else if (const Box* b = l.nodeAt(mouse)) {
@@ -276,7 +276,7 @@ void NodeCanvas::drawLinks(const Layout& l, ImDrawList* dl) const {
       const InputSource* s = l.sourceOf({b.id, p.name});
       if (!s || s->kind != InputSource::Kind::NodeOutput) continue;
       if (drag_ == Drag::Link && hasDetached_ && detached_.node == b.id && detached_.port == p.name) continue;
-      if (auto from = l.outputPort(s->node, s->port)) drawLink(dl, *from, p.at, linkColor);
+      if (auto from = l.outputPort(s->name, s->port)) drawLink(dl, *from, p.at, linkColor);
     }
   }
 }

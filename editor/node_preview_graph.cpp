@@ -10,7 +10,7 @@ namespace {
 InputSource fromNode(const std::string& node, const std::string& port) {
   InputSource s;
   s.kind = InputSource::Kind::NodeOutput;
-  s.node = node;
+  s.name = node;
   s.port = port;
   return s;
 }

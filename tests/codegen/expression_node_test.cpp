@@ -275,7 +275,7 @@ TEST(ExpressionNode, DiagnosticsOfAGraphBuiltInMemoryStillNameTheOption) {
   GraphOutput out;
   out.slot = OutputSlot::FragmentAlpha;
   out.source.kind = InputSource::Kind::NodeOutput;
-  out.source.node = "e";
+  out.source.name = "e";
   out.source.port = "out";
   g.outputs.push_back(out);
   Diagnostics diags;

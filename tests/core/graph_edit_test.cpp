@@ -78,9 +78,9 @@ TEST(GraphEdit, ConnectChecksPortsAndRefusesCycles) {
   ASSERT_EQ(e.connect("shore", "out", {"", "fragment.color"}), "");
   const GraphOutput* o = output(e.graph(), OutputSlot::FragmentColor);
   ASSERT_TRUE(o);
-  EXPECT_EQ(o->source.node, "shore");
+  EXPECT_EQ(o->source.name, "shore");
   ASSERT_EQ(e.connect("radius", "out", {"depth", "a"}), "");
-  EXPECT_EQ(input(e.graph(), "depth", "a")->source.node, "radius");
+  EXPECT_EQ(input(e.graph(), "depth", "a")->source.name, "radius");
 }
 
 TEST(GraphEdit, InputsTakeConstantsAndParameters) {
@@ -91,7 +91,7 @@ TEST(GraphEdit, InputsTakeConstantsAndParameters) {
   EXPECT_EQ(input(e.graph(), "fresnel", "f0")->source.literal, std::vector<double>{0.04});
   EXPECT_NE(e.setInputParameter({"fresnel", "f0"}, "missing"), "");
   ASSERT_EQ(e.setInputParameter({"depth", "b"}, "max_depth"), "");
-  EXPECT_EQ(input(e.graph(), "depth", "b")->source.parameter, "max_depth");
+  EXPECT_EQ(input(e.graph(), "depth", "b")->source.name, "max_depth");
 }
 
 TEST(GraphEdit, OptionsAreCheckedAgainstTheNodeType) {

@@ -112,13 +112,13 @@ TEST(GraphLoad, ValidGraph) {
   ASSERT_EQ(w.inputs.size(), 3u);
   EXPECT_EQ(w.inputs[0].port, "position");  // file order
   EXPECT_EQ(w.inputs[0].source.kind, InputSource::Kind::NodeOutput);
-  EXPECT_EQ(w.inputs[0].source.node, "vertexIn");
+  EXPECT_EQ(w.inputs[0].source.name, "vertexIn");
   EXPECT_EQ(w.inputs[0].source.port, "position");
   EXPECT_EQ(lc(w.inputs[0].keyWhere), "16:18");
   EXPECT_EQ(lc(w.inputs[0].source.where), "16:30");
   EXPECT_EQ(w.inputs[1].port, "height");
   EXPECT_EQ(w.inputs[1].source.kind, InputSource::Kind::Parameter);
-  EXPECT_EQ(w.inputs[1].source.parameter, "waveHeight");
+  EXPECT_EQ(w.inputs[1].source.name, "waveHeight");
   EXPECT_EQ(w.inputs[2].source.kind, InputSource::Kind::Literal);
   EXPECT_EQ(w.inputs[2].source.literal, (std::vector<double>{1, 0}));
   ASSERT_TRUE(w.editorPosition);
@@ -130,7 +130,7 @@ TEST(GraphLoad, ValidGraph) {
   ASSERT_EQ(g.outputs.size(), 3u);  // in slot order
   EXPECT_EQ(g.outputs[0].slot, OutputSlot::VertexPosition);
   EXPECT_EQ(g.outputs[1].slot, OutputSlot::FragmentColor);
-  EXPECT_EQ(g.outputs[1].source.node, "shade");
+  EXPECT_EQ(g.outputs[1].source.name, "shade");
   EXPECT_EQ(g.outputs[2].slot, OutputSlot::FragmentAlpha);
   EXPECT_EQ(g.outputs[2].source.literal, std::vector<double>{1});
   EXPECT_EQ(lc(g.outputs[2].keyWhere), "22:18");

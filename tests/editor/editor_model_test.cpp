@@ -113,7 +113,7 @@ TEST(NodePreviewGraph, RoutesTheOutputToTheColourAndConvertsVectors) {
   for (const auto& o : uv->outputs)
     if (o.slot == OutputSlot::FragmentColor) color = &o;
   ASSERT_TRUE(color);
-  const Node* combine = uv->findNode(color->source.node);
+  const Node* combine = uv->findNode(color->source.name);
   ASSERT_TRUE(combine);
   EXPECT_EQ(combine->type, "combine");
   EXPECT_EQ(saveGraph(g), saveGraph(load("lake"))) << "the original is untouched";

@@ -82,7 +82,7 @@ TEST(Editor, ScriptedEditsAreSavedCanonicallyAndReopenUnchanged) {
   for (const auto& n : g->nodes) EXPECT_TRUE(n.editorPosition) << "every node keeps a canvas position: " << n.id;
   const Node* depth = g->findNode("depth");
   bool linked = false;
-  for (const auto& in : depth->inputs) linked |= in.port == "a" && in.source.node == "clamped";
+  for (const auto& in : depth->inputs) linked |= in.port == "a" && in.source.name == "clamped";
   EXPECT_TRUE(linked);
   EXPECT_EQ(test::listFiles(ws.dir, ".json"), (std::vector<std::string>{"edits.json", "lake.json"}))
       << "no temporary left";
