@@ -6,7 +6,9 @@
 #include "codegen/cpu_backend.h"
 #include "codegen/derived_vocabulary.h"
 #include "codegen/frequency.h"
+#include "core/interface_tables.h"
 #include "core/node_options.h"
+#include "core/port_typing.h"
 
 namespace wg {
 namespace {
@@ -91,13 +93,27 @@ nlohmann::json derivedToJson(const DerivedValue& d) {
           {"ops", ops}};
 }
 
-std::optional<DerivedValue> derivedFromJson(const nlohmann::json& j, const Registry& registry,
-                                            const std::vector<ProgramParameter>& parameters, std::string& error) {
+namespace {
+
+// The type of what an input reads, for checking the op as the compiler typed it.
+Type sourceType(const DerivedValue& d, const ValueRef& r) {
+  switch (r.kind) {
+    case ValueRef::Kind::Op: return d.program.ops[static_cast<size_t>(r.index)].outputTypes[static_cast<size_t>(r.port)];
+    case ValueRef::Kind::Param: return d.program.parameters[static_cast<size_t>(r.index)].type;
+    case ValueRef::Kind::Builtin: return builtinType(static_cast<Builtin>(r.index));
+    case ValueRef::Kind::Const: return r.constant().type;
+    case ValueRef::Kind::None: break;
+  }
+  return Type::Invalid;
+}
+
+std::optional<DerivedValue> readDerived(const nlohmann::json& j, const Registry& registry,
+                                        const std::vector<ProgramParameter>& parameters, std::string& error) {
   auto fail = [&](std::string why) -> std::optional<DerivedValue> {
     error = std::move(why);
     return std::nullopt;
   };
-  if (!j.is_object() || !j.contains("ops") || !j["ops"].is_array() || !j.contains("value"))
+  if (!j.is_object() || !j.contains("ops") || !j["ops"].is_array() || !j.contains("value") || !j["value"].is_object())
     return fail("a derived value needs \"ops\" and \"value\"");
   DerivedValue d;
   d.program.parameters = parameters;
@@ -105,13 +121,23 @@ std::optional<DerivedValue> derivedFromJson(const nlohmann::json& j, const Regis
   if (!type) return fail("unknown type of the derived value");
   d.type = *type;
   for (const auto& jo : j["ops"]) {
+    if (!jo.is_object()) return fail("an op is not an object");
     Op op;
     op.nodeId = jo.value("node", "");
     op.spec = registry.find(jo.value("type", ""));
     if (!op.spec || !op.spec->eval) return fail("unknown node type '" + jo.value("type", "") + "'");
     if (!isDerivedNodeType(op.spec->type)) return fail("node type '" + op.spec->type + "' is not allowed in a derived value");
+    const nlohmann::json options = jo.value("options", nlohmann::json::object());
+    if (!options.is_object()) return fail("the options of '" + op.nodeId + "' are not an object");
+    for (const auto& [name, value] : options.items()) {
+      auto spec = std::find_if(op.spec->options.begin(), op.spec->options.end(),
+                               [&](const OptionSpec& o) { return o.name == name; });
+      if (spec == op.spec->options.end()) return fail("'" + op.nodeId + "' has no option '" + name + "'");
+      std::string why = checkOption(*spec, value, "");
+      if (!why.empty()) return fail("option '" + name + "' of '" + op.nodeId + "': " + why);
+    }
     try {
-      op.setOptions(completeOptions(*op.spec, jo.value("options", nlohmann::json::object())));
+      op.setOptions(completeOptions(*op.spec, options));
       op.parsedOptions = parseOptions(*op.spec, op.options());
     } catch (const std::exception& e) {
       return fail("options of '" + op.nodeId + "': " + e.what());
@@ -156,7 +182,18 @@ std::optional<DerivedValue> derivedFromJson(const nlohmann::json& j, const Regis
         return fail("an input of '" + op.nodeId + "' is none of op, parameter, builtin, constant");
       }
     }
-    if (op.inputs.size() != op.inputTypes.size()) return fail("'" + op.nodeId + "' has inputs and input types apart");
+    // The op must be what the compiler wrote: one input per port of its type, and the port
+    // types its type gives those inputs. Anything else would be evaluated with values of
+    // the wrong size at the first draw.
+    if (op.inputs.size() != op.spec->inputs.size())
+      return fail("'" + op.nodeId + "' (" + op.spec->type + ") has " + std::to_string(op.inputs.size()) + " inputs; its type has " +
+                  std::to_string(op.spec->inputs.size()));
+    std::vector<Type> sources;
+    for (const ValueRef& r : op.inputs) sources.push_back(sourceType(d, r));
+    PortTyping typed = typePorts(*op.spec, *op.parsedOptions, sources, [](int i) { return "input " + std::to_string(i); });
+    if (!typed.error.empty()) return fail("'" + op.nodeId + "' (" + op.spec->type + "): " + typed.error);
+    if (op.inputTypes != typed.inputTypes || op.outputTypes != typed.outputTypes)
+      return fail("'" + op.nodeId + "' (" + op.spec->type + ") declares port types its inputs do not give");
     d.program.ops.push_back(std::move(op));
   }
   int k = j["value"].value("op", -1), p = j["value"].value("port", 0);
@@ -164,7 +201,24 @@ std::optional<DerivedValue> derivedFromJson(const nlohmann::json& j, const Regis
       static_cast<size_t>(p) >= d.program.ops[static_cast<size_t>(k)].outputTypes.size())
     return fail("the derived value is no op output");
   d.value = ValueRef::op(k, p);
+  if (d.program.ops[static_cast<size_t>(k)].outputTypes[static_cast<size_t>(p)] != d.type)
+    return fail("the derived value's op output is not of its type");
   return d;
+}
+
+}  // namespace
+
+std::optional<DerivedValue> derivedFromJson(const nlohmann::json& j, const Registry& registry,
+                                            const std::vector<ProgramParameter>& parameters, std::string& error) {
+  // A member of the wrong JSON kind (a number where a name goes) is an error like any other.
+  try {
+    return readDerived(j, registry, parameters, error);
+  } catch (const nlohmann::json::exception& e) {
+    std::string what = e.what();
+    auto close = what.find("] ");
+    error = "a member has the wrong kind: " + (close == std::string::npos ? what : what.substr(close + 2));
+    return std::nullopt;
+  }
 }
 
 }  // namespace wg

@@ -2,6 +2,8 @@
 // shader reads u_derived<k> instead of computing the per-draw cone, the manifest carries
 // each one's program and reads back to the same bytes, a cone with a node type outside the
 // whitelist stays in the shader, and the output is deterministic.
+#include <functional>
+
 #include <gtest/gtest.h>
 
 #include "codegen/compile.h"
@@ -152,6 +154,82 @@ TEST(DerivedPlan, TheManifestRoundTripsTheDerivedPrograms) {
         EXPECT_THROW(Manifest::fromJson(bad), ManifestError);
         break;
       }
+  }
+}
+
+// Every example graph's derived programs read back: the checks below refuse only what the
+// compiler never writes.
+TEST(DerivedPlan, EveryExampleGraphsDerivedProgramsReadBack) {
+  int derived = 0;
+  for (const std::string& path : test::exampleGraphs()) {
+    SCOPED_TRACE(path);
+    Diagnostics diags;
+    auto graph = loadGraphFile(path, diags);
+    ASSERT_TRUE(graph) << allText(diags);
+    CompileOptions options;
+    options.targets = {Target::Glsl330};
+    options.derivedUniforms = true;
+    auto r = compileGraph(*graph, defaultRegistry(), options, diags);
+    ASSERT_TRUE(r) << allText(diags);
+    for (const auto& u : r->manifest.uniforms) derived += u.derived != nullptr;
+    std::string text = r->manifest.fileText();
+    EXPECT_EQ(Manifest::fromJson(nlohmann::json::parse(text)).fileText(), text);
+  }
+  EXPECT_GE(derived, 20) << "the example graphs hold derived uniforms of many node types";
+}
+
+// A hand-edited or hostile manifest: each derived program the compiler would not write is a
+// ManifestError naming what is wrong, never an exception of another kind at read time nor a
+// wrong-sized value at the first draw (before, a `mul` with one input read past its inputs
+// when evaluated, and a number where a name goes escaped as nlohmann's type_error).
+TEST(DerivedPlan, AProgramTheCompilerWouldNotWriteIsAManifestError) {
+  CompileResult r = compileText("@graphs/lagoon.json", true);
+  nlohmann::json base = nlohmann::json::parse(r.manifest.fileText());
+  size_t at = 0;
+  while (at < base["uniforms"].size() && base["uniforms"][at].value("builtin", "") != "derived") ++at;
+  ASSERT_LT(at, base["uniforms"].size());
+  // lagoon's first derived uniform: time, time * $flow_speed, that * 0.6, combine, fract.
+  ASSERT_EQ(base["uniforms"][at]["derived"]["ops"][1]["type"], "mul");
+  ASSERT_EQ(base["uniforms"][at]["derived"]["ops"][3]["type"], "combine");
+  using json = nlohmann::json;
+  struct Case {
+    const char* what;
+    std::function<void(json&)> spoil;
+    const char* message;  // in the error
+  };
+  const Case cases[] = {
+      {"an op's node id is a number", [](json& d) { d["ops"][0]["node"] = 5; }, "wrong kind"},
+      {"an op's type is a number", [](json& d) { d["ops"][0]["type"] = 5; }, "wrong kind"},
+      {"an op is a number", [](json& d) { d["ops"][0] = 5; }, "not an object"},
+      {"a mul with one input", [](json& d) { d["ops"][1]["inputs"].erase(1), d["ops"][1]["input_types"].erase(1); },
+       "has 1 inputs; its type has 2"},
+      {"a combine with one input",
+       [](json& d) { d["ops"][3]["inputs"] = json::array({{{"op", 1}, {"port", 0}}}), d["ops"][3]["input_types"] = {"float"}; },
+       "has 1 inputs; its type has 4"},
+      {"input types the inputs do not give", [](json& d) { d["ops"][1]["input_types"] = {"vec4", "vec4"}; }, "port types"},
+      {"three output types", [](json& d) { d["ops"][1]["output_types"] = {"float", "float", "float"}; }, "port types"},
+      {"a constant of a string", [](json& d) { d["ops"][2]["inputs"][1]["constant"] = {"x"}; }, "wrong kind"},
+      {"a constant of null", [](json& d) { d["ops"][2]["inputs"][1]["constant"] = {nullptr}; }, "wrong kind"},
+      {"an op index as text", [](json& d) { d["ops"][1]["inputs"][0]["op"] = "0"; }, "wrong kind"},
+      {"a builtin as a number", [](json& d) { d["ops"][1]["inputs"][1] = {{"builtin", 4}}; }, "wrong kind"},
+      {"the value a number", [](json& d) { d["value"] = 3; }, "needs \"ops\" and \"value\""},
+      {"options a number", [](json& d) { d["ops"][3]["options"] = 7; }, "not an object"},
+      {"an option value not in its list", [](json& d) { d["ops"][3]["options"] = {{"type", "mat9"}}; }, "'mat9'"},
+      {"an option the type does not have", [](json& d) { d["ops"][3]["options"] = {{"size", 2}}; }, "no option 'size'"},
+      {"a value type its op does not give", [](json& d) { d["type"] = "vec3"; }, "op output is not of its type"},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.what);
+    json m = base;
+    c.spoil(m["uniforms"][at]["derived"]);
+    try {
+      Manifest::fromJson(m);
+      ADD_FAILURE() << "accepted";
+    } catch (const ManifestError& e) {
+      EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+    } catch (const std::exception& e) {
+      ADD_FAILURE() << "not a ManifestError: " << e.what();
+    }
   }
 }
 
