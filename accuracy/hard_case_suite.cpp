@@ -125,7 +125,7 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, GpuExecutor& executor, 
           std::optional<ProbeReport> report;
           std::string label = spec->type + " [" + variant + (key == variantOptions.dump() ? "" : ", " + key) + "]." + out.name;
           try {
-            report = probeNode(*spec, group.first, out.name, group.second, executor, diags, options.mutation);
+            report = probeNode(*spec, group.first, out.name, group.second, executor, diags, options.mutation, options.derive);
           } catch (const rt::RuntimeError& e) {
             result.errors.push_back(label + ": " + e.what());
             continue;

@@ -25,13 +25,15 @@ struct NodeProbeSetup {
 };
 NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options, const std::vector<ProbeCase>& cases);
 
-// Probes output `output` ("" = the first) of `spec` on `executor`.
+// Probes output `output` ("" = the first) of `spec` on `executor`. `derive`: the node's
+// per-draw parts (a scroll phase, a near/far ratio, the camera axis) are derived uniforms,
+// computed per case in double as the runtime computes them per draw (probeGraph's `derive`).
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
                                      const std::vector<ProbeCase>& cases, GpuExecutor& executor, Diagnostics& diags,
-                                     const ShaderMutation& mutation = {});
+                                     const ShaderMutation& mutation = {}, bool derive = false);
 // The same on the current GL context, whose API must match `target` (glsl330 or es300).
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
                                      const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags,
-                                     const ShaderMutation& mutation = {});
+                                     const ShaderMutation& mutation = {}, bool derive = false);
 
 }  // namespace wg::accuracy

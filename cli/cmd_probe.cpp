@@ -39,7 +39,7 @@ struct ProbeArgs {
   std::string table;      // with --sweep: where the error curve goes
   std::string mutate;     // FIND=>REPLACE in the probe shader
   std::string preset;     // graph mode: a preset of the graph, applied before probing
-  bool derivedUniforms = false;  // graph mode: the probe shader reads derived uniforms (as --derived-uniforms compiles)
+  bool derivedUniforms = false;  // the probe shader reads derived uniforms (as --derived-uniforms compiles)
   bool vulkanValidation = false;  // vk450: under the Khronos validation layer
 };
 
@@ -152,6 +152,7 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
     options.nodes = {spec->type};
     options.variants = args.variants;
     options.mutation = mutation;
+    options.derive = args.derivedUniforms;
     accuracy::SuiteResult r = accuracy::runHardCaseSuite(*cases, *executor, options);
     executor->finish();
     nlohmann::json all = nlohmann::json::array();
