@@ -107,6 +107,15 @@ const dot = (a, b) => {
   return s;
 };
 
+// The inputs of each node type that is not component-wise (those take as many as their
+// formula's parameters): what the compiler writes, one per port of the type.
+const ARITY = {
+  time: 0, camera_position: 0, sun_direction: 0, camera_forward: 0, near_far_ratio: 1,
+  compare: 2, select: 4, dot: 2, length: 1, distance: 2, normalize: 1, cross: 2, swizzle: 1,
+  split: 1, combine: 4, remap: 5,
+};
+const arityOf = (type) => ARITY[type] ?? COMPONENT_WISE[type]?.length;
+
 // Whether `port` names an output of `op` that has a value (split's missing components do not).
 const isPort = (op, port) => Number.isInteger(port) && port >= 0 && COMPONENTS[(op.output_types ?? [])[port]] !== undefined;
 
@@ -238,11 +247,15 @@ export function compileDerived(program, what = 'derived uniform') {
         return (values, parameters, draw) => (typeof draw[b] === 'number' ? [draw[b]] : Array.from(draw[b]));
       }
       if ('constant' in input) {
+        if (!Array.isArray(input.constant)) throw new DerivedProgramError(`${name}: input ${i} is a constant that is not an array`);
         const c = input.constant.map(Number);
         return () => c;
       }
       throw new DerivedProgramError(`${name}: input ${i} is none of op, parameter, builtin, constant`);
     });
+    // An op with fewer inputs than its type would read past them at the first draw.
+    if (inputs.length !== arityOf(op.type))
+      throw new DerivedProgramError(`${name}: ${inputs.length} inputs; a '${op.type}' has ${arityOf(op.type)}`);
     // A float read by a wider port splats over its components, as the CPU backend converts it.
     const widths = (op.input_types ?? []).map((t) => componentsOf(t, name));
     if (widths.length !== inputs.length) throw new DerivedProgramError(`${name}: inputs and input types apart`);

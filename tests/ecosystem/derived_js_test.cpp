@@ -96,7 +96,7 @@ TEST(DerivedJs, RefusesANodeTypeOutsideTheVocabulary) {
 
 // A hostile manifest: an input or the value naming an output port the op does not have is
 // refused when the program is compiled, not a TypeError at the first draw.
-TEST(DerivedJs, RefusesAPortTheOpDoesNotHave) {
+TEST(DerivedJs, RefusesAProgramTheCompilerWouldNotWrite) {
   auto timeOp = [] {
     return nlohmann::json{{"node", "t"}, {"type", "time"}, {"options", nlohmann::json::object()},
                           {"inputs", nlohmann::json::array()}, {"input_types", nlohmann::json::array()},
@@ -107,8 +107,19 @@ TEST(DerivedJs, RefusesAPortTheOpDoesNotHave) {
                                                  {"inputs", {{{"op", 0}, {"port", 3}}}}, {"input_types", {"float"}},
                                                  {"output_types", {"float"}}}}}};
   nlohmann::json badValue = {{"type", "float"}, {"value", {{"op", 0}, {"port", 1}}}, {"ops", {timeOp()}}};
+  // A mul with one input (it would read past its inputs at the first draw), and a constant
+  // that is not an array.
+  nlohmann::json oneInput = {{"type", "float"}, {"value", {{"op", 1}, {"port", 0}}},
+                             {"ops", {timeOp(), {{"node", "m"}, {"type", "mul"}, {"options", nlohmann::json::object()},
+                                                 {"inputs", {{{"op", 0}, {"port", 0}}}}, {"input_types", {"float"}},
+                                                 {"output_types", {"float"}}}}}};
+  nlohmann::json scalarConstant = oneInput;
+  scalarConstant["ops"][1]["inputs"] = {{{"op", 0}, {"port", 0}}, {{"constant", 2}, {"type", "float"}}};
+  scalarConstant["ops"][1]["input_types"] = {"float", "float"};
   for (const auto& [program, message] : {std::pair{badInput, std::string("reads no output of op 0")},
-                                         std::pair{badValue, std::string("the value is no op output")}}) {
+                                         std::pair{badValue, std::string("the value is no op output")},
+                                         std::pair{oneInput, std::string("1 inputs; a 'mul' has 2")},
+                                         std::pair{scalarConstant, std::string("a constant that is not an array")}}) {
     TempDir dir("wg_derived_js_");
     const std::string file = dir / "programs.json";
     std::ofstream(file) << nlohmann::json{{"programs", {program}}, {"cases", nlohmann::json::array()}}.dump();
