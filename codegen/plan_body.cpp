@@ -1,6 +1,7 @@
 #include "codegen/plan_body.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -48,9 +49,10 @@ class PlanOpContext final : public EmitContext {
   }
   void output(int port, std::string expression) override { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
   std::string builtin(Builtin b) override { return w_.builtinExpr(b_, b); }
+  // Held until the op's outputs are known: writeOps leaves out a local no read output needs.
   std::string temporary(Type type, std::string expression) override {
-    std::string name = w_.opName(opIndex_) + "_t" + std::to_string(temps_++);
-    b_.line(opIndex_, typeName(type), " ", name, " = ", expression, ";");
+    std::string name = w_.opName(opIndex_) + "_t" + std::to_string(temps.size());
+    temps.push_back({type, name, std::move(expression)});
     return name;
   }
   unsigned stage() const override { return b_.stage; }
@@ -87,21 +89,65 @@ class PlanOpContext final : public EmitContext {
     return in.constant().convertedTo(op().inputTypes.at(static_cast<size_t>(port)));
   }
 
+  struct Temporary {
+    Type type;
+    std::string name, expression;
+  };
   std::vector<std::string> outputs;
+  std::vector<Temporary> temps;
 
  private:
   const Op& op() const { return w_.program().ops[static_cast<size_t>(opIndex_)]; }
   BodyWriter& w_;
   StageBody& b_;
   int opIndex_;
-  int temps_ = 0;
 };
+
+// Whether `text` reads the identifier `name` (not as part of a longer identifier).
+bool readsName(std::string_view text, std::string_view name) {
+  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (size_t k = text.find(name); k != std::string_view::npos; k = text.find(name, k + 1)) {
+    bool startsWord = k == 0 || !word(text[k - 1]);
+    bool endsWord = k + name.size() == text.size() || !word(text[k + name.size()]);
+    if (startsWord && endsWord) return true;
+  }
+  return false;
+}
+
+// Which of an op's locals the stage needs: those its read outputs use, and those the needed
+// ones use (a local reads only earlier ones).
+std::vector<char> neededTemporaries(const PlanOpContext& ctx, const std::vector<char>& outputRead) {
+  const size_t n = ctx.temps.size();
+  std::vector<char> needed(n, 0);
+  for (size_t p = 0; p < ctx.outputs.size(); ++p)
+    if (outputRead[p])
+      for (size_t t = 0; t < n; ++t) needed[t] |= readsName(ctx.outputs[p], ctx.temps[t].name);
+  for (size_t t = n; t-- > 0;)
+    if (needed[t])
+      for (size_t u = 0; u < t; ++u) needed[u] |= readsName(ctx.temps[t].expression, ctx.temps[u].name);
+  return needed;
+}
+
+// Takes back what only left-out locals read: a uniform, texture or builtin the op declared
+// first whose name is in none of the text the stage keeps from it (newest first, so a
+// texture appended last is popped first).
+void forgetUnread(std::vector<StageBody::Registration>& registered, const PlanOpContext& ctx,
+                  const std::vector<char>& outputRead, const std::vector<char>& needed) {
+  std::string kept;
+  for (size_t p = 0; p < ctx.outputs.size(); ++p)
+    if (outputRead[p]) kept += ctx.outputs[p] + '\n';
+  for (size_t t = 0; t < ctx.temps.size(); ++t)
+    if (needed[t]) kept += ctx.temps[t].expression + '\n';
+  for (size_t k = registered.size(); k-- > 0;)
+    if (kept.find(registered[k].name) == std::string::npos) registered[k].undo();
+}
 
 }  // namespace
 
 std::string StageBody::use(BuiltinUniform u) {
-  builtinUniforms.insert(u);
-  return std::string(builtinUniformRow(u).glslName);
+  std::string name(builtinUniformRow(u).glslName);
+  if (builtinUniforms.insert(u).second) noteRegistered(name, [this, u] { builtinUniforms.erase(u); });
+  return name;
 }
 
 BodyWriter::BodyWriter(const Program& p, bool knowFacts, BuiltinNamer namer)
@@ -147,13 +193,29 @@ void BodyWriter::writeOps(StageBody& w) {
     if (outputSlotRow(out.slot).stage == w.stage) use(out.value);
   if (w.stage == kVertexStage)
     for (const auto& v : program_.varyings) use(v);
+  std::vector<StageBody::Registration> registered;
+  std::vector<char> outputRead;
 
   for (size_t i = 0; i < program_.ops.size(); ++i) {
     const Op& op = program_.ops[i];
     if (!(op.stage & w.stage) || skipped(i)) continue;
     PlanOpContext ctx(*this, w, static_cast<int>(i));
     ctx.outputs.assign(op.outputTypes.size(), "");
+    registered.clear();
+    w.registered = &registered;
     op.spec->emit(ctx);
+    w.registered = nullptr;
+    outputRead.assign(op.outputTypes.size(), 0);
+    for (size_t p = 0; p < op.outputTypes.size(); ++p) outputRead[p] = used[portBase_[i] + p];
+    std::vector<char> needed = neededTemporaries(ctx, outputRead);
+    // An output no one reads, or a local left out, may have been the only reader of
+    // something the op declared.
+    if (!registered.empty() && (std::find(needed.begin(), needed.end(), 0) != needed.end() ||
+                                std::find(outputRead.begin(), outputRead.end(), 0) != outputRead.end()))
+      forgetUnread(registered, ctx, outputRead, needed);
+    for (size_t t = 0; t < ctx.temps.size(); ++t)
+      if (needed[t])
+        w.line(static_cast<int>(i), typeName(ctx.temps[t].type), " ", ctx.temps[t].name, " = ", ctx.temps[t].expression, ";");
     for (size_t p = 0; p < op.outputTypes.size(); ++p) {
       if (!used[portBase_[i] + p]) continue;
       if (ctx.outputs[p].empty())
@@ -179,15 +241,15 @@ std::string BodyWriter::valueExpr(StageBody& w, const ValueRef& r, Type want) {
   switch (r.kind) {
     case ValueRef::Kind::Const: return glslLiteral(r.constant().convertedTo(want));
     case ValueRef::Kind::Param:
-      w.parameters.insert(r.index);
       e = paramNames_[static_cast<size_t>(r.index)];
+      if (w.parameters.insert(r.index).second) w.noteRegistered(e, [&w, i = r.index] { w.parameters.erase(i); });
       break;
     case ValueRef::Kind::Builtin: e = builtinExpr(w, static_cast<Builtin>(r.index)); break;
     case ValueRef::Kind::Op: {
       const Op& op = program_.ops[static_cast<size_t>(r.index)];
       if (int k = w.stage == kFragmentStage && derived_ ? derived_->valueOf(r.index, r.port) : -1; k >= 0) {
-        w.derived.insert(k);
         e = std::string(builtinUniformRow(BuiltinUniform::Derived).glslName) + std::to_string(k);
+        if (w.derived.insert(k).second) w.noteRegistered(e, [&w, k] { w.derived.erase(k); });
         break;
       }
       e = w.stage == kFragmentStage && !(op.stage & kFragmentStage) ? varyingName(r.index, r.port) : opOutput(w, r.index, r.port);
@@ -206,8 +268,21 @@ std::string BodyWriter::outputExpr(StageBody& w, OutputSlot slot, std::string fa
 }
 
 std::string BodyWriter::builtinExpr(StageBody& w, Builtin b) {
-  w.builtins.insert(b);
-  return namer_(w, b);
+  bool added = w.builtins.insert(b).second;
+  // What the builtin's own expression declares (u_camera_position for the view direction)
+  // is read by the builtin's line, not by the op: it goes and stays with the builtin.
+  std::vector<StageBody::Registration> inner, *outer = w.registered;
+  w.registered = &inner;
+  std::string e = namer_(w, b);
+  w.registered = outer;
+  if (added)
+    w.noteRegistered(e, [&w, b, inner = std::move(inner)] {
+      w.builtins.erase(b);
+      for (size_t k = inner.size(); k-- > 0;) inner[k].undo();
+    });
+  else
+    for (auto& r : inner) w.noteRegistered(r.name, std::move(r.undo));
+  return e;
 }
 
 std::string BodyWriter::opOutput(const StageBody& w, int op, int port) const {
@@ -231,12 +306,15 @@ const std::string& BodyWriter::varyingName(int op, int port) const {
 std::string BodyWriter::phaseUniform(StageBody& w, double omega) {
   for (auto& p : phases_)
     if (p.omega == omega) {
+      if (!(p.stages & w.stage))
+        w.noteRegistered(p.name, [this, at = &p - phases_.data(), s = w.stage] { phases_[static_cast<size_t>(at)].stages &= ~s; });
       p.stages |= w.stage;
       return p.name;
     }
   UniformInfo u{std::string(builtinUniformRow(BuiltinUniform::TimePhase).glslName) + std::to_string(phases_.size()),
                 Type::Float, -1, BuiltinUniform::TimePhase, w.stage, omega};
   phases_.push_back(u);
+  w.noteRegistered(u.name, [this] { phases_.pop_back(); });
   return u.name;
 }
 
@@ -246,6 +324,10 @@ std::string BodyWriter::phaseUniform(StageBody& w, double omega) {
 std::string BodyWriter::nodeTexture(StageBody& w, const std::string& source, const SamplerState& sampler) {
   for (auto& t : nodeTextures_)
     if (t.source == source && t.sampler == sampler) {
+      if (!(t.stages & w.stage))
+        w.noteRegistered(t.name, [this, at = &t - nodeTextures_.data(), s = w.stage] {
+          nodeTextures_[static_cast<size_t>(at)].stages &= ~s;
+        });
       t.stages |= w.stage;
       return t.name;
     }
@@ -257,12 +339,17 @@ std::string BodyWriter::nodeTexture(StageBody& w, const std::string& source, con
   t.sampler = sampler;
   t.stages = w.stage;
   nodeTextures_.push_back(t);
+  w.noteRegistered(t.name, [this] { nodeTextures_.pop_back(); });
   return t.name;
 }
 
 std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
   for (auto& t : sceneTextures_)
     if (t.scene == sampler) {
+      if (!(t.stages & w.stage))
+        w.noteRegistered(t.name, [this, at = &t - sceneTextures_.data(), s = w.stage] {
+          sceneTextures_[static_cast<size_t>(at)].stages &= ~s;
+        });
       t.stages |= w.stage;
       return t.name;
     }
@@ -273,6 +360,7 @@ std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
   t.scene = sampler;
   t.stages = w.stage;
   sceneTextures_.push_back(t);
+  w.noteRegistered(t.name, [this] { sceneTextures_.pop_back(); });
   return t.name;
 }
 

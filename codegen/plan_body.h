@@ -30,6 +30,18 @@ struct StageBody {
   // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
   std::vector<std::string> aliases;
 
+  // While an op is written: what its emit declared for the first time in this stage (a
+  // parameter, a builtin uniform, a texture, ...), each with how to take it back, so a local
+  // the writer leaves out does not leave a declaration nothing reads.
+  struct Registration {
+    std::string name;
+    std::function<void()> undo;
+  };
+  std::vector<Registration>* registered = nullptr;
+  void noteRegistered(std::string_view name, std::function<void()> undo) {
+    if (registered) registered->push_back({std::string(name), std::move(undo)});
+  }
+
   explicit StageBody(unsigned s) : stage(s) {}
   // One line of the body, from its parts.
   template <class... Parts>

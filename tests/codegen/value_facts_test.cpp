@@ -106,12 +106,17 @@ TEST(ValueFacts, PowNeedsAProvenPositiveExponent) {
   EXPECT_EQ(probe.find("_positive("), std::string::npos);
 }
 
-// Phong: the unit lobe only when normal, view and light are all proven normalized.
+// Phong: the unit lobe only when normal, view and light are all proven normalized. Both
+// lobes are read (the colour): the environment's light (0, 1, 0) is unit, the default sun
+// (1, 1, -0.5) is not, so one lobe of each form.
 TEST(ValueFacts, PhongLobeSkipsRenormalisingOnlyUnitInputs) {
   std::string unit = fragmentOf(compiledProgram(graphJson(
-      R"({"id": "p", "type": "phong_specular", "inputs": {"shine": "$k"}})", R"("fragment": {"alpha": "p.sun_specular"})",
+      R"({"id": "p", "type": "phong_specular", "inputs": {"shine": "$k"}})", R"("fragment": {"color": "p.color"})",
       R"("k": {"type": "float", "default": 20, "min": 1, "max": 100})")));
-  EXPECT_NE(unit.find("wg_phong_specular_lobe_unit("), std::string::npos) << unit;
+  EXPECT_NE(unit.find("wg_phong_specular_lobe_unit(b_normal, b_view_direction, vec3(0.0, 1.0, 0.0))"), std::string::npos)
+      << unit;
+  EXPECT_NE(unit.find("wg_phong_specular_lobe(b_normal, b_view_direction, vec3(1.0, 1.0, -0.5))"), std::string::npos)
+      << unit;
   EXPECT_NE(unit.find("wg_pow_known_safe_float("), std::string::npos) << unit;
   // A normal that is a world position is not unit; a shine without a range may be 0.
   std::string guarded = fragmentOf(compiledProgram(graphJson(

@@ -1,6 +1,7 @@
 // Properties every registered node must have, so a new node is tested the moment it is
 // registered: docs present, hard cases finite and in range, and the node compiles alone
 // for every target with glslang accepting the result.
+#include <cctype>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -107,6 +108,72 @@ TEST(AllNodes, EachCompilesAloneForEveryTarget) {
       EXPECT_TRUE(result.has_value()) << messages << text;
     }
   }
+}
+
+// Each output read alone, every input a (uniform) parameter so nothing folds: the shader
+// declares no local of a node that it never reads. What the outputs do not reach is not
+// emitted, also inside a node with several outputs (before, phong_specular wrote its
+// environment lobe when only its sun term was read, and blinn_phong, ggx_specular,
+// normal_from_height, sine_normals and ssr their unread terms likewise).
+TEST(AllNodes, NoOutputReadAloneLeavesAnUnreadTemporary) {
+  int checked = 0;
+  for (const NodeSpec* s : defaultRegistry().all()) {
+    if (s->outputs.size() < 2) continue;
+    for (size_t o = 0; o < s->outputs.size(); ++o) {
+      const PortSpec& out = s->outputs[o];
+      Type t = out.kind == PortKind::Fixed ? out.type : Type::Vec3;
+      if (!isFloatScalarOrVector(t) || out.kind == PortKind::Custom) continue;
+      SCOPED_TRACE(s->type + "." + out.name);
+      nlohmann::json g = nlohmann::json::parse(singleNodeGraph(*s, out.name, t));
+      nlohmann::json params = nlohmann::json::object(), inputs = nlohmann::json::object();
+      for (const auto& p : portsOfNode(*s, nlohmann::json::object()).inputs) {
+        if (p.derived) continue;  // computed by the node itself
+        nlohmann::json literal = literalFor(p);
+        std::string type = literal.is_number() ? "float" : "vec" + std::to_string(literal.size());
+        params["in_" + p.name] = {{"type", type}, {"default", literal}};
+        inputs[p.name] = "$in_" + p.name;
+      }
+      g["nodes"][0]["inputs"] = inputs;
+      g["parameters"] = params;
+      Diagnostics diags;
+      auto graph = parseGraph(g.dump(), "single.json", diags);
+      ASSERT_TRUE(graph) << g.dump();
+      CompileOptions options;
+      options.targets = {Target::Glsl330};
+      options.validate = false;
+      auto result = compileGraph(*graph, defaultRegistry(), options, diags);
+      std::string messages;
+      for (const auto& d : diags.all()) messages += formatText(d) + "\n";
+      EXPECT_TRUE(result) << messages << g.dump();
+      if (!result) continue;
+      for (const auto& f : result->files) {
+        size_t main = f.contents.find("void main");
+        if (main == std::string::npos) continue;
+        const std::string body = f.contents.substr(main);
+        // Each local the body declares ("  float n0_subject_t1 = ...") must be read after it.
+        for (size_t at = body.find("\n  "); at != std::string::npos; at = body.find("\n  ", at + 1)) {
+          size_t space = body.find(' ', at + 3), eq = body.find(" = ", at + 3), eol = body.find('\n', at + 1);
+          if (space == std::string::npos || eq == std::string::npos || eq > eol || space > eq) continue;
+          std::string name = body.substr(space + 1, eq - space - 1);
+          // A node's locals: "<op>_t<k>" (an op's own output lines are pruned by op).
+          size_t t = name.rfind("_t");
+          if (name.rfind('n', 0) != 0 || t == std::string::npos || t + 2 == name.size() ||
+              name.find_first_not_of("0123456789", t + 2) != std::string::npos)
+            continue;
+          ++checked;
+          bool read = false;
+          for (size_t k = body.find(name, eq); k != std::string::npos && !read; k = body.find(name, k + 1)) {
+            char after = k + name.size() < body.size() ? body[k + name.size()] : ' ';
+            char before = body[k - 1];
+            read = !(std::isalnum(static_cast<unsigned char>(after)) || after == '_') &&
+                   !(std::isalnum(static_cast<unsigned char>(before)) || before == '_');
+          }
+          EXPECT_TRUE(read) << f.name << " declares " << name << " and never reads it";
+        }
+      }
+    }
+  }
+  EXPECT_GT(checked, 20) << "the scan found the nodes' locals";
 }
 
 }  // namespace

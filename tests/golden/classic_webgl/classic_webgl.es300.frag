@@ -191,7 +191,6 @@ void main() {
   vec3 n15_tinted = mix(n7_refraction_color, n14_tint_color, vec3(p_tint_strength));
   vec3 n16_surface = mix(n15_tinted, n8_reflection_color, vec3(n6_fresnel_t1));
   float n18_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n5_normal_normal, b_view_direction, u_sun_direction), p_shine_damper);
-  float n18_phong_t1 = wg_phong_specular_lobe_unit(n5_normal_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
   float n19_highlight = (n18_phong_t0 * n13_highlight_strength);
   vec3 n20_color = (n16_surface + vec3(n19_highlight));
   o_color = vec4(n20_color, 1.0);

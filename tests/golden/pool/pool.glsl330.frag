@@ -97,13 +97,6 @@ uvec3 wg_hash_pcg3d(uvec3 v) {
 
 vec3 wg_hash_unit_vec3(uvec3 h) { return vec3(h >> 8u) * 5.9604644775390625e-8; }
 
-// lambert: diffuse lighting by Lambert's cosine law (the advanced shaders tutorial, level 1).
-
-// max(N.L, 0) with both vectors normalised safely, kept in [0, 1]: a zero vector gives 0.
-float wg_lambert(vec3 n, vec3 l) {
-  return clamp(dot(wg_safe_normalize_vec3(n), wg_safe_normalize_vec3(l)), 0.0, 1.0);
-}
-
 float wg_linearize_depth_ratio_known(float depth, float n, float r) { return n / ((1.0 - depth) + depth * r); }
 
 // r = n / max(f, n) for n >= 1e-6: in [0, 1]; f = inf gives 0, f <= n gives 1.
@@ -284,7 +277,6 @@ void main() {
   vec3 n18_surface_sky_color = texture(u_environment, n18_surface_sky_t0).rgb;
   vec3 n19_surface_blend = mix(n16_body, n18_surface_sky_color, vec3(n17_surface_fresnel_t1));
   float n21_glint_t0 = (1.5 * wg_blinn_phong_specular(n0_ripples_normal, b_view_direction, u_sun_direction, 400.0));
-  float n21_glint_t1 = wg_lambert(n0_ripples_normal, u_sun_direction);
   vec3 n22_color = (n19_surface_blend + vec3(n21_glint_t0));
   o_color = vec4(n22_color, 1.0);
 }

@@ -259,7 +259,6 @@ void main() {
   vec2 n8_ripples_t1 = wg_ripple_normals_layer(n8_ripples_t0, vec4(23.0, 17.0, 19.0, -23.0), vec2(u_phase5, u_phase6)) * 0.5 + wg_ripple_normals_layer(n8_ripples_t0, vec4(47.0, 31.0, 37.0, -43.0), vec2(-u_phase7, u_phase8)) * 0.3 + wg_ripple_normals_layer(n8_ripples_t0, vec4(89.0, -67.0, 73.0, 61.0), vec2(u_phase9, -u_phase10)) * 0.2;
   vec3 n8_ripples_normal = wg_waves_unit_or_vec3(n6_wave_normal + 0.15 * vec3(n8_ripples_t1.x, 0.0, n8_ripples_t1.y), vec3(0.0, 1.0, 0.0));
   float n10_glint_t0 = (0.6 * wg_blinn_phong_specular(n8_ripples_normal, b_view_direction, u_sun_direction, 200.0));
-  float n10_glint_t1 = wg_lambert(n8_ripples_normal, u_sun_direction);
   float n11_varied_t0 = wg_color_variation_noise(((v_world_position.xz * 0.02) + vec2(u_phase11 * 40.743664)));
   vec3 n11_varied_color = wg_color_variation(p_water_color, n8_ripples_normal, u_sun_direction, n3_height, n11_varied_t0, 0.2, 0.1, 0.15);
   vec3 n12_ambient = (n11_varied_color * vec3(0.55));
