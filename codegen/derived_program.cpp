@@ -129,11 +129,12 @@ std::optional<DerivedValue> readDerived(const nlohmann::json& j, const Registry&
     if (!isDerivedNodeType(op.spec->type)) return fail("node type '" + op.spec->type + "' is not allowed in a derived value");
     const nlohmann::json options = jo.value("options", nlohmann::json::object());
     if (!options.is_object()) return fail("the options of '" + op.nodeId + "' are not an object");
-    for (const auto& [name, value] : options.items()) {
+    for (auto it = options.begin(); it != options.end(); ++it) {
+      const std::string& name = it.key();
       auto spec = std::find_if(op.spec->options.begin(), op.spec->options.end(),
                                [&](const OptionSpec& o) { return o.name == name; });
       if (spec == op.spec->options.end()) return fail("'" + op.nodeId + "' has no option '" + name + "'");
-      std::string why = checkOption(*spec, value, "");
+      std::string why = checkOption(*spec, *it, "");
       if (!why.empty()) return fail("option '" + name + "' of '" + op.nodeId + "': " + why);
     }
     try {
