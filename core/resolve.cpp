@@ -666,6 +666,16 @@ class Resolver {
         continue;
       }
       if (spec->derive) {
+        // The node's own inputs must fit before anything is derived from them: a vec4 wired
+        // into linearize_depth's vec2 near_far is the node's type error, reported as such,
+        // not a derive that cannot type its op (before, an internal error).
+        std::vector<Type> declared = sourceTypes;
+        for (size_t pi = 0; pi < nin; ++pi)
+          if (ports[pi].derived) declared[pi] = ports[pi].type;
+        if (!typePorts(*spec, *op.parsedOptions, declared, [](int) { return std::string(); }).error.empty()) {
+          typeOp(op, node, declared, given);  // reports the mismatch
+          continue;
+        }
         size_t firstDerived = program_.ops.size();
         deriveInputs(*spec, *op.parsedOptions, registry_, op.nodeId, op.where, op.inputs, program_);
         for (size_t k = firstDerived; k < program_.ops.size(); ++k) program_.ops[k].instanceChain = op.instanceChain;

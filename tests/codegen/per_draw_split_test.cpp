@@ -52,6 +52,57 @@ std::vector<Value> evaluate(const std::string& type, const std::vector<std::pair
   return evaluateNode(*defaultRegistry().find(type), nlohmann::json::object(), inputs, env, &textures, test::sourceDir());
 }
 
+// A node that derives inputs, with a parameter of every type wired into each input it
+// takes: the graph compiles, or the node's own type error (WG029) says which input, never an
+// internal error. (The graphgen fuzzer found a vec4 into linearize_depth's vec2 near_far
+// throwing from the derive; tests/bad/WG029_vec4_into_derived_source.json keeps it.)
+TEST(PerDrawSplit, AnyTypeWiredIntoADerivingNodeIsCompiledOrItsTypeError) {
+  int deriving = 0, refused = 0;
+  for (const NodeSpec* spec : defaultRegistry().all()) {
+    if (!spec->derive) continue;
+    ++deriving;
+    for (const PortSpec& port : spec->inputs) {
+      if (port.derived) continue;
+      for (const char* type : {"float", "vec2", "vec3", "vec4"}) {
+        SCOPED_TRACE(spec->type + "." + port.name + " <- " + type);
+        nlohmann::json value = std::string(type) == "float" ? nlohmann::json(0.5) : nlohmann::json::array();
+        for (int i = 0; i < componentCount(*parseType(type)) && value.is_array(); ++i) value.push_back(0.5);
+        nlohmann::json inputs{{port.name, "$x"}};
+        for (const PortSpec& other : spec->inputs) {  // the other required inputs: literals that fit
+          if (!other.required() || other.name == port.name) continue;
+          Type t = other.kind == PortKind::Fixed ? other.type : Type::Float;
+          nlohmann::json literal = t == Type::Float ? nlohmann::json(0.5) : nlohmann::json::array();
+          for (int i = 0; i < componentCount(t) && literal.is_array(); ++i) literal.push_back(0.5);
+          inputs[other.name] = literal;
+        }
+        nlohmann::json g{{"version", 1},
+                         {"name", "t"},
+                         {"parameters", {{"x", {{"type", type}, {"default", value}}}}},
+                         {"nodes", {{{"id", "n"}, {"type", spec->type}, {"inputs", inputs}}}}};
+        // Show the node's first output as the colour, through a swizzle to vec3.
+        g["nodes"].push_back({{"id", "show"}, {"type", "swizzle"}, {"options", {{"mask", "xxx"}}},
+                              {"inputs", {{"x", "n." + spec->outputs.front().name}}}});
+        g["outputs"] = {{"fragment", {{"color", "show.out"}}}};
+        Diagnostics diags;
+        auto graph = parseGraph(g.dump(), "t.json", diags);
+        ASSERT_TRUE(graph) << allText(diags);
+        CompileOptions options;
+        options.targets = {Target::Glsl330};
+        options.validate = false;
+        std::optional<CompileResult> r;
+        EXPECT_NO_THROW(r = compileGraph(*graph, defaultRegistry(), options, diags));
+        if (r) continue;
+        ++refused;
+        ASSERT_FALSE(diags.all().empty());
+        for (const auto& d : diags.all())
+          EXPECT_TRUE(d.code == DiagCode::TypeMismatch || d.code == DiagCode::UnknownOutputPort) << formatText(d);
+      }
+    }
+  }
+  EXPECT_GE(deriving, 7);
+  EXPECT_GE(refused, 1) << "no wiring was refused: the case of the fuzzer's input is not reached";
+}
+
 TEST(PerDrawSplit, DudvScrollIsAPerDrawFract) {
   expectDerivedPerDraw(graphJson(R"({"id": "d", "type": "dudv_distortion"},
                                     {"id": "l", "type": "length", "inputs": {"x": "d.offset"}})",
