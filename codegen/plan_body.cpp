@@ -103,6 +103,14 @@ class PlanOpContext final : public EmitContext {
   int opIndex_;
 };
 
+// Takes back the entry a registration appended when it is still the last (`size` is the
+// size it made): its name holds its index, so an earlier one stays, declared, when a later
+// one of the same op is read.
+template <class T>
+void popIfLast(std::vector<T>& entries, size_t size) {
+  if (entries.size() == size) entries.pop_back();
+}
+
 // Whether `text` reads the identifier `name` (not as part of a longer identifier).
 bool readsName(std::string_view text, std::string_view name) {
   auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
@@ -314,7 +322,7 @@ std::string BodyWriter::phaseUniform(StageBody& w, double omega) {
   UniformInfo u{std::string(builtinUniformRow(BuiltinUniform::TimePhase).glslName) + std::to_string(phases_.size()),
                 Type::Float, -1, BuiltinUniform::TimePhase, w.stage, omega};
   phases_.push_back(u);
-  w.noteRegistered(u.name, [this] { phases_.pop_back(); });
+  w.noteRegistered(u.name, [this, n = phases_.size()] { popIfLast(phases_, n); });
   return u.name;
 }
 
@@ -339,7 +347,7 @@ std::string BodyWriter::nodeTexture(StageBody& w, const std::string& source, con
   t.sampler = sampler;
   t.stages = w.stage;
   nodeTextures_.push_back(t);
-  w.noteRegistered(t.name, [this] { nodeTextures_.pop_back(); });
+  w.noteRegistered(t.name, [this, n = nodeTextures_.size()] { popIfLast(nodeTextures_, n); });
   return t.name;
 }
 
@@ -360,7 +368,7 @@ std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
   t.scene = sampler;
   t.stages = w.stage;
   sceneTextures_.push_back(t);
-  w.noteRegistered(t.name, [this] { sceneTextures_.pop_back(); });
+  w.noteRegistered(t.name, [this, n = sceneTextures_.size()] { popIfLast(sceneTextures_, n); });
   return t.name;
 }
 
