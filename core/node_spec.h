@@ -15,6 +15,7 @@
 
 #include "core/interface_tables.h"
 #include "core/node_options.h"
+#include "core/type_list.h"
 #include "core/sampler_state.h"
 #include "core/scene_image.h"
 #include "core/types.h"
@@ -118,8 +119,8 @@ struct NodePorts {
 struct InferContext {
   const NodeSpec& spec;
   const ParsedOptions& options;   // the node's options struct: options.as<T>()
-  std::vector<Type> inputTypes;   // per input port: the type connected or defaulted
-  std::vector<Type> outputTypes;  // to fill
+  TypeList inputTypes;   // per input port: the type connected or defaulted
+  TypeList outputTypes;  // to fill
   std::string error;              // set to refuse: "input 'x' must be a vector"
   int errorInput = -1;            // the port the error is about, if any
 };

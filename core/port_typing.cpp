@@ -39,15 +39,15 @@ PortTyping typePorts(const NodeSpec& spec, const ParsedOptions& options, const s
   for (const auto& p : spec.outputs)
     r.outputTypes.push_back(p.kind == PortKind::Fixed ? p.type : p.kind == PortKind::Gen ? gen : Type::Invalid);
   if (spec.infer) {
-    InferContext ctx{spec, options, r.inputTypes, r.outputTypes, {}, -1};
+    InferContext ctx{spec, options, std::move(r.inputTypes), std::move(r.outputTypes), {}, -1};
     spec.infer(ctx);
     if (!ctx.error.empty()) {
       r.error = ctx.error;
       r.errorInput = ctx.errorInput;
       return r;
     }
-    r.inputTypes = ctx.inputTypes;
-    r.outputTypes = ctx.outputTypes;
+    r.inputTypes = std::move(ctx.inputTypes);
+    r.outputTypes = std::move(ctx.outputTypes);
   }
   for (size_t i = 0; i < nin; ++i)
     if (!implicitlyConvertible(sourceTypes[i], r.inputTypes[i]))

@@ -10,12 +10,13 @@
 #include <nlohmann/json.hpp>
 
 #include "core/node_spec.h"
+#include "core/type_list.h"
 
 namespace wg {
 
 struct PortTyping {
-  std::vector<Type> inputTypes;
-  std::vector<Type> outputTypes;  // Invalid where infer says the output does not exist
+  TypeList inputTypes;
+  TypeList outputTypes;  // Invalid where infer says the output does not exist
   std::string error;              // "" when the sources fit
   int errorInput = -1;            // the input the error is about, or -1
 };

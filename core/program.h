@@ -13,6 +13,7 @@
 #include "core/graph.h"
 #include "core/node_spec.h"
 #include "core/source_ref.h"
+#include "core/type_list.h"
 #include "core/value.h"
 
 namespace wg {
@@ -60,8 +61,8 @@ struct Op {
   const nlohmann::json& options() const { return sharedOptions ? *sharedOptions : noOptions(); }
   void setOptions(nlohmann::json complete) { sharedOptions = std::make_shared<const nlohmann::json>(std::move(complete)); }
   std::vector<ValueRef> inputs;     // one per spec input port
-  std::vector<Type> inputTypes;     // the port types (after unification)
-  std::vector<Type> outputTypes;
+  TypeList inputTypes;   // the port types (after unification)
+  TypeList outputTypes;
   std::vector<std::string> mergedIds;  // node ids CSE folded into this op
   // Inside a subgraph: the instances it was inlined through, innermost first (`where` is
   // in the subgraph's file). Diagnostics about the op carry them as notes.
