@@ -88,8 +88,8 @@ std::vector<Diagnostic> Diagnostics::sorted() const {
   return out;
 }
 
-void Diagnostics::keepSource(const std::string& file, std::string text) {
-  sources_[file] = std::make_shared<const std::string>(std::move(text));
+void Diagnostics::keepSource(const std::string& file, std::shared_ptr<const std::string> text) {
+  sources_[file] = std::move(text);
 }
 
 const std::string* Diagnostics::source(const std::string& file) const {

@@ -78,7 +78,7 @@ class Diagnostics {
   // The text a graph file was parsed from, kept so that output formats that need the
   // file's lines (SARIF's UTF-16 columns) use the one snapshot that was read instead of
   // opening the file again (it may be a FIFO, or have changed). nullptr when not kept.
-  void keepSource(const std::string& file, std::string text);
+  void keepSource(const std::string& file, std::shared_ptr<const std::string> text);
   const std::string* source(const std::string& file) const;
 
  private:

@@ -133,7 +133,7 @@ class ImportLoader {
                        " bytes together; the limit is " + std::to_string(kMaxImportedBytes / (1024 * 1024)) + " MiB");
       return std::nullopt;
     }
-    return parseGraph(*text, path, diags_);
+    return parseGraph(std::make_shared<const std::string>(std::move(*text)), path, diags_);
   }
 
   Diagnostics& diags_;

@@ -172,21 +172,21 @@ class Loader : public GraphDraftReader {
   }
 
   // Every member key of the object `obj` is one of `allowed`; an error per other key.
-  void checkKeys(const DraftValue& obj, const std::string& what, std::initializer_list<const char*> allowed,
+  void checkKeys(const DraftValue& obj, std::string_view what, std::initializer_list<std::string_view> allowed,
                  const std::string& node = {}, Diagnostics* to = nullptr) {
     Diagnostics& out = to ? *to : diags_;
     std::string expected;
     for (const DraftValue& member : obj.members) {
       bool ok = false;
-      for (const char* a : allowed) ok = ok || member.name == a;
+      for (std::string_view a : allowed) ok = ok || member.name == a;
       if (ok) continue;
       if (expected.empty())
-        for (const char* a : allowed) {
+        for (std::string_view a : allowed) {
           if (!expected.empty()) expected += ", ";
           expected += a;
         }
       out.error(DiagCode::UnknownField, ref(member.key),
-                "unknown field '" + member.name + "' in " + what + " (expected " + expected + ")", node);
+                "unknown field '" + member.name + "' in " + std::string(what) + " (expected " + expected + ")", node);
     }
   }
 
@@ -198,7 +198,9 @@ class Loader : public GraphDraftReader {
   // The member `key` of `obj` if present and of JSON type `type` (any number type for
   // number_float); WG004 if present with another type.
   template <typename Draft>  // DraftValue or const DraftValue
-  Draft* field(Draft& obj, const char* key, json::value_t type, const std::string& label, const std::string& node = {},
+  // `label` is a view: callers pass literals, and a std::string of one was a heap block
+  // per node and field.
+  Draft* field(Draft& obj, std::string_view key, json::value_t type, std::string_view label, const std::string& node = {},
                Diagnostics* to = nullptr) {
     Draft* v = obj.member(key);
     if (!v) return nullptr;
@@ -206,7 +208,7 @@ class Loader : public GraphDraftReader {
     if (!ok) {
       std::string want = type == json::value_t::number_float ? "number" : jsonTypeName(type);
       (to ? *to : diags_)
-          .error(DiagCode::WrongJsonType, ref(v->at), label + " must be " + article(want) + ", found " + jsonTypeName(v->type),
+          .error(DiagCode::WrongJsonType, ref(v->at), std::string(label) + " must be " + article(want) + ", found " + jsonTypeName(v->type),
                  node);
       return nullptr;
     }
@@ -702,7 +704,8 @@ class Loader : public GraphDraftReader {
 
 }  // namespace
 
-std::optional<Graph> parseGraph(std::string_view text, const std::string& file, Diagnostics& diags) {
+std::optional<Graph> parseGraph(std::shared_ptr<const std::string> shared, const std::string& file, Diagnostics& diags) {
+  std::string_view text = *shared;
   if (text.size() > kMaxFileBytes) {
     diags.error(DiagCode::LimitExceeded, SourceRef{file, 0, 0},
                 "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
@@ -710,16 +713,25 @@ std::optional<Graph> parseGraph(std::string_view text, const std::string& file, 
   }
   // Positions after parsing need the lines (an expression's formula error is placed by the
   // escapes before it; SARIF counts UTF-16 columns): the text parsed is kept, never read twice.
-  diags.keepSource(file, std::string(text));
+  diags.keepSource(file, std::move(shared));
   Loader loader(file, diags, expectedNodes(text));
   if (!parseJsonEvents(text, file, diags, loader)) return std::nullopt;
   return loader.load();
 }
 
+std::optional<Graph> parseGraph(std::string_view text, const std::string& file, Diagnostics& diags) {
+  if (text.size() > kMaxFileBytes) {  // refused before it is copied
+    diags.error(DiagCode::LimitExceeded, SourceRef{file, 0, 0},
+                "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
+    return std::nullopt;
+  }
+  return parseGraph(std::make_shared<const std::string>(text), file, diags);
+}
+
 std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags) {
   auto text = readGraphFile(path, diags);
   if (!text) return std::nullopt;
-  auto graph = parseGraph(*text, path, diags);
+  auto graph = parseGraph(std::make_shared<const std::string>(std::move(*text)), path, diags);
   if (graph && !loadImports(*graph, diags)) return std::nullopt;
   return graph;
 }

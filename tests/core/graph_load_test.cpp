@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 
 #include "core/graph_io.h"
@@ -360,3 +361,20 @@ TEST(GraphLoad, FileErrors) {
 
 }  // namespace
 }  // namespace wg
+
+// A text the caller holds as a shared string is kept by the diagnostics as it is, not
+// copied (a file is in memory once); a text given as a view is copied, and either way the
+// kept text is the one parsed.
+TEST(GraphLoad, ASharedTextIsKeptWithoutACopy) {
+  const std::string graph =
+      R"({"version": 1, "name": "g", "nodes": [{"id": "f", "type": "fresnel"}], "outputs": {"fragment": {"color": "f.reflectance"}}})";
+  auto shared = std::make_shared<const std::string>(graph);
+  wg::Diagnostics diags;
+  ASSERT_TRUE(wg::parseGraph(shared, "shared.json", diags));
+  EXPECT_EQ(diags.source("shared.json"), shared.get());
+  wg::Diagnostics copied;
+  ASSERT_TRUE(wg::parseGraph(std::string_view(graph), "view.json", copied));
+  ASSERT_NE(copied.source("view.json"), nullptr);
+  EXPECT_NE(copied.source("view.json"), &graph);
+  EXPECT_EQ(*copied.source("view.json"), graph);
+}
