@@ -5,7 +5,7 @@
 
 namespace wg {
 
-const DraftValue* DraftValue::member(const char* wanted) const {
+const DraftValue* DraftValue::member(std::string_view wanted) const {
   for (const auto& m : members)
     if (m.name == wanted) return &m;
   return nullptr;

@@ -7,6 +7,7 @@
 // or position tree of the whole file is ever built.
 #include <deque>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -48,8 +49,9 @@ struct DraftValue {
   nlohmann::json value;              // any other value, as written
   DraftMembers members;              // structured objects: members in file order
 
-  const DraftValue* member(const char* wanted) const;  // the first of that name, or nullptr
-  DraftValue* member(const char* wanted) { return const_cast<DraftValue*>(std::as_const(*this).member(wanted)); }
+  // The first of that name, or nullptr. A view: the loader asks with literals, per node.
+  const DraftValue* member(std::string_view wanted) const;
+  DraftValue* member(std::string_view wanted) { return const_cast<DraftValue*>(std::as_const(*this).member(wanted)); }
 };
 
 inline DraftValue* DraftMembers::begin() { return items_.data(); }
