@@ -140,6 +140,11 @@ GlslLibrary::GlslLibrary(const std::vector<GlslSourceFile>& files) {
     for (const auto& id : libraryIdentifiers(withoutLineComments(it.text)))
       if (id != it.name && names.count(id)) it.uses.push_back(id);
   }
+  // Indexed once: itemsFor runs for every stage of every compile.
+  for (size_t i = 0; i < items_.size(); ++i) index_.emplace(items_[i].name, i);
+  useIndex_.resize(items_.size());
+  for (size_t i = 0; i < items_.size(); ++i)
+    for (const auto& u : items_[i].uses) useIndex_[i].push_back(index_.at(u));
 }
 
 const GlslLibrary& GlslLibrary::builtin() {
@@ -152,40 +157,38 @@ bool GlslLibrary::has(std::string_view name) const {
 }
 
 std::vector<const GlslItem*> GlslLibrary::itemsFor(std::string_view code) const {
-  std::multimap<std::string, size_t, std::less<>> byName;
-  for (size_t i = 0; i < items_.size(); ++i) byName.emplace(items_[i].name, i);
   // Reachable set, then emit in library order whenever all uses are already emitted
-  // (the library has no recursion: GLSL forbids it).
-  std::vector<bool> wanted(items_.size(), false);
-  std::vector<std::string> work = libraryIdentifiers(code);
-  std::set<std::string> seen(work.begin(), work.end());
-  while (!work.empty()) {
-    std::string name = work.back();
-    work.pop_back();
-    auto [lo, hi] = byName.equal_range(name);
-    for (auto it = lo; it != hi; ++it) {
-      wanted[it->second] = true;
-      for (const auto& u : items_[it->second].uses)
-        if (seen.insert(u).second) work.push_back(u);
+  // (the library has no recursion: GLSL forbids it). Names are unique (the constructor
+  // refuses a second definition), so an item is emitted once it is done.
+  std::vector<char> wanted(items_.size(), 0);
+  std::vector<size_t> work;
+  for (const auto& name : libraryIdentifiers(code)) {
+    auto it = index_.find(name);
+    if (it != index_.end() && !wanted[it->second]) {
+      wanted[it->second] = 1;
+      work.push_back(it->second);
     }
   }
+  while (!work.empty()) {
+    size_t i = work.back();
+    work.pop_back();
+    for (size_t u : useIndex_[i])
+      if (!wanted[u]) {
+        wanted[u] = 1;
+        work.push_back(u);
+      }
+  }
   std::vector<const GlslItem*> out;
-  std::set<std::string> emitted;
-  std::vector<bool> done(items_.size(), false);
+  std::vector<char> done(items_.size(), 0);
   bool progress = true;
   while (progress) {
     progress = false;
     for (size_t i = 0; i < items_.size(); ++i) {
       if (!wanted[i] || done[i]) continue;
-      bool ready = std::all_of(items_[i].uses.begin(), items_[i].uses.end(),
-                               [&](const std::string& u) { return emitted.count(u) > 0; });
+      bool ready = std::all_of(useIndex_[i].begin(), useIndex_[i].end(), [&](size_t u) { return done[u] != 0; });
       if (!ready) continue;
       out.push_back(&items_[i]);
-      done[i] = true;
-      // A name counts as emitted once all of its overloads are.
-      auto [lo, hi] = byName.equal_range(items_[i].name);
-      if (std::all_of(lo, hi, [&](const auto& kv) { return done[kv.second] || !wanted[kv.second]; }))
-        emitted.insert(items_[i].name);
+      done[i] = 1;
       progress = true;
       break;  // restart so the earliest ready item always goes next
     }

@@ -5,6 +5,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 namespace wg {
@@ -36,6 +37,8 @@ class GlslLibrary {
 
  private:
   std::vector<GlslItem> items_;  // library order
+  std::unordered_map<std::string, size_t> index_;  // name -> its item (names are unique)
+  std::vector<std::vector<size_t>> useIndex_;      // per item: the items it uses
 };
 
 // Every wg_* / WG_* identifier in `code`, in order of first appearance.
