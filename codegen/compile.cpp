@@ -1,6 +1,8 @@
 #include "codegen/compile.h"
 
 #include <filesystem>
+#include <iterator>
+#include <string_view>
 
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest_build.h"
@@ -27,13 +29,23 @@ bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks) {
   run("bypass", bypassPass);
   run("specialise", specialisePass);
   run("prune", prunePass);
-  // fold, simplify and cse expose more of each other's work, so they repeat until none
-  // changes anything (bounded: each change removes at least one op).
-  for (int round = 0; round < 8; ++round) {
-    bool changed = run("fold", foldPass) == PassResult::Changed;
-    changed |= run("simplify", simplifyPass) == PassResult::Changed;
-    changed |= run("cse", csePass) == PassResult::Changed;
-    if (!changed) break;
+  // fold, simplify and cse expose more of each other's work, so they take turns until none
+  // changes anything (bounded: each change removes at least one op; at most 8 rounds). Each
+  // is one forward sweep over inputs already rewritten, so running it twice on the same
+  // program changes nothing: a pass whose turn comes when nothing changed since its own
+  // last run is not run again, and the turns end there.
+  struct Turn {
+    std::string_view name;
+    PassResult (*pass)(Program&, PassContext&);
+  };
+  const Turn turns[] = {{"fold", foldPass}, {"simplify", simplifyPass}, {"cse", csePass}};
+  constexpr int kTurns = static_cast<int>(std::size(turns));
+  int lastChanged = -1;  // the turn that last changed the program
+  for (int step = 0; step < 8 * kTurns; ++step) {
+    int k = step % kTurns;
+    if (k == lastChanged) break;
+    if (run(turns[k].name, turns[k].pass) == PassResult::Changed) lastChanged = k;
+    else if (lastChanged < 0 && k == kTurns - 1) break;  // a first round that changed nothing
   }
   run("prune_final", prunePass);
   return run("stages", stagePass) != PassResult::Failed;
