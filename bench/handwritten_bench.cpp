@@ -1,5 +1,5 @@
-// Generated against hand-written (issue 10): the water of seed 000 (graphs/classic_webgl)
-// and seed 003 (graphs/stylized) as watergraph generates it and as written by hand in
+// Generated against hand-written (issue 10): the water of the classic WebGL water renderer (graphs/classic_webgl)
+// and the stylized water shader (graphs/stylized) as watergraph generates it and as written by hand in
 // bench/handwritten/, run side by side in one process on one EGL context, with the same
 // manifest (uniforms, textures, passes, tessellation stages) and scene.
 //

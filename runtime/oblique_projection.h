@@ -1,7 +1,7 @@
 #pragma once
 // Oblique near-plane clipping (E. Lengyel, "Oblique View Frustum Depth Projection and
 // Clipping", Journal of Game Development 1(2), 2005), the alternative to a user clip plane
-// that seed 003 uses for planar reflection: the projection's near plane is replaced by the
+// that the stylized water shader uses for planar reflection: the projection's near plane is replaced by the
 // water plane, so geometry on the far side of the water is clipped by the rasteriser
 // itself, with no gl_ClipDistance and no discard.
 #include <glm/glm.hpp>

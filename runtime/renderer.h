@@ -31,8 +31,8 @@ struct RenderSettings {
   // wavelength for waves of 2 m and longer). On llvmpipe triangle setup runs on one
   // thread: at 1280x720 the 128 grid costs ~15 CPU-ms a frame, 256 ~52.
   int waterGridQuads = 128;
-  // Planar reflection clipped by an oblique near plane on the water (seed 003) instead of
-  // a user clip plane (seed 000's gl_ClipDistance; discard on ES).
+  // Planar reflection clipped by an oblique near plane on the water (the stylized water shader) instead of
+  // a user clip plane (the classic WebGL water renderer's gl_ClipDistance; discard on ES).
   bool obliqueReflection = false;
 };
 

@@ -18,7 +18,8 @@
 
 namespace wg::handwritten {
 
-// The example graphs that have a hand-written counterpart: seed 000 and seed 003.
+// The example graphs that have a hand-written counterpart: the classic WebGL water renderer
+// and the stylized water shader.
 inline const std::vector<std::string>& graphs() {
   static const std::vector<std::string> names = {"classic_webgl", "stylized"};
   return names;

@@ -1,5 +1,5 @@
-// The caustics nodes: voronoi_caustics (seed 003: (1 - clamp(F1, 0, 1))^3 per layer, the
-// F1 > 1 case, layer combinations, huge time) and texture_caustics (seed 001: the ninth
+// The caustics nodes: voronoi_caustics (the stylized water shader: (1 - clamp(F1, 0, 1))^3 per layer, the
+// F1 > 1 case, layer combinations, huge time) and texture_caustics (the deferred water article: the ninth
 // power of 1 - |a + b - 1| from two scrolling texture samples, always in [0, 1]).
 #include <cmath>
 #include <random>
@@ -46,7 +46,7 @@ TEST(VoronoiCaustics, FirstDistanceAboveOneStaysFiniteAndInRange) {
 }
 
 TEST(VoronoiCaustics, SeedLayersAndCombinations) {
-  // Seed 003: c1 from q, c2 from 1.3 q + 5 at 1.2 times the speed; averaged.
+  // The stylized water shader: c1 from q, c2 from 1.3 q + 5 at 1.2 times the speed; averaged.
   Value p = Value::vector({0.37, 0.81});
   double scale = 4, t = 2.5, speed = 0.8;
   double qx = 0.37 * scale, qy = 0.81 * scale;

@@ -15,7 +15,7 @@ namespace {
 
 using test::runNode;
 
-// Seed 002's linearizeDepth, verbatim.
+// The advanced shaders tutorial's linearizeDepth, verbatim.
 double seedLinearize(double depth, double n, double f) {
   double z = depth * 2.0 - 1.0;
   return (2.0 * n * f) / (f + n - z * (f - n));
@@ -136,7 +136,7 @@ TEST(Absorption, PopeAndFryAfterTenMetres) {
 
 TEST(Absorption, SeedOneRelativeModel) {
   nlohmann::json rel{{"model", "relative"}};
-  // Seed 001's listing 12, written out: blue linear over the max distance, red and green
+  // The deferred water article's listing 12, written out: blue linear over the max distance, red and green
   // scaled further, each clamped, all squared.
   auto seed = [](double d, double m, double kr, double kg) {
     double b = std::min(1.0, std::max(0.0, (m - d) * (1.0 / m)));
@@ -246,7 +246,7 @@ TEST(ColorVariation, DriftIsWrappedExactly) {
     return runNode("color_variation", {{"color", Value::vector({0, 0, 0})}, {"position", pos}}, nlohmann::json::object(), env)
         .scalar("noise");
   };
-  // The seed's noise(worldPos * 0.02 + time * 0.05), unwrapped, in double.
+  // The source's noise(worldPos * 0.02 + time * 0.05), unwrapped, in double.
   for (double t : {0.0, 3.5, 1000.0, 13107.0, 524288.0, 1e6}) {
     SCOPED_TRACE(t);
     EXPECT_NEAR(at(t), nodes::colorVariationNoise(0.2 + 0.05 * t, 0.4 + 0.05 * t), 1e-6);

@@ -1,7 +1,7 @@
 // The foam nodes: edge_foam (depth masks of seeds 002/003, the cut-off with equal edges,
-// range, monotone in depth, periodic at t = 1e6 s), crest_foam (seed 004's values written out
-// by hand, range, seamless drift), coastal_foam (seed 001's amount and specular dimming) and
-// shore_waves (seed 003's formula by hand, huge time).
+// range, monotone in depth, periodic at t = 1e6 s), crest_foam (the top-down water plan's values written out
+// by hand, range, seamless drift), coastal_foam (the deferred water article's amount and specular dimming) and
+// shore_waves (the stylized water shader's formula by hand, huge time).
 #include <cmath>
 #include <random>
 
@@ -20,12 +20,12 @@ using test::runNode;
 Value pos(double x, double z) { return Value::vector({x, 0.0, z}); }
 
 TEST(EdgeFoam, MasksByHand) {
-  // Seed 002: 1 - smoothstep(0, 0.5, depth): 0.5 at 0.25, 1 at 0, 0 from 0.5 on.
+  // The advanced shaders tutorial: 1 - smoothstep(0, 0.5, depth): 0.5 at 0.25, 1 at 0, 0 from 0.5 on.
   EXPECT_NEAR(nodes::edgeFoamMask(true, 0.25, 0.5), 0.5, 1e-15);
   EXPECT_NEAR(nodes::edgeFoamMask(true, 0.125, 0.5), 1 - (0.0625 * (3 - 0.5)), 1e-15);
   EXPECT_EQ(nodes::edgeFoamMask(true, 0.0, 0.5), 1.0);
   EXPECT_EQ(nodes::edgeFoamMask(true, 0.7, 0.5), 0.0);
-  // Seed 003: 1 - saturate(depth / distance).
+  // The stylized water shader: 1 - saturate(depth / distance).
   EXPECT_NEAR(nodes::edgeFoamMask(false, 0.25, 0.5), 0.5, 1e-15);
   EXPECT_EQ(nodes::edgeFoamMask(false, -1.0, 0.5), 1.0);
   EXPECT_EQ(nodes::edgeFoamMask(false, 0.2, 0.0), 0.0);  // width floored, no division by zero
@@ -35,7 +35,7 @@ TEST(EdgeFoam, MasksByHand) {
 }
 
 TEST(EdgeFoam, EqualCutoffEdgesGiveTheSeedStep) {
-  // softness 0: smoothstep(c, c, x) is seed 003's step(c, x): 0 below, 1 at and above.
+  // softness 0: smoothstep(c, c, x) is the stylized water shader's step(c, x): 0 below, 1 at and above.
   EXPECT_EQ(nodes::edgeFoamCut(0.5, 0.49, 0.25, 0.0, 1.0), 0.0);
   EXPECT_EQ(nodes::edgeFoamCut(0.5, 0.5, 0.25, 0.0, 1.0), 1.0);
   EXPECT_EQ(nodes::edgeFoamCut(0.5, 1.0, 0.25, 0.0, 0.6), 0.6);
@@ -139,7 +139,7 @@ TEST(CrestFoam, InRangeAndSeamlessAtHugeTime) {
 TEST(CoastalFoam, AmountAndSpecularDimmingByHand) {
   EXPECT_NEAR(nodes::coastalFoamAmount(0.25, 1.0, 1.0, 0.0), 0.75, 1e-15);
   EXPECT_EQ(nodes::coastalFoamAmount(2.0, 1.0, 1.0, 0.0), 0.0);
-  EXPECT_EQ(nodes::coastalFoamAmount(2.0, 1.0, 1.0, 0.4), 0.4);  // the crest term (seed 001's max)
+  EXPECT_EQ(nodes::coastalFoamAmount(2.0, 1.0, 1.0, 0.4), 0.4);  // the crest term (the deferred water article's max)
   EXPECT_EQ(nodes::coastalFoamAmount(-1.0, 1.0, 0.8, 0.0), 0.8);
   EXPECT_EQ(nodes::coastalFoamAmount(3e38, 0.0, 0.0, 0.0), 0.0);
   EXPECT_NEAR(nodes::coastalFoamSpecular(0.5, 1.0, true), 0.125, 1e-15);  // (1 - 0.5)^3

@@ -1,6 +1,6 @@
 // The optics nodes of the shading set: reflect_dir, refract_dir, lambert, blinn_phong,
 // phong_specular, ggx_specular. Known values are computed here independently (Snell's law,
-// the seed formulas written out), plus the total-internal-reflection boundary and the GGX
+// the source formulas written out), plus the total-internal-reflection boundary and the GGX
 // energy checks.
 #include <cmath>
 #include <numbers>
@@ -116,7 +116,7 @@ TEST(BlinnPhong, HalfVector) {
 }
 
 TEST(PhongSpecular, SeedOneSunAndEnvironment) {
-  // Seed 001: max(-dot(2 (N.L) N - L, camera-to-surface), 0)^shine, camera-to-surface = -V.
+  // The deferred water article: max(-dot(2 (N.L) N - L, camera-to-surface), 0)^shine, camera-to-surface = -V.
   auto seed = [](const Value& n, const Value& v, const Value& l, double shine) {
     double nl = glsl::dot(n, l);
     double s = 0;
@@ -132,7 +132,7 @@ TEST(PhongSpecular, SeedOneSunAndEnvironment) {
   EXPECT_NEAR(r.scalar("sun_specular"), seed(up(), up(), at(30), 20), 1e-12);
   // Environment from the zenith, no exponent: R = N, R.V = 1.
   EXPECT_NEAR(r.scalar("environment_specular"), 1.0, 1e-12);
-  // A general configuration against the seed's expression.
+  // A general configuration against the source's expression.
   Value n = glsl::safeNormalize(Value::vector({0.1, 1, 0.2})), v = glsl::safeNormalize(Value::vector({-0.3, 0.6, 0.4}));
   Value l = glsl::safeNormalize(Value::vector({0.5, 0.7, -0.6}));
   auto g = runNode("phong_specular", {{"normal", n}, {"view", v}, {"sun", l}, {"shine", Value::scalar(7)},
@@ -142,7 +142,7 @@ TEST(PhongSpecular, SeedOneSunAndEnvironment) {
   EXPECT_NEAR(g["color"][0], g.scalar("sun_specular") + g.scalar("environment_specular"), 1e-12);
 }
 
-// The textbook Cook-Torrance of seed 002, written out.
+// The textbook Cook-Torrance of the advanced shaders tutorial, written out.
 double textbookGgx(const Value& n, const Value& v, const Value& l, double roughness, double f0) {
   Value h = glsl::safeNormalize(Value::vector({v[0] + l[0], v[1] + l[1], v[2] + l[2]}));
   double a = roughness * roughness, a2 = a * a;

@@ -1,4 +1,4 @@
-// subsurface (seed 003, section 8): the seed's HLSL written out in double, the height
+// subsurface (the stylized water shader, section 8): the source's HLSL written out in double, the height
 // factor, and a graph that feeds it the Gerstner-free inputs compiles for every target.
 #include <cmath>
 
@@ -14,7 +14,7 @@ using test::runNode;
 
 Value unit(double x, double y, double z) { return glsl::safeNormalize(Value::vector({x, y, z})); }
 
-// Seed 003: H = normalize(lightDir + worldNormal * _SSSDistortion);
+// The stylized water shader: H = normalize(lightDir + worldNormal * _SSSDistortion);
 // VdotH = pow(saturate(dot(viewDir, -H)), _SSSPower); waveHeightFactor = saturate(h * 2 + 0.5);
 // sss = _SSSColor * VdotH * _SSSStrength * waveHeightFactor.
 double seedIntensity(const Value& n, const Value& v, const Value& l, double distortion, double power, double strength,

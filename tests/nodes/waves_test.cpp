@@ -70,7 +70,7 @@ const char* kThreeWaves = R"([
   {"direction": [-0.4, 1], "steepness": 0.4, "wavelength": 5.5},
   {"direction": [0.7, -0.7], "steepness": 0.3, "wavelength": 7, "amplitude": 0.2, "phase": 1.3}])";
 
-// An independent double formula of the displacement (seed 003's formula section, GPU
+// An independent double formula of the displacement (the stylized water shader's formula section, GPU
 // Gems form), with the time taken straight, not wrapped.
 V3 displaced(const nlohmann::json& waves, double x, double z, double t) {
   V3 p{x, 0, z};
@@ -348,7 +348,7 @@ TEST(TrochoidWave, CameraBelowAndHardRaysStayFinite) {
 TEST(SineNormals, MatchSeed002) {
   for (double t : {0.0, 1.7, 1e6})
     for (V3 p : {V3{0, 0, 0}, V3{2.5, 1, -3.75}, V3{-40, 0, 17}}) {
-      // Seed 002's computeWaveNormal(pos, time) with pos = world xz, straight from the text.
+      // The advanced shaders tutorial's computeWaveNormal(pos, time) with pos = world xz, straight from the text.
       double x = p.x, y = p.z;
       V3 n{0, 1, 0};
       double wave1 = std::sin(x * 0.5 + t * 0.8) * std::cos(y * 0.3 + t * 0.6);

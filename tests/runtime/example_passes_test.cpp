@@ -17,15 +17,15 @@ namespace {
 // The passes beyond opaque_scene and water_surface, which every graph runs.
 const std::map<std::string, std::set<std::string>>& expectedPasses() {
   static const std::map<std::string, std::set<std::string>> m = {
-      // seed 000: reflection and refraction passes; water depth from the depth buffer
+      // the classic WebGL water renderer: reflection and refraction passes; water depth from the depth buffer
       {"classic_webgl", {"depth_prepass", "planar_reflection", "refraction"}},
-      // seed 001: the deferred pass with depth, colour and the sky for SSR's fallback
+      // the deferred water article: the deferred pass with depth, colour and the sky for SSR's fallback
       {"deferred_underwater", {"depth_prepass", "scene_color_copy", "deferred_water", "environment_cubemap"}},
-      // seed 002: cube map and planar reflection, grabbed refraction, depth tint and foam
+      // the advanced shaders tutorial: cube map and planar reflection, grabbed refraction, depth tint and foam
       {"tutorial_pbr", {"environment_cubemap", "depth_prepass", "planar_reflection", "scene_color_copy"}},
-      // seed 003: grabbed refraction, depth colouring and caustics, planar reflection
+      // the stylized water shader: grabbed refraction, depth colouring and caustics, planar reflection
       {"stylized", {"depth_prepass", "planar_reflection", "scene_color_copy"}},
-      // seed 004: top-down water shades from its own waves: no scene pass at all
+      // the top-down water plan: top-down water shades from its own waves: no scene pass at all
       {"topdown", {}},
       // open sea: only the sky is reflected
       {"ocean", {"environment_cubemap"}},

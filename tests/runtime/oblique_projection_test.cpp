@@ -1,5 +1,5 @@
-// Oblique near-plane clipping for the planar reflection (seed 003): the maths, and the
-// reflection it renders against the clip-plane reflection (seed 000).
+// Oblique near-plane clipping for the planar reflection (the stylized water shader): the maths, and the
+// reflection it renders against the clip-plane reflection (the classic WebGL water renderer).
 #include <gtest/gtest.h>
 
 #include <glm/gtc/matrix_transform.hpp>

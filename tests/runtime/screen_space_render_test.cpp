@@ -2,7 +2,7 @@
 // graph per node runs exactly the passes its resources need and creates exactly their
 // targets; the planar reflection needs no y-flip with the runtime's reflection pass; the
 // deferred underwater graph renders from above and below the water without NaN, and each
-// camera reaches the cases seed 001 assigns it.
+// camera reaches the cases the deferred water article assigns it.
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -126,7 +126,7 @@ TEST_P(SceneNodes, PlanarReflectionNeedsNoFlipWithTheRuntimesPass) {
   EXPECT_LT(flipped[2] - flipped[0], 0.5 * (plain[2] - plain[0])) << "flipped: the pale horizon band instead";
 }
 
-// Which of seed 001's cases the underwater node took per pixel, from a float render of
+// Which of the deferred water article's cases the underwater node took per pixel, from a float render of
 // case / 5.
 std::set<int> casesSeen(Target target, const std::string& camera) {
   std::string g = test::readFile(test::sourcePath("graphs/deferred_underwater.json"));

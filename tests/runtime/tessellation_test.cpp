@@ -1,4 +1,4 @@
-// Distance-based tessellation (vertex_output, seed 003): glsl330 and vk450 get control and
+// Distance-based tessellation (vertex_output, the stylized water shader): glsl330 and vk450 get control and
 // evaluation stages, es300 (no tessellation in GLSL ES 3.00) draws the mesh as it is, and
 // the runtime draws patches: more triangles near the camera, the same picture otherwise.
 #include <gtest/gtest.h>
