@@ -37,15 +37,17 @@ void rewriteProgram(Program& program, const std::vector<std::vector<ValueRef>>& 
     }
     if (ref.kind == ValueRef::Kind::Op) ref.index = newIndex[static_cast<size_t>(ref.index)];
   };
-  std::vector<Op> ops;
-  ops.reserve(static_cast<size_t>(next));
+  // Compacted in place: kept ops move down over the removed ones (a kept op's new index is
+  // never above its old one). A new array per rewrite was a fresh allocation of the whole op
+  // list, megabytes at 10,000 ops, for each pass that changed anything.
+  size_t w = 0;
   for (size_t i = 0; i < program.ops.size(); ++i) {
     if (!keep[i]) continue;
-    Op op = std::move(program.ops[i]);
-    for (auto& in : op.inputs) map(in);
-    ops.push_back(std::move(op));
+    if (w != i) program.ops[w] = std::move(program.ops[i]);
+    for (auto& in : program.ops[w].inputs) map(in);
+    ++w;
   }
-  program.ops = std::move(ops);
+  program.ops.erase(program.ops.begin() + static_cast<std::ptrdiff_t>(w), program.ops.end());
   for (auto& out : program.outputs) map(out.value);
 }
 
