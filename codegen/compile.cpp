@@ -48,6 +48,9 @@ bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks) {
     else if (lastChanged < 0 && k == kTurns - 1) break;  // a first round that changed nothing
   }
   run("prune_final", prunePass);
+  // The rewrites compact the op list in place; what the passes removed is given back once,
+  // here, rather than by a new array per pass.
+  program.ops.shrink_to_fit();
   return run("stages", stagePass) != PassResult::Failed;
 }
 
