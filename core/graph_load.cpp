@@ -197,19 +197,19 @@ class Loader : public GraphDraftReader {
 
   // The member `key` of `obj` if present and of JSON type `type` (any number type for
   // number_float); WG004 if present with another type.
-  template <typename Draft>  // DraftValue or const DraftValue
   // `label` is a view: callers pass literals, and a std::string of one was a heap block
   // per node and field.
-  Draft* field(Draft& obj, std::string_view key, json::value_t type, std::string_view label, const std::string& node = {},
-               Diagnostics* to = nullptr) {
+  template <typename Draft>  // DraftValue or const DraftValue
+  Draft* field(Draft& obj, std::string_view key, json::value_t type, std::string_view label,
+               const std::string& node = {}, Diagnostics* to = nullptr) {
     Draft* v = obj.member(key);
     if (!v) return nullptr;
     bool ok = type == json::value_t::number_float ? isNumber(v->type) : v->type == type;
     if (!ok) {
       std::string want = type == json::value_t::number_float ? "number" : jsonTypeName(type);
       (to ? *to : diags_)
-          .error(DiagCode::WrongJsonType, ref(v->at), std::string(label) + " must be " + article(want) + ", found " + jsonTypeName(v->type),
-                 node);
+          .error(DiagCode::WrongJsonType, ref(v->at),
+                 std::string(label) + " must be " + article(want) + ", found " + jsonTypeName(v->type), node);
       return nullptr;
     }
     return v;
@@ -704,13 +704,21 @@ class Loader : public GraphDraftReader {
 
 }  // namespace
 
+namespace {
+
+// WG035 for a text over the file limit, before anything is copied or parsed.
+bool withinFileLimit(std::string_view text, const std::string& file, Diagnostics& diags) {
+  if (text.size() <= kMaxFileBytes) return true;
+  diags.error(DiagCode::LimitExceeded, SourceRef{file, 0, 0},
+              "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
+  return false;
+}
+
+}  // namespace
+
 std::optional<Graph> parseGraph(std::shared_ptr<const std::string> shared, const std::string& file, Diagnostics& diags) {
   std::string_view text = *shared;
-  if (text.size() > kMaxFileBytes) {
-    diags.error(DiagCode::LimitExceeded, SourceRef{file, 0, 0},
-                "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
-    return std::nullopt;
-  }
+  if (!withinFileLimit(text, file, diags)) return std::nullopt;
   // Positions after parsing need the lines (an expression's formula error is placed by the
   // escapes before it; SARIF counts UTF-16 columns): the text parsed is kept, never read twice.
   diags.keepSource(file, std::move(shared));
@@ -720,11 +728,7 @@ std::optional<Graph> parseGraph(std::shared_ptr<const std::string> shared, const
 }
 
 std::optional<Graph> parseGraph(std::string_view text, const std::string& file, Diagnostics& diags) {
-  if (text.size() > kMaxFileBytes) {  // refused before it is copied
-    diags.error(DiagCode::LimitExceeded, SourceRef{file, 0, 0},
-                "the file is " + std::to_string(text.size()) + " bytes; the limit is 16 MiB");
-    return std::nullopt;
-  }
+  if (!withinFileLimit(text, file, diags)) return std::nullopt;
   return parseGraph(std::make_shared<const std::string>(text), file, diags);
 }
 

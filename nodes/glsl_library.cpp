@@ -1,7 +1,6 @@
 #include "nodes/glsl_library.h"
 
 #include <algorithm>
-#include <map>
 #include <stdexcept>
 
 namespace wg {
@@ -152,9 +151,7 @@ const GlslLibrary& GlslLibrary::builtin() {
   return library;
 }
 
-bool GlslLibrary::has(std::string_view name) const {
-  return std::any_of(items_.begin(), items_.end(), [&](const GlslItem& i) { return i.name == name; });
-}
+bool GlslLibrary::has(std::string_view name) const { return index_.count(std::string(name)) > 0; }
 
 std::vector<const GlslItem*> GlslLibrary::itemsFor(std::string_view code) const {
   // Reachable set, then emit in library order whenever all uses are already emitted

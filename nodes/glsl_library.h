@@ -17,7 +17,7 @@ struct GlslSourceFile {
 const std::vector<GlslSourceFile>& embeddedGlslFiles();  // generated
 
 struct GlslItem {
-  std::string name;   // wg_fresnel_schlick (overloads are separate items of one name)
+  std::string name;   // wg_fresnel_schlick (unique: variants per type are named wg_x_vec3, not overloaded)
   std::string file;   // "fresnel"
   std::string text;   // the definition, with the comment lines right above it
   std::vector<std::string> uses;  // other library names it refers to

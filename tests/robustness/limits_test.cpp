@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "codegen/compile.h"
@@ -50,6 +51,11 @@ TEST(Limits, FileSize) {
   Diagnostics diags;
   EXPECT_FALSE(parseGraph(big, "big.json", diags));
   EXPECT_EQ(firstCode(diags), "WG035");
+  // A text the caller holds shared is refused the same way, and not kept.
+  Diagnostics sharedDiags;
+  EXPECT_FALSE(parseGraph(std::make_shared<const std::string>(big), "big.json", sharedDiags));
+  EXPECT_EQ(firstCode(sharedDiags), "WG035");
+  EXPECT_EQ(sharedDiags.source("big.json"), nullptr);
   // Through the file reader too: it stops reading past the limit.
   std::string dir = test::makeTempDir("wg_limits_");
   test::writeFile(dir + "/big.json", big);
