@@ -196,7 +196,11 @@ std::vector<TuneCost> GlTuneMeasurements::costOf(const std::vector<std::optional
     }
   double megapixels = sweep_.width * static_cast<double>(sweep_.height) * static_cast<double>(sweep_.cameras.size()) / 1e6;
   std::vector<TuneCost> costs;
-  for (size_t i = 0; i < entries.size(); ++i) costs.push_back({median(ms[i]) / megapixels, entries[i]->spirv});
+  for (size_t i = 0; i < entries.size(); ++i) {
+    std::vector<double> repeats;
+    for (double m : ms[i]) repeats.push_back(m / megapixels);
+    costs.push_back({median(ms[i]) / megapixels, entries[i]->spirv, std::move(repeats)});
+  }
   // Keep only what this round timed: the next round's candidates are new configurations.
   std::vector<std::string> keep;
   for (const auto& c : configs) keep.push_back(key(c));

@@ -57,7 +57,9 @@ std::string tuneStopText(const TuneResult& result) {
       std::snprintf(buf, sizeof buf, "fails the budget: worst PSNR %s dB (%s), max abs error %.3g", psnrText(t.error.worstPsnr).c_str(),
                     t.error.worstFrame.c_str(), t.error.maxAbsError);
     else
-      std::snprintf(buf, sizeof buf, "saves nothing: %.1f ms/MP, %d SPIR-V instr. (the configuration it was tried from: %.1f, %d)",
+      std::snprintf(buf, sizeof buf, "%s: %.1f ms/MP, %d SPIR-V instr. (the configuration it was tried from: %.1f, %d)",
+                    timeSaved(result.lastRoundCurrent, t.cost) > 0 ? "slower in the repeats"
+                                                                    : "saves nothing the repeats show",
                     t.cost.msPerMegapixel, t.cost.spirvInstructions, result.lastRoundCurrent.msPerMegapixel,
                     result.lastRoundCurrent.spirvInstructions);
     o += "  " + t.label + ": " + buf + "\n";

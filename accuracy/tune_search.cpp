@@ -31,6 +31,18 @@ std::string TuneBudget::text() const {
   return s + " on every frame";
 }
 
+double timeSaved(const TuneCost& candidate, const TuneCost& current) {
+  double saved = current.msPerMegapixel - candidate.msPerMegapixel;
+  if (!(saved > 0)) return 0;
+  const size_t n = candidate.repeats.size();
+  if (n == 0 || current.repeats.size() != n) return saved;
+  // Under 5 repeats no outcome is rarer than 1 in 20 by chance: they show nothing.
+  if (n < kRepeatsForEvidence) return 0;
+  size_t faster = 0;
+  for (size_t i = 0; i < n; ++i) faster += candidate.repeats[i] < current.repeats[i];
+  return faster >= n - n / 10 ? saved : 0;
+}
+
 std::string levelText(const nlohmann::json& level) { return level.is_string() ? level.get<std::string>() : level.dump(); }
 
 std::string configText(const std::vector<TuneKnob>& knobs, const TuneConfig& config) {
@@ -140,13 +152,15 @@ TuneResult tuneSearch(const std::vector<TuneKnob>& knobs, const TuneBudget& budg
     for (size_t i = 0; i < candidates.size(); ++i) {
       Candidate& c = candidates[i];
       c.cost = costs[i + 1];
-      c.savedMs = currentCost.msPerMegapixel - c.cost.msPerMegapixel;
+      c.savedMs = timeSaved(c.cost, currentCost);
       c.savedSpirv = currentCost.spirvInstructions - c.cost.spirvInstructions;
       c.errorIncrease = budget.usage(c.error) - budget.usage(currentError);
       bool meets = budget.met(c.error);
       result.tried.push_back({c.config, knobs[c.knob].name() + "=" + levelText(knobs[c.knob].levels[static_cast<size_t>(c.config[c.knob])]),
                               c.error, c.cost, meets, false});
-      if (!meets || (c.savedMs <= 0 && c.savedSpirv <= 0)) continue;
+      // Fewer instructions do not make up for a slowdown every repeat shows.
+      const bool slower = timeSaved(currentCost, c.cost) > 0;
+      if (!meets || slower || (c.savedMs <= 0 && c.savedSpirv <= 0)) continue;
       if (!best || better(c, *best, knobs)) best = &c;
     }
     if (!best) break;

@@ -3,7 +3,9 @@
 // quality knobs. It starts at the reference (every knob at its most exact level) and, in
 // rounds, tries lowering each knob one level from the current configuration; a candidate
 // qualifies when every frame of the sweep meets the budget, nothing in it is NaN or Inf,
-// and it saves cost (time, or SPIR-V instructions when the time saved is not positive).
+// and it saves cost (time, or SPIR-V instructions when no time saving is measured: the
+// candidate must be faster than the configuration it was tried from in the interleaved
+// repeats, see timeSaved, so a median that is lower by chance does not count).
 // The qualifying candidate with the least error increase per unit of saved time is taken
 // (ties: fewer SPIR-V instructions, then the knob's name); the descent stops when none
 // qualifies. The chosen configuration is then rendered again and checked once more
@@ -41,7 +43,19 @@ struct TuneError {
 struct TuneCost {
   double msPerMegapixel = 0;  // median over interleaved repeats
   int spirvInstructions = 0;  // the fragment shader after spirv-opt -O
+  // ms/MP of each repeat, in order; the configurations of one cost() call share them
+  // repeat by repeat (paired). Empty: the median is exact (made-up measurements).
+  std::vector<double> repeats;
 };
+
+// The time `candidate` saves against `current`, both from one cost() call: the difference
+// of the medians when the candidate was faster in every paired repeat but one in ten (5
+// repeats: all five; with no difference between them that happens by chance once in 32),
+// otherwise 0: a saving the repeats do not show is the machine's noise, not the knob's.
+// Fewer than kRepeatsForEvidence repeats show no saving (nor a slowdown): the search then
+// goes by SPIR-V instructions alone.
+inline constexpr size_t kRepeatsForEvidence = 5;
+double timeSaved(const TuneCost& candidate, const TuneCost& current);
 
 struct TuneBudget {
   std::optional<double> minPsnr, maxAbsError;

@@ -12,7 +12,7 @@
 // spirv-opt -O (per program: all stages; and the fragment stage alone) of both, compiled
 // the same way (glsl330 under glslang's relaxed Vulkan rules; see relaxedSpirv).
 //
-//   build/bin/wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--derived-uniforms] [graph ...]
+//   build/bin/wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--derived-uniforms] [--dump-spirv DIR] [graph ...]
 //
 // Defaults: 15 rounds of 2 frames, sizes 640x360 and 1280x720, both graphs. --water-only
 // draws none of the built-in scene (SceneOptions::drawScene = false): the frame is then
@@ -24,6 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <fstream>
 #include <memory>
 #include <string>
 #include <vector>
@@ -52,7 +53,9 @@ double median(std::vector<double> v) {
 }
 
 // Instructions after spirv-opt -O: {all stages, fragment stage}; {-1, -1} on failure.
-std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders) {
+// With dumpPrefix set, each stage's module (before -O) is written to PREFIX.STAGE.spv, to
+// read with spirv-opt -O and spirv-dis where the two sides differ.
+std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders, const std::string& dumpPrefix = {}) {
   std::vector<wg::ShaderMessage> errors;
   auto modules = wg::relaxedSpirv(shaders, &errors);
   if (!modules) {
@@ -63,6 +66,10 @@ std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders) {
   for (size_t i = 0; i < shaders.size(); ++i) {
     int n = wg::accuracy::optimisedInstructionCount((*modules)[i]);
     if (n < 0) return {-1, -1};
+    if (!dumpPrefix.empty()) {
+      std::ofstream out(dumpPrefix + "." + std::string(wg::stageExtension(shaders[i].stage)) + ".spv", std::ios::binary);
+      out.write(reinterpret_cast<const char*>((*modules)[i].data()), static_cast<std::streamsize>((*modules)[i].size() * 4));
+    }
     total += n;
     if (shaders[i].stage == wg::ShaderStage::Fragment) fragment = n;
   }
@@ -70,7 +77,7 @@ std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders) {
 }
 
 [[noreturn]] void usage(const char* why) {
-  std::fprintf(stderr, "wg_bench_handwritten: %s\nusage: wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--derived-uniforms] [graph ...]\n", why);
+  std::fprintf(stderr, "wg_bench_handwritten: %s\nusage: wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--derived-uniforms] [--dump-spirv DIR] [graph ...]\n", why);
   std::exit(1);
 }
 
@@ -79,6 +86,7 @@ std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders) {
 int main(int argc, char** argv) {
   int rounds = 15, frames = 2;
   bool waterOnly = false, derived = false;
+  std::string dumpDir;
   std::vector<Size> sizes;
   std::vector<std::string> graphs;
   for (int i = 1; i < argc; ++i) {
@@ -91,6 +99,7 @@ int main(int argc, char** argv) {
     else if (a == "--frames") frames = std::atoi(next().c_str());
     else if (a == "--water-only") waterOnly = true;
     else if (a == "--derived-uniforms") derived = true;
+    else if (a == "--dump-spirv") dumpDir = next();
     else if (a == "--size") {
       Size s{};
       if (std::sscanf(next().c_str(), "%dx%d", &s.width, &s.height) != 2 || s.width <= 0 || s.height <= 0) usage("bad --size");
@@ -141,8 +150,8 @@ int main(int argc, char** argv) {
       const wg::CompileResult& handSide = plain ? *plain : *result;
       auto generated = wg::handwritten::generatedShaders(*result);
       auto hand = wg::handwritten::handwrittenShaders(WG_SOURCE_DIR, name, handSide.manifest);
-      auto [genTotal, genFrag] = spirvCounts(generated);
-      auto [handTotal, handFrag] = spirvCounts(hand);
+      auto [genTotal, genFrag] = spirvCounts(generated, dumpDir.empty() ? "" : dumpDir + "/" + name + ".generated");
+      auto [handTotal, handFrag] = spirvCounts(hand, dumpDir.empty() ? "" : dumpDir + "/" + name + ".handwritten");
       auto origins = wg::rt::textureOrigins(*result);
 
       for (Size size : sizes) {

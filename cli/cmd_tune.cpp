@@ -210,7 +210,9 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "frames over a sweep: every camera (default above, "
       "grazing, topdown, and underwater for graphs with the deferred underwater pass) at every time. From the reference, "
       "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
-      "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost; the one with the "
+      "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost (faster than the "
+      "current configuration in every interleaved repeat but one in ten, at least 5 repeats; or fewer SPIR-V "
+      "instructions and not slower by that rule); the one with the "
       "least error increase per ms/MP saved is taken (ties: fewer SPIR-V instructions, then the knob's name), until "
       "none qualifies. Cost: CPU ms per megapixel (the process's CPU time across each frame, llvmpipe's threads included, "
       "so other programs on the machine do not inflate it), the median of interleaved repeats of every camera at the first time, timed "
@@ -229,7 +231,7 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
   cmd->add_option("--cameras", args->cameras, "camera presets, comma separated (above, grazing, underwater, topdown)");
   cmd->add_option("--times", args->times, "scene times in seconds, comma separated")->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();
-  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (under 5, no time saving counts: the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
   cmd->add_option("--write-preset", args->writePreset,
                   "write the chosen configuration into the graph as this preset (canonical form; replaces one of that name)");

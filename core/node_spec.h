@@ -253,11 +253,10 @@ inline constexpr const char* kBypassOption = "bypass";
 // The option Registry::add gives every node that reads a frame-sized scene resource (all
 // but the environment cube map): the size of the render targets of the passes producing
 // what it reads, as a fraction of the frame's width and height (1: the frame's size). A
-// quality knob (kResolutionLevels); it changes no shader text, only the manifest's
+// quality knob (levels in registry.cpp); it changes no shader text, only the manifest's
 // "pass_scales" (a pass read by several nodes takes the smallest of their values: one
 // reader lowered lowers the pass, so `tune` can try it one knob at a time).
 inline constexpr const char* kResolutionOption = "resolution";
-inline constexpr double kResolutionLevels[] = {0.25, 0.5, 1.0};
 inline constexpr double kMinResolution = 0.25;
 
 struct NodeSpec {

@@ -106,7 +106,7 @@ TEST(TuneKnobs, SceneResolutionIsTunedThoughItChangesNoShader) {
   const TuneKnob* depth = find(knobs, "d.resolution");
   const TuneKnob* color = find(knobs, "c.resolution");
   ASSERT_TRUE(depth && color);
-  EXPECT_EQ(nlohmann::json(depth->levels).dump(), "[0.25,0.5,1.0]");
+  EXPECT_EQ(nlohmann::json(depth->levels).dump(), "[0.25,0.5,0.75,1.0]");
   TuneConfig config(knobs.size());
   for (size_t k = 0; k < knobs.size(); ++k) config[k] = static_cast<int>(knobs[k].levels.size()) - 1;
   config[static_cast<size_t>(depth - knobs.data())] = 1;

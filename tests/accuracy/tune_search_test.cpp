@@ -1,6 +1,7 @@
 // The tuner's search on made-up measurements: which configuration it chooses, in which
 // order it lowers knobs, how ties break, and that NaN, an unmeetable budget and a failed
 // verification are handled. No renderer: the numbers are the test's.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -100,6 +101,62 @@ TEST(TuneSearch, TiesBreakBySpirvThenNameAndRepeat) {
   EXPECT_EQ(pathOf(first), pathOf(second));
   ASSERT_EQ(first.tried.size(), second.tried.size());
   for (size_t i = 0; i < first.tried.size(); ++i) EXPECT_EQ(first.tried[i].label, second.tried[i].label);
+}
+
+// Repeats of a configuration costing `base` ms/MP, one per interleaved repeat: the machine's
+// load in each repeat (shared by every configuration timed in it) times the base.
+TuneCost timed(double base, int spirv, std::vector<double> load) {
+  TuneCost c{0, spirv, {}};
+  for (double l : load) c.repeats.push_back(base * l);
+  std::vector<double> sorted = c.repeats;
+  std::sort(sorted.begin(), sorted.end());
+  c.msPerMegapixel = sorted[sorted.size() / 2];
+  return c;
+}
+
+// A lower median the paired repeats do not bear out is noise: the candidate is taken
+// neither for time nor, when it is slower in every repeat, for fewer instructions. The
+// saving every repeat shows is taken.
+TEST(TuneSearch, ASavingTheRepeatsDoNotShowIsNotTaken) {
+  const std::vector<double> load{1.0, 1.3, 0.9, 1.1, 1.0};
+  TuneCost reference = timed(100, 500, load);
+  // 'noise': lower median (97 against 100), but faster in only 3 of the 5 repeats.
+  TuneCost noise{97, 500, {99, 120, 85, 111, 97}};
+  EXPECT_EQ(timeSaved(noise, reference), 0);
+  // 'real': 10 % cheaper in every repeat.
+  TuneCost real = timed(90, 500, load);
+  EXPECT_DOUBLE_EQ(timeSaved(real, reference), 10);
+  EXPECT_EQ(timeSaved(reference, real), 0) << "a slower candidate saves nothing";
+  // One repeat in ten may go the other way: 9 of 10 faster counts, 8 of 10 does not.
+  TuneCost ten{100, 1, {100, 100, 100, 100, 100, 100, 100, 100, 100, 100}};
+  TuneCost nine{95, 1, {95, 95, 95, 95, 95, 95, 95, 95, 95, 101}};
+  TuneCost eight{95, 1, {95, 95, 95, 95, 95, 95, 95, 95, 101, 101}};
+  EXPECT_DOUBLE_EQ(timeSaved(nine, ten), 5);
+  EXPECT_EQ(timeSaved(eight, ten), 0);
+  // Four repeats cannot show a difference (all four faster by chance: 1 in 16).
+  EXPECT_EQ(timeSaved(TuneCost{90, 1, {90, 90, 90, 90}}, TuneCost{100, 1, {100, 100, 100, 100}}), 0);
+
+  std::vector<TuneKnob> knobs{{"a", "level", {0, 1}}, {"b", "level", {0, 1}}};
+  FakeMeasurements m;
+  m.errorOf = [](const TuneConfig& c) { return c == TuneConfig{1, 1} ? psnr(INFINITY, 0) : psnr(60); };
+  // a: a lower median, not borne out by the repeats, same instructions. b: 20 fewer
+  // instructions, but slower in every repeat. Neither is a saving.
+  m.costOf = [&](const TuneConfig& c) {
+    if (c[0] == 0) return noise;
+    if (c[1] == 0) return timed(110, 480, load);
+    return reference;
+  };
+  TuneResult r = tuneSearch(knobs, minPsnr(45), m);
+  EXPECT_FALSE(r.found) << pathOf(r).front();
+  // With b 10 % faster in every repeat, b is taken.
+  m.costOf = [&](const TuneConfig& c) {
+    if (c[0] == 0) return noise;
+    if (c[1] == 0) return timed(90, 480, load);
+    return reference;
+  };
+  r = tuneSearch(knobs, minPsnr(45), m);
+  ASSERT_TRUE(r.found) << r.why;
+  EXPECT_EQ(pathOf(r), (std::vector<std::string>{"b.level=0"}));
 }
 
 TEST(TuneSearch, ACandidateWithNaNIsNeverTaken) {

@@ -50,7 +50,7 @@ TEST(SceneResolution, EveryNodeReadingAFrameSizedResourceHasTheKnob) {
     if (i < 0) continue;
     const OptionSpec& o = spec->options[static_cast<size_t>(i)];
     EXPECT_EQ(o.defaultValue, 1.0);
-    EXPECT_EQ(o.levels, (std::vector<nlohmann::json>{0.25, 0.5, 1.0})) << "cheapest to most exact";
+    EXPECT_EQ(o.levels, (std::vector<nlohmann::json>{0.25, 0.5, 0.75, 1.0})) << "cheapest to most exact";
   }
   EXPECT_LT(defaultRegistry().find("cubemap_reflection")->optionIndex(kResolutionOption), 0)
       << "the environment cube map has its own size";
