@@ -28,7 +28,7 @@ struct TuneSweep {
   std::vector<std::string> cameras;  // camera presets; empty: above, grazing, topdown (+ underwater for deferred water)
   std::vector<double> times{1.0, 3.5, 20.0};
   int width = 160, height = 90;
-  int runs = 5;  // interleaved timed repeats
+  int runs = 9;  // interleaved timed repeats (tune_search.h: how many must agree)
   Target target = Target::Glsl330;
 };
 

@@ -31,16 +31,30 @@ std::string TuneBudget::text() const {
   return s + " on every frame";
 }
 
+size_t repeatsToShowASaving(size_t n) {
+  // The smallest k with P(X >= k) <= 0.1 for X ~ Binomial(n, 1/2): how many of n paired
+  // repeats must agree before chance (two configurations of one cost) is an unlikely cause.
+  std::vector<double> pmf(n + 1);
+  pmf[0] = std::pow(0.5, static_cast<double>(n));
+  for (size_t j = 1; j <= n; ++j) pmf[j] = pmf[j - 1] * static_cast<double>(n - j + 1) / static_cast<double>(j);
+  double tail = 0;
+  size_t k = n + 1;
+  for (size_t j = n + 1; j-- > 0;) {
+    tail += pmf[j];
+    if (tail > 0.1) break;
+    k = j;
+  }
+  return k;
+}
+
 double timeSaved(const TuneCost& candidate, const TuneCost& current) {
   double saved = current.msPerMegapixel - candidate.msPerMegapixel;
   if (!(saved > 0)) return 0;
   const size_t n = candidate.repeats.size();
   if (n == 0 || current.repeats.size() != n) return saved;
-  // Under 5 repeats no outcome is rarer than 1 in 20 by chance: they show nothing.
-  if (n < kRepeatsForEvidence) return 0;
   size_t faster = 0;
   for (size_t i = 0; i < n; ++i) faster += candidate.repeats[i] < current.repeats[i];
-  return faster >= n - n / 10 ? saved : 0;
+  return faster >= repeatsToShowASaving(n) ? saved : 0;
 }
 
 std::string levelText(const nlohmann::json& level) { return level.is_string() ? level.get<std::string>() : level.dump(); }

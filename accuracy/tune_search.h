@@ -49,12 +49,11 @@ struct TuneCost {
 };
 
 // The time `candidate` saves against `current`, both from one cost() call: the difference
-// of the medians when the candidate was faster in every paired repeat but one in ten (5
-// repeats: all five; with no difference between them that happens by chance once in 32),
-// otherwise 0: a saving the repeats do not show is the machine's noise, not the knob's.
-// Fewer than kRepeatsForEvidence repeats show no saving (nor a slowdown): the search then
-// goes by SPIR-V instructions alone.
-inline constexpr size_t kRepeatsForEvidence = 5;
+// of the medians when the candidate was faster in enough of the paired repeats that chance
+// is an unlikely cause (a one-sided sign test at 10 %: repeatsToShowASaving), otherwise 0:
+// a saving the repeats do not show is the machine's noise, not the knob's. Under 4 repeats
+// nothing can show a saving (nor a slowdown); the search then goes by SPIR-V instructions.
+size_t repeatsToShowASaving(size_t n);  // 4 of 4, 5 of 5, 6 of 6, 6 of 7, 7 of 9, 8 of 10; n + 1 under 4
 double timeSaved(const TuneCost& candidate, const TuneCost& current);
 
 struct TuneBudget {

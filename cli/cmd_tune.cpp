@@ -32,7 +32,7 @@ struct TuneArgs {
   std::string graph;
   double minPsnr = NAN, maxAbsError = NAN;
   std::string cameras, times = "1,3.5,20", size = "160x90", target = "glsl330";
-  int runs = 5;
+  int runs = 9;
   std::string writePreset, plot;
 };
 
@@ -211,8 +211,8 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "grazing, topdown, and underwater for graphs with the deferred underwater pass) at every time. From the reference, "
       "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
       "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost (faster than the "
-      "current configuration in every interleaved repeat but one in ten, at least 5 repeats; or fewer SPIR-V "
-      "instructions and not slower by that rule); the one with the "
+      "current configuration in enough of the paired, interleaved repeats that chance is unlikely: a one-sided sign "
+      "test at 10 %; or fewer SPIR-V instructions and not slower by that test); the one with the "
       "least error increase per ms/MP saved is taken (ties: fewer SPIR-V instructions, then the knob's name), until "
       "none qualifies. Cost: CPU ms per megapixel (the process's CPU time across each frame, llvmpipe's threads included, "
       "so other programs on the machine do not inflate it), the median of interleaved repeats of every camera at the first time, timed "
@@ -231,7 +231,7 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
   cmd->add_option("--cameras", args->cameras, "camera presets, comma separated (above, grazing, underwater, topdown)");
   cmd->add_option("--times", args->times, "scene times in seconds, comma separated")->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();
-  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (under 5, no time saving counts: the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (a time saving counts when a one-sided sign test over them passes at 10 %: 7 of 9, all of 5; under 4 none can, and the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
   cmd->add_option("--write-preset", args->writePreset,
                   "write the chosen configuration into the graph as this preset (canonical form; replaces one of that name)");

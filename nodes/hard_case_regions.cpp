@@ -8,7 +8,8 @@ namespace wg::nodes {
 // distance below 0), sky_distance (a distance or depth of 1e30 or more: the sky seen
 // through the linearisation), negative_cells (every lattice cell index negative),
 // beyond_int_range (a coordinate past the int32 range), unnormalised (a vector far from
-// unit length), half_vector_zero (the vectors a half vector sums cancel), camera_below_surface,
+// unit length), half_vector_zero (the vectors a half vector sums cancel), half_vector_cancelling
+// (they nearly cancel, |L + V| < 0.05, and H lies within 2 degrees of N), camera_below_surface,
 // huge_far_sky, zero_near, far_below_near, mirror_highlight, voronoi_2x2_search; for
 // the math vocabulary exponential_underflow, atan2_axis, half_integer (x = n + 1/2),
 // no_fraction_bits (|x| >= 2^23), tiny_negative (-1e-6 < x < 0), negative_parameter,
@@ -69,6 +70,7 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ggx_specular", "N.L = 0 (grazing light)", "grazing", "light"},
       {"ggx_specular", "mirror smooth at the highlight", "mirror_highlight", "roughness"},
       {"ggx_specular", "light opposite the viewer (H = 0)", "half_vector_zero", "view light"},
+      {"ggx_specular", "low sun behind the water, grazing view (glitter)", "half_vector_cancelling", "view light"},
       {"ggx_specular", "zero-length vectors", "zero_vector", "normal view light"},
       {"ggx_specular", "roughness above 1", "outside_domain", "roughness", 0, 1},
       // depth
@@ -113,6 +115,7 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"lambert", "zero-length light", "zero_vector", "light"},
       {"lambert", "unnormalised, parallel", "unnormalised", "normal light"},
       {"blinn_phong", "light opposite the viewer (H = 0)", "half_vector_zero", "view light"},
+      {"blinn_phong", "low sun behind the water, grazing view (glitter)", "half_vector_cancelling", "view light"},
       {"blinn_phong", "shininess 0 with N.H = 0", "pow_base_zero", "normal"},
       {"blinn_phong", "grazing view, huge shininess", "grazing", "view"},
       {"blinn_phong", "zero-length normal", "zero_vector", "normal"},

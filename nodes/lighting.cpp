@@ -30,6 +30,16 @@ Value scaled(const Value& c, double k) { return glsl::scale(c.convertedTo(Type::
 
 const Value kUp = Value::vector({0, 1, 0});
 const Value kZero = Value::vector({0, 0, 0});
+// The sun a degree above the horizon behind the water, seen at half a degree: the glitter
+// path of a low sun. L + V nearly cancels, so the half vector's direction carries the
+// rounding of both, magnified about 40 times, into the sharp lobes of smooth water.
+const Value kGlitterView = Value::vector({0.99996192306417131, 0.0087265354983739347, 0});
+const Value kGlitterLight = Value::vector({-0.99984769515639127, 0.017452406437283512, 0});
+// Why the half-vector lobes' bound follows their inputs' rounding (NodeSpec::conditionRoundings).
+const char* const kHalfVectorConditioning =
+    "grows where L + V nearly cancels (a low sun behind the water, seen at grazing: its glitter path): H = "
+    "normalize(L + V) turns by the inputs' rounding divided by |L + V|, and a sharp lobe (high shininess, "
+    "low roughness) magnifies that turn";
 
 }  // namespace
 
@@ -73,10 +83,12 @@ NodeSpec blinnPhongNode() {
   s.family = "optics";
   s.summary = "Blinn-Phong lighting: a specular highlight from the half vector, plus Lambert diffuse.";
   s.formula =
-      "H = normalize(L + V); specular = strength * max(N.H, 0)^shininess (safe pow); diffuse = max(N.L, 0); "
+      "H = normalize(L + V) (L and V more than 90 degrees apart: the sum's component along L - V, rounding of their "
+      "lengths, removed); specular = strength * max(N.H, 0)^shininess (safe pow; within 0.1 rad of the peak "
+      "formed as exp(shininess ln(1 - |N x H|^2) / 2), which keeps the digits N.H loses near 1); diffuse = max(N.L, 0); "
       "color = light_color * (surface_color * diffuse + specular).";
   s.source = "advanced shaders tutorial (Level 2: Blinn-Phong, shininess 32 / 64 / 128)";
-  s.cost = "5 safe normalisations, exp2 + log2: ~30 ALU";
+  s.cost = "5 safe normalisations, a cross product, exp2 + log2: ~45 ALU";
   s.inputs = {normalPort(), viewPort(), lightPort(),
               ports::fixed("shininess", Type::Float, Value::scalar(64), "exponent: 8 soft, 64 medium, 256 sharp"),
               ports::fixed("strength", Type::Float, Value::scalar(1), "specular strength"),
@@ -109,9 +121,14 @@ NodeSpec blinnPhongNode() {
     ctx.output(2, c);
   };
   s.tolerance = 1e-5;
+  s.conditionRoundings = 2;
+  s.conditionWhy = kHalfVectorConditioning;
   s.hardCases = {
       {"light opposite the viewer (H = 0)", {{"normal", kUp}, {"view", kUp}, {"light", Value::vector({0, -1, 0})}}, {},
        "0, not NaN", 0, 0},
+      {"low sun behind the water, grazing view (glitter)",
+       {{"normal", kUp}, {"view", kGlitterView}, {"light", kGlitterLight}, {"shininess", Value::scalar(2048)}}, {},
+       "near the lobe's peak, within the bound its inputs' rounding allows", 0, 1},
       {"shininess 0 with N.H = 0", {{"normal", Value::vector({1, 0, 0})}, {"view", kUp}, {"light", kUp},
                                     {"shininess", Value::scalar(0)}}, {}, "pow base 0: 1, finite", 0, 1},
       {"grazing view, huge shininess", {{"normal", kUp}, {"view", Value::vector({1, 0, 0})},
@@ -194,14 +211,14 @@ NodeSpec ggxSpecularNode() {
   s.summary = "Cook-Torrance microfacet specular: GGX distribution, Schlick Fresnel (F0 = 0.02), Smith/Schlick-GGX "
               "geometry.";
   s.formula =
-      "H = normalize(L + V), a = r^2 with r = clamp(roughness, 0.001, 1); D = a^2 / (pi (NdotH^2 a^2 + 1 - NdotH^2)^2) "
-      "(GGX / Trowbridge-Reitz); F = F0 + (1 - F0)(1 - V.H)^5; G = G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), "
+      "H = normalize(L + V) (as blinn_phong's), a = r^2 with r = clamp(roughness, 0.001, 1); D = a^2 / (pi (NdotH^2 a^2 + 1 - NdotH^2)^2) "
+      "(GGX / Trowbridge-Reitz; the shader forms 1 - NdotH^2 as |N x H|^2, which keeps its bits where H is near N); F = F0 + (1 - F0)(1 - V.H)^5; G = G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), "
       "k = (r + 1)^2 / 8. brdf = D F G / (4 NdotL NdotV), computed as D F / (4 (NdotL (1 - k) + k)(NdotV (1 - k) + k)): "
       "identical where NdotL, NdotV > 0 and its finite limit where either is 0, so nothing divides by zero. "
       "specular = brdf * NdotL; color = light_color * specular. All dots clamped to [0, 1].";
   s.source = "advanced shaders tutorial (Level 3: Cook-Torrance, DistributionGGX, FresnelSchlick with F0 = 0.02, GeometrySmith; water "
              "roughness ~0.05)";
-  s.cost = "5 safe normalisations, 2 divisions: ~45 ALU";
+  s.cost = "5 safe normalisations, a cross product, 3 divisions: ~60 ALU";
   s.inputs = {normalPort(), viewPort(), lightPort(),
               ports::fixed("roughness", Type::Float, Value::scalar(0.05),
                            "perceptual roughness (water ~0.05); clamped to [0.001, 1]"),
@@ -234,6 +251,8 @@ NodeSpec ggxSpecularNode() {
     ctx.output(4, scaled(ctx.input("light_color"), sp));
   };
   s.tolerance = 1e-5;  // relative: D reaches 3.2e11 at roughness 0.001; float32 keeps ~1e-6 of it
+  s.conditionRoundings = 2;
+  s.conditionWhy = kHalfVectorConditioning;
   Value grazing = Value::vector({1, 0, 0});
   s.hardCases = {
       {"N.V = 0 (grazing view)", {{"normal", kUp}, {"view", grazing}}, {}, "finite, >= 0", 0, 1e12},
@@ -243,6 +262,8 @@ NodeSpec ggxSpecularNode() {
        "D = 1 / (pi 1e-12): large but finite", 0, 1e12},
       {"light opposite the viewer (H = 0)", {{"normal", kUp}, {"view", grazing}, {"light", Value::vector({-1, 0, 0})}},
        {}, "finite", 0, 1e12},
+      {"low sun behind the water, grazing view (glitter)", {{"normal", kUp}, {"view", kGlitterView}, {"light", kGlitterLight}},
+       {}, "D near its peak (H within a degree of N), within the bound its inputs' rounding allows", 0, 1e12},
       {"zero-length vectors", {{"normal", kZero}, {"view", kZero}, {"light", kZero}}, {}, "0, not NaN", 0, 0},
       {"roughness above 1", {{"roughness", Value::scalar(5)}}, {}, "clamped to 1, finite", 0, 1e12},
   };

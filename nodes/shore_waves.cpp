@@ -1,5 +1,5 @@
 // shore_waves: the stylized water shader's bands of foam running up the shore, sin of the shore depth
-// minus time, sharpened by squaring and fading out with depth.
+// plus time (a crest's depth falls as time grows), sharpened by squaring and fading out with depth.
 #include <cmath>
 
 #include "nodes/eval_math.h"
@@ -14,7 +14,7 @@ double shoreWavesReference(double depth, double frequency, double phase, double 
   const double tau = 6.283185307179586;
   double dmax = std::max(distance, 1e-6);
   double d = glsl::clamp(depth, 0.0, dmax);
-  double w = std::sin(glsl::mod(d * frequency - phase, tau)) * 0.5 + 0.5;
+  double w = std::sin(glsl::mod(d * frequency + phase, tau)) * 0.5 + 0.5;
   w *= w;
   return glsl::saturate(w * amplitude * (1.0 - d / dmax));
 }
@@ -32,12 +32,15 @@ NodeSpec shoreWavesNode() {
   NodeSpec s;
   s.type = "shore_waves";
   s.family = "foam";
-  s.summary = "Bands of foam running towards the shore: a sine of the shore depth minus time, fading with depth (the stylized water shader).";
+  s.summary = "Bands of foam running towards the shore: a sine of the shore depth plus time, fading with depth (the stylized water shader).";
   s.formula =
       "d = clamp(depth, 0, D), D = max(distance, 1e-6); phase = mod(speed t, 2 pi); "
-      "w = (sin(mod(d frequency - phase, 2 pi)) / 2 + 1/2)^2; waves = saturate(w amplitude (1 - d / D)).";
+      "w = (sin(mod(d frequency + phase, 2 pi)) / 2 + 1/2)^2; waves = saturate(w amplitude (1 - d / D)). A crest lies at "
+      "d frequency + speed t = pi / 2 (mod 2 pi): its depth falls as t grows, so a positive speed runs towards the waterline.";
   s.source = "stylized water shader (section 9: ShoreWave, sin(shoreDepth * frequency - time * speed) * 0.5 + 0.5, squared, times "
-             "amplitude * saturate(1 - depth / distance)); the source gives no values: the defaults here are ours";
+             "amplitude * saturate(1 - depth / distance)); the source subtracts the time term, which moves the bands out to sea "
+             "for a positive speed although it describes waves breaking on the shore: the sign here makes a positive speed run "
+             "ashore. The source gives no values: the defaults here are ours";
   s.cost = "1 sin + ~12 ALU; the phase is a time-phase uniform";
   s.inputs = {
       ports::fixed("depth", Type::Float, "shore depth in metres (e.g. water_depth); <= 0 is the waterline"),

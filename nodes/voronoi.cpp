@@ -30,9 +30,10 @@ double evalVoronoiPhase(EvalContext& ctx, const VoronoiOptions& o, double speedS
 std::vector<OptionSpec> voronoiOptions(double defaultSpeed) {
   return {
       ports::knob(ports::choice("search", {"3x3", "2x2"}, "3x3",
-                                "3x3 cells (9 hashes; at jitter 1, F1 differs from a 5x5 search at ~5 points in 10^6) "
-                                "or the 2x2 block on the point's side of its cell (4 hashes; at jitter 1, F1 too large "
-                                "at ~0.9% of points, by up to 0.43; F2 often too large)"),
+                                "3x3 cells (9 hashes; at jitter 1, F1 differs from a 5x5 search at ~2 points in 10^6 with static "
+                                "points, ~40 in 10^6 with orbiting ones, by up to 0.14) or the 2x2 block on the point's "
+                                "side of its cell (4 hashes; at jitter 1, F1 too large at ~0.9% of points static, ~2.9% "
+                                "orbiting, by up to 0.55; F2 often too large)"),
                   {"2x2", "3x3"}),
       ports::choice("animation", {"static", "time", "time_input"}, "time",
                     "static points; points orbiting with the scene time (a double-precision phase uniform, exact at "

@@ -11,13 +11,21 @@ data=$(mktemp -d)
 trap 'rm -rf "$data"' EXIT
 status=0
 
-# sweep NAME NODE AXIS OPTIONS TARGET: one sweep, its table kept as $data/NAME-TARGET.dat
+# sweep NAME NODE AXIS OPTIONS TARGET [CASES]: one sweep (of the first case of the CASES
+# file, else the node's default case), its table kept as $data/NAME-TARGET.dat
 sweep() {
-  if ! "$wg" probe --node "$2" --sweep "$3" --options "$4" --target "$5" --table "$data/$1-$5.dat" 2>"$data/log"; then
+  if ! "$wg" probe --node "$2" --sweep "$3" --options "$4" --target "$5" --table "$data/$1-$5.dat" \
+      ${6:+--cases "$6"} 2>"$data/log"; then
     status=1
   fi
   printf '%-8s %-36s %s\n' "$5" "$1" "$(tail -n 1 "$data/log")"
 }
+
+# A low sun behind the water seen at half a degree (its glitter path): the light's
+# elevation swept from 0.06 to 20 degrees, where L + V nearly cancels.
+glitter='"normal": [0, 1, 0], "view": [0.99996192306417131, 0.0087265354983739347, 0], "light": [-1, 0.01, 0]'
+printf '{"cases": [{"name": "glitter", "inputs": {%s}}]}' "$glitter" >"$data/glitter.json"
+printf '{"cases": [{"name": "glitter", "inputs": {%s, "shininess": 2048}}]}' "$glitter" >"$data/glitter-sharp.json"
 
 for target in glsl330 es300; do
   for dir in air_to_water water_to_air; do
@@ -33,6 +41,8 @@ for target in glsl330 es300; do
   sweep trochoid-origin-x trochoid_wave origin.x:0:1000:10000 '{}' $target
   sweep subsurface-angle subsurface angle:0:180:10000 '{}' $target
   sweep ggx-roughness ggx_specular roughness:0.001:1:10000 '{}' $target
+  sweep ggx-glitter ggx_specular light.y:0.001:0.36:10000 '{}' $target "$data/glitter.json"
+  sweep blinn_phong-glitter blinn_phong light.y:0.001:0.36:10000 '{}' $target "$data/glitter-sharp.json"
   sweep value_noise-x value_noise p.x:0:100000:10000 '{}' $target
   sweep fbm-x fbm p.x:0:1000:10000 '{}' $target
   sweep voronoi-x voronoi p.x:0:1000:10000 '{}' $target

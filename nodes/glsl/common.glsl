@@ -8,6 +8,24 @@ vec2 wg_safe_normalize_vec2(vec2 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 vec4 wg_safe_normalize_vec4(vec4 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// The unit half vector of two safe-normalised vectors l and v (blinn_phong, ggx_specular):
+// normalize(l + v). Where they are more than 90 degrees apart, l + v is short and carries
+// the rounding of both lengths (|l| and |v| are 1 only within a float32 ulp) magnified
+// by 1 / |l + v|: a low sun behind the water seen at grazing turns H by ~1e-6 rad, which a
+// smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
+// perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
+// computed sum is the length rounding and is taken out. Vectors of different lengths (one
+// zero, or a short one from a tiny input) keep the plain sum.
+vec3 wg_half_vector(vec3 l, vec3 v) {
+  vec3 s = l + v;
+  vec3 d = l - v;
+  float dd = dot(d, d);
+  float ll = dot(l, l), vv = dot(v, v);
+  bool oneLength = abs(ll - vv) <= 1e-3 * max(ll, vv);
+  vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
+  return wg_safe_normalize_vec3(h);
+}
+
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
 // Guarded functions here compute both sides first and choose with ?: between plain values:

@@ -30,7 +30,7 @@ const std::vector<Mutation>& mutations() {
       {"reflect_dir", "the normal scaled by 1.0001 before reflect", {"reflect(-vv, nn)", "reflect(-vv, nn * 1.0001)"}},
       {"gerstner_waves", "phase scale k -> 1.0001 k", {"float theta = k * mod(", "float theta = 1.0001 * k * mod("}},
       {"trochoid_wave", "phase scale 1.0001", {"dot(waveVector, xz) + timePhase", "dot(waveVector, xz) * 1.0001 + timePhase"}},
-      {"shore_waves", "phase scale 1.0001", {"d * frequency - phase", "d * frequency * 1.0001 - phase"}},
+      {"shore_waves", "phase scale 1.0001", {"d * frequency + phase", "d * frequency * 1.0001 + phase"}},
       {"absorption", "path length 1.0001 d", {"exp(-max(sigma, vec3(0.0)) * d)", "exp(-max(sigma, vec3(0.0)) * d * 1.0001)"}},
       {"subsurface", "height offset 0.5 -> 0.5001", {"height * 2.0 + 0.5,", "height * 2.0 + 0.5001,"}},
       {"ggx_specular", "pi -> 3.1419 in D", {"3.14159265358979 * d * d", "3.1419 * d * d"}},

@@ -251,6 +251,19 @@ const std::map<std::string, RegionCheck>& regionChecks() {
              return std::string("the half vector's sum is not 0");
          return std::string();
        }},
+      {"half_vector_cancelling",
+       [](const Subject& s) {
+         // The two unit vectors nearly cancel (but not exactly: that is half_vector_zero),
+         // and their half vector lies within 2 degrees of the normal: the sharp lobe's peak.
+         auto ports = portsOf(s);
+         auto a = unitOf(givenInput(s, ports.at(0))), b = unitOf(givenInput(s, ports.at(1)));
+         auto n = unitOf(givenInput(s, "normal"));
+         double h[3] = {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
+         double len = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
+         if (!(len > 0 && len < 0.05)) return std::string("|L + V| is not in (0, 0.05)");
+         double nh = (n[0] * h[0] + n[1] * h[1] + n[2] * h[2]) / len;
+         return unless(nh > std::cos(2 * std::numbers::pi / 180), "H is not within 2 degrees of N");
+       }},
       {"mirror_highlight",
        [](const Subject& s) {
          // Roughness 0 with N = V = L: D's peak, where alpha^2 = 0 meets N.H = 1.
@@ -580,7 +593,8 @@ std::optional<Subject> movedOut(Subject s) {
   double at40 = 40 * std::numbers::pi / 180;
   if (region == "grazing" || region == "back_facing" || region == "normal_incidence_clamped" ||
       region == "total_internal_reflection" || region == "critical_angle" ||
-      (region == "pow_base_zero" && s.spec->type != "pow") || region == "half_vector_zero") {
+      (region == "pow_base_zero" && s.spec->type != "pow") || region == "half_vector_zero" ||
+      region == "half_vector_cancelling") {
     // A view (or light) 40 degrees off the normal: in front, refracting, no cancellation.
     auto n = unitOf(surfaceNormal(s));
     Value tilted = Value::vector({std::sin(at40), std::cos(at40), 0});

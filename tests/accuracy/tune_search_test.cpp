@@ -127,14 +127,18 @@ TEST(TuneSearch, ASavingTheRepeatsDoNotShowIsNotTaken) {
   TuneCost real = timed(90, 500, load);
   EXPECT_DOUBLE_EQ(timeSaved(real, reference), 10);
   EXPECT_EQ(timeSaved(reference, real), 0) << "a slower candidate saves nothing";
-  // One repeat in ten may go the other way: 9 of 10 faster counts, 8 of 10 does not.
+  // A one-sided sign test at 10 %: 8 of 10 faster counts, 7 of 10 does not.
   TuneCost ten{100, 1, {100, 100, 100, 100, 100, 100, 100, 100, 100, 100}};
-  TuneCost nine{95, 1, {95, 95, 95, 95, 95, 95, 95, 95, 95, 101}};
   TuneCost eight{95, 1, {95, 95, 95, 95, 95, 95, 95, 95, 101, 101}};
-  EXPECT_DOUBLE_EQ(timeSaved(nine, ten), 5);
-  EXPECT_EQ(timeSaved(eight, ten), 0);
-  // Four repeats cannot show a difference (all four faster by chance: 1 in 16).
-  EXPECT_EQ(timeSaved(TuneCost{90, 1, {90, 90, 90, 90}}, TuneCost{100, 1, {100, 100, 100, 100}}), 0);
+  TuneCost seven{95, 1, {95, 95, 95, 95, 95, 95, 95, 101, 101, 101}};
+  EXPECT_DOUBLE_EQ(timeSaved(eight, ten), 5);
+  EXPECT_EQ(timeSaved(seven, ten), 0);
+  // Three repeats cannot show a difference (all three faster by chance: 1 in 8).
+  EXPECT_EQ(timeSaved(TuneCost{90, 1, {90, 90, 90}}, TuneCost{100, 1, {100, 100, 100}}), 0);
+  EXPECT_DOUBLE_EQ(timeSaved(TuneCost{90, 1, {90, 90, 90, 90}}, TuneCost{100, 1, {100, 100, 100, 100}}), 10);
+  std::vector<size_t> needed;
+  for (size_t n : {1, 3, 4, 5, 6, 7, 9, 10, 20}) needed.push_back(repeatsToShowASaving(n));
+  EXPECT_EQ(needed, (std::vector<size_t>{2, 4, 4, 5, 6, 6, 7, 8, 14}));
 
   std::vector<TuneKnob> knobs{{"a", "level", {0, 1}}, {"b", "level", {0, 1}}};
   FakeMeasurements m;

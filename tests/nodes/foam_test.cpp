@@ -180,13 +180,25 @@ TEST(ShoreWaves, SeedFormulaByHand) {
   EXPECT_EQ(runNode("shore_waves", {{"depth", Value::scalar(2.5)}}, {}, env0).first(), 0.0);
   // At t = 1e6 s with speed 2: phase written out with std::fmod.
   double t = 1e6, depth = 0.7;
-  double w = std::sin(depth * 6 - std::fmod(2 * t, 2 * M_PI)) * 0.5 + 0.5;
+  double w = std::sin(depth * 6 + std::fmod(2 * t, 2 * M_PI)) * 0.5 + 0.5;
   auto r = runNode("shore_waves", {{"depth", Value::scalar(depth)}}, {}, atTime(t));
   EXPECT_NEAR(r.first(), w * w * (1 - depth / 2), 1e-9);
   // Bands move: half a period later a crest has become a trough.
   auto a = runNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, atTime(t));
   auto b = runNode("shore_waves", {{"depth", Value::scalar(M_PI / 12)}}, {}, atTime(t + M_PI / 2));
   EXPECT_GT(std::fabs(a.first() - b.first()), 0.1);
+}
+
+// A positive speed runs the bands towards the waterline: the crest at depth pi/12 (t = 0)
+// lies 0.5 rad of phase shallower 0.25 s later (speed 2 rad/s, frequency 6 rad/m), and the
+// depth it left has fallen from the crest.
+TEST(ShoreWaves, APositiveSpeedRunsTowardsTheShore) {
+  auto at = [](double depth, double t) { return runNode("shore_waves", {{"depth", Value::scalar(depth)}}, {}, atTime(t)).first(); };
+  const double crest0 = M_PI / 12, crest1 = (M_PI / 2 - 0.5) / 6, fade = 0.5;  // fade: 1 - depth / 2 m
+  EXPECT_NEAR(at(crest0, 0), 1 - crest0 * fade, 1e-12);
+  EXPECT_NEAR(at(crest1, 0.25), 1 - crest1 * fade, 1e-12) << "the crest moved to a smaller depth";
+  EXPECT_LT(crest1, crest0);
+  EXPECT_LT(at(crest0, 0.25), (1 - crest0 * fade) * 0.9) << "and left the deeper place";
 }
 
 const char* kFoamGraph = R"({

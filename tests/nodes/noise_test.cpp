@@ -249,6 +249,49 @@ TEST(Voronoi, ThreeByThreeMatchesBruteForceAtHalfJitter) {
   }
 }
 
+// The figures the `search` option documents (nodes/voronoi.cpp), at jitter 1, against a 5x5
+// brute force of the same points: static points, and the default orbiting ones at a random
+// phase (their offsets, 0.5 sin and 0.5 cos, gather at the cell's edges, so more nearest
+// points lie two cells away). Measured over 2e6 points: static 3x3 2 per 1e6, 2x2 0.88 %
+// (excess up to 0.47); orbiting 3x3 39 per 1e6 (excess up to 0.14), 2x2 2.9 % (up to 0.55).
+TEST(Voronoi, SearchMissRatesAsDocumented) {
+  const int n = 200000;
+  for (bool animated : {false, true}) {
+    SCOPED_TRACE(animated ? "orbiting" : "static");
+    std::mt19937_64 rng(animated ? 8 : 7);
+    std::uniform_real_distribution<double> d(-1e3, 1e3), ph(0, nodes::noise::kTau);
+    int miss3 = 0, miss2 = 0;
+    double worst2 = 0;
+    for (int i = 0; i < n; ++i) {
+      double x = d(rng), y = d(rng), phase = animated ? ph(rng) : 0;
+      double fx = std::floor(x), fy = std::floor(y), best = 1e30;
+      for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+          auto h = nodes::noise::hash2(fx + dx, fy + dy);
+          double ox = animated ? 0.5 * std::sin(phase + nodes::noise::kTau * h[0]) : h[0] - 0.5;
+          double oy = animated ? 0.5 * std::cos(phase + nodes::noise::kTau * h[1]) : h[1] - 0.5;
+          best = std::min(best, std::hypot(fx + dx + 0.5 + ox - x, fy + dy + 0.5 + oy - y));
+        }
+      double f3 = nodes::noise::voronoi(x, y, 1.0, phase, animated, true).f1;
+      double f2 = nodes::noise::voronoi(x, y, 1.0, phase, animated, false).f1;
+      ASSERT_GE(f3, best - 1e-12);
+      miss3 += f3 > best + 1e-12;
+      if (f2 > best + 1e-12) ++miss2, worst2 = std::max(worst2, f2 - best);
+    }
+    double rate2 = static_cast<double>(miss2) / n;
+    if (animated) {
+      EXPECT_GE(miss3, 2);  // ~8 expected: the 3x3 search does miss orbiting points
+      EXPECT_LE(miss3, 20);  // <= 1e-4
+      EXPECT_NEAR(rate2, 0.029, 0.004);
+      EXPECT_LT(worst2, 0.6);
+    } else {
+      EXPECT_LE(miss3, 5);  // ~0.4 expected (2 per 1e6)
+      EXPECT_NEAR(rate2, 0.0088, 0.0015);
+      EXPECT_LT(worst2, 0.5);
+    }
+  }
+}
+
 TEST(Voronoi, F1NeverExceedsF2) {
   std::mt19937 rng(13);
   std::uniform_real_distribution<double> d(-1e3, 1e3), j(0, 1), ph(0, 6.28);
