@@ -1,8 +1,10 @@
 #include "codegen/compile.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <iterator>
 #include <string_view>
+#include <unordered_set>
 
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest_build.h"
@@ -135,6 +137,31 @@ bool emitTargets(const Program& program, const CompileOptions& options, const st
 
 }  // namespace
 
+// Every preset but the applied one that sets node options is built as well: some option
+// values only a build can check (an expression's formula and inputs: the functions it
+// calls, the type it gives), and every preset is checked on every compile and validate,
+// not only when someone picks it. Its errors are reported as the preset's; the build is
+// dropped. Called once the graph itself built, so nothing is reported twice.
+static bool checkOtherPresets(const Graph& graphAsWritten, std::string_view applied, const Registry& registry,
+                       Diagnostics& diags) {
+  bool ok = true;
+  for (const Preset& preset : graphAsWritten.presets) {
+    if (preset.name == applied ||
+        std::none_of(preset.values.begin(), preset.values.end(), [](const PresetValue& v) { return v.isOption(); }))
+      continue;
+    Graph withPreset = graphAsWritten;
+    Diagnostics local;
+    if (applyPreset(withPreset, preset.name, local) && buildProgram(withPreset, registry, local)) continue;
+    ok = false;
+    for (Diagnostic d : local.all()) {
+      if (d.severity != Severity::Error) continue;
+      d.message = "with preset '" + preset.name + "': " + d.message;
+      diags.add(std::move(d));
+    }
+  }
+  return ok;
+}
+
 std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
                                           const CompileOptions& options, Diagnostics& diags) {
   Graph withPreset;
@@ -145,9 +172,13 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   const Graph& graph = options.preset.empty() ? graphAsWritten : withPreset;
   auto program = buildProgram(graph, registry, diags);
   if (!program) return std::nullopt;
+  if (!checkOtherPresets(graphAsWritten, options.preset, registry, diags)) return std::nullopt;
   CompileResult result;
   result.nodesTotal = program->totalNodes;
-  result.nodesKept = static_cast<int>(program->ops.size());
+  // Nodes, not ops: a node may expand into several ops (its per-draw split, its stages).
+  std::unordered_set<std::string_view> keptNodes;
+  for (const auto& op : program->ops) keptNodes.insert(op.nodeId);
+  result.nodesKept = static_cast<int>(keptNodes.size());
   std::string base = graphBaseName(graph.file.empty() ? graph.name : graph.file);
   std::string sourceName = std::filesystem::path(graph.file).filename().string();
   for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment

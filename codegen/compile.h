@@ -36,7 +36,7 @@ struct CompileResult {
   std::vector<OutputFile> files;  // shaders, SPIR-V and the manifest, in a stable order
   Manifest manifest;  // also among `files`, as JSON
   int nodesTotal = 0;
-  int nodesKept = 0;
+  int nodesKept = 0;  // graph nodes some op still comes from (an expanded node counts once)
 };
 
 // glslang's messages about generated shaders as diagnostics at the graph node whose op wrote

@@ -22,6 +22,7 @@
 #include "core/number_format.h"
 #include "core/interned_values.h"
 #include "core/node_options.h"
+#include "core/png_decode.h"
 #include "core/port_typing.h"
 #include "core/suggest.h"
 #include "core/text_lines.h"
@@ -221,7 +222,9 @@ class Resolver {
   // (texture paths relative to `directory`, the file of the graph that holds the node).
   void checkPresetOptionValue(const Preset& preset, const PresetValue& v, const OptionSpec& option,
                               const std::string& nodeId, const std::string& directory) {
-    std::string why = checkOption(option, v.optionValue, directory, nullptr);
+    TextureFile texture;
+    std::string why = checkOption(option, v.optionValue, directory, &texture);
+    if (why.empty()) why = decodedTexture(texture);
     if (!why.empty())
       diags_.error(DiagCode::InvalidOption, v.where, "preset '" + preset.name + "': option '" + v.option + "' " + why,
                    nodeId, optionLabel(v.option));
@@ -337,6 +340,7 @@ class Resolver {
         TextureFile texture;
         std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, directory_, &texture);
         if (why.empty()) why = chargeTextureBudget(texture);
+        if (why.empty()) why = decodedTexture(texture);
         if (!why.empty()) {
           diags_.error(DiagCode::InvalidOption, opt.where, "option '" + opt.name + "' " + why, n.id,
                        optionLabel(opt.name));
@@ -379,6 +383,15 @@ class Resolver {
     for (const auto& o : node.options)
       if (spec.optionIndex(o.name) < 0) written.erase(o.name);
     return written;
+  }
+
+  // A PNG file whose header passed must decode too (a broken zlib stream, too few
+  // pixels): found by validate, not first by render. After the budget, so a file the
+  // budget refuses is not decoded. Builtin textures (no file) pass.
+  static std::string decodedTexture(const TextureFile& texture) {
+    if (texture.realPath.empty()) return "";
+    std::string why = checkPngDecodes(texture.realPath);
+    return why.empty() ? "" : "is not usable: cannot decode texture '" + texture.realPath + "': " + why;
   }
 
   // All of a graph's PNG textures together stay within kMaxGraphTextureTexels (each file

@@ -74,13 +74,16 @@ std::string checkTextureSource(std::string_view source, const std::string& graph
   if (hasControlCharacter(source)) return quoted + " contains a control character";
   fs::path rel(source);
   if (rel.is_absolute()) return quoted + " must be relative to the graph file";
-  for (const auto& part : rel)
-    if (part == "..") return quoted + " leaves the graph's folder";
+  // "sub/../ok.png" stays inside; a ".." left after folding the steps does not (links are
+  // followed below, and the real path must stay inside too).
+  fs::path folded = rel.lexically_normal();
+  if (!folded.empty() && *folded.begin() == "..") return quoted + " leaves the graph's folder";
   if (rel.extension() != ".png") return "texture '" + std::string(source) + "' is not a .png file";
   fs::path folder(graphDir.empty() ? "." : graphDir);
   fs::path full = folder / rel;
   std::error_code ec;
-  if (!fs::is_regular_file(full, ec)) return "texture file '" + full.string() + "' does not exist";
+  if (!fs::is_regular_file(full, ec))
+    return "texture file '" + full.string() + (fs::exists(full, ec) ? "' is not a regular file" : "' does not exist");
   // Through every symbolic link, of the file and of each folder on the way.
   fs::path realFolder = fs::canonical(folder, ec);
   fs::path real = ec ? fs::path() : fs::canonical(full, ec);

@@ -91,8 +91,7 @@ inline double safeExp2(double x) { return std::exp2(std::min(x, kExp2ArgMax)); }
 // mod whose quotient x / y overflows or nearly (y = 0, or y tiny against x) gives 0: the
 // limit of mod(x, y) as y goes to 0, and within |y| of the true value otherwise.
 inline double safeMod(double x, double y) {
-  double q = x / y;
-  return std::abs(q) <= kModQuotientMax ? x - y * std::floor(q) : 0.0;
+  return std::abs(x) < kModQuotientMax * std::abs(y) ? x - y * std::floor(x / y) : 0.0;
 }
 // sin / cos with |cos| floored at 1e-30 (keeping its sign): at most 1e30 in magnitude.
 inline double safeTan(double x) {

@@ -210,6 +210,31 @@ TEST(ProbeCli, PrintsGpuReferenceErrorsAndExitsZeroOnTheExampleCases) {
     EXPECT_NE(out.find(s), std::string::npos) << s << "\n" << out;
 }
 
+// mod by a divisor the graph computes as 0 (time - time): the documented 0 on the GPU too.
+// The GL driver folds u_time - u_time to 0 and may then treat x / 0 and 0 * inf as
+// finite, so a guard that tests the inf of the quotient gave x here (3.5), not 0.
+TEST(ProbeCli, ModByAZeroTheGraphComputesIsZeroOnTheGpu) {
+  std::string dir = test::makeTempDir("wg_mod0_");
+  test::writeFile(dir + "/node.json", R"({"version": 1, "name": "n", "nodes": [
+    {"id": "t", "type": "time"}, {"id": "z", "type": "sub", "inputs": {"a": "t.out", "b": "t.out"}},
+    {"id": "m", "type": "mod", "inputs": {"x": "t.out", "y": "z.out"}}], "outputs": {"fragment": {"color": "m.out"}}})");
+  test::writeFile(dir + "/formula.json", R"json({"version": 1, "name": "f", "nodes": [{"id": "t", "type": "time"},
+    {"id": "x", "type": "expression", "options": {"inputs": {"a": "float"}, "formula": "mod(a, a - a) + mod(vec3(a), vec3(a - a))"},
+     "inputs": {"a": "t.out"}}], "outputs": {"fragment": {"color": "x.out"}}})json");
+  test::writeFile(dir + "/cases.json", R"({"cases": [{"name": "t35", "time": 3.5}, {"name": "t1", "time": 1}]})");
+  for (const char* graph : {"node.json", "formula.json"})
+    for (const char* target : {"glsl330", "es300"}) {
+      SCOPED_TRACE(std::string(graph) + " " + target);
+      int rc = 0;
+      std::string out = wg("probe " + test::shellQuote(dir + "/" + graph) + " --cases " + test::shellQuote(dir + "/cases.json") +
+                               " --target " + target,
+                           &rc);
+      EXPECT_EQ(rc, 0) << out;
+      EXPECT_NE(out.find("gpu (0, 0, 0)"), std::string::npos) << out;
+    }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ProbeCli, ANodeAloneWithTheSuiteCases) {
   int rc = 0;
   std::string out = wg("probe --node pow --cases " + test::shellQuote(test::sourcePath("tests/hardcases/suite.json")), &rc);

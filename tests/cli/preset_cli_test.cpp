@@ -63,6 +63,42 @@ TEST(CliPreset, UnknownPresetIsWG052AndWritesNothing) {
   fs::remove_all(dir);
 }
 
+// A preset that gives an expression node a formula calling an unknown function, or
+// inputs of another type, is found by a plain validate and compile (the preset not
+// applied): those values are checked by building the graph with the preset, which each
+// compile does for every preset that sets node options. The error names the preset and
+// points at its member.
+TEST(CliPreset, APresetsExpressionIsCheckedWithoutApplyingIt) {
+  std::string dir = test::makeTempDir("wg_preset_expr_");
+  const std::string graph = R"json({"version": 1, "name": "p",
+  "nodes": [{"id": "ex", "type": "expression", "options": {"inputs": {"a": "float"}, "formula": "a * 2.0"}, "inputs": {"a": 0.5}}],
+  "outputs": {"fragment": {"alpha": "ex.out"}},
+  "presets": {"PRESET": {"ex.MEMBER": VALUE}}})json";
+  auto withPreset = [&](const std::string& member, const std::string& value) {
+    std::string g = graph;
+    g.replace(g.find("PRESET"), 6, "worn");
+    g.replace(g.find("MEMBER"), 6, member);
+    g.replace(g.find("VALUE"), 5, value);
+    test::writeFile(dir + "/g.json", g);
+    return test::shellQuote(dir + "/g.json");
+  };
+  CmdResult r = wg("validate " + withPreset("formula", "\"foo(a)\""));
+  EXPECT_EQ(r.exit, 1) << r.err;
+  EXPECT_NE(r.err.find("[WG038]"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("with preset 'worn'"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("g.json:4:"), std::string::npos) << "at the preset's member\n" << r.err;
+  r = wg("compile " + withPreset("inputs", "{\"a\": \"vec3\"}") + " -o " + dir + "/out");
+  EXPECT_EQ(r.exit, 1) << r.err;
+  EXPECT_NE(r.err.find("[WG029]"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out/g.glsl330.frag"));
+  // A good preset passes, applied or not.
+  r = wg("validate " + withPreset("formula", "\"a * 3.0\""));
+  EXPECT_EQ(r.exit, 0) << r.err;
+  r = wg("validate " + withPreset("formula", "\"a * 3.0\"") + " --preset worn");
+  EXPECT_EQ(r.exit, 0) << r.err;
+  fs::remove_all(dir);
+}
+
 TEST(CliPreset, EveryPresetOfEveryExampleValidates) {
   for (const auto& path : test::exampleGraphs()) {
     auto g = nlohmann::json::parse(test::readFile(path));

@@ -65,6 +65,16 @@ TEST(Recipe, ShelfFoldsItsStaticSlopeAndPrunesTheDebugNode) {
   EXPECT_EQ(c.result->nodesKept, static_cast<int>(p.ops.size()));
 }
 
+// kept/total counts nodes: classic_webgl's du/dv node computes its scroll in ops of its
+// own (a per-draw split), and still counts once; nothing is kept that was not written.
+TEST(Compile, NodesKeptCountsNodesNotOps) {
+  Compiled classic = compileExample("classic_webgl");
+  ASSERT_TRUE(classic.result) << classic.diagnostics;
+  EXPECT_GT(classic.result->program.ops.size(), static_cast<size_t>(classic.result->nodesKept));
+  EXPECT_LE(classic.result->nodesKept, classic.result->nodesTotal);
+  EXPECT_EQ(classic.result->nodesKept, classic.result->nodesTotal) << "every node of classic_webgl is used";
+}
+
 TEST(Emit, OnlyCalledLibraryFunctionsAppear) {
   Compiled lake = compileExample("lake");
   ASSERT_TRUE(lake.result) << lake.diagnostics;

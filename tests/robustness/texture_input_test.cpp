@@ -182,9 +182,50 @@ TEST_F(TextureInput, ADecodeFailureIsAGraphErrorAtThePath) {
   EXPECT_TRUE(test::listFilesRecursive(root + "/out").empty());
 }
 
+// A PNG whose header is right but whose pixels do not decode (a garbled zlib stream, a
+// file cut after its header) fails `validate`, the CI check, not first `render`; a good
+// one passes, and a preset's texture is decoded too.
+TEST_F(TextureInput, APngThatDoesNotDecodeFailsValidate) {
+  std::string good = pngBytes(4, 4);
+  test::writeFile(dir + "/broken.png", good.substr(0, 33) + std::string(40, 'x'));
+  test::writeFile(dir + "/cut.png", pngHeaderDeclaring(4, 4));
+  test::writeFile(dir + "/good.png", good);
+  const std::string wg = test::shellQuote(test::watergraphBinary());
+  for (const char* file : {"broken.png", "cut.png"}) {
+    test::writeFile(dir + "/g.json", edgeFoamGraph(file));
+    std::string out, err;
+    EXPECT_EQ(test::runCommandSplit(wg + " validate " + dir + "/g.json", &out, &err), 1) << file << "\n" << err;
+    EXPECT_NE(err.find("error: [WG030] option 'texture' is not usable: cannot decode texture"), std::string::npos) << err;
+  }
+  test::writeFile(dir + "/g.json", edgeFoamGraph("good.png"));
+  std::string out, err;
+  EXPECT_EQ(test::runCommandSplit(wg + " validate " + dir + "/g.json", &out, &err), 0) << err;
+  // The same broken file set by a preset that is not applied.
+  std::string text = edgeFoamGraph("good.png");
+  text.insert(text.rfind('}'), R"(, "presets": {"worn": {"f.texture": "broken.png"}})");
+  test::writeFile(dir + "/g.json", text);
+  EXPECT_EQ(test::runCommandSplit(wg + " validate " + dir + "/g.json", &out, &err), 1) << text << "\n" << err;
+  EXPECT_NE(err.find("preset 'worn': option 'texture' is not usable: cannot decode texture"), std::string::npos) << err;
+}
+
+// ".." that folds away inside the folder is a path like any other; one that climbs out is
+// refused before the file system is asked. Something that exists but is not a file (a
+// folder named like a PNG) is said to be that, not to be missing.
+TEST_F(TextureInput, AStepBackThatStaysInsideIsAcceptedAndAFolderIsNotAFile) {
+  fs::create_directories(dir + "/sub");
+  test::writeFile(dir + "/foam.png", pngBytes(2, 2));
+  EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("sub/../foam.png"))), "");
+  std::string e = firstError(resolveIn(dir, edgeFoamGraph("sub/../../outside/secret.png")));
+  EXPECT_NE(e.find("leaves the graph's folder"), std::string::npos) << e;
+  fs::create_directories(dir + "/folder.png");
+  e = firstError(resolveIn(dir, edgeFoamGraph("folder.png")));
+  EXPECT_NE(e.find("is not a regular file"), std::string::npos) << e;
+  EXPECT_NE(firstError(resolveIn(dir, edgeFoamGraph("missing.png"))).find("does not exist"), std::string::npos);
+}
+
 #ifdef WG_HAVE_RUNTIME
-// The same PNG through `render` and `check`: compile passes (the header is fine), the
-// runtime's decode fails, and both report it as the graph's WG030 at the texture option,
+// The same PNG through `render` and `check`: both report it as the graph's WG030 at the
+// texture option (found when the graph is checked, before the runtime decodes it again),
 // exit 1, writing no image: not a bare runtime message.
 TEST_F(TextureInput, ADecodeFailureAtRenderTimeIsAGraphErrorAtThePath) {
   std::string good = pngBytes(4, 4);

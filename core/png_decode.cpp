@@ -1,0 +1,102 @@
+#include "core/png_decode.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <fcntl.h>
+#include <map>
+#include <mutex>
+#include <sys/stat.h>
+#include <tuple>
+#include <unistd.h>
+
+#include <stb/stb_image.h>
+
+#include "core/png_header.h"
+#include "core/texture_check.h"
+
+namespace wg {
+namespace {
+
+// The largest PNG file read: twice the raw RGBA bytes of the largest texture allowed, room
+// for a stored (uncompressed) image and its chunk overhead.
+constexpr std::size_t kMaxPngFileBytes = std::size_t{2} * 4 * kMaxTextureSide * kMaxTextureSide;
+
+// Reads the open file `fd` whole, up to kMaxPngFileBytes; "" or why not.
+std::string readWhole(int fd, std::vector<unsigned char>* bytes) {
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) return std::strerror(errno);
+  if (!S_ISREG(st.st_mode)) return "it is not a regular file";
+  if (static_cast<unsigned long long>(st.st_size) > kMaxPngFileBytes)
+    return "the file has " + std::to_string(st.st_size) + " bytes; the limit is " + std::to_string(kMaxPngFileBytes);
+  bytes->resize(static_cast<std::size_t>(st.st_size));
+  std::size_t got = 0;
+  while (got < bytes->size()) {
+    ssize_t n = ::read(fd, bytes->data() + got, bytes->size() - got);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) return std::strerror(errno);
+    if (n == 0) break;  // shrank since fstat: decode what is there
+    got += static_cast<std::size_t>(n);
+  }
+  bytes->resize(got);
+  return "";
+}
+
+}  // namespace
+
+// The file is opened once, without following a link, and read whole; its header is checked
+// again on those bytes (the file may have been replaced since it was checked), and every
+// chunk must fit inside the file before the decoder sees it.
+bool decodePng(const std::string& realPath, DecodedPng* out, std::string* error) {
+  auto fail = [&](const std::string& why) {
+    if (error) *error = why;
+    return false;
+  };
+  // O_NONBLOCK: a FIFO swapped in since the check must not hang the open; readWhole then
+  // refuses anything but a regular file.
+  int fd = ::open(realPath.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return fail(std::strerror(errno));
+  std::vector<unsigned char> bytes;
+  std::string why = readWhole(fd, &bytes);
+  ::close(fd);
+  PngSize size;
+  if (why.empty()) why = readPngSize(bytes.data(), bytes.size(), &size);
+  if (why.empty()) why = checkTextureSize(size.width, size.height);
+  if (why.empty()) why = checkPngChunks(bytes.data(), bytes.size());
+  if (!why.empty()) return fail(why);
+  int w = 0, h = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &channels, 4);
+  if (!pixels) return fail(stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
+  out->width = w;
+  out->height = h;
+  const std::size_t row = static_cast<std::size_t>(w) * 4;
+  out->rgba.resize(row * static_cast<std::size_t>(h));
+  // PNG rows run top to bottom; GL's first row is v = 0, the bottom of the picture.
+  for (int y = 0; y < h; ++y)
+    std::copy_n(pixels + static_cast<std::size_t>(h - 1 - y) * row, row, out->rgba.begin() + static_cast<long>(static_cast<std::size_t>(y) * row));
+  stbi_image_free(pixels);
+  return true;
+}
+
+std::string checkPngDecodes(const std::string& realPath) {
+  struct stat st {};
+  if (::stat(realPath.c_str(), &st) != 0) return std::strerror(errno);
+  using Key = std::tuple<std::string, long long, long long, long long>;
+  Key key{realPath, static_cast<long long>(st.st_size), static_cast<long long>(st.st_mtim.tv_sec),
+          static_cast<long long>(st.st_mtim.tv_nsec)};
+  static std::mutex mutex;
+  static std::map<Key, std::string> known;
+  {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (auto it = known.find(key); it != known.end()) return it->second;
+  }
+  DecodedPng image;
+  std::string why;
+  decodePng(realPath, &image, &why);
+  std::lock_guard<std::mutex> lock(mutex);
+  if (known.size() >= 256) known.clear();  // a long editor session: forget, do not grow
+  known.emplace(std::move(key), why);
+  return why;
+}
+
+}  // namespace wg
