@@ -136,20 +136,47 @@ void requireRequestedFamilies(const BenchSettings& settings, const std::vector<s
   }
 }
 
+// The configuration file as JSON: a syntax error at its line and column.
+ordered readConfig(const BenchSettings& settings) {
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(settings.configFile, ec))
+    configError(settings, "[WG050] cannot read the bench configuration: it is not a regular file");
+  std::ifstream in(settings.configFile, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) configError(settings, "[WG050] cannot read the bench configuration");
+  try {
+    return ordered::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    size_t at = std::min<size_t>(e.byte > 0 ? e.byte - 1 : 0, text.size()), line = 1, column = 1;
+    for (size_t i = 0; i < at; ++i) text[i] == '\n' ? (++line, column = 1) : ++column;
+    throw std::runtime_error(settings.configFile + ":" + std::to_string(line) + ":" + std::to_string(column) +
+                             ": error: [WG001] the bench configuration is not valid JSON");
+  }
+}
+
+// A family's member that must be a string when present: its value, or `fallback`.
+std::string familyText(const BenchSettings& settings, const ordered& family, size_t index, const char* key,
+                       const std::string& fallback) {
+  if (!family.contains(key)) return fallback;
+  if (!family[key].is_string())
+    configError(settings, "[WG004] family " + std::to_string(index + 1) + ": \"" + key + "\" must be a string (got " +
+                              family[key].dump() + ")");
+  return family[key].get<std::string>();
+}
+
 // The families of a configuration file (bench/variants.json). A family lists its levels,
 // or names a quality knob ("knob": "node.option") whose levels the node declares.
 std::vector<Family> configFamilies(const BenchSettings& settings) {
-  std::ifstream in(settings.configFile);
-  if (!in) configError(settings, "cannot read the file");
-  ordered config;
-  try {
-    config = ordered::parse(in);
-  } catch (const std::exception& e) {
-    configError(settings, std::string("not valid JSON: ") + e.what());
-  }
-  if (!config.contains("families") || !config["families"].is_array()) configError(settings, "needs \"families\": [...]");
+  ordered config = readConfig(settings);
+  if (!config.is_object() || !config.contains("families") || !config["families"].is_array())
+    configError(settings, "[WG004] needs \"families\": [...]");
   std::vector<std::string> names;
-  for (const auto& fam : config["families"]) names.push_back(fam.value("name", ""));
+  for (size_t i = 0; i < config["families"].size(); ++i) {
+    const ordered& fam = config["families"][i];
+    if (!fam.is_object()) configError(settings, "[WG004] family " + std::to_string(i + 1) + " must be an object (got " + fam.dump() + ")");
+    names.push_back(familyText(settings, fam, i, "name", ""));
+    for (const char* key : {"node", "camera", "reference", "graph_file", "knob"}) familyText(settings, fam, i, key, "");
+  }
   requireRequestedFamilies(settings, names);
   std::vector<Family> families;
   for (const auto& fam : config["families"]) {
@@ -164,23 +191,26 @@ std::vector<Family> configFamilies(const BenchSettings& settings) {
     else if (fam.contains("graph"))
       base = parseGraph(fam["graph"].dump(), settings.configFile + " (family '" + name + "')", diags);
     else
-      configError(settings, "family '" + name + "' has neither \"graph\" nor \"graph_file\"");
+      configError(settings, "[WG005] family '" + name + "' has neither \"graph\" nor \"graph_file\"");
     if (!base) configError(settings, "family '" + name + "': the graph does not load:" + diagText(diags));
     Family f{name, fam.value("node", ""), fam.value("camera", "above"), *base, {}, fam.value("reference", "")};
     if (fam.contains("knob")) {
       std::string knob = fam["knob"].is_string() ? fam["knob"].get<std::string>() : "";
       size_t dot = knob.find('.');
       const OptionSpec* o = dot == std::string::npos ? nullptr : knobOf(*base, knob.substr(0, dot), knob.substr(dot + 1));
-      if (!o) configError(settings, "family '" + name + "': \"knob\" must name a quality knob as \"node.option\" (got '" + knob + "')");
+      if (!o) configError(settings, "[WG004] family '" + name + "': \"knob\" must name a quality knob as \"node.option\" (got '" + knob + "')");
       for (const auto& level : o->levels)
         f.levels.push_back({levelName(level), ordered{{knob.substr(0, dot), {{o->name, level}}}}});
       f.reference = levelName(o->levels.back());
     } else {
-      if (!fam.contains("levels") || !fam["levels"].is_object()) configError(settings, "family '" + name + "' needs \"levels\" or \"knob\"");
+      if (!fam.contains("levels")) configError(settings, "[WG005] family '" + name + "' needs \"levels\" or \"knob\"");
+      if (!fam["levels"].is_object())
+        configError(settings, "[WG004] family '" + name + "': \"levels\" must be an object, level name -> settings (got " +
+                                  fam["levels"].dump() + ")");
       for (auto it = fam["levels"].begin(); it != fam["levels"].end(); ++it) f.levels.push_back({it.key(), it.value()});
       bool found = false;
       for (const auto& l : f.levels) found |= l.first == f.reference;
-      if (!found) configError(settings, "family '" + name + "': reference level '" + f.reference + "' is not among its levels");
+      if (!found) configError(settings, "[WG004] family '" + name + "': reference level '" + f.reference + "' is not among its levels");
     }
     families.push_back(std::move(f));
   }

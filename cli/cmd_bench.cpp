@@ -12,8 +12,11 @@
 #include "codegen/output_files.h"
 
 #ifdef WG_HAVE_RUNTIME
+#include <nlohmann/json.hpp>
+
 #include "accuracy/bench.h"
 #include "runtime/runtime_error.h"
+#include "runtime/scene.h"
 #endif
 
 namespace wg::cli {
@@ -45,6 +48,10 @@ int runBenchCommand(const BenchArgs& args) {
   }
   if (!args.graph.empty() && !std::ifstream(args.graph)) {
     std::cerr << args.graph << ": error: [WG050] cannot read the file\n";
+    return kExitUsageOrIo;
+  }
+  if (!args.camera.empty() && !rt::cameraPreset(args.camera)) {
+    std::cerr << "watergraph: bench: unknown --camera '" << args.camera << "'\n";
     return kExitUsageOrIo;
   }
   if (args.graph.empty() && !args.preset.empty()) {
@@ -85,6 +92,11 @@ int runBenchCommand(const BenchArgs& args) {
     return e.exitCode();
   } catch (const std::runtime_error& e) {
     std::cerr << e.what() << "\n";
+    return kExitGraphError;
+  } catch (const nlohmann::json::exception& e) {
+    // A level's settings of a shape the families' checks do not cover.
+    std::cerr << (args.graph.empty() ? args.config : args.graph) << ": error: [WG004] a value has the wrong JSON type ("
+              << e.what() << ")\n";
     return kExitGraphError;
   }
   return kExitOk;

@@ -9,6 +9,7 @@
 #include <ctime>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -298,6 +299,19 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
   if (args.quiet && args.verbose) {
     std::cerr << "watergraph: --quiet and --verbose exclude each other\n";
     return kExitUsageOrIo;
+  }
+  // Two graphs whose files share a name would write the same output files (with
+  // --subdirs, into the same folder), the second silently replacing the first: refused
+  // before anything is written.
+  if (write) {
+    std::map<std::string, std::string> byName;
+    for (const auto& path : args.graphs) {
+      auto [it, fresh] = byName.emplace(graphBaseName(path), path);
+      if (fresh || it->second == path) continue;
+      std::cerr << "watergraph: '" << it->second << "' and '" << path << "' would both write " << args.outDir << "/"
+                << it->first << (args.subdirs ? "/" : ".*") << "; compile them into different output folders\n";
+      return kExitUsageOrIo;
+    }
   }
   const bool textFormat = global.diagnosticsFormat == "text";
   // SARIF owns stdout: human-readable lines go to stderr instead.

@@ -130,5 +130,42 @@ TEST(Bench, ABadConfigIsOneLineNamingTheFile) {
   std::filesystem::remove_all(dir);
 }
 
+// Configurations of the wrong shape: each a one-line error naming the file and a code, not
+// a library exception; a syntax error at its line and column; a folder is not a file.
+TEST(Bench, AConfigOfTheWrongShapeIsAnErrorWithACode) {
+  std::string dir = test::makeTempDir("wg_bench_shape");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {R"({"families": [{"name": 1}]})", "[WG004] family 1: \"name\" must be a string (got 1)"},
+      {R"({"families": [null]})", "[WG004] family 1 must be an object (got null)"},
+      {R"({"families": [{"name": "x", "camera": 5, "levels": {}}]})", "[WG004] family 1: \"camera\" must be a string"},
+      {R"({"families": [{"name": "x", "graph_file": 5}]})", "[WG004] family 1: \"graph_file\" must be a string"},
+      {R"({"families": [{"name": "x", "node": []}]})", "[WG004] family 1: \"node\" must be a string"},
+      {R"([1, 2])", "[WG004] needs \"families\""},
+      {"{\n  \"families\": [\n  {", "v.json:3:4: error: [WG001] the bench configuration is not valid JSON"},
+  };
+  for (const auto& [text, expected] : cases) {
+    test::writeFile(dir + "/v.json", text);
+    BenchSettings s;
+    s.configFile = dir + "/v.json";
+    s.root = dir;
+    try {
+      runBench(s);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << text << "\n" << e.what();
+    }
+  }
+  std::filesystem::create_directories(dir + "/folder.json");
+  BenchSettings s;
+  s.configFile = dir + "/folder.json";
+  try {
+    runBench(s);
+    ADD_FAILURE() << "no error for a folder";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("[WG050] cannot read the bench configuration"), std::string::npos) << e.what();
+  }
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace wg::accuracy

@@ -91,6 +91,26 @@ TEST(CliCompile, UnknownTargetIsAUsageError) {
   EXPECT_FALSE(fs::exists(tmp / "out"));
 }
 
+// a/water.json and b/water.json write water.* (with --subdirs, water/): the second would
+// replace the first. A usage error, nothing written.
+TEST(CliCompile, TwoGraphsOfOneFileNameAreRefusedBeforeWriting) {
+  TempDir tmp;
+  fs::create_directories(tmp / "a");
+  fs::create_directories(tmp / "b");
+  fs::copy_file(test::sourcePath("graphs/lake.json"), tmp / "a/water.json");
+  fs::copy_file(test::sourcePath("graphs/shelf.json"), tmp / "b/water.json");
+  for (const char* subdirs : {"", " --subdirs"}) {
+    CmdResult r = wgRun("compile " + shellQuote(tmp / "a/water.json") + " " + shellQuote(tmp / "b/water.json") + " -o " +
+                        shellQuote(tmp / "out") + subdirs);
+    EXPECT_EQ(r.exit, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find("would both write"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(tmp / "out"));
+  }
+  // validate writes nothing: both are checked.
+  CmdResult r = wgRun("validate " + shellQuote(tmp / "a/water.json") + " " + shellQuote(tmp / "b/water.json"));
+  EXPECT_EQ(r.exit, 0) << r.err;
+}
+
 TEST(CliCompile, MissingRequiredOptionIsAUsageError) {
   CmdResult r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lake.json")));
   EXPECT_EQ(r.exit, 2) << r.out << r.err;
