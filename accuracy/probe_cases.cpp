@@ -1,6 +1,8 @@
 #include "accuracy/probe_cases.h"
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <set>
@@ -187,7 +189,12 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
       r.error(c.contains("name") ? p + "/name" : p, "a case needs \"name\": a non-empty string");
     } else {
       pc.name = c["name"].get<std::string>();
-      if (!names.insert(pc.name).second) r.error(p + "/name", "a second case named '" + pc.name + "'");
+      // The name is printed in every report line: a newline or an escape sequence in it
+      // would forge lines or colour the terminal.
+      if (std::any_of(pc.name.begin(), pc.name.end(), [](char ch) { return static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f; }))
+        r.error(p + "/name", "a case name may not hold a control character");
+      else if (!names.insert(pc.name).second)
+        r.error(p + "/name", "a second case named '" + pc.name + "'");
     }
     if (c.contains("expect")) {
       if (c["expect"].is_string()) pc.expect = c["expect"].get<std::string>();
@@ -326,6 +333,11 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
 }
 
 std::optional<ProbeCaseFile> loadProbeCases(const std::string& path, Diagnostics& diags) {
+  std::error_code ec;
+  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
+    diags.error(DiagCode::FileRead, SourceRef{path, 0, 0}, "cannot read the cases file: it is not a regular file");
+    return std::nullopt;
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in) {
     diags.error(DiagCode::FileRead, SourceRef{path, 0, 0}, "cannot read the cases file");

@@ -72,7 +72,23 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
   }
   nlohmann::json options = nlohmann::json::object();
   if (!args.options.empty()) {
-    options = nlohmann::json::parse(args.options, nullptr, false);
+    // A key given twice would silently take the last value: refused as in graph files.
+    std::vector<std::set<std::string>> open;
+    bool duplicate = false;
+    options = nlohmann::json::parse(
+        args.options,
+        [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
+          if (event == nlohmann::json::parse_event_t::object_start) open.emplace_back();
+          if (event == nlohmann::json::parse_event_t::object_end && !open.empty()) open.pop_back();
+          if (event == nlohmann::json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
+            duplicate = true;
+          return true;
+        },
+        false);
+    if (duplicate) {
+      std::cerr << "watergraph: --options names a key twice (got '" << args.options << "')\n";
+      return kExitUsageOrIo;
+    }
     if (!options.is_object()) {
       std::cerr << "watergraph: --options must be a JSON object (got '" << args.options << "')\n";
       return kExitUsageOrIo;

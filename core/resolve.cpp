@@ -545,8 +545,16 @@ class Resolver {
     std::reverse(cycle.begin(), cycle.end());
     auto first = std::min_element(cycle.begin(), cycle.end());
     std::rotate(cycle.begin(), first, cycle.end());
+    // A long cycle is named by its first and last steps (one line, not a megabyte of ids).
+    constexpr size_t kShown = 8;
     std::string path;
-    for (int i : cycle) path += "'" + graph_.nodes[static_cast<size_t>(i)].id + "' -> ";
+    for (size_t k = 0; k < cycle.size(); ++k) {
+      if (cycle.size() > 2 * kShown && k == kShown) {
+        path += "... (" + std::to_string(cycle.size() - 2 * kShown) + " more nodes) -> ";
+        k = cycle.size() - kShown;
+      }
+      path += "'" + graph_.nodes[static_cast<size_t>(cycle[k])].id + "' -> ";
+    }
     path += "'" + graph_.nodes[static_cast<size_t>(cycle.front())].id + "'";
     const Node& at = graph_.nodes[static_cast<size_t>(cycle.front())];
     diags_.error(DiagCode::Cycle, at.where, "the nodes form a cycle: " + path, at.id);

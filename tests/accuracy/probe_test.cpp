@@ -235,6 +235,27 @@ TEST(ProbeCli, ModByAZeroTheGraphComputesIsZeroOnTheGpu) {
   std::filesystem::remove_all(dir);
 }
 
+// A folder given as the cases file cannot be read (not a JSON syntax error); a case name
+// with a control character would forge report lines; --options naming a key twice would
+// silently take the last value.
+TEST(ProbeCli, CasesFilesAndOptionsOfTheWrongKind) {
+  std::string dir = test::makeTempDir("wg_probe_kind_");
+  int rc = 0;
+  std::string out = wg("probe --node pow --cases " + test::shellQuote(dir), &rc);
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_NE(out.find("[WG050] cannot read the cases file: it is not a regular file"), std::string::npos) << out;
+  test::writeFile(dir + "/c.json", "{\"cases\": [{\"name\": \"a\\nb\\u001b[31mred\"}]}");
+  out = wg("probe --node pow --cases " + test::shellQuote(dir + "/c.json"), &rc);
+  EXPECT_EQ(rc, 1) << out;
+  EXPECT_NE(out.find("[WG060]"), std::string::npos) << out;
+  EXPECT_NE(out.find("control character"), std::string::npos) << out;
+  EXPECT_EQ(out.find('\x1b'), std::string::npos) << "the escape reached the terminal";
+  out = wg(R"(probe --node fresnel --sweep angle:0:90:10 --options '{"model": "exact", "model": "schlick"}')", &rc);
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_NE(out.find("names a key twice"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ProbeCli, ANodeAloneWithTheSuiteCases) {
   int rc = 0;
   std::string out = wg("probe --node pow --cases " + test::shellQuote(test::sourcePath("tests/hardcases/suite.json")), &rc);

@@ -196,6 +196,22 @@ TEST(HostileInput, DisjointCyclesAreEachReported) {
   EXPECT_NE(text.find("'c' -> 'd' -> 'e' -> 'c'"), std::string::npos) << text;
 }
 
+// A cycle through 10,000 nodes is one line naming its first and last 8 steps (it listed
+// every id: a 1.8 MB line for 150,000).
+TEST(HostileInput, ALongCycleIsNamedByItsEnds) {
+  std::string nodes;
+  const int n = 10000;
+  for (int i = 0; i < n; ++i)
+    nodes += std::string(i ? "," : "") + "{\"id\": \"n" + std::to_string(i) + "\", \"type\": \"sin\", \"inputs\": {\"x\": \"n" +
+             std::to_string((i + 1) % n) + ".out\"}}";
+  Diagnostics diags = check(test::graphJson(nodes, "\"fragment\": {\"alpha\": \"n0.out\"}"));
+  ASSERT_EQ(countCode(diags, DiagCode::Cycle), 1u);
+  std::string text = allMessages(diags);
+  EXPECT_LT(text.size(), 1000u) << text.substr(0, 2000);
+  EXPECT_NE(text.find("... (9984 more nodes) -> "), std::string::npos) << text;
+  EXPECT_NE(text.find("'n0' -> 'n9999' -> 'n9998'"), std::string::npos) << text;
+}
+
 // 1 / -0.0 is -inf: the literal keeps its sign in every target's GLSL, alone and in a vector.
 TEST(HostileInput, NegativeZeroLiteralsKeepTheirSign) {
   std::string nodes =
