@@ -103,8 +103,8 @@ NodeSpec oneMinusNode() {
 NodeSpec modNode() {
   NodeSpec s = math::mathNode(
       "mod", "GLSL's floored modulo, in [0, y) for y > 0; y = 0 gives 0 (the raw built-in gives NaN).",
-      "out = x - y floor(x / y); 0 where |x / y| > 1e38 or is not a number (y = 0, or y tiny against x): the limit as "
-      "y -> 0");
+      "out = x - y floor(x / y); 0 unless |x| < 1e38 |y| (y = 0, y tiny against x, or x not finite): the limit as "
+      "y -> 0. The test is on x and y, not on the quotient's inf, which a driver that folds y - y to 0 loses");
   s.inputs = {ports::gen("x", "the dividend"), ports::gen("y", 1, "the divisor")};
   s.outputs = {ports::gen("out", "the remainder, with the sign of y")};
   s.emit = [](EmitContext& ctx) {

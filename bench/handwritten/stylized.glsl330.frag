@@ -112,7 +112,7 @@ void main() {
   float foamTexture = 0.5 * (texture(t2_foam, xz * 0.1 + scroll).r + texture(t2_foam, xz * 0.08 + vec2(-scroll.y, scroll.x)).r);
   float edgeFoam = step(0.35, foamTexture * (1.0 - clamp(thickness * 2.0, 0.0, 1.0)));
   float shoreDepth = min(thickness, 1.5);
-  float band = sin(shoreDepth * 5.0 - u_phase2) * 0.5 + 0.5;
+  float band = sin(shoreDepth * 5.0 + u_phase2) * 0.5 + 0.5;  // + : the bands run ashore
   float shore = band * band * 0.8 * (1.0 - shoreDepth / 1.5);
   float foam = max(shore, edgeFoam);
 

@@ -24,6 +24,24 @@ uniform highp samplerCube u_environment;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// The unit half vector of two safe-normalised vectors l and v (blinn_phong, ggx_specular):
+// normalize(l + v). Where they are more than 90 degrees apart, l + v is short and carries
+// the rounding of both lengths (|l| and |v| are 1 only within a float32 ulp) magnified
+// by 1 / |l + v|: a low sun behind the water seen at grazing turns H by ~1e-6 rad, which a
+// smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
+// perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
+// computed sum is the length rounding and is taken out. Vectors of different lengths (one
+// zero, or a short one from a tiny input) keep the plain sum.
+vec3 wg_half_vector(vec3 l, vec3 v) {
+  vec3 s = l + v;
+  vec3 d = l - v;
+  float dd = dot(d, d);
+  float ll = dot(l, l), vv = dot(v, v);
+  bool oneLength = abs(ll - vv) <= 1e-3 * max(ll, vv);
+  vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
+  return wg_safe_normalize_vec3(h);
+}
+
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
 // Guarded functions here compute both sides first and choose with ?: between plain values:
@@ -61,13 +79,17 @@ float wg_fresnel_schlick(float cosi, float f0) {
 
 // ggx_specular: Cook-Torrance microfacet specular of the advanced shaders tutorial (GGX D, Schlick F, Smith G).
 
-// GGX / Trowbridge-Reitz normal distribution, a2 / (pi d^2) with d written as
-// NdotH^2 a2 + (1 - NdotH^2) instead of NdotH^2 (a2 - 1) + 1: in float32 the latter
-// cancels to 0 at NdotH = 1 for a smooth surface (a2 < 6e-8) and divides by zero. With
-// NdotH in [0, 1], d >= min(a2, 1) > 0.
-float wg_ggx_specular_distribution(float ndoth, float a2) {
+// GGX / Trowbridge-Reitz normal distribution a2 / (pi d^2), d = NdotH^2 a2 + (1 - NdotH^2)
+// (the textbook's NdotH^2 (a2 - 1) + 1 cancels to 0 in float32 at NdotH = 1 for a smooth
+// surface, a2 < 6e-8, and divides by zero). Where H is within a degree of N, where a smooth
+// surface's D is steepest (the sun's glitter on the water), 1 - NdotH^2 keeps only a few
+// bits; for unit N and H it equals |N x H|^2 (sin2), which keeps them, so that is used
+// where N and H are unit (len2 = |N|^2 |H|^2 within 1e-3 of 1) and H faces N. Elsewhere (a
+// clamped NdotH of 0, a zero or short vector) the textbook term: d >= min(a2, 1) > 0.
+float wg_ggx_specular_distribution(float ndoth, float sin2, float len2, float a2) {
   float c2 = ndoth * ndoth;
-  float d = c2 * a2 + (1.0 - c2);
+  float s2 = ndoth > 0.0 && abs(len2 - 1.0) < 1e-3 ? sin2 : 1.0 - c2;
+  float d = c2 * a2 + s2;
   return a2 / (3.14159265358979 * d * d);
 }
 
@@ -88,14 +110,15 @@ vec4 wg_ggx_specular(vec3 n, vec3 v, vec3 l, float roughness, float f0) {
   vec3 nn = wg_safe_normalize_vec3(n);
   vec3 vv = wg_safe_normalize_vec3(v);
   vec3 ll = wg_safe_normalize_vec3(l);
-  vec3 h = wg_safe_normalize_vec3(ll + vv);
+  vec3 h = wg_half_vector(ll, vv);
   float rough = clamp(roughness, 0.001, 1.0);
   float a = rough * rough;
   float ndotl = clamp(dot(nn, ll), 0.0, 1.0);
   float ndotv = clamp(dot(nn, vv), 0.0, 1.0);
   float ndoth = clamp(dot(nn, h), 0.0, 1.0);
   float vdoth = clamp(dot(vv, h), 0.0, 1.0);
-  float d = wg_ggx_specular_distribution(ndoth, a * a);
+  vec3 nxh = cross(nn, h);
+  float d = wg_ggx_specular_distribution(ndoth, dot(nxh, nxh), dot(nn, nn) * dot(h, h), a * a);
   float f = wg_fresnel_schlick(vdoth, f0);
   float brdf = d * f * wg_ggx_specular_visibility(ndotl, ndotv, rough);
   return vec4(brdf, d, f, ndotl);

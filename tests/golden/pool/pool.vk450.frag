@@ -41,6 +41,24 @@ vec3 wg_camera_forward(mat4 view) {
   return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
 }
 
+// The unit half vector of two safe-normalised vectors l and v (blinn_phong, ggx_specular):
+// normalize(l + v). Where they are more than 90 degrees apart, l + v is short and carries
+// the rounding of both lengths (|l| and |v| are 1 only within a float32 ulp) magnified
+// by 1 / |l + v|: a low sun behind the water seen at grazing turns H by ~1e-6 rad, which a
+// smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
+// perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
+// computed sum is the length rounding and is taken out. Vectors of different lengths (one
+// zero, or a short one from a tiny input) keep the plain sum.
+vec3 wg_half_vector(vec3 l, vec3 v) {
+  vec3 s = l + v;
+  vec3 d = l - v;
+  float dd = dot(d, d);
+  float ll = dot(l, l), vv = dot(v, v);
+  bool oneLength = abs(ll - vv) <= 1e-3 * max(ll, vv);
+  vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
+  return wg_safe_normalize_vec3(h);
+}
+
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0.
 // Guarded functions here compute both sides first and choose with ?: between plain values:
@@ -57,10 +75,21 @@ float wg_safe_pow_float(float x, float y) {
 
 // pow(max(N.H, 0), shininess) with H = normalize(L + V). When L = -V the half vector is
 // zero and N.H = 0, so the highlight is 0 (the safe pow: 0^s = 0 for s > 0, 1 for s <= 0).
+// Near the lobe's peak N.H is within 1e-5 of 1, where float32 holds it to a few digits and
+// a sharp exponent (2048) multiplies its relative error: there the power is formed from
+// sin^2 = |N x H|^2, which keeps its digits, as exp(shininess * ln(cos)) with
+// ln(cos) = ln(1 - sin^2) / 2 = -(sin^2 / 2)(1 + sin^2 / 2 + sin^4 / 3) (the rest of the
+// series is below sin^6 / 8 < 1.3e-7 of it for sin^2 < 0.01). N and H must be unit for
+// that (|N|^2 |H|^2 within 1e-3 of 1); elsewhere the safe pow of N.H.
 float wg_blinn_phong_specular(vec3 n, vec3 v, vec3 l, float shininess) {
-  vec3 h = wg_safe_normalize_vec3(wg_safe_normalize_vec3(l) + wg_safe_normalize_vec3(v));
-  float ndoth = clamp(dot(wg_safe_normalize_vec3(n), h), 0.0, 1.0);
-  return wg_safe_pow_float(ndoth, shininess);
+  vec3 h = wg_half_vector(wg_safe_normalize_vec3(l), wg_safe_normalize_vec3(v));
+  vec3 nn = wg_safe_normalize_vec3(n);
+  float ndoth = clamp(dot(nn, h), 0.0, 1.0);
+  vec3 nxh = cross(nn, h);
+  float sin2 = dot(nxh, nxh);
+  bool nearPeak = ndoth > 0.0 && sin2 < 0.01 && abs(dot(nn, nn) * dot(h, h) - 1.0) < 1e-3;
+  float lnCos = -0.5 * sin2 * (1.0 + sin2 * (0.5 + sin2 / 3.0));
+  return nearPeak ? exp(shininess * lnCos) : wg_safe_pow_float(ndoth, shininess);
 }
 
 // The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is
