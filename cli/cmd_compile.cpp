@@ -74,6 +74,10 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
   for (const auto& n : names) {
     std::stringstream ss(n);
     std::string part;
+    if (n.empty()) {
+      std::cerr << "watergraph: --target is empty (glsl330, es300, vk450, msl, hlsl, c-header)\n";
+      return false;
+    }
     while (std::getline(ss, part, ',')) {
       if (auto t = parseTarget(part)) {
         bool dup = false;

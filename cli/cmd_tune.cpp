@@ -28,6 +28,8 @@
 namespace wg::cli {
 namespace {
 
+constexpr size_t kMaxTuneTimes = 64;
+
 struct TuneArgs {
   std::string graph;
   double minPsnr = NAN, maxAbsError = NAN;
@@ -83,14 +85,18 @@ int runTune(const TuneArgs& args) {
     }
   }
   sweep.times.clear();
+  // Decimal numbers only: strtod alone also took " 1" and hexadecimal "0x10".
+  static const std::regex decimal(R"([-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
   for (const auto& t : splitCommas(args.times)) {
-    char* end = nullptr;
-    double v = std::strtod(t.c_str(), &end);
-    if (t.empty() || *end != '\0' || !fitsFiniteFloat(v))  // u_time is a float
-      return usage("--times must be finite numbers within float range, separated by commas (got '" + t + "')");
+    double v = std::regex_match(t, decimal) ? std::strtod(t.c_str(), nullptr) : NAN;
+    if (!fitsFiniteFloat(v))  // u_time is a float
+      return usage("--times must be finite decimal numbers within float range, separated by commas (got '" + t + "')");
     sweep.times.push_back(v);
   }
   if (sweep.times.empty()) return usage("--times needs at least one time");
+  // Every time is rendered from every camera for every configuration tried.
+  if (sweep.times.size() > kMaxTuneTimes)
+    return usage("--times gives " + std::to_string(sweep.times.size()) + " times; at most " + std::to_string(kMaxTuneTimes));
   if (!args.writePreset.empty() && !isIdentifier(args.writePreset))
     return usage("--write-preset '" + args.writePreset + "' is not an identifier (letters, digits, _; not starting with a digit)");
 

@@ -82,6 +82,15 @@ TEST(TuneCli, ABudgetNothingMeetsIsOneMessageAndExit1) {
     EXPECT_EQ(r.exit, 2) << bad;
     EXPECT_NE(r.err.find("within float range"), std::string::npos) << bad << ": " << r.err;
   }
+  // Decimal numbers only (strtod took a leading space and hexadecimal), and at most 64.
+  std::string many;
+  for (int i = 0; i < 65; ++i) many += (i ? "," : "") + std::to_string(i);
+  for (const std::string& bad : {std::string("' 1'"), std::string("0x10"), std::string("1,,2"), many}) {
+    r = wg("tune " + test::shellQuote(dir + "/g.json") + " --min-psnr 45 --size 64x36 --runs 1 --times " + bad);
+    EXPECT_EQ(r.exit, 2) << bad;
+    EXPECT_TRUE(r.err.find("finite decimal numbers") != std::string::npos || r.err.find("at most 64") != std::string::npos)
+        << bad << ": " << r.err;
+  }
   EXPECT_EQ(test::readFile(dir + "/g.json"), before) << "nothing written";
   std::filesystem::remove_all(dir);
 }

@@ -111,6 +111,15 @@ TEST(CliCompile, TwoGraphsOfOneFileNameAreRefusedBeforeWriting) {
   EXPECT_EQ(r.exit, 0) << r.err;
 }
 
+TEST(CliCompile, AnEmptyTargetIsAUsageError) {
+  TempDir tmp;
+  CmdResult r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lake.json")) + " -o " + shellQuote(tmp / "out") +
+                      " --target ''");
+  EXPECT_EQ(r.exit, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("--target is empty"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(tmp / "out"));
+}
+
 TEST(CliCompile, MissingRequiredOptionIsAUsageError) {
   CmdResult r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lake.json")));
   EXPECT_EQ(r.exit, 2) << r.out << r.err;
