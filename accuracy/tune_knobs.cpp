@@ -33,6 +33,7 @@ std::string compiledText(const Graph& graph, Target target) {
   CompileOptions options;
   options.targets = {target};
   options.validate = false;  // only the text matters here; the measured configurations are validated
+  options.checkPresets = false;  // one configuration of the knobs; the graph's presets were checked once
   auto compiled = compileGraph(graph, defaultRegistry(), options, diags);
   if (!compiled) return "";  // does not compile: distinct from anything that does (tune reports it)
   std::string all;

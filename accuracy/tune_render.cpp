@@ -96,6 +96,9 @@ std::unique_ptr<GlTuneMeasurements::Entry> GlTuneMeasurements::make(const std::o
   Diagnostics diags;
   CompileOptions options;
   options.targets = {sweep_.target, Target::Vk450};
+  // The reference and the graph as written are compiled with their presets checked (the
+  // configuration nullopt is the graph as written); the knob configurations are variants.
+  options.checkPresets = !config;
   auto compiled = compileGraph(g, defaultRegistry(), options, diags);
   if (!compiled)
     throw std::runtime_error((config ? configText(knobs_, *config) : std::string("the graph as written")) +

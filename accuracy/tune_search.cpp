@@ -31,8 +31,8 @@ std::string TuneBudget::text() const {
   return s + " on every frame";
 }
 
-size_t repeatsToShowASaving(size_t n) {
-  // The smallest k with P(X >= k) <= 0.1 for X ~ Binomial(n, 1/2): how many of n paired
+size_t repeatsToShowASaving(size_t n, double level) {
+  // The smallest k with P(X >= k) <= level for X ~ Binomial(n, 1/2): how many of n paired
   // repeats must agree before chance (two configurations of one cost) is an unlikely cause.
   std::vector<double> pmf(n + 1);
   pmf[0] = std::pow(0.5, static_cast<double>(n));
@@ -41,20 +41,21 @@ size_t repeatsToShowASaving(size_t n) {
   size_t k = n + 1;
   for (size_t j = n + 1; j-- > 0;) {
     tail += pmf[j];
-    if (tail > 0.1) break;
+    if (tail > level) break;
     k = j;
   }
   return k;
 }
 
-double timeSaved(const TuneCost& candidate, const TuneCost& current) {
+double timeSaved(const TuneCost& candidate, const TuneCost& current, double level) {
   double saved = current.msPerMegapixel - candidate.msPerMegapixel;
   if (!(saved > 0)) return 0;
   const size_t n = candidate.repeats.size();
-  if (n == 0 || current.repeats.size() != n) return saved;
+  if (n == 0 && current.repeats.empty()) return saved;  // exact figures
+  if (current.repeats.size() != n) return 0;             // not paired: shows nothing
   size_t faster = 0;
   for (size_t i = 0; i < n; ++i) faster += candidate.repeats[i] < current.repeats[i];
-  return faster >= repeatsToShowASaving(n) ? saved : 0;
+  return faster >= repeatsToShowASaving(n, level) ? saved : 0;
 }
 
 std::string levelText(const nlohmann::json& level) { return level.is_string() ? level.get<std::string>() : level.dump(); }
@@ -163,10 +164,14 @@ TuneResult tuneSearch(const std::vector<TuneKnob>& knobs, const TuneBudget& budg
     currentCost = costs[0];
     result.lastRoundCurrent = currentCost;
     const Candidate* best = nullptr;
+    // Each candidate is one test: at 10 % each, one of seven would show a saving by chance
+    // every other round. The level is shared among them (Bonferroni), so a round takes a
+    // saving by chance at most one time in ten.
+    const double level = kSavingTestLevel / static_cast<double>(candidates.size());
     for (size_t i = 0; i < candidates.size(); ++i) {
       Candidate& c = candidates[i];
       c.cost = costs[i + 1];
-      c.savedMs = timeSaved(c.cost, currentCost);
+      c.savedMs = timeSaved(c.cost, currentCost, level);
       c.savedSpirv = currentCost.spirvInstructions - c.cost.spirvInstructions;
       c.errorIncrease = budget.usage(c.error) - budget.usage(currentError);
       bool meets = budget.met(c.error);

@@ -311,7 +311,10 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
     std::map<std::string, std::string> byName;
     for (const auto& path : args.graphs) {
       auto [it, fresh] = byName.emplace(graphBaseName(path), path);
-      if (fresh || it->second == path) continue;
+      std::error_code ec1, ec2;
+      if (fresh || it->second == path ||
+          std::filesystem::weakly_canonical(it->second, ec1) == std::filesystem::weakly_canonical(path, ec2))
+        continue;  // the same file, however spelled: compiled again into the same files
       std::cerr << "watergraph: '" << it->second << "' and '" << path << "' would both write " << args.outDir << "/"
                 << it->first << (args.subdirs ? "/" : ".*") << "; compile them into different output folders\n";
       return kExitUsageOrIo;

@@ -85,12 +85,12 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
           return true;
         },
         false);
-    if (duplicate) {
-      std::cerr << "watergraph: --options names a key twice (got '" << args.options << "')\n";
-      return kExitUsageOrIo;
-    }
     if (!options.is_object()) {
       std::cerr << "watergraph: --options must be a JSON object (got '" << args.options << "')\n";
+      return kExitUsageOrIo;
+    }
+    if (duplicate) {
+      std::cerr << "watergraph: --options names a key twice (got '" << args.options << "')\n";
       return kExitUsageOrIo;
     }
   }

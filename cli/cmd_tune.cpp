@@ -4,6 +4,7 @@
 // runtime (accuracy/tune_render.h); prints the path, optionally writes the result into the
 // graph as a preset and plots every tried configuration.
 #include <chrono>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -85,10 +86,16 @@ int runTune(const TuneArgs& args) {
     }
   }
   sweep.times.clear();
-  // Decimal numbers only: strtod alone also took " 1" and hexadecimal "0x10".
-  static const std::regex decimal(R"([-+]?([0-9]+\.?[0-9]*|\.[0-9]+)([eE][-+]?[0-9]+)?)");
+  // Decimal numbers only: strtod alone also took " 1" and hexadecimal "0x10". (Checked by
+  // characters, not std::regex, which recurses per character of a long argument.)
+  auto decimal = [](const std::string& t) {
+    return !t.empty() && t.size() <= 64 &&
+           t.find_first_not_of("0123456789.eE+-") == std::string::npos && std::isdigit(static_cast<unsigned char>(t.back()));
+  };
   for (const auto& t : splitCommas(args.times)) {
-    double v = std::regex_match(t, decimal) ? std::strtod(t.c_str(), nullptr) : NAN;
+    char* end = nullptr;
+    double v = decimal(t) ? std::strtod(t.c_str(), &end) : NAN;
+    if (end && *end != '\0') v = NAN;
     if (!fitsFiniteFloat(v))  // u_time is a float
       return usage("--times must be finite decimal numbers within float range, separated by commas (got '" + t + "')");
     sweep.times.push_back(v);
@@ -218,7 +225,7 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
       "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost (faster than the "
       "current configuration in enough of the paired, interleaved repeats that chance is unlikely: a one-sided sign "
-      "test at 10 %; or fewer SPIR-V instructions and not slower by that test); the one with the "
+      "test, its 10 % shared among the round's candidates; or fewer SPIR-V instructions and not slower); the one with the "
       "least error increase per ms/MP saved is taken (ties: fewer SPIR-V instructions, then the knob's name), until "
       "none qualifies. Cost: CPU ms per megapixel (the process's CPU time across each frame, llvmpipe's threads included, "
       "so other programs on the machine do not inflate it), the median of interleaved repeats of every camera at the first time, timed "
@@ -237,7 +244,7 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
   cmd->add_option("--cameras", args->cameras, "camera presets, comma separated (above, grazing, underwater, topdown)");
   cmd->add_option("--times", args->times, "scene times in seconds, comma separated")->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();
-  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (a time saving counts when a one-sided sign test over them passes at 10 %: 7 of 9, all of 5; under 4 none can, and the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (a time saving counts when a one-sided sign test over them passes, its 10 % shared among the round's candidates: with 9 repeats 8 of 9 for up to five candidates, all 9 for more; with too few none can, and the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
   cmd->add_option("--write-preset", args->writePreset,
                   "write the chosen configuration into the graph as this preset (canonical form; replaces one of that name)");

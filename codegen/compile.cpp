@@ -172,7 +172,7 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   const Graph& graph = options.preset.empty() ? graphAsWritten : withPreset;
   auto program = buildProgram(graph, registry, diags);
   if (!program) return std::nullopt;
-  if (!checkOtherPresets(graphAsWritten, options.preset, registry, diags)) return std::nullopt;
+  if (options.checkPresets && !checkOtherPresets(graphAsWritten, options.preset, registry, diags)) return std::nullopt;
   CompileResult result;
   result.nodesTotal = program->totalNodes;
   // Nodes, not ops: a node may expand into several ops (its per-draw split, its stages).

@@ -4,10 +4,9 @@
 #include <cerrno>
 #include <cstring>
 #include <fcntl.h>
-#include <map>
 #include <mutex>
+#include <set>
 #include <sys/stat.h>
-#include <tuple>
 #include <unistd.h>
 
 #include <stb/stb_image.h>
@@ -79,24 +78,36 @@ bool decodePng(const std::string& realPath, DecodedPng* out, std::string* error)
 }
 
 std::string checkPngDecodes(const std::string& realPath) {
-  struct stat st {};
-  if (::stat(realPath.c_str(), &st) != 0) return std::strerror(errno);
-  using Key = std::tuple<std::string, long long, long long, long long>;
-  Key key{realPath, static_cast<long long>(st.st_size), static_cast<long long>(st.st_mtim.tv_sec),
-          static_cast<long long>(st.st_mtim.tv_nsec)};
+  // The file's identity and both times: a copy that keeps the modification time (cp -p,
+  // tar) still has another inode or change time. Only files that decoded are remembered: a
+  // failure may be passing (too many open files) and is decoded again next time.
+  auto identity = [](const std::string& path, std::vector<long long>* key) {
+    struct stat st {};
+    if (::stat(path.c_str(), &st) != 0) return false;
+    *key = {static_cast<long long>(st.st_dev),        static_cast<long long>(st.st_ino),
+            static_cast<long long>(st.st_size),       static_cast<long long>(st.st_mtim.tv_sec),
+            static_cast<long long>(st.st_mtim.tv_nsec), static_cast<long long>(st.st_ctim.tv_sec),
+            static_cast<long long>(st.st_ctim.tv_nsec)};
+    return true;
+  };
+  std::vector<long long> before;
+  if (!identity(realPath, &before)) return std::strerror(errno);
   static std::mutex mutex;
-  static std::map<Key, std::string> known;
+  static std::set<std::pair<std::string, std::vector<long long>>> decoded;
   {
     std::lock_guard<std::mutex> lock(mutex);
-    if (auto it = known.find(key); it != known.end()) return it->second;
+    if (decoded.count({realPath, before})) return "";
   }
   DecodedPng image;
   std::string why;
-  decodePng(realPath, &image, &why);
+  if (!decodePng(realPath, &image, &why)) return why;
+  std::vector<long long> after;
+  // Replaced while it was read: what was decoded is not known to be that file.
+  if (!identity(realPath, &after) || after != before) return "";
   std::lock_guard<std::mutex> lock(mutex);
-  if (known.size() >= 256) known.clear();  // a long editor session: forget, do not grow
-  known.emplace(std::move(key), why);
-  return why;
+  if (decoded.size() >= 256) decoded.clear();  // a long editor session: forget, do not grow
+  decoded.emplace(realPath, std::move(before));
+  return "";
 }
 
 }  // namespace wg

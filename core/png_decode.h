@@ -16,9 +16,10 @@ struct DecodedPng {
 // with *error set when the file cannot be read or decoded.
 bool decodePng(const std::string& realPath, DecodedPng* out, std::string* error);
 
-// "" when the file decodes, else why not. Remembered per path, size and modification
-// time, so validate and the editor, which check every texture on every compile, decode a
-// file once until it changes.
+// "" when the file decodes, else why not. A file that decoded is remembered by its path,
+// inode, size and modification and change times, so validate and the editor, which check
+// every texture on every compile, decode it once until it changes; a failure is not
+// remembered (it may pass).
 std::string checkPngDecodes(const std::string& realPath);
 
 }  // namespace wg

@@ -224,6 +224,9 @@ class Resolver {
                               const std::string& nodeId, const std::string& directory) {
     TextureFile texture;
     std::string why = checkOption(option, v.optionValue, directory, &texture);
+    // A preset's texture counts in the graph's budget too: fifty presets naming fifty large
+    // files would otherwise be fifty decodes on every validate.
+    if (why.empty()) why = chargeTextureBudget(texture);
     if (why.empty()) why = decodedTexture(texture);
     if (!why.empty())
       diags_.error(DiagCode::InvalidOption, v.where, "preset '" + preset.name + "': option '" + v.option + "' " + why,

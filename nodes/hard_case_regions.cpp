@@ -71,6 +71,7 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ggx_specular", "mirror smooth at the highlight", "mirror_highlight", "roughness"},
       {"ggx_specular", "light opposite the viewer (H = 0)", "half_vector_zero", "view light"},
       {"ggx_specular", "low sun behind the water, grazing view (glitter)", "half_vector_cancelling", "view light"},
+      {"ggx_specular", "normal just under the normalisation floor", "unnormalised", "normal"},
       {"ggx_specular", "zero-length vectors", "zero_vector", "normal view light"},
       {"ggx_specular", "roughness above 1", "outside_domain", "roughness", 0, 1},
       // depth
@@ -116,6 +117,7 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"lambert", "unnormalised, parallel", "unnormalised", "normal light"},
       {"blinn_phong", "light opposite the viewer (H = 0)", "half_vector_zero", "view light"},
       {"blinn_phong", "low sun behind the water, grazing view (glitter)", "half_vector_cancelling", "view light"},
+      {"blinn_phong", "normal just under the normalisation floor", "unnormalised", "normal"},
       {"blinn_phong", "shininess 0 with N.H = 0", "pow_base_zero", "normal"},
       {"blinn_phong", "grazing view, huge shininess", "grazing", "view"},
       {"blinn_phong", "zero-length normal", "zero_vector", "normal"},

@@ -35,6 +35,9 @@ const Value kZero = Value::vector({0, 0, 0});
 // rounding of both, magnified about 40 times, into the sharp lobes of smooth water.
 const Value kGlitterView = Value::vector({0.99996192306417131, 0.0087265354983739347, 0});
 const Value kGlitterLight = Value::vector({-0.99984769515639127, 0.017452406437283512, 0});
+// A normal so short that safe normalisation (dot floored at 1e-30) leaves it 0.9996 long:
+// not unit, so the forms that hold only for unit vectors must not be taken.
+const Value kShortNormal = Value::vector({0, 9.996e-16, 0});
 // Why the half-vector lobes' bound follows their inputs' rounding (NodeSpec::conditionRoundings).
 const char* const kHalfVectorConditioning =
     "grows where L + V nearly cancels (a low sun behind the water, seen at grazing: its glitter path): H = "
@@ -129,6 +132,8 @@ NodeSpec blinnPhongNode() {
       {"low sun behind the water, grazing view (glitter)",
        {{"normal", kUp}, {"view", kGlitterView}, {"light", kGlitterLight}, {"shininess", Value::scalar(2048)}}, {},
        "near the lobe's peak, within the bound its inputs' rounding allows", 0, 1},
+      {"normal just under the normalisation floor", {{"normal", kShortNormal}, {"view", kUp}, {"light", kUp}}, {},
+       "safe-normalised to length 0.9996, not 1: the textbook power, as the reference", 0, 1},
       {"shininess 0 with N.H = 0", {{"normal", Value::vector({1, 0, 0})}, {"view", kUp}, {"light", kUp},
                                     {"shininess", Value::scalar(0)}}, {}, "pow base 0: 1, finite", 0, 1},
       {"grazing view, huge shininess", {{"normal", kUp}, {"view", Value::vector({1, 0, 0})},
@@ -264,6 +269,8 @@ NodeSpec ggxSpecularNode() {
        {}, "finite", 0, 1e12},
       {"low sun behind the water, grazing view (glitter)", {{"normal", kUp}, {"view", kGlitterView}, {"light", kGlitterLight}},
        {}, "D near its peak (H within a degree of N), within the bound its inputs' rounding allows", 0, 1e12},
+      {"normal just under the normalisation floor", {{"normal", kShortNormal}, {"view", kUp}, {"light", kUp}}, {},
+       "safe-normalised to length 0.9996, not 1: the textbook D of that vector, as the reference", 0, 1e12},
       {"zero-length vectors", {{"normal", kZero}, {"view", kZero}, {"light", kZero}}, {}, "0, not NaN", 0, 0},
       {"roughness above 1", {{"roughness", Value::scalar(5)}}, {}, "clamped to 1, finite", 0, 1e12},
   };

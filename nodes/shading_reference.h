@@ -2,8 +2,10 @@
 // Double-precision references of the optics, depth-and-colour and scattering nodes
 // (reflect_dir, refract_dir, lambert, blinn_phong, phong_specular, ggx_specular,
 // linearize_depth, water_depth, absorption, haze, color_variation, subsurface). Each
-// mirrors its GLSL function in nodes/glsl/ line for line (same clamps, same guards); the
-// nodes' eval and their tests share them.
+// mirrors its GLSL function in nodes/glsl/ (same clamps, same guards), except where the
+// GLSL takes another road to the same value for float32's sake (blinn_phong's and
+// ggx_specular's half vector and their terms near the lobe's peak: the textbook form,
+// exact in double, is kept here); the nodes' eval and their tests share them.
 #include <cstdint>
 
 #include "core/value.h"

@@ -15,13 +15,14 @@ vec4 wg_safe_normalize_vec4(vec4 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 // smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
 // perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
 // computed sum is the length rounding and is taken out. Vectors of different lengths (one
-// zero, or a short one from a tiny input) keep the plain sum.
+// zero, or a short one from a tiny input) keep the plain sum: "one length" allows 4e-6 of
+// relative difference in the squared lengths, a few float32 roundings of unit vectors'.
 vec3 wg_half_vector(vec3 l, vec3 v) {
   vec3 s = l + v;
   vec3 d = l - v;
   float dd = dot(d, d);
   float ll = dot(l, l), vv = dot(v, v);
-  bool oneLength = abs(ll - vv) <= 1e-3 * max(ll, vv);
+  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);
   vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
   return wg_safe_normalize_vec3(h);
 }

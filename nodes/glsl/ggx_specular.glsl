@@ -5,11 +5,12 @@
 // surface, a2 < 6e-8, and divides by zero). Where H is within a degree of N, where a smooth
 // surface's D is steepest (the sun's glitter on the water), 1 - NdotH^2 keeps only a few
 // bits; for unit N and H it equals |N x H|^2 (sin2), which keeps them, so that is used
-// where N and H are unit (len2 = |N|^2 |H|^2 within 1e-3 of 1) and H faces N. Elsewhere (a
+// where N and H are unit (len2 = |N|^2 |H|^2 within 4e-6 of 1, a few float32 roundings) and
+// H faces N. Elsewhere (a
 // clamped NdotH of 0, a zero or short vector) the textbook term: d >= min(a2, 1) > 0.
 float wg_ggx_specular_distribution(float ndoth, float sin2, float len2, float a2) {
   float c2 = ndoth * ndoth;
-  float s2 = ndoth > 0.0 && abs(len2 - 1.0) < 1e-3 ? sin2 : 1.0 - c2;
+  float s2 = ndoth > 0.0 && abs(len2 - 1.0) < 4e-6 ? sin2 : 1.0 - c2;
   float d = c2 * a2 + s2;
   return a2 / (3.14159265358979 * d * d);
 }

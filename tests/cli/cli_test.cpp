@@ -109,6 +109,10 @@ TEST(CliCompile, TwoGraphsOfOneFileNameAreRefusedBeforeWriting) {
   // validate writes nothing: both are checked.
   CmdResult r = wgRun("validate " + shellQuote(tmp / "a/water.json") + " " + shellQuote(tmp / "b/water.json"));
   EXPECT_EQ(r.exit, 0) << r.err;
+  // One file, spelled two ways, is no clash.
+  r = wgRun("compile " + shellQuote(tmp / "a/water.json") + " " + shellQuote(tmp / "a/../a/water.json") + " -o " +
+            shellQuote(tmp / "out") + " --target glsl330");
+  EXPECT_EQ(r.exit, 0) << r.err;
 }
 
 TEST(CliCompile, AnEmptyTargetIsAUsageError) {

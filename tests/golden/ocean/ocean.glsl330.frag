@@ -27,13 +27,14 @@ vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 // smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
 // perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
 // computed sum is the length rounding and is taken out. Vectors of different lengths (one
-// zero, or a short one from a tiny input) keep the plain sum.
+// zero, or a short one from a tiny input) keep the plain sum: "one length" allows 4e-6 of
+// relative difference in the squared lengths, a few float32 roundings of unit vectors'.
 vec3 wg_half_vector(vec3 l, vec3 v) {
   vec3 s = l + v;
   vec3 d = l - v;
   float dd = dot(d, d);
   float ll = dot(l, l), vv = dot(v, v);
-  bool oneLength = abs(ll - vv) <= 1e-3 * max(ll, vv);
+  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);
   vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
   return wg_safe_normalize_vec3(h);
 }
@@ -80,11 +81,12 @@ float wg_fresnel_schlick(float cosi, float f0) {
 // surface, a2 < 6e-8, and divides by zero). Where H is within a degree of N, where a smooth
 // surface's D is steepest (the sun's glitter on the water), 1 - NdotH^2 keeps only a few
 // bits; for unit N and H it equals |N x H|^2 (sin2), which keeps them, so that is used
-// where N and H are unit (len2 = |N|^2 |H|^2 within 1e-3 of 1) and H faces N. Elsewhere (a
+// where N and H are unit (len2 = |N|^2 |H|^2 within 4e-6 of 1, a few float32 roundings) and
+// H faces N. Elsewhere (a
 // clamped NdotH of 0, a zero or short vector) the textbook term: d >= min(a2, 1) > 0.
 float wg_ggx_specular_distribution(float ndoth, float sin2, float len2, float a2) {
   float c2 = ndoth * ndoth;
-  float s2 = ndoth > 0.0 && abs(len2 - 1.0) < 1e-3 ? sin2 : 1.0 - c2;
+  float s2 = ndoth > 0.0 && abs(len2 - 1.0) < 4e-6 ? sin2 : 1.0 - c2;
   float d = c2 * a2 + s2;
   return a2 / (3.14159265358979 * d * d);
 }
