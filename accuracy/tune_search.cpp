@@ -164,14 +164,15 @@ TuneResult tuneSearch(const std::vector<TuneKnob>& knobs, const TuneBudget& budg
     currentCost = costs[0];
     result.lastRoundCurrent = currentCost;
     const Candidate* best = nullptr;
-    // Each candidate is one test: at 10 % each, one of seven would show a saving by chance
-    // every other round. The level is shared among them (Bonferroni), so a round takes a
-    // saving by chance at most one time in ten.
-    const double level = kSavingTestLevel / static_cast<double>(candidates.size());
+    // Each candidate is its own test at 10 %, not a share of 10 % among the round's
+    // (Bonferroni): measured, sharing it made 9 of 9 repeats the rule and dropped real
+    // savings (64 to 40 SSR steps, 8 % lower) on this shared machine. A saving taken by
+    // chance costs no quality (every step meets the budget and the choice is rendered
+    // again), and the final timing beside the reference reports what it really saves.
     for (size_t i = 0; i < candidates.size(); ++i) {
       Candidate& c = candidates[i];
       c.cost = costs[i + 1];
-      c.savedMs = timeSaved(c.cost, currentCost, level);
+      c.savedMs = timeSaved(c.cost, currentCost);
       c.savedSpirv = currentCost.spirvInstructions - c.cost.spirvInstructions;
       c.errorIncrease = budget.usage(c.error) - budget.usage(currentError);
       bool meets = budget.met(c.error);

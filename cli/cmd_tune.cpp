@@ -225,7 +225,7 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "a greedy descent tries lowering each knob one level; a candidate qualifies when every frame meets the budget "
       "(PSNR over RGB with peak 1, max abs error; NaN or Inf anywhere rejects it) and it saves cost (faster than the "
       "current configuration in enough of the paired, interleaved repeats that chance is unlikely: a one-sided sign "
-      "test, its 10 % shared among the round's candidates; or fewer SPIR-V instructions and not slower); the one with the "
+      "test at 10 %; or fewer SPIR-V instructions and not slower by that test); the one with the "
       "least error increase per ms/MP saved is taken (ties: fewer SPIR-V instructions, then the knob's name), until "
       "none qualifies. Cost: CPU ms per megapixel (the process's CPU time across each frame, llvmpipe's threads included, "
       "so other programs on the machine do not inflate it), the median of interleaved repeats of every camera at the first time, timed "
@@ -244,7 +244,7 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
   cmd->add_option("--cameras", args->cameras, "camera presets, comma separated (above, grazing, underwater, topdown)");
   cmd->add_option("--times", args->times, "scene times in seconds, comma separated")->capture_default_str();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frames")->capture_default_str();
-  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (a time saving counts when a one-sided sign test over them passes, its 10 % shared among the round's candidates: with 9 repeats 8 of 9 for up to five candidates, all 9 for more; with too few none can, and the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
+  cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (a time saving counts when a one-sided sign test over them passes at 10 %: 7 of 9, all of 5; under 4 none can, and the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
   cmd->add_option("--write-preset", args->writePreset,
                   "write the chosen configuration into the graph as this preset (canonical form; replaces one of that name)");

@@ -139,7 +139,7 @@ TEST(TuneSearch, ASavingTheRepeatsDoNotShowIsNotTaken) {
   std::vector<size_t> needed;
   for (size_t n : {1, 3, 4, 5, 6, 7, 9, 10, 20}) needed.push_back(repeatsToShowASaving(n));
   EXPECT_EQ(needed, (std::vector<size_t>{2, 4, 4, 5, 6, 6, 7, 8, 14}));
-  // A round of 7 candidates shares the 10 %: each needs all 9 of 9 (8 of 9 by chance: 2 %).
+  // A stricter level asks for more: at 1.4 % all 9 of 9 (8 of 9 by chance: 2 %).
   EXPECT_EQ(repeatsToShowASaving(9, 0.1 / 7), 9u);
   // Repeats that are not paired (another count) show nothing.
   EXPECT_EQ(timeSaved(TuneCost{90, 1, {90, 90, 90, 90, 90}}, TuneCost{100, 1, {100, 100, 100, 100}}), 0);
