@@ -7,14 +7,13 @@
 // sin^2 = |N x H|^2, which keeps its digits, as exp(shininess * ln(cos)) with
 // ln(cos) = ln(1 - sin^2) / 2 = -(sin^2 / 2)(1 + sin^2 / 2 + sin^4 / 3) (the rest of the
 // series is below sin^6 / 4 < 2.5e-7 for sin^2 < 0.01). N and H must be unit for that
-// (|N|^2 |H|^2 within 4e-6 of 1, a few float32 roundings); elsewhere the safe pow of N.H.
+// (wg_unit_sin2 >= 0); elsewhere the safe pow of N.H.
 float wg_blinn_phong_specular(vec3 n, vec3 v, vec3 l, float shininess) {
   vec3 h = wg_half_vector(wg_safe_normalize_vec3(l), wg_safe_normalize_vec3(v));
   vec3 nn = wg_safe_normalize_vec3(n);
   float ndoth = clamp(dot(nn, h), 0.0, 1.0);
-  vec3 nxh = cross(nn, h);
-  float sin2 = dot(nxh, nxh);
-  bool nearPeak = ndoth > 0.0 && sin2 < 0.01 && abs(dot(nn, nn) * dot(h, h) - 1.0) < 4e-6;
+  float sin2 = wg_unit_sin2(nn, h);
+  bool nearPeak = ndoth > 0.0 && sin2 >= 0.0 && sin2 < 0.01;
   float lnCos = -0.5 * sin2 * (1.0 + sin2 * (0.5 + sin2 / 3.0));
   return nearPeak ? exp(shininess * lnCos) : wg_safe_pow_float(ndoth, shininess);
 }

@@ -15,16 +15,24 @@ vec4 wg_safe_normalize_vec4(vec4 v) { return v * inversesqrt(max(dot(v, v), 1e-3
 // smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
 // perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
 // computed sum is the length rounding and is taken out. Vectors of different lengths (one
-// zero, or a short one from a tiny input) keep the plain sum: "one length" allows 4e-6 of
-// relative difference in the squared lengths, a few float32 roundings of unit vectors'.
+// zero, or a short one from a tiny input) keep the plain sum.
 vec3 wg_half_vector(vec3 l, vec3 v) {
   vec3 s = l + v;
   vec3 d = l - v;
   float dd = dot(d, d);
   float ll = dot(l, l), vv = dot(v, v);
-  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);
+  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);  // a few float32 roundings of unit lengths
   vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
   return wg_safe_normalize_vec3(h);
+}
+
+// sin^2 of the angle between two safe-normalised vectors n and h as |n x h|^2, which keeps
+// its digits where the angle is small (1 - (n.h)^2 keeps few there); -1 unless both are unit
+// (|n|^2 |h|^2 within 4e-6 of 1, a few float32 roundings): a zero vector, or a short one
+// from a tiny input, is not, and its callers keep their textbook form for it.
+float wg_unit_sin2(vec3 n, vec3 h) {
+  vec3 c = cross(n, h);
+  return abs(dot(n, n) * dot(h, h) - 1.0) < 4e-6 ? dot(c, c) : -1.0;
 }
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):

@@ -4,13 +4,12 @@
 // (the textbook's NdotH^2 (a2 - 1) + 1 cancels to 0 in float32 at NdotH = 1 for a smooth
 // surface, a2 < 6e-8, and divides by zero). Where H is within a degree of N, where a smooth
 // surface's D is steepest (the sun's glitter on the water), 1 - NdotH^2 keeps only a few
-// bits; for unit N and H it equals |N x H|^2 (sin2), which keeps them, so that is used
-// where N and H are unit (len2 = |N|^2 |H|^2 within 4e-6 of 1, a few float32 roundings) and
-// H faces N. Elsewhere (a
-// clamped NdotH of 0, a zero or short vector) the textbook term: d >= min(a2, 1) > 0.
-float wg_ggx_specular_distribution(float ndoth, float sin2, float len2, float a2) {
+// bits: there sin2 (wg_unit_sin2, >= 0 for unit N and H) stands for it, where H faces N.
+// Elsewhere (a clamped NdotH of 0, a zero or short vector) the textbook term:
+// d >= min(a2, 1) > 0.
+float wg_ggx_specular_distribution(float ndoth, float sin2, float a2) {
   float c2 = ndoth * ndoth;
-  float s2 = ndoth > 0.0 && abs(len2 - 1.0) < 4e-6 ? sin2 : 1.0 - c2;
+  float s2 = ndoth > 0.0 && sin2 >= 0.0 ? sin2 : 1.0 - c2;
   float d = c2 * a2 + s2;
   return a2 / (3.14159265358979 * d * d);
 }
@@ -39,8 +38,7 @@ vec4 wg_ggx_specular(vec3 n, vec3 v, vec3 l, float roughness, float f0) {
   float ndotv = clamp(dot(nn, vv), 0.0, 1.0);
   float ndoth = clamp(dot(nn, h), 0.0, 1.0);
   float vdoth = clamp(dot(vv, h), 0.0, 1.0);
-  vec3 nxh = cross(nn, h);
-  float d = wg_ggx_specular_distribution(ndoth, dot(nxh, nxh), dot(nn, nn) * dot(h, h), a * a);
+  float d = wg_ggx_specular_distribution(ndoth, wg_unit_sin2(nn, h), a * a);
   float f = wg_fresnel_schlick(vdoth, f0);
   float brdf = d * f * wg_ggx_specular_visibility(ndotl, ndotv, rough);
   return vec4(brdf, d, f, ndotl);

@@ -81,16 +81,24 @@ vec3 wg_color_variation(vec3 base, vec3 n, vec3 sun, float height, float noise, 
 // smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
 // perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
 // computed sum is the length rounding and is taken out. Vectors of different lengths (one
-// zero, or a short one from a tiny input) keep the plain sum: "one length" allows 4e-6 of
-// relative difference in the squared lengths, a few float32 roundings of unit vectors'.
+// zero, or a short one from a tiny input) keep the plain sum.
 vec3 wg_half_vector(vec3 l, vec3 v) {
   vec3 s = l + v;
   vec3 d = l - v;
   float dd = dot(d, d);
   float ll = dot(l, l), vv = dot(v, v);
-  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);
+  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);  // a few float32 roundings of unit lengths
   vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
   return wg_safe_normalize_vec3(h);
+}
+
+// sin^2 of the angle between two safe-normalised vectors n and h as |n x h|^2, which keeps
+// its digits where the angle is small (1 - (n.h)^2 keeps few there); -1 unless both are unit
+// (|n|^2 |h|^2 within 4e-6 of 1, a few float32 roundings): a zero vector, or a short one
+// from a tiny input, is not, and its callers keep their textbook form for it.
+float wg_unit_sin2(vec3 n, vec3 h) {
+  vec3 c = cross(n, h);
+  return abs(dot(n, n) * dot(h, h) - 1.0) < 4e-6 ? dot(c, c) : -1.0;
 }
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
@@ -114,14 +122,13 @@ float wg_safe_pow_float(float x, float y) {
 // sin^2 = |N x H|^2, which keeps its digits, as exp(shininess * ln(cos)) with
 // ln(cos) = ln(1 - sin^2) / 2 = -(sin^2 / 2)(1 + sin^2 / 2 + sin^4 / 3) (the rest of the
 // series is below sin^6 / 4 < 2.5e-7 for sin^2 < 0.01). N and H must be unit for that
-// (|N|^2 |H|^2 within 4e-6 of 1, a few float32 roundings); elsewhere the safe pow of N.H.
+// (wg_unit_sin2 >= 0); elsewhere the safe pow of N.H.
 float wg_blinn_phong_specular(vec3 n, vec3 v, vec3 l, float shininess) {
   vec3 h = wg_half_vector(wg_safe_normalize_vec3(l), wg_safe_normalize_vec3(v));
   vec3 nn = wg_safe_normalize_vec3(n);
   float ndoth = clamp(dot(nn, h), 0.0, 1.0);
-  vec3 nxh = cross(nn, h);
-  float sin2 = dot(nxh, nxh);
-  bool nearPeak = ndoth > 0.0 && sin2 < 0.01 && abs(dot(nn, nn) * dot(h, h) - 1.0) < 4e-6;
+  float sin2 = wg_unit_sin2(nn, h);
+  bool nearPeak = ndoth > 0.0 && sin2 >= 0.0 && sin2 < 0.01;
   float lnCos = -0.5 * sin2 * (1.0 + sin2 * (0.5 + sin2 / 3.0));
   return nearPeak ? exp(shininess * lnCos) : wg_safe_pow_float(ndoth, shininess);
 }

@@ -45,16 +45,24 @@ vec3 wg_camera_forward(mat4 view) {
 // smooth lobe makes 1e-3 of its value. For vectors of one length the true l + v is
 // perpendicular to d = l - v ((l + v).(l - v) = |l|^2 - |v|^2 = 0), so that component of the
 // computed sum is the length rounding and is taken out. Vectors of different lengths (one
-// zero, or a short one from a tiny input) keep the plain sum: "one length" allows 4e-6 of
-// relative difference in the squared lengths, a few float32 roundings of unit vectors'.
+// zero, or a short one from a tiny input) keep the plain sum.
 vec3 wg_half_vector(vec3 l, vec3 v) {
   vec3 s = l + v;
   vec3 d = l - v;
   float dd = dot(d, d);
   float ll = dot(l, l), vv = dot(v, v);
-  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);
+  bool oneLength = abs(ll - vv) <= 4e-6 * max(ll, vv);  // a few float32 roundings of unit lengths
   vec3 h = dot(s, s) < dd && oneLength ? s - d * (dot(s, d) / dd) : s;
   return wg_safe_normalize_vec3(h);
+}
+
+// sin^2 of the angle between two safe-normalised vectors n and h as |n x h|^2, which keeps
+// its digits where the angle is small (1 - (n.h)^2 keeps few there); -1 unless both are unit
+// (|n|^2 |h|^2 within 4e-6 of 1, a few float32 roundings): a zero vector, or a short one
+// from a tiny input, is not, and its callers keep their textbook form for it.
+float wg_unit_sin2(vec3 n, vec3 h) {
+  vec3 c = cross(n, h);
+  return abs(dot(n, n) * dot(h, h) - 1.0) < 4e-6 ? dot(c, c) : -1.0;
 }
 
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
@@ -105,13 +113,12 @@ float wg_fresnel_schlick(float cosi, float f0) {
 // (the textbook's NdotH^2 (a2 - 1) + 1 cancels to 0 in float32 at NdotH = 1 for a smooth
 // surface, a2 < 6e-8, and divides by zero). Where H is within a degree of N, where a smooth
 // surface's D is steepest (the sun's glitter on the water), 1 - NdotH^2 keeps only a few
-// bits; for unit N and H it equals |N x H|^2 (sin2), which keeps them, so that is used
-// where N and H are unit (len2 = |N|^2 |H|^2 within 4e-6 of 1, a few float32 roundings) and
-// H faces N. Elsewhere (a
-// clamped NdotH of 0, a zero or short vector) the textbook term: d >= min(a2, 1) > 0.
-float wg_ggx_specular_distribution(float ndoth, float sin2, float len2, float a2) {
+// bits: there sin2 (wg_unit_sin2, >= 0 for unit N and H) stands for it, where H faces N.
+// Elsewhere (a clamped NdotH of 0, a zero or short vector) the textbook term:
+// d >= min(a2, 1) > 0.
+float wg_ggx_specular_distribution(float ndoth, float sin2, float a2) {
   float c2 = ndoth * ndoth;
-  float s2 = ndoth > 0.0 && abs(len2 - 1.0) < 4e-6 ? sin2 : 1.0 - c2;
+  float s2 = ndoth > 0.0 && sin2 >= 0.0 ? sin2 : 1.0 - c2;
   float d = c2 * a2 + s2;
   return a2 / (3.14159265358979 * d * d);
 }
@@ -140,8 +147,7 @@ vec4 wg_ggx_specular(vec3 n, vec3 v, vec3 l, float roughness, float f0) {
   float ndotv = clamp(dot(nn, vv), 0.0, 1.0);
   float ndoth = clamp(dot(nn, h), 0.0, 1.0);
   float vdoth = clamp(dot(vv, h), 0.0, 1.0);
-  vec3 nxh = cross(nn, h);
-  float d = wg_ggx_specular_distribution(ndoth, dot(nxh, nxh), dot(nn, nn) * dot(h, h), a * a);
+  float d = wg_ggx_specular_distribution(ndoth, wg_unit_sin2(nn, h), a * a);
   float f = wg_fresnel_schlick(vdoth, f0);
   float brdf = d * f * wg_ggx_specular_visibility(ndotl, ndotv, rough);
   return vec4(brdf, d, f, ndotl);
