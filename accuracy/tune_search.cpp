@@ -47,7 +47,7 @@ size_t repeatsToShowASaving(size_t n, double level) {
   return k;
 }
 
-double timeSaved(const TuneCost& candidate, const TuneCost& current, double level) {
+double timeSaved(const TuneCost& candidate, const TuneCost& current) {
   double saved = current.msPerMegapixel - candidate.msPerMegapixel;
   if (!(saved > 0)) return 0;
   const size_t n = candidate.repeats.size();
@@ -55,7 +55,7 @@ double timeSaved(const TuneCost& candidate, const TuneCost& current, double leve
   if (current.repeats.size() != n) return 0;             // not paired: shows nothing
   size_t faster = 0;
   for (size_t i = 0; i < n; ++i) faster += candidate.repeats[i] < current.repeats[i];
-  return faster >= repeatsToShowASaving(n, level) ? saved : 0;
+  return faster >= repeatsToShowASaving(n) ? saved : 0;
 }
 
 std::string levelText(const nlohmann::json& level) { return level.is_string() ? level.get<std::string>() : level.dump(); }

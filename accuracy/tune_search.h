@@ -50,14 +50,13 @@ struct TuneCost {
 
 // The time `candidate` saves against `current`, both from one cost() call: the difference
 // of the medians when the candidate was faster in enough of the paired repeats that chance
-// is an unlikely cause (a one-sided sign test at `level`: repeatsToShowASaving), otherwise
-// 0: a saving the repeats do not show is the machine's noise, not the knob's. The search
-// tests each candidate at kSavingTestLevel; too few repeats show nothing (at 10 %, under 4),
-// and the search then goes by SPIR-V instructions.
+// is an unlikely cause (a one-sided sign test at kSavingTestLevel: repeatsToShowASaving),
+// otherwise 0: a saving the repeats do not show is the machine's noise, not the knob's. Too
+// few repeats (under 4) show nothing, and the search then goes by SPIR-V instructions.
 inline constexpr double kSavingTestLevel = 0.1;
 // At 10 %: 4 of 4, 5 of 5, 6 of 6, 6 of 7, 7 of 9, 8 of 10; n + 1 when no count is rare enough.
 size_t repeatsToShowASaving(size_t n, double level = kSavingTestLevel);
-double timeSaved(const TuneCost& candidate, const TuneCost& current, double level = kSavingTestLevel);
+double timeSaved(const TuneCost& candidate, const TuneCost& current);
 
 struct TuneBudget {
   std::optional<double> minPsnr, maxAbsError;

@@ -6,7 +6,6 @@
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <set>
 
 #include "cli/commands.h"
 
@@ -19,6 +18,7 @@
 #include "nodes/registry.h"
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
+#include "core/json_source.h"
 #include "core/preset.h"
 #include "runtime/runtime_error.h"
 #endif
@@ -72,27 +72,16 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
   }
   nlohmann::json options = nlohmann::json::object();
   if (!args.options.empty()) {
-    // A key given twice would silently take the last value: refused as in graph files.
-    std::vector<std::set<std::string>> open;
-    bool duplicate = false;
-    options = nlohmann::json::parse(
-        args.options,
-        [&](int, nlohmann::json::parse_event_t event, nlohmann::json& parsed) {
-          if (event == nlohmann::json::parse_event_t::object_start) open.emplace_back();
-          if (event == nlohmann::json::parse_event_t::object_end && !open.empty()) open.pop_back();
-          if (event == nlohmann::json::parse_event_t::key && !open.empty() && !open.back().insert(parsed.get<std::string>()).second)
-            duplicate = true;
-          return true;
-        },
-        false);
-    if (!options.is_object()) {
-      std::cerr << "watergraph: --options must be a JSON object (got '" << args.options << "')\n";
+    // The graph loader's JSON reader: a key given twice (nlohmann alone keeps the last),
+    // a syntax error or runaway nesting is refused as in graph files.
+    Diagnostics parsed;
+    auto source = parseJsonWithPositions(args.options, "--options", parsed);
+    if (!source || parsed.hasErrors() || !source->root.is_object()) {
+      std::cerr << "watergraph: --options must be a JSON object (got '" << args.options << "')"
+                << (parsed.all().empty() ? "" : ": " + parsed.all().front().message) << "\n";
       return kExitUsageOrIo;
     }
-    if (duplicate) {
-      std::cerr << "watergraph: --options names a key twice (got '" << args.options << "')\n";
-      return kExitUsageOrIo;
-    }
+    options = std::move(source->root);
   }
   accuracy::ProbeCase base;
   base.name = "base";

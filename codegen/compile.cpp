@@ -135,14 +135,12 @@ bool emitTargets(const Program& program, const CompileOptions& options, const st
   return true;
 }
 
-}  // namespace
-
 // Every preset but the applied one that sets node options is built as well: some option
 // values only a build can check (an expression's formula and inputs: the functions it
 // calls, the type it gives), and every preset is checked on every compile and validate,
 // not only when someone picks it. Its errors are reported as the preset's; the build is
 // dropped. Called once the graph itself built, so nothing is reported twice.
-static bool checkOtherPresets(const Graph& graphAsWritten, std::string_view applied, const Registry& registry,
+bool checkOtherPresets(const Graph& graphAsWritten, std::string_view applied, const Registry& registry,
                        Diagnostics& diags) {
   bool ok = true;
   for (const Preset& preset : graphAsWritten.presets) {
@@ -161,6 +159,8 @@ static bool checkOtherPresets(const Graph& graphAsWritten, std::string_view appl
   }
   return ok;
 }
+
+}  // namespace
 
 std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
                                           const CompileOptions& options, Diagnostics& diags) {

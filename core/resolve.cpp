@@ -222,12 +222,9 @@ class Resolver {
   // (texture paths relative to `directory`, the file of the graph that holds the node).
   void checkPresetOptionValue(const Preset& preset, const PresetValue& v, const OptionSpec& option,
                               const std::string& nodeId, const std::string& directory) {
-    TextureFile texture;
-    std::string why = checkOption(option, v.optionValue, directory, &texture);
-    // A preset's texture counts in the graph's budget too: fifty presets naming fifty large
-    // files would otherwise be fifty decodes on every validate.
-    if (why.empty()) why = chargeTextureBudget(texture);
-    if (why.empty()) why = decodedTexture(texture);
+    // The path and header only: the file is decoded, within that configuration's texture
+    // budget, when compile builds the graph with the preset applied (checkOtherPresets).
+    std::string why = checkOption(option, v.optionValue, directory, nullptr);
     if (!why.empty())
       diags_.error(DiagCode::InvalidOption, v.where, "preset '" + preset.name + "': option '" + v.option + "' " + why,
                    nodeId, optionLabel(v.option));
