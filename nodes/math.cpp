@@ -2,6 +2,7 @@
 // splats to the widest input), plus swizzle, split, combine and remap. Where GLSL leaves a
 // case undefined (pow of a negative base, equal smoothstep edges, normalize of zero) the
 // node uses the library's safe form and says so.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -63,6 +64,18 @@ std::string checkSwizzleMask(const nlohmann::json& v) {
   return "";
 }
 
+// The fact of clamp(x, lo, hi). GLSL leaves reversed bounds undefined; the two ways a GPU
+// computes it, min(max(x, lo), hi) and max(min(x, hi), lo), are both non-decreasing in x,
+// lo and hi, so each ranges from its value at the three lower ends to its value at the
+// upper ends, and the fact covers both. A unit vector clamped component-wise need not stay
+// unit.
+ValueFact clampedFact(const ValueFact& x, const ValueFact& lo, const ValueFact& hi) {
+  ValueFact f;
+  f.lo = std::min(std::min(std::max(x.lo, lo.lo), hi.lo), std::max(std::min(x.lo, hi.lo), lo.lo));
+  f.hi = std::max(std::min(std::max(x.hi, lo.hi), hi.hi), std::max(std::min(x.hi, hi.hi), lo.hi));
+  return f;
+}
+
 }  // namespace
 
 NodeSpec addNode() {
@@ -104,9 +117,17 @@ NodeSpec clampNode() {
   NodeSpec s = mathNode("clamp", "Limits x to [lo, hi].", "out = min(max(x, lo), hi)");
   s.inputs = {ports::gen("x", "the value"), ports::gen("lo", 0, "lower bound"), ports::gen("hi", 1, "upper bound")};
   s.outputs = {ports::gen("out", "the clamped value")};
-  s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call("clamp", {ctx.input(0), ctx.input(1), ctx.input(2)})); };
+  s.emit = [](EmitContext& ctx) {
+    ValueFact x = ctx.inputFact(0), lo = ctx.inputFact(1), hi = ctx.inputFact(2);
+    // Every value x can take already lies in [lo, hi] (value facts): the clamp is dead.
+    if (x.lo >= lo.hi && x.hi <= hi.lo) return ctx.output(0, ctx.input(0));
+    ctx.output(0, EmitContext::call("clamp", {ctx.input(0), ctx.input(1), ctx.input(2)}));
+  };
   s.eval = [](EvalContext& ctx) {
     ctx.output(0, map3(ctx.input(0), ctx.input(1), ctx.input(2), ctx.outputType(0), glsl::clamp));
+  };
+  s.facts = [](const std::vector<ValueFact>& in, const ParsedOptions&) {
+    return std::vector<ValueFact>{clampedFact(in[0], in[1], in[2])};
   };
   return s;
 }
@@ -115,8 +136,16 @@ NodeSpec saturateNode() {
   NodeSpec s = mathNode("saturate", "Limits x to [0, 1].", "out = clamp(x, 0, 1)");
   s.inputs = {ports::gen("x", "the value")};
   s.outputs = {ports::gen("out", "the clamped value")};
-  s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call("clamp", {ctx.input(0), "0.0", "1.0"})); };
+  s.emit = [](EmitContext& ctx) {
+    ValueFact x = ctx.inputFact(0);
+    // Every value x can take already lies in [0, 1] (e.g. screen_uv): the clamp is dead.
+    if (x.atLeast(0) && x.hi <= 1) return ctx.output(0, ctx.input(0));
+    ctx.output(0, EmitContext::call("clamp", {ctx.input(0), "0.0", "1.0"}));
+  };
   s.eval = [](EvalContext& ctx) { ctx.output(0, map1(ctx.input(0), ctx.outputType(0), glsl::saturate)); };
+  s.facts = [](const std::vector<ValueFact>& in, const ParsedOptions&) {
+    return std::vector<ValueFact>{clampedFact(in[0], {0, 0, false}, {1, 1, false})};
+  };
   return s;
 }
 

@@ -254,5 +254,45 @@ TEST(ValueFacts, VocabularyPicksTheRawBuiltinOnlyWhereItsGuardIsDead) {
   EXPECT_NE(unknown.find("wg_safe_mod_vec3("), std::string::npos) << unknown;
 }
 
+// saturate and clamp: dead where the input already lies within the bounds (screen_uv is in
+// [0, 1]), and their output ranges feed later guards; bounds that may be reversed (GLSL
+// leaves clamp undefined there) do not give a range they would break.
+TEST(ValueFacts, ClampIsDeadWhereTheInputKeepsItsBounds) {
+  auto alpha = [](const std::string& nodes, const std::string& out, const std::string& params = "") {
+    return fragmentOf(compiledProgram(graphJson(nodes, R"("fragment": {"alpha": ")" + out + R"("})", params)));
+  };
+  std::string screen = alpha(R"({"id": "u", "type": "screen_uv"}, {"id": "s", "type": "saturate", "inputs": {"x": "u.out"}},
+                                 {"id": "x", "type": "swizzle", "options": {"mask": "x"}, "inputs": {"x": "s.out"}})",
+                             "x.out");
+  EXPECT_EQ(screen.find("clamp("), std::string::npos) << screen;
+  std::string world = alpha(R"({"id": "w", "type": "world_position"}, {"id": "s", "type": "saturate", "inputs": {"x": "w.out"}},
+                                {"id": "x", "type": "swizzle", "options": {"mask": "x"}, "inputs": {"x": "s.out"}})",
+                            "x.out");
+  EXPECT_NE(world.find("clamp("), std::string::npos) << world;
+  // clamp(fract(t), 0, 2) is dead; clamp(fract(t), 0.5, 2) is not.
+  for (auto [lo, dead] : {std::pair{"0.0", true}, std::pair{"0.5", false}}) {
+    std::string s = alpha(std::string(R"({"id": "t", "type": "time"}, {"id": "f", "type": "fract", "inputs": {"x": "t.out"}},
+                                         {"id": "c", "type": "clamp", "inputs": {"x": "f.out", "lo": )") + lo + R"(, "hi": 2.0}})",
+                          "c.out");
+    EXPECT_EQ(s.find("clamp(") == std::string::npos, dead) << s;
+  }
+  // The range reaches the next guard: sqrt of saturate(t) is the raw built-in.
+  std::string sqrtOfSaturate = alpha(R"({"id": "t", "type": "time"}, {"id": "s", "type": "saturate", "inputs": {"x": "t.out"}},
+                                         {"id": "r", "type": "sqrt", "inputs": {"x": "s.out"}})",
+                                     "r.out");
+  EXPECT_EQ(sqrtOfSaturate.find("wg_safe_sqrt"), std::string::npos) << sqrtOfSaturate;
+  EXPECT_NE(sqrtOfSaturate.find(" sqrt("), std::string::npos) << sqrtOfSaturate;
+  // lo in [0, 0.5] and hi in [-1, 1] may be reversed: the clamp may give hi = -1, so the
+  // square root keeps its guard; with hi in [0.5, 1] it cannot.
+  for (auto [hiMin, guarded] : {std::pair{"-1", true}, std::pair{"0.5", false}}) {
+    std::string s = alpha(R"({"id": "t", "type": "time"}, {"id": "c", "type": "clamp", "inputs": {"x": "t.out", "lo": "$a", "hi": "$b"}},
+                             {"id": "r", "type": "sqrt", "inputs": {"x": "c.out"}})",
+                          "r.out",
+                          std::string(R"("a": {"type": "float", "default": 0, "min": 0, "max": 0.5}, "b": {"type": "float", "default": 1, "min": )") +
+                              hiMin + R"(, "max": 1})");
+    EXPECT_EQ(s.find("wg_safe_sqrt_float(") != std::string::npos, guarded) << s;
+  }
+}
+
 }  // namespace
 }  // namespace wg

@@ -54,9 +54,6 @@ float wg_smoothstep_float(float e0, float e1, float x) {
 // exp with x capped at 88: exp(88) = 1.65e38, where exp(89) overflows float to +inf.
 float wg_safe_exp_float(float x) { return exp(min(x, 88.0)); }
 
-// sqrt with x floored at 0: a negative x (GLSL: undefined) gives 0.
-float wg_safe_sqrt_float(float x) { return sqrt(max(x, 0.0)); }
-
 void main() {
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   float n1_depth = distance(v_uv, vec2(0.5));
@@ -127,7 +124,7 @@ void main() {
   vec3 n64_sky = reflect(n63_sky, n56_normal);
   float n65_sky = n64_sky.y;
   float n66_sky = clamp(n65_sky, 0.0, 1.0);
-  float n67_sky = wg_safe_sqrt_float(n66_sky);
+  float n67_sky = sqrt(n66_sky);
   vec3 n68_sky = mix(p_horizon, p_zenith, vec3(n67_sky));
   float n69_fresnel = dot(n56_normal, b_view_direction);
   float n70_fresnel = clamp(n69_fresnel, 0.0, 1.0);

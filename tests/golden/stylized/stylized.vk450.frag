@@ -341,10 +341,9 @@ void main() {
   float n38_foam_shore = wg_shore_waves(n33_body_depth_thickness, 5.0, u_phase2, 0.8, 1.5);
   float n39_foam_foam = max(n38_foam_shore, n37_foam_edge_lin);
   float n40_caustics_fade = (1.0 - n34_body_tint_linear_t0);
-  vec2 n42_caustics_uv = clamp(b_screen_uv, 0.0, 1.0);
-  float n43_caustics_floor_t0 = texture(u_scene_depth, n42_caustics_uv).r;
+  float n43_caustics_floor_t0 = texture(u_scene_depth, b_screen_uv).r;
   float n43_caustics_floor_t1 = wg_linearize_depth_ratio_known(n43_caustics_floor_t0, n32_body_depth_t1, n32_body_depth_ratio);
-  vec3 n43_caustics_floor_position = wg_scene_depth_position(n42_caustics_uv, n43_caustics_floor_t1, u_camera_position, u_view, u_projection);
+  vec3 n43_caustics_floor_position = wg_scene_depth_position(b_screen_uv, n43_caustics_floor_t1, u_camera_position, u_view, u_projection);
   vec2 n44_caustics_floor_xz = n43_caustics_floor_position.xz;
   vec2 n45_caustics_average_t0 = (n44_caustics_floor_xz * 0.6);
   float n45_caustics_average_t1 = wg_voronoi_caustics_layer(n45_caustics_average_t0, 1.0, u_phase3, true, true);
