@@ -84,8 +84,9 @@ std::vector<OutputFile> textureFiles(const CompileResult& result, const std::str
     const Op* op = samplingOp(result.program, source, &option);
     SourceRef where = op ? optionPosition(graph, *op, option) : SourceRef{};
     std::string node = op ? op->nodeId : std::string();
-    std::filesystem::path file(op ? op->where.file.str() : std::string());
-    std::string dir = file.has_parent_path() ? file.parent_path().string() : ".";
+    // Relative to the top graph's folder, also for a subgraph's texture (its path was
+    // rewritten so when the subgraph was inlined), not to the op's own file.
+    std::string dir = result.program.directory.empty() ? "." : result.program.directory;
     std::string why;
     auto img = loadTexture(source, dir, &why);
     if (!img) {

@@ -55,8 +55,9 @@ std::map<std::string, TextureOrigin> textureOrigins(const CompileResult& result)
       for (const auto& [key, value] : op.options().items()) uses |= value.is_string() && value.get<std::string>() == source;
       if (!uses) continue;
       TextureOrigin o;
-      std::filesystem::path file(op.where.file.str());
-      o.graphDir = file.has_parent_path() ? file.parent_path().string() : ".";
+      // The manifest's source is relative to the top graph's folder, also for a texture a
+      // subgraph in another folder names (the loader rewrote it), not to the op's file.
+      o.graphDir = result.program.directory.empty() ? "." : result.program.directory;
       o.owner = op.where.file.str() + ":" + std::to_string(op.where.line) + ":" + std::to_string(op.where.col) + ": node '" +
                 op.nodeId + "'";
       out.emplace(source, o);

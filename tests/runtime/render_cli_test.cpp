@@ -132,6 +132,45 @@ TEST(RenderCli, NoEglDriverIsOneLineAndExit2) {
   std::filesystem::remove_all(dir);
 }
 
+// Found in review: a subgraph in another folder that samples its own PNG. The loader makes
+// its path relative to the top graph ("lib/r.png"); render, compile --textures (and the
+// editor, through the same origins) joined it with the subgraph's folder once more and
+// looked for lib/lib/r.png: an error, or, with a file there, the wrong texture drawn.
+TEST(RenderCli, ASubgraphsTextureIsReadFromTheSubgraphsFolder) {
+  std::string dir = test::makeTempDir("wg_render_subtex_");
+  std::filesystem::create_directories(dir + "/lib/lib");
+  auto solid = [](const std::string& path, unsigned char r, unsigned char g) {
+    rt::Image img;
+    img.width = img.height = 2;
+    for (int i = 0; i < 4; ++i) img.rgba8.insert(img.rgba8.end(), {r, g, 0, 255});
+    rt::writePng(path, img);
+  };
+  solid(dir + "/lib/r.png", 255, 0);      // the subgraph's texture: red
+  solid(dir + "/lib/lib/r.png", 0, 255);  // a decoy where the doubled path pointed: green
+  test::writeFile(dir + "/lib/s.json", R"({"version": 1, "name": "s",
+  "interface": {"outputs": {"o": {"type": "vec3", "source": "t.rgb"}}},
+  "nodes": [{"id": "t", "type": "texture_sample", "options": {"texture": "r.png"}}]})");
+  test::writeFile(dir + "/top.json", R"({"version": 1, "name": "top", "imports": {"s": "lib/s.json"},
+  "nodes": [{"id": "a", "type": "s"}], "outputs": {"fragment": {"color": "a.o"}}})");
+  int code = -1;
+  std::string out = render(dir + "/top.json -o " + dir + "/top.png --size 16x9", &code);
+  ASSERT_EQ(code, 0) << out;
+  rt::Image img = rt::readPng(dir + "/top.png");
+  ASSERT_EQ(img.rgba8.size(), 16u * 9u * 4u);
+  const size_t water = (8u * 16u + 8u) * 4u;  // bottom row, middle: the water plane (sky above)
+  EXPECT_GT(img.rgba8[water], 200) << "red channel";
+  EXPECT_LT(img.rgba8[water + 1], 50) << "green channel: the decoy at lib/lib/r.png was drawn";
+  std::string compiled;
+  code = test::runCommand(test::watergraphBinary() + " compile " + dir + "/top.json -o " + dir + "/out --target es300 --textures",
+                          &compiled);
+  ASSERT_EQ(code, 0) << compiled;
+  rt::Image exported = rt::readPng(dir + "/out/top.t0_r.png");
+  ASSERT_FALSE(exported.rgba8.empty());
+  EXPECT_EQ(exported.rgba8[0], 255);
+  EXPECT_EQ(exported.rgba8[1], 0);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(RenderCli, HelpShowsExamples) {
   int code = -1;
   std::string out = render("--help", &code);
