@@ -225,8 +225,10 @@ static inline double wgd_smoothstep(double e0, double e1, double x) {
   return t * t * (3.0 - 2.0 * t);
 }
 static inline double wgd_safe_pow(double x, double y) {
-  if (x > 0.0) return exp2(y * log2(x));
-  return y > 0.0 ? 0.0 : 1.0;
+  double e;
+  if (!(x > 0.0)) return y > 0.0 ? 0.0 : 1.0;
+  e = y * log2(x);
+  return exp2(127.0 < e ? 127.0 : e);
 }
 static inline double wgd_safe_mod(double x, double y) {
   double q = x / y;

@@ -40,6 +40,8 @@ struct ValueFact {
   bool atLeast(double x) const { return lo >= x; }
   bool above(double x) const { return lo > x; }
   bool isConstant(double x) const { return lo == x && hi == x; }
+  // A unit vector (or the zero vector): components in [-1, 1], re-normalising changes nothing.
+  static ValueFact unitVector() { return {-1, 1, true}; }
 };
 // What a compiled (non-probe) shader guarantees about a builtin (core/node_spec.cpp says
 // where each guarantee comes from).

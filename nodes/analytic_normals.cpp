@@ -81,6 +81,8 @@ NodeSpec sineNormalsNode() {
   s.options = {ports::knob(ports::integer("octaves", 3, 1, 3, "how many of the source's three layers"), {1, 2, 3})};
   s.parseOptions = optionParser(parseOctaveOptions);
   s.isSource = true;
+  // wg_safe_normalize_vec3 of (.., 1.0, ..): unit (zero only if the slope overflows).
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{ValueFact::unitVector(), {}}; };
   s.emit = [](EmitContext& ctx) {
     int octaves = ctx.options<OctaveOptions>().octaves;
     std::string p = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * " + ctx.input("scale"));
@@ -159,6 +161,8 @@ NodeSpec rippleNormalsNode() {
   s.options = {ports::knob(ports::integer("octaves", 3, 1, 3, "how many of the source's three layers"), {1, 2, 3})};
   s.parseOptions = optionParser(parseOctaveOptions);
   s.isSource = true;
+  // wg_waves_unit_or_vec3: unit, or the up vector when degenerate.
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{ValueFact::unitVector(), {}}; };
   s.emit = [](EmitContext& ctx) {
     int octaves = ctx.options<OctaveOptions>().octaves;
     std::string uv = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * (" + ctx.input("scale") + " * 0.08)");

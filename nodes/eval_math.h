@@ -40,7 +40,8 @@ inline double clamp(double x, double lo, double hi) { return std::min(std::max(x
 inline double saturate(double x) { return clamp(x, 0.0, 1.0); }
 inline double mix(double a, double b, double t) { return a * (1.0 - t) + b * t; }
 inline double step(double edge, double x) { return x < edge ? 0.0 : 1.0; }
-inline double rawPow(double x, double y) { return std::exp2(y * std::log2(x)); }
+// exp2(y log2 x) with the exponent capped at 127 (2^127 = 1.70e38), as the library's pow.
+inline double rawPow(double x, double y) { return std::exp2(std::min(y * std::log2(x), 127.0)); }
 
 inline double dot(const Value& a, const Value& b) {
   double s = 0;

@@ -26,7 +26,8 @@ NodeSpec flowMapNode() {
   s.summary = "Flow-map animation: two phases of a texture dragged along a flow vector, blended by triangle waves.";
   s.formula =
       "flow = flow_texture(uv).xy * 2 - 1 (flow_source = texture) or the `flow` input; p_a = fract(time * speed), "
-      "p_b = fract(time * speed + 0.5); w = 1 - |1 - 2 p| (so w_a + w_b = 1); uv_i = uv - flow * strength * p_i; "
+      "p_b = fract(p_a + 0.5) (= fract(time * speed + 0.5), formed from p_a so it keeps its fraction past time * speed "
+      "= 2^23); w = 1 - |1 - 2 p| (so w_a + w_b = 1); uv_i = uv - flow * strength * p_i; "
       "sample = texture(uv_a) w_a + texture(uv_b) w_b.";
   s.source =
       "stylized water shader (flow maps: progress = frac(time) and frac(time + 0.5), UV = uv - flowVector * progress, "
@@ -40,7 +41,7 @@ NodeSpec flowMapNode() {
       ports::fixed("strength", Type::Float, Value::scalar(1.0), "texture units the flow moves the texture per cycle"),
   };
   s.inputs.push_back(ports::derived("progress_a", Type::Float, "phase A's progress fract(time * speed)"));
-  s.inputs.push_back(ports::derived("progress_b", Type::Float, "phase B's progress fract(time * speed + 0.5)"));
+  s.inputs.push_back(ports::derived("progress_b", Type::Float, "phase B's progress fract(progress_a + 0.5)"));
   s.inputs.push_back(ports::derived("fade_a", Type::Float, "phase A's weight 1 - |1 - 2 progress_a|"));
   s.inputs.push_back(ports::derived("fade_b", Type::Float, "phase B's weight 1 - |1 - 2 progress_b|"));
   s.outputs = {ports::fixed("sample", Type::Vec4, "the blended texture sample"),
@@ -63,7 +64,10 @@ NodeSpec flowMapNode() {
       return ctx.op("one_minus", {ctx.op("abs", {ctx.op("one_minus", {twice})})});
     };
     ValueRef pa = ctx.op("fract", {cycles});
-    ValueRef pb = ctx.op("fract", {ctx.op("add", {cycles, ValueRef::constant_(Value::scalar(0.5))})});
+    // fract(p_a + 0.5), not fract(t * speed + 0.5): past t * speed = 2^23 float32 rounds
+    // t * speed + 0.5 to an even integer, both phases were 0 and both weights 0 (a black
+    // sample); from p_a in [0, 1) the sum keeps its fraction bits.
+    ValueRef pb = ctx.op("fract", {ctx.op("add", {pa, ValueRef::constant_(Value::scalar(0.5))})});
     ctx.set("progress_a", pa);
     ctx.set("progress_b", pb);
     ctx.set("fade_a", weight(pa));
@@ -130,6 +134,13 @@ NodeSpec flowMapNode() {
        0,
        1,
        "sample"},
+      {"time 1e7 s, past 2^23 cycles: weight_b = 1",
+       {{"time", Value::scalar(1e7)}},
+       {},
+       "weight_a 0, weight_b 1 (float32 rounds time * speed + 0.5 to an even integer: both weights were 0)",
+       1,
+       1,
+       "weight_b"},
       {"phase reset (time 0): weight_a = 0",
        {{"time", Value::scalar(0)}},
        {},

@@ -203,6 +203,10 @@ NodeSpec gerstnerWavesNode() {
                            {1, 2, 3, 4, 6, 8, 12, kMaxGerstnerWaves})};
   s.isSource = true;
   s.parseOptions = optionParser(parseGerstnerOptions);
+  // wg_gerstner_normal and wg_waves_unit_or_vec3: unit, or a unit fallback when degenerate.
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
+    return std::vector<ValueFact>{{}, ValueFact::unitVector(), ValueFact::unitVector(), ValueFact::unitVector()};
+  };
   s.emit = [](EmitContext& ctx) {
     const auto& ws = ctx.options<std::vector<GerstnerWave>>();
     std::string p = ctx.temporary(Type::Vec3, ctx.input("position"));

@@ -171,23 +171,39 @@ NodeSpec smoothstepNode() {
 
 NodeSpec powNode() {
   NodeSpec s = mathNode("pow", "x raised to y, with the base clamped at 0 (never NaN).",
-                        "out = x > 0 ? exp2(y * log2(x)) : (y > 0 ? 0 : 1)");
+                        "out = x > 0 ? exp2(min(y * log2(x), 127)) : (y > 0 ? 0 : 1) (a result past float's range "
+                        "is 2^127 = 1.70e38, not +inf)");
   s.inputs = {ports::gen("x", "the base"), ports::gen("y", 1, "the exponent")};
   s.outputs = {ports::gen("out", "the power")};
   s.emit = [](EmitContext& ctx) {
-    // x >= 0 and y > 0 proven: native pow is defined there and equals the safe one.
-    bool known = ctx.inputFact(0).atLeast(0) && ctx.inputFact(1).above(0);
+    // 0 <= x <= 1 and y > 0 proven: native pow is defined there, cannot overflow, and
+    // equals the safe one.
+    ValueFact x = ctx.inputFact(0);
+    bool known = x.atLeast(0) && x.hi <= 1 && ctx.inputFact(1).above(0);
     ctx.output(0, EmitContext::call(typedName(known ? "wg_pow_known_safe" : "wg_safe_pow", ctx.outputType(0)),
                                     {ctx.input(0), ctx.input(1)}));
   };
   s.eval = [](EvalContext& ctx) {
     ctx.output(0, map2(ctx.input(0), ctx.input(1), ctx.outputType(0), glsl::safePow));
   };
+  s.facts = [](const std::vector<ValueFact>& in, const ParsedOptions&) {
+    bool atMostOne = in[0].atLeast(0) && in[0].hi <= 1 && in[1].atLeast(0);
+    return std::vector<ValueFact>{{0, atMostOne ? 1.0 : INFINITY, false}};
+  };
   s.cost = "exp2 + log2 per component";
   s.tolerance = 1e-5;
+  // GLSL asks log2 only for an absolute 2^-21 near 1: exp2(y log2 x) then errs by
+  // |y| ln(2) 2^-21 = 5.5 |y| 2^-24 relative (pow(0.9999, 2048) on llvmpipe: 1.6e-4). That
+  // is what rounding x by 6 units moves x^y by (x d/dx x^y = y x^y); y's own rounding moves
+  // it by |y ln x| 2^-24, covered alike.
+  s.conditionRoundings = 6;
+  s.conditionWhy = "relative error grows as |y| 2^-21 (GLSL's log2 accuracy times the exponent: specular powers "
+                   "of bases near 1) and as |y ln x| 2^-24";
   s.hardCases = {{"zero base", {{"x", Value::scalar(0)}, {"y", Value::scalar(3)}}, {}, "0, not NaN", 0, 0},
                  {"zero base, zero exponent", {{"x", Value::scalar(0)}, {"y", Value::scalar(0)}}, {}, "1", 1, 1},
-                 {"tiny negative base", {{"x", Value::scalar(-1e-7)}, {"y", Value::scalar(0.5)}}, {}, "0, not NaN", 0, 0}};
+                 {"tiny negative base", {{"x", Value::scalar(-1e-7)}, {"y", Value::scalar(0.5)}}, {}, "0, not NaN", 0, 0},
+                 {"pow(10, 39)", {{"x", Value::scalar(10)}, {"y", Value::scalar(39)}}, {}, "2^127 = 1.70e38, not +inf",
+                  1.7e38, 1.71e38}};
   return s;
 }
 
@@ -197,11 +213,15 @@ NodeSpec dotNode() {
   s.outputs = {ports::fixed("out", Type::Float, "the dot product")};
   s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call("dot", {ctx.input(0), ctx.input(1)})); };
   s.eval = [](EvalContext& ctx) { ctx.output(0, Value::scalar(glsl::dot(ctx.input(0), ctx.input(1)))); };
+  // A sum of products cancels for nearly perpendicular vectors far from the origin: the
+  // inputs' rounding (2^-24 of each product) remains.
+  s.conditionRoundings = 1;
+  s.conditionWhy = "grows as |a| |b| / |a . b| for nearly perpendicular vectors (a sum of products that cancels)";
   return s;
 }
 
 NodeSpec crossNode() {
-  NodeSpec s = mathNode("cross", "Cross product of two vec3.", "out = a x b");
+  NodeSpec s = mathNode("cross", "Cross product of two vec3 (float32 overflows where products pass 3.4e38).", "out = a x b");
   s.inputs = {ports::fixed("a", Type::Vec3, "first vector"), ports::fixed("b", Type::Vec3, "second vector")};
   s.outputs = {ports::fixed("out", Type::Vec3, "the cross product")};
   s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call("cross", {ctx.input(0), ctx.input(1)})); };
@@ -209,11 +229,18 @@ NodeSpec crossNode() {
     const Value &a = ctx.input(0), &b = ctx.input(1);
     ctx.output(0, Value::vector({a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}));
   };
+  // Each component is a difference of products: nearly parallel vectors far from the
+  // origin cancel, and the inputs' rounding (2^-24 of each product) remains.
+  s.conditionRoundings = 1;
+  s.conditionWhy = "grows as |a| |b| / |a x b| for nearly parallel vectors (each component a difference of products)";
   return s;
 }
 
 NodeSpec normalizeNode() {
-  NodeSpec s = mathNode("normalize", "Unit vector; the zero vector stays zero instead of NaN.",
+  NodeSpec s = mathNode("normalize",
+                        "Unit vector; the zero vector stays zero instead of NaN, a vector shorter than 1e-15 comes out "
+                        "shorter than 1 (the squared length is floored at 1e-30), and one with a component past 1.8e19 "
+                        "is the zero vector (its float32 squared length overflows).",
                         "out = x * inversesqrt(max(dot(x, x), 1e-30))");
   s.inputs = {ports::gen("x", "the vector")};
   s.outputs = {ports::gen("out", "the unit vector")};
@@ -228,7 +255,7 @@ NodeSpec normalizeNode() {
 }
 
 NodeSpec lengthNode() {
-  NodeSpec s = mathNode("length", "Euclidean length.", "out = sqrt(dot(x, x))");
+  NodeSpec s = mathNode("length", "Euclidean length (float32 overflows past 1.8e19: +inf).", "out = sqrt(dot(x, x))");
   s.inputs = {ports::gen("x", "the vector")};
   s.outputs = {ports::fixed("out", Type::Float, "the length")};
   s.emit = [](EmitContext& ctx) { ctx.output(0, EmitContext::call("length", {ctx.input(0)})); };

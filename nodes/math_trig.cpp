@@ -95,9 +95,10 @@ NodeSpec atan2Node() {
   s.inputs = {ports::gen("y", "the vertical component (numerator)"), ports::gen("x", 1, "the horizontal component")};
   s.outputs = {ports::gen("out", "the angle in radians")};
   s.emit = [](EmitContext& ctx) {
-    // A sign of x or of y proven: the point is never the origin.
+    // x > 0 or a sign of y proven: the point is never the origin, nor on the negative x
+    // axis, where the raw built-in gives -pi for y = -0.0.
     ValueFact y = ctx.inputFact(0), x = ctx.inputFact(1);
-    bool rawIsSafe = x.above(0) || x.hi < 0 || y.above(0) || y.hi < 0;
+    bool rawIsSafe = x.above(0) || y.above(0) || y.hi < 0;
     std::string fn = rawIsSafe ? "atan" : typedName("wg_safe_atan2", ctx.outputType(0));
     ctx.output(0, EmitContext::call(fn, {ctx.input(0), ctx.input(1)}));
   };
@@ -112,6 +113,7 @@ NodeSpec atan2Node() {
                    "point is (and by 2 pi across the negative x axis)";
   s.hardCases = {{"atan(0, 0)", {{"y", Value::scalar(0)}, {"x", Value::scalar(0)}}, {}, "0, not NaN", 0, 0},
                  {"negative x axis", {{"y", Value::scalar(0)}, {"x", Value::scalar(-1)}}, {}, "pi", kPi, kPi},
+                 {"negative x axis, y = -0.0", {{"y", Value::scalar(-0.0)}, {"x", Value::scalar(-1)}}, {}, "pi, not -pi", kPi, kPi},
                  {"straight down", {{"y", Value::scalar(-2)}, {"x", Value::scalar(0)}}, {}, "-pi/2", -kPi / 2, -kPi / 2}};
   return s;
 }

@@ -107,8 +107,7 @@ NodeSpec normalMapScrollNode() {
   // wg_waves_tangent_to_world: unit, or the up vector when degenerate.
   s.parseOptions = optionParser(parseNormalMapScrollOptions);
   s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
-    ValueFact unit{-1, 1, true};
-    return std::vector<ValueFact>{unit, unit};
+    return std::vector<ValueFact>{ValueFact::unitVector(), ValueFact::unitVector()};
   };
   s.derive = [](DeriveContext& ctx) {
     ctx.set("scroll_a", deriveScroll(ctx, ctx.input("speed_a"), ctx.input("time")));
@@ -210,6 +209,10 @@ NodeSpec normalFromHeightNode() {
                ports::fixed("gradient", Type::Vec2, "dh/du, dh/dv in texture units")};
   s.options = {ports::texture("texture", "builtin:height", "the height texture (red channel)")};
   s.isSource = true;
+  // wg_waves_tangent_to_world: unit, or the up vector when degenerate.
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
+    return std::vector<ValueFact>{ValueFact::unitVector(), {}, {}};
+  };
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");
     std::string uv = ctx.temporary(Type::Vec2, ctx.input("uv"));

@@ -84,6 +84,8 @@ NodeSpec trochoidWaveNode() {
       ports::texture("texture", "builtin:height", "the height texture (red channel) of the detail"),
   };
   s.isSource = true;
+  // wg_trochoid_wave_normal: wg_safe_normalize_vec3 of (.., 1.0, ..).
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{{}, {}, ValueFact::unitVector()}; };
   s.parseOptions = optionParser(parseTrochoidWaveOptions);
   s.emit = [](EmitContext& ctx) {
     std::string tex = ctx.texture("texture");

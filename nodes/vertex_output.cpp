@@ -54,9 +54,12 @@ NodeSpec vertexOutputNode() {
   };
   s.parseOptions = optionParser(parseVertexOutputOptions);
   s.tessellation = [](const ParsedOptions& o) { return o.as<std::optional<TessellationSettings>>(); };
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{{}, ValueFact::unitVector()}; };
   s.emit = [](EmitContext& ctx) {
     ctx.output(0, "(" + ctx.input("position") + " + " + ctx.input("displacement") + ")");
-    ctx.output(1, EmitContext::call("wg_safe_normalize_vec3", {ctx.input("normal")}));
+    // A normal proven unit (value facts: a wave node's output) is not normalised again.
+    ctx.output(1, ctx.inputFact("normal").normalized ? ctx.input("normal")
+                                                     : EmitContext::call("wg_safe_normalize_vec3", {ctx.input("normal")}));
   };
   s.eval = [](EvalContext& ctx) {
     ctx.output(0, glsl::map2(ctx.input("position"), ctx.input("displacement"), Type::Vec3,

@@ -21,7 +21,7 @@ function smoothstep(e0, e1, x) {
   return t * t * (3 - 2 * t);
 }
 function safePow(x, y) {
-  if (x > 0) return Math.pow(2, y * Math.log2(x));
+  if (x > 0) return Math.pow(2, min(y * Math.log2(x), 127));
   return y > 0 ? 0 : 1;
 }
 function safeMod(x, y) {

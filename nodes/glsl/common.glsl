@@ -36,13 +36,14 @@ float wg_unit_sin2(vec3 n, vec3 h) {
 }
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
-// 0^y is 0 for y > 0 and 1 for y <= 0.
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
 // Guarded functions here compute both sides first and choose with ?: between plain values:
 // glslang turns that into one OpSelect, where ?: or an early return around an expression
 // becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
 // water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
 float wg_safe_pow_float(float x, float y) {
-  float p = exp2(y * log2(x));
+  float p = exp2(min(y * log2(x), 127.0));
   float edge = y > 0.0 ? 0.0 : 1.0;
   return x > 0.0 ? p : edge;
 }
@@ -68,10 +69,11 @@ vec4 wg_smoothstep_vec4(vec4 e0, vec4 e1, vec4 x) {
   return vec4(wg_smoothstep_vec2(e0.xy, e1.xy, x.xy), wg_smoothstep_vec2(e0.zw, e1.zw, x.zw));
 }
 
-// Native pow where the compiler proved x >= 0 and y > 0 for every input the shader
+// Native pow where the compiler proved 0 <= x <= 1 and y > 0 for every input the shader
 // receives (value facts: e.g. a clamped cosine raised to a parameter with min > 0). GLSL
-// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined) and it equals
-// wg_safe_pow (0^y = 0 for y > 0); one instruction instead of the guarded select.
+// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined), the result lies in
+// [0, 1] (no overflow to cap) and it equals wg_safe_pow (0^y = 0 for y > 0); one
+// instruction instead of the guarded select.
 float wg_pow_known_safe_float(float x, float y) { return pow(x, y); }
 vec2 wg_pow_known_safe_vec2(vec2 x, vec2 y) { return pow(x, y); }
 vec3 wg_pow_known_safe_vec3(vec3 x, vec3 y) { return pow(x, y); }

@@ -35,12 +35,15 @@ vec4 wg_safe_acos_vec4(vec4 x) { return acos(clamp(x, -1.0, 1.0)); }
 // atan(y, x) with the origin (GLSL: undefined) at angle 0. |x| + |y| is 0 exactly when
 // both are (GLSL has no component-wise 'and' of two bvecs).
 float wg_safe_atan2_float(float y, float x) {
-  float a = atan(y, x);
-  return abs(x) + abs(y) == 0.0 ? 0.0 : a;
+  // The angle of |y|, then y's sign: a zero y of either sign (-0.0 comes out of -a or a * b
+  // with a = 0) gives +pi on the negative x axis, where atan(-0.0, -1) is -pi.
+  float a = atan(abs(y), x);
+  float signed = y < 0.0 ? -a : a;
+  return abs(x) + abs(y) == 0.0 ? 0.0 : signed;
 }
-vec2 wg_safe_atan2_vec2(vec2 y, vec2 x) { return mix(atan(y, x), vec2(0.0), equal(abs(x) + abs(y), vec2(0.0))); }
-vec3 wg_safe_atan2_vec3(vec3 y, vec3 x) { return mix(atan(y, x), vec3(0.0), equal(abs(x) + abs(y), vec3(0.0))); }
-vec4 wg_safe_atan2_vec4(vec4 y, vec4 x) { return mix(atan(y, x), vec4(0.0), equal(abs(x) + abs(y), vec4(0.0))); }
+vec2 wg_safe_atan2_vec2(vec2 y, vec2 x) { return vec2(wg_safe_atan2_float(y.x, x.x), wg_safe_atan2_float(y.y, x.y)); }
+vec3 wg_safe_atan2_vec3(vec3 y, vec3 x) { return vec3(wg_safe_atan2_vec2(y.xy, x.xy), wg_safe_atan2_float(y.z, x.z)); }
+vec4 wg_safe_atan2_vec4(vec4 y, vec4 x) { return vec4(wg_safe_atan2_vec2(y.xy, x.xy), wg_safe_atan2_vec2(y.zw, x.zw)); }
 
 // sinh and cosh with x clamped to [-88, 88]: GLSL defines them through e^x, which
 // overflows float past 88.7 (inf, and inf - inf = NaN for sinh on some drivers); at 88

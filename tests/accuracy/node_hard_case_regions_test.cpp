@@ -307,7 +307,9 @@ const std::map<std::string, RegionCheck>& regionChecks() {
       {"exponential_overflow",
        [](const Subject& s) {
          double x = std::abs(static_cast<double>(static_cast<float>(givenInput(s, "x")[0])));
-         double e = s.spec->type == "exp2" ? std::exp2(x) : std::exp(x);
+         double e = s.spec->type == "exp2" ? std::exp2(x)
+                    : s.spec->type == "pow" ? std::pow(x, static_cast<double>(static_cast<float>(givenInput(s, "y")[0])))
+                                            : std::exp(x);
          return unless(e > std::numeric_limits<float>::max(), "the exponential does not overflow float32");
        }},
       {"exponential_underflow",

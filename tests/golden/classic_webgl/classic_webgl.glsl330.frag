@@ -39,10 +39,11 @@ vec3 wg_camera_forward(mat4 view) {
   return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
 }
 
-// Native pow where the compiler proved x >= 0 and y > 0 for every input the shader
+// Native pow where the compiler proved 0 <= x <= 1 and y > 0 for every input the shader
 // receives (value facts: e.g. a clamped cosine raised to a parameter with min > 0). GLSL
-// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined) and it equals
-// wg_safe_pow (0^y = 0 for y > 0); one instruction instead of the guarded select.
+// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined), the result lies in
+// [0, 1] (no overflow to cap) and it equals wg_safe_pow (0^y = 0 for y > 0); one
+// instruction instead of the guarded select.
 float wg_pow_known_safe_float(float x, float y) { return pow(x, y); }
 
 // The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is

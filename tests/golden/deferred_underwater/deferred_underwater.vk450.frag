@@ -71,13 +71,14 @@ vec3 wg_camera_forward(mat4 view) {
 }
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
-// 0^y is 0 for y > 0 and 1 for y <= 0.
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
 // Guarded functions here compute both sides first and choose with ?: between plain values:
 // glslang turns that into one OpSelect, where ?: or an early return around an expression
 // becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
 // water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
 float wg_safe_pow_float(float x, float y) {
-  float p = exp2(y * log2(x));
+  float p = exp2(min(y * log2(x), 127.0));
   float edge = y > 0.0 ? 0.0 : 1.0;
   return x > 0.0 ? p : edge;
 }
@@ -91,10 +92,11 @@ float wg_smoothstep_float(float e0, float e1, float x) {
   return e0 == e1 ? stepped : eased;
 }
 
-// Native pow where the compiler proved x >= 0 and y > 0 for every input the shader
+// Native pow where the compiler proved 0 <= x <= 1 and y > 0 for every input the shader
 // receives (value facts: e.g. a clamped cosine raised to a parameter with min > 0). GLSL
-// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined) and it equals
-// wg_safe_pow (0^y = 0 for y > 0); one instruction instead of the guarded select.
+// defines pow there (only x < 0, and x = 0 with y <= 0, are undefined), the result lies in
+// [0, 1] (no overflow to cap) and it equals wg_safe_pow (0^y = 0 for y > 0); one
+// instruction instead of the guarded select.
 float wg_pow_known_safe_float(float x, float y) { return pow(x, y); }
 
 // Fresnel reflectance of the water surface. `cosi` is the cosine between the unit normal
@@ -219,16 +221,13 @@ vec2 wg_normal_from_height_gradient(sampler2D tex, vec2 uv, float e) {
   return vec2(hx, hy) * (0.5 / d);
 }
 
-// phong_specular: the deferred water article's Phong specular of the sun and of the environment light.
-
-// The deferred water article, listing 9: the light direction L mirrored about N, R = 2(N.L)N - L, against
-// the unit direction to the viewer: max(R.V, 0), kept in [0, 1]. (Equal to
-// max(dot(reflect(-V, N), L), 0), the view ray reflected against the light.)
-float wg_phong_specular_lobe(vec3 n, vec3 v, vec3 l) {
-  vec3 nn = wg_safe_normalize_vec3(n);
-  vec3 ll = wg_safe_normalize_vec3(l);
-  vec3 r = 2.0 * dot(nn, ll) * nn - ll;
-  return clamp(dot(r, wg_safe_normalize_vec3(v)), 0.0, 1.0);
+// The lobe where n, v and l are proven normalized (value facts: unit length or exactly
+// zero, e.g. the safe-normalised builtins or a normal map's unit output): safe
+// normalisation leaves such vectors unchanged, so it is left out. Same values, bounded
+// (|r| <= 3) and clamped to [0, 1].
+float wg_phong_specular_lobe_unit(vec3 n, vec3 v, vec3 l) {
+  vec3 r = 2.0 * dot(n, l) * n - l;
+  return clamp(dot(r, v), 0.0, 1.0);
 }
 
 // reflect_dir: the mirror direction of the view ray about the surface normal, for
@@ -576,8 +575,8 @@ void main() {
   float n11_fresnel_t1 = wg_fresnel_schlick(n11_fresnel_t0, 0.02);
   float n11_fresnel_transmittance = (1.0 - n11_fresnel_t1);
   vec3 n12_reflected = (n7_ssr_color * vec3(n11_fresnel_t1));
-  float n14_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe(n4_detail_normal, b_view_direction, u_sun_direction), 120.0);
-  float n14_phong_t1 = wg_phong_specular_lobe(n4_detail_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
+  float n14_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n4_detail_normal, b_view_direction, u_sun_direction), 120.0);
+  float n14_phong_t1 = wg_phong_specular_lobe_unit(n4_detail_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
   vec3 n14_phong_color = (n14_phong_t0 * vec3(1.0) + n14_phong_t1 * vec3(0.3, 0.35, 0.4));
   vec3 n15_depth = wg_camera_forward(u_view);
   vec2 n16_depth_t0 = u_camera_near_far;

@@ -69,13 +69,14 @@ float wg_unit_sin2(vec3 n, vec3 h) {
 }
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
-// 0^y is 0 for y > 0 and 1 for y <= 0.
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
 // Guarded functions here compute both sides first and choose with ?: between plain values:
 // glslang turns that into one OpSelect, where ?: or an early return around an expression
 // becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
 // water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
 float wg_safe_pow_float(float x, float y) {
-  float p = exp2(y * log2(x));
+  float p = exp2(min(y * log2(x), 127.0));
   float edge = y > 0.0 ? 0.0 : 1.0;
   return x > 0.0 ? p : edge;
 }

@@ -165,7 +165,7 @@ void main() {
   vec2 b_screen_uv = gl_FragCoord.xy / u_viewport_size;
   float n0_flow = (u_time * p_flow_speed);
   float n1_flow = fract(n0_flow);
-  float n2_flow = (n0_flow + 0.5);
+  float n2_flow = (n1_flow + 0.5);
   float n3_flow = fract(n2_flow);
   float n4_flow = (2.0 * n1_flow);
   float n5_flow = (1.0 - n4_flow);

@@ -296,7 +296,7 @@ void main() {
   vec3 n7_scroll_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n7_scroll_t2, 0.5), b_normal);
   float n8_flow = (u_time * 0.15);
   float n9_flow = fract(n8_flow);
-  float n10_flow = (n8_flow + 0.5);
+  float n10_flow = (n9_flow + 0.5);
   float n11_flow = fract(n10_flow);
   float n12_flow = (2.0 * n9_flow);
   float n13_flow = (1.0 - n12_flow);

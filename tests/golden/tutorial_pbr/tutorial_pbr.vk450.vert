@@ -28,8 +28,6 @@ layout(std140, set = 0, binding = 0) uniform WgUniforms {
   float p_refraction_strength;
 };
 
-vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
-
 // Gerstner waves (GPU Gems 1 ch. 1; the stylized water shader): the sum of trochoidal waves, each moving
 // the surface point horizontally along its direction and vertically, with the exact
 // partial derivatives of the displaced surface so vertex displacement and fragment normals
@@ -84,9 +82,8 @@ void main() {
   vec3 n0_waves_position = (n0_waves_t0 + n0_waves_t4[0]);
   vec3 n0_waves_normal = wg_gerstner_normal(n0_waves_t4);
   vec3 n1_surface_position = (n0_waves_position + vec3(0.0));
-  vec3 n1_surface_normal = wg_safe_normalize_vec3(n0_waves_normal);
   gl_Position = u_view_projection * vec4(n1_surface_position, 1.0);
   v_world_position = n1_surface_position;
-  v_normal = n1_surface_normal;
+  v_normal = n0_waves_normal;
   v_uv = a_uv;
 }
