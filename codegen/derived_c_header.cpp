@@ -40,11 +40,28 @@ bool isKeyword(const std::string& s) {
   return k.count(s) > 0;
 }
 
+// A name a C preprocessor may hold as an object-like macro: what <math.h> defines
+// (INFINITY, NAN, M_PI, FP_NAN, HUGE_VAL, math_errhandling, glibc's DOMAIN ...), and any
+// name in capitals, the macro convention of C headers a program includes before this one.
+bool mayBeMacro(const std::string& s) {
+  if (s == "math_errhandling") return true;
+  bool letter = false;
+  for (char c : s) {
+    if (std::islower(static_cast<unsigned char>(c))) return false;
+    letter |= std::isupper(static_cast<unsigned char>(c)) != 0;
+  }
+  return letter;
+}
+
+// A parameter's name as a C member: other characters become '_', a leading digit gets
+// '_' before it, and a C/C++ keyword or a possible macro name gets '_' after it (NAN is
+// NAN_); a name C reserves (__x, _X) gets 'p' before it.
 std::string identifier(const std::string& name) {
   std::string s;
   for (char c : name) s += (std::isalnum(static_cast<unsigned char>(c)) || c == '_') ? c : '_';
   if (s.empty() || std::isdigit(static_cast<unsigned char>(s[0]))) s = "_" + s;
-  return isKeyword(s) ? s + "_" : s;
+  if (s.size() > 1 && s[0] == '_' && (s[1] == '_' || std::isupper(static_cast<unsigned char>(s[1])))) s = "p" + s;
+  return isKeyword(s) || mayBeMacro(s) ? s + "_" : s;
 }
 
 // A C double literal: always with '.' or an exponent; infinities and NaN by macro.
@@ -89,9 +106,11 @@ std::string derivedBody(const DerivedUniform& d, const std::vector<std::string>&
     for (size_t i = 0; i < op.inputs.size(); ++i) {
       const ValueRef& r = op.inputs[i];
       sourceTypes.push_back(p.typeOf(r));
-      if (r.kind == ValueRef::Kind::Const)
-        c += "    const double k" + std::to_string(k) + "_" + std::to_string(i) + "[" + std::to_string(r.constant().size()) +
-             "] = {" + componentsList(r.constant()) + "};\n";
+      if (r.kind == ValueRef::Kind::Const) {  // an op may not read every input (combine's unused ones): -Wall
+        std::string name = "k" + std::to_string(k) + "_" + std::to_string(i);
+        c += "    const double " + name + "[" + std::to_string(r.constant().size()) + "] = {" + componentsList(r.constant()) +
+             "};\n    (void)" + name + ";\n";
+      }
       in.push_back(arrayOf(r, k, i));
     }
     for (size_t port = 0; port < op.outputTypes.size(); ++port) {

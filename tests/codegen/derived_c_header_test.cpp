@@ -138,5 +138,48 @@ TEST_F(DerivedCHeader, IsDeterministicAndNamesTheGraph) {
   EXPECT_EQ(derivedCPrefix("my-lake.v2"), "wg_my_lake_v2_");
 }
 
+// Found in review: parameters named like <math.h>'s object-like macros (NAN, INFINITY,
+// M_PI, math_errhandling) made members the preprocessor replaced, and names C reserves
+// (__x, _X) were kept; and a constant an op does not read (lagoon's combine) warned under
+// -Wall. Both compile with every warning an error, as C after <math.h> and as C++.
+TEST_F(DerivedCHeader, MacroLikeParameterNamesAndUnreadConstantsCompileCleanly) {
+  std::vector<ProgramParameter> parameters = sample_->parameters;  // the derived values index these
+  const std::vector<std::pair<std::string, std::string>> names = {
+      {"NAN", "NAN_"}, {"INFINITY", "INFINITY_"}, {"M_PI", "M_PI_"}, {"HUGE_VAL", "HUGE_VAL_"},
+      {"math_errhandling", "math_errhandling_"}, {"DOMAIN", "DOMAIN_"}, {"__x", "p__x"}, {"_Y", "p_Y"}, {"class", "class_"},
+      {"speed", "speed"}};
+  for (const auto& [name, member] : names) {
+    ProgramParameter p;
+    p.name = name;
+    p.defaultValue = Value::scalar(1);
+    parameters.push_back(p);
+  }
+  std::string dir = test::makeTempDir("wg_derived_c_macros");
+  test::writeFile(dir + "/macros.h", derivedCHeader("macros", parameters, sample_->derived));
+  std::string c = "#include <math.h>\n#include \"macros.h\"\nint main(void) {\n  wg_macros_parameters p;\n"
+                  "  wg_macros_default_parameters(&p);\n";
+  for (const auto& [name, member] : names) c += "  p." + member + " = 2.0;\n";
+  test::writeFile(dir + "/main.c", c + "  return p.speed == 2.0 ? 0 : 1;\n}\n");
+  for (const std::string compiler : {"cc -std=c99 -pedantic", "c++ -x c++ -std=c++17"}) {
+    std::string out;
+    int rc = test::runCommand(compiler + " -Wall -Wextra -Werror -o " + test::shellQuote(dir + "/run") + " " +
+                                  test::shellQuote(dir + "/main.c") + " -lm",
+                              &out);
+    EXPECT_EQ(rc, 0) << compiler << ":\n" << out;
+  }
+  // The lagoon's header through the CLI: its scroll combines read two of four constants.
+  std::string out;
+  int rc = test::runCommand(test::watergraphBinary() + " compile " + test::shellQuote(test::sourcePath("graphs/lagoon.json")) +
+                                " -o " + test::shellQuote(dir + "/lagoon") + " --target c-header",
+                            &out);
+  ASSERT_EQ(rc, 0) << out;
+  test::writeFile(dir + "/lagoon/main.c", "#include \"lagoon.derived.h\"\nint main(void) { return 0; }\n");
+  rc = test::runCommand("cc -std=c99 -pedantic -Wall -Wextra -Werror -o " + test::shellQuote(dir + "/lagoon/run") + " " +
+                            test::shellQuote(dir + "/lagoon/main.c") + " -lm",
+                        &out);
+  EXPECT_EQ(rc, 0) << out;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace wg
