@@ -320,6 +320,15 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
       return kExitUsageOrIo;
     }
   }
+  // The depfile is written after every graph's files: one that cannot be written is found
+  // first, so a failing --depfile leaves no compiled files behind.
+  if (write && !args.depfile.empty()) {
+    Diagnostics depfile;
+    if (!checkWritable(args.depfile, depfile)) {
+      printDiagnostics(depfile, global);
+      return kExitUsageOrIo;
+    }
+  }
   const bool textFormat = global.diagnosticsFormat == "text";
   // SARIF owns stdout: human-readable lines go to stderr instead.
   std::FILE* info = global.diagnosticsFormat == "sarif" ? stderr : stdout;

@@ -60,6 +60,35 @@ bool writeOutputFiles(const std::string& dir, const std::vector<OutputFile>& fil
   return true;
 }
 
+namespace {
+
+// Why `path` cannot be written or replaced ("" when it can): an existing file must be a
+// regular file not marked read-only; a new one needs a folder that exists.
+std::string whyNotWritable(const std::string& path, const struct stat* st) {
+  if (st) {
+    if (!S_ISREG(st->st_mode)) return "cannot replace: not a regular file";
+    if (::access(path.c_str(), W_OK) != 0 || (st->st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
+      return "cannot replace: the file is read-only";
+    return "";
+  }
+  std::filesystem::path parent = std::filesystem::path(path).parent_path();
+  std::error_code ec;
+  if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+    return "cannot write: the folder " + parent.string() + " does not exist";
+  return "";
+}
+
+}  // namespace
+
+bool checkWritable(const std::string& path, Diagnostics& diags) {
+  struct stat st {};
+  bool exists = ::stat(path.c_str(), &st) == 0;
+  std::string why = whyNotWritable(path, exists ? &st : nullptr);
+  if (why.empty()) return true;
+  diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, why);
+  return false;
+}
+
 bool writeFileAtomically(const std::string& path, const std::string& contents, Diagnostics& diags) {
   std::filesystem::path target(path);
   // Replacing an existing file: through a symlink to the file it names; never a FIFO,
@@ -71,12 +100,9 @@ bool writeFileAtomically(const std::string& path, const std::string& contents, D
     std::error_code ec;
     auto real = std::filesystem::canonical(target, ec);
     if (!ec) target = real;
-    if (!S_ISREG(st.st_mode)) {
-      diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, "cannot replace: not a regular file");
-      return false;
-    }
-    if (::access(path.c_str(), W_OK) != 0 || (st.st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0) {
-      diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, "cannot replace: the file is read-only");
+    std::string why = whyNotWritable(path, &st);
+    if (!why.empty()) {
+      diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, why);
       return false;
     }
   }

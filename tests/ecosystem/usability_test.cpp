@@ -203,6 +203,21 @@ TEST(Usability, DepfileListsEveryGraphFileAndTextureAGraphIsMadeOf) {
   EXPECT_EQ(eco::wgRun("validate " + shellQuote(river) + " --depfile x.d").exit, 2);
 }
 
+// Found in review: a --depfile that cannot be written (no such folder, a folder in its
+// place) failed after every graph's files were written: found first now, nothing written.
+TEST(Usability, ADepfileThatCannotBeWrittenLeavesNoCompiledFiles) {
+  eco::TempDir tmp;
+  std::string lake = test::sourcePath("graphs/lake.json");
+  std::filesystem::create_directories(tmp / "folder.d");
+  for (const std::string depfile : {tmp / "missing/x.d", tmp / "folder.d"}) {
+    SCOPED_TRACE(depfile);
+    auto r = eco::wgRun("compile " + shellQuote(lake) + " -o " + shellQuote(tmp / "out") + " --depfile " + shellQuote(depfile));
+    EXPECT_EQ(r.exit, 2) << r.err;
+    EXPECT_NE(r.err.find(depfile + ": error: [WG051] cannot"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(tmp / "out")) << "compiled files were written";
+  }
+}
+
 TEST(Usability, NodesPrintsAFunctionGraphsInterface) {
   auto text = eco::wgRun("nodes --graph " + shellQuote(test::sourcePath("graphs/lib/fresnel_sky.json")));
   ASSERT_EQ(text.exit, 0) << text.err;
