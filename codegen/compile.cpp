@@ -149,6 +149,7 @@ bool checkOtherPresets(const Graph& graphAsWritten, std::string_view applied, co
       continue;
     Graph withPreset = graphAsWritten;
     Diagnostics local;
+    local.keepSourcesOf(diags);  // a formula's error column counts the escapes before it
     if (applyPreset(withPreset, preset.name, local) && buildProgram(withPreset, registry, local)) continue;
     ok = false;
     for (Diagnostic d : local.all()) {

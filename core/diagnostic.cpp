@@ -92,6 +92,10 @@ void Diagnostics::keepSource(const std::string& file, std::shared_ptr<const std:
   sources_[file] = std::move(text);
 }
 
+void Diagnostics::keepSourcesOf(const Diagnostics& other) {
+  for (const auto& [file, text] : other.sources_) sources_.emplace(file, text);
+}
+
 const std::string* Diagnostics::source(const std::string& file) const {
   auto it = sources_.find(file);
   return it == sources_.end() ? nullptr : it->second.get();

@@ -80,6 +80,9 @@ class Diagnostics {
   // opening the file again (it may be a FIFO, or have changed). nullptr when not kept.
   void keepSource(const std::string& file, std::shared_ptr<const std::string> text);
   const std::string* source(const std::string& file) const;
+  // Keeps every source text `other` keeps: a scratch Diagnostics for a trial build reports
+  // columns inside strings (escapes counted) as the main one would.
+  void keepSourcesOf(const Diagnostics& other);
 
  private:
   Diagnostic& keep(Diagnostic d);

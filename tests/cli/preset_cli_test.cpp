@@ -91,6 +91,16 @@ TEST(CliPreset, APresetsExpressionIsCheckedWithoutApplyingIt) {
   EXPECT_EQ(r.exit, 1) << r.err;
   EXPECT_NE(r.err.find("[WG029]"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir + "/out/g.glsl330.frag"));
+  // The column is that of the unknown name in the file, escapes counted (found in review:
+  // each \t counted one column when the preset was not applied).
+  std::string escaped = withPreset("formula", "\"\\t\\t\\tfoo(a)\"");
+  std::string line4 = test::splitLines(test::readFile(dir + "/g.json")).at(3);
+  std::string at = "g.json:4:" + std::to_string(line4.find("foo(") + 1) + ": error: [WG038]";
+  for (const char* applied : {"", " --preset worn"}) {
+    r = wg("validate " + escaped + applied);
+    EXPECT_EQ(r.exit, 1) << r.err;
+    EXPECT_NE(r.err.find(at), std::string::npos) << applied << ": expected " << at << "\n" << r.err;
+  }
   // A good preset passes, applied or not.
   r = wg("validate " + withPreset("formula", "\"a * 3.0\""));
   EXPECT_EQ(r.exit, 0) << r.err;
