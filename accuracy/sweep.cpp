@@ -31,10 +31,10 @@ void setInput(ProbeCase& c, const std::string& port, const Value& v) {
   c.inputs.emplace_back(port, v);
 }
 
-Value inputOrDefault(const NodeSpec& spec, const ProbeCase& c, int port) {
+Value inputOrDefault(const NodePorts& ports, const ProbeCase& c, int port) {
   for (const auto& [name, value] : c.inputs)
-    if (name == spec.inputs[static_cast<size_t>(port)].name) return value;
-  const PortSpec& p = spec.inputs[static_cast<size_t>(port)];
+    if (name == ports.inputs[static_cast<size_t>(port)].name) return value;
+  const PortSpec& p = ports.inputs[static_cast<size_t>(port)];
   if (p.defaultValue) return *p.defaultValue;
   if (p.defaultBuiltin) return c.env.builtin(*p.defaultBuiltin);
   return Value::ofType(p.type == Type::Invalid ? Type::Float : p.type);
@@ -84,10 +84,10 @@ std::optional<SweepAxis> parseSweepAxis(const std::string& text, std::string& er
   return a;
 }
 
-std::vector<ProbeCase> sweepCases(const NodeSpec& spec, const SweepAxis& axis, const ProbeCase& base) {
+std::vector<ProbeCase> sweepCases(const NodePorts& ports, const SweepAxis& axis, const ProbeCase& base) {
   std::vector<ProbeCase> out;
   out.reserve(static_cast<size_t>(axis.count));
-  int port = spec.inputIndex(axis.name);
+  int port = ports.inputIndex(axis.name);
   for (int i = 0; i < axis.count; ++i) {
     double x = axis.at(i);
     ProbeCase c = base;
@@ -98,10 +98,10 @@ std::vector<ProbeCase> sweepCases(const NodeSpec& spec, const SweepAxis& axis, c
       c.env.normal = n;
       c.env.viewDirection = v;
       c.given.insert({"normal", "view_direction"});
-      if (spec.inputIndex("normal") >= 0) setInput(c, "normal", n);
-      if (spec.inputIndex("view") >= 0) setInput(c, "view", v);
+      if (ports.inputIndex("normal") >= 0) setInput(c, "normal", n);
+      if (ports.inputIndex("view") >= 0) setInput(c, "view", v);
     } else if (port >= 0) {
-      Value v = inputOrDefault(spec, c, port);
+      Value v = inputOrDefault(ports, c, port);
       for (int k = 0; k < v.size(); ++k)
         if (axis.component < 0 || axis.component == k) v[k] = x;
       setInput(c, axis.name, toFloat32(v));

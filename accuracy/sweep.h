@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "accuracy/probe.h"
+#include "core/node_options.h"
 
 namespace wg::accuracy {
 
@@ -27,8 +28,9 @@ std::optional<SweepAxis> parseSweepAxis(const std::string& text, std::string& er
 
 // The cases of the sweep: `base` with the axis value i at position i (named "NAME=value").
 // An input port the base case does not set starts from the port's default (zero when none).
-// Values are rounded to float32, as in a cases file.
-std::vector<ProbeCase> sweepCases(const NodeSpec& spec, const SweepAxis& axis, const ProbeCase& base);
+// Values are rounded to float32, as in a cases file. `ports` are the node's for its options
+// (portsOfNode: an expression's inputs are those its options declare).
+std::vector<ProbeCase> sweepCases(const NodePorts& ports, const SweepAxis& axis, const ProbeCase& base);
 
 // The swept value of each case, as written: "x gpu reference abs_error bound" per line,
 // one output component (the one the report names: the closest to its bound).

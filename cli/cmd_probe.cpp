@@ -19,6 +19,7 @@
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
 #include "core/json_source.h"
+#include "core/node_options.h"
 #include "core/preset.h"
 #include "runtime/runtime_error.h"
 #endif
@@ -63,13 +64,6 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
     std::cerr << "watergraph: " << why << "\n";
     return kExitUsageOrIo;
   }
-  if (axis->name != "angle" && spec.inputIndex(axis->name) < 0 &&
-      !std::set<std::string>{"uv", "world_position", "normal", "view_direction", "camera_position", "time", "screen_uv",
-                             "frag_depth", "near_far", "sun_direction"}.count(axis->name)) {
-    std::cerr << "watergraph: --sweep: '" << axis->name << "' is neither 'angle', an input of " << spec.type
-              << " nor a builtin key\n";
-    return kExitUsageOrIo;
-  }
   nlohmann::json options = nlohmann::json::object();
   if (!args.options.empty()) {
     // The graph loader's JSON reader: a key given twice (nlohmann alone keeps the last),
@@ -82,6 +76,15 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
       return kExitUsageOrIo;
     }
     options = std::move(source->root);
+  }
+  // The node's ports for these options: an expression's inputs are those --options declares.
+  NodePorts ports = portsOfNode(spec, options);
+  if (axis->name != "angle" && ports.inputIndex(axis->name) < 0 &&
+      !std::set<std::string>{"uv", "world_position", "normal", "view_direction", "camera_position", "time", "screen_uv",
+                             "frag_depth", "near_far", "sun_direction"}.count(axis->name)) {
+    std::cerr << "watergraph: --sweep: '" << axis->name << "' is neither 'angle', an input of " << spec.type
+              << (spec.portsFor ? " (with these --options)" : "") << " nor a builtin key\n";
+    return kExitUsageOrIo;
   }
   accuracy::ProbeCase base;
   base.name = "base";
@@ -96,7 +99,7 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
   try {
     auto executor = accuracy::makeGpuExecutor(target, executorOptions);
     Diagnostics diags;
-    auto report = accuracy::probeNode(spec, options, args.output, accuracy::sweepCases(spec, *axis, base), *executor, diags,
+    auto report = accuracy::probeNode(spec, options, args.output, accuracy::sweepCases(ports, *axis, base), *executor, diags,
                                       mutation);
     executor->finish();
     printDiagnostics(diags, global);
@@ -143,6 +146,10 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
     return kExitUsageOrIo;
   }
   if (!args.sweep.empty()) return runSweep(args, global, *spec, target, mutation);
+  if (!args.options.empty()) {  // the cases give the options they probe ("options" in each case)
+    std::cerr << "watergraph: --options applies to --sweep; with --cases, give each case its \"options\"\n";
+    return kExitUsageOrIo;
+  }
   if (args.cases.empty()) {
     std::cerr << "watergraph: probe --node needs --cases (or --sweep)\n";
     return kExitUsageOrIo;
@@ -294,7 +301,8 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--sweep", args->sweep,
                   "with --node: NAME[.x|.y|.z|.w]:FROM:TO:COUNT, one input stepped evenly: 'angle' (degrees between "
                   "normal and view), an input port, or a builtin key of the cases file (time, world_position.x, ...)");
-  cmd->add_option("--options", args->options, "with --sweep: the node's options as a JSON object");
+  cmd->add_option("--options", args->options, "with --sweep: the node's options as a JSON object (an expression's formula and inputs: its "
+                  "inputs can then be swept); with --cases each case gives its own \"options\"");
   cmd->add_option("--table", args->table,
                   "with --sweep: write 'x gpu reference abs_error bound' per point to this file (for plotting)");
   cmd->add_option("--mutate", args->mutate,

@@ -247,7 +247,12 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
   cmd->add_option("--runs", args->runs, "interleaved timed repeats per round (a time saving counts when a one-sided sign test over them passes at 10 %: 7 of 9, all of 5; under 4 none can, and the search goes by SPIR-V instructions)")->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
   cmd->add_option("--write-preset", args->writePreset,
-                  "write the chosen configuration into the graph as this preset (canonical form; replaces one of that name)");
+                  "write the chosen configuration into the graph as this preset (canonical form; replaces one of that name)")
+      // Checked when given, so an empty name is refused too (not taken as "not given").
+      ->check([](const std::string& name) {
+        return isIdentifier(name) ? std::string()
+                                  : "'" + name + "' is not an identifier (letters, digits, _; not starting with a digit)";
+      });
   cmd->add_option("--plot", args->plot, "draw every tried configuration, cost against worst PSNR, into this SVG");
 #ifdef WG_HAVE_RUNTIME
   return [args] { return runTune(*args); };

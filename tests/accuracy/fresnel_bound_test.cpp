@@ -34,8 +34,9 @@ class FresnelBound : public ::testing::TestWithParam<Target> {
     base.name = "base";
     base.env = defaultProbeEnvironment();
     Diagnostics diags;
-    auto report = probeNode(spec, {{"model", s.model}, {"direction", s.direction}}, "reflectance",
-                            sweepCases(spec, axis, base), GetParam(), diags, mutation);
+    nlohmann::json options = {{"model", s.model}, {"direction", s.direction}};
+    auto report = probeNode(spec, options, "reflectance", sweepCases(portsOfNode(spec, options), axis, base), GetParam(),
+                            diags, mutation);
     EXPECT_TRUE(report);
     return report ? *report : ProbeReport{};
   }

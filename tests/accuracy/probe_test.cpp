@@ -253,7 +253,24 @@ TEST(ProbeCli, CasesFilesAndOptionsOfTheWrongKind) {
   out = wg(R"(probe --node fresnel --sweep angle:0:90:10 --options '{"model": "exact", "model": "schlick"}')", &rc);
   EXPECT_EQ(rc, 2) << out;
   EXPECT_NE(out.find("duplicate key 'model'"), std::string::npos) << out;
+  // --options with --cases was ignored (the cases give their own options): refused.
+  test::writeFile(dir + "/x.json", R"({"cases": [{"name": "half", "inputs": {"x": 0.5}}]})");
+  out = wg(R"(probe --node fresnel --options '{"model": "power"}' --cases )" + test::shellQuote(dir + "/x.json"), &rc);
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_NE(out.find("--options applies to --sweep"), std::string::npos) << out;
   std::filesystem::remove_all(dir);
+}
+
+// An expression's inputs are those its options declare: --sweep steps them (it said 'x'
+// was no input of expression).
+TEST(ProbeCli, AnExpressionsInputIsSwept) {
+  int rc = 0;
+  std::string out = wg(R"(probe --node expression --options '{"formula": "x * 2.0", "inputs": {"x": "float"}}' --sweep x:0:1:5)", &rc);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("5 points, 0 over the bound"), std::string::npos) << out;
+  out = wg(R"(probe --node expression --options '{"formula": "x * 2.0", "inputs": {"x": "float"}}' --sweep y:0:1:5)", &rc);
+  EXPECT_EQ(rc, 2) << out;
+  EXPECT_NE(out.find("'y' is neither 'angle', an input of expression (with these --options)"), std::string::npos) << out;
 }
 
 TEST(ProbeCli, ANodeAloneWithTheSuiteCases) {

@@ -91,6 +91,10 @@ TEST(TuneCli, ABudgetNothingMeetsIsOneMessageAndExit1) {
     EXPECT_TRUE(r.err.find("finite decimal numbers") != std::string::npos || r.err.find("at most 64") != std::string::npos)
         << bad << ": " << r.err;
   }
+  // An empty preset name was taken as "none" (exit 0, nothing written, nothing said).
+  r = wg("tune " + test::shellQuote(dir + "/g.json") + " --min-psnr 45 --write-preset ''" + kSmall);
+  EXPECT_EQ(r.exit, 2);
+  EXPECT_NE(r.err.find("is not an identifier"), std::string::npos) << r.err;
   EXPECT_EQ(test::readFile(dir + "/g.json"), before) << "nothing written";
   std::filesystem::remove_all(dir);
 }
