@@ -78,6 +78,11 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
       std::cerr << "watergraph: --target is empty (glsl330, es300, vk450, msl, hlsl, c-header)\n";
       return false;
     }
+    // getline drops a trailing empty entry: "glsl330," would pass as "glsl330".
+    if (n.front() == ',' || n.back() == ',' || n.find(",,") != std::string::npos) {
+      std::cerr << "watergraph: --target '" << n << "' has an empty entry (a comma too many)\n";
+      return false;
+    }
     while (std::getline(ss, part, ',')) {
       if (auto t = parseTarget(part)) {
         bool dup = false;

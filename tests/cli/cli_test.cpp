@@ -122,6 +122,12 @@ TEST(CliCompile, AnEmptyTargetIsAUsageError) {
   EXPECT_EQ(r.exit, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("--target is empty"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(tmp / "out"));
+  for (const char* list : {"glsl330,", ",glsl330", "glsl330,,es300"}) {
+    r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lake.json")) + " -o " + shellQuote(tmp / "out") + " --target " + list);
+    EXPECT_EQ(r.exit, 2) << list << ": " << r.err;
+    EXPECT_NE(r.err.find("has an empty entry"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(tmp / "out"));
+  }
 }
 
 TEST(CliCompile, MissingRequiredOptionIsAUsageError) {
