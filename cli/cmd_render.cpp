@@ -1,6 +1,7 @@
 // render: compile one graph for glsl330, es300 (EGL, Mesa llvmpipe) or vk450 (Vulkan, Mesa
 // lavapipe) and run it headless in the built-in scene; write the frame as a PNG, optionally with pass and timing stats.
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <regex>
@@ -10,6 +11,7 @@
 
 #ifdef WG_HAVE_RUNTIME
 #include "codegen/compile.h"
+#include "codegen/output_files.h"
 #include "codegen/texture_files.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
@@ -92,6 +94,17 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   if (args.vulkanValidation && target != Target::Vk450) {
     std::cerr << "watergraph: --vk-validation needs --target vk450 (the layer checks Vulkan calls)\n";
     return kExitUsageOrIo;
+  }
+  // An output that exists but cannot be replaced (a folder, a FIFO, a read-only file) is
+  // found before anything is rendered, reported at its own path; a missing folder is
+  // created when the image is written.
+  std::error_code exists;
+  if (std::filesystem::exists(std::filesystem::symlink_status(args.output, exists))) {
+    Diagnostics output;
+    if (!checkWritable(args.output, output)) {
+      printDiagnostics(output, global);
+      return kExitUsageOrIo;
+    }
   }
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);

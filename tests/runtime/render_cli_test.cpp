@@ -108,7 +108,7 @@ TEST(RenderCli, AnOutputPathThatIsNotARegularFileIsRefusedAndKept) {
     int code = -1;
     std::string out = render(lake + " --size 16x9 -o " + path, &code);
     EXPECT_EQ(code, 2) << path << ": " << out;
-    EXPECT_NE(out.find(path + ": cannot replace: not a regular file"), std::string::npos) << out;
+    EXPECT_NE(out.find(path + ": error: [WG051] cannot replace: not a regular file"), std::string::npos) << out;
   }
   EXPECT_TRUE(std::filesystem::is_fifo(fifo));
   EXPECT_TRUE(std::filesystem::is_directory(folder));
