@@ -26,6 +26,9 @@ int printSubgraphTypes(const std::vector<std::string>& paths, bool json, const G
     };
     if (graph->interface) add(graph->name, *graph);
     for (const auto& im : graph->imports) add(im.name, *im.graph);
+    // Text mode says so rather than printing nothing (JSON: the empty list says it).
+    if (!json && !graph->interface && graph->imports.empty())
+      text += path + ": no subgraph node types (not a function graph, and it imports none)\n";
   }
   if (diags.hasErrors()) {
     printDiagnostics(diags, global);

@@ -34,6 +34,28 @@ std::size_t numberLength(std::string_view s) {
 
 }  // namespace
 
+// The bytes of the UTF-8 sequence starting at `at` (1 for ASCII or a byte that starts no
+// well-formed sequence), so an unexpected 'é' is named whole, not by its first byte.
+std::size_t utf8SequenceLength(std::string_view s, std::size_t at) {
+  auto u = static_cast<unsigned char>(s[at]);
+  std::size_t n = u >= 0xf0 && u <= 0xf4 ? 4 : u >= 0xe0 ? 3 : u >= 0xc2 && u <= 0xdf ? 2 : 1;
+  if (u >= 0xf5) n = 1;
+  if (at + n > s.size()) return 1;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((static_cast<unsigned char>(s[at + k]) & 0xc0) != 0x80) return 1;
+  return n;
+}
+
+// " (U+00E9)" for a multi-byte UTF-8 sequence, "" otherwise.
+std::string codePointNote(std::string_view seq) {
+  if (seq.size() < 2) return "";
+  unsigned cp = static_cast<unsigned char>(seq[0]) & (0x7fu >> seq.size());
+  for (std::size_t k = 1; k < seq.size(); ++k) cp = (cp << 6) | (static_cast<unsigned char>(seq[k]) & 0x3fu);
+  char buf[16];
+  std::snprintf(buf, sizeof buf, " (U+%04X)", cp);
+  return buf;
+}
+
 std::string quoteToken(std::string_view text) {
   std::string out = "'";
   for (char c : text) {
@@ -93,7 +115,10 @@ std::vector<Token> tokenize(std::string_view formula, std::optional<FormulaError
       for (const char* two : kTwo)
         if (formula.substr(i, 2) == two) t.text = two;
       if (t.text.empty() && kOne.find(c) != std::string_view::npos) t.text = std::string(1, c);
-      if (t.text.empty()) return fail(i, 1, "unexpected character " + quoteToken(formula.substr(i, 1)));
+      if (t.text.empty()) {
+        std::size_t n = utf8SequenceLength(formula, i);
+        return fail(i, n, "unexpected character " + quoteToken(formula.substr(i, n)) + codePointNote(formula.substr(i, n)));
+      }
     }
     t.span.length = t.text.size();
     i += t.text.size();

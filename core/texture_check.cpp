@@ -1,6 +1,7 @@
 #include "core/texture_check.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -78,7 +79,9 @@ std::string checkTextureSource(std::string_view source, const std::string& graph
   // followed below, and the real path must stay inside too).
   fs::path folded = rel.lexically_normal();
   if (!folded.empty() && *folded.begin() == "..") return quoted + " leaves the graph's folder";
-  if (rel.extension() != ".png") return "texture '" + std::string(source) + "' is not a .png file";
+  std::string extension = rel.extension().string();  // .png in any case: files saved as UP.PNG
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (extension != ".png") return "texture '" + std::string(source) + "' is not a .png file";
   fs::path folder(graphDir.empty() ? "." : graphDir);
   fs::path full = folder / rel;
   std::error_code ec;

@@ -117,6 +117,10 @@ TEST(ExpressionParser, ErrorsNameWhatWasFoundWhere) {
            {"v.1", 1, "unexpected number '.1' after the formula"},  // ".1" is a float, as in GLSL
            {"v.(x)", 2, "expected a swizzle such as 'xy' after '.', found '('"},
            {"a\x01", 1, "unexpected character '\\x01'"},
+           // A multi-byte character is named whole (it was its first byte, '\xc3').
+           {"x + \xc3\xa9", 4, "unexpected character '\\xc3\\xa9' (U+00E9)"},
+           {"x + \xe2\x82\xac", 4, "unexpected character '\\xe2\\x82\\xac' (U+20AC)"},
+           {"x + \xc3", 4, "unexpected character '\\xc3'"},  // cut short: the byte alone
            {"", 0, "the formula ends where a value was expected"},
        }) {
     FormulaError e = errorOf(c.formula);

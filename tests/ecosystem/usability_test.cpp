@@ -222,6 +222,10 @@ TEST(Usability, NodesPrintsAFunctionGraphsInterface) {
   auto text = eco::wgRun("nodes --graph " + shellQuote(test::sourcePath("graphs/lib/fresnel_sky.json")));
   ASSERT_EQ(text.exit, 0) << text.err;
   EXPECT_NE(text.out.find("fresnel_sky  (subgraph, "), std::string::npos) << text.out;
+  // A graph that offers none says so (it printed nothing).
+  auto none = eco::wgRun("nodes --graph " + shellQuote(test::sourcePath("graphs/lake.json")));
+  EXPECT_EQ(none.exit, 0) << none.err;
+  EXPECT_NE(none.out.find("lake.json: no subgraph node types"), std::string::npos) << none.out;
   EXPECT_NE(text.out.find("    f0: float, default 0.02 in [0, 1]"), std::string::npos) << text.out;
   // A user graph lists what it imports, under the names it imports them as.
   auto json = eco::wgRun("nodes --json --graph " + shellQuote(test::sourcePath("graphs/pool.json")));

@@ -87,6 +87,14 @@ TEST_F(TextureInput, AGoodPngInsideTheFolderIsAccepted) {
   EXPECT_EQ(file.height, 2);
 }
 
+// Found in review: UP.PNG was "not a .png file"; the extension is matched in any case.
+TEST_F(TextureInput, AnUpperCaseExtensionIsAPng) {
+  test::writeFile(dir + "/UP.PNG", pngBytes(2, 2));
+  EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("UP.PNG"))), "");
+  test::writeFile(dir + "/up.jpg", pngBytes(2, 2));
+  EXPECT_NE(firstError(resolveIn(dir, edgeFoamGraph("up.jpg"))).find("is not a .png file"), std::string::npos);
+}
+
 TEST_F(TextureInput, AFileSymlinkLeadingOutsideIsRefused) {
   fs::create_symlink(outside + "/secret.png", dir + "/foam.png");
   std::string e = firstError(resolveIn(dir, edgeFoamGraph("foam.png")));
