@@ -28,7 +28,7 @@ struct RenderArgs {
   std::string graph;
   std::string output;
   std::string size = "1280x720";
-  float time = 3.5f;
+  double time = 3.5;
   std::string camera = "above";
   std::string target = "glsl330";
   int frames = 1;

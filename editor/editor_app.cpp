@@ -564,7 +564,12 @@ void App::drawPreviewPanel(float x, float y, float w, float h) {
   if (ImGui::Button(playing_ ? "pause" : "play")) playing_ = !playing_;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(std::max(100.0f, iw - 330));
-  if (ImGui::SliderFloat("time", &scene_.time, 0, std::max(60.0f, scene_.time), "%.2f s")) previewDirty_ = true;
+  // ImGui's slider edits a float; the scene keeps seconds in double (phases at large times).
+  float shownTime = static_cast<float>(scene_.time);
+  if (ImGui::SliderFloat("time", &shownTime, 0, std::max(60.0f, shownTime), "%.2f s")) {
+    scene_.time = shownTime;
+    previewDirty_ = true;
+  }
   ImGui::SetNextItemWidth(160);
   if (ImGui::SliderFloat("sun azimuth", &scene_.sunAzimuthDegrees, 0, 360, "%.0f deg")) previewDirty_ = true;
   ImGui::SameLine();

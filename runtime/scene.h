@@ -30,7 +30,7 @@ const std::vector<std::string>& cameraPresetNames();
 std::optional<Camera> cameraPreset(std::string_view name);
 
 struct SceneOptions {
-  float time = 3.5f;              // seconds, u_time
+  double time = 3.5;              // seconds (u_time is its float; phases take it in double)
   float sunAzimuthDegrees = 110;  // from +x towards +z
   float sunElevationDegrees = 30; // above the horizon
   // false: none of the built-in scene (sky, floor, shore, pillars, rocks) is drawn in any

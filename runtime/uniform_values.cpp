@@ -16,7 +16,7 @@ std::vector<float> builtinUniformValue(BuiltinUniform builtin, double angularFre
     case BuiltinUniform::View: mat(f.view); break;
     case BuiltinUniform::Projection: mat(f.projection); break;
     case BuiltinUniform::CameraPosition: v = {f.camera.position.x, f.camera.position.y, f.camera.position.z}; break;
-    case BuiltinUniform::Time: v = {f.time}; break;
+    case BuiltinUniform::Time: v = {static_cast<float>(f.time)}; break;
     case BuiltinUniform::ViewportSize: v = {static_cast<float>(f.width), static_cast<float>(f.height)}; break;
     case BuiltinUniform::CameraNearFar: {
       // Each plane clamped into [1e-6, 1e30] (NaN to 1e-6; an infinite far plane to
@@ -57,7 +57,7 @@ std::vector<float> derivedUniformValue(const DerivedValue& derived, const FrameV
   };
   auto row = [&](BuiltinUniform u) { return fromFloats(builtinUniformRow(u).type, builtinUniformValue(u, 0, f)); };
   EvalEnvironment env;
-  env.time = row(BuiltinUniform::Time);
+  env.time = Value::scalar(f.time);  // the frame's double seconds: a scroll fract(t * speed) stays exact at large t
   env.cameraPosition = row(BuiltinUniform::CameraPosition);
   env.cameraNearFar = row(BuiltinUniform::CameraNearFar);
   env.view = row(BuiltinUniform::View);

@@ -18,7 +18,7 @@ struct FrameValues {
   Camera camera;
   glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f};  // as the shaders get them
   glm::vec3 sun{0.0f, 1.0f, 0.0f};
-  float time = 0;
+  double time = 0;  // seconds: the phases and derived values take it in double; u_time is its float
   int width = 1, height = 1;
 };
 

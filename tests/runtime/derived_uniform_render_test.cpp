@@ -15,6 +15,7 @@
 #include "runtime/egl_context.h"
 #include "runtime/image.h"
 #include "runtime/preview.h"
+#include "runtime/uniform_values.h"
 #include "runtime/vk_preview.h"
 #include "runtime_test_support.h"
 #include "test_support.h"
@@ -137,6 +138,28 @@ TEST(DerivedUniformParameters, ASetParameterReachesTheDerivedUniformWithoutAReco
   derived.renderFrame();
   plain.renderFrame();
   EXPECT_LE(maxDifference(derived.readRgba32f(), plain.readRgba32f()), kTolerance);
+}
+
+// The frame's time is kept in double and a derived uniform reads it so: sin(4 t) at t = 1e7
+// + 0.3 s is that of the exact time, not of its float (1e7: float32 steps 1 s there).
+TEST(DerivedUniformTime, ADerivedValueReadsTheFramesTimeInDouble) {
+  CompileResult on = compileFor("", true, {Target::Glsl330});
+  const ManifestUniform* u = nullptr;
+  for (const ManifestUniform& m : on.manifest.uniforms)
+    if (m.derived && m.type == Type::Vec3) u = &m;  // normalize($wind) * sin(time * $k)
+  ASSERT_TRUE(u);
+  FrameValues f;
+  f.time = 1e7 + 0.3;
+  std::vector<Value> parameters = {Value::scalar(4), Value::vector({1, 0.5, 2})};  // k, wind: manifest order
+  ASSERT_EQ(manifestParameters(on.manifest.uniforms).size(), 2u);
+  ASSERT_EQ(manifestParameters(on.manifest.uniforms)[0].name, "k");
+  std::vector<float> got = derivedUniformValue(*u->derived, f, parameters);
+  ASSERT_EQ(got.size(), 3u);
+  double wind = std::sqrt(1 + 0.25 + 4);
+  double exact = std::sin((1e7 + 0.3) * 4) / wind;
+  double ofFloat = std::sin(1e7 * 4) / wind;  // what float32(t) would give: 1.2 rad of phase away
+  EXPECT_NEAR(got[0], exact, 1e-6);
+  EXPECT_GT(std::abs(exact - ofFloat), 0.1) << "the case must tell the two apart";
 }
 
 }  // namespace derived_render_test
