@@ -4,6 +4,7 @@
 // the inputs read back from the GPU, each held to the graph's error bound; --error-map writes the
 // per-pixel errors of the worst view. Exit 1 on any NaN or Inf or a pixel over its bound.
 #include <filesystem>
+#include <map>
 #include <iostream>
 #include <memory>
 #include <regex>
@@ -37,6 +38,18 @@ struct CheckArgs {
 };
 
 #ifdef WG_HAVE_RUNTIME
+// The error map of one graph on one target: FILE.png, with -GRAPH for several graphs and
+// -TARGET for several targets (--target all), so none replaces another.
+std::string errorMapFile(const std::string& given, const std::string& graphPath, Target target, bool severalGraphs,
+                         bool severalTargets) {
+  std::filesystem::path f(given);
+  std::string stem = f.stem().string();
+  if (severalGraphs) stem += "-" + std::filesystem::path(graphPath).stem().string();
+  if (severalTargets) stem += "-" + std::string(targetName(target));
+  f.replace_filename(stem + f.extension().string());
+  return f.string();
+}
+
 int runCheck(const CheckArgs& args, const GlobalOptions& global) {
   std::smatch m;
   static const std::regex sizeRe("([0-9]{1,4})x([0-9]{1,4})");
@@ -64,6 +77,19 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
   std::vector<Target> targets;
   if (args.target == "all") targets = {Target::Glsl330, Target::Es300, Target::Vk450};
   else targets = {*parseTarget(args.target)};
+  // One error map per graph and target: two graphs of one file name would write the same
+  // FILE-GRAPH.png, the second replacing the first; refused before anything is rendered.
+  if (!args.errorMap.empty() && args.graphs.size() > 1) {
+    std::map<std::string, std::string> byStem;
+    for (const auto& path : args.graphs) {
+      auto [it, fresh] = byStem.emplace(std::filesystem::path(path).stem().string(), path);
+      if (fresh || it->second == path) continue;
+      std::cerr << "watergraph: '" << it->second << "' and '" << path << "' would both write the error map "
+                << errorMapFile(args.errorMap, path, targets.front(), true, targets.size() > 1)
+                << "; check them one at a time\n";
+      return kExitUsageOrIo;
+    }
+  }
   int exit = kExitOk;
   for (Target target : targets) {
     std::unique_ptr<accuracy::GpuExecutor> executor;
@@ -98,12 +124,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         if (report.failed()) exit = std::max(exit, kExitGraphError);
         rt::Image map = accuracy::errorMapImage(report);
         if (map.width > 0) {
-          std::string file = args.errorMap;
-          if (args.graphs.size() > 1) {
-            std::filesystem::path f(file);
-            f.replace_filename(f.stem().string() + "-" + std::filesystem::path(path).stem().string() + f.extension().string());
-            file = f.string();
-          }
+          std::string file = errorMapFile(args.errorMap, path, target, args.graphs.size() > 1, targets.size() > 1);
           rt::writePng(file, map);
           std::cout << "  error map: " << file << "\n";
         } else if (options.errorMaps) {
@@ -167,7 +188,8 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--error-map", args->errorMap,
                   "write the per-pixel error against the CPU of the worst view as a PNG (the frame's size; every water "
                   "pixel compared): grey on a log scale from 1e-8 (black) to 1e-3 (white), red over the error bound, "
-                  "dark blue not compared. With several graphs, FILE-GRAPH.png per graph");
+                  "dark blue not compared. With several graphs, FILE-GRAPH.png per graph; with --target all, FILE-TARGET.png "
+                  "per target (FILE-GRAPH-TARGET.png for both)");
   cmd->add_option("--mutate", args->mutate,
                   "FIND=>REPLACE: edit the water shaders before rendering (a wrong node: check must fail)");
 #ifdef WG_HAVE_RUNTIME
