@@ -38,8 +38,8 @@ float wg_safe_atan2_float(float y, float x) {
   // The angle of |y|, then y's sign: a zero y of either sign (-0.0 comes out of -a or a * b
   // with a = 0) gives +pi on the negative x axis, where atan(-0.0, -1) is -pi.
   float a = atan(abs(y), x);
-  float signed = y < 0.0 ? -a : a;
-  return abs(x) + abs(y) == 0.0 ? 0.0 : signed;
+  float withSign = y < 0.0 ? -a : a;
+  return abs(x) + abs(y) == 0.0 ? 0.0 : withSign;
 }
 vec2 wg_safe_atan2_vec2(vec2 y, vec2 x) { return vec2(wg_safe_atan2_float(y.x, x.x), wg_safe_atan2_float(y.y, x.y)); }
 vec3 wg_safe_atan2_vec3(vec3 y, vec3 x) { return vec3(wg_safe_atan2_vec2(y.xy, x.xy), wg_safe_atan2_float(y.z, x.z)); }

@@ -164,7 +164,7 @@ TEST(CheckCli, ErrorMapIsAPngOfTheFrameSize) {
 }
 
 // One error map per graph and target (--target all wrote the three targets' maps to one
-// file, each replacing the last); two graphs of one file name are refused before rendering.
+// file, each replacing the last).
 TEST(CheckCli, ErrorMapsOfSeveralTargetsAndGraphsDoNotReplaceEachOther) {
   std::string dir = test::makeTempDir("wg_check_maps");
   std::string lake = test::shellQuote(test::sourcePath("graphs/lake.json"));
@@ -177,12 +177,20 @@ TEST(CheckCli, ErrorMapsOfSeveralTargetsAndGraphsDoNotReplaceEachOther) {
   for (const char* g : {"lake", "shelf"})
     for (const char* t : {"glsl330", "vk450"})  // es300 compares nothing against the CPU: no map
       EXPECT_TRUE(std::filesystem::exists(dir + "/m-" + g + "-" + t + ".png")) << g << " " << t << "\n" << out;
+  std::filesystem::remove_all(dir);
+}
+
+// Two graphs of one file name would write one FILE-GRAPH.png: refused before rendering.
+TEST(CheckCli, TwoGraphsOfOneFileNameAreRefusedWithAnErrorMap) {
+  std::string dir = test::makeTempDir("wg_check_clash");
+  std::string lake = test::shellQuote(test::sourcePath("graphs/lake.json"));
+  std::string out;
   std::filesystem::create_directories(dir + "/copy");
   std::filesystem::copy_file(test::sourcePath("graphs/lake.json"), dir + "/copy/lake.json");
-  rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check " + lake + " " +
-                            test::shellQuote(dir + "/copy/lake.json") + " --target glsl330 --size 16x9 --error-map " +
-                            test::shellQuote(dir + "/n.png"),
-                        &out);
+  int rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check " + lake + " " +
+                                test::shellQuote(dir + "/copy/lake.json") + " --target glsl330 --size 16x9 --error-map " +
+                                test::shellQuote(dir + "/n.png"),
+                            &out);
   EXPECT_EQ(rc, 2) << out;
   EXPECT_NE(out.find("would both write the error map"), std::string::npos) << out;
   EXPECT_FALSE(std::filesystem::exists(dir + "/n-lake.png"));
