@@ -22,6 +22,15 @@ Value* builtinField(EvalEnvironment& env, const std::string& key) {
   return nullptr;
 }
 
+}  // namespace
+
+bool isSweepBuiltinKey(const std::string& key) {
+  EvalEnvironment env;
+  return builtinField(env, key) != nullptr;
+}
+
+namespace {
+
 void setInput(ProbeCase& c, const std::string& port, const Value& v) {
   for (auto& [name, value] : c.inputs)
     if (name == port) {

@@ -26,6 +26,10 @@ struct SweepAxis {
 // nullopt and `error` set when the text is not NAME[.c]:FROM:TO:COUNT with COUNT >= 1.
 std::optional<SweepAxis> parseSweepAxis(const std::string& text, std::string& error);
 
+// Whether `key` names a builtin a sweep can step (time, world_position, near_far, ...: the
+// builtin keys of a cases file).
+bool isSweepBuiltinKey(const std::string& key);
+
 // The cases of the sweep: `base` with the axis value i at position i (named "NAME=value").
 // An input port the base case does not set starts from the port's default (zero when none).
 // Values are rounded to float32, as in a cases file. `ports` are the node's for its options

@@ -79,9 +79,7 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
   }
   // The node's ports for these options: an expression's inputs are those --options declares.
   NodePorts ports = portsOfNode(spec, options);
-  if (axis->name != "angle" && ports.inputIndex(axis->name) < 0 &&
-      !std::set<std::string>{"uv", "world_position", "normal", "view_direction", "camera_position", "time", "screen_uv",
-                             "frag_depth", "near_far", "sun_direction"}.count(axis->name)) {
+  if (axis->name != "angle" && ports.inputIndex(axis->name) < 0 && !accuracy::isSweepBuiltinKey(axis->name)) {
     std::cerr << "watergraph: --sweep: '" << axis->name << "' is neither 'angle', an input of " << spec.type
               << (spec.portsFor ? " (with these --options)" : "") << " nor a builtin key\n";
     return kExitUsageOrIo;

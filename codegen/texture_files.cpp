@@ -86,7 +86,7 @@ std::vector<OutputFile> textureFiles(const CompileResult& result, const std::str
     std::string node = op ? op->nodeId : std::string();
     // Relative to the top graph's folder, also for a subgraph's texture (its path was
     // rewritten so when the subgraph was inlined), not to the op's own file.
-    std::string dir = result.program.directory.empty() ? "." : result.program.directory;
+    std::string dir = result.program.folder();
     std::string why;
     auto img = loadTexture(source, dir, &why);
     if (!img) {

@@ -111,6 +111,9 @@ struct Program {
   std::string description;
   std::string file;
   std::string directory;  // the graph file's folder: texture paths are relative to it
+  // `directory`, or "." for a graph file named without one: where a texture's (top-relative)
+  // path is resolved, also for a texture a subgraph in another folder names.
+  std::string folder() const { return directory.empty() ? "." : directory; }
   int totalNodes = 0;  // nodes in the graph file, each subgraph instance counted as the nodes it inlines
   // The graph files it imports, relative to `directory`, each once (the manifest's "imports").
   std::vector<std::string> importedFiles;

@@ -106,7 +106,7 @@ class Resolver {
     std::vector<std::string> files = graphFilesRead(graph_);
     for (size_t k = 1; k < files.size(); ++k) {
       namespace fs = std::filesystem;
-      fs::path top = program_.directory.empty() ? fs::path(".") : fs::path(program_.directory);
+      fs::path top(program_.folder());
       program_.importedFiles.push_back(fs::path(files[k]).lexically_normal().lexically_relative(top.lexically_normal()).generic_string());
     }
     shared_.nodeOutputs = nodeOutputs;

@@ -57,7 +57,7 @@ std::map<std::string, TextureOrigin> textureOrigins(const CompileResult& result)
       TextureOrigin o;
       // The manifest's source is relative to the top graph's folder, also for a texture a
       // subgraph in another folder names (the loader rewrote it), not to the op's file.
-      o.graphDir = result.program.directory.empty() ? "." : result.program.directory;
+      o.graphDir = result.program.folder();
       o.owner = op.where.file.str() + ":" + std::to_string(op.where.line) + ":" + std::to_string(op.where.col) + ": node '" +
                 op.nodeId + "'";
       out.emplace(source, o);
