@@ -298,6 +298,7 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
     }
     if (compare) {
       if (options.errorMaps) {
+        v.frame = img.rgba32f;
         v.errors.assign(static_cast<size_t>(width) * height, -1.0f);
         v.ratios.assign(static_cast<size_t>(width) * height, -1.0f);
       }
@@ -358,7 +359,7 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   return report;
 }
 
-rt::Image errorMapImage(const CheckReport& report) {
+rt::Image errorMapImage(const CheckReport& report, const ViewTransform& view) {
   const CheckViewResult* pick = nullptr;
   for (const auto& v : report.views)
     if (!v.errors.empty() && v.referenceSamples > 0 && (!pick || v.worstRatio > pick->worstRatio)) pick = &v;
@@ -371,7 +372,9 @@ rt::Image errorMapImage(const CheckReport& report) {
     uint8_t* px = &img.rgba8[i * 4];
     float e = pick->errors[i], r = pick->ratios[i];
     if (e < 0) {
-      px[0] = 0, px[1] = 0, px[2] = 64;
+      const float* f = &pick->frame[i * 4];
+      const Rgb shown = outputTransform(view, {f[0], f[1], f[2]});
+      for (size_t c = 0; c < 3; ++c) px[c] = static_cast<uint8_t>(std::lround(255 * 0.25 * shown[c]));
     } else if (!(r <= 1)) {
       px[0] = 255, px[1] = 0, px[2] = 0;
     } else {

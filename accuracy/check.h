@@ -44,6 +44,7 @@ struct CheckViewResult {
   // With CheckOptions::errorMaps, per pixel (rows top to bottom): the largest error over
   // R, G and B, and the largest error / bound; -1 where the pixel was not compared.
   std::vector<float> errors, ratios;
+  std::vector<float> frame;  // with errorMaps: the frame's linear RGBA (rows top to bottom)
 };
 
 struct CheckReport {
@@ -85,7 +86,9 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
 // less, white at 1e-3; red where the pixel is over its error bound; dark blue where the
 // pixel was not compared (not water, near a silhouette, or no reference). Empty (0 x 0)
 // without error maps or compared pixels.
-rt::Image errorMapImage(const CheckReport& report);
+// Pixels not compared show the frame through `view` (core/view_transform.h) at a quarter of
+// its brightness, so the compared ones stand out over a picture of the scene.
+rt::Image errorMapImage(const CheckReport& report, const ViewTransform& view = {});
 
 std::string formatCheckText(const CheckReport& report);
 

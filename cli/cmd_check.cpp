@@ -10,6 +10,7 @@
 #include <regex>
 
 #include "cli/commands.h"
+#include "cli/view_flags.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/check.h"
@@ -35,6 +36,7 @@ struct CheckArgs {
   std::string preset;    // a preset of each graph, applied before compiling
   bool derivedUniforms = false;  // CompileOptions::derivedUniforms
   bool vulkanValidation = false;  // vk450: under the Khronos validation layer
+  ViewFlags view;                 // the error map's picture of the frame
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -122,7 +124,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         auto report = accuracy::checkGraph(*result, path, *executor, options);
         std::cout << accuracy::formatCheckText(report);
         if (report.failed()) exit = std::max(exit, kExitGraphError);
-        rt::Image map = accuracy::errorMapImage(report);
+        rt::Image map = accuracy::errorMapImage(report, args.view.over(result->program.view));
         if (map.width > 0) {
           std::string file = errorMapFile(args.errorMap, path, target, args.graphs.size() > 1, targets.size() > 1);
           rt::writePng(file, map);
@@ -185,10 +187,11 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
                 "draw in double (experimental)");
   cmd->add_option("--preset", args->preset,
                   "a preset from each graph's \"presets\" table: its parameter values and node options apply");
+  addViewFlags(cmd, args->view);
   cmd->add_option("--error-map", args->errorMap,
                   "write the per-pixel error against the CPU of the worst view as a PNG (the frame's size; every water "
                   "pixel compared): grey on a log scale from 1e-8 (black) to 1e-3 (white), red over the error bound, "
-                  "dark blue not compared. With several graphs, FILE-GRAPH.png per graph; with --target all, FILE-TARGET.png "
+                  "not compared: the frame through --tonemap/--exposure at a quarter of its brightness. With several graphs, FILE-GRAPH.png per graph; with --target all, FILE-TARGET.png "
                   "per target (FILE-GRAPH-TARGET.png for both)");
   cmd->add_option("--mutate", args->mutate,
                   "FIND=>REPLACE: edit the water shaders before rendering (a wrong node: check must fail)");

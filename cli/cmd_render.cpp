@@ -8,6 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/finite_number.h"
+#include "cli/view_flags.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "codegen/compile.h"
@@ -41,6 +42,7 @@ struct RenderArgs {
   bool obliqueReflection = false;
   std::string scene = "builtin";
   bool vulkanValidation = false;
+  ViewFlags view;
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -55,14 +57,16 @@ const char* colorName(rt::ColorFormat f) {
   switch (f) {
     case rt::ColorFormat::None: return "";
     case rt::ColorFormat::Rgba8: return "RGBA8";
+    case rt::ColorFormat::Rgba16f: return "RGBA16F";
     case rt::ColorFormat::Rgba32f: return "RGBA32F";
   }
   return "";
 }
 
-void printStats(const RenderArgs& args, const std::string& name, const rt::Preview& p) {
-  std::printf("render %s: %s on %s (%s), %dx%d, camera %s, time %g s\n", name.c_str(), args.target.c_str(),
-              p.renderer.c_str(), p.version.c_str(), p.image.width, p.image.height, args.camera.c_str(), args.time);
+void printStats(const RenderArgs& args, const std::string& name, const rt::Preview& p, const ViewTransform& view) {
+  std::printf("render %s: %s on %s (%s), %dx%d, camera %s, time %g s, view %s at %g EV\n", name.c_str(),
+              args.target.c_str(), p.renderer.c_str(), p.version.c_str(), p.image.width, p.image.height,
+              args.camera.c_str(), args.time, std::string(toneMapperName(view.toneMapper)).c_str(), view.exposureEv);
   std::string passes;
   for (auto k : p.plan.passes) passes += (passes.empty() ? "" : ", ") + std::string(rt::passName(k));
   std::printf("passes: %s\n", passes.c_str());
@@ -72,7 +76,9 @@ void printStats(const RenderArgs& args, const std::string& name, const rt::Previ
     if (t.depth != rt::DepthFormat::None) fmt += std::string(fmt.empty() ? "" : " + ") + "DEPTH32F";
     std::string dims = std::to_string(t.width) + "x" + std::to_string(t.height) + (t.cube ? "x6" : "");
     std::printf("  %-12s %-12s %-18s %10zu bytes  %s\n", t.name.c_str(), dims.c_str(), fmt.c_str(), t.bytes(),
-                t.sampler.empty() ? "(the frame)" : t.sampler.c_str());
+                t.name == rt::kDisplayTarget ? "(the PNG: the frame through the output transform)"
+                : t.sampler.empty()          ? "(the frame: linear radiance)"
+                                             : t.sampler.c_str());
   }
   double lo = p.frameMs.front(), hi = p.frameMs.front();
   for (double v : p.frameMs) lo = std::min(lo, v), hi = std::max(hi, v);
@@ -129,12 +135,13 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   settings.scene.sunAzimuthDegrees = args.sunAzimuth;
   settings.scene.sunElevationDegrees = args.sunElevation;
   settings.scene.drawScene = args.scene == "builtin";
+  settings.view = args.view.over(result->program.view);
   try {
     rt::Preview p = target == Target::Vk450
                         ? rt::renderVulkanPreview(*result, settings, args.frames, /*warmup=*/args.stats, args.vulkanValidation)
                         : rt::renderPreview(*result, target, settings, args.frames, /*warmup=*/args.stats);
     rt::writePng(args.output, p.image);
-    if (args.stats) printStats(args, graphBaseName(args.graph), p);
+    if (args.stats) printStats(args, graphBaseName(args.graph), p, settings.view);
   } catch (const rt::TextureLoadError& e) {
     Diagnostics textureDiags;
     reportUnusableTexture(result->program, &*graph, e.source(), e.why(), textureDiags);
@@ -162,9 +169,13 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph render graphs/lake.json -o lake.png --target es300 --frames 20 --stats\n"
       "  watergraph render graphs/topdown.json -o choppy.png --preset choppy --camera topdown\n"
       "  watergraph render graphs/lake.json -o water.png --target es300 --scene none   # the water alone, on black\n"
-      "  watergraph render graphs/lake.json -o lake_vk.png --target vk450 --vk-validation\n\n"
+      "  watergraph render graphs/lake.json -o lake_vk.png --target vk450 --vk-validation\n"
+      "  watergraph render graphs/ocean.json -o ocean.png --tonemap agx --exposure 0.5\n\n"
       "Exit codes: 0 ok; 1 graph errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no "
-      "EGL/GL context or Vulkan device.");
+      "EGL/GL context or Vulkan device.\n\n"
+      "The frame is linear, scene-referred radiance in RGBA16F targets; the PNG is that through the output "
+      "transform: exposure (--exposure EV), a tone mapper (--tonemap none|aces|agx|neutral) and the sRGB encoding. "
+      "Both default to the graph's \"view\".");
   cmd->add_option("graph", args->graph, "graph file (.json)")->required();
   cmd->add_option("-o,--output", args->output, "PNG file to write (written atomically)")->required();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
@@ -199,6 +210,7 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("--derived-uniforms", args->derivedUniforms,
                 "per-draw values the fragment shader would compute for every pixel become uniforms computed once per "
                 "draw in double (experimental)");
+  addViewFlags(cmd, args->view);
   cmd->add_option("--preset", args->preset, "a preset from the graph's \"presets\" table (e.g. calm, moderate, choppy)");
   cmd->add_flag("--oblique-reflection", args->obliqueReflection,
                 "clip the planar reflection pass with an oblique near plane on the water (the stylized water shader's) instead of a clip "

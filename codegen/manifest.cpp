@@ -211,6 +211,17 @@ std::string Manifest::fileText() const {
     w.endObject();
   }
   w.endArray();
+  w.key("color");
+  w.beginObject();
+  w.member("frame", "linear");
+  w.member("primaries", "bt709");
+  w.key("view");
+  w.beginObject();
+  w.memberNumber("exposure", view.exposureEv);
+  w.member("output", "srgb");
+  w.member("tonemap", toneMapperName(view.toneMapper));
+  w.endObject();
+  w.endObject();
   if (!description.empty()) w.member("description", description);
   w.memberInteger("format", format);
   w.key("functions");

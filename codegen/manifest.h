@@ -21,6 +21,7 @@
 
 #include "codegen/emit_glsl.h"
 #include "codegen/target.h"
+#include "core/view_transform.h"
 #include "core/interface_tables.h"
 #include "core/node_spec.h"
 #include "core/types.h"
@@ -103,6 +104,11 @@ struct Manifest {
   int format = kManifestFormat;
   std::string graph;
   std::string description;  // "" when the graph has none
+  // The colour contract: "fragment.color" is linear, scene-referred radiance (Rec. 709
+  // primaries, may exceed 1); `view` is the output transform the graph's author meant it to
+  // be shown through, written as "color": {"frame": "linear", "primaries": "bt709",
+  // "view": {"exposure": EV, "output": "srgb", "tonemap": NAME}}.
+  ViewTransform view;
   std::string preset;       // the preset whose values became the defaults; "" for none
   // The graph files the graph imports (its subgraphs), relative to its folder, each once.
   std::vector<std::string> imports;

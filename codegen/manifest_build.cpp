@@ -58,6 +58,7 @@ Manifest buildManifest(const Program& program, const TargetPlans& plans, const s
   m.graph = program.graphName;
   m.imports = program.importedFiles;
   m.description = program.description;
+  m.view = program.view;
 
   for (size_t i = 0; i < plans.targets.size(); ++i) {
     const Target target = plans.targets[i];

@@ -100,8 +100,8 @@ std::vector<RenderPass> passesOf(const json& manifest) {
     if (!p.is_string()) fail("the manifest's \"passes\" list holds a non-string entry");
     const std::string name = p.get<std::string>();
     auto pass = parseRenderPass(name);
-    // The opaque scene always runs: a manifest never lists it.
-    if (!pass || *pass == RenderPass::OpaqueScene) fail("the manifest lists an unknown pass '" + name + "'");
+    // The opaque scene and the output transform are the runtime's: a manifest never lists them.
+    if (!pass || *pass == RenderPass::OpaqueScene || *pass == RenderPass::OutputTransform) fail("the manifest lists an unknown pass '" + name + "'");
     passes.push_back(*pass);
   }
   return passes;
@@ -311,6 +311,30 @@ void nodesOf(const json& nodes, Manifest& m) {
   }
 }
 
+// "color": the contract this runtime implements (linear bt709 frame, sRGB output) and the
+// graph's view. Absent in manifests written before it existed: the default view.
+ViewTransform colorContractOf(const json& c) {
+  const std::string what = "the manifest's \"color\"";
+  if (!c.is_object()) fail(what + " is not an object");
+  onlyMembers(c, {"frame", "primaries", "view"}, what);
+  if (text(c, "frame", what) != "linear") fail(what + " has a \"frame\" other than \"linear\"");
+  if (text(c, "primaries", what) != "bt709") fail(what + " has \"primaries\" other than \"bt709\"");
+  const json* v = member(c, "view");
+  if (!v || !v->is_object()) fail(what + " has no \"view\" object");
+  onlyMembers(*v, {"exposure", "output", "tonemap"}, what + "'s view");
+  if (text(*v, "output", what + "'s view") != "srgb") fail(what + "'s view has an \"output\" other than \"srgb\"");
+  ViewTransform view;
+  const std::string mapper = text(*v, "tonemap", what + "'s view");
+  auto t = parseToneMapper(mapper);
+  if (!t) fail(what + "'s view names an unknown tone mapper '" + mapper + "'");
+  view.toneMapper = *t;
+  const json* e = member(*v, "exposure");
+  if (!e || !e->is_number() || !(e->get<double>() >= kMinExposureEv && e->get<double>() <= kMaxExposureEv))
+    fail(what + "'s view has no \"exposure\" number in [-20, 20]");
+  view.exposureEv = e->get<double>();
+  return view;
+}
+
 }  // namespace
 
 Manifest Manifest::fromJson(const json& j) {
@@ -320,12 +344,13 @@ Manifest Manifest::fromJson(const json& j) {
   if (const json* scales = member(j, "pass_scales")) m.passScales = passScalesOf(*scales, m.passes);
   onlyMembers(j,
               {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
-               "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan"},
+               "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan", "color"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
     fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));
   m.graph = optionalText(j, "graph", "the manifest");
   m.description = optionalText(j, "description", "the manifest");
+  if (const json* color = member(j, "color")) m.view = colorContractOf(*color);
   m.preset = optionalText(j, "preset", "the manifest");
   if (const json* imports = member(j, "imports")) m.imports = texts(*imports, "the manifest's \"imports\"");
   if (const json* targets = member(j, "targets")) {

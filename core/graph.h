@@ -13,6 +13,7 @@
 #include "core/interface_tables.h"  // OutputSlot
 #include "core/source_ref.h"
 #include "core/types.h"
+#include "core/view_transform.h"
 
 namespace wg {
 
@@ -149,6 +150,9 @@ struct Graph {
   std::vector<GraphOutput> outputs;   // saved in OutputSlot order; may be empty (resolve refuses it)
   SourceRef outputsWhere;             // the "outputs" object, for "connects no outputs"
   std::vector<InstanceOption> instanceOptions;  // set by applyPreset (never read from or saved to a file)
+  // "view": {"tonemap": "agx", "exposure": 0.5}: how the graph's author means its frame to be
+  // shown (the output transform); tools use it unless --tonemap / --exposure say otherwise.
+  std::optional<ViewTransform> view;
 
   const Node* findNode(std::string_view id) const;
   const Parameter* findParameter(std::string_view name) const;

@@ -98,8 +98,8 @@ class Loader : public GraphDraftReader {
     diags_.append(limits_);
 
     checkKeys(root, "the graph",
-              {"$schema", "version", "name", "description", "imports", "interface", "parameters", "presets", "nodes",
-               "outputs"});
+              {"$schema", "version", "name", "description", "view", "imports", "interface", "parameters", "presets",
+               "nodes", "outputs"});
 
     if (!loadVersion(root, g)) return std::nullopt;  // a newer format: the rest is moot
 
@@ -117,6 +117,7 @@ class Loader : public GraphDraftReader {
     if (auto* v = field(root, "description", json::value_t::string, "'description'"))
       g.description = v->value.get<std::string>();
 
+    if (auto* v = field(root, "view", json::value_t::object, "'view'")) loadView(*v, g);
     if (auto* v = field(root, "imports", json::value_t::object, "'imports'")) loadImportList(*v, g);
     if (auto* v = field(root, "parameters", json::value_t::object, "'parameters'")) loadParameters(*v, g);
     if (auto* v = field(root, "presets", json::value_t::object, "'presets'")) loadPresets(*v, g);
@@ -477,6 +478,27 @@ class Loader : public GraphDraftReader {
 
   // "imports": {"foam": "lib/shore_foam.json"}: names (identifiers) for graph files, which
   // core/graph_imports.h loads; whether a name is free of node types is resolve's to say.
+  // "view": {"tonemap": "agx", "exposure": 0.5}, both optional (none, 0 EV).
+  void loadView(const DraftValue& vv, Graph& g) {
+    checkKeys(vv, "'view'", {"tonemap", "exposure"});
+    ViewTransform view;
+    if (auto* t = field(vv, "tonemap", json::value_t::string, "the view's 'tonemap'")) {
+      const std::string name = t->value.get<std::string>();
+      if (auto mapper = parseToneMapper(name)) view.toneMapper = *mapper;
+      else
+        diags_.error(DiagCode::InvalidView, ref(t->at),
+                     "unknown tone mapper '" + name + "' in 'view' (expected " + toneMapperList() + ")");
+    }
+    if (auto* e = field(vv, "exposure", json::value_t::number_float, "the view's 'exposure'")) {
+      view.exposureEv = e->value.get<double>();
+      if (!(view.exposureEv >= kMinExposureEv && view.exposureEv <= kMaxExposureEv))
+        diags_.error(DiagCode::InvalidView, ref(e->at),
+                     "exposure " + formatNumber(view.exposureEv) + " EV in 'view' is outside [" +
+                         formatNumber(kMinExposureEv) + ", " + formatNumber(kMaxExposureEv) + "]");
+    }
+    g.view = view;
+  }
+
   void loadImportList(const DraftValue& imports, Graph& g) {
     for (const DraftValue& iv : imports.members) {
       Import im;

@@ -259,6 +259,14 @@ std::string saveGraph(const Graph& graph) {
   w.member("version", std::to_string(graph.version));
   w.member("name", quote(graph.name));
   if (!graph.description.empty()) w.member("description", quote(graph.description));
+  if (graph.view) {
+    std::string text;
+    ObjectWriter vw(text, 1);
+    vw.member("tonemap", quote(std::string(toneMapperName(graph.view->toneMapper))));
+    vw.member("exposure", formatNumber(graph.view->exposureEv));
+    vw.finish();
+    w.member("view", std::move(text));
+  }
   if (!graph.imports.empty()) {
     std::string text;
     ObjectWriter iw(text, 1);

@@ -84,6 +84,7 @@ const RenderPassRow kRenderPasses[] = {
     {RenderPass::SceneColorCopy, "scene_color_copy"},
     {RenderPass::DeferredWater, "deferred_water"},
     {RenderPass::WaterSurface, "water_surface"},
+    {RenderPass::OutputTransform, "output_transform"},
 };
 
 const SceneResourceRow kSceneResources[] = {

@@ -131,7 +131,13 @@ enum class RenderPass {
   SceneColorCopy,
   DeferredWater,  // the water G-buffer; water_surface then runs full-screen
   WaterSurface,
+  // The view: the frame's linear radiance through exposure, a tone mapper and the sRGB
+  // encoding into the 8-bit image (core/view_transform.h). Runs last in every frame that is
+  // shown or written as a picture; not listed in manifests (it is the viewer's, not the
+  // graph's) and not run by accuracy renders, which read the linear frame.
+  OutputTransform,
 };
+inline constexpr size_t kRenderPassCount = static_cast<size_t>(RenderPass::OutputTransform) + 1;
 
 struct RenderPassRow {
   RenderPass id;

@@ -109,6 +109,7 @@ struct Removal {
 struct Program {
   std::string graphName;
   std::string description;
+  ViewTransform view;  // the graph's "view", or the default (none, 0 EV)
   std::string file;
   std::string directory;  // the graph file's folder: texture paths are relative to it
   // `directory`, or "." for a graph file named without one: where a texture's (top-relative)

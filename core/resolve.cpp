@@ -99,6 +99,7 @@ class Resolver {
     size_t errorsBefore = diags_.errorCount();
     program_.graphName = graph_.name;
     program_.description = graph_.description;
+    program_.view = graph_.view.value_or(ViewTransform{});
     program_.file = graph_.file;
     program_.directory = std::filesystem::path(graph_.file).parent_path().string();
     program_.totalNodes = static_cast<int>(graph_.nodes.size());

@@ -74,6 +74,7 @@ class App : private ScriptHost {
     orbit_ = OrbitCamera::fromCamera(preset ? *preset : rt::Camera{});
     cameraName_ = options.camera;
     if (options.time) scene_.time = *options.time, playing_ = false;
+    view_ = options.view;
     if (!options.script.empty() || options.frames > 0) playing_ = false;  // deterministic runs
   }
 
@@ -161,6 +162,11 @@ class App : private ScriptHost {
   OrbitCamera orbit_;
   std::string cameraName_;
   rt::SceneOptions scene_;
+  // --tonemap / --exposure, then what the view controls set, over the graph's "view".
+  cli::ViewFlags view_;
+  ViewTransform currentView() const {
+    return view_.over(preview_.compiled() ? preview_.compiled()->program.view : ViewTransform{});
+  }
   bool playing_ = true;
   bool previewDirty_ = true;
   double frameMs_ = 0;
@@ -374,14 +380,14 @@ void App::renderPreviews() {
   if (!previewDirty_ && !playing_) return;
   rt::Camera cam = orbit_.toCamera();
   std::string error;
-  if (preview_.ready()) frameMs_ = preview_.render(cam, scene_, &error);
+  if (preview_.ready()) frameMs_ = preview_.render(cam, scene_, currentView(), &error);
   if (!error.empty()) {
     Diagnostics d;
     d.error(DiagCode::RuntimeRejected, SourceRef{path_, 0, 0}, error);
     setErrors(d, "the preview failed to render; edit the graph to try again");
     goodGraph_.reset();
   }
-  if (thumb_) thumb_->render(cam, scene_);
+  if (thumb_) thumb_->render(cam, scene_, currentView());
   previewDirty_ = false;
   if (pending_.active) pending_.rendered = true;
 }
@@ -575,6 +581,25 @@ void App::drawPreviewPanel(float x, float y, float w, float h) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(160);
   if (ImGui::SliderFloat("sun elevation", &scene_.sunElevationDegrees, -10, 90, "%.0f deg")) previewDirty_ = true;
+  // The output transform (the graph's "view" until changed here; not saved to the graph).
+  ViewTransform view = currentView();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90);
+  if (ImGui::BeginCombo("tone map", std::string(toneMapperName(view.toneMapper)).c_str())) {
+    for (std::string_view name : toneMapperNames())
+      if (ImGui::Selectable(std::string(name).c_str(), name == toneMapperName(view.toneMapper))) {
+        view_.toneMapper = std::string(name);
+        previewDirty_ = true;
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  float ev = static_cast<float>(view.exposureEv);
+  if (ImGui::SliderFloat("exposure", &ev, -8, 8, "%+.1f EV")) {
+    view_.exposure = ev;
+    previewDirty_ = true;
+  }
   ImGui::Text("frame %.1f ms", frameMs_);
   ImGui::SameLine();
   if (lastLatency_) ImGui::Text("| edit to pixels: %s", lastLatency_->text().c_str());

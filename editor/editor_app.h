@@ -4,6 +4,8 @@
 #include <optional>
 #include <string>
 
+#include "cli/view_flags.h"
+
 namespace wg::editor {
 
 struct EditorOptions {
@@ -16,6 +18,7 @@ struct EditorOptions {
   std::string screenshot;        // --screenshot out.png: the window after the last frame
   int frames = 0;                // frames to run (after the script) before exiting; 0: until closed
   bool stats = false;            // print edit-to-pixels latencies to stdout
+  cli::ViewFlags view;           // --tonemap / --exposure over the graph's "view"
 };
 
 // Runs the editor. Exit status: 0, 1 when the script failed or the graph (as last

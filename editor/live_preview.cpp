@@ -44,10 +44,12 @@ bool LivePreview::setParameter(const std::string& name, const std::vector<double
   return renderer_->setParameter(name, std::vector<float>(value.begin(), value.end()));
 }
 
-double LivePreview::render(const rt::Camera& camera, const rt::SceneOptions& scene, std::string* error) {
+double LivePreview::render(const rt::Camera& camera, const rt::SceneOptions& scene, const ViewTransform& view,
+                           std::string* error) {
   if (!renderer_) return 0;
   renderer_->setCamera(camera);
   renderer_->setScene(scene);
+  renderer_->setView(view);
   try {
     return renderer_->renderFrame();
   } catch (const rt::RuntimeError& e) {

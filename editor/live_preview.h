@@ -35,7 +35,9 @@ class LivePreview {
   bool ready() const { return renderer_ != nullptr; }
   // Renders one frame with this camera and scene; returns its milliseconds. A GL error
   // while rendering leaves the preview empty and is returned in *error.
-  double render(const rt::Camera& camera, const rt::SceneOptions& scene, std::string* error = nullptr);
+  // `view` is the output transform the frame is shown through.
+  double render(const rt::Camera& camera, const rt::SceneOptions& scene, const ViewTransform& view,
+                std::string* error = nullptr);
   // A replaced Renderer lives until the end of the frame: the UI's draw data, built
   // before the rebuild, still names its texture.
   void endFrame() { retired_.reset(); }

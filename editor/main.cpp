@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", o.screenshot, "write the window as a PNG after the last frame, then exit");
   app.add_option("--frames", o.frames, "run this many frames (after the script), then exit");
   app.add_flag("--stats", o.stats, "print each edit's edit-to-pixels latency");
+  wg::cli::addViewFlags(&app, o.view);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

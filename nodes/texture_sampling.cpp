@@ -5,17 +5,15 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/color_space.h"
+
 namespace wg {
 namespace {
-
-// The sRGB transfer function (IEC 61966-2-1), as GL states it for sRGB textures.
-double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
-double linearToSrgb(double l) { return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055; }
 
 const std::array<double, 256>& srgbTable() {
   static const std::array<double, 256> table = [] {
     std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) t[static_cast<size_t>(i)] = srgbToLinear(i / 255.0);
+    for (int i = 0; i < 256; ++i) t[static_cast<size_t>(i)] = srgbDecode(i / 255.0);
     return t;
   }();
   return table;
@@ -73,7 +71,7 @@ double decodeTexel(std::uint8_t byte, TextureColorSpace space) {
 
 std::uint8_t encodeTexel(double linear, TextureColorSpace space) {
   double x = std::clamp(linear, 0.0, 1.0);
-  if (space == TextureColorSpace::Srgb) x = linearToSrgb(x);
+  if (space == TextureColorSpace::Srgb) x = srgbEncode(x);
   return static_cast<std::uint8_t>(std::clamp(std::floor(x * 255.0 + 0.5), 0.0, 255.0));
 }
 

@@ -24,6 +24,7 @@ size_t bytesPerPixel(ColorFormat f) {
   switch (f) {
     case ColorFormat::None: return 0;
     case ColorFormat::Rgba8: return 4;
+    case ColorFormat::Rgba16f: return 8;
     case ColorFormat::Rgba32f: return 16;
   }
   return 0;
@@ -60,10 +61,17 @@ PassPlan planPasses(const Manifest& manifest, const PlanOptions& options) {
     failManifest("render size must be positive");
   if (!manifest.lists(PassKind::WaterSurface)) failManifest("the manifest's \"passes\" list lacks water_surface");
   PassPlan plan;
-  const ColorFormat frameColor = options.floatColor ? ColorFormat::Rgba32f : ColorFormat::Rgba8;
+  const ColorFormat frameColor = options.floatColor ? ColorFormat::Rgba32f : ColorFormat::Rgba16f;
   plan.targets.push_back({"frame", PassKind::WaterSurface, "", frameColor, DepthFormat::Depth32f, options.width,
                           options.height, false});
   for (const auto& pass : renderPassTable()) {
+    if (pass.id == PassKind::OutputTransform) {
+      if (options.floatColor) continue;
+      plan.passes.push_back(pass.id);
+      plan.targets.push_back({kDisplayTarget, pass.id, "", ColorFormat::Rgba8, DepthFormat::None, options.width,
+                              options.height, false});
+      continue;
+    }
     if (pass.id != PassKind::OpaqueScene && !manifest.lists(pass.id)) continue;
     plan.passes.push_back(pass.id);
     // The targets of the pass: the samplers of the resources it produces.

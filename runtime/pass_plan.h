@@ -23,7 +23,10 @@ using PassKind = RenderPass;
 const char* passName(PassKind p);  // the manifest's name ("opaque_scene" for OpaqueScene)
 std::optional<PassKind> parsePassName(const std::string& name);
 
-enum class ColorFormat { None, Rgba8, Rgba32f };
+// Rgba16f: the frame and the scene targets of a picture render (linear, scene-referred
+// radiance above 1 survives); Rgba32f: the same for accuracy renders (exact read-back);
+// Rgba8: the displayed image the output transform writes (sRGB-encoded).
+enum class ColorFormat { None, Rgba8, Rgba16f, Rgba32f };
 enum class DepthFormat { None, Depth32f };
 
 struct TargetSpec {
@@ -39,7 +42,9 @@ struct TargetSpec {
 
 struct PlanOptions {
   int width = 1280, height = 720;
-  bool floatColor = false;    // colour targets in RGBA32F (accuracy renders) or RGBA8
+  // Accuracy renders: colour targets in RGBA32F and no output transform (the linear frame is
+  // read). Otherwise RGBA16F, and the output transform writes the "display" target (RGBA8).
+  bool floatColor = false;
   int environmentSize = 128;  // cube map face size
 };
 
@@ -55,6 +60,9 @@ size_t bytesPerPixel(ColorFormat f);
 
 // A frame dimension times a pass's scale (Manifest::scaleOf), rounded, at least 1.
 int scaledSize(int frameSize, double scale);
+
+// The 8-bit image the output transform writes; planned only without floatColor.
+inline constexpr const char* kDisplayTarget = "display";
 
 // Whether the renderers sample `target` with nearest filtering: depth and the water
 // G-buffer are read texel for texel; colour is linear, except float colour on a device

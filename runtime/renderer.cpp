@@ -15,6 +15,7 @@
 #include "runtime/node_texture.h"
 #include "runtime/gpu_cache.h"
 #include "runtime/oblique_projection.h"
+#include "runtime/output_transform.h"
 #include "runtime/runtime_error.h"
 #include "runtime/tessellation_budget.h"
 #include "runtime/uniform_values.h"
@@ -35,6 +36,7 @@ struct GpuTarget {
 size_t internalFormatBytes(GLint f) {
   switch (f) {
     case GL_RGBA8: return 4;
+    case GL_RGBA16F: return 8;
     case GL_RGBA32F: return 16;
     case GL_DEPTH_COMPONENT32F: return 4;
     default: return 0;
@@ -57,7 +59,9 @@ struct GpuMesh {
   GLsizei indexCount = 0;
 };
 
-GLenum colorInternalFormat(ColorFormat f) { return f == ColorFormat::Rgba32f ? GL_RGBA32F : GL_RGBA8; }
+GLenum colorInternalFormat(ColorFormat f) {
+  return f == ColorFormat::Rgba32f ? GL_RGBA32F : f == ColorFormat::Rgba16f ? GL_RGBA16F : GL_RGBA8;
+}
 
 void setFilter(GLenum target, GLint filter) {
   glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
@@ -138,6 +142,8 @@ struct Renderer::Impl {
     if (waterGbuffer) p.push_back(waterGbuffer->id());
     return p;
   }
+  std::shared_ptr<const Program> output;  // the output transform, when the plan runs it
+  GLint outputFrame = -1, outputExposure = -1, outputToneMapper = -1;
   GLint skyInverseVp = -1, skySun = -1;
   GLint opaqueVp = -1, opaqueClip = -1, opaqueSun = -1;
   GpuMesh sceneMesh, waterMesh;
@@ -165,6 +171,11 @@ struct Renderer::Impl {
     return nullptr;
   }
   const GpuTarget& frame() const { return targets.front(); }
+  const GpuTarget* display() const {
+    for (const auto& t : targets)
+      if (t.spec.name == kDisplayTarget) return &t;
+    return nullptr;
+  }
 
   bool floatLinear = true;
 
@@ -570,14 +581,36 @@ struct Renderer::Impl {
     bindWaterTextures(false);
   }
 
+  // The frame's linear radiance through the view (core/view_transform.h) into the 8-bit
+  // display image, texel for texel.
+  void outputTransformPass() {
+    const GpuTarget* d = display();
+    glBindFramebuffer(GL_FRAMEBUFFER, d->fbo.id());
+    glViewport(0, 0, d->spec.width, d->spec.height);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glUseProgram(output->id());
+    const OutputTransformUniforms u = outputTransformUniforms(settings.view);
+    glUniform1f(outputExposure, u.exposureScale);
+    glUniform1i(outputToneMapper, u.toneMapper);
+    glUniform1i(outputFrame, 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, frame().color.id());
+    glBindVertexArray(emptyVao.id());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glEnable(GL_DEPTH_TEST);
+  }
+
   double renderOneFrame() {
     // By PassKind, in renderPassTable() order.
     using PassFunction = void (Impl::*)();
     static constexpr PassFunction kPassFunctions[] = {
         &Impl::environmentPass, &Impl::depthPrepass,       &Impl::planarReflectionPass, &Impl::refractionPass,
         &Impl::opaqueScenePass, &Impl::sceneColorCopyPass, &Impl::deferredWaterPass,    &Impl::waterSurfacePass,
+        &Impl::outputTransformPass,
     };
-    static_assert(std::size(kPassFunctions) == static_cast<size_t>(PassKind::WaterSurface) + 1);
+    static_assert(std::size(kPassFunctions) == kRenderPassCount);
     auto start = std::chrono::steady_clock::now();
     applyUniforms();
     glDisable(GL_CULL_FACE);
@@ -597,7 +630,12 @@ struct Renderer::Impl {
     img.width = settings.width;
     img.height = settings.height;
     size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height) * 4;
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, frame().fbo.id());
+    // Floats: the linear frame, before the output transform; bytes: the displayed image.
+    const GpuTarget* source = asFloat ? &frame() : display();
+    if (!source || (asFloat && source->spec.color == ColorFormat::Rgba8))
+      throw RuntimeError(RuntimeError::Kind::Manifest, asFloat ? "the frame holds no float colour"
+                                                               : "an 8-bit read-back needs a renderer made without floatColor");
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, source->fbo.id());
     glReadBuffer(GL_COLOR_ATTACHMENT0);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     size_t rowElems = static_cast<size_t>(img.width) * 4;
@@ -607,14 +645,10 @@ struct Renderer::Impl {
                          v.begin() + static_cast<ptrdiff_t>((img.height - 1 - y) * rowElems));
     };
     if (asFloat) {
-      if (frame().spec.color != ColorFormat::Rgba32f)
-        throw RuntimeError(RuntimeError::Kind::Manifest, "a float read-back needs a renderer made with floatColor");
       img.rgba32f.resize(n);
       glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, img.rgba32f.data());
       flip(img.rgba32f);
     } else {
-      if (frame().spec.color != ColorFormat::Rgba8)
-        throw RuntimeError(RuntimeError::Kind::Manifest, "an 8-bit read-back needs a renderer made without floatColor");
       img.rgba8.resize(n);
       glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba8.data());
       flip(img.rgba8);
@@ -674,6 +708,15 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
   r.opaqueVp = glGetUniformLocation(r.opaque->id(), "u_view_projection");
   r.opaqueClip = glGetUniformLocation(r.opaque->id(), "u_clip_plane");
   r.opaqueSun = glGetUniformLocation(r.opaque->id(), "u_sun_direction");
+  if (r.plan.runs(PassKind::OutputTransform)) {
+    const SceneShaderApi api = es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330;
+    r.output = r.link({{GL_VERTEX_SHADER, "runtime fullscreen.vert", ss.fullscreenVertex},
+                       {GL_FRAGMENT_SHADER, "runtime output_transform.frag", outputTransformFragment(api)}},
+                      "the runtime's output transform");
+    r.outputFrame = glGetUniformLocation(r.output->id(), "u_frame");
+    r.outputExposure = glGetUniformLocation(r.output->id(), "u_exposure_scale");
+    r.outputToneMapper = glGetUniformLocation(r.output->id(), "u_tone_mapper");
+  }
   r.deferred = r.plan.runs(PassKind::DeferredWater);
   if (r.deferred) {
     // The graph's fragment shader runs full-screen; its other stages write the G-buffer.
@@ -754,6 +797,11 @@ bool Renderer::setParameter(const std::string& parameter, const std::vector<floa
   return found;
 }
 
-GLuint Renderer::frameTexture() const { return impl_->frame().color.id(); }
+GLuint Renderer::frameTexture() const {
+  const auto* d = impl_->display();
+  return d ? d->color.id() : impl_->frame().color.id();
+}
+
+void Renderer::setView(const ViewTransform& view) { impl_->settings.view = view; }
 
 }  // namespace wg::rt

@@ -1,8 +1,9 @@
 #pragma once
 // Executes one compiled graph in the built-in scene: plans the passes from the manifest,
 // creates only the render targets those passes need, and renders frames into an
-// offscreen framebuffer (RGBA8 for previews, RGBA32F for accuracy work) that can be read
-// back. A GL context (EglContext, or the editor's GlfwContext) whose API matches the
+// offscreen framebuffer that can be read back: for pictures, linear radiance in RGBA16F
+// targets and the output transform (core/view_transform.h) into an RGBA8 display image;
+// for accuracy work, RGBA32F targets read back as they are, linear. A GL context (EglContext, or the editor's GlfwContext) whose API matches the
 // shaders' target must be current.
 #include <cstdint>
 #include <map>
@@ -12,6 +13,7 @@
 #include <vector>
 
 #include "codegen/manifest.h"
+#include "core/view_transform.h"
 #include "runtime/gl_resources.h"
 #include "runtime/pass_plan.h"
 #include "runtime/scene.h"
@@ -25,7 +27,8 @@ struct RenderSettings {
   std::string camera = "above";  // a camera preset name (scene.h)
   std::optional<Camera> customCamera;  // when set, used instead of the preset (accuracy sweeps)
   SceneOptions scene;
-  bool floatColor = false;       // RGBA32F colour targets instead of RGBA8
+  bool floatColor = false;       // RGBA32F colour targets and no output transform (accuracy work)
+  ViewTransform view;            // exposure and tone mapper of the output transform
   int environmentSize = 128;     // cube map face size for environment_cubemap
   // Quads per side of the 40 x 40 m water grid: 128 gives 0.31 m spacing (6+ vertices per
   // wavelength for waves of 2 m and longer). On llvmpipe triangle setup runs on one
@@ -73,8 +76,8 @@ class Renderer {
   // time in milliseconds measured on the CPU around the frame and the glFinish.
   double renderFrame();
 
-  Image readRgba8() const;
-  Image readRgba32f() const;  // exact only when settings.floatColor
+  Image readRgba8() const;     // the displayed image, after the output transform (not with floatColor)
+  Image readRgba32f() const;   // the frame's linear radiance: RGBA32F with floatColor, else RGBA16F values
   // The frame's depth-buffer values, rows top to bottom. Desktop GL only (OpenGL ES cannot
   // read depth back): throws RuntimeError(Kind::Manifest) on ES.
   std::vector<float> readDepth() const;
@@ -86,8 +89,11 @@ class Renderer {
   void setCamera(const Camera& camera);
   void setScene(const SceneOptions& scene);
   bool setParameter(const std::string& parameter, const std::vector<float>& value);
-  // The frame's colour texture (RGBA8 or RGBA32F, rows bottom-up), for showing it in a UI.
+  // The displayed image's texture (RGBA8, sRGB-encoded; the linear RGBA32F frame with
+  // floatColor), rows bottom-up, for showing it in a UI.
   GLuint frameTexture() const;
+  // A new exposure or tone mapper for the next frames (the editor's view controls).
+  void setView(const ViewTransform& view);
 
   const PassPlan& plan() const;
   // Whether the scene texture bound to `s` is sampled nearest (runtime/pass_plan.h); the

@@ -88,5 +88,8 @@ struct GbufferInputLocations {
   int worldPosition = 0, normal = 1, uv = 2;
 };
 SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer = {});
+// The first lines of every runtime shader for `api`: #version, ES precision defaults, and
+// the WG_LOCATION / WG_VERTEX_ID / WG_CLIP_DISTANCE macros the bodies use.
+std::string sceneShaderHeader(SceneShaderApi api);
 
 }  // namespace wg::rt

@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/interface_tables.h"
+#include "runtime/output_transform.h"
 #include "runtime/renderer.h"
 
 namespace wg::rt {
@@ -62,12 +63,20 @@ std::string sceneDescriptionJson(const SceneOptions& options) {
                        {"depth", row.depth}, {"cube", row.type == Type::SamplerCube}});
   }
   d["render_passes"] = passes;
+  // Colour: "frame" targets hold linear radiance in RGBA16F (RGBA32F for accuracy work);
+  // the output transform pass turns the frame into the displayed image (its fragment
+  // shader below: u_frame, u_exposure_scale = 2^EV, u_tone_mapper = the index of the
+  // tone mapper in "tone_mappers").
+  d["color"] = {{"frame_format", "rgba16f"}, {"display_format", "rgba8"},
+                {"tone_mappers", json(std::vector<std::string>(toneMapperNames().begin(), toneMapperNames().end()))},
+                {"exposure_range", json::array({kMinExposureEv, kMaxExposureEv})}};
   d["render_targets"] = targets;
 
   const SceneShaderSources s = sceneShaderSources(true);
   d["shaders"] = {{"sky_vertex", s.skyVertex},           {"sky_fragment", s.skyFragment},
                   {"opaque_vertex", s.opaqueVertex},     {"opaque_fragment", s.opaqueFragment},
-                  {"fullscreen_vertex", s.fullscreenVertex}, {"water_gbuffer_fragment", s.waterGbufferFragment}};
+                  {"fullscreen_vertex", s.fullscreenVertex}, {"water_gbuffer_fragment", s.waterGbufferFragment},
+                  {"output_transform_fragment", outputTransformFragment(SceneShaderApi::Es300)}};
   return d.dump() + "\n";
 }
 

@@ -10,7 +10,7 @@
 
 namespace wg::rt {
 
-inline constexpr const char* kSceneDescriptionFormat = "watergraph-scene-1";
+inline constexpr const char* kSceneDescriptionFormat = "watergraph-scene-2";
 
 // JSON text on one line (keys in byte order, floats as their exact doubles).
 std::string sceneDescriptionJson(const SceneOptions& options);

@@ -161,8 +161,12 @@ void main() {
 
 }  // namespace
 
+std::string sceneShaderHeader(SceneShaderApi api) {
+  return api == SceneShaderApi::Es300 ? kEsHeader : api == SceneShaderApi::Gl330 ? kGlHeader : kVulkanHeader;
+}
+
 SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer) {
-  const std::string h = api == SceneShaderApi::Es300 ? kEsHeader : api == SceneShaderApi::Gl330 ? kGlHeader : kVulkanHeader;
+  const std::string h = sceneShaderHeader(api);
   const std::string sky = uniforms(api, "SkyConstants", {"mat4 u_inverse_view_projection", "vec3 u_sun_direction"});
   // u_clip_plane (keep dot(plane, (p, 1)) >= 0) before u_sun_direction: at 64 and 80.
   const std::string opaque =

@@ -5,12 +5,14 @@
 #include <cstring>
 
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/packing.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "codegen/shader_interface.h"
 #include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
 #include "runtime/tessellation_budget.h"
+#include "runtime/vk_output_transform.h"
 #include "runtime/vk_resources.h"
 #include "runtime/vk_scene_spirv.h"
 #include "runtime/vk_water_bindings.h"
@@ -29,7 +31,11 @@ namespace {
 constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
 
 VkFormat colorFormat(ColorFormat f) {
-  return f == ColorFormat::Rgba32f ? VK_FORMAT_R32G32B32A32_SFLOAT : VK_FORMAT_R8G8B8A8_UNORM;
+  switch (f) {
+    case ColorFormat::Rgba32f: return VK_FORMAT_R32G32B32A32_SFLOAT;
+    case ColorFormat::Rgba16f: return VK_FORMAT_R16G16B16A16_SFLOAT;
+    default: return VK_FORMAT_R8G8B8A8_UNORM;
+  }
 }
 
 // The scene's push constants, laid out as the blocks of scene.h (SceneShaderApi::Vulkan450).
@@ -102,6 +108,12 @@ struct VkRenderer::Impl {
   }
   Target& frame() { return targets.front(); }
   const Target& frame() const { return targets.front(); }
+  Target* display() {
+    for (auto& t : targets)
+      if (t.spec.name == kDisplayTarget) return &t;
+    return nullptr;
+  }
+  std::unique_ptr<VkOutputTransform> output;  // when the plan runs the output transform
 
   void createTargets() {
     VkFormatProperties floatProps;
@@ -401,6 +413,15 @@ struct VkRenderer::Impl {
     vkCmdEndRendering(cmd);
   }
 
+  // The frame's linear radiance through the view into the 8-bit display image.
+  void outputTransformPass() {
+    Target& d = *display();
+    frame().color.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    beginRendering({{&d.color, 0, false, {}}}, {}, d.spec.width, d.spec.height);
+    output->draw(cmd, settings.view);
+    vkCmdEndRendering(cmd);
+  }
+
   FrameValues frameValues() const {
     FrameValues f;
     f.camera = camera;
@@ -419,8 +440,9 @@ struct VkRenderer::Impl {
     static constexpr PassFunction kPassFunctions[] = {
         &Impl::environmentPass, &Impl::depthPrepass,       &Impl::planarReflectionPass, &Impl::refractionPass,
         &Impl::opaqueScenePass, &Impl::sceneColorCopyPass, &Impl::deferredWaterPass,    &Impl::waterSurfacePass,
+        &Impl::outputTransformPass,
     };
-    static_assert(std::size(kPassFunctions) == static_cast<size_t>(PassKind::WaterSurface) + 1);
+    static_assert(std::size(kPassFunctions) == kRenderPassCount);
     auto start = std::chrono::steady_clock::now();
     bindings->writeUniforms(frameValues());
     ctx.submit([&](VkCommandBuffer c) {
@@ -519,6 +541,8 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
       origins);
   r.sceneLayout = r.makeLayout({}, kPushConstantBytes);
   r.createWaterPipelines(manifest);
+  if (Impl::Target* d = r.display())
+    r.output = std::make_unique<VkOutputTransform>(context, r.sceneSpirv, r.frame().color, d->color.spec().format);
   // Every image starts in a defined layout, so the first frame's barriers name real ones.
   context.submit([&](VkCommandBuffer c) {
     for (auto& t : r.targets) {
@@ -548,23 +572,28 @@ void VkRenderer::setScene(const SceneOptions& scene) {
   impl_->sun = sunDirection(scene);
 }
 
+void VkRenderer::setView(const ViewTransform& view) { impl_->settings.view = view; }
+
 Image VkRenderer::readRgba8() const {
-  if (impl_->frame().spec.color != ColorFormat::Rgba8)
-    throw RuntimeError(RuntimeError::Kind::Manifest, "an 8-bit read-back needs a renderer made without floatColor");
+  Impl::Target* d = impl_->display();
+  if (!d) throw RuntimeError(RuntimeError::Kind::Manifest, "an 8-bit read-back needs a renderer made without floatColor");
   Image img;
   img.width = impl_->settings.width;
   img.height = impl_->settings.height;
-  img.rgba8 = impl_->readFlipped<uint8_t>(const_cast<VkImageOwner&>(impl_->frame().color));
+  img.rgba8 = impl_->readFlipped<uint8_t>(d->color);
   return img;
 }
 
 Image VkRenderer::readRgba32f() const {
-  if (impl_->frame().spec.color != ColorFormat::Rgba32f)
-    throw RuntimeError(RuntimeError::Kind::Manifest, "a float read-back needs a renderer made with floatColor");
   Image img;
   img.width = impl_->settings.width;
   img.height = impl_->settings.height;
-  img.rgba32f = impl_->readFlipped<float>(const_cast<VkImageOwner&>(impl_->frame().color));
+  auto& color = const_cast<VkImageOwner&>(impl_->frame().color);
+  if (impl_->frame().spec.color == ColorFormat::Rgba32f) {
+    img.rgba32f = impl_->readFlipped<float>(color);
+  } else {  // RGBA16F: widened exactly
+    for (uint16_t h : impl_->readFlipped<uint16_t>(color)) img.rgba32f.push_back(glm::unpackHalf1x16(h));
+  }
   return img;
 }
 

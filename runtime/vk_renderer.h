@@ -43,9 +43,10 @@ class VkRenderer {
   // For the next frames, as Renderer's: another camera, another time and sun.
   void setCamera(const Camera& camera);
   void setScene(const SceneOptions& scene);
+  void setView(const ViewTransform& view);  // the output transform's, as Renderer::setView
 
-  Image readRgba8() const;
-  Image readRgba32f() const;  // exact only when settings.floatColor
+  Image readRgba8() const;     // the displayed image, as Renderer::readRgba8
+  Image readRgba32f() const;   // the linear frame, as Renderer::readRgba32f
   std::vector<float> readDepth() const;  // rows top to bottom, as Renderer::readDepth
 
   const PassPlan& plan() const;

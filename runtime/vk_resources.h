@@ -79,7 +79,7 @@ class VkImageOwner {
   VkImageLayout layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
 };
 
-size_t formatBytes(VkFormat format);  // per texel: RGBA8 4, RGBA32F 16, D32 4
+size_t formatBytes(VkFormat format);  // per texel: RGBA8 4, RGBA16F 8, RGBA32F 16, D32 4
 bool isDepthFormat(VkFormat format);
 
 // Uploads RGBA8 texels (rows as given) to level 0 of a 2D image and, when it has more

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "codegen/glslang_validate.h"
+#include "runtime/output_transform.h"
 
 namespace wg::rt {
 namespace {
@@ -36,6 +37,8 @@ VkSceneSpirv compileSceneSpirv(const GbufferInputLocations& gbuffer) {
   out.fullscreenVertex = std::move(compileProgram({{ShaderStage::Vertex, "runtime fullscreen.vert", s.fullscreenVertex}})[0]);
   out.waterGbufferFragment =
       std::move(compileProgram({{ShaderStage::Fragment, "runtime water_gbuffer.frag", s.waterGbufferFragment}})[0]);
+  out.outputTransformFragment = std::move(compileProgram({{ShaderStage::Fragment, "runtime output_transform.frag",
+                                                          outputTransformFragment(SceneShaderApi::Vulkan450)}})[0]);
   return out;
 }
 

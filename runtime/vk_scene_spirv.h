@@ -17,6 +17,7 @@ struct VkSceneSpirv {
   VkShaderCode skyVertex, skyFragment;
   VkShaderCode opaqueVertex, opaqueFragment;
   VkShaderCode fullscreenVertex, waterGbufferFragment;
+  VkShaderCode outputTransformFragment;  // runtime/output_transform.h
 };
 
 // Throws std::logic_error with glslang's messages if a runtime shader does not compile:

@@ -34,7 +34,7 @@ TEST(InterfaceTables, EveryTableListsItsEnumInOrderWithUniqueNames) {
   EXPECT_EQ(builtinTable().size(), static_cast<size_t>(Builtin::SunDirection) + 1);
   EXPECT_EQ(builtinUniformTable().size(), static_cast<size_t>(BuiltinUniform::Derived) + 1);
   EXPECT_EQ(outputSlotTable().size(), static_cast<size_t>(OutputSlot::FragmentAlpha) + 1);
-  EXPECT_EQ(renderPassTable().size(), static_cast<size_t>(RenderPass::WaterSurface) + 1);
+  EXPECT_EQ(renderPassTable().size(), kRenderPassCount);
   EXPECT_EQ(sceneResourceTable().size(), static_cast<size_t>(SceneResource::Underwater) + 1);
   EXPECT_EQ(sceneSamplerTable().size(), static_cast<size_t>(SceneSampler::WaterSurface) + 1);
   EXPECT_EQ(builtinTextureTable().size(), static_cast<size_t>(BuiltinTexture::WaterNormal) + 1);

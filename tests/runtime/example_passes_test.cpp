@@ -49,7 +49,7 @@ TEST(ExamplePasses, EveryGraphRunsExactlyItsPasses) {
     std::set<std::string> ran;
     for (PassKind k : plan.passes) ran.insert(passName(k));
     std::set<std::string> want = it->second;
-    want.insert({"opaque_scene", "water_surface"});
+    want.insert({"opaque_scene", "water_surface", "output_transform"});
     EXPECT_EQ(ran, want);
     // One target per pass that makes one, plus the frame; nothing for passes that do not run.
     for (const auto& t : plan.targets)

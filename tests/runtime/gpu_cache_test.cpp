@@ -53,11 +53,11 @@ TEST(GpuCache, IdenticalTextsReuseEveryProgram) {
   CompileResult lake = compileGlsl330(loadExample("lake"));
   auto first = makeRenderer(lake, &cache);
   Image a = renderOnce(*first);
-  EXPECT_EQ(cache.stats().programLinks, 3u);  // sky, opaque scene, water
+  EXPECT_EQ(cache.stats().programLinks, 4u);  // sky, opaque scene, output transform, water
   first.reset();
   auto second = makeRenderer(lake, &cache);
-  EXPECT_EQ(cache.stats().programLinks, 3u);
-  EXPECT_EQ(cache.stats().programHits, 3u);
+  EXPECT_EQ(cache.stats().programLinks, 4u);
+  EXPECT_EQ(cache.stats().programHits, 4u);
   Image b = renderOnce(*second);
   EXPECT_EQ(a.rgba8, b.rgba8);
 }
@@ -89,8 +89,8 @@ TEST(GpuCache, ChangedWaterTextLinksOnlyTheWater) {
   auto lake = makeRenderer(compileGlsl330(loadExample("lake")), &cache);
   size_t links = cache.stats().programLinks;
   auto shelf = makeRenderer(compileGlsl330(loadExample("shelf")), &cache);
-  EXPECT_EQ(cache.stats().programLinks, links + 1);  // the sky and opaque scene are shared
-  EXPECT_EQ(cache.stats().programs, 4u);             // both water programs are in use
+  EXPECT_EQ(cache.stats().programLinks, links + 1);  // the sky, opaque scene and output transform are shared
+  EXPECT_EQ(cache.stats().programs, 5u);             // both water programs are in use
 }
 
 TEST(GpuCache, PngSavedAgainIsUploadedAgain) {

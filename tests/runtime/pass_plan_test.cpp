@@ -39,11 +39,14 @@ std::vector<std::string> targetNames(const PassPlan& p) {
   return n;
 }
 
+// A picture render: the frame in RGBA16F, the output transform last into the RGBA8 display.
 TEST(PassPlan, WaterOnlyRunsTheSceneAndTheSurfaceIntoOneTarget) {
   PassPlan p = planPasses(manifestWith({"water_surface"}), small());
-  EXPECT_EQ(passNames(p), (std::vector<std::string>{"opaque_scene", "water_surface"}));
-  EXPECT_EQ(targetNames(p), (std::vector<std::string>{"frame"}));
-  EXPECT_EQ(p.totalBytes(), kPixels * (4 + 4));  // RGBA8 + DEPTH32F
+  EXPECT_EQ(passNames(p), (std::vector<std::string>{"opaque_scene", "water_surface", "output_transform"}));
+  EXPECT_EQ(targetNames(p), (std::vector<std::string>{"frame", "display"}));
+  EXPECT_EQ(p.target("frame")->color, ColorFormat::Rgba16f);
+  EXPECT_EQ(p.target("display")->color, ColorFormat::Rgba8);
+  EXPECT_EQ(p.totalBytes(), kPixels * (8 + 4 + 4));  // RGBA16F + DEPTH32F, RGBA8
   EXPECT_FALSE(p.runs(PassKind::PlanarReflection));
   EXPECT_EQ(p.target("reflection"), nullptr);
 }
@@ -55,15 +58,16 @@ TEST(PassPlan, ReflectionOnlyWhenListed) {
   ASSERT_TRUE(with.runs(PassKind::PlanarReflection));
   ASSERT_NE(with.target("reflection"), nullptr);
   EXPECT_EQ(with.target("reflection")->sampler, "u_reflection");
-  EXPECT_EQ(with.targets.size(), 2u);
-  EXPECT_EQ(with.totalBytes() - without.totalBytes(), kPixels * (4 + 4));
+  EXPECT_EQ(with.targets.size(), 3u);
+  EXPECT_EQ(with.target("reflection")->color, ColorFormat::Rgba16f) << "HDR: a reflected sun is not clamped at 1";
+  EXPECT_EQ(with.totalBytes() - without.totalBytes(), kPixels * (8 + 4));
 }
 
 struct OnePass {
   const char* pass;
   const char* target;
   const char* sampler;
-  size_t bytes;  // of the added target, RGBA8 colour
+  size_t bytes;  // of the added target, RGBA16F colour
 };
 
 class PassPlanEach : public ::testing::TestWithParam<OnePass> {};
@@ -71,21 +75,21 @@ class PassPlanEach : public ::testing::TestWithParam<OnePass> {};
 TEST_P(PassPlanEach, AddsExactlyItsTarget) {
   const OnePass& c = GetParam();
   PassPlan p = planPasses(manifestWith({c.pass, "water_surface"}), small());
-  EXPECT_EQ(passNames(p).size(), 3u);
+  EXPECT_EQ(passNames(p).size(), 4u);
   EXPECT_TRUE(p.runs(*parsePassName(c.pass)));
-  EXPECT_EQ(targetNames(p), (std::vector<std::string>{"frame", c.target}));
+  EXPECT_EQ(targetNames(p), (std::vector<std::string>{"frame", c.target, "display"}));
   EXPECT_EQ(p.target(c.target)->sampler, c.sampler);
   EXPECT_EQ(p.target(c.target)->bytes(), c.bytes);
-  EXPECT_EQ(p.totalBytes(), kPixels * 8 + c.bytes);
+  EXPECT_EQ(p.totalBytes(), kPixels * (12 + 4) + c.bytes);
 }
 
 INSTANTIATE_TEST_SUITE_P(
     Passes, PassPlanEach,
     ::testing::Values(OnePass{"depth_prepass", "scene_depth", "u_scene_depth", kPixels * 4},
-                      OnePass{"scene_color_copy", "scene_color", "u_scene_color", kPixels * 4},
-                      OnePass{"planar_reflection", "reflection", "u_reflection", kPixels * 8},
-                      OnePass{"refraction", "refraction", "u_refraction", kPixels * 8},
-                      OnePass{"environment_cubemap", "environment", "u_environment", 64 * 64 * 6 * 4}),
+                      OnePass{"scene_color_copy", "scene_color", "u_scene_color", kPixels * 8},
+                      OnePass{"planar_reflection", "reflection", "u_reflection", kPixels * 12},
+                      OnePass{"refraction", "refraction", "u_refraction", kPixels * 12},
+                      OnePass{"environment_cubemap", "environment", "u_environment", 64 * 64 * 6 * 8}),
     [](const auto& info) { return std::string(info.param.pass); });
 
 TEST(PassPlan, AllPassesRunInDependencyOrderWhateverTheListOrder) {
@@ -93,15 +97,19 @@ TEST(PassPlan, AllPassesRunInDependencyOrderWhateverTheListOrder) {
                                         "planar_reflection", "depth_prepass"}),
                           small());
   EXPECT_EQ(passNames(p), (std::vector<std::string>{"environment_cubemap", "depth_prepass", "planar_reflection",
-                                                    "refraction", "opaque_scene", "scene_color_copy", "water_surface"}));
-  EXPECT_EQ(p.targets.size(), 6u);
-  EXPECT_EQ(p.totalBytes(), kPixels * (8 + 4 + 4 + 8 + 8) + 64 * 64 * 6 * 4);
+                                                    "refraction", "opaque_scene", "scene_color_copy", "water_surface",
+                                                    "output_transform"}));
+  EXPECT_EQ(p.targets.size(), 7u);
+  EXPECT_EQ(p.totalBytes(), kPixels * (12 + 4 + 8 + 12 + 12 + 4) + 64 * 64 * 6 * 8);
 }
 
-TEST(PassPlan, FloatColourQuadruplesColourBytesOnly) {
+// Accuracy renders: RGBA32F colour, read back linear: no output transform, no display.
+TEST(PassPlan, FloatColourDoublesColourBytesAndDropsTheOutputTransform) {
   PlanOptions o = small();
   o.floatColor = true;
   PassPlan p = planPasses(manifestWith({"depth_prepass", "planar_reflection", "water_surface"}), o);
+  EXPECT_FALSE(p.runs(PassKind::OutputTransform));
+  EXPECT_EQ(p.target("display"), nullptr);
   EXPECT_EQ(p.target("frame")->bytes(), kPixels * (16 + 4));
   EXPECT_EQ(p.target("scene_depth")->bytes(), kPixels * 4);
   EXPECT_EQ(p.target("reflection")->bytes(), kPixels * (16 + 4));
@@ -109,7 +117,7 @@ TEST(PassPlan, FloatColourQuadruplesColourBytesOnly) {
 
 TEST(PassPlan, DuplicatesCountOnce) {
   PassPlan p = planPasses(manifestWith({"refraction", "refraction", "water_surface"}), small());
-  EXPECT_EQ(p.targets.size(), 2u);
+  EXPECT_EQ(p.targets.size(), 3u);
 }
 
 // A "passes" list the manifest reader refuses.
@@ -138,7 +146,7 @@ void expectUnplannable(const Manifest& m, const std::string& fragment) {
 // frame's format, planned after the scene colour copy and before the full-screen pass.
 TEST(PassPlan, DeferredWaterCreatesTheFloatGbuffer) {
   PassPlan plan = planPasses(manifestWith({"water_surface", "deferred_water", "depth_prepass", "scene_color_copy"}), small());
-  ASSERT_EQ(plan.passes.size(), 5u);
+  ASSERT_EQ(plan.passes.size(), 6u);
   EXPECT_EQ(plan.passes[3], PassKind::DeferredWater);
   EXPECT_EQ(plan.passes[4], PassKind::WaterSurface);
   const TargetSpec* normal = plan.target("water_normal");
@@ -177,7 +185,7 @@ TEST(PassPlan, ScaledPassesGetSmallerTargets) {
   EXPECT_EQ(size("environment"), std::pair(64, 64));
   EXPECT_EQ(scaledSize(1, 0.25), 1) << "at least one pixel";
   PassPlan full = planPasses(manifestWith({"water_surface", "depth_prepass"}), o);
-  EXPECT_EQ(full.totalBytes() - plan.target("frame")->bytes(), 321u * 181u * 4u);
+  EXPECT_EQ(full.totalBytes() - plan.target("frame")->bytes() - plan.target("display")->bytes(), 321u * 181u * 4u);
 }
 
 TEST(PassPlan, Errors) {
@@ -185,6 +193,7 @@ TEST(PassPlan, Errors) {
   expectUnplannable(manifestWith({"planar_reflection"}), "lacks water_surface");
   expectUnreadable(manifestJsonWith({"water_surface", "ssao"}), "unknown pass 'ssao'");
   expectUnreadable(manifestJsonWith({"water_surface", "opaque_scene"}), "unknown pass 'opaque_scene'");
+  expectUnreadable(manifestJsonWith({"water_surface", "output_transform"}), "unknown pass 'output_transform'");
   nlohmann::json m;
   m["passes"] = {"water_surface", 3};
   expectUnreadable(m, "non-string");
@@ -200,9 +209,9 @@ TEST(PassPlan, ExampleGraphManifests) {
     SCOPED_TRACE(name);
     CompileResult r = test::compileExample(name);
     PassPlan p = planPasses(r.manifest, small());
-    size_t expected = r.manifest.passes.size();
+    size_t expected = r.manifest.passes.size() + 1;  // and the display image
     for (RenderPass pass : r.manifest.passes) expected += pass == RenderPass::DeferredWater;  // the G-buffer: two targets
-    EXPECT_EQ(p.targets.size(), expected) << "one target per listed pass besides the frame";
+    EXPECT_EQ(p.targets.size(), expected) << "one target per listed pass besides the frame and the display";
     EXPECT_TRUE(p.runs(PassKind::WaterSurface));
   }
 }

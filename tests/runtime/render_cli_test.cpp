@@ -32,8 +32,9 @@ TEST(RenderCli, WritesAPngAndPrintsStats) {
   rt::Image img = rt::readPng(png);
   EXPECT_EQ(img.width, 160);
   EXPECT_EQ(img.height, 90);
-  EXPECT_NE(out.find("passes: opaque_scene, water_surface"), std::string::npos) << out;
-  EXPECT_NE(out.find("render targets: 1"), std::string::npos) << out;
+  EXPECT_NE(out.find("passes: opaque_scene, water_surface, output_transform"), std::string::npos) << out;
+  EXPECT_NE(out.find("render targets: 2"), std::string::npos) << out;
+  EXPECT_NE(out.find("RGBA16F + DEPTH32F"), std::string::npos) << out;
   EXPECT_NE(out.find("median"), std::string::npos) << out;
   // Nothing but the PNG is left in the folder (the temporary was renamed).
   size_t files = 0;
