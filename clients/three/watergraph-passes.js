@@ -4,6 +4,7 @@
 // textures. The runtime's planner tables and its own shaders (sky, full-screen triangle,
 // water G-buffer) come from the scene description `watergraph scene` writes.
 import * as THREE from 'three';
+import { OutputTransform, checkColorDescription } from './watergraph-output.js';
 
 // Thrown for a manifest or description the client cannot run (a pass it cannot provide, an
 // unknown builtin uniform or type) and for files that cannot be loaded; watergraph-three.js
@@ -17,20 +18,23 @@ export class WaterGraphError extends Error {
 
 // The passes render() knows how to run.
 const CLIENT_PASSES = new Set(['environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction', 'opaque_scene',
-  'scene_color_copy', 'deferred_water', 'water_surface']);
+  'scene_color_copy', 'deferred_water', 'water_surface', 'output_transform']);
+// The passes the runtime always runs, which a manifest never lists.
+const RUNTIME_PASSES = new Set(['opaque_scene', 'output_transform']);
 
 // The layer the water's own meshes live on: scene passes leave it out, the water pass
 // draws only it.
 export const WATER_LAYER = 31;
 
-const SCENE_FORMAT = 'watergraph-scene-1';
+const SCENE_FORMAT = 'watergraph-scene-2';
 
 // Checks the parts of a scene description (`watergraph scene`) the passes use.
 export function checkSceneDescription(description) {
   if (!description || description.format !== SCENE_FORMAT)
     throw new WaterGraphError(`not a scene description of format ${SCENE_FORMAT} (write one with \`watergraph scene -o scene.json\`)`);
-  for (const key of ['render_passes', 'render_targets', 'shaders', 'environment', 'sun_direction', 'clear_color'])
+  for (const key of ['render_passes', 'render_targets', 'shaders', 'environment', 'sun_direction', 'clear_color', 'color'])
     if (!(key in description)) throw new WaterGraphError(`the scene description has no "${key}"`);
+  checkColorDescription(description);
   return description;
 }
 
@@ -44,19 +48,28 @@ export function scaledSize(size, scale) {
 // a pass runs only when the manifest lists it (the opaque scene always); each pass gets a
 // target per scene sampler of the resources it produces, frame-sized or the fraction of
 // the frame the manifest's "pass_scales" gives the pass (cube faces environmentSize
-// square), "frame" first. frameFloat: the frame's colour is RGBA32F.
-export function planPasses(manifest, description, { width, height, environmentSize, frameFloat = false }) {
+// square), "frame" first; the output transform last, into the displayed image ("display",
+// the canvas or the caller's target here). frameFormat: the colour of the frame and of every
+// target of the description's "frame" format, "rgba16f" as the runtime's (linear radiance),
+// "rgba8" where the context cannot render half floats.
+export function planPasses(manifest, description, { width, height, environmentSize, frameFormat = 'rgba16f' }) {
   const listed = new Set(manifest.passes ?? []);
   if (!listed.has('water_surface')) throw new WaterGraphError(`graph '${manifest.graph}': the manifest's "passes" list lacks water_surface`);
   if (!(width > 0 && height > 0 && environmentSize > 0)) throw new WaterGraphError('render size must be positive');
   for (const pass of listed)
-    if (!description.render_passes.includes(pass)) throw new WaterGraphError(`graph '${manifest.graph}' lists an unknown pass '${pass}'`);
-  const frameColor = frameFloat ? 'rgba32f' : 'rgba8';
+    if (!description.render_passes.includes(pass) || RUNTIME_PASSES.has(pass))
+      throw new WaterGraphError(`graph '${manifest.graph}' lists an unknown pass '${pass}'`);
+  const frameColor = frameFormat;
   const plan = { passes: [], targets: [{ name: 'frame', pass: 'water_surface', sampler: '', color: frameColor, depth: true, width, height, cube: false }] };
   const scales = manifest.pass_scales ?? {};
   for (const pass of Object.keys(scales))
     if (!listed.has(pass)) throw new WaterGraphError(`graph '${manifest.graph}' scales pass '${pass}', which it does not list`);
   for (const pass of description.render_passes) {
+    if (pass === 'output_transform') {
+      plan.passes.push(pass);
+      plan.targets.push({ name: 'display', pass, sampler: '', color: 'rgba8', depth: false, width, height, cube: false });
+      continue;
+    }
     if (pass !== 'opaque_scene' && !listed.has(pass)) continue;
     plan.passes.push(pass);
     const scale = scales[pass] ?? 1;
@@ -64,7 +77,7 @@ export function planPasses(manifest, description, { width, height, environmentSi
       if (t.pass !== pass) continue;
       plan.targets.push({
         name: t.target, pass, sampler: t.sampler, resource: t.resource,
-        color: t.color === 'none' ? null : t.color === 'float32' ? 'rgba32f' : frameColor,
+        color: targetColor(t, frameColor),
         depth: t.depth, cube: t.cube,
         width: t.cube ? environmentSize : scaledSize(width, scale),
         height: t.cube ? environmentSize : scaledSize(height, scale),
@@ -72,6 +85,21 @@ export function planPasses(manifest, description, { width, height, environmentSi
     }
   }
   return plan;
+}
+
+function targetColor(t, frameColor) {
+  switch (t.color) {
+    case 'none': return null;
+    case 'float32': return 'rgba32f';
+    case 'frame': return frameColor;
+    default: throw new WaterGraphError(`the scene description's target ${t.target} has an unknown colour format '${t.color}'`);
+  }
+}
+
+// Whether a WebGL 2 context can render into RGBA16F: with EXT_color_buffer_float (which
+// three.js enables when the context offers it) or EXT_color_buffer_half_float.
+export function rendersHalfFloat(renderer) {
+  return renderer.extensions.has('EXT_color_buffer_float') || renderer.extensions.has('EXT_color_buffer_half_float');
 }
 
 // glm::perspective: the runtime's projection (three's makePerspective rounds differently).
@@ -157,6 +185,12 @@ export class WaterPasses {
     // What the environment cube sees: the runtime draws only its sky there.
     this.environmentScene = environment ?? new THREE.Scene().add(createSky(description));
     this.resources = {};
+    // Until render() has seen the renderer, the runtime's format; frameFallback says why the
+    // frame is not RGBA16F once it is not.
+    this.frameFormat = 'rgba16f';
+    this.frameFallback = null;
+    this.checkedRenderer = null;
+    this.output = new OutputTransform(description);
     this.#createTargets(width, height);
     // A pass the runtime has and this client does not (a newer description) is refused now,
     // not at the first frame.
@@ -167,42 +201,68 @@ export class WaterPasses {
   }
 
   // Frame-sized targets follow the drawing buffer: called by render() when it changes.
+  // Returns whether the targets were made anew (their textures must be bound again).
   setSize(width, height) {
-    if (width === this.width && height === this.height) return;
+    if (width === this.width && height === this.height) return false;
     this.#disposeTargets();
     this.#createTargets(width, height);
+    return true;
+  }
+
+  // The frame's format for `renderer`'s context: RGBA16F where it can render half floats,
+  // else RGBA8, said once (console.warn and frameFallback), never silently. Returns whether
+  // the targets were made anew.
+  configure(renderer) {
+    if (this.checkedRenderer === renderer) return false;
+    this.checkedRenderer = renderer;
+    if (this.deferred && !renderer.extensions.has('EXT_color_buffer_float'))
+      throw new WaterGraphError(`graph '${this.manifest.graph}' uses deferred water, whose G-buffer is RGBA32F: ` +
+        'this WebGL 2 context has no EXT_color_buffer_float to render it');
+    const format = rendersHalfFloat(renderer) ? 'rgba16f' : 'rgba8';
+    if (format === this.frameFormat) return false;
+    this.frameFormat = format;
+    if (format === 'rgba8') {
+      this.frameFallback = 'this WebGL 2 context has neither EXT_color_buffer_float nor EXT_color_buffer_half_float, ' +
+        'so the frame and the scene targets are RGBA8: radiance above 1 is clipped before the output transform and ' +
+        'dark tones are banded';
+      console.warn(`watergraph: ${this.frameFallback}`);
+    } else {
+      this.frameFallback = null;
+    }
+    this.#disposeTargets();
+    this.#createTargets(this.width, this.height);
+    return true;
   }
 
   #createTargets(width, height) {
     this.width = width;
     this.height = height;
-    this.plan = planPasses(this.manifest, this.description, { width, height, environmentSize: this.environmentSize });
+    this.plan = planPasses(this.manifest, this.description,
+      { width, height, environmentSize: this.environmentSize, frameFormat: this.frameFormat });
     this.targets = {};
-    const linear = { minFilter: THREE.LinearFilter, magFilter: THREE.LinearFilter, generateMipmaps: false };
-    // The frame, as the runtime's: RGBA8 colour and a DEPTH_COMPONENT32F depth buffer the
-    // water is depth-tested against; render() copies it to the canvas at the end.
+    // Linear filtering (half floats filter in every WebGL 2 context), and the type of the
+    // frame's colour: linear radiance in half floats, as the runtime's RGBA16F.
+    const linear = { minFilter: THREE.LinearFilter, magFilter: THREE.LinearFilter, generateMipmaps: false,
+      type: this.frameFormat === 'rgba16f' ? THREE.HalfFloatType : THREE.UnsignedByteType };
+    // The frame, as the runtime's: RGBA16F colour and a DEPTH_COMPONENT32F depth buffer the
+    // water is depth-tested against; the output transform reads it at the end.
     this.frame = new THREE.WebGLRenderTarget(width, height, { ...linear, depthBuffer: true });
     this.frame.depthTexture = new THREE.DepthTexture(width, height, THREE.FloatType);
     for (const t of this.plan.targets) {
-      if (t.name === 'frame' || this.targets[t.name] || t.resource === 'underwater') continue;
+      if (t.name === 'frame' || t.name === 'display' || this.targets[t.name] || t.resource === 'underwater') continue;
       let target, texture;
       if (t.cube) {
         target = new THREE.WebGLCubeRenderTarget(t.width, { ...linear, depthBuffer: false });
         texture = target.texture;
-      } else if (t.pass === 'scene_color_copy' && (t.width !== width || t.height !== height)) {
-        // Smaller than the frame ("pass_scales"): a target the frame is blitted into,
-        // filtered (the runtime's glBlitFramebuffer with GL_LINEAR).
+      } else if (t.pass === 'scene_color_copy') {
+        // The frame's colour blitted in (the runtime's glBlitFramebuffer): texel for texel
+        // at the frame's size, filtered (GL_LINEAR) where "pass_scales" makes it smaller.
         target = new THREE.WebGLRenderTarget(t.width, t.height, { ...linear, depthBuffer: false });
         texture = target.texture;
-      } else if (t.pass === 'scene_color_copy') {
-        // Copied from the frame's colour (the runtime blits it): RGBA8, linear, clamped.
-        // (Copied from the frame target: a canvas without alpha cannot fill an RGBA texture.)
-        texture = new THREE.FramebufferTexture(t.width, t.height);
-        Object.assign(texture, linear);
       } else if (!t.color) {
         // Depth only (the depth pre-pass): DEPTH_COMPONENT32F, nearest; three.js needs a
         // colour attachment beside it, which nothing reads.
-        target = new THREE.WebGLRenderTarget(t.width, t.height, { ...linear, depthBuffer: true });
+        target = new THREE.WebGLRenderTarget(t.width, t.height, { ...linear, type: THREE.UnsignedByteType, depthBuffer: true });
         target.depthTexture = new THREE.DepthTexture(t.width, t.height, THREE.FloatType);
         texture = target.depthTexture;
       } else {
@@ -234,13 +294,17 @@ export class WaterPasses {
     this.gbuffer = undefined;
   }
 
-  dispose() { this.#disposeTargets(); }
+  dispose() {
+    this.#disposeTargets();
+    this.output.dispose();
+  }
 
-  // Renders every planned pass of one frame into `output` (null: the canvas, through the
-  // frame target): the
-  // application's `scene` (built-in scene included, if it added one) seen by `camera`,
-  // and the water objects of `water` (on WATER_LAYER). water.update() must have run.
-  render(renderer, scene, camera, water, output = null) {
+  // Renders every planned pass of one frame into the frame target: the application's
+  // `scene` (built-in scene included, if it added one) seen by `camera`, and the water
+  // objects of `water` (on WATER_LAYER); then, unless `view` is null, the output transform
+  // through `view` ({toneMapping, exposure}) into `output` (null: the canvas). With `view`
+  // null the linear frame stays in this.frame for the caller. water.update() must have run.
+  render(renderer, scene, camera, water, output = null, view = null) {
     const saved = {
       autoClear: renderer.autoClear, clipping: renderer.clippingPlanes, mask: camera.layers.mask,
       target: renderer.getRenderTarget(), clear: renderer.getClearColor(new THREE.Color()), alpha: renderer.getClearAlpha(),
@@ -253,7 +317,7 @@ export class WaterPasses {
     const waterVisible = water.meshes.map((m) => m.visible);
     water.meshes.forEach((m) => { m.visible = false; });
     const side = camera.getWorldPosition(new THREE.Vector3()).y >= 0 ? 1 : -1;  // the camera's side of the water
-    const frame = output ?? this.frame;
+    const frame = this.frame;
     try {
       for (const pass of this.plan.passes) {
         switch (pass) {
@@ -263,14 +327,7 @@ export class WaterPasses {
           case 'planar_reflection': this.#sceneInto(renderer, scene, camera, this.targets.reflection.target, new THREE.Plane(new THREE.Vector3(0, side, 0), 0), true); break;
           case 'refraction': this.#sceneInto(renderer, scene, camera, this.targets.refraction.target, new THREE.Plane(new THREE.Vector3(0, -side, 0), 0), false); break;
           case 'opaque_scene': this.#sceneInto(renderer, scene, camera, frame, null, false); break;
-          case 'scene_color_copy':
-            if (this.targets.scene_color.target) {
-              this.#blit(renderer, frame, this.targets.scene_color.target);
-            } else {
-              renderer.setRenderTarget(frame);
-              renderer.copyFramebufferToTexture(this.targets.scene_color.texture);
-            }
-            break;
+          case 'scene_color_copy': this.#blit(renderer, frame, this.targets.scene_color.target); break;
           case 'deferred_water': this.#gbuffer(renderer, camera, water); break;
           case 'water_surface': {
             renderer.setRenderTarget(frame);
@@ -283,10 +340,12 @@ export class WaterPasses {
             renderer.autoClear = true;
             break;
           }
+          case 'output_transform':
+            if (view) this.output.render(renderer, frame, output, view);
+            break;
           default: throw new WaterGraphError(`the client has no pass '${pass}'`);
         }
       }
-      if (!output) this.#present(renderer);
     } finally {
       renderer.clippingPlanes = saved.clipping;
       renderer.autoClear = saved.autoClear;
@@ -322,23 +381,17 @@ export class WaterPasses {
     }
   }
 
-  // The frame target's colour onto the canvas, pixel for pixel.
-  #present(renderer) {
-    const gl = renderer.getContext();
-    renderer.setRenderTarget(null);
-    // Raw binds: three.js tracks no read framebuffer here, and binding null restores its view.
-    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, renderer.properties.get(this.frame).__webglFramebuffer);
-    gl.blitFramebuffer(0, 0, this.width, this.height, 0, 0, this.width, this.height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
-    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
-  }
-
-  // The colour of `source` shrunk into the smaller `target`, filtered, as the runtime's
-  // scene colour copy at a reduced scene resolution.
+  // The colour of `source` into `target`, as the runtime's scene colour copy: texel for
+  // texel at the same size, filtered where the target is smaller (a reduced scene
+  // resolution).
   #blit(renderer, source, target) {
     renderer.setRenderTarget(target);  // three.js makes its framebuffer, bound for drawing
     const gl = renderer.getContext();
+    const same = source.width === target.width && source.height === target.height;
+    // Raw binds: three.js tracks no read framebuffer here, and binding null restores its view.
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, renderer.properties.get(source).__webglFramebuffer);
-    gl.blitFramebuffer(0, 0, source.width, source.height, 0, 0, target.width, target.height, gl.COLOR_BUFFER_BIT, gl.LINEAR);
+    gl.blitFramebuffer(0, 0, source.width, source.height, 0, 0, target.width, target.height, gl.COLOR_BUFFER_BIT,
+      same ? gl.NEAREST : gl.LINEAR);
     gl.bindFramebuffer(gl.READ_FRAMEBUFFER, null);
   }
 

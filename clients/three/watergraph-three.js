@@ -5,10 +5,15 @@
 import * as THREE from 'three';
 import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
 import { compileDerived, drawValues } from './watergraph-derived.js';
+import { manifestView, renderView } from './watergraph-output.js';
 
 export { WaterGraphError };
+export { TONE_MAPPERS, EXPOSURE_RANGE } from './watergraph-output.js';
 
 const TWO_PI = 6.283185307179586;
+
+// The options WaterGraph.render() takes.
+const RENDER_OPTIONS = ['toneMapping', 'exposure', 'outputTransform'];
 
 // mod(omega * t, 2 pi) in double precision, as the runtime computes time_phase uniforms:
 // the shader then adds a phase in [0, 2 pi) instead of multiplying a huge time in float.
@@ -164,6 +169,8 @@ export class WaterGraph {
   constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {}, description = null }) {
     if (!manifest || typeof manifest !== 'object') throw new WaterGraphError('no manifest given');
     checkPasses(manifest, resources, description !== null);
+    // The graph's preferred view (the manifest's "color"), which render() uses by default.
+    this.view = manifestView(manifest);
     if (description) {
       checkSceneDescription(description);
       this.passes = new WaterPasses(manifest, description, { width: 1, height: 1 });
@@ -324,22 +331,48 @@ export class WaterGraph {
 
   // One frame into `output` (a render target; null: the canvas): with a scene description,
   // every pass the manifest lists around `scene` (which holds the water mesh), as the
-  // runtime runs them; without one, plainly renderer.render(scene, camera). Call update()
-  // first.
-  render(renderer, scene, camera, output = null) {
+  // runtime runs them, into the linear frame, then the output transform into `output`;
+  // without one, plainly renderer.render(scene, camera) (the water's linear values, no
+  // output transform). Call update() first. options:
+  //   toneMapping  'none', 'aces', 'agx' or 'neutral' (default: the manifest's view)
+  //   exposure     EV in [-20, 20] (default: the manifest's view)
+  //   outputTransform  false: stop at the linear frame (this.frameTarget), drawing nothing
+  //                to the canvas, for a host that does its own output
+  render(renderer, scene, camera, output = null, options = {}) {
+    for (const key of Object.keys(options ?? {}))
+      if (!RENDER_OPTIONS.includes(key))
+        throw new WaterGraphError(`unknown render option '${key}' (the options are ${RENDER_OPTIONS.join(', ')})`);
+    const outputTransform = options?.outputTransform ?? true;
+    if (typeof outputTransform !== 'boolean')
+      throw new WaterGraphError(`the render option outputTransform must be true or false (got ${JSON.stringify(outputTransform)})`);
+    const linear = !outputTransform;
+    const view = linear ? null : renderView(this.view, options ?? {});
     if (!this.passes) {
+      if (Object.keys(options ?? {}).length)
+        throw new WaterGraphError('render options need the output transform, which comes with a scene description (`watergraph scene`)');
       renderer.setRenderTarget(output);
       renderer.render(scene, camera);
       return;
     }
+    if (linear && output)
+      throw new WaterGraphError('with outputTransform: false nothing is drawn to `output`: read the linear frame from water.frameTarget');
     const size = output ? new THREE.Vector2(output.width, output.height) : renderer.getDrawingBufferSize(new THREE.Vector2());
-    if (size.x !== this.passes.width || size.y !== this.passes.height) {
-      this.passes.setSize(size.x, size.y);
+    const remade = this.passes.configure(renderer);
+    if (this.passes.setSize(size.x, size.y) || remade) {
       for (const t of this.manifest.textures ?? [])
         if ('resource' in t) this.uniforms[t.name].value = this.passes.resources[t.name] ?? this.passes.resources[t.resource];
     }
-    this.passes.render(renderer, scene, camera, this, output);
+    this.passes.render(renderer, scene, camera, this, output, view);
   }
+
+  // With a scene description: the render target holding the last frame's linear radiance
+  // (RGBA16F, or RGBA8 where frameFallback says why), its depth in .depthTexture.
+  get frameTarget() { return this.passes?.frame ?? null; }
+  // 'rgba16f', or 'rgba8' once a render() found the context cannot render half floats
+  // (the fallback); null without a scene description.
+  get frameFormat() { return this.passes?.frameFormat ?? null; }
+  // Why the frame is not RGBA16F (also said once with console.warn), or null.
+  get frameFallback() { return this.passes?.frameFallback ?? null; }
 
   // Sets every time and camera uniform the graph declares. `time` in seconds; `camera` a
   // THREE.PerspectiveCamera (or any camera with near/far) whose matrices are current.

@@ -107,22 +107,33 @@ test("the passes and render targets follow the runtime's planner (runtime/pass_p
   const plan = planPasses({ graph: 'all', passes: [...all].reverse() }, description(),
     { width: 320, height: 180, environmentSize: 64 });
   // Execution order whatever the manifest's, the opaque scene always.
+  // The output transform last, as the runtime always runs it.
   assert.deepEqual(plan.passes, ['environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction',
-    'opaque_scene', 'scene_color_copy', 'deferred_water', 'water_surface']);
+    'opaque_scene', 'scene_color_copy', 'deferred_water', 'water_surface', 'output_transform']);
+  // Linear radiance in half floats wherever the runtime has RGBA16F; the G-buffer RGBA32F.
   assert.deepEqual(plan.targets.map((t) => [t.name, t.width, t.height, t.color, t.depth]), [
-    ['frame', 320, 180, 'rgba8', true],
-    ['environment', 64, 64, 'rgba8', false],
+    ['frame', 320, 180, 'rgba16f', true],
+    ['environment', 64, 64, 'rgba16f', false],
     ['scene_depth', 320, 180, null, true],
-    ['reflection', 320, 180, 'rgba8', true],
-    ['refraction', 320, 180, 'rgba8', true],
-    ['scene_color', 320, 180, 'rgba8', false],
+    ['reflection', 320, 180, 'rgba16f', true],
+    ['refraction', 320, 180, 'rgba16f', true],
+    ['scene_color', 320, 180, 'rgba16f', false],
     ['water_normal', 320, 180, 'rgba32f', false],
     ['water_position', 320, 180, 'rgba32f', true],
+    ['display', 320, 180, 'rgba8', false],
   ]);
   // Only what is listed.
   const lake = planPasses({ graph: 'lake', passes: ['water_surface'] }, description(), { width: 8, height: 8, environmentSize: 4 });
-  assert.deepEqual(lake.passes, ['opaque_scene', 'water_surface']);
-  assert.deepEqual(lake.targets.map((t) => t.name), ['frame']);
+  assert.deepEqual(lake.passes, ['opaque_scene', 'water_surface', 'output_transform']);
+  assert.deepEqual(lake.targets.map((t) => t.name), ['frame', 'display']);
+  // The RGBA8 fallback changes the frame-format targets only.
+  const small = planPasses({ graph: 'all', passes: all }, description(), { width: 8, height: 8, environmentSize: 4, frameFormat: 'rgba8' });
+  assert.deepEqual(small.targets.map((t) => t.color),
+    ['rgba8', 'rgba8', null, 'rgba8', 'rgba8', 'rgba8', 'rgba32f', 'rgba32f', 'rgba8']);
+  // The runtime's own passes are never listed by a manifest.
+  for (const own of ['opaque_scene', 'output_transform'])
+    assert.throws(() => planPasses({ graph: 'x', passes: ['water_surface', own] }, description(),
+      { width: 8, height: 8, environmentSize: 4 }), new RegExp(`graph 'x' lists an unknown pass '${own}'`));
   assert.throws(() => planPasses({ graph: 'x', passes: ['water_surface', 'shadow_map'] }, description(),
     { width: 8, height: 8, environmentSize: 4 }), /graph 'x' lists an unknown pass 'shadow_map'/);
   assert.throws(() => planPasses({ graph: 'x', passes: ['depth_prepass'] }, description(),
@@ -140,6 +151,7 @@ test('a scaled pass ("pass_scales") gets targets that fraction of the frame, rou
     ['scene_color', 321, 181],    // not scaled
     ['water_normal', 80, 45],
     ['water_position', 80, 45],
+    ['display', 321, 181],        // the output transform writes the frame's size
   ]);
   assert.throws(() => planPasses({ graph: 'x', passes: ['water_surface'], pass_scales: { refraction: 0.5 } }, description(),
     { width: 8, height: 8, environmentSize: 4 }), /scales pass 'refraction', which it does not list/);
@@ -147,12 +159,13 @@ test('a scaled pass ("pass_scales") gets targets that fraction of the frame, rou
 
 test("the client's resource -> pass table is the runtime's", () => {
   const runtime = Object.fromEntries(description().render_targets.map((t) => [t.resource, t.pass]));
+  assert.ok(description().render_passes.includes('output_transform'));
   assert.deepEqual(RESOURCE_PASSES, runtime);
 });
 
 test('with a scene description the client renders the passes and binds their textures', () => {
   const water = new WaterGraph({ ...graph(), description: description() });
-  assert.deepEqual(water.passes.plan.passes, ['environment_cubemap', 'opaque_scene', 'water_surface']);
+  assert.deepEqual(water.passes.plan.passes, ['environment_cubemap', 'opaque_scene', 'water_surface', 'output_transform']);
   const env = water.uniforms.u_environment.value;
   assert.ok(env.isCubeTexture && env.isRenderTargetTexture, 'u_environment is the environment pass\'s cube');
   assert.equal(water.passes.targets.environment.target.width, description().environment.size);

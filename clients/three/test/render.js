@@ -2,8 +2,11 @@
 // description, the water alone over opaque black (`--scene none`) with the client drawing
 // only water_surface; with `description` (a `watergraph scene` file), every pass the
 // manifest lists, and with `builtin=1` the built-in scene around the water; `box=x,y,z,size`
-// adds a user's own object, an unlit red cube, to the scene the passes draw. Reports
-// through window.wgResult for render_graph.mjs.
+// adds a user's own object, an unlit red cube, to the scene the passes draw. `tonemap` and
+// `exposure` are the render options of the output transform; `nofloat=1` hides the
+// extensions that make half floats renderable, as a context without them would. Reports
+// through window.wgResult for render_graph.mjs (with the frame's format and any
+// warning the client gave).
 import * as THREE from 'three';
 import { loadWaterGraph, createWaterGridGeometry } from '../watergraph-three.js';
 import { loadSceneDescription, createBuiltinScene } from '../watergraph-scene.js';
@@ -11,7 +14,24 @@ import { loadSceneDescription, createBuiltinScene } from '../watergraph-scene.js
 const q = new URLSearchParams(location.search);
 const vec = (name) => q.get(name).split(',').map(Number);
 
+// A context that cannot render half floats: the extensions are not offered.
+function hideFloatRendering() {
+  const hidden = new Set(['EXT_color_buffer_float', 'EXT_color_buffer_half_float']);
+  const proto = WebGL2RenderingContext.prototype;
+  const getExtension = proto.getExtension, supported = proto.getSupportedExtensions;
+  proto.getExtension = function (name) { return hidden.has(name) ? null : getExtension.call(this, name); };
+  proto.getSupportedExtensions = function () { return supported.call(this)?.filter((n) => !hidden.has(n)) ?? null; };
+}
+
+const warnings = [];
+const warn = console.warn;
+console.warn = (...args) => {
+  warnings.push(args.join(' '));
+  warn.apply(console, args);
+};
+
 async function main() {
+  if (q.get('nofloat') === '1') hideFloatRendering();
   const width = Number(q.get('width')), height = Number(q.get('height'));
   const canvas = document.getElementById('view');
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, alpha: false, preserveDrawingBuffer: true });
@@ -38,9 +58,15 @@ async function main() {
   }
   scene.add(water.createMesh(createWaterGridGeometry(grid)));
   water.update(Number(q.get('time')), camera);
-  water.render(renderer, scene, camera);
+  const options = {};
+  if (q.get('tonemap')) options.toneMapping = q.get('tonemap');
+  if (q.get('exposure')) options.exposure = Number(q.get('exposure'));
+  water.render(renderer, scene, camera, null, options);
   const gl = renderer.getContext();
-  return { renderer: gl.getParameter(gl.getExtension('WEBGL_debug_renderer_info')?.UNMASKED_RENDERER_WEBGL ?? gl.RENDERER) };
+  return {
+    renderer: gl.getParameter(gl.getExtension('WEBGL_debug_renderer_info')?.UNMASKED_RENDERER_WEBGL ?? gl.RENDERER),
+    frameFormat: water.frameFormat, frameFallback: water.frameFallback, warnings,
+  };
 }
 
 main().then(

@@ -7,12 +7,16 @@
 //   node render_graph.mjs --dir OUT --manifest lake.manifest.json --size 320x180 \
 //     --eye=14,7,-12 --target=-4,-1.5,4 --up=0,1,0 --fov 55 --near 0.1 --far 200 \
 //     --time 3.5 --grid 128 --screenshot three.png [--description scene.json [--builtin]] \
-//     [--box x,y,z,size] [--chromium /usr/bin/chromium]
+//     [--box x,y,z,size] [--tonemap NAME] [--exposure EV] [--nofloat] [--chromium /usr/bin/chromium]
 //   node render_graph.mjs --batch jobs.json [--description scene.json] [--chromium ...]
 //
 // --description: a `watergraph scene` file; the client then runs every pass the manifest
 // lists, and --builtin draws the built-in scene around the water. --box adds a user's own
-// object to the scene: a red cube (unlit) of that centre and edge length. --batch: a JSON array of
+// object to the scene: a red cube (unlit) of that centre and edge length. --tonemap and
+// --exposure: the client's render options (default: the manifest's view). --nofloat: the
+// page hides the extensions that make half floats renderable (the client's RGBA8 fallback).
+// Each written screenshot is reported on stdout with the frame's format and the warnings
+// the page gave. --batch: a JSON array of
 // jobs, each an object with the single-job options as keys ("dir", "manifest", ...,
 // "builtin": true). Exit status: 0 all written; 1 a page failed (message on stderr; the
 // other jobs still run); 2 usage or environment (no Chromium, no playwright-core).
@@ -35,8 +39,10 @@ let args;
 try {
   ({ values: args } = parseArgs({
     options: {
-      ...Object.fromEntries([...JOB_KEYS, 'chromium', 'batch', 'description', 'box'].map((k) => [k, { type: 'string' }])),
+      ...Object.fromEntries([...JOB_KEYS, 'chromium', 'batch', 'description', 'box', 'tonemap', 'exposure']
+        .map((k) => [k, { type: 'string' }])),
       builtin: { type: 'boolean' },
+      nofloat: { type: 'boolean' },
     },
   }));
 } catch (e) {
@@ -117,6 +123,9 @@ try {
     if (args.description) query.set('description', `/scene/${path.basename(args.description)}`);
     if (job.builtin) query.set('builtin', '1');
     if (job.box) query.set('box', job.box);
+    if (job.tonemap !== undefined) query.set('tonemap', job.tonemap);
+    if (job.exposure !== undefined) query.set('exposure', job.exposure);
+    if (job.nofloat) query.set('nofloat', '1');
     const page = await browser.newPage({ viewport: { width: job.width, height: job.height }, deviceScaleFactor: 1 });
     const problems = [];
     page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
@@ -132,7 +141,9 @@ try {
         code = 1;
       } else {
         await page.locator('canvas').screenshot({ path: job.screenshot });
-        process.stdout.write(`render_graph: ${job.manifest} ${job.width}x${job.height} on ${result.renderer} -> ${job.screenshot}\n`);
+        process.stdout.write(`render_graph: ${job.manifest} ${job.width}x${job.height} on ${result.renderer}, ` +
+          `frame ${result.frameFormat ?? 'none (no description)'} -> ${job.screenshot}\n`);
+        for (const w of result.warnings) process.stdout.write(`render_graph: ${job.manifest}: warning: ${w}\n`);
       }
     } catch (e) {
       process.stderr.write(`render_graph: ${job.manifest}: ${e.message}\n`);
