@@ -3,20 +3,26 @@
 // `watergraph render --target es300` of the same graph, camera, size and time — the same
 // shaders on the runtime's OpenGL ES (Mesa llvmpipe): the water alone (`--scene none`),
 // and every example graph with the passes its manifest lists in the built-in scene, which
-// the client builds from `watergraph scene`. Thresholds and the measured PSNR are in
+// the client builds from `watergraph scene`. Both sides render linear radiance into
+// RGBA16F targets and show it through the same output transform (the description's
+// shader), so the colour pipeline is checked too: 128 sRGB in, 128 out; linear 0.5 out as
+// 188; values above 1 kept until the exposure. Thresholds and the measured PSNR are in
 // docs/ecosystem.md. npm and Chromium missing is a failure, not a
 // skip: CI provides both (scripts/setup.sh installs chromium).
 #ifdef WG_HAVE_RUNTIME
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
 #include "eco_support.h"
+#include "core/view_transform.h"
 #include "nodes/registry.h"
 #include "nodes/texture_source.h"
 #include "runtime/image.h"
@@ -58,14 +64,20 @@ std::string num(float f) {
   return buf;
 }
 
-// One job of render_graph.mjs's batch: the graph compiled into `out` drawn by the client in
-// the built-in scene from `cam`, written to `screenshot`.
-nlohmann::json builtinSceneJob(const std::string& out, const std::string& manifest, const rt::Camera& cam,
-                               const std::string& screenshot) {
-  return {{"dir", out}, {"manifest", manifest}, {"size", kSceneSize},
+// One job of render_graph.mjs's batch: the graph compiled into `out` drawn by the client
+// from `cam` at `size`, in the built-in scene or (builtin false) alone over black as
+// `render --scene none`, written to `screenshot`.
+nlohmann::json sceneJob(const std::string& out, const std::string& manifest, const rt::Camera& cam,
+                        const std::string& screenshot, const std::string& size, bool builtin) {
+  return {{"dir", out}, {"manifest", manifest}, {"size", size},
           {"eye", csv(cam.position)}, {"target", csv(cam.target)}, {"up", csv(cam.up())},
           {"fov", num(cam.fovYDegrees)}, {"near", num(cam.nearPlane)}, {"far", num(cam.farPlane)},
-          {"time", kTime}, {"grid", std::to_string(kGrid)}, {"screenshot", screenshot}, {"builtin", true}};
+          {"time", kTime}, {"grid", std::to_string(kGrid)}, {"screenshot", screenshot}, {"builtin", builtin}};
+}
+
+nlohmann::json builtinSceneJob(const std::string& out, const std::string& manifest, const rt::Camera& cam,
+                               const std::string& screenshot) {
+  return sceneJob(out, manifest, cam, screenshot, kSceneSize, true);
 }
 
 // Runs the client over a batch of jobs (written to dir/jobs.json) in one browser.
@@ -89,8 +101,11 @@ class ThreeClient : public ::testing::Test {
   void SetUp() override { ASSERT_TRUE(npmError_.empty()) << npmError_; }
 
   // Renders `graph` (compiled into `dir`) with three.js; returns the node driver's result.
+  // With `description` (a `watergraph scene` file) the client runs its passes over an
+  // empty scene, the output transform last, as `render --scene none`; without one it draws
+  // only the water.
   CmdResult renderInChromium(const TempDir& dir, const std::string& graphBase, const std::string& camera,
-                             const std::string& png) {
+                             const std::string& png, const std::string& description = "") {
     auto cam = rt::cameraPreset(camera);
     EXPECT_TRUE(cam.has_value());
     std::string cmd = "timeout 50 node " + test::shellQuote(clientDir() + "/test/render_graph.mjs") +
@@ -98,7 +113,8 @@ class ThreeClient : public ::testing::Test {
                       " --size " + kSize + " --eye=" + csv(cam->position) + " --target=" + csv(cam->target) +
                       " --up=" + csv(cam->up()) + " --fov " + num(cam->fovYDegrees) + " --near " +
                       num(cam->nearPlane) + " --far " + num(cam->farPlane) + " --time " + kTime + " --grid " +
-                      std::to_string(kGrid) + " --screenshot " + test::shellQuote(png);
+                      std::to_string(kGrid) + " --screenshot " + test::shellQuote(png) +
+                      (description.empty() ? "" : " --description " + test::shellQuote(description));
     return sh(cmd);
   }
 
@@ -115,9 +131,11 @@ class ThreeClient : public ::testing::Test {
                         " --target es300 --scene none --size " + kSize + " --camera " + camera + " --time " + kTime +
                         " --grid " + std::to_string(kGrid));
     EXPECT_EQ(r.exit, 0) << r.err;
-    CmdResult t = renderInChromium(dir, base, camera, three);
+    CmdResult d = wgRun("scene -o " + test::shellQuote(dir / "scene.json"));
+    EXPECT_EQ(d.exit, 0) << d.err;
+    CmdResult t = renderInChromium(dir, base, camera, three, dir / "scene.json");
     EXPECT_EQ(t.exit, 0) << t.out << t.err;
-    if (c.exit || r.exit || t.exit) return 0;
+    if (c.exit || r.exit || d.exit || t.exit) return 0;
     rt::Image a = rt::readPng(reference), b = rt::readPng(three);
     EXPECT_EQ(a.width, b.width);
     EXPECT_EQ(a.height, b.height);
@@ -343,7 +361,7 @@ TEST(SceneCommand, WritesTheDescriptionToAFileOrStdout) {
   std::ifstream in(dir / "scene.json");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   EXPECT_EQ(text, toStdout.out);
-  EXPECT_EQ(nlohmann::json::parse(text)["format"], std::string("watergraph-scene-1"));
+  EXPECT_EQ(nlohmann::json::parse(text)["format"], std::string("watergraph-scene-2"));
   CmdResult bad = wgRun("scene --sun-elevation 100");
   EXPECT_EQ(bad.exit, 2) << bad.out;
   CmdResult nan = wgRun("scene --sun-azimuth nan");  // would write a NaN sun as JSON null
@@ -351,9 +369,121 @@ TEST(SceneCommand, WritesTheDescriptionToAFileOrStdout) {
   EXPECT_NE(nan.err.find("must be a finite number"), std::string::npos) << nan.err;
 }
 
-// The API without a browser (clients/three/test/api.test.mjs under node --test): the
-// resources option, update(), time phases, the grid, the sampler state of node textures,
-// the pass plan from the scene description and the passes' textures bound.
+// The bottom-centre pixel of a render from the `above` camera: water.
+const uint8_t* waterPixel(const rt::Image& img) {
+  return &img.rgba8[(static_cast<size_t>(img.height) * 7 / 8 * img.width + img.width / 2) * 4];
+}
+
+// 255 times the output transform of a grey `linear` through `view`, rounded: what an 8-bit
+// display value must be (core/view_transform.h, the reference of every runtime).
+int displayed(double linear, ToneMapper mapper, double ev) {
+  return static_cast<int>(std::lround(255 * outputTransform({mapper, ev}, {linear, linear, linear})[1]));
+}
+
+// The colour pipeline in the client, as tests/runtime/color_pipeline_test.cpp checks the
+// runtime's: graphs showing one grey on the water, alone over black (64x36, the `above`
+// camera), read at a water pixel.
+//   a 4x4 PNG of 128 through texture_sample (color_space srgb): 128 (+-1);
+//   a linear 0.5 parameter: 188 with the default view (none, 0 EV);
+//   a linear 4 at -2 EV: 255 and at -3 EV: 188, so the frame holds radiance above 1 until
+//     the exposure (a frame clamped to 1 would give 137 and 99);
+//   aces, agx and neutral at -1 EV on 4: the reference (+-1);
+//   with the half-float extensions hidden from the page: the frame RGBA8, said once as a
+//     warning, and 4 at -3 EV is 99: clipped, as the warning says;
+//   an unknown tone mapper: that page fails with a WaterGraphError naming the option.
+TEST_F(ThreeClient, TheColourPipelineMatchesTheRuntimesContract) {
+  TempDir dir("wg_three_");
+  rt::Image png;
+  png.width = png.height = 4;
+  png.rgba8.assign(4 * 4 * 4, 128);
+  for (size_t i = 3; i < png.rgba8.size(); i += 4) png.rgba8[i] = 255;
+  rt::writePng(dir / "grey.png", png);
+  const std::string out = dir / "out";
+  for (const auto& [name, color, half] : {std::tuple{"tex", "t.rgb", "0.5"}, std::tuple{"half", "$half", "0.5"},
+                                          std::tuple{"four", "$half", "4"}}) {
+    test::writeFile(dir / (std::string(name) + ".json"),
+                    std::string(R"({"version": 1, "name": "grey",
+      "parameters": {"half": {"type": "vec3", "default": [)") + half + ", " + half + ", " + half +
+                        R"(], "description": "data, not a colour"}},
+      "nodes": [{"id": "t", "type": "texture_sample", "options": {"texture": "grey.png", "color_space": "srgb"}}],
+      "outputs": {"fragment": {"color": ")" + color + R"("}}})");
+    CmdResult c = wgRun("compile " + test::shellQuote(dir / (std::string(name) + ".json")) + " -o " +
+                        test::shellQuote(out) + " --target es300 --textures --quiet");
+    ASSERT_EQ(c.exit, 0) << name << ": " << c.err;
+  }
+  const std::string description = dir / "scene.json";
+  ASSERT_EQ(wgRun("scene -o " + test::shellQuote(description)).exit, 0);
+  auto cam = rt::cameraPreset("above");
+  ASSERT_TRUE(cam.has_value());
+  struct Job {
+    const char* graph;
+    const char* tonemap;  // "" for the manifest's view
+    double exposure;      // NaN for the manifest's view
+    bool noFloat;
+    int expected;
+    int tolerance;
+  };
+  const double manifestsView = std::nan("");
+  const Job jobs[] = {
+      {"tex", "", manifestsView, false, 128, 1},
+      {"half", "", manifestsView, false, 188, 0},
+      {"four", "none", -2, false, 255, 0},
+      {"four", "none", -3, false, 188, 0},
+      {"four", "aces", -1, false, displayed(4, ToneMapper::Aces, -1), 1},
+      {"four", "agx", -1, false, displayed(4, ToneMapper::Agx, -1), 1},
+      {"four", "neutral", -1, false, displayed(4, ToneMapper::Neutral, -1), 1},
+      {"four", "none", -3, true, displayed(1, ToneMapper::None, -3), 0},
+  };
+  EXPECT_EQ(displayed(0.5, ToneMapper::None, 0), 188);
+  EXPECT_EQ(displayed(1, ToneMapper::None, -3), 99);
+  nlohmann::json batch = nlohmann::json::array();
+  for (size_t i = 0; i < std::size(jobs); ++i) {
+    nlohmann::json j = sceneJob(out, std::string(jobs[i].graph) + ".manifest.json", *cam,
+                                dir / ("job" + std::to_string(i) + ".png"), "64x36", false);
+    if (*jobs[i].tonemap) j["tonemap"] = jobs[i].tonemap;
+    if (!std::isnan(jobs[i].exposure)) j["exposure"] = num(static_cast<float>(jobs[i].exposure));
+    if (jobs[i].noFloat) j["nofloat"] = true;
+    batch.push_back(j);
+  }
+  nlohmann::json bad = sceneJob(out, "half.manifest.json", *cam, dir / "bad.png", "64x36", false);
+  bad["tonemap"] = "filmic";
+  batch.push_back(bad);
+  CmdResult t = renderBatch(dir.path(), batch, description, 120);
+  EXPECT_EQ(t.exit, 1) << t.out << t.err;  // the bad job only
+  EXPECT_NE(t.err.find("WaterGraphError: the render option toneMapping must be one of none, aces, agx, neutral "
+                       "(got 'filmic')"),
+            std::string::npos)
+      << t.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "bad.png"));
+  for (size_t i = 0; i < std::size(jobs); ++i) {
+    const std::string file = dir / ("job" + std::to_string(i) + ".png");
+    ASSERT_TRUE(std::filesystem::exists(file)) << "job " << i << "\n" << t.out << t.err;
+    rt::Image img = rt::readPng(file);
+    const uint8_t* px = waterPixel(img);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(px[c], jobs[i].expected, jobs[i].tolerance)
+          << jobs[i].graph << " " << jobs[i].tonemap << " at " << jobs[i].exposure << " EV"
+          << (jobs[i].noFloat ? " without half floats" : "") << ", channel " << c;
+  }
+  // Every frame but the one without the extensions is RGBA16F; that one says why, once.
+  auto count = [&](const std::string& what) {
+    size_t n = 0;
+    for (size_t at = t.out.find(what); at != std::string::npos; at = t.out.find(what, at + 1)) ++n;
+    return n;
+  };
+  EXPECT_EQ(count(", frame rgba16f -> "), std::size(jobs) - 1) << t.out;
+  EXPECT_EQ(count(", frame rgba8 -> "), 1u) << t.out;
+  EXPECT_EQ(count("warning: watergraph: this WebGL 2 context has neither EXT_color_buffer_float nor "
+                  "EXT_color_buffer_half_float"),
+            1u)
+      << t.out;
+}
+
+// The API without a browser (clients/three/test/api.test.mjs and color.test.mjs under
+// node --test): the resources option, update(), time phases, the grid, the sampler state of
+// node textures, the pass plan from the scene description and the passes' textures bound;
+// the manifest's view and the render options, the output pass built from the
+// description's shader, the RGBA8 fallback said once.
 TEST_F(ThreeClient, ApiChecksPassUnderNode) {
   TempDir dir("wg_three_");
   CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath("tests/ecosystem/data/three_environment.json")) +
@@ -362,9 +492,9 @@ TEST_F(ThreeClient, ApiChecksPassUnderNode) {
   CmdResult d = wgRun("scene -o " + test::shellQuote(dir / "scene.json"));
   ASSERT_EQ(d.exit, 0) << d.err;
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && WG_THREE_FIXTURES=" + test::shellQuote(dir.path()) +
-                   " timeout 50 node --test test/api.test.mjs");
+                   " timeout 50 node --test test/api.test.mjs test/color.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 11"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 16"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 
