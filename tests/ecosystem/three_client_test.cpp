@@ -342,12 +342,15 @@ TEST_F(ThreeClient, AUsersOwnObjectIsReflectedAndRefracted) {
 
 // The gallery (clients/three/example/) as a person opens it: every example graph compiled
 // with its presets, the page loaded, frames drawn, two graphs picked in turn (deferred
-// water among them), and no console error or failed request.
+// water among them), a tone mapper picked and the exposure slider moved, and no console
+// error or failed request.
 TEST_F(ThreeClient, TheGalleryLoadsAndSwitchesGraphsWithoutAConsoleError) {
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && timeout 200 node test/gallery_check.mjs --watergraph " +
-                   test::shellQuote(test::watergraphBinary()) + " --size 480x270 --switch deferred_underwater,topdown");
+                   test::shellQuote(test::watergraphBinary()) +
+                   " --size 480x270 --switch deferred_underwater,topdown --tonemap agx --exposure 0.5");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
   EXPECT_NE(t.out.find("switched to deferred_underwater, topdown: no console errors"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("view agx at 0.5 EV, frame rgba16f"), std::string::npos) << t.out;
 }
 
 // `watergraph scene` writes the same description to a file as to stdout, and refuses a sun

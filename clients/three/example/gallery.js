@@ -1,13 +1,14 @@
 // The gallery page: a graph picker, the graph's presets (each compiled by serve.mjs with
-// --preset), sliders generated from the manifest's parameters, and an orbit camera over
-// the built-in scene. window.wgGallery reports state for the headless check.
+// --preset), sliders generated from the manifest's parameters, the view of the output
+// transform (tone mapper and exposure, starting at the graph's own view) and an orbit
+// camera over the built-in scene. window.wgGallery reports state for the headless check.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { loadWaterGraph } from '../watergraph-three.js';
+import { loadWaterGraph, TONE_MAPPERS } from '../watergraph-three.js';
 import { loadSceneDescription, createBuiltinScene, presetCamera } from '../watergraph-scene.js';
 
 const $ = (id) => document.getElementById(id);
-const state = { ready: false, graph: null, preset: null, frames: 0, errors: [] };
+const state = { ready: false, graph: null, preset: null, frames: 0, errors: [], view: null, frameFormat: null };
 window.wgGallery = state;
 
 const [description, gallery] = await Promise.all([
@@ -47,8 +48,9 @@ function range(u, x) {
 const hex = (v) => '#' + v.slice(0, 3).map((x) => Math.round(Math.min(Math.max(x, 0), 1) * 255).toString(16).padStart(2, '0')).join('');
 const fromHex = (s) => [1, 3, 5].map((i) => parseInt(s.slice(i, i + 2), 16) / 255);
 
-// One control per parameter uniform: a colour picker for colour hints (the raw floats, as
-// the runtime uploads them), a checkbox for bool, sliders otherwise.
+// One control per parameter uniform: a colour picker for colour hints (the picker's sRGB
+// values as they are: a colour parameter holds its authored value, and the shader
+// linearises it), a checkbox for bool, sliders otherwise.
 function buildParameters(w) {
   const box = $('parameters');
   box.replaceChildren();
@@ -116,6 +118,7 @@ async function select(name, preset = 'default') {
   $('graph').value = name;
   $('passes').textContent = 'passes: ' + water.passes.plan.passes.join(', ');
   buildParameters(water);
+  showView(water.view);  // each graph starts at its own view
   Object.assign(state, { graph: name, preset, frames: 0 });
   history.replaceState(null, '', `?graph=${name}&preset=${preset}`);
 }
@@ -127,6 +130,23 @@ function report(e) {
   console.error(e);
 }
 
+// The view the output transform shows the frame through: the controls' values.
+function showView({ toneMapping, exposure }) {
+  $('tonemap').value = toneMapping;
+  const slider = $('exposure');  // wide enough for the graph's own exposure
+  slider.min = Math.min(-8, exposure);
+  slider.max = Math.max(8, exposure);
+  slider.value = exposure;
+  viewChanged();
+}
+function viewChanged() {
+  state.view = { toneMapping: $('tonemap').value, exposure: Number($('exposure').value) };
+  $('exposure-value').textContent = `${Number(state.view.exposure.toFixed(2))} EV`;
+}
+$('tonemap').replaceChildren(...TONE_MAPPERS.map((t) => new Option(t, t)));
+$('tonemap').onchange = viewChanged;
+$('exposure').oninput = viewChanged;
+
 $('graph').replaceChildren(...gallery.graphs.map((g) => new Option(g.name, g.name)));
 $('graph').onchange = () => select($('graph').value).catch(report);
 $('preset').onchange = () => select(state.graph, $('preset').value).catch(report);
@@ -137,7 +157,11 @@ renderer.setAnimationLoop((ms) => {
   if (!water) return;
   controls.update();
   water.update(ms / 1000, camera);
-  water.render(renderer, scene, camera);
+  water.render(renderer, scene, camera, null, state.view);
+  if (state.frameFormat !== water.frameFormat) {
+    state.frameFormat = water.frameFormat;
+    $('frame').textContent = `frame: linear ${water.frameFormat}` + (water.frameFallback ? ` (${water.frameFallback})` : '');
+  }
   state.frames++;
 });
 state.ready = true;

@@ -1,10 +1,11 @@
 // Loads the gallery (example/) in headless Chromium as a person would: prepares it with
 // `watergraph` (example/serve.mjs), opens the page, waits for frames, switches to each
-// graph named with --switch through the graph picker, and fails on any console error or
+// graph named with --switch through the graph picker, then picks the tone mapper --tonemap
+// and sets the exposure slider to --exposure (EV), and fails on any console error or
 // failed request. Used by tests/ecosystem/three_client_test.cpp.
 //
 //   node test/gallery_check.mjs --watergraph build/cli/watergraph [--switch deferred_underwater,pool]
-//     [--size 960x540] [--screenshot gallery.png] [--chromium /usr/bin/chromium]
+//     [--tonemap agx] [--exposure 0.5] [--size 960x540] [--screenshot gallery.png] [--chromium /usr/bin/chromium]
 //
 // Exit status: 0 fine; 1 the page failed (message on stderr); 2 usage or environment.
 import { access, mkdtemp, rm } from 'node:fs/promises';
@@ -22,7 +23,8 @@ function fail(code, message) {
 let args;
 try {
   ({ values: args } = parseArgs({
-    options: Object.fromEntries(['watergraph', 'switch', 'size', 'screenshot', 'chromium'].map((k) => [k, { type: 'string' }])),
+    options: Object.fromEntries(['watergraph', 'switch', 'size', 'screenshot', 'chromium', 'tonemap', 'exposure']
+      .map((k) => [k, { type: 'string' }])),
   }));
 } catch (e) {
   fail(2, e.message);
@@ -79,6 +81,12 @@ try {
       await settle(name);
       switched.push(name);
     }
+    // The view controls: frames drawn through the tone mapper and exposure picked.
+    if (args.tonemap) await page.selectOption('#tonemap', args.tonemap);
+    if (args.exposure) await page.locator('#exposure').fill(args.exposure);
+    const frames = await page.evaluate(() => window.wgGallery.frames);
+    await page.waitForFunction((n) => window.wgGallery.errors.length || window.wgGallery.frames >= n + 3, frames, { timeout: 60000 });
+    const view = await page.evaluate(() => ({ ...window.wgGallery.view, frameFormat: window.wgGallery.frameFormat }));
     const errors = await page.evaluate(() => window.wgGallery.errors);
     problems.push(...errors);
     if (problems.length) {
@@ -87,7 +95,8 @@ try {
     } else {
       if (args.screenshot) await page.screenshot({ path: args.screenshot });
       process.stdout.write(`gallery_check: ${graphs.length} graphs, started with ${graphs[0].name}, ` +
-        `switched to ${switched.join(', ') || 'none'}: no console errors\n`);
+        `switched to ${switched.join(', ') || 'none'}: no console errors\n` +
+        `gallery_check: view ${view.toneMapping} at ${view.exposure} EV, frame ${view.frameFormat}\n`);
     }
   } catch (e) {
     process.stderr.write(`gallery_check: ${e.message}\n`);
