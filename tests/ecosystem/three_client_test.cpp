@@ -34,16 +34,18 @@ namespace {
 // Both renderers rasterise the same triangles with the same shaders; what differs is
 // float rounding on two software GPUs (llvmpipe, SwiftShader), which pixels exactly on the
 // grid's far edge each covers, and, where a texture is minified without mipmaps, which
-// texel a far pixel lands on. Thresholds sit about 3.5 dB under the measured figures; a
-// wrong camera or time costs far more (docs/ecosystem.md has the figures).
-constexpr double kLakeMinPsnrDb = 42.0;           // measured 45.5
-constexpr double kTexturedWavesMinPsnrDb = 37.0;  // measured 40.9
+// texel a far pixel lands on. Thresholds sit about 3.5 dB under the measured figures
+// (through the output transform, on both sides); a wrong camera or time costs far more
+// (docs/ecosystem.md has the figures).
+constexpr double kLakeMinPsnrDb = 40.0;           // measured 43.7
+constexpr double kTexturedWavesMinPsnrDb = 37.0;  // measured 41.5
 // Every example graph in the built-in scene, every pass its manifest lists: the same
 // shaders and scene on both sides, so what differs is float rounding on two software GPUs
 // (magnified where a reflection or refraction ray grazes an edge, or a depth
 // linearisation divides by a small difference) and pixels on triangle edges. The issue's
-// floor; the figures measured are in docs/ecosystem.md.
-constexpr double kBuiltinSceneMinPsnrDb = 30.0;
+// floor (issue 38: "three.js matches the runtime >= 33 dB"); the figures measured, 36.9 dB
+// and up, are in docs/ecosystem.md.
+constexpr double kBuiltinSceneMinPsnrDb = 33.0;
 constexpr const char* kSceneSize = "192x108";
 
 constexpr const char* kSize = "320x180";
@@ -163,7 +165,7 @@ TEST_F(ThreeClient, TexturedWavesMatchTheRuntime) {
 
 // A user's PNG through texture_sample (repeat, bilinear, linear data: the manifest's
 // sampler state set on the three.js texture), expressions, u_time and the sun direction:
-// the lagoon example (measured 43.0 dB).
+// the lagoon example (measured 42.5 dB).
 TEST_F(ThreeClient, TheLagoonsOwnTextureMatchesTheRuntime) {
   EXPECT_GE(comparedPsnr("graphs/lagoon.json", "above"), kTexturedWavesMinPsnrDb);
 }
