@@ -389,7 +389,9 @@ int displayed(double linear, ToneMapper mapper, double ev) {
 // runtime's: graphs showing one grey on the water, alone over black (64x36, the `above`
 // camera), read at a water pixel.
 //   a 4x4 PNG of 128 through texture_sample (color_space srgb): 128 (+-1);
-//   a linear 0.5 parameter: 188 with the default view (none, 0 EV);
+//   a linear 0.5 parameter: 188 with the default view (none, 0 EV), also where the host
+//     made its renderer with three.js's own HDR output (a half-float output buffer, ACES,
+//     sRGB), which the output pass sets aside (through three.js's it would be 174);
 //   a linear 4 at -2 EV: 255 and at -3 EV: 188, so the frame holds radiance above 1 until
 //     the exposure (a frame clamped to 1 would give 137 and 99);
 //   aces, agx and neutral at -1 EV on 4: the reference (+-1);
@@ -427,11 +429,13 @@ TEST_F(ThreeClient, TheColourPipelineMatchesTheRuntimesContract) {
     bool noFloat;
     int expected;
     int tolerance;
+    bool hostToneMapping = false;
   };
   const double manifestsView = std::nan("");
   const Job jobs[] = {
       {"tex", "", manifestsView, false, 128, 1},
       {"half", "", manifestsView, false, 188, 0},
+      {"half", "", manifestsView, false, 188, 0, /*hostToneMapping=*/true},
       {"four", "none", -2, false, 255, 0},
       {"four", "none", -3, false, 188, 0},
       {"four", "aces", -1, false, displayed(4, ToneMapper::Aces, -1), 1},
@@ -448,6 +452,7 @@ TEST_F(ThreeClient, TheColourPipelineMatchesTheRuntimesContract) {
     if (*jobs[i].tonemap) j["tonemap"] = jobs[i].tonemap;
     if (!std::isnan(jobs[i].exposure)) j["exposure"] = num(static_cast<float>(jobs[i].exposure));
     if (jobs[i].noFloat) j["nofloat"] = true;
+    if (jobs[i].hostToneMapping) j["host-tone-mapping"] = true;
     batch.push_back(j);
   }
   nlohmann::json bad = sceneJob(out, "half.manifest.json", *cam, dir / "bad.png", "64x36", false);
@@ -468,7 +473,8 @@ TEST_F(ThreeClient, TheColourPipelineMatchesTheRuntimesContract) {
     for (int c = 0; c < 3; ++c)
       EXPECT_NEAR(px[c], jobs[i].expected, jobs[i].tolerance)
           << jobs[i].graph << " " << jobs[i].tonemap << " at " << jobs[i].exposure << " EV"
-          << (jobs[i].noFloat ? " without half floats" : "") << ", channel " << c;
+          << (jobs[i].noFloat ? " without half floats" : "")
+          << (jobs[i].hostToneMapping ? " with the host's tone mapping" : "") << ", channel " << c;
   }
   // Every frame but the one without the extensions is RGBA16F; that one says why, once.
   auto count = [&](const std::string& what) {

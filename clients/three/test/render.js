@@ -4,7 +4,10 @@
 // manifest lists, and with `builtin=1` the built-in scene around the water; `box=x,y,z,size`
 // adds a user's own object, an unlit red cube, to the scene the passes draw. `tonemap` and
 // `exposure` are the render options of the output transform; `nofloat=1` hides the
-// extensions that make half floats renderable, as a context without them would. Reports
+// extensions that make half floats renderable, as a context without them would;
+// `hosttonemapping=1` makes the renderer as an HDR host might: three.js's own half-float
+// output buffer, ACES tone mapping and sRGB output, which three.js applies to what is drawn
+// to the canvas (the client's output must not change). Reports
 // through window.wgResult for render_graph.mjs (with the frame's format and any
 // warning the client gave).
 import * as THREE from 'three';
@@ -34,10 +37,16 @@ async function main() {
   if (q.get('nofloat') === '1') hideFloatRendering();
   const width = Number(q.get('width')), height = Number(q.get('height'));
   const canvas = document.getElementById('view');
-  const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, alpha: false, preserveDrawingBuffer: true });
+  const host = q.get('hosttonemapping') === '1';
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, alpha: false, preserveDrawingBuffer: true,
+    ...(host ? { outputBufferType: THREE.HalfFloatType } : {}) });
   renderer.setPixelRatio(1);
   renderer.setSize(width, height);
   renderer.setClearColor(0x000000, 1);
+  if (host) {
+    renderer.toneMapping = THREE.ACESFilmicToneMapping;
+    renderer.outputColorSpace = THREE.SRGBColorSpace;
+  }
 
   const camera = new THREE.PerspectiveCamera(Number(q.get('fov')), width / height, Number(q.get('near')), Number(q.get('far')));
   camera.position.set(...vec('eye'));

@@ -7,7 +7,8 @@
 //   node render_graph.mjs --dir OUT --manifest lake.manifest.json --size 320x180 \
 //     --eye=14,7,-12 --target=-4,-1.5,4 --up=0,1,0 --fov 55 --near 0.1 --far 200 \
 //     --time 3.5 --grid 128 --screenshot three.png [--description scene.json [--builtin]] \
-//     [--box x,y,z,size] [--tonemap NAME] [--exposure EV] [--nofloat] [--chromium /usr/bin/chromium]
+//     [--box x,y,z,size] [--tonemap NAME] [--exposure EV] [--nofloat] [--host-tone-mapping]
+//     [--chromium /usr/bin/chromium]
 //   node render_graph.mjs --batch jobs.json [--description scene.json] [--chromium ...]
 //
 // --description: a `watergraph scene` file; the client then runs every pass the manifest
@@ -15,6 +16,8 @@
 // object to the scene: a red cube (unlit) of that centre and edge length. --tonemap and
 // --exposure: the client's render options (default: the manifest's view). --nofloat: the
 // page hides the extensions that make half floats renderable (the client's RGBA8 fallback).
+// --host-tone-mapping: the page sets three.js's own tone mapping (ACES) and sRGB output on
+// the renderer, as a host might; the client's output transform must set them aside.
 // Each written screenshot is reported on stdout with the frame's format and the warnings
 // the page gave. --batch: a JSON array of
 // jobs, each an object with the single-job options as keys ("dir", "manifest", ...,
@@ -43,6 +46,7 @@ try {
         .map((k) => [k, { type: 'string' }])),
       builtin: { type: 'boolean' },
       nofloat: { type: 'boolean' },
+      'host-tone-mapping': { type: 'boolean' },
     },
   }));
 } catch (e) {
@@ -126,6 +130,7 @@ try {
     if (job.tonemap !== undefined) query.set('tonemap', job.tonemap);
     if (job.exposure !== undefined) query.set('exposure', job.exposure);
     if (job.nofloat) query.set('nofloat', '1');
+    if (job['host-tone-mapping']) query.set('hosttonemapping', '1');
     const page = await browser.newPage({ viewport: { width: job.width, height: job.height }, deviceScaleFactor: 1 });
     const problems = [];
     page.on('console', (m) => { if (m.type() === 'error') problems.push(m.text()); });
