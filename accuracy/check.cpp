@@ -374,7 +374,11 @@ rt::Image errorMapImage(const CheckReport& report, const ViewTransform& view) {
     if (e < 0) {
       const float* f = &pick->frame[i * 4];
       const Rgb shown = outputTransform(view, {f[0], f[1], f[2]});
-      for (size_t c = 0; c < 3; ++c) px[c] = static_cast<uint8_t>(std::lround(255 * 0.25 * shown[c]));
+      // Darkened below 64 in red and green, blue lifted from 64: a picture of the scene no
+      // grey error level can be mistaken for.
+      px[0] = static_cast<uint8_t>(std::lround(60 * shown[0]));
+      px[1] = static_cast<uint8_t>(std::lround(60 * shown[1]));
+      px[2] = static_cast<uint8_t>(64 + std::lround(60 * shown[2]));
     } else if (!(r <= 1)) {
       px[0] = 255, px[1] = 0, px[2] = 0;
     } else {

@@ -86,8 +86,9 @@ CheckReport checkGraph(const CompileResult& result, const std::string& graphFile
 // less, white at 1e-3; red where the pixel is over its error bound; dark blue where the
 // pixel was not compared (not water, near a silhouette, or no reference). Empty (0 x 0)
 // without error maps or compared pixels.
-// Pixels not compared show the frame through `view` (core/view_transform.h) at a quarter of
-// its brightness, so the compared ones stand out over a picture of the scene.
+// Pixels not compared show the frame through `view` (core/view_transform.h) darkened and
+// tinted blue (red and green below 64, blue from 64), so the compared ones stand out over a
+// picture of the scene.
 rt::Image errorMapImage(const CheckReport& report, const ViewTransform& view = {});
 
 std::string formatCheckText(const CheckReport& report);

@@ -191,7 +191,7 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--error-map", args->errorMap,
                   "write the per-pixel error against the CPU of the worst view as a PNG (the frame's size; every water "
                   "pixel compared): grey on a log scale from 1e-8 (black) to 1e-3 (white), red over the error bound, "
-                  "not compared: the frame through --tonemap/--exposure at a quarter of its brightness. With several graphs, FILE-GRAPH.png per graph; with --target all, FILE-TARGET.png "
+                  "not compared: the frame through --tonemap/--exposure, darkened and tinted blue. With several graphs, FILE-GRAPH.png per graph; with --target all, FILE-TARGET.png "
                   "per target (FILE-GRAPH-TARGET.png for both)");
   cmd->add_option("--mutate", args->mutate,
                   "FIND=>REPLACE: edit the water shaders before rendering (a wrong node: check must fail)");

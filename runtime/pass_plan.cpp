@@ -61,12 +61,12 @@ PassPlan planPasses(const Manifest& manifest, const PlanOptions& options) {
     failManifest("render size must be positive");
   if (!manifest.lists(PassKind::WaterSurface)) failManifest("the manifest's \"passes\" list lacks water_surface");
   PassPlan plan;
-  const ColorFormat frameColor = options.floatColor ? ColorFormat::Rgba32f : ColorFormat::Rgba16f;
+  const ColorFormat frameColor = options.floatColor ? ColorFormat::Rgba32f : options.pictureFormat;
   plan.targets.push_back({"frame", PassKind::WaterSurface, "", frameColor, DepthFormat::Depth32f, options.width,
                           options.height, false});
   for (const auto& pass : renderPassTable()) {
     if (pass.id == PassKind::OutputTransform) {
-      if (options.floatColor) continue;
+      if (options.floatColor || !options.outputTransform) continue;
       plan.passes.push_back(pass.id);
       plan.targets.push_back({kDisplayTarget, pass.id, "", ColorFormat::Rgba8, DepthFormat::None, options.width,
                               options.height, false});

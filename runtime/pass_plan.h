@@ -45,6 +45,11 @@ struct PlanOptions {
   // Accuracy renders: colour targets in RGBA32F and no output transform (the linear frame is
   // read). Otherwise RGBA16F, and the output transform writes the "display" target (RGBA8).
   bool floatColor = false;
+  // Only for measuring what the colour pipeline costs (bench/color_pipeline_bench.cpp): the
+  // frame and scene targets of a picture render in RGBA8 (display values, as before the
+  // pipeline) and/or without the output transform. Ignored with floatColor.
+  ColorFormat pictureFormat = ColorFormat::Rgba16f;
+  bool outputTransform = true;
   int environmentSize = 128;  // cube map face size
 };
 

@@ -632,6 +632,7 @@ struct Renderer::Impl {
     size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height) * 4;
     // Floats: the linear frame, before the output transform; bytes: the displayed image.
     const GpuTarget* source = asFloat ? &frame() : display();
+    if (!asFloat && !source && frame().spec.color == ColorFormat::Rgba8) source = &frame();  // no output transform
     if (!source || (asFloat && source->spec.color == ColorFormat::Rgba8))
       throw RuntimeError(RuntimeError::Kind::Manifest, asFloat ? "the frame holds no float colour"
                                                                : "an 8-bit read-back needs a renderer made without floatColor");
@@ -676,6 +677,8 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
   po.width = settings.width;
   po.height = settings.height;
   po.floatColor = settings.floatColor;
+  po.pictureFormat = settings.pictureFormat;
+  po.outputTransform = settings.outputTransform;
   po.environmentSize = settings.environmentSize;
   r.plan = planPasses(manifest, po);
 

@@ -29,6 +29,9 @@ struct RenderSettings {
   SceneOptions scene;
   bool floatColor = false;       // RGBA32F colour targets and no output transform (accuracy work)
   ViewTransform view;            // exposure and tone mapper of the output transform
+  // Only for measuring the colour pipeline's cost (PlanOptions): RGBA8 targets, no transform.
+  ColorFormat pictureFormat = ColorFormat::Rgba16f;
+  bool outputTransform = true;
   int environmentSize = 128;     // cube map face size for environment_cubemap
   // Quads per side of the 40 x 40 m water grid: 128 gives 0.31 m spacing (6+ vertices per
   // wavelength for waves of 2 m and longer). On llvmpipe triangle setup runs on one

@@ -486,6 +486,8 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   po.width = settings.width;
   po.height = settings.height;
   po.floatColor = settings.floatColor;
+  po.pictureFormat = settings.pictureFormat;
+  po.outputTransform = settings.outputTransform;
   po.environmentSize = settings.environmentSize;
   r.plan = planPasses(manifest, po);
   r.deferred = r.plan.runs(PassKind::DeferredWater);

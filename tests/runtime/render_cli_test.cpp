@@ -95,6 +95,29 @@ TEST(RenderCli, UsageErrorsExit2) {
   std::filesystem::remove_all(dir);
 }
 
+// The output transform's flags: an unknown tone mapper, or an exposure that is not a finite
+// number in [-20, 20], is a usage error naming the flag, before anything is rendered; a
+// valid pair changes the picture.
+TEST(RenderCli, ToneMapperAndExposureFlags) {
+  std::string dir = test::makeTempDir("wg_render_view_");
+  std::string lake = test::sourcePath("graphs/lake.json");
+  int code = -1;
+  for (const char* bad : {"--tonemap filmic", "--tonemap ''", "--exposure nan", "--exposure inf", "--exposure 21",
+                          "--exposure -20.5", "--exposure 1e300"}) {
+    std::string out = render(lake + " -o " + dir + "/x.png --size 16x9 " + bad, &code);
+    EXPECT_EQ(code, 2) << bad << ": " << out;
+    const std::string flag = std::string(bad).substr(0, std::string(bad).find(' '));
+    EXPECT_NE(out.find(flag + ":"), std::string::npos) << bad << ": " << out;
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
+  std::string out = render(lake + " -o " + dir + "/plain.png --size 32x18", &code);
+  EXPECT_EQ(code, 0) << out;
+  out = render(lake + " -o " + dir + "/agx.png --size 32x18 --tonemap agx --exposure -1", &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(rt::readPng(dir + "/plain.png").rgba8, rt::readPng(dir + "/agx.png").rgba8);
+  std::filesystem::remove_all(dir);
+}
+
 // The PNG is written as every output file is: a temporary, then a rename. A FIFO, a device
 // or a folder at the output path is refused, never replaced by a regular file (as root, a
 // rename onto /dev/full used to succeed and leave a regular file there).

@@ -89,7 +89,7 @@ TEST_P(SceneNodes, EachRunsOnlyItsPassesAndRendersFinite) {
     std::set<std::string> targets;
     for (const auto& t : p.plan.targets) targets.insert(t.name);
     std::set<std::string> expected(c.targets.begin(), c.targets.end());
-    expected.insert("frame");
+    expected.insert({"frame", "display"});
     EXPECT_EQ(targets, expected);
     EXPECT_EQ(p.targetCount, static_cast<int>(expected.size()));
     EXPECT_GT(lumaVariance(p.image, 0, 90, 320, 180), 1.0) << "flat image";
