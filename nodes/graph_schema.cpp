@@ -7,6 +7,7 @@
 #include "core/node_spec.h"
 #include "core/texture_check.h"
 #include "core/types.h"
+#include "core/view_transform.h"
 
 namespace wg {
 namespace {
@@ -301,6 +302,17 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
       {"version", {{"description", "the format version"}, {"const", kGraphFormatVersion}}},
       {"name", described("the graph's name", defRef("identifier"))},
       {"description", {{"type", "string"}}},
+      {"view", {{"description", "how the frame is meant to be shown: the output transform's tone mapper and exposure "
+                                "(EV); render, check and the editor use it unless --tonemap / --exposure say otherwise"},
+                {"type", "object"},
+                {"additionalProperties", false},
+                {"properties",
+                 {{"tonemap", {{"description", "none (clamp), aces, agx or neutral"},
+                               {"enum", OJ(std::vector<std::string>(toneMapperNames().begin(), toneMapperNames().end()))}}},
+                  {"exposure", {{"description", "EV: linear radiance x 2^exposure before the tone mapper"},
+                                {"type", "number"},
+                                {"minimum", kMinExposureEv},
+                                {"maximum", kMaxExposureEv}}}}}}},
       {"imports", {{"description", "node type name -> path of a function graph, relative to this file (a subgraph)"},
                    {"type", "object"},
                    {"propertyNames", defRef("identifier")},

@@ -61,10 +61,17 @@ vec3 wg_view_srgb_encode(vec3 l) {
 
 void main() {
   vec3 c = wg_view_sanitise(texelFetch(u_frame, ivec2(gl_FragCoord.xy), 0).rgb) * u_exposure_scale;
-  vec3 display = u_tone_mapper == 1 ? wg_view_aces(c)
-               : u_tone_mapper == 2 ? wg_view_agx(c)
-               : u_tone_mapper == 3 ? wg_view_neutral(c)
-                                    : clamp(c, 0.0, 1.0);
+  // Branches on a uniform, not selects: a driver that flattens ?: would run all four.
+  vec3 display;
+  if (u_tone_mapper == 1) {
+    display = wg_view_aces(c);
+  } else if (u_tone_mapper == 2) {
+    display = wg_view_agx(c);
+  } else if (u_tone_mapper == 3) {
+    display = wg_view_neutral(c);
+  } else {
+    display = clamp(c, 0.0, 1.0);
+  }
   o_color = vec4(wg_view_srgb_encode(display), 1.0);
 }
 )glsl";

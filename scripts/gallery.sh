@@ -3,18 +3,34 @@
 # above and from a second camera that shows what it is for, and the top-down graph's
 # weather presets and debug view from the top-down camera. `make demo` writes it to
 # out/gallery/; the README shows the copy in docs/images/.
-#   scripts/gallery.sh [build-dir] [out-dir]      (defaults: build, docs/images)
+#   scripts/gallery.sh [build-dir] [out-dir] [--tonemap NAME] [--exposure EV]
+# (defaults: build, docs/images, each graph's own "view"); the view flags go to every render.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-wg=${1:-build}/bin/watergraph
-out=${2:-docs/images}
+build=build
+out=docs/images
+view=()
+positional=0
+while (($#)); do
+  case $1 in
+    --tonemap | --exposure)
+      (($# >= 2)) || { echo "gallery.sh: $1 needs a value" >&2; exit 2; }
+      view+=("$1" "$2")
+      shift 2 ;;
+    *)
+      if ((positional == 0)); then build=$1; else out=$1; fi
+      positional=$((positional + 1))
+      shift ;;
+  esac
+done
+wg=$build/bin/watergraph
 mkdir -p "$out"
 export MESA_SHADER_CACHE_DISABLE=true
 render() {  # graph camera [preset]
   local graph=$1 camera=$2 preset=${3:-}
   local name=$graph-$camera${preset:+-$preset}
   "$wg" render "graphs/$graph.json" -o "$out/$name.png" --size 640x360 --camera "$camera" --time 3.5 \
-    ${preset:+--preset "$preset"}
+    ${preset:+--preset "$preset"} ${view[@]+"${view[@]}"}
   echo "wrote $out/$name.png"
 }
 for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river lagoon; do

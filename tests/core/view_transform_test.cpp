@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "core/color_space.h"
+#include "core/graph_io.h"
 #include "core/view_transform.h"
 
 namespace wg {
@@ -122,6 +123,50 @@ TEST(ViewTransform, NamesRoundTrip) {
   for (std::string_view n : toneMapperNames()) EXPECT_EQ(toneMapperName(*parseToneMapper(n)), n);
   EXPECT_FALSE(parseToneMapper("filmic"));
   EXPECT_EQ(toneMapperList(), "none, aces, agx or neutral");
+}
+
+// A graph's "view": read with its members' positions, written back by fmt in canonical
+// form, absent when the graph states none (the default then is none, 0 EV).
+TEST(GraphView, LoadsSavesAndRoundTrips) {
+  const std::string text = R"({"version": 1, "name": "v", "view": {"exposure": -1.5, "tonemap": "neutral"},
+    "nodes": [], "outputs": {"fragment": {"color": [1, 0, 0]}}})";
+  Diagnostics diags;
+  auto g = parseGraph(text, "v.json", diags);
+  ASSERT_TRUE(g);
+  ASSERT_TRUE(g->view);
+  EXPECT_EQ(g->view->toneMapper, ToneMapper::Neutral);
+  EXPECT_EQ(g->view->exposureEv, -1.5);
+  const std::string saved = saveGraph(*g);
+  EXPECT_NE(saved.find("\"view\": {\n    \"tonemap\": \"neutral\",\n    \"exposure\": -1.5\n  }"), std::string::npos) << saved;
+  auto again = parseGraph(saved, "v.json", diags);
+  ASSERT_TRUE(again && again->view);
+  EXPECT_EQ(*again->view, *g->view);
+  EXPECT_EQ(saveGraph(*again), saved);
+  auto none = parseGraph(R"({"version": 1, "name": "v", "nodes": [], "outputs": {}})", "v.json", diags);
+  ASSERT_TRUE(none);
+  EXPECT_FALSE(none->view);
+  EXPECT_EQ(saveGraph(*none).find("view"), std::string::npos);
+}
+
+TEST(GraphView, ErrorsPointAtTheValue) {
+  struct Bad {
+    const char* view;
+    const char* message;
+    int column;
+  };
+  for (const Bad& b : {Bad{R"({"tonemap": "reinhard"})", "unknown tone mapper 'reinhard'", 49},
+                       Bad{R"({"exposure": 20.5})", "exposure 20.5 EV in 'view' is outside [-20, 20]", 50},
+                       Bad{R"({"exposure": "bright"})", "must be a number", 50},
+                       Bad{R"({"gamma": 2.2})", "unknown field 'gamma'", 38}}) {
+    Diagnostics diags;
+    const std::string text = std::string(R"({"version": 1, "name": "v", "view": )") + b.view +
+                             R"(, "nodes": [], "outputs": {"fragment": {"color": [1, 0, 0]}}})";
+    EXPECT_FALSE(parseGraph(text, "v.json", diags)) << b.view;
+    ASSERT_FALSE(diags.all().empty()) << b.view;
+    const std::string line = formatText(diags.all().front());
+    EXPECT_NE(line.find(b.message), std::string::npos) << line;
+    EXPECT_NE(line.find("v.json:1:" + std::to_string(b.column) + ":"), std::string::npos) << line;
+  }
 }
 
 }  // namespace
