@@ -64,8 +64,11 @@ std::string constants() {
 
 // Names and order follow sky_model.cpp; the comments there say why each guard is there.
 constexpr const char* kFunctions = R"glsl(
-// The angle between unit vectors from their chord (exact near 0, unlike acos(dot)).
-float wg_angle_between(vec3 a, vec3 b) { return 2.0 * asin(min(1.0, length(a - b) * 0.5)); }
+// The angle between unit vectors as atan(|a x b|, a.b): exact near 0, unlike acos(dot),
+// and through atan, which drivers approximate more closely than asin and acos.
+float wg_angle_between(vec3 a, vec3 b) { return atan(length(cross(a, b)), dot(a, b)); }
+// The zenith angle of a unit vector, the same way.
+float wg_zenith_angle(vec3 s) { return atan(length(s.xz), s.y); }
 
 // Perez F(theta, gamma) for (Y, x, y): every factor is positive (sky_model.cpp, perez()).
 vec3 wg_perez(float cosTheta, float gamma) {
@@ -84,7 +87,7 @@ struct WgSky {
 WgSky wg_sky_state(vec3 s) {
   WgSky k;
   k.sun = s;
-  float sunZenith = acos(clamp(s.y, -1.0, 1.0));
+  float sunZenith = wg_zenith_angle(s);
   float thetaS = min(sunZenith, 0.5 * WG_PI);
   float yz = max(WG_ZENITH_LUMINANCE.x * tan(WG_ZENITH_LUMINANCE.z * (WG_PI - 2.0 * thetaS)) + WG_ZENITH_LUMINANCE.y, 0.0);
   vec4 powers = vec4(thetaS * thetaS * thetaS, thetaS * thetaS, thetaS, 1.0);
@@ -116,7 +119,7 @@ float wg_air_mass(float sunZenith) {
 }
 
 vec3 wg_sun_radiance(vec3 s) {
-  return WG_SUN_TOP_RADIANCE * exp(-wg_air_mass(acos(clamp(s.y, -1.0, 1.0))) * WG_SUN_OPTICAL_DEPTH);
+  return WG_SUN_TOP_RADIANCE * exp(-wg_air_mass(wg_zenith_angle(s)) * WG_SUN_OPTICAL_DEPTH);
 }
 
 // The disc as drawn: the hue kept, the largest channel at most WG_SUN_DISC_CAP.
@@ -127,7 +130,7 @@ vec3 wg_sun_disc_radiance(vec3 s) {
 
 // Uncapped radiance times the solid angle times the disc's fraction above the horizon.
 vec3 wg_sun_irradiance(vec3 s) {
-  float h = clamp((0.5 * WG_PI - acos(clamp(s.y, -1.0, 1.0))) / WG_SUN_RADIUS, -1.0, 1.0);
+  float h = clamp((0.5 * WG_PI - wg_zenith_angle(s)) / WG_SUN_RADIUS, -1.0, 1.0);
   float visible = 1.0 - (acos(h) - h * sqrt(max(1.0 - h * h, 0.0))) / WG_PI;
   return wg_sun_radiance(s) * (WG_SUN_SOLID_ANGLE * visible);
 }

@@ -12,9 +12,9 @@
 // mass of Kasten and Young (1989), at one wavelength per colour channel.
 //
 // Units: every radiance here is linear Rec.709/sRGB RGB in scene units of
-// kRadianceUnitCdPerM2 cd/m^2 (1 unit = 8 kcd/m^2, so the channel-weighted luminance of an
-// RGB radiance times 8000 is cd/m^2); irradiances are those units times steradians (1 =
-// 8 klux). A Lambertian surface of albedo a under irradiance E has radiance a E / pi.
+// kRadianceUnitCdPerM2 cd/m^2 (1 unit = 12 kcd/m^2, so the Rec.709 luminance of an RGB
+// radiance times 12000 is cd/m^2); irradiances are those units times steradians (1 =
+// 12 klux). A Lambertian surface of albedo a under irradiance E has radiance a E / pi.
 #include <glm/glm.hpp>
 
 namespace wg::rt::sky {
@@ -25,10 +25,12 @@ inline constexpr double kPi = 3.14159265358979323846;
 // clearest air they fit).
 inline constexpr double kTurbidity = 2.5;
 
-// One scene radiance unit in cd/m^2. Chosen so exposure 0 shows daylight near 1: the
-// Preetham zenith at T = 2.5 and 60 deg elevation is ~8.2 kcd/m^2 (~1 unit), the sky reads
-// ~0.3 to 1.5 away from the sun, and a white Lambertian surface in full sun ~1 to 3.
-inline constexpr double kRadianceUnitCdPerM2 = 8000.0;
+// One scene radiance unit in cd/m^2. Chosen so exposure 0 shows daylight near 1: away
+// from the sun the sky reads 0.34 to 0.78 for suns 30 to 60 deg high (the Preetham zenith
+// at T = 2.5: 4.3 kcd/m^2 = 0.36 at 30 deg, 8.2 kcd/m^2 = 0.68 at 60 deg), and a white
+// Lambertian surface in full sun 1.65 at 30 deg, 2.9 at 60 deg, 3.5 at 90 deg (with 8
+// kcd/m^2 it would be 4.4 at 60 deg).
+inline constexpr double kRadianceUnitCdPerM2 = 12000.0;
 
 // The sun's mean angular radius (0.2666 deg) and its solid angle 2 pi (1 - cos r), about
 // 6.8e-5 sr. The disc's edge is smoothed over +-kSunEdgeHalfWidth so it is not aliased.
@@ -41,7 +43,7 @@ double sunSolidAngle();
 // the disc it is a luminance of ~1.9e9 cd/m^2; its colour there is taken as the white of
 // Rec.709 (a simplification: the sun outside the atmosphere is near 5800 K).
 inline constexpr double kSolarIlluminanceLux = 128000.0;
-double solarRadianceTopOfAtmosphere();  // scene units, ~2.35e5
+double solarRadianceTopOfAtmosphere();  // scene units, ~1.57e5
 
 // RGBA16F render targets hold at most 65504. The disc as drawn is scaled (hue kept) so
 // that its largest channel is at most kSunDiscCap; lighting uses the uncapped sun.
@@ -54,7 +56,7 @@ inline constexpr double kGroundAlbedo = 0.2;
 // Below the horizon the daylight model does not apply: its sky is evaluated for a sun on
 // the horizon and dimmed by exp(elevation / kTwilightScaleDegrees), about 1/55 at -6 deg
 // (civil twilight's end) and 3e-4 at -12 deg; kNightRadiance (scene units, a dark blue
-// of luminance ~1e-4 units = 0.8 cd/m^2, moonlit dusk) is added everywhere so no
+// of luminance ~1e-4 units = 1.2 cd/m^2, deep dusk) is added everywhere so no
 // direction is ever black or negative.
 inline constexpr double kTwilightScaleDegrees = 1.5;
 inline constexpr double kNightRadiance[3] = {0.00006, 0.0001, 0.00016};
