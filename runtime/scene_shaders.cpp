@@ -39,35 +39,49 @@ std::string uniforms(SceneShaderApi api, const char* block, std::initializer_lis
   return s;
 }
 
-// The sky as a function of a unit direction: the daylight model of runtime/sky_model.h
-// (runtime/sky_glsl.cpp holds its GLSL) for the sun the scene options set, in linear
-// scene radiance (scene.h states the unit).
+// The unit direction towards the sun the scene options set.
 constexpr const char* kSceneSun = R"glsl(
 vec3 wg_scene_sun() { return u_sun_direction * inversesqrt(max(dot(u_sun_direction, u_sun_direction), 1e-30)); }
 )glsl";
-constexpr const char* kSkyFunction = R"glsl(
-vec3 wg_scene_sky(vec3 d) { return wg_sky_radiance(d, wg_scene_sun()); }
-)glsl";
 
+// The sky: the daylight model of runtime/sky_model.h (runtime/sky_glsl.cpp holds its
+// GLSL) in linear scene radiance (scene.h states the unit). What depends only on the sun
+// is computed by the full-screen triangle's vertices and reaches every pixel flat.
 constexpr const char* kSkyVertex = R"glsl(
 WG_LOCATION(0) out vec2 v_ndc;
+WG_LOCATION(1) flat out vec3 v_sun;
+WG_LOCATION(2) flat out vec3 v_sky_scale;
+WG_LOCATION(3) flat out float v_sky_fade;
+WG_LOCATION(4) flat out vec3 v_ground;
+WG_LOCATION(5) flat out vec3 v_sun_disc;
 void main() {
   // One triangle covering the viewport, at the far plane (depth 1).
   vec2 p = vec2(WG_VERTEX_ID == 1 ? 3.0 : -1.0, WG_VERTEX_ID == 2 ? 3.0 : -1.0);
   v_ndc = p;
   gl_Position = vec4(p, 1.0, 1.0);
+  WgSky k = wg_sky_state(wg_scene_sun());
+  v_sun = k.sun;
+  v_sky_scale = k.scale;
+  v_sky_fade = k.fade;
+  v_ground = wg_ground(k);
+  v_sun_disc = wg_sun_disc_radiance(k.sun);
 }
 )glsl";
 
 constexpr const char* kSkyFragment = R"glsl(
 WG_LOCATION(0) in vec2 v_ndc;
+WG_LOCATION(1) flat in vec3 v_sun;
+WG_LOCATION(2) flat in vec3 v_sky_scale;
+WG_LOCATION(3) flat in float v_sky_fade;
+WG_LOCATION(4) flat in vec3 v_ground;
+WG_LOCATION(5) flat in vec3 v_sun_disc;
 layout(location = 0) out vec4 o_color;
 void main() {
   vec4 n = u_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
   vec4 f = u_inverse_view_projection * vec4(v_ndc, 1.0, 1.0);
   vec3 d = f.xyz / f.w - n.xyz / n.w;
   d *= inversesqrt(max(dot(d, d), 1e-30));
-  o_color = vec4(wg_scene_sky(d), 1.0);
+  o_color = vec4(wg_sky_radiance(WgSky(v_sun, v_sky_scale, v_sky_fade), v_ground, v_sun_disc, d), 1.0);
 }
 )glsl";
 
@@ -175,8 +189,8 @@ SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLoca
            "in " + declaration + ";\n";
   };
   SceneShaderSources s;
-  s.skyVertex = h + kSkyVertex;
-  const std::string skyModel = skyGlsl() + kSceneSun + kSkyFunction;
+  const std::string skyModel = skyGlsl() + kSceneSun;
+  s.skyVertex = h + sky + skyModel + kSkyVertex;
   s.skyFragment = h + sky + skyModel + kSkyFragment;
   s.opaqueVertex = h + opaque + skyModel + kOpaqueVertex;
   s.opaqueFragment = h + opaque + kSceneSun + kOpaqueFragment;

@@ -140,11 +140,12 @@ vec3 wg_ground(WgSky k) {
   return WG_GROUND_ALBEDO / WG_PI * horizontal;
 }
 
-vec3 wg_sky_radiance(vec3 d, vec3 s) {
-  WgSky k = wg_sky_state(s);
-  if (d.y < 0.0) return wg_ground(k);
-  float coverage = 1.0 - smoothstep(WG_SUN_RADIUS - WG_SUN_EDGE, WG_SUN_RADIUS + WG_SUN_EDGE, wg_angle_between(d, s));
-  return wg_upper_sky(k, d) + wg_sun_disc_radiance(s) * coverage;
+// The sky in direction d, given what depends only on the sun (k, wg_ground(k) and
+// wg_sun_disc_radiance(k.sun)): the sky pass computes those once per draw.
+vec3 wg_sky_radiance(WgSky k, vec3 ground, vec3 disc, vec3 d) {
+  if (d.y < 0.0) return ground;
+  float coverage = 1.0 - smoothstep(WG_SUN_RADIUS - WG_SUN_EDGE, WG_SUN_RADIUS + WG_SUN_EDGE, wg_angle_between(d, k.sun));
+  return wg_upper_sky(k, d) + disc * coverage;
 }
 
 // Sky and ground irradiance on a plane of normal n: the radiance against the order-2

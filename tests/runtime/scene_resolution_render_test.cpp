@@ -79,7 +79,7 @@ TEST_P(SceneResolution, ReducedScenePassesDifferButStayCloseAndFinite) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Graphs, SceneResolution,
-                         // Bounds ~3 dB under the measured half-resolution PSNR (deferred
+                         // Bounds ~2 dB under the measured half-resolution PSNR (deferred
                          // 20.0 dB: the nearest-read G-buffer and depth turn edges into 2x2
                          // blocks; classic_webgl 30.1, stylized 30.2, with the daylight sky).
                          ::testing::Values(ResolutionCase{"deferred_underwater", Target::Glsl330, 18.0},
