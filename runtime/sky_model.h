@@ -1,8 +1,10 @@
 #pragma once
 // The built-in scene's daylight, in double precision: the reference of the sky and sun
 // that runtime/sky_glsl.cpp writes as GLSL for every pass that draws or is lit by the sky.
-// The two follow the same steps in the same order; tests/runtime/sky_model_test.cpp holds
-// the physics against hand-computed figures and the GPU's sky against this file.
+// The two follow the same steps in the same order (angles come from asin and acos here,
+// from atan in the GLSL, which drivers compute more closely). tests/runtime/
+// sky_model_test.cpp holds the physics against hand-computed figures and the GPU's sky
+// against this file.
 //
 // Sky: the analytic clear-sky model of Preetham, Shirley and Smits (1999, "A Practical
 // Analytic Model for Daylight"): the Perez distribution of luminance Y and chromaticity
