@@ -1,10 +1,18 @@
 #pragma once
-// The built-in, deterministic scene every graph is previewed in: a procedural sky with a
-// sun, a tiled pool floor (3.5 m deep) rising into a sloping sandy shore towards -x (so
+// The built-in, deterministic scene every graph is previewed in: a physical daylight sky
+// and sun (runtime/sky_model.h: Preetham et al.'s clear sky at turbidity 2.5, a sun disc
+// reddened by its air mass), a tiled pool floor (3.5 m deep) rising into a sloping sandy shore towards -x (so
 // depth grows with x, as graphs/shelf.json assumes), pool walls on the other sides, and pillars and rocks crossing the water plane (y = 0), so depth tint,
 // edge foam, caustics, reflection and refraction all have something to show. The water
 // itself is a 40 x 40 m grid at y = 0 centred on the origin, uv (0,0) at (-20, -20) and
 // (1,1) at (20, 20). Everything here is CPU data and GLSL text; nothing calls GL.
+//
+// Colour: the sky, the sun and the lit scene are linear Rec.709 radiance in one scene
+// unit, 1 = 12000 cd/m^2 (sky_model.h, kRadianceUnitCdPerM2): at exposure 0 a daylight sky
+// reads ~0.3 to 1.5, a white surface in full sun ~1 to 3, and the sun disc up to
+// 30000 (its physical ~9.7e4 at 30 deg is capped, hue kept, below half-float's 65504;
+// the opaque scene is lit by the uncapped sun, irradiance = radiance x 6.8e-5 sr). The
+// opaque scene is Lambertian: albedo x (sun irradiance x cos + the sky's irradiance) / pi.
 #include <optional>
 #include <string>
 #include <string_view>
@@ -32,7 +40,7 @@ std::optional<Camera> cameraPreset(std::string_view name);
 struct SceneOptions {
   double time = 3.5;              // seconds (u_time is its float; phases take it in double)
   float sunAzimuthDegrees = 110;  // from +x towards +z
-  float sunElevationDegrees = 30; // above the horizon
+  float sunElevationDegrees = 30; // above the horizon; any value in [-90, 90] (below 0: twilight, then night)
   // false: none of the built-in scene (sky, floor, shore, pillars, rocks) is drawn in any
   // pass; the frame and every scene target keep their clear colour, opaque black. Only the
   // water is drawn: for comparing the water alone with another renderer (clients/three).

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "runtime/scene.h"
+#include "runtime/sky_glsl.h"
 
 namespace wg::rt {
 namespace {
@@ -38,42 +39,49 @@ std::string uniforms(SceneShaderApi api, const char* block, std::initializer_lis
   return s;
 }
 
-// The sky as a function of a unit direction: a gradient from the horizon to the zenith, a
-// darker ground below the horizon, a sun glow and a sun disk. Finite for every input.
-constexpr const char* kSkyFunction = R"glsl(
-vec3 wg_scene_sky(vec3 d) {
-  vec3 zenith = vec3(0.16, 0.34, 0.70);
-  vec3 horizon = vec3(0.70, 0.80, 0.90);
-  vec3 ground = vec3(0.30, 0.28, 0.25);
-  vec3 c = d.y >= 0.0 ? mix(horizon, zenith, sqrt(clamp(d.y, 0.0, 1.0)))
-                      : mix(horizon, ground, clamp(-d.y * 4.0, 0.0, 1.0));
-  float s = clamp(dot(d, u_sun_direction), 0.0, 1.0);
-  float s2 = s * s, s4 = s2 * s2, s8 = s4 * s4, s16 = s8 * s8, s32 = s16 * s16;
-  c += vec3(1.0, 0.80, 0.55) * (0.35 * s32 * s32 + 0.15 * s8);
-  c += vec3(1.0, 0.95, 0.85) * 2.0 * smoothstep(0.99955, 0.99975, s);
-  return c;
-}
+// The unit direction towards the sun the scene options set.
+constexpr const char* kSceneSun = R"glsl(
+vec3 wg_scene_sun() { return u_sun_direction * inversesqrt(max(dot(u_sun_direction, u_sun_direction), 1e-30)); }
 )glsl";
 
+// The sky: the daylight model of runtime/sky_model.h (runtime/sky_glsl.cpp holds its
+// GLSL) in linear scene radiance (scene.h states the unit). What depends only on the sun
+// is computed by the full-screen triangle's vertices and reaches every pixel flat.
 constexpr const char* kSkyVertex = R"glsl(
 WG_LOCATION(0) out vec2 v_ndc;
+WG_LOCATION(1) flat out vec3 v_sun;
+WG_LOCATION(2) flat out vec3 v_sky_scale;
+WG_LOCATION(3) flat out float v_sky_fade;
+WG_LOCATION(4) flat out vec3 v_ground;
+WG_LOCATION(5) flat out vec3 v_sun_disc;
 void main() {
   // One triangle covering the viewport, at the far plane (depth 1).
   vec2 p = vec2(WG_VERTEX_ID == 1 ? 3.0 : -1.0, WG_VERTEX_ID == 2 ? 3.0 : -1.0);
   v_ndc = p;
   gl_Position = vec4(p, 1.0, 1.0);
+  WgSky k = wg_sky_state(wg_scene_sun());
+  v_sun = k.sun;
+  v_sky_scale = k.scale;
+  v_sky_fade = k.fade;
+  v_ground = wg_ground(k);
+  v_sun_disc = wg_sun_disc_radiance(k.sun);
 }
 )glsl";
 
 constexpr const char* kSkyFragment = R"glsl(
 WG_LOCATION(0) in vec2 v_ndc;
+WG_LOCATION(1) flat in vec3 v_sun;
+WG_LOCATION(2) flat in vec3 v_sky_scale;
+WG_LOCATION(3) flat in float v_sky_fade;
+WG_LOCATION(4) flat in vec3 v_ground;
+WG_LOCATION(5) flat in vec3 v_sun_disc;
 layout(location = 0) out vec4 o_color;
 void main() {
   vec4 n = u_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
   vec4 f = u_inverse_view_projection * vec4(v_ndc, 1.0, 1.0);
   vec3 d = f.xyz / f.w - n.xyz / n.w;
   d *= inversesqrt(max(dot(d, d), 1e-30));
-  o_color = vec4(wg_scene_sky(d), 1.0);
+  o_color = vec4(wg_sky_radiance(WgSky(v_sun, v_sky_scale, v_sky_fade), v_ground, v_sun_disc, d), 1.0);
 }
 )glsl";
 
@@ -84,10 +92,17 @@ layout(location = 3) in float a_material;
 WG_LOCATION(0) out vec3 v_world;
 WG_LOCATION(1) out vec3 v_normal;
 WG_LOCATION(2) flat out float v_material;
+WG_LOCATION(3) out vec3 v_sky_irradiance;
+WG_LOCATION(4) flat out vec3 v_sun_irradiance;
 void main() {
   v_world = a_position;
   v_normal = a_normal;
   v_material = a_material;
+  // The light, per vertex (it varies slowly with the normal; the sun's not at all): the
+  // sky and ground on this normal's plane, and the uncapped sun on a plane facing it.
+  vec3 sun = wg_scene_sun();
+  v_sky_irradiance = wg_sky_irradiance(a_normal * inversesqrt(max(dot(a_normal, a_normal), 1e-30)), sun);
+  v_sun_irradiance = wg_sun_irradiance(sun);
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 #ifdef WG_CLIP_DISTANCE
   gl_ClipDistance[0] = dot(u_clip_plane, vec4(a_position, 1.0));
@@ -99,6 +114,8 @@ constexpr const char* kOpaqueFragment = R"glsl(
 WG_LOCATION(0) in vec3 v_world;
 WG_LOCATION(1) in vec3 v_normal;
 WG_LOCATION(2) flat in float v_material;
+WG_LOCATION(3) in vec3 v_sky_irradiance;
+WG_LOCATION(4) flat in vec3 v_sun_irradiance;
 layout(location = 0) out vec4 o_color;
 
 vec3 terrainAlbedo(vec3 p) {
@@ -128,10 +145,10 @@ void main() {
   vec3 n = v_normal * inversesqrt(max(dot(v_normal, v_normal), 1e-30));
   vec3 albedo = v_material < 0.5 ? terrainAlbedo(v_world)
               : v_material < 1.5 ? pillarAlbedo(v_world, n) : vec3(0.40, 0.37, 0.33);
-  float sunUp = smoothstep(-0.05, 0.15, u_sun_direction.y);
-  float diffuse = clamp(dot(n, u_sun_direction), 0.0, 1.0) * sunUp;
-  vec3 ambient = mix(vec3(0.20, 0.18, 0.16), vec3(0.34, 0.42, 0.55), n.y * 0.5 + 0.5);
-  o_color = vec4(albedo * (vec3(1.0, 0.95, 0.86) * diffuse + ambient), 1.0);
+  // Lambertian: radiance = albedo E / pi, E the sun's irradiance on this plane (no
+  // shadows) plus the sky's.
+  vec3 e = v_sun_irradiance * max(dot(n, wg_scene_sun()), 0.0) + v_sky_irradiance;
+  o_color = vec4(albedo * e * 0.3183098861837907, 1.0);  // 1 / pi
 }
 )glsl";
 
@@ -176,10 +193,11 @@ SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLoca
            "in " + declaration + ";\n";
   };
   SceneShaderSources s;
-  s.skyVertex = h + kSkyVertex;
-  s.skyFragment = h + sky + kSkyFunction + kSkyFragment;
-  s.opaqueVertex = h + opaque + kOpaqueVertex;
-  s.opaqueFragment = h + opaque + kSkyFunction + kOpaqueFragment;
+  const std::string skyModel = skyGlsl() + kSceneSun;
+  s.skyVertex = h + sky + skyModel + kSkyVertex;
+  s.skyFragment = h + sky + skyModel + kSkyFragment;
+  s.opaqueVertex = h + opaque + skyModel + kOpaqueVertex;
+  s.opaqueFragment = h + opaque + kSceneSun + kOpaqueFragment;
   s.fullscreenVertex = h + kFullscreenVertex;
   s.waterGbufferFragment = h + in(gbuffer.worldPosition, "vec3 v_world_position") + in(gbuffer.normal, "vec3 v_normal") +
                            in(gbuffer.uv, "vec2 v_uv") + kWaterGbufferFragment;
