@@ -9,7 +9,10 @@
 
 #include "core/graph_io.h"
 #include "nodes/registry.h"
+#include "runtime/egl_context.h"
 #include "runtime/image.h"
+#include "runtime/renderer.h"
+#include "runtime/sky_model.h"
 #include "runtime/preview.h"
 #include "runtime/vk_preview.h"
 #include "runtime_test_support.h"
@@ -96,6 +99,59 @@ TEST_P(ColorPipeline, TheGraphsViewAndTheSettingsChooseTheToneMapper) {
   s.view.toneMapper = ToneMapper::None;
   EXPECT_EQ(waterPixel(renderOn(r, GetParam(), s).image)[1], 255);
 }
+
+// HDR survives the scene passes: the sun's disc (tens of thousands of units, far above the
+// 1 an RGBA8 target clamps to) seen through the water from below via the scene colour
+// copy, and from above via the planar reflection, comes back in the linear frame as the
+// sky model's disc radiance within half-float rounding; with ACES at the exposure that
+// makes it 4, the displayed pixel is below white.
+struct HdrCase {
+  const char* pass;
+  const char* sampler;
+  float cameraY, elevationSign;  // under the water looking up at the sun, or above it looking at its mirror image
+};
+
+class HdrThroughScenePasses : public ::testing::TestWithParam<GlApi> {};
+
+TEST_P(HdrThroughScenePasses, TheSunsDiscSurvivesTheCopyAndTheReflection) {
+  auto ctx = EglContext::create(GetParam());
+  for (const HdrCase& c : {HdrCase{"scene_color_copy", "u_scene_color", -1.0f, 1.0f},
+                           HdrCase{"planar_reflection", "u_reflection", 1.0f, -1.0f}}) {
+    SCOPED_TRACE(c.pass);
+    RenderSettings s = test::smallSettings();
+    s.width = s.height = 64;
+    const glm::vec3 sun = sunDirection(s.scene);
+    const glm::vec3 look(sun.x, c.elevationSign * sun.y, sun.z);
+    Camera cam;
+    cam.position = glm::vec3(0, c.cameraY, 0);
+    cam.target = cam.position + look;
+    cam.fovYDegrees = 2.0f;  // the disc (0.27 deg in radius) covers the middle 17 pixels across
+    s.customCamera = cam;
+    Renderer r(Manifest::fromJson(test::handManifest({c.pass}, {c.sampler})), test::handWaterShaders(ctx->isEs(), {c.sampler}),
+               s, ctx->isEs());
+    r.renderFrame();
+    Image linear = r.readRgba32f();
+    const float* px = &linear.rgba32f[(32u * 64u + 32u) * 4];
+    const glm::dvec3 disc = sky::sunDiscRadiance(glm::dvec3(sun));
+    ASSERT_GT(disc.r, 4.0) << "the case must hold more than an 8-bit target can";
+    for (int ch = 0; ch < 3; ++ch)  // half-float rounding (2^-11) and float32 sky arithmetic
+      EXPECT_NEAR(px[ch], disc[ch], 2e-3 * disc[ch]) << "channel " << ch;
+
+    // The same pixel shown through ACES at the exposure that makes its red 4: below white.
+    const double maxChannel = std::max({disc.r, disc.g, disc.b});
+    s.view = {ToneMapper::Aces, std::log2(4.0 / maxChannel)};
+    Renderer shown(Manifest::fromJson(test::handManifest({c.pass}, {c.sampler})),
+                   test::handWaterShaders(ctx->isEs(), {c.sampler}), s, ctx->isEs());
+    shown.renderFrame();
+    Image display = shown.readRgba8();
+    const uint8_t* d = &display.rgba8[(32u * 64u + 32u) * 4];
+    EXPECT_LT(std::max({d[0], d[1], d[2]}), 250);
+    EXPECT_GT(std::max({d[0], d[1], d[2]}), 200);
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Apis, HdrThroughScenePasses, ::testing::Values(GlApi::DesktopGl45, GlApi::Es32),
+                         [](const auto& info) { return info.param == GlApi::Es32 ? std::string("es32") : std::string("gl45"); });
 
 INSTANTIATE_TEST_SUITE_P(Targets, ColorPipeline, ::testing::Values(Target::Glsl330, Target::Es300, Target::Vk450),
                          [](const auto& info) { return std::string(targetName(info.param)); });
