@@ -5,11 +5,12 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/srgb.h"
+
 namespace wg {
+
 namespace {
 
-// The sRGB transfer function (IEC 61966-2-1), as GL states it for sRGB textures.
-double srgbToLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 double linearToSrgb(double l) { return l <= 0.0031308 ? l * 12.92 : 1.055 * std::pow(l, 1.0 / 2.4) - 0.055; }
 
 const std::array<double, 256>& srgbTable() {
