@@ -97,7 +97,7 @@ NodeSpec blinnPhongNode() {
               ports::fixed("strength", Type::Float, Value::scalar(1), "specular strength"),
               ports::color(ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light")),
               ports::color(ports::fixed("surface_color", Type::Vec3, Value::vector({0, 0, 0}),
-                           "diffuse colour (black: the specular highlight alone)"))};
+                                        "diffuse colour (black: the specular highlight alone)"))};
   s.outputs = {ports::fixed("specular", Type::Float, "strength * max(N.H, 0)^shininess"),
                ports::fixed("diffuse", Type::Float, "max(N.L, 0)"),
                ports::fixed("color", Type::Vec3, "light_color * (surface_color * diffuse + specular)")};
@@ -161,7 +161,7 @@ NodeSpec phongSpecularNode() {
               ports::color(ports::fixed("sun_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the sun light")),
               ports::fixed("environment", Type::Vec3, kUp, "direction towards the environment light (the sky)"),
               ports::color(ports::fixed("environment_color", Type::Vec3, Value::vector({0.3, 0.35, 0.4}),
-                           "colour of the environment light"))};
+                                        "colour of the environment light"))};
   s.outputs = {ports::fixed("sun_specular", Type::Float, "the sun's specular intensity in [0, 1]"),
                ports::fixed("environment_specular", Type::Float, "the environment's specular intensity in [0, 1]"),
                ports::fixed("color", Type::Vec3, "sun * sun_color + environment * environment_color")};

@@ -228,7 +228,7 @@ NodeSpec ssrNode() {
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "unit surface normal"),
       ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection, "unit vector from the surface to the viewer"),
       ports::color(ports::fixed("fallback", Type::Vec3, Value::vector({0, 0, 0}),
-                   "colour where the march finds nothing (e.g. cubemap_reflection.color or planar_reflection.color)")),
+                                "colour where the march finds nothing (e.g. cubemap_reflection.color or planar_reflection.color)")),
       ports::fixed("step", Type::Float, Value::scalar(1.0), "march step in metres at steep reflections (source: 7 units)"),
       ports::fixed("tolerance", Type::Float, Value::scalar(0.5),
                    "hit tolerance in metres of view depth at the first step (source: sqrt(16) = 4 units)"),

@@ -64,12 +64,12 @@ NodeSpec underwaterNode() {
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal,
                          "surface normal (default: the G-buffer's), for the refraction distortion"),
       ports::color(ports::fixed("surface", Type::Vec3, Value::vector({0, 0, 0}),
-                   "light the surface sends to a viewer above: reflection * Fresnel + specular + foam (the graph's "
-                   "usual surface shading)")),
+                                "light the surface sends to a viewer above: reflection * Fresnel + specular + foam (the graph's "
+                                "usual surface shading)")),
       ports::fixed("transmittance", Type::Float, Value::scalar(1.0),
                    "fraction of the water body's light passing the surface upwards (e.g. fresnel.transmittance)"),
       ports::color(ports::fixed("surface_below", Type::Vec3, Value::vector({0, 0, 0}),
-                   "light the surface sends to a viewer below (specular, reflection under total internal reflection)")),
+                                "light the surface sends to a viewer below (specular, reflection under total internal reflection)")),
       ports::fixed("transmittance_below", Type::Float, Value::scalar(1.0),
                    "fraction of the light above passing down into the water (Snell's window: fresnel with direction "
                    "water_to_air, transmittance)"),
