@@ -9,6 +9,7 @@
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest_build.h"
 #include "codegen/passes.h"
+#include "core/color_parameters.h"
 #include "core/preset.h"
 #include "core/resolve.h"
 
@@ -178,7 +179,8 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   result.nodesTotal = program->totalNodes;
   // Nodes, not ops: a node may expand into several ops (its per-draw split, its stages).
   std::unordered_set<std::string_view> keptNodes;
-  for (const auto& op : program->ops) keptNodes.insert(op.nodeId);
+  for (const auto& op : program->ops)
+    if (!isParameterLinearisation(op.nodeId)) keptNodes.insert(op.nodeId);
   result.nodesKept = static_cast<int>(keptNodes.size());
   std::string base = graphBaseName(graph.file.empty() ? graph.name : graph.file);
   std::string sourceName = std::filesystem::path(graph.file).filename().string();

@@ -72,7 +72,8 @@ const std::vector<std::string_view>& otherTypes() {
   static const std::vector<std::string_view> t = {"camera_forward", "camera_position", "combine",  "compare",
                                                   "cross",          "distance",        "dot",      "length",
                                                   "near_far_ratio", "normalize",       "remap",    "select",
-                                                  "split",          "sun_direction",   "swizzle",  "time"};
+                                                  "split",          "srgb_to_linear",  "sun_direction",
+                                                  "swizzle",        "time"};
   return t;
 }
 
@@ -196,6 +197,11 @@ std::string derivedOpC(const Op& op, const std::vector<std::string>& in, const s
     for (int i = 0; i < count(0); ++i) c += assign(out[0], i, in[static_cast<size_t>(i)] + "[0]");
     return c;
   }
+  if (type == "srgb_to_linear") {  // the sRGB curve per colour component (core/color_space.h); a vec4's w as it is
+    for (int i = 0; i < count(0); ++i)
+      c += assign(out[0], i, i == 3 ? at(in[0], ti[0], i) : "wgd_srgb_to_linear(" + at(in[0], ti[0], i) + ")");
+    return c;
+  }
   if (type == "remap") {
     bool clamped = op.options().value("clamp", false);
     for (int i = 0; i < count(0); ++i) {
@@ -229,6 +235,12 @@ static inline double wgd_safe_pow(double x, double y) {
   if (!(x > 0.0)) return y > 0.0 ? 0.0 : 1.0;
   e = y * log2(x);
   return exp2(127.0 < e ? 127.0 : e);
+}
+static inline double wgd_srgb_to_linear(double c) {
+  double a = fabs(c);
+  double v = a <= 0.04045 ? a / 12.92 : pow((a + 0.055) / 1.055, 2.4);
+  v = wgd_min(v, a <= 1.0 ? 1.0 : 1.7014118346046923e38); /* 2^127, the GLSL's cap */
+  return c < 0.0 ? -v : v;
 }
 static inline double wgd_safe_mod(double x, double y) {
   double q = x / y;

@@ -79,6 +79,7 @@ void writeUniform(JsonTextWriter& w, const ManifestUniform& u) {
     w.value(derived);
   }
   if (p) {
+    if (!p->colorSpace.empty()) w.member("color_space", p->colorSpace);
     w.key("default");
     writeNumbers(w, p->defaultValue);
     if (!p->description.empty()) w.member("description", p->description);

@@ -57,6 +57,10 @@ struct ManifestParameter {
   std::vector<double> defaultValue;  // one per component
   std::optional<double> min, max;    // every uploaded value is clamped into them
   std::string hint;
+  // "srgb" for a colour parameter ("hint": "color" or "hdr_color"): its default, range and
+  // every value a host sets are the sRGB values a colour picker shows, and the shader
+  // linearises them; "" for data, used as it is.
+  std::string colorSpace;
   std::string description;
 };
 

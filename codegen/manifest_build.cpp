@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/color_parameters.h"
 #include "nodes/registry.h"
 
 namespace wg {
@@ -21,6 +22,7 @@ ManifestUniform manifestUniform(const Program& program, const UniformInfo& u) {
     mp.min = p.min;
     mp.max = p.max;
     mp.hint = p.hint;
+    mp.colorSpace = std::string(parameterColorSpace(p.hint));
     mp.description = p.description;
   } else {
     m.builtin = u.builtin;

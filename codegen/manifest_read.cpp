@@ -187,13 +187,15 @@ ManifestUniform uniformOf(const json& u) {
   out.type = typeOf(u, what);
   out.stages = stagesOf(u, what);
   if (member(u, "parameter")) {
-    onlyMembers(u, {"name", "type", "stages", "parameter", "default", "min", "max", "hint", "description"}, what);
+    onlyMembers(u, {"name", "type", "stages", "parameter", "default", "min", "max", "hint", "color_space", "description"}, what);
     ManifestParameter& p = out.parameter.emplace();
     p.name = text(u, "parameter", what);
     p.defaultValue = defaultOf(u, "parameter " + what);
     if (member(u, "min")) p.min = number(u, "min", what);
     if (member(u, "max")) p.max = number(u, "max", what);
     p.hint = optionalText(u, "hint", what);
+    p.colorSpace = optionalText(u, "color_space", what);
+    if (!p.colorSpace.empty() && p.colorSpace != "srgb") fail(what + ": unknown color_space '" + p.colorSpace + "' (srgb or absent)");
     p.description = optionalText(u, "description", what);
     return out;
   }

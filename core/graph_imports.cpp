@@ -8,6 +8,7 @@
 #include <system_error>
 #include <unordered_map>
 
+#include "core/color_parameters.h"
 #include "core/graph_io.h"
 #include "core/load_limits.h"
 
@@ -181,6 +182,7 @@ NodePorts interfacePorts(const Graph& g) {
     if (static_cast<int>(p.defaultValue.size()) == componentCount(p.type))
       for (size_t k = 0; k < p.defaultValue.size(); ++k) def[static_cast<int>(k)] = p.defaultValue[k];
     ports.inputs.push_back(PortSpec{p.name, PortKind::Fixed, p.type, def, std::nullopt, p.description});
+    ports.inputs.back().color = isColorHint(p.hint);  // its literals and default are sRGB, as the parameter's
   }
   if (g.interface)
     for (const auto& o : g.interface->outputs)

@@ -14,6 +14,7 @@
 #include <unordered_map>
 #include <unordered_set>
 
+#include "core/color_parameters.h"
 #include "core/graph_io.h"
 #include "core/graph_imports.h"
 #include "core/graph_draft.h"
@@ -298,12 +299,18 @@ class Loader : public GraphDraftReader {
 
       if (auto* v = field(pv, "hint", json::value_t::string, "'hint' of " + what)) {
         p.hint = v->value.get<std::string>();
-        if (p.hint != "color") {
+        if (!isColorHint(p.hint)) {
           diags_.error(DiagCode::InvalidParameter, ref(v->at),
-                       "unknown hint '" + p.hint + "' on " + what + " (the only hint is \"color\")");
+                       "unknown hint '" + p.hint + "' on " + what + " (the hints are \"color\" and \"hdr_color\")");
+          p.hint.clear();
         } else if (typeOk && p.type != Type::Vec3 && p.type != Type::Vec4) {
           diags_.error(DiagCode::InvalidParameter, ref(v->at),
-                       "the \"color\" hint on " + what + " needs type vec3 or vec4, not " + std::string(typeName(p.type)));
+                       "the \"" + p.hint + "\" hint on " + what + " needs type vec3 or vec4, not " + std::string(typeName(p.type)));
+        } else if (ok) {  // an sRGB colour's default and range lie within [0, 1]
+          checkColor(p, p.defaultValue, def->at, "the default of " + what);
+          for (const char* bound : {"min", "max"})
+            if (const DraftValue* b = pv.member(bound))
+              checkColor(p, {b->value.get<double>()}, b->at, "'" + std::string(bound) + "' of " + what);
         }
       }
       if (auto* v = field(pv, "description", json::value_t::string, "'description' of " + what))
@@ -358,6 +365,10 @@ class Loader : public GraphDraftReader {
   }
 
   // WG011 when a component of `xs` lies outside the parameter's [min, max].
+  void checkColor(const Parameter& p, const std::vector<double>& xs, JsonPosition at, const std::string& label) {
+    if (auto problem = colorRangeProblem(p.hint, xs, label)) diags_.error(DiagCode::InvalidParameter, ref(at), *problem);
+  }
+
   void checkRange(const Parameter& p, const std::vector<double>& xs, JsonPosition at, const std::string& label) {
     if (!p.min && !p.max) return;
     for (std::size_t i = 0; i < xs.size(); ++i) {
@@ -465,6 +476,7 @@ class Loader : public GraphDraftReader {
         auto values = readValue(*p, value, label);
         if (!values) continue;
         checkRange(*p, *values, value.at, label);
+        checkColor(*p, *values, value.at, label);
         PresetValue v;
         v.parameter = param;
         v.value = std::move(*values);

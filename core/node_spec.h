@@ -64,6 +64,12 @@ struct PortSpec {
   // visible to the frequency analysis (and to derived uniforms) as ops. A graph file cannot
   // connect it; the docs list it apart.
   bool derived = false;
+  // A colour input (a water, light, haze or fallback colour; not a coefficient such as
+  // absorption per metre): a literal a graph file gives it, and its default, are authored
+  // as the sRGB values a colour picker shows, and resolve hands the node their linear
+  // values (core/color_parameters.h). A probe or hard case gives the node linear values
+  // directly; docs/nodes.md marks these ports.
+  bool color = false;
 
   bool required() const { return !defaultValue && !defaultBuiltin && !derived; }
 };

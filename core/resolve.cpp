@@ -13,6 +13,7 @@
 
 #include <filesystem>
 
+#include "core/color_parameters.h"
 #include "core/derive.h"
 #include "core/expand.h"
 #include "core/graph_imports.h"
@@ -569,6 +570,9 @@ class Resolver {
       case InputSource::Kind::Parameter: {
         auto it = paramValue_.find(s.name);
         if (it == paramValue_.end()) return std::nullopt;
+        // A colour parameter is read linearised, through one op made at its first read.
+        if (it->second.kind == ValueRef::Kind::Param && isColorHint(program_.parameters[static_cast<size_t>(it->second.index)].hint))
+          it->second = appendParameterLinearisation(program_, registry_, it->second.index);
         return it->second;
       }
       case InputSource::Kind::NodeOutput: {
@@ -658,7 +662,9 @@ class Resolver {
           ok = false;
           continue;
         }
-        op.inputs[static_cast<size_t>(pi)] = *ref;
+        bool colorLiteral = ports[static_cast<size_t>(pi)].color && in.source.kind == InputSource::Kind::Literal;
+        // An instance's literals are linearised after their range check (inlineInstance).
+        op.inputs[static_cast<size_t>(pi)] = colorLiteral && !instanceOf_[static_cast<size_t>(ni)] ? linearised(*ref) : *ref;
         sourceTypes[static_cast<size_t>(pi)] = program_.typeOf(*ref);
       }
       for (size_t pi = 0; pi < nin; ++pi) {
@@ -667,6 +673,7 @@ class Resolver {
         if (port.derived) continue;  // filled below by the node's derive
         if (port.defaultValue) {
           op.inputs[pi] = ValueRef::constant_(shared_.constants.intern(*port.defaultValue));
+          if (port.color && !instanceOf_[static_cast<size_t>(ni)]) op.inputs[pi] = linearised(op.inputs[pi]);
           sourceTypes[pi] = port.defaultValue->type;
         } else if (port.defaultBuiltin) {
           op.inputs[pi] = ValueRef::builtin(*port.defaultBuiltin);
@@ -810,7 +817,8 @@ class Resolver {
                      idOf(node), inputLabel(p.name));
         inRange = false;
       }
-      scope.inputs.emplace(p.name, v);
+      bool literal = !given[pi] || given[pi]->source.kind == InputSource::Kind::Literal;
+      scope.inputs.emplace(p.name, isColorHint(p.hint) && literal && v.kind == ValueRef::Kind::Const ? linearised(v) : v);
     }
     if (!inRange) return;
     size_t firstDiag = diags_.all().size();
@@ -846,6 +854,9 @@ class Resolver {
     }
     return copy ? *copy : sub;
   }
+
+  // A colour literal or default (sRGB-authored) as the linear constant the nodes receive.
+  ValueRef linearised(const ValueRef& srgb) { return ValueRef::constant_(shared_.constants.intern(linearColor(srgb.constant()))); }
 
   static bool fitsRange(const Value& v, const Parameter& p) {
     for (int k = 0; k < componentCount(v.type); ++k)
@@ -1005,7 +1016,9 @@ class Resolver {
                      out.source.kind == InputSource::Kind::NodeOutput ? out.source.name : "", label);
         continue;
       }
-      program_.outputs.push_back({out.slot, *ref, want, out.source.where});
+      // A colour written as a literal into the colour slot is sRGB-authored, as on a colour port.
+      bool colorLiteral = out.slot == OutputSlot::FragmentColor && out.source.kind == InputSource::Kind::Literal;
+      program_.outputs.push_back({out.slot, colorLiteral ? linearised(*ref) : *ref, want, out.source.where});
     }
     std::sort(program_.outputs.begin(), program_.outputs.end(),
               [](const ProgramOutput& a, const ProgramOutput& b) { return a.slot < b.slot; });

@@ -110,7 +110,7 @@ Rgb outputTransform(const ViewTransform& view, const Rgb& radiance) {
   Rgb exposed{};
   for (size_t i = 0; i < 3; ++i) exposed[i] = sanitiseRadiance(radiance[i]) * scale;
   Rgb display = toneMap(view.toneMapper, exposed);
-  for (double& c : display) c = srgbEncode(c);
+  for (double& c : display) c = linearToSrgb(c);
   return display;
 }
 

@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/color_parameters.h"
 #include "core/expand.h"
 #include "core/graph_node_type.h"
 #include "core/load_limits.h"
@@ -122,8 +123,12 @@ void drawParameterInspector(GraphEditor& editor) {
     float lo = static_cast<float>(p.min.value_or(-1e6)), hi = static_cast<float>(p.max.value_or(1e6));
     std::string label = p.name + (p.isStatic ? " (static)" : "");
     bool changed = false;
-    if (p.hint == "color" && v.size() == 3) changed = ImGui::ColorEdit3(label.c_str(), v.data(), ImGuiColorEditFlags_Float);
-    else if (p.hint == "color" && v.size() == 4) changed = ImGui::ColorEdit4(label.c_str(), v.data(), ImGuiColorEditFlags_Float);
+    // A colour parameter's value is the sRGB colour the picker shows (the shader linearises
+    // it), so the picker edits it as it is; an HDR colour may go past 1.
+    const bool color = isColorHint(p.hint);
+    const ImGuiColorEditFlags flags = ImGuiColorEditFlags_Float | (p.hint == kHdrColorHint ? ImGuiColorEditFlags_HDR : 0);
+    if (color && v.size() == 3) changed = ImGui::ColorEdit3(label.c_str(), v.data(), flags);
+    else if (color && v.size() == 4) changed = ImGui::ColorEdit4(label.c_str(), v.data(), flags);
     else if (!v.empty()) changed = editFloats(label.c_str(), v, lo, hi, bounded);
     if (changed) {
       std::vector<double> d(v.begin(), v.end());

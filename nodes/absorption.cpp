@@ -35,7 +35,7 @@ NodeSpec absorptionNode() {
   s.cost = "beer_lambert: 3 exp2 (~8 ALU); relative: ~15 ALU, no transcendentals";
   s.inputs = {
       ports::fixed("distance", Type::Float, "path length through water in metres (e.g. water_depth.thickness)"),
-      ports::fixed("color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light entering the water path"),
+      ports::color(ports::fixed("color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light entering the water path")),
       ports::fixed("sigma", Type::Vec3, Value::vector({0.340, 0.0565, 0.00922}),
                    "beer_lambert: absorption coefficients in 1/m (R, G, B; default pure water, Pope & Fry 1997)"),
       ports::fixed("max_distance", Type::Float, Value::scalar(220),
@@ -97,9 +97,9 @@ NodeSpec hazeNode() {
   s.source = "deferred water article (case 5 and listing 18: haze towards the background texture over 2000 units)";
   s.cost = "~5 ALU";
   s.inputs = {
-      ports::fixed("color", Type::Vec3, "the colour before haze"),
+      ports::color(ports::fixed("color", Type::Vec3, "the colour before haze")),
       ports::fixed("distance", Type::Float, "distance from the camera (e.g. water_depth.surface_distance)"),
-      ports::fixed("background", Type::Vec3, Value::vector({0.6, 0.7, 0.8}), "the haze / background colour"),
+      ports::color(ports::fixed("background", Type::Vec3, Value::vector({0.6, 0.7, 0.8}), "the haze / background colour")),
       ports::fixed("haze_distance", Type::Float, Value::scalar(2000), "distance at which only the background remains"),
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "mix(color, background, factor)"),

@@ -46,7 +46,7 @@ NodeSpec colorVariationNode() {
              "0.1, troughDarken = (1 - rawHeight) * 0.15)";
   s.cost = "value noise: 4 PCG hashes (~40 integer ops) + ~40 ALU; a time-phase uniform when drift != 0";
   s.inputs = {
-      ports::fixed("color", Type::Vec3, "the base water colour"),
+      ports::color(ports::fixed("color", Type::Vec3, "the base water colour")),
       ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "surface normal (normalised here)"),
       ports::fixed("sun", Type::Vec3, Value::vector({1, 1, -0.5}), "direction towards the sun (normalised here)"),
       ports::fixed("height", Type::Float, Value::scalar(0.5),

@@ -28,8 +28,8 @@ NodeSpec depthTintNode() {
   s.cost = "~6 ALU (linear), ~10 ALU (smooth)";
   s.inputs = {
       ports::fixed("depth", Type::Float, "water thickness in metres (e.g. from water_depth)"),
-      ports::fixed("shallow", Type::Vec3, Value::vector({0.0, 0.8, 0.7}), "colour at depth 0"),
-      ports::fixed("deep", Type::Vec3, Value::vector({0.0, 0.1, 0.3}), "colour at max_depth and below"),
+      ports::color(ports::fixed("shallow", Type::Vec3, Value::vector({0.0, 0.8, 0.7}), "colour at depth 0")),
+      ports::color(ports::fixed("deep", Type::Vec3, Value::vector({0.0, 0.1, 0.3}), "colour at max_depth and below")),
       ports::fixed("max_depth", Type::Float, Value::scalar(10.0), "depth at which the deep colour is reached"),
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "the tinted colour"),

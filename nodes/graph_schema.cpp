@@ -177,6 +177,10 @@ OJ parameterSchema() {
     if (n < 3) then["not"] = OJ{{"required", {"hint"}}};  // a colour hint needs vec3 or vec4
     byType.push_back(OJ{{"if", {{"properties", {{"type", {{"const", type}}}}}}}, {"then", then}});
   }
+  // An sRGB colour ("hint": "color") stays within [0, 1]: its default, min and max.
+  OJ unit{{"minimum", 0}, {"maximum", 1}};
+  byType.push_back(OJ{{"if", {{"required", {"hint"}}, {"properties", {{"hint", {{"const", "color"}}}}}}},
+                      {"then", {{"properties", {{"default", {{"items", unit}}}, {"min", unit}, {"max", unit}}}}}});
   return OJ{{"type", "object"},
             {"additionalProperties", false},
             {"required", {"type", "default"}},
@@ -185,7 +189,11 @@ OJ parameterSchema() {
               {"default", {{"description", "a number for float; N numbers for vecN"}}},
               {"min", described("lowest value of every component", defRef("number"))},
               {"max", described("highest value of every component", defRef("number"))},
-              {"hint", {{"description", "editors show a colour picker (vec3, vec4)"}, {"const", "color"}}},
+              {"hint",
+               {{"description",
+                 "a colour (vec3, vec4; a vec4's alpha is linear), authored as the sRGB values a colour picker shows and "
+                 "linearised when compiled: color within [0, 1], hdr_color also past 1; no hint: data, used as it is"},
+                {"enum", {"color", "hdr_color"}}}},
               {"description", {{"type", "string"}}},
               {"static", {{"description", "true: folded into the shader, never a uniform"}, {"type", "boolean"}}}}},
             {"allOf", byType}};

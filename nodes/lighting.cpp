@@ -55,8 +55,8 @@ NodeSpec lambertNode() {
   s.source = "advanced shaders tutorial (Level 1: Lambert, NdotL = max(dot(N, L), 0))";
   s.cost = "2 safe normalisations + a dot: ~12 ALU";
   s.inputs = {normalPort(), lightPort(),
-              ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light"),
-              ports::fixed("surface_color", Type::Vec3, Value::vector({1, 1, 1}), "diffuse colour of the surface")};
+              ports::color(ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light")),
+              ports::color(ports::fixed("surface_color", Type::Vec3, Value::vector({1, 1, 1}), "diffuse colour of the surface"))};
   s.outputs = {ports::fixed("intensity", Type::Float, "N.L in [0, 1]"),
                ports::fixed("color", Type::Vec3, "light_color * surface_color * intensity")};
   s.emit = [](EmitContext& ctx) {
@@ -95,9 +95,9 @@ NodeSpec blinnPhongNode() {
   s.inputs = {normalPort(), viewPort(), lightPort(),
               ports::fixed("shininess", Type::Float, Value::scalar(64), "exponent: 8 soft, 64 medium, 256 sharp"),
               ports::fixed("strength", Type::Float, Value::scalar(1), "specular strength"),
-              ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light"),
-              ports::fixed("surface_color", Type::Vec3, Value::vector({0, 0, 0}),
-                           "diffuse colour (black: the specular highlight alone)")};
+              ports::color(ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the light")),
+              ports::color(ports::fixed("surface_color", Type::Vec3, Value::vector({0, 0, 0}),
+                                        "diffuse colour (black: the specular highlight alone)"))};
   s.outputs = {ports::fixed("specular", Type::Float, "strength * max(N.H, 0)^shininess"),
                ports::fixed("diffuse", Type::Float, "max(N.L, 0)"),
                ports::fixed("color", Type::Vec3, "light_color * (surface_color * diffuse + specular)")};
@@ -158,10 +158,10 @@ NodeSpec phongSpecularNode() {
   s.inputs = {normalPort(), viewPort(), lightPort("sun"),
               ports::fixed("shine", Type::Float, Value::scalar(20), "sun exponent (the deferred water article's LightColor.w, the classic WebGL water renderer's "
                                                                    "shineDamper = 20)"),
-              ports::fixed("sun_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the sun light"),
+              ports::color(ports::fixed("sun_color", Type::Vec3, Value::vector({1, 1, 1}), "colour of the sun light")),
               ports::fixed("environment", Type::Vec3, kUp, "direction towards the environment light (the sky)"),
-              ports::fixed("environment_color", Type::Vec3, Value::vector({0.3, 0.35, 0.4}),
-                           "colour of the environment light")};
+              ports::color(ports::fixed("environment_color", Type::Vec3, Value::vector({0.3, 0.35, 0.4}),
+                                        "colour of the environment light"))};
   s.outputs = {ports::fixed("sun_specular", Type::Float, "the sun's specular intensity in [0, 1]"),
                ports::fixed("environment_specular", Type::Float, "the environment's specular intensity in [0, 1]"),
                ports::fixed("color", Type::Vec3, "sun * sun_color + environment * environment_color")};
@@ -228,7 +228,7 @@ NodeSpec ggxSpecularNode() {
               ports::fixed("roughness", Type::Float, Value::scalar(0.05),
                            "perceptual roughness (water ~0.05); clamped to [0.001, 1]"),
               ports::fixed("f0", Type::Float, Value::scalar(0.02), "reflectance at normal incidence (water 0.02)"),
-              ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour (radiance) of the light")};
+              ports::color(ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour (radiance) of the light"))};
   s.outputs = {ports::fixed("specular", Type::Float, "brdf * NdotL: reflected radiance per unit light"),
                ports::fixed("brdf", Type::Float, "D F G / (4 NdotL NdotV)"),
                ports::fixed("distribution", Type::Float, "the GGX term D (at most 1 / (pi a^2) = 3.2e11)"),

@@ -128,6 +128,7 @@ nlohmann::json nodesJson(const Registry& registry) {
         if (p.derived) continue;  // not a port a graph connects: listed under "derived_inputs"
         nlohmann::json pj{{"name", p.name}, {"type", portType(p)}, {"doc", p.doc}};
         if (input) pj["default"] = portDefault(p);
+        if (p.color) pj["color"] = true;  // literals and the default are sRGB-authored
         a.push_back(pj);
       }
       return a;
@@ -167,6 +168,10 @@ std::string nodesMarkdown(const Registry& registry) {
   md += "by `input roundings` x 2^-24 of itself makes of the exact result, summed over the inputs: it grows\n";
   md += "only where the formula is ill-conditioned. `watergraph probe` and the hard-case suite check it\n";
   md += "(docs/accuracy.md).\n\n";
+  md += "An input whose type reads **sRGB colour** takes a colour: a literal a graph gives it, and its\n";
+  md += "default, are the sRGB values a colour picker shows, and the node receives them linearised\n";
+  md += "(docs/graph-format.md#colour). Every other input, and every value wired from a node or a\n";
+  md += "parameter, reaches the node as it is.\n\n";
   for (const auto& [family, specs] : byFamily) {
     md += "- **" + family + "**:";
     for (const NodeSpec* s : specs) md += " [`" + s->type + "`](#" + s->type + ")";
@@ -191,7 +196,9 @@ std::string nodesMarkdown(const Registry& registry) {
       if (!s->inputs.empty()) {
         md += "\n| input | type | default | |\n|---|---|---|---|\n";
         for (const auto& p : s->inputs)
-          if (!p.derived) md += "| `" + p.name + "` | " + portType(p) + " | " + portDefault(p) + " | " + p.doc + " |\n";
+          if (!p.derived)
+            md += "| `" + p.name + "` | " + portType(p) + (p.color ? ", **sRGB colour**" : "") + " | " + portDefault(p) + " | " +
+                  p.doc + " |\n";
         std::string derived;
         for (const auto& p : s->inputs)
           if (p.derived) derived += "\n  - `" + p.name + "` (" + portType(p) + "): " + p.doc;

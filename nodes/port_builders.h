@@ -32,6 +32,11 @@ inline PortSpec derived(std::string name, Type t, std::string doc) {
   p.derived = true;
   return p;
 }
+// A colour input (PortSpec::color): literals and the default are sRGB-authored.
+inline PortSpec color(PortSpec p) {
+  p.color = true;
+  return p;
+}
 inline PortSpec gen(std::string name, std::string doc) {
   PortSpec p;
   p.name = std::move(name);

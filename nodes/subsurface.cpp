@@ -32,7 +32,7 @@ NodeSpec subsurfaceNode() {
                    "how far the normal bends the light direction (_SSSDistortion; the source gives no number)"),
       ports::fixed("power", Type::Float, Value::scalar(4), "exponent of the glow (_SSSPower)"),
       ports::fixed("strength", Type::Float, Value::scalar(1), "scale (_SSSStrength)"),
-      ports::fixed("color", Type::Vec3, Value::vector({0.0, 0.6, 0.5}), "the glow's colour (_SSSColor, greenish)"),
+      ports::color(ports::fixed("color", Type::Vec3, Value::vector({0.0, 0.6, 0.5}), "the glow's colour (_SSSColor, greenish)")),
   };
   s.outputs = {ports::fixed("color", Type::Vec3, "color * intensity"),
                ports::fixed("intensity", Type::Float, "strength * V.(-H)^power * height factor")};

@@ -8,12 +8,13 @@
 #include "core/color_space.h"
 
 namespace wg {
+
 namespace {
 
 const std::array<double, 256>& srgbTable() {
   static const std::array<double, 256> table = [] {
     std::array<double, 256> t{};
-    for (int i = 0; i < 256; ++i) t[static_cast<size_t>(i)] = srgbDecode(i / 255.0);
+    for (int i = 0; i < 256; ++i) t[static_cast<size_t>(i)] = srgbToLinear(i / 255.0);
     return t;
   }();
   return table;
@@ -71,7 +72,7 @@ double decodeTexel(std::uint8_t byte, TextureColorSpace space) {
 
 std::uint8_t encodeTexel(double linear, TextureColorSpace space) {
   double x = std::clamp(linear, 0.0, 1.0);
-  if (space == TextureColorSpace::Srgb) x = srgbEncode(x);
+  if (space == TextureColorSpace::Srgb) x = linearToSrgb(x);
   return static_cast<std::uint8_t>(std::clamp(std::floor(x * 255.0 + 0.5), 0.0, 255.0));
 }
 

@@ -79,6 +79,7 @@ inline DerivedSample derivedVocabularySample() {
     if (n > 1 && spec->inputs[0].kind == PortKind::Gen && spec->inputs[1].kind == PortKind::Gen) node(type + "_m", type, mixed);
     if (type == "remap") node("remap_clamped", type, vec, R"({"clamp": true})");
   }
+  node("srgb_to_linear_q", "srgb_to_linear", {"$q"});  // a vec4: negative, above 1, alpha passed
   node("ranged", "mul", {"$r", "$f1"});  // $r has a range: the clamp is part of the value
   node("time_scaled", "mul", {"time.out", "$v0"});
 

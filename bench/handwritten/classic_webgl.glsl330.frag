@@ -40,6 +40,10 @@ float linearDepth(float d) {
   return n / ((1.0 - d) + d * (n / u_camera_near_far.y));
 }
 
+// The colour uniforms hold sRGB values (what a colour picker shows, within [0, 1] by their
+// range); shading is linear, so they are decoded first (IEC 61966-2-1).
+vec3 linearFromSrgb(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c)); }
+
 void main() {
   vec3 N = normalize(v_normal);
   vec3 V = normalize(u_camera_position - v_world_position);
@@ -70,7 +74,7 @@ void main() {
   vec3 forward = -vec3(u_view[0][2], u_view[1][2], u_view[2][2]);
   float thickness = max(sceneDepth - surfaceDepth, 0.0) / max(dot(-V, forward), 0.1);
 
-  vec3 tint = mix(p_shallow_color, p_deep_color, clamp(thickness / p_tint_depth, 0.0, 1.0));
+  vec3 tint = mix(linearFromSrgb(p_shallow_color), linearFromSrgb(p_deep_color), clamp(thickness / p_tint_depth, 0.0, 1.0));
   vec3 color = mix(mix(refraction, tint, p_tint_strength), reflection, reflectance);
 
   vec3 R = reflect(-u_sun_direction, normal);

@@ -77,6 +77,10 @@ float causticLayer(vec2 p, float phase) {
   return m * m * m;
 }
 
+// The colour uniforms hold sRGB values (what a colour picker shows, within [0, 1] by their
+// range); shading is linear, so they are decoded first (IEC 61966-2-1).
+vec3 linearFromSrgb(vec3 c) { return mix(c / 12.92, pow((c + 0.055) / 1.055, vec3(2.4)), step(0.04045, c)); }
+
 void main() {
   vec3 V = normalize(u_camera_position - v_world_position);
   vec2 screenUv = gl_FragCoord.xy / u_viewport_size;
@@ -118,7 +122,7 @@ void main() {
 
   // Body: refraction tinted by depth, lit by caustics on the floor below.
   float depthFactor = clamp(thickness / p_max_distance, 0.0, 1.0);
-  vec3 body = mix(refraction, mix(p_shallow_color, p_deep_color, depthFactor), depthFactor);
+  vec3 body = mix(refraction, mix(linearFromSrgb(p_shallow_color), linearFromSrgb(p_deep_color), depthFactor), depthFactor);
   vec2 ndc = screenUv * 2.0 - 1.0;
   vec3 ray = vec3((ndc.x + u_projection[2][0]) / u_projection[0][0], (ndc.y + u_projection[2][1]) / u_projection[1][1], -1.0);
   vec2 floorXz = (u_camera_position + transpose(mat3(u_view)) * ray * floorDepth).xz * 0.6;
@@ -130,7 +134,7 @@ void main() {
   // Subsurface glow where the sun shines through the crests.
   vec3 H = normalize(u_sun_direction + normal * 0.3);
   float sss = pow(clamp(dot(V, -H), 0.0, 1.0), 4.0) * clamp(v_world_position.y * 2.0 + 0.5, 0.0, 1.0);
-  color += p_sss_color * (0.6 * sss);
+  color += linearFromSrgb(p_sss_color) * (0.6 * sss);
 
-  o_color = vec4(mix(color, p_foam_color, foam), 1.0);
+  o_color = vec4(mix(color, linearFromSrgb(p_foam_color), foam), 1.0);
 }

@@ -37,6 +37,15 @@ function safeAtan2(y, x) {
   if (y === 0) return x < 0 ? Math.PI : 0;
   return Math.atan2(y, x);
 }
+// The sRGB transfer function (IEC 61966-2-1) decoding one colour component to linear, as
+// watergraph's srgb_to_linear node: mirrored for negative values, continued past 1 (capped
+// at 2^127), and [0, 1] kept within [0, 1].
+function srgbToLinear(c) {
+  const a = Math.abs(c);
+  let v = a <= 0.04045 ? a / 12.92 : Math.pow((a + 0.055) / 1.055, 2.4);
+  v = min(v, a <= 1 ? 1 : 1.7014118346046923e38);
+  return c < 0 ? -v : v;
+}
 // GLSL's roundEven (C's nearbyint in the default rounding mode): halves to the even integer.
 function roundEven(x) {
   const r = Math.round(x);
@@ -112,7 +121,7 @@ const dot = (a, b) => {
 const ARITY = {
   time: 0, camera_position: 0, sun_direction: 0, camera_forward: 0, near_far_ratio: 1,
   compare: 2, select: 4, dot: 2, length: 1, distance: 2, normalize: 1, cross: 2, swizzle: 1,
-  split: 1, combine: 4, remap: 5,
+  split: 1, combine: 4, remap: 5, srgb_to_linear: 1,
 };
 const arityOf = (type) => ARITY[type] ?? COMPONENT_WISE[type]?.length;
 
@@ -213,6 +222,8 @@ function opFunction(op, what) {
         return [r];
       };
     }
+    case 'srgb_to_linear':  // per colour component; a vec4's alpha as it is
+      return ([c]) => [Array.from({ length: n }, (_, i) => (i === 3 ? at(c, i) : srgbToLinear(at(c, i))))];
     default:
       throw new DerivedProgramError(`${what}: node type '${type}' cannot be computed outside the shader`);
   }

@@ -99,7 +99,9 @@ function checkPasses(manifest, resources, hasPasses = false) {
 }
 
 // A parameter's manifest default as a THREE value of its type (raw numbers: no colour
-// management, the runtime uploads the same floats).
+// management, the runtime uploads the same floats). A colour parameter ("color_space":
+// "srgb") holds the sRGB values a colour picker shows and the shader linearises them, so
+// its uniform takes them as they are (from a THREE.Color, its sRGB components).
 function parameterValue(u) {
   const d = u.default;
   const v = typeof d === 'boolean' ? [d ? 1 : 0] : Array.isArray(d) ? d : [d];

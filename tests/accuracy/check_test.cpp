@@ -205,7 +205,7 @@ TEST(CheckCli, FailsWhenANodeIsWrong) {
   int rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check " +
                                 test::shellQuote(test::sourcePath("graphs/lake.json")) +
                                 " --target glsl330 --size 48x27 --mutate " +
-                                test::shellQuote("wg_fresnel_schlick(n6_fresnel_t0, 0.02)=>wg_fresnel_schlick(n6_fresnel_t0, 0.0201)"),
+                                test::shellQuote("wg_fresnel_schlick(n8_fresnel_t0, 0.02)=>wg_fresnel_schlick(n8_fresnel_t0, 0.0201)"),
                             &out);
   EXPECT_EQ(rc, 1) << out;
   EXPECT_NE(out.find("FAIL"), std::string::npos) << out;
@@ -224,8 +224,8 @@ namespace {
 // position and normal arrive as varyings; the graph's normal_map_scroll holds it to 1e-2).
 TEST(CheckCli, FailsWhenANodeIsWrongOnReadBackInputs) {
   const std::pair<const char*, const char*> cases[] = {
-      {"graphs/pool.json", "mix(vec3(1.0), p_tint_color, n15_tint_t0)=>mix(vec3(0.999), p_tint_color, n15_tint_t0)"},
-      {"graphs/ocean.json", "wg_fresnel_schlick(n8_body_fresnel_t0, 0.02)=>wg_fresnel_schlick(n8_body_fresnel_t0, 0.04)"},
+      {"graphs/pool.json", "mix(vec3(1.0), n15_tint_color, n16_tint_t0)=>mix(vec3(0.999), n15_tint_color, n16_tint_t0)"},
+      {"graphs/ocean.json", "wg_fresnel_schlick(n9_body_fresnel_t0, 0.02)=>wg_fresnel_schlick(n9_body_fresnel_t0, 0.04)"},
   };
   for (const auto& [graph, mutation] : cases) {
     SCOPED_TRACE(graph);

@@ -421,6 +421,11 @@ const std::map<std::string, RegionCheck>& regionChecks() {
          return unless(negative && positive, "the coordinates are not of both signs");
        }},
       {"uv_boundary", [](const Subject& s) { return eachPort(s, [](double x) { return x == 0 || x == 1; }, "0 or 1"); }},
+      // The sRGB curve's two segments meet at 0.04045 (IEC 61966-2-1).
+      {"srgb_knee",
+       [](const Subject& s) { return eachPort(s, [](double x) { return std::abs(x - 0.04045) <= 1e-3; }, "within 1e-3 of 0.04045"); }},
+      {"unit_value", [](const Subject& s) { return eachPort(s, [](double x) { return x == 1; }, "exactly 1"); }},
+      {"above_one", [](const Subject& s) { return eachPort(s, [](double x) { return x > 1 && x < 1e3; }, "in (1, 1e3)"); }},
       {"screen_offset_outside",
        [](const Subject& s) {
          // screen uv + distortion, in float32, leaves [0, 1] in some component (the clamp acts).
@@ -614,7 +619,8 @@ std::optional<Subject> movedOut(Subject s) {
   } else if (region == "zero_vector" || region == "unnormalised") {
     set(first, Value::vector({0, 1, 0}));
   } else if (region == "sky_distance" || region == "sky_depth" || region == "negative_thickness" || region == "huge_parameter" ||
-             region == "zero_parameter" || region == "outside_domain") {
+             region == "zero_parameter" || region == "outside_domain" || region == "srgb_knee" || region == "unit_value" ||
+             region == "above_one") {
     if (first == "scene_depth") {
       s.env.sceneDepth = Value::scalar(0.5);
       return s;

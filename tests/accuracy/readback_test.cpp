@@ -108,10 +108,10 @@ TEST(ReadbackPlan, FetchesTheSurfaceTexelWhereNoLocalHoldsIt) {
 TEST(ReadbackPlan, RefusesAGBufferLookUpAwayFromThePixel) {
   CompileResult r = compiled("deferred_underwater.json");
   std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));
-  const std::string own = "vec4 n24_water_t0 = texture(u_water_surface, b_screen_uv);";
+  const std::string own = "vec4 n25_water_t0 = texture(u_water_surface, b_screen_uv);";
   size_t at = text.find(own);
   ASSERT_NE(at, std::string::npos) << text;
-  text.replace(at, own.size(), "vec4 n24_water_t0 = texture(u_water_surface, b_screen_uv * 0.5);");
+  text.replace(at, own.size(), "vec4 n25_water_t0 = texture(u_water_surface, b_screen_uv * 0.5);");
   ReadbackPlan plan;
   std::string why = planReadback(r, text, &plan);
   EXPECT_NE(why.find("u_water_surface) other than at the pixel's own position"), std::string::npos) << why;

@@ -188,7 +188,7 @@ TEST(GraphSave, ProgrammaticGraphRoundTrips) {
   p.defaultValue = {0.1, 1.0 / 3.0, 1e-7, 1};
   p.min = -0.0;
   p.max = 1e20;
-  p.hint = "color";
+  p.hint = "hdr_color";  // "color" would hold min and max within [0, 1]
   g.parameters.push_back(p);
   Node n;
   n.id = "mix";

@@ -21,27 +21,27 @@ Rgb grey(double v) { return {v, v, v}; }
 
 TEST(ViewTransform, SrgbCurveOnBothSidesOfTheKnee) {
   // Below the knee the linear segment, above it the power: each value computed by hand.
-  EXPECT_DOUBLE_EQ(srgbEncode(0.0), 0.0);
-  EXPECT_DOUBLE_EQ(srgbEncode(0.001), 0.01292);
-  EXPECT_NEAR(srgbEncode(0.0031308), 0.0031308 * 12.92, 1e-15);  // the knee itself: the linear segment
-  EXPECT_NEAR(srgbEncode(0.0031309), 1.055 * std::pow(0.0031309, 1 / 2.4) - 0.055, 1e-15);
-  EXPECT_NEAR(srgbEncode(0.5), 0.735356983052, 1e-12);
-  EXPECT_NEAR(srgbEncode(1.0), 1.0, 1e-15);
+  EXPECT_DOUBLE_EQ(linearToSrgb(0.0), 0.0);
+  EXPECT_DOUBLE_EQ(linearToSrgb(0.001), 0.01292);
+  EXPECT_NEAR(linearToSrgb(0.0031308), 0.0031308 * 12.92, 1e-15);  // the knee itself: the linear segment
+  EXPECT_NEAR(linearToSrgb(0.0031309), 1.055 * std::pow(0.0031309, 1 / 2.4) - 0.055, 1e-15);
+  EXPECT_NEAR(linearToSrgb(0.5), 0.735356983052, 1e-12);
+  EXPECT_NEAR(linearToSrgb(1.0), 1.0, 1e-15);
   // The two segments meet at the knee (continuity within the standard's rounding of 12.92).
-  EXPECT_NEAR(srgbEncode(0.0031308), srgbEncode(std::nextafter(0.0031308, 1.0)), 1e-7);
+  EXPECT_NEAR(linearToSrgb(0.0031308), linearToSrgb(std::nextafter(0.0031308, 1.0)), 1e-7);
   // Decoding inverts it, below and above the knee; 128/255 is 0.2158605 linear.
-  for (double e : {0.0, 0.02, 0.0405, 128 / 255.0, 1.0}) EXPECT_NEAR(srgbEncode(srgbDecode(e)), e, 1e-12) << e;
+  for (double e : {0.0, 0.02, 0.0405, 128 / 255.0, 1.0}) EXPECT_NEAR(linearToSrgb(srgbToLinear(e)), e, 1e-12) << e;
   // Between the standard's two knees (0.04045 encoded is 0.0031308049 linear, above the
   // encoder's 0.0031308) the round trip leaves by the other segment: off by 3e-8.
-  EXPECT_NEAR(srgbEncode(srgbDecode(0.04045)), 0.04045, 4e-8);
-  EXPECT_NEAR(srgbDecode(128 / 255.0), 0.21586050011389926, 1e-12);
+  EXPECT_NEAR(linearToSrgb(srgbToLinear(0.04045)), 0.04045, 4e-8);
+  EXPECT_NEAR(srgbToLinear(128 / 255.0), 0.21586050011389926, 1e-12);
 }
 
 TEST(ViewTransform, PictureValuesOfTheIssue) {
   // A linear 0.5 is the 8-bit 188; the sRGB 128 of a texture comes back as 128.
   const ViewTransform none;
   EXPECT_EQ(std::lround(255 * outputTransform(none, grey(0.5))[0]), 188);
-  EXPECT_EQ(std::lround(255 * outputTransform(none, grey(srgbDecode(128 / 255.0)))[0]), 128);
+  EXPECT_EQ(std::lround(255 * outputTransform(none, grey(srgbToLinear(128 / 255.0)))[0]), 128);
 }
 
 TEST(ViewTransform, NoneClampsAndExposureScales) {
@@ -50,7 +50,7 @@ TEST(ViewTransform, NoneClampsAndExposureScales) {
   v.exposureEv = -2;  // 4 x 2^-2 = 1
   EXPECT_NEAR(outputTransform(v, grey(4.0))[1], 1.0, 1e-15);
   v.exposureEv = -3;  // 0.5
-  EXPECT_NEAR(outputTransform(v, grey(4.0))[1], srgbEncode(0.5), 1e-15);
+  EXPECT_NEAR(outputTransform(v, grey(4.0))[1], linearToSrgb(0.5), 1e-15);
 }
 
 TEST(ViewTransform, AcesFitAtWorkedValues) {

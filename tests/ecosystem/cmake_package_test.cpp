@@ -61,11 +61,13 @@ TEST(CMakePackage, InstallFindPackageAndRebuildOnGraphChange) {
   EXPECT_NE(r.out.find("pond.es300.vert: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("#version 300 es"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("uniform p_water"), std::string::npos) << r.out;
-  // pond.derived.h: sky (0.6, 0.75, 0.9) * (0.95 + 0.05 sin(2 * 1.5)), in float.
+  // pond.derived.h: sky (0.6, 0.75, 0.9), a colour parameter authored in sRGB, linearised
+  // (the IEC 61966-2-1 curve), times (0.95 + 0.05 sin(2 * 1.5)), in float.
   char shimmer[96];
   const double k = 0.95 + 0.05 * std::sin(3.0);
-  std::snprintf(shimmer, sizeof shimmer, "u_derived0 at t = 2 s: %.6f %.6f %.6f", static_cast<float>(0.6 * k),
-                static_cast<float>(0.75 * k), static_cast<float>(0.9 * k));
+  auto linear = [](double c) { return std::pow((c + 0.055) / 1.055, 2.4); };  // c > 0.04045
+  std::snprintf(shimmer, sizeof shimmer, "u_derived0 at t = 2 s: %.6f %.6f %.6f", static_cast<float>(linear(0.6) * k),
+                static_cast<float>(linear(0.75) * k), static_cast<float>(linear(0.9) * k));
   EXPECT_NE(r.out.find(shimmer), std::string::npos) << r.out;
   EXPECT_FALSE(fs::exists(bin + "/shaders/pond.vk450.frag"));  // TARGETS glsl330 es300 only
 

@@ -182,9 +182,10 @@ TEST(DerivedJs, TheClientSetsDerivedUniformsAsTheRuntime) {
     env.projection = valueOf(f["projection"]);
     env.sunDirection = valueOf(f["sun_direction"]);
     std::vector<Value> params;
+    size_t setSoFar = 0;  // step s has set the first s parameters read (one more per step)
     for (const auto& p : parameters) {
       Value v = valueOf(step["parameters"][p.name]);
-      if (p.max && s > 0 && read.count(p.name)) {
+      if (read.count(p.name) && ++setSoFar <= s && p.max) {
         EXPECT_EQ(v[0], *p.max) << p.name << ": the client clamps";
       }
       params.push_back(v);

@@ -92,8 +92,8 @@ TEST_P(OutputTransformGpu, LinearSegmentBelowTheKneeIsNotAPower) {
   // would give 0.059 (15.1): the pass must take the linear segment.
   auto ctx = EglContext::create(GetParam());
   std::vector<uint8_t> got = runPass({}, GetParam());
-  EXPECT_EQ(got[2 * 4], std::lround(255 * srgbEncode(0.002)));
-  EXPECT_EQ(std::lround(255 * srgbEncode(0.002)), 7);
+  EXPECT_EQ(got[2 * 4], std::lround(255 * linearToSrgb(0.002)));
+  EXPECT_EQ(std::lround(255 * linearToSrgb(0.002)), 7);
 }
 
 INSTANTIATE_TEST_SUITE_P(Apis, OutputTransformGpu, ::testing::Values(GlApi::DesktopGl45, GlApi::Es32),

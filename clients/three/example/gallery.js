@@ -48,9 +48,9 @@ function range(u, x) {
 const hex = (v) => '#' + v.slice(0, 3).map((x) => Math.round(Math.min(Math.max(x, 0), 1) * 255).toString(16).padStart(2, '0')).join('');
 const fromHex = (s) => [1, 3, 5].map((i) => parseInt(s.slice(i, i + 2), 16) / 255);
 
-// One control per parameter uniform: a colour picker for colour hints (the picker's sRGB
-// values as they are: a colour parameter holds its authored value, and the shader
-// linearises it), a checkbox for bool, sliders otherwise.
+// One control per parameter uniform: a colour picker for the "color" hint (the sRGB floats
+// the picker shows, which the shader linearises, as the runtime uploads them), a checkbox for
+// bool, sliders otherwise (also for "hdr_color", whose values a picker cannot reach past 1).
 function buildParameters(w) {
   const box = $('parameters');
   box.replaceChildren();

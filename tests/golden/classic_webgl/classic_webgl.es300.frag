@@ -43,6 +43,19 @@ vec3 wg_camera_forward(mat4 view) {
   return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
 }
 
+// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(min(y * log2(x), 127.0));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
+
 // Native pow where the compiler proved 0 <= x <= 1 and y > 0 for every input the shader
 // receives (value facts: e.g. a clamped cosine raised to a parameter with min > 0). GLSL
 // defines pow there (only x < 0, and x = 0 with y <= 0, are undefined), the result lies in
@@ -118,6 +131,22 @@ float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float 
 // the screen, no stretched border texels).
 vec2 wg_scene_color_uv(vec2 uv, vec2 offset) { return clamp(uv + offset, vec2(0.0), vec2(1.0)); }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 // water_depth: how much water lies between the surface and the scene behind it.
 
 // The factor that turns a view-depth difference into a distance along the view ray:
@@ -187,12 +216,14 @@ void main() {
   float n11_depth_thickness = wg_water_depth_thickness(n11_depth_t0, n11_depth_t1, wg_water_depth_ray_factor_axis(n9_depth, b_view_direction), 1.0);
   float n12_shore_fade = wg_remap_clamped_nonempty_float(n11_depth_thickness, 0.0, p_edge_softness, 0.0, 1.0);
   float n13_highlight_strength = (p_reflectivity * n12_shore_fade);
-  float n14_tint_t0 = wg_depth_tint_linear_floored(n11_depth_thickness, p_tint_depth);
-  vec3 n14_tint_color = mix(p_shallow_color, p_deep_color, n14_tint_t0);
-  vec3 n15_tinted = mix(n7_refraction_color, n14_tint_color, vec3(p_tint_strength));
-  vec3 n16_surface = mix(n15_tinted, n8_reflection_color, vec3(n6_fresnel_t1));
-  float n18_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n5_normal_normal, b_view_direction, u_sun_direction), p_shine_damper);
-  float n19_highlight = (n18_phong_t0 * n13_highlight_strength);
-  vec3 n20_color = (n16_surface + vec3(n19_highlight));
-  o_color = vec4(n20_color, 1.0);
+  vec3 n14_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
+  vec3 n15_shallow_color = wg_srgb_to_linear_vec3(p_shallow_color);
+  float n16_tint_t0 = wg_depth_tint_linear_floored(n11_depth_thickness, p_tint_depth);
+  vec3 n16_tint_color = mix(n15_shallow_color, n14_deep_color, n16_tint_t0);
+  vec3 n17_tinted = mix(n7_refraction_color, n16_tint_color, vec3(p_tint_strength));
+  vec3 n18_surface = mix(n17_tinted, n8_reflection_color, vec3(n6_fresnel_t1));
+  float n20_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n5_normal_normal, b_view_direction, u_sun_direction), p_shine_damper);
+  float n21_highlight = (n20_phong_t0 * n13_highlight_strength);
+  vec3 n22_color = (n18_surface + vec3(n21_highlight));
+  o_color = vec4(n22_color, 1.0);
 }

@@ -270,6 +270,22 @@ vec3 wg_scene_depth_position(vec2 uv, float lin, vec3 camera, mat4 view, mat4 pr
   return clamp(camera + world * lin, vec3(-1e30), vec3(1e30));
 }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 // ssr: screen-space reflection by a fixed number of ray-march steps (the deferred water article, listing 8).
 
 // Marches the reflected ray origin + t dir, t = (i + 0.5) step, with the deferred water article's step
@@ -570,38 +586,39 @@ void main() {
   float n9_below_t0 = wg_cos_incidence(n8_down, b_view_direction);
   float n9_below_t1 = wg_fresnel_schlick_from_below(n9_below_t0, 0.02, 1.776889, 0.43721864);
   float n9_below_transmittance = (1.0 - n9_below_t1);
-  vec3 n10_mirror = (vec3(n9_below_t1) * vec3(0.05, 0.3, 0.4));
-  float n11_fresnel_t0 = wg_cos_incidence(n4_detail_normal, b_view_direction);
-  float n11_fresnel_t1 = wg_fresnel_schlick(n11_fresnel_t0, 0.02);
-  float n11_fresnel_transmittance = (1.0 - n11_fresnel_t1);
-  vec3 n12_reflected = (n7_ssr_color * vec3(n11_fresnel_t1));
-  float n14_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n4_detail_normal, b_view_direction, u_sun_direction), 120.0);
-  float n14_phong_t1 = wg_phong_specular_lobe_unit(n4_detail_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
-  vec3 n14_phong_color = (n14_phong_t0 * vec3(1.0) + n14_phong_t1 * vec3(0.3, 0.35, 0.4));
-  vec3 n15_depth = wg_camera_forward(u_view);
-  vec2 n16_depth_t0 = u_camera_near_far;
-  float n16_depth_t1 = n16_depth_t0.x;
-  float n16_depth_ratio = wg_near_far_ratio(n16_depth_t1, n16_depth_t0.y);
-  float n17_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n16_depth_t1, n16_depth_ratio);
-  float n17_depth_t1 = wg_linearize_depth_ratio_known(b_water_surface.w, n16_depth_t1, n16_depth_ratio);
-  float n17_depth_thickness = wg_water_depth_thickness(n17_depth_t0, n17_depth_t1, wg_water_depth_ray_factor_axis(n15_depth, b_view_direction), abs(wg_safe_normalize_vec3(b_view_direction).y));
-  float n18_coast_t0 = clamp(wg_coastal_foam_amount(n17_depth_thickness, p_foam_depth, 1.0, n5_crest) * texture(t1_foam, wg_coastal_foam_uv(v_world_position, n4_detail_normal, 0.1, 0.05)).r, 0.0, 1.0);
-  float n18_coast_specular_scale = wg_coastal_foam_specular_cubic(n18_coast_t0, 1.0);
-  vec3 n19_specular = (n14_phong_color * vec3(n18_coast_specular_scale));
-  vec3 n20_lit = (n12_reflected + n19_specular);
-  vec3 n21_surface = mix(n20_lit, vec3(0.9, 0.95, 1.0), vec3(n18_coast_t0));
+  float n10_fresnel_t0 = wg_cos_incidence(n4_detail_normal, b_view_direction);
+  float n10_fresnel_t1 = wg_fresnel_schlick(n10_fresnel_t0, 0.02);
+  float n10_fresnel_transmittance = (1.0 - n10_fresnel_t1);
+  vec3 n11_reflected = (n7_ssr_color * vec3(n10_fresnel_t1));
+  float n13_phong_t0 = wg_pow_known_safe_float(wg_phong_specular_lobe_unit(n4_detail_normal, b_view_direction, u_sun_direction), 120.0);
+  float n13_phong_t1 = wg_phong_specular_lobe_unit(n4_detail_normal, b_view_direction, vec3(0.0, 1.0, 0.0));
+  vec3 n13_phong_color = (n13_phong_t0 * vec3(1.0) + n13_phong_t1 * vec3(0.073238954, 0.10048151, 0.13286832));
+  vec3 n14_depth = wg_camera_forward(u_view);
+  vec2 n15_depth_t0 = u_camera_near_far;
+  float n15_depth_t1 = n15_depth_t0.x;
+  float n15_depth_ratio = wg_near_far_ratio(n15_depth_t1, n15_depth_t0.y);
+  float n16_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n15_depth_t1, n15_depth_ratio);
+  float n16_depth_t1 = wg_linearize_depth_ratio_known(b_water_surface.w, n15_depth_t1, n15_depth_ratio);
+  float n16_depth_thickness = wg_water_depth_thickness(n16_depth_t0, n16_depth_t1, wg_water_depth_ray_factor_axis(n14_depth, b_view_direction), abs(wg_safe_normalize_vec3(b_view_direction).y));
+  float n17_coast_t0 = clamp(wg_coastal_foam_amount(n16_depth_thickness, p_foam_depth, 1.0, n5_crest) * texture(t1_foam, wg_coastal_foam_uv(v_world_position, n4_detail_normal, 0.1, 0.05)).r, 0.0, 1.0);
+  float n17_coast_specular_scale = wg_coastal_foam_specular_cubic(n17_coast_t0, 1.0);
+  vec3 n18_specular = (n13_phong_color * vec3(n17_coast_specular_scale));
+  vec3 n19_lit = (n11_reflected + n18_specular);
+  vec3 n20_surface = mix(n19_lit, vec3(0.7874123, 0.8900054, 1.0), vec3(n17_coast_t0));
+  vec3 n21_mirror = (vec3(n9_below_t1) * vec3(0.0039359396, 0.073238954, 0.13286832));
   float n22_scene_t0 = texture(u_scene_depth, b_screen_uv).r;
-  float n22_scene_t1 = wg_linearize_depth_ratio_known(n22_scene_t0, n16_depth_t1, n16_depth_ratio);
+  float n22_scene_t1 = wg_linearize_depth_ratio_known(n22_scene_t0, n15_depth_t1, n15_depth_ratio);
   vec3 n22_scene_position = wg_scene_depth_position(b_screen_uv, n22_scene_t1, u_camera_position, u_view, u_projection);
   vec2 n23_caustics_t0 = wg_texture_caustics_uv(n22_scene_position, 0.15);
   vec2 n23_caustics_t1 = mod(u_time * vec2(0.02, 0.01), 1.0);
   float n23_caustics_t2 = texture(t0_height, n23_caustics_t0 + n23_caustics_t1).r;
   float n23_caustics_t3 = texture(t0_height, 1.5 * n23_caustics_t0 - n23_caustics_t1).r;
   float n23_caustics = (0.8 * wg_texture_caustics_shape(n23_caustics_t2, n23_caustics_t3));
-  vec4 n24_water_t0 = texture(u_water_surface, b_screen_uv);
-  float n24_water_t1 = texture(u_scene_depth, b_screen_uv).r;
-  vec3 n24_water_t2 = wg_scene_depth_position(b_screen_uv, wg_linearize_depth_ratio(n24_water_t1, n16_depth_t1, n16_depth_ratio), u_camera_position, u_view, u_projection);
-  vec4 n24_water_t3 = (u_camera_position.y < 0.0 ? wg_underwater_from_below(u_scene_color, b_screen_uv, n24_water_t0, n24_water_t2, (n24_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n10_mirror, n9_below_transmittance, p_water_color, 0.35, p_sigma, 0.03, n23_caustics, vec3(1.0), 4.0, 0.0) : wg_underwater_from_above(u_scene_color, b_screen_uv, n24_water_t0, n24_water_t2, (n24_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n21_surface, n11_fresnel_transmittance, p_water_color, 0.35, p_sigma, 0.03, n23_caustics, vec3(1.0), p_haze_distance, vec3(0.7, 0.8, 0.9), 0.0));
-  vec3 n24_water_color = n24_water_t3.rgb;
-  o_color = vec4(n24_water_color, 1.0);
+  vec3 n24_water_color = wg_srgb_to_linear_vec3(p_water_color);
+  vec4 n25_water_t0 = texture(u_water_surface, b_screen_uv);
+  float n25_water_t1 = texture(u_scene_depth, b_screen_uv).r;
+  vec3 n25_water_t2 = wg_scene_depth_position(b_screen_uv, wg_linearize_depth_ratio(n25_water_t1, n15_depth_t1, n15_depth_ratio), u_camera_position, u_view, u_projection);
+  vec4 n25_water_t3 = (u_camera_position.y < 0.0 ? wg_underwater_from_below(u_scene_color, b_screen_uv, n25_water_t0, n25_water_t2, (n25_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n21_mirror, n9_below_transmittance, n24_water_color, 0.35, p_sigma, 0.03, n23_caustics, vec3(1.0), 4.0, 0.0) : wg_underwater_from_above(u_scene_color, b_screen_uv, n25_water_t0, n25_water_t2, (n25_water_t1 >= 1.0 ? 1.0 : 0.0), u_camera_position, n4_detail_normal, n20_surface, n10_fresnel_transmittance, n24_water_color, 0.35, p_sigma, 0.03, n23_caustics, vec3(1.0), p_haze_distance, vec3(0.44798842, 0.60382736, 0.7874123), 0.0));
+  vec3 n25_water_color = n25_water_t3.rgb;
+  o_color = vec4(n25_water_color, 1.0);
 }

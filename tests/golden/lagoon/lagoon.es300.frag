@@ -55,6 +55,22 @@ float wg_smoothstep_float(float e0, float e1, float x) {
 // exp with x capped at 88: exp(88) = 1.65e38, where exp(89) overflows float to +inf.
 float wg_safe_exp_float(float x) { return exp(min(x, 88.0)); }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 void main() {
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   float n1_depth = distance(v_uv, vec2(0.5));
@@ -62,81 +78,85 @@ void main() {
   float n3_depth = wg_smoothstep_float(0.25, 0.98, n2_depth);
   float n4_depth = (1.0 - n3_depth);
   float n5_depth = (p_max_depth * n4_depth);
-  float n6_body = (-p_absorption);
-  float n7_body = (n6_body * n5_depth);
-  float n8_body = wg_safe_exp_float(n7_body);
-  float n9_body = (1.0 - n8_body);
-  vec3 n10_body = mix(p_shallow, p_deep, vec3(n9_body));
-  vec2 n15_scroll = v_world_position.xz;
-  vec2 n16_scroll = (n15_scroll * vec2(p_ripple_scale));
-  float n17_scroll = (u_time * p_flow_speed);
-  float n18_scroll = (n17_scroll * 0.6);
-  vec2 n19_scroll = vec2(n17_scroll, n18_scroll);
-  vec2 n20_scroll = fract(n19_scroll);
-  vec2 n21_scroll = (n16_scroll + n20_scroll);
-  vec2 n22_scroll = v_world_position.zx;
-  vec2 n23_scroll = (n22_scroll * vec2(p_ripple_scale));
-  vec2 n24_scroll = (n23_scroll * vec2(1.37));
-  float n25_scroll = (n17_scroll * 0.8);
-  float n26_scroll = (-u_time);
-  float n27_scroll = (n26_scroll * p_flow_speed);
-  float n28_scroll = (n27_scroll * 0.3);
-  vec2 n29_scroll = vec2(n25_scroll, n28_scroll);
-  vec2 n30_scroll = fract(n29_scroll);
-  vec2 n31_scroll = (n24_scroll - n30_scroll);
-  float n32_scroll_x = n21_scroll.x;
-  float n32_scroll_y = n21_scroll.y;
-  float n33_scroll_x = n31_scroll.x;
-  float n33_scroll_y = n31_scroll.y;
-  vec4 n34_scroll = vec4(n32_scroll_x, n32_scroll_y, n33_scroll_x, n33_scroll_y);
-  vec2 n35_uv_b = n34_scroll.zw;
-  vec4 n36_ripples_b_t0 = texture(t0_lagoon_ripples, n35_uv_b);
-  vec3 n36_ripples_b_rgb = n36_ripples_b_t0.rgb;
-  float n36_ripples_b_alpha = n36_ripples_b_t0.a;
-  vec2 n37_uv_a = n34_scroll.xy;
-  vec4 n38_ripples_a_t0 = texture(t0_lagoon_ripples, n37_uv_a);
-  vec3 n38_ripples_a_rgb = n38_ripples_a_t0.rgb;
-  float n38_ripples_a_alpha = n38_ripples_a_t0.a;
-  float n39_foam = max(n38_ripples_a_alpha, n36_ripples_b_alpha);
-  float n40_foam = wg_smoothstep_float(0.35, 0.75, n39_foam);
-  float n41_foam = (p_foam_amount * n40_foam);
-  float n42_foam = wg_smoothstep_float(0.2, 1.2, n5_depth);
-  float n43_foam = (1.0 - n42_foam);
-  float n44_foam = (n41_foam * n43_foam);
-  float n45_normal = n38_ripples_a_rgb.x;
-  float n46_normal = n36_ripples_b_rgb.y;
-  float n47_normal = (n45_normal + n46_normal);
-  float n48_normal = (n47_normal - 1.0);
-  float n49_normal = (n48_normal * p_ripple_strength);
-  float n50_normal = n38_ripples_a_rgb.y;
-  float n51_normal = n36_ripples_b_rgb.x;
-  float n52_normal = (n50_normal + n51_normal);
-  float n53_normal = (n52_normal - 1.0);
-  float n54_normal = (n53_normal * p_ripple_strength);
-  vec3 n55_normal = vec3(n49_normal, 1.0, n54_normal);
-  vec3 n56_normal = wg_safe_normalize_vec3(n55_normal);
-  vec3 n57_glint = (u_sun_direction + b_view_direction);
-  vec3 n58_glint = wg_safe_normalize_vec3(n57_glint);
-  float n59_glint = dot(n58_glint, n56_normal);
-  float n60_glint = max(n59_glint, 0.0);
-  float n61_glint = wg_safe_pow_float(n60_glint, 60.0);
-  float n62_glint = (p_sun_strength * n61_glint);
-  vec3 n63_sky = (-b_view_direction);
-  vec3 n64_sky = reflect(n63_sky, n56_normal);
-  float n65_sky = n64_sky.y;
-  float n66_sky = clamp(n65_sky, 0.0, 1.0);
-  float n67_sky = sqrt(n66_sky);
-  vec3 n68_sky = mix(p_horizon, p_zenith, vec3(n67_sky));
-  float n69_fresnel = dot(n56_normal, b_view_direction);
-  float n70_fresnel = clamp(n69_fresnel, 0.0, 1.0);
-  float n71_fresnel = (1.0 - n70_fresnel);
-  float n72_fresnel = wg_safe_pow_float(n71_fresnel, 5.0);
-  float n73_fresnel = (0.98 * n72_fresnel);
-  float n74_fresnel = (0.02 + n73_fresnel);
-  vec3 n75_color = mix(n10_body, n68_sky, vec3(n74_fresnel));
-  vec3 n76_color = vec3(n62_glint, n62_glint, n62_glint);
-  vec3 n77_color = (n75_color + n76_color);
-  float n78_color = clamp(n44_foam, 0.0, 1.0);
-  vec3 n79_color = mix(n77_color, vec3(0.95, 0.97, 1.0), vec3(n78_color));
-  o_color = vec4(n79_color, 1.0);
+  vec3 n6_deep = wg_srgb_to_linear_vec3(p_deep);
+  vec3 n7_shallow = wg_srgb_to_linear_vec3(p_shallow);
+  float n8_body = (-p_absorption);
+  float n9_body = (n8_body * n5_depth);
+  float n10_body = wg_safe_exp_float(n9_body);
+  float n11_body = (1.0 - n10_body);
+  vec3 n12_body = mix(n7_shallow, n6_deep, vec3(n11_body));
+  vec2 n17_scroll = v_world_position.xz;
+  vec2 n18_scroll = (n17_scroll * vec2(p_ripple_scale));
+  float n19_scroll = (u_time * p_flow_speed);
+  float n20_scroll = (n19_scroll * 0.6);
+  vec2 n21_scroll = vec2(n19_scroll, n20_scroll);
+  vec2 n22_scroll = fract(n21_scroll);
+  vec2 n23_scroll = (n18_scroll + n22_scroll);
+  vec2 n24_scroll = v_world_position.zx;
+  vec2 n25_scroll = (n24_scroll * vec2(p_ripple_scale));
+  vec2 n26_scroll = (n25_scroll * vec2(1.37));
+  float n27_scroll = (n19_scroll * 0.8);
+  float n28_scroll = (-u_time);
+  float n29_scroll = (n28_scroll * p_flow_speed);
+  float n30_scroll = (n29_scroll * 0.3);
+  vec2 n31_scroll = vec2(n27_scroll, n30_scroll);
+  vec2 n32_scroll = fract(n31_scroll);
+  vec2 n33_scroll = (n26_scroll - n32_scroll);
+  float n34_scroll_x = n23_scroll.x;
+  float n34_scroll_y = n23_scroll.y;
+  float n35_scroll_x = n33_scroll.x;
+  float n35_scroll_y = n33_scroll.y;
+  vec4 n36_scroll = vec4(n34_scroll_x, n34_scroll_y, n35_scroll_x, n35_scroll_y);
+  vec2 n37_uv_b = n36_scroll.zw;
+  vec4 n38_ripples_b_t0 = texture(t0_lagoon_ripples, n37_uv_b);
+  vec3 n38_ripples_b_rgb = n38_ripples_b_t0.rgb;
+  float n38_ripples_b_alpha = n38_ripples_b_t0.a;
+  vec2 n39_uv_a = n36_scroll.xy;
+  vec4 n40_ripples_a_t0 = texture(t0_lagoon_ripples, n39_uv_a);
+  vec3 n40_ripples_a_rgb = n40_ripples_a_t0.rgb;
+  float n40_ripples_a_alpha = n40_ripples_a_t0.a;
+  float n41_foam = max(n40_ripples_a_alpha, n38_ripples_b_alpha);
+  float n42_foam = wg_smoothstep_float(0.35, 0.75, n41_foam);
+  float n43_foam = (p_foam_amount * n42_foam);
+  float n44_foam = wg_smoothstep_float(0.2, 1.2, n5_depth);
+  float n45_foam = (1.0 - n44_foam);
+  float n46_foam = (n43_foam * n45_foam);
+  float n47_normal = n40_ripples_a_rgb.x;
+  float n48_normal = n38_ripples_b_rgb.y;
+  float n49_normal = (n47_normal + n48_normal);
+  float n50_normal = (n49_normal - 1.0);
+  float n51_normal = (n50_normal * p_ripple_strength);
+  float n52_normal = n40_ripples_a_rgb.y;
+  float n53_normal = n38_ripples_b_rgb.x;
+  float n54_normal = (n52_normal + n53_normal);
+  float n55_normal = (n54_normal - 1.0);
+  float n56_normal = (n55_normal * p_ripple_strength);
+  vec3 n57_normal = vec3(n51_normal, 1.0, n56_normal);
+  vec3 n58_normal = wg_safe_normalize_vec3(n57_normal);
+  vec3 n59_glint = (u_sun_direction + b_view_direction);
+  vec3 n60_glint = wg_safe_normalize_vec3(n59_glint);
+  float n61_glint = dot(n60_glint, n58_normal);
+  float n62_glint = max(n61_glint, 0.0);
+  float n63_glint = wg_safe_pow_float(n62_glint, 60.0);
+  float n64_glint = (p_sun_strength * n63_glint);
+  vec3 n65_horizon = wg_srgb_to_linear_vec3(p_horizon);
+  vec3 n66_zenith = wg_srgb_to_linear_vec3(p_zenith);
+  vec3 n67_sky = (-b_view_direction);
+  vec3 n68_sky = reflect(n67_sky, n58_normal);
+  float n69_sky = n68_sky.y;
+  float n70_sky = clamp(n69_sky, 0.0, 1.0);
+  float n71_sky = sqrt(n70_sky);
+  vec3 n72_sky = mix(n65_horizon, n66_zenith, vec3(n71_sky));
+  float n73_fresnel = dot(n58_normal, b_view_direction);
+  float n74_fresnel = clamp(n73_fresnel, 0.0, 1.0);
+  float n75_fresnel = (1.0 - n74_fresnel);
+  float n76_fresnel = wg_safe_pow_float(n75_fresnel, 5.0);
+  float n77_fresnel = (0.98 * n76_fresnel);
+  float n78_fresnel = (0.02 + n77_fresnel);
+  vec3 n79_color = mix(n12_body, n72_sky, vec3(n78_fresnel));
+  vec3 n80_color = vec3(n64_glint, n64_glint, n64_glint);
+  vec3 n81_color = (n79_color + n80_color);
+  float n82_color = clamp(n46_foam, 0.0, 1.0);
+  vec3 n83_color = mix(n81_color, vec3(0.95, 0.97, 1.0), vec3(n82_color));
+  o_color = vec4(n83_color, 1.0);
 }

@@ -14,6 +14,19 @@ uniform float p_centre_depth;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(min(y * log2(x), 127.0));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
+
 // The linear ramp where max_depth >= 1e-6 is proven (value facts: a parameter whose min is
 // at least that): the floor is dead.
 float wg_depth_tint_linear_floored(float depth, float max_depth) { return clamp(depth / max_depth, 0.0, 1.0); }
@@ -36,6 +49,22 @@ float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float 
   return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 void main() {
   vec3 b_normal = wg_safe_normalize_vec3(v_normal);
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
@@ -43,10 +72,13 @@ void main() {
   float n2_radius = length(n1_from_centre);
   float n3_shore = wg_remap_clamped_nonempty_float(n2_radius, 0.0, 0.5, 1.0, 0.0);
   float n4_depth = (n3_shore * p_centre_depth);
-  float n5_tint_t0 = wg_depth_tint_linear_floored(n4_depth, p_max_depth);
-  vec3 n5_tint_color = mix(p_shallow, p_deep, n5_tint_t0);
-  float n6_fresnel_t0 = wg_cos_incidence(b_normal, b_view_direction);
-  float n6_fresnel_t1 = wg_fresnel_schlick(n6_fresnel_t0, 0.02);
-  vec3 n7_color = mix(n5_tint_color, p_sky, vec3(n6_fresnel_t1));
-  o_color = vec4(n7_color, 1.0);
+  vec3 n5_deep = wg_srgb_to_linear_vec3(p_deep);
+  vec3 n6_shallow = wg_srgb_to_linear_vec3(p_shallow);
+  float n7_tint_t0 = wg_depth_tint_linear_floored(n4_depth, p_max_depth);
+  vec3 n7_tint_color = mix(n6_shallow, n5_deep, n7_tint_t0);
+  float n8_fresnel_t0 = wg_cos_incidence(b_normal, b_view_direction);
+  float n8_fresnel_t1 = wg_fresnel_schlick(n8_fresnel_t0, 0.02);
+  vec3 n9_sky = wg_srgb_to_linear_vec3(p_sky);
+  vec3 n10_color = mix(n7_tint_color, n9_sky, vec3(n8_fresnel_t1));
+  o_color = vec4(n10_color, 1.0);
 }

@@ -190,6 +190,22 @@ float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float 
   return mix(c, d, clamp((x - a) / (b - a), 0.0, 1.0));
 }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 // The same where n, v and l are proven normalized (value facts: unit length or exactly
 // zero, so safe re-normalisation leaves them unchanged) and power > 0 (so vdoth in [0, 1]
 // makes native pow defined and equal to the safe one). Same values.
@@ -275,22 +291,24 @@ void main() {
   vec3 n7_detail_t1 = wg_normal_map_scroll_unpack(texture(t0_water_normal, wg_normal_map_scroll_uv(v_uv, 11.0, n6_detail)));
   vec3 n7_detail_t2 = wg_normal_map_scroll_add(n7_detail_t0, n7_detail_t1);
   vec3 n7_detail_normal = wg_waves_tangent_to_world_flat(wg_normal_map_scroll_strength(n7_detail_t2, 0.3), b_normal);
-  float n8_body_fresnel_t0 = wg_cos_incidence(n7_detail_normal, b_view_direction);
-  float n8_body_fresnel_t1 = wg_fresnel_schlick(n8_body_fresnel_t0, 0.02);
-  vec3 n9_body_sky_t0 = wg_reflect_dir(n7_detail_normal, b_view_direction);
-  vec3 n9_body_sky_color = texture(u_environment, n9_body_sky_t0).rgb;
-  vec3 n10_body_blend = mix(p_deep_color, n9_body_sky_color, vec3(n8_body_fresnel_t1));
-  vec4 n12_ggx_t0 = wg_ggx_specular(n7_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
-  float n12_ggx_t1 = (n12_ggx_t0.x * n12_ggx_t0.w);
-  vec3 n12_ggx_color = (vec3(1.0, 0.92, 0.8) * n12_ggx_t1);
-  float n14_p_split_y = v_world_position.y;
-  float n15_sss_t0 = (p_sss_strength * wg_subsurface_intensity_unit(n7_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n14_p_split_y));
-  vec3 n15_sss_color = (p_sss_color * n15_sss_t0);
-  vec3 n16_glow = (n10_body_blend + n15_sss_color);
-  vec3 n17_lit = (n16_glow + n12_ggx_color);
-  float n18_height = wg_remap_clamped_nonempty_float(n14_p_split_y, -1.2, 1.2, 0.0, 1.0);
-  vec2 n19_crest_t0 = vec2(u_phase0, u_phase1) * 40.743664;
-  float n19_crest = wg_crest_foam(n18_height, b_normal, v_world_position.xz, n19_crest_t0, p_foam_threshold, 0.7, 0.4, 3.0);
-  vec3 n20_color = mix(n17_lit, vec3(0.92, 0.95, 0.97), vec3(n19_crest));
-  o_color = vec4(n20_color, 1.0);
+  vec3 n8_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
+  float n9_body_fresnel_t0 = wg_cos_incidence(n7_detail_normal, b_view_direction);
+  float n9_body_fresnel_t1 = wg_fresnel_schlick(n9_body_fresnel_t0, 0.02);
+  vec3 n10_body_sky_t0 = wg_reflect_dir(n7_detail_normal, b_view_direction);
+  vec3 n10_body_sky_color = texture(u_environment, n10_body_sky_t0).rgb;
+  vec3 n11_body_blend = mix(n8_deep_color, n10_body_sky_color, vec3(n9_body_fresnel_t1));
+  vec4 n13_ggx_t0 = wg_ggx_specular(n7_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
+  float n13_ggx_t1 = (n13_ggx_t0.x * n13_ggx_t0.w);
+  vec3 n13_ggx_color = (vec3(1.0, 0.82757086, 0.60382736) * n13_ggx_t1);
+  float n15_p_split_y = v_world_position.y;
+  vec3 n16_sss_color = wg_srgb_to_linear_vec3(p_sss_color);
+  float n17_sss_t0 = (p_sss_strength * wg_subsurface_intensity_unit(n7_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n15_p_split_y));
+  vec3 n17_sss_color = (n16_sss_color * n17_sss_t0);
+  vec3 n18_glow = (n11_body_blend + n17_sss_color);
+  vec3 n19_lit = (n18_glow + n13_ggx_color);
+  float n20_height = wg_remap_clamped_nonempty_float(n15_p_split_y, -1.2, 1.2, 0.0, 1.0);
+  vec2 n21_crest_t0 = vec2(u_phase0, u_phase1) * 40.743664;
+  float n21_crest = wg_crest_foam(n20_height, b_normal, v_world_position.xz, n21_crest_t0, p_foam_threshold, 0.7, 0.4, 3.0);
+  vec3 n22_color = mix(n19_lit, vec3(0.82757086, 0.8900054, 0.93310684), vec3(n21_crest));
+  o_color = vec4(n22_color, 1.0);
 }

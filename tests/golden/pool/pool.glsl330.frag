@@ -203,6 +203,22 @@ vec2 wg_sine_normals_layer3(vec2 p, float ph30, float ph25) {
   return vec2(w * 0.05, w * 0.05);
 }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 // Voronoi (cellular) noise: one feature point per integer cell, placed by the PCG hash of
 // the cell (hash.glsl), so the pattern is the same on every GPU and on the CPU.
 
@@ -306,15 +322,16 @@ void main() {
   float n14_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n6_caustics_floor_t1, n6_caustics_floor_ratio);
   float n14_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n6_caustics_floor_t1, n6_caustics_floor_ratio);
   float n14_depth_thickness = wg_water_depth_thickness(n14_depth_t0, n14_depth_t1, wg_water_depth_ray_factor_axis(n13_depth, b_view_direction), 1.0);
-  float n15_tint_t0 = wg_depth_tint_linear_floored(n14_depth_thickness, p_tint_depth);
-  vec3 n15_tint_color = mix(vec3(1.0), p_tint_color, n15_tint_t0);
-  vec3 n16_body = (n12_floor_color * n15_tint_color);
-  float n17_surface_fresnel_t0 = wg_cos_incidence(n0_ripples_normal, b_view_direction);
-  float n17_surface_fresnel_t1 = wg_fresnel_schlick(n17_surface_fresnel_t0, 0.02);
-  vec3 n18_surface_sky_t0 = wg_reflect_dir(n0_ripples_normal, b_view_direction);
-  vec3 n18_surface_sky_color = texture(u_environment, n18_surface_sky_t0).rgb;
-  vec3 n19_surface_blend = mix(n16_body, n18_surface_sky_color, vec3(n17_surface_fresnel_t1));
-  float n21_glint_t0 = (1.5 * wg_blinn_phong_specular(n0_ripples_normal, b_view_direction, u_sun_direction, 400.0));
-  vec3 n22_color = (n19_surface_blend + vec3(n21_glint_t0));
-  o_color = vec4(n22_color, 1.0);
+  vec3 n15_tint_color = wg_srgb_to_linear_vec3(p_tint_color);
+  float n16_tint_t0 = wg_depth_tint_linear_floored(n14_depth_thickness, p_tint_depth);
+  vec3 n16_tint_color = mix(vec3(1.0), n15_tint_color, n16_tint_t0);
+  vec3 n17_body = (n12_floor_color * n16_tint_color);
+  float n18_surface_fresnel_t0 = wg_cos_incidence(n0_ripples_normal, b_view_direction);
+  float n18_surface_fresnel_t1 = wg_fresnel_schlick(n18_surface_fresnel_t0, 0.02);
+  vec3 n19_surface_sky_t0 = wg_reflect_dir(n0_ripples_normal, b_view_direction);
+  vec3 n19_surface_sky_color = texture(u_environment, n19_surface_sky_t0).rgb;
+  vec3 n20_surface_blend = mix(n17_body, n19_surface_sky_color, vec3(n18_surface_fresnel_t1));
+  float n22_glint_t0 = (1.5 * wg_blinn_phong_specular(n0_ripples_normal, b_view_direction, u_sun_direction, 400.0));
+  vec3 n23_color = (n20_surface_blend + vec3(n22_glint_t0));
+  o_color = vec4(n23_color, 1.0);
 }

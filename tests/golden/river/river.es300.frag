@@ -41,6 +41,19 @@ vec3 wg_camera_forward(mat4 view) {
   return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
 }
 
+// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(min(y * log2(x), 127.0));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
+
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -138,6 +151,22 @@ float wg_shore_waves(float depth, float frequency, float phase, float amplitude,
   return clamp(w * amplitude * (1.0 - d / dmax), 0.0, 1.0);
 }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 // water_depth: how much water lies between the surface and the scene behind it.
 
 // The factor that turns a view-depth difference into a distance along the view ray:
@@ -185,29 +214,31 @@ void main() {
   vec3 n18_nrm = wg_safe_normalize_vec3(n17_tilted);
   vec2 n19_nrm_xz = n18_nrm.xz;
   vec2 n20_offset = (n19_nrm_xz * vec2(0.03));
-  vec3 n21_body_depth = wg_camera_forward(u_view);
-  vec2 n22_body_depth_t0 = u_camera_near_far;
-  float n22_body_depth_t1 = n22_body_depth_t0.x;
-  float n22_body_depth_ratio = wg_near_far_ratio(n22_body_depth_t1, n22_body_depth_t0.y);
-  float n23_body_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n22_body_depth_t1, n22_body_depth_ratio);
-  float n23_body_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n22_body_depth_t1, n22_body_depth_ratio);
-  float n23_body_depth_thickness = wg_water_depth_thickness(n23_body_depth_t0, n23_body_depth_t1, wg_water_depth_ray_factor_axis(n21_body_depth, b_view_direction), 1.0);
-  float n24_body_tint_smooth_t0 = wg_depth_tint_smooth(n23_body_depth_thickness, p_max_depth);
-  vec3 n24_body_tint_smooth_color = mix(p_shallow_color, p_deep_color, n24_body_tint_smooth_t0);
-  vec2 n25_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n20_offset);
-  vec3 n25_body_refraction_color = texture(u_scene_color, n25_body_refraction_t0).rgb;
-  vec3 n26_body_body = mix(n25_body_refraction_color, n24_body_tint_smooth_color, vec3(n24_body_tint_smooth_t0));
-  vec2 n27_foam_edge_smooth_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
-  vec2 n27_foam_edge_smooth_t1 = v_world_position.xz * 1.0;
-  float n27_foam_edge_smooth_t2 = 0.5 * (texture(t2_foam, n27_foam_edge_smooth_t1 * 0.1 + n27_foam_edge_smooth_t0).r + texture(t2_foam, n27_foam_edge_smooth_t1 * 0.08 + vec2(-n27_foam_edge_smooth_t0.y, n27_foam_edge_smooth_t0.x)).r);
-  float n27_foam_edge_smooth = wg_edge_foam(n27_foam_edge_smooth_t2, wg_edge_foam_mask_smooth(n23_body_depth_thickness, 0.4), 0.25, 0.0, 1.0);
-  float n28_foam_shore = wg_shore_waves(n23_body_depth_thickness, 7.0, u_phase2, 0.7, 1.2);
-  float n29_foam_foam = max(n28_foam_shore, n27_foam_edge_smooth);
-  float n30_surface_fresnel_t0 = wg_cos_incidence(n18_nrm, b_view_direction);
-  float n30_surface_fresnel_t1 = wg_fresnel_schlick(n30_surface_fresnel_t0, 0.02);
-  vec3 n31_surface_sky_t0 = wg_reflect_dir(n18_nrm, b_view_direction);
-  vec3 n31_surface_sky_color = texture(u_environment, n31_surface_sky_t0).rgb;
-  vec3 n32_surface_blend = mix(n26_body_body, n31_surface_sky_color, vec3(n30_surface_fresnel_t1));
-  vec3 n33_color = mix(n32_surface_blend, vec3(0.9, 0.92, 0.88), vec3(n29_foam_foam));
-  o_color = vec4(n33_color, 1.0);
+  vec3 n21_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
+  vec3 n22_shallow_color = wg_srgb_to_linear_vec3(p_shallow_color);
+  vec3 n23_body_depth = wg_camera_forward(u_view);
+  vec2 n24_body_depth_t0 = u_camera_near_far;
+  float n24_body_depth_t1 = n24_body_depth_t0.x;
+  float n24_body_depth_ratio = wg_near_far_ratio(n24_body_depth_t1, n24_body_depth_t0.y);
+  float n25_body_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n24_body_depth_t1, n24_body_depth_ratio);
+  float n25_body_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n24_body_depth_t1, n24_body_depth_ratio);
+  float n25_body_depth_thickness = wg_water_depth_thickness(n25_body_depth_t0, n25_body_depth_t1, wg_water_depth_ray_factor_axis(n23_body_depth, b_view_direction), 1.0);
+  float n26_body_tint_smooth_t0 = wg_depth_tint_smooth(n25_body_depth_thickness, p_max_depth);
+  vec3 n26_body_tint_smooth_color = mix(n22_shallow_color, n21_deep_color, n26_body_tint_smooth_t0);
+  vec2 n27_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n20_offset);
+  vec3 n27_body_refraction_color = texture(u_scene_color, n27_body_refraction_t0).rgb;
+  vec3 n28_body_body = mix(n27_body_refraction_color, n26_body_tint_smooth_color, vec3(n26_body_tint_smooth_t0));
+  vec2 n29_foam_edge_smooth_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
+  vec2 n29_foam_edge_smooth_t1 = v_world_position.xz * 1.0;
+  float n29_foam_edge_smooth_t2 = 0.5 * (texture(t2_foam, n29_foam_edge_smooth_t1 * 0.1 + n29_foam_edge_smooth_t0).r + texture(t2_foam, n29_foam_edge_smooth_t1 * 0.08 + vec2(-n29_foam_edge_smooth_t0.y, n29_foam_edge_smooth_t0.x)).r);
+  float n29_foam_edge_smooth = wg_edge_foam(n29_foam_edge_smooth_t2, wg_edge_foam_mask_smooth(n25_body_depth_thickness, 0.4), 0.25, 0.0, 1.0);
+  float n30_foam_shore = wg_shore_waves(n25_body_depth_thickness, 7.0, u_phase2, 0.7, 1.2);
+  float n31_foam_foam = max(n30_foam_shore, n29_foam_edge_smooth);
+  float n32_surface_fresnel_t0 = wg_cos_incidence(n18_nrm, b_view_direction);
+  float n32_surface_fresnel_t1 = wg_fresnel_schlick(n32_surface_fresnel_t0, 0.02);
+  vec3 n33_surface_sky_t0 = wg_reflect_dir(n18_nrm, b_view_direction);
+  vec3 n33_surface_sky_color = texture(u_environment, n33_surface_sky_t0).rgb;
+  vec3 n34_surface_blend = mix(n28_body_body, n33_surface_sky_color, vec3(n32_surface_fresnel_t1));
+  vec3 n35_color = mix(n34_surface_blend, vec3(0.7874123, 0.82757086, 0.7484141), vec3(n31_foam_foam));
+  o_color = vec4(n35_color, 1.0);
 }

@@ -13,6 +13,19 @@ uniform vec3 p_sky;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
+// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(min(y * log2(x), 127.0));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
+
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -57,14 +70,31 @@ float wg_fresnel_exact(float cosi, float n1, float n2, float eta2, float cosCrit
   return 0.5 * (rs * rs + rp * rp);
 }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 void main() {
   vec3 b_normal = wg_safe_normalize_vec3(v_normal);
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
   float n1_along_x = v_world_position.x;
   float n2_tint_t0 = wg_depth_tint_smooth(n1_along_x, 10.0);
-  vec3 n2_tint_color = mix(vec3(0.0, 0.8, 0.7), vec3(0.0, 0.1, 0.3), n2_tint_t0);
+  vec3 n2_tint_color = mix(vec3(0.0, 0.60382736, 0.44798842), vec3(0.0, 0.010022826, 0.073238954), n2_tint_t0);
   float n3_fresnel_t0 = wg_cos_incidence(b_normal, b_view_direction);
   float n3_fresnel_t1 = wg_fresnel_exact(n3_fresnel_t0, 1.0, 1.333, 0.56278133, -0.776889);
-  vec3 n4_color = mix(n2_tint_color, p_sky, vec3(n3_fresnel_t1));
-  o_color = vec4(n4_color, 1.0);
+  vec3 n4_sky = wg_srgb_to_linear_vec3(p_sky);
+  vec3 n5_color = mix(n2_tint_color, n4_sky, vec3(n3_fresnel_t1));
+  o_color = vec4(n5_color, 1.0);
 }

@@ -43,6 +43,19 @@ vec3 wg_camera_forward(mat4 view) {
   return dot(f, f) < 0.5 ? vec3(0.0) : wg_safe_normalize_vec3(f);
 }
 
+// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(min(y * log2(x), 127.0));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
+
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -173,6 +186,22 @@ float wg_shore_waves(float depth, float frequency, float phase, float amplitude,
   w *= w;
   return clamp(w * amplitude * (1.0 - d / dmax), 0.0, 1.0);
 }
+
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
 
 // The same where n, v and l are proven normalized (value facts: unit length or exactly
 // zero, so safe re-normalisation leaves them unchanged) and power > 0 (so vdoth in [0, 1]
@@ -315,40 +344,44 @@ void main() {
   vec2 n29_offset = (n28_nrm_xz * vec2(0.04));
   vec2 n30_reflection_t0 = wg_scene_color_uv(b_screen_uv, n29_offset);
   vec3 n30_reflection_color = texture(u_reflection, n30_reflection_t0).rgb;
-  vec3 n31_body_depth = wg_camera_forward(u_view);
-  vec2 n32_body_depth_t0 = u_camera_near_far;
-  float n32_body_depth_t1 = n32_body_depth_t0.x;
-  float n32_body_depth_ratio = wg_near_far_ratio(n32_body_depth_t1, n32_body_depth_t0.y);
-  float n33_body_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n32_body_depth_t1, n32_body_depth_ratio);
-  float n33_body_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n32_body_depth_t1, n32_body_depth_ratio);
-  float n33_body_depth_thickness = wg_water_depth_thickness(n33_body_depth_t0, n33_body_depth_t1, wg_water_depth_ray_factor_axis(n31_body_depth, b_view_direction), 1.0);
-  float n34_body_tint_linear_t0 = wg_depth_tint_linear_floored(n33_body_depth_thickness, p_max_distance);
-  vec3 n34_body_tint_linear_color = mix(p_shallow_color, p_deep_color, n34_body_tint_linear_t0);
-  vec2 n35_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n29_offset);
-  vec3 n35_body_refraction_color = texture(u_scene_color, n35_body_refraction_t0).rgb;
-  vec3 n36_body_body = mix(n35_body_refraction_color, n34_body_tint_linear_color, vec3(n34_body_tint_linear_t0));
-  vec2 n37_foam_edge_lin_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
-  vec2 n37_foam_edge_lin_t1 = v_world_position.xz * 1.0;
-  float n37_foam_edge_lin_t2 = 0.5 * (texture(t2_foam, n37_foam_edge_lin_t1 * 0.1 + n37_foam_edge_lin_t0).r + texture(t2_foam, n37_foam_edge_lin_t1 * 0.08 + vec2(-n37_foam_edge_lin_t0.y, n37_foam_edge_lin_t0.x)).r);
-  float n37_foam_edge_lin = wg_edge_foam(n37_foam_edge_lin_t2, wg_edge_foam_mask_linear(n33_body_depth_thickness, 0.5), 0.35, 0.0, 1.0);
-  float n38_foam_shore = wg_shore_waves(n33_body_depth_thickness, 5.0, u_phase2, 0.8, 1.5);
-  float n39_foam_foam = max(n38_foam_shore, n37_foam_edge_lin);
-  float n40_caustics_fade = (1.0 - n34_body_tint_linear_t0);
-  float n43_caustics_floor_t0 = texture(u_scene_depth, b_screen_uv).r;
-  float n43_caustics_floor_t1 = wg_linearize_depth_ratio_known(n43_caustics_floor_t0, n32_body_depth_t1, n32_body_depth_ratio);
-  vec3 n43_caustics_floor_position = wg_scene_depth_position(b_screen_uv, n43_caustics_floor_t1, u_camera_position, u_view, u_projection);
-  vec2 n44_caustics_floor_xz = n43_caustics_floor_position.xz;
-  vec2 n45_caustics_average_t0 = (n44_caustics_floor_xz * 0.6);
-  float n45_caustics_average_t1 = wg_voronoi_caustics_layer(n45_caustics_average_t0, 1.0, u_phase3, true, true);
-  float n45_caustics_average_t2 = wg_voronoi_caustics_layer((n45_caustics_average_t0 * 1.3 + 5.0), 1.0, u_phase4, true, true);
-  float n45_caustics_average = (p_caustics_strength * (0.5 * (n45_caustics_average_t1 + n45_caustics_average_t2)));
-  float n46_caustics_light = (n45_caustics_average * n40_caustics_fade);
-  vec3 n47_body_lit = (n36_body_body + vec3(n46_caustics_light));
-  vec3 n48_surface_color = mix(n47_body_lit, n30_reflection_color, vec3(n27_fresnel_t1));
-  float n51_height_y = v_world_position.y;
-  float n52_sss_t0 = (0.6 * wg_subsurface_intensity_unit(n26_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n51_height_y));
-  vec3 n52_sss_color = (p_sss_color * n52_sss_t0);
-  vec3 n53_glow = (n48_surface_color + n52_sss_color);
-  vec3 n54_color = mix(n53_glow, p_foam_color, vec3(n39_foam_foam));
-  o_color = vec4(n54_color, 1.0);
+  vec3 n31_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
+  vec3 n32_shallow_color = wg_srgb_to_linear_vec3(p_shallow_color);
+  vec3 n33_body_depth = wg_camera_forward(u_view);
+  vec2 n34_body_depth_t0 = u_camera_near_far;
+  float n34_body_depth_t1 = n34_body_depth_t0.x;
+  float n34_body_depth_ratio = wg_near_far_ratio(n34_body_depth_t1, n34_body_depth_t0.y);
+  float n35_body_depth_t0 = wg_linearize_depth_ratio_known(texture(u_scene_depth, b_screen_uv).r, n34_body_depth_t1, n34_body_depth_ratio);
+  float n35_body_depth_t1 = wg_linearize_depth_ratio_known(gl_FragCoord.z, n34_body_depth_t1, n34_body_depth_ratio);
+  float n35_body_depth_thickness = wg_water_depth_thickness(n35_body_depth_t0, n35_body_depth_t1, wg_water_depth_ray_factor_axis(n33_body_depth, b_view_direction), 1.0);
+  float n36_body_tint_linear_t0 = wg_depth_tint_linear_floored(n35_body_depth_thickness, p_max_distance);
+  vec3 n36_body_tint_linear_color = mix(n32_shallow_color, n31_deep_color, n36_body_tint_linear_t0);
+  vec2 n37_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n29_offset);
+  vec3 n37_body_refraction_color = texture(u_scene_color, n37_body_refraction_t0).rgb;
+  vec3 n38_body_body = mix(n37_body_refraction_color, n36_body_tint_linear_color, vec3(n36_body_tint_linear_t0));
+  vec2 n39_foam_edge_lin_t0 = vec2(u_phase0, u_phase1) * 0.15915494;
+  vec2 n39_foam_edge_lin_t1 = v_world_position.xz * 1.0;
+  float n39_foam_edge_lin_t2 = 0.5 * (texture(t2_foam, n39_foam_edge_lin_t1 * 0.1 + n39_foam_edge_lin_t0).r + texture(t2_foam, n39_foam_edge_lin_t1 * 0.08 + vec2(-n39_foam_edge_lin_t0.y, n39_foam_edge_lin_t0.x)).r);
+  float n39_foam_edge_lin = wg_edge_foam(n39_foam_edge_lin_t2, wg_edge_foam_mask_linear(n35_body_depth_thickness, 0.5), 0.35, 0.0, 1.0);
+  float n40_foam_shore = wg_shore_waves(n35_body_depth_thickness, 5.0, u_phase2, 0.8, 1.5);
+  float n41_foam_foam = max(n40_foam_shore, n39_foam_edge_lin);
+  float n42_caustics_fade = (1.0 - n36_body_tint_linear_t0);
+  float n45_caustics_floor_t0 = texture(u_scene_depth, b_screen_uv).r;
+  float n45_caustics_floor_t1 = wg_linearize_depth_ratio_known(n45_caustics_floor_t0, n34_body_depth_t1, n34_body_depth_ratio);
+  vec3 n45_caustics_floor_position = wg_scene_depth_position(b_screen_uv, n45_caustics_floor_t1, u_camera_position, u_view, u_projection);
+  vec2 n46_caustics_floor_xz = n45_caustics_floor_position.xz;
+  vec2 n47_caustics_average_t0 = (n46_caustics_floor_xz * 0.6);
+  float n47_caustics_average_t1 = wg_voronoi_caustics_layer(n47_caustics_average_t0, 1.0, u_phase3, true, true);
+  float n47_caustics_average_t2 = wg_voronoi_caustics_layer((n47_caustics_average_t0 * 1.3 + 5.0), 1.0, u_phase4, true, true);
+  float n47_caustics_average = (p_caustics_strength * (0.5 * (n47_caustics_average_t1 + n47_caustics_average_t2)));
+  float n48_caustics_light = (n47_caustics_average * n42_caustics_fade);
+  vec3 n49_body_lit = (n38_body_body + vec3(n48_caustics_light));
+  vec3 n50_surface_color = mix(n49_body_lit, n30_reflection_color, vec3(n27_fresnel_t1));
+  float n53_height_y = v_world_position.y;
+  vec3 n54_sss_color = wg_srgb_to_linear_vec3(p_sss_color);
+  float n55_sss_t0 = (0.6 * wg_subsurface_intensity_unit(n26_nrm, b_view_direction, u_sun_direction, 0.3, 4.0, n53_height_y));
+  vec3 n55_sss_color = (n54_sss_color * n55_sss_t0);
+  vec3 n56_glow = (n50_surface_color + n55_sss_color);
+  vec3 n57_foam_color = wg_srgb_to_linear_vec3(p_foam_color);
+  vec3 n58_color = mix(n56_glow, n57_foam_color, vec3(n41_foam_foam));
+  o_color = vec4(n58_color, 1.0);
 }

@@ -216,6 +216,22 @@ vec2 wg_ripple_normals_layer(vec2 uv, vec4 freq, vec2 phase) {
               sin(mod(dot(freq.zw, uv), 6.283185307179586) + phase.y));
 }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 // Value noise: hashed values on the integer lattice, blended with the cubic Hermite weight
 // 3t^2 - 2t^3 (the top-down water plan's valueNoise, with the PCG hash of hash.glsl in place of its
 // fract-based hash21). Output in [0, 1).
@@ -301,14 +317,16 @@ void main() {
   vec2 n8_ripples_t1 = wg_ripple_normals_layer(n8_ripples_t0, vec4(23.0, 17.0, 19.0, -23.0), vec2(u_phase5, u_phase6)) * 0.5 + wg_ripple_normals_layer(n8_ripples_t0, vec4(47.0, 31.0, 37.0, -43.0), vec2(-u_phase7, u_phase8)) * 0.3 + wg_ripple_normals_layer(n8_ripples_t0, vec4(89.0, -67.0, 73.0, 61.0), vec2(u_phase9, -u_phase10)) * 0.2;
   vec3 n8_ripples_normal = wg_waves_unit_or_vec3(n6_wave_normal + 0.15 * vec3(n8_ripples_t1.x, 0.0, n8_ripples_t1.y), vec3(0.0, 1.0, 0.0));
   float n10_glint_t0 = (0.6 * wg_blinn_phong_specular(n8_ripples_normal, b_view_direction, u_sun_direction, 200.0));
-  float n11_varied_t0 = wg_color_variation_noise(((v_world_position.xz * 0.02) + vec2(u_phase11 * 40.743664)));
-  vec3 n11_varied_color = wg_color_variation(p_water_color, n8_ripples_normal, u_sun_direction, n3_height, n11_varied_t0, 0.2, 0.1, 0.15);
-  vec3 n12_ambient = (n11_varied_color * vec3(0.55));
-  float n13_light_t0 = wg_lambert(n8_ripples_normal, u_sun_direction);
-  vec3 n13_light_color = (vec3(1.0) * n11_varied_color * n13_light_t0);
-  vec3 n14_diffuse = (n13_light_color * vec3(0.45));
-  vec3 n15_shaded_base = (n12_ambient + n14_diffuse);
-  vec3 n16_shaded = (n15_shaded_base + vec3(n10_glint_t0));
-  vec3 n17_with_foam = mix(n16_shaded, p_foam_color, vec3(n7_crest));
-  o_color = vec4(n17_with_foam, 1.0);
+  vec3 n11_water_color = wg_srgb_to_linear_vec3(p_water_color);
+  float n12_varied_t0 = wg_color_variation_noise(((v_world_position.xz * 0.02) + vec2(u_phase11 * 40.743664)));
+  vec3 n12_varied_color = wg_color_variation(n11_water_color, n8_ripples_normal, u_sun_direction, n3_height, n12_varied_t0, 0.2, 0.1, 0.15);
+  vec3 n13_ambient = (n12_varied_color * vec3(0.55));
+  float n14_light_t0 = wg_lambert(n8_ripples_normal, u_sun_direction);
+  vec3 n14_light_color = (vec3(1.0) * n12_varied_color * n14_light_t0);
+  vec3 n15_diffuse = (n14_light_color * vec3(0.45));
+  vec3 n16_shaded_base = (n13_ambient + n15_diffuse);
+  vec3 n17_shaded = (n16_shaded_base + vec3(n10_glint_t0));
+  vec3 n18_foam_color = wg_srgb_to_linear_vec3(p_foam_color);
+  vec3 n19_with_foam = mix(n17_shaded, n18_foam_color, vec3(n7_crest));
+  o_color = vec4(n19_with_foam, 1.0);
 }

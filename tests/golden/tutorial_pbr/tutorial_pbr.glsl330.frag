@@ -65,6 +65,19 @@ float wg_unit_sin2(vec3 n, vec3 h) {
   return abs(dot(n, n) * dot(h, h) - 1.0) < 4e-6 ? dot(c, c) : -1.0;
 }
 
+// pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
+// 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
+// a result past float's range is 2^127 = 1.70e38, not +inf (pow(10, 39), pow(0.5, -129)).
+// Guarded functions here compute both sides first and choose with ?: between plain values:
+// glslang turns that into one OpSelect, where ?: or an early return around an expression
+// becomes branches and blocks that spirv-opt does not merge (issue 10: the hand-written
+// water is smaller in SPIR-V). The value not chosen may be inf or NaN; it is never used.
+float wg_safe_pow_float(float x, float y) {
+  float p = exp2(min(y * log2(x), 127.0));
+  float edge = y > 0.0 ? 0.0 : 1.0;
+  return x > 0.0 ? p : edge;
+}
+
 // smoothstep defined for equal edges (a step at the edge) and reversed edges (GLSL leaves
 // edge0 >= edge1 undefined).
 float wg_smoothstep_float(float e0, float e1, float x) {
@@ -220,6 +233,22 @@ float wg_remap_clamped_nonempty_float(float x, float a, float b, float c, float 
 // the screen, no stretched border texels).
 vec2 wg_scene_color_uv(vec2 uv, vec2 offset) { return clamp(uv + offset, vec2(0.0), vec2(1.0)); }
 
+// The sRGB transfer function (IEC 61966-2-1) decoding an sRGB-encoded component to linear:
+// c / 12.92 up to the knee 0.04045, ((c + 0.055) / 1.055)^2.4 above it. Extended: a negative
+// c mirrors the curve (-f(-c)), c > 1 continues the power segment (an HDR colour), capped at
+// 2^127 by the guarded pow (the base is >= 0.052, never negative). For c <= 1 the power is
+// held at 1, so [0, 1] maps into [0, 1] even where float rounds (c + 0.055) / 1.055 up.
+float wg_srgb_to_linear_float(float c) {
+  float a = abs(c);
+  float p = wg_safe_pow_float((a + 0.055) / 1.055, 2.4);
+  float curve = a <= 0.04045 ? a / 12.92 : (a <= 1.0 ? min(p, 1.0) : p);
+  return c < 0.0 ? -curve : curve;
+}
+
+vec2 wg_srgb_to_linear_vec2(vec2 c) { return vec2(wg_srgb_to_linear_float(c.x), wg_srgb_to_linear_float(c.y)); }
+
+vec3 wg_srgb_to_linear_vec3(vec3 c) { return vec3(wg_srgb_to_linear_vec2(c.xy), wg_srgb_to_linear_float(c.z)); }
+
 // water_depth: how much water lies between the surface and the scene behind it.
 
 // The factor that turns a view-depth difference into a distance along the view ray:
@@ -300,16 +329,18 @@ void main() {
   vec3 n23_bend = (n8_bent_direction - n22_straight);
   vec2 n24_bend_xz = n23_bend.xz;
   vec2 n25_refraction_offset = (n24_bend_xz * vec2(n20_bend_scale));
-  float n26_body_tint_smooth_t0 = wg_depth_tint_smooth(n17_depth_thickness, p_max_depth);
-  vec3 n26_body_tint_smooth_color = mix(p_shallow_color, p_deep_color, n26_body_tint_smooth_t0);
-  vec2 n27_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n25_refraction_offset);
-  vec3 n27_body_refraction_color = texture(u_scene_color, n27_body_refraction_t0).rgb;
-  vec3 n28_body_body = mix(n27_body_refraction_color, n26_body_tint_smooth_color, vec3(n26_body_tint_smooth_t0));
-  vec3 n29_surface_color = mix(n28_body_body, n13_reflection, vec3(n14_fresnel_t1));
-  vec4 n31_ggx_t0 = wg_ggx_specular(n7_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
-  float n31_ggx_t1 = (n31_ggx_t0.x * n31_ggx_t0.w);
-  vec3 n31_ggx_color = (vec3(1.0, 0.95, 0.85) * n31_ggx_t1);
-  vec3 n32_lit = (n29_surface_color + n31_ggx_color);
-  vec3 n33_color = mix(n32_lit, vec3(0.95, 0.97, 1.0), vec3(n18_foam));
-  o_color = vec4(n33_color, 1.0);
+  vec3 n26_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
+  vec3 n27_shallow_color = wg_srgb_to_linear_vec3(p_shallow_color);
+  float n28_body_tint_smooth_t0 = wg_depth_tint_smooth(n17_depth_thickness, p_max_depth);
+  vec3 n28_body_tint_smooth_color = mix(n27_shallow_color, n26_deep_color, n28_body_tint_smooth_t0);
+  vec2 n29_body_refraction_t0 = wg_scene_color_uv(b_screen_uv, n25_refraction_offset);
+  vec3 n29_body_refraction_color = texture(u_scene_color, n29_body_refraction_t0).rgb;
+  vec3 n30_body_body = mix(n29_body_refraction_color, n28_body_tint_smooth_color, vec3(n28_body_tint_smooth_t0));
+  vec3 n31_surface_color = mix(n30_body_body, n13_reflection, vec3(n14_fresnel_t1));
+  vec4 n33_ggx_t0 = wg_ggx_specular(n7_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
+  float n33_ggx_t1 = (n33_ggx_t0.x * n33_ggx_t0.w);
+  vec3 n33_ggx_color = (vec3(1.0, 0.8900054, 0.6920711) * n33_ggx_t1);
+  vec3 n34_lit = (n31_surface_color + n33_ggx_color);
+  vec3 n35_color = mix(n34_lit, vec3(0.8900054, 0.93310684, 1.0), vec3(n18_foam));
+  o_color = vec4(n35_color, 1.0);
 }
