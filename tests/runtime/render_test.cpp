@@ -64,10 +64,13 @@ TEST_P(ExampleGraph, RendersNotBlankAndFinite) {
   EXPECT_EQ(pf.targetBytes, pf.plan.totalBytes());
 }
 
+// Through the graph's own view (its "view": tone mapper and exposure), as `render` shows it.
 TEST_P(ExampleGraph, MatchesGoldenImage) {
   const Case& c = GetParam();
   CompileResult r = test::compileExample(c.graph);
-  Preview p = renderPreview(r, c.target, test::smallSettings());
+  RenderSettings s = test::smallSettings();
+  s.view = r.program.view;
+  Preview p = renderPreview(r, c.target, s);
   std::string golden = test::sourcePath("tests/golden/images/" + c.graph + ".png");
   if (test::updatingGoldens()) {
     if (c.target == Target::Glsl330) writePng(golden, p.image);  // the reference is the desktop GL image
