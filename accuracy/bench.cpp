@@ -24,6 +24,7 @@
 #include "runtime/egl_context.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
+#include "runtime/median.h"
 
 namespace wg::accuracy {
 namespace {
@@ -35,12 +36,7 @@ using ordered = nlohmann::ordered_json;
   throw std::runtime_error((s.graphFile.empty() ? s.configFile : s.graphFile) + ": error: " + m);
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using rt::median;
 
 std::string diagText(const Diagnostics& d) {
   std::string s;

@@ -14,6 +14,7 @@
 #include "runtime/egl_context.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
+#include "runtime/median.h"
 
 namespace wg::accuracy {
 
@@ -25,11 +26,7 @@ struct GlTuneMeasurements::Entry {
 
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using rt::median;
 
 std::string diagText(const Diagnostics& d) {
   std::string s;

@@ -29,14 +29,11 @@
 #include "runtime/egl_context.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
+#include "runtime/median.h"
 
 namespace {
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using wg::rt::median;
 
 struct Configuration {
   const char* name;

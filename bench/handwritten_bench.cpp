@@ -39,6 +39,7 @@
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
 #include "runtime/runtime_error.h"
+#include "runtime/median.h"
 
 namespace {
 
@@ -46,11 +47,7 @@ struct Size {
   int width, height;
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n == 0 ? 0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+using wg::rt::median;
 
 // Instructions after spirv-opt -O: {all stages, fragment stage}; {-1, -1} on failure.
 // With dumpPrefix set, each stage's module (before -O) is written to PREFIX.STAGE.spv, to

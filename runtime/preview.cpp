@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "runtime/runtime_error.h"
+#include "runtime/median.h"
 
 namespace wg::rt {
 
@@ -67,13 +68,7 @@ std::map<std::string, TextureOrigin> textureOrigins(const CompileResult& result)
   return out;
 }
 
-double Preview::medianMs() const {
-  if (frameMs.empty()) return 0;
-  std::vector<double> v = frameMs;
-  std::sort(v.begin(), v.end());
-  size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
+double Preview::medianMs() const { return median(frameMs); }
 
 Preview renderPreview(const CompileResult& result, Target target, const RenderSettings& settings, int frames,
                       bool warmup) {
