@@ -27,6 +27,9 @@ int main(int argc, char** argv) {
   Runner scene = addSceneCommand(app, global);
   Runner tune = addTuneCommand(app, global);
 
+  // A usage error is one line naming the option, as the commands' own usage errors are
+  // (CLI11's default adds "Run with --help for more information.").
+  app.failure_message([](const CLI::App*, const CLI::Error& e) { return "watergraph: " + std::string(e.what()) + "\n"; });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -108,6 +108,7 @@ TEST(RenderCli, ToneMapperAndExposureFlags) {
     EXPECT_EQ(code, 2) << bad << ": " << out;
     const std::string flag = std::string(bad).substr(0, std::string(bad).find(' '));
     EXPECT_NE(out.find(flag + ":"), std::string::npos) << bad << ": " << out;
+    EXPECT_EQ(test::splitLines(out).size(), 1u) << "one line: " << out;
   }
   EXPECT_FALSE(std::filesystem::exists(dir + "/x.png"));
   std::string out = render(lake + " -o " + dir + "/plain.png --size 32x18", &code);
