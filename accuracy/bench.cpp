@@ -330,8 +330,10 @@ BenchResult runBench(const BenchSettings& settings) {
     size_t n = 0;
     for (size_t i = 0; i < p.image.rgba32f.size(); ++i) {
       if (i % 4 == 3) continue;
-      double e = std::abs(static_cast<double>(p.image.rgba32f[i]) - ref->image.rgba32f[i]);
-      if (!std::isfinite(e)) e = INFINITY;
+      // Clamped to [0, 1] as exposure 0 shows them (a graph family's frame is HDR: a sun
+      // glint would outweigh the picture); a non-finite value is an infinite error.
+      const double a = p.image.rgba32f[i], b = ref->image.rgba32f[i];
+      double e = std::isfinite(a) && std::isfinite(b) ? std::abs(std::clamp(a, 0.0, 1.0) - std::clamp(b, 0.0, 1.0)) : INFINITY;
       sum += e, sq += e * e, mx = std::max(mx, e), ++n;
     }
     p.level.maxError = mx;

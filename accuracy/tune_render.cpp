@@ -137,7 +137,10 @@ TuneError GlTuneMeasurements::compare(Entry& e) {
     for (size_t i = 0; i < frame.size(); ++i) {
       if (!std::isfinite(frame[i])) finite = false;
       if (i % 4 == 3) continue;  // colour error over R, G, B
-      double d = std::abs(static_cast<double>(frame[i]) - ref[i]);
+      // As exposure 0 without a tone curve shows the frame: linear values clamped to [0, 1].
+      // The frame is HDR (docs/color.md): a sun glint of tens of thousands that moves a pixel
+      // would otherwise outweigh the whole picture, and no display shows it above white.
+      double d = std::abs(std::clamp(static_cast<double>(frame[i]), 0.0, 1.0) - std::clamp(static_cast<double>(ref[i]), 0.0, 1.0));
       sq += d * d, mx = std::max(mx, d), ++n;
     }
     if (!finite) {
