@@ -53,6 +53,30 @@ TEST(Editor, WithoutADisplayItSaysSoAndExits2) {
   EXPECT_NE(lines[0].find("cannot open a window"), std::string::npos) << err;
 }
 
+// --tonemap and --exposure choose the preview's output transform over the graph's view
+// (lake states neutral at 0 EV); a bad one is a usage error naming the flag, exit 2.
+TEST(Editor, TheViewFlagsChooseThePreviewsOutputTransform) {
+  Workspace ws;
+  auto preview = [&](const std::string& flags, const char* name) {
+    EditorRun r = runEditor(ws.dir, ws.script(R"([{"op": "save_preview", "path": ")" + ws.path(name) + R"("}])") +
+                                        " --time 3.5 " + flags + " " + test::shellQuote(ws.graph));
+    EXPECT_EQ(r.status, 0) << flags << ": " << r.err;
+    return rt::readPng(ws.path(name));
+  };
+  rt::Image graphView = preview("", "graph.png");
+  rt::Image dark = preview("--tonemap none --exposure -3", "dark.png");
+  EXPECT_LT(rt::psnrRgb8(graphView, dark), 25.0) << "the flags reach the preview";
+  double sumGraph = 0, sumDark = 0;
+  for (size_t i = 0; i < graphView.rgba8.size(); i += 4) sumGraph += graphView.rgba8[i + 1], sumDark += dark.rgba8[i + 1];
+  EXPECT_LT(sumDark, 0.7 * sumGraph) << "-3 EV is darker";
+  for (const char* bad : {"--tonemap filmic", "--exposure nan", "--exposure 30"}) {
+    EditorRun r = runEditor(ws.dir, std::string(bad) + " " + test::shellQuote(ws.graph));
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_NE((r.out + r.err).find(std::string(bad).substr(0, std::string(bad).find(' ')) + ":"), std::string::npos)
+        << bad << ": " << r.out << r.err;
+  }
+}
+
 TEST(Editor, ScriptedEditsAreSavedCanonicallyAndReopenUnchanged) {
   Workspace ws;
   EditorRun r = runEditor(ws.dir, ws.script(R"([
