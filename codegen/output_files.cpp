@@ -71,10 +71,22 @@ std::string whyNotWritable(const std::string& path, const struct stat* st) {
       return "cannot replace: the file is read-only";
     return "";
   }
+  // A missing folder is made when the file is written, as -o makes its folder: the nearest
+  // existing ancestor must be a folder we may write into.
   std::filesystem::path parent = std::filesystem::path(path).parent_path();
   std::error_code ec;
-  if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
-    return "cannot write: the folder " + parent.string() + " does not exist";
+  std::filesystem::path existing = parent;
+  while (!existing.empty() && !std::filesystem::exists(std::filesystem::symlink_status(existing, ec)))
+    existing = existing.parent_path();
+  if (existing.empty() || existing == parent) {
+    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
+      return "cannot write: " + parent.string() + " is not a folder";
+    return "";
+  }
+  if (!std::filesystem::is_directory(existing, ec))
+    return "cannot write: the folder " + parent.string() + " cannot be made (" + existing.string() + " is not a folder)";
+  if (::access(existing.c_str(), W_OK | X_OK) != 0)
+    return "cannot write: the folder " + parent.string() + " cannot be made (" + existing.string() + " is not writable)";
   return "";
 }
 
@@ -103,6 +115,15 @@ bool writeFileAtomically(const std::string& path, const std::string& contents, D
     std::string why = whyNotWritable(path, &st);
     if (!why.empty()) {
       diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, why);
+      return false;
+    }
+  }
+  if (!exists && target.has_parent_path()) {  // a folder checkWritable found it can make
+    std::error_code ec;
+    std::filesystem::create_directories(target.parent_path(), ec);
+    if (ec) {
+      diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0},
+                  "cannot write: the folder " + target.parent_path().string() + " cannot be made: " + ec.message());
       return false;
     }
   }

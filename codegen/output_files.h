@@ -14,7 +14,8 @@ namespace wg {
 bool writeOutputFiles(const std::string& dir, const std::vector<OutputFile>& files, Diagnostics& diags);
 // One file, same guarantee (used by fmt and the editor's save).
 bool writeFileAtomically(const std::string& path, const std::string& contents, Diagnostics& diags);
-// Whether writeFileAtomically could write `path` now (its folder exists; an existing file
+// Whether writeFileAtomically could write `path` now (its folder exists, or can be made
+// under the nearest existing folder, which writeFileAtomically then does; an existing file
 // is a regular, writable file); the reason as an error otherwise. For a file written after
 // others (a depfile), checked before any of them.
 bool checkWritable(const std::string& path, Diagnostics& diags);

@@ -203,19 +203,33 @@ TEST(Usability, DepfileListsEveryGraphFileAndTextureAGraphIsMadeOf) {
   EXPECT_EQ(eco::wgRun("validate " + shellQuote(river) + " --depfile x.d").exit, 2);
 }
 
-// Found in review: a --depfile that cannot be written (no such folder, a folder in its
-// place) failed after every graph's files were written: found first now, nothing written.
+// Found in review: a --depfile that cannot be written (a folder in its place, a file where
+// its folder would be made) failed after every graph's files were written: found first now,
+// nothing written.
 TEST(Usability, ADepfileThatCannotBeWrittenLeavesNoCompiledFiles) {
   eco::TempDir tmp;
   std::string lake = test::sourcePath("graphs/lake.json");
   std::filesystem::create_directories(tmp / "folder.d");
-  for (const std::string depfile : {tmp / "missing/x.d", tmp / "folder.d"}) {
+  test::writeFile(tmp / "afile", "x");
+  for (const std::string depfile : {tmp / "afile/sub/x.d", tmp / "folder.d"}) {
     SCOPED_TRACE(depfile);
     auto r = eco::wgRun("compile " + shellQuote(lake) + " -o " + shellQuote(tmp / "out") + " --depfile " + shellQuote(depfile));
     EXPECT_EQ(r.exit, 2) << r.err;
     EXPECT_NE(r.err.find(depfile + ": error: [WG051] cannot"), std::string::npos) << r.err;
     EXPECT_FALSE(std::filesystem::exists(tmp / "out")) << "compiled files were written";
   }
+}
+
+// The README's own line on a clean tree: the depfile's folder is the one -o makes (with
+// CMake's Unix Makefiles generator nothing makes it before the command runs).
+TEST(Usability, ADepfileInTheFolderOfTheOutputsIsWrittenThere) {
+  eco::TempDir tmp;
+  std::string river = test::sourcePath("graphs/river.json");
+  auto r = eco::wgRun("compile " + shellQuote(river) + " -o " + shellQuote(tmp / "out") + " --depfile " +
+                      shellQuote(tmp / "out/deps/river.d") + " --target glsl330");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  EXPECT_TRUE(std::filesystem::exists(tmp / "out/river.glsl330.frag"));
+  EXPECT_NE(test::readFile(tmp / "out/deps/river.d").find("river.json"), std::string::npos);
 }
 
 TEST(Usability, NodesPrintsAFunctionGraphsInterface) {
