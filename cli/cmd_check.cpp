@@ -18,6 +18,7 @@
 #include "codegen/compile.h"
 #include "codegen/texture_files.h"
 #include "core/graph_io.h"
+#include "core/node_preview_graph.h"
 #include "nodes/registry.h"
 #include "runtime/image.h"
 #include "runtime/preview.h"
@@ -107,6 +108,9 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
     for (const auto& path : args.graphs) {
       Diagnostics diags;
       auto graph = loadGraphFile(path, diags);
+      // A function graph with no output slots shows its first interface output, as in the editor.
+      if (std::string why; graph && graph->interface && graph->outputs.empty())
+        if (auto shown = interfaceOutputGraph(*graph, &why)) graph = std::move(shown);
       std::optional<CompileResult> result;
       if (graph) {
         CompileOptions options;

@@ -20,6 +20,7 @@
 #include "codegen/compile.h"
 #include "codegen/derived_c_header.h"
 #include "codegen/depfile.h"
+#include "core/node_preview_graph.h"
 #include "codegen/frequency_report.h"
 #include "codegen/output_files.h"
 #include "codegen/spirv_cross_targets.h"
@@ -201,6 +202,14 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
   GraphOutcome outcome;
   outcome.name = graphBaseName(path);
   auto graph = loadGraphFile(path, diags);
+  // A function graph with no output slots (a library of node types) is compiled through its
+  // first interface output, as the editor previews it; validate checks each output so.
+  std::optional<Graph> library;
+  if (graph && graph->interface && graph->outputs.empty()) {
+    std::string why;
+    library = *graph;
+    if (auto shown = interfaceOutputGraph(*library, &why)) graph = std::move(shown);
+  }
   std::optional<CompileResult> result;
   if (graph) {
     CompileOptions options;
@@ -208,6 +217,11 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     options.preset = args.preset;
     options.derivedUniforms = args.derivedUniforms || targets.cHeader;
     result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
+    for (size_t i = 1; library && result && !write && i < library->interface->outputs.size(); ++i) {
+      std::string why;
+      if (auto other = interfaceOutputGraph(*library, &why, i))
+        if (!compileGraphWithCross(*other, defaultRegistry(), options, targets.cross, diags)) result.reset();
+    }
     if (result && targets.cHeader) result->files.push_back(derivedHeaderFile(outcome.name, result->manifest));
     outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }

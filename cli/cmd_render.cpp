@@ -15,6 +15,7 @@
 #include "codegen/output_files.h"
 #include "codegen/texture_files.h"
 #include "core/graph_io.h"
+#include "core/node_preview_graph.h"
 #include "nodes/registry.h"
 #include "runtime/image.h"
 #include "runtime/preview.h"
@@ -114,6 +115,9 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   }
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
+  // A function graph with no output slots shows its first interface output, as in the editor.
+  if (std::string why; graph && graph->interface && graph->outputs.empty())
+    if (auto shown = interfaceOutputGraph(*graph, &why)) graph = std::move(shown);
   std::optional<CompileResult> result;
   if (graph) {
     CompileOptions options;

@@ -27,7 +27,7 @@
 #include "editor/inspector.h"
 #include "editor/live_preview.h"
 #include "editor/node_canvas.h"
-#include "editor/node_preview_graph.h"
+#include "core/node_preview_graph.h"
 #include "editor/orbit_camera.h"
 #include "editor/script_runner.h"
 #include "nodes/registry.h"

@@ -202,6 +202,34 @@ TEST(CliValidate, GoodGraphsExitZeroAndWriteNothing) {
   EXPECT_NE(r.out.find("ok"), std::string::npos) << r.out;
 }
 
+// Function graphs (graphs/lib/) need no output slots: validate checks each through every
+// interface output, compile and render take the first, as the editor previews it (one rule;
+// they failed with WG031 "connects no outputs"). A library's own errors are still found,
+// here an interface output whose source has another type than it declares.
+TEST(CliValidate, FunctionGraphsValidateAsLibrariesAndPreviewTheirFirstOutput) {
+  std::string args;
+  for (const auto& g : test::listFiles(test::sourcePath("graphs/lib"), ".json"))
+    args += " " + shellQuote(test::sourcePath("graphs/lib/" + g));
+  ASSERT_FALSE(args.empty());
+  CmdResult r = wgRun("validate" + args);
+  EXPECT_EQ(r.exit, 0) << r.out << r.err;
+  TempDir tmp;
+  r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lib/shore_foam.json")) + " -o " + shellQuote(tmp / "out") +
+            " --target glsl330");
+  EXPECT_EQ(r.exit, 0) << r.err;
+  EXPECT_NE(test::readFile(tmp / "out/shore_foam.glsl330.frag").find("o_color"), std::string::npos);
+  // Two outputs; the second is declared float but its source is a vec3.
+  test::writeFile(tmp / "two.json", R"({"version": 1, "name": "two",
+    "interface": {"outputs": {"fine": {"type": "float", "source": "u.out"},
+                              "broken": {"type": "float", "source": "bad.out"}}},
+    "nodes": [{"id": "u", "type": "time"},
+              {"id": "bad", "type": "fract", "inputs": {"x": "sampled.rgb"}},
+              {"id": "sampled", "type": "texture_sample", "inputs": {"uv": "u.out"}}]})");
+  r = wgRun("validate " + shellQuote(tmp / "two.json"));
+  EXPECT_EQ(r.exit, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("[WG074] interface output 'broken'"), std::string::npos) << r.err;
+}
+
 TEST(CliValidate, BadGraphsExitOneWithOneLinePerFailure) {
   // Each of these has exactly one problem.
   std::vector<std::string> paths = {badGraph("WG020_unknown_node_type.json"), badGraph("WG024_dangling_reference.json"),

@@ -10,7 +10,7 @@
 #include "editor/edit_script.h"
 #include "editor/graph_change.h"
 #include "editor/graph_layout.h"
-#include "editor/node_preview_graph.h"
+#include "core/node_preview_graph.h"
 #include "editor/orbit_camera.h"
 #include "nodes/registry.h"
 #include "test_support.h"

@@ -17,7 +17,7 @@
 #include "editor/error_list.h"
 #include "editor/file_watcher.h"
 #include "editor/node_palette.h"
-#include "editor/node_preview_graph.h"
+#include "core/node_preview_graph.h"
 #include "editor_run.h"
 #include "nodes/registry.h"
 #include "runtime/image.h"

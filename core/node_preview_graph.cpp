@@ -1,10 +1,10 @@
-#include "editor/node_preview_graph.h"
+#include "core/node_preview_graph.h"
 
 #include <algorithm>
 
 #include "core/resolve.h"
 
-namespace wg::editor {
+namespace wg {
 namespace {
 
 InputSource fromNode(const std::string& node, const std::string& port) {
@@ -95,16 +95,16 @@ std::optional<Graph> nodeOutputGraph(const Graph& graph, const Registry& registr
   return g;
 }
 
-std::optional<Graph> interfaceOutputGraph(const Graph& graph, std::string* why) {
-  if (!graph.interface || graph.interface->outputs.empty() || !graph.outputs.empty()) {
+std::optional<Graph> interfaceOutputGraph(const Graph& graph, std::string* why, size_t output) {
+  if (!graph.interface || graph.interface->outputs.size() <= output || !graph.outputs.empty()) {
     *why = "not a function graph without output slots";
     return std::nullopt;
   }
-  const InterfaceOutput& first = graph.interface->outputs.front();
+  const InterfaceOutput& first = graph.interface->outputs[output];
   Graph g = graph;
   setOpaque(g);
   if (!routeToColour(g, first.source, first.type, why)) return std::nullopt;
   return g;
 }
 
-}  // namespace wg::editor
+}  // namespace wg
