@@ -37,6 +37,10 @@ int main(int argc, char** argv) {
   app.add_option("--frames", o.frames, "run this many frames (after the script), then exit");
   app.add_flag("--stats", o.stats, "print each edit's edit-to-pixels latency");
   wg::cli::addViewFlags(&app, o.view);
+  // A usage error is one line naming the option, as watergraph's.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return "watergraph-editor: " + std::string(e.what()) + "\n";
+  });
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

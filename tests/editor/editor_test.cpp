@@ -74,6 +74,7 @@ TEST(Editor, TheViewFlagsChooseThePreviewsOutputTransform) {
     EXPECT_EQ(r.status, 2) << bad;
     EXPECT_NE((r.out + r.err).find(std::string(bad).substr(0, std::string(bad).find(' ')) + ":"), std::string::npos)
         << bad << ": " << r.out << r.err;
+    EXPECT_EQ(test::splitLines(r.out + r.err).size(), 1u) << "one line: " << r.out << r.err;
   }
 }
 
