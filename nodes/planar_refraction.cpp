@@ -19,8 +19,8 @@ NodeSpec planarRefractionNode() {
               "(0, -1, 0, 0).";
   s.source = "classic WebGL water renderer (refraction pass with clip plane (0, -1, 0, 0) into refractionTexture; distortion (dudv * 2 - 1) * "
              "0.03); advanced shaders tutorial (refraction FBO in the multi-pass loop)";
-  s.cost = "one texture fetch + 4 ALU; runs the refraction pass: a second draw of the opaque scene into an RGBA8 + "
-           "depth target (8 bytes/pixel)";
+  s.cost = "one texture fetch + 4 ALU; runs the refraction pass: a second draw of the opaque scene into an RGBA16F + "
+           "depth target (12 bytes/pixel)";
   makeScreenLookup(s, SceneResource::Refraction,
                    "offset in screen units (the classic WebGL water renderer: (dudv * 2 - 1) * 0.03)", "the scene below the surface");
   s.hardCases = {

@@ -104,7 +104,7 @@ NodeSpec sceneColorNode() {
               "every distorted look-up on screen.";
   s.source = "stylized water shader (refraction from the grabbed screen, GrabPass); advanced shaders tutorial (screen-space distorted refraction); classic WebGL water renderer "
              "(distortion (dudv * 2 - 1) * 0.03)";
-  s.cost = "one texture fetch + 4 ALU; runs the scene_color_copy pass (a blit of the frame, 4 bytes/pixel RGBA8)";
+  s.cost = "one texture fetch + 4 ALU; runs the scene_color_copy pass (a blit of the frame, 8 bytes/pixel RGBA16F)";
   makeScreenLookup(s, SceneResource::SceneColor,
                    "offset in screen units (e.g. dudv_distortion.offset or normal.xz * 0.03)",
                    "scene colour seen through the water");
@@ -132,7 +132,7 @@ NodeSpec planarReflectionNode() {
   s.source = "classic WebGL water renderer (reflection pass with the view mirrored and clip plane (0, 1, 0, 0); y-flipped look-up); advanced shaders tutorial (planar "
              "reflection with a mirrored camera); stylized water shader (reflection matrix)";
   s.cost = "one texture fetch + 4 ALU; runs the planar_reflection pass: a second draw of the opaque scene and sky "
-           "into an RGBA8 + depth target (8 bytes/pixel)";
+           "into an RGBA16F + depth target (12 bytes/pixel)";
   s.inputs = {ports::fromBuiltin("screen_uv", Type::Vec2, Builtin::ScreenUv, kScreenUvDoc),
               ports::fixed("distortion", Type::Vec2, Value::vector({0, 0}),
                            "offset in screen units (the classic WebGL water renderer: (dudv * 2 - 1) * 0.03)")};
@@ -176,7 +176,7 @@ NodeSpec cubemapReflectionNode() {
   s.formula = "R = normalize(reflect(-normalize(V), normalize(N))) (safe normalisation: zero inputs give R = 0, "
               "never NaN); color = texture(u_environment, R).rgb.";
   s.source = "advanced shaders tutorial (cube-map reflection: textureCube(envMap, reflect(-V, N)))";
-  s.cost = "one cube-map fetch + ~15 ALU; runs the environment_cubemap pass (6 faces of the sky, 128^2 RGBA8 each)";
+  s.cost = "one cube-map fetch + ~15 ALU; runs the environment_cubemap pass (6 faces of the sky, 128^2 RGBA16F each)";
   s.inputs = {ports::fromBuiltin("normal", Type::Vec3, Builtin::Normal, "unit surface normal"),
               ports::fromBuiltin("view", Type::Vec3, Builtin::ViewDirection, "unit vector from the surface to the viewer")};
   s.outputs = {ports::fixed("color", Type::Vec3, "the environment seen in the mirror direction"),
