@@ -29,19 +29,8 @@ VkOutputTransform::VkOutputTransform(VkContext& context, const VkSceneSpirv& spi
   checkVk(vkCreateDescriptorSetLayout(device, &lci, nullptr, &setLayout), "creating the output transform's set layout");
   setLayout_ = VkDescriptorSetLayoutHandle(device, setLayout);
 
-  VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1};
-  VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  pci.maxSets = 1;
-  pci.poolSizeCount = 1;
-  pci.pPoolSizes = &size;
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  checkVk(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "creating the output transform's descriptor pool");
-  pool_ = VkDescriptorPoolHandle(device, pool);
-  VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  ai.descriptorPool = pool;
-  ai.descriptorSetCount = 1;
-  ai.pSetLayouts = &setLayout;
-  checkVk(vkAllocateDescriptorSets(device, &ai, &set_), "allocating the output transform's descriptor set");
+  pool_ = allocateSingleSet(device, setLayout, {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 1}}, &set_,
+                            "the output transform");
   VkDescriptorImageInfo image{sampler_.get(), frame.view(), VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL};
   VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
   w.dstSet = set_;

@@ -102,4 +102,22 @@ VkPipelineHandle createGraphicsPipeline(VkDevice device, const VkPipelineDescrip
   return VkPipelineHandle(device, pipeline);
 }
 
+VkDescriptorPoolHandle allocateSingleSet(VkDevice device, VkDescriptorSetLayout layout,
+                                         const std::vector<VkDescriptorPoolSize>& sizes, VkDescriptorSet* set,
+                                         const std::string& what) {
+  VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+  pci.maxSets = 1;
+  pci.poolSizeCount = static_cast<uint32_t>(sizes.size());
+  pci.pPoolSizes = sizes.data();
+  VkDescriptorPool pool = VK_NULL_HANDLE;
+  checkVk(vkCreateDescriptorPool(device, &pci, nullptr, &pool), ("creating the descriptor pool of " + what).c_str());
+  VkDescriptorPoolHandle owner(device, pool);
+  VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+  ai.descriptorPool = pool;
+  ai.descriptorSetCount = 1;
+  ai.pSetLayouts = &layout;
+  checkVk(vkAllocateDescriptorSets(device, &ai, set), ("allocating the descriptor set of " + what).c_str());
+  return owner;
+}
+
 }  // namespace wg::rt

@@ -72,6 +72,13 @@ struct VkPipelineDescription {
   VkPipelineLayout layout = VK_NULL_HANDLE;
 };
 
+// A descriptor pool holding exactly one set of `layout` (with room for `sizes`), and that
+// set: what the water's bindings and the output transform each need. Throws RuntimeError
+// naming `what` when the driver refuses.
+VkDescriptorPoolHandle allocateSingleSet(VkDevice device, VkDescriptorSetLayout layout,
+                                         const std::vector<VkDescriptorPoolSize>& sizes, VkDescriptorSet* set,
+                                         const std::string& what);
+
 // No culling, and counter-clockwise triangles in GL's sense are front faces: the runtime
 // keeps GL's clip-space y (see docs/ecosystem.md, "Loading vk450 in your engine"), which
 // Vulkan's framebuffer y-down turns into clockwise, so frontFace is CLOCKWISE.

@@ -91,18 +91,7 @@ VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
   std::vector<VkDescriptorPoolSize> sizes;
   if (blockSize_ > 0) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1});
   if (!images.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, static_cast<uint32_t>(images.size())});
-  VkDescriptorPoolCreateInfo pci{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
-  pci.maxSets = 1;
-  pci.poolSizeCount = static_cast<uint32_t>(sizes.size());
-  pci.pPoolSizes = sizes.data();
-  VkDescriptorPool pool = VK_NULL_HANDLE;
-  checkVk(vkCreateDescriptorPool(device, &pci, nullptr, &pool), "creating the descriptor pool");
-  pool_ = VkDescriptorPoolHandle(device, pool);
-  VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
-  ai.descriptorPool = pool;
-  ai.descriptorSetCount = 1;
-  ai.pSetLayouts = &layout;
-  checkVk(vkAllocateDescriptorSets(device, &ai, &set_), "allocating the water's descriptor set");
+  pool_ = allocateSingleSet(device, layout, sizes, &set_, "the water");
 
   std::vector<VkWriteDescriptorSet> writes;
   VkDescriptorBufferInfo blockInfo{block_.buffer(), 0, blockSize_};
