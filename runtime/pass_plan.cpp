@@ -45,6 +45,11 @@ const TargetSpec* PassPlan::target(const std::string& name) const {
   return nullptr;
 }
 
+const TargetSpec* PassPlan::picture() const {
+  if (const TargetSpec* d = target(kDisplayTarget)) return d;
+  return targets.front().color == ColorFormat::Rgba8 ? &targets.front() : nullptr;
+}
+
 bool sampledNearest(const TargetSpec& target, bool floatLinear) {
   return target.color == ColorFormat::None || target.producedBy == PassKind::DeferredWater ||
          (target.color == ColorFormat::Rgba32f && !floatLinear);

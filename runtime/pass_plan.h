@@ -58,6 +58,9 @@ struct PassPlan {
   std::vector<TargetSpec> targets;  // in creation order; "frame" first
   bool runs(PassKind p) const;
   const TargetSpec* target(const std::string& name) const;
+  // The target holding the 8-bit picture: the display image the output transform writes,
+  // or the frame itself when it is RGBA8 (measuring only); null for accuracy renders.
+  const TargetSpec* picture() const;
   size_t totalBytes() const;
 };
 

@@ -171,9 +171,11 @@ struct Renderer::Impl {
     return nullptr;
   }
   const GpuTarget& frame() const { return targets.front(); }
-  const GpuTarget* display() const {
+  // The target whose colour is the 8-bit picture (PassPlan::picture), or null.
+  const GpuTarget* picture() const {
+    const TargetSpec* p = plan.picture();
     for (const auto& t : targets)
-      if (t.spec.name == kDisplayTarget) return &t;
+      if (p && t.spec.name == p->name) return &t;
     return nullptr;
   }
 
@@ -584,7 +586,7 @@ struct Renderer::Impl {
   // The frame's linear radiance through the view (core/view_transform.h) into the 8-bit
   // display image, texel for texel.
   void outputTransformPass() {
-    const GpuTarget* d = display();
+    const GpuTarget* d = picture();
     glBindFramebuffer(GL_FRAMEBUFFER, d->fbo.id());
     glViewport(0, 0, d->spec.width, d->spec.height);
     glDisable(GL_DEPTH_TEST);
@@ -631,8 +633,7 @@ struct Renderer::Impl {
     img.height = settings.height;
     size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height) * 4;
     // Floats: the linear frame, before the output transform; bytes: the displayed image.
-    const GpuTarget* source = asFloat ? &frame() : display();
-    if (!asFloat && !source && frame().spec.color == ColorFormat::Rgba8) source = &frame();  // no output transform
+    const GpuTarget* source = asFloat ? &frame() : picture();
     if (!source || (asFloat && source->spec.color == ColorFormat::Rgba8))
       throw RuntimeError(RuntimeError::Kind::Manifest, asFloat ? "the frame holds no float colour"
                                                                : "an 8-bit read-back needs a renderer made without floatColor");
@@ -801,8 +802,8 @@ bool Renderer::setParameter(const std::string& parameter, const std::vector<floa
 }
 
 GLuint Renderer::frameTexture() const {
-  const auto* d = impl_->display();
-  return d ? d->color.id() : impl_->frame().color.id();
+  const auto* p = impl_->picture();
+  return p ? p->color.id() : impl_->frame().color.id();
 }
 
 void Renderer::setView(const ViewTransform& view) { impl_->settings.view = view; }

@@ -108,9 +108,11 @@ struct VkRenderer::Impl {
   }
   Target& frame() { return targets.front(); }
   const Target& frame() const { return targets.front(); }
-  Target* display() {
+  // The target whose colour is the 8-bit picture (PassPlan::picture), or null.
+  Target* picture() {
+    const TargetSpec* p = plan.picture();
     for (auto& t : targets)
-      if (t.spec.name == kDisplayTarget) return &t;
+      if (p && t.spec.name == p->name) return &t;
     return nullptr;
   }
   std::unique_ptr<VkOutputTransform> output;  // when the plan runs the output transform
@@ -415,7 +417,7 @@ struct VkRenderer::Impl {
 
   // The frame's linear radiance through the view into the 8-bit display image.
   void outputTransformPass() {
-    Target& d = *display();
+    Target& d = *picture();
     frame().color.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     beginRendering({{&d.color, 0, false, {}}}, {}, d.spec.width, d.spec.height);
     output->draw(cmd, settings.view);
@@ -543,7 +545,7 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
       origins);
   r.sceneLayout = r.makeLayout({}, kPushConstantBytes);
   r.createWaterPipelines(manifest);
-  if (Impl::Target* d = r.display())
+  if (Impl::Target* d = r.plan.runs(PassKind::OutputTransform) ? r.picture() : nullptr)
     r.output = std::make_unique<VkOutputTransform>(context, r.sceneSpirv, r.frame().color, d->color.spec().format);
   // Every image starts in a defined layout, so the first frame's barriers name real ones.
   context.submit([&](VkCommandBuffer c) {
@@ -577,7 +579,7 @@ void VkRenderer::setScene(const SceneOptions& scene) {
 void VkRenderer::setView(const ViewTransform& view) { impl_->settings.view = view; }
 
 Image VkRenderer::readRgba8() const {
-  Impl::Target* d = impl_->display();
+  Impl::Target* d = impl_->picture();
   if (!d) throw RuntimeError(RuntimeError::Kind::Manifest, "an 8-bit read-back needs a renderer made without floatColor");
   Image img;
   img.width = impl_->settings.width;

@@ -4,7 +4,9 @@
 // exposures, and each byte must be the reference's rounded value within one level (the
 // GPU's float32 arithmetic and its rounding to 8 bits). The values reach every branch:
 // below and above the sRGB knee, inside and above AgX's window, both sides of PBR
-// Neutral's knee, and NaN, +Inf, -Inf and negatives, which must come out finite.
+// Neutral's knee, and NaN, +Inf, -Inf and negatives, which must come out finite. (llvmpipe's
+// clamp already returns 0 for a NaN, so the shader's explicit isnan guard, kept because
+// GLSL leaves min and max of a NaN undefined, is not observable on this driver.)
 #include <cmath>
 #include <limits>
 #include <vector>

@@ -46,6 +46,16 @@ TEST(PassPlan, WaterOnlyRunsTheSceneAndTheSurfaceIntoOneTarget) {
   EXPECT_EQ(targetNames(p), (std::vector<std::string>{"frame", "display"}));
   EXPECT_EQ(p.target("frame")->color, ColorFormat::Rgba16f);
   EXPECT_EQ(p.target("display")->color, ColorFormat::Rgba8);
+  ASSERT_NE(p.picture(), nullptr);
+  EXPECT_EQ(p.picture()->name, "display");
+  // Measuring the pipeline's cost: RGBA8 targets without the transform show the frame itself.
+  PlanOptions ldr = small();
+  ldr.pictureFormat = ColorFormat::Rgba8;
+  ldr.outputTransform = false;
+  PassPlan old = planPasses(manifestWith({"water_surface"}), ldr);
+  EXPECT_FALSE(old.runs(PassKind::OutputTransform));
+  ASSERT_NE(old.picture(), nullptr);
+  EXPECT_EQ(old.picture()->name, "frame");
   EXPECT_EQ(p.totalBytes(), kPixels * (8 + 4 + 4));  // RGBA16F + DEPTH32F, RGBA8
   EXPECT_FALSE(p.runs(PassKind::PlanarReflection));
   EXPECT_EQ(p.target("reflection"), nullptr);
@@ -110,6 +120,7 @@ TEST(PassPlan, FloatColourDoublesColourBytesAndDropsTheOutputTransform) {
   PassPlan p = planPasses(manifestWith({"depth_prepass", "planar_reflection", "water_surface"}), o);
   EXPECT_FALSE(p.runs(PassKind::OutputTransform));
   EXPECT_EQ(p.target("display"), nullptr);
+  EXPECT_EQ(p.picture(), nullptr) << "an accuracy render has no 8-bit picture";
   EXPECT_EQ(p.target("frame")->bytes(), kPixels * (16 + 4));
   EXPECT_EQ(p.target("scene_depth")->bytes(), kPixels * 4);
   EXPECT_EQ(p.target("reflection")->bytes(), kPixels * (16 + 4));
