@@ -226,7 +226,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }
   if (result && args.textures) {
-    auto pngs = textureFiles(*result, outcome.name, diags, &*graph);
+    auto pngs = textureFiles(*result, diags, &*graph);
     if (diags.hasErrors()) result.reset();
     else result->files.insert(result->files.end(), pngs.begin(), pngs.end());
   }

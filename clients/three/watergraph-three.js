@@ -522,12 +522,13 @@ export async function loadWaterGraph(manifestUrl, { resources = {}, description 
     throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
   const text = async (file) => (await fetchOk(new URL(file, base), file)).text();
   const [vertexShader, fragmentShader] = await Promise.all([text(es300.vert), text(es300.frag)]);
-  // Files are named after the graph file ("lake.es300.vert" -> "lake"), as the shaders are.
-  const baseName = es300.vert.replace(/\.es300\.vert$/, '');
   const textures = {};
   for (const t of manifest.textures ?? []) {
     if (!('source' in t)) continue;
-    const file = `${baseName}.${t.name}.png`;
+    // The manifest names the PNG (a plain file name beside it, "lake.t0_foam.png").
+    const file = t.file;
+    if (typeof file !== 'string' || file === '' || /[\/\\]/.test(file) || file === '.' || file === '..')
+      throw new WaterGraphError(`graph '${manifest.graph}': texture ${t.name} has no "file" naming its PNG beside the manifest`);
     textures[t.name] = await loadNodeTexture(
       new URL(file, base),
       `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``, t.sampler);
