@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   Runner bench = addBenchCommand(app, global);
   Runner scene = addSceneCommand(app, global);
   Runner tune = addTuneCommand(app, global);
+  Runner codes = addCodesCommand(app, global);
 
   // A usage error is one line naming the option, as the commands' own usage errors are
   // (CLI11's default adds "Run with --help for more information.").
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("scene")) return scene();
     if (app.got_subcommand("tune")) return tune();
+    if (app.got_subcommand("codes")) return codes();
   } catch (const std::exception& e) {
     // A bug, not a graph problem: say so plainly rather than crash.
     std::cerr << "watergraph: internal error: " << e.what() << "\n";
