@@ -12,6 +12,7 @@ import path from 'node:path';
 import * as THREE from 'three';
 import { WaterGraph, WaterGraphError, checkManifest, applySamplerState } from '../watergraph-three.js';
 import { compileDerived, DerivedProgramError } from '../watergraph-derived.js';
+import { presetCamera } from '../watergraph-scene.js';
 
 const dir = process.env.WG_THREE_FIXTURES;
 const read = (file) => {
@@ -166,4 +167,12 @@ test('compileDerived refuses hostile programs with its own error, not a TypeErro
 test('a sampler state naming a prototype member is refused', () => {
   for (const sampler of [{ wrap: 'constructor' }, { filter: '__proto__' }, { color_space: 'toString' }])
     assert.throws(() => applySamplerState(new THREE.Texture(), sampler), WaterGraphError);
+});
+
+test('a camera preset named after a prototype member is no preset', () => {
+  const description = { cameras: JSON.parse('{"above": {"fov_y_degrees": 50, "near": 0.1, "far": 100, ' +
+    '"position": [0, 5, 10], "up": [0, 1, 0], "target": [0, 0, 0]}}') };
+  assert.equal(presetCamera(description, 'above', 1).fov, 50);
+  for (const name of ['__proto__', 'constructor', 'toString'])
+    assert.throws(() => presetCamera(description, name, 1), (e) => e instanceof WaterGraphError && e.message.includes(`no camera '${name}'`));
 });
