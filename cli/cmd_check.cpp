@@ -185,7 +185,10 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   cmd->add_flag("--vk-validation", args->vulkanValidation,
                 "vk450: run under the Khronos validation layer; any message it reports fails the graph (exit 1)");
-  cmd->add_option("--size", args->size, "WIDTHxHEIGHT of the frame")->capture_default_str();
+  cmd->add_option("--size", args->size,
+                  "WIDTHxHEIGHT of the frame, each side 8..4096, and within the memory budget (2 GiB; a graph with "
+                  "several scene passes reaches it below 4096x4096: the error says what the size needs)")
+      ->capture_default_str();
   cmd->add_flag("--derived-uniforms", args->derivedUniforms,
                 "per-draw values the fragment shader would compute for every pixel become uniforms computed once per "
                 "draw in double (experimental)");
