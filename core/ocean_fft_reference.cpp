@@ -4,6 +4,7 @@
 
 #include <fftw3.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -29,10 +30,12 @@ bool powerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 double largestAxialWavenumber(int n, double tileLength) { return (n / 2 - 1) * 2.0 * kPi / tileLength; }
 double smallestWavenumber(double tileLength) { return 2.0 * kPi / tileLength; }
 
-// GLSL's mod for a positive divisor: x - y floor(x / y), in [0, y).
-double wrapPhase(double x) {
-  constexpr double kTwoPi = 2.0 * kPi;
-  return x - kTwoPi * std::floor(x / kTwoPi);
+constexpr double kTwoTo32 = 4294967296.0;
+
+// The multiple of 2 pi / T nearest to omega (omega is below 2^32 2 pi / T = 4e5 rad/s for
+// every wavenumber a valid grid holds).
+std::uint32_t frequencyIndex(double omega) {
+  return static_cast<std::uint32_t>(std::nearbyint(omega * kLoopPeriod / (2.0 * kPi)));
 }
 
 // One FFTW plan for N x N backward complex transforms with its own arrays. FFTW's planner
@@ -145,13 +148,13 @@ OceanCascade emptyCascade(int resolution, double tileLength, double depth) {
   cascade.tileLength = tileLength;
   size_t count = static_cast<size_t>(resolution) * resolution;
   cascade.h0.assign(count, {0.0, 0.0});
-  cascade.omega.assign(count, 0.0);
+  cascade.frequency.assign(count, 0);
   cascade.binVariance.assign(count, 0.0);
   double dk = 2.0 * kPi / tileLength;
   for (int iz = 0; iz < resolution; ++iz)
     for (int ix = 0; ix < resolution; ++ix) {
       double k = std::hypot(dk * signedIndex(ix, resolution), dk * signedIndex(iz, resolution));
-      cascade.omega[static_cast<size_t>(iz) * resolution + ix] = angularFrequency(k, depth);
+      cascade.frequency[static_cast<size_t>(iz) * resolution + ix] = frequencyIndex(angularFrequency(k, depth));
     }
   return cascade;
 }
@@ -181,14 +184,29 @@ OceanCascade initialCascade(const SpectrumSettings& s, const CascadeSettings& c,
   return cascade;
 }
 
+std::uint32_t loopFraction(double time) {
+  double loops = time / kLoopPeriod;  // exact: T is a power of two
+  double fraction = loops - std::floor(loops);
+  // fraction 2^32 is exact too; the floor of a value in [0, 2^32) fits.
+  return static_cast<std::uint32_t>(std::min(std::floor(fraction * kTwoTo32), kTwoTo32 - 1.0));
+}
+
+double angularFrequencyOf(std::uint32_t frequency) { return frequency * (2.0 * kPi / kLoopPeriod); }
+
+double phaseTurns(std::uint32_t frequency, std::uint32_t tau) {
+  std::uint32_t product = frequency * tau;  // modulo 2^32, as GLSL's uint product
+  return product / kTwoTo32;
+}
+
 std::vector<std::complex<double>> evolveSpectrum(const OceanCascade& cascade, double time) {
   int n = cascade.resolution;
+  std::uint32_t tau = loopFraction(time);
   std::vector<std::complex<double>> h(cascade.h0.size());
   for (int iz = 0; iz < n; ++iz)
     for (int ix = 0; ix < n; ++ix) {
       size_t i = static_cast<size_t>(iz) * n + ix;
       size_t mirror = static_cast<size_t>((n - iz) % n) * n + static_cast<size_t>((n - ix) % n);
-      double phase = wrapPhase(cascade.omega[i] * time);
+      double phase = 2.0 * kPi * phaseTurns(cascade.frequency[i], tau);
       std::complex<double> turn(std::cos(phase), std::sin(phase));
       h[i] = cascade.h0[i] * std::conj(turn) + std::conj(cascade.h0[mirror]) * turn;
     }

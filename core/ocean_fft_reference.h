@@ -8,8 +8,14 @@
 // spacing L / N, k = 2 pi / L (mx, mz) with mx, mz in [-N/2, N/2), and
 //   h~(k, t) = h0(k) exp(-i omega t) + conj(h0(-k)) exp(i omega t).
 // The sign of omega t is Tessendorf's with t -> -t, so that h0(k) is the wave travelling
-// along k (the spreading's direction). Each bin's phase omega t is reduced mod 2 pi in
-// double before its sine and cosine.
+// along k (the spreading's direction).
+//
+// Phases are exact integers: each bin's frequency is the multiple n(k) of 2 pi / T of the
+// loop period T = 2^16 s nearest to the dispersion's omega (a relative error of at most
+// pi / (T omega), 5e-5 at 1 rad/s), and time enters as the 32-bit fraction of a loop,
+// tau = floor(frac(t / T) 2^32) (a time step of T / 2^32 = 15 us). The phase in turns is
+// then (n tau mod 2^32) / 2^32, the same 32 bits in double here and in a GPU's uint
+// arithmetic at any t: 1e6 s is as exact as 1 s, and the sea repeats every 18.2 hours.
 //
 // Amplitudes: h0(k) = (xi_r + i xi_i) sqrt(F(k) dk^2) / 2 with xi standard normal, so that
 // a travelling wave's variance 2 E|h0(k)|^2 is F(k) dk^2 and the surface's variance is the
@@ -33,6 +39,7 @@ inline constexpr int kMinResolution = 64;
 inline constexpr int kMaxResolution = 512;
 inline constexpr int kMaxCascades = 4;
 inline constexpr double kMaxChoppiness = 4;
+inline constexpr double kLoopPeriod = 65536;  // s, T: the bins' frequencies are multiples of 2 pi / T
 
 struct CascadeSettings {
   int resolution = 256;                     // N: a power of two in [64, 512]
@@ -58,13 +65,20 @@ struct OceanCascade {
   int resolution = 0;
   double tileLength = 0;
   std::vector<std::complex<double>> h0;  // metres, index iz * N + ix
-  std::vector<double> omega;             // rad/s per bin (dispersion at the settings' depth)
+  std::vector<std::uint32_t> frequency;  // n(k): omega = n 2 pi / T (dispersion at the settings' depth)
   std::vector<double> binVariance;       // F(k) dk^2 (m^2) for the bins the cascade owns, else 0
 };
 // A cascade with no waves: its grid and each bin's frequency at `depth`.
 OceanCascade emptyCascade(int resolution, double tileLength, double depth);
 // Cascade `index` of valid settings (std::invalid_argument otherwise).
 OceanCascade initialCascade(const SpectrumSettings& s, const CascadeSettings& c, int index);
+
+// tau: the fraction of the loop at time t, in units of 2^-32 of a loop.
+std::uint32_t loopFraction(double time);
+// A bin's frequency in rad/s, n 2 pi / T.
+double angularFrequencyOf(std::uint32_t frequency);
+// A bin's phase in turns, [0, 1): (n tau mod 2^32) / 2^32.
+double phaseTurns(std::uint32_t frequency, std::uint32_t tau);
 
 // h~(k, t) for every bin, index iz * N + ix.
 std::vector<std::complex<double>> evolveSpectrum(const OceanCascade& cascade, double time);
