@@ -35,7 +35,7 @@ double norm(const std::vector<double>& v) {
   return std::sqrt(s);
 }
 
-// The channel c of a read-back map, times `scale`'s inverse, as doubles.
+// Channel c of a read-back map, as doubles.
 std::vector<double> channel(const std::vector<float>& map, int c) {
   std::vector<double> out(map.size() / 4);
   for (size_t i = 0; i < out.size(); ++i) out[i] = map[i * 4 + static_cast<size_t>(c)];
