@@ -32,10 +32,10 @@ double smallestWavenumber(double tileLength) { return 2.0 * kPi / tileLength; }
 
 constexpr double kTwoTo32 = 4294967296.0;
 
-// The multiple of 2 pi / T nearest to omega (omega is below 2^32 2 pi / T = 4e5 rad/s for
-// every wavenumber a valid grid holds).
+// The multiple of 2 pi / T nearest to omega. A wave faster than (2^32 - 1) 2 pi / T
+// (4e5 rad/s: a grid spacing under a micrometre) keeps that largest index.
 std::uint32_t frequencyIndex(double omega) {
-  return static_cast<std::uint32_t>(std::nearbyint(omega * kLoopPeriod / (2.0 * kPi)));
+  return static_cast<std::uint32_t>(std::min(std::nearbyint(omega * kLoopPeriod / (2.0 * kPi)), kTwoTo32 - 1.0));
 }
 
 // One FFTW plan for N x N backward complex transforms with its own arrays. FFTW's planner
@@ -185,6 +185,7 @@ OceanCascade initialCascade(const SpectrumSettings& s, const CascadeSettings& c,
 }
 
 std::uint32_t loopFraction(double time) {
+  if (!std::isfinite(time)) return 0;  // a clock that is not a number stands still at 0
   double loops = time / kLoopPeriod;  // exact: T is a power of two
   double fraction = loops - std::floor(loops);
   // fraction 2^32 is exact too; the floor of a value in [0, 2^32) fits.

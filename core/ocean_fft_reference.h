@@ -73,7 +73,8 @@ OceanCascade emptyCascade(int resolution, double tileLength, double depth);
 // Cascade `index` of valid settings (std::invalid_argument otherwise).
 OceanCascade initialCascade(const SpectrumSettings& s, const CascadeSettings& c, int index);
 
-// tau: the fraction of the loop at time t, in units of 2^-32 of a loop.
+// tau: the fraction of the loop at time t, in units of 2^-32 of a loop (0 for a time that
+// is not finite).
 std::uint32_t loopFraction(double time);
 // A bin's frequency in rad/s, n 2 pi / T.
 double angularFrequencyOf(std::uint32_t frequency);

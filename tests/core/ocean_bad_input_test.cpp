@@ -187,5 +187,24 @@ TEST(OceanBadInput, FetchExtremes) {
   EXPECT_EQ(unbounded.h0, initialCascade(s, smallGrid(), 0).h0);
 }
 
+TEST(OceanBadInput, TimesAndTilesAtTheirEnds) {
+  // The loop fraction at the ends of time: negative times count back from a whole loop,
+  // and a clock that is not finite stands at 0.
+  EXPECT_EQ(loopFraction(0.0), 0u);
+  EXPECT_EQ(loopFraction(kLoopPeriod / 2), 2147483648u);
+  EXPECT_EQ(loopFraction(-kLoopPeriod / 4), 3221225472u);
+  EXPECT_EQ(loopFraction(1e300), 0u);
+  for (double t : {kInf, -kInf, kNaN}) EXPECT_EQ(loopFraction(t), 0u) << t;
+  // A tile of ten nanometres: its fastest bins exceed the largest frequency index, which
+  // they keep; the fields stay finite.
+  SpectrumSettings s;
+  s.fetch = 1e-3;
+  CascadeSettings c = smallGrid();
+  c.tileLengths = {1e-8};
+  OceanCascade tiny = initialCascade(s, c, 0);
+  EXPECT_EQ(tiny.frequency[static_cast<size_t>(31) * 64 + 31], 4294967295u);
+  EXPECT_TRUE(allFinite(oceanFields(tiny, 1e6, 1.0)));
+}
+
 }  // namespace
 }  // namespace wg::ocean
