@@ -214,6 +214,11 @@ std::vector<std::complex<double>> evolveSpectrum(const OceanCascade& cascade, do
   return h;
 }
 
+std::vector<double> oceanHeight(const OceanCascade& cascade, double time) {
+  InverseFft fft(cascade.resolution);
+  return fft.transform(evolveSpectrum(cascade, time), [](size_t) { return std::complex<double>(1.0, 0.0); });
+}
+
 OceanFields oceanFields(const OceanCascade& cascade, double time, double choppiness) {
   int n = cascade.resolution;
   double dk = 2.0 * kPi / cascade.tileLength;
