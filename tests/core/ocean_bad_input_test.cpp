@@ -168,6 +168,14 @@ TEST(OceanBadInput, WaterFarShallowerThanAWaveIsFiniteAndNearlyStill) {
     EXPECT_LT(totalVariance(c), 1e-12 * deepVariance) << static_cast<int>(m);
     for (std::uint32_t n : c.frequency) ASSERT_LT(angularFrequencyOf(n), 0.02);
   }
+  // The smallest depth a double holds: k d rounds to 0, where 2kd / sinh(2kd) would be 0/0.
+  const double thinnest = std::numeric_limits<double>::denorm_min();
+  EXPECT_TRUE(std::isfinite(groupVelocity(0.01, thinnest)));
+  EXPECT_TRUE(std::isfinite(tmaDepthFactor(0.01, thinnest)));
+  SpectrumSettings film;
+  film.model = SpectrumModel::Tma;
+  film.depth = thinnest;
+  EXPECT_TRUE(allFinite(oceanFields(initialCascade(film, smallGrid(), 0), 1e6, 1.0)));
 }
 
 TEST(OceanBadInput, FetchExtremes) {
