@@ -10,6 +10,7 @@ packages=(
   libepoxy-dev glslang-dev glslang-tools spirv-tools spirv-cross libspirv-cross-c-shared-dev
   libglfw3-dev libimgui-dev libstb-dev libcli11-dev libglm-dev nlohmann-json3-dev
   libgtest-dev libbenchmark-dev xvfb xauth
+  libfftw3-dev  # the spectral ocean's double-precision reference transform (core/ocean_fft_reference.cpp)
   python3-jsonschema  # tests/ecosystem: a real JSON Schema validator for docs/watergraph.schema.json
   chromium  # tests/ecosystem: renders clients/three/ (three.js, WebGL 2) headless for the comparison
   gnuplot-nox  # watergraph bench --plot: the cost-against-error plot

@@ -1,0 +1,236 @@
+// The spectral ocean's GPU cascade (runtime/ocean_gpu_cascade.h).
+#include "runtime/ocean_gpu_cascade.h"
+
+#include <cmath>
+#include <string>
+
+#include "runtime/runtime_error.h"
+
+namespace wg::rt {
+namespace {
+
+// Each bin's phase is the 32-bit product n tau (uint arithmetic wraps modulo 2^32, as the
+// reference's does); its top 24 bits become a float exactly, so the only rounding is the
+// product by 2 pi / 2^24 and the sine and cosine.
+constexpr const char* kEvolve = R"glsl(
+uniform highp sampler2D u_h0;
+uniform highp usampler2D u_frequency;
+uniform uint u_tau;
+uniform float u_dk;
+uniform int u_n;
+layout(location = 0) out vec4 o_a;
+layout(location = 1) out vec4 o_b;
+
+vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+vec2 timesI(vec2 a) { return vec2(-a.y, a.x); }
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 h0 = texelFetch(u_h0, p, 0);  // h0(k) and conj(h0(-k))
+  uint turns = texelFetch(u_frequency, p, 0).r * u_tau;
+  float phase = float(turns >> 8u) * (6.283185307179586 / 16777216.0);
+  vec2 turn = vec2(cos(phase), sin(phase));
+  vec2 h = cmul(h0.xy, vec2(turn.x, -turn.y)) + cmul(h0.zw, turn);
+  ivec2 m = ivec2(p.x < u_n / 2 ? p.x : p.x - u_n, p.y < u_n / 2 ? p.y : p.y - u_n);
+  vec2 k = vec2(m) * u_dk;
+  float kl = length(k);
+  vec2 unit = kl > 0.0 ? k / kl : vec2(0.0);
+  vec2 ih = timesI(h);
+  vec2 dx = unit.x * ih, dz = unit.y * ih;          // i k/|k| h
+  vec2 sx = k.x * ih, sz = k.y * ih;                // i k h
+  vec2 dxx = -k.x * unit.x * h, dzz = -k.y * unit.y * h, dxz = -k.x * unit.y * h;
+  o_a = vec4(h + timesI(dx), dz + timesI(sx));
+  o_b = vec4(sz + timesI(dxx), dzz + timesI(dxz));
+}
+)glsl";
+
+// One radix-2 Stockham stage of the inverse DFT (sum of x_k exp(+2 pi i k j / N)) along x
+// or z, for sub-transforms of length Ns: output i takes inputs j and j + N/2 with
+// j = (i / 2Ns) Ns + i mod Ns, and the twiddle exp(2 pi i (i mod Ns) / 2Ns), negated for
+// the second half of each block. After log2 N stages the result is in natural order.
+constexpr const char* kStockham = R"glsl(
+uniform highp sampler2D u_a;
+uniform highp sampler2D u_b;
+uniform highp sampler2D u_twiddle;
+uniform int u_ns;
+uniform int u_n;
+uniform int u_vertical;
+layout(location = 0) out vec4 o_a;
+layout(location = 1) out vec4 o_b;
+
+vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  int i = u_vertical == 1 ? p.y : p.x;
+  int r = i % u_ns;
+  int j = (i / (2 * u_ns)) * u_ns + r;
+  ivec2 first = u_vertical == 1 ? ivec2(p.x, j) : ivec2(j, p.y);
+  ivec2 second = u_vertical == 1 ? ivec2(p.x, j + u_n / 2) : ivec2(j + u_n / 2, p.y);
+  vec2 w = texelFetch(u_twiddle, ivec2(r * (u_n / (2 * u_ns)), 0), 0).xy;
+  if ((i / u_ns) % 2 == 1) w = -w;
+  vec4 a0 = texelFetch(u_a, first, 0), a1 = texelFetch(u_a, second, 0);
+  vec4 b0 = texelFetch(u_b, first, 0), b1 = texelFetch(u_b, second, 0);
+  o_a = vec4(a0.xy + cmul(w, a1.xy), a0.zw + cmul(w, a1.zw));
+  o_b = vec4(b0.xy + cmul(w, b1.xy), b0.zw + cmul(w, b1.zw));
+}
+)glsl";
+
+constexpr const char* kPack = R"glsl(
+uniform highp sampler2D u_a;
+uniform highp sampler2D u_b;
+uniform float u_lambda;
+layout(location = 0) out vec4 o_displacement;
+layout(location = 1) out vec4 o_slopes;
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  vec4 a = texelFetch(u_a, p, 0), b = texelFetch(u_b, p, 0);
+  float h = a.x, dx = a.y, dz = a.z, sx = a.w, sz = b.x, dxx = b.y, dzz = b.z, dxz = b.w;
+  float jacobian = (1.0 + u_lambda * dxx) * (1.0 + u_lambda * dzz) - u_lambda * u_lambda * dxz * dxz;
+  o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, jacobian);
+  o_slopes = vec4(sx, sz, dxx, dzz);
+}
+)glsl";
+
+Texture floatTexture(int width, int height, GLenum format) {
+  Texture t = makeTexture();
+  glBindTexture(GL_TEXTURE_2D, t.id());
+  glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
+  // Integer textures are complete only with nearest filtering; every pass uses texelFetch.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  return t;
+}
+
+Framebuffer targetOf(const Texture& first, const Texture& second, const char* what) {
+  Framebuffer f = makeFramebuffer();
+  glBindFramebuffer(GL_FRAMEBUFFER, f.id());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, first.id(), 0);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second.id(), 0);
+  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glDrawBuffers(2, buffers);
+  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw RuntimeError(RuntimeError::Kind::Driver,
+                       std::string("the GL driver cannot render into the ocean's RGBA32F ") + what + " textures");
+  return f;
+}
+
+GLint location(const Program& p, const char* name) { return glGetUniformLocation(p.id(), name); }
+
+void bindTexture(int unit, const Texture& t) {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_2D, t.id());
+}
+
+}  // namespace
+
+OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api)
+    : n_(cascade.resolution), tileLength_(cascade.tileLength) {
+  const size_t count = static_cast<size_t>(n_) * n_;
+  std::vector<float> h0(count * 4);
+  for (int iz = 0; iz < n_; ++iz)
+    for (int ix = 0; ix < n_; ++ix) {
+      size_t i = static_cast<size_t>(iz) * n_ + ix;
+      size_t mirror = static_cast<size_t>((n_ - iz) % n_) * n_ + static_cast<size_t>((n_ - ix) % n_);
+      std::complex<double> a = cascade.h0[i], b = std::conj(cascade.h0[mirror]);
+      h0[i * 4 + 0] = static_cast<float>(a.real());
+      h0[i * 4 + 1] = static_cast<float>(a.imag());
+      h0[i * 4 + 2] = static_cast<float>(b.real());
+      h0[i * 4 + 3] = static_cast<float>(b.imag());
+    }
+  h0_ = floatTexture(n_, n_, GL_RGBA32F);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n_, n_, GL_RGBA, GL_FLOAT, h0.data());
+  frequency_ = floatTexture(n_, n_, GL_R32UI);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n_, n_, GL_RED_INTEGER, GL_UNSIGNED_INT, cascade.frequency.data());
+  // Twiddles exp(2 pi i m / N), m < N/2, computed in double and rounded once.
+  std::vector<float> twiddle(static_cast<size_t>(n_));
+  for (int m = 0; m < n_ / 2; ++m) {
+    double angle = 2.0 * ocean::kPi * m / n_;
+    twiddle[static_cast<size_t>(m) * 2] = static_cast<float>(std::cos(angle));
+    twiddle[static_cast<size_t>(m) * 2 + 1] = static_cast<float>(std::sin(angle));
+  }
+  twiddle_ = floatTexture(n_ / 2, 1, GL_RG32F);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n_ / 2, 1, GL_RG, GL_FLOAT, twiddle.data());
+  for (int s = 0; s < 2; ++s) {
+    for (auto& t : spectra_[s]) t = floatTexture(n_, n_, GL_RGBA32F);
+    spectraTargets_[s] = targetOf(spectra_[s][0], spectra_[s][1], "spectrum");
+  }
+  for (auto& t : maps_) t = floatTexture(n_, n_, GL_RGBA32F);
+  mapTarget_ = targetOf(maps_[0], maps_[1], "map");
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  emptyVao_ = makeVertexArray();
+
+  const std::string header = sceneShaderHeader(api);
+  const std::string vertex = sceneShaderSources(api).fullscreenVertex;
+  auto link = [&](const char* name, const char* body) {
+    return linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", vertex},
+                        {GL_FRAGMENT_SHADER, std::string(name) + ".frag", header + body}},
+                       std::string("the ocean's ") + name + " pass");
+  };
+  evolve_ = link("ocean_evolve", kEvolve);
+  stockham_ = link("ocean_stockham", kStockham);
+  pack_ = link("ocean_pack", kPack);
+  checkGl("creating the ocean's GPU cascade");
+}
+
+void OceanGpuCascade::drawInto(const Framebuffer& target) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, target.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+void OceanGpuCascade::update(double time, double choppiness) {
+  glViewport(0, 0, n_, n_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glBindVertexArray(emptyVao_.id());
+
+  glUseProgram(evolve_.id());
+  bindTexture(0, h0_);
+  bindTexture(1, frequency_);
+  glUniform1i(location(evolve_, "u_h0"), 0);
+  glUniform1i(location(evolve_, "u_frequency"), 1);
+  glUniform1ui(location(evolve_, "u_tau"), ocean::loopFraction(time));
+  glUniform1f(location(evolve_, "u_dk"), static_cast<float>(2.0 * ocean::kPi / tileLength_));
+  glUniform1i(location(evolve_, "u_n"), n_);
+  drawInto(spectraTargets_[0]);
+
+  glUseProgram(stockham_.id());
+  glUniform1i(location(stockham_, "u_a"), 0);
+  glUniform1i(location(stockham_, "u_b"), 1);
+  glUniform1i(location(stockham_, "u_twiddle"), 2);
+  glUniform1i(location(stockham_, "u_n"), n_);
+  bindTexture(2, twiddle_);
+  int current = 0;
+  for (int vertical = 0; vertical < 2; ++vertical)
+    for (int ns = 1; ns < n_; ns *= 2) {
+      bindTexture(0, spectra_[current][0]);
+      bindTexture(1, spectra_[current][1]);
+      glUniform1i(location(stockham_, "u_ns"), ns);
+      glUniform1i(location(stockham_, "u_vertical"), vertical);
+      drawInto(spectraTargets_[1 - current]);
+      current = 1 - current;
+    }
+
+  glUseProgram(pack_.id());
+  bindTexture(0, spectra_[current][0]);
+  bindTexture(1, spectra_[current][1]);
+  glUniform1i(location(pack_, "u_a"), 0);
+  glUniform1i(location(pack_, "u_b"), 1);
+  glUniform1f(location(pack_, "u_lambda"), static_cast<float>(choppiness));
+  drawInto(mapTarget_);
+  checkGl("the ocean's GPU passes");
+}
+
+std::vector<float> OceanGpuCascade::readMap(int which) const {
+  std::vector<float> out(static_cast<size_t>(n_) * n_ * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, mapTarget_.id());
+  glReadBuffer(which == 0 ? GL_COLOR_ATTACHMENT0 : GL_COLOR_ATTACHMENT1);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, n_, n_, GL_RGBA, GL_FLOAT, out.data());
+  checkGl("reading the ocean's map back");
+  return out;
+}
+
+}  // namespace wg::rt

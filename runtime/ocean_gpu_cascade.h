@@ -1,0 +1,56 @@
+#pragma once
+// One cascade of the spectral ocean computed on the GPU by fragment passes into float
+// textures (GL 4.5 core with glsl330 shaders, or ES 3.2 with es300 shaders): the evolution
+// of h~(k, t) from the uploaded h0, 2 log2 N radix-2 Stockham passes of the inverse FFT,
+// and a packing pass into two maps. The same computation in double is
+// core/ocean_fft_reference.h; tests/runtime/ocean_gpu_cascade_test.cpp holds this to it
+// within the float32 transform's error bound. (A runtime component: no node reaches it yet.)
+//
+// Eight real fields ride in four complex transforms, two per RGBA32F texture: the inverse
+// transform of a + i b, with a and b Hermitian spectra, is the real field of a plus i times
+// that of b. Texture A holds (h + i Dx, Dz + i dh/dx), B holds (dh/dz + i dDx/dx, dDz/dz + i dDx/dz).
+#include <cstdint>
+#include <vector>
+
+#include "core/ocean_fft_reference.h"
+#include "runtime/gl_resources.h"
+#include "runtime/scene.h"
+
+namespace wg::rt {
+
+class OceanGpuCascade {
+ public:
+  // Uploads h0 (rounded to float32) and the bins' frequency indices, and links the passes.
+  // The GL context must be current; `api` is Gl330 or Es300.
+  OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api);
+
+  // Computes the maps at time t (seconds) with choppiness lambda. Leaves the viewport, the
+  // draw framebuffer, the program and texture units 0-2 changed.
+  void update(double time, double choppiness);
+
+  int resolution() const { return n_; }
+  // RGBA32F, N x N, texel (jx, jz) at x = jx L / N, z = jz L / N:
+  //   displacement: (lambda Dx, h, lambda Dz, J)
+  //   slopes:       (dh/dx, dh/dz, dDx/dx, dDz/dz)
+  GLuint displacementMap() const { return maps_[0].id(); }
+  GLuint slopeMap() const { return maps_[1].id(); }
+  // The two maps read back, N * N * 4 floats each, row jz * N + jx.
+  std::vector<float> readDisplacement() const { return readMap(0); }
+  std::vector<float> readSlopes() const { return readMap(1); }
+
+ private:
+  std::vector<float> readMap(int which) const;
+  void drawInto(const Framebuffer& target) const;
+
+  int n_ = 0;
+  double tileLength_ = 0;
+  Texture h0_, frequency_, twiddle_;
+  Texture spectra_[2][2];  // [ping or pong][A or B]
+  Framebuffer spectraTargets_[2];
+  Texture maps_[2];
+  Framebuffer mapTarget_;
+  VertexArray emptyVao_;
+  Program evolve_, stockham_, pack_;
+};
+
+}  // namespace wg::rt
