@@ -19,12 +19,6 @@
 namespace wg::ocean {
 namespace {
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
 bool powerOfTwo(int n) { return n > 0 && (n & (n - 1)) == 0; }
 
 double largestAxialWavenumber(int n, double tileLength) { return (n / 2 - 1) * 2.0 * kPi / tileLength; }
@@ -104,25 +98,25 @@ std::optional<SettingError> validateCascades(const CascadeSettings& c) {
     double l = c.tileLengths[i];
     std::string where = "cascade " + std::to_string(i) + ": ";
     if (!std::isfinite(l) || !(l > 0))
-      return error("tile_lengths", where + "tile length " + number(l) + " m must be a finite number greater than 0");
+      return error("tile_lengths", where + "tile length " + numberText(l) + " m must be a finite number greater than 0");
     if (i == 0) continue;
     double previous = c.tileLengths[i - 1];
     if (l == previous)
-      return error("tile_lengths", where + "tile length " + number(l) + " m repeats cascade " + std::to_string(i - 1) +
+      return error("tile_lengths", where + "tile length " + numberText(l) + " m repeats cascade " + std::to_string(i - 1) +
                                        "'s: two cascades would share one band of wavenumbers");
     if (l > previous)
-      return error("tile_lengths", where + "tile length " + number(l) + " m is longer than cascade " +
-                                       std::to_string(i - 1) + "'s " + number(previous) +
+      return error("tile_lengths", where + "tile length " + numberText(l) + " m is longer than cascade " +
+                                       std::to_string(i - 1) + "'s " + numberText(previous) +
                                        " m: list the cascades from the longest tile to the shortest");
     // The finer grid's first bin must lie below the coarser grid's last, or the
     // wavenumbers between them belong to neither.
     if (!(smallestWavenumber(l) < largestAxialWavenumber(c.resolution, previous)))
-      return error("tile_lengths", where + "tile length " + number(l) + " m is more than " +
-                                       std::to_string(c.resolution / 2 - 1) + " times shorter than " + number(previous) +
+      return error("tile_lengths", where + "tile length " + numberText(l) + " m is more than " +
+                                       std::to_string(c.resolution / 2 - 1) + " times shorter than " + numberText(previous) +
                                        " m: the wavenumbers between the two grids would be lost");
   }
   if (!std::isfinite(c.choppiness) || c.choppiness < 0 || c.choppiness > kMaxChoppiness)
-    return error("choppiness", number(c.choppiness) + " is outside [0, " + number(kMaxChoppiness) + "]");
+    return error("choppiness", numberText(c.choppiness) + " is outside [0, " + numberText(kMaxChoppiness) + "]");
   if (c.seed < 0 || c.seed > static_cast<std::int64_t>(UINT32_MAX))
     return error("seed", std::to_string(c.seed) + " is outside the 32-bit range [0, 4294967295]");
   return std::nullopt;

@@ -17,12 +17,6 @@ constexpr double kPiersonMoskowitzBeta = 0.74;     // with omega_0 = g / U19.5
 constexpr double kMaxWindSpeed = 100;              // m/s: no sea state is fitted beyond it
 constexpr double kMaxSpreadExponent = 1000;        // cos-2s: a swell narrower than ~2 degrees
 
-std::string number(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.6g", x);
-  return buf;
-}
-
 // kd past which tanh(kd) is 1 and 2kd / sinh(2kd) is 0 in double.
 constexpr double kDeepKd = 20;
 // kd below which the series tanh(x) / x = 1 - x^2 / 3 is exact in double.
@@ -61,26 +55,26 @@ bool finite(double x) { return std::isfinite(x); }
 std::optional<SettingError> validateSpectrum(const SpectrumSettings& s) {
   auto error = [](std::string p, std::string m) { return std::optional<SettingError>(SettingError{p, m}); };
   if (!finite(s.windSpeed) || s.windSpeed < 0 || s.windSpeed > kMaxWindSpeed)
-    return error("wind_speed", "U10 " + number(s.windSpeed) + " m/s is outside [0, " + number(kMaxWindSpeed) + "]");
+    return error("wind_speed", "U10 " + numberText(s.windSpeed) + " m/s is outside [0, " + numberText(kMaxWindSpeed) + "]");
   if (!finite(s.windDirection)) return error("wind_direction", "must be a finite angle");
   if (std::isnan(s.fetch) || !(s.fetch > 0))
-    return error("fetch", "fetch " + number(s.fetch) + " m must be greater than 0 (the sea needs open water to grow)");
+    return error("fetch", "fetch " + numberText(s.fetch) + " m must be greater than 0 (the sea needs open water to grow)");
   if (std::isnan(s.depth) || !(s.depth > 0))
-    return error("depth", "depth " + number(s.depth) + " m must be greater than 0 (infinity for deep water)");
+    return error("depth", "depth " + numberText(s.depth) + " m must be greater than 0 (infinity for deep water)");
   if (!finite(s.gamma) || s.gamma < 1 || s.gamma > 20)
-    return error("gamma", "peak enhancement " + number(s.gamma) + " is outside [1, 20]");
+    return error("gamma", "peak enhancement " + numberText(s.gamma) + " is outside [1, 20]");
   if (!finite(s.phillipsAmplitude) || s.phillipsAmplitude < 0)
     return error("phillips_amplitude", "must be a finite number >= 0");
   if (!finite(s.phillipsSmallWave) || s.phillipsSmallWave < 0)
     return error("phillips_small_wave", "must be a finite length >= 0");
   if (!finite(s.swell.height) || s.swell.height < 0 || s.swell.height > 30)
-    return error("swell_height", "Hs " + number(s.swell.height) + " m is outside [0, 30]");
+    return error("swell_height", "Hs " + numberText(s.swell.height) + " m is outside [0, 30]");
   if (!finite(s.swell.period) || !(s.swell.period >= 1) || s.swell.period > 60)
-    return error("swell_period", "Tp " + number(s.swell.period) + " s is outside [1, 60]");
+    return error("swell_period", "Tp " + numberText(s.swell.period) + " s is outside [1, 60]");
   if (!finite(s.swell.direction)) return error("swell_direction", "must be a finite angle");
   if (!finite(s.swell.spread) || s.swell.spread < 0 || s.swell.spread > kMaxSpreadExponent)
-    return error("swell_spread", "the cos-2s exponent " + number(s.swell.spread) + " is outside [0, " +
-                                     number(kMaxSpreadExponent) + "]");
+    return error("swell_spread", "the cos-2s exponent " + numberText(s.swell.spread) + " is outside [0, " +
+                                     numberText(kMaxSpreadExponent) + "]");
   return std::nullopt;
 }
 
@@ -257,6 +251,12 @@ double directionalSpectrum(const SpectrumSettings& s, double kx, double kz) {
   }
   if (e.swell > 0) f += e.swell * cos2s(heading - s.swell.direction, s.swell.spread);
   return f / k;  // polar to Cartesian: dkx dkz = k dk dtheta
+}
+
+std::string numberText(double x) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.6g", x);
+  return buf;
 }
 
 }  // namespace wg::ocean

@@ -113,4 +113,7 @@ double omnidirectionalSpectrum(const SpectrumSettings& s, double k);
 // F(kx, kz), m^4. Zero at k = 0.
 double directionalSpectrum(const SpectrumSettings& s, double kx, double kz);
 
+// A value in an error message: six significant digits ("0.0001", "1e+06").
+std::string numberText(double x);
+
 }  // namespace wg::ocean

@@ -9,11 +9,13 @@
 #include <gtest/gtest.h>
 
 #include "core/ocean_fft_reference.h"
+#include "ocean_test_support.h"
 
 namespace wg::ocean {
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using namespace test_support;
+
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 std::string spectrumError(SpectrumSettings s) {

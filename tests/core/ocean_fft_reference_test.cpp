@@ -9,19 +9,16 @@
 #include <gtest/gtest.h>
 
 #include "core/ocean_fft_reference.h"
+#include "ocean_test_support.h"
 #include "core/ocean_random.h"
 
 namespace wg::ocean {
 namespace {
 
-constexpr double g = 9.81;
+using namespace test_support;
+
 constexpr double kEpsilon = 2.220446049250313e-16;
 
-double simpson(const std::function<double(double)>& f, double a, double b, int n) {
-  double h = (b - a) / n, sum = f(a) + f(b);
-  for (int i = 1; i < n; ++i) sum += f(a + i * h) * (i % 2 ? 4 : 2);
-  return sum * h / 3;
-}
 
 // The integral of E(k) over [a, b] on a logarithmic grid.
 double integrateWavenumbers(const SpectrumSettings& s, double a, double b) {

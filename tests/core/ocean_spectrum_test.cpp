@@ -9,19 +9,14 @@
 #include <gtest/gtest.h>
 
 #include "core/ocean_spectrum.h"
+#include "ocean_test_support.h"
 
 namespace wg::ocean {
 namespace {
 
-constexpr double g = 9.81;
-constexpr double kInf = std::numeric_limits<double>::infinity();
+using namespace test_support;
 
-// Composite Simpson's rule on [a, b] with n (even) intervals.
-double simpson(const std::function<double(double)>& f, double a, double b, int n) {
-  double h = (b - a) / n, sum = f(a) + f(b);
-  for (int i = 1; i < n; ++i) sum += f(a + i * h) * (i % 2 ? 4 : 2);
-  return sum * h / 3;
-}
+
 
 // The integral over [-1, 1] by the tanh-sinh rule, which keeps its accuracy when the
 // integrand's derivatives blow up at the ends (cos-2s with s < 1 at theta = +-pi).

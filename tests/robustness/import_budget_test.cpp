@@ -88,7 +88,7 @@ std::optional<Graph> topOf(const std::string& path, Diagnostics& diags) {
   return parseGraph(*text, path, diags);
 }
 
-const Diagnostic* firstError(const Diagnostics& diags) {
+const Diagnostic* firstErrorOf(const Diagnostics& diags) {
   for (const auto& d : diags.all())
     if (d.severity == Severity::Error) return &d;
   return nullptr;
@@ -101,7 +101,7 @@ TEST(ImportBudget, AnExponentialTreeWithinTheNodeLimitIsRefusedBeforeInlining) {
   auto g = topOf(top, diags);
   ASSERT_TRUE(g);
   ASSERT_FALSE(loadImports(*g, diags));  // nothing inlined: the tree alone says so
-  const Diagnostic* e = firstError(diags);
+  const Diagnostic* e = firstErrorOf(diags);
   ASSERT_TRUE(e);
   EXPECT_EQ(codeString(e->code), "WG035") << formatText(*e);
   EXPECT_EQ(e->where.file.str(), top);
@@ -170,8 +170,8 @@ TEST(ImportBudget, AGraphJustUnderTheBudgetCompilesAndOneNodeMoreIsRefused) {
   t.leafNodes = most + 1;
   Diagnostics overDiags;
   EXPECT_FALSE(loadGraphFile(writeTree(dir + "/over", t), overDiags));
-  ASSERT_TRUE(firstError(overDiags));
-  EXPECT_EQ(codeString(firstError(overDiags)->code), "WG035");
+  ASSERT_TRUE(firstErrorOf(overDiags));
+  EXPECT_EQ(codeString(firstErrorOf(overDiags)->code), "WG035");
   std::filesystem::remove_all(dir);
 }
 
@@ -192,7 +192,7 @@ TEST(ImportBudget, TheOpsOfExpressionsAreHeldToTheBudget) {
   ASSERT_TRUE(g) << formatText(diags.all().front());  // 4,096 expressions are few nodes
   EXPECT_LE(inlinedSize(*g).bytes, kMaxInlinedBytes);
   EXPECT_FALSE(buildProgram(*g, defaultRegistry(), diags));
-  const Diagnostic* e = firstError(diags);
+  const Diagnostic* e = firstErrorOf(diags);
   ASSERT_TRUE(e);
   EXPECT_EQ(codeString(e->code), "WG035") << formatText(*e);
   EXPECT_NE(e->where.file.str().find("l12.json"), std::string::npos) << formatText(*e);
