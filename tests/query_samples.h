@@ -22,24 +22,24 @@
 namespace wg::test {
 
 // A steep sea: four Gerstner waves with sum Q k A = 0.969 (1 folds the surface over).
-inline const char* kSteepWaves = R"([
+inline const char* kSteepWaves = R"J([
   {"direction": [1, 0.2], "steepness": 1, "wavelength": 12, "amplitude": 1.5},
   {"direction": [0.3, 1], "steepness": 0.6, "wavelength": 7, "amplitude": 0.25},
   {"direction": [-0.7, 0.6], "steepness": 0.3, "wavelength": 4, "amplitude": 0.08, "phase": 1.3},
-  {"direction": [0.9, -0.4], "steepness": 0.4, "wavelength": 2.5, "amplitude": 0.012}])";
+  {"direction": [0.9, -0.4], "steepness": 0.4, "wavelength": 2.5, "amplitude": 0.012}])J";
 inline constexpr double kSteepSum = 0.969;  // sum Q k A of kSteepWaves, rounded down
 
 // A moderate sea (sum Q k A = 0.415), under the mixed graph's other displacements.
-inline const char* kModerateWaves = R"([
+inline const char* kModerateWaves = R"J([
   {"direction": [1, 0.25], "steepness": 0.45, "wavelength": 14},
   {"direction": [0.6, 1], "steepness": 0.35, "wavelength": 8},
-  {"direction": [-0.4, 1], "steepness": 0.3, "wavelength": 5, "phase": 0.4}])";
+  {"direction": [-0.4, 1], "steepness": 0.3, "wavelength": 5, "phase": 0.4}])J";
 
 // A graph whose displacement is Gerstner waves, an expression over the point, the time
 // and a parameter, and a subgraph (swell.json, written beside it by writeMixedGraph), with
 // parameters named like C keywords and macros.
 inline std::string mixedGraphJson(const std::string& waves) {
-  return R"({"version": 1, "name": "mixed",
+  return R"J({"version": 1, "name": "mixed",
   "imports": {"swell": "swell.json"},
   "parameters": {
     "lift": {"type": "float", "default": 0.3, "min": 0, "max": 1},
@@ -49,8 +49,8 @@ inline std::string mixedGraphJson(const std::string& waves) {
     "linux": {"type": "float", "default": 1.5, "max": 3},
     "unix": {"type": "vec3", "default": [0, 0.1, 0.2], "min": 0, "max": 1, "hint": "color"}},
   "nodes": [
-    {"id": "waves", "type": "gerstner_waves", "options": {"waves": )" +
-         waves + R"(}},
+    {"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" +
+         waves + R"J(}},
     {"id": "p", "type": "world_position"},
     {"id": "t", "type": "time"},
     {"id": "bump", "type": "expression",
@@ -64,10 +64,10 @@ inline std::string mixedGraphJson(const std::string& waves) {
     {"id": "tint", "type": "mul", "inputs": {"a": "$unix", "b": 0.5}}
   ],
   "outputs": {"vertex": {"position": "surface.position", "normal": "surface.normal"},
-              "fragment": {"color": "tint.out"}}})";
+              "fragment": {"color": "tint.out"}}})J";
 }
 
-inline const char* kSwellJson = R"({"version": 1, "name": "swell",
+inline const char* kSwellJson = R"J({"version": 1, "name": "swell",
   "interface": {"description": "a slow vertical swell over the point",
                 "outputs": {"displacement": {"type": "vec3", "source": "d.out", "description": "the offset"}}},
   "parameters": {
@@ -80,7 +80,7 @@ inline const char* kSwellJson = R"({"version": 1, "name": "swell",
      "options": {"inputs": {"p": "vec3", "s": "float", "g": "float", "t": "float"},
                  "formula": "vec3(0.0, 0.2 * g * smoothstep(-1.0, 1.0, sin(0.05 * (p.x + p.z) + s * t)) + 0.02 * length(p.xz * 0.01), 0.0)"},
      "inputs": {"p": "$position", "s": "$speed", "g": "$gain", "t": "t.out"}}
-  ]})";
+  ]})J";
 
 // Writes mixed.json and swell.json into `dir`; returns mixed.json's path.
 inline std::string writeMixedGraph(const std::string& dir, const std::string& waves = kModerateWaves) {
@@ -89,18 +89,15 @@ inline std::string writeMixedGraph(const std::string& dir, const std::string& wa
   return dir + "/mixed.json";
 }
 
-inline std::optional<CompileResult> compileFile(const std::string& path, std::string* errors = nullptr) {
+// The graph at `path` after the compiler's passes (what compile emits and queries from).
+inline std::optional<Program> compileFile(const std::string& path, std::string* errors = nullptr) {
   Diagnostics diags;
   auto graph = loadGraphFile(path, diags);
-  std::optional<CompileResult> result;
-  if (graph) {
-    CompileOptions o;
-    o.targets = {Target::Glsl330};
-    result = compileGraph(*graph, defaultRegistry(), o, diags);
-  }
+  std::optional<Program> program;
+  if (graph) program = buildProgram(*graph, defaultRegistry(), diags);
   if (errors)
     for (const auto& d : diags.sorted()) *errors += d.message + "\n";
-  return result;
+  return program;
 }
 
 // The vertex stage in double: the ops the vertex position and normal outputs read (every
