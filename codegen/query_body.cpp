@@ -87,8 +87,15 @@ std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage langua
   }
   if (!ok) return std::nullopt;
   QueryValue position = valueOf(query->position);
-  for (size_t i = 0; i < 3; ++i) body.position[i] = position.at(i);
-  body.statements = w.text();
+  std::vector<std::string> roots;
+  for (size_t i = 0; i < 3; ++i) {
+    body.position[i] = position.at(i);
+    roots.push_back(body.position[i].value);
+    roots.insert(roots.end(), body.position[i].d.begin(), body.position[i].d.end());
+  }
+  body.statements = w.text(roots);
+  // A parameter the kept statements do not read is no reason to touch the struct.
+  body.readsParameters = body.statements.find(c ? "p->" : "p.") != std::string::npos;
   return body;
 }
 

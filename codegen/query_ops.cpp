@@ -1,6 +1,7 @@
 #include "codegen/query_ops.h"
 
 #include <map>
+#include <set>
 
 #include "codegen/derived_vocabulary.h"
 #include "core/interface_tables.h"
@@ -227,8 +228,43 @@ std::string QueryWriter::bind(const std::string& name, const std::string& expr) 
   bool simple = !expr.empty();
   for (char c : expr) simple = simple && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.');
   if (simple) return expr;
-  text_ += std::string(language_ == HeaderLanguage::C ? "  const double " : "  const ") + name + " = " + expr + ";\n";
+  locals_.emplace_back(name, expr);
   return name;
+}
+
+namespace {
+
+// The identifiers in `expr` ("t0_s1", "sin", "1e38" too: numbers are harmless).
+void addNames(const std::string& expr, std::set<std::string>& names) {
+  for (size_t i = 0; i < expr.size();) {
+    if (std::isalnum(static_cast<unsigned char>(expr[i])) || expr[i] == '_') {
+      size_t j = i;
+      while (j < expr.size() && (std::isalnum(static_cast<unsigned char>(expr[j])) || expr[j] == '_')) ++j;
+      names.insert(expr.substr(i, j - i));
+      i = j;
+    } else {
+      ++i;
+    }
+  }
+}
+
+}  // namespace
+
+std::string QueryWriter::text(const std::vector<std::string>& roots) const {
+  std::set<std::string> read;
+  for (const std::string& r : roots) addNames(r, read);
+  std::vector<bool> keep(locals_.size(), false);
+  for (size_t k = locals_.size(); k-- > 0;)  // a local reads only earlier ones
+    if (read.count(locals_[k].first)) {
+      keep[k] = true;
+      addNames(locals_[k].second, read);
+    }
+  std::string text;
+  for (size_t k = 0; k < locals_.size(); ++k)
+    if (keep[k])
+      text += std::string(language_ == HeaderLanguage::C ? "  const double " : "  const ") + locals_[k].first + " = " +
+              locals_[k].second + ";\n";
+  return text;
 }
 
 bool queryOpKnown(std::string_view type) {

@@ -32,12 +32,14 @@ class QueryWriter {
   explicit QueryWriter(HeaderLanguage language) : language_(language) {}
   // `expr` as it is when it is a name or a number; otherwise a new local `name` holding it.
   std::string bind(const std::string& name, const std::string& expr);
-  const std::string& text() const { return text_; }
+  // The statements `roots` (expressions the function's outputs read) need, in order; a
+  // local nothing reads (a component a swizzle drops) is left out, so -Wall stays quiet.
+  std::string text(const std::vector<std::string>& roots) const;
   HeaderLanguage language() const { return language_; }
 
  private:
   HeaderLanguage language_;
-  std::string text_;
+  std::vector<std::pair<std::string, std::string>> locals_;  // name, expression
 };
 
 // Why an op cannot be part of a query (thrown while writing it; the caller names the node).

@@ -241,10 +241,11 @@ inline std::vector<std::vector<double>> compileAndRunC(const std::string& dir, c
   return runNumbers(shellQuote(exe));
 }
 
-// The compilers each header is held to: C99 and C++ with GCC and Clang.
+// The compilers each header is held to: C99 and C++ with GCC and Clang, GCC in its GNU
+// dialects (which predefine `linux` and `unix`), Clang in strict ISO mode.
 inline const std::vector<std::string>& cCompilers() {
-  static const std::vector<std::string> c = {"gcc -std=c99 -pedantic", "g++ -x c++ -std=c++17 -pedantic",
-                                             "clang -std=c99 -pedantic", "clang++ -x c++ -std=c++17 -pedantic"};
+  static const std::vector<std::string> c = {"gcc -std=gnu99", "g++ -x c++ -std=gnu++17", "clang -std=c99 -pedantic",
+                                             "clang++ -x c++ -std=c++17 -pedantic"};
   return c;
 }
 
