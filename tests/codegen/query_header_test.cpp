@@ -245,7 +245,8 @@ TEST(QueryHeader, AnUnqueryableDisplacementIsAnErrorNamingTheNode) {
                                  " --target glsl330,query-c");
     EXPECT_EQ(r.exit, 1) << r.err;
     EXPECT_NE(r.err.find("bad.json:"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("error: [WG044] " + k.why.substr(0, 20)), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("error: [WG044] node '"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find(k.why), std::string::npos) << r.err;
     EXPECT_TRUE(test::listFiles(dir + "/out").empty()) << "nothing is written for a refused graph";
     std::filesystem::remove_all(dir);
   }
