@@ -8,7 +8,7 @@ namespace wg {
 
 std::string numberLiteral(double x, HeaderLanguage language) {
   const bool c = language == HeaderLanguage::C;
-  if (std::isnan(x)) return c ? "NAN" : "NaN";
+  if (std::isnan(x)) return c ? "((double)NAN)" : "NaN";
   if (std::isinf(x)) return x > 0 ? (c ? "HUGE_VAL" : "Infinity") : (c ? "-HUGE_VAL" : "-Infinity");
   std::string s = formatNumber(x);
   if (c && s.find_first_of(".e") == std::string::npos) s += ".0";

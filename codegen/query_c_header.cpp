@@ -124,7 +124,7 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += "  double P[3], dx[3], dz[3], dt[3];\n  int i;\n";
   h += "  if (wgq_finite(x0) && wgq_finite(z0) && wgq_finite(t)) {\n";
   h += "    " + g + "surface_at(p, x0, z0, t, P, dx, dz, dt);\n";
-  h += "  } else {\n    for (i = 0; i < 3; ++i) P[i] = dx[i] = dz[i] = dt[i] = NAN;\n  }\n";
+  h += "  } else {\n    for (i = 0; i < 3; ++i) P[i] = dx[i] = dz[i] = dt[i] = (double)NAN;\n  }\n";
   h += "  if (position) for (i = 0; i < 3; ++i) position[i] = P[i];\n";
   h += "  if (velocity) for (i = 0; i < 3; ++i) velocity[i] = dt[i];\n";
   h += "  if (normal) wgq_normal(dx, dz, normal);\n}\n\n";
@@ -132,16 +132,16 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += "/* The height of the surface above the world point (x, z) at time t (see the top). */\n";
   h += "static inline double " + g + "height(const " + params + "* p, double x, double z, double t) {\n";
   h += "  double P[3], dx[3], dz[3], dt[3];\n";
-  h += "  double x0 = x, z0 = z, bestX0 = x, bestZ0 = z, bestY = NAN, best = HUGE_VAL, sx = 0.0, sz = 0.0;\n";
+  h += "  double x0 = x, z0 = z, bestX0 = x, bestZ0 = z, bestY = (double)NAN, best = HUGE_VAL, sx = 0.0, sz = 0.0;\n";
   h += "  const double tolerance = " + num(kQueryHeightTolerance) + " * (1.0 + fabs(x) + fabs(z));\n";
   h += "  int i;\n";
-  h += "  if (!(wgq_finite(x) && wgq_finite(z) && wgq_finite(t))) return NAN;\n";
+  h += "  if (!(wgq_finite(x) && wgq_finite(z) && wgq_finite(t))) return (double)NAN;\n";
   h += "  for (i = 0; i < " + std::to_string(kQueryMaxSteps) + "; ++i) {\n";
   h += "    double rx, rz, r, det;\n";
   h += "    " + g + "surface_at(p, x0, z0, t, P, dx, dz, dt);\n";
   h += "    rx = P[0] - x;\n    rz = P[2] - z;\n";
   h += "    r = fabs(rx) > fabs(rz) ? fabs(rx) : fabs(rz);\n";
-  h += "    if (r != r) return NAN; /* a NaN parameter */\n";
+  h += "    if (r != r) return (double)NAN; /* a NaN parameter */\n";
   h += "    if (!(r < best)) { /* no closer: halve the last step from the best point */\n";
   h += "      sx *= 0.5;\n      sz *= 0.5;\n      x0 = bestX0 - sx;\n      z0 = bestZ0 - sz;\n      continue;\n    }\n";
   h += "    best = r;\n    bestX0 = x0;\n    bestZ0 = z0;\n    bestY = P[1];\n";
