@@ -31,6 +31,11 @@ std::string builtinRefusal(Builtin b) {
          "', which a surface query does not have (it knows the point x0, z0, the time and the parameters)";
 }
 
+// Node types that draw a surface other than the mesh's: trochoid_wave finds a height field
+// along each pixel's view ray on a flat mesh. The vertex stage does not move the water
+// there, so a query of it would answer the flat plane while the picture shows waves.
+bool drawsItsOwnSurface(const Op& op) { return op.spec->type == "trochoid_wave"; }
+
 }  // namespace
 
 std::optional<QueryProgram> extractQuery(const Program& program, Diagnostics& diags) {
@@ -39,6 +44,18 @@ std::optional<QueryProgram> extractQuery(const Program& program, Diagnostics& di
   q.program.file = program.file;
   q.program.directory = program.directory;
   q.program.parameters = program.parameters;
+  bool ok = true;
+  for (const Op& op : program.ops)
+    if (drawsItsOwnSurface(op)) {
+      withInstanceNotes(diags.error(DiagCode::NotQueryable, op.where,
+                                    "node '" + op.nodeId + "' (" + op.spec->type +
+                                        ") draws a surface the fragment stage finds along each view ray, which the "
+                                        "vertex stage does not displace; a surface query would answer the flat mesh",
+                                    op.nodeId),
+                        op);
+      ok = false;
+    }
+  if (!ok) return std::nullopt;
   const ProgramOutput* out = program.output(OutputSlot::VertexPosition);
   if (!out || out->value.kind != ValueRef::Kind::Op) {  // the water is not displaced
     q.position = ValueRef::builtin(Builtin::WorldPosition);
@@ -60,7 +77,6 @@ std::optional<QueryProgram> extractQuery(const Program& program, Diagnostics& di
   std::vector<std::vector<bool>> read(program.ops.size());
   for (size_t i = 0; i < program.ops.size(); ++i) read[i].assign(program.ops[i].outputTypes.size(), false);
   read[static_cast<size_t>(out->value.index)][static_cast<size_t>(out->value.port)] = true;
-  bool ok = true;
   for (size_t k = program.ops.size(); k-- > 0;) {
     const Op& op = program.ops[k];
     bool any = false;

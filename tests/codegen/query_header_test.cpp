@@ -252,5 +252,18 @@ TEST(QueryHeader, AnUnqueryableDisplacementIsAnErrorNamingTheNode) {
   }
 }
 
+// deferred_underwater draws the trochoid wave found per pixel on a flat mesh: its query is
+// refused at that node rather than answered flat.
+TEST(QueryHeader, AFragmentStageSurfaceIsRefusedNotAnsweredFlat) {
+  auto program = test::compileFile(test::sourcePath("graphs/deferred_underwater.json"));
+  ASSERT_TRUE(program);
+  Diagnostics diags;
+  EXPECT_FALSE(queryCHeader("deferred_underwater", *program, diags));
+  ASSERT_EQ(diags.all().size(), 1u);
+  EXPECT_EQ(diags.all()[0].code, DiagCode::NotQueryable);
+  EXPECT_NE(diags.all()[0].message.find("node 'wave' (trochoid_wave) draws a surface"), std::string::npos)
+      << diags.all()[0].message;
+}
+
 }  // namespace
 }  // namespace wg
