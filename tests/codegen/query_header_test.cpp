@@ -201,6 +201,35 @@ TEST(QueryHeader, NonFiniteInputGivesNaNWithoutHanging) {
   std::filesystem::remove_all(c.dir);
 }
 
+// The batched forms give exactly what one call per point gives, and take NULL outputs.
+TEST(QueryHeader, BatchedFormsAnswerAsSingleCalls) {
+  Compiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
+  test::writeFile(c.dir + "/main.c", R"C(#include <stdio.h>
+#include "g.query.h"
+int main(void) {
+  double x[5] = {-3.5, 0.0, 2.25, 10.0, 1e4}, z[5] = {1.0, -7.5, 0.5, 3.0, -2e3};
+  double P[15], N[15], V[15], h[5], p1[3], n1[3], v1[3];
+  size_t i, k, bad = 0;
+  wg_g_params p;
+  wg_g_params_default(&p);
+  wg_g_displace_batch(&p, 5, x, z, 12.5, P, N, V);
+  wg_g_height_batch(&p, 5, x, z, 12.5, h);
+  wg_g_displace_batch(&p, 5, x, z, 12.5, NULL, NULL, NULL);
+  for (i = 0; i < 5; ++i) {
+    wg_g_displace(&p, x[i], z[i], 12.5, p1, n1, v1);
+    for (k = 0; k < 3; ++k) bad += P[3 * i + k] != p1[k] || N[3 * i + k] != n1[k] || V[3 * i + k] != v1[k];
+    bad += h[i] != wg_g_height(&p, x[i], z[i], 12.5);
+  }
+  printf("%zu\n", bad);
+  return 0;
+}
+)C");
+  auto rows = test::compileAndRunC(c.dir, "gcc -std=c99");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0], std::vector<double>{0.0});
+  std::filesystem::remove_all(c.dir);
+}
+
 TEST(QueryHeader, GeneratedTwiceIsTheSameText) {
   auto result = test::compileFile(test::sourcePath("graphs/ocean.json"));
   ASSERT_TRUE(result);

@@ -81,5 +81,37 @@ TEST(QueryJs, ExpressionsSubgraphsAndParametersAgreeWithTheCHeader) {
   std::filesystem::remove_all(dir);
 }
 
+// The module's batched forms give exactly what one call per point gives.
+TEST(QueryJs, BatchedFormsAnswerAsSingleCalls) {
+  std::string dir = test::makeTempDir("wg_query_js_batch");
+  auto program = test::compileFile(test::sourcePath("graphs/ocean.json"));
+  ASSERT_TRUE(program);
+  Diagnostics diags;
+  auto module = queryJsModule("g", *program, diags);
+  ASSERT_TRUE(module);
+  test::writeFile(dir + "/g.query.js", *module);
+  test::writeFile(dir + "/package.json", "{\"type\": \"module\"}\n");
+  test::writeFile(dir + "/main.js", R"JS(import * as q from './g.query.js';
+const p = q.wg_g_params_default();
+const x = [-3.5, 0, 2.25, 10, 1e4], z = [1, -7.5, 0.5, 3, -2e3];
+const P = new Float64Array(15), N = new Float64Array(15), V = new Float64Array(15), h = new Float64Array(5);
+q.wg_g_displace_batch(p, 5, x, z, 12.5, P, N, V);
+q.wg_g_height_batch(p, 5, x, z, 12.5, h);
+q.wg_g_displace_batch(p, 5, x, z, 12.5, null, null, null);
+let bad = 0;
+for (let i = 0; i < 5; ++i) {
+  const p1 = [0, 0, 0], n1 = [0, 0, 0], v1 = [0, 0, 0];
+  q.wg_g_displace(p, x[i], z[i], 12.5, p1, n1, v1);
+  for (let k = 0; k < 3; ++k) bad += P[3 * i + k] !== p1[k] || N[3 * i + k] !== n1[k] || V[3 * i + k] !== v1[k];
+  bad += h[i] !== q.wg_g_height(p, x[i], z[i], 12.5);
+}
+console.log(bad);
+)JS");
+  auto rows = test::runNumbers("cd " + test::shellQuote(dir) + " && timeout 60 node main.js");
+  ASSERT_EQ(rows.size(), 1u);
+  EXPECT_EQ(rows[0], std::vector<double>{0.0});
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace wg
