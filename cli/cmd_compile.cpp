@@ -19,6 +19,7 @@
 #include "cli/commands.h"
 #include "codegen/compile.h"
 #include "codegen/derived_c_header.h"
+#include "codegen/query_header.h"
 #include "codegen/depfile.h"
 #include "core/node_preview_graph.h"
 #include "codegen/frequency_report.h"
@@ -52,6 +53,9 @@ struct CompileArgs {
 };
 
 constexpr std::string_view kCHeaderTarget = "c-header";
+constexpr std::string_view kQueryCTarget = "query-c";
+constexpr std::string_view kQueryJsTarget = "query-js";
+constexpr const char* kTargetNames = "glsl330, es300, vk450, msl, hlsl, c-header, query-c, query-js";
 
 struct TargetSet {
   std::vector<Target> glsl;
@@ -60,14 +64,19 @@ struct TargetSet {
   // (codegen/derived_c_header.h). It implies --derived-uniforms, so the shaders written
   // beside it read what it computes.
   bool cHeader = false;
+  // query-c / query-js: <graph>.query.h / <graph>.query.js, the surface queries of the
+  // vertex stage's displacement (codegen/query_header.h).
+  bool queryC = false, queryJs = false;
   std::string list() const {
     std::string s;
     for (Target t : glsl) s += (s.empty() ? "" : ",") + std::string(targetName(t));
     for (CrossTarget t : cross) s += (s.empty() ? "" : ",") + std::string(crossTargetName(t));
     if (cHeader) s += (s.empty() ? "" : ",") + std::string(kCHeaderTarget);
+    if (queryC) s += (s.empty() ? "" : ",") + std::string(kQueryCTarget);
+    if (queryJs) s += (s.empty() ? "" : ",") + std::string(kQueryJsTarget);
     return s;
   }
-  size_t size() const { return glsl.size() + cross.size() + (cHeader ? 1 : 0); }
+  size_t size() const { return glsl.size() + cross.size() + (cHeader ? 1 : 0) + (queryC ? 1 : 0) + (queryJs ? 1 : 0); }
 };
 
 bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
@@ -76,7 +85,7 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
     std::stringstream ss(n);
     std::string part;
     if (n.empty()) {
-      std::cerr << "watergraph: --target is empty (glsl330, es300, vk450, msl, hlsl, c-header)\n";
+      std::cerr << "watergraph: --target is empty (" << kTargetNames << ")\n";
       return false;
     }
     // getline drops a trailing empty entry: "glsl330," would pass as "glsl330".
@@ -91,12 +100,16 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
         if (!dup) out.glsl.push_back(*t);
       } else if (part == kCHeaderTarget) {
         out.cHeader = true;
+      } else if (part == kQueryCTarget) {
+        out.queryC = true;
+      } else if (part == kQueryJsTarget) {
+        out.queryJs = true;
       } else if (auto c = parseCrossTarget(part)) {
         bool dup = false;
         for (CrossTarget have : out.cross) dup |= have == *c;
         if (!dup) out.cross.push_back(*c);
       } else {
-        std::cerr << "watergraph: unknown target '" << part << "' (glsl330, es300, vk450, msl, hlsl, c-header)\n";
+        std::cerr << "watergraph: unknown target '" << part << "' (" << kTargetNames << ")\n";
         return false;
       }
     }
@@ -232,6 +245,14 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
         if (!compileGraphWithCross(*other, defaultRegistry(), options, targets.cross, diags)) result.reset();
     }
     if (result && targets.cHeader) result->files.push_back(derivedHeaderFile(outcome.name, result->manifest));
+    if (result && targets.queryC) {
+      if (auto h = queryCHeader(outcome.name, result->program, diags)) result->files.push_back({outcome.name + ".query.h", *h});
+      else result.reset();
+    }
+    if (result && targets.queryJs) {
+      if (auto m = queryJsModule(outcome.name, result->program, diags)) result->files.push_back({outcome.name + ".query.js", *m});
+      else result.reset();
+    }
     outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }
   if (result && args.textures) {
@@ -407,7 +428,9 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   cmd->add_option("--target", args.targets,
                   "targets, comma separated: glsl330, es300, vk450 (default: these three), msl, hlsl (from the vk450 "
                   "SPIR-V through SPIRV-Cross), c-header (<graph>.derived.h: C that computes the derived uniforms "
-                  "once per draw, for a renderer of your own; implies --derived-uniforms)");
+                  "once per draw, for a renderer of your own; implies --derived-uniforms), query-c and query-js "
+                  "(<graph>.query.h, <graph>.query.js: where the water surface is, its height, normal and velocity, "
+                  "from the vertex stage's displacement, for game code; docs/queries.md)");
   auto* quiet = cmd->add_flag("-q,--quiet", args.quiet, "print only errors");
   cmd->add_flag("-v,--verbose", args.verbose, "print one line per graph: nodes kept, files, time")->excludes(quiet);
   cmd->add_flag("--no-progress", args.noProgress, "no progress bar (it is drawn only when stdout is a terminal)");
@@ -437,6 +460,7 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph compile graphs/lake.json -o out --target es300\n"
       "  watergraph compile graphs/lake.json -o out --target msl,hlsl\n"
       "  watergraph compile graphs/lake.json -o out --target glsl330,c-header   # shaders + lake.derived.h\n"
+      "  watergraph compile graphs/ocean.json -o out --target glsl330,query-c   # shaders + ocean.query.h\n"
       "  watergraph compile graphs/lake.json -o out --target es300 --textures   # for the three.js client\n"
       "  watergraph compile graphs/*.json -o out --verbose\n"
       "  watergraph compile graphs/lake.json -o out --watch        # recompile on every save\n"

@@ -118,6 +118,11 @@ const std::vector<std::string_view>& derivedNodeTypes() {
   return all;
 }
 
+const char* componentWiseFormula(std::string_view type) {
+  auto f = componentWise().find(type);
+  return f == componentWise().end() ? nullptr : f->second.data();
+}
+
 bool isDerivedNodeType(std::string_view type) {
   const auto& v = derivedNodeTypes();
   return std::binary_search(v.begin(), v.end(), type);

@@ -27,6 +27,11 @@ bool isDerivedNodeType(std::string_view type);
 std::string derivedOpC(const Op& op, const std::vector<std::string>& inputs, const std::vector<Type>& sourceTypes,
                        const std::vector<std::string>& outputs);
 
+// A component-wise node type's formula over the scalars $0, $1, $2 (its inputs' components)
+// as a C expression over the wgd_ helpers and <math.h>; nullptr for another type. The
+// surface query (codegen/query_ops.h) writes the same formulas, in C and JavaScript.
+const char* componentWiseFormula(std::string_view type);
+
 // The `static` C helper functions the statements call (wgd_*), each mirroring the node
 // library's double form, NaN handling included.
 std::string_view derivedCHelpers();

@@ -61,10 +61,10 @@ int main() {
   // The shimmering sky colour is the same for every pixel of a draw: the shader reads it as
   // u_derived0, and the renderer computes it once per draw, here at t = 2 s.
   wg_pond_parameters parameters;
-  wg_pond_default_parameters(&parameters);
+  wg_pond_parameters_default(&parameters);
   wg_pond_draw draw{};
   draw.time = 2.0;
-  wg_pond_derived derived;
+  wg_pond_uniforms derived;
   wg_pond_compute_derived(&parameters, &draw, &derived);
   std::printf("u_derived0 at t = 2 s: %.6f %.6f %.6f\n", derived.u_derived0[0], derived.u_derived0[1],
               derived.u_derived0[2]);

@@ -31,7 +31,7 @@ std::string driver(const DerivedSample& s, const std::vector<DerivedCase>& cases
   const std::string pre = derivedCPrefix("sample");
   std::string c = "#include <math.h>\n#include <stdio.h>\n#include <string.h>\n#include \"sample.h\"\nint main(void) {\n";
   for (const DerivedCase& k : cases) {
-    c += "  {\n    " + pre + "parameters p;\n    " + pre + "draw d;\n    " + pre + "derived o;\n";
+    c += "  {\n    " + pre + "parameters p;\n    " + pre + "draw d;\n    " + pre + "uniforms o;\n";
     c += "    memset(&d, 0, sizeof d);\n";
     for (size_t i = 0; i < s.parameters.size(); ++i) {
       const Value& v = k.parameters[i];
@@ -135,7 +135,7 @@ TEST_F(DerivedCHeader, IsDeterministicAndNamesTheGraph) {
   std::string again = derivedCHeader("sample", sample_->parameters, sample_->derived);
   EXPECT_EQ(again, test::readFile(dir_ + "/sample.h"));
   EXPECT_NE(again.find("wg_sample_compute_derived"), std::string::npos);
-  EXPECT_EQ(derivedCPrefix("my-lake.v2"), "wg_my_lake_v2_");
+  EXPECT_EQ(derivedCPrefix("my-lake.v2"), "wg_zzmy_2dlake_2ev2_");  // codegen/c_names.h
 }
 
 // Found in review: parameters named like <math.h>'s object-like macros (NAN, INFINITY,
@@ -145,9 +145,9 @@ TEST_F(DerivedCHeader, IsDeterministicAndNamesTheGraph) {
 TEST_F(DerivedCHeader, MacroLikeParameterNamesAndUnreadConstantsCompileCleanly) {
   std::vector<ProgramParameter> parameters = sample_->parameters;  // the derived values index these
   const std::vector<std::pair<std::string, std::string>> names = {
-      {"NAN", "NAN_"}, {"INFINITY", "INFINITY_"}, {"M_PI", "M_PI_"}, {"HUGE_VAL", "HUGE_VAL_"},
-      {"math_errhandling", "math_errhandling_"}, {"DOMAIN", "DOMAIN_"}, {"__x", "p__x"}, {"_Y", "p_Y"}, {"class", "class_"},
-      {"speed", "speed"}};
+      {"NAN", "zzNAN"}, {"INFINITY", "zzINFINITY"}, {"M_PI", "zzM_5fPI"}, {"HUGE_VAL", "zzHUGE_5fVAL"},
+      {"math_errhandling", "zzmath_5ferrhandling"}, {"DOMAIN", "zzDOMAIN"}, {"__x", "zz_5f_5fx"}, {"_Y", "zz_5fY"},
+      {"class", "zzclass"}, {"speed", "speed"}};
   for (const auto& [name, member] : names) {
     ProgramParameter p;
     p.name = name;
@@ -157,7 +157,7 @@ TEST_F(DerivedCHeader, MacroLikeParameterNamesAndUnreadConstantsCompileCleanly) 
   std::string dir = test::makeTempDir("wg_derived_c_macros");
   test::writeFile(dir + "/macros.h", derivedCHeader("macros", parameters, sample_->derived));
   std::string c = "#include <math.h>\n#include \"macros.h\"\nint main(void) {\n  wg_macros_parameters p;\n"
-                  "  wg_macros_default_parameters(&p);\n";
+                  "  wg_macros_parameters_default(&p);\n";
   for (const auto& [name, member] : names) c += "  p." + member + " = 2.0;\n";
   test::writeFile(dir + "/main.c", c + "  return p.speed == 2.0 ? 0 : 1;\n}\n");
   for (const std::string compiler : {"cc -std=c99 -pedantic", "c++ -x c++ -std=c++17"}) {

@@ -1,0 +1,240 @@
+// The surface query (compile --target query-c) against the GPU's vertex stage: the
+// generated vertex shader of glsl330 and es300 runs on llvmpipe with the runtime's uniform
+// values (model and view-projection identity, the time phases computed in double), and
+// transform feedback captures each vertex's displaced position (gl_Position). It differs from the
+// query's double answer by no more than the shader's float32 rounding allows: per wave, the
+// phase k mod(D.x, L) + phase carries about 2^-24 (4 pi + 3 k (|x0| + |z0|)) of rounding,
+// which moves the point by A (1 + Q) times that; the sums and the input point add
+// 2^-24 (|x0| + |z0| + sum A) each. The bound is that sum. Cases: every example
+// graph that displaces its water (tessellation off: the vertex stage displaces), a steep
+// sea (sum Q k A = 0.97) at its crests, t = 1e6 s.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include <epoxy/gl.h>
+
+#include "codegen/query_header.h"
+#include "nodes/gerstner_waves.h"
+#include "query_samples.h"
+#include "runtime/egl_context.h"
+#include "runtime/preview.h"
+#include "runtime/uniform_values.h"
+
+namespace wg::rt {
+namespace {
+
+using test::QueryPoint;
+
+struct Captured {
+  std::vector<float> positions;  // 3 per point
+  std::string error;
+};
+
+GLuint compiled(GLenum stage, const std::string& source, std::string& error) {
+  GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048];
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    error = log;
+  }
+  return shader;
+}
+
+// The displaced positions the vertex shader `vertexText` computes for the points, under the
+// manifest's uniforms at time t: gl_Position, with the view-projection the identity.
+Captured captureVertexStage(const std::string& vertexText, bool es, const Manifest& manifest,
+                            const std::vector<QueryPoint>& points, double t) {
+  Captured c;
+  GLuint shader = compiled(GL_VERTEX_SHADER, vertexText, c.error);
+  // ES programs need a fragment shader even when nothing is rasterised.
+  GLuint fragment = compiled(GL_FRAGMENT_SHADER,
+                             es ? "#version 300 es\nprecision mediump float;\nout vec4 c;\nvoid main() { c = vec4(0.0); }\n"
+                                : "#version 330 core\nout vec4 c;\nvoid main() { c = vec4(0.0); }\n",
+                             c.error);
+  if (!c.error.empty()) return c;
+  GLint ok = 0;
+  GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glAttachShader(program, fragment);
+  const char* varyings[] = {"gl_Position"};
+  glTransformFeedbackVaryings(program, 1, varyings, GL_INTERLEAVED_ATTRIBS);
+  glLinkProgram(program);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[2048];
+    glGetProgramInfoLog(program, sizeof log, nullptr, log);
+    c.error = log;
+    return c;
+  }
+  glUseProgram(program);
+  FrameValues frame;
+  frame.time = t;
+  for (const ManifestUniform& u : manifest.uniforms) {
+    GLint at = glGetUniformLocation(program, u.name.c_str());
+    if (at < 0) continue;
+    std::vector<float> v;
+    if (u.parameter) {
+      for (double d : u.parameter->defaultValue) v.push_back(static_cast<float>(d));
+      clampIntoRange(v, u.parameter->min ? static_cast<float>(*u.parameter->min) : -INFINITY,
+                     u.parameter->max ? static_cast<float>(*u.parameter->max) : INFINITY);
+    } else {
+      v = builtinUniformValue(u.builtin, u.angularFrequency, frame);
+    }
+    switch (u.type) {
+      case Type::Float: glUniform1fv(at, 1, v.data()); break;
+      case Type::Vec2: glUniform2fv(at, 1, v.data()); break;
+      case Type::Vec3: glUniform3fv(at, 1, v.data()); break;
+      case Type::Vec4: glUniform4fv(at, 1, v.data()); break;
+      case Type::Mat4: glUniformMatrix4fv(at, 1, GL_FALSE, v.data()); break;
+      default: c.error = "uniform " + u.name + " of a type this test does not set"; return c;
+    }
+  }
+  std::vector<float> in;
+  for (const QueryPoint& q : points) in.insert(in.end(), {static_cast<float>(q.x0), 0.0f, static_cast<float>(q.z0)});
+  GLuint vao = 0, buffers[2] = {0, 0};
+  glGenVertexArrays(1, &vao);
+  glBindVertexArray(vao);
+  glGenBuffers(2, buffers);
+  glBindBuffer(GL_ARRAY_BUFFER, buffers[0]);
+  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(in.size() * sizeof(float)), in.data(), GL_STATIC_DRAW);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glEnableVertexAttribArray(0);
+  glBindBuffer(GL_TRANSFORM_FEEDBACK_BUFFER, buffers[1]);
+  const size_t captured = 4 * points.size();  // vec4 gl_Position per point
+  glBufferData(GL_TRANSFORM_FEEDBACK_BUFFER, static_cast<GLsizeiptr>(captured * sizeof(float)), nullptr, GL_STATIC_READ);
+  glBindBufferBase(GL_TRANSFORM_FEEDBACK_BUFFER, 0, buffers[1]);
+  // The context is surfaceless: a draw needs a complete framebuffer even when nothing is
+  // rasterised.
+  GLuint fbo = 0, rb = 0;
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glGenRenderbuffers(1, &rb);
+  glBindRenderbuffer(GL_RENDERBUFFER, rb);
+  glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1, 1);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, rb);
+  glEnable(GL_RASTERIZER_DISCARD);
+  glBeginTransformFeedback(GL_POINTS);
+  glDrawArrays(GL_POINTS, 0, static_cast<GLsizei>(points.size()));
+  glEndTransformFeedback();
+  glDisable(GL_RASTERIZER_DISCARD);
+  if (GLenum e = glGetError(); e != GL_NO_ERROR) {
+    c.error = "GL error " + std::to_string(e) + " drawing the points";
+    return c;
+  }
+  const void* mapped = glMapBufferRange(GL_TRANSFORM_FEEDBACK_BUFFER, 0, static_cast<GLsizeiptr>(captured * sizeof(float)),
+                                        GL_MAP_READ_BIT);
+  if (mapped) {
+    const float* f = static_cast<const float*>(mapped);
+    for (size_t k = 0; k < points.size(); ++k) c.positions.insert(c.positions.end(), {f[4 * k], f[4 * k + 1], f[4 * k + 2]});
+    glUnmapBuffer(GL_TRANSFORM_FEEDBACK_BUFFER);
+  } else {
+    c.error = "the transform feedback buffer could not be mapped";
+  }
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteRenderbuffers(1, &rb);
+  glDeleteBuffers(2, buffers);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteProgram(program);
+  glDeleteShader(shader);
+  glDeleteShader(fragment);
+  return c;
+}
+
+// The float32 bound of the header comment for a point.
+double float32Bound(const std::vector<nodes::GerstnerWave>& waves, const QueryPoint& q) {
+  const double eps = std::ldexp(1.0, -24), r = std::abs(q.x0) + std::abs(q.z0);
+  double sumA = 0, bound = 0;
+  for (const auto& w : waves) {
+    bound += w.amplitude * (1 + w.steepness) * eps * (4 * M_PI + 3 * w.k * r);
+    sumA += w.amplitude;
+  }
+  return bound + 2 * eps * (r + sumA);
+}
+
+std::vector<QueryPoint> gpuPoints(double t) {
+  std::vector<QueryPoint> v;
+  for (double x0 : {-37.5, -6.25, 0.0, 2.125, 9.75, 48.5})
+    for (double z0 : {-21.0, -0.5, 3.25, 30.0}) v.push_back({x0, z0, t});
+  const double n = std::sqrt(1.04), dx = 1.0 / n, dz = 0.2 / n;  // the steep sea's first crests (query_header_test)
+  for (double s : {2.95, 3.0, 3.05, 15.0}) v.push_back({std::round(s * dx * 4096) / 4096, std::round(s * dz * 4096) / 4096, t});
+  return v;
+}
+
+void expectGpuAgrees(const std::string& graphPath, const std::string& what) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(graphPath, diags);
+  ASSERT_TRUE(graph);
+  CompileOptions o;
+  o.targets = {Target::Glsl330, Target::Es300};
+  o.tessellation = false;  // the vertex stage displaces
+  auto result = compileGraph(*graph, defaultRegistry(), o, diags);
+  ASSERT_TRUE(result);
+  std::vector<nodes::GerstnerWave> waves;
+  for (const Op& op : result->program.ops)
+    if (op.spec->type == "gerstner_waves") {
+      const auto& w = op.parsedOptions->as<std::vector<nodes::GerstnerWave>>();
+      waves.insert(waves.end(), w.begin(), w.end());
+    }
+  ASSERT_FALSE(waves.empty()) << what;
+  // The query's answers, from the generated header compiled and run.
+  std::string dir = test::makeTempDir("wg_query_gpu");
+  auto header = queryCHeader("g", result->program, diags);
+  ASSERT_TRUE(header);
+  test::writeFile(dir + "/g.query.h", *header);
+  for (double t : {0.0, 3.5, 1e6}) {
+    std::vector<QueryPoint> points = gpuPoints(t);
+    test::writeFile(dir + "/main.c", test::queryDriverC("g.query.h", "wg_g_", points, ""));
+    auto query = test::compileAndRunC(dir, "cc -std=c99");
+    ASSERT_EQ(query.size(), points.size());
+    for (Target target : {Target::Glsl330, Target::Es300}) {
+      auto context = EglContext::create(apiFor(target));
+      std::string vertex;
+      for (const auto& f : result->files)
+        if (f.name.ends_with("." + std::string(targetName(target)) + ".vert")) vertex = f.contents;
+      ASSERT_FALSE(vertex.empty());
+      Captured gpu = captureVertexStage(vertex, target == Target::Es300, result->manifest, points, t);
+      ASSERT_TRUE(gpu.error.empty()) << gpu.error;
+      ASSERT_EQ(gpu.positions.size(), 3 * points.size());
+      double worst = 0;
+      for (size_t k = 0; k < points.size(); ++k) {
+        double bound = float32Bound(waves, points[k]);
+        for (int i = 0; i < 3; ++i) {
+          double d = std::abs(gpu.positions[3 * k + static_cast<size_t>(i)] - query[k][static_cast<size_t>(i)]);
+          worst = std::max(worst, d / bound);
+          EXPECT_LE(d, bound) << what << " " << targetName(target) << " t " << t << " point (" << points[k].x0 << ", "
+                              << points[k].z0 << ") component " << i;
+        }
+      }
+      std::printf("%s %s t=%g: worst GPU-query difference %.2f of the float32 bound\n", what.c_str(),
+                  std::string(targetName(target)).c_str(), t, worst);
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(QueryGpu, ExampleGraphsThatDisplaceTheirWater) {
+  for (const char* name : {"ocean", "stylized", "tutorial_pbr"})
+    expectGpuAgrees(test::sourcePath("graphs/" + std::string(name) + ".json"), name);
+}
+
+TEST(QueryGpu, SteepSeaAtItsCrests) {
+  std::string dir = test::makeTempDir("wg_query_gpu_steep");
+  test::writeFile(dir + "/steep.json",
+                  test::graphJson(R"J({"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" +
+                                      std::string(test::kSteepWaves) + R"J(}},
+      {"id": "surface", "type": "vertex_output", "inputs": {"position": "waves.position", "normal": "waves.normal"}})J",
+                                  R"J("vertex": {"position": "surface.position", "normal": "surface.normal"},
+      "fragment": {"color": [0, 0.2, 0.4]})J"));
+  expectGpuAgrees(dir + "/steep.json", "steep");
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wg::rt
