@@ -10,7 +10,7 @@ namespace wg {
 
 namespace {
 
-std::string num(double x) { return numberLiteral(x, HeaderLanguage::C); }
+std::string cNumber(double x) { return numberLiteral(x, HeaderLanguage::C); }
 
 // Helpers every query header shares (guarded, so two headers in one program define them once).
 std::string queryCHelpers() {
@@ -72,7 +72,7 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += " *\n";
   h += " * height(x, z, t) solves (x, z) = (x0, z0) + D(x0, z0, t).xz by Newton steps (a step that\n";
   h += " * does not bring the point closer is halved) until the displaced point is within\n";
-  h += " * " + num(kQueryHeightTolerance) + " * (1 + |x| + |z|) m of (x, z), or " + std::to_string(kQueryMaxSteps) +
+  h += " * " + cNumber(kQueryHeightTolerance) + " * (1 + |x| + |z|) m of (x, z), or " + std::to_string(kQueryMaxSteps) +
        " evaluations (then the closest point found\n";
   h += " * answers). Where the surface folds over (several x0 reach x) it answers the sheet the steps\n";
   h += " * reach from x0 = x. A non-finite x, z, x0, z0 or t gives NaN in every output. */\n";
@@ -87,7 +87,7 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
     const ProgramParameter& p = body->parameters[i];
     int n = componentCount(p.type);
     std::string defaults;
-    for (int k = 0; k < p.defaultValue.size(); ++k) defaults += (k ? ", " : "") + num(p.defaultValue[k]);
+    for (int k = 0; k < p.defaultValue.size(); ++k) defaults += (k ? ", " : "") + cNumber(p.defaultValue[k]);
     h += "  double " + body->members[i] + (n == 1 ? "" : "[" + std::to_string(n) + "]") + "; /* " + p.name + ": " +
          std::string(typeName(p.type)) + " " + parameterRange(p) + ", default " + defaults + " */\n";
   }
@@ -100,7 +100,7 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
     const ProgramParameter& p = body->parameters[i];
     for (int k = 0; k < p.defaultValue.size(); ++k)
       h += "  p->" + body->members[i] + (componentCount(p.type) == 1 ? "" : "[" + std::to_string(k) + "]") + " = " +
-           num(p.defaultValue[k]) + ";\n";
+           cNumber(p.defaultValue[k]) + ";\n";
   }
   if (body->parameters.empty()) h += "  p->unused = 0.0;\n";
   h += "}\n\n";
@@ -133,7 +133,7 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += "static inline double " + g + "height(const " + params + "* p, double x, double z, double t) {\n";
   h += "  double P[3], dx[3], dz[3], dt[3];\n";
   h += "  double x0 = x, z0 = z, bestX0 = x, bestZ0 = z, bestY = (double)NAN, best = HUGE_VAL, sx = 0.0, sz = 0.0;\n";
-  h += "  const double tolerance = " + num(kQueryHeightTolerance) + " * (1.0 + fabs(x) + fabs(z));\n";
+  h += "  const double tolerance = " + cNumber(kQueryHeightTolerance) + " * (1.0 + fabs(x) + fabs(z));\n";
   h += "  int i;\n";
   h += "  if (!(wgq_finite(x) && wgq_finite(z) && wgq_finite(t))) return (double)NAN;\n";
   h += "  for (i = 0; i < " + std::to_string(kQueryMaxSteps) + "; ++i) {\n";

@@ -44,14 +44,14 @@ std::vector<QueryPoint> crestPoints() {
   return v;
 }
 
-struct Compiled {
+struct QueryCompiled {
   std::string dir;
   Program program;
 };
 
 // `graphPath` compiled, its query header written into a fresh folder as g.query.h.
-Compiled compileQuery(const std::string& graphPath, const std::string& name) {
-  Compiled c;
+QueryCompiled compileQuery(const std::string& graphPath, const std::string& name) {
+  QueryCompiled c;
   c.dir = test::makeTempDir("wg_query_c");
   std::string errors;
   auto result = test::compileFile(graphPath, &errors);
@@ -92,7 +92,7 @@ Differences differences(const Program& program, const QueryPoint& q, const std::
 // normals to 1e-12 where the graph's own normal is the surface's (`normalIsExact`), else
 // and velocities to the differences' accuracy; and the height at the displaced point to
 // the stated tolerance.
-void expectAgreement(const Compiled& c, const std::vector<QueryPoint>& points, const std::vector<Value>& params,
+void expectAgreement(const QueryCompiled& c, const std::vector<QueryPoint>& points, const std::vector<Value>& params,
                      const std::string& setParameters, bool normalIsExact, double heightBound) {
   test::writeFile(c.dir + "/main.c", test::queryDriverC("g.query.h", "wg_g_", points, setParameters));
   for (const std::string& compiler : test::cCompilers()) {
@@ -127,7 +127,7 @@ void expectAgreement(const Compiled& c, const std::vector<QueryPoint>& points, c
 }
 
 TEST(QueryHeader, OceanAgreesWithTheVertexStageInDouble) {
-  Compiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
+  QueryCompiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
   std::vector<Value> params;
   for (const auto& p : c.program.parameters) params.push_back(p.defaultValue);
   // ocean: the height is at a point within 1e-13 (1 + |x| + |z|) of the inverse in x and z;
@@ -144,7 +144,7 @@ TEST(QueryHeader, SteepWavesAndTheirCrestsInvertWithinTheTolerance) {
       {"id": "surface", "type": "vertex_output", "inputs": {"position": "waves.position", "normal": "waves.normal"}})J",
                                                        R"J("vertex": {"position": "surface.position", "normal": "surface.normal"},
       "fragment": {"color": [0, 0.2, 0.4]})J"));
-  Compiled c = compileQuery(dir + "/steep.json", "g");
+  QueryCompiled c = compileQuery(dir + "/steep.json", "g");
   std::vector<QueryPoint> points = samplePoints();
   for (const auto& q : crestPoints()) points.push_back(q);
   // sum k A = 1.17 of slope over 1 - sum Q k A = 0.031 of the inverse's conditioning.
@@ -157,7 +157,7 @@ TEST(QueryHeader, SteepWavesAndTheirCrestsInvertWithinTheTolerance) {
 // int, int_, errno and linux compile; values out of range are clamped as the runtime does.
 TEST(QueryHeader, ExpressionsSubgraphsAndClampedParameters) {
   std::string dir = test::makeTempDir("wg_query_mixed");
-  Compiled c = compileQuery(test::writeMixedGraph(dir), "g");
+  QueryCompiled c = compileQuery(test::writeMixedGraph(dir), "g");
   const auto& ps = c.program.parameters;
   auto indexOf = [&](const std::string& name) {
     for (size_t i = 0; i < ps.size(); ++i)
@@ -187,7 +187,7 @@ TEST(QueryHeader, ExpressionsSubgraphsAndClampedParameters) {
 }
 
 TEST(QueryHeader, NonFiniteInputGivesNaNWithoutHanging) {
-  Compiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
+  QueryCompiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
   const double inf = INFINITY;
   std::vector<QueryPoint> points = {{NAN, 0, 0}, {0, NAN, 0}, {0, 0, NAN}, {inf, 0, 0}, {0, -inf, 0}, {0, 0, inf}, {1e300, 2, 3}};
   test::writeFile(c.dir + "/main.c", test::queryDriverC("g.query.h", "wg_g_", points, ""));
@@ -203,7 +203,7 @@ TEST(QueryHeader, NonFiniteInputGivesNaNWithoutHanging) {
 
 // The batched forms give exactly what one call per point gives, and take NULL outputs.
 TEST(QueryHeader, BatchedFormsAnswerAsSingleCalls) {
-  Compiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
+  QueryCompiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
   test::writeFile(c.dir + "/main.c", R"C(#include <stdio.h>
 #include "g.query.h"
 int main(void) {
