@@ -3,10 +3,13 @@
 // an import or a texture for a symbolic link between the moment its path is checked and the
 // moment it is read. Every input is opened once and checked on that open file
 // (core/file_read.h): whatever the timing, nothing from outside the folder is ever returned.
-// The swap is one atomic rename (RENAME_EXCHANGE) in a tight loop on another thread.
+// The swap is one atomic rename (RENAME_EXCHANGE) in a tight loop on another thread. (With
+// the checks of the opened file removed, the import test found the outside file in 4 of 5
+// runs on a busy 2-core machine, the texture test in every run.)
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstdio>
 #include <fcntl.h>
 #include <filesystem>
@@ -92,7 +95,10 @@ TEST_F(FileRace, AnImportSwappedForALinkNeverLoadsTheOutsideFile) {
   int loaded = 0, refused = 0;
   {
     Swapper swapper(dir + "/lib.json", dir + "/lib.swap");
-    for (int i = 0; i < 4000; ++i) {
+    // As many loads as fit in a few seconds: the swap lands between the check and the read
+    // only now and then, more rarely when the machine is busy.
+    auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 100000 && std::chrono::steady_clock::now() - start < std::chrono::seconds(3); ++i) {
       Diagnostics diags;
       auto graph = loadGraphFile(dir + "/top.json", diags);
       if (!graph) {
@@ -121,7 +127,7 @@ TEST_F(FileRace, ATextureFolderSwappedForALinkNeverDecodesTheOutsideFile) {
   int decoded = 0, refused = 0;
   {
     Swapper swapper(dir + "/tex", dir + "/tex.swap");
-    for (int i = 0; i < 4000; ++i) {
+    for (int i = 0; i < 20000; ++i) {
       TextureFile file;
       if (!checkTextureSource("tex/foam.png", dir, &file).empty()) {
         ++refused;
