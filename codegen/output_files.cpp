@@ -71,7 +71,7 @@ std::string whyNotWritable(const std::string& path, const struct stat* st) {
   if (path.empty()) return "cannot write: the output path is empty";
   if (path.back() == '/') return "cannot write: '" + path + "' names a folder, not a file";
   if (st && !S_ISLNK(st->st_mode)) {
-    if (S_ISDIR(st->st_mode)) return "cannot replace: a folder of that name is in the way";
+    if (S_ISDIR(st->st_mode)) return "cannot replace: not a regular file (a folder)";
     if (!S_ISREG(st->st_mode)) return "cannot replace: not a regular file";
     if (::access(path.c_str(), W_OK) != 0 || (st->st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
       return "cannot replace: the file is read-only";
