@@ -10,6 +10,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -27,6 +28,7 @@
 #include "core/preset.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
+#include "runtime/memory_budget.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
 #include "runtime/median.h"
@@ -300,6 +302,23 @@ BenchResult runBench(const BenchSettings& settings) {
   };
   std::map<std::string, std::unique_ptr<rt::Renderer>> passThrough;
   std::map<std::string, std::vector<double>> passMs;
+  {
+    // Every level's renderer and a pass-through per camera are held at once: their targets
+    // and read-back, estimated before the first is made (docs/robustness.md).
+    rt::RenderSettings rs;
+    rs.width = settings.width;
+    rs.height = settings.height;
+    rs.floatColor = true;
+    size_t bytes = 0;
+    std::set<std::string> cameras;
+    for (const auto& p : levels) {
+      bytes = rt::saturatedSum(bytes, rt::rendererBytes(p.compiled.manifest, rs));
+      cameras.insert(p.level.camera);
+    }
+    bytes = rt::saturatedSum(bytes, rt::saturatedProduct(cameras.size(), rt::rendererBytes(passCompiled->manifest, rs)));
+    rt::checkMemoryBudget(bytes, "bench at " + std::to_string(settings.width) + "x" + std::to_string(settings.height) + " (" +
+                                     std::to_string(levels.size() + cameras.size()) + " renderers' targets and read-back)");
+  }
   for (auto& p : levels) {
     p.renderer = makeRenderer(p.compiled, p.level.camera);
     if (!passThrough.count(p.level.camera)) passThrough[p.level.camera] = makeRenderer(*passCompiled, p.level.camera);

@@ -14,6 +14,7 @@
 #include "accuracy/gpu_executor.h"
 #include "accuracy/readback.h"
 #include "codegen/cpu_backend.h"
+#include "runtime/memory_budget.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 
@@ -272,6 +273,20 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   if (report.reference.empty() && target == Target::Es300) report.reference = "reference on glsl330 and vk450 only";
   const bool compare = report.reference.empty();
   if (compare) report.reference = "cpu";
+  // Everything the check holds at once, estimated before the first target is made
+  // (docs/robustness.md): the frames' renderer and one per read-back frame, each with its
+  // targets and read-back; on the CPU the read-back inputs (a float per channel), the scene
+  // images the reference samples (up to four floats a texel each) and, with error maps, a
+  // copy of the frame, the errors, the ratios and the map's picture.
+  const size_t pixels = static_cast<size_t>(width) * static_cast<size_t>(height);
+  const size_t renderers = 1 + (compare ? static_cast<size_t>(plan.frames()) : 0);
+  size_t hostPerPixel = compare ? 4 * plan.channels.size() + 16 * plan.images.size() : 0;
+  if (options.errorMaps) hostPerPixel += 16 + 4 + 4 + 4;
+  const std::string size = std::to_string(width) + "x" + std::to_string(height);
+  const size_t hostBytes = rt::saturatedProduct(pixels, hostPerPixel);
+  rt::checkMemoryBudget(rt::saturatedSum(rt::saturatedProduct(renderers, rt::rendererBytes(result.manifest, settings)), hostBytes),
+                        "check at " + size + " (" + std::to_string(renderers) + " renderers' targets and read-back, the reference's buffers)");
+  rt::MemoryReservation hostMemory(hostBytes, "check's CPU buffers at " + size);
   std::optional<ReadbackRenderer> readback;
   FragmentProgram fragment;
   ErrorModel model;

@@ -1,5 +1,6 @@
 #include "accuracy/tune_knobs.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "codegen/compile.h"
@@ -92,6 +93,28 @@ Graph withKnobLevels(const Graph& graph, const std::vector<TuneKnob>& knobs, con
   Graph g = graph;
   writePresetInto(g, preset);
   return g;
+}
+
+std::vector<std::string> dropBypassKnobs(std::vector<TuneKnob>& knobs, const std::vector<std::string>& keep,
+                                         bool keepAll) {
+  std::vector<std::string> unknown;
+  for (const auto& node : keep)
+    if (std::none_of(knobs.begin(), knobs.end(),
+                     [&](const TuneKnob& k) { return k.option == kBypassOption && k.node == node; }))
+      unknown.push_back(node);
+  std::erase_if(knobs, [&](const TuneKnob& k) {
+    return k.option == kBypassOption && (keepAll || std::find(keep.begin(), keep.end(), k.node) != keep.end());
+  });
+  return unknown;
+}
+
+std::vector<std::string> bypassedNodes(const std::vector<TuneKnob>& knobs, const TuneConfig& config) {
+  std::vector<std::string> out;
+  for (size_t k = 0; k < knobs.size() && k < config.size(); ++k) {
+    const auto& level = knobs[k].levels[static_cast<size_t>(config[k])];
+    if (knobs[k].option == kBypassOption && level.is_boolean() && level.get<bool>()) out.push_back(knobs[k].node);
+  }
+  return out;
 }
 
 }  // namespace wg::accuracy

@@ -25,6 +25,17 @@ std::vector<TuneKnob> graphKnobs(const Graph& graph);
 std::vector<TuneKnob> distinctKnobLevels(const Graph& graph, std::vector<TuneKnob> knobs, Target target,
                                          std::vector<std::string>& unchanged);
 
+// Switching a node off (its `bypass` knob) drops what it draws: a decision for the graph's
+// author, so `tune --keep NODE,...` forbids it for the named nodes (qualified ids, as
+// graphKnobs names them) and `--no-bypass` (keepAll) for every node. Removes those knobs
+// from `knobs` and returns the names in `keep` that are no node's bypass knob (the caller
+// refuses them).
+std::vector<std::string> dropBypassKnobs(std::vector<TuneKnob>& knobs, const std::vector<std::string>& keep,
+                                         bool keepAll);
+
+// The nodes `config` switches off (bypass at true), qualified ids in knob order.
+std::vector<std::string> bypassedNodes(const std::vector<TuneKnob>& knobs, const TuneConfig& config);
+
 // `graph` with each knob at its level in `config` (nested nodes through
 // Graph::instanceOptions, as an applied preset sets them).
 Graph withKnobLevels(const Graph& graph, const std::vector<TuneKnob>& knobs, const TuneConfig& config);

@@ -12,6 +12,7 @@
 #include "codegen/compile.h"
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
+#include "runtime/memory_budget.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
 #include "runtime/median.h"
@@ -109,6 +110,20 @@ std::unique_ptr<GlTuneMeasurements::Entry> GlTuneMeasurements::make(const std::o
   rs.width = sweep_.width;
   rs.height = sweep_.height;
   rs.floatColor = true;
+  if (!referenceMemory_) {
+    // The first renderer (the reference): what any tune holds at once, estimated before a
+    // target is made (docs/robustness.md): the reference's renderer, its frames (RGBA32F,
+    // one per camera and time) and a configuration's renderer beside it. More
+    // configurations timed side by side reserve their own share as they are made.
+    const size_t cameras = sweep_.cameras.empty() ? 4 : sweep_.cameras.size();
+    const size_t frames = rt::saturatedProduct(
+        rt::saturatedProduct(cameras * std::max<size_t>(sweep_.times.size(), 1), static_cast<size_t>(rs.width)),
+        static_cast<size_t>(rs.height) * 16);
+    const std::string size = std::to_string(rs.width) + "x" + std::to_string(rs.height);
+    rt::checkMemoryBudget(rt::saturatedSum(rt::saturatedProduct(2, rt::rendererBytes(e->compiled.manifest, rs)), frames),
+                          "tune at " + size + " (the reference's and a configuration's renderers, the reference frames)");
+    referenceMemory_.emplace(frames, "tune's reference frames at " + size);
+  }
   e->renderer = std::make_unique<rt::Renderer>(e->compiled.manifest, rt::waterShaderSources(e->compiled, sweep_.target), rs,
                                                context_->isEs(), rt::textureOrigins(e->compiled));
   return e;

@@ -16,6 +16,7 @@
 #include "accuracy/tune_search.h"
 #include "codegen/target.h"
 #include "core/graph.h"
+#include "runtime/memory_budget.h"
 #include "runtime/scene.h"
 
 namespace wg::rt {
@@ -69,6 +70,7 @@ class GlTuneMeasurements : public TuneMeasurements {
   std::vector<View> views_;
   std::vector<std::string> labels_;
   std::vector<std::vector<float>> reference_;  // RGBA32F per view
+  std::optional<rt::MemoryReservation> referenceMemory_;  // reference_'s share of the memory budget
   std::map<std::string, std::unique_ptr<Entry>> cache_;
 };
 

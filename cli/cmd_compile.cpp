@@ -173,10 +173,19 @@ std::string nowHms() {
 }
 
 // What a build system needs to know about one compiled graph: the files written into
-// `dir` depend on the graph's file, every graph it imports and every PNG it samples.
+// `dir` depend on the graph's file, every graph it imports and every PNG it samples. The
+// node textures `--textures` writes are not named as targets: their names come from the
+// graph, which a build system has not read when it declares a rule's outputs (Ninja refuses
+// a depfile naming an output the rule did not declare); they are written by the same
+// command as the manifest, so they are current whenever it is.
 DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, const std::string& dir) {
   DepfileRule rule;
-  for (const auto& f : result.files) rule.outputs.push_back(dir + "/" + f.name);
+  auto isNodeTexture = [&](const std::string& name) {
+    return std::any_of(result.manifest.textures.begin(), result.manifest.textures.end(),
+                       [&](const TextureInfo& t) { return !t.source.empty() && t.file == name; });
+  };
+  for (const auto& f : result.files)
+    if (!isNodeTexture(f.name)) rule.outputs.push_back(dir + "/" + f.name);
   // The manifest first: Ninja takes a depfile's first target for the build edge's first
   // output, and watergraph_add_shaders (cmake/WatergraphShaders.cmake) lists it first.
   std::stable_partition(rule.outputs.begin(), rule.outputs.end(),
@@ -229,7 +238,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }
   if (result && args.textures) {
-    auto pngs = textureFiles(*result, outcome.name, diags, &*graph);
+    auto pngs = textureFiles(*result, diags, &*graph);
     if (diags.hasErrors()) result.reset();
     else result->files.insert(result->files.end(), pngs.begin(), pngs.end());
   }

@@ -20,6 +20,7 @@
 #include "cli/option_values.h"
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
+#include "core/node_spec.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/tune_render.h"
@@ -39,6 +40,9 @@ struct TuneArgs {
   std::string cameras, times = "1,3.5,20", size = "160x90", target = "glsl330";
   int runs = 9;
   std::string writePreset, plot;
+  std::string keep;        // nodes tune may not switch off, comma separated
+  bool keepGiven = false;  // --keep was given (an empty list is a usage error, not "none")
+  bool noBypass = false;   // switch no node off
 };
 
 #ifdef WG_HAVE_RUNTIME
@@ -123,6 +127,25 @@ int runTune(const TuneArgs& args) {
     return exitCodeFor(diags);
   }
   std::vector<TuneKnob> declared = graphKnobs(*graph);
+  const bool hadKnobs = !declared.empty();
+  std::vector<std::string> keep;
+  if (args.keepGiven) {
+    auto entries = splitList("--keep", args.keep, &why);  // as every list (cli/option_values.h)
+    if (!entries) return usage(why);
+    keep = *entries;
+  }
+  std::vector<std::string> unknownKeep = dropBypassKnobs(declared, keep, args.noBypass);
+  if (!unknownKeep.empty()) {
+    std::string switchable;
+    for (const auto& k : graphKnobs(*graph))
+      if (k.option == kBypassOption) switchable += (switchable.empty() ? "" : ", ") + k.node;
+    return usage("--keep names '" + unknownKeep.front() + "', which is not a node tune could switch off (" +
+                 (switchable.empty() ? std::string("this graph has none") : "those are: " + switchable) + ")");
+  }
+  if (declared.empty() && hadKnobs) {
+    std::cerr << args.graph << ": error: with --keep/--no-bypass the graph has no quality knob left to tune\n";
+    return kExitGraphError;
+  }
   if (declared.empty()) {
     std::cerr << args.graph << ": error: the graph has no quality knob to tune (options whose levels a node declares, "
               << "and `bypass` on nodes that add detail; `watergraph nodes` lists them)\n";
@@ -180,6 +203,14 @@ int runTune(const TuneArgs& args) {
     const TuneStep& chosen = result.chosen();
     TuneError asWritten = gl.asWrittenError();
     std::vector<TuneCost> final = gl.costOf({result.path.front().config, std::nullopt, chosen.config});
+    // Switching a node off drops an art feature: said first, with how to forbid it.
+    std::vector<std::string> off = bypassedNodes(knobs, chosen.config);
+    if (!off.empty()) {
+      std::string names;
+      for (const auto& n : off) names += (names.empty() ? "" : ",") + n;
+      std::cout << "switched off: " << names << " (what " << (off.size() == 1 ? "it draws" : "they draw")
+                << " is gone from the chosen configuration; forbid it with --keep " << names << ", or --no-bypass)\n";
+    }
     std::cout << "chosen: " << configText(knobs, chosen.config) << "\n";
     std::cout << "verified (rendered again): worst PSNR "
               << (std::isinf(result.verified.worstPsnr) ? "inf" : fixed(result.verified.worstPsnr, 1)) << " dB"
@@ -241,7 +272,8 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
       "graph as written.\n\n"
       "Examples:\n  watergraph tune graphs/lake.json --min-psnr 45\n"
       "  watergraph tune graphs/pool.json --min-psnr 45 --cameras above,grazing --times 0,5,30 --write-preset fast\n"
-      "  watergraph tune graphs/ocean.json --max-abs-error 0.02 --plot tune.svg\n\n"
+      "  watergraph tune graphs/ocean.json --max-abs-error 0.02 --plot tune.svg\n"
+      "  watergraph tune graphs/river.json --min-psnr 40 --keep foam   # never switch the shore foam off\n\n"
       "Exit codes: 0 a configuration found; 1 the graph has no knob, does not load or compile, or no configuration "
       "cheaper than the reference meets the budget; 2 usage, I/O, or no EGL/GL.");
   cmd->add_option("graph", args->graph, "the graph file (.json)")->required();
@@ -260,6 +292,11 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
         return isIdentifier(name) ? std::string()
                                   : "'" + name + "' is not an identifier (letters, digits, _; not starting with a digit)";
       });
+  cmd->add_option("--keep", args->keep,
+                  "never switch off these nodes (their `bypass` knob), comma separated qualified ids as the result "
+                  "names them (edges,foam/edge)")
+      ->each([args](const std::string&) { args->keepGiven = true; });
+  cmd->add_flag("--no-bypass", args->noBypass, "never switch off any node: tune only the knobs that keep every node drawn");
   addOutputOption(cmd, "--plot", args->plot, "draw every tried configuration, cost against worst PSNR, into this SVG");
 #ifdef WG_HAVE_RUNTIME
   return [args] { return runTune(*args); };

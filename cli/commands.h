@@ -32,6 +32,7 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global);
 Runner addBenchCommand(CLI::App& app, const GlobalOptions& global);
 Runner addSceneCommand(CLI::App& app, const GlobalOptions& global);
 Runner addTuneCommand(CLI::App& app, const GlobalOptions& global);
+Runner addCodesCommand(CLI::App& app, const GlobalOptions& global);
 
 // Prints diagnostics in the chosen format (text to stderr, JSON to stdout; SARIF to stdout,
 // a complete log even when there are none).

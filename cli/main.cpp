@@ -1,5 +1,6 @@
 // watergraph: water shader graphs (JSON) compiled to validated GLSL.
 #include <iostream>
+#include <new>
 
 #include "cli/commands.h"
 #include "cli/option_values.h"
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   Runner bench = addBenchCommand(app, global);
   Runner scene = addSceneCommand(app, global);
   Runner tune = addTuneCommand(app, global);
+  Runner codes = addCodesCommand(app, global);
   refuseEmptyValues(app);
 
   // A usage error is one line naming the option, as the commands' own usage errors are
@@ -54,6 +56,14 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("bench")) return bench();
     if (app.got_subcommand("scene")) return scene();
     if (app.got_subcommand("tune")) return tune();
+    if (app.got_subcommand("codes")) return codes();
+  } catch (const std::bad_alloc&) {
+    // Not a bug: the machine (or a limit on the process) has less memory than the work
+    // needs. The sizes that can get here are refused up front (docs/robustness.md), so this
+    // is a process capped below them.
+    std::cerr << "watergraph: out of memory: the work needs more memory than this process can get "
+                 "(ulimit -v, a container's limit, or a smaller --size or graph)\n";
+    return kExitUsageOrIo;
   } catch (const std::exception& e) {
     // A bug, not a graph problem: say so plainly rather than crash.
     std::cerr << "watergraph: internal error: " << e.what() << "\n";

@@ -1,5 +1,6 @@
 # watergraph_add_shaders(TARGET <target> GRAPHS <graph.json>...
-#                        [TARGETS glsl330 es300 vk450 msl hlsl c-header] [OUTPUT_DIR <dir>])
+#                        [TARGETS glsl330 es300 vk450 msl hlsl c-header] [OUTPUT_DIR <dir>]
+#                        [TEXTURES] [PRESET <name>])
 #
 # Compiles graphs with watergraph at build time, before <target> builds. Each graph gives
 # <dir>/<name>.<target>.vert/.frag (vk450 also .vert.spv/.frag.spv) and <dir>/<name>.manifest.json;
@@ -11,6 +12,13 @@
 # to glsl330 es300 vk450, OUTPUT_DIR to ${CMAKE_CURRENT_BINARY_DIR}/watergraph. Relative graph
 # paths are relative to ${CMAKE_CURRENT_SOURCE_DIR}.
 #
+# TEXTURES also writes the node textures a host must upload (built-in ones such as
+# water_normal and foam, and the graph's own PNGs), one PNG each beside the shaders, under the
+# file name each texture's "file" entry in the manifest gives (<name>.<sampler>.png); they are
+# written by the same command as the manifest, so they are current whenever it is. PRESET
+# compiles every graph of the call with that preset's values applied (each graph must define
+# it; watergraph refuses a graph that does not).
+#
 # Sets on <target>: the property WATERGRAPH_SHADER_DIR (the output folder), and appends the
 # generated files to WATERGRAPH_SHADERS.
 include_guard(GLOBAL)
@@ -21,7 +29,7 @@ if(POLICY CMP0116)
 endif()
 
 function(watergraph_add_shaders)
-  cmake_parse_arguments(PARSE_ARGV 0 WG "" "TARGET;OUTPUT_DIR" "GRAPHS;TARGETS")
+  cmake_parse_arguments(PARSE_ARGV 0 WG "TEXTURES" "TARGET;OUTPUT_DIR;PRESET" "GRAPHS;TARGETS")
   if(WG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "watergraph_add_shaders: unknown arguments: ${WG_UNPARSED_ARGUMENTS}")
   endif()
@@ -44,7 +52,23 @@ function(watergraph_add_shaders)
   endif()
   get_filename_component(WG_OUTPUT_DIR "${WG_OUTPUT_DIR}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_BINARY_DIR}")
   list(JOIN WG_TARGETS "," target_arg)
+  set(extra_args)
+  if(WG_TEXTURES)
+    list(APPEND extra_args --textures)
+  endif()
+  if(DEFINED WG_PRESET)
+    if(WG_PRESET STREQUAL "")
+      message(FATAL_ERROR "watergraph_add_shaders: PRESET needs a preset name")
+    endif()
+    list(APPEND extra_args --preset "${WG_PRESET}")
+  elseif("PRESET" IN_LIST WG_KEYWORDS_MISSING_VALUES)
+    message(FATAL_ERROR "watergraph_add_shaders: PRESET needs a preset name")
+  endif()
 
+  set(WG_PRESET_NOTE)
+  if(WG_PRESET)
+    set(WG_PRESET_NOTE ", preset ${WG_PRESET}")
+  endif()
   set(all_outputs)
   foreach(graph IN LISTS WG_GRAPHS)
     get_filename_component(graph_abs "${graph}" ABSOLUTE BASE_DIR "${CMAKE_CURRENT_SOURCE_DIR}")
@@ -67,10 +91,10 @@ function(watergraph_add_shaders)
     add_custom_command(
       OUTPUT ${outputs}
       COMMAND watergraph::watergraph compile "${graph_abs}" -o "${WG_OUTPUT_DIR}" --target ${target_arg} --quiet
-              --depfile "${depfile}"
+              ${extra_args} --depfile "${depfile}"
       DEPENDS "${graph_abs}" watergraph::watergraph
       DEPFILE "${depfile}"
-      COMMENT "watergraph: compiling ${name}.json (${target_arg})"
+      COMMENT "watergraph: compiling ${name}.json (${target_arg}${WG_PRESET_NOTE})"
       VERBATIM)
     list(APPEND all_outputs ${outputs})
   endforeach()

@@ -1,6 +1,7 @@
 #include "codegen/derived_program.h"
 
 #include <algorithm>
+#include <new>
 #include <stdexcept>
 
 #include "codegen/cpu_backend.h"
@@ -140,6 +141,8 @@ std::optional<DerivedValue> readDerived(const nlohmann::json& j, const Registry&
     try {
       op.setOptions(completeOptions(*op.spec, options));
       op.parsedOptions = parseOptions(*op.spec, op.options());
+    } catch (const std::bad_alloc&) {
+      throw;  // out of memory is the command's to report, not a fault of the manifest
     } catch (const std::exception& e) {
       return fail("options of '" + op.nodeId + "': " + e.what());
     }

@@ -401,7 +401,13 @@ ValidationResult validateShaders(Target target, const std::vector<ShaderSource>&
         spvMessages.push_back(std::move(text));
       });
       std::vector<uint32_t> module(words.begin(), words.end());
-      if (!tools.Validate(module) && spvMessages.empty())
+      // Without friendly names: spirv-val's FriendlyNameMapper gives the k-th OpName of a
+      // name the suffix _k by trying _0, _1, ... in turn, quadratic in the repeats, and
+      // glslang names every function call's argument temporary "param" (a graph of 12,000
+      // calls took 30 s here against 0.4 s for glsl330). Messages name ids (%123) instead.
+      spvtools::ValidatorOptions validatorOptions;
+      validatorOptions.SetFriendlyNames(false);
+      if (!tools.Validate(module.data(), module.size(), validatorOptions) && spvMessages.empty())
         spvMessages.push_back("SPIR-V validation failed");
       for (auto& m : spvMessages) result.errors.push_back({src.fileName, 0, "spirv-val: " + m});
       modules.emplace(lang, std::move(module));

@@ -98,6 +98,7 @@ void writeUniform(JsonTextWriter& w, const ManifestUniform& u) {
 void writeTexture(JsonTextWriter& w, const TextureInfo& t) {
   w.beginObject();
   w.memberInteger("binding", t.binding);
+  if (!t.source.empty()) w.member("file", t.file);
   w.member("name", t.name);
   if (t.scene) w.member("resource", sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
   // Only a state other than the default (repeat, linear, linear data) is written, so the

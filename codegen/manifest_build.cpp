@@ -1,4 +1,5 @@
 #include "codegen/manifest_build.h"
+#include "codegen/texture_files.h"
 
 #include <algorithm>
 #include <stdexcept>
@@ -94,6 +95,8 @@ Manifest buildManifest(const Program& program, const TargetPlans& plans, const s
   m.varyings = first.varyings;
   m.functions = first.functions;
   m.textures = first.textures;
+  for (auto& t : m.textures)
+    if (!t.source.empty()) t.file = textureFileName(baseName, t.name);
   // Tessellation, per target (GLSL ES 3.00 has none: es300 draws the mesh as it is).
   for (size_t i = 0; i < plans.targets.size(); ++i)
     if (const auto& tess = plans.of(i).tessellation) {

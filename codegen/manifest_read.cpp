@@ -250,7 +250,7 @@ TextureInfo textureOf(const json& t) {
   TextureInfo out;
   out.name = text(t, "name", "a manifest texture");
   const std::string what = "texture " + out.name;
-  onlyMembers(t, {"name", "type", "binding", "stages", "source", "resource", "sampler"}, what);
+  onlyMembers(t, {"name", "type", "binding", "stages", "source", "file", "resource", "sampler"}, what);
   out.type = typeOf(t, what);
   out.binding = integer(t, "binding", what);
   out.stages = stagesOf(t, what);
@@ -258,10 +258,15 @@ TextureInfo textureOf(const json& t) {
   if (member(t, "sampler") && !member(t, "source")) fail(what + " has a \"sampler\" but no \"source\"");
   if (member(t, "source")) {
     out.source = text(t, "source", what);
+    // The PNG `compile --textures` writes: a plain file name beside the manifest.
+    out.file = text(t, "file", what);
+    if (out.file.empty() || out.file.find_first_of("/\\") != std::string::npos || out.file == "." || out.file == "..")
+      fail(what + " has a \"file\" that is not a file name beside the manifest");
     if (const json* s = member(t, "sampler")) out.sampler = samplerOf(*s, what);
   } else if (member(t, "resource")) {
     // A scene texture is one of its resource's samplers, named as the shader declares it.
     const std::string resource = text(t, "resource", what);
+    if (member(t, "file")) fail(what + " has a \"file\" but no \"source\"");
     if (!parseSceneResource(resource)) fail(what + " names an unknown scene resource '" + resource + "'");
     const SceneSamplerRow* sampler = findSceneSampler(out.name);
     if (!sampler || sceneResourceRow(sampler->resource).name != resource)

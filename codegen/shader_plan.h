@@ -51,6 +51,7 @@ struct TextureInfo {
   std::string name;      // GLSL sampler name
   Type type = Type::Sampler2D;
   std::string source;    // node texture: "builtin:foam" or a path relative to the graph
+  std::string file;      // node texture, manifest only: the PNG `compile --textures` writes it as
   SamplerState sampler;  // node texture: how it is sampled (scene textures: the default, unused)
   std::optional<SceneSampler> scene;  // a scene texture (then source is "")
   int binding = 0;       // vk450 binding (set 0); the uniform block is binding 0

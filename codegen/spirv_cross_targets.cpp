@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <new>
 #include <filesystem>
 #include <mutex>
 
@@ -98,6 +99,8 @@ std::optional<CrossShader> crossCompileSpirv(const std::vector<uint32_t>& spirv,
       return std::nullopt;
     }
     return out;
+  } catch (const std::bad_alloc&) {
+    throw;  // out of memory is the command's to report, not SPIRV-Cross's fault
   } catch (const std::exception& e) {
     error = std::string("SPIRV-Cross: ") + e.what();
     return std::nullopt;
@@ -135,7 +138,9 @@ std::string validateHlsl(const std::string& text, ShaderStage stage, const std::
   tools.SetMessageConsumer([&](spv_message_level_t, const char*, const spv_position_t&, const char* m) {
     spvMessages += std::string(m) + "\n";
   });
-  if (!tools.Validate(spirv)) return "spirv-val (SPIR-V from the HLSL): " + spvMessages;
+  spvtools::ValidatorOptions validatorOptions;
+  validatorOptions.SetFriendlyNames(false);  // quadratic in repeated names (glslang_validate.cpp)
+  if (!tools.Validate(spirv.data(), spirv.size(), validatorOptions)) return "spirv-val (SPIR-V from the HLSL): " + spvMessages;
   return "";
 }
 

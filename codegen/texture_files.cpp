@@ -73,13 +73,11 @@ std::string textureFileName(const std::string& graphName, const std::string& sam
   return graphName + "." + sampler + ".png";
 }
 
-std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags,
-                                     const Graph* graph) {
+std::vector<OutputFile> textureFiles(const CompileResult& result, Diagnostics& diags, const Graph* graph) {
   std::vector<OutputFile> files;
   for (const auto& t : result.manifest.textures) {
     if (t.source.empty()) continue;  // a scene resource: rendered by a pass, not a file
     const std::string& source = t.source;
-    const std::string& sampler = t.name;
     std::string option;
     const Op* op = samplingOp(result.program, source, &option);
     SourceRef where = op ? optionPosition(graph, *op, option) : SourceRef{};
@@ -96,12 +94,12 @@ std::vector<OutputFile> textureFiles(const CompileResult& result, const std::str
     std::string png = encodePng(*img);
     if (png.empty()) {
       diags.error(DiagCode::FileWrite, where,
-                  "texture '" + source + "' cannot be exported as " + textureFileName(graphName, sampler) +
+                  "texture '" + source + "' cannot be exported as " + t.file +
                       ": PNG encoding failed",
                   node);
       continue;
     }
-    files.push_back({textureFileName(graphName, sampler), std::move(png)});
+    files.push_back({t.file, std::move(png)});  // the name the manifest records
   }
   return files;
 }

@@ -11,16 +11,17 @@
 namespace wg {
 
 // The file name a texture of the manifest is written under: "<graph>.<sampler>.png",
-// e.g. "waves.t0_foam.png". Documented in clients/three/README.md.
+// e.g. "waves.t0_foam.png", where <graph> names the shader files too; the manifest records
+// it as each node texture's "file" (buildManifest), and textureFiles writes that name.
 std::string textureFileName(const std::string& graphName, const std::string& sampler);
 
-// One PNG per manifest texture with a "source" (scene resources have none): rows top to
+// One PNG per manifest texture with a "source" (scene resources have none), named by its
+// "file": rows top to
 // bottom as in any PNG, so the first row of the GL texture (v = 0) is the picture's bottom
 // row, exactly as a PNG source file is read. A texture that cannot be decoded is WG030 at
 // the option naming it (at the node without `graph`), naming the node; the returned list is
 // then incomplete and must not be written.
-std::vector<OutputFile> textureFiles(const CompileResult& result, const std::string& graphName, Diagnostics& diags,
-                                     const Graph* graph = nullptr);
+std::vector<OutputFile> textureFiles(const CompileResult& result, Diagnostics& diags, const Graph* graph = nullptr);
 
 // Reports texture `source` of the compiled graph as unusable (`why`): WG030 at the option
 // naming it (at the node without `graph`), naming the node. For the runtime's

@@ -11,7 +11,7 @@ namespace wg {
 
 const std::vector<DiagCodeInfo>& diagnosticCatalogue() {
   static const std::vector<DiagCodeInfo> catalogue = {
-#define WG_DIAG(name, number, summary) {DiagCode::name, #name, summary},
+#define WG_DIAG(name, number, summary, example) {DiagCode::name, #name, summary, example},
 #include "core/diagnostic_codes.def"
 #undef WG_DIAG
   };

@@ -14,7 +14,7 @@
 namespace wg {
 
 enum class DiagCode : int {
-#define WG_DIAG(name, number, summary) name = number,
+#define WG_DIAG(name, number, summary, example) name = number,
 #include "core/diagnostic_codes.def"
 #undef WG_DIAG
 };
@@ -23,6 +23,7 @@ struct DiagCodeInfo {
   DiagCode code;
   std::string_view enumerator;
   std::string_view summary;
+  std::string_view example;  // one line of what causes it (docs/diagnostics.md)
 };
 const std::vector<DiagCodeInfo>& diagnosticCatalogue();
 std::string codeString(DiagCode code);  // "WG029"

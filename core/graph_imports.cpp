@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <system_error>
 #include <unordered_map>
@@ -158,23 +159,38 @@ class ImportLoader {
   std::size_t bytesRead_ = 0;  // of every imported file read
 };
 
-size_t countInlined(const Graph& g, std::unordered_map<const Graph*, size_t>& memo) {
+// Saturating: a tree of sixteen levels multiplies counts far past size_t's range.
+size_t saturatingAdd(size_t a, size_t b, size_t cap) { return a >= cap || b >= cap - a ? cap : a + b; }
+size_t saturatingMul(size_t a, size_t b, size_t cap) { return a != 0 && b >= (cap + a - 1) / a ? cap : a * b; }
+
+constexpr size_t kNodeCap = kMaxNodes + 1;
+constexpr size_t kByteCap = kMaxInlinedBytes + 1;
+
+// What node `node` of a graph inlines to. An instance of `sub` is its nodes, each id behind
+// the instance's ("inst/"), at least one node (an instance of an empty graph still stands).
+InlinedSize nodeSize(const Node& node, const InlinedSize* sub) {
+  if (!sub || sub->nodes == 0) return {1, saturatingAdd(node.id.size(), kInlinedNodeBytes, kByteCap)};
+  size_t prefixes = saturatingMul(sub->nodes, node.id.size() + 1, kByteCap);
+  return {sub->nodes, saturatingAdd(sub->bytes, prefixes, kByteCap)};
+}
+
+InlinedSize measureInlined(const Graph& g, std::unordered_map<const Graph*, InlinedSize>& memo) {
   if (auto it = memo.find(&g); it != memo.end()) return it->second;
-  constexpr size_t cap = kMaxNodes + 1;
   std::unordered_map<std::string_view, const Graph*> byName;
   for (const auto& im : g.imports)
     if (im.graph) byName.emplace(im.name, im.graph.get());
-  size_t n = 0;
+  InlinedSize total;
   for (const auto& node : g.nodes) {
     auto it = byName.find(node.type);
-    n += it == byName.end() ? 1 : std::max<size_t>(1, countInlined(*it->second, memo));
-    if (n >= cap) {
-      n = cap;
-      break;
-    }
+    std::optional<InlinedSize> sub;
+    if (it != byName.end()) sub = measureInlined(*it->second, memo);
+    InlinedSize n = nodeSize(node, sub ? &*sub : nullptr);
+    total.nodes = saturatingAdd(total.nodes, n.nodes, kNodeCap);
+    total.bytes = saturatingAdd(total.bytes, n.bytes, kByteCap);
+    if (total.nodes == kNodeCap && total.bytes == kByteCap) break;
   }
-  memo[&g] = n;
-  return n;
+  memo[&g] = total;
+  return total;
 }
 
 }  // namespace
@@ -207,18 +223,32 @@ NodePorts interfacePorts(const Graph& g) {
 bool loadImports(Graph& graph, Diagnostics& diags) {
   if (graph.imports.empty()) return true;
   if (!ImportLoader(graph, diags).load(graph)) return false;
-  // Reported at the instance that takes the count past the limit.
-  std::unordered_map<const Graph*, size_t> memo;
+  // Predicted from the tree, before anything is inlined; reported at the instance that
+  // takes the graph past a limit.
+  std::unordered_map<const Graph*, InlinedSize> memo;
   std::unordered_map<std::string_view, const Graph*> byName;
   for (const auto& im : graph.imports) byName.emplace(im.name, im.graph.get());
-  size_t n = 0;
+  InlinedSize total;
   for (const auto& node : graph.nodes) {
     auto it = byName.find(node.type);
-    n += it == byName.end() ? 1 : countInlined(*it->second, memo);
-    if (n > kMaxNodes) {
+    std::optional<InlinedSize> sub;
+    if (it != byName.end()) sub = measureInlined(*it->second, memo);
+    InlinedSize n = nodeSize(node, sub ? &*sub : nullptr);
+    total.nodes = saturatingAdd(total.nodes, n.nodes, kNodeCap);
+    total.bytes = saturatingAdd(total.bytes, n.bytes, kByteCap);
+    if (total.nodes > kMaxNodes) {
       diags.error(DiagCode::LimitExceeded, node.where,
                   "with instance '" + node.id + "' the graph has more than " + std::to_string(kMaxNodes) +
                       " nodes with every subgraph instance inlined; the limit is " + std::to_string(kMaxNodes),
+                  node.id);
+      return false;
+    }
+    if (total.bytes > kMaxInlinedBytes) {
+      diags.error(DiagCode::LimitExceeded, node.where,
+                  "with instance '" + node.id + "' the graph's inlined size (every node with every subgraph instance inlined, " +
+                      "its full id and " + std::to_string(kInlinedNodeBytes) + " bytes each) passes the limit of " +
+                      std::to_string(kMaxInlinedBytes / (1024 * 1024)) + " MiB: " + std::to_string(total.nodes) +
+                      " nodes so far; shorten the ids or use fewer instances",
                   node.id);
       return false;
     }
@@ -226,9 +256,11 @@ bool loadImports(Graph& graph, Diagnostics& diags) {
   return true;
 }
 
-size_t inlinedNodeCount(const Graph& graph) {
-  std::unordered_map<const Graph*, size_t> memo;
-  return countInlined(graph, memo);
+size_t inlinedNodeCount(const Graph& graph) { return inlinedSize(graph).nodes; }
+
+InlinedSize inlinedSize(const Graph& graph) {
+  std::unordered_map<const Graph*, InlinedSize> memo;
+  return measureInlined(graph, memo);
 }
 
 std::vector<std::string> graphFilesRead(const Graph& graph) {

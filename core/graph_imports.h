@@ -15,8 +15,9 @@ namespace wg {
 // each file once however many imports reach it. A path is relative to the file that
 // writes it and must stay inside the folder of `graph`'s file (after symbolic links);
 // an imported graph must declare an interface. Cycles, missing files, paths that leave
-// the folder, chains deeper than kMaxImportDepth and more than kMaxNodes nodes with every
-// instance inlined are errors (WG070-WG075, WG035), as are the faults of each imported
+// the folder, chains deeper than kMaxImportDepth, more than kMaxNodes nodes with every
+// instance inlined and an inlined size over kMaxInlinedBytes are errors (WG070-WG075,
+// WG035: predicted, nothing is inlined), as are the faults of each imported
 // file, which carry a note naming the import. False after reporting.
 bool loadImports(Graph& graph, Diagnostics& diags);
 
@@ -37,5 +38,14 @@ NodePorts interfacePorts(const Graph& functionGraph);
 // Nodes with every subgraph instance replaced by the subgraph's nodes, counted up to
 // kMaxNodes + 1 (larger graphs report that).
 std::size_t inlinedNodeCount(const Graph& graph);
+
+// What inlining every subgraph instance of a graph would make, from the import tree alone
+// (each file's nodes counted once, multiplied by its instances): the nodes (up to
+// kMaxNodes + 1) and the inlined size of kMaxInlinedBytes (up to kMaxInlinedBytes + 1).
+struct InlinedSize {
+  std::size_t nodes = 0;
+  std::size_t bytes = 0;
+};
+InlinedSize inlinedSize(const Graph& graph);
 
 }  // namespace wg

@@ -25,7 +25,8 @@ std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags);
 // this one snapshot; a caller that also needs the bytes (fmt) reads them here, never twice.
 std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& diags);
 
-// The canonical text: fixed key order, 2-space indent, shortest round-trip numbers,
+// The canonical text: fixed key order, 2-space indent, shortest round-trip numbers, a
+// container on one line where it fits within 100 columns (core/graph_save.cpp),
 // LF line endings, a final newline. saveGraph(parseGraph(saveGraph(g))) == saveGraph(g).
 std::string saveGraph(const Graph& graph);
 

@@ -1,5 +1,6 @@
 // The canonical graph text (`watergraph fmt`): fixed key order, 2-space indent, numbers via
-// formatNumber, number arrays on one line, LF line endings, a final newline.
+// formatNumber, number arrays on one line, containers on one line where they fit within 100
+// columns, LF line endings, a final newline.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -19,150 +20,183 @@ std::string quote(std::string_view s) {
 
 void indent(std::string& out, int level) { out.append(static_cast<std::size_t>(level) * 2, ' '); }
 
-std::string numberArray(const std::vector<double>& xs) {
-  std::string s = "[";
-  for (std::size_t i = 0; i < xs.size(); ++i) {
-    if (i) s += ", ";
-    s += formatNumber(xs[i]);
+// The widest line a value is folded onto (when it has no line breaks of its own).
+constexpr std::size_t kMaxColumns = 100;
+
+// A value to be written: an atom (already formatted), or an object or array of values. The
+// layout is decided when writing: a container goes on one line where it fits within
+// kMaxColumns, counted from where it starts (so an editor position or a node's literal
+// inputs stay on one line, as people write them), else one member per line. The choice
+// depends only on the values, so the text is canonical and fmt is idempotent.
+struct Doc {
+  enum class Kind { Atom, Object, Array } kind = Kind::Atom;
+  std::string atom;
+  std::vector<std::pair<std::string, Doc>> members;  // quoted keys
+  std::vector<Doc> items;
+  bool alwaysFlat = false;     // number arrays: one line however long (a colour, a vector)
+  bool neverFlat = false;      // the tables a file is read by: one entry per line
+
+  static Doc of(std::string text) {
+    Doc d;
+    d.atom = std::move(text);
+    return d;
   }
-  return s + "]";
+};
+
+// The one-line form of `d`.
+std::string flat(const Doc& d) {
+  switch (d.kind) {
+    case Doc::Kind::Atom: return d.atom;
+    case Doc::Kind::Object: {
+      std::string s = "{";
+      for (std::size_t i = 0; i < d.members.size(); ++i) {
+        if (i) s += ", ";
+        s += d.members[i].first + ": " + flat(d.members[i].second);
+      }
+      return s + "}";
+    }
+    case Doc::Kind::Array: {
+      std::string s = "[";
+      for (std::size_t i = 0; i < d.items.size(); ++i) {
+        if (i) s += ", ";
+        s += flat(d.items[i]);
+      }
+      return s + "]";
+    }
+  }
+  return {};
 }
 
-// Writes `v` at nesting `level` (the caller has already written any indent and key).
-void writeJson(std::string& out, const json& v, int level) {
+bool mayBeFlat(const Doc& d) {
+  if (d.neverFlat) return false;
+  for (const auto& m : d.members)
+    if (!mayBeFlat(m.second)) return false;
+  for (const auto& item : d.items)
+    if (!mayBeFlat(item)) return false;
+  return true;
+}
+
+// Writes `d` at nesting `level`, starting at `column` (the caller has written the indent
+// and key before it).
+void write(std::string& out, const Doc& d, int level, std::size_t column) {
+  const bool empty = d.members.empty() && d.items.empty();
+  if (d.kind == Doc::Kind::Atom || empty || d.alwaysFlat) {
+    out += flat(d);
+    return;
+  }
+  if (mayBeFlat(d)) {
+    std::string one = flat(d);
+    if (column + one.size() + 1 <= kMaxColumns) {  // + 1: a comma may follow
+      out += one;
+      return;
+    }
+  }
+  const bool object = d.kind == Doc::Kind::Object;
+  out += object ? "{\n" : "[\n";
+  const std::size_t n = object ? d.members.size() : d.items.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    indent(out, level + 1);
+    std::size_t at = static_cast<std::size_t>(level + 1) * 2;
+    if (object) {
+      out += d.members[i].first;
+      out += ": ";
+      at += d.members[i].first.size() + 2;
+    }
+    write(out, object ? d.members[i].second : d.items[i], level + 1, at);
+    out += i + 1 < n ? ",\n" : "\n";
+  }
+  indent(out, level);
+  out += object ? '}' : ']';
+}
+
+Doc numberArray(const std::vector<double>& xs) {
+  Doc d;
+  d.kind = Doc::Kind::Array;
+  d.alwaysFlat = true;
+  for (double x : xs) d.items.push_back(Doc::of(formatNumber(x)));
+  return d;
+}
+
+Doc numbers(const std::vector<double>& xs) { return xs.size() == 1 ? Doc::of(formatNumber(xs[0])) : numberArray(xs); }
+
+// A JSON value of the file as it was read (options, preset option values).
+Doc jsonDoc(const json& v) {
   switch (v.type()) {
-    case json::value_t::null: out += "null"; return;
-    case json::value_t::boolean: out += v.get<bool>() ? "true" : "false"; return;
-    case json::value_t::number_integer: out += std::to_string(v.get<json::number_integer_t>()); return;
-    case json::value_t::number_unsigned:
-      out += std::to_string(v.get<json::number_unsigned_t>());
-      return;
-    case json::value_t::number_float: out += formatNumber(v.get<double>()); return;
-    case json::value_t::string: out += quote(v.get_ref<const std::string&>()); return;
+    case json::value_t::null: return Doc::of("null");
+    case json::value_t::boolean: return Doc::of(v.get<bool>() ? "true" : "false");
+    case json::value_t::number_integer: return Doc::of(std::to_string(v.get<json::number_integer_t>()));
+    case json::value_t::number_unsigned: return Doc::of(std::to_string(v.get<json::number_unsigned_t>()));
+    case json::value_t::number_float: return Doc::of(formatNumber(v.get<double>()));
+    case json::value_t::string: return Doc::of(quote(v.get_ref<const std::string&>()));
     case json::value_t::array: {
-      if (v.empty()) {
-        out += "[]";
-        return;
-      }
-      bool allNumbers = std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); });
-      if (allNumbers) {
-        out += '[';
-        for (std::size_t i = 0; i < v.size(); ++i) {
-          if (i) out += ", ";
-          writeJson(out, v[i], level);
-        }
-        out += ']';
-        return;
-      }
-      out += "[\n";
-      for (std::size_t i = 0; i < v.size(); ++i) {
-        indent(out, level + 1);
-        writeJson(out, v[i], level + 1);
-        out += i + 1 < v.size() ? ",\n" : "\n";
-      }
-      indent(out, level);
-      out += ']';
-      return;
+      Doc d;
+      d.kind = Doc::Kind::Array;
+      d.alwaysFlat = !v.empty() && std::all_of(v.begin(), v.end(), [](const json& e) { return e.is_number(); });
+      for (const auto& e : v) d.items.push_back(jsonDoc(e));
+      return d;
     }
     case json::value_t::object: {
-      if (v.empty()) {
-        out += "{}";
-        return;
-      }
-      out += "{\n";
-      std::size_t i = 0;
-      for (auto it = v.begin(); it != v.end(); ++it, ++i) {  // nlohmann's objects are sorted
-        indent(out, level + 1);
-        out += quote(it.key());
-        out += ": ";
-        writeJson(out, it.value(), level + 1);
-        out += i + 1 < v.size() ? ",\n" : "\n";
-      }
-      indent(out, level);
-      out += '}';
-      return;
+      Doc d;
+      d.kind = Doc::Kind::Object;
+      for (auto it = v.begin(); it != v.end(); ++it)  // nlohmann's objects are sorted
+        d.members.emplace_back(quote(it.key()), jsonDoc(it.value()));
+      return d;
     }
-    default: out += "null"; return;  // binary/discarded never come from a graph file
+    default: return Doc::of("null");  // binary/discarded never come from a graph file
   }
 }
 
-std::string sourceText(const InputSource& s) {
+Doc sourceDoc(const InputSource& s) {
   switch (s.kind) {
-    case InputSource::Kind::NodeOutput: return quote(s.name + "." + s.port);
-    case InputSource::Kind::Parameter: return quote("$" + s.name);
-    case InputSource::Kind::Literal:
-      if (s.literal.size() == 1) return formatNumber(s.literal[0]);
-      return numberArray(s.literal);
+    case InputSource::Kind::NodeOutput: return Doc::of(quote(s.name + "." + s.port));
+    case InputSource::Kind::Parameter: return Doc::of(quote("$" + s.name));
+    case InputSource::Kind::Literal: return numbers(s.literal);
   }
-  return "null";
+  return Doc::of("null");
 }
 
-// Collects "key": value members of one object and writes them with commas.
+// Collects "key": value members of one object.
 class ObjectWriter {
  public:
-  ObjectWriter(std::string& out, int level) : out_(out), level_(level) {}
-  // `text` is the already formatted value (may span lines, indented for level_ + 1).
-  void member(std::string_view key, std::string text) {
-    members_.emplace_back(quote(key), std::move(text));
-  }
-  void finish() {
-    if (members_.empty()) {
-      out_ += "{}";
-      return;
-    }
-    out_ += "{\n";
-    for (std::size_t i = 0; i < members_.size(); ++i) {
-      indent(out_, level_ + 1);
-      out_ += members_[i].first;
-      out_ += ": ";
-      out_ += members_[i].second;
-      out_ += i + 1 < members_.size() ? ",\n" : "\n";
-    }
-    indent(out_, level_);
-    out_ += '}';
+  void member(std::string_view key, Doc value) { doc_.members.emplace_back(quote(key), std::move(value)); }
+  void member(std::string_view key, std::string atom) { member(key, Doc::of(std::move(atom))); }
+  Doc finish(bool neverFlat = false) {
+    doc_.kind = Doc::Kind::Object;
+    doc_.neverFlat = neverFlat;
+    return std::move(doc_);
   }
 
  private:
-  std::string& out_;
-  int level_;
-  std::vector<std::pair<std::string, std::string>> members_;
+  Doc doc_;
 };
 
-std::string parameterText(const Parameter& p, int level) {
-  std::string out;
-  ObjectWriter w(out, level);
+Doc parameterDoc(const Parameter& p) {
+  ObjectWriter w;
   w.member("type", quote(typeName(p.type)));
-  w.member("default", p.defaultValue.size() == 1 ? formatNumber(p.defaultValue[0])
-                                                 : numberArray(p.defaultValue));
+  w.member("default", numbers(p.defaultValue));
   if (p.min) w.member("min", formatNumber(*p.min));
   if (p.max) w.member("max", formatNumber(*p.max));
   if (!p.hint.empty()) w.member("hint", quote(p.hint));
   if (!p.description.empty()) w.member("description", quote(p.description));
   if (p.isStatic) w.member("static", "true");
-  w.finish();
-  return out;
+  return w.finish();
 }
 
-// A preset on one line per parameter, in file order (the author's grouping).
-std::string presetText(const Preset& preset, int level) {
-  std::string out;
-  ObjectWriter w(out, level);
+// A preset's values in file order (the author's grouping).
+Doc presetDoc(const Preset& preset) {
+  ObjectWriter w;
   for (const auto& v : preset.values) {
     if (v.isOption()) {
-      std::string value;
-      writeJson(value, v.optionValue, level + 1);
-      w.member(v.node + "." + v.option, std::move(value));
+      w.member(v.node + "." + v.option, jsonDoc(v.optionValue));
       continue;
     }
-    w.member(v.parameter, v.value.size() == 1 ? formatNumber(v.value[0]) : numberArray(v.value));
+    w.member(v.parameter, numbers(v.value));
   }
-  w.finish();
-  return out;
+  return w.finish();
 }
 
-std::string nodeText(const Node& n, int level) {
-  std::string out;
-  ObjectWriter w(out, level);
+Doc nodeDoc(const Node& n) {
+  ObjectWriter w;
   w.member("id", quote(n.id));
   w.member("type", quote(n.type));
   if (!n.options.empty()) {
@@ -170,143 +204,108 @@ std::string nodeText(const Node& n, int level) {
     for (const auto& o : n.options) opts.push_back(&o);
     std::stable_sort(opts.begin(), opts.end(),
                      [](const NodeOption* a, const NodeOption* b) { return a->name < b->name; });
-    std::string text;
-    ObjectWriter ow(text, level + 1);
-    for (const auto* o : opts) {
-      std::string value;
-      writeJson(value, o->value, level + 2);
-      ow.member(o->name, std::move(value));
-    }
-    ow.finish();
-    w.member("options", std::move(text));
+    ObjectWriter ow;
+    for (const auto* o : opts) ow.member(o->name, jsonDoc(o->value));
+    w.member("options", ow.finish());
   }
   if (!n.inputs.empty()) {
     std::vector<const NodeInput*> ins;
     for (const auto& in : n.inputs) ins.push_back(&in);
     std::stable_sort(ins.begin(), ins.end(),
                      [](const NodeInput* a, const NodeInput* b) { return a->port < b->port; });
-    std::string text;
-    ObjectWriter iw(text, level + 1);
-    for (const auto* in : ins) iw.member(in->port, sourceText(in->source));
-    iw.finish();
-    w.member("inputs", std::move(text));
+    ObjectWriter iw;
+    for (const auto* in : ins) iw.member(in->port, sourceDoc(in->source));
+    w.member("inputs", iw.finish());
   }
   if (n.editorPosition) {
-    w.member("editor", "{\"x\": " + formatNumber((*n.editorPosition)[0]) +
-                           ", \"y\": " + formatNumber((*n.editorPosition)[1]) + "}");
+    ObjectWriter ew;
+    ew.member("x", formatNumber((*n.editorPosition)[0]));
+    ew.member("y", formatNumber((*n.editorPosition)[1]));
+    w.member("editor", ew.finish());
   }
-  w.finish();
-  return out;
+  return w.finish();
 }
 
-std::string outputsText(const Graph& g, int level) {
+Doc outputsDoc(const Graph& g) {
   std::vector<const GraphOutput*> outs;
   for (const auto& o : g.outputs) outs.push_back(&o);
   std::stable_sort(outs.begin(), outs.end(),
                    [](const GraphOutput* a, const GraphOutput* b) { return a->slot < b->slot; });
-  std::string out;
-  ObjectWriter w(out, level);
+  ObjectWriter w;
   // One object per stage, in table order (the rows of a stage are adjacent).
   std::string_view stage;
   for (const auto& row : outputSlotTable()) {
     if (row.stageName == stage) continue;
     stage = row.stageName;
-    std::string text;
-    ObjectWriter sw(text, level + 1);
+    ObjectWriter sw;
     bool any = false;
     for (const auto* o : outs) {
       const OutputSlotRow& slot = outputSlotRow(o->slot);
       if (slot.stageName != stage) continue;
-      sw.member(slot.portName, sourceText(o->source));
+      sw.member(slot.portName, sourceDoc(o->source));
       any = true;
     }
-    if (!any) continue;
-    sw.finish();
-    w.member(stage, std::move(text));
+    if (any) w.member(stage, sw.finish());
   }
-  w.finish();
-  return out;
+  return w.finish();
 }
 
 // The interface's outputs in file order (the order an instance's ports are listed in).
-std::string interfaceText(const GraphInterface& itf, int level) {
-  std::string out;
-  ObjectWriter w(out, level);
+Doc interfaceDoc(const GraphInterface& itf) {
+  ObjectWriter w;
   if (!itf.description.empty()) w.member("description", quote(itf.description));
-  std::string outputs;
-  ObjectWriter ow(outputs, level + 1);
+  ObjectWriter ow;
   for (const auto& o : itf.outputs) {
-    std::string text;
-    ObjectWriter one(text, level + 2);
+    ObjectWriter one;
     one.member("type", quote(typeName(o.type)));
-    one.member("source", sourceText(o.source));
+    one.member("source", sourceDoc(o.source));
     if (!o.description.empty()) one.member("description", quote(o.description));
-    one.finish();
-    ow.member(o.name, std::move(text));
+    ow.member(o.name, one.finish());
   }
-  ow.finish();
-  w.member("outputs", std::move(outputs));
-  w.finish();
-  return out;
+  w.member("outputs", ow.finish());
+  return w.finish();
 }
 
 }  // namespace
 
 std::string saveGraph(const Graph& graph) {
-  std::string out;
-  ObjectWriter w(out, 0);
+  ObjectWriter w;
   if (!graph.schema.empty()) w.member("$schema", quote(graph.schema));
   w.member("version", std::to_string(graph.version));
   w.member("name", quote(graph.name));
   if (!graph.description.empty()) w.member("description", quote(graph.description));
   if (graph.view) {
-    std::string text;
-    ObjectWriter vw(text, 1);
+    ObjectWriter vw;
     vw.member("tonemap", quote(std::string(toneMapperName(graph.view->toneMapper))));
     vw.member("exposure", formatNumber(graph.view->exposureEv));
-    vw.finish();
-    w.member("view", std::move(text));
+    w.member("view", vw.finish());
   }
   if (!graph.imports.empty()) {
-    std::string text;
-    ObjectWriter iw(text, 1);
+    ObjectWriter iw;
     for (const auto& im : graph.imports) iw.member(im.name, quote(im.path));
-    iw.finish();
-    w.member("imports", std::move(text));
+    w.member("imports", iw.finish());
   }
-  if (graph.interface) w.member("interface", interfaceText(*graph.interface, 1));
+  if (graph.interface) w.member("interface", interfaceDoc(*graph.interface));
+  // The tables a reader scans (parameters, presets, nodes) keep one entry per line; each
+  // entry is folded onto its line where it fits.
   if (!graph.parameters.empty()) {
-    std::string text;
-    ObjectWriter pw(text, 1);
-    for (const auto& p : graph.parameters) pw.member(p.name, parameterText(p, 2));
-    pw.finish();
-    w.member("parameters", std::move(text));
+    ObjectWriter pw;
+    for (const auto& p : graph.parameters) pw.member(p.name, parameterDoc(p));
+    w.member("parameters", pw.finish(true));
   }
   if (!graph.presets.empty()) {
-    std::string text;
-    ObjectWriter pw(text, 1);
-    for (const auto& preset : graph.presets) pw.member(preset.name, presetText(preset, 2));
-    pw.finish();
-    w.member("presets", std::move(text));
+    ObjectWriter pw;
+    for (const auto& preset : graph.presets) pw.member(preset.name, presetDoc(preset));
+    w.member("presets", pw.finish(true));
   }
-  {
-    std::string text;
-    if (graph.nodes.empty()) {
-      text = "[]";
-    } else {
-      text = "[\n";
-      for (std::size_t i = 0; i < graph.nodes.size(); ++i) {
-        indent(text, 2);
-        text += nodeText(graph.nodes[i], 2);
-        text += i + 1 < graph.nodes.size() ? ",\n" : "\n";
-      }
-      indent(text, 1);
-      text += ']';
-    }
-    w.member("nodes", std::move(text));
-  }
-  if (!graph.outputs.empty() || !graph.interface) w.member("outputs", outputsText(graph, 1));
-  w.finish();
+  Doc nodes;
+  nodes.kind = Doc::Kind::Array;
+  nodes.neverFlat = !graph.nodes.empty();
+  for (const auto& n : graph.nodes) nodes.items.push_back(nodeDoc(n));
+  w.member("nodes", std::move(nodes));
+  if (!graph.outputs.empty() || !graph.interface) w.member("outputs", outputsDoc(graph));
+  std::string out;
+  write(out, w.finish(true), 0, 0);
   out += '\n';
   return out;
 }

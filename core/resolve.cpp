@@ -20,6 +20,7 @@
 #include "core/graph_node_type.h"
 #include "core/id_index.h"
 #include "core/json_string_columns.h"
+#include "core/load_limits.h"
 #include "core/number_format.h"
 #include "core/interned_values.h"
 #include "core/node_options.h"
@@ -77,6 +78,12 @@ struct SharedState {
   // Options that nodes declare, and constants, each held once per distinct value.
   OptionsTable options;
   ConstantTable constants;
+  // The inlined size of the ops made so far (kMaxInlinedBytes): the first `opsMeasured`
+  // ops measured. loadImports predicted it from the import tree; this holds the ops that an
+  // expanding node makes (a formula is one node there) to the same budget.
+  std::size_t opsMeasured = 0;
+  std::size_t inlinedBytes = 0;
+  bool overBudget = false;
 };
 
 // A subgraph instance being inlined: its nodes' ids take the prefix, its parameters read
@@ -612,9 +619,12 @@ class Resolver {
     opOfNode_.assign(graph_.nodes.size(), -1);
     expandedOutputs_.assign(graph_.nodes.size(), {});
     program_.ops.reserve(order.size());
+    const Node* previous = nullptr;  // the node whose ops the budget check measures
     for (int ni : order) {
       const Node& node = graph_.nodes[static_cast<size_t>(ni)];
       const NodeSpec* spec = specs_[static_cast<size_t>(ni)];
+      if (previous && !withinInlinedBudget(*previous)) return;
+      previous = &node;
       if (!spec) continue;
       Op op;
       op.spec = spec;
@@ -715,6 +725,27 @@ class Resolver {
       opOfNode_[static_cast<size_t>(ni)] = static_cast<int>(program_.ops.size());
       program_.ops.push_back(std::move(op));
     }
+    if (previous) withinInlinedBudget(*previous);
+  }
+
+  // Whether the ops made so far keep the inlined-size budget; reports at `node`, the one
+  // whose ops passed it, and stops every resolver of the graph.
+  bool withinInlinedBudget(const Node& node) {
+    if (shared_.overBudget) return false;
+    const std::vector<Op>& ops = program_.ops;
+    for (size_t k = std::min(shared_.opsMeasured, ops.size()); k < ops.size(); ++k)
+      shared_.inlinedBytes += ops[k].nodeId.size() + kInlinedNodeBytes;
+    shared_.opsMeasured = ops.size();
+    if (shared_.inlinedBytes <= kMaxInlinedBytes && ops.size() <= kMaxOps) return true;
+    shared_.overBudget = true;
+    const std::string what = ops.size() > kMaxOps
+                                 ? "makes more than " + std::to_string(kMaxOps) + " ops, the limit"
+                                 : "passes the limit of " + std::to_string(kMaxInlinedBytes / (1024 * 1024)) +
+                                       " MiB of inlined size (every op it makes, its full id and " +
+                                       std::to_string(kInlinedNodeBytes) + " bytes each) after " +
+                                       std::to_string(ops.size()) + " ops";
+    diags_.error(DiagCode::LimitExceeded, node.where, "with node '" + idOf(node) + "' the graph " + what, node.id);
+    return false;
   }
 
   void listNodeOutputs(NodeOutputValues& out) const {

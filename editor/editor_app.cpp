@@ -11,6 +11,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <new>
 #include <iostream>
 #include <memory>
 
@@ -854,6 +855,10 @@ int runEditor(const EditorOptions& options) {
   } catch (const rt::RuntimeError& e) {
     std::cerr << "watergraph-editor: " << e.what() << "\n";
     return e.exitCode();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "watergraph-editor: out of memory: the editor needs more memory than this process can get "
+                 "(ulimit -v, a container's limit, or a smaller --size, --preview-size or graph)\n";
+    return 2;
   }
 }
 

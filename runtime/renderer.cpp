@@ -6,12 +6,14 @@
 #include <cstring>
 #include <filesystem>
 #include <limits>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "codegen/shader_interface.h"
 #include "nodes/texture_source.h"
+#include "runtime/memory_budget.h"
 #include "runtime/node_texture.h"
 #include "runtime/gpu_cache.h"
 #include "runtime/oblique_projection.h"
@@ -116,6 +118,8 @@ struct Renderer::Impl {
   RenderSettings settings;
   bool es = false;
   PassPlan plan;
+  // The plan's share of the memory budget, reserved before any target is made.
+  std::optional<MemoryReservation> memory;
   Camera camera;
   float aspect = 1.0f;
   glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f};
@@ -674,14 +678,9 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
   r.setCamera(*cam);
   r.sun = sunDirection(settings.scene);
 
-  PlanOptions po;
-  po.width = settings.width;
-  po.height = settings.height;
-  po.floatColor = settings.floatColor;
-  po.pictureFormat = settings.pictureFormat;
-  po.outputTransform = settings.outputTransform;
-  po.environmentSize = settings.environmentSize;
-  r.plan = planPasses(manifest, po);
+  r.plan = planPasses(manifest, planOptionsFor(settings));
+  r.memory.emplace(rendererBytes(r.plan, settings.floatColor),
+                   "render targets and read-back at " + std::to_string(settings.width) + "x" + std::to_string(settings.height));
 
   // The attributes the graph reads must be the ones the grid provides, where it provides them.
   for (const AttributeInfo& a : manifest.attributes) {

@@ -13,10 +13,11 @@ class RuntimeError : public std::runtime_error {
     Io,           // an image could not be written: exit 2
     Driver,       // the driver rejected a shader glslang accepted, or a GL call failed: exit 1
     Manifest,     // the manifest asks for something the runtime cannot do: exit 1
+    Budget,       // the size asked for would pass the memory budget (memory_budget.h): exit 2
   };
   RuntimeError(Kind kind, const std::string& message) : std::runtime_error(message), kind_(kind) {}
   Kind kind() const { return kind_; }
-  int exitCode() const { return kind_ == Kind::Environment || kind_ == Kind::Io ? 2 : 1; }
+  int exitCode() const { return kind_ == Kind::Environment || kind_ == Kind::Io || kind_ == Kind::Budget ? 2 : 1; }
 
  private:
   Kind kind_;

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cstring>
+#include <optional>
 
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/packing.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "codegen/shader_interface.h"
+#include "runtime/memory_budget.h"
 #include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
 #include "runtime/tessellation_budget.h"
@@ -77,6 +79,8 @@ struct VkRenderer::Impl {
   VkContext& ctx;
   RenderSettings settings;
   PassPlan plan;
+  // The plan's share of the memory budget, reserved before any target is made.
+  std::optional<MemoryReservation> memory;
   Camera camera;
   glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f};  // GL's
   glm::vec3 sun{0.0f, 1.0f, 0.0f};
@@ -484,14 +488,9 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   r.viewProjection = r.projection * r.view;
   r.sun = sunDirection(settings.scene);
 
-  PlanOptions po;
-  po.width = settings.width;
-  po.height = settings.height;
-  po.floatColor = settings.floatColor;
-  po.pictureFormat = settings.pictureFormat;
-  po.outputTransform = settings.outputTransform;
-  po.environmentSize = settings.environmentSize;
-  r.plan = planPasses(manifest, po);
+  r.plan = planPasses(manifest, planOptionsFor(settings));
+  r.memory.emplace(rendererBytes(r.plan, settings.floatColor),
+                   "render targets and read-back at " + std::to_string(settings.width) + "x" + std::to_string(settings.height));
   r.deferred = r.plan.runs(PassKind::DeferredWater);
 
   // The grid's attributes the graph reads, at the manifest's locations.

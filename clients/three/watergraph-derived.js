@@ -8,6 +8,13 @@
 
 export class DerivedProgramError extends Error {}
 
+// Tables keyed by names a manifest gives (node types, comparisons, swizzle letters) have no
+// prototype: an op of type "constructor" or a comparison "__proto__" is no member of them.
+const table = (entries) => Object.freeze(Object.assign(Object.create(null), entries));
+const own = (object, key) => Object.prototype.hasOwnProperty.call(object, key);
+const isObject = (x) => x !== null && typeof x === 'object' && !Array.isArray(x);
+const listOf = (x) => (Array.isArray(x) ? x : []);
+
 // std::min / std::max, whose comparisons decide where a NaN goes (Math.min would return NaN).
 const min = (a, b) => (b < a ? b : a);
 const max = (a, b) => (a < b ? b : a);
@@ -53,7 +60,7 @@ function roundEven(x) {
 }
 
 // Component-wise node types: the formula over one component of each input.
-const COMPONENT_WISE = {
+const COMPONENT_WISE = table({
   add: (a, b) => a + b,
   sub: (a, b) => a - b,
   mul: (a, b) => a * b,
@@ -93,19 +100,19 @@ const COMPONENT_WISE = {
   sqrt: (x) => Math.sqrt(max(x, 0)),
   inversesqrt: (x) => 1 / Math.sqrt(max(x, FLT_MIN)),
   inverse_mix: (a, b, x) => (b === a ? 0 : (x - a) / (b - a)),
-};
+});
 
-const COMPARISONS = {
+const COMPARISONS = table({
   less: (a, b) => a < b,
   less_equal: (a, b) => a <= b,
   greater: (a, b) => a > b,
   greater_equal: (a, b) => a >= b,
   equal: (a, b) => a === b,
   not_equal: (a, b) => a !== b,
-};
+});
 
-const COMPONENTS = { float: 1, vec2: 2, vec3: 3, vec4: 4, mat4: 16 };
-const SWIZZLE = { x: 0, y: 1, z: 2, w: 3, r: 0, g: 1, b: 2, a: 3 };
+const COMPONENTS = table({ float: 1, vec2: 2, vec3: 3, vec4: 4, mat4: 16 });
+const SWIZZLE = table({ x: 0, y: 1, z: 2, w: 3, r: 0, g: 1, b: 2, a: 3 });
 // The per-draw builtins a program may read, by the names the manifest uses.
 export const DERIVED_BUILTINS = ['time', 'camera_position', 'camera_near_far', 'view', 'projection', 'sun_direction'];
 
@@ -118,15 +125,15 @@ const dot = (a, b) => {
 
 // The inputs of each node type that is not component-wise (those take as many as their
 // formula's parameters): what the compiler writes, one per port of the type.
-const ARITY = {
+const ARITY = table({
   time: 0, camera_position: 0, sun_direction: 0, camera_forward: 0, near_far_ratio: 1,
   compare: 2, select: 4, dot: 2, length: 1, distance: 2, normalize: 1, cross: 2, swizzle: 1,
   split: 1, combine: 4, remap: 5, srgb_to_linear: 1,
-};
+});
 const arityOf = (type) => ARITY[type] ?? COMPONENT_WISE[type]?.length;
 
 // Whether `port` names an output of `op` that has a value (split's missing components do not).
-const isPort = (op, port) => Number.isInteger(port) && port >= 0 && COMPONENTS[(op.output_types ?? [])[port]] !== undefined;
+const isPort = (op, port) => Number.isInteger(port) && port >= 0 && COMPONENTS[listOf(op.output_types)[port]] !== undefined;
 
 function componentsOf(type, what) {
   const n = COMPONENTS[type];
@@ -138,7 +145,7 @@ function componentsOf(type, what) {
 // values, or an error for a node type outside the vocabulary.
 function opFunction(op, what) {
   const type = op.type;
-  const outputs = (op.output_types ?? []).map((t) => (t === 'invalid' ? 0 : componentsOf(t, what)));
+  const outputs = listOf(op.output_types).map((t) => (t === 'invalid' ? 0 : componentsOf(t, what)));
   const n = outputs[0] ?? 0;
   const f = COMPONENT_WISE[type];
   if (f) {
@@ -148,7 +155,7 @@ function opFunction(op, what) {
       return [r];
     };
   }
-  const options = op.options ?? {};
+  const options = isObject(op.options) ? op.options : {};
   switch (type) {
     case 'time':
     case 'camera_position':
@@ -170,7 +177,7 @@ function opFunction(op, what) {
       };
     case 'compare':
     case 'select': {
-      const holds = COMPARISONS[options.op ?? 'less'];
+      const holds = COMPARISONS[own(options, 'op') ? options.op : 'less'];
       if (!holds) throw new DerivedProgramError(`${what}: unknown comparison '${options.op}'`);
       return (xs) => {
         const r = new Array(n);
@@ -233,11 +240,14 @@ function opFunction(op, what) {
 // `parameters` maps a parameter's name to its value (a number or an array, already clamped
 // into its range), `draw` holds the DERIVED_BUILTINS (arrays; time a number).
 export function compileDerived(program, what = 'derived uniform') {
-  if (!program || !Array.isArray(program.ops) || !program.value) throw new DerivedProgramError(`${what}: needs "ops" and "value"`);
+  if (!isObject(program) || !Array.isArray(program.ops) || !isObject(program.value))
+    throw new DerivedProgramError(`${what}: needs "ops" and "value"`);
   const steps = program.ops.map((op, k) => {
+    if (!isObject(op)) throw new DerivedProgramError(`${what}, op ${k}: not an object`);
     const name = `${what}, op ${k} ('${op.node ?? ''}')`;
     const fn = opFunction(op, name);
-    const inputs = (op.inputs ?? []).map((input, i) => {
+    const inputs = (Array.isArray(op.inputs) ? op.inputs : []).map((input, i) => {
+      if (!isObject(input)) throw new DerivedProgramError(`${name}: input ${i} is not an object`);
       if ('op' in input) {
         const j = input.op, port = input.port ?? 0;
         if (!(Number.isInteger(j) && j >= 0 && j < k)) throw new DerivedProgramError(`${name}: input ${i} reads no earlier op`);
@@ -247,7 +257,7 @@ export function compileDerived(program, what = 'derived uniform') {
       if ('parameter' in input) {
         const p = String(input.parameter);
         return (values, parameters) => {
-          const v = parameters[p];
+          const v = own(parameters, p) ? parameters[p] : undefined;
           if (v === undefined) throw new DerivedProgramError(`${name}: parameter '${p}' has no value`);
           return typeof v === 'number' ? [v] : Array.from(v);
         };
@@ -268,7 +278,7 @@ export function compileDerived(program, what = 'derived uniform') {
     if (inputs.length !== arityOf(op.type))
       throw new DerivedProgramError(`${name}: ${inputs.length} inputs; a '${op.type}' has ${arityOf(op.type)}`);
     // A float read by a wider port splats over its components, as the CPU backend converts it.
-    const widths = (op.input_types ?? []).map((t) => componentsOf(t, name));
+    const widths = listOf(op.input_types).map((t) => componentsOf(t, name));
     if (widths.length !== inputs.length) throw new DerivedProgramError(`${name}: inputs and input types apart`);
     const widened = inputs.map((read, i) => (values, parameters, draw) => {
       const v = read(values, parameters, draw);

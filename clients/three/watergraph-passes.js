@@ -5,16 +5,12 @@
 // water G-buffer) come from the scene description `watergraph scene` writes.
 import * as THREE from 'three';
 import { OutputTransform, checkColorDescription } from './watergraph-output.js';
+import { WaterGraphError } from './watergraph-error.js';
 
 // Thrown for a manifest or description the client cannot run (a pass it cannot provide, an
 // unknown builtin uniform or type) and for files that cannot be loaded; watergraph-three.js
 // exports it too.
-export class WaterGraphError extends Error {
-  constructor(message) {
-    super(message);
-    this.name = 'WaterGraphError';
-  }
-}
+export { WaterGraphError };
 
 // The passes render() knows how to run.
 const CLIENT_PASSES = new Set(['environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction', 'opaque_scene',
@@ -72,7 +68,7 @@ export function planPasses(manifest, description, { width, height, environmentSi
     }
     if (pass !== 'opaque_scene' && !listed.has(pass)) continue;
     plan.passes.push(pass);
-    const scale = scales[pass] ?? 1;
+    const scale = Object.prototype.hasOwnProperty.call(scales, pass) ? scales[pass] : 1;
     for (const t of description.render_targets) {
       if (t.pass !== pass) continue;
       plan.targets.push({
@@ -184,7 +180,7 @@ export class WaterPasses {
     this.environmentSize = environmentSize;
     // What the environment cube sees: the runtime draws only its sky there.
     this.environmentScene = environment ?? new THREE.Scene().add(createSky(description));
-    this.resources = {};
+    this.resources = Object.create(null);  // keyed by names from the manifest and description
     // Until render() has seen the renderer, the runtime's format; frameFallback says why the
     // frame is not RGBA16F once it is not.
     this.frameFormat = 'rgba16f';
@@ -239,7 +235,7 @@ export class WaterPasses {
     this.height = height;
     this.plan = planPasses(this.manifest, this.description,
       { width, height, environmentSize: this.environmentSize, frameFormat: this.frameFormat });
-    this.targets = {};
+    this.targets = Object.create(null);
     // Linear filtering (half floats filter in every WebGL 2 context), and the type of the
     // frame's colour: linear radiance in half floats, as the runtime's RGBA16F.
     const linear = { minFilter: THREE.LinearFilter, magFilter: THREE.LinearFilter, generateMipmaps: false,

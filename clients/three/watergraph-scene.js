@@ -66,7 +66,8 @@ export function createBuiltinScene(description) {
 // A camera preset of the description ("above", "grazing", "underwater", "topdown") as a
 // THREE.PerspectiveCamera for `aspect`.
 export function presetCamera(description, name, aspect) {
-  const c = description.cameras?.[name];
+  const cameras = description.cameras;
+  const c = cameras && Object.prototype.hasOwnProperty.call(cameras, name) ? cameras[name] : undefined;  // not "__proto__"
   if (!c) throw new WaterGraphError(`the scene description has no camera '${name}'`);
   const camera = new THREE.PerspectiveCamera(c.fov_y_degrees, aspect, c.near, c.far);
   camera.position.fromArray(c.position);

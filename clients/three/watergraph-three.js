@@ -6,9 +6,16 @@ import * as THREE from 'three';
 import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
 import { compileDerived, drawValues } from './watergraph-derived.js';
 import { manifestView, renderView } from './watergraph-output.js';
+import { checkManifest, has } from './watergraph-manifest.js';
 
 export { WaterGraphError };
 export { TONE_MAPPERS, EXPOSURE_RANGE } from './watergraph-output.js';
+export { checkManifest } from './watergraph-manifest.js';
+
+// A table keyed by names that come from a manifest: without a prototype, so that
+// "__proto__" or "constructor" is no member of it (a parameter named __proto__ set through
+// a plain object's prototype setter and was lost).
+const table = (entries = {}) => Object.assign(Object.create(null), entries);
 
 const TWO_PI = 6.283185307179586;
 
@@ -77,20 +84,24 @@ export function createWaterGridGeometry(quadsPerSide = 128, halfSize = 20) {
 }
 
 // Attribute name -> item size the grid provides (codegen/shader_interface.h locations).
-const GRID_ATTRIBUTES = { a_position: [0, 3], a_normal: [1, 3], a_uv: [2, 2] };
+const GRID_ATTRIBUTES = table({ a_position: [0, 3], a_normal: [1, 3], a_uv: [2, 2] });
 
 function checkPasses(manifest, resources, hasPasses = false) {
   const passes = manifest.passes;
   if (!Array.isArray(passes) || !passes.includes('water_surface'))
     throw new WaterGraphError(`graph '${manifest.graph}': the manifest has no "passes" list with water_surface`);
   const missing = [];
+  // Without a description the client draws the water alone: a pass it does not know would
+  // be skipped silently.
+  const known = new Set(['water_surface', ...Object.values(RESOURCE_PASSES)]);
+  if (!hasPasses) for (const pass of passes) if (!known.has(pass)) missing.push(`${pass} (a pass this client does not know)`);
   for (const resource of manifest.resources ?? []) {
-    const pass = RESOURCE_PASSES[resource];
+    const pass = has(RESOURCE_PASSES, resource) ? RESOURCE_PASSES[resource] : undefined;
     if (!pass) missing.push(`${resource} (an unknown scene resource)`);
     else if (hasPasses) continue;
     else if (NEEDS_PASSES.has(resource))
       missing.push(`${pass} (resource ${resource}: deferred water needs the client's passes: give a scene description)`);
-    else if (!resources[resource]) missing.push(`${pass} (resource ${resource}: pass it in options.resources)`);
+    else if (!(has(resources, resource) && resources[resource])) missing.push(`${pass} (resource ${resource}: pass it in options.resources)`);
   }
   if (missing.length)
     throw new WaterGraphError(
@@ -107,7 +118,7 @@ function parameterValue(u) {
   const v = typeof d === 'boolean' ? [d ? 1 : 0] : Array.isArray(d) ? d : [d];
   if (v.some((x) => typeof x !== 'number'))
     throw new WaterGraphError(`parameter uniform ${u.name} has no numeric "default"`);
-  const need = { float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 }[u.type];
+  const need = table({ float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 })[u.type];
   if (need === undefined) throw new WaterGraphError(`uniform ${u.name} has a type the client does not know: ${u.type}`);
   if (v.length !== need) throw new WaterGraphError(`uniform ${u.name} of type ${u.type} got ${v.length} value(s)`);
   switch (u.type) {
@@ -130,7 +141,7 @@ function clampToRange(x, u) {
   return x > hi ? hi : x;
 }
 
-const BUILTIN_INITIAL = {
+const BUILTIN_INITIAL = table({
   model: () => new THREE.Matrix4(),
   view_projection: () => new THREE.Matrix4(),
   view: () => new THREE.Matrix4(),
@@ -143,7 +154,7 @@ const BUILTIN_INITIAL = {
   // The unit vector towards the sun; until setSunDirection, the runtime's default scene sun
   // (azimuth 110 degrees from +x towards +z, elevation 30 degrees).
   sun_direction: () => sunFromAngles(110, 30),
-};
+});
 
 // The direction towards a sun at `azimuth` degrees (from +x towards +z) and `elevation`
 // degrees above the horizon, as the runtime's scene computes it.
@@ -170,6 +181,7 @@ export class WaterGraph {
   // manifest lists itself (WaterPasses), and render() draws a frame.
   constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {}, description = null }) {
     if (!manifest || typeof manifest !== 'object') throw new WaterGraphError('no manifest given');
+    checkManifest(manifest);  // its documented shape, before any of it is used
     checkPasses(manifest, resources, description !== null);
     // The graph's preferred view (the manifest's "color"), which render() uses by default.
     this.view = manifestView(manifest);
@@ -185,9 +197,9 @@ export class WaterGraph {
         throw new WaterGraphError(`graph '${manifest.graph}' reads attribute ${a.name} at location ${a.location}, which the water grid does not provide`);
     }
     this.manifest = manifest;
-    this.uniforms = {};
+    this.uniforms = table();  // uniform name -> { value }, as three.js takes them
     this.phases = [];  // [uniform name, angular frequency]
-    this.builtins = {};  // builtin -> uniform name
+    this.builtins = table();  // builtin -> uniform name
     this.derived = [];  // [uniform name, function of (parameters, draw)]: derived uniforms
     // What derived uniforms read per draw (watergraph-derived.js drawValues), kept here
     // because the shader may declare none of these uniforms itself.
@@ -210,17 +222,18 @@ export class WaterGraph {
       const make = BUILTIN_INITIAL[u.builtin];
       if (!make) throw new WaterGraphError(`uniform ${u.name} asks for builtin '${u.builtin}', which the client does not provide`);
       this.uniforms[u.name] = { value: make() };
-      if (u.builtin === 'time_phase') this.phases.push([u.name, Number(u.angular_frequency ?? 0)]);
+      if (u.builtin === 'time_phase') this.phases.push([u.name, u.angular_frequency]);
       else this.builtins[u.builtin] = u.name;
     }
     for (const t of manifest.textures ?? []) {
       let texture;
       if ('source' in t) {
-        texture = textures[t.name];
+        texture = has(textures, t.name) ? textures[t.name] : undefined;
         if (!texture) throw new WaterGraphError(`texture ${t.name} (${t.source}) was not given`);
       } else if ('resource' in t) {
         // By sampler first: the G-buffer's two samplers share the resource `underwater`.
-        texture = resources[t.name] ?? resources[t.resource];  // checkPasses made sure it is there
+        texture = (has(resources, t.name) ? resources[t.name] : undefined) ??
+          (has(resources, t.resource) ? resources[t.resource] : undefined);  // checkPasses made sure it is there
         if (!texture) throw new WaterGraphError(`texture ${t.name} (resource ${t.resource}) was not given`);
       } else {
         throw new WaterGraphError(`texture ${t.name} has neither a "source" nor a "resource"`);
@@ -281,7 +294,7 @@ export class WaterGraph {
   // computes them before each draw.
   #updateDerived() {
     if (this.derived.length === 0) return;
-    const parameters = {};
+    const parameters = table();
     for (const u of this.manifest.uniforms ?? []) {
       if (!('parameter' in u)) continue;
       const v = this.uniforms[u.name].value;
@@ -464,17 +477,17 @@ async function fetchOk(url, what) {
 // its "sampler" entry, or without one the default every node texture had before
 // texture_sample (repeat, linear, linear data).
 const DEFAULT_SAMPLER = { wrap: 'repeat', filter: 'linear', color_space: 'linear' };
-const WRAPS = {
+const WRAPS = table({
   repeat: THREE.RepeatWrapping,
   clamp: THREE.ClampToEdgeWrapping,
   mirror: THREE.MirroredRepeatWrapping,
-};
-const FILTERS = {  // [minFilter, magFilter, generateMipmaps]
+});
+const FILTERS = table({  // [minFilter, magFilter, generateMipmaps]
   nearest: [THREE.NearestFilter, THREE.NearestFilter, false],
   linear: [THREE.LinearFilter, THREE.LinearFilter, false],
   mipmapped: [THREE.LinearMipmapLinearFilter, THREE.LinearFilter, true],
-};
-const COLOR_SPACES = { linear: THREE.NoColorSpace, srgb: THREE.SRGBColorSpace };
+});
+const COLOR_SPACES = table({ linear: THREE.NoColorSpace, srgb: THREE.SRGBColorSpace });
 
 // Sets `texture`'s wrap, filters, mipmaps and colour space from `sampler` (a manifest
 // texture's "sampler", or undefined for the default). sRGB: three.js uploads SRGB8_ALPHA8,
@@ -516,18 +529,17 @@ export async function loadNodeTexture(url, what = url, sampler = undefined) {
 export async function loadWaterGraph(manifestUrl, { resources = {}, description = null } = {}) {
   const base = new URL(manifestUrl, globalThis.location?.href);
   const manifest = await (await fetchOk(base, 'the manifest')).json();
+  checkManifest(manifest);
   checkPasses(manifest, resources, description !== null);  // before fetching anything else
   const es300 = manifest.targets?.es300;
   if (!es300?.vert || !es300?.frag)
     throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
   const text = async (file) => (await fetchOk(new URL(file, base), file)).text();
   const [vertexShader, fragmentShader] = await Promise.all([text(es300.vert), text(es300.frag)]);
-  // Files are named after the graph file ("lake.es300.vert" -> "lake"), as the shaders are.
-  const baseName = es300.vert.replace(/\.es300\.vert$/, '');
-  const textures = {};
+  const textures = table();
   for (const t of manifest.textures ?? []) {
     if (!('source' in t)) continue;
-    const file = `${baseName}.${t.name}.png`;
+    const file = t.file;  // named by the manifest, beside it (checkManifest: a plain file name)
     textures[t.name] = await loadNodeTexture(
       new URL(file, base),
       `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``, t.sampler);

@@ -1,5 +1,6 @@
 // Reads the shaders watergraph generated at build time (see CMakeLists.txt) and prints what
-// a renderer would load: each file's size and #version line, the manifest's uniforms, and
+// a renderer would load: each file's size and #version line, the manifest's uniforms, the
+// node textures it names, and
 // the derived uniforms it would set before each draw, computed by the generated
 // pond.derived.h (the c-header target).
 #include <cstdio>
@@ -44,6 +45,18 @@ int main() {
   for (size_t at = manifest.find("\"name\": \"p_"); at != std::string::npos; at = manifest.find("\"name\": \"p_", at + 1)) {
     size_t start = at + 9, end = manifest.find('"', start);
     std::cout << "uniform " << manifest.substr(start, end - start) << "\n";
+  }
+  // The node textures to upload (TEXTURES): each manifest texture with a "file", beside it.
+  for (size_t at = manifest.find("\"file\": \""); at != std::string::npos; at = manifest.find("\"file\": \"", at + 1)) {
+    size_t start = at + 9, end = manifest.find('"', start);
+    const std::string file = manifest.substr(start, end - start);
+    std::string png;
+    if (!readFile(dir + "/" + file, png) || png.compare(0, 4, "\x89PNG") != 0) {
+      std::cerr << "pond_info: missing texture " << dir << "/" << file << "\n";
+      ++missing;
+      continue;
+    }
+    std::cout << "texture " << file << ": " << png.size() << " bytes\n";
   }
   // The shimmering sky colour is the same for every pixel of a draw: the shader reads it as
   // u_derived0, and the renderer computes it once per draw, here at t = 2 s.

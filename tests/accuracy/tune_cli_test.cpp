@@ -48,6 +48,11 @@ TEST(TuneCli, FindsTheKnownBestConfiguration) {
                 test::shellQuote(dir + "/tune.svg"));
   ASSERT_EQ(r.exit, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("chosen: f.model=exact, cv.bypass=true\n"), std::string::npos) << r.out;
+  // Switching cv off drops what it draws: said before the configuration, with the way out.
+  const size_t off = r.out.find("switched off: cv (what it draws is gone from the chosen configuration; forbid it "
+                                "with --keep cv, or --no-bypass)\n");
+  EXPECT_NE(off, std::string::npos) << r.out;
+  EXPECT_LT(off, r.out.find("chosen: ")) << r.out;
   EXPECT_NE(r.out.find("| 1 | cv.bypass | true |"), std::string::npos) << r.out;
   EXPECT_EQ(r.out.find("| 2 |"), std::string::npos) << "one step only:\n" << r.out;
   EXPECT_NE(r.out.find("  f.model=schlick: fails the budget: worst PSNR "), std::string::npos) << "why it stopped:\n" << r.out;
@@ -56,6 +61,33 @@ TEST(TuneCli, FindsTheKnownBestConfiguration) {
   EXPECT_NE(svg.find("cv.bypass=true"), std::string::npos);
   EXPECT_NE(svg.find("f.model=schlick"), std::string::npos);
   EXPECT_NE(svg.find("Pareto"), std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+// --keep cv (or --no-bypass) leaves the colour variation drawn: the only other knob, the
+// Fresnel model, fails the 60 dB budget at every cheaper level, so nothing is found, and no
+// configuration tried switches cv off. A --keep naming no node tune could switch off is a
+// usage error naming it and the nodes that can be.
+TEST(TuneCli, KeepAndNoBypassForbidSwitchingNodesOff) {
+  std::string dir = test::makeTempDir("wg_tune_");
+  test::writeFile(dir + "/g.json", twoKnobGraph(""));
+  const std::string g = test::shellQuote(dir + "/g.json");
+  for (const char* flag : {" --keep cv", " --no-bypass"}) {
+    SCOPED_TRACE(flag);
+    CmdResult r = wg("tune " + g + " --min-psnr 60" + kSmall + flag);
+    EXPECT_EQ(r.exit, 1) << r.out << r.err;
+    EXPECT_EQ(r.out.find("cv.bypass"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("switched off"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("1 knob"), std::string::npos) << r.out;
+  }
+  for (const char* bad : {"f", "nosuch", "cv,", ""}) {
+    SCOPED_TRACE(bad);
+    CmdResult r = wg("tune " + g + " --min-psnr 60" + kSmall + " --keep " + test::shellQuote(bad));
+    EXPECT_EQ(r.exit, 2) << r.out << r.err;
+    EXPECT_NE(r.err.find("--keep"), std::string::npos) << r.err;
+  }
+  CmdResult r = wg("tune " + g + " --min-psnr 60" + kSmall + " --keep nosuch");
+  EXPECT_NE(r.err.find("'nosuch', which is not a node tune could switch off (those are: cv)"), std::string::npos) << r.err;
   std::filesystem::remove_all(dir);
 }
 

@@ -83,6 +83,35 @@ TEST(CliCompile, TargetOptionLimitsTheOutput) {
             (std::vector<std::string>{"lake.es300.frag", "lake.es300.vert", "lake.manifest.json"}));
 }
 
+// A host loads each node texture by the name the manifest records ("file"), named after the
+// files written (here a copy named other than the graph's "name"), and `--textures` writes
+// exactly those files.
+TEST(CliCompile, TheManifestNamesEachNodeTexturesFile) {
+  TempDir tmp;
+  fs::copy_file(test::sourcePath("graphs/river.json"), tmp / "my-river.json");
+  fs::copy(test::sourcePath("graphs/lib"), tmp / "lib", fs::copy_options::recursive);  // its subgraphs
+  std::string out = tmp / "out";
+  CmdResult r = wgRun("compile " + shellQuote(tmp / "my-river.json") + " -o " + shellQuote(out) +
+                      " --target es300 --textures");
+  ASSERT_EQ(r.exit, 0) << r.out << r.err;
+  auto manifest = nlohmann::json::parse(test::readFile(out + "/my-river.manifest.json"));
+  std::vector<std::string> expected = {"my-river.es300.frag", "my-river.es300.vert", "my-river.manifest.json"};
+  // (listFilesRecursive lists the output folder only: the copied graph and lib/ lie beside it)
+  int nodeTextures = 0;
+  for (const auto& t : manifest.at("textures")) {
+    if (!t.contains("source")) {
+      EXPECT_FALSE(t.contains("file")) << t.dump();  // a scene texture is rendered, not a file
+      continue;
+    }
+    ++nodeTextures;
+    EXPECT_EQ(t.at("file"), "my-river." + t.at("name").get<std::string>() + ".png") << t.dump();
+    expected.push_back(t.at("file"));
+  }
+  ASSERT_GT(nodeTextures, 0) << "river samples no node texture: the test reaches nothing";
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(test::listFilesRecursive(out), expected);
+}
+
 TEST(CliCompile, UnknownTargetIsAUsageError) {
   TempDir tmp;
   CmdResult r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lake.json")) + " -o " + shellQuote(tmp / "out") +

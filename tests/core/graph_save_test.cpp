@@ -38,18 +38,15 @@ const char* kMessy = R"({
 }
 )";
 
+// Compact where it fits (100 columns): each parameter, node and container on one line
+// unless that line would be longer; the parameter and node tables one entry per line.
 const char* kCanonical = R"({
   "$schema": "https://example.com/watergraph-1.json",
   "version": 1,
   "name": "ocean",
   "description": "A \"test\" \\ graph é \u0001 🌊 / \t",
   "parameters": {
-    "waveHeight": {
-      "type": "float",
-      "default": 0.5,
-      "min": 0,
-      "max": 2
-    },
+    "waveHeight": {"type": "float", "default": 0.5, "min": 0, "max": 2},
     "deepColor": {
       "type": "vec3",
       "default": [0.1, 0.2, 0.3],
@@ -65,42 +62,16 @@ const char* kCanonical = R"({
       "options": {
         "count": 4,
         "model": "ocean",
-        "nested": {
-          "b": [],
-          "c": {},
-          "d": 2.5,
-          "z": [
-            1,
-            {
-              "a": null
-            }
-          ]
-        }
+        "nested": {"b": [], "c": {}, "d": 2.5, "z": [1, {"a": null}]}
       },
-      "inputs": {
-        "dir": [1, 0],
-        "height": "$waveHeight",
-        "position": "vertexIn.position"
-      },
+      "inputs": {"dir": [1, 0], "height": "$waveHeight", "position": "vertexIn.position"},
       "editor": {"x": 10, "y": -20.5}
     },
-    {
-      "id": "shade",
-      "type": "lambert",
-      "inputs": {
-        "albedo": "$deepColor",
-        "k": 0.5
-      }
-    }
+    {"id": "shade", "type": "lambert", "inputs": {"albedo": "$deepColor", "k": 0.5}}
   ],
   "outputs": {
-    "vertex": {
-      "position": "waves.position"
-    },
-    "fragment": {
-      "color": "shade.color",
-      "alpha": 1
-    }
+    "vertex": {"position": "waves.position"},
+    "fragment": {"color": "shade.color", "alpha": 1}
   }
 }
 )";
@@ -237,6 +208,55 @@ TEST(GraphSave, ProgrammaticGraphRoundTrips) {
   EXPECT_LT(text.find("\"normal\": \"mix.out\""), text.find("\"alpha\": 0.25"));
 }
 
+// A container goes on one line exactly when that line, from where it starts and with a
+// comma after it, is at most 100 columns: the node below is 99 columns on its line at an id
+// of 37 characters, and is split at 38.
+TEST(GraphSave, ALineIsFoldedExactlyUpTo100Columns) {
+  auto nodeLine = [](size_t idLength) {
+    const std::string text = R"({"version": 1, "name": "g", "nodes": [{"id": ")" + std::string(idLength, 'n') +
+                             R"(", "type": "mix", "inputs": {"a": 0.25, "b": 0.5}}], "outputs": {}})";
+    const std::string saved = saveGraph(parseOk(text));
+    const size_t at = saved.find("\"nodes\": [\n") + 11;  // the first line of the first node
+    return saved.substr(at, saved.find('\n', at) - at);
+  };
+  const std::string fits = nodeLine(37);
+  EXPECT_EQ(fits.size() + 1, 100u) << fits;  // + 1: the comma a following node would add
+  EXPECT_EQ(fits.back(), '}') << "the whole node on one line: " << fits;
+  EXPECT_EQ(nodeLine(38), "    {") << "one column more: one member per line";
+  // However long, a number array stays on one line.
+  std::string many;
+  for (int i = 0; i < 40; ++i) many += (i ? ", " : "") + std::string("0.125");
+  const std::string saved = saveGraph(parseOk(R"({"version": 1, "name": "g", "nodes": [{"id": "w", "type": "gerstner",
+    "options": {"weights": [)" + many + R"(]}}], "outputs": {}})"));
+  EXPECT_NE(saved.find("\"weights\": [" + many + "]\n"), std::string::npos) << saved;
+  EXPECT_EQ(saveGraph(parseOk(saved)), saved);
+}
+
+// A graph as people write it by hand is already canonical: fmt leaves it as it is.
+TEST(GraphSave, AHandWrittenCompactGraphIsLeftAsItIs) {
+  const std::string text = R"({
+  "version": 1,
+  "name": "canal",
+  "parameters": {
+    "deep": {"type": "vec3", "default": [0.02, 0.1, 0.12], "min": 0, "max": 1, "hint": "color"}
+  },
+  "nodes": [
+    {"id": "uv", "type": "uv"},
+    {"id": "from_centre", "type": "sub", "inputs": {"a": "uv.out", "b": [0.5, 0.5]}},
+    {"id": "tint", "type": "mix", "inputs": {"a": "$deep", "b": [0.1, 0.3, 0.3], "t": 0.5}},
+    {
+      "id": "shore",
+      "type": "smoothstep",
+      "inputs": {"edge0": 0, "edge1": 0.35, "x": "from_centre.out"},
+      "editor": {"x": 40, "y": 120}
+    }
+  ],
+  "outputs": {"fragment": {"color": "tint.out", "alpha": 1}}
+}
+)";
+  EXPECT_EQ(saveGraph(parseOk(text)), text);
+}
+
 TEST(GraphSave, MinimalGraph) {
   Graph g;
   g.name = "g";
@@ -250,11 +270,7 @@ TEST(GraphSave, MinimalGraph) {
             "  \"version\": 1,\n"
             "  \"name\": \"g\",\n"
             "  \"nodes\": [],\n"
-            "  \"outputs\": {\n"
-            "    \"fragment\": {\n"
-            "      \"color\": [1, 0, 0, 1]\n"
-            "    }\n"
-            "  }\n"
+            "  \"outputs\": {\"fragment\": {\"color\": [1, 0, 0, 1]}}\n"
             "}\n");
 }
 

@@ -43,7 +43,7 @@ TEST(Presets, LoadInFileOrderWithPositions) {
 TEST(Presets, SaveKeepsThemAndRoundTrips) {
   Graph g = parsePresetGraph(kWeather);
   std::string text = saveGraph(g);
-  EXPECT_NE(text.find("\"presets\": {\n    \"choppy\": {\n      \"tint\": [0.1, 0.3, 0.5],\n      \"height\": 1\n"),
+  EXPECT_NE(text.find("\"presets\": {\n    \"choppy\": {\"tint\": [0.1, 0.3, 0.5], \"height\": 1}"),
             std::string::npos)
       << text;
   // Between the parameters and the nodes, as docs/graph-format.md lists the keys.

@@ -9,6 +9,9 @@
 
 #include <chrono>
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "eco_support.h"
 
@@ -66,10 +69,13 @@ TEST_P(CMakePackage, InstallFindPackageAndRebuildOnGraphChange) {
   EXPECT_NE(r.out.find("pond.es300.vert: "), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("#version 300 es"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("uniform p_water"), std::string::npos) << r.out;
+  // TEXTURES: the built-in normal texture pond samples, written under the manifest's name.
+  EXPECT_NE(r.out.find("texture pond.t0_water_normal.png: "), std::string::npos) << r.out;
   // pond.derived.h: sky (0.6, 0.75, 0.9), a colour parameter authored in sRGB, linearised
-  // (the IEC 61966-2-1 curve), times (0.95 + 0.05 sin(2 * 1.5)), in float.
+  // (the IEC 61966-2-1 curve), times (0.95 + 0.05 sin(2 * 4)): PRESET restless sets the
+  // shimmer speed to 4 (the graph's default is 1.5), in float.
   char shimmer[96];
-  const double k = 0.95 + 0.05 * std::sin(3.0);
+  const double k = 0.95 + 0.05 * std::sin(8.0);
   auto linear = [](double c) { return std::pow((c + 0.055) / 1.055, 2.4); };  // c > 0.04045
   std::snprintf(shimmer, sizeof shimmer, "u_derived0 at t = 2 s: %.6f %.6f %.6f", static_cast<float>(linear(0.6) * k),
                 static_cast<float>(linear(0.75) * k), static_cast<float>(linear(0.9) * k));
@@ -112,17 +118,28 @@ INSTANTIATE_TEST_SUITE_P(Generators, CMakePackage, ::testing::Values(std::string
                          [](const auto& info) { return info.param == "Ninja" ? std::string("Ninja") : std::string("UnixMakefiles"); });
 
 TEST(CMakePackageArguments, BadArgumentsFailAtConfigureTime) {
+  // Each case: the call's arguments, and a part of the error CMake must stop with.
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"TARGETS wgsl", "unknown target 'wgsl'"},
+      {"PRESET", "PRESET needs a preset name"},
+      {"TEXTURES yes", "unknown arguments: yes"},
+  };
   eco::TempDir tmp;
   std::string prefix = tmp / "prefix";
   ASSERT_EQ(eco::sh("cmake --install " + shellQuote(buildDir()) + " --prefix " + shellQuote(prefix)).exit, 0);
-  fs::create_directories(tmp / "p");
-  test::writeFile(tmp / "p/CMakeLists.txt",
-                  "cmake_minimum_required(VERSION 3.20)\nproject(p NONE)\nfind_package(watergraph CONFIG REQUIRED)\n"
-                  "add_custom_target(t)\nwatergraph_add_shaders(TARGET t GRAPHS g.json TARGETS wgsl)\n");
-  auto r = eco::sh("cmake -S " + shellQuote(tmp / "p") + " -B " + shellQuote(tmp / "b") +
-                   " -DCMAKE_PREFIX_PATH=" + shellQuote(prefix));
-  EXPECT_NE(r.exit, 0);
-  EXPECT_NE((r.out + r.err).find("unknown target 'wgsl'"), std::string::npos) << r.out << r.err;
+  for (size_t i = 0; i < cases.size(); ++i) {
+    SCOPED_TRACE(cases[i].first);
+    const std::string project = tmp / ("p" + std::to_string(i));
+    fs::create_directories(project);
+    test::writeFile(project + "/CMakeLists.txt",
+                    "cmake_minimum_required(VERSION 3.20)\nproject(p NONE)\nfind_package(watergraph CONFIG REQUIRED)\n"
+                    "add_custom_target(t)\nwatergraph_add_shaders(TARGET t GRAPHS g.json " +
+                        cases[i].first + ")\n");
+    auto r = eco::sh("cmake -S " + shellQuote(project) + " -B " + shellQuote(project + "/b") +
+                     " -DCMAKE_PREFIX_PATH=" + shellQuote(prefix));
+    EXPECT_NE(r.exit, 0);
+    EXPECT_NE((r.out + r.err).find(cases[i].second), std::string::npos) << r.out << r.err;
+  }
 }
 
 }  // namespace

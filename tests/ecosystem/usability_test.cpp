@@ -229,6 +229,22 @@ TEST(Usability, DepfileListsEveryGraphFileAndTextureAGraphIsMadeOf) {
   EXPECT_EQ(eco::wgRun("validate " + shellQuote(river) + " --depfile x.d").exit, 2);
 }
 
+// Ninja refuses a depfile naming an output its rule did not declare, and a build system
+// declares outputs before the graph is read: the node textures `--textures` writes are not
+// the depfile's targets (cmake/WatergraphShaders.cmake's TEXTURES relies on it).
+TEST(Usability, ADepfileDoesNotNameTheNodeTexturesAsTargets) {
+  eco::TempDir tmp;
+  std::string river = test::sourcePath("graphs/river.json");
+  auto r = eco::wgRun("compile " + shellQuote(river) + " -o " + shellQuote(tmp / "out") +
+                      " --target glsl330 --textures --depfile " + shellQuote(tmp / "river.d"));
+  ASSERT_EQ(r.exit, 0) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(tmp / "out/river.t0_water_normal.png")) << "no node texture written";
+  std::string d = test::readFile(tmp / "river.d");
+  const std::string targets = d.substr(0, d.find(':'));
+  EXPECT_NE(targets.find("river.manifest.json"), std::string::npos) << d;
+  EXPECT_EQ(targets.find(".png"), std::string::npos) << d;
+}
+
 // Found in review: a --depfile that cannot be written (a folder in its place, a file where
 // its folder would be made) failed after every graph's files were written: found first now,
 // nothing written.

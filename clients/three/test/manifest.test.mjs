@@ -1,0 +1,181 @@
+// The client against hostile manifests (node --test): every field kind of the documented
+// shape (watergraph-manifest.js) refused with a WaterGraphError naming its path, through
+// checkManifest and through the WaterGraph constructor, never a TypeError or a value taken
+// silently; names from the manifest ("__proto__", "constructor") kept in tables without a
+// prototype. WG_THREE_FIXTURES names a folder of manifests and es300 shaders compiled with
+// --derived-uniforms from proto_parameter (tests/ecosystem/data), topdown, lagoon and
+// three_environment; tests/ecosystem/three_client_test.cpp writes them and runs this file.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, readdirSync } from 'node:fs';
+import path from 'node:path';
+import * as THREE from 'three';
+import { WaterGraph, WaterGraphError, checkManifest, applySamplerState } from '../watergraph-three.js';
+import { compileDerived, DerivedProgramError } from '../watergraph-derived.js';
+import { presetCamera } from '../watergraph-scene.js';
+
+const dir = process.env.WG_THREE_FIXTURES;
+const read = (file) => {
+  assert.ok(dir, 'WG_THREE_FIXTURES is not set');
+  return readFileSync(path.join(dir, file), 'utf8');
+};
+const graph = (name) => ({
+  manifest: JSON.parse(read(`${name}.manifest.json`)),
+  vertexShader: read(`${name}.es300.vert`),
+  fragmentShader: read(`${name}.es300.frag`),
+  resources: { environment: new THREE.CubeTexture() },
+  textures: { t0_lagoon_ripples: new THREE.Texture() },
+});
+const index = (list, pred, what) => {
+  const i = list.findIndex(pred);
+  assert.ok(i >= 0, `the fixture has no ${what}`);
+  return i;
+};
+
+// The sRGB decoding of the client's derived programs (watergraph-derived.js srgbToLinear).
+const srgbToLinear = (c) => (c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4));
+
+test('every manifest compile writes has the documented shape', () => {
+  const manifests = readdirSync(dir).filter((f) => f.endsWith('.manifest.json'));
+  assert.equal(manifests.length, 4, manifests.join(', '));
+  for (const f of manifests) assert.doesNotThrow(() => checkManifest(JSON.parse(read(f))), f);
+});
+
+test('parameters named __proto__ and constructor feed their derived uniform', () => {
+  const water = new WaterGraph(graph('proto_parameter'));
+  const derived = () => water.uniforms.u_derived0.value.toArray();
+  const want = (rgb, k) => rgb.map((c) => srgbToLinear(c) * k);
+  const close = (got, expected) => got.forEach((x, i) => assert.ok(Math.abs(x - expected[i]) < 1e-12, `${got} vs ${expected}`));
+  close(derived(), want([0.2, 0.5, 0.8], 0.25));
+  water.setParameter('__proto__', [1, 0.5, 0]);
+  close(derived(), want([1, 0.5, 0], 0.25));
+  water.setParameter('constructor', 1);
+  close(derived(), want([1, 0.5, 0], 1));
+  assert.equal(Object.getPrototypeOf(water.uniforms), null);
+});
+
+// Each case: a change to a compiled manifest, and the field its error must name.
+const u = (m, pred, what) => index(m.uniforms, pred, what);
+const derivedOf = (m) => m.uniforms[u(m, (x) => x.builtin === 'derived', 'derived uniform')];
+const CASES = [
+  // The review's cases.
+  ['topdown', 'a builtin "__proto__"', (m) => { const i = u(m, (x) => x.builtin === 'model', 'model'); m.uniforms[i].builtin = '__proto__'; return `uniforms[${i}].builtin`; }],
+  ['topdown', 'a builtin "constructor"', (m) => { const i = u(m, (x) => x.builtin === 'view_projection', 'view_projection'); m.uniforms[i].builtin = 'constructor'; return `uniforms[${i}].builtin`; }],
+  ['lagoon', '"textures": 5', (m) => { m.textures = 5; return 'textures'; }],
+  ['topdown', 'a null uniform', (m) => { m.uniforms.splice(1, 0, null); return 'uniforms[1]'; }],
+  ['proto_parameter', 'a comparison "constructor"', (m) => {
+    const op = derivedOf(m).derived.ops[1];
+    op.type = 'compare';
+    op.options = { op: 'constructor' };
+    return `uniforms[${u(m, (x) => x.builtin === 'derived', 'derived')}].derived.ops[1].options.op`;
+  }],
+  ['topdown', 'an angular_frequency "abc"', (m) => { const i = u(m, (x) => x.builtin === 'time_phase', 'time_phase'); m.uniforms[i].angular_frequency = 'abc'; return `uniforms[${i}].angular_frequency`; }],
+  // Top level.
+  ['topdown', 'a misspelt member', (m) => { m.uniform = m.uniforms; return 'uniform'; }],
+  ['topdown', 'another format', (m) => { m.format = 2; return 'format'; }],
+  ['topdown', 'a graph name that is not a string', (m) => { m.graph = ['x']; return 'graph'; }],
+  ['topdown', '"passes" an object', (m) => { m.passes = { water_surface: true }; return 'passes'; }],
+  ['topdown', 'a pass that is a number', (m) => { m.passes.push(5); return `passes[${m.passes.length - 1}]`; }],
+  ['three_environment', 'a resource "__proto__"', (m) => { m.resources = ['__proto__']; return 'resources[0]'; }],
+  ['three_environment', 'a scale of a pass not listed', (m) => { m.pass_scales = { refraction: 0.5 }; return 'pass_scales.refraction'; }],
+  ['three_environment', 'a scale that is a string', (m) => { m.passes.unshift('depth_prepass'); m.pass_scales = { depth_prepass: '0.5' }; return 'pass_scales.depth_prepass'; }],
+  ['topdown', 'es300 files that are not strings', (m) => { m.targets.es300.vert = 5; return 'targets.es300.vert'; }],
+  ['topdown', '"targets" a list', (m) => { m.targets = []; return 'targets'; }],
+  ['topdown', 'an attribute location -1', (m) => { m.attributes[0].location = -1; return 'attributes[0].location'; }],
+  ['topdown', 'an attribute named "__proto__ x"', (m) => { m.attributes[0].name = '__proto__ x'; return 'attributes[0].name'; }],
+  // Uniforms.
+  ['topdown', 'a uniform of type "__proto__"', (m) => { m.uniforms[0].type = '__proto__'; return 'uniforms[0].type'; }],
+  ['topdown', 'a uniform without a name', (m) => { delete m.uniforms[0].name; return 'uniforms[0].name'; }],
+  ['topdown', 'two uniforms of one name', (m) => { m.uniforms[1].name = m.uniforms[0].name; return 'uniforms[1].name'; }],
+  ['topdown', 'a stage "geometry"', (m) => { m.uniforms[0].stages = ['geometry']; return 'uniforms[0].stages[0]'; }],
+  ['topdown', 'a builtin with a foreign member', (m) => { m.uniforms[0].angular_frequency = 1; return 'uniforms[0].angular_frequency'; }],
+  ['proto_parameter', 'a default "abc"', (m) => { const i = u(m, (x) => x.parameter === 'constructor', 'parameter'); m.uniforms[i].default = 'abc'; return `uniforms[${i}].default`; }],
+  ['proto_parameter', 'a default of the wrong size', (m) => { const i = u(m, (x) => x.parameter === '__proto__', 'parameter'); m.uniforms[i].default = [1, 2]; return `uniforms[${i}].default`; }],
+  ['proto_parameter', 'a min that is a string', (m) => { const i = u(m, (x) => x.parameter === 'constructor', 'parameter'); m.uniforms[i].min = '0'; return `uniforms[${i}].min`; }],
+  ['proto_parameter', 'a min above max', (m) => { const i = u(m, (x) => x.parameter === 'constructor', 'parameter'); m.uniforms[i].min = 2; return `uniforms[${i}].min`; }],
+  ['proto_parameter', 'a parameter held twice', (m) => { const i = u(m, (x) => x.parameter === 'constructor', 'parameter'); m.uniforms[i].parameter = '__proto__'; return `uniforms[${i}].parameter`; }],
+  ['proto_parameter', 'a colour space "constructor"', (m) => { const i = u(m, (x) => x.parameter === '__proto__', 'parameter'); m.uniforms[i].color_space = 'constructor'; return `uniforms[${i}].color_space`; }],
+  // Derived programs.
+  ['proto_parameter', 'derived ops null', (m) => { derivedOf(m).derived.ops = null; return `${dpath(m)}.ops`; }],
+  ['proto_parameter', 'a derived op null', (m) => { derivedOf(m).derived.ops[0] = null; return `${dpath(m)}.ops[0]`; }],
+  ['proto_parameter', 'a derived input null', (m) => { derivedOf(m).derived.ops[1].inputs[0] = null; return `${dpath(m)}.ops[1].inputs[0]`; }],
+  ['proto_parameter', 'a derived input of two kinds', (m) => { derivedOf(m).derived.ops[1].inputs[0].builtin = 'time'; return `${dpath(m)}.ops[1].inputs[0]`; }],
+  ['proto_parameter', 'a derived input reading a later op', (m) => { derivedOf(m).derived.ops[1].inputs[0].op = 1; return `${dpath(m)}.ops[1].inputs[0].op`; }],
+  ['proto_parameter', 'a derived input reading no parameter', (m) => { derivedOf(m).derived.ops[1].inputs[1].parameter = 'toString'; return `${dpath(m)}.ops[1].inputs[1].parameter`; }],
+  ['proto_parameter', 'a derived builtin "__proto__"', (m) => { derivedOf(m).derived.ops[1].inputs[1] = { builtin: '__proto__' }; return `${dpath(m)}.ops[1].inputs[1].builtin`; }],
+  ['proto_parameter', 'a derived constant of strings', (m) => { derivedOf(m).derived.ops[1].inputs[1] = { constant: ['1'] }; return `${dpath(m)}.ops[1].inputs[1].constant`; }],
+  ['proto_parameter', 'a derived output type "constructor"', (m) => { derivedOf(m).derived.ops[0].output_types = ['constructor']; return `${dpath(m)}.ops[0].output_types[0]`; }],
+  ['proto_parameter', 'a derived swizzle mask "constructor"', (m) => { derivedOf(m).derived.ops[0].options = { mask: 'constructor' }; return `${dpath(m)}.ops[0].options.mask`; }],
+  ['proto_parameter', 'a derived value past the ops', (m) => { derivedOf(m).derived.value.op = 7; return `${dpath(m)}.value.op`; }],
+  // Textures.
+  ['lagoon', 'a texture null', (m) => { m.textures[0] = null; return 'textures[0]'; }],
+  ['lagoon', 'a texture with a source and a resource', (m) => { m.textures[0].resource = 'environment'; return 'textures[0]'; }],
+  ['lagoon', 'a texture sampler wrap "constructor"', (m) => { m.textures[0].sampler = { wrap: 'constructor', filter: 'linear', color_space: 'srgb' }; return 'textures[0].sampler.wrap'; }],
+  ['lagoon', 'a node texture without its file', (m) => { delete m.textures[0].file; return 'textures[0].file'; }],
+  ['lagoon', 'a node texture file in another folder', (m) => { m.textures[0].file = '../secret.png'; return 'textures[0].file'; }],
+  ['lagoon', 'a node texture file with a backslash', (m) => { m.textures[0].file = 'a\\b.png'; return 'textures[0].file'; }],
+  ['lagoon', 'a texture binding "0"', (m) => { m.textures[0].binding = '0'; return 'textures[0].binding'; }],
+  ['lagoon', 'a texture of type "__proto__"', (m) => { m.textures[0].type = '__proto__'; return 'textures[0].type'; }],
+  ['three_environment', 'a scene texture of resource "constructor"', (m) => { m.textures[0].resource = 'constructor'; return 'textures[0].resource'; }],
+];
+const dpath = (m) => `uniforms[${u(m, (x) => x.builtin === 'derived', 'derived')}].derived`;
+
+for (const [fixture, what, change] of CASES) {
+  test(`refused, naming its field: ${what}`, () => {
+    const g = graph(fixture);
+    assert.doesNotThrow(() => checkManifest(g.manifest));  // the fixture as compiled is accepted
+    const field = change(g.manifest);
+    const named = (e) => {
+      assert.ok(e instanceof WaterGraphError, `${e?.constructor?.name}: ${e?.message}`);
+      assert.equal(e.field, field, e.message);
+      assert.ok(e.message.includes(`manifest's ${field} `), e.message);
+      return true;
+    };
+    assert.throws(() => checkManifest(g.manifest), named);
+    assert.throws(() => new WaterGraph(g), named);
+  });
+}
+
+test('without a scene description, a pass the client does not know is refused by name', () => {
+  const g = graph('topdown');
+  g.manifest.passes.push('constructor');
+  assert.doesNotThrow(() => checkManifest(g.manifest));  // a name: a newer runtime's description may have it
+  assert.throws(() => new WaterGraph(g), (e) => e instanceof WaterGraphError &&
+    e.message.includes('constructor (a pass this client does not know)'));
+});
+
+test('a manifest that is no object is refused', () => {
+  for (const m of [null, 5, 'x', []])
+    assert.throws(() => checkManifest(m), (e) => e instanceof WaterGraphError && e.field === '');
+});
+
+test('compileDerived refuses hostile programs with its own error, not a TypeError', () => {
+  const op = (extra) => ({ type: 'add', input_types: ['float', 'float'], output_types: ['float'],
+    inputs: [{ constant: [1] }, { constant: [2] }], ...extra });
+  assert.deepEqual(compileDerived({ ops: [op({})], value: { op: 0 } })({}, {}), [3]);
+  const refused = (program, pattern) => assert.throws(() => compileDerived(program), (e) =>
+    e instanceof DerivedProgramError && pattern.test(e.message));
+  refused({ ops: [null], value: { op: 0 } }, /op 0: not an object/);
+  refused({ ops: [op({ inputs: [null, null] })], value: { op: 0 } }, /input 0 is not an object/);
+  refused({ ops: [op({ type: 'constructor' })], value: { op: 0 } }, /'constructor' cannot be computed outside the shader/);
+  refused({ ops: [op({ type: 'compare', options: { op: 'constructor' } })], value: { op: 0 } }, /unknown comparison 'constructor'/);
+  refused({ ops: [op({ type: 'compare', options: { op: '__proto__' } })], value: { op: 0 } }, /unknown comparison '__proto__'/);
+  refused({ ops: [op({ output_types: 5 })], value: { op: 0 } }, /the value is no op output/);
+  // A parameter "__proto__" from JSON is an own member; one never given is not read off the prototype.
+  const read = compileDerived({ ops: [op({ inputs: [{ parameter: '__proto__' }, { constant: [0] }] })], value: { op: 0 } });
+  assert.deepEqual(read(JSON.parse('{"__proto__": 4}'), {}), [4]);
+  assert.throws(() => read({}, {}), /parameter '__proto__' has no value/);
+});
+
+test('a sampler state naming a prototype member is refused', () => {
+  for (const sampler of [{ wrap: 'constructor' }, { filter: '__proto__' }, { color_space: 'toString' }])
+    assert.throws(() => applySamplerState(new THREE.Texture(), sampler), WaterGraphError);
+});
+
+test('a camera preset named after a prototype member is no preset', () => {
+  const description = { cameras: JSON.parse('{"above": {"fov_y_degrees": 50, "near": 0.1, "far": 100, ' +
+    '"position": [0, 5, 10], "up": [0, 1, 0], "target": [0, 0, 0]}}') };
+  assert.equal(presetCamera(description, 'above', 1).fov, 50);
+  for (const name of ['__proto__', 'constructor', 'toString'])
+    assert.throws(() => presetCamera(description, name, 1), (e) => e instanceof WaterGraphError && e.message.includes(`no camera '${name}'`));
+});

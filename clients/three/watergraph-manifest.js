@@ -1,0 +1,261 @@
+// The shape of a compiled graph's manifest (docs/integration.md, "The manifest";
+// codegen/manifest_read.cpp reads the same shape in C++), checked before the client uses any
+// of it: a manifest is input, and one that is hand-edited, truncated or hostile fails here
+// with a WaterGraphError naming the member at fault ("uniforms[2].builtin", also in the
+// error's `field`), not later as a TypeError, a NaN uniform or a value silently taken.
+// Only what the three.js client reads is checked in depth; the informative members
+// ("nodes", "functions", "vulkan", ...) need only be of their kind.
+import { WaterGraphError } from './watergraph-error.js';
+
+// Tables keyed by names from the manifest have no prototype: "constructor" or "__proto__"
+// is then no member of them.
+const table = (entries) => Object.freeze(Object.assign(Object.create(null), entries));
+const setOf = (names) => table(Object.fromEntries(names.map((n) => [n, true])));
+
+export const MANIFEST_FORMAT = 1;
+
+const TOP_LEVEL = setOf(['format', 'graph', 'description', 'preset', 'imports', 'targets', 'attributes', 'uniforms',
+  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'color']);
+// Components of each uniform type the client uploads.
+export const UNIFORM_COMPONENTS = table({ float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 });
+// The builtins the client computes (watergraph-three.js BUILTIN_INITIAL, time_phase and derived).
+export const CLIENT_BUILTINS = setOf(['model', 'view_projection', 'view', 'projection', 'camera_position', 'time', 'time_phase',
+  'viewport_size', 'camera_near_far', 'sun_direction', 'derived']);
+const STAGES = setOf(['vertex', 'fragment']);
+const SCENE_RESOURCES = setOf(['scene_depth', 'scene_color', 'planar_reflection', 'refraction', 'environment', 'underwater']);
+const SCALABLE_PASSES = setOf(['depth_prepass', 'planar_reflection', 'refraction', 'scene_color_copy', 'deferred_water']);
+const TEXTURE_TYPES = setOf(['sampler2D', 'samplerCube']);
+const SAMPLER_CHOICES = table({
+  wrap: setOf(['repeat', 'clamp', 'mirror']),
+  filter: setOf(['nearest', 'linear', 'mipmapped']),
+  color_space: setOf(['linear', 'srgb']),
+});
+const DERIVED_TYPES = setOf(['float', 'vec2', 'vec3', 'vec4', 'mat4', 'invalid']);
+const DERIVED_BUILTINS = setOf(['time', 'camera_position', 'camera_near_far', 'view', 'projection', 'sun_direction']);
+const COMPARE_OPS = setOf(['less', 'less_equal', 'greater', 'greater_equal', 'equal', 'not_equal']);
+const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
+
+export const has = (object, key) => Object.prototype.hasOwnProperty.call(object, key);
+
+function describe(x) {
+  if (typeof x === 'string') return `'${x.length > 60 ? `${x.slice(0, 60)}...` : x}'`;
+  if (Array.isArray(x)) return 'a list';
+  if (x === null) return 'null';
+  if (typeof x === 'object') return 'an object';
+  return String(x);
+}
+
+// Checks `manifest` against the documented shape; returns it, or throws a WaterGraphError
+// naming the field.
+export function checkManifest(manifest) {
+  const graph = manifest && typeof manifest === 'object' && typeof manifest.graph === 'string' ? manifest.graph : '?';
+  const fail = (field, what, ...value) => {
+    const got = value.length ? ` (got ${describe(value[0])})` : '';
+    throw new WaterGraphError(`graph '${graph}': the manifest's ${field} ${what}${got}`, { field });
+  };
+  const isObject = (x) => x !== null && typeof x === 'object' && !Array.isArray(x);
+  const object = (x, field) => {
+    if (!isObject(x)) fail(field, 'must be an object', x);
+    return x;
+  };
+  const list = (x, field) => {
+    if (!Array.isArray(x)) fail(field, 'must be a list', x);
+    return x;
+  };
+  const text = (x, field) => {
+    if (typeof x !== 'string') fail(field, 'must be a string', x);
+    return x;
+  };
+  const finite = (x, field) => {
+    if (typeof x !== 'number' || !Number.isFinite(x)) fail(field, 'must be a finite number', x);
+    return x;
+  };
+  const natural = (x, field) => {
+    if (!Number.isInteger(x) || x < 0) fail(field, 'must be a whole number >= 0', x);
+    return x;
+  };
+  const oneOf = (x, choices, field) => {
+    if (typeof x !== 'string' || !choices[x]) fail(field, `must be one of ${Object.keys(choices).join(', ')}`, x);
+    return x;
+  };
+  // Only the members the shape has: a misspelt or foreign one is named by its own path.
+  const members = (x, allowed, field) => {
+    for (const key of Object.keys(x))
+      if (!allowed[key]) fail(field ? `${field}.${key}` : key, 'is not a member of the documented shape');
+  };
+  const identifier = (x, field) => {
+    if (typeof x !== 'string' || !IDENTIFIER.test(x)) fail(field, 'must be an identifier ([A-Za-z_][A-Za-z0-9_]*)', x);
+    return x;
+  };
+  const optional = (x, key, check, field) => {
+    if (has(x, key)) check(x[key], `${field}.${key}`);
+  };
+
+  if (!isObject(manifest)) throw new WaterGraphError(`the manifest must be a JSON object (got ${describe(manifest)})`, { field: '' });
+  members(manifest, TOP_LEVEL, '');
+  if (has(manifest, 'format') && manifest.format !== MANIFEST_FORMAT)
+    fail('format', `must be ${MANIFEST_FORMAT}, the format this client reads`, manifest.format);
+  for (const key of ['graph', 'description', 'preset']) if (has(manifest, key)) text(manifest[key], key);
+  for (const key of ['imports', 'functions', 'varyings'])
+    if (has(manifest, key)) list(manifest[key], key);
+  for (const key of ['nodes', 'vulkan', 'tessellation'])
+    if (has(manifest, key)) object(manifest[key], key);
+
+  // Pass names are strings; which ones the client can run it says itself, from the scene
+  // description where there is one (a newer runtime may describe more).
+  const passes = list(manifest.passes, 'passes');
+  passes.forEach((p, i) => identifier(p, `passes[${i}]`));
+  if (has(manifest, 'resources'))
+    list(manifest.resources, 'resources').forEach((r, i) => oneOf(r, SCENE_RESOURCES, `resources[${i}]`));
+  if (has(manifest, 'pass_scales')) {
+    const scales = object(manifest.pass_scales, 'pass_scales');
+    for (const pass of Object.keys(scales)) {
+      const field = `pass_scales.${pass}`;
+      if (!SCALABLE_PASSES[pass] || !passes.includes(pass)) fail(field, 'names no frame-sized scene pass that "passes" lists');
+      const s = scales[pass];
+      if (typeof s !== 'number' || !(s >= 0.25 && s < 1)) fail(field, 'must be a number >= 0.25 and < 1', s);
+    }
+  }
+
+  const targets = object(manifest.targets ?? {}, 'targets');
+  for (const name of Object.keys(targets)) {
+    const files = object(targets[name], `targets.${name}`);
+    for (const stage of Object.keys(files))
+      if (stage !== 'entry_points') text(files[stage], `targets.${name}.${stage}`);
+  }
+  if (has(targets, 'es300')) for (const stage of ['vert', 'frag']) text(targets.es300[stage], `targets.es300.${stage}`);
+
+  if (has(manifest, 'attributes'))
+    list(manifest.attributes, 'attributes').forEach((a, i) => {
+      const field = `attributes[${i}]`;
+      object(a, field);
+      members(a, setOf(['name', 'type', 'location']), field);
+      identifier(a.name, `${field}.name`);
+      text(a.type, `${field}.type`);
+      natural(a.location, `${field}.location`);
+    });
+
+  const uniforms = has(manifest, 'uniforms') ? list(manifest.uniforms, 'uniforms') : [];
+  const names = new Set();
+  const parameters = new Map();  // parameter name -> components
+  const unique = (name, field) => {
+    if (names.has(name)) fail(field, 'names a uniform or texture twice', name);
+    names.add(name);
+  };
+  uniforms.forEach((u, i) => {
+    const field = `uniforms[${i}]`;
+    object(u, field);
+    identifier(u.name, `${field}.name`);
+    unique(u.name, `${field}.name`);
+    oneOf(u.type, UNIFORM_COMPONENTS, `${field}.type`);
+    list(u.stages, `${field}.stages`).forEach((s, k) => oneOf(s, STAGES, `${field}.stages[${k}]`));
+    if (has(u, 'parameter')) {
+      members(u, setOf(['name', 'type', 'stages', 'parameter', 'default', 'min', 'max', 'hint', 'color_space', 'description']), field);
+      const name = identifier(u.parameter, `${field}.parameter`);
+      if (parameters.has(name)) fail(`${field}.parameter`, 'names a parameter another uniform holds', name);
+      const d = u.default;
+      const values = typeof d === 'boolean' ? [d] : Array.isArray(d) ? d : [d];
+      if (values.some((x) => typeof x !== 'number' && typeof x !== 'boolean') ||
+          values.some((x) => typeof x === 'number' && !Number.isFinite(x)))
+        fail(`${field}.default`, 'must be a finite number, a boolean or a list of finite numbers', d);
+      if (values.length !== UNIFORM_COMPONENTS[u.type]) fail(`${field}.default`, `must have ${UNIFORM_COMPONENTS[u.type]} value(s) for a ${u.type}`, d);
+      optional(u, 'min', finite, field);
+      optional(u, 'max', finite, field);
+      if (has(u, 'min') && has(u, 'max') && !(u.min <= u.max)) fail(`${field}.min`, 'must not be above "max"', u.min);
+      optional(u, 'hint', text, field);
+      optional(u, 'description', text, field);
+      if (has(u, 'color_space') && u.color_space !== 'srgb') fail(`${field}.color_space`, "must be 'srgb' or absent", u.color_space);
+      parameters.set(name, UNIFORM_COMPONENTS[u.type]);
+      return;
+    }
+    const builtin = oneOf(u.builtin, CLIENT_BUILTINS, `${field}.builtin`);
+    if (builtin === 'time_phase') {
+      members(u, setOf(['name', 'type', 'stages', 'builtin', 'angular_frequency']), field);
+      finite(u.angular_frequency, `${field}.angular_frequency`);
+    } else if (builtin === 'derived') {
+      members(u, setOf(['name', 'type', 'stages', 'builtin', 'derived']), field);
+    } else {
+      members(u, setOf(['name', 'type', 'stages', 'builtin']), field);
+    }
+  });
+  // Derived programs may read any parameter uniform, wherever it is listed.
+  uniforms.forEach((u, i) => {
+    if (u.builtin === 'derived') checkDerived(u.derived, `uniforms[${i}].derived`, parameters, { fail, object, list, text, natural, oneOf });
+  });
+
+  if (has(manifest, 'textures'))
+    list(manifest.textures, 'textures').forEach((t, i) => {
+      const field = `textures[${i}]`;
+      object(t, field);
+      members(t, setOf(['name', 'type', 'binding', 'stages', 'source', 'file', 'resource', 'sampler']), field);
+      identifier(t.name, `${field}.name`);
+      unique(t.name, `${field}.name`);
+      oneOf(t.type, TEXTURE_TYPES, `${field}.type`);
+      natural(t.binding, `${field}.binding`);
+      list(t.stages, `${field}.stages`).forEach((s, k) => oneOf(s, STAGES, `${field}.stages[${k}]`));
+      if (has(t, 'source') === has(t, 'resource')) fail(field, 'must have exactly one of "source" and "resource"');
+      if (has(t, 'source')) {
+        text(t.source, `${field}.source`);
+        // The PNG `compile --textures` wrote: a plain file name beside the manifest.
+        const file = text(t.file, `${field}.file`);
+        if (file === '' || file === '.' || file === '..' || /[\/\\]/.test(file))
+          fail(`${field}.file`, 'must be a file name beside the manifest', file);
+        if (has(t, 'sampler')) {
+          const s = object(t.sampler, `${field}.sampler`);
+          members(s, SAMPLER_CHOICES, `${field}.sampler`);
+          for (const key of Object.keys(SAMPLER_CHOICES)) oneOf(s[key], SAMPLER_CHOICES[key], `${field}.sampler.${key}`);
+        }
+      } else {
+        if (has(t, 'sampler') || has(t, 'file')) fail(field, 'is a scene texture ("resource"), which has no "sampler" or "file"');
+        oneOf(t.resource, SCENE_RESOURCES, `${field}.resource`);
+      }
+    });
+
+  if (has(manifest, 'color')) object(manifest.color, 'color');  // its members: manifestView (watergraph-output.js)
+  return manifest;
+}
+
+// A derived uniform's program (docs/integration.md, "Derived uniforms"): the shape
+// compileDerived (watergraph-derived.js) relies on; what each node type computes is its own.
+function checkDerived(program, field, parameters, { fail, object, list, text, natural, oneOf }) {
+  object(program, field);
+  if (has(program, 'type')) oneOf(program.type, DERIVED_TYPES, `${field}.type`);
+  const ops = list(program.ops, `${field}.ops`);
+  ops.forEach((op, k) => {
+    const at = `${field}.ops[${k}]`;
+    object(op, at);
+    text(op.type, `${at}.type`);
+    if (has(op, 'node')) text(op.node, `${at}.node`);
+    for (const key of ['input_types', 'output_types'])
+      list(op[key], `${at}.${key}`).forEach((t, j) => oneOf(t, DERIVED_TYPES, `${at}.${key}[${j}]`));
+    if (has(op, 'options')) {
+      const options = object(op.options, `${at}.options`);
+      if (has(options, 'op')) oneOf(options.op, COMPARE_OPS, `${at}.options.op`);
+      if (has(options, 'mask') && (typeof options.mask !== 'string' || !/^[xyzwrgba]{1,4}$/.test(options.mask)))
+        fail(`${at}.options.mask`, 'must be a swizzle mask of 1 to 4 of xyzw or rgba', options.mask);
+      if (has(options, 'clamp') && typeof options.clamp !== 'boolean') fail(`${at}.options.clamp`, 'must be true or false', options.clamp);
+    }
+    list(op.inputs, `${at}.inputs`).forEach((input, j) => {
+      const inAt = `${at}.inputs[${j}]`;
+      object(input, inAt);
+      const kinds = ['op', 'parameter', 'builtin', 'constant'].filter((key) => has(input, key));
+      if (kinds.length !== 1) fail(inAt, 'must have exactly one of "op", "parameter", "builtin", "constant"');
+      if (has(input, 'op')) {
+        if (!(natural(input.op, `${inAt}.op`) < k)) fail(`${inAt}.op`, 'must name an earlier op', input.op);
+        if (has(input, 'port')) natural(input.port, `${inAt}.port`);
+      } else if (has(input, 'parameter')) {
+        if (typeof input.parameter !== 'string' || !parameters.has(input.parameter))
+          fail(`${inAt}.parameter`, 'must name a parameter uniform of the manifest', input.parameter);
+      } else if (has(input, 'builtin')) {
+        oneOf(input.builtin, DERIVED_BUILTINS, `${inAt}.builtin`);
+      } else {
+        const c = list(input.constant, `${inAt}.constant`);
+        if (c.length === 0 || c.some((x) => typeof x !== 'number' || !Number.isFinite(x)))
+          fail(`${inAt}.constant`, 'must be a list of finite numbers', input.constant);
+      }
+    });
+  });
+  const value = object(program.value, `${field}.value`);
+  if (!(natural(value.op, `${field}.value.op`) < ops.length)) fail(`${field}.value.op`, 'must name an op', value.op);
+  if (has(value, 'port')) natural(value.port, `${field}.value.port`);
+}
