@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cerrno>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -19,6 +21,9 @@
 #include "accuracy/spirv_count.h"
 #include "accuracy/tune_knobs.h"
 #include "codegen/compile.h"
+#include "codegen/output_files.h"
+#include "core/file_read.h"
+#include "core/load_limits.h"
 #include "core/graph_io.h"
 #include "core/preset.h"
 #include "nodes/registry.h"
@@ -129,19 +134,20 @@ void requireRequestedFamilies(const BenchSettings& settings, const std::vector<s
     if (std::find(available.begin(), available.end(), wanted) != available.end()) continue;
     std::string list;
     for (const auto& a : available) list += (list.empty() ? "" : ", ") + a;
-    configError(settings, "no family '" + wanted + "'; " +
-                              (settings.graphFile.empty() ? "the configuration has: " : "the graph's knobs give: ") + list);
+    throw BenchUsageError((settings.graphFile.empty() ? settings.configFile : settings.graphFile) + ": error: no family '" +
+                          wanted + "'; " +
+                          (settings.graphFile.empty() ? "the configuration has: " : "the graph's knobs give: ") + list);
   }
 }
 
 // The configuration file as JSON: a syntax error at its line and column.
 ordered readConfig(const BenchSettings& settings) {
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(settings.configFile, ec))
-    configError(settings, "[WG050] cannot read the bench configuration: it is not a regular file");
-  std::ifstream in(settings.configFile, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) configError(settings, "[WG050] cannot read the bench configuration");
+  FileReadRule rule;
+  rule.maxBytes = kMaxFileBytes;
+  FileReadFailure failure;
+  auto file = readFileChecked(settings.configFile, rule, &failure);  // one open, one read (core/file_read.h)
+  if (!file) configError(settings, "[WG050] cannot read the bench configuration: " + failure.why());
+  std::string text = std::move(file->bytes);
   try {
     return ordered::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
@@ -396,58 +402,112 @@ std::string benchMarkdown(const BenchResult& r) {
   return o.str();
 }
 
+namespace {
+
+// A string inside single quotes in a gnuplot script: a quote is doubled there, so a family
+// or file name cannot end the string and run a command of its own (gnuplot has `system`).
+std::string gnuplotQuoted(const std::string& s) {
+  std::string out = "'";
+  for (char c : s) {
+    if (c == '\'') out += "''";
+    else if (c == '\n' || c == '\r') out += ' ';
+    else out += c;
+  }
+  return out + "'";
+}
+
+// A label in the data file, inside double quotes: no quote or line break of its own.
+std::string dataLabel(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (c == '"' || c == '\\' || c == '\n' || c == '\r') ? '_' : c;
+  return out;
+}
+
+// A folder of our own under the temporary folder (mkdtemp: a new name, mode 0700), so no
+// one can plant a link at the names gnuplot reads and writes; removed with its files.
+class PrivateFolder {
+ public:
+  PrivateFolder() {
+    std::string pattern = (std::filesystem::temp_directory_path() / "wg_bench_XXXXXX").string();
+    if (::mkdtemp(pattern.data())) path_ = pattern;
+  }
+  ~PrivateFolder() {
+    std::error_code ec;
+    if (!path_.empty()) std::filesystem::remove_all(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace
+
 std::string writeBenchPlot(const BenchResult& r, const std::string& png) {
   if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
     return "gnuplot not found; install gnuplot-nox (scripts/setup.sh installs it)";
-  std::filesystem::path out(png);
-  std::filesystem::path dataPath = std::filesystem::temp_directory_path() / ("wg_bench_" + std::to_string(::getpid()) + ".dat");
-  std::filesystem::path scriptPath = dataPath;
-  scriptPath.replace_extension(".gp");
+  PrivateFolder work;
+  if (work.path().empty()) return std::string("cannot make a temporary folder: ") + std::strerror(errno);
+  // gnuplot draws into the private folder; the picture is then written to `png` as every
+  // output is (codegen/output_files.h): atomically, replacing a link rather than following it.
+  const std::filesystem::path dataPath = work.path() / "plot.dat", scriptPath = work.path() / "plot.gp",
+                              drawn = work.path() / "plot.png";
   // Families in order; errors of 0 (the references) sit on a floor line.
   const double floor = 1e-6;
   std::vector<std::string> families;
   for (const auto& l : r.levels)
     if (std::find(families.begin(), families.end(), l.family) == families.end()) families.push_back(l.family);
-  {
-    std::ofstream d(dataPath);
-    for (const auto& f : families) {
-      d << "# " << f << "\n";
-      for (const auto& l : r.levels)
-        if (l.family == f)
-          d << l.ratio << " " << std::max(l.meanError, floor) << " \"" << (l.reference ? "" : l.level) << "\" "
-            << (l.pareto ? 1 : 0) << "\n";
-      d << "\n\n";
-    }
+  std::ostringstream d;
+  for (const auto& f : families) {
+    d << "# " << dataLabel(f) << "\n";
+    for (const auto& l : r.levels)
+      if (l.family == f)
+        d << l.ratio << " " << std::max(l.meanError, floor) << " \"" << (l.reference ? "" : dataLabel(l.level)) << "\" "
+          << (l.pareto ? 1 : 0) << "\n";
+    d << "\n\n";
   }
-  {
-    std::ofstream s(scriptPath);
-    s << "set terminal pngcairo size 1100,700 font 'sans,10'\n";
-    s << "set output '" << out.string() << "'\n";
-    s << "set title 'watergraph: cost against error (" << r.settings.width << "x" << r.settings.height << ", "
-      << targetName(r.settings.target) << ", llvmpipe)'\n";
-    s << "set xlabel 'cost: frame time / pass-through frame time (same run)'\n";
-    s << "set ylabel 'mean abs error vs the reference level (references at 1e-6)'\n";
-    s << "set label 1 'ringed and dashed: Pareto front of each family' at graph 0.02, graph 0.97 font 'sans,9'\n";
-    s << "set logscale y\nset format y '10^{%L}'\nset grid\nset key outside right top\n";
-    s << "plot ";
-    for (size_t i = 0; i < families.size(); ++i) {
-      std::string idx = std::to_string(i);
-      s << (i ? ", \\\n     " : "") << "'" << dataPath.string() << "' index " << idx
-        << " using 1:2 with points pt 7 ps 1.3 lc " << (i + 1) << " title '" << families[i] << "'";
-      s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) with points pt 6 ps 2.6 lw 2 lc " << (i + 1)
-        << " notitle";
-      s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) smooth unique with lines lw 1.5 dt 2 lc " << (i + 1)
-        << " notitle";
-      s << ", '' index " << idx << " using 1:2:3 with labels offset 0.8,0.6 left font 'sans,8' tc lt " << (i + 1)
-        << " notitle";
-    }
-    s << "\n";
+  std::ostringstream s;
+  s << "set terminal pngcairo size 1100,700 font 'sans,10'\n";
+  s << "set output " << gnuplotQuoted(drawn.string()) << "\n";
+  s << "set title 'watergraph: cost against error (" << r.settings.width << "x" << r.settings.height << ", "
+    << targetName(r.settings.target) << ", llvmpipe)'\n";
+  s << "set xlabel 'cost: frame time / pass-through frame time (same run)'\n";
+  s << "set ylabel 'mean abs error vs the reference level (references at 1e-6)'\n";
+  s << "set label 1 'ringed and dashed: Pareto front of each family' at graph 0.02, graph 0.97 font 'sans,9'\n";
+  s << "set logscale y\nset format y '10^{%L}'\nset grid\nset key outside right top\n";
+  s << "plot ";
+  for (size_t i = 0; i < families.size(); ++i) {
+    std::string idx = std::to_string(i);
+    s << (i ? ", \\\n     " : "") << gnuplotQuoted(dataPath.string()) << " index " << idx
+      << " using 1:2 with points pt 7 ps 1.3 lc " << (i + 1) << " title " << gnuplotQuoted(families[i]);
+    s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) with points pt 6 ps 2.6 lw 2 lc " << (i + 1)
+      << " notitle";
+    s << ", '' index " << idx << " using 1:($4 > 0 ? $2 : 1/0) smooth unique with lines lw 1.5 dt 2 lc " << (i + 1)
+      << " notitle";
+    s << ", '' index " << idx << " using 1:2:3 with labels offset 0.8,0.6 left font 'sans,8' tc lt " << (i + 1)
+      << " notitle";
   }
-  std::string cmd = "gnuplot " + scriptPath.string() + " 2>&1";
+  s << "\n";
+  int err = 0;
+  for (const auto& [path, text] : {std::pair{dataPath, d.str()}, std::pair{scriptPath, s.str()}}) {
+    std::ofstream f(path, std::ios::binary);
+    f << text;
+    if (!f.flush()) err = EIO;
+  }
+  if (err) return "cannot write gnuplot's input in " + work.path().string();
+  std::string quotedScript = "'";
+  for (char c : scriptPath.string()) quotedScript += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  std::string cmd = "gnuplot " + quotedScript + "' 2>&1";
   int rc = std::system(cmd.c_str());
-  std::filesystem::remove(dataPath);
-  std::filesystem::remove(scriptPath);
   if (rc != 0) return "gnuplot failed (exit " + std::to_string(rc) + ")";
+  FileReadRule rule;
+  rule.maxBytes = std::size_t{256} << 20;
+  FileReadFailure failure;
+  auto picture = readFileChecked(drawn.string(), rule, &failure);
+  if (!picture) return "gnuplot drew nothing readable: " + failure.why();
+  Diagnostics io;
+  if (!writeFileAtomically(png, picture->bytes, io))
+    return io.all().empty() ? "cannot write" : io.all().front().message;
   return "";
 }
 

@@ -11,6 +11,7 @@
 // pass-through, plus the fragment shader's SPIR-V instruction count after spirv-opt -O;
 // error is against the family's reference level: max and mean absolute error and PSNR
 // (peak 1) over the frame.
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -46,13 +47,21 @@ struct BenchResult {
   BenchSettings settings;
 };
 
-// Throws std::runtime_error for a bad config ("bench/variants.json: ...") and
-// rt::RuntimeError for GL problems; creates its own GL context.
+// A command-line choice that names nothing (--family nosuch): a usage error (exit 2), found
+// before anything is rendered.
+struct BenchUsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Throws std::runtime_error for a bad config ("bench/variants.json: ..."), BenchUsageError
+// for a --family that names no family, and rt::RuntimeError for GL problems; creates its
+// own GL context.
 BenchResult runBench(const BenchSettings& settings);
 
 std::string benchMarkdown(const BenchResult& r);
-// Writes the gnuplot data and script next to `png` and runs gnuplot; returns "" or why not
-// (no gnuplot: "gnuplot not found; install gnuplot-nox (scripts/setup.sh)").
+// Runs gnuplot on its data and script in a private temporary folder, then writes the picture
+// to `png` atomically (codegen/output_files.h); returns "" or why not (no gnuplot:
+// "gnuplot not found; install gnuplot-nox (scripts/setup.sh)").
 std::string writeBenchPlot(const BenchResult& r, const std::string& png);
 
 }  // namespace wg::accuracy

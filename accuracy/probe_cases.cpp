@@ -1,5 +1,8 @@
 #include "accuracy/probe_cases.h"
 
+#include "core/file_read.h"
+#include "core/load_limits.h"
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -333,19 +336,15 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
 }
 
 std::optional<ProbeCaseFile> loadProbeCases(const std::string& path, Diagnostics& diags) {
-  std::error_code ec;
-  if (std::filesystem::exists(path, ec) && !std::filesystem::is_regular_file(path, ec)) {
-    diags.error(DiagCode::FileRead, SourceRef{path, 0, 0}, "cannot read the cases file: it is not a regular file");
+  FileReadRule rule;
+  rule.maxBytes = kMaxFileBytes;
+  FileReadFailure failure;
+  auto file = readFileChecked(path, rule, &failure);  // one open, one read (core/file_read.h)
+  if (!file) {
+    diags.error(DiagCode::FileRead, SourceRef{path, 0, 0}, "cannot read the cases file: " + failure.why());
     return std::nullopt;
   }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    diags.error(DiagCode::FileRead, SourceRef{path, 0, 0}, "cannot read the cases file");
-    return std::nullopt;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return parseProbeCases(ss.str(), path, diags);
+  return parseProbeCases(file->bytes, path, diags);
 }
 
 }  // namespace wg::accuracy

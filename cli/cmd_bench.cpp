@@ -9,6 +9,7 @@
 #include <regex>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 #include "codegen/output_files.h"
 
 #ifdef WG_HAVE_RUNTIME
@@ -90,6 +91,9 @@ int runBenchCommand(const BenchArgs& args) {
   } catch (const rt::RuntimeError& e) {
     std::cerr << "watergraph: bench: " << e.what() << "\n";
     return e.exitCode();
+  } catch (const accuracy::BenchUsageError& e) {
+    std::cerr << e.what() << "\n";
+    return kExitUsageOrIo;
   } catch (const std::runtime_error& e) {
     std::cerr << e.what() << "\n";
     return kExitGraphError;
@@ -131,8 +135,8 @@ Runner addBenchCommand(CLI::App& app, const GlobalOptions& global) {
       ->capture_default_str();
   cmd->add_option("--target", args->target, "glsl330 or es300")->check(CLI::IsMember({"glsl330", "es300"}))->capture_default_str();
   cmd->add_option("--family", args->families, "run only this family (repeatable; with GRAPH: node.option or 'as written')");
-  cmd->add_option("--markdown", args->markdown, "also write the table to this file");
-  cmd->add_option("--plot", args->plot, "draw cost against error with the Pareto front into this PNG (needs gnuplot)");
+  addOutputOption(cmd, "--markdown", args->markdown, "also write the table to this file");
+  addOutputOption(cmd, "--plot", args->plot, "draw cost against error with the Pareto front into this PNG (needs gnuplot)");
 #ifdef WG_HAVE_RUNTIME
   return [args] { return runBenchCommand(*args); };
 #else

@@ -10,12 +10,14 @@
 #include <regex>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 #include "cli/view_flags.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/check.h"
 #include "accuracy/gpu_executor.h"
 #include "codegen/compile.h"
+#include "codegen/output_files.h"
 #include "codegen/texture_files.h"
 #include "core/graph_io.h"
 #include "core/node_preview_graph.h"
@@ -90,6 +92,18 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
       std::cerr << "watergraph: '" << it->second << "' and '" << path << "' would both write the error map "
                 << errorMapFile(args.errorMap, path, targets.front(), true, targets.size() > 1)
                 << "; check them one at a time\n";
+      return kExitUsageOrIo;
+    }
+  }
+  // Each error map's own name (FILE-GRAPH-TARGET.png) is checked before anything is
+  // rendered, as FILE.png was (cli/option_values.h).
+  if (!args.errorMap.empty()) {
+    Diagnostics out;
+    for (Target target : targets)
+      for (const auto& path : args.graphs)
+        checkWritable(errorMapFile(args.errorMap, path, target, args.graphs.size() > 1, targets.size() > 1), out);
+    if (out.hasErrors()) {
+      printDiagnostics(out, global);
       return kExitUsageOrIo;
     }
   }
@@ -195,7 +209,7 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--preset", args->preset,
                   "a preset from each graph's \"presets\" table: its parameter values and node options apply");
   addViewFlags(cmd, args->view);
-  cmd->add_option("--error-map", args->errorMap,
+  addOutputOption(cmd, "--error-map", args->errorMap,
                   "write the per-pixel error against the CPU of the worst view as a PNG (the frame's size; every water "
                   "pixel compared): grey on a log scale from 1e-8 (black) to 1e-3 (white), red over the error bound, "
                   "not compared: the frame through --tonemap/--exposure, darkened and tinted blue. With several graphs, FILE-GRAPH.png per graph; with --target all, FILE-TARGET.png "

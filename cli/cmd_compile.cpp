@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 #include "codegen/compile.h"
 #include "codegen/derived_c_header.h"
 #include "codegen/query_header.h"
@@ -24,6 +25,7 @@
 #include "core/node_preview_graph.h"
 #include "codegen/frequency_report.h"
 #include "codegen/output_files.h"
+#include "core/shown_text.h"
 #include "codegen/spirv_cross_targets.h"
 #include "codegen/texture_files.h"
 #include "core/graph_imports.h"
@@ -132,14 +134,15 @@ struct GraphOutcome {
 void printSummary(std::FILE* to, const std::vector<GraphOutcome>& outcomes, const TargetSet& targets) {
   std::string targetList = targets.list();
   size_t w = 5;
-  for (const auto& o : outcomes) w = std::max(w, o.name.size());
+  // Printed with printf, so each name is escaped here (core/shown_text.h).
+  for (const auto& o : outcomes) w = std::max(w, escapedForTerminal(o.name).size());
   std::fprintf(to, "%-*s  %-11s  %-21s  %s\n", static_cast<int>(w), "graph", "nodes", "targets", "status");
   std::fprintf(to, "%s\n", std::string(w + 2 + 11 + 2 + 21 + 2 + 16, '-').c_str());
   int failed = 0;
   for (const auto& o : outcomes) {
     std::string nodes = o.total ? std::to_string(o.kept) + "/" + std::to_string(o.total) : "-";
     std::string status = o.ok ? "ok" : "FAILED (" + std::to_string(o.errors) + " error" + (o.errors == 1 ? "" : "s") + ")";
-    std::fprintf(to, "%-*s  %-11s  %-21s  %s\n", static_cast<int>(w), o.name.c_str(), nodes.c_str(), targetList.c_str(),
+    std::fprintf(to, "%-*s  %-11s  %-21s  %s\n", static_cast<int>(w), escapedForTerminal(o.name).c_str(), nodes.c_str(), targetList.c_str(),
                  status.c_str());
     failed += !o.ok;
   }
@@ -157,7 +160,7 @@ class ProgressBar {
     int filled = total_ ? static_cast<int>(width * done / total_) : width;
     std::string bar(static_cast<size_t>(filled), '#');
     bar += std::string(static_cast<size_t>(width - filled), '.');
-    std::string name = current.size() > 40 ? current.substr(0, 37) + "..." : current;
+    std::string name = escapedForTerminal(current.size() > 40 ? current.substr(0, 37) + "..." : current);
     std::fprintf(stdout, "\r\033[K[%s] %zu/%zu  %s", bar.c_str(), done, total_, name.c_str());
     std::fflush(stdout);
     drawn_ = true;
@@ -281,11 +284,20 @@ std::string outcomeLine(const std::string& path, const GraphOutcome& o, const Co
   char ms[32];
   std::snprintf(ms, sizeof ms, "%.0f ms", o.ms);
   if (!o.ok)
-    return path + ": FAILED (" + std::to_string(o.errors) + " error" + (o.errors == 1 ? "" : "s") + ", " + ms + ")";
+    return escapedForTerminal(path) + ": FAILED (" + std::to_string(o.errors) + " error" + (o.errors == 1 ? "" : "s") + ", " + ms + ")";
   std::string dir = args.subdirs ? args.outDir + "/" + o.name : args.outDir;
-  std::string s = path + ": ok, " + std::to_string(o.kept) + "/" + std::to_string(o.total) + " nodes kept";
-  if (write) s += ", " + std::to_string(o.files) + " files in " + dir;
+  std::string s = escapedForTerminal(path) + ": ok, " + std::to_string(o.kept) + "/" + std::to_string(o.total) + " nodes kept";
+  if (write) s += ", " + std::to_string(o.files) + " files in " + escapedForTerminal(dir);
   return s + " (" + ms + ")";
+}
+
+// The depfile of every graph's last successful compile (--depfile), written atomically.
+bool writeDepfile(const CompileArgs& args, const std::vector<GraphOutcome>& outcomes, Diagnostics& diags) {
+  std::vector<DepfileRule> rules;
+  for (const auto& o : outcomes)
+    if (!o.dependencies.outputs.empty()) rules.push_back(o.dependencies);  // not yet compiled in --watch: no rule
+  auto text = depfileText(rules, args.depfile, diags);
+  return text && writeFileAtomically(args.depfile, *text, diags);
 }
 
 std::atomic<bool> gStop{false};
@@ -293,7 +305,8 @@ extern "C" void onStopSignal(int) { gStop = true; }
 
 // Polls the modification times and sizes of the graph files and of every graph they
 // import; recompiles a graph when any of its files changes.
-int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOptions& global) {
+int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOptions& global,
+              std::vector<GraphOutcome> outcomes) {
   namespace fs = std::filesystem;
   struct Stamp {
     fs::file_time_type time{};
@@ -338,6 +351,10 @@ int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOpt
       watched[i] = watchedOf(args.graphs[i]);
       Diagnostics diags;
       GraphOutcome o = compileOne(args.graphs[i], args, targets, true, diags);
+      // An edit may add or drop an import or a texture: the depfile follows (a failed
+      // compile keeps the last good one's dependencies, as it keeps its files).
+      if (o.ok) outcomes[i] = o;
+      if (!args.depfile.empty() && o.ok) writeDepfile(args, outcomes, diags);
       printDiagnostics(diags, global);
       std::cout << "[" << nowHms() << "] recompiled " << outcomeLine(args.graphs[i], o, args, true) << std::endl;
     }
@@ -369,15 +386,23 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
       return kExitUsageOrIo;
     }
   }
-  // The depfile is written after every graph's files: one that cannot be written is found
-  // first, so a failing --depfile leaves no compiled files behind.
+  // Paths known now that a depfile could not hold are refused before anything is compiled
+  // (those of imports and textures are known only once the graphs are read).
   if (write && !args.depfile.empty()) {
     Diagnostics depfile;
-    if (!checkWritable(args.depfile, depfile)) {
+    std::vector<std::string> known = args.graphs;
+    known.push_back(args.outDir);
+    for (const auto& path : known)
+      if (std::string why = depfilePathProblem(path); !why.empty())
+        depfile.error(DiagCode::FileWrite, SourceRef{args.depfile, 0, 0}, "cannot write '" + path + "' into the depfile: " + why);
+    if (depfile.hasErrors()) {
       printDiagnostics(depfile, global);
       return kExitUsageOrIo;
     }
   }
+  // The depfile is written after every graph's files: one that cannot be written was found
+  // before any of them (cli/option_values.h, checkOutputPaths), so a failing --depfile
+  // leaves no compiled files behind.
   const bool textFormat = global.diagnosticsFormat == "text";
   // SARIF owns stdout: human-readable lines go to stderr instead.
   std::FILE* info = global.diagnosticsFormat == "sarif" ? stderr : stdout;
@@ -400,13 +425,9 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
   }
   progress.show(args.graphs.size(), "done");
   progress.clear();
-  if (write && !args.depfile.empty() && !all.hasErrors()) {
-    std::vector<DepfileRule> rules;
-    for (const auto& o : outcomes) rules.push_back(o.dependencies);
-    writeFileAtomically(args.depfile, depfileText(rules), all);
-  }
+  if (write && !args.depfile.empty() && !all.hasErrors()) writeDepfile(args, outcomes, all);
   printDiagnostics(all, global);
-  for (const auto& o : outcomes) std::fputs(o.frequency.c_str(), info);
+  for (const auto& o : outcomes) std::fputs(escapedKeepingLines(o.frequency).c_str(), info);
   if (args.summary) printSummary(info, outcomes, targets);
   int code = kExitOk;
   if (!all.hasErrors()) {
@@ -420,7 +441,7 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
     code = exitCodeFor(all);
   }
   std::fflush(info);
-  if (write && args.watch) return watchLoop(args, targets, global);
+  if (write && args.watch) return watchLoop(args, targets, global, std::move(outcomes));
   return code;
 }
 
@@ -466,7 +487,7 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph compile graphs/lake.json -o out --watch        # recompile on every save\n"
       "  watergraph compile graphs/*.json -o out --diagnostics-format sarif > watergraph.sarif");
   cmd->add_option("graphs", args->graphs, "graph files (.json)")->required();
-  cmd->add_option("-o,--output", args->outDir, "output folder")->required();
+  addOutputFolderOption(cmd, "-o,--output", args->outDir, "output folder")->required();
   addCommonOptions(cmd, *args);
   cmd->add_flag("--subdirs", args->subdirs, "write each graph into OUTPUT/<graph>/");
   cmd->add_flag("--summary", args->summary, "print a table: graph, nodes kept/total, targets, status");
@@ -476,7 +497,7 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_flag("-w,--watch", args->watch,
                 "after compiling, keep running and recompile a graph whenever its file changes (polls modification "
                 "times); stop with Ctrl-C");
-  cmd->add_option("--depfile", args->depfile,
+  addOutputOption(cmd, "--depfile", args->depfile,
                   "also write a Make/Ninja depfile: the files written for each graph depend on its file, every graph "
                   "it imports and every PNG texture it samples (for build systems: CMake's DEPFILE, Ninja's depfile)");
   cmd->add_option("--watch-interval", args->watchIntervalMs, "milliseconds between polls in --watch")

@@ -55,7 +55,7 @@ Runner addFmtCommand(CLI::App& app, const GlobalOptions& global) {
       if (changed) {
         diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0},
                     "the file changed while it was being formatted; left as it is (run fmt again)");
-      } else if (writeFileAtomically(path, canonical, diags)) {
+      } else if (writeFileAtomically(realPathForRewrite(path), canonical, diags)) {
         std::cout << "formatted " << path << "\n";
       }
       all.append(diags);

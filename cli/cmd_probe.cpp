@@ -8,6 +8,7 @@
 #include <optional>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/gpu_executor.h"
@@ -301,7 +302,7 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
                   "normal and view), an input port, or a builtin key of the cases file (time, world_position.x, ...)");
   cmd->add_option("--options", args->options, "with --sweep: the node's options as a JSON object (an expression's formula and inputs: its "
                   "inputs can then be swept); with --cases each case gives its own \"options\"");
-  cmd->add_option("--table", args->table,
+  addOutputOption(cmd, "--table", args->table,
                   "with --sweep: write 'x gpu reference abs_error bound' per point to this file (for plotting)");
   cmd->add_option("--mutate", args->mutate,
                   "FIND=>REPLACE: edit the probe shader first (mutation testing: the probe should then fail); FIND "

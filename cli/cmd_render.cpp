@@ -7,6 +7,7 @@
 #include <regex>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 #include "cli/finite_number.h"
 #include "cli/view_flags.h"
 
@@ -102,17 +103,7 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
     std::cerr << "watergraph: --vk-validation needs --target vk450 (the layer checks Vulkan calls)\n";
     return kExitUsageOrIo;
   }
-  // An output that exists but cannot be replaced (a folder, a FIFO, a read-only file) is
-  // found before anything is rendered, reported at its own path; a missing folder is
-  // created when the image is written.
-  std::error_code exists;
-  if (std::filesystem::exists(std::filesystem::symlink_status(args.output, exists))) {
-    Diagnostics output;
-    if (!checkWritable(args.output, output)) {
-      printDiagnostics(output, global);
-      return kExitUsageOrIo;
-    }
-  }
+  // -o was checked before the command ran (cli/option_values.h, checkOutputPaths).
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
   // A function graph with no output slots shows its first interface output, as in the editor.
@@ -181,7 +172,7 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
       "transform: exposure (--exposure EV), a tone mapper (--tonemap none|aces|agx|neutral) and the sRGB encoding. "
       "Both default to the graph's \"view\".");
   cmd->add_option("graph", args->graph, "graph file (.json)")->required();
-  cmd->add_option("-o,--output", args->output, "PNG file to write (written atomically)")->required();
+  addOutputOption(cmd, "-o,--output", args->output, "PNG file to write (written atomically)")->required();
   cmd->add_option("--size", args->size, "WIDTHxHEIGHT in pixels")->capture_default_str();
   cmd->add_option("--time", args->time, "scene time in seconds (u_time)")->check(finiteFloat())->capture_default_str();
   cmd->add_option("--camera", args->camera, "camera preset: above, grazing, underwater, topdown")

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 #include "cli/finite_number.h"
 
 #ifdef WG_HAVE_RUNTIME
@@ -29,7 +30,7 @@ Runner addSceneCommand(CLI::App& app, const GlobalOptions& global) {
       "Examples:\n"
       "  watergraph scene -o public/scene.json\n"
       "  watergraph scene --sun-elevation 10 > low_sun.json");
-  cmd->add_option("-o,--output", args->output, "write the JSON to this file (atomically) instead of stdout");
+  addOutputOption(cmd, "-o,--output", args->output, "write the JSON to this file (atomically) instead of stdout");
   cmd->add_option("--sun-azimuth", args->sunAzimuth, "sun direction: degrees from +x towards +z")
       ->check(finiteFloat())
       ->capture_default_str();

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 #include "codegen/output_files.h"
 #include "nodes/graph_schema.h"
 #include "nodes/registry.h"
@@ -23,7 +24,7 @@ Runner addSchemaCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph schema > docs/watergraph.schema.json\n"
       "  watergraph schema -o docs/watergraph.schema.json\n"
       "  python3 -m jsonschema -i graphs/lake.json docs/watergraph.schema.json");
-  cmd->add_option("-o,--output", args->output, "write the schema to this file (atomically) instead of stdout");
+  addOutputOption(cmd, "-o,--output", args->output, "write the schema to this file (atomically) instead of stdout");
   return [args, &global] {
     std::string text = graphSchemaText(defaultRegistry());
     if (args->output.empty()) {

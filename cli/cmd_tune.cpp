@@ -15,7 +15,9 @@
 #include <unistd.h>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
 #include "cli/finite_number.h"
+#include "cli/option_values.h"
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
 #include "core/node_spec.h"
@@ -44,14 +46,6 @@ struct TuneArgs {
 };
 
 #ifdef WG_HAVE_RUNTIME
-std::vector<std::string> splitCommas(const std::string& s) {
-  std::vector<std::string> out;
-  std::stringstream in(s);
-  std::string item;
-  while (std::getline(in, item, ',')) out.push_back(item);
-  return out;
-}
-
 int usage(const std::string& message) {
   std::cerr << "watergraph: tune: " << message << "\n";
   return kExitUsageOrIo;
@@ -79,8 +73,11 @@ int runTune(const TuneArgs& args) {
   sweep.height = std::stoi(m[2]);
   sweep.runs = args.runs;
   sweep.target = *parseTarget(args.target);
+  std::string why;
   if (!args.cameras.empty()) {
-    for (const auto& c : splitCommas(args.cameras)) {
+    auto cameras = splitList("--cameras", args.cameras, &why);
+    if (!cameras) return usage(why);
+    for (const auto& c : *cameras) {
       if (!rt::cameraPreset(c)) {
         std::string names;
         for (const auto& n : rt::cameraPresetNames()) names += (names.empty() ? "" : ", ") + n;
@@ -96,7 +93,9 @@ int runTune(const TuneArgs& args) {
     return !t.empty() && t.size() <= 64 &&
            t.find_first_not_of("0123456789.eE+-") == std::string::npos && std::isdigit(static_cast<unsigned char>(t.back()));
   };
-  for (const auto& t : splitCommas(args.times)) {
+  auto times = splitList("--times", args.times, &why);
+  if (!times) return usage(why);
+  for (const auto& t : *times) {
     char* end = nullptr;
     double v = decimal(t) ? std::strtod(t.c_str(), &end) : NAN;
     if (end && *end != '\0') v = NAN;
@@ -111,6 +110,14 @@ int runTune(const TuneArgs& args) {
   if (!args.writePreset.empty() && !isIdentifier(args.writePreset))
     return usage("--write-preset '" + args.writePreset + "' is not an identifier (letters, digits, _; not starting with a digit)");
 
+  // The graph is rewritten at the end with --write-preset: checked now, not after the search.
+  if (!args.writePreset.empty()) {
+    Diagnostics w;
+    if (!checkWritable(realPathForRewrite(args.graph), w)) {
+      for (const auto& d : w.all()) std::cerr << formatText(d) << "\n";
+      return kExitUsageOrIo;
+    }
+  }
   Diagnostics diags;
   auto snapshot = readGraphFile(args.graph, diags);
   std::optional<Graph> graph;
@@ -123,10 +130,9 @@ int runTune(const TuneArgs& args) {
   const bool hadKnobs = !declared.empty();
   std::vector<std::string> keep;
   if (args.keepGiven) {
-    keep = splitCommas(args.keep);
-    if (args.keep.empty() || args.keep.back() == ',') keep.push_back("");
-    for (const auto& k : keep)
-      if (k.empty()) return usage("--keep lists node ids separated by commas, with none empty (got '" + args.keep + "')");
+    auto entries = splitList("--keep", args.keep, &why);  // as every list (cli/option_values.h)
+    if (!entries) return usage(why);
+    keep = *entries;
   }
   std::vector<std::string> unknownKeep = dropBypassKnobs(declared, keep, args.noBypass);
   if (!unknownKeep.empty()) {
@@ -225,7 +231,7 @@ int runTune(const TuneArgs& args) {
       auto now = readGraphFile(args.graph, w);
       if (text && now && *now != *snapshot)
         w.error(DiagCode::FileWrite, SourceRef{args.graph, 0, 0}, "the file changed while it was being tuned; preset not written");
-      if (!text || w.hasErrors() || !writeFileAtomically(args.graph, *text, w)) {
+      if (!text || w.hasErrors() || !writeFileAtomically(realPathForRewrite(args.graph), *text, w)) {
         for (const auto& d : w.all()) std::cerr << formatText(d) << "\n";
         return exitCodeFor(w);
       }
@@ -291,7 +297,7 @@ Runner addTuneCommand(CLI::App& app, const GlobalOptions&) {
                   "names them (edges,foam/edge)")
       ->each([args](const std::string&) { args->keepGiven = true; });
   cmd->add_flag("--no-bypass", args->noBypass, "never switch off any node: tune only the knobs that keep every node drawn");
-  cmd->add_option("--plot", args->plot, "draw every tried configuration, cost against worst PSNR, into this SVG");
+  addOutputOption(cmd, "--plot", args->plot, "draw every tried configuration, cost against worst PSNR, into this SVG");
 #ifdef WG_HAVE_RUNTIME
   return [args] { return runTune(*args); };
 #else

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
+#include "core/shown_text.h"
 #include "core/text_lines.h"
 
 namespace wg::cli {
@@ -107,7 +108,7 @@ nlohmann::json sarifLog(const Diagnostics& diags) {
     for (const auto& note : d.locatedNotes) text += "\nnote: " + note.message;
     nlohmann::json r{{"ruleId", codeString(d.code)},
                      {"level", sarifLevel(d.severity)},
-                     {"message", {{"text", text}}}};
+                     {"message", {{"text", validUtf8(text)}}}};
     auto idx = ruleIndex.find(d.code);
     if (idx != ruleIndex.end()) r["ruleIndex"] = idx->second;
     if (!d.where.file.empty()) {
@@ -119,7 +120,7 @@ nlohmann::json sarifLog(const Diagnostics& diags) {
       }
       nlohmann::json loc{{"physicalLocation", phys}};
       if (!d.node.empty())
-        loc["logicalLocations"] = nlohmann::json::array({{{"name", d.node}, {"kind", "object"}}});
+        loc["logicalLocations"] = nlohmann::json::array({{{"name", validUtf8(d.node)}, {"kind", "object"}}});
       r["locations"] = nlohmann::json::array({loc});
     }
     // The subgraph instances it lies in, innermost first.
@@ -132,12 +133,12 @@ nlohmann::json sarifLog(const Diagnostics& diags) {
           region["startColumn"] = columns.utf16Column(note.where.file, note.where.line, note.where.col);
         phys["region"] = region;
       }
-      related.push_back({{"id", related.size()}, {"physicalLocation", phys}, {"message", {{"text", note.message}}}});
+      related.push_back({{"id", related.size()}, {"physicalLocation", phys}, {"message", {{"text", validUtf8(note.message)}}}});
     }
     if (!related.empty()) r["relatedLocations"] = related;
     nlohmann::json props = nlohmann::json::object();
-    if (!d.node.empty()) props["node"] = d.node;
-    if (!d.port.empty()) props["port"] = d.port;
+    if (!d.node.empty()) props["node"] = validUtf8(d.node);
+    if (!d.port.empty()) props["port"] = validUtf8(d.port);
     if (!props.empty()) r["properties"] = props;
     results.push_back(r);
   }

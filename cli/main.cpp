@@ -3,9 +3,12 @@
 #include <new>
 
 #include "cli/commands.h"
+#include "cli/option_values.h"
+#include "cli/terminal_output.h"
 
 int main(int argc, char** argv) {
   using namespace wg::cli;
+  TerminalSafeOutput safeOutput;  // what reaches the terminal is escaped (cli/terminal_output.h)
   CLI::App app{"watergraph: compiles water shader graphs (JSON) into GLSL for glsl330, es300 and vk450, "
                "validated by glslang.\n\nExamples:\n  watergraph compile graphs/lake.json -o out\n"
                "  watergraph validate graphs/*.json\n  watergraph nodes\n  watergraph fmt --check graphs/*.json"};
@@ -28,6 +31,7 @@ int main(int argc, char** argv) {
   Runner scene = addSceneCommand(app, global);
   Runner tune = addTuneCommand(app, global);
   Runner codes = addCodesCommand(app, global);
+  refuseEmptyValues(app);
 
   // A usage error is one line naming the option, as the commands' own usage errors are
   // (CLI11's default adds "Run with --help for more information.").
@@ -38,6 +42,8 @@ int main(int argc, char** argv) {
     int code = app.exit(e);
     return code == 0 ? kExitOk : kExitUsageOrIo;
   }
+  // Every file a command would write is checked before it does any work.
+  if (!checkOutputPaths(global)) return kExitUsageOrIo;
   try {
     if (app.got_subcommand("compile")) return compile();
     if (app.got_subcommand("validate")) return validate();

@@ -12,6 +12,7 @@
 #include "core/color_parameters.h"
 #include "core/preset.h"
 #include "core/resolve.h"
+#include "core/shown_text.h"
 
 namespace wg {
 
@@ -19,7 +20,15 @@ std::string graphBaseName(const std::string& path) {
   std::filesystem::path p(path);
   std::string name = p.filename().string();
   if (name.size() > 5 && name.compare(name.size() - 5, 5, ".json") == 0) name.resize(name.size() - 5);
-  return name;
+  // The output files are named from it and the manifest (JSON, UTF-8) names them: a byte
+  // that is not UTF-8 becomes '_' (core/shown_text.h), so every name written can be listed.
+  std::string named;
+  for (std::size_t i = 0; i < name.size();) {
+    std::size_t n = utf8SequenceLength(name, i);
+    named += n ? name.substr(i, n) : "_";
+    i += n ? n : 1;
+  }
+  return named;
 }
 
 bool runPassRecipe(Program& program, PassContext& ctx, const PassHooks* hooks) {
@@ -184,6 +193,7 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   result.nodesKept = static_cast<int>(keptNodes.size());
   std::string base = graphBaseName(graph.file.empty() ? graph.name : graph.file);
   std::string sourceName = std::filesystem::path(graph.file).filename().string();
+  sourceName = validUtf8(sourceName);  // the manifest (JSON) may name it
   for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
   // The plans live inside emitTargets, so they are gone before the manifest's text is
   // written: a big graph's plans are megabytes that nothing after the manifest reads.

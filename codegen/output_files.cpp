@@ -62,25 +62,33 @@ bool writeOutputFiles(const std::string& dir, const std::vector<OutputFile>& fil
 
 namespace {
 
-// Why `path` cannot be written or replaced ("" when it can): an existing file must be a
-// regular file not marked read-only; a new one needs a folder that exists.
+// Why `path` cannot be written or replaced ("" when it can). `st` is the path's own lstat
+// (nullptr when nothing is there): a symbolic link is replaced by the new file, never
+// followed, so where it points does not matter; an existing file must be a regular file not
+// marked read-only (rename() would replace it whatever its mode, and root passes
+// access(W_OK) for any file); a new one needs a folder that exists or can be made.
 std::string whyNotWritable(const std::string& path, const struct stat* st) {
-  if (st) {
+  if (path.empty()) return "cannot write: the output path is empty";
+  if (path.back() == '/') return "cannot write: '" + path + "' names a folder, not a file";
+  if (st && !S_ISLNK(st->st_mode)) {
+    if (S_ISDIR(st->st_mode)) return "cannot replace: not a regular file (a folder)";
     if (!S_ISREG(st->st_mode)) return "cannot replace: not a regular file";
     if (::access(path.c_str(), W_OK) != 0 || (st->st_mode & (S_IWUSR | S_IWGRP | S_IWOTH)) == 0)
       return "cannot replace: the file is read-only";
-    return "";
   }
   // A missing folder is made when the file is written, as -o makes its folder: the nearest
-  // existing ancestor must be a folder we may write into.
+  // existing ancestor (the current folder for a relative path) must be a folder we may
+  // write into.
   std::filesystem::path parent = std::filesystem::path(path).parent_path();
   std::error_code ec;
   std::filesystem::path existing = parent;
   while (!existing.empty() && !std::filesystem::exists(std::filesystem::symlink_status(existing, ec)))
     existing = existing.parent_path();
-  if (existing.empty() || existing == parent) {
-    if (!parent.empty() && !std::filesystem::is_directory(parent, ec))
-      return "cannot write: " + parent.string() + " is not a folder";
+  const bool folderExists = existing == parent;
+  if (existing.empty()) existing = ".";
+  if (folderExists) {
+    if (!std::filesystem::is_directory(existing, ec)) return "cannot write: " + parent.string() + " is not a folder";
+    if (::access(existing.c_str(), W_OK | X_OK) != 0) return "cannot write: the folder " + existing.string() + " is not writable";
     return "";
   }
   if (!std::filesystem::is_directory(existing, ec))
@@ -94,31 +102,40 @@ std::string whyNotWritable(const std::string& path, const struct stat* st) {
 
 bool checkWritable(const std::string& path, Diagnostics& diags) {
   struct stat st {};
-  bool exists = ::stat(path.c_str(), &st) == 0;
+  bool exists = !path.empty() && ::lstat(path.c_str(), &st) == 0;
   std::string why = whyNotWritable(path, exists ? &st : nullptr);
   if (why.empty()) return true;
   diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, why);
   return false;
 }
 
+bool checkFolderWritable(const std::string& dir, Diagnostics& diags) {
+  std::string why = dir.empty() ? "cannot write: the output folder is empty"
+                                : whyNotWritable((std::filesystem::path(dir) / "file").string(), nullptr);
+  if (why.empty()) return true;
+  diags.error(DiagCode::FileWrite, SourceRef{dir, 0, 0}, why);
+  return false;
+}
+
+std::string realPathForRewrite(const std::string& path) {
+  std::error_code ec;
+  std::filesystem::path real = std::filesystem::canonical(path, ec);
+  return ec ? path : real.string();
+}
+
 bool writeFileAtomically(const std::string& path, const std::string& contents, Diagnostics& diags) {
-  std::filesystem::path target(path);
-  // Replacing an existing file: through a symlink to the file it names; never a FIFO,
-  // device or folder; never a file marked read-only (rename() would replace it whatever its
-  // mode, and root passes access(W_OK) for any file); the new file keeps the old one's mode.
+  // The path's own entry (lstat): a symbolic link there is replaced by the rename below,
+  // never written through (a link planted at an output name must not redirect the write);
+  // never a FIFO, device or folder; never a file marked read-only; a regular file replaced
+  // keeps its mode.
   struct stat st {};
-  bool exists = ::stat(path.c_str(), &st) == 0;
-  if (exists) {
-    std::error_code ec;
-    auto real = std::filesystem::canonical(target, ec);
-    if (!ec) target = real;
-    std::string why = whyNotWritable(path, &st);
-    if (!why.empty()) {
-      diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, why);
-      return false;
-    }
+  bool exists = !path.empty() && ::lstat(path.c_str(), &st) == 0;
+  if (std::string why = whyNotWritable(path, exists ? &st : nullptr); !why.empty()) {
+    diags.error(DiagCode::FileWrite, SourceRef{path, 0, 0}, why);
+    return false;
   }
-  if (!exists && target.has_parent_path()) {  // a folder checkWritable found it can make
+  std::filesystem::path target(path);
+  if (!exists && target.has_parent_path()) {  // a folder whyNotWritable found it can make
     std::error_code ec;
     std::filesystem::create_directories(target.parent_path(), ec);
     if (ec) {
@@ -134,7 +151,7 @@ bool writeFileAtomically(const std::string& path, const std::string& contents, D
     return false;
   }
   const std::string& tmp = *written;
-  if (exists) ::chmod(tmp.c_str(), st.st_mode & 07777);
+  if (exists && S_ISREG(st.st_mode)) ::chmod(tmp.c_str(), st.st_mode & 07777);
   if (std::rename(tmp.c_str(), target.c_str()) != 0) {
     int err = errno;
     std::remove(tmp.c_str());

@@ -1,5 +1,7 @@
 #include "core/diagnostic.h"
 
+#include "core/shown_text.h"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -112,24 +114,9 @@ static std::string_view severityName(Severity s) {
 
 namespace {
 // One diagnostic is one line (plus its note lines): control characters that a graph string
-// can carry into a message (a name "a\n#version 100") are written as escapes.
-std::string oneLine(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    auto u = static_cast<unsigned char>(c);
-    if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else if (c == '\t') out += "\\t";
-    else if (u < 0x20 || u == 0x7f) {
-      static const char* hex = "0123456789abcdef";
-      out += "\\x";
-      out += hex[u >> 4];
-      out += hex[u & 15];
-    } else out += c;
-  }
-  return out;
-}
+// can carry into a message (a name "a\n#version 100"), and bytes of a file name that are not
+// UTF-8, are written as escapes (core/shown_text.h).
+std::string oneLine(const std::string& text) { return escapedForTerminal(text); }
 }  // namespace
 
 namespace {
@@ -162,20 +149,27 @@ std::string formatText(const Diagnostic& d) {
 }
 
 nlohmann::json toJson(const Diagnostic& d) {
+  // Every string as valid UTF-8 (core/shown_text.h): a file name need not be, and JSON
+  // cannot hold it otherwise.
   nlohmann::json j;
   j["code"] = codeString(d.code);
   j["severity"] = severityName(d.severity);
-  j["message"] = d.message;
-  j["file"] = d.where.file.str();
+  j["message"] = validUtf8(d.message);
+  j["file"] = validUtf8(d.where.file.str());
   j["line"] = d.where.line;
   j["column"] = d.where.col;
-  if (!d.node.empty()) j["node"] = d.node;
-  if (!d.port.empty()) j["port"] = d.port;
-  if (!d.notes.empty()) j["notes"] = d.notes;
+  if (!d.node.empty()) j["node"] = validUtf8(d.node);
+  if (!d.port.empty()) j["port"] = validUtf8(d.port);
+  if (!d.notes.empty()) {
+    nlohmann::json notes = nlohmann::json::array();
+    for (const auto& n : d.notes) notes.push_back(validUtf8(n));
+    j["notes"] = std::move(notes);
+  }
   if (!d.locatedNotes.empty()) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& n : d.locatedNotes)
-      list.push_back({{"file", n.where.file.str()}, {"line", n.where.line}, {"column", n.where.col}, {"message", n.message}});
+      list.push_back({{"file", validUtf8(n.where.file.str())}, {"line", n.where.line}, {"column", n.where.col},
+                      {"message", validUtf8(n.message)}});
     j["located_notes"] = std::move(list);
   }
   return j;

@@ -10,6 +10,7 @@
 #include <unordered_map>
 
 #include "core/color_parameters.h"
+#include "core/file_read.h"
 #include "core/graph_io.h"
 #include "core/load_limits.h"
 
@@ -22,11 +23,6 @@ bool holdsControlCharacter(std::string_view s) {
   return std::any_of(s.begin(), s.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; });
 }
 
-// `path` lies inside `folder` (both free of symbolic links and "..").
-bool pathLiesInside(const fs::path& path, const fs::path& folder) {
-  fs::path rel = path.lexically_relative(folder);
-  return !rel.empty() && *rel.begin() != ".." && rel != ".";
-}
 
 class ImportLoader {
  public:
@@ -80,7 +76,7 @@ class ImportLoader {
       diags_.error(DiagCode::ImportMissing, im.pathWhere, what + ": cannot read '" + shown.string() + "': " + ec.message());
       return nullptr;
     }
-    if (!pathLiesInside(real, topDir_)) {
+    if (!pathLiesUnder(real.string(), topDir_.string())) {
       diags_.error(DiagCode::ImportOutsideTree, im.pathWhere,
                    what + " leaves the folder of the top-level graph ('" + topDir_.string() + "')");
       return nullptr;
@@ -105,7 +101,7 @@ class ImportLoader {
 
     size_t first = diags_.all().size();
     std::shared_ptr<Graph> sub;
-    if (auto parsed = loadFile(shown.string(), im)) sub = std::make_shared<Graph>(std::move(*parsed));
+    if (auto parsed = loadFile(shown.string(), real.string(), im)) sub = std::make_shared<Graph>(std::move(*parsed));
     if (sub) {
       chain_.push_back({real.string(), shown.string()});
       loadImportsOf(*sub);
@@ -124,18 +120,36 @@ class ImportLoader {
   }
 
   // Each file is within kMaxFileBytes; all of them together within kMaxImportedBytes, so a
-  // graph naming thousands of large files cannot make one compile hold gigabytes.
-  std::optional<Graph> loadFile(const std::string& path, const Import& im) {
-    auto text = readGraphFile(path, diags_);
-    if (!text) return std::nullopt;
-    bytesRead_ += text->size();
+  // graph naming thousands of large files cannot make one compile hold gigabytes. The
+  // checks above went by name; the file is read from one descriptor whose own real path is
+  // checked again (core/file_read.h): a file swapped for a link since then is refused, never
+  // read from outside the folder.
+  std::optional<Graph> loadFile(const std::string& path, const std::string& realPath, const Import& im) {
+    FileReadRule rule;
+    rule.maxBytes = kMaxFileBytes;
+    rule.insideFolder = topDir_.string();
+    rule.mustResolveTo = realPath;
+    FileReadFailure failure;
+    auto text = readFileChecked(path, rule, &failure);
+    if (!text) {
+      const std::string what = "import '" + im.name + "' ('" + im.path + "')";
+      if (failure.kind == FileReadFailure::Kind::TooLarge)
+        diags_.error(DiagCode::LimitExceeded, im.pathWhere, "'" + path + "' is larger than the limit of 16 MiB");
+      else if (failure.kind == FileReadFailure::Kind::Outside)
+        diags_.error(DiagCode::ImportOutsideTree, im.pathWhere,
+                     what + ": '" + path + "' changed while it was being read (it no longer is the file inside the folder of the top-level graph that was checked)");
+      else
+        diags_.error(DiagCode::ImportMissing, im.pathWhere, what + ": cannot read '" + path + "': " + failure.why());
+      return std::nullopt;
+    }
+    bytesRead_ += text->bytes.size();
     if (bytesRead_ > kMaxImportedBytes) {
       diags_.error(DiagCode::LimitExceeded, im.pathWhere,
                    "import '" + im.name + "' would make the imported graph files " + std::to_string(bytesRead_) +
                        " bytes together; the limit is " + std::to_string(kMaxImportedBytes / (1024 * 1024)) + " MiB");
       return std::nullopt;
     }
-    return parseGraph(std::make_shared<const std::string>(std::move(*text)), path, diags_);
+    return parseGraph(std::make_shared<const std::string>(std::move(text->bytes)), path, diags_);
   }
 
   Diagnostics& diags_;

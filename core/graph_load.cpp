@@ -16,6 +16,7 @@
 
 #include "core/color_parameters.h"
 #include "core/graph_io.h"
+#include "core/file_read.h"
 #include "core/graph_imports.h"
 #include "core/graph_draft.h"
 #include "core/load_limits.h"
@@ -775,45 +776,20 @@ std::optional<Graph> loadGraphFile(const std::string& path, Diagnostics& diags) 
 }
 
 std::optional<std::string> readGraphFile(const std::string& path, Diagnostics& diags) {
+  // Opened once and read from that descriptor (core/file_read.h); a graph may come from a
+  // pipe, so a FIFO is read too (a folder is refused).
+  FileReadRule rule;
+  rule.maxBytes = kMaxFileBytes;
+  rule.regularOnly = false;
+  FileReadFailure failure;
+  auto text = readFileChecked(path, rule, &failure);
+  if (text) return std::move(text->bytes);
   SourceRef where{path, 0, 0};
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
-    diags.error(DiagCode::FileRead, where, "cannot read '" + path + "': " + std::strerror(EISDIR));
-    return std::nullopt;
-  }
-  errno = 0;
-  std::FILE* f = std::fopen(path.c_str(), "rb");
-  if (!f) {
-    int err = errno ? errno : ENOENT;
-    diags.error(DiagCode::FileRead, where, "cannot read '" + path + "': " + std::strerror(err));
-    return std::nullopt;
-  }
-  std::string text;
-  char buf[65536];
-  bool tooBig = false;
-  while (true) {
-    std::size_t n = std::fread(buf, 1, sizeof buf, f);
-    text.append(buf, n);
-    if (text.size() > kMaxFileBytes) {
-      tooBig = true;
-      break;
-    }
-    if (n < sizeof buf) break;
-  }
-  bool readError = std::ferror(f) != 0;
-  int err = errno;
-  std::fclose(f);
-  if (tooBig) {
-    diags.error(DiagCode::LimitExceeded, where,
-                "'" + path + "' is larger than the limit of 16 MiB");
-    return std::nullopt;
-  }
-  if (readError) {
-    diags.error(DiagCode::FileRead, where,
-                "cannot read '" + path + "': " + std::strerror(err ? err : EIO));
-    return std::nullopt;
-  }
-  return text;
+  if (failure.kind == FileReadFailure::Kind::TooLarge)
+    diags.error(DiagCode::LimitExceeded, where, "'" + path + "' is larger than the limit of 16 MiB");
+  else
+    diags.error(DiagCode::FileRead, where, "cannot read '" + path + "': " + failure.why());
+  return std::nullopt;
 }
 
 }  // namespace wg

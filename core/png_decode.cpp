@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
-#include <fcntl.h>
 #include <mutex>
 #include <set>
 #include <sys/stat.h>
-#include <unistd.h>
 
 #include <stb/stb_image.h>
 
+#include "core/file_read.h"
 #include "core/png_header.h"
 #include "core/texture_check.h"
 
@@ -21,50 +20,39 @@ namespace {
 // for a stored (uncompressed) image and its chunk overhead.
 constexpr std::size_t kMaxPngFileBytes = std::size_t{2} * 4 * kMaxTextureSide * kMaxTextureSide;
 
-// Reads the open file `fd` whole, up to kMaxPngFileBytes; "" or why not.
-std::string readWhole(int fd, std::vector<unsigned char>* bytes) {
-  struct stat st {};
-  if (::fstat(fd, &st) != 0) return std::strerror(errno);
-  if (!S_ISREG(st.st_mode)) return "it is not a regular file";
-  if (static_cast<unsigned long long>(st.st_size) > kMaxPngFileBytes)
-    return "the file has " + std::to_string(st.st_size) + " bytes; the limit is " + std::to_string(kMaxPngFileBytes);
-  bytes->resize(static_cast<std::size_t>(st.st_size));
-  std::size_t got = 0;
-  while (got < bytes->size()) {
-    ssize_t n = ::read(fd, bytes->data() + got, bytes->size() - got);
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) return std::strerror(errno);
-    if (n == 0) break;  // shrank since fstat: decode what is there
-    got += static_cast<std::size_t>(n);
-  }
-  bytes->resize(got);
-  return "";
-}
-
 }  // namespace
 
-// The file is opened once, without following a link, and read whole; its header is checked
-// again on those bytes (the file may have been replaced since it was checked), and every
-// chunk must fit inside the file before the decoder sees it.
+// The file is opened once and read whole from that descriptor, which must still be the file
+// checked (its real path is `realPath`: a file or folder swapped for a link since is refused,
+// core/file_read.h); its header is checked again on those bytes (the file may have been
+// replaced since it was checked), and every chunk must fit inside the file and carry a
+// correct CRC before the decoder sees it.
 bool decodePng(const std::string& realPath, DecodedPng* out, std::string* error) {
   auto fail = [&](const std::string& why) {
     if (error) *error = why;
     return false;
   };
-  // O_NONBLOCK: a FIFO swapped in since the check must not hang the open; readWhole then
-  // refuses anything but a regular file.
-  int fd = ::open(realPath.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) return fail(std::strerror(errno));
-  std::vector<unsigned char> bytes;
-  std::string why = readWhole(fd, &bytes);
-  ::close(fd);
+  FileReadRule rule;
+  rule.maxBytes = kMaxPngFileBytes;
+  rule.mustResolveTo = realPath;
+  FileReadFailure failure;
+  auto text = readFileChecked(realPath, rule, &failure);
+  if (!text) {
+    if (failure.kind == FileReadFailure::Kind::TooLarge)
+      return fail("the file is larger than the limit of " + std::to_string(kMaxPngFileBytes) + " bytes");
+    if (failure.kind == FileReadFailure::Kind::Outside)
+      return fail("the file changed since it was checked (it is no longer " + realPath + ")");
+    return fail(failure.why());
+  }
+  const std::string& raw = text->bytes;
+  const auto* bytes = reinterpret_cast<const unsigned char*>(raw.data());
   PngSize size;
-  if (why.empty()) why = readPngSize(bytes.data(), bytes.size(), &size);
+  std::string why = readPngSize(bytes, raw.size(), &size);
   if (why.empty()) why = checkTextureSize(size.width, size.height);
-  if (why.empty()) why = checkPngChunks(bytes.data(), bytes.size());
+  if (why.empty()) why = checkPngChunks(bytes, raw.size());
   if (!why.empty()) return fail(why);
   int w = 0, h = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), static_cast<int>(bytes.size()), &w, &h, &channels, 4);
+  stbi_uc* pixels = stbi_load_from_memory(bytes, static_cast<int>(raw.size()), &w, &h, &channels, 4);
   if (!pixels) return fail(stbi_failure_reason() ? stbi_failure_reason() : "unknown error");
   out->width = w;
   out->height = h;

@@ -1,5 +1,7 @@
 #include "core/png_header.h"
 
+#include <array>
+
 namespace wg {
 namespace {
 
@@ -9,6 +11,22 @@ unsigned long bigEndian32(const unsigned char* p) {
 }
 
 }  // namespace
+
+// The CRC-32 of PNG chunks (the PNG specification, annex D: polynomial 0xedb88320, reflected).
+unsigned long pngChunkCrc(const unsigned char* bytes, std::size_t count) {
+  static const auto table = [] {
+    std::array<unsigned long, 256> t{};
+    for (unsigned long n = 0; n < 256; ++n) {
+      unsigned long c = n;
+      for (int k = 0; k < 8; ++k) c = (c & 1) ? 0xedb88320UL ^ (c >> 1) : c >> 1;
+      t[n] = c;
+    }
+    return t;
+  }();
+  unsigned long c = 0xffffffffUL;
+  for (std::size_t i = 0; i < count; ++i) c = table[(c ^ bytes[i]) & 0xff] ^ (c >> 8);
+  return c ^ 0xffffffffUL;
+}
 
 std::string readPngSize(const unsigned char* bytes, std::size_t count, PngSize* size) {
   static const unsigned char kSignature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
@@ -35,6 +53,9 @@ std::string checkPngChunks(const unsigned char* bytes, std::size_t count) {
     if (length > 0x7fffffffUL || length > count - at - 12)
       return "its " + type + " chunk at byte " + std::to_string(at) + " declares " + std::to_string(length) +
              " bytes of data; the file has " + std::to_string(count) + " bytes";
+    // stb_image does not check CRCs: a corrupt chunk would decode into wrong texels.
+    if (pngChunkCrc(bytes + at + 4, 4 + length) != bigEndian32(bytes + at + 8 + length))
+      return "its " + type + " chunk at byte " + std::to_string(at) + " has a wrong CRC (the file is corrupt)";
     if (type == "IEND") return "";
     at += 12 + length;
   }

@@ -19,8 +19,11 @@ struct PngSize {
 // bytes); else why not.
 std::string readPngSize(const unsigned char* bytes, std::size_t count, PngSize* size);
 
-// "" when the chunks of the whole file `bytes` each fit inside it, up to IEND; else which
-// chunk declares more bytes than the file has. A 71-byte file whose IDAT declares 1.9 GB
+// The CRC-32 a PNG chunk carries, over `count` bytes (its type and data).
+unsigned long pngChunkCrc(const unsigned char* bytes, std::size_t count);
+
+// "" when the chunks of the whole file `bytes` each fit inside it and carry a correct CRC,
+// up to IEND; else which chunk declares more bytes than the file has, or has a wrong CRC. A 71-byte file whose IDAT declares 1.9 GB
 // would otherwise make the decoder grow its buffer towards that size before it finds out.
 std::string checkPngChunks(const unsigned char* bytes, std::size_t count);
 

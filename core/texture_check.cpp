@@ -5,9 +5,8 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
-#include <fcntl.h>
-#include <unistd.h>
 
+#include "core/file_read.h"
 #include "core/png_header.h"
 
 #include "core/interface_tables.h"
@@ -24,22 +23,24 @@ bool hasControlCharacter(std::string_view s) {
   });
 }
 
-// `path` lies inside `folder` (both already free of symbolic links and "..").
-bool isInside(const fs::path& path, const fs::path& folder) {
-  fs::path rel = path.lexically_relative(folder);
-  return !rel.empty() && *rel.begin() != ".." && rel != ".";
-}
 
-// The header's declared size, read from the file itself (O_NOFOLLOW: the path is already
-// resolved, so a link planted since is refused rather than followed).
-std::string readHeader(const fs::path& path, PngSize* size) {
-  int fd = ::open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NONBLOCK);
-  if (fd < 0) return std::string("it cannot be opened: ") + std::strerror(errno);
-  unsigned char bytes[kPngHeaderBytes];
-  ssize_t n = ::read(fd, bytes, sizeof bytes);
-  ::close(fd);
-  if (n < 0) return std::string("it cannot be read: ") + std::strerror(errno);
-  return readPngSize(bytes, static_cast<std::size_t>(n), size);
+// The header's declared size, read from the file itself: opened once, and where the open
+// file really lies is checked again on its descriptor (core/file_read.h), so a file or a
+// folder swapped for a link since the path was resolved is refused, never read. *real is
+// the opened file's real path, which the decoder later insists on.
+std::string readHeader(const fs::path& path, const fs::path& realFolder, PngSize* size, std::string* real) {
+  FileReadRule rule;
+  rule.maxBytes = static_cast<std::size_t>(-1);  // the decoder holds the size limit
+  rule.insideFolder = realFolder.string();
+  rule.readAtMost = kPngHeaderBytes;
+  FileReadFailure failure;
+  auto text = readFileChecked(path.string(), rule, &failure);
+  if (!text) {
+    if (failure.kind == FileReadFailure::Kind::Outside) return "it leads outside the graph's folder (it changed since it was checked)";
+    return "it cannot be read: " + failure.why();
+  }
+  *real = text->realPath;
+  return readPngSize(reinterpret_cast<const unsigned char*>(text->bytes.data()), text->bytes.size(), size);
 }
 
 }  // namespace
@@ -91,12 +92,14 @@ std::string checkTextureSource(std::string_view source, const std::string& graph
   fs::path realFolder = fs::canonical(folder, ec);
   fs::path real = ec ? fs::path() : fs::canonical(full, ec);
   if (ec) return "texture file '" + full.string() + "' cannot be resolved: " + ec.message();
-  if (!isInside(real, realFolder)) return quoted + " leads outside the graph's folder (through a symbolic link)";
+  if (!pathLiesUnder(real.string(), realFolder.string())) return quoted + " leads outside the graph's folder (through a symbolic link)";
   PngSize size;
-  if (std::string why = readHeader(real, &size); !why.empty()) return "texture '" + std::string(source) + "': " + why;
+  std::string opened;
+  if (std::string why = readHeader(full, realFolder, &size, &opened); !why.empty())
+    return "texture '" + std::string(source) + "': " + why;
   if (std::string why = checkTextureSize(size.width, size.height); !why.empty())
     return "texture '" + std::string(source) + "': " + why;
-  if (file) *file = {real.string(), size.width, size.height};
+  if (file) *file = {opened, size.width, size.height};
   return "";
 }
 

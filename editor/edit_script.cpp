@@ -1,5 +1,8 @@
 #include "editor/edit_script.h"
 
+#include "core/file_read.h"
+#include "core/load_limits.h"
+
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -65,14 +68,15 @@ InputTarget target(const nlohmann::json& step) {
 }  // namespace
 
 std::optional<std::vector<ScriptStep>> loadScript(const std::string& path, std::string* error) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    *error = path + ": cannot read the script";
+  FileReadRule rule;
+  rule.maxBytes = kMaxFileBytes;
+  FileReadFailure failure;
+  auto file = readFileChecked(path, rule, &failure);  // one open, one read (core/file_read.h)
+  if (!file) {
+    *error = path + ": cannot read the script: " + failure.why();
     return std::nullopt;
   }
-  std::stringstream ss;
-  ss << in.rdbuf();
-  nlohmann::json doc = nlohmann::json::parse(ss.str(), nullptr, false);
+  nlohmann::json doc = nlohmann::json::parse(file->bytes, nullptr, false);
   if (doc.is_discarded() || !doc.is_array()) {
     *error = path + ": a script is a JSON list of steps, each {\"op\": ...}";
     return std::nullopt;

@@ -261,7 +261,9 @@ bool App::writeGraph(const std::string& path) {
   }
   std::string text = saveGraph(editor_.graph());
   Diagnostics d;
-  if (!writeFileAtomically(path, text, d)) {
+  // Saving the open graph rewrites it in place: a link the user opened stays a link, as fmt
+  // keeps it (codegen/output_files.h); a new path (save as) is written as it is named.
+  if (!writeFileAtomically(path == path_ ? realPathForRewrite(path) : path, text, d)) {
     status_ = d.all().empty() ? "cannot save " + path : formatText(d.all().front());
     std::cerr << status_ << "\n";
     return false;

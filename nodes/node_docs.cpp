@@ -2,6 +2,7 @@
 
 #include <map>
 
+#include "core/shown_text.h"
 #include "core/graph_imports.h"
 #include "core/number_format.h"
 
@@ -65,7 +66,7 @@ nlohmann::json functionGraphJson(const std::string& type, const Graph& g) {
   nlohmann::json j;
   j["type"] = type;
   j["family"] = "subgraph";
-  j["file"] = g.file;
+  j["file"] = validUtf8(g.file);  // a file name need not be UTF-8; JSON must
   j["summary"] = g.interface ? g.interface->description : "";
   nlohmann::json inputs = nlohmann::json::array();
   for (size_t i = 0; i < ports.inputs.size(); ++i) {
@@ -84,9 +85,12 @@ nlohmann::json functionGraphJson(const std::string& type, const Graph& g) {
 }
 
 std::string functionGraphText(const std::string& type, const Graph& g) {
+  // Every string from the file is shown escaped (core/shown_text.h): a description holding
+  // ESC or BEL would act on the terminal.
   nlohmann::json j = functionGraphJson(type, g);
-  std::string s = type + "  (subgraph, " + g.file + ")\n";
-  if (!j["summary"].get<std::string>().empty()) s += "  " + j["summary"].get<std::string>() + "\n";
+  auto shown = [](const nlohmann::json& v) { return escapedForTerminal(v.get<std::string>()); };
+  std::string s = escapedForTerminal(type) + "  (subgraph, " + escapedForTerminal(g.file) + ")\n";
+  if (!j["summary"].get<std::string>().empty()) s += "  " + shown(j["summary"]) + "\n";
   s += "  inputs:\n";
   if (j["inputs"].empty()) s += "    (none)\n";
   for (const auto& in : j["inputs"]) {
@@ -94,15 +98,14 @@ std::string functionGraphText(const std::string& type, const Graph& g) {
     if (in.contains("min") || in.contains("max"))
       range = " in [" + (in.contains("min") ? formatNumber(in["min"].get<double>()) : std::string("-inf")) + ", " +
               (in.contains("max") ? formatNumber(in["max"].get<double>()) : std::string("inf")) + "]";
-    s += "    " + in["name"].get<std::string>() + ": " + in["type"].get<std::string>() + ", default " +
-         in["default"].get<std::string>() + range;
-    if (!in["doc"].get<std::string>().empty()) s += " — " + in["doc"].get<std::string>();
+    s += "    " + shown(in["name"]) + ": " + shown(in["type"]) + ", default " + shown(in["default"]) + range;
+    if (!in["doc"].get<std::string>().empty()) s += " — " + shown(in["doc"]);
     s += "\n";
   }
   s += "  outputs:\n";
   for (const auto& out : j["outputs"]) {
-    s += "    " + out["name"].get<std::string>() + ": " + out["type"].get<std::string>();
-    if (!out["doc"].get<std::string>().empty()) s += " — " + out["doc"].get<std::string>();
+    s += "    " + shown(out["name"]) + ": " + shown(out["type"]);
+    if (!out["doc"].get<std::string>().empty()) s += " — " + shown(out["doc"]);
     s += "\n";
   }
   return s;

@@ -12,6 +12,7 @@
 #include <stb/stb_image_write.h>
 
 #include "codegen/output_files.h"
+#include "core/file_read.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
@@ -40,8 +41,17 @@ void writePng(const std::string& path, const Image& img) {
 }
 
 Image readPng(const std::string& path) {
+  // One open, one read (core/file_read.h), then decoded from memory.
+  FileReadRule rule;
+  rule.maxBytes = std::size_t{1} << 30;
+  FileReadFailure failure;
+  auto file = readFileChecked(path, rule, &failure);
+  if (!file) throw RuntimeError(RuntimeError::Kind::Io, "cannot read " + path + ": " + failure.why());
+  if (file->bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
+    throw RuntimeError(RuntimeError::Kind::Io, "cannot read " + path + ": too large");
   int w = 0, h = 0, n = 0;
-  unsigned char* data = stbi_load(path.c_str(), &w, &h, &n, 4);
+  unsigned char* data = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(file->bytes.data()),
+                                              static_cast<int>(file->bytes.size()), &w, &h, &n, 4);
   if (!data) {
     const char* why = stbi_failure_reason();
     throw RuntimeError(RuntimeError::Kind::Io, "cannot read " + path + ": " + (why ? why : "unknown error"));

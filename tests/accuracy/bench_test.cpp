@@ -169,3 +169,36 @@ TEST(Bench, AConfigOfTheWrongShapeIsAnErrorWithACode) {
 
 }  // namespace
 }  // namespace wg::accuracy
+
+namespace wg::accuracy {
+namespace {
+
+// --plot: gnuplot draws in a private folder (it wrote /tmp/wg_bench_PID.* and opened the
+// output itself, following a link planted there), a quote in a family name or the output
+// path cannot end a string in its script, and the picture replaces a link at the output.
+TEST(BenchPlot, DrawsInAPrivateFolderAndReplacesALinkAtTheOutput) {
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0) GTEST_SKIP() << "no gnuplot";
+  std::string dir = test::makeTempDir("wg_bench_plot_");
+  test::writeFile(dir + "/victim", "precious");
+  const std::string png = dir + "/it's plot.png";
+  std::filesystem::create_symlink(dir + "/victim", png);
+  BenchResult r;
+  r.settings.width = r.settings.height = 8;
+  for (const char* family : {"a'b", "system 'touch x'"}) {
+    BenchLevel ref{family, "ref", "n", "above", true, 1, 1, 1};
+    BenchLevel fast{family, "fast\"one", "n", "above", false, 0.5, 0.5, 0.5};
+    fast.meanError = 1e-3;
+    fast.pareto = ref.pareto = true;
+    r.levels.push_back(ref);
+    r.levels.push_back(fast);
+  }
+  EXPECT_EQ(writeBenchPlot(r, png), "");
+  EXPECT_EQ(test::readFile(dir + "/victim"), "precious");
+  EXPECT_FALSE(std::filesystem::is_symlink(png));
+  EXPECT_EQ(test::readFile(png).substr(1, 3), "PNG");
+  EXPECT_FALSE(std::filesystem::exists("x"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace wg::accuracy

@@ -149,7 +149,7 @@ TEST(CliCompile, AnEmptyTargetIsAUsageError) {
   CmdResult r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lake.json")) + " -o " + shellQuote(tmp / "out") +
                       " --target ''");
   EXPECT_EQ(r.exit, 2) << r.out << r.err;
-  EXPECT_NE(r.err.find("--target is empty"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--target: the value is empty"), std::string::npos) << r.err;  // as every option's
   EXPECT_FALSE(fs::exists(tmp / "out"));
   for (const char* list : {"glsl330,", ",glsl330", "glsl330,,es300"}) {
     r = wgRun("compile " + shellQuote(test::sourcePath("graphs/lake.json")) + " -o " + shellQuote(tmp / "out") + " --target " + list);

@@ -105,9 +105,9 @@ struct WatchProcess {
   int pid = 0;
   WatchProcess(const WatchProcess&) = delete;
   WatchProcess& operator=(const WatchProcess&) = delete;
-  WatchProcess(const std::string& graph, const std::string& out, const std::string& log) {
+  WatchProcess(const std::string& graph, const std::string& out, const std::string& log, const std::string& more = "") {
     auto start = eco::sh(shellQuote(test::watergraphBinary()) + " compile " + shellQuote(graph) + " -o " +
-                         shellQuote(out) + " --watch --watch-interval 50 > " + shellQuote(log) + " 2>&1 & echo $!");
+                         shellQuote(out) + " --watch --watch-interval 50" + more + " > " + shellQuote(log) + " 2>&1 & echo $!");
     if (start.exit == 0) pid = std::stoi(start.out);
   }
   ~WatchProcess() {
@@ -180,6 +180,32 @@ TEST(Usability, WatchRecompilesWhenAnImportedSubgraphChanges) {
   text = waitFor(log, "recompiled ");
   EXPECT_NE(text.find("recompiled " + std::string(tmp / "pool.json") + ": ok"), std::string::npos) << text;
   EXPECT_NE(test::readFile(out + "/pool.glsl330.frag").find("0.0371"), std::string::npos);
+}
+
+// --watch --depfile: an edit that adds imports rewrites the depfile (it stayed as the first
+// compile wrote it, so a build system missed changes to the new imports).
+TEST(Usability, WatchRewritesTheDepfileWhenTheImportsChange) {
+  eco::TempDir tmp;
+  fs::create_directories(tmp / "lib");
+  for (const char* lib : {"floor_caustics.json", "fresnel_sky.json"})
+    fs::copy_file(test::sourcePath(std::string("graphs/lib/") + lib), tmp / (std::string("lib/") + lib));
+  std::string graph = tmp / "pool.json";
+  fs::copy_file(test::sourcePath("graphs/lake.json"), graph);  // no imports yet
+  std::string log = tmp / "watch.log", depfile = tmp / "pool.d";
+  WatchProcess watch(graph, tmp / "out", log, " --depfile " + shellQuote(depfile));
+  ASSERT_GT(watch.pid, 0);
+  std::string text = waitFor(log, "watching 1 graph");
+  ASSERT_NE(text.find("watching 1 graph"), std::string::npos) << text;
+  EXPECT_EQ(test::readFile(depfile).find("fresnel_sky.json"), std::string::npos);
+  test::writeFile(graph, test::readFile(test::sourcePath("graphs/pool.json")));
+  std::string d;
+  for (int i = 0; i < 300 && d.find("fresnel_sky.json") == std::string::npos; ++i) {  // a save may be seen half-written first
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    d = test::readFile(depfile);
+  }
+  EXPECT_NE(test::readFile(log).find("recompiled " + graph + ": ok"), std::string::npos) << test::readFile(log);
+  EXPECT_NE(d.find(std::string(tmp / "lib/fresnel_sky.json")), std::string::npos) << d;
+  EXPECT_NE(d.find(std::string(tmp / "lib/floor_caustics.json")), std::string::npos) << d;
 }
 
 TEST(Usability, DepfileListsEveryGraphFileAndTextureAGraphIsMadeOf) {

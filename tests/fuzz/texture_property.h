@@ -13,6 +13,7 @@
 #include <system_error>
 #include <unistd.h>
 
+#include "core/png_header.h"
 #include "core/texture_check.h"
 #include "nodes/texture_source.h"
 
@@ -33,6 +34,18 @@ inline std::string textureProperty(std::string_view bytes, const std::filesystem
   std::size_t bar = rest.find('|');
   std::string path(rest.substr(0, std::min(bar, std::size_t{200})));
   std::string contents(bar == std::string_view::npos ? std::string_view() : rest.substr(bar + 1));
+  // Every chunk's CRC is made right (a mutation would otherwise break one and the file be
+  // refused before the decoder sees it): flag 16 leaves them as the bytes say.
+  if (!(flags & 16)) {
+    auto* u = reinterpret_cast<unsigned char*>(contents.data());
+    for (std::size_t at = 8; at + 12 <= contents.size();) {
+      std::size_t length = (std::size_t{u[at]} << 24) | (std::size_t{u[at + 1]} << 16) | (std::size_t{u[at + 2]} << 8) | u[at + 3];
+      if (length > contents.size() - at - 12) break;
+      unsigned long crc = pngChunkCrc(u + at + 4, 4 + length);
+      for (int k = 0; k < 4; ++k) u[at + 8 + length + k] = static_cast<unsigned char>(crc >> (24 - 8 * k));
+      at += 12 + length;
+    }
+  }
   auto write = [&](const fs::path& p) {
     std::FILE* f = std::fopen(p.c_str(), "wb");
     if (!f) return;

@@ -60,6 +60,56 @@ TEST_F(OutputRace, FmtNeverFollowsAPlantedLink) {
   expectVictimUntouchedAndRegular(out + "/g.json", "{\"formatted\": true}\n");
 }
 
+// A link planted at the output's own name (not at a temporary's) is replaced by the new
+// file, never written through: `--depfile out/x.d` and `render -o r.png` wrote into the
+// link's target (the writer resolved the link and replaced the file it named).
+TEST_F(OutputRace, ALinkAtTheOutputNameIsReplacedNotFollowed) {
+  fs::create_symlink(victim, out + "/x.d");
+  Diagnostics diags;
+  ASSERT_TRUE(writeFileAtomically(out + "/x.d", "new\n", diags));
+  expectVictimUntouchedAndRegular(out + "/x.d", "new\n");
+  // A dangling link too (it would have created the file it names).
+  fs::create_symlink(root + "/created-through-link", out + "/y.d");
+  ASSERT_TRUE(writeFileAtomically(out + "/y.d", "y\n", diags));
+  EXPECT_FALSE(fs::exists(root + "/created-through-link"));
+  // The up-front check accepts a link: it will be replaced.
+  EXPECT_TRUE(checkWritable(out + "/x.d", diags));
+  // An in-place rewrite (fmt, tune --write-preset) resolves the user's own link first: the
+  // link stays and its file is rewritten.
+  fs::create_symlink("x.d", out + "/mine.d");
+  ASSERT_TRUE(writeFileAtomically(realPathForRewrite(out + "/mine.d"), "rewritten\n", diags));
+  EXPECT_TRUE(fs::is_symlink(out + "/mine.d"));
+  EXPECT_EQ(test::readFile(out + "/x.d"), "rewritten\n");
+  EXPECT_FALSE(diags.hasErrors());
+}
+
+// Every command's output, through the command line: a link planted at each output path.
+TEST_F(OutputRace, NoCommandWritesThroughALinkAtItsOutput) {
+  const std::string wg = test::shellQuote(test::watergraphBinary());
+  const std::string lake = test::shellQuote(test::sourcePath("graphs/lake.json"));
+  struct Case {
+    std::string name, command;
+  };
+  std::vector<Case> cases = {
+      {"shaders.d", "compile " + lake + " --target glsl330 -o " + out + "/shaders --depfile " + out + "/shaders.d"},
+      {"schema.json", "schema -o " + out + "/schema.json"},
+#ifdef WG_HAVE_RUNTIME
+      {"scene.json", "scene -o " + out + "/scene.json"},
+      {"r.png", "render " + lake + " --size 16x9 -o " + out + "/r.png"},
+#endif
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.command);
+    fs::create_symlink(victim, out + "/" + c.name);
+    std::string output;
+    int code = test::runCommand(wg + " " + c.command + " 2>&1", &output);
+    EXPECT_EQ(code, 0) << output;
+    EXPECT_EQ(test::readFile(victim), "precious");
+    EXPECT_FALSE(fs::is_symlink(out + "/" + c.name));
+    EXPECT_TRUE(fs::is_regular_file(out + "/" + c.name));
+  }
+}
+
 TEST_F(OutputRace, TemporariesAreNewFilesUnderUnpredictableNames) {
   int err = 0;
   auto a = writeTemporaryBeside(out + "/x.frag", "a", &err);
