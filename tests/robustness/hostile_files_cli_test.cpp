@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <stb/stb_image_write.h>
 
+#include "png_bytes.h"
 #include "core/png_header.h"
 #include "core/shown_text.h"
 #include "test_support.h"
@@ -211,21 +212,11 @@ TEST_F(HostileFilesCli, AFamilyThatDoesNotExistIsAUsageError) {
 
 // --- PNG CRCs ------------------------------------------------------------------------------
 
-std::string pngBytes(int w, int h) {
-  std::vector<unsigned char> rgba(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 120);
-  std::string out;
-  auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
-  };
-  stbi_write_png_to_func(append, &out, w, h, 4, rgba.data(), w * 4);
-  return out;
-}
-
 // stb_image does not check CRCs: a PNG with a corrupt IDAT decoded into whatever the bytes
 // say. Every chunk's CRC is checked before decoding.
 TEST(PngCrc, AChunkWhoseCrcDoesNotMatchIsRefused) {
   auto check = [](const std::string& b) { return checkPngChunks(reinterpret_cast<const unsigned char*>(b.data()), b.size()); };
-  const std::string good = pngBytes(4, 4);
+  const std::string good = test::pngBytes(4, 4, 120);
   ASSERT_EQ(check(good), "");
   std::size_t idat = good.find("IDAT") - 4;
   std::size_t length = (static_cast<unsigned char>(good[idat + 2]) << 8) | static_cast<unsigned char>(good[idat + 3]);

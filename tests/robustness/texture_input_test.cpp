@@ -10,6 +10,7 @@
 
 #include <stb/stb_image_write.h>
 
+#include "png_bytes.h"
 #include "codegen/compile.h"
 #include "core/graph_io.h"
 #include "core/png_header.h"
@@ -24,16 +25,6 @@ namespace {
 namespace fs = std::filesystem;
 
 // A real PNG of w x h texels.
-std::string pngBytes(int w, int h) {
-  std::vector<unsigned char> rgba(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 200);
-  std::string out;
-  auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
-  };
-  stbi_write_png_to_func(append, &out, w, h, 4, rgba.data(), w * 4);
-  return out;
-}
-
 // A PNG signature and IHDR declaring w x h, then `rest` (no image data: only the header
 // is read before the size is refused).
 std::string pngHeaderDeclaring(unsigned w, unsigned h, const std::string& rest = std::string(64, '\0')) {
@@ -72,14 +63,14 @@ class TextureInput : public ::testing::Test {
     outside = root + "/outside";
     fs::create_directories(dir);
     fs::create_directories(outside);
-    test::writeFile(outside + "/secret.png", pngBytes(2, 2));
+    test::writeFile(outside + "/secret.png", test::pngBytes(2, 2));
   }
   void TearDown() override { fs::remove_all(root); }
   std::string root, dir, outside;
 };
 
 TEST_F(TextureInput, AGoodPngInsideTheFolderIsAccepted) {
-  test::writeFile(dir + "/foam.png", pngBytes(4, 2));
+  test::writeFile(dir + "/foam.png", test::pngBytes(4, 2));
   EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("foam.png"))), "");
   TextureFile file;
   EXPECT_EQ(checkTextureSource("foam.png", dir, &file), "");
@@ -89,9 +80,9 @@ TEST_F(TextureInput, AGoodPngInsideTheFolderIsAccepted) {
 
 // Found in review: UP.PNG was "not a .png file"; the extension is matched in any case.
 TEST_F(TextureInput, AnUpperCaseExtensionIsAPng) {
-  test::writeFile(dir + "/UP.PNG", pngBytes(2, 2));
+  test::writeFile(dir + "/UP.PNG", test::pngBytes(2, 2));
   EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("UP.PNG"))), "");
-  test::writeFile(dir + "/up.jpg", pngBytes(2, 2));
+  test::writeFile(dir + "/up.jpg", test::pngBytes(2, 2));
   EXPECT_NE(firstError(resolveIn(dir, edgeFoamGraph("up.jpg"))).find("is not a .png file"), std::string::npos);
 }
 
@@ -118,7 +109,7 @@ TEST_F(TextureInput, AFolderSymlinkInsideTheTreeLeadingOutsideIsRefused) {
 
 TEST_F(TextureInput, ASymlinkStayingInsideIsAccepted) {
   fs::create_directories(dir + "/real");
-  test::writeFile(dir + "/real/foam.png", pngBytes(2, 2));
+  test::writeFile(dir + "/real/foam.png", test::pngBytes(2, 2));
   fs::create_symlink("real/foam.png", dir + "/foam.png");
   EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("foam.png"))), "");
 }
@@ -126,7 +117,7 @@ TEST_F(TextureInput, ASymlinkStayingInsideIsAccepted) {
 // "README.md\0.png" passed the .png check and the file system opened README.md.
 TEST_F(TextureInput, ControlCharactersInPathsAreRefused) {
   test::writeFile(dir + "/README.md", "not a texture");
-  test::writeFile(dir + "/a\x01.png", pngBytes(2, 2));
+  test::writeFile(dir + "/a\x01.png", test::pngBytes(2, 2));
   for (std::string path : {std::string("README.md\0.png", 14), std::string("a\x01.png")}) {
     std::string e = firstError(resolveIn(dir, edgeFoamGraph(path)));
     EXPECT_NE(e.find("[WG030]"), std::string::npos) << e;
@@ -177,7 +168,7 @@ TEST_F(TextureInput, AFileThatIsNotAPngIsRefusedAtTheOption) {
 // A PNG whose header is fine but whose data is not: `compile --textures` reports it as a
 // fault of the graph (exit 1, WG030 at the texture option), not as an I/O error (exit 2).
 TEST_F(TextureInput, ADecodeFailureIsAGraphErrorAtThePath) {
-  std::string good = pngBytes(4, 4);
+  std::string good = test::pngBytes(4, 4);
   test::writeFile(dir + "/broken.png", good.substr(0, 33) + std::string(40, 'x'));  // IHDR kept, data garbled
   test::writeFile(dir + "/g.json", edgeFoamGraph("broken.png"));
   std::string out, err;
@@ -194,7 +185,7 @@ TEST_F(TextureInput, ADecodeFailureIsAGraphErrorAtThePath) {
 // file cut after its header) fails `validate`, the CI check, not first `render`; a good
 // one passes, and a preset's texture is decoded too.
 TEST_F(TextureInput, APngThatDoesNotDecodeFailsValidate) {
-  std::string good = pngBytes(4, 4);
+  std::string good = test::pngBytes(4, 4);
   test::writeFile(dir + "/broken.png", good.substr(0, 33) + std::string(40, 'x'));
   test::writeFile(dir + "/cut.png", pngHeaderDeclaring(4, 4));
   test::writeFile(dir + "/good.png", good);
@@ -221,7 +212,7 @@ TEST_F(TextureInput, APngThatDoesNotDecodeFailsValidate) {
 // folder named like a PNG) is said to be that, not to be missing.
 TEST_F(TextureInput, AStepBackThatStaysInsideIsAcceptedAndAFolderIsNotAFile) {
   fs::create_directories(dir + "/sub");
-  test::writeFile(dir + "/foam.png", pngBytes(2, 2));
+  test::writeFile(dir + "/foam.png", test::pngBytes(2, 2));
   EXPECT_EQ(firstError(resolveIn(dir, edgeFoamGraph("sub/../foam.png"))), "");
   std::string e = firstError(resolveIn(dir, edgeFoamGraph("sub/../../outside/secret.png")));
   EXPECT_NE(e.find("leaves the graph's folder"), std::string::npos) << e;
@@ -236,7 +227,7 @@ TEST_F(TextureInput, AStepBackThatStaysInsideIsAcceptedAndAFolderIsNotAFile) {
 // texture option (found when the graph is checked, before the runtime decodes it again),
 // exit 1, writing no image: not a bare runtime message.
 TEST_F(TextureInput, ADecodeFailureAtRenderTimeIsAGraphErrorAtThePath) {
-  std::string good = pngBytes(4, 4);
+  std::string good = test::pngBytes(4, 4);
   test::writeFile(dir + "/broken.png", good.substr(0, 33) + std::string(40, 'x'));
   test::writeFile(dir + "/g.json", edgeFoamGraph("broken.png"));
   const std::string wg = test::shellQuote(test::watergraphBinary());
@@ -259,7 +250,7 @@ TEST_F(TextureInput, ADecodeFailureAtRenderTimeIsAGraphErrorAtThePath) {
 // buffer towards that size before finding the file short (5.6 s under ASan). Refused now
 // from the chunk lengths, before the decoder sees the bytes.
 std::string pngWithChunkPastTheEnd() {
-  std::string png = pngBytes(2, 2);
+  std::string png = test::pngBytes(2, 2);
   std::size_t idat = png.find("IDAT") - 4;
   const char declared[4] = {0x72, 0x00, 0x00, 0x00};  // 1,912,602,624
   png.replace(idat, 4, declared, 4);
@@ -279,7 +270,7 @@ TEST(PngChunks, EachChunkMustFitInsideTheFileUpToIend) {
   auto check = [](const std::string& b) {
     return checkPngChunks(reinterpret_cast<const unsigned char*>(b.data()), b.size());
   };
-  std::string good = pngBytes(3, 2);
+  std::string good = test::pngBytes(3, 2);
   EXPECT_EQ(check(good), "");
   EXPECT_EQ(check(good + "trailing bytes after IEND"), "");
   EXPECT_NE(check(pngWithChunkPastTheEnd()).find("IDAT chunk at byte 33"), std::string::npos);
