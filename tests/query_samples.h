@@ -29,6 +29,17 @@ inline const char* kSteepWaves = R"J([
   {"direction": [0.9, -0.4], "steepness": 0.4, "wavelength": 2.5, "amplitude": 0.012}])J";
 inline constexpr double kSteepSum = 0.969;  // sum Q k A of kSteepWaves, rounded down
 
+// A graph of the steep sea alone (kSteepWaves displacing the grid), written to dir/steep.json.
+inline std::string writeSteepGraph(const std::string& dir) {
+  test::writeFile(dir + "/steep.json",
+                  test::graphJson(R"J({"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" +
+                                      std::string(kSteepWaves) + R"J(}},
+      {"id": "surface", "type": "vertex_output", "inputs": {"position": "waves.position", "normal": "waves.normal"}})J",
+                                  R"J("vertex": {"position": "surface.position", "normal": "surface.normal"},
+      "fragment": {"color": [0, 0.2, 0.4]})J"));
+  return dir + "/steep.json";
+}
+
 // A moderate sea (sum Q k A = 0.415), under the mixed graph's other displacements.
 inline const char* kModerateWaves = R"J([
   {"direction": [1, 0.25], "steepness": 0.45, "wavelength": 14},

@@ -63,13 +63,7 @@ TEST(QueryJs, OceanAgreesWithTheCHeader) { expectSameAnswers(test::sourcePath("g
 
 TEST(QueryJs, SteepSeaAgreesWithTheCHeader) {
   std::string dir = test::makeTempDir("wg_query_js_steep");
-  test::writeFile(dir + "/steep.json",
-                  test::graphJson(R"J({"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" +
-                                      std::string(test::kSteepWaves) + R"J(}},
-      {"id": "surface", "type": "vertex_output", "inputs": {"position": "waves.position", "normal": "waves.normal"}})J",
-                                  R"J("vertex": {"position": "surface.position", "normal": "surface.normal"},
-      "fragment": {"color": [0, 0.2, 0.4]})J"));
-  expectSameAnswers(dir + "/steep.json", "", "");
+  expectSameAnswers(test::writeSteepGraph(dir), "", "");
   std::filesystem::remove_all(dir);
 }
 

@@ -135,7 +135,7 @@ TEST(NodeTextures, AMalformedPngIsAnErrorNamingTheNode) {
   { std::ofstream(dir + "/broken.png") << "not a png at all"; }
   nlohmann::json m = test::handManifest({}, {});
   m["textures"].push_back(
-      {{"name", "t0_broken"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "broken.png"}});
+      {{"name", "t0_broken"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "broken.png"}, {"file", "g.t0_broken.png"}});
   std::map<std::string, TextureOrigin> origins{{"broken.png", {dir, "pond.json:7:5: node 'foam'"}}};
   try {
     Renderer r(Manifest::fromJson(m), test::handWaterShaders(false, {}), test::smallSettings(), false, origins);
@@ -147,7 +147,7 @@ TEST(NodeTextures, AMalformedPngIsAnErrorNamingTheNode) {
   }
   nlohmann::json missing = test::handManifest({}, {});
   missing["textures"].push_back(
-      {{"name", "t0_gone"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "gone.png"}});
+      {{"name", "t0_gone"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "gone.png"}, {"file", "g.t0_gone.png"}});
   std::map<std::string, TextureOrigin> o2{{"gone.png", {dir, "pond.json:9:5: node 'ripples'"}}};
   try {
     Renderer r(Manifest::fromJson(missing), test::handWaterShaders(false, {}), test::smallSettings(), false, o2);
@@ -162,7 +162,7 @@ TEST(NodeTextures, ABuiltinTextureLoads) {
   auto ctx = EglContext::create(GlApi::DesktopGl45);
   nlohmann::json m = test::handManifest({}, {});
   m["textures"].push_back(
-      {{"name", "t0_foam"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "builtin:foam"}});
+      {{"name", "t0_foam"}, {"type", "sampler2D"}, {"binding", 1}, {"stages", {"fragment"}}, {"source", "builtin:foam"}, {"file", "g.t0_foam.png"}});
   EXPECT_NO_THROW(Renderer(Manifest::fromJson(m), test::handWaterShaders(false, {}), test::smallSettings(), false));
 }
 

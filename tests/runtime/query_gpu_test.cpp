@@ -226,13 +226,7 @@ TEST(QueryGpu, ExampleGraphsThatDisplaceTheirWater) {
 
 TEST(QueryGpu, SteepSeaAtItsCrests) {
   std::string dir = test::makeTempDir("wg_query_gpu_steep");
-  test::writeFile(dir + "/steep.json",
-                  test::graphJson(R"J({"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" +
-                                      std::string(test::kSteepWaves) + R"J(}},
-      {"id": "surface", "type": "vertex_output", "inputs": {"position": "waves.position", "normal": "waves.normal"}})J",
-                                  R"J("vertex": {"position": "surface.position", "normal": "surface.normal"},
-      "fragment": {"color": [0, 0.2, 0.4]})J"));
-  expectGpuAgrees(dir + "/steep.json", "steep");
+  expectGpuAgrees(test::writeSteepGraph(dir), "steep");
   std::filesystem::remove_all(dir);
 }
 
