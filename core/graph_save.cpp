@@ -31,8 +31,8 @@ constexpr std::size_t kMaxColumns = 100;
 struct Doc {
   enum class Kind { Atom, Object, Array } kind = Kind::Atom;
   std::string atom;
-  std::vector<std::pair<std::string, Doc>> members;  // quoted keys
-  std::vector<Doc> items;
+  std::vector<std::string> keys;  // an object's quoted keys, one per item
+  std::vector<Doc> items;         // an array's elements, or an object's values
   bool alwaysFlat = false;     // number arrays: one line however long (a colour, a vector)
   bool neverFlat = false;      // the tables a file is read by: one entry per line
 
@@ -49,9 +49,9 @@ std::string flat(const Doc& d) {
     case Doc::Kind::Atom: return d.atom;
     case Doc::Kind::Object: {
       std::string s = "{";
-      for (std::size_t i = 0; i < d.members.size(); ++i) {
+      for (std::size_t i = 0; i < d.items.size(); ++i) {
         if (i) s += ", ";
-        s += d.members[i].first + ": " + flat(d.members[i].second);
+        s += d.keys[i] + ": " + flat(d.items[i]);
       }
       return s + "}";
     }
@@ -69,8 +69,6 @@ std::string flat(const Doc& d) {
 
 bool mayBeFlat(const Doc& d) {
   if (d.neverFlat) return false;
-  for (const auto& m : d.members)
-    if (!mayBeFlat(m.second)) return false;
   for (const auto& item : d.items)
     if (!mayBeFlat(item)) return false;
   return true;
@@ -79,7 +77,7 @@ bool mayBeFlat(const Doc& d) {
 // Writes `d` at nesting `level`, starting at `column` (the caller has written the indent
 // and key before it).
 void write(std::string& out, const Doc& d, int level, std::size_t column) {
-  const bool empty = d.members.empty() && d.items.empty();
+  const bool empty = d.items.empty();
   if (d.kind == Doc::Kind::Atom || empty || d.alwaysFlat) {
     out += flat(d);
     return;
@@ -93,16 +91,16 @@ void write(std::string& out, const Doc& d, int level, std::size_t column) {
   }
   const bool object = d.kind == Doc::Kind::Object;
   out += object ? "{\n" : "[\n";
-  const std::size_t n = object ? d.members.size() : d.items.size();
+  const std::size_t n = d.items.size();
   for (std::size_t i = 0; i < n; ++i) {
     indent(out, level + 1);
     std::size_t at = static_cast<std::size_t>(level + 1) * 2;
     if (object) {
-      out += d.members[i].first;
+      out += d.keys[i];
       out += ": ";
-      at += d.members[i].first.size() + 2;
+      at += d.keys[i].size() + 2;
     }
-    write(out, object ? d.members[i].second : d.items[i], level + 1, at);
+    write(out, d.items[i], level + 1, at);
     out += i + 1 < n ? ",\n" : "\n";
   }
   indent(out, level);
@@ -139,7 +137,7 @@ Doc jsonDoc(const json& v) {
       Doc d;
       d.kind = Doc::Kind::Object;
       for (auto it = v.begin(); it != v.end(); ++it)  // nlohmann's objects are sorted
-        d.members.emplace_back(quote(it.key()), jsonDoc(it.value()));
+        d.keys.push_back(quote(it.key())), d.items.push_back(jsonDoc(it.value()));
       return d;
     }
     default: return Doc::of("null");  // binary/discarded never come from a graph file
@@ -158,7 +156,10 @@ Doc sourceDoc(const InputSource& s) {
 // Collects "key": value members of one object.
 class ObjectWriter {
  public:
-  void member(std::string_view key, Doc value) { doc_.members.emplace_back(quote(key), std::move(value)); }
+  void member(std::string_view key, Doc value) {
+    doc_.keys.push_back(quote(key));
+    doc_.items.push_back(std::move(value));
+  }
   void member(std::string_view key, std::string atom) { member(key, Doc::of(std::move(atom))); }
   Doc finish(bool neverFlat = false) {
     doc_.kind = Doc::Kind::Object;
