@@ -18,12 +18,11 @@
 #include <thread>
 #include <unistd.h>
 
-#include <stb/stb_image_write.h>
-
 #include "core/file_read.h"
 #include "core/graph_io.h"
 #include "core/png_decode.h"
 #include "core/texture_check.h"
+#include "png_bytes.h"
 #include "test_support.h"
 
 namespace wg {
@@ -57,16 +56,6 @@ std::string leafGraph(const std::string& name) {
   return "{\"version\": 1, \"name\": \"" + name +
          "\", \"interface\": {\"outputs\": {\"v\": {\"type\": \"float\", \"source\": \"n.out\"}}},"
          " \"nodes\": [{\"id\": \"n\", \"type\": \"saturate\", \"inputs\": {\"x\": 0.5}}]}";
-}
-
-std::string pngBytes(int w, int h) {
-  std::vector<unsigned char> rgba(static_cast<size_t>(w) * static_cast<size_t>(h) * 4, 90);
-  std::string out;
-  auto append = [](void* context, void* data, int size) {
-    static_cast<std::string*>(context)->append(static_cast<const char*>(data), static_cast<size_t>(size));
-  };
-  stbi_write_png_to_func(append, &out, w, h, 4, rgba.data(), w * 4);
-  return out;
 }
 
 class FileRace : public ::testing::Test {
@@ -121,8 +110,8 @@ TEST_F(FileRace, AnImportSwappedForALinkNeverLoadsTheOutsideFile) {
 // and the decoding of the file: the decoder insists on the very file that was checked.
 TEST_F(FileRace, ATextureFolderSwappedForALinkNeverDecodesTheOutsideFile) {
   fs::create_directories(dir + "/tex");
-  test::writeFile(dir + "/tex/foam.png", pngBytes(2, 2));
-  test::writeFile(outside + "/foam.png", pngBytes(3, 5));
+  test::writeFile(dir + "/tex/foam.png", test::pngBytes(2, 2, 90));
+  test::writeFile(outside + "/foam.png", test::pngBytes(3, 5, 90));
   fs::create_directory_symlink("../outside", dir + "/tex.swap");
   int decoded = 0, refused = 0;
   {
