@@ -26,11 +26,14 @@
 #include "editor/graph_change.h"
 #include "editor/graph_layout.h"
 #include "editor/inspector.h"
+#include "editor/key_events.h"
 #include "editor/live_preview.h"
 #include "editor/node_canvas.h"
 #include "core/node_preview_graph.h"
 #include "editor/orbit_camera.h"
+#include "editor/script_input.h"
 #include "editor/script_runner.h"
+#include "editor/unreached_nodes.h"
 #include "nodes/registry.h"
 #include "runtime/glfw_context.h"
 #include "runtime/image.h"
@@ -122,6 +125,8 @@ class App : private ScriptHost {
   // --- subgraphs: the file being edited, and the ones it was opened from ---
   std::string openSubgraph(const std::string& node) override;
   std::string back(bool discard) override;
+  std::string input(const ScriptStep& step) override { return input_ ? input_->apply(step.args) : "no window"; }
+  bool inputPending() const override { return input_ && input_->busy(); }
   void showFileName();
   void navigate();  // what the UI asked for in the last frame
   // --- UI ---
@@ -150,6 +155,7 @@ class App : private ScriptHost {
   std::optional<Graph> goodGraph_;  // what the preview runs
   long attemptedRevision_ = -1;
   std::vector<Diagnostic> errors_;
+  std::vector<Diagnostic> goodWarnings_;  // the warnings of the graph the preview runs
   std::string errorContext_;
   std::string status_;
 
@@ -176,6 +182,8 @@ class App : private ScriptHost {
 
   NodeCanvas canvas_;
   std::optional<ScriptRunner> script_;
+  std::unique_ptr<ScriptedInput> input_;  // the script's keys and pointer
+  std::vector<KeyPress> keys_;            // this frame's key presses (editor/key_events.h)
   std::string pendingScreenshot_;
   bool scriptFailed_ = false;
 
@@ -295,6 +303,8 @@ std::optional<Graph> App::graphToCompile(Diagnostics& d) const {
   if (editor_.revision() == diskRevision_) g = diskGraph_;
   else g = parseGraph(saveGraph(editor_.graph()), path_, d);
   if (!g || !loadImports(*g, d)) return std::nullopt;
+  // Half-wired: what no output reaches is left out; its missing inputs are warnings.
+  for (Diagnostic& w : pruneUnreachedNodes(*g, registry_)) d.add(std::move(w));
   // A function graph needs no output slots; without any it shows its first interface output.
   std::string why;
   if (auto shown = interfaceOutputGraph(*g, &why)) return shown;
@@ -317,7 +327,7 @@ void App::processChange() {
         for (const auto& name : change.parameters)
           if (thumb_) thumb_->setParameter(name, editor_.graph().findParameter(name)->defaultValue);
         goodGraph_ = editor_.graph();
-        errors_.clear();
+        errors_ = goodWarnings_;  // the same nodes as compiled: the same warnings
         if (change.parameters.empty()) pending_.active = false;  // a moved node: no pixels change
         pending_.kind = "uniform";
         previewDirty_ = true;
@@ -330,8 +340,8 @@ void App::processChange() {
   auto g = graphToCompile(d);
   if (g && preview_.rebuild(*g, registry_, d, &t)) {
     goodGraph_ = editor_.graph();
-    errors_.clear();
-    for (const auto& w : d.sorted()) errors_.push_back(w);  // warnings, if any
+    errors_ = goodWarnings_ = d.sorted();  // warnings, if any (half-wired nodes among them)
+    for (const auto& w : errors_) std::cerr << formatText(w) << "\n";
     pending_.kind = "recompile";
     pending_.compileMs = t.compileMs;
     pending_.glMs = t.rendererMs;
@@ -364,7 +374,10 @@ void App::rebuildThumbnail() {
   }
   thumbPort_ = std::clamp(thumbPort_, 0, static_cast<int>(ports->outputs.size()) - 1);
   std::string why;
-  auto g = nodeOutputGraph(editor_.graph(), registry_, selected_, ports->outputs[static_cast<size_t>(thumbPort_)].name, &why);
+  // What neither the outputs nor this node reach is left out, as for the preview.
+  Graph wired = editor_.graph();
+  pruneUnreachedNodes(wired, registry_, {selected_});
+  auto g = nodeOutputGraph(wired, registry_, selected_, ports->outputs[static_cast<size_t>(thumbPort_)].name, &why);
   if (!g) {
     thumbMessage_ = why;
     return;
@@ -710,17 +723,22 @@ void App::drawCanvasPanel(float x, float y, float w, float h) {
   placeNext(x, y, w, h);
   ImGui::Begin("Nodes", nullptr, kPanel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   ImGui::TextDisabled("drag: move / link from an output | right-click: add node, disconnect | Del: delete | Ctrl+Z / Ctrl+Y");
-  if (haveGraph_) canvas_.draw(editor_, registry_, selected_);
+  if (haveGraph_) canvas_.draw(editor_, registry_, selected_, errors_, keys_);
   if (std::string node = canvas_.takeOpenRequest(); !node.empty()) openRequest_ = node;
   ImGui::End();
 }
 
+// From the frame's key presses (editor/key_events.h), so a tap between two frames counts.
+// Not while a text field has the keyboard: Ctrl+Z there is the field's own undo.
 void App::shortcuts() {
-  ImGuiIO& io = ImGui::GetIO();
-  if (!io.KeyCtrl || io.WantTextInput) return;
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Z), false)) io.KeyShift ? editor_.redo() : editor_.undo();
-  if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Y), false)) editor_.redo();
-  if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) writeGraph(path_);
+  if (ImGui::GetIO().WantTextInput) return;
+  for (const KeyPress& k : keys_) {
+    if (!(k.mods & GLFW_MOD_CONTROL)) continue;
+    bool shift = k.mods & GLFW_MOD_SHIFT;
+    if (k.key == GLFW_KEY_Z) shift ? editor_.redo() : editor_.undo();
+    if (k.key == GLFW_KEY_Y) editor_.redo();
+    if (k.key == GLFW_KEY_S) writeGraph(path_);
+  }
 }
 
 void App::drawUi() {
@@ -772,6 +790,8 @@ int App::run() {
   ImGui::StyleColorsDark();
   ImGui_ImplGlfw_InitForOpenGL(window_.window(), true);
   ImGui_ImplOpenGL3_Init("#version 450 core");
+  installKeyQueue(window_.window());
+  if (script_) input_ = std::make_unique<ScriptedInput>(window_.window());
 
   processChange();  // the first compile, before the first frame
   renderPreviews();
@@ -796,9 +816,12 @@ int App::run() {
       scriptFailed_ = true;
     }
 
+    keys_ = takeKeyPresses();  // after the script's, which come as GLFW's do
+
     long before = editor_.revision();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    if (input_) input_->overridePointer();
     ImGui::NewFrame();
     drawUi();
     ImGui::Render();

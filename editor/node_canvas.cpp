@@ -1,20 +1,26 @@
 #include "editor/node_canvas.h"
 
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <set>
 #include <vector>
 
 #include "core/graph_node_type.h"
 #include "core/number_format.h"
 #include "editor/node_palette.h"
+#include "editor/widget_rects.h"
 
 namespace wg::editor {
 namespace {
 
 constexpr float kNodeWidth = 180, kHeader = 22, kRow = 18, kPortRadius = 5;
+constexpr ImU32 kWarningColor = IM_COL32(255, 160, 60, 255);  // a half-wired node's required inputs
+constexpr ImU32 kErrorColor = IM_COL32(235, 80, 70, 255);
 
 // The graph's output slots (outputSlotTable()) are drawn as one more node right of the others.
 constexpr const char* kOutputsId = "";  // the pseudo node's id in InputTarget terms
@@ -281,21 +287,38 @@ void NodeCanvas::drawLinks(const Layout& l, ImDrawList* dl) const {
   }
 }
 
-void NodeCanvas::drawBoxes(const Layout& l, ImDrawList* dl, const std::string& selected) const {
+void NodeCanvas::drawBoxes(const Layout& l, ImDrawList* dl, const std::string& selected,
+                           const std::vector<Diagnostic>& diagnostics) const {
   for (const auto& b : l.boxes) {
     bool isSelected = !b.id.empty() && b.id == selected;
+    bool hasError = false, hasWarning = false;
+    std::set<std::string> warnedInputs;  // "input 'color'", as diagnostics name ports
+    for (const Diagnostic& d : diagnostics) {
+      if (b.id.empty() || d.node != b.id) continue;
+      if (d.severity == Severity::Error) hasError = true;
+      if (d.severity == Severity::Warning) hasWarning = true, warnedInputs.insert(d.port);
+    }
     dl->AddRectFilled(b.min, b.max, IM_COL32(52, 56, 66, 240), 5);
     ImU32 header = b.id.empty() || b.id == kInterfaceId ? IM_COL32(110, 70, 40, 255) : b.instance ? IM_COL32(60, 105, 70, 255) : IM_COL32(40, 80, 120, 255);
     dl->AddRectFilled(b.min, ImVec2(b.max.x, b.min.y + kHeader), header, 5);
-    dl->AddRect(b.min, b.max, isSelected ? IM_COL32(255, 220, 120, 255) : IM_COL32(90, 95, 110, 255), 5, 0,
-                isSelected ? 2.5f : 1.0f);
+    ImU32 border = isSelected ? IM_COL32(255, 220, 120, 255)
+                   : hasError ? kErrorColor
+                   : hasWarning ? kWarningColor
+                                : IM_COL32(90, 95, 110, 255);
+    dl->AddRect(b.min, b.max, border, 5, 0, isSelected || hasError || hasWarning ? 2.5f : 1.0f);
     dl->AddText(ImVec2(b.min.x + 6, b.min.y + 4), IM_COL32(235, 235, 235, 255), b.title.c_str());
     for (size_t i = 0; i < b.inputs.size(); ++i) {
       const Port& p = b.inputs[i];
       bool linked = !b.inputNotes[i].empty() || (l.sourceOf({b.id, p.name}) != nullptr);
-      dl->AddCircleFilled(p.at, kPortRadius, linked ? IM_COL32(140, 200, 255, 255) : IM_COL32(120, 120, 130, 255));
-      std::string label = p.name + (b.inputNotes[i].empty() ? "" : " = " + b.inputNotes[i]);
-      dl->AddText(ImVec2(p.at.x + 9, p.at.y - 7), IM_COL32(210, 210, 210, 255), label.c_str());
+      bool warned = warnedInputs.count("input '" + p.name + "'") > 0;
+      dl->AddCircleFilled(p.at, kPortRadius, warned ? kWarningColor : linked ? IM_COL32(140, 200, 255, 255) : IM_COL32(120, 120, 130, 255));
+      std::string label = p.name + (b.inputNotes[i].empty() ? "" : " = " + b.inputNotes[i]) + (warned ? " (required)" : "");
+      // Clipped to the box's left half: a long note (a subgraph instance's vec2 default)
+      // must not run over the output labels on the right.
+      bool sharesRow = i < b.outputs.size();
+      ImVec4 clip(p.at.x + 9, b.min.y, sharesRow ? b.min.x + kNodeWidth * 0.62f : b.max.x - 4, b.max.y);
+      dl->AddText(nullptr, 0.0f, ImVec2(p.at.x + 9, p.at.y - 7), warned ? kWarningColor : IM_COL32(210, 210, 210, 255),
+                  label.c_str(), nullptr, 0.0f, &clip);
     }
     for (const auto& p : b.outputs) {
       dl->AddCircleFilled(p.at, kPortRadius, IM_COL32(255, 200, 120, 255));
@@ -306,28 +329,44 @@ void NodeCanvas::drawBoxes(const Layout& l, ImDrawList* dl, const std::string& s
 }
 
 // The graph's subgraphs and every registered node type (editor/node_palette.h), by family,
-// filtered by name; the chosen one is added where the palette was opened.
-void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected) {
+// filtered by name; the chosen one is added where the palette was opened. One entry is
+// highlighted (the first of each new filter): Enter adds it, Up and Down move it.
+void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected,
+                             const std::vector<KeyPress>& keys) {
   if (!ImGui::BeginPopup("palette")) return;
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(), paletteIndex_ = 0;
   ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
+  const std::vector<PaletteEntry> entries = paletteEntries(editor.graph(), registry, filter_);
+  if (shownFilter_ != filter_) shownFilter_ = filter_, paletteIndex_ = 0;
+  const int count = static_cast<int>(entries.size());
+  bool moved = false;
+  for (const KeyPress& k : keys) {
+    if (k.key == GLFW_KEY_DOWN && count > 0) paletteIndex_ = std::min(paletteIndex_ + 1, count - 1), moved = true;
+    if (k.key == GLFW_KEY_UP && count > 0) paletteIndex_ = std::max(paletteIndex_ - 1, 0), moved = true;
+  }
+  const PaletteEntry* chosen = nullptr;
+  if (count > 0 && (wasPressed(keys, GLFW_KEY_ENTER) || wasPressed(keys, GLFW_KEY_KP_ENTER))) chosen = &entries[static_cast<size_t>(paletteIndex_)];
   ImGui::BeginChild("types", ImVec2(260, 320));
   std::string family;
-  for (const PaletteEntry& e : paletteEntries(editor.graph(), registry, filter_)) {
+  for (int i = 0; i < count; ++i) {
+    const PaletteEntry& e = entries[static_cast<size_t>(i)];
     if (e.family != family) ImGui::TextDisabled("%s", e.family.c_str());
     family = e.family;
-    if (ImGui::Selectable(e.type.c_str())) {
-      std::string id;
-      if (editor.addNode(e.type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty()) selected = id;
-      ImGui::CloseCurrentPopup();
-    }
+    if (ImGui::Selectable(e.type.c_str(), i == paletteIndex_)) chosen = &e;
+    if (i == paletteIndex_ && moved) ImGui::SetScrollHereY();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.summary.c_str());
   }
   ImGui::EndChild();
+  if (chosen) {
+    std::string id;
+    if (editor.addNode(chosen->type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty()) selected = id;
+    ImGui::CloseCurrentPopup();
+  }
   ImGui::EndPopup();
 }
 
-void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string& selected) {
+void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string& selected,
+                      const std::vector<Diagnostic>& diagnostics, const std::vector<KeyPress>& keys) {
   ImGuiIO& io = ImGui::GetIO();
   ImVec2 origin = ImGui::GetCursorScreenPos();
   ImVec2 size = ImGui::GetContentRegionAvail();
@@ -340,6 +379,7 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                              ImGuiButtonFlags_MouseButtonMiddle);
   const bool hovered = ImGui::IsItemHovered();
+  widgetRects().note("canvas", {origin.x, origin.y, origin.x + size.x, origin.y + size.y});
   const ImVec2 mouse = io.MousePos;
 
   Layout l = layout(editor.graph(), registry, origin);
@@ -353,16 +393,15 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   if (hovered && io.MouseWheel != 0) scroll_[1] += io.MouseWheel * 40;
 
   drawLinks(l, dl);
-  drawBoxes(l, dl, selected);
+  drawBoxes(l, dl, selected, diagnostics);
   dl->PopClipRect();
 
   // Delete while the mouse is over the canvas.
   if (hovered && !selected.empty() && !io.WantTextInput &&
-      (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Delete)) ||
-       ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Backspace)))) {
+      (wasPressed(keys, GLFW_KEY_DELETE) || wasPressed(keys, GLFW_KEY_BACKSPACE))) {
     if (editor.deleteNode(selected).empty()) selected.clear();
   }
-  drawPalette(editor, registry, selected);
+  drawPalette(editor, registry, selected, keys);
 }
 
 }  // namespace wg::editor

@@ -9,6 +9,10 @@
 #include <array>
 #include <string>
 #include <utility>
+#include <vector>
+
+#include "core/diagnostic.h"
+#include "editor/key_events.h"
 
 #include "core/graph_edit.h"
 #include "core/registry.h"
@@ -22,7 +26,12 @@ class NodeCanvas {
  public:
   // Draws into the current ImGui window, filling the rest of it. `selected` is the selected
   // node id ("" for none) and may be changed.
-  void draw(GraphEditor& editor, const Registry& registry, std::string& selected);
+  // `diagnostics` (the error list) are drawn on their nodes: an error outlines the node in
+  // red; a warning on an input (a half-wired node's required input) marks it in orange.
+  // `keys` are the frame's key presses (editor/key_events.h): Delete, and Enter and the
+  // arrows in the palette.
+  void draw(GraphEditor& editor, const Registry& registry, std::string& selected,
+            const std::vector<Diagnostic>& diagnostics = {}, const std::vector<KeyPress>& keys = {});
   // The instance node double-clicked since the last call ("" for none): the app opens
   // its subgraph between frames.
   std::string takeOpenRequest() { return std::exchange(openRequest_, {}); }
@@ -35,8 +44,9 @@ class NodeCanvas {
   void continueDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse, ImDrawList* dl);
   void finishDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse);
   void drawLinks(const Layout& l, ImDrawList* dl) const;
-  void drawBoxes(const Layout& l, ImDrawList* dl, const std::string& selected) const;
-  void drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected);
+  void drawBoxes(const Layout& l, ImDrawList* dl, const std::string& selected,
+                 const std::vector<Diagnostic>& diagnostics) const;
+  void drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected, const std::vector<KeyPress>& keys);
 
   enum class Drag { None, MoveNode, Link, Pan };
   Drag drag_ = Drag::None;
@@ -50,6 +60,8 @@ class NodeCanvas {
   bool hasDetached_ = false;
   std::array<float, 2> paletteAt_{};  // canvas position for a node added from the palette
   char filter_[64] = "";
+  std::string shownFilter_;  // the filter paletteIndex_ is for
+  int paletteIndex_ = 0;     // the highlighted entry: Enter adds it, the arrows move it
   std::string openRequest_;
 };
 

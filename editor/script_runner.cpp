@@ -11,6 +11,7 @@ bool ScriptRunner::fail(const std::string& where, const std::string& why) {
 }
 
 bool ScriptRunner::step(ScriptHost& host) {
+  if (host.inputPending()) return true;  // a click or drag takes several frames
   if (waitFrames_ > 0) {
     --waitFrames_;
     return true;
@@ -66,6 +67,8 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     waitFrames_ = a.contains("count") && a["count"].is_number_integer() ? a["count"].get<int>() : 1;
     return true;
   }
+  if (step.op == "key" || step.op == "type" || step.op == "click" || step.op == "drag" || step.op == "wheel")
+    return done(host.input(step));
   if (step.op == "open_subgraph") return done(host.openSubgraph(str("node")));
   if (step.op == "back") {
     if (a.contains("discard") && !a["discard"].is_boolean()) return fail(where, "\"discard\" must be true or false");

@@ -33,6 +33,11 @@ class ScriptHost {
   // subgraph as it is on disk; refused while the subgraph has unsaved changes unless
   // `discard`.
   virtual std::string back(bool discard) = 0;
+  // Keys and pointer as a person gives them ("key", "type", "click", "drag", "wheel";
+  // editor/script_input.h); a host without a window takes none.
+  virtual std::string input(const ScriptStep& step) { return "'" + step.op + "' needs the editor's window"; }
+  // The pointer frames of the last input step are still being played.
+  virtual bool inputPending() const { return false; }
 };
 
 class ScriptRunner {
