@@ -27,6 +27,7 @@
 #include "editor/graph_layout.h"
 #include "editor/inspector.h"
 #include "editor/key_events.h"
+#include "editor/layout_patch.h"
 #include "editor/live_preview.h"
 #include "editor/node_canvas.h"
 #include "core/node_preview_graph.h"
@@ -268,6 +269,9 @@ bool App::writeGraph(const std::string& path) {
     return false;
   }
   std::string text = saveGraph(editor_.graph());
+  // Nodes moved, nothing else: the file keeps its own formatting (editor/layout_patch.h).
+  if (path == path_ && diskRevision_ >= 0)
+    if (auto patched = patchLayoutOnly(diskText_, diskGraph_, editor_.graph())) text = std::move(*patched);
   Diagnostics d;
   // Saving the open graph rewrites it in place: a link the user opened stays a link, as fmt
   // keeps it (codegen/output_files.h); a new path (save as) is written as it is named.
