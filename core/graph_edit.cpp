@@ -308,6 +308,37 @@ std::string GraphEditor::moveNode(const std::string& id, std::array<double, 2> p
   return "";
 }
 
+std::string GraphEditor::moveNodes(const std::vector<std::pair<std::string, std::array<double, 2>>>& positions) {
+  std::string key = "move:";
+  bool changes = false;
+  for (const auto& [id, position] : positions) {
+    const Node* n = graph_.findNode(id);
+    if (!n) return "no node '" + id + "'";
+    if (!positionFits(position)) return "a node position must be finite in float32 range";
+    changes |= n->editorPosition != position;
+    key += id + ",";
+  }
+  if (!changes) return "";
+  if (positions.size() == 1) return moveNode(positions[0].first, positions[0].second);
+  record("move " + std::to_string(positions.size()) + " nodes", key);
+  for (const auto& [id, position] : positions) findNode(id)->editorPosition = position;
+  return "";
+}
+
+std::string GraphEditor::deleteNodes(const std::vector<std::string>& ids) {
+  for (const auto& id : ids)
+    if (!graph_.findNode(id)) return "no node '" + id + "'";
+  if (ids.empty()) return "";
+  if (ids.size() == 1) return deleteNode(ids[0]);
+  record("delete " + std::to_string(ids.size()) + " nodes", "");
+  std::set<std::string> gone(ids.begin(), ids.end());
+  auto reads = [&](const InputSource& s) { return s.kind == InputSource::Kind::NodeOutput && gone.count(s.name); };
+  std::erase_if(graph_.nodes, [&](const Node& n) { return gone.count(n.id) > 0; });
+  for (auto& n : graph_.nodes) std::erase_if(n.inputs, [&](const NodeInput& in) { return reads(in.source); });
+  std::erase_if(graph_.outputs, [&](const GraphOutput& o) { return reads(o.source); });
+  return "";
+}
+
 void GraphEditor::adoptImports(const Graph& loaded) {
   auto adopt = [&](Graph& g) {
     for (Import& im : g.imports)

@@ -51,6 +51,12 @@ class GraphEditor {
   // Removes the node and every input and output slot that reads it.
   std::string deleteNode(const std::string& id);
   std::string moveNode(const std::string& id, std::array<double, 2> position);
+  // Several nodes at once (a selection dragged on the canvas, a pasted group), one undo step
+  // (merged while the same nodes keep moving, like moveNode). Refused whole if any id is
+  // unknown or any position does not fit.
+  std::string moveNodes(const std::vector<std::pair<std::string, std::array<double, 2>>>& positions);
+  // Several nodes and their links, one undo step.
+  std::string deleteNodes(const std::vector<std::string>& ids);
   // Replaces the whole graph (a reload from disk), undoably.
   void replace(Graph graph, const std::string& label);
   // Takes the imported graphs of `loaded` (the same graph with its imports loaded again)

@@ -32,9 +32,12 @@
 #include "editor/node_canvas.h"
 #include "core/node_preview_graph.h"
 #include "editor/orbit_camera.h"
+#include "editor/panel_layout.h"
+#include "editor/panel_splitters.h"
 #include "editor/script_input.h"
 #include "editor/script_runner.h"
 #include "editor/unreached_nodes.h"
+#include "editor/widget_rects.h"
 #include "nodes/registry.h"
 #include "runtime/glfw_context.h"
 #include "runtime/image.h"
@@ -80,7 +83,12 @@ class App : private ScriptHost {
     cameraName_ = options.camera;
     if (options.time) scene_.time = *options.time, playing_ = false;
     view_ = options.view;
-    if (!options.script.empty() || options.frames > 0) playing_ = false;  // deterministic runs
+    bool batch = !options.script.empty() || options.frames > 0;
+    if (batch) playing_ = false;  // deterministic runs
+    // A batch run neither reads nor writes the user's settings unless it names a file.
+    settingsPath_ = !options.settings.empty() ? options.settings : batch ? "" : defaultSettingsPath();
+    if (!settingsPath_.empty())
+      if (auto remembered = loadPanelLayout(settingsPath_)) panels_ = *remembered;
   }
 
   int run();
@@ -182,6 +190,8 @@ class App : private ScriptHost {
   std::optional<Latency> lastLatency_;
 
   NodeCanvas canvas_;
+  PanelLayout panels_;        // the splitters' positions
+  std::string settingsPath_;  // where they are remembered ("" : not remembered)
   std::optional<ScriptRunner> script_;
   std::unique_ptr<ScriptedInput> input_;  // the script's keys and pointer
   std::vector<KeyPress> keys_;            // this frame's key presses (editor/key_events.h)
@@ -542,8 +552,9 @@ void App::navigate() {
 // ---------------------------------------------------------------------------------------
 // UI
 
+// Panels stay under the splitters (editor/panel_splitters.h) when clicked.
 constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                                    ImGuiWindowFlags_NoSavedSettings;
+                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 void placeNext(float x, float y, float w, float h) {
   ImGui::SetNextWindowPos(ImVec2(x, y), ImGuiCond_Always);
@@ -726,7 +737,8 @@ void App::drawErrorPanel(float x, float y, float w, float h) {
 void App::drawCanvasPanel(float x, float y, float w, float h) {
   placeNext(x, y, w, h);
   ImGui::Begin("Nodes", nullptr, kPanel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  ImGui::TextDisabled("drag: move / link from an output | right-click: add node, disconnect | Del: delete | Ctrl+Z / Ctrl+Y");
+  ImGui::TextDisabled("drag: move, link from an output, box-select | wheel, = -: zoom | Home / F: frame all / selection | "
+                      "middle or Alt+drag: pan | right-click: add, disconnect | Del");
   if (haveGraph_) canvas_.draw(editor_, registry_, selected_, errors_, keys_);
   if (std::string node = canvas_.takeOpenRequest(); !node.empty()) openRequest_ = node;
   ImGui::End();
@@ -749,11 +761,16 @@ void App::drawUi() {
   int fw = 0, fh = 0;
   window_.framebufferSize(&fw, &fh);
   float w = static_cast<float>(fw), h = static_cast<float>(fh);
-  float left = std::floor(w * 0.62f), top = std::floor(h * 0.56f);
+  widgetRects().clear();  // noted again as they are drawn
+  float left = std::floor(w * panels_.leftWidth), top = std::floor(h * panels_.previewHeight);
+  float inspector = std::floor(h * panels_.inspectorHeight);
   drawPreviewPanel(0, 0, left, top);
   drawCanvasPanel(0, top, left, h - top);
-  drawInspectorPanel(left, 0, w - left, std::floor(h * 0.68f));
-  drawErrorPanel(left, std::floor(h * 0.68f), w - left, h - std::floor(h * 0.68f));
+  drawInspectorPanel(left, 0, w - left, inspector);
+  drawErrorPanel(left, inspector, w - left, h - inspector);
+  if (drawPanelSplitters(panels_, w, h) && !settingsPath_.empty()) {
+    if (std::string why = savePanelLayout(settingsPath_, panels_); !why.empty()) status_ = "panel sizes not remembered: " + why;
+  }
   shortcuts();
 }
 
@@ -843,6 +860,10 @@ int App::run() {
     glViewport(0, 0, fw, fh);
     glClearColor(0.1f, 0.1f, 0.12f, 1);
     glClear(GL_COLOR_BUFFER_BIT);
+    // No preview program stays current: ImGui's backend restores the program it found, and
+    // one deleted meanwhile (a thumbnail let go after this frame) would then be a GL error
+    // (glUseProgram of a deleted name) that the next preview frame reports as WG043.
+    glUseProgram(0);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     bool scriptDone = scriptFailed_ || !script_ || script_->done();
     bool lastFrame = batch && scriptDone && --framesAfterScript <= 0;

@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", o.screenshot, "write the window as a PNG after the last frame, then exit");
   app.add_option("--frames", o.frames, "run this many frames (after the script), then exit");
   app.add_flag("--stats", o.stats, "print each edit's edit-to-pixels latency");
+  app.add_option("--settings", o.settings,
+                 "remember panel sizes in this file (default: ~/.config/watergraph/editor.json; batch runs: none)");
   wg::cli::addViewFlags(&app, o.view);
   // A usage error is one line naming the option, as watergraph's.
   app.failure_message([](const CLI::App*, const CLI::Error& e) {

@@ -133,6 +133,13 @@ std::string ScriptedInput::apply(const nlohmann::json& step) {
     rest_ = to;
     return "";
   }
+  if (op == "hover") {
+    std::array<float, 2> at{};
+    if (std::string why = point(step, "widget", "at", &at); !why.empty()) return why;
+    frames_.push_back({at, -1, 0, false});
+    rest_ = at;
+    return "";
+  }
   if (op == "wheel") {
     std::array<float, 2> at{};
     if (std::string why = point(step, "widget", "at", &at); !why.empty()) return why;

@@ -1,7 +1,10 @@
 #include "editor/script_runner.h"
 
 #include <fstream>
+#include <iostream>
 #include <sstream>
+
+#include "editor/widget_rects.h"
 
 namespace wg::editor {
 
@@ -67,8 +70,16 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     waitFrames_ = a.contains("count") && a["count"].is_number_integer() ? a["count"].get<int>() : 1;
     return true;
   }
-  if (step.op == "key" || step.op == "type" || step.op == "click" || step.op == "drag" || step.op == "wheel")
+  if (step.op == "key" || step.op == "type" || step.op == "click" || step.op == "drag" || step.op == "wheel" ||
+      step.op == "hover")
     return done(host.input(step));
+  if (step.op == "print_widgets") {
+    // Where the named widgets were drawn in the last frame, for a test to measure.
+    for (const auto& [name, r] : widgetRects().all())
+      if (name.rfind(str("prefix"), 0) == 0)
+        std::cout << "widget " << name << ": " << r[0] << " " << r[1] << " " << r[2] << " " << r[3] << std::endl;
+    return true;
+  }
   if (step.op == "open_subgraph") return done(host.openSubgraph(str("node")));
   if (step.op == "back") {
     if (a.contains("discard") && !a["discard"].is_boolean()) return fail(where, "\"discard\" must be true or false");

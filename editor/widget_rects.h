@@ -14,6 +14,8 @@ class WidgetRects {
  public:
   using Rect = std::array<float, 4>;  // x0, y0, x1, y1 in window pixels
   void note(const std::string& name, Rect r) { rects_[name] = r; }
+  void clear() { rects_.clear(); }
+  const std::map<std::string, Rect>& all() const { return rects_; }
   std::optional<Rect> find(const std::string& name) const {
     auto it = rects_.find(name);
     return it == rects_.end() ? std::nullopt : std::optional<Rect>(it->second);

@@ -164,6 +164,31 @@ TEST(GraphEdit, UndoRedoRestoreExactStates) {
   EXPECT_FALSE(e.canRedo());
 }
 
+TEST(GraphEdit, SeveralNodesMoveAndGoAsOneUndoStep) {
+  GraphEditor e(lake(), &defaultRegistry());
+  std::string before = saveGraph(e.graph());
+  // A drag: the same nodes moved frame after frame merge into one step until sealed.
+  ASSERT_EQ(e.moveNodes({{"uv", {1, 2}}, {"radius", {3, 4}}}), "");
+  ASSERT_EQ(e.moveNodes({{"uv", {5, 6}}, {"radius", {7, 8}}}), "");
+  EXPECT_EQ(e.graph().findNode("radius")->editorPosition, (std::array<double, 2>{7, 8}));
+  EXPECT_NE(e.moveNodes({{"uv", {0, 0}}, {"ghost", {0, 0}}}), "") << "an unknown id refuses the whole move";
+  EXPECT_EQ(e.graph().findNode("uv")->editorPosition, (std::array<double, 2>{5, 6}));
+  EXPECT_NE(e.moveNodes({{"uv", {0, 0}}, {"radius", {0, 1e39}}}), "");
+  e.seal();
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(saveGraph(e.graph()), before) << "one step";
+
+  ASSERT_EQ(e.deleteNodes({"radius", "shore"}), "");
+  EXPECT_FALSE(e.graph().findNode("radius"));
+  EXPECT_FALSE(e.graph().findNode("shore"));
+  for (const Node& n : e.graph().nodes)
+    for (const NodeInput& in : n.inputs) EXPECT_TRUE(in.source.name != "radius" && in.source.name != "shore") << n.id;
+  EXPECT_NE(e.deleteNodes({"uv", "ghost"}), "");
+  EXPECT_TRUE(e.graph().findNode("uv")) << "refused whole";
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(saveGraph(e.graph()), before);
+}
+
 TEST(GraphEdit, DirtyFollowsTheSavedState) {
   GraphEditor e(lake(), &defaultRegistry());
   ASSERT_EQ(e.moveNode("uv", {1, 2}), "");
