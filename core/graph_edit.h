@@ -57,6 +57,11 @@ class GraphEditor {
   std::string moveNodes(const std::vector<std::pair<std::string, std::array<double, 2>>>& positions);
   // Several nodes and their links, one undo step.
   std::string deleteNodes(const std::vector<std::string>& ids);
+  // Adds `nodes` (a paste) as one undo step. Refused whole, the graph unchanged, when an id
+  // is not an identifier, is taken or repeats, a type is unknown (with a registry), a link
+  // names a node that is neither in the graph nor among `nodes`, the links among `nodes`
+  // close a cycle, a position does not fit, or the graph would pass its node limit.
+  std::string insertNodes(std::vector<Node> nodes);
   // Replaces the whole graph (a reload from disk), undoably.
   void replace(Graph graph, const std::string& label);
   // Takes the imported graphs of `loaded` (the same graph with its imports loaded again)

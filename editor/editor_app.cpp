@@ -20,6 +20,7 @@
 #include "core/graph_imports.h"
 #include "core/graph_io.h"
 #include "core/graph_node_type.h"
+#include "editor/clipboard_graph.h"
 #include "editor/edit_script.h"
 #include "editor/error_list.h"
 #include "editor/file_watcher.h"
@@ -146,6 +147,7 @@ class App : private ScriptHost {
   void drawCanvasPanel(float x, float y, float w, float h);
   void drawSubgraphBar();
   void shortcuts();
+  void clipboardCommand(int key);  // GLFW_KEY_C, X, V or D with Ctrl
   void writeScreenshot(const std::string& path);
 
   EditorOptions options_;
@@ -754,6 +756,43 @@ void App::shortcuts() {
     if (k.key == GLFW_KEY_Z) shift ? editor_.redo() : editor_.undo();
     if (k.key == GLFW_KEY_Y) editor_.redo();
     if (k.key == GLFW_KEY_S) writeGraph(path_);
+    if (k.key == GLFW_KEY_C || k.key == GLFW_KEY_X || k.key == GLFW_KEY_V || k.key == GLFW_KEY_D) clipboardCommand(k.key);
+  }
+}
+
+// Copy, cut, paste, duplicate (editor/clipboard_graph.h). A paste that cannot go in is a
+// message in the error panel (and on stderr); the graph and its undo history stay as they were.
+void App::clipboardCommand(int key) {
+  std::vector<std::string> selection = canvas_.selection();
+  std::vector<std::string> added;
+  std::string why;
+  if (key == GLFW_KEY_V) {
+    const char* text = ImGui::GetClipboardText();
+    why = pasteNodes(editor_, text ? text : "", canvas_.pasteAnchor(), &added);
+    if (!why.empty()) why = "paste refused: " + why;
+  } else if (selection.empty()) {
+    why = "nothing selected to copy, cut or duplicate";
+  } else if (key == GLFW_KEY_D) {
+    const Node* first = editor_.graph().findNode(selection.front());
+    std::array<double, 2> at = first && first->editorPosition ? *first->editorPosition : std::array<double, 2>{0, 0};
+    for (const auto& id : selection)
+      if (const Node* n = editor_.graph().findNode(id); n && n->editorPosition)
+        at = {std::min(at[0], (*n->editorPosition)[0]), std::min(at[1], (*n->editorPosition)[1])};
+    why = pasteNodes(editor_, copyNodesAsJson(editor_.graph(), selection), {at[0] + 40, at[1] + 40}, &added);
+  } else {
+    ImGui::SetClipboardText(copyNodesAsJson(editor_.graph(), selection).c_str());
+    if (key == GLFW_KEY_X) why = editor_.deleteNodes(selection);
+    status_ = std::to_string(selection.size()) + (selection.size() == 1 ? " node " : " nodes ") + (key == GLFW_KEY_X ? "cut" : "copied");
+  }
+  if (!why.empty()) {
+    status_ = why;
+    std::cerr << "watergraph-editor: " << why << "\n";
+    return;
+  }
+  if (!added.empty()) {
+    canvas_.select(added);
+    selected_ = added.back();
+    status_ = "pasted " + std::to_string(added.size()) + (added.size() == 1 ? " node" : " nodes");
   }
 }
 

@@ -464,6 +464,7 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   const bool hovered = ImGui::IsItemHovered();
   widgetRects().note("canvas", {origin.x, origin.y, origin.x + size.x, origin.y + size.y});
   const ImVec2 mouse = io.MousePos;
+  pasteAnchor_ = hovered ? view_.toCanvas(mouse.x - origin.x, mouse.y - origin.y) : view_.toCanvas(size.x / 2, size.y / 2);
 
   Layout l = layout(editor.graph(), registry, origin);
   std::optional<CanvasRect> whole;

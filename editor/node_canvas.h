@@ -39,6 +39,10 @@ class NodeCanvas {
   // its subgraph between frames.
   std::string takeOpenRequest() { return std::exchange(openRequest_, {}); }
   const std::vector<std::string>& selection() const { return selection_; }
+  void select(std::vector<std::string> ids) { selection_ = std::move(ids); }
+  // Where a paste lands: the canvas point under the pointer when it was over the canvas in
+  // the last frame, else the middle of the view.
+  std::array<double, 2> pasteAnchor() const { return pasteAnchor_; }
 
  private:
   struct Layout;  // this frame's boxes and ports, and hit tests on them
@@ -72,6 +76,7 @@ class NodeCanvas {
   std::string shownFilter_;  // the filter paletteIndex_ is for
   int paletteIndex_ = 0;     // the highlighted entry: Enter adds it, the arrows move it
   std::string openRequest_;
+  std::array<double, 2> pasteAnchor_{};
 };
 
 }  // namespace wg::editor

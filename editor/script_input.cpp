@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <cctype>
+#include <fstream>
 #include <map>
 
 #include "editor/widget_rects.h"
@@ -132,6 +133,18 @@ std::string ScriptedInput::apply(const nlohmann::json& step) {
     frames_.push_back({to, -1, 0, ctrl});
     rest_ = to;
     return "";
+  }
+  if (op == "set_clipboard") {
+    if (!step.contains("text") || !step["text"].is_string()) return "needs a string \"text\"";
+    glfwSetClipboardString(window_, step["text"].get<std::string>().c_str());
+    return "";
+  }
+  if (op == "save_clipboard") {
+    if (!step.contains("path") || !step["path"].is_string()) return "needs a string \"path\"";
+    const char* text = glfwGetClipboardString(window_);
+    std::ofstream out(step["path"].get<std::string>(), std::ios::binary | std::ios::trunc);
+    out << (text ? text : "");
+    return out ? "" : "cannot write " + step["path"].get<std::string>();
   }
   if (op == "hover") {
     std::array<float, 2> at{};

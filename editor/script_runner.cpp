@@ -71,7 +71,7 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     return true;
   }
   if (step.op == "key" || step.op == "type" || step.op == "click" || step.op == "drag" || step.op == "wheel" ||
-      step.op == "hover")
+      step.op == "hover" || step.op == "set_clipboard" || step.op == "save_clipboard")
     return done(host.input(step));
   if (step.op == "print_widgets") {
     // Where the named widgets were drawn in the last frame, for a test to measure.

@@ -189,6 +189,33 @@ TEST(GraphEdit, SeveralNodesMoveAndGoAsOneUndoStep) {
   EXPECT_EQ(saveGraph(e.graph()), before);
 }
 
+TEST(GraphEdit, PastedNodesGoInAsOneStepOrNotAtAll) {
+  GraphEditor e(lake(), &defaultRegistry());
+  std::string before = saveGraph(e.graph());
+  auto node = [](const std::string& id, const std::string& type, const std::string& from = "") {
+    Node n;
+    n.id = id, n.type = type, n.editorPosition = std::array<double, 2>{10, 20};
+    if (!from.empty()) n.inputs.push_back({"x", InputSource{InputSource::Kind::NodeOutput, from, "out", {}, {}}, {}});
+    return n;
+  };
+  EXPECT_NE(e.insertNodes({node("a", "saturate"), node("uv", "saturate")}), "") << "a taken id";
+  EXPECT_NE(e.insertNodes({node("a", "saturate"), node("a", "saturate")}), "") << "an id twice";
+  EXPECT_NE(e.insertNodes({node("a", "no_such_type")}), "");
+  EXPECT_NE(e.insertNodes({node("a", "saturate", "ghost")}), "") << "a link to nothing";
+  std::string cycle = e.insertNodes({node("a", "saturate", "b"), node("b", "saturate", "c"), node("c", "saturate", "a")});
+  EXPECT_NE(cycle.find("cycle"), std::string::npos) << cycle;
+  EXPECT_NE(e.insertNodes({node("9a", "saturate")}), "");
+  EXPECT_EQ(saveGraph(e.graph()), before) << "every refusal left the graph as it was";
+  EXPECT_FALSE(e.canUndo());
+  // A long chain (no recursion), linked inside and to the graph.
+  std::vector<Node> chain{node("c0", "saturate", "radius")};
+  for (int i = 1; i < 5000; ++i) chain.push_back(node("c" + std::to_string(i), "saturate", "c" + std::to_string(i - 1)));
+  ASSERT_EQ(e.insertNodes(chain), "");
+  EXPECT_EQ(e.graph().nodes.size(), lake().nodes.size() + 5000);
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(saveGraph(e.graph()), before) << "one step";
+}
+
 TEST(GraphEdit, DirtyFollowsTheSavedState) {
   GraphEditor e(lake(), &defaultRegistry());
   ASSERT_EQ(e.moveNode("uv", {1, 2}), "");
