@@ -176,6 +176,7 @@ void EditorWindow::processChange() {
           if (thumb_) thumb_->setParameter(name, editor_.graph().findParameter(name)->defaultValue);
         goodGraph_ = editor_.graph();
         errors_ = goodWarnings_;  // the same nodes as compiled: the same warnings
+        errorContext_ = "warnings: the graph compiles and the preview shows it";
         if (change.parameters.empty()) pending_.active = false;  // a moved node: no pixels change
         pending_.kind = "uniform";
         previewDirty_ = true;
@@ -189,6 +190,7 @@ void EditorWindow::processChange() {
   if (g && preview_.rebuild(*g, registry_, d, &t)) {
     goodGraph_ = editor_.graph();
     errors_ = goodWarnings_ = d.sorted();  // warnings, if any (half-wired nodes among them)
+    errorContext_ = "warnings: the graph compiles and the preview shows it";
     for (const auto& w : errors_) std::cerr << formatText(w) << "\n";
     pending_.kind = "recompile";
     pending_.compileMs = t.compileMs;

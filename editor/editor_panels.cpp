@@ -239,8 +239,8 @@ void EditorWindow::drawErrorPanel(float x, float y, float w, float h) {
 void EditorWindow::drawCanvasPanel(float x, float y, float w, float h) {
   placeNext(x, y, w, h);
   ImGui::Begin("Nodes", nullptr, kPanel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  ImGui::TextDisabled("drag: move, link from an output, box-select | wheel, = -: zoom | Home / F: frame all / selection | "
-                      "middle or Alt+drag: pan | right-click: add, disconnect | Del");
+  ImGui::TextDisabled("drag: move, link, box-select | wheel, = -: zoom | Home, F: frame | middle, Alt+drag: pan | "
+                      "right-click: add | Del | Ctrl+C/X/V/D");
   if (haveGraph_) canvas_.draw(editor_, registry_, selected_, errors_, keys_);
   if (std::string node = canvas_.takeOpenRequest(); !node.empty()) openRequest_ = node;
   ImGui::End();
