@@ -62,6 +62,23 @@ class GraphEditor {
   // names a node that is neither in the graph nor among `nodes`, the links among `nodes`
   // close a cycle, a position does not fit, or the graph would pass its node limit.
   std::string insertNodes(std::vector<Node> nodes);
+  // The blackboard (core/graph_edit_parameters.cpp): parameters and presets, each one undo
+  // step, refused whole with a reason as every edit is.
+  // A new parameter: an identifier not taken, `defaultValue` of the type's size, finite in
+  // float32, within min and max; hint "", "color" or "hdr_color" (a vec3 or vec4).
+  std::string addParameter(Parameter parameter);
+  // Renames a parameter; every reference follows: node inputs, output slots, interface
+  // outputs and preset values. Refused when `to` is not an identifier or is taken.
+  std::string renameParameter(const std::string& from, const std::string& to);
+  // Refused, naming every reference, while anything reads the parameter.
+  std::string deleteParameter(const std::string& name);
+  // Moves a parameter to position `index` (0-based) of the list (the order of the file
+  // and of the inspector).
+  std::string moveParameter(const std::string& name, size_t index);
+  // A new preset holding every parameter's current value.
+  std::string createPreset(const std::string& name);
+  std::string renamePreset(const std::string& from, const std::string& to);
+  std::string deletePreset(const std::string& name);
   // Replaces the whole graph (a reload from disk), undoably.
   void replace(Graph graph, const std::string& label);
   // Takes the imported graphs of `loaded` (the same graph with its imports loaded again)

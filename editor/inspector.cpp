@@ -14,6 +14,7 @@
 #include "core/load_limits.h"
 #include "core/node_options.h"
 #include "core/number_format.h"
+#include "editor/blackboard.h"
 #include "editor/slider_value.h"
 #include "editor/widget_rects.h"
 
@@ -105,6 +106,7 @@ std::string portTooltip(const PortSpec& port) {
 }  // namespace
 
 void drawParameterInspector(GraphEditor& editor) {
+  drawBlackboardControls(editor);
   const Graph& g = editor.graph();
   if (!g.presets.empty()) {
     // A preset writes its values into the parameters (one undo step); the sliders then
@@ -118,7 +120,9 @@ void drawParameterInspector(GraphEditor& editor) {
     }
   }
   if (g.parameters.empty()) ImGui::TextDisabled("this graph has no parameters");
-  for (const Parameter& p : g.parameters) {
+  // A copy: the right-click menu may rename, move or delete parameters as the list is drawn.
+  const std::vector<Parameter> parameters = g.parameters;
+  for (const Parameter& p : parameters) {
     ImGui::PushID(p.name.c_str());
     std::vector<float> v(p.defaultValue.begin(), p.defaultValue.end());
     bool bounded = p.min && p.max;
@@ -143,6 +147,7 @@ void drawParameterInspector(GraphEditor& editor) {
     if (ImGui::IsItemHovered() && (!p.description.empty() || p.isStatic))
       ImGui::SetTooltip("%s%s", p.description.c_str(),
                         p.isStatic ? "\nstatic: folded into the shader, so a change recompiles" : "");
+    drawParameterMenu(editor, p.name);  // right-click on the slider
     ImGui::PopID();
   }
 }

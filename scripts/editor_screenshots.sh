@@ -42,3 +42,17 @@ shoot editor-palette '[
   {"op": "key", "key": "down"},
   {"op": "frames", "count": 2}
 ]'
+
+# The blackboard: a parameter added, a preset saved, and max_depth's right-click menu with a
+# clashing name refused in place.
+shoot editor-blackboard '[
+  {"op": "add_parameter", "name": "glint", "type": "float", "default": 0.02, "min": 0, "max": 1},
+  {"op": "create_preset", "name": "glassy"},
+  {"op": "frames", "count": 1},
+  {"op": "click", "widget": "parameter max_depth", "button": "right"},
+  {"op": "frames", "count": 1},
+  {"op": "click", "widget": "blackboard field"},
+  {"op": "type", "text": "deep"},
+  {"op": "click", "widget": "blackboard button"},
+  {"op": "frames", "count": 2}
+]'

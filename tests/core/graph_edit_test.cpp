@@ -216,6 +216,52 @@ TEST(GraphEdit, PastedNodesGoInAsOneStepOrNotAtAll) {
   EXPECT_EQ(saveGraph(e.graph()), before) << "one step";
 }
 
+TEST(GraphEdit, ParametersAreAddedRenamedMovedAndDeletedWithTheirReferences) {
+  GraphEditor e(lake(), &defaultRegistry());
+  ASSERT_EQ(e.createPreset("now"), "");  // before glow: the preset holds the lake's five
+  Parameter p;
+  p.name = "glow", p.type = Type::Vec3, p.defaultValue = {1, 0.5, 0}, p.min = 0, p.max = 1, p.hint = "color";
+  ASSERT_EQ(e.addParameter(p), "");
+  EXPECT_NE(e.addParameter(p), "") << "taken";
+  Parameter bad = p;
+  bad.name = "2x";
+  EXPECT_NE(e.addParameter(bad), "");
+  bad.name = "short", bad.defaultValue = {1, 2};
+  EXPECT_NE(e.addParameter(bad), "") << "a vec3 takes three numbers";
+  bad.defaultValue = {2, 0, 0};
+  EXPECT_NE(e.addParameter(bad), "") << "outside min..max";
+  bad.type = Type::Float, bad.defaultValue = {0.5}, bad.hint = "color";
+  EXPECT_NE(e.addParameter(bad), "") << "a colour hint on a float";
+
+  // Rename: node inputs and presets follow; a clash or a non-identifier is refused in place.
+  EXPECT_NE(e.renameParameter("max_depth", "deep"), "");
+  EXPECT_NE(e.renameParameter("max_depth", "max depth"), "");
+  ASSERT_EQ(e.renameParameter("max_depth", "floor_depth"), "");
+  EXPECT_FALSE(e.graph().findParameter("max_depth"));
+  bool follows = false;
+  for (const NodeInput& in : e.graph().findNode("tint")->inputs) follows |= in.port == "max_depth" && in.source.name == "floor_depth";
+  EXPECT_TRUE(follows);
+  bool inPreset = false;
+  for (const PresetValue& v : e.graph().findPreset("now")->values) inPreset |= v.parameter == "floor_depth";
+  EXPECT_TRUE(inPreset);
+  Diagnostics d;
+  EXPECT_TRUE(parseGraph(saveGraph(e.graph()), "renamed.json", d)) << "the renamed graph saves and loads";
+
+  // Delete: refused while read, naming the readers.
+  std::string why = e.deleteParameter("floor_depth");
+  EXPECT_NE(why.find("node 'tint' input 'max_depth'"), std::string::npos) << why;
+  EXPECT_NE(why.find("preset 'now'"), std::string::npos) << why;
+  ASSERT_EQ(e.deleteParameter("glow"), "") << "nothing reads it";
+  ASSERT_EQ(e.moveParameter("sky", 0), "");
+  EXPECT_EQ(e.graph().parameters[0].name, "sky");
+  EXPECT_NE(e.moveParameter("sky", 99), "");
+
+  ASSERT_EQ(e.renamePreset("now", "later"), "");
+  EXPECT_NE(e.renamePreset("later", "x y"), "");
+  ASSERT_EQ(e.deletePreset("later"), "");
+  EXPECT_TRUE(e.graph().presets.empty());
+}
+
 TEST(GraphEdit, DirtyFollowsTheSavedState) {
   GraphEditor e(lake(), &defaultRegistry());
   ASSERT_EQ(e.moveNode("uv", {1, 2}), "");
