@@ -176,6 +176,23 @@ void EditorWindow::drawInspectorPanel(float x, float y, float w, float h) {
   drawSubgraphBar();
   if (ImGui::Button("save")) writeGraph(path_);
   ImGui::SameLine();
+  if (ImGui::Button("save as")) {
+    std::snprintf(saveAsPath_.data(), saveAsPath_.size(), "%s", path_.c_str());
+    saveAsRefusal_.clear();
+    ImGui::OpenPopup("save as");
+  }
+  if (ImGui::BeginPopup("save as")) {
+    ImGui::SetNextItemWidth(360);
+    bool enter = ImGui::InputText("##path", saveAsPath_.data(), saveAsPath_.size(), ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    if (ImGui::Button("save") || enter) {
+      saveAsRefusal_ = saveAs(saveAsPath_.data());
+      if (saveAsRefusal_.empty()) ImGui::CloseCurrentPopup();
+    }
+    if (!saveAsRefusal_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", saveAsRefusal_.c_str());
+    ImGui::EndPopup();
+  }
+  ImGui::SameLine();
   ImGui::BeginDisabled(!editor_.canUndo());
   if (ImGui::Button("undo")) editor_.undo();
   ImGui::EndDisabled();

@@ -3,6 +3,7 @@
 // each part does, split by job over editor_app.cpp (files, compiling, the preview, the frame
 // loop), editor_window_steps.cpp (script steps and subgraph navigation) and
 // editor_panels.cpp (the ImGui panels and shortcuts).
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -105,6 +106,7 @@ class EditorWindow : private ScriptHost {
   const std::string& graphPath() const override { return path_; }
   int diskEvents() const override { return diskEvents_; }
   std::string save(const std::string& path) override { return writeGraph(path) ? "" : "cannot save " + path; }
+  std::string saveAs(const std::string& path) override;
   std::string screenshot(const std::string& path) override;
   std::string savePreview(const std::string& path) override;
   std::string saveThumbnail(const std::string& path) override;
@@ -171,6 +173,8 @@ class EditorWindow : private ScriptHost {
   std::optional<Latency> lastLatency_;
 
   NodeCanvas canvas_;
+  std::array<char, 1024> saveAsPath_{};  // the save-as dialog's path field
+  std::string saveAsRefusal_;
   PanelLayout panels_;        // the splitters' positions
   std::string settingsPath_;  // where they are remembered ("" : not remembered)
   std::optional<ScriptRunner> script_;

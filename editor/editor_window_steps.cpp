@@ -160,4 +160,34 @@ void EditorWindow::navigate() {
 }
 
 
+// Save as: the graph written to `path`, which the editor then edits (watched, saved by Ctrl+S,
+// named in the title); the file it was opened from stays as it was on disk. Imports are
+// relative to the graph's folder, so a graph that imports stays in its folder.
+std::string EditorWindow::saveAs(const std::string& path) {
+  if (!haveGraph_) return "nothing to save: the file has not loaded yet";
+  if (path.empty()) return "save as: no file name";
+  if (!parents_.empty()) return "save as: go back to the graph the editor opened first (a subgraph keeps its file)";
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  fs::path from = fs::absolute(path_, ec).parent_path(), to = fs::absolute(path, ec).parent_path();
+  if (!editor_.graph().imports.empty() && from.lexically_normal() != to.lexically_normal())
+    return "save as: this graph imports subgraphs by paths relative to its folder; save it in the same folder";
+  if (!writeGraph(path)) return status_;
+  std::string text = saveGraph(editor_.graph());
+  Diagnostics ignore;
+  path_ = path;
+  options_.graphPath = path;
+  auto g = parseGraph(text, path, ignore);
+  if (g) diskGraph_ = *g, loadImports(*g, ignore);
+  diskText_ = text;
+  editor_.markSaved();
+  diskRevision_ = editor_.revision();
+  watcher_ = FileWatcher(path);
+  if (g) watcher_.watch(filesToWatch(*g));  // the new file and what it imports
+  recompile();  // diagnostics name the new file
+  showFileName();
+  status_ = "saved as " + path + "; editing it now";
+  return "";
+}
+
 }  // namespace wg::editor

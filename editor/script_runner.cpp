@@ -50,6 +50,10 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     return true;
   }
   if (step.op == "save") return done(host.save(str("path").empty() ? host.graphPath() : str("path")));
+  if (step.op == "save_as") {
+    if (str("path").empty()) return fail(where, "needs a string \"path\"");
+    return done(host.saveAs(str("path")));
+  }
   if (step.op == "screenshot" || step.op == "save_preview" || step.op == "save_thumbnail") {
     if (str("path").empty()) return fail(where, "needs a string \"path\"");
     if (step.op == "screenshot") return done(host.screenshot(str("path")));

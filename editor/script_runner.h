@@ -21,6 +21,8 @@ class ScriptHost {
   virtual int diskEvents() const = 0;  // changes on disk noticed so far
   // Each returns "" on success, else why not.
   virtual std::string save(const std::string& path) = 0;
+  // Saves to `path` and goes on editing that file (the old one stays as it was on disk).
+  virtual std::string saveAs(const std::string& path) { return "'save_as' needs the editor (" + path + ")"; }
   virtual std::string screenshot(const std::string& path) = 0;  // the window, after this frame
   virtual std::string savePreview(const std::string& path) = 0;
   virtual std::string saveThumbnail(const std::string& path) = 0;
