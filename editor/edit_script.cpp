@@ -23,7 +23,7 @@ const std::set<std::string>& appOps() {
   static const std::set<std::string> ops{"save", "screenshot", "save_preview", "save_thumbnail", "select", "camera", "time",
                                          "frames", "external_write", "wait_reload", "open_subgraph", "back",
                                          "key", "type", "click", "drag", "wheel", "hover", "print_widgets",
-                                         "set_clipboard", "save_clipboard", "save_as"};
+                                         "set_clipboard", "save_clipboard", "save_as", "open"};
   return ops;
 }
 

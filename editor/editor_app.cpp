@@ -284,7 +284,7 @@ int EditorWindow::run() {
     }
     script_.emplace(std::move(*steps), options_.script);
   }
-  loadFromDisk(true);
+  if (loadFromDisk(true)) rememberOpened(path_);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -312,6 +312,9 @@ int EditorWindow::run() {
       loadFromDisk(false);
     }
     navigate();
+    if (!openRecentRequest_.empty()) {
+      if (std::string why = open(std::exchange(openRecentRequest_, {}), true); !why.empty()) status_ = why;
+    }
     // A step sees every earlier step on screen; its own edit is shown in this frame.
     if (script_ && !scriptFailed_ && !script_->step(*this)) {
       std::cerr << script_->error() << "\n";

@@ -170,6 +170,31 @@ void EditorWindow::drawSubgraphBar() {
   ImGui::Separator();
 }
 
+// "recent": the graphs opened last (remembered with the panel sizes); one with unsaved
+// changes here asks before they are let go.
+void EditorWindow::drawRecentFiles() {
+  if (ImGui::Button("recent")) recentConfirm_.clear(), ImGui::OpenPopup("recent files");
+  widgetRects().note("recent", {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y});
+  if (!ImGui::BeginPopup("recent files")) return;
+  std::error_code ec;
+  std::string current = std::filesystem::absolute(path_, ec).lexically_normal().string();
+  int shown = 0;
+  for (const std::string& file : settings_.recent) {
+    if (file == current) continue;
+    bool chosen = ImGui::Selectable(file.c_str(), file == recentConfirm_, ImGuiSelectableFlags_DontClosePopups);
+    widgetRects().note("recent " + std::to_string(shown++),
+                       {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y, ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y});
+    if (chosen && !editor_.dirty()) openRecentRequest_ = file, ImGui::CloseCurrentPopup();
+    else if (chosen) recentConfirm_ = file;
+  }
+  if (shown == 0) ImGui::TextDisabled("no other graph opened yet");
+  if (!recentConfirm_.empty()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.4f, 1.0f), "%s has unsaved changes.", std::filesystem::path(path_).filename().c_str());
+    if (ImGui::Button("discard them and open")) openRecentRequest_ = recentConfirm_, ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
 void EditorWindow::drawInspectorPanel(float x, float y, float w, float h) {
   placeNext(x, y, w, h);
   ImGui::Begin("Inspector", nullptr, kPanel);
@@ -192,6 +217,8 @@ void EditorWindow::drawInspectorPanel(float x, float y, float w, float h) {
     if (!saveAsRefusal_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.4f, 1.0f), "%s", saveAsRefusal_.c_str());
     ImGui::EndPopup();
   }
+  ImGui::SameLine();
+  drawRecentFiles();
   ImGui::SameLine();
   ImGui::BeginDisabled(!editor_.canUndo());
   if (ImGui::Button("undo")) editor_.undo();
@@ -318,15 +345,13 @@ void EditorWindow::drawUi() {
   window_.framebufferSize(&fw, &fh);
   float w = static_cast<float>(fw), h = static_cast<float>(fh);
   widgetRects().clear();  // noted again as they are drawn
-  float left = std::floor(w * panels_.leftWidth), top = std::floor(h * panels_.previewHeight);
-  float inspector = std::floor(h * panels_.inspectorHeight);
+  float left = std::floor(w * settings_.panels.leftWidth), top = std::floor(h * settings_.panels.previewHeight);
+  float inspector = std::floor(h * settings_.panels.inspectorHeight);
   drawPreviewPanel(0, 0, left, top);
   drawCanvasPanel(0, top, left, h - top);
   drawInspectorPanel(left, 0, w - left, inspector);
   drawErrorPanel(left, inspector, w - left, h - inspector);
-  if (drawPanelSplitters(panels_, w, h) && !settingsPath_.empty()) {
-    if (std::string why = savePanelLayout(settingsPath_, panels_); !why.empty()) status_ = "panel sizes not remembered: " + why;
-  }
+  if (drawPanelSplitters(settings_.panels, w, h)) rememberSettings();
   shortcuts();
 }
 

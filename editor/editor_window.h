@@ -69,7 +69,7 @@ class EditorWindow : private ScriptHost {
     // A batch run neither reads nor writes the user's settings unless it names a file.
     settingsPath_ = !options.settings.empty() ? options.settings : batch ? "" : defaultSettingsPath();
     if (!settingsPath_.empty())
-      if (auto remembered = loadPanelLayout(settingsPath_)) panels_ = *remembered;
+      settings_ = loadEditorSettings(settingsPath_);
   }
 
   int run();
@@ -107,6 +107,9 @@ class EditorWindow : private ScriptHost {
   int diskEvents() const override { return diskEvents_; }
   std::string save(const std::string& path) override { return writeGraph(path) ? "" : "cannot save " + path; }
   std::string saveAs(const std::string& path) override;
+  // Edits the graph at `path` instead (the editor's top-level file); refused while the
+  // current one has unsaved changes unless `discard`, and while a subgraph is open.
+  std::string open(const std::string& path, bool discard) override;
   std::string screenshot(const std::string& path) override;
   std::string savePreview(const std::string& path) override;
   std::string saveThumbnail(const std::string& path) override;
@@ -127,6 +130,8 @@ class EditorWindow : private ScriptHost {
   void drawErrorPanel(float x, float y, float w, float h);
   void drawCanvasPanel(float x, float y, float w, float h);
   void drawSubgraphBar();
+  void drawRecentFiles();
+  std::string recentConfirm_;  // a recent file chosen while this one has unsaved changes
   void shortcuts();
   void clipboardCommand(int key);  // GLFW_KEY_C, X, V or D with Ctrl
   void writeScreenshot(const std::string& path);
@@ -175,8 +180,11 @@ class EditorWindow : private ScriptHost {
   NodeCanvas canvas_;
   std::array<char, 1024> saveAsPath_{};  // the save-as dialog's path field
   std::string saveAsRefusal_;
-  PanelLayout panels_;        // the splitters' positions
+  EditorSettings settings_;   // the splitters' positions, the graphs opened last
   std::string settingsPath_;  // where they are remembered ("" : not remembered)
+  void rememberSettings();    // writes settings_ (when there is a settings file)
+  void rememberOpened(const std::string& path) { settings_.opened(path), rememberSettings(); }
+  std::string openRecentRequest_;  // a recent file chosen in the UI, opened between frames
   std::optional<ScriptRunner> script_;
   std::unique_ptr<ScriptedInput> input_;  // the script's keys and pointer
   std::vector<KeyPress> keys_;            // this frame's key presses (editor/key_events.h)

@@ -186,8 +186,37 @@ std::string EditorWindow::saveAs(const std::string& path) {
   if (g) watcher_.watch(filesToWatch(*g));  // the new file and what it imports
   recompile();  // diagnostics name the new file
   showFileName();
+  rememberOpened(path);
   status_ = "saved as " + path + "; editing it now";
   return "";
+}
+
+std::string EditorWindow::open(const std::string& path, bool discard) {
+  if (!parents_.empty()) return "open: go back to the graph the editor opened first";
+  if (editor_.dirty() && !discard) return path_ + " has unsaved changes: save them first (or open with \"discard\": true)";
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) return "open: " + path + ": no such file";
+  path_ = path;
+  options_.graphPath = path;
+  editor_ = GraphEditor(Graph{}, &registry_);
+  haveGraph_ = false;
+  diskText_.clear();
+  diskRevision_ = -1;
+  canvas_ = NodeCanvas{};
+  selected_.clear();
+  watcher_ = FileWatcher(path);
+  loadFromDisk(true);  // one that does not load lists why, and reloads once fixed on disk
+  recompile();
+  pending_.active = false;
+  showFileName();
+  rememberOpened(path);
+  if (haveGraph_) status_ = "opened " + path;
+  return "";
+}
+
+void EditorWindow::rememberSettings() {
+  if (settingsPath_.empty()) return;
+  if (std::string why = saveEditorSettings(settingsPath_, settings_); !why.empty()) status_ = "settings not remembered: " + why;
 }
 
 }  // namespace wg::editor

@@ -26,14 +26,30 @@ std::string defaultSettingsPath() {
   return "";
 }
 
-std::optional<PanelLayout> loadPanelLayout(const std::string& path) {
+void EditorSettings::opened(const std::string& path) {
+  std::error_code ec;
+  std::string absolute = std::filesystem::absolute(path, ec).lexically_normal().string();
+  if (ec) absolute = path;
+  std::erase(recent, absolute);
+  recent.insert(recent.begin(), absolute);
+  if (recent.size() > kRecentFiles) recent.resize(kRecentFiles);
+}
+
+namespace {
+
+std::optional<nlohmann::json> readSettingsJson(const std::string& path) {
   FileReadRule rule;
-  rule.maxBytes = 64 * 1024;  // a few numbers; anything larger is not ours
+  rule.maxBytes = 64 * 1024;  // a few numbers and paths; anything larger is not ours
   FileReadFailure failure;
   auto file = readFileChecked(path, rule, &failure);
   if (!file) return std::nullopt;
   nlohmann::json doc = nlohmann::json::parse(file->bytes, nullptr, false);
-  if (doc.is_discarded() || !doc.is_object() || !doc.contains("panels") || !doc["panels"].is_object()) return std::nullopt;
+  if (doc.is_discarded() || !doc.is_object()) return std::nullopt;
+  return doc;
+}
+
+std::optional<PanelLayout> panelsOf(const nlohmann::json& doc) {
+  if (!doc.contains("panels") || !doc["panels"].is_object()) return std::nullopt;
   const auto& p = doc["panels"];
   PanelLayout layout;
   auto read = [&](const char* key, float* to) {
@@ -46,11 +62,32 @@ std::optional<PanelLayout> loadPanelLayout(const std::string& path) {
   return layout;
 }
 
-std::string savePanelLayout(const std::string& path, const PanelLayout& layout) {
+}  // namespace
+
+std::optional<PanelLayout> loadPanelLayout(const std::string& path) {
+  auto doc = readSettingsJson(path);
+  return doc ? panelsOf(*doc) : std::nullopt;
+}
+
+EditorSettings loadEditorSettings(const std::string& path) {
+  EditorSettings settings;
+  auto doc = readSettingsJson(path);
+  if (!doc) return settings;
+  if (auto panels = panelsOf(*doc)) settings.panels = *panels;
+  if (doc->contains("recent") && (*doc)["recent"].is_array())
+    for (const auto& r : (*doc)["recent"])
+      if (r.is_string() && settings.recent.size() < EditorSettings::kRecentFiles) settings.recent.push_back(r.get<std::string>());
+  return settings;
+}
+
+std::string saveEditorSettings(const std::string& path, const EditorSettings& settings) {
   // Written by hand for the shortest decimals (nlohmann would widen the floats).
   auto num = [](float f) { return formatNumber(std::round(static_cast<double>(f) * 1000) / 1000); };
+  const PanelLayout& layout = settings.panels;
   std::string text = "{\n  \"panels\": {\"left_width\": " + num(layout.leftWidth) + ", \"preview_height\": " +
-                     num(layout.previewHeight) + ", \"inspector_height\": " + num(layout.inspectorHeight) + "}\n}\n";
+                     num(layout.previewHeight) + ", \"inspector_height\": " + num(layout.inspectorHeight) + "},\n  \"recent\": [";
+  for (size_t i = 0; i < settings.recent.size(); ++i) text += (i ? ", " : "") + nlohmann::json(settings.recent[i]).dump();
+  text += "]\n}\n";
   Diagnostics d;
   if (!writeFileAtomically(path, text, d)) return d.all().empty() ? "cannot write " + path : formatText(d.all().front());
   return "";

@@ -1,9 +1,10 @@
 #pragma once
-// How the window is split between the panels: the left column's width (preview over node
+// How the window is split between the panels, and what else the editor remembers: the left column's width (preview over node
 // canvas) and, in each column, where the upper panel ends. Dragged with the splitters
 // between the panels and remembered across runs in a small settings file.
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace wg::editor {
 
@@ -19,12 +20,25 @@ struct PanelLayout {
   bool operator==(const PanelLayout&) const = default;
 };
 
+// What the editor remembers between runs: the panel sizes and the graphs opened last.
+struct EditorSettings {
+  PanelLayout panels;
+  std::vector<std::string> recent;  // absolute paths, the last opened first
+
+  static constexpr size_t kRecentFiles = 8;
+  // `path` to the front of `recent` (once), the list cut to kRecentFiles.
+  void opened(const std::string& path);
+};
+
 // The settings file when none is named: $XDG_CONFIG_HOME/watergraph/editor.json, else
 // ~/.config/watergraph/editor.json; "" when neither variable is set.
 std::string defaultSettingsPath();
-// The layout in the file; none when it is missing or not a settings file (the defaults then).
+// The settings in the file; the defaults for what is missing, or for a file that is not a
+// settings file.
+EditorSettings loadEditorSettings(const std::string& path);
+// Writes them (creating the folder); "" or why not.
+std::string saveEditorSettings(const std::string& path, const EditorSettings& settings);
+// The layout alone (tests, and a file holding nothing else): none when there is no "panels".
 std::optional<PanelLayout> loadPanelLayout(const std::string& path);
-// Writes the layout (creating the folder); "" or why not.
-std::string savePanelLayout(const std::string& path, const PanelLayout& layout);
 
 }  // namespace wg::editor

@@ -50,6 +50,11 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     return true;
   }
   if (step.op == "save") return done(host.save(str("path").empty() ? host.graphPath() : str("path")));
+  if (step.op == "open") {
+    if (str("path").empty()) return fail(where, "needs a string \"path\"");
+    if (a.contains("discard") && !a["discard"].is_boolean()) return fail(where, "\"discard\" must be true or false");
+    return done(host.open(str("path"), a.value("discard", false)));
+  }
   if (step.op == "save_as") {
     if (str("path").empty()) return fail(where, "needs a string \"path\"");
     return done(host.saveAs(str("path")));

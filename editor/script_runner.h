@@ -23,6 +23,10 @@ class ScriptHost {
   virtual std::string save(const std::string& path) = 0;
   // Saves to `path` and goes on editing that file (the old one stays as it was on disk).
   virtual std::string saveAs(const std::string& path) { return "'save_as' needs the editor (" + path + ")"; }
+  // Edits another graph file instead (open, open recent).
+  virtual std::string open(const std::string& path, bool discard) {
+    return "'open' needs the editor (" + path + (discard ? ", discarding)" : ")");
+  }
   virtual std::string screenshot(const std::string& path) = 0;  // the window, after this frame
   virtual std::string savePreview(const std::string& path) = 0;
   virtual std::string saveThumbnail(const std::string& path) = 0;

@@ -82,5 +82,59 @@ TEST(EditorFiles, AGraphThatImportsIsSavedAsOnlyInItsFolder) {
   fs::remove_all(dir);
 }
 
+// Open and open recent: the graphs opened are remembered (with --settings), the "recent"
+// list opens one, and unsaved changes are not let go without being asked.
+TEST(EditorFiles, OpenRecentSwitchesGraphsAndRemembersThem) {
+  std::string dir = test::makeTempDir("wg_recent");
+  std::string lake = dir + "/lake.json", other = dir + "/other.json", settings = dir + "/settings.json";
+  std::string original = test::readFile(test::sourcePath("graphs/lake.json"));
+  test::writeFile(lake, original);
+  test::writeFile(other, original);
+  test::writeFile(dir + "/edits.json", R"([
+    {"op": "set_parameter", "name": "max_depth", "value": 7},
+    {"op": "open", "path": ")" + other + R"("},
+    {"op": "save"},
+    {"op": "open", "path": ")" + other + R"("},
+    {"op": "set_parameter", "name": "max_depth", "value": 8},
+    {"op": "save"},
+    {"op": "frames", "count": 1},
+    {"op": "click", "widget": "recent"},
+    {"op": "frames", "count": 1},
+    {"op": "click", "widget": "recent 0"},
+    {"op": "frames", "count": 2},
+    {"op": "set_parameter", "name": "max_depth", "value": 11},
+    {"op": "save"}
+  ])");
+  test::EditorRun r = test::runEditorProgram(dir, "--settings " + test::shellQuote(settings) + " --script " +
+                                                      test::shellQuote(dir + "/edits.json") + " " + test::shellQuote(lake));
+  // Step 2 is refused: lake.json has unsaved changes.
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.err.find("step 2 (open): "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("unsaved changes"), std::string::npos) << r.err;
+
+  test::writeFile(dir + "/edits.json", R"([
+    {"op": "open", "path": ")" + other + R"("},
+    {"op": "set_parameter", "name": "max_depth", "value": 8},
+    {"op": "save"},
+    {"op": "frames", "count": 1},
+    {"op": "click", "widget": "recent"},
+    {"op": "frames", "count": 1},
+    {"op": "click", "widget": "recent 0"},
+    {"op": "frames", "count": 2},
+    {"op": "set_parameter", "name": "max_depth", "value": 11},
+    {"op": "save"}
+  ])");
+  r = test::runEditorProgram(dir, "--settings " + test::shellQuote(settings) + " --script " + test::shellQuote(dir + "/edits.json") +
+                                      " " + test::shellQuote(lake));
+  ASSERT_EQ(r.status, 0) << r.err;
+  Diagnostics d;
+  EXPECT_EQ(loadGraphFile(other, d)->findParameter("max_depth")->defaultValue, std::vector<double>{8});
+  EXPECT_EQ(loadGraphFile(lake, d)->findParameter("max_depth")->defaultValue, std::vector<double>{11})
+      << "the recent list opened lake.json again";
+  std::string remembered = test::readFile(settings);
+  EXPECT_LT(remembered.find(lake), remembered.find(other)) << "the last opened first:\n" << remembered;
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace wg
