@@ -186,7 +186,8 @@ std::string nowHms() {
 }
 
 // What a build system needs to know about one compiled graph: the files written into
-// `dir` depend on the graph's file, every graph it imports and every PNG it samples. The
+// `dir` depend on the graph's file, every graph it imports, every PNG it samples and every
+// .glsl file its function nodes call. The
 // node textures `--textures` writes are not named as targets: their names come from the
 // graph, which a build system has not read when it declares a rule's outputs (Ninja refuses
 // a depfile naming an output the rule did not declare); they are written by the same
@@ -208,6 +209,8 @@ DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, cons
   for (const auto& t : result.manifest.textures)
     if (!t.source.empty() && t.source.rfind(kBuiltinTexturePrefix, 0) != 0)
       rule.inputs.push_back((graphDir / t.source).lexically_normal().string());
+  // The .glsl files of its GLSL function nodes (relative to the graph's folder).
+  for (const auto& f : result.program.functionFiles) rule.inputs.push_back((graphDir / f).lexically_normal().string());
   return rule;
 }
 
@@ -499,7 +502,8 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
                 "times); stop with Ctrl-C");
   addOutputOption(cmd, "--depfile", args->depfile,
                   "also write a Make/Ninja depfile: the files written for each graph depend on its file, every graph "
-                  "it imports and every PNG texture it samples (for build systems: CMake's DEPFILE, Ninja's depfile)");
+                  "it imports, every PNG texture it samples and every .glsl file its function nodes call (for build systems: "
+                  "CMake's DEPFILE, Ninja's depfile)");
   cmd->add_option("--watch-interval", args->watchIntervalMs, "milliseconds between polls in --watch")
       ->check(CLI::Range(10, 60000))
       ->capture_default_str();
