@@ -57,7 +57,8 @@ struct CompileArgs {
 constexpr std::string_view kCHeaderTarget = "c-header";
 constexpr std::string_view kQueryCTarget = "query-c";
 constexpr std::string_view kQueryJsTarget = "query-js";
-constexpr const char* kTargetNames = "glsl330, es300, vk450, msl, hlsl, c-header, query-c, query-js";
+constexpr std::string_view kWgslTarget = "wgsl";
+constexpr const char* kTargetNames = "glsl330, es300, vk450, msl, hlsl, wgsl, c-header, query-c, query-js";
 
 struct TargetSet {
   std::vector<Target> glsl;
@@ -69,16 +70,22 @@ struct TargetSet {
   // query-c / query-js: <graph>.query.h / <graph>.query.js, the surface queries of the
   // vertex stage's displacement (codegen/query_header.h).
   bool queryC = false, queryJs = false;
+  // wgsl: <graph>.wgsl for WebGPU (codegen/compile_wgsl.h); alone, it compiles glsl330 too,
+  // the GLSL its WGSL is written from.
+  bool wgsl = false;
   std::string list() const {
     std::string s;
     for (Target t : glsl) s += (s.empty() ? "" : ",") + std::string(targetName(t));
     for (CrossTarget t : cross) s += (s.empty() ? "" : ",") + std::string(crossTargetName(t));
+    if (wgsl) s += (s.empty() ? "" : ",") + std::string(kWgslTarget);
     if (cHeader) s += (s.empty() ? "" : ",") + std::string(kCHeaderTarget);
     if (queryC) s += (s.empty() ? "" : ",") + std::string(kQueryCTarget);
     if (queryJs) s += (s.empty() ? "" : ",") + std::string(kQueryJsTarget);
     return s;
   }
-  size_t size() const { return glsl.size() + cross.size() + (cHeader ? 1 : 0) + (queryC ? 1 : 0) + (queryJs ? 1 : 0); }
+  size_t size() const {
+    return glsl.size() + cross.size() + (wgsl ? 1 : 0) + (cHeader ? 1 : 0) + (queryC ? 1 : 0) + (queryJs ? 1 : 0);
+  }
 };
 
 bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
@@ -106,6 +113,8 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
         out.queryC = true;
       } else if (part == kQueryJsTarget) {
         out.queryJs = true;
+      } else if (part == kWgslTarget) {
+        out.wgsl = true;
       } else if (auto c = parseCrossTarget(part)) {
         bool dup = false;
         for (CrossTarget have : out.cross) dup |= have == *c;
@@ -116,7 +125,7 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
       }
     }
   }
-  if (out.glsl.empty() && out.cross.empty()) out.glsl = allTargets();
+  if (out.glsl.empty() && out.cross.empty()) out.glsl = out.wgsl ? std::vector<Target>{Target::Glsl330} : allTargets();
   return true;
 }
 
@@ -241,6 +250,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     options.targets = targets.glsl;
     options.preset = args.preset;
     options.derivedUniforms = args.derivedUniforms || targets.cHeader;
+    options.wgsl = targets.wgsl;
     result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
     for (size_t i = 1; library && result && !write && i < library->interface->outputs.size(); ++i) {
       std::string why;
@@ -448,7 +458,8 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
 void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   cmd->add_option("--target", args.targets,
                   "targets, comma separated: glsl330, es300, vk450 (default: these three), msl, hlsl (from the vk450 "
-                  "SPIR-V through SPIRV-Cross), c-header (<graph>.derived.h: C that computes the derived uniforms "
+                  "SPIR-V through SPIRV-Cross), wgsl (<graph>.wgsl for WebGPU: both entry points in one module; alone it "
+                  "compiles glsl330 too; validate runs naga and Tint on it where Node.js and Chromium are installed), c-header (<graph>.derived.h: C that computes the derived uniforms "
                   "once per draw, for a renderer of your own; implies --derived-uniforms), query-c and query-js "
                   "(<graph>.query.h, <graph>.query.js: where the water surface is, its height, normal and velocity, "
                   "from the vertex stage's displacement, for game code; docs/queries.md)");
