@@ -269,6 +269,8 @@ Printed ExpressionPrinter::builtin(const std::string& n, std::vector<Printed> ar
     }
     return {n + "(" + list() + ")", args.back().type, "", ""};
   }
+  // mix(a, b, bvec): GLSL's per-component choice, which is WGSL's select(a, b, condition).
+  if (n == "mix" && args.size() == 3 && args[2].type.base == 'b') return {"select(" + list() + ")", first, "", ""};
   if (n == "mix") return {"mix(" + list() + ")", first.size >= args[1].type.size ? first : args[1].type, "", ""};
   if (sameNameGeneric(n)) return {n + "(" + list() + ")", first, "", ""};
   if (n == "inversesqrt") return {"inverseSqrt(" + list() + ")", first, "", ""};

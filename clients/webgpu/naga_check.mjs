@@ -15,14 +15,31 @@ try {
   process.exit(2);
 }
 
-// naga's report names spans as "wgsl:LINE:COL"; the first one is where the error is.
+// naga's report: "error: SUMMARY", the source with carets under the spans ("3 │ ... ^^^ naga::ir::Expression"),
+// then notes ("= WHY"). The position is the first caret under something smaller than a whole
+// function (else the first "wgsl:LINE:COL"); the message is the summary and its first note.
 function errorsOf(error) {
-  const text = error.formatted || error.message || String(error);
-  const at = /wgsl:(\d+):(\d+)/.exec(text);
-  const message = (error.message || text).split("\n")[0];
-  // The report without its colour codes, for a human reading the diagnostic.
-  const detail = text.replace(/\u001b\[[0-9;]*m/g, "").trim();
-  return [{ line: at ? Number(at[1]) : 0, column: at ? Number(at[2]) : 0, message, detail }];
+  const text = (error.formatted || error.message || String(error)).replace(/\u001b\[[0-9;]*m/g, "");
+  const lines = text.split("\n");
+  let line = 0, column = 0, lastNumbered = 0;
+  for (const l of lines) {
+    const numbered = /^\s*(\d+) │/.exec(l);
+    if (numbered) { lastNumbered = Number(numbered[1]); continue; }
+    const caret = l.indexOf("^");
+    if (!line && caret >= 0 && lastNumbered && !l.includes("naga::ir::Function")) {
+      line = lastNumbered;
+      const bar = l.indexOf("│");
+      column = Math.max(1, caret - bar - 1);
+    }
+  }
+  if (!line) {
+    const at = /wgsl:(\d+):(\d+)/.exec(text);
+    if (at) [line, column] = [Number(at[1]), Number(at[2])];
+  }
+  const summary = (lines[0] || "").replace(/^error: /, "");
+  const note = lines.find((l) => /^\s*= /.test(l));
+  const message = note ? `${summary}: ${note.replace(/^\s*= /, "")}` : summary;
+  return [{ line, column, message, detail: text.trim() }];
 }
 
 let failed = false;

@@ -34,6 +34,12 @@ TEST(WgslTranslate, VectorEqualityIsReducedAndTernaryIsSelect) {
   EXPECT_NE(w.find("select(0.0, 1.0, all(a == b))"), std::string::npos) << w;
 }
 
+TEST(WgslTranslate, MixWithABoolSelectorIsSelect) {
+  // Found by naga and Tint checking the whole library: WGSL's mix takes no bool vector.
+  std::string w = translatedItem("vec2 wg_t(vec2 a, vec2 b, vec2 x) { return mix(a, b, lessThan(x, a)); }");
+  EXPECT_NE(w.find("return select(a, b, (x < a));"), std::string::npos) << w;
+}
+
 TEST(WgslTranslate, ModIsGlslsFloorDefinitionNotWgslsTruncatingPercent) {
   std::string w = translatedItem("vec2 wg_t(vec2 x) { return mod(x, 3.0); }");
   EXPECT_NE(w.find("wgsl_mod_vec2f(x, vec2<f32>(3.0))"), std::string::npos) << w;
