@@ -22,7 +22,7 @@ std::optional<CompileResult> compiledWithWgsl(const std::string& graphRel, Diagn
   return compileGraph(*graph, defaultRegistry(), o, diags);
 }
 
-std::string diagnosticsText(const Diagnostics& diags) {
+std::string wgslDiagnosticsText(const Diagnostics& diags) {
   std::string s;
   for (const auto& d : diags.all()) s += formatText(d) + "\n";
   return s;
@@ -52,7 +52,7 @@ TEST(WgslEmit, UniformLayoutFollowsWgslsUniformAddressSpaceRules) {
 TEST(WgslEmit, LakeModuleHasBothEntryPointsItsBufferAndTheClipConversion) {
   Diagnostics diags;
   auto r = compiledWithWgsl("graphs/lake.json", diags);
-  ASSERT_TRUE(r) << diagnosticsText(diags);
+  ASSERT_TRUE(r) << wgslDiagnosticsText(diags);
   const std::string& w = fileNamed(*r, "lake.wgsl");
   EXPECT_NE(w.find("@vertex\nfn vs_main("), std::string::npos);
   EXPECT_NE(w.find("@fragment\nfn fs_main(@builtin(position) wg_frag_coord: vec4<f32>"), std::string::npos);
@@ -79,7 +79,7 @@ TEST(WgslEmit, LakeModuleHasBothEntryPointsItsBufferAndTheClipConversion) {
 TEST(WgslEmit, TexturesAreTextureAndSamplerBindingsInTheManifestsOrder) {
   Diagnostics diags;
   auto r = compiledWithWgsl("graphs/deferred_underwater.json", diags);
-  ASSERT_TRUE(r) << diagnosticsText(diags);
+  ASSERT_TRUE(r) << wgslDiagnosticsText(diags);
   const std::string& w = fileNamed(*r, "deferred_underwater.wgsl");
   auto j = r->manifest.toJson();
   const auto& bindings = j["webgpu"]["bindings"];
@@ -100,7 +100,7 @@ TEST(WgslEmit, TexturesAreTextureAndSamplerBindingsInTheManifestsOrder) {
 TEST(WgslEmit, TessellatedGraphIsDrawnAsItsMeshInWgslAndTheManifestReadsBack) {
   Diagnostics diags;
   auto r = compiledWithWgsl("graphs/stylized.json", diags);
-  ASSERT_TRUE(r) << diagnosticsText(diags);
+  ASSERT_TRUE(r) << wgslDiagnosticsText(diags);
   ASSERT_TRUE(r->manifest.tessellation.has_value());  // glsl330 tessellates ...
   for (const auto& t : r->manifest.tessellation->targets) EXPECT_NE(t, "wgsl");  // ... WGSL draws the mesh as it is
   const std::string& w = fileNamed(*r, "stylized.wgsl");
@@ -115,7 +115,7 @@ TEST(WgslEmit, TessellatedGraphIsDrawnAsItsMeshInWgslAndTheManifestReadsBack) {
 TEST(WgslEmit, ModuleLinesMapBackToTheNodesThatWroteThem) {
   Diagnostics diags;
   auto r = compiledWithWgsl("graphs/lake.json", diags);
-  ASSERT_TRUE(r) << diagnosticsText(diags);
+  ASSERT_TRUE(r) << wgslDiagnosticsText(diags);
   const std::string& w = fileNamed(*r, "lake.wgsl");
   std::vector<std::string> lines = test::splitLines(w);
   ASSERT_EQ(lines.size(), r->wgslLineOp.size());
@@ -128,6 +128,30 @@ TEST(WgslEmit, ModuleLinesMapBackToTheNodesThatWroteThem) {
     sawFresnel = true;
   }
   EXPECT_TRUE(sawFresnel);
+}
+
+// GLSL outside the translated subset in a body line is refused (WG045) at the op that wrote
+// the line, not guessed at: a line assigning a two-component swizzle, given to the plan's last op.
+TEST(WgslEmit, ABodyLineWithNoWgslFormIsRefusedAtItsOp) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/lake.json"), diags);
+  ASSERT_TRUE(graph);
+  auto program = buildProgram(*graph, defaultRegistry(), diags);
+  ASSERT_TRUE(program);
+  ShaderPlan plan = planShaders(*program, "lake.json", false);
+  ASSERT_FALSE(plan.stages.empty());
+  PlannedStage& frag = plan.stages.back();
+  const int op = static_cast<int>(program->ops.size()) - 1;
+  frag.body += "  vec2 n99_bad = vec2(0.0);\n  n99_bad.xy = vec2(1.0);\n";
+  frag.lineOp.push_back(op);
+  frag.lineOp.push_back(op);
+  try {
+    emitWgsl(plan);
+    ADD_FAILURE() << "emitWgsl accepted a multi-component swizzle assignment";
+  } catch (const WgslRefused& r) {
+    EXPECT_EQ(r.op, op);
+    EXPECT_NE(r.message.find("multi-component swizzle"), std::string::npos) << r.message;
+  }
 }
 
 TEST(WgslEmit, SameGraphSameBytes) {
