@@ -168,13 +168,13 @@ TEST(GlslFunctionNode, WithoutAReferenceTheCpuSaysSoPlainly) {
 
 // ---- bad input: one diagnostic at its place, naming the node, and no program ---------------
 
-struct Fault {
+struct FunctionFault {
   DiagCode code;
   std::string file;  // the diagnostic's file name ends with this
   int line, col;
 };
 
-void expectFault(const std::string& glsl, const std::string& function, const Fault& want,
+void expectFault(const std::string& glsl, const std::string& function, const FunctionFault& want,
                  const std::string& messagePart) {
   FunctionTree tree;
   tree.write("f.glsl", glsl);
