@@ -2,6 +2,7 @@
 #include "codegen/manifest_webgpu.h"
 
 #include "codegen/emit_wgsl.h"
+#include "codegen/manifest_vulkan.h"
 
 namespace wg {
 namespace {
@@ -86,25 +87,7 @@ void writeWebgpuSection(JsonTextWriter& w, const Manifest& m) {
     w.memberInteger("size", static_cast<long long>(wgslUniformBufferSize(offset)));
     w.endObject();
   }
-  w.key("varyings");
-  w.beginArray();
-  for (size_t i = 0; i < m.varyings.size(); ++i) {
-    w.beginObject();
-    w.memberInteger("location", static_cast<long long>(i));
-    w.member("name", m.varyings[i].name);
-    w.endObject();
-  }
-  w.endArray();
-  w.key("vertex_inputs");
-  w.beginArray();
-  for (const auto& a : m.attributes) {
-    w.beginObject();
-    w.member("format", webgpuVertexFormat(a.type));
-    w.memberInteger("location", a.location);
-    w.member("name", a.name);
-    w.endObject();
-  }
-  w.endArray();
+  writeVertexInterface(w, m, webgpuVertexFormat);
   w.endObject();
 }
 

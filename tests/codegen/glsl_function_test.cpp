@@ -21,24 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A folder holding one graph and its function files, removed afterwards.
-class FunctionTree {
- public:
-  FunctionTree() : dir_(test::makeTempDir("wg_glsl_function")) {}
-  ~FunctionTree() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string write(const std::string& rel, const std::string& text) const {
-    std::string path = dir_ + "/" + rel;
-    fs::create_directories(fs::path(path).parent_path());
-    test::writeFile(path, text);
-    return path;
-  }
-  const std::string& dir() const { return dir_; }
-
- private:
-  std::string dir_;
+// A folder of the test's files (test::FileTree), removed afterwards.
+struct FunctionTree : test::FileTree {
+  FunctionTree() : FileTree("wg_glsl_function") {}
 };
 
 // A small caustic: bright lines where two sine ridges cross, with a helper and a constant.
