@@ -112,6 +112,10 @@ std::string referenceUnavailable(const CompileResult& result) {
   if (!p.output(OutputSlot::FragmentColor)) return "no fragment colour";
   if (const ProgramOutput* a = p.output(OutputSlot::FragmentAlpha))
     if (!(a->value.kind == ValueRef::Kind::Const && a->value.constant()[0] == 1.0)) return "the colour is blended by alpha";
+  // A GLSL function node without a `reference` formula: its GLSL is all there is.
+  for (const Op& op : p.ops)
+    if (!op.spec->eval)
+      return "node '" + op.nodeId + "' (" + op.spec->type + ") has no double reference; checked for NaN and Inf only";
   return "";
 }
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 #include <memory>
 #include <sstream>
 #include <thread>
@@ -27,6 +28,8 @@
 #include "codegen/output_files.h"
 #include "core/shown_text.h"
 #include "codegen/spirv_cross_targets.h"
+#include "codegen/compile_wgsl.h"
+#include "cli/wgsl_checks.h"
 #include "codegen/texture_files.h"
 #include "core/graph_imports.h"
 #include "core/graph_io.h"
@@ -57,7 +60,8 @@ struct CompileArgs {
 constexpr std::string_view kCHeaderTarget = "c-header";
 constexpr std::string_view kQueryCTarget = "query-c";
 constexpr std::string_view kQueryJsTarget = "query-js";
-constexpr const char* kTargetNames = "glsl330, es300, vk450, msl, hlsl, c-header, query-c, query-js";
+constexpr std::string_view kWgslTarget = "wgsl";
+constexpr const char* kTargetNames = "glsl330, es300, vk450, msl, hlsl, wgsl, c-header, query-c, query-js";
 
 struct TargetSet {
   std::vector<Target> glsl;
@@ -69,16 +73,22 @@ struct TargetSet {
   // query-c / query-js: <graph>.query.h / <graph>.query.js, the surface queries of the
   // vertex stage's displacement (codegen/query_header.h).
   bool queryC = false, queryJs = false;
+  // wgsl: <graph>.wgsl for WebGPU (codegen/compile_wgsl.h); alone, it compiles glsl330 too,
+  // the GLSL its WGSL is written from.
+  bool wgsl = false;
   std::string list() const {
     std::string s;
     for (Target t : glsl) s += (s.empty() ? "" : ",") + std::string(targetName(t));
     for (CrossTarget t : cross) s += (s.empty() ? "" : ",") + std::string(crossTargetName(t));
+    if (wgsl) s += (s.empty() ? "" : ",") + std::string(kWgslTarget);
     if (cHeader) s += (s.empty() ? "" : ",") + std::string(kCHeaderTarget);
     if (queryC) s += (s.empty() ? "" : ",") + std::string(kQueryCTarget);
     if (queryJs) s += (s.empty() ? "" : ",") + std::string(kQueryJsTarget);
     return s;
   }
-  size_t size() const { return glsl.size() + cross.size() + (cHeader ? 1 : 0) + (queryC ? 1 : 0) + (queryJs ? 1 : 0); }
+  size_t size() const {
+    return glsl.size() + cross.size() + (wgsl ? 1 : 0) + (cHeader ? 1 : 0) + (queryC ? 1 : 0) + (queryJs ? 1 : 0);
+  }
 };
 
 bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
@@ -106,6 +116,8 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
         out.queryC = true;
       } else if (part == kQueryJsTarget) {
         out.queryJs = true;
+      } else if (part == kWgslTarget) {
+        out.wgsl = true;
       } else if (auto c = parseCrossTarget(part)) {
         bool dup = false;
         for (CrossTarget have : out.cross) dup |= have == *c;
@@ -116,7 +128,7 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
       }
     }
   }
-  if (out.glsl.empty() && out.cross.empty()) out.glsl = allTargets();
+  if (out.glsl.empty() && out.cross.empty()) out.glsl = out.wgsl ? std::vector<Target>{Target::Glsl330} : allTargets();
   return true;
 }
 
@@ -129,7 +141,31 @@ struct GraphOutcome {
   double ms = 0;
   DepfileRule dependencies;  // when written: the files written and the files read
   std::string frequency;     // --explain-frequency: the graph's report
+  std::vector<std::string> notRun;  // validate --target wgsl: "naga: why it did not run"
 };
+
+// validate --target wgsl: naga and Tint on the module (cli/wgsl_checks.h). Their errors are
+// diagnostics at the nodes (WG046); a checker that could not run is listed in `notRun`.
+bool checkWgslExternally(const CompileResult& result, const std::string& base, GraphOutcome& outcome, Diagnostics& diags) {
+  const std::string file = base + ".wgsl";
+  const std::string* wgsl = nullptr;
+  for (const auto& f : result.files)
+    if (f.name == file) wgsl = &f.contents;
+  if (!wgsl) return true;
+  bool ok = true;
+  for (auto run : {runNagaCheck, runTintCheck}) {
+    WgslCheckOutcome c = run(*wgsl);
+    if (!c.ran) outcome.notRun.push_back(c.checker + ": " + c.notRunBecause);
+    for (const auto& e : c.errors) {
+      ok = false;
+      reportWgslMessage(result.program, result.wgslLineOp, e.line,
+                        c.checker + " rejected the generated WGSL at " + file + ":" + std::to_string(e.line) + ":" +
+                            std::to_string(e.column) + ": " + e.text,
+                        DiagCode::WgslRejected, diags);
+    }
+  }
+  return ok;
+}
 
 void printSummary(std::FILE* to, const std::vector<GraphOutcome>& outcomes, const TargetSet& targets) {
   std::string targetList = targets.list();
@@ -186,7 +222,8 @@ std::string nowHms() {
 }
 
 // What a build system needs to know about one compiled graph: the files written into
-// `dir` depend on the graph's file, every graph it imports and every PNG it samples. The
+// `dir` depend on the graph's file, every graph it imports, every PNG it samples and every
+// .glsl file its function nodes call. The
 // node textures `--textures` writes are not named as targets: their names come from the
 // graph, which a build system has not read when it declares a rule's outputs (Ninja refuses
 // a depfile naming an output the rule did not declare); they are written by the same
@@ -208,6 +245,8 @@ DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, cons
   for (const auto& t : result.manifest.textures)
     if (!t.source.empty() && t.source.rfind(kBuiltinTexturePrefix, 0) != 0)
       rule.inputs.push_back((graphDir / t.source).lexically_normal().string());
+  // The .glsl files of its GLSL function nodes (relative to the graph's folder).
+  for (const auto& f : result.program.functionFiles) rule.inputs.push_back((graphDir / f).lexically_normal().string());
   return rule;
 }
 
@@ -241,6 +280,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     options.targets = targets.glsl;
     options.preset = args.preset;
     options.derivedUniforms = args.derivedUniforms || targets.cHeader;
+    options.wgsl = targets.wgsl;
     result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
     for (size_t i = 1; library && result && !write && i < library->interface->outputs.size(); ++i) {
       std::string why;
@@ -258,6 +298,7 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     }
     outcome.total = result ? result->nodesTotal : static_cast<int>(graph->nodes.size());
   }
+  if (result && targets.wgsl && !write && !checkWgslExternally(*result, outcome.name, outcome, diags)) result.reset();
   if (result && args.textures) {
     auto pngs = textureFiles(*result, diags, &*graph);
     if (diags.hasErrors()) result.reset();
@@ -431,9 +472,14 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
   if (args.summary) printSummary(info, outcomes, targets);
   int code = kExitOk;
   if (!all.hasErrors()) {
+    // A check that could not run is said, every time, and never counted as passed.
+    std::set<std::string> notRun;
+    for (const auto& o : outcomes) notRun.insert(o.notRun.begin(), o.notRun.end());
+    for (const auto& why : notRun) std::fprintf(info, "wgsl: not validated by %s\n", escapedForTerminal(why).c_str());
     if (!write && !args.summary && !args.quiet)
-      std::fprintf(info, "validated %zu graph%s for %zu target%s: ok\n", args.graphs.size(),
-                   args.graphs.size() == 1 ? "" : "s", targets.size(), targets.size() == 1 ? "" : "s");
+      std::fprintf(info, "validated %zu graph%s for %zu target%s: %s\n", args.graphs.size(),
+                   args.graphs.size() == 1 ? "" : "s", targets.size(), targets.size() == 1 ? "" : "s",
+                   notRun.empty() ? "ok" : "ok where checked; wgsl NOT fully validated (see above)");
     if (write && args.verbose)
       std::fprintf(info, "compiled %zu graph%s for %s\n", args.graphs.size(), args.graphs.size() == 1 ? "" : "s",
                    targets.list().c_str());
@@ -448,7 +494,8 @@ int runCompile(const CompileArgs& args, const GlobalOptions& global, bool write)
 void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   cmd->add_option("--target", args.targets,
                   "targets, comma separated: glsl330, es300, vk450 (default: these three), msl, hlsl (from the vk450 "
-                  "SPIR-V through SPIRV-Cross), c-header (<graph>.derived.h: C that computes the derived uniforms "
+                  "SPIR-V through SPIRV-Cross), wgsl (<graph>.wgsl for WebGPU: both entry points in one module; alone it "
+                  "compiles glsl330 too; validate runs naga and Tint on it where Node.js and Chromium are installed), c-header (<graph>.derived.h: C that computes the derived uniforms "
                   "once per draw, for a renderer of your own; implies --derived-uniforms), query-c and query-js "
                   "(<graph>.query.h, <graph>.query.js: where the water surface is, its height, normal and velocity, "
                   "from the vertex stage's displacement, for game code; docs/queries.md)");
@@ -499,7 +546,8 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
                 "times); stop with Ctrl-C");
   addOutputOption(cmd, "--depfile", args->depfile,
                   "also write a Make/Ninja depfile: the files written for each graph depend on its file, every graph "
-                  "it imports and every PNG texture it samples (for build systems: CMake's DEPFILE, Ninja's depfile)");
+                  "it imports, every PNG texture it samples and every .glsl file its function nodes call (for build systems: "
+                  "CMake's DEPFILE, Ninja's depfile)");
   cmd->add_option("--watch-interval", args->watchIntervalMs, "milliseconds between polls in --watch")
       ->check(CLI::Range(10, 60000))
       ->capture_default_str();

@@ -1,5 +1,7 @@
 #include "codegen/compile.h"
 
+#include "codegen/compile_wgsl.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <iterator>
@@ -198,6 +200,9 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   // The plans live inside emitTargets, so they are gone before the manifest's text is
   // written: a big graph's plans are megabytes that nothing after the manifest reads.
   if (!emitTargets(*program, options, base, sourceName.empty() ? graph.name : sourceName, result, diags))
+    return std::nullopt;
+  if (options.wgsl && !addWgslTarget(*program, base, sourceName.empty() ? graph.name : sourceName, options.derivedUniforms,
+                                     result, diags, &result.wgslLineOp))
     return std::nullopt;
   result.manifest.preset = options.preset;
   result.files.push_back({base + ".manifest.json", result.manifest.fileText()});

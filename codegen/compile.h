@@ -28,6 +28,8 @@ struct CompileOptions {
   // CLI's compile and validate; off where one graph is compiled over and over in variants
   // of its knobs (tune, bench), whose graph was checked when the run began.
   bool checkPresets = true;
+  // Also GRAPH.wgsl for WebGPU (codegen/compile_wgsl.h), listed in the manifest as "wgsl".
+  bool wgsl = false;
 };
 
 struct OutputFile {
@@ -41,6 +43,7 @@ struct CompileResult {
   Manifest manifest;  // also among `files`, as JSON
   int nodesTotal = 0;
   int nodesKept = 0;  // graph nodes some op still comes from (an expanded node counts once)
+  std::vector<int> wgslLineOp;  // with CompileOptions::wgsl: GRAPH.wgsl's line -> op map
 };
 
 // glslang's messages about generated shaders as diagnostics at the graph node whose op wrote

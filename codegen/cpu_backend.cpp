@@ -165,6 +165,8 @@ std::vector<Value> evaluateOpAt(const Op& op, const std::vector<Value>& inputs, 
                                 TextureCache* textures, const std::string& graphDir, FetchCursor* cursor) {
   std::vector<Value> converted(inputs.size());
   for (size_t i = 0; i < inputs.size(); ++i) converted[i] = inputs[i].convertedTo(op.inputTypes[i]);
+  if (!op.spec->eval)
+    throw std::runtime_error("node '" + op.nodeId + "' (" + op.spec->type + ") has no double reference");
   OpEvalContext ctx(op, converted, env, textures, graphDir, cursor);
   op.spec->eval(ctx);
   std::vector<Value> out = ctx.take();

@@ -76,6 +76,13 @@ class StageAssembler {
       out.addLines(item->text);
       out.add("");  // ends the item's last line, or adds an empty one after a final '\n'
     }
+    // The ops' own GLSL (function nodes' files, renamed into their namespaces).
+    for (size_t k = 0; k < s.ownGlsl.size(); ++k) {
+      const std::string& code = *s.ownGlsl[k];
+      std::vector<int> ops(static_cast<size_t>(std::count(code.begin(), code.end(), '\n')), s.ownGlslOp[k]);
+      out.add("");
+      out.addLines(code, &ops);
+    }
     out.add("");
     out.add("void main() {");
     for (const auto& l : s.locals) out.add("  " + l);

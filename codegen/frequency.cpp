@@ -57,7 +57,7 @@ std::vector<Frequency> analyseFrequency(const Program& program) {
     const Op& op = program.ops[i];
     Frequency f = Frequency::Constant;
     bool v = false;
-    if (op.spec->isSource) {
+    if (op.spec->isSource || op.spec->ownGlsl) {  // a function node: its GLSL, never a CPU copy, computes it
       if (op.spec->isUniformSource) f = Frequency::PerDraw;
       else v = true;
     }

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "codegen/manifest_vulkan.h"
+#include "codegen/manifest_webgpu.h"
 #include "core/json_text_writer.h"
 
 namespace wg {
@@ -320,6 +321,10 @@ std::string Manifest::fileText() const {
   if (writesVulkanSection(*this)) {
     w.key("vulkan");
     writeVulkanSection(w, *this);
+  }
+  if (writesWebgpuSection(*this)) {
+    w.key("webgpu");
+    writeWebgpuSection(w, *this);
   }
   w.endObject();
   text += '\n';

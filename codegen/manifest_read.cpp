@@ -370,7 +370,8 @@ Manifest Manifest::fromJson(const json& j) {
   if (const json* scales = member(j, "pass_scales")) m.passScales = passScalesOf(*scales, m.passes);
   onlyMembers(j,
               {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
-               "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan", "color", "oceans"},
+               "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan", "webgpu", "color",
+               "oceans"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
     fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));
@@ -433,6 +434,12 @@ Manifest Manifest::fromJson(const json& j) {
     fail(vulkan ? "the manifest has a \"vulkan\" section but no vk450 target" : "the manifest has a vk450 target but no \"vulkan\" section");
   if (vulkan && *vulkan != written["vulkan"])
     fail("the manifest's \"vulkan\" section does not match its uniforms, textures, attributes and varyings");
+  // "webgpu" likewise (codegen/manifest_webgpu.h), written with the wgsl target.
+  const json* webgpu = member(j, "webgpu");
+  if (written.contains("webgpu") != (webgpu != nullptr))
+    fail(webgpu ? "the manifest has a \"webgpu\" section but no wgsl target" : "the manifest has a wgsl target but no \"webgpu\" section");
+  if (webgpu && *webgpu != written["webgpu"])
+    fail("the manifest's \"webgpu\" section does not match its uniforms, textures, attributes and varyings");
   return m;
 }
 

@@ -80,6 +80,11 @@ void writeVulkanSection(JsonTextWriter& w, const Manifest& m) {
     w.memberInteger("size", static_cast<long long>(std140BlockSize(layout)));
     w.endObject();
   }
+  writeVertexInterface(w, m, vertexFormat);
+  w.endObject();
+}
+
+void writeVertexInterface(JsonTextWriter& w, const Manifest& m, const char* (*format)(Type)) {
   w.key("varyings");  // between the last geometry stage and the fragment stage
   w.beginArray();
   for (size_t i = 0; i < m.varyings.size(); ++i) {
@@ -93,13 +98,12 @@ void writeVulkanSection(JsonTextWriter& w, const Manifest& m) {
   w.beginArray();
   for (const auto& a : m.attributes) {
     w.beginObject();
-    w.member("format", vertexFormat(a.type));
+    w.member("format", format(a.type));
     w.memberInteger("location", a.location);
     w.member("name", a.name);
     w.endObject();
   }
   w.endArray();
-  w.endObject();
 }
 
 bool writesVulkanSection(const Manifest& m) { return m.target(targetName(Target::Vk450)) != nullptr; }

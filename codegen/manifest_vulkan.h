@@ -11,4 +11,8 @@ namespace wg {
 bool writesVulkanSection(const Manifest& m);
 void writeVulkanSection(JsonTextWriter& w, const Manifest& m);
 
+// The "varyings" (location by order) and "vertex_inputs" members both API sections share,
+// each vertex input's format named by `format` (the API's name for a float vector type).
+void writeVertexInterface(JsonTextWriter& w, const Manifest& m, const char* (*format)(Type));
+
 }  // namespace wg

@@ -20,7 +20,8 @@ PassResult foldPass(Program& program, PassContext&) {
     for (auto& in : op.inputs)
       if (in.kind == ValueRef::Kind::Op && !replace[static_cast<size_t>(in.index)].empty())
         in = replace[static_cast<size_t>(in.index)][static_cast<size_t>(in.port)];
-    if (op.spec->isSource) continue;
+    // A function node's GLSL is the truth and its reference (if any) a check of it: never folded.
+    if (op.spec->isSource || op.spec->ownGlsl) continue;
     bool allConst = true;
     for (const auto& in : op.inputs) allConst &= in.kind == ValueRef::Kind::Const;
     if (!allConst) continue;

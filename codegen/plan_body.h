@@ -117,6 +117,8 @@ class BodyWriter {
 // Around the bodies (codegen/plan_stage.cpp).
 // The planned stage for a written body: its locals, and the library items both call.
 PlannedStage plannedStage(ShaderStage stage, StageBody&& body, std::vector<std::string> locals);
+// Adds to `s` the own GLSL (NodeSpec::ownGlsl) of the ops that wrote its body.
+void addOwnGlsl(const Program& program, PlannedStage& s);
 // The library items `code` calls, dependencies first.
 std::vector<const GlslItem*> libraryFor(std::string_view code);
 // The union of the stages' library items, in library order.

@@ -63,6 +63,7 @@ ShaderPlan planProbe(const Program& program, std::string sourceName, bool derive
   plan.oceans = writer.oceans();
   planResources(program, plan);
   PlannedStage& fs = plan.stages.emplace_back(plannedStage(ShaderStage::Fragment, std::move(frag), probeLocals(frag)));
+  addOwnGlsl(program, fs);
   fs.uniforms = uniformsWhere(plan, [](const UniformInfo& u) { return (u.stages & kFragmentStage) != 0; });
   fs.textures = texturesIn(plan, kFragmentStage);
   plan.functions = functionsOf(plan.stages);

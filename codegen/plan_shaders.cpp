@@ -148,6 +148,7 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
     plan.stages.push_back(tessControlStage(plan, vert));
     std::vector<StageVariable> patch = patchVariables(vert, "te_");
     PlannedStage& eval = plan.stages.emplace_back(plannedStage(ShaderStage::TessEvaluation, std::move(vert), tessEvaluationLocals(vert)));
+    addOwnGlsl(program, eval);
     eval.inputs = std::move(patch);
     eval.arrayedInputs = true;
     eval.outputs = varyings;
@@ -156,12 +157,14 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
     eval.textures = texturesIn(plan, kVertexStage);
   } else {
     PlannedStage& vs = plan.stages.emplace_back(plannedStage(ShaderStage::Vertex, std::move(vert), vertexLocals(vert)));
+    addOwnGlsl(program, vs);
     vs.attributes = plan.attributes;
     vs.outputs = varyings;
     vs.uniforms = uniformsWhere(plan, [](const UniformInfo& u) { return (u.stages & kVertexStage) != 0; });
     vs.textures = texturesIn(plan, kVertexStage);
   }
   PlannedStage& fs = plan.stages.emplace_back(plannedStage(ShaderStage::Fragment, std::move(frag), fragmentLocals(plan, frag)));
+  addOwnGlsl(program, fs);
   // Deferred: the full-screen fragment shader reads the G-buffer instead of varyings.
   if (!deferred) fs.inputs = varyings;
   fs.uniforms = uniformsWhere(plan, [](const UniformInfo& u) { return (u.stages & kFragmentStage) != 0; });

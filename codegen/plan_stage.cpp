@@ -39,6 +39,18 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, std::vector<std::str
   return s;
 }
 
+void addOwnGlsl(const Program& program, PlannedStage& s) {
+  int last = -1;
+  for (int op : s.lineOp) {
+    if (op < 0 || op == last) continue;
+    last = op;
+    const auto& code = program.ops[static_cast<size_t>(op)].spec->ownGlsl;
+    if (!code || std::find(s.ownGlsl.begin(), s.ownGlsl.end(), code) != s.ownGlsl.end()) continue;
+    s.ownGlsl.push_back(code);
+    s.ownGlslOp.push_back(op);
+  }
+}
+
 std::vector<std::string> functionsOf(const std::vector<PlannedStage>& stages) {
   std::set<std::string> called;
   for (const auto& s : stages)

@@ -93,6 +93,10 @@ struct PlannedStage {
   std::vector<size_t> uniforms;  // indices into ShaderPlan::uniforms declared loose here
   std::vector<size_t> textures;  // indices into ShaderPlan::textures sampled here
   std::vector<const GlslItem*> library;  // items of GlslLibrary::builtin() called, dependencies first
+  // The ops' own GLSL (NodeSpec::ownGlsl: function nodes' files, renamed), each once, after
+  // the library, with the first op that needs it (glslang's errors in it name that node).
+  std::vector<std::shared_ptr<const std::string>> ownGlsl;
+  std::vector<int> ownGlslOp;
 };
 
 struct ShaderPlan {

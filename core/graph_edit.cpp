@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <set>
 
 #include "core/graph_node_type.h"
@@ -305,6 +306,81 @@ std::string GraphEditor::moveNode(const std::string& id, std::array<double, 2> p
   if (graph_.findNode(id)->editorPosition == position) return "";
   record("move node '" + id + "'", "move:" + id);
   findNode(id)->editorPosition = position;
+  return "";
+}
+
+std::string GraphEditor::moveNodes(const std::vector<std::pair<std::string, std::array<double, 2>>>& positions) {
+  std::string key = "move:";
+  bool changes = false;
+  for (const auto& [id, position] : positions) {
+    const Node* n = graph_.findNode(id);
+    if (!n) return "no node '" + id + "'";
+    if (!positionFits(position)) return "a node position must be finite in float32 range";
+    changes |= n->editorPosition != position;
+    key += id + ",";
+  }
+  if (!changes) return "";
+  if (positions.size() == 1) return moveNode(positions[0].first, positions[0].second);
+  record("move " + std::to_string(positions.size()) + " nodes", key);
+  for (const auto& [id, position] : positions) findNode(id)->editorPosition = position;
+  return "";
+}
+
+std::string GraphEditor::deleteNodes(const std::vector<std::string>& ids) {
+  for (const auto& id : ids)
+    if (!graph_.findNode(id)) return "no node '" + id + "'";
+  if (ids.empty()) return "";
+  if (ids.size() == 1) return deleteNode(ids[0]);
+  record("delete " + std::to_string(ids.size()) + " nodes", "");
+  std::set<std::string> gone(ids.begin(), ids.end());
+  auto reads = [&](const InputSource& s) { return s.kind == InputSource::Kind::NodeOutput && gone.count(s.name); };
+  std::erase_if(graph_.nodes, [&](const Node& n) { return gone.count(n.id) > 0; });
+  for (auto& n : graph_.nodes) std::erase_if(n.inputs, [&](const NodeInput& in) { return reads(in.source); });
+  std::erase_if(graph_.outputs, [&](const GraphOutput& o) { return reads(o.source); });
+  return "";
+}
+
+std::string GraphEditor::insertNodes(std::vector<Node> nodes) {
+  if (nodes.empty()) return "";
+  if (graph_.nodes.size() + nodes.size() > kMaxNodes) return "a graph has at most " + std::to_string(kMaxNodes) + " nodes";
+  std::map<std::string, const Node*> added;
+  for (const Node& n : nodes) {
+    if (!isIdentifier(n.id)) return "'" + n.id + "' is not a valid node id ([A-Za-z_][A-Za-z0-9_]*, at most 64)";
+    if (graph_.findNode(n.id)) return "a node '" + n.id + "' already exists";
+    if (!added.emplace(n.id, &n).second) return "node id '" + n.id + "' is given twice";
+    if (registry_ && !nodeTypeOf(graph_, *registry_, n.type)) return "no node type '" + n.type + "' (node '" + n.id + "')";
+    if (n.editorPosition && !positionFits(*n.editorPosition)) return "a node position must be finite in float32 range";
+  }
+  for (const Node& n : nodes)
+    for (const NodeInput& in : n.inputs)
+      if (in.source.kind == InputSource::Kind::NodeOutput && !added.count(in.source.name) && !graph_.findNode(in.source.name))
+        return "input '" + in.port + "' of node '" + n.id + "' reads node '" + in.source.name + "', which is not there";
+  // Existing nodes do not read the new ones, so a cycle can only lie among them: peel off
+  // the nodes that read none of the new ones still left (Kahn's order, no recursion: a paste
+  // may be a long chain); what cannot be peeled lies on or behind a cycle.
+  std::map<std::string, size_t> unread;  // per new node: links to new nodes not yet peeled
+  std::map<std::string, std::vector<std::string>> readers;
+  for (const Node& n : nodes)
+    for (const NodeInput& in : n.inputs)
+      if (in.source.kind == InputSource::Kind::NodeOutput && added.count(in.source.name))
+        ++unread[n.id], readers[in.source.name].push_back(n.id);
+  std::vector<std::string> ready;
+  for (const Node& n : nodes)
+    if (!unread[n.id]) ready.push_back(n.id);
+  size_t peeled = 0;
+  while (!ready.empty()) {
+    std::string id = std::move(ready.back());
+    ready.pop_back();
+    ++peeled;
+    for (const std::string& r : readers[id])
+      if (--unread[r] == 0) ready.push_back(r);
+  }
+  if (peeled != nodes.size()) {
+    for (const Node& n : nodes)
+      if (unread[n.id]) return "the links among the nodes close a cycle (through node '" + n.id + "')";
+  }
+  record(nodes.size() == 1 ? "paste node '" + nodes[0].id + "'" : "paste " + std::to_string(nodes.size()) + " nodes", "");
+  for (Node& n : nodes) graph_.nodes.push_back(std::move(n));
   return "";
 }
 

@@ -51,6 +51,34 @@ class GraphEditor {
   // Removes the node and every input and output slot that reads it.
   std::string deleteNode(const std::string& id);
   std::string moveNode(const std::string& id, std::array<double, 2> position);
+  // Several nodes at once (a selection dragged on the canvas, a pasted group), one undo step
+  // (merged while the same nodes keep moving, like moveNode). Refused whole if any id is
+  // unknown or any position does not fit.
+  std::string moveNodes(const std::vector<std::pair<std::string, std::array<double, 2>>>& positions);
+  // Several nodes and their links, one undo step.
+  std::string deleteNodes(const std::vector<std::string>& ids);
+  // Adds `nodes` (a paste) as one undo step. Refused whole, the graph unchanged, when an id
+  // is not an identifier, is taken or repeats, a type is unknown (with a registry), a link
+  // names a node that is neither in the graph nor among `nodes`, the links among `nodes`
+  // close a cycle, a position does not fit, or the graph would pass its node limit.
+  std::string insertNodes(std::vector<Node> nodes);
+  // The blackboard (core/graph_edit_parameters.cpp): parameters and presets, each one undo
+  // step, refused whole with a reason as every edit is.
+  // A new parameter: an identifier not taken, `defaultValue` of the type's size, finite in
+  // float32, within min and max; hint "", "color" or "hdr_color" (a vec3 or vec4).
+  std::string addParameter(Parameter parameter);
+  // Renames a parameter; every reference follows: node inputs, output slots, interface
+  // outputs and preset values. Refused when `to` is not an identifier or is taken.
+  std::string renameParameter(const std::string& from, const std::string& to);
+  // Refused, naming every reference, while anything reads the parameter.
+  std::string deleteParameter(const std::string& name);
+  // Moves a parameter to position `index` (0-based) of the list (the order of the file
+  // and of the inspector).
+  std::string moveParameter(const std::string& name, size_t index);
+  // A new preset holding every parameter's current value.
+  std::string createPreset(const std::string& name);
+  std::string renamePreset(const std::string& from, const std::string& to);
+  std::string deletePreset(const std::string& name);
   // Replaces the whole graph (a reload from disk), undoably.
   void replace(Graph graph, const std::string& label);
   // Takes the imported graphs of `loaded` (the same graph with its imports loaded again)

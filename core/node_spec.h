@@ -6,6 +6,7 @@
 #include <array>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -363,6 +364,10 @@ struct NodeSpec {
     std::optional<Value> constant;  // this constant stands in
   };
   std::vector<BypassValue> bypass;
+  // GLSL definitions of the node's own, beyond the library's: a function node's file,
+  // renamed into its namespace and accepted by glslang for every target (core/file_node.h).
+  // The planner emits it once before main in each stage that runs the node.
+  std::shared_ptr<const std::string> ownGlsl;
 
   int inputIndex(std::string_view name) const;
   int outputIndex(std::string_view name) const;

@@ -118,6 +118,11 @@ struct Program {
   int totalNodes = 0;  // nodes in the graph file, each subgraph instance counted as the nodes it inlines
   // The graph files it imports, relative to `directory`, each once (the manifest's "imports").
   std::vector<std::string> importedFiles;
+  // The GLSL function files its function nodes read, relative to `directory`, each once
+  // (the depfile lists them), and the node types made from them, which its ops point at
+  // (core/file_node.h).
+  std::vector<std::string> functionFiles;
+  std::vector<std::shared_ptr<const NodeSpec>> fileNodeSpecs;
   std::vector<ProgramParameter> parameters;
   std::vector<Op> ops;  // topological: inputs come before their users
   std::vector<ProgramOutput> outputs;

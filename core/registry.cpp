@@ -213,6 +213,22 @@ void Registry::add(NodeSpec spec) {
   specs_.emplace(key, std::make_unique<NodeSpec>(std::move(spec)));
 }
 
+void Registry::addFileNodeType(std::string type, FileNodeMaker make) {
+  if (specs_.count(type) || fileNodeTypes_.count(type)) throw std::logic_error("node type registered twice: " + type);
+  fileNodeTypes_.emplace(std::move(type), std::move(make));
+}
+
+const FileNodeMaker* Registry::fileNodeType(std::string_view type) const {
+  auto it = fileNodeTypes_.find(type);
+  return it == fileNodeTypes_.end() ? nullptr : &it->second;
+}
+
+std::vector<std::string> Registry::fileNodeTypeNames() const {
+  std::vector<std::string> out;
+  for (const auto& [name, make] : fileNodeTypes_) out.push_back(name);
+  return out;
+}
+
 const NodeSpec* Registry::find(std::string_view type) const {
   auto it = specs_.find(type);
   return it == specs_.end() ? nullptr : it->second.get();

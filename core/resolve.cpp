@@ -16,6 +16,7 @@
 #include "core/color_parameters.h"
 #include "core/derive.h"
 #include "core/expand.h"
+#include "core/file_node.h"
 #include "core/graph_imports.h"
 #include "core/graph_node_type.h"
 #include "core/id_index.h"
@@ -84,6 +85,7 @@ struct SharedState {
   std::size_t opsMeasured = 0;
   std::size_t inlinedBytes = 0;
   bool overBudget = false;
+  int fileNodes = 0;  // function nodes made so far: each takes the next namespace
 };
 
 // A subgraph instance being inlined: its nodes' ids take the prefix, its parameters read
@@ -320,6 +322,14 @@ class Resolver {
       const Node& n = graph_.nodes[i];
       GraphNodeType type = nodeTypeOf(graph_, registry_, n.type);
       const NodeSpec* spec = type.spec;
+      if (!spec && !type.import)
+        if (const FileNodeMaker* make = registry_.fileNodeType(n.type)) {
+          // Its ports come from its file: a file that does not pass is reported, and the
+          // node is left out like an unknown type.
+          auto made = (*make)({n, directory_, shared_.fileNodes++}, diags_);
+          if (!made) continue;
+          spec = keepFileNode(program_, std::move(*made));
+        }
       if (type.import && type.import->graph) {
         spec = instanceSpec(*type.import);
         instanceOf_[i] = type.import;

@@ -3,6 +3,7 @@
 #include "core/file_read.h"
 #include "core/load_limits.h"
 
+#include <cmath>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -12,13 +13,17 @@ namespace {
 
 const std::set<std::string>& editOps() {
   static const std::set<std::string> ops{"set_parameter", "apply_preset", "set_input", "set_option", "connect", "disconnect", "add_node",
-                                         "delete_node", "move_node", "undo", "redo"};
+                                         "delete_node", "move_node", "undo", "redo",
+                                         "add_parameter", "rename_parameter", "delete_parameter", "move_parameter",
+                                         "create_preset", "rename_preset", "delete_preset"};
   return ops;
 }
 
 const std::set<std::string>& appOps() {
   static const std::set<std::string> ops{"save", "screenshot", "save_preview", "save_thumbnail", "select", "camera", "time",
-                                         "frames", "external_write", "wait_reload", "open_subgraph", "back"};
+                                         "frames", "external_write", "wait_reload", "open_subgraph", "back",
+                                         "key", "type", "click", "drag", "wheel", "hover", "print_widgets",
+                                         "set_clipboard", "save_clipboard", "save_as", "open"};
   return ops;
 }
 
@@ -128,6 +133,33 @@ std::string applyEditStep(GraphEditor& e, const ScriptStep& step) {
     }
     if (op == "delete_node") return e.deleteNode(text(a, "id"));
     if (op == "move_node") return e.moveNode(text(a, "id"), {number(a, "x"), number(a, "y")});
+    if (op == "add_parameter") {
+      Parameter p;
+      p.name = text(a, "name");
+      auto type = parseType(a.contains("type") ? text(a, "type") : "float");
+      if (!type) throw std::invalid_argument("\"type\" is float, vec2, vec3 or vec4");
+      p.type = *type;
+      if (a.contains("default")) p.defaultValue = numbers(a, "default");
+      if (a.contains("min")) p.min = number(a, "min");
+      if (a.contains("max")) p.max = number(a, "max");
+      if (a.contains("hint")) p.hint = text(a, "hint");
+      if (a.contains("description")) p.description = text(a, "description");
+      if (a.contains("static")) {
+        if (!a["static"].is_boolean()) throw std::invalid_argument("\"static\" must be true or false");
+        p.isStatic = a["static"].get<bool>();
+      }
+      return e.addParameter(std::move(p));
+    }
+    if (op == "rename_parameter") return e.renameParameter(text(a, "name"), text(a, "to"));
+    if (op == "delete_parameter") return e.deleteParameter(text(a, "name"));
+    if (op == "move_parameter") {
+      double index = number(a, "index");
+      if (index < 0 || index != std::floor(index)) throw std::invalid_argument("\"index\" is a position from 0");
+      return e.moveParameter(text(a, "name"), static_cast<size_t>(index));
+    }
+    if (op == "create_preset") return e.createPreset(text(a, "name"));
+    if (op == "rename_preset") return e.renamePreset(text(a, "name"), text(a, "to"));
+    if (op == "delete_preset") return e.deletePreset(text(a, "name"));
     if (op == "undo") return e.undo() ? "" : "nothing to undo";
     if (op == "redo") return e.redo() ? "" : "nothing to redo";
     return "'" + op + "' is not an edit";

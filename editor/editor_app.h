@@ -19,6 +19,8 @@ struct EditorOptions {
   int frames = 0;                // frames to run (after the script) before exiting; 0: until closed
   bool stats = false;            // print edit-to-pixels latencies to stdout
   cli::ViewFlags view;           // --tonemap / --exposure over the graph's "view"
+  bool newGraph = false;         // --new: graphPath does not exist yet; it starts from the template
+  std::string settings;          // --settings: where panel sizes are remembered ("": the default; none in batch runs)
 };
 
 // Runs the editor. Exit status: 0, 1 when the script failed or the graph (as last

@@ -14,6 +14,9 @@
 #include "core/load_limits.h"
 #include "core/node_options.h"
 #include "core/number_format.h"
+#include "editor/blackboard.h"
+#include "editor/slider_value.h"
+#include "editor/widget_rects.h"
 
 namespace wg::editor {
 namespace {
@@ -103,6 +106,7 @@ std::string portTooltip(const PortSpec& port) {
 }  // namespace
 
 void drawParameterInspector(GraphEditor& editor) {
+  drawBlackboardControls(editor);
   const Graph& g = editor.graph();
   if (!g.presets.empty()) {
     // A preset writes its values into the parameters (one undo step); the sliders then
@@ -116,7 +120,9 @@ void drawParameterInspector(GraphEditor& editor) {
     }
   }
   if (g.parameters.empty()) ImGui::TextDisabled("this graph has no parameters");
-  for (const Parameter& p : g.parameters) {
+  // A copy: the right-click menu may rename, move or delete parameters as the list is drawn.
+  const std::vector<Parameter> parameters = g.parameters;
+  for (const Parameter& p : parameters) {
     ImGui::PushID(p.name.c_str());
     std::vector<float> v(p.defaultValue.begin(), p.defaultValue.end());
     bool bounded = p.min && p.max;
@@ -130,8 +136,10 @@ void drawParameterInspector(GraphEditor& editor) {
     if (color && v.size() == 3) changed = ImGui::ColorEdit3(label.c_str(), v.data(), flags);
     else if (color && v.size() == 4) changed = ImGui::ColorEdit4(label.c_str(), v.data(), flags);
     else if (!v.empty()) changed = editFloats(label.c_str(), v, lo, hi, bounded);
+    widgetRects().note("parameter " + p.name, {ImGui::GetItemRectMin().x, ImGui::GetItemRectMin().y,
+                                               ImGui::GetItemRectMax().x, ImGui::GetItemRectMax().y});
     if (changed) {
-      std::vector<double> d(v.begin(), v.end());
+      std::vector<double> d = valuesFromWidget(p.defaultValue, v);
       for (double& x : d) x = std::clamp(x, p.min.value_or(-1e30), p.max.value_or(1e30));
       editor.setParameterDefault(p.name, d);
     }
@@ -139,6 +147,7 @@ void drawParameterInspector(GraphEditor& editor) {
     if (ImGui::IsItemHovered() && (!p.description.empty() || p.isStatic))
       ImGui::SetTooltip("%s%s", p.description.c_str(),
                         p.isStatic ? "\nstatic: folded into the shader, so a change recompiles" : "");
+    drawParameterMenu(editor, p.name);  // right-click on the slider
     ImGui::PopID();
   }
 }
@@ -179,14 +188,15 @@ bool drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
     } else if (src && src->kind == InputSource::Kind::Parameter) {
       ImGui::Text("%s <- $%s", port.name.c_str(), src->name.c_str());
     } else {
-      std::vector<float> v;
-      if (src) v.assign(src->literal.begin(), src->literal.end());
-      else if (port.defaultValue) for (int i = 0; i < port.defaultValue->size(); ++i) v.push_back(static_cast<float>((*port.defaultValue)[i]));
+      std::vector<double> exact;
+      if (src) exact = src->literal;
+      else if (port.defaultValue) for (int i = 0; i < port.defaultValue->size(); ++i) exact.push_back((*port.defaultValue)[i]);
+      std::vector<float> v(exact.begin(), exact.end());
       if (v.empty()) {
         ImGui::Text("%s: %s", port.name.c_str(),
                     port.defaultBuiltin ? ("builtin " + std::string(builtinName(*port.defaultBuiltin))).c_str() : "(required)");
       } else if (editFloats(port.name.c_str(), v, 0, 0, false)) {
-        editor.setInputConstant(target, std::vector<double>(v.begin(), v.end()));
+        editor.setInputConstant(target, valuesFromWidget(exact, v));
       }
       sealAfterEdit(editor);
     }

@@ -7,7 +7,11 @@
 #include <regex>
 
 #include "cli/finite_number.h"
+#include "codegen/output_files.h"
+#include "core/diagnostic.h"
+#include "core/graph.h"
 #include "editor/editor_app.h"
+#include "editor/graph_template.h"
 #include "runtime/scene.h"
 
 namespace {
@@ -36,6 +40,9 @@ int main(int argc, char** argv) {
   app.add_option("--screenshot", o.screenshot, "write the window as a PNG after the last frame, then exit");
   app.add_option("--frames", o.frames, "run this many frames (after the script), then exit");
   app.add_flag("--stats", o.stats, "print each edit's edit-to-pixels latency");
+  app.add_flag("--new", o.newGraph, "create the graph file from a small template (it must not exist yet), then edit it");
+  app.add_option("--settings", o.settings,
+                 "remember panel sizes in this file (default: ~/.config/watergraph/editor.json; batch runs: none)");
   wg::cli::addViewFlags(&app, o.view);
   // A usage error is one line naming the option, as watergraph's.
   app.failure_message([](const CLI::App*, const CLI::Error& e) {
@@ -62,8 +69,22 @@ int main(int argc, char** argv) {
   }
   if (!o.screenshot.empty() && o.frames == 0 && o.script.empty()) o.frames = 3;  // a screenshot means a batch run
   std::error_code ec;
+  if (o.newGraph) {
+    // The template, named after the file, written before the window opens: the editor then
+    // edits an ordinary file.
+    if (std::filesystem::exists(o.graphPath, ec)) {
+      std::cerr << "watergraph-editor: --new: " << o.graphPath << " exists already; open it without --new\n";
+      return 2;
+    }
+    std::string stem = std::filesystem::path(o.graphPath).stem().string();
+    wg::Diagnostics d;
+    if (!wg::writeFileAtomically(o.graphPath, wg::editor::newGraphText(wg::isIdentifier(stem) ? stem : "new_graph"), d)) {
+      for (const auto& e : d.all()) std::cerr << wg::formatText(e) << "\n";
+      return 2;
+    }
+  }
   if (!std::filesystem::is_regular_file(o.graphPath, ec)) {
-    std::cerr << o.graphPath << ": error: [WG050] cannot open the graph file: no such file\n";
+    std::cerr << o.graphPath << ": error: [WG050] cannot open the graph file: no such file (--new creates one)\n";
     return 2;
   }
   return wg::editor::runEditor(o);

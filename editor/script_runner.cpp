@@ -1,7 +1,10 @@
 #include "editor/script_runner.h"
 
 #include <fstream>
+#include <iostream>
 #include <sstream>
+
+#include "editor/widget_rects.h"
 
 namespace wg::editor {
 
@@ -11,6 +14,7 @@ bool ScriptRunner::fail(const std::string& where, const std::string& why) {
 }
 
 bool ScriptRunner::step(ScriptHost& host) {
+  if (host.inputPending()) return true;  // a click or drag takes several frames
   if (waitFrames_ > 0) {
     --waitFrames_;
     return true;
@@ -46,6 +50,15 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     return true;
   }
   if (step.op == "save") return done(host.save(str("path").empty() ? host.graphPath() : str("path")));
+  if (step.op == "open") {
+    if (str("path").empty()) return fail(where, "needs a string \"path\"");
+    if (a.contains("discard") && !a["discard"].is_boolean()) return fail(where, "\"discard\" must be true or false");
+    return done(host.open(str("path"), a.value("discard", false)));
+  }
+  if (step.op == "save_as") {
+    if (str("path").empty()) return fail(where, "needs a string \"path\"");
+    return done(host.saveAs(str("path")));
+  }
   if (step.op == "screenshot" || step.op == "save_preview" || step.op == "save_thumbnail") {
     if (str("path").empty()) return fail(where, "needs a string \"path\"");
     if (step.op == "screenshot") return done(host.screenshot(str("path")));
@@ -64,6 +77,16 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
   }
   if (step.op == "frames") {
     waitFrames_ = a.contains("count") && a["count"].is_number_integer() ? a["count"].get<int>() : 1;
+    return true;
+  }
+  if (step.op == "key" || step.op == "type" || step.op == "click" || step.op == "drag" || step.op == "wheel" ||
+      step.op == "hover" || step.op == "set_clipboard" || step.op == "save_clipboard")
+    return done(host.input(step));
+  if (step.op == "print_widgets") {
+    // Where the named widgets were drawn in the last frame, for a test to measure.
+    for (const auto& [name, r] : widgetRects().all())
+      if (name.rfind(str("prefix"), 0) == 0)
+        std::cout << "widget " << name << ": " << r[0] << " " << r[1] << " " << r[2] << " " << r[3] << std::endl;
     return true;
   }
   if (step.op == "open_subgraph") return done(host.openSubgraph(str("node")));

@@ -21,6 +21,12 @@ class ScriptHost {
   virtual int diskEvents() const = 0;  // changes on disk noticed so far
   // Each returns "" on success, else why not.
   virtual std::string save(const std::string& path) = 0;
+  // Saves to `path` and goes on editing that file (the old one stays as it was on disk).
+  virtual std::string saveAs(const std::string& path) { return "'save_as' needs the editor (" + path + ")"; }
+  // Edits another graph file instead (open, open recent).
+  virtual std::string open(const std::string& path, bool discard) {
+    return "'open' needs the editor (" + path + (discard ? ", discarding)" : ")");
+  }
   virtual std::string screenshot(const std::string& path) = 0;  // the window, after this frame
   virtual std::string savePreview(const std::string& path) = 0;
   virtual std::string saveThumbnail(const std::string& path) = 0;
@@ -33,6 +39,11 @@ class ScriptHost {
   // subgraph as it is on disk; refused while the subgraph has unsaved changes unless
   // `discard`.
   virtual std::string back(bool discard) = 0;
+  // Keys and pointer as a person gives them ("key", "type", "click", "drag", "wheel";
+  // editor/script_input.h); a host without a window takes none.
+  virtual std::string input(const ScriptStep& step) { return "'" + step.op + "' needs the editor's window"; }
+  // The pointer frames of the last input step are still being played.
+  virtual bool inputPending() const { return false; }
 };
 
 class ScriptRunner {

@@ -1,5 +1,8 @@
 #include "nodes/graph_schema.h"
 
+#include "nodes/glsl_function_node.h"
+
+#include <algorithm>
 #include <map>
 
 #include "core/graph.h"
@@ -237,6 +240,29 @@ OJ outputsSchema() {
             {"properties", std::move(stages)}};
 }
 
+// A GLSL function node (nodes/glsl_function_node.h): its ports are its function's
+// parameters, which the schema cannot see; its options are the file, the function, the
+// reference and one texture per sampler2D parameter.
+OJ fileNodeTypeSchema() {
+  OJ options{{"type", "object"}, {"required", {"file", "function"}}};
+  OJ props = OJ::object();
+  for (const OptionSpec& o : glslFunctionOptions()) props[o.name] = optionSchema(NodeSpec{}, o);
+  props["file"]["pattern"] = "^(?![/\\\\])(?!(.*/)?\\.\\.(/|$)).*\\.glsl$";
+  props["function"]["pattern"] = kIdentifierPattern;
+  props["reference"] = OJ{{"description", "output name -> formula in the expression language, for every output"},
+                          {"type", "object"},
+                          {"additionalProperties", {{"type", "string"}}}};
+  options["properties"] = props;
+  OptionSpec texture;
+  texture.kind = OptionSpec::Kind::Texture;
+  texture.doc = "the texture of a sampler2D parameter of the function";
+  options["additionalProperties"] = optionSchema(NodeSpec{}, texture);
+  OJ inputs{{"type", "object"},
+            {"propertyNames", defRef("identifier")},
+            {"additionalProperties", described("an input parameter of the function", defRef("source"))}};
+  return OJ{{"properties", {{"options", options}, {"inputs", inputs}}}};
+}
+
 }  // namespace
 
 nlohmann::ordered_json graphSchema(const Registry& registry) {
@@ -262,14 +288,22 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
                       {"required", {"x", "y"}},
                       {"properties", {{"x", defRef("number")}, {"y", defRef("number")}}}};
 
+  // Registered types and the types whose nodes take their ports from a file, by name.
+  std::vector<std::pair<std::string, std::string>> types;  // name, doc
+  for (const NodeSpec* s : specs) types.emplace_back(s->type, s->family + ": " + s->summary);
+  for (const auto& name : registry.fileNodeTypeNames()) {
+    types.emplace_back(name, "custom: a function of a .glsl file beside the graph; its parameters are the ports");
+    defs["node_" + name] = fileNodeTypeSchema();
+  }
+  std::sort(types.begin(), types.end());
   OJ typeNames = OJ::array();
   OJ typeDocs = OJ::array();
   OJ perType = OJ::array();
-  for (const NodeSpec* s : specs) {
-    typeNames.push_back(s->type);
-    typeDocs.push_back(s->family + ": " + s->summary);
-    perType.push_back(OJ{{"if", {{"properties", {{"type", {{"const", s->type}}}}}, {"required", {"type"}}}},
-                         {"then", defRef("node_" + s->type)}});
+  for (const auto& [name, doc] : types) {
+    typeNames.push_back(name);
+    typeDocs.push_back(doc);
+    perType.push_back(OJ{{"if", {{"properties", {{"type", {{"const", name}}}}}, {"required", {"type"}}}},
+                         {"then", defRef("node_" + name)}});
   }
   defs["node_type"] = OJ{{"description", "a registered node type (watergraph nodes)"},
                          {"enum", typeNames},

@@ -1,5 +1,7 @@
 #include "nodes/node_docs.h"
 
+#include "nodes/glsl_function_node.h"
+
 #include <map>
 
 #include "core/shown_text.h"
@@ -180,6 +182,7 @@ std::string nodesMarkdown(const Registry& registry) {
     for (const NodeSpec* s : specs) md += " [`" + s->type + "`](#" + s->type + ")";
     md += "\n";
   }
+  for (const auto& type : registry.fileNodeTypeNames()) md += "- **custom**: [`" + type + "`](#" + type + ")\n";
   for (const auto& [family, specs] : byFamily) {
     md += "\n## " + family + "\n";
     for (const NodeSpec* s : specs) {
@@ -221,6 +224,20 @@ std::string nodesMarkdown(const Registry& registry) {
         for (const auto& h : s->hardCases) md += "- " + h.name + ": " + h.expectation + "\n";
       }
     }
+  }
+  // The types whose nodes take their ports from a file: no spec until a node names one.
+  for (const auto& type : registry.fileNodeTypeNames()) {
+    md += "\n## custom\n\n### " + type + "\n\n";
+    md += "A function of a `.glsl` file beside the graph: its `in` parameters are the node's inputs, its return "
+          "value the output `out` and each `out` parameter one more output (float, vec2, vec3, vec4, mat3, mat4); "
+          "an `in sampler2D` parameter is a texture the node's option of that name chooses. The file is checked by "
+          "glslang for every target and renamed into the node's namespace; see "
+          "[GLSL function nodes](graph-format.md#glsl-function-nodes).\n\n";
+    md += "- stages: any (fragment only when the function takes derivatives)\n";
+    md += "- reference: the `reference` formulas, or none (`check` then sweeps it for NaN and Inf only, and says why)\n";
+    md += "\n| option | values | default | |\n|---|---|---|---|\n";
+    for (const auto& o : glslFunctionOptions())
+      md += "| `" + o.name + "` | " + optionKind(o) + " | `" + o.defaultValue.dump() + "` | " + o.doc + " |\n";
   }
   return md;
 }

@@ -2,6 +2,8 @@
 // (core/registry.cpp's checkSpec, and checkGlslCalls against the GLSL library).
 #include "nodes/registry.h"
 
+#include "nodes/glsl_function_node.h"
+
 #include "nodes/glsl_call_check.h"
 #include "nodes/node_library.h"
 
@@ -21,6 +23,8 @@ const Registry& defaultRegistry() {
       r.add(std::move(spec));  // checkSpec first: the call check parses the hard cases' options
       checkGlslCalls(*r.find(type), GlslLibrary::builtin());
     }
+    // Function nodes: each node's spec is made from its .glsl file when it is resolved.
+    r.addFileNodeType(kGlslFunctionType, makeGlslFunctionNode);
     return r;
   }();
   return registry;

@@ -25,7 +25,7 @@ ROOT=$PWD
 SECONDS_EACH=${1:-60}
 shift || true
 TARGETS=("$@")
-[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen texture edit_ops formula imports)
+[ ${#TARGETS[@]} -eq 0 ] && TARGETS=(loader compile graphgen texture edit_ops formula imports function_file)
 BUILD_DIR=${BUILD_DIR:-build-fuzz}
 JOBS=${JOBS:-2}
 
@@ -68,6 +68,7 @@ fuzz_one() {
     edit_ops) limits=(-max_len=1024 -timeout=10 -rss_limit_mb=4096) ;;
     formula) limits=(-max_len=4200 -timeout=30 -rss_limit_mb=4096) ;;
     imports) limits=(-max_len=16384 -timeout=30 -rss_limit_mb=4096) ;;
+    function_file) limits=(-max_len=8192 -timeout=30 -rss_limit_mb=4096) ;;
   esac
   # The texture and edit-sequence targets check cheap properties over a small input space,
   # the importer one what the compile target already covers for each file: half the time.
@@ -80,7 +81,7 @@ fuzz_one() {
   # Run inside the corpus folder: relative texture paths in inputs resolve there.
   local seeds=("$ROOT/graphs" "$ROOT/tests/bad" "$ROOT/tests/fuzz/regressions")
   local dict=(-dict="$FUZZ_DIR/graph.dict")
-  case $t in graphgen|texture|edit_ops|formula) seeds=() && dict=() ;; esac  # their inputs are not graph files
+  case $t in graphgen|texture|edit_ops|formula|function_file) seeds=() && dict=() ;; esac  # their inputs are not graph files
   [ "$t" = texture ] && dict=(-dict="$ROOT/tests/fuzz/texture.dict")
   [ "$t" = formula ] && dict=(-dict="$FUZZ_DIR/formula.dict")
   [ -d "$ROOT/tests/fuzz/corpus/$t" ] && seeds+=("$ROOT/tests/fuzz/corpus/$t")

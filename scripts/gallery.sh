@@ -33,7 +33,7 @@ render() {  # graph camera [preset]
     ${preset:+--preset "$preset"} ${view[@]+"${view[@]}"}
   echo "wrote $out/$name.png"
 }
-for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river lagoon; do
+for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river lagoon caustic_pool; do
   render "$g" above
   render "$g" grazing
 done

@@ -197,4 +197,16 @@ size_t glslCalls(const std::string& text, const std::string& fn) {
   return n;
 }
 
+FileTree::~FileTree() {
+  std::error_code ec;
+  std::filesystem::remove_all(dir_, ec);
+}
+
+std::string FileTree::write(const std::string& rel, const std::string& text) const {
+  std::string p = path(rel);
+  std::filesystem::create_directories(std::filesystem::path(p).parent_path());
+  writeFile(p, text);
+  return p;
+}
+
 }  // namespace wg::test

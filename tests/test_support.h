@@ -21,6 +21,23 @@ std::string makeTempDir(const std::string& prefix);
 
 // Writes `contents` to `path` (binary), creating or replacing it; throws on failure.
 void writeFile(const std::string& path, const std::string& contents);
+
+// A fresh folder of files a test writes (graphs, their subgraphs and function files),
+// removed with everything in it when the tree goes.
+class FileTree {
+ public:
+  explicit FileTree(const std::string& prefix) : dir_(makeTempDir(prefix)) {}
+  ~FileTree();
+  FileTree(const FileTree&) = delete;
+  FileTree& operator=(const FileTree&) = delete;
+  // Writes `text` to `rel` under the folder (making its folders); its path.
+  std::string write(const std::string& rel, const std::string& text) const;
+  std::string path(const std::string& rel) const { return dir_ + "/" + rel; }
+  const std::string& dir() const { return dir_; }
+
+ private:
+  std::string dir_;
+};
 // The names (not paths) of the regular files in `dir` whose name ends with `suffix`
 // ("" for all), sorted. A missing folder gives an empty list.
 std::vector<std::string> listFiles(const std::string& dir, const std::string& suffix = "");

@@ -4,7 +4,7 @@
 // with a WaterGraphError naming the member at fault ("uniforms[2].builtin", also in the
 // error's `field`), not later as a TypeError, a NaN uniform or a value silently taken.
 // Only what the three.js client reads is checked in depth; the informative members
-// ("nodes", "functions", "vulkan", ...) need only be of their kind.
+// ("nodes", "functions", "vulkan", "webgpu", ...) need only be of their kind.
 import { WaterGraphError } from './watergraph-error.js';
 
 // Tables keyed by names from the manifest have no prototype: "constructor" or "__proto__"
@@ -15,7 +15,7 @@ const setOf = (names) => table(Object.fromEntries(names.map((n) => [n, true])));
 export const MANIFEST_FORMAT = 1;
 
 const TOP_LEVEL = setOf(['format', 'graph', 'description', 'preset', 'imports', 'targets', 'attributes', 'uniforms',
-  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'color']);
+  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color']);
 // Components of each uniform type the client uploads.
 export const UNIFORM_COMPONENTS = table({ float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 });
 // The builtins the client computes (watergraph-three.js BUILTIN_INITIAL, time_phase and derived).
@@ -98,7 +98,7 @@ export function checkManifest(manifest) {
   for (const key of ['graph', 'description', 'preset']) if (has(manifest, key)) text(manifest[key], key);
   for (const key of ['imports', 'functions', 'varyings'])
     if (has(manifest, key)) list(manifest[key], key);
-  for (const key of ['nodes', 'vulkan', 'tessellation'])
+  for (const key of ['nodes', 'vulkan', 'webgpu', 'tessellation'])
     if (has(manifest, key)) object(manifest[key], key);
 
   // Pass names are strings; which ones the client can run it says itself, from the scene

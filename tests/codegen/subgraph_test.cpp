@@ -20,24 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// A folder of graph files written by the test, removed afterwards.
-class GraphTree {
- public:
-  GraphTree() : dir_(test::makeTempDir("wg_subgraph")) {}
-  ~GraphTree() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  std::string write(const std::string& rel, const std::string& text) const {
-    std::string path = dir_ + "/" + rel;
-    fs::create_directories(fs::path(path).parent_path());
-    test::writeFile(path, text);
-    return path;
-  }
-  std::string path(const std::string& rel) const { return dir_ + "/" + rel; }
-
- private:
-  std::string dir_;
+// A folder of the test's files (test::FileTree), removed afterwards.
+struct GraphTree : test::FileTree {
+  GraphTree() : FileTree("wg_subgraph") {}
 };
 
 // A function graph: colour = mix(water, sky, fresnel(f0)) with its parameters as inputs.

@@ -164,6 +164,104 @@ TEST(GraphEdit, UndoRedoRestoreExactStates) {
   EXPECT_FALSE(e.canRedo());
 }
 
+TEST(GraphEdit, SeveralNodesMoveAndGoAsOneUndoStep) {
+  GraphEditor e(lake(), &defaultRegistry());
+  std::string before = saveGraph(e.graph());
+  // A drag: the same nodes moved frame after frame merge into one step until sealed.
+  ASSERT_EQ(e.moveNodes({{"uv", {1, 2}}, {"radius", {3, 4}}}), "");
+  ASSERT_EQ(e.moveNodes({{"uv", {5, 6}}, {"radius", {7, 8}}}), "");
+  EXPECT_EQ(e.graph().findNode("radius")->editorPosition, (std::array<double, 2>{7, 8}));
+  EXPECT_NE(e.moveNodes({{"uv", {0, 0}}, {"ghost", {0, 0}}}), "") << "an unknown id refuses the whole move";
+  EXPECT_EQ(e.graph().findNode("uv")->editorPosition, (std::array<double, 2>{5, 6}));
+  EXPECT_NE(e.moveNodes({{"uv", {0, 0}}, {"radius", {0, 1e39}}}), "");
+  e.seal();
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(saveGraph(e.graph()), before) << "one step";
+
+  ASSERT_EQ(e.deleteNodes({"radius", "shore"}), "");
+  EXPECT_FALSE(e.graph().findNode("radius"));
+  EXPECT_FALSE(e.graph().findNode("shore"));
+  for (const Node& n : e.graph().nodes)
+    for (const NodeInput& in : n.inputs) EXPECT_TRUE(in.source.name != "radius" && in.source.name != "shore") << n.id;
+  EXPECT_NE(e.deleteNodes({"uv", "ghost"}), "");
+  EXPECT_TRUE(e.graph().findNode("uv")) << "refused whole";
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(saveGraph(e.graph()), before);
+}
+
+TEST(GraphEdit, PastedNodesGoInAsOneStepOrNotAtAll) {
+  GraphEditor e(lake(), &defaultRegistry());
+  std::string before = saveGraph(e.graph());
+  auto node = [](const std::string& id, const std::string& type, const std::string& from = "") {
+    Node n;
+    n.id = id, n.type = type, n.editorPosition = std::array<double, 2>{10, 20};
+    if (!from.empty()) n.inputs.push_back({"x", InputSource{InputSource::Kind::NodeOutput, from, "out", {}, {}}, {}});
+    return n;
+  };
+  EXPECT_NE(e.insertNodes({node("a", "saturate"), node("uv", "saturate")}), "") << "a taken id";
+  EXPECT_NE(e.insertNodes({node("a", "saturate"), node("a", "saturate")}), "") << "an id twice";
+  EXPECT_NE(e.insertNodes({node("a", "no_such_type")}), "");
+  EXPECT_NE(e.insertNodes({node("a", "saturate", "ghost")}), "") << "a link to nothing";
+  std::string cycle = e.insertNodes({node("a", "saturate", "b"), node("b", "saturate", "c"), node("c", "saturate", "a")});
+  EXPECT_NE(cycle.find("cycle"), std::string::npos) << cycle;
+  EXPECT_NE(e.insertNodes({node("9a", "saturate")}), "");
+  EXPECT_EQ(saveGraph(e.graph()), before) << "every refusal left the graph as it was";
+  EXPECT_FALSE(e.canUndo());
+  // A long chain (no recursion), linked inside and to the graph.
+  std::vector<Node> chain{node("c0", "saturate", "radius")};
+  for (int i = 1; i < 5000; ++i) chain.push_back(node("c" + std::to_string(i), "saturate", "c" + std::to_string(i - 1)));
+  ASSERT_EQ(e.insertNodes(chain), "");
+  EXPECT_EQ(e.graph().nodes.size(), lake().nodes.size() + 5000);
+  ASSERT_TRUE(e.undo());
+  EXPECT_EQ(saveGraph(e.graph()), before) << "one step";
+}
+
+TEST(GraphEdit, ParametersAreAddedRenamedMovedAndDeletedWithTheirReferences) {
+  GraphEditor e(lake(), &defaultRegistry());
+  ASSERT_EQ(e.createPreset("now"), "");  // before glow: the preset holds the lake's five
+  Parameter p;
+  p.name = "glow", p.type = Type::Vec3, p.defaultValue = {1, 0.5, 0}, p.min = 0, p.max = 1, p.hint = "color";
+  ASSERT_EQ(e.addParameter(p), "");
+  EXPECT_NE(e.addParameter(p), "") << "taken";
+  Parameter bad = p;
+  bad.name = "2x";
+  EXPECT_NE(e.addParameter(bad), "");
+  bad.name = "short", bad.defaultValue = {1, 2};
+  EXPECT_NE(e.addParameter(bad), "") << "a vec3 takes three numbers";
+  bad.defaultValue = {2, 0, 0};
+  EXPECT_NE(e.addParameter(bad), "") << "outside min..max";
+  bad.type = Type::Float, bad.defaultValue = {0.5}, bad.hint = "color";
+  EXPECT_NE(e.addParameter(bad), "") << "a colour hint on a float";
+
+  // Rename: node inputs and presets follow; a clash or a non-identifier is refused in place.
+  EXPECT_NE(e.renameParameter("max_depth", "deep"), "");
+  EXPECT_NE(e.renameParameter("max_depth", "max depth"), "");
+  ASSERT_EQ(e.renameParameter("max_depth", "floor_depth"), "");
+  EXPECT_FALSE(e.graph().findParameter("max_depth"));
+  bool follows = false;
+  for (const NodeInput& in : e.graph().findNode("tint")->inputs) follows |= in.port == "max_depth" && in.source.name == "floor_depth";
+  EXPECT_TRUE(follows);
+  bool inPreset = false;
+  for (const PresetValue& v : e.graph().findPreset("now")->values) inPreset |= v.parameter == "floor_depth";
+  EXPECT_TRUE(inPreset);
+  Diagnostics d;
+  EXPECT_TRUE(parseGraph(saveGraph(e.graph()), "renamed.json", d)) << "the renamed graph saves and loads";
+
+  // Delete: refused while read, naming the readers.
+  std::string why = e.deleteParameter("floor_depth");
+  EXPECT_NE(why.find("node 'tint' input 'max_depth'"), std::string::npos) << why;
+  EXPECT_NE(why.find("preset 'now'"), std::string::npos) << why;
+  ASSERT_EQ(e.deleteParameter("glow"), "") << "nothing reads it";
+  ASSERT_EQ(e.moveParameter("sky", 0), "");
+  EXPECT_EQ(e.graph().parameters[0].name, "sky");
+  EXPECT_NE(e.moveParameter("sky", 99), "");
+
+  ASSERT_EQ(e.renamePreset("now", "later"), "");
+  EXPECT_NE(e.renamePreset("later", "x y"), "");
+  ASSERT_EQ(e.deletePreset("later"), "");
+  EXPECT_TRUE(e.graph().presets.empty());
+}
+
 TEST(GraphEdit, DirtyFollowsTheSavedState) {
   GraphEditor e(lake(), &defaultRegistry());
   ASSERT_EQ(e.moveNode("uv", {1, 2}), "");

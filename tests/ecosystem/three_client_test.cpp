@@ -170,6 +170,13 @@ TEST_F(ThreeClient, TheLagoonsOwnTextureMatchesTheRuntime) {
   EXPECT_GE(comparedPsnr("graphs/lagoon.json", "above"), kTexturedWavesMinPsnrDb);
 }
 
+// A hand-written GLSL function (a glsl_function node) used twice through a subgraph: the
+// es300 shader carries the file renamed into each node's namespace, which three.js
+// compiles like any generated code.
+TEST_F(ThreeClient, TheCausticPoolsOwnFunctionMatchesTheRuntime) {
+  EXPECT_GE(comparedPsnr("graphs/caustic_pool.json", "above"), kTexturedWavesMinPsnrDb);
+}
+
 // Without a scene description, a graph needing passes the client then does not render
 // fails in the page with one clear message naming them, instead of drawing something wrong.
 TEST_F(ThreeClient, UnsupportedPassesAreAClearError) {

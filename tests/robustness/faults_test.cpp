@@ -77,8 +77,10 @@ TEST(Faults, EveryBadGraphIsOneLinePerErrorAndNothingIsWritten) {
     if (l.rfind("  note: ", 0) == 0) continue;
     // A located note (an import or a subgraph instance): `file:line:col: note: ...`.
     if (l.find(": note: ") != std::string::npos && l.find(": error: ") == std::string::npos) continue;
-    // Every other line is a diagnostic of one of the files, with a position.
+    // Every other line is a diagnostic of one of the files (a graph, or the GLSL function
+    // file a bad graph's glsl_function node names), with a position.
     auto colon = l.find(".json:");
+    if (colon == std::string::npos) colon = l.find(".glsl:");  // as long as ".json"
     ASSERT_NE(colon, std::string::npos) << "not a diagnostic line: " << l;
     std::string path = l.substr(0, colon + 5);
     ASSERT_TRUE(firstExpected.count(path)) << l;

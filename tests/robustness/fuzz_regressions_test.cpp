@@ -12,6 +12,7 @@
 
 #include "fuzz/edit_sequence.h"
 #include "fuzz/formula_property.h"
+#include "fuzz/function_file_property.h"
 #include "fuzz/fuzz_properties.h"
 #include "fuzz/imports_property.h"
 #include "fuzz/texture_property.h"
@@ -95,6 +96,15 @@ TEST(FuzzCorpus, ImportsSeedsCompileAndFail) {
   EXPECT_EQ(outcome("nested"), "ok");
   EXPECT_EQ(outcome("cycle"), "WG072");
   EXPECT_EQ(outcome("interface_mismatch"), "WG074");
+  std::filesystem::remove_all(scratch);
+}
+
+TEST(FuzzCorpus, FunctionFilePropertyHoldsForEveryKeptInput) {
+  std::string scratch = test::makeTempDir("wg_function_file_replay_");
+  auto inputs = corpus("function_file");
+  EXPECT_GE(inputs.size(), 5u);
+  for (const auto& path : inputs)
+    EXPECT_EQ(fuzz::functionFileProperty(test::readFile(test::sourcePath(path)), scratch + "/run"), "") << path;
   std::filesystem::remove_all(scratch);
 }
 

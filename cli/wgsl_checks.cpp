@@ -1,0 +1,118 @@
+// naga and Tint on a WGSL module, through Node.js (cli/wgsl_checks.h).
+#include "cli/wgsl_checks.h"
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sys/wait.h>
+
+#include <nlohmann/json.hpp>
+
+#include <unistd.h>
+
+namespace wg {
+namespace {
+
+namespace fs = std::filesystem;
+
+// `program` found in a folder of $PATH, or "".
+std::string onSearchPath(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  size_t start = 0;
+  while (start <= dirs.size()) {
+    size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    fs::path candidate = fs::path(dirs.substr(start, end - start).empty() ? "." : dirs.substr(start, end - start)) / program;
+    std::error_code ec;
+    if (fs::is_regular_file(candidate, ec)) return candidate.string();
+    start = end + 1;
+  }
+  return "";
+}
+
+std::string quotedForShell(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs `command`; its stdout, and its exit status (-1 when it could not start).
+std::pair<int, std::string> capturedOutput(const std::string& command) {
+  std::string out;
+  FILE* p = popen((command + " 2>&1").c_str(), "r");
+  if (!p) return {-1, ""};
+  std::array<char, 4096> buf{};
+  size_t n;
+  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
+  int status = pclose(p);
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
+}
+
+// Writes `wgsl` to a fresh temporary file and runs `script` on it; parses its JSON lines.
+WgslCheckOutcome runCheckScript(const std::string& checker, const std::string& script, const std::string& needs,
+                                const std::string& wgsl) {
+  WgslCheckOutcome o;
+  o.checker = checker;
+  std::string node = onSearchPath("node");
+  if (node.empty()) {
+    o.notRunBecause = "Node.js (node) is not on PATH";
+    return o;
+  }
+  const std::string dir = webgpuClientDir();
+  if (!fs::exists(fs::path(dir) / "node_modules" / needs)) {
+    o.notRunBecause = "the npm package " + needs + " is not installed in " + dir + " (run `npm ci` there)";
+    return o;
+  }
+  std::error_code ec;
+  fs::path tmp = fs::temp_directory_path(ec) / ("watergraph-" + checker + "-" + std::to_string(::getpid()) + ".wgsl");
+  {
+    std::ofstream f(tmp, std::ios::binary);
+    f << wgsl;
+    if (!f) {
+      o.notRunBecause = "cannot write a temporary file for it";
+      return o;
+    }
+  }
+  auto [status, out] = capturedOutput(quotedForShell(node) + " " + quotedForShell(dir + "/" + script) + " " +
+                                      quotedForShell(tmp.string()));
+  fs::remove(tmp, ec);
+  // One JSON line for the file; anything else (status 2, or no line) says why it did not run.
+  for (size_t start = 0; start < out.size();) {
+    size_t end = out.find('\n', start);
+    if (end == std::string::npos) end = out.size();
+    auto line = nlohmann::json::parse(out.substr(start, end - start), nullptr, false);
+    start = end + 1;
+    if (!line.is_object() || !line.contains("ok")) continue;
+    if (line.contains("skipped")) {
+      o.notRunBecause = line["skipped"].get<std::string>();
+      return o;
+    }
+    o.ran = true;
+    if (line.contains("errors"))
+      for (const auto& e : line["errors"])
+        o.errors.push_back({e.value("line", 0), e.value("column", 0), e.value("message", std::string("(no message)"))});
+    if (!line["ok"].get<bool>() && o.errors.empty()) o.errors.push_back({0, 0, "rejected without a message"});
+    return o;
+  }
+  std::string first = out.substr(0, out.find('\n'));
+  o.notRunBecause = script + " gave no result (exit status " + std::to_string(status) + ")" + (first.empty() ? "" : ": " + first);
+  return o;
+}
+
+}  // namespace
+
+std::string webgpuClientDir() {
+  if (const char* env = std::getenv("WATERGRAPH_WEBGPU_CLIENT"); env && *env) return env;
+  return WG_WEBGPU_CLIENT_DIR;
+}
+
+WgslCheckOutcome runNagaCheck(const std::string& wgsl) { return runCheckScript("naga", "naga_check.mjs", "naga-wasm", wgsl); }
+
+WgslCheckOutcome runTintCheck(const std::string& wgsl) {
+  return runCheckScript("Tint", "tint_check.mjs", "playwright-core", wgsl);
+}
+
+}  // namespace wg

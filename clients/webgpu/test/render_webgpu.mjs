@@ -1,0 +1,84 @@
+// Renders a compiled graph (compile --target es300,wgsl --textures) with the WebGPU runner in
+// headless Chromium on SwiftShader and writes the frame as a PNG.
+// Usage: node render_webgpu.mjs --dir DIR --manifest GRAPH.manifest.json --description scene.json
+//          --size WxH --camera above|grazing|underwater|topdown --time T --grid N --png OUT.png
+//          [--chromium /usr/bin/chromium]
+// (scene.json from `watergraph scene`: its camera presets and sun are the runtime's.)
+// Exit status: 0 written; 1 the page failed (message on stderr); 2 usage, or Chromium/WebGPU missing.
+import { access, constants, readFile, writeFile } from 'node:fs/promises';
+import { createServer } from 'node:http';
+import path from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { parseArgs } from 'node:util';
+
+const fail = (code, message) => {
+  process.stderr.write(`render_webgpu: ${message}\n`);
+  process.exit(code);
+};
+const keys = ['dir', 'manifest', 'description', 'size', 'camera', 'time', 'grid', 'png', 'chromium'];
+let args;
+try {
+  ({ values: args } = parseArgs({ options: Object.fromEntries(keys.map((k) => [k, { type: 'string' }])) }));
+} catch (e) {
+  fail(2, e.message);
+}
+for (const k of keys) if (k !== 'chromium' && args[k] === undefined) fail(2, `missing --${k}`);
+const [width, height] = args.size.split('x').map(Number);
+const chromiumPath = args.chromium ?? '/usr/bin/chromium';
+try {
+  await access(chromiumPath, constants.X_OK);
+} catch {
+  fail(2, `no Chromium at ${chromiumPath} (Debian: apt-get install chromium)`);
+}
+const here = path.dirname(fileURLToPath(import.meta.url));
+let chromium;
+try {
+  ({ chromium } = await import('playwright-core'));
+} catch (e) {
+  fail(2, `cannot load playwright-core (run \`npm ci\` in clients/webgpu): ${e.message}`);
+}
+const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.json': 'application/json', '.png': 'image/png' };
+const roots = { '/webgpu/': path.resolve(here, '..'), '/three/': path.resolve(here, '../../three'),
+  '/out/': path.resolve(args.dir), '/scene/': path.dirname(path.resolve(args.description)) };
+const server = createServer(async (req, res) => {
+  const url = new URL(req.url, 'http://127.0.0.1');
+  const prefix = Object.keys(roots).find((p) => url.pathname.startsWith(p));
+  const file = prefix && path.resolve(roots[prefix], '.' + decodeURIComponent(url.pathname.slice(prefix.length - 1)));
+  if (!file || !(file + path.sep).startsWith(roots[prefix] + path.sep)) return res.writeHead(404).end();
+  try {
+    const body = await readFile(file);
+    res.writeHead(200, { 'content-type': TYPES[path.extname(file)] ?? 'text/plain', 'cache-control': 'no-store' });
+    res.end(body);
+  } catch {
+    res.writeHead(404).end();
+  }
+});
+await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+const browser = await chromium.launch({
+  executablePath: chromiumPath,
+  args: ['--enable-unsafe-webgpu', '--enable-features=Vulkan,WebGPU', '--use-angle=swiftshader',
+         '--enable-unsafe-swiftshader', '--use-webgpu-adapter=swiftshader', '--ignore-gpu-blocklist'],
+  timeout: 30000,
+}).catch((e) => { server.close(); fail(2, `cannot start Chromium at ${chromiumPath}: ${e.message.split('\n')[0]}`); });
+let code = 0;
+try {
+  const page = await browser.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  const query = new URLSearchParams({ manifest: `/out/${args.manifest}`, description: `/scene/${path.basename(args.description)}`,
+    width, height, camera: args.camera, time: args.time, grid: args.grid });
+  await page.goto(`http://127.0.0.1:${server.address().port}/webgpu/test/render.html?${query}`);
+  await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 60000 });
+  const result = await page.evaluate(() => window.wgResult);
+  if (!result.ok) {
+    process.stderr.write(`render_webgpu: ${args.manifest}: ${[result.error, ...problems].join('\n  ')}\n`);
+    code = /WebGPU is not enabled|no WebGPU adapter/.test(result.error) ? 2 : 1;
+  } else {
+    await writeFile(args.png, Buffer.from(result.png, 'base64'));
+    process.stdout.write(`render_webgpu: ${args.manifest} ${width}x${height} on WebGPU (${result.adapter}) -> ${args.png}\n`);
+  }
+} finally {
+  await browser.close();
+  server.close();
+}
+process.exit(code);

@@ -1,0 +1,10 @@
+#include "editor/widget_rects.h"
+
+namespace wg::editor {
+
+WidgetRects& widgetRects() {
+  static WidgetRects rects;
+  return rects;
+}
+
+}  // namespace wg::editor

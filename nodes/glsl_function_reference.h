@@ -1,0 +1,28 @@
+#pragma once
+// A GLSL function node's double-precision reference: one formula per output, in the
+// expression language of the `expression` node, over the function's inputs. Each formula
+// is lowered into ops of the math nodes once, when the node is made; the node's eval runs
+// those ops through their own double references, so probe, check and the hard-case sweep
+// treat the function like any node with a reference.
+#include <functional>
+#include <string>
+#include <variant>
+
+#include <nlohmann/json.hpp>
+
+#include "core/node_spec.h"
+#include "nodes/glsl_function_check.h"
+
+namespace wg {
+
+struct FunctionReferenceFault {
+  bool syntax = false;  // a formula that does not parse (else: it names, calls or types wrongly)
+  std::string message;
+};
+
+// The eval of the node, from its `reference` option (an object: output name -> formula,
+// one for every output), or why the option cannot serve.
+std::variant<std::function<void(EvalContext&)>, FunctionReferenceFault> makeFunctionReference(
+    const FunctionSignature& signature, const nlohmann::json& reference);
+
+}  // namespace wg

@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The screenshots in docs/editor.md, made by the editor's own script mode under a virtual X
+# server (xvfb-run): the canvas framed with a half-wired node and a box selection, and the
+# palette filtered with Enter's entry highlighted. 1600x900 windows, the preview at 640x360.
+#   scripts/editor_screenshots.sh [build-dir] [out-dir]   (defaults: build, docs/images)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+out=${2:-docs/images}
+editor=$build/bin/watergraph-editor
+mkdir -p "$out"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+export MESA_SHADER_CACHE_DISABLE=true
+cp graphs/lake.json "$work/lake.json"
+
+shoot() {  # name steps-json
+  printf '%s\n' "$2" > "$work/steps.json"
+  cp graphs/lake.json "$work/lake.json"
+  xvfb-run -a -s '-screen 0 1600x1024x24' "$editor" "$work/lake.json" --size 1600x900 --time 3.5 \
+    --script "$work/steps.json" --screenshot "$out/$1.png" > /dev/null
+  echo "wrote $out/$1.png"
+}
+
+# The canvas: everything framed (Home), a haze node added and not wired yet (its required
+# inputs in orange, the preview live), three nodes box-selected, the minimap in the corner.
+shoot editor-canvas '[
+  {"op": "add_node", "type": "haze", "id": "haze", "x": 700, "y": 330},
+  {"op": "frames", "count": 1},
+  {"op": "hover", "widget": "canvas"},
+  {"op": "key", "key": "home"},
+  {"op": "frames", "count": 1},
+  {"op": "drag", "widget": "canvas", "from": [0.25, 0.2], "to": [0.62, 0.45]},
+  {"op": "frames", "count": 2}
+]'
+
+# The palette, opened on the background, filtered by "mix", Down pressed once.
+shoot editor-palette '[
+  {"op": "frames", "count": 1},
+  {"op": "click", "widget": "canvas", "at": [0.55, 0.75], "button": "right"},
+  {"op": "type", "text": "mix"},
+  {"op": "key", "key": "down"},
+  {"op": "frames", "count": 2}
+]'
+
+# The blackboard: a parameter added, a preset saved, and max_depth's right-click menu with a
+# clashing name refused in place.
+shoot editor-blackboard '[
+  {"op": "add_parameter", "name": "glint", "type": "float", "default": 0.02, "min": 0, "max": 1},
+  {"op": "create_preset", "name": "glassy"},
+  {"op": "frames", "count": 1},
+  {"op": "click", "widget": "parameter max_depth", "button": "right"},
+  {"op": "frames", "count": 1},
+  {"op": "click", "widget": "blackboard field"},
+  {"op": "type", "text": "deep"},
+  {"op": "click", "widget": "blackboard button"},
+  {"op": "frames", "count": 2}
+]'

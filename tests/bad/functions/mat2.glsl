@@ -1,0 +1,1 @@
+float f(mat2 m) { return m[0][0]; }

@@ -1,0 +1,1 @@
+float g(float a) { return a; }

@@ -1,0 +1,2 @@
+uniform float u_time;
+float f(float a) { return a * u_time; }
