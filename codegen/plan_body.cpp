@@ -394,8 +394,13 @@ std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
 std::string BodyWriter::oceanMap(StageBody& w, int spectrumOp, int cascade, int which) {
   auto known = std::find(oceanOps_.begin(), oceanOps_.end(), spectrumOp);
   const int ocean = static_cast<int>(known - oceanOps_.begin());
-  if (known == oceanOps_.end()) oceanOps_.push_back(spectrumOp);  // kept: the ocean's index stays fixed
   const OceanMapRef ref{ocean, cascade, which};
+  if (known == oceanOps_.end()) {
+    // Taken back with the op's maps when no read output needs them (then no ocean is simulated).
+    oceanOps_.push_back(spectrumOp);
+    // Its name is the prefix of its maps' names: kept while any kept text samples one of them.
+    w.noteRegistered("u_ocean" + std::to_string(ocean) + "_", [this, n = oceanOps_.size()] { popIfLast(oceanOps_, n); });
+  }
   for (auto& t : oceanTextures_)
     if (t.ocean == ref) {
       if (!(t.stages & w.stage))
