@@ -88,7 +88,7 @@ double jacobianOf(const oceanref::MapSample& m) {
 }
 
 nlohmann::json smallSea(const nlohmann::json& extra) {
-  nlohmann::json o = {{"resolution", 64}, {"tile_lengths", {50, 8}}};
+  nlohmann::json o = {{"fft_size", 64}, {"tile_lengths", {50, 8}}};
   for (auto it = extra.begin(); it != extra.end(); ++it) o[it.key()] = it.value();
   return o;
 }

@@ -53,7 +53,7 @@ ocean::OceanSettings parseOceanSettings(const OptionReader& o) {
   p.swell.direction = o.number("swell_direction") * kDegree;
   p.swell.spread = o.number("swell_spread");
   ocean::CascadeSettings& c = s.cascades;
-  c.resolution = o.integer("resolution");
+  c.resolution = o.integer("fft_size");
   c.tileLengths.clear();
   for (const auto& l : o.json("tile_lengths")) c.tileLengths.push_back(l.get<double>());
   c.choppiness = o.number("choppiness");
@@ -121,7 +121,7 @@ NodeSpec oceanSpectrumNode() {
                      "tiles, each shorter than the previous by "
                      "less than N/2 - 1 times (so no wavenumber between the "
                      "grids is lost)"),
-      ports::knob(ports::integer("resolution", 256, 64, 512,
+      ports::knob(ports::integer("fft_size", 256, 64, 512,
                                  "texels along a tile's side, a power of two; "
                                  "fewer drop the shortest waves"),
                   {64, 128, 256}),
@@ -137,7 +137,9 @@ NodeSpec oceanSpectrumNode() {
       // The settings speak of the fetch in metres; the option is in km.
       std::string why = e->message;
       if (e->parameter == "fetch") why = "must be greater than 0 km (the sea needs open water to grow)";
-      return NodeSpec::OptionProblem{e->parameter, why};
+      // The cascades' resolution is the option fft_size (`resolution` is the scene passes' knob).
+      std::string option = e->parameter == "resolution" ? "fft_size" : e->parameter;
+      return NodeSpec::OptionProblem{option, why};
     }
     return std::nullopt;
   };

@@ -132,22 +132,22 @@ TEST_P(OceanPlanBadSetting, IsAnErrorAtItsOption) {
   EXPECT_NE(text.find("sea"), std::string::npos) << text;
 }
 
-// The options object starts at line 2, column 59 of seaGraph's text; each value's column
+// The options object starts at line 2, column 56 of seaGraph's text; each value's column
 // follows from the text written.
 INSTANTIATE_TEST_SUITE_P(
     Settings, OceanPlanBadSetting,
-    ::testing::Values(BadSetting{R"({"fetch": 0})", "fetch", 2, 69},
-                      BadSetting{R"({"resolution": 100})", "resolution", 2, 74},
-                      BadSetting{R"({"resolution": 1024})", "resolution", 2, 74},
-                      BadSetting{R"({"tile_lengths": [10, 100]})", "tile_lengths", 2, 76},
-                      BadSetting{R"({"tile_lengths": [1000, 10]})", "tile_lengths", 2, 76},
-                      BadSetting{R"({"tile_lengths": []})", "tile_lengths", 2, 76},
-                      BadSetting{R"({"seed": 4294967296})", "seed", 2, 68},
-                      BadSetting{R"({"seed": 1.5})", "seed", 2, 68},
-                      BadSetting{R"({"wind_speed": 101})", "wind_speed", 2, 74},
-                      BadSetting{R"({"depth": 0})", "depth", 2, 69},
+    ::testing::Values(BadSetting{R"({"fetch": 0})", "fetch", 2, 66},
+                      BadSetting{R"({"fft_size": 100})", "fft_size", 2, 69},
+                      BadSetting{R"({"fft_size": 1024})", "fft_size", 2, 69},
+                      BadSetting{R"({"tile_lengths": [10, 100]})", "tile_lengths", 2, 73},
+                      BadSetting{R"({"tile_lengths": [1000, 5]})", "tile_lengths", 2, 73},  // 200 times: past N/2 - 1 = 127
+                      BadSetting{R"({"tile_lengths": []})", "tile_lengths", 2, 73},
+                      BadSetting{R"({"seed": 4294967296})", "seed", 2, 65},
+                      BadSetting{R"({"seed": 1.5})", "seed", 2, 65},
+                      BadSetting{R"({"wind_speed": 101})", "wind_speed", 2, 71},
+                      BadSetting{R"({"depth": 0})", "depth", 2, 66},
                       // At the default resolution 256 the tiles are fine; at 64 they are not.
-                      BadSetting{R"({"resolution": 64, "tile_lengths": [1000, 20]})", "tile_lengths", 2, 99}));
+                      BadSetting{R"({"fft_size": 64, "tile_lengths": [1000, 20]})", "tile_lengths", 2, 89}));
 
 TEST(OceanPlan, AnOceanPortTakesOnlyAnOcean) {
   Diagnostics diags;
