@@ -47,6 +47,7 @@ std::vector<ProbeCase> specHardCases(const NodeSpec& spec) {
     c.env = defaultProbeEnvironment();
     for (const auto& [port, value] : hc.inputs) c.inputs.emplace_back(port, toFloat32(value));
     c.options = nlohmann::json{{spec.type, hc.options}};
+    if (!hc.oceanOptions.empty()) c.options[spec.type][kOceanOptionsKey] = hc.oceanOptions;
     std::string output = hc.output.empty() ? spec.outputs.front().name : hc.output;
     c.ranges[spec.type + "." + output] = {hc.lo, hc.hi};
     c.tolerance = hc.tolerance;
@@ -83,6 +84,8 @@ std::vector<std::string> nodeReads(const NodeSpec& spec) {
       if (u.parameter < 0) insert(builtinUniformRow(u.builtin).caseKeys);
     for (const auto& t : shader.textures)
       if (t.scene) insert(sceneResourceRow(sceneSamplerRow(*t.scene).resource).caseKeys);
+    // The ocean maps are simulated at the case's time.
+    if (!shader.oceans.empty()) keys.emplace("time");
   }
   return {keys.begin(), keys.end()};
 }

@@ -22,13 +22,32 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
   Node node;
   node.id = "n";
   node.type = spec.type;
-  for (auto it = options.begin(); it != options.end(); ++it) node.options.push_back({it.key(), it.value(), {}, {}});
+  for (auto it = options.begin(); it != options.end(); ++it)
+    if (it.key() != kOceanOptionsKey) node.options.push_back({it.key(), it.value(), {}, {}});
   const std::vector<PortSpec> inputs = portsOfNode(spec, options).inputs;  // an expression's follow from its options
+  // An `ocean` input carries no value a parameter could hold: an ocean_spectrum node feeds it.
+  for (const PortSpec& port : inputs) {
+    if (port.kind != PortKind::Fixed || port.type != Type::Ocean) continue;
+    Node sea;
+    sea.id = "sea";
+    sea.type = "ocean_spectrum";
+    auto given = options.find(kOceanOptionsKey);
+    if (given != options.end() && given->is_object())
+      for (auto it = given->begin(); it != given->end(); ++it) sea.options.push_back({it.key(), it.value(), {}, {}});
+    g.nodes.push_back(sea);
+    NodeInput in;
+    in.port = port.name;
+    in.source.kind = InputSource::Kind::NodeOutput;
+    in.source.name = sea.id;
+    in.source.port = "ocean";
+    node.inputs.push_back(in);
+  }
 
   // The type of each input parameter: the port's own, or (Gen, Custom) the first value given.
   std::vector<Type> paramType(inputs.size(), Type::Invalid);
   for (size_t k = 0; k < inputs.size(); ++k) {
     const PortSpec& port = inputs[k];
+    if (port.kind == PortKind::Fixed && port.type == Type::Ocean) continue;  // fed by a node above
     if (port.kind == PortKind::Fixed) {
       bool given = false;
       for (const auto& c : cases) given |= findInput(c, port.name) != nullptr;

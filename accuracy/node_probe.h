@@ -14,6 +14,11 @@
 
 namespace wg::accuracy {
 
+// The key of `options` that holds, for a node with an `ocean` input, the options of the
+// ocean_spectrum node the probe feeds it from (its defaults when absent); it is not an
+// option of the node itself.
+inline constexpr const char* kOceanOptionsKey = "ocean";
+
 // The graph for `spec` with `options`, its inputs as parameters "in_<port>" wherever a
 // case gives the port (or it is required), and per case the parameter values. Cases that
 // give a port a value of another vector size than the first case that gives it are left

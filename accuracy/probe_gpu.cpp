@@ -1,12 +1,17 @@
 #include "accuracy/probe_gpu.h"
 
 #include <cmath>
+#include <cstdint>
 #include <map>
+#include <memory>
+#include <optional>
 
 #include "codegen/derived_program.h"
+#include "core/ocean_settings.h"
 #include "nodes/texture_source.h"
 #include "runtime/gl_resources.h"
 #include "runtime/node_texture.h"
+#include "runtime/ocean_simulation.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::accuracy {
@@ -151,9 +156,13 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
     GLenum target;
   };
   std::vector<Bound> bound;
+  // The ocean maps come from the simulation, run at each case's time (runtime/ocean_simulation.h).
+  std::unique_ptr<rt::OceanSimulation> oceans;
+  if (!shader.oceans.empty())
+    oceans = std::make_unique<rt::OceanSimulation>(shader.oceans, es ? rt::SceneShaderApi::Es300 : rt::SceneShaderApi::Gl330);
   for (const auto& t : shader.textures) {
     bool cube = t.type == Type::SamplerCube;
-    Bound b{&t, t.scene ? makeSceneTexture(cube) : makeNodeTexture(t, program.directory),
+    Bound b{&t, t.scene || t.ocean ? makeSceneTexture(cube) : makeNodeTexture(t, program.directory),
             cube ? GLenum(GL_TEXTURE_CUBE_MAP) : GLenum(GL_TEXTURE_2D)};
     GLint loc = glGetUniformLocation(prog.id(), t.name.c_str());
     if (loc >= 0) glUniform1i(loc, static_cast<GLint>(bound.size()));
@@ -163,8 +172,16 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
   for (const auto& u : shader.uniforms) locations.push_back(glGetUniformLocation(prog.id(), u.name.c_str()));
   rt::checkGl("setting up the probe");
 
+  std::optional<std::uint32_t> oceanTime;  // the loop fraction the maps hold
   for (size_t i = 0; i < cases.size(); ++i) {
     const ProbeCase& c = cases[i];
+    if (oceans && oceanTime != ocean::loopFraction(c.env.time[0])) {
+      oceans->update(c.env.time[0]);
+      oceanTime = ocean::loopFraction(c.env.time[0]);
+      glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
+      glUseProgram(prog.id());
+      glBindVertexArray(vao.id());
+    }
     for (size_t k = 0; k < shader.uniforms.size(); ++k) {
       const UniformInfo& u = shader.uniforms[k];
       if (locations[k] < 0) continue;  // optimised out by the driver
@@ -172,7 +189,7 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
     }
     for (size_t k = 0; k < bound.size(); ++k) {
       glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(k));
-      glBindTexture(bound[k].target, bound[k].texture.id());
+      glBindTexture(bound[k].target, bound[k].info->ocean ? oceans->map(*bound[k].info->ocean) : bound[k].texture.id());
       if (bound[k].info->scene)
         fillSceneTexture(bound[k].texture.id(), bound[k].target == GL_TEXTURE_CUBE_MAP,
                          sceneSamplerRow(*bound[k].info->scene).caseTexel(c.env));

@@ -97,6 +97,9 @@ std::vector<std::array<float, 4>> drawCases(rt::VkContext& context, const EmitRe
   std::vector<VkDescriptorImageInfo> images;
   size_t texelsPerCase = 0;
   for (const TextureInfo& t : shader.textures) {
+    if (t.ocean)
+      throw RuntimeError(RuntimeError::Kind::Manifest,
+                         what + ": the Vulkan probe cannot run the ocean simulation yet; probe it with --target glsl330 or es300");
     VkDescriptorImageInfo info{};
     info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     if (t.scene) {

@@ -156,6 +156,7 @@ EmitResult emitGlsl(const ShaderPlan& plan, Target target) {
   result.uniforms = plan.uniforms;
   result.attributes = plan.attributes;
   result.textures = plan.textures;
+  result.oceans = plan.oceans;
   result.varyings = plan.varyings;
   result.functions = plan.functions;
   result.tessellation = plan.tessellation;

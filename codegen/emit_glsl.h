@@ -24,7 +24,8 @@ struct EmitResult {
   // The plan's interface, copied for callers that hold only the result (the probe runner).
   std::vector<UniformInfo> uniforms;   // declaration order
   std::vector<AttributeInfo> attributes;
-  std::vector<TextureInfo> textures;   // node textures by first use, then scene textures
+  std::vector<TextureInfo> textures;   // node textures by first use, ocean maps, then scene textures
+  std::vector<OceanInfo> oceans;       // the oceans the ocean maps come from
   std::vector<VaryingInfo> varyings;
   std::vector<std::string> functions;  // library items emitted, in order (union of stages)
   // Set when the geometry stage is tessellated: shaders are then vertex, tess control,

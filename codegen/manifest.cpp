@@ -1,5 +1,7 @@
 #include "codegen/manifest.h"
 
+#include "core/ocean_settings.h"
+
 #include <bit>
 
 #include <algorithm>
@@ -101,6 +103,14 @@ void writeTexture(JsonTextWriter& w, const TextureInfo& t) {
   w.memberInteger("binding", t.binding);
   if (!t.source.empty()) w.member("file", t.file);
   w.member("name", t.name);
+  if (t.ocean) {
+    w.key("ocean");
+    w.beginObject();
+    w.memberInteger("cascade", t.ocean->cascade);
+    w.member("map", ocean::kOceanMapNames[t.ocean->map]);
+    w.memberInteger("ocean", t.ocean->ocean);
+    w.endObject();
+  }
   if (t.scene) w.member("resource", sceneResourceRow(sceneSamplerRow(*t.scene).resource).name);
   // Only a state other than the default (repeat, linear, linear data) is written, so the
   // manifests of graphs that sample every texture the default way keep their bytes; the
@@ -236,6 +246,18 @@ std::string Manifest::fileText() const {
   }
   w.key("nodes");
   writeNodes(w, *this);
+  if (!oceans.empty()) {
+    w.key("oceans");
+    w.beginArray();
+    for (const auto& o : oceans) {
+      w.beginObject();
+      w.member("node", o.nodeId);
+      w.key("options");
+      w.value(o.options);
+      w.endObject();
+    }
+    w.endArray();
+  }
   if (!passScales.empty()) {  // "pass_scales" sorts before "passes"; its keys by name
     std::vector<const ManifestPassScale*> byName;
     for (const auto& p : passScales) byName.push_back(&p);

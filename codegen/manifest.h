@@ -122,7 +122,10 @@ struct Manifest {
   std::vector<ManifestUniform> uniforms;    // declaration order
   std::vector<VaryingInfo> varyings;
   std::vector<std::string> functions;       // GLSL library items emitted, in order
-  std::vector<TextureInfo> textures;        // node textures by first use, then scene samplers
+  std::vector<TextureInfo> textures;        // node textures by first use, ocean maps, then scene samplers
+  // The spectral oceans the ocean maps come from (written as "oceans" only when there are
+  // any): each ocean_spectrum node's id and complete options.
+  std::vector<OceanInfo> oceans;
   std::optional<ManifestTessellation> tessellation;
   std::vector<SceneResource> resources;     // table order
   std::vector<RenderPass> passes;           // the passes producing them, then WaterSurface

@@ -41,7 +41,8 @@ ManifestUniform manifestUniform(const Program& program, const UniformInfo& u) {
 std::vector<ManifestPassScale> passScales(const Program& program, const std::vector<RenderPass>& passes) {
   std::vector<ManifestPassScale> out;
   for (RenderPass pass : passes) {
-    if (pass == RenderPass::WaterSurface || pass == RenderPass::EnvironmentCubemap) continue;
+    if (pass == RenderPass::WaterSurface || pass == RenderPass::EnvironmentCubemap || pass == RenderPass::OceanSimulation)
+      continue;
     double scale = 1;
     for (const auto& op : program.ops)
       for (SceneResource r : op.spec->resources) {
@@ -95,6 +96,7 @@ Manifest buildManifest(const Program& program, const TargetPlans& plans, const s
   m.varyings = first.varyings;
   m.functions = first.functions;
   m.textures = first.textures;
+  m.oceans = first.oceans;
   for (auto& t : m.textures)
     if (!t.source.empty()) t.file = textureFileName(baseName, t.name);
   // Tessellation, per target (GLSL ES 3.00 has none: es300 draws the mesh as it is).

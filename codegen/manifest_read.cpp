@@ -6,6 +6,8 @@
 #include <initializer_list>
 
 #include "codegen/manifest.h"
+
+#include "core/ocean_settings.h"
 #include "nodes/registry.h"
 
 namespace wg {
@@ -116,7 +118,8 @@ std::vector<ManifestPassScale> passScalesOf(const json& j, const std::vector<Ren
     const std::string what = "the manifest's \"pass_scales\" entry '" + name + "'";
     auto pass = parseRenderPass(name);
     if (!pass) fail("the manifest's \"pass_scales\" names an unknown pass '" + name + "'");
-    if (*pass == RenderPass::WaterSurface || *pass == RenderPass::OpaqueScene || *pass == RenderPass::EnvironmentCubemap)
+    if (*pass == RenderPass::WaterSurface || *pass == RenderPass::OpaqueScene || *pass == RenderPass::EnvironmentCubemap ||
+        *pass == RenderPass::OceanSimulation)
       fail(what + ": only a frame-sized scene pass can be scaled");
     if (std::find(passes.begin(), passes.end(), *pass) == passes.end()) fail(what + " names a pass \"passes\" does not list");
     if (!value.is_number() || !(value.get<double>() >= kMinResolution && value.get<double>() < 1))
@@ -250,7 +253,7 @@ TextureInfo textureOf(const json& t) {
   TextureInfo out;
   out.name = text(t, "name", "a manifest texture");
   const std::string what = "texture " + out.name;
-  onlyMembers(t, {"name", "type", "binding", "stages", "source", "file", "resource", "sampler"}, what);
+  onlyMembers(t, {"name", "type", "binding", "stages", "source", "file", "resource", "sampler", "ocean"}, what);
   out.type = typeOf(t, what);
   out.binding = integer(t, "binding", what);
   out.stages = stagesOf(t, what);
@@ -263,6 +266,22 @@ TextureInfo textureOf(const json& t) {
     if (out.file.empty() || out.file.find_first_of("/\\") != std::string::npos || out.file == "." || out.file == "..")
       fail(what + " has a \"file\" that is not a file name beside the manifest");
     if (const json* s = member(t, "sampler")) out.sampler = samplerOf(*s, what);
+  } else if (const json* o = member(t, "ocean")) {
+    if (member(t, "resource") || member(t, "file")) fail(what + " is an ocean map and has a \"resource\" or a \"file\"");
+    const std::string whatMap = what + "'s \"ocean\"";
+    if (!o->is_object()) fail(whatMap + " is not an object");
+    onlyMembers(*o, {"ocean", "cascade", "map"}, whatMap);
+    OceanMapRef ref;
+    ref.ocean = integer(*o, "ocean", whatMap);
+    ref.cascade = integer(*o, "cascade", whatMap);
+    const std::string map = text(*o, "map", whatMap);
+    if (map == ocean::kOceanMapNames[ocean::kDisplacementMap]) ref.map = ocean::kDisplacementMap;
+    else if (map == ocean::kOceanMapNames[ocean::kSlopeMap]) ref.map = ocean::kSlopeMap;
+    else fail(whatMap + " names an unknown map '" + map + "'");
+    if (ref.ocean < 0 || ref.cascade < 0 || ref.cascade >= ocean::kMaxCascades)
+      fail(whatMap + " names an ocean or cascade out of range");
+    if (out.type != Type::Sampler2D) fail(what + " is an ocean map and must be a sampler2D");
+    out.ocean = ref;
   } else if (member(t, "resource")) {
     // A scene texture is one of its resource's samplers, named as the shader declares it.
     const std::string resource = text(t, "resource", what);
@@ -351,7 +370,8 @@ Manifest Manifest::fromJson(const json& j) {
   if (const json* scales = member(j, "pass_scales")) m.passScales = passScalesOf(*scales, m.passes);
   onlyMembers(j,
               {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
-               "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan", "webgpu", "color"},
+               "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan", "webgpu", "color",
+               "oceans"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
     fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));
@@ -383,6 +403,21 @@ Manifest Manifest::fromJson(const json& j) {
   for (const auto& v : objects(j, "varyings")) m.varyings.push_back(varyingOf(v));
   if (const json* functions = member(j, "functions")) m.functions = texts(*functions, "the manifest's \"functions\"");
   for (const auto& t : objects(j, "textures")) m.textures.push_back(textureOf(t));
+  for (const auto& o : objects(j, "oceans")) {
+    onlyMembers(o, {"node", "options"}, "an entry of the manifest's \"oceans\"");
+    OceanInfo info;
+    info.nodeId = text(o, "node", "an entry of the manifest's \"oceans\"");
+    const json* options = member(o, "options");
+    if (!options || !options->is_object()) fail("ocean " + info.nodeId + " has no \"options\" object");
+    info.options = *options;
+    m.oceans.push_back(std::move(info));
+  }
+  if (m.oceans.empty() == m.lists(RenderPass::OceanSimulation))
+    fail(m.oceans.empty() ? "the manifest lists the ocean_simulation pass but no \"oceans\""
+                          : "the manifest has \"oceans\" but does not list the ocean_simulation pass");
+  for (const auto& t : m.textures)
+    if (t.ocean && (t.ocean->ocean >= static_cast<int>(m.oceans.size())))
+      fail("texture " + t.name + " reads ocean " + std::to_string(t.ocean->ocean) + ", which \"oceans\" does not list");
   if (const json* t = member(j, "tessellation")) m.tessellation = tessellationOf(*t);
   if (const json* resources = member(j, "resources"))
     for (const std::string& name : texts(*resources, "the manifest's \"resources\"")) {

@@ -1,6 +1,7 @@
 #include "codegen/plan_body.h"
 
 #include <algorithm>
+#include <tuple>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -8,6 +9,7 @@
 
 #include "codegen/shader_interface.h"
 #include "core/number_format.h"
+#include "core/ocean_settings.h"
 #include "core/texture_check.h"
 
 namespace wg {
@@ -71,6 +73,13 @@ class PlanOpContext final : public EmitContext {
                              "' without listing it in its resources");
     return w_.sceneSampler(b_, row.sampler);
   }
+  const ocean::OceanSettings& oceanSettings(int port) const override {
+    return spectrumOp(port).parsedOptions->as<ocean::OceanSettings>();
+  }
+  std::string oceanMap(int port, int cascade, int which) override {
+    spectrumOp(port);
+    return w_.oceanMap(b_, op().inputs.at(static_cast<size_t>(port)).index, cascade, which);
+  }
   const NodeSpec& spec() const override { return *op().spec; }
   ValueFact inputFact(int port) const override {
     const ValueRef& in = op().inputs.at(static_cast<size_t>(port));
@@ -98,6 +107,15 @@ class PlanOpContext final : public EmitContext {
 
  private:
   const Op& op() const { return w_.program().ops[static_cast<size_t>(opIndex_)]; }
+  // The ocean_spectrum op feeding an `ocean` input (resolve admits nothing else there).
+  const Op& spectrumOp(int port) const {
+    const ValueRef& in = op().inputs.at(static_cast<size_t>(port));
+    if (in.kind != ValueRef::Kind::Op || op().inputTypes.at(static_cast<size_t>(port)) != Type::Ocean)
+      throw std::logic_error("node '" + spec().type + "' reads an ocean from an input that is not an ocean");
+    const Op& source = w_.program().ops[static_cast<size_t>(in.index)];
+    if (!source.parsedOptions) throw std::logic_error("ocean op '" + source.nodeId + "' has no parsed options");
+    return source;
+  }
   BodyWriter& w_;
   StageBody& b_;
   int opIndex_;
@@ -372,6 +390,41 @@ std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
   return t.name;
 }
 
+// One sampler per ocean, cascade and map, named after them ("u_ocean0_slopes2").
+std::string BodyWriter::oceanMap(StageBody& w, int spectrumOp, int cascade, int which) {
+  auto known = std::find(oceanOps_.begin(), oceanOps_.end(), spectrumOp);
+  const int ocean = static_cast<int>(known - oceanOps_.begin());
+  const OceanMapRef ref{ocean, cascade, which};
+  if (known == oceanOps_.end()) {
+    // Taken back with the op's maps when no read output needs them (then no ocean is simulated).
+    oceanOps_.push_back(spectrumOp);
+    // Its name is the prefix of its maps' names: kept while any kept text samples one of them.
+    w.noteRegistered("u_ocean" + std::to_string(ocean) + "_", [this, n = oceanOps_.size()] { popIfLast(oceanOps_, n); });
+  }
+  for (auto& t : oceanTextures_)
+    if (t.ocean == ref) {
+      if (!(t.stages & w.stage))
+        w.noteRegistered(t.name, [this, at = &t - oceanTextures_.data(), s = w.stage] {
+          oceanTextures_[static_cast<size_t>(at)].stages &= ~s;
+        });
+      t.stages |= w.stage;
+      return t.name;
+    }
+  TextureInfo t;
+  t.name = "u_ocean" + std::to_string(ocean) + "_" + ocean::kOceanMapNames[which] + std::to_string(cascade);
+  t.ocean = ref;
+  t.stages = w.stage;
+  oceanTextures_.push_back(t);
+  w.noteRegistered(t.name, [this, n = oceanTextures_.size()] { popIfLast(oceanTextures_, n); });
+  return t.name;
+}
+
+std::vector<OceanInfo> BodyWriter::oceans() const {
+  std::vector<OceanInfo> out;
+  for (int i : oceanOps_) out.push_back({program_.ops[static_cast<size_t>(i)].nodeId, program_.ops[static_cast<size_t>(i)].options()});
+  return out;
+}
+
 std::vector<UniformInfo> BodyWriter::uniforms(const StageBody* vert, const StageBody& frag) const {
   std::vector<UniformInfo> out;
   for (const auto& row : builtinUniformTable()) {
@@ -405,6 +458,11 @@ std::vector<TextureInfo> BodyWriter::textures() const {
   std::stable_sort(scene.begin(), scene.end(),
                    [](const TextureInfo& a, const TextureInfo& b) { return sceneSamplerRank(a) < sceneSamplerRank(b); });
   std::vector<TextureInfo> out = nodeTextures_;
+  std::vector<TextureInfo> ocean = oceanTextures_;
+  std::stable_sort(ocean.begin(), ocean.end(), [](const TextureInfo& a, const TextureInfo& b) {
+    return std::tie(a.ocean->ocean, a.ocean->cascade, a.ocean->map) < std::tie(b.ocean->ocean, b.ocean->cascade, b.ocean->map);
+  });
+  out.insert(out.end(), ocean.begin(), ocean.end());
   out.insert(out.end(), scene.begin(), scene.end());
   for (size_t i = 0; i < out.size(); ++i) out[i].binding = iface::kUniformBlockBinding + 1 + static_cast<int>(i);
   return out;

@@ -76,6 +76,10 @@ class BodyWriter {
   std::string phaseUniform(StageBody& body, double omega);
   std::string nodeTexture(StageBody& body, const std::string& source, const SamplerState& sampler);
   std::string sceneSampler(StageBody& body, SceneSampler sampler);
+  // Map `which` of cascade `cascade` of the ocean op `spectrumOp` computes.
+  std::string oceanMap(StageBody& body, int spectrumOp, int cascade, int which);
+  // The oceans the maps read, by first use.
+  std::vector<OceanInfo> oceans() const;
 
   // The interface the bodies made: builtin uniforms in table order, then the time phases,
   // then the derived uniforms read, then the parameters `vertex` (may be null) and
@@ -106,6 +110,8 @@ class BodyWriter {
   std::vector<UniformInfo> phases_;         // time phases, by first use
   std::vector<TextureInfo> nodeTextures_;   // by first use
   std::vector<TextureInfo> sceneTextures_;  // by first use (sorted by textures())
+  std::vector<TextureInfo> oceanTextures_;  // by first use
+  std::vector<int> oceanOps_;               // the ocean_spectrum ops the maps read, by first use
 };
 
 // Around the bodies (codegen/plan_stage.cpp).

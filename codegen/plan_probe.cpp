@@ -60,6 +60,7 @@ ShaderPlan planProbe(const Program& program, std::string sourceName, bool derive
   frag.line(-1, iface::kColorOutput, " = vec4(", value, pad[n], ");");
   plan.uniforms = writer.uniforms(nullptr, frag);
   plan.textures = writer.textures();
+  plan.oceans = writer.oceans();
   planResources(program, plan);
   PlannedStage& fs = plan.stages.emplace_back(plannedStage(ShaderStage::Fragment, std::move(frag), probeLocals(frag)));
   addOwnGlsl(program, fs);

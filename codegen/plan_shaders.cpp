@@ -136,6 +136,7 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   }
   plan.uniforms = writer.uniforms(&vert, frag);
   plan.textures = writer.textures();
+  plan.oceans = writer.oceans();
   planResources(program, plan);
 
   // The stages, each with what it declares.

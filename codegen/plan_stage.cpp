@@ -76,6 +76,7 @@ std::vector<size_t> texturesIn(const ShaderPlan& plan, unsigned bit) {
 }
 
 void planResources(const Program& program, ShaderPlan& plan) {
+  if (!plan.oceans.empty()) plan.passes.push_back(RenderPass::OceanSimulation);
   for (SceneResource r : program.sceneResources()) {
     plan.resources.push_back(r);
     plan.passes.push_back(sceneResourceRow(r).pass);

@@ -47,6 +47,21 @@ struct VaryingInfo {
   std::string carries;  // "world_position", or "node 'wave' output 'normal'"
 };
 
+// An ocean map (core/ocean_settings.h): which of ShaderPlan::oceans, which cascade, which map.
+struct OceanMapRef {
+  int ocean = 0;
+  int cascade = 0;
+  int map = 0;  // kDisplacementMap or kSlopeMap
+  bool operator==(const OceanMapRef&) const = default;
+};
+
+// A spectral ocean the water reads: the ocean_spectrum op's node id and complete options
+// (the runtime parses them with the node's own parser and simulates them).
+struct OceanInfo {
+  std::string nodeId;
+  nlohmann::json options;
+};
+
 struct TextureInfo {
   std::string name;      // GLSL sampler name
   Type type = Type::Sampler2D;
@@ -54,6 +69,7 @@ struct TextureInfo {
   std::string file;      // node texture, manifest only: the PNG `compile --textures` writes it as
   SamplerState sampler;  // node texture: how it is sampled (scene textures: the default, unused)
   std::optional<SceneSampler> scene;  // a scene texture (then source is "")
+  std::optional<OceanMapRef> ocean;   // an ocean map (then source is "")
   int binding = 0;       // vk450 binding (set 0); the uniform block is binding 0
   unsigned stages = 0;
 };
@@ -100,7 +116,8 @@ struct ShaderPlan {
   // The derived uniforms' programs, in the order of their "u_derived<k>" uniforms (empty
   // unless planned with derived uniforms).
   std::vector<std::shared_ptr<const DerivedValue>> derived;
-  std::vector<TextureInfo> textures;   // node textures by first use, then scene textures
+  std::vector<TextureInfo> textures;   // node textures by first use, ocean maps, then scene textures
+  std::vector<OceanInfo> oceans;       // by first use; each runs RenderPass::OceanSimulation's passes
   std::vector<std::string> functions;  // library items of all stages, in library order
   std::vector<SceneResource> resources;  // table order
   std::vector<RenderPass> passes;        // the passes producing them, then WaterSurface
@@ -141,8 +158,9 @@ struct TargetPlans {
 TargetPlans planTargets(const Program& program, const std::vector<Target>& targets, const std::string& sourceName,
                         bool allowTessellation = true, bool derive = false);
 
-// Sets plan.resources and plan.passes: the scene resources the program reads and the
-// passes producing them (table order), then the water surface pass.
+// Sets plan.resources and plan.passes: the ocean simulation when plan.oceans is not empty,
+// the scene resources the program reads and the passes producing them (table order), then
+// the water surface pass.
 void planResources(const Program& program, ShaderPlan& plan);
 
 // A graph identifier made safe as part of a GLSL name: [A-Za-z0-9_] only, no "__",

@@ -76,6 +76,7 @@ const OutputSlotRow kOutputSlots[] = {
 };
 
 const RenderPassRow kRenderPasses[] = {
+    {RenderPass::OceanSimulation, "ocean_simulation"},
     {RenderPass::EnvironmentCubemap, "environment_cubemap"},
     {RenderPass::DepthPrepass, "depth_prepass"},
     {RenderPass::PlanarReflection, "planar_reflection"},

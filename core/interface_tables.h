@@ -123,6 +123,9 @@ std::string_view outputSlotList();
 // --- Render passes, in the order the runtime runs them: everything the water samples
 // first, then the frame itself.
 enum class RenderPass {
+  // The spectral oceans' maps (ocean_spectrum): evolution, inverse FFT and packing passes
+  // per cascade, into float textures the ocean_* readers sample.
+  OceanSimulation,
   EnvironmentCubemap,
   DepthPrepass,
   PlanarReflection,

@@ -33,6 +33,9 @@ double OptionReader::number(std::string_view name) const {
 int OptionReader::integer(std::string_view name) const {
   return static_cast<int>(std::lround(value(name, static_cast<int>(OptionSpec::Kind::Integer)).get<double>()));
 }
+std::int64_t OptionReader::wholeNumber(std::string_view name) const {
+  return std::llround(value(name, static_cast<int>(OptionSpec::Kind::Integer)).get<double>());
+}
 bool OptionReader::flag(std::string_view name) const {
   return value(name, static_cast<int>(OptionSpec::Kind::Bool)).get<bool>();
 }

@@ -12,6 +12,7 @@
 //   }
 //   s.parseOptions = optionParser<FresnelOptions>(parse);
 //   ... ctx.options<FresnelOptions>().ior
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <set>
@@ -61,6 +62,7 @@ class OptionReader {
 
   double number(std::string_view name) const;  // Number
   int integer(std::string_view name) const;     // Integer
+  std::int64_t wholeNumber(std::string_view name) const;  // Integer beyond int's range (a 32-bit seed)
   bool flag(std::string_view name) const;       // Bool
   const nlohmann::json& json(std::string_view name) const;  // Json
   const std::string& text(std::string_view name) const;     // Text

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "core/number_format.h"
+#include "core/ocean_settings.h"
 
 namespace wg {
 
@@ -72,6 +73,13 @@ ValueFact builtinFact(Builtin b) {
 }
 
 ValueFact EmitContext::inputFact(int) const { return {}; }
+const ocean::OceanSettings& EmitContext::oceanSettings(int) const {
+  static const ocean::OceanSettings defaults;
+  return defaults;
+}
+std::string EmitContext::oceanMap(int, int, int) {
+  throw std::logic_error("node '" + spec().type + "' reads an ocean map where no planner gives one");
+}
 ValueFact EmitContext::knownBuiltin(Builtin) const { return {}; }
 std::optional<Value> EmitContext::inputConstant(int) const { return std::nullopt; }
 ValueFact EmitContext::inputFact(std::string_view port) const { return inputFact(inputIndex(port)); }

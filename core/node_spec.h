@@ -24,6 +24,9 @@
 
 namespace wg {
 
+namespace ocean {
+struct OceanSettings;  // core/ocean_settings.h
+}
 
 // What the compiler knows about a value for every input the shader can receive
 // (codegen/value_facts.h derives it per program): each component lies in [lo, hi], and
@@ -106,6 +109,9 @@ struct HardCase {
   // case then checks finiteness and [lo, hi] with this tolerance instead of the node's
   // error bound. Every other case is held to the bound.
   std::optional<double> tolerance;
+  // A node with an `ocean` input: the options of the ocean_spectrum the case's sea comes
+  // from (its defaults when empty).
+  nlohmann::json oceanOptions = nlohmann::json::object();
 };
 
 struct NodeSpec;
@@ -166,6 +172,14 @@ class EmitContext {
   // (SceneDepth -> u_scene_depth; see core/interface_tables.h).
   virtual std::string sceneTexture(SceneResource resource) = 0;
   std::string sceneTexture(std::string_view resource);  // by the resource's name
+
+  // The spectral ocean (ocean_* readers): the settings of the ocean_spectrum feeding input
+  // `port` (an `ocean` port), and the sampler2D holding its cascade `cascade`'s map
+  // `which` (OceanMap; declared once per ocean, cascade and map, listed in the manifest).
+  // By default the spectrum's default settings and a logic error: only the planner
+  // has maps to give.
+  virtual const ocean::OceanSettings& oceanSettings(int port) const;
+  virtual std::string oceanMap(int port, int cascade, int which);
 
   // What is known about input `port` (see ValueFact); nothing by default.
   virtual ValueFact inputFact(int port) const;
@@ -290,6 +304,14 @@ struct NodeSpec {
   // fragment stage recomputes it instead of interpolating it.
   bool isUniformSource = false;
   std::function<void(InferContext&)> infer;  // null: Fixed and Gen rules only
+  // Options meaningless together, or a value the per-option checks cannot judge alone
+  // (cascade tiles that overlap at the chosen resolution): the option to blame and why, or
+  // nothing. resolve reports it as an invalid option at that option (at the node when the
+  // file does not write it).
+  struct OptionProblem {
+    std::string option, why;
+  };
+  std::function<std::optional<OptionProblem>(const ParsedOptions& options)> checkOptions;
   // Algebraic identity: given the op's constant inputs (nullopt where not constant), the
   // index of the input its single output equals (x * 1, x + 0, mix(a, b, 0)), or -1. The
   // simplify pass uses it only when that input already has the output's type.

@@ -171,8 +171,10 @@ OceanCascade initialCascade(const SpectrumSettings& s, const CascadeSettings& c,
       if (!(k > 0) || k < band.low || !(k < band.high)) continue;
       size_t i = static_cast<size_t>(iz) * n + ix;
       cascade.binVariance[i] = directionalSpectrum(s, kx, kz) * dk * dk;
-      GaussianPair g = binGaussians(static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(ix),
-                                    static_cast<std::uint32_t>(iz), seed);
+      // Drawn by the signed wavenumber index (two's complement), so a lower resolution keeps
+      // the same waves and only drops the shortest (the resolution knob approximates one sea).
+      GaussianPair g = binGaussians(static_cast<std::uint32_t>(index), static_cast<std::uint32_t>(signedIndex(ix, n)),
+                                    static_cast<std::uint32_t>(signedIndex(iz, n)), seed);
       cascade.h0[i] = std::complex<double>(g.real, g.imag) * (0.5 * std::sqrt(cascade.binVariance[i]));
     }
   return cascade;

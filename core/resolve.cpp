@@ -366,6 +366,7 @@ class Resolver {
           optionsValid = false;
         }
       }
+      if (optionsValid && spec->checkOptions) reportOptionProblem(n, *spec);
       if (spec->portsFor) {
         // Its ports follow from its options: without valid options there are none to check
         // against (the options are reported), and the node is left out like an unknown type.
@@ -395,6 +396,18 @@ class Resolver {
   // Node i's ports: its type's, or (an expression's) those its options give.
   const std::vector<PortSpec>& inputsOf(size_t i) const { return ports_[i] ? ports_[i]->inputs : specs_[i]->inputs; }
   const std::vector<PortSpec>& outputsOf(size_t i) const { return ports_[i] ? ports_[i]->outputs : specs_[i]->outputs; }
+
+  // Options each valid alone but meaningless together (NodeSpec::checkOptions), reported
+  // at the option blamed, or at the node when the file leaves that option at its default.
+  void reportOptionProblem(const Node& n, const NodeSpec& spec) {
+    auto problem = spec.checkOptions(*parseOptions(spec, completeOptions(spec, declaredOptions(n, spec))));
+    if (!problem) return;
+    SourceRef at = n.where;
+    for (const auto& o : n.options)
+      if (o.name == problem->option) at = o.where;
+    diags_.error(DiagCode::InvalidOption, at, "option '" + problem->option + "' " + problem->why, n.id,
+                 optionLabel(problem->option));
+  }
 
   // The options a node writes that its type declares (the others are reported).
   static nlohmann::json declaredOptions(const Node& node, const NodeSpec& spec) {

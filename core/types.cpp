@@ -10,7 +10,7 @@ struct TypeInfo {
   std::string_view name;
   int components;
 };
-constexpr std::array<TypeInfo, 10> kTypes = {{
+constexpr std::array<TypeInfo, 11> kTypes = {{
     {Type::Float, "float", 1},
     {Type::Vec2, "vec2", 2},
     {Type::Vec3, "vec3", 3},
@@ -21,6 +21,7 @@ constexpr std::array<TypeInfo, 10> kTypes = {{
     {Type::Mat4, "mat4", 16},
     {Type::Sampler2D, "sampler2D", 0},
     {Type::SamplerCube, "samplerCube", 0},
+    {Type::Ocean, "ocean", 1},
 }};
 }  // namespace
 
@@ -47,6 +48,8 @@ bool isFloatScalarOrVector(Type t) {
 }
 
 bool isSampler(Type t) { return t == Type::Sampler2D || t == Type::SamplerCube; }
+
+bool isOpaque(Type t) { return t == Type::Ocean; }
 
 Type floatVector(int components) {
   switch (components) {

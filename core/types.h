@@ -18,6 +18,9 @@ enum class Type : unsigned char {
   Mat4,
   Sampler2D,
   SamplerCube,
+  // The spectral ocean an ocean_spectrum node describes (docs/ocean.md): a handle its
+  // readers take, never a shader value; the CPU reference holds its identity in c[0].
+  Ocean,
 };
 
 std::string_view typeName(Type t);
@@ -28,6 +31,8 @@ int componentCount(Type t);
 // float, vec2, vec3, vec4.
 bool isFloatScalarOrVector(Type t);
 bool isSampler(Type t);
+// A value that names something rather than holding numbers (the ocean).
+bool isOpaque(Type t);
 // vecN for N in 1..4 (1 gives float); Invalid otherwise.
 Type floatVector(int components);
 // from == to, or a float splatting to a float vector.

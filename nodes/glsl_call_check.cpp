@@ -30,6 +30,7 @@ class RecordingEmitContext final : public EmitContext {
   using EmitContext::texture;
   std::string texture(std::string_view, const SamplerState&) override { return "sampler"; }
   std::string sceneTexture(SceneResource) override { return "scene_sampler"; }
+  std::string oceanMap(int, int, int) override { return "ocean_sampler"; }
   const NodeSpec& spec() const override { return spec_; }
 
   // With facts: distinct constants per port (so two ranges never overlap), unit vectors,

@@ -15,7 +15,8 @@ namespace wg::nodes {
 // no_fraction_bits (|x| >= 2^23), tiny_negative (-1e-6 < x < 0), negative_parameter,
 // quotient_overflow, equal_operands, reversed_range, perpendicular, head_on; and
 // below_threshold, texel_edge, uv_boundary, screen_offset_outside (screen uv + distortion
-// off screen), camera_at_water_level, mixed_sign_coordinates.
+// off screen), camera_at_water_level, mixed_sign_coordinates; for the ocean empty_spectrum
+// (every amplitude 0), surface_folds (J < 0 at the point) and shallow_water (k d < 0.1 at the peak).
 const std::vector<HardCaseRegion>& hardCaseRegions() {
   static const std::vector<HardCaseRegion> table = {
       // optics
@@ -58,6 +59,17 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"shore_waves", "sky depth", "sky_distance", "depth"},
       {"shore_waves", "negative thickness", "negative_thickness", "depth"},
       {"shore_waves", "zero distance", "zero_parameter", "distance"},
+      // the spectral ocean's readers, on the case's own sea (HardCase::oceanOptions)
+      {"ocean_displacement", "a calm (wind 0): the empty spectrum leaves the point where it is", "empty_spectrum", ""},
+      {"ocean_displacement", "a calm (wind 0): the normal of a flat sea", "empty_spectrum", ""},
+      {"ocean_displacement", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
+      {"ocean_displacement", "a TMA sea in 1 cm of water", "shallow_water", ""},
+      {"ocean_displacement", "100 km from the origin", "huge_coordinates", "position"},
+      {"ocean_surface", "a calm (wind 0): the Jacobian of still water", "empty_spectrum", ""},
+      {"ocean_surface", "a calm (wind 0): the normal of a flat sea", "empty_spectrum", ""},
+      {"ocean_surface", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
+      {"ocean_surface", "a TMA sea in 1 cm of water", "shallow_water", ""},
+      {"ocean_surface", "100 km from the origin", "huge_coordinates", "position"},
       {"shore_waves", "huge frequency", "huge_parameter", "frequency"},
       {"shore_waves", "huge amplitude", "huge_parameter", "amplitude"},
       {"subsurface", "light in front of the viewer", "pow_base_zero", "view light"},

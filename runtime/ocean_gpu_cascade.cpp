@@ -87,9 +87,10 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   vec4 a = texelFetch(u_a, p, 0), b = texelFetch(u_b, p, 0);
   float h = a.x, dx = a.y, dz = a.z, sx = a.w, sz = b.x, dxx = b.y, dzz = b.z, dxz = b.w;
-  float jacobian = (1.0 + u_lambda * dxx) * (1.0 + u_lambda * dzz) - u_lambda * u_lambda * dxz * dxz;
-  o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, jacobian);
-  o_slopes = vec4(sx, sz, dxx, dzz);
+  // The derivatives of the displacement, not J: J of several cascades is J of their sums,
+  // which a sum of per-cascade Js is not.
+  o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, u_lambda * dxz);
+  o_slopes = vec4(sx, sz, u_lambda * dxx, u_lambda * dzz);
 }
 )glsl";
 

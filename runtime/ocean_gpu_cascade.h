@@ -4,7 +4,7 @@
 // of h~(k, t) from the uploaded h0, 2 log2 N radix-2 Stockham passes of the inverse FFT,
 // and a packing pass into two maps. The same computation in double is
 // core/ocean_fft_reference.h; tests/runtime/ocean_gpu_cascade_test.cpp holds this to it
-// within the float32 transform's error bound. (A runtime component: no node reaches it yet.)
+// within the float32 transform's error bound.
 //
 // Eight real fields ride in four complex transforms, two per RGBA32F texture: the inverse
 // transform of a + i b, with a and b Hermitian spectra, is the real field of a plus i times
@@ -30,8 +30,9 @@ class OceanGpuCascade {
 
   int resolution() const { return n_; }
   // RGBA32F, N x N, texel (jx, jz) at x = jx L / N, z = jz L / N:
-  //   displacement: (lambda Dx, h, lambda Dz, J)
-  //   slopes:       (dh/dx, dh/dz, dDx/dx, dDz/dz)
+  //   displacement: (lambda Dx, h, lambda Dz, lambda dDx/dz)
+  //   slopes:       (dh/dx, dh/dz, lambda dDx/dx, lambda dDz/dz)
+  // so J = (1 + lambda dDx/dx)(1 + lambda dDz/dz) - (lambda dDx/dz)^2 of the summed cascades.
   GLuint displacementMap() const { return maps_[0].id(); }
   GLuint slopeMap() const { return maps_[1].id(); }
   // The two maps read back, N * N * 4 floats each, row jz * N + jx.

@@ -15,6 +15,7 @@
 #include "nodes/texture_source.h"
 #include "runtime/memory_budget.h"
 #include "runtime/node_texture.h"
+#include "runtime/ocean_simulation.h"
 #include "runtime/gpu_cache.h"
 #include "runtime/oblique_projection.h"
 #include "runtime/output_transform.h"
@@ -161,6 +162,7 @@ struct Renderer::Impl {
   };
   std::vector<Binding> waterBindings;
   std::vector<std::shared_ptr<const Texture>> nodeTextures;
+  std::unique_ptr<OceanSimulation> oceans;  // when the manifest lists oceans
   GpuCache* cache = nullptr;  // not owned; may be null
 
   std::shared_ptr<const Program> link(const std::vector<ShaderSource>& sources, const std::string& what) {
@@ -389,7 +391,10 @@ struct Renderer::Impl {
     for (const TextureInfo& t : manifest.textures) {
       const bool cube = t.type == Type::SamplerCube;
       GLuint texture = 0;
-      if (t.scene) {
+      if (t.ocean) {
+        if (!oceans) manifestError("texture " + t.name + " is an ocean map, but the manifest lists no ocean_simulation pass");
+        texture = oceans->map(*t.ocean);
+      } else if (t.scene) {
         const GpuTarget* target = find(*t.scene);
         if (!target)
           manifestError("texture " + t.name + " (scene resource '" +
@@ -497,6 +502,13 @@ struct Renderer::Impl {
       const EnvironmentFace& face = environmentFaces()[static_cast<size_t>(f)];
       drawSky(p * glm::lookAt(glm::vec3(0.0f), face.direction, face.up));
     }
+  }
+
+  // Every ocean's cascades at the scene's time (runtime/ocean_simulation.h).
+  void oceanSimulationPass() {
+    oceans->update(settings.scene.time);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, settings.width, settings.height);
   }
 
   void depthPrepass() {
@@ -612,6 +624,7 @@ struct Renderer::Impl {
     // By PassKind, in renderPassTable() order.
     using PassFunction = void (Impl::*)();
     static constexpr PassFunction kPassFunctions[] = {
+        &Impl::oceanSimulationPass,
         &Impl::environmentPass, &Impl::depthPrepass,       &Impl::planarReflectionPass, &Impl::refractionPass,
         &Impl::opaqueScenePass, &Impl::sceneColorCopyPass, &Impl::deferredWaterPass,    &Impl::waterSurfacePass,
         &Impl::outputTransformPass,
@@ -742,6 +755,8 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
   r.emptyVao = makeVertexArray();
   checkGl("uploading the scene");
   r.createTargets();
+  if (r.plan.runs(PassKind::OceanSimulation))
+    r.oceans = std::make_unique<OceanSimulation>(manifest.oceans, es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
   r.setupWaterUniforms(manifest, origins);
   r.cache = nullptr;  // used only while constructing: the caller may destroy it afterwards
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <stdexcept>
 #include <cstring>
 #include <optional>
 
@@ -313,6 +314,9 @@ struct VkRenderer::Impl {
   static inline const glm::vec4 kNoClip = glm::vec4(0, 0, 0, 1);
 
   // --- One function per pass kind (PassKind), run in the plan's order, as the GL runtime.
+  // Refused when the renderer is made (above); a frame never reaches it.
+  void oceanSimulationPass() { throw std::logic_error("the Vulkan runtime has no ocean simulation"); }
+
   void environmentPass() {
     Target& t = *find(SceneSampler::Environment);
     static const glm::vec3 dirs[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
@@ -444,6 +448,7 @@ struct VkRenderer::Impl {
   double renderOneFrame() {
     using PassFunction = void (Impl::*)();
     static constexpr PassFunction kPassFunctions[] = {
+        &Impl::oceanSimulationPass,
         &Impl::environmentPass, &Impl::depthPrepass,       &Impl::planarReflectionPass, &Impl::refractionPass,
         &Impl::opaqueScenePass, &Impl::sceneColorCopyPass, &Impl::deferredWaterPass,    &Impl::waterSurfacePass,
         &Impl::outputTransformPass,
@@ -489,6 +494,11 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   r.sun = sunDirection(settings.scene);
 
   r.plan = planPasses(manifest, planOptionsFor(settings));
+  // The spectral ocean's passes run on the GL runtime only (runtime/ocean_simulation.h).
+  if (r.plan.runs(PassKind::OceanSimulation))
+    throw RuntimeError(RuntimeError::Kind::Manifest,
+                       "the Vulkan runtime cannot run the ocean_simulation pass yet; render this graph with the GL "
+                       "runtime (--target glsl330 or es300)");
   r.memory.emplace(rendererBytes(r.plan, settings.floatColor),
                    "render targets and read-back at " + std::to_string(settings.width) + "x" + std::to_string(settings.height));
   r.deferred = r.plan.runs(PassKind::DeferredWater);

@@ -15,7 +15,7 @@ const setOf = (names) => table(Object.fromEntries(names.map((n) => [n, true])));
 export const MANIFEST_FORMAT = 1;
 
 const TOP_LEVEL = setOf(['format', 'graph', 'description', 'preset', 'imports', 'targets', 'attributes', 'uniforms',
-  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color']);
+  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color', 'oceans']);
 // Components of each uniform type the client uploads.
 export const UNIFORM_COMPONENTS = table({ float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 });
 // The builtins the client computes (watergraph-three.js BUILTIN_INITIAL, time_phase and derived).
@@ -93,6 +93,10 @@ export function checkManifest(manifest) {
 
   if (!isObject(manifest)) throw new WaterGraphError(`the manifest must be a JSON object (got ${describe(manifest)})`, { field: '' });
   members(manifest, TOP_LEVEL, '');
+  // A spectral ocean needs the ocean_simulation pass (inverse FFTs into float maps), which
+  // the watergraph runtime runs and this client does not yet.
+  if (has(manifest, 'oceans'))
+    throw new WaterGraphError(`graph '${graph}' has a spectral ocean (its ocean_simulation pass), which the three.js client does not run yet; render it with the watergraph runtime`, { field: 'oceans' });
   if (has(manifest, 'format') && manifest.format !== MANIFEST_FORMAT)
     fail('format', `must be ${MANIFEST_FORMAT}, the format this client reads`, manifest.format);
   for (const key of ['graph', 'description', 'preset']) if (has(manifest, key)) text(manifest[key], key);

@@ -24,8 +24,11 @@
 #include "accuracy/probe_cases.h"
 #include "codegen/cpu_backend.h"
 #include "core/node_options.h"
+#include "core/ocean_settings.h"
 #include "nodes/hard_case_regions.h"
 #include "nodes/registry.h"
+#include "nodes/texture_source.h"
+#include "test_support.h"
 
 namespace wg::accuracy::node_hard_cases {
 namespace {
@@ -179,6 +182,35 @@ double subsurfaceBase(const Subject& s) {
   double hl = std::sqrt(h[0] * h[0] + h[1] * h[1] + h[2] * h[2]);
   if (hl == 0) return 0;
   return std::clamp(-(v[0] * h[0] + v[1] * h[1] + v[2] * h[2]) / hl, 0.0, 1.0);
+}
+
+// The sea an ocean reader's case runs on, as the ocean_spectrum node parses it.
+ocean::OceanSettings caseSea(const Subject& s) {
+  const NodeSpec& spectrum = *defaultRegistry().find("ocean_spectrum");
+  return parseOptions(spectrum, completeOptions(spectrum, s.hc.oceanOptions))->as<ocean::OceanSettings>();
+}
+
+// J of the case's sea at its point at t = 0 (the ocean_surface node's reference there).
+double caseJacobian(const Subject& s) {
+  TextureCache textures;
+  Value sea = evaluateNode(*defaultRegistry().find("ocean_spectrum"), s.hc.oceanOptions, {}, EvalEnvironment{},
+                           &textures, test::sourceDir())[0];
+  const NodeSpec& surface = *defaultRegistry().find("ocean_surface");
+  auto outs = evaluateNode(surface, nlohmann::json::object(), {{"ocean", sea}, {"position", givenInput(s, "position")}},
+                           EvalEnvironment{}, &textures, test::sourceDir());
+  return outs[static_cast<size_t>(surface.outputIndex("jacobian"))][0];
+}
+
+// The wavenumber of angular frequency omega at depth d: omega^2 = g k tanh(k d), by bisection
+// (the left side grows with k).
+double wavenumberAt(double omega, double depth) {
+  double lo = 0, hi = 1;
+  while (ocean::kGravity * hi * std::tanh(hi * depth) < omega * omega) hi *= 2;
+  for (int i = 0; i < 200; ++i) {
+    double mid = 0.5 * (lo + hi);
+    (ocean::kGravity * mid * std::tanh(mid * depth) < omega * omega ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 using RegionCheck = std::function<std::string(const Subject&)>;
@@ -481,6 +513,26 @@ const std::map<std::string, RegionCheck>& regionChecks() {
          float t = static_cast<float>(givenInput(s, "time")[0]);
          return unless(std::nextafter(std::abs(t), INFINITY) - std::abs(t) >= 0x1p-10f, "time too small to lose float32 digits");
        }},
+      {"empty_spectrum",
+       [](const Subject& s) {
+         ocean::OceanSettings sea = caseSea(s);
+         for (size_t c = 0; c < sea.cascades.tileLengths.size(); ++c)
+           for (const auto& a : ocean::initialCascade(sea.spectrum, sea.cascades, static_cast<int>(c)).h0)
+             if (a != 0.0) return "cascade " + std::to_string(c) + " has a wave (an amplitude is not 0)";
+         return std::string();
+       }},
+      {"surface_folds",
+       [](const Subject& s) {
+         double j = caseJacobian(s);
+         return unless(j < 0, "J = " + std::to_string(j) + " at the point: the surface does not fold there");
+       }},
+      {"shallow_water",
+       [](const Subject& s) {
+         ocean::OceanSettings sea = caseSea(s);
+         if (sea.spectrum.model != ocean::SpectrumModel::Tma) return std::string("not a TMA sea");
+         double kd = wavenumberAt(ocean::spectrumPeak(sea.spectrum), sea.spectrum.depth) * sea.spectrum.depth;
+         return unless(kd < 0.1, "k d = " + std::to_string(kd) + " at the peak: not shallow water");
+       }},
       {"voronoi_2x2_search", [](const Subject& s) { return unless(optionOf(s, "search") == "2x2", "not the 2x2 search"); }},
       {"voronoi_f1_above_one",
        [](const Subject& s) {
@@ -674,6 +726,12 @@ std::optional<Subject> movedOut(Subject s) {
     set("near_far", Value::vector({0.1, 100}));
   } else if (region == "screen_uv_outside") {
     set("screen_uv", Value::vector({0.5, 0.5}));
+  } else if (region == "empty_spectrum") {
+    s.hc.oceanOptions["wind_speed"] = 10;
+  } else if (region == "surface_folds") {
+    set("position", Value::vector({11, 0, 5}));  // J = 0.18 there at t = 0
+  } else if (region == "shallow_water") {
+    s.hc.oceanOptions["depth"] = 100;
   } else if (region == "voronoi_2x2_search") {
     s.hc.options["search"] = "3x3";
   } else {

@@ -26,14 +26,27 @@ nlohmann::json literalFor(const PortSpec& p) {
   return a;
 }
 
+bool isOceanPort(const PortSpec& p) { return p.kind == PortKind::Fixed && p.type == Type::Ocean; }
+
+// An `ocean` input takes no literal: an ocean_spectrum node (its defaults) feeds it.
+const nlohmann::json kSeaNode = {{"id", "sea"}, {"type", "ocean_spectrum"}};
+
 // A graph that feeds every required input a literal and shows `output` as the colour.
 std::string singleNodeGraph(const NodeSpec& spec, const std::string& output, Type outputType) {
   nlohmann::json node{{"id", "subject"}, {"type", spec.type}};
   nlohmann::json inputs = nlohmann::json::object();
-  for (const auto& p : portsOfNode(spec, nlohmann::json::object()).inputs)  // an expression's: its default options
-    if (p.required()) inputs[p.name] = literalFor(p);
+  bool sea = false;
+  for (const auto& p : portsOfNode(spec, nlohmann::json::object()).inputs) {  // an expression's: its default options
+    if (isOceanPort(p)) {
+      inputs[p.name] = "sea.ocean";
+      sea = true;
+    } else if (p.required()) {
+      inputs[p.name] = literalFor(p);
+    }
+  }
   if (!inputs.empty()) node["inputs"] = inputs;
   nlohmann::json nodes = nlohmann::json::array({node});
+  if (sea) nodes.push_back(kSeaNode);
   std::string colour = "subject." + output;
   if (outputType == Type::Vec2 || outputType == Type::Vec4) {
     nodes.push_back({{"id", "show"}, {"type", "swizzle"}, {"options", {{"mask", outputType == Type::Vec2 ? "xyx" : "xyz"}}},
@@ -58,7 +71,10 @@ TEST(AllNodes, HaveDocumentation) {
     for (const auto& p : s->inputs) EXPECT_FALSE(p.doc.empty()) << "input " << p.name;
     for (const auto& p : s->outputs) EXPECT_FALSE(p.doc.empty()) << "output " << p.name;
     for (const auto& o : s->options) EXPECT_FALSE(o.doc.empty()) << "option " << o.name;
-    EXPECT_GT(s->tolerance, 0.0);
+    // A node whose every output is a handle (an ocean) has no value to hold to a tolerance.
+    bool handlesOnly = !s->outputs.empty();
+    for (const auto& p : s->outputs) handlesOnly = handlesOnly && p.kind == PortKind::Fixed && isOpaque(p.type);
+    if (!handlesOnly) EXPECT_GT(s->tolerance, 0.0);
   }
 }
 
@@ -67,7 +83,12 @@ TEST(AllNodes, HardCasesStayFiniteAndInRange) {
     for (const HardCase& hc : s->hardCases) {
       SCOPED_TRACE(s->type + ": " + hc.name);
       TextureCache textures;
-      std::vector<Value> outs = evaluateNode(*s, hc.options, hc.inputs, EvalEnvironment{}, &textures, test::sourceDir());
+      auto inputs = hc.inputs;
+      for (const auto& p : s->inputs)
+        if (isOceanPort(p))
+          inputs.emplace_back(p.name, evaluateNode(*defaultRegistry().find("ocean_spectrum"), hc.oceanOptions, {},
+                                                   EvalEnvironment{}, &textures, test::sourceDir())[0]);
+      std::vector<Value> outs = evaluateNode(*s, hc.options, inputs, EvalEnvironment{}, &textures, test::sourceDir());
       // The output types resolve gives, to skip outputs that do not exist for these inputs.
       std::vector<Type> outputTypes;
       for (const auto& v : outs) outputTypes.push_back(v.type);
@@ -128,6 +149,10 @@ TEST(AllNodes, NoOutputReadAloneLeavesAnUnreadTemporary) {
       nlohmann::json params = nlohmann::json::object(), inputs = nlohmann::json::object();
       for (const auto& p : portsOfNode(*s, nlohmann::json::object()).inputs) {
         if (p.derived) continue;  // computed by the node itself
+        if (isOceanPort(p)) {  // singleNodeGraph added the sea that feeds it
+          inputs[p.name] = "sea.ocean";
+          continue;
+        }
         nlohmann::json literal = literalFor(p);
         std::string type = literal.is_number() ? "float" : "vec" + std::to_string(literal.size());
         params["in_" + p.name] = {{"type", type}, {"default", literal}};

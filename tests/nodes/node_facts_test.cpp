@@ -58,6 +58,18 @@ void randomInput(const PortSpec& p, std::mt19937& rng, Sample& out) {
   out.facts.push_back(f);
 }
 
+// The sea an ocean reader's `ocean` input takes: an ocean_spectrum of 64^2 with two
+// cascades (quick to simulate), evaluated once.
+Value smallSea() {
+  static const Value sea = [] {
+    TextureCache textures;
+    nlohmann::json options = {{"fft_size", 64}, {"tile_lengths", {50, 8}}};
+    return evaluateNode(*defaultRegistry().find("ocean_spectrum"), options, {}, EvalEnvironment{}, &textures,
+                        test::sourceDir())[0];
+  }();
+  return sea;
+}
+
 // Whether `v` satisfies `f`, within rounding of the double reference. `normalized` is unit
 // length, or shorter than 1 where a safe normalisation met a vector shorter than 1e-15
 // (ValueFact): `tinyInput` says an input was such a vector.
@@ -91,6 +103,11 @@ TEST(NodeFacts, DeclaredFactsHoldOnTheReference) {
           smp.facts.push_back({});
           continue;
         }
+        if (p.kind == PortKind::Fixed && p.type == Type::Ocean) {  // a sea, not a value to draw
+          smp.inputs.emplace_back(p.name, smallSea());
+          smp.facts.push_back({});
+          continue;
+        }
         randomInput(p, rng, smp);
       }
       samples.push_back(std::move(smp));
@@ -99,6 +116,12 @@ TEST(NodeFacts, DeclaredFactsHoldOnTheReference) {
       if (!hc.options.empty()) continue;
       Sample smp;
       smp.inputs.assign(hc.inputs.begin(), hc.inputs.end());
+      for (const PortSpec& p : s->inputs)
+        if (p.kind == PortKind::Fixed && p.type == Type::Ocean) {  // the case's own sea
+          TextureCache textures;
+          smp.inputs.emplace_back(p.name, evaluateNode(*defaultRegistry().find("ocean_spectrum"), hc.oceanOptions, {},
+                                                       EvalEnvironment{}, &textures, test::sourceDir())[0]);
+        }
       smp.facts.assign(s->inputs.size(), ValueFact{});
       samples.push_back(std::move(smp));
     }

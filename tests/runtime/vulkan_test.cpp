@@ -25,6 +25,16 @@ namespace {
 // the temporary folder.
 void expectVulkanMatchesGl(const std::string& graph, const RenderSettings& settings) {
   CompileResult r = test::compileExample(graph, {Target::Glsl330, Target::Vk450});
+  if (!r.manifest.oceans.empty()) {
+    // The Vulkan runtime does not run the ocean simulation yet: a clear refusal, not a frame.
+    try {
+      renderVulkanPreview(r, settings, 1, false, /*validation=*/true);
+      ADD_FAILURE() << graph << " has an ocean, which the Vulkan runtime cannot simulate, and yet rendered";
+    } catch (const RuntimeError& e) {
+      EXPECT_NE(std::string(e.what()).find("ocean"), std::string::npos) << e.what();
+    }
+    return;
+  }
   Preview gl = renderPreview(r, Target::Glsl330, settings);
   Preview vk = renderVulkanPreview(r, settings, 1, false, /*validation=*/true);
   ASSERT_EQ(vk.image.width, gl.image.width);

@@ -1,0 +1,99 @@
+// ocean_displacement: the spectral ocean's surface for the vertex stage. A
+// point of the still water moves to x0 + (lambda Dx, h, lambda Dz), the
+// cascades' maps summed (each faded with the camera distance), and the
+// displaced surface's normal comes from the same maps. docs/ocean.md describes
+// the model; ocean_spectrum makes the maps.
+#include "core/ocean_settings.h"
+#include "nodes/node_library.h"
+#include "nodes/ocean_readers.h"
+#include "nodes/port_builders.h"
+
+namespace wg::nodes {
+
+NodeSpec oceanDisplacementNode() {
+  NodeSpec s;
+  s.type = "ocean_displacement";
+  s.family = "waves";
+  s.summary =
+      "Moves the still water's points as the spectral ocean does (height and "
+      "horizontal displacement, cascades "
+      "summed and faded with distance), with the displaced surface's normal.";
+  s.formula =
+      "w_c = 1 - smoothstep(F L_c, 2 F L_c, |p - camera|) (1 when F = "
+      "0); (lDx, h, lDz, lDxz) = sum over c of w_c "
+      "map_c(p.xz); position = p + (lDx, h, lDz); normal = "
+      "cross(dP/dz, dP/dx) made unit, from the slope maps "
+      "(wg_ocean_normal); each map_c read bilinearly between its four "
+      "texels around p.xz.";
+  s.source = "Tessendorf, Simulating Ocean Water (2001)";
+  s.cost =
+      "per cascade 4 texel fetches for the position and 4 more for the "
+      "normal, ~12 ALU each; the fade ~8 ALU";
+  s.inputs = {
+      ports::fixed("ocean", Type::Ocean, "the sea, from an ocean_spectrum node"),
+      ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition, "the still water's point (world space, y up)"),
+      ports::fromBuiltin("camera", Type::Vec3, Builtin::CameraPosition, "where distances are measured from")};
+  s.outputs = {ports::fixed("position", Type::Vec3, "the displaced point"),
+               ports::fixed("normal", Type::Vec3, "unit normal of the displaced surface (down where it folds)"),
+               ports::fixed("undisplaced", Type::Vec3,
+                            "the still point itself, for ocean_surface in the fragment "
+                            "stage (it reaches it as a "
+                            "varying, where the fragment's own world position is the "
+                            "displaced one)")};
+  s.options = {oceanread::fadeOption()};
+  s.parseOptions = optionParser(oceanread::parseFade);
+  s.isSource = true;  // reads the maps
+  s.stages = kVertexStage | kFragmentStage;
+  s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
+    return std::vector<ValueFact>{{}, ValueFact::unitVector(), {}};
+  };
+  s.emit = [](EmitContext& ctx) {
+    const int ocean = ctx.inputIndex("ocean");
+    std::string p = ctx.temporary(Type::Vec3, ctx.input("position"));
+    std::string xz = ctx.temporary(Type::Vec2, p + ".xz");
+    double fade = ctx.options<double>();
+    std::vector<std::string> w =
+        oceanread::emitWeights(ctx, fade, fade > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
+    std::string d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
+    std::string slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
+    ctx.output(0, "(" + p + " + " + d + ".xyz)");
+    ctx.output(1, EmitContext::call("wg_ocean_normal", {slopes, d + ".w"}));
+    ctx.output(2, p);
+  };
+  s.eval = [](EvalContext& ctx) {
+    const int id = oceanread::oceanId(ctx.input("ocean"));
+    const Value& p = ctx.input("position");
+    const Value& camera = ctx.input("camera");
+    auto w = oceanread::weights(oceanref::settingsOf(id), ctx.options<double>(), oceanread::distance(p, camera));
+    oceanref::MapSample m = oceanread::sum(id, ctx.environment().time[0], p[0], p[2], w);
+    ctx.output(0, Value::vector({p[0] + m.displacement[0], p[1] + m.displacement[1], p[2] + m.displacement[2]}));
+    ctx.output(1, oceanread::normalOf(m));
+    ctx.output(2, p);
+  };
+  // The maps are float32 transforms of the double fields:
+  // runtime/ocean_gpu_cascade.h bounds their error; a few metres of sea carry
+  // ~1e-5 relative error.
+  s.tolerance = 1e-4;
+  s.conditionRoundings = 4;
+  s.conditionWhy =
+      "grows with the texel coordinate x N / L (float32 spacing "
+      "1/128 texel at 2^16 texels) times the "
+      "fields' gradients, and with the normal's turning where the "
+      "surface folds";
+  s.hardCases = {
+      oceanread::hardCase("a calm (wind 0): the empty spectrum leaves the point where it is", Value::vector({3, 0, -7}),
+                          oceanread::smallSea({{"wind_speed", 0}}), "exactly the still point", -7, 3),
+      oceanread::hardCase("a calm (wind 0): the normal of a flat sea", Value::vector({3, 0, -7}),
+                          oceanread::smallSea({{"wind_speed", 0}}), "straight up", 0, 1, "normal"),
+      oceanread::hardCase("a storm at 40 m/s with choppiness 4, where the surface folds", Value::vector({26, 0, 24.5}),
+                          oceanread::smallSea({{"wind_speed", 40}, {"choppiness", 4}, {"fetch", 1000}}),
+                          "finite; the normal faces down where J < 0", -1, 1, "normal"),
+      oceanread::hardCase("a TMA sea in 1 cm of water", Value::vector({2, 0, 1}),
+                          oceanread::smallSea({{"model", "tma"}, {"depth", 0.01}}),
+                          "finite and nearly still (every spectrum tends to 0 with the depth)", -1, 3),
+      oceanread::hardCase("100 km from the origin", Value::vector({1e5, 0, -1e5}), oceanread::smallSea(),
+                          "finite: the tiles repeat", -1.1e5, 1.1e5)};
+  return s;
+}
+
+}  // namespace wg::nodes

@@ -1,0 +1,27 @@
+#pragma once
+// The ocean readers' double-precision reference: each distinct ocean_spectrum setting is
+// registered once (the id travels in the `ocean` Value's first component), its cascades'
+// fields are computed by core/ocean_fft_reference.h at each time asked for and kept for
+// the next look-ups at that time, and a look-up is the bilinear interpolation the GLSL
+// (wg_ocean_map) performs between the four texels around the point.
+#include <array>
+
+#include "core/ocean_settings.h"
+
+namespace wg::nodes::oceanref {
+
+// The id of `settings` (the same id for the same settingsKey); process-wide, thread-safe.
+int registerOcean(const ocean::OceanSettings& settings);
+const ocean::OceanSettings& settingsOf(int id);
+
+// What the maps hold at a point, summed over the cascades with their weights: as the GPU's
+// two RGBA maps, (lambda Dx, h, lambda Dz, lambda dDx/dz) and
+// (dh/dx, dh/dz, lambda dDx/dx, lambda dDz/dz).
+struct MapSample {
+  std::array<double, 4> displacement{};
+  std::array<double, 4> slopes{};
+};
+// Cascade `cascade` of ocean `id` at time t, at the world point (x, z).
+MapSample sampleCascade(int id, int cascade, double time, double x, double z);
+
+}  // namespace wg::nodes::oceanref

@@ -1,0 +1,161 @@
+// ocean_spectrum: the spectral ocean's settings (docs/ocean.md) as a node. It
+// computes nothing in the water's shaders: its `ocean` output is a handle the
+// ocean_* readers take, and the planner turns each distinct spectrum the
+// outputs reach into simulation passes (initial amplitudes, evolution, inverse
+// FFT, packing) that fill the maps they read.
+#include <cmath>
+#include <string>
+
+#include "core/ocean_settings.h"
+#include "nodes/node_library.h"
+#include "nodes/ocean_reference.h"
+#include "nodes/port_builders.h"
+
+namespace wg::nodes {
+namespace {
+
+constexpr double kDegree = ocean::kPi / 180.0;
+
+std::string validateTileLengths(const nlohmann::json& v) {
+  if (!v.is_array() || v.empty() || v.size() > static_cast<size_t>(ocean::kMaxCascades))
+    return "must list 1 to " + std::to_string(ocean::kMaxCascades) + " tile lengths in metres, the longest first";
+  for (const auto& l : v)
+    if (!l.is_number() || !std::isfinite(l.get<double>())) return "must list finite numbers of metres";
+  return "";
+}
+
+// An Integer option past int's range: any 32-bit seed.
+OptionSpec seedOption() {
+  OptionSpec o = ports::integer("seed", 0, 0, 0, "the random sea's seed, a whole number from 0 to 2^32 - 1");
+  o.max = 4294967295.0;
+  return o;
+}
+
+ocean::OceanSettings parseOceanSettings(const OptionReader& o) {
+  ocean::OceanSettings s;
+  ocean::SpectrumSettings& p = s.spectrum;
+  p.model = o.choice<ocean::SpectrumModel>("model", {{"phillips", ocean::SpectrumModel::Phillips},
+                                                     {"pierson_moskowitz", ocean::SpectrumModel::PiersonMoskowitz},
+                                                     {"jonswap", ocean::SpectrumModel::Jonswap},
+                                                     {"tma", ocean::SpectrumModel::Tma}});
+  p.spreading = o.choice<ocean::Spreading>("spreading", {{"cos2", ocean::Spreading::Cos2},
+                                                         {"mitsuyasu", ocean::Spreading::Mitsuyasu},
+                                                         {"hasselmann", ocean::Spreading::Hasselmann}});
+  p.windSpeed = o.number("wind_speed");
+  p.windDirection = o.number("wind_direction") * kDegree;
+  p.fetch = o.number("fetch") * 1000.0;
+  p.depth = o.number("depth");
+  p.gamma = o.number("gamma");
+  p.phillipsAmplitude = o.number("phillips_amplitude");
+  p.phillipsSmallWave = o.number("phillips_small_wave");
+  p.swell.height = o.number("swell_height");
+  p.swell.period = o.number("swell_period");
+  p.swell.direction = o.number("swell_direction") * kDegree;
+  p.swell.spread = o.number("swell_spread");
+  ocean::CascadeSettings& c = s.cascades;
+  c.resolution = o.integer("fft_size");
+  c.tileLengths.clear();
+  for (const auto& l : o.json("tile_lengths")) c.tileLengths.push_back(l.get<double>());
+  c.choppiness = o.number("choppiness");
+  c.seed = o.wholeNumber("seed");
+  return s;
+}
+
+}  // namespace
+
+NodeSpec oceanSpectrumNode() {
+  NodeSpec s;
+  s.type = "ocean_spectrum";
+  s.family = "waves";
+  s.summary =
+      "A random sea from a wind-wave spectrum in 1 to 4 cascades of "
+      "square tiles, simulated by inverse FFT in "
+      "passes planned for the graph; its readers (ocean_displacement, "
+      "ocean_surface) take its `ocean` output.";
+  s.formula =
+      "h(x, t) = sum over k of h~(k, t) exp(i k.x), h~(k, t) = h0(k) "
+      "exp(-i w t) + conj(h0(-k)) exp(i w t), "
+      "w^2 = g k tanh(k d), h0(k) = (xi_r + i xi_i) sqrt(F(k) dk^2) / "
+      "2 with counter-based Gaussian xi, "
+      "F = S(w) D(theta) (dw/dk) / k; displacement D = sum of i k/|k| "
+      "h~ exp(i k.x) times the choppiness. "
+      "docs/ocean.md gives the spectra, the spreading functions, the "
+      "cascades' bands and the units.";
+  s.source =
+      "Tessendorf, Simulating Ocean Water (2001); Hasselmann et al. "
+      "1973 (JONSWAP); Bouws et al. 1985 (TMA)";
+  s.cost =
+      "no shader code; per frame and cascade 2 log2 N + 2 full passes "
+      "over N x N RGBA32F texels (evolution, "
+      "the FFT's Stockham stages, packing); the initial spectrum only "
+      "when its options change";
+  s.outputs = {ports::fixed("ocean", Type::Ocean, "the simulated sea, for the ocean_* readers")};
+  s.options = {
+      ports::choice("model", {"phillips", "pierson_moskowitz", "jonswap", "tma"}, "jonswap",
+                    "the wave spectrum: Phillips (Tessendorf's), "
+                    "Pierson-Moskowitz (a fully developed sea), "
+                    "JONSWAP (a sea growing over `fetch`), TMA (JONSWAP in "
+                    "water of finite `depth`)"),
+      ports::choice("spreading", {"cos2", "mitsuyasu", "hasselmann"}, "hasselmann",
+                    "the directional spreading: cos^2 (waves with and against the wind), "
+                    "or the cos-2s forms of "
+                    "Mitsuyasu (1975) and Hasselmann (1980), narrower near the peak"),
+      ports::number("wind_speed", 10, 0, 100, "U10, the mean wind 10 m above the sea, m/s; 0 is a flat calm"),
+      ports::number("wind_direction", 0, -360, 360, "degrees from +x towards +z, the way the wind blows"),
+      ports::number("fetch", 100, 0, 1e5,
+                    "km of open water upwind (JONSWAP, TMA); past about 1.7e4 "
+                    "U10^2 / g the sea is fully developed"),
+      ports::number("depth", 10000, 0, 10000,
+                    "water depth, m: enters the dispersion always and the "
+                    "spectrum in TMA; 10000 is deep water for "
+                    "every wave a cascade holds"),
+      ports::number("gamma", 3.3, 1, 20, "JONSWAP's peak enhancement"),
+      ports::number("phillips_amplitude", 1e-3, 0, 1, "Phillips' A (dimensionless)"),
+      ports::number("phillips_small_wave", 0, 0, 100, "Phillips' suppression length l, m: exp(-k^2 l^2)"),
+      ports::number("swell_height", 0, 0, 30, "significant height of a swell from afar, m; 0: none"),
+      ports::number("swell_period", 10, 1, 60, "the swell's peak period, s"),
+      ports::number("swell_direction", 0, -360, 360, "degrees from +x towards +z, the way the swell travels"),
+      ports::number("swell_spread", 20, 0, 1000, "the swell's cos-2s exponent (larger: narrower)"),
+      ports::checked(OptionSpec::Kind::Json, "tile_lengths", nlohmann::json::array({400, 60, 9}), validateTileLengths,
+                     "each cascade's square tile, m, the longest first: 1 to 4 "
+                     "tiles, each shorter than the previous by "
+                     "less than N/2 - 1 times (so no wavenumber between the "
+                     "grids is lost)"),
+      ports::knob(ports::integer("fft_size", 256, 64, 512,
+                                 "texels along a tile's side, a power of two; "
+                                 "fewer drop the shortest waves"),
+                  {64, 128, 256}),
+      ports::number("choppiness", 1, 0, 4,
+                    "lambda: the horizontal displacement's scale; positive "
+                    "sharpens crests"),
+      seedOption(),
+  };
+  s.parseOptions = optionParser(parseOceanSettings);
+  s.checkOptions = [](const ParsedOptions& options) -> std::optional<NodeSpec::OptionProblem> {
+    const auto& settings = options.as<ocean::OceanSettings>();
+    if (auto e = ocean::validateOcean(settings)) {
+      // The settings speak of the fetch in metres; the option is in km.
+      std::string why = e->message;
+      if (e->parameter == "fetch") why = "must be greater than 0 km (the sea needs open water to grow)";
+      // The cascades' resolution is the option fft_size (`resolution` is the scene passes' knob).
+      std::string option = e->parameter == "resolution" ? "fft_size" : e->parameter;
+      return NodeSpec::OptionProblem{option, why};
+    }
+    return std::nullopt;
+  };
+  s.isSource = true;
+  s.isUniformSource = true;  // the same sea for every vertex and pixel: no varying carries it
+  s.recomputeInFragment = true;
+  // A name, so the body writer declares nothing: the readers name the maps
+  // themselves.
+  s.emit = [](EmitContext& ctx) { ctx.output(0, "ocean_handle"); };
+  s.eval = [](EvalContext& ctx) {
+    Value v = Value::ofType(Type::Ocean);
+    v[0] = oceanref::registerOcean(ctx.options<ocean::OceanSettings>());
+    ctx.output(0, v);
+  };
+  s.tolerance = 0;
+  return s;
+}
+
+}  // namespace wg::nodes

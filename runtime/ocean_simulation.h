@@ -1,0 +1,36 @@
+#pragma once
+// RenderPass::OceanSimulation: the spectral oceans a manifest lists ("oceans"), each a set
+// of GPU cascades (runtime/ocean_gpu_cascade.h) updated once per frame, whose maps are the
+// manifest's ocean textures. The settings are the ocean_spectrum node's options, parsed
+// with the node's own parser and checked as the compiler checks them.
+#include <memory>
+#include <vector>
+
+#include "codegen/shader_plan.h"
+#include "runtime/ocean_gpu_cascade.h"
+
+namespace wg::rt {
+
+class OceanSimulation {
+ public:
+  // Builds every ocean's cascades (initial amplitudes on the CPU, uploaded once). The GL
+  // context must be current. A manifest whose ocean options do not parse is a manifest
+  // error.
+  OceanSimulation(const std::vector<OceanInfo>& oceans, SceneShaderApi api);
+
+  // Every cascade's maps at time t (seconds). Leaves the viewport, the framebuffer, the
+  // program and texture units 0-2 changed.
+  void update(double time);
+  // The GL texture of a manifest's ocean map (a manifest error when it names none).
+  GLuint map(const OceanMapRef& ref) const;
+  bool empty() const { return oceans_.empty(); }
+
+ private:
+  struct Ocean {
+    double choppiness = 0;
+    std::vector<std::unique_ptr<OceanGpuCascade>> cascades;
+  };
+  std::vector<Ocean> oceans_;
+};
+
+}  // namespace wg::rt
