@@ -138,6 +138,13 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         exit = std::max(exit, exitCodeFor(diags));
         continue;
       }
+      if (target == Target::Vk450 && !result->manifest.oceans.empty() && args.target == "all") {
+        // Asked for every target, a graph the Vulkan runtime cannot run yet is reported, not
+        // failed; asked for vk450 alone, it is the error the runtime gives.
+        std::cout << "check " << path << " on vk450: not run: the Vulkan runtime cannot run the ocean_simulation "
+                     "pass yet (the graph has a spectral ocean)\n";
+        continue;
+      }
       try {
         auto report = accuracy::checkGraph(*result, path, *executor, options);
         std::cout << accuracy::formatCheckText(report);

@@ -33,10 +33,11 @@ render() {  # graph camera [preset]
     ${preset:+--preset "$preset"} ${view[@]+"${view[@]}"}
   echo "wrote $out/$name.png"
 }
-for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river lagoon caustic_pool; do
+for g in lake shelf classic_webgl tutorial_pbr stylized ocean pool river lagoon caustic_pool open_ocean; do
   render "$g" above
   render "$g" grazing
 done
 render deferred_underwater above
 render deferred_underwater underwater
+render open_ocean grazing storm
 for p in calm moderate choppy debug; do render topdown topdown "$p"; done

@@ -138,6 +138,23 @@ TEST(CheckCli, EveryExampleGraphIsWithinItsBound) {
   EXPECT_EQ(ok, graphs.size()) << out;
 }
 
+// Every target asked: a spectral ocean is checked on GL and said not to run on Vulkan
+// (whose runtime has no ocean simulation yet), exit 0; vk450 alone is the runtime's error.
+TEST(CheckCli, ASpectralOceanIsNotRunOnVulkanAndSaysSo) {
+  const std::string graph = test::sourcePath("graphs/open_ocean.json");
+  std::string out;
+  int rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check --size 32x18 " + test::shellQuote(graph), &out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("check " + graph + " on glsl330"), std::string::npos) << out;
+  EXPECT_NE(out.find("check " + graph + " on vk450: not run: the Vulkan runtime cannot run the ocean_simulation pass yet"),
+            std::string::npos)
+      << out;
+  rc = test::runCommand(test::shellQuote(test::watergraphBinary()) + " check --size 32x18 --target vk450 " + test::shellQuote(graph),
+                        &out);
+  EXPECT_EQ(rc, 1) << out;
+  EXPECT_NE(out.find("cannot run the ocean_simulation pass yet"), std::string::npos) << out;
+}
+
 TEST(CheckCli, ErrorMapIsAPngOfTheFrameSize) {
   std::string dir = test::makeTempDir("wg_check_map");
   std::string map = dir + "/lake-error.png";

@@ -1,0 +1,145 @@
+// What the spectral ocean's simulation costs inside a frame (issue 41): a graph with an
+// ocean (default graphs/open_ocean.json) rendered by the GL runtime, and beside it, on the
+// same EGL context, the same oceans' simulation alone (runtime/ocean_simulation.h: the
+// evolution, the inverse FFT passes and the packing of every cascade, then glFinish), once
+// per fft_size level. After a warm-up of each, `rounds` rounds alternate whole frames and
+// simulation updates (at advancing times, as frames have), in an order that rotates per
+// round. Reported per level: the median frame time (CPU wall time around the frame and its
+// glFinish, llvmpipe), the median simulation time, and the median over rounds of each
+// round's simulation / frame ratio (paired: the frame includes one simulation update).
+//
+//   build/bin/wg_bench_ocean [--rounds N] [--size WxH] [--fft-sizes 64,128,256] [graph]
+//
+// Defaults: 9 rounds, 1280x720, fft_size 64, 128 and 256, graphs/open_ocean.json.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <epoxy/gl.h>
+
+#include "codegen/compile.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "runtime/egl_context.h"
+#include "runtime/median.h"
+#include "runtime/ocean_simulation.h"
+#include "runtime/preview.h"
+#include "runtime/renderer.h"
+
+namespace {
+
+[[noreturn]] void usage(const char* why) {
+  std::fprintf(stderr,
+               "wg_bench_ocean: %s\nusage: wg_bench_ocean [--rounds N] [--size WxH] [--fft-sizes 64,128,256] [graph]\n",
+               why);
+  std::exit(2);
+}
+
+// The graph with every ocean_spectrum node's fft_size set to `n`.
+wg::Graph withFftSize(wg::Graph graph, int n) {
+  for (auto& node : graph.nodes) {
+    if (node.type != "ocean_spectrum") continue;
+    auto it = std::find_if(node.options.begin(), node.options.end(), [](const auto& o) { return o.name == "fft_size"; });
+    if (it != node.options.end())
+      it->value = n;
+    else
+      node.options.push_back({"fft_size", n, {}, {}});
+  }
+  return graph;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace wg;
+  int rounds = 9, width = 1280, height = 720;
+  std::vector<int> sizes = {64, 128, 256};
+  std::string path = std::string(WG_SOURCE_DIR) + "/graphs/open_ocean.json";
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto next = [&]() -> std::string {
+      if (i + 1 >= argc) usage(("missing value after " + a).c_str());
+      return argv[++i];
+    };
+    if (a == "--rounds") {
+      rounds = std::max(1, std::atoi(next().c_str()));
+    } else if (a == "--size") {
+      if (std::sscanf(next().c_str(), "%dx%d", &width, &height) != 2 || width < 1 || height < 1) usage("--size is WxH");
+    } else if (a == "--fft-sizes") {
+      sizes.clear();
+      std::stringstream list(next());
+      for (std::string item; std::getline(list, item, ',');) sizes.push_back(std::atoi(item.c_str()));
+    } else if (!a.empty() && a[0] == '-') {
+      usage(("unknown option " + a).c_str());
+    } else {
+      path = a;
+    }
+  }
+
+  try {
+    auto context = rt::EglContext::create(rt::GlApi::DesktopGl45);
+    std::printf("%s, %dx%d, camera above, %d rounds, glsl330 on %s\n\n", path.c_str(), width, height, rounds,
+                context->renderer().c_str());
+    std::printf("| fft_size | cascades | frame ms | simulation ms | simulation / frame |\n|---|---|---|---|---|\n");
+    Diagnostics loadDiags;
+    auto original = loadGraphFile(path, loadDiags);
+    if (!original) {
+      std::fprintf(stderr, "%s: does not load\n", path.c_str());
+      return 1;
+    }
+    for (int n : sizes) {
+      Diagnostics diags;
+      std::optional<Graph> graph = withFftSize(*original, n);
+      CompileOptions options;
+      options.targets = {Target::Glsl330};
+      std::optional<CompileResult> result;
+      if (graph) result = compileGraph(*graph, defaultRegistry(), options, diags);
+      if (!result || result->manifest.oceans.empty()) {
+        std::fprintf(stderr, "%s (fft_size %d): does not compile, or has no ocean\n", path.c_str(), n);
+        return 1;
+      }
+      rt::RenderSettings s;
+      s.width = width, s.height = height;
+      rt::Renderer renderer(result->manifest, rt::waterShaderSources(*result, Target::Glsl330), s, false,
+                            rt::textureOrigins(*result));
+      rt::OceanSimulation simulation(result->manifest.oceans, rt::SceneShaderApi::Gl330);
+      renderer.renderFrame();  // warm-up: llvmpipe compiles at the first draw
+      double time = 3.5;
+      simulation.update(time);
+      glFinish();
+      std::vector<double> frameMs, simulationMs, ratio;
+      for (int r = 0; r < rounds; ++r) {
+        double frame = 0, update = 0;
+        for (int k = 0; k < 2; ++k) {
+          if ((k + r) % 2 == 0) {
+            frame = renderer.renderFrame();
+          } else {
+            time += 1.0 / 60.0;
+            auto start = std::chrono::steady_clock::now();
+            simulation.update(time);
+            glFinish();
+            update = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+          }
+        }
+        frameMs.push_back(frame);
+        simulationMs.push_back(update);
+        ratio.push_back(update / frame);
+      }
+      size_t cascades = 0;
+      for (const auto& o : result->manifest.oceans) cascades += o.options.value("tile_lengths", nlohmann::json::array()).size();
+      std::printf("| %d | %zu | %.1f | %.1f | %.3f |\n", n, cascades, rt::median(frameMs), rt::median(simulationMs),
+                  rt::median(ratio));
+      std::fflush(stdout);
+    }
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "wg_bench_ocean: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
