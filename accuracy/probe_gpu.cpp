@@ -159,7 +159,7 @@ std::vector<std::array<float, 4>> runProbeOnGpu(const EmitResult& shader, const 
   // The ocean maps come from the simulation, run at each case's time (runtime/ocean_simulation.h).
   std::unique_ptr<rt::OceanSimulation> oceans;
   if (!shader.oceans.empty())
-    oceans = std::make_unique<rt::OceanSimulation>(shader.oceans, es ? rt::SceneShaderApi::Es300 : rt::SceneShaderApi::Gl330);
+    oceans = std::make_unique<rt::OceanSimulation>(shader.oceans, shader.textures, es ? rt::SceneShaderApi::Es300 : rt::SceneShaderApi::Gl330);
   for (const auto& t : shader.textures) {
     bool cube = t.type == Type::SamplerCube;
     Bound b{&t, t.scene || t.ocean ? makeSceneTexture(cube) : makeNodeTexture(t, program.directory),

@@ -108,7 +108,7 @@ int main(int argc, char** argv) {
       s.width = width, s.height = height;
       rt::Renderer renderer(result->manifest, rt::waterShaderSources(*result, Target::Glsl330), s, false,
                             rt::textureOrigins(*result));
-      rt::OceanSimulation simulation(result->manifest.oceans, rt::SceneShaderApi::Gl330);
+      rt::OceanSimulation simulation(result->manifest.oceans, result->manifest.textures, rt::SceneShaderApi::Gl330);
       renderer.renderFrame();  // warm-up: llvmpipe compiles at the first draw
       double time = 3.5;
       simulation.update(time);

@@ -83,16 +83,12 @@ NodeSpec oceanDisplacementNode() {
   s.hardCases = {
       oceanread::hardCase("a calm (wind 0): the empty spectrum leaves the point where it is", Value::vector({3, 0, -7}),
                           oceanread::smallSea({{"wind_speed", 0}}), "exactly the still point", -7, 3),
-      oceanread::hardCase("a calm (wind 0): the normal of a flat sea", Value::vector({3, 0, -7}),
-                          oceanread::smallSea({{"wind_speed", 0}}), "straight up", 0, 1, "normal"),
-      oceanread::hardCase("a storm at 40 m/s with choppiness 4, where the surface folds", Value::vector({26, 0, 24.5}),
-                          oceanread::smallSea({{"wind_speed", 40}, {"choppiness", 4}, {"fetch", 1000}}),
-                          "finite; the normal faces down where J < 0", -1, 1, "normal"),
       oceanread::hardCase("a TMA sea in 1 cm of water", Value::vector({2, 0, 1}),
                           oceanread::smallSea({{"model", "tma"}, {"depth", 0.01}}),
                           "finite and nearly still (every spectrum tends to 0 with the depth)", -1, 3),
       oceanread::hardCase("100 km from the origin", Value::vector({1e5, 0, -1e5}), oceanread::smallSea(),
                           "finite: the tiles repeat", -1.1e5, 1.1e5)};
+  for (HardCase& c : oceanread::normalHardCases()) s.hardCases.push_back(std::move(c));
   return s;
 }
 

@@ -106,6 +106,14 @@ HardCase hardCase(std::string name, Value position, nlohmann::json seaOptions, s
   return c;
 }
 
+std::vector<HardCase> normalHardCases() {
+  return {hardCase("a calm (wind 0): the normal of a flat sea", Value::vector({3, 0, -7}), smallSea({{"wind_speed", 0}}),
+                   "straight up", 0, 1, "normal"),
+          hardCase("a storm at 40 m/s with choppiness 4, where the surface folds", Value::vector({26, 0, 24.5}),
+                   smallSea({{"wind_speed", 40}, {"choppiness", 4}, {"fetch", 1000}}),
+                   "finite; the normal faces down where J < 0", -1, 1, "normal")};
+}
+
 int oceanId(const Value& v) {
   if (v.type != Type::Ocean) throw std::logic_error("an ocean reader's `ocean` input holds no ocean");
   return static_cast<int>(v[0]);

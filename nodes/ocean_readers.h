@@ -42,6 +42,10 @@ nlohmann::json smallSea(const nlohmann::json& extra = nlohmann::json::object());
 HardCase hardCase(std::string name, Value position, nlohmann::json seaOptions, std::string expectation, double lo,
                   double hi, std::string output = "");
 
+// The cases both readers' `normal` outputs share: a flat sea's (straight up) and a storm's
+// at a point where the surface folds (J < 0 there at t = 0: the normal faces down).
+std::vector<HardCase> normalHardCases();
+
 // The id an `ocean` input carries (ocean_spectrum's eval puts it in component
 // 0).
 int oceanId(const Value& v);

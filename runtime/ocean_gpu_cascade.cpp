@@ -2,6 +2,7 @@
 #include "runtime/ocean_gpu_cascade.h"
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "runtime/runtime_error.h"
@@ -19,7 +20,9 @@ uniform uint u_tau;
 uniform float u_dk;
 uniform int u_n;
 layout(location = 0) out vec4 o_a;
+#if WG_OCEAN_SLOPES
 layout(location = 1) out vec4 o_b;
+#endif
 
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
 vec2 timesI(vec2 a) { return vec2(-a.y, a.x); }
@@ -38,9 +41,11 @@ void main() {
   vec2 ih = timesI(h);
   vec2 dx = unit.x * ih, dz = unit.y * ih;          // i k/|k| h
   vec2 sx = k.x * ih, sz = k.y * ih;                // i k h
-  vec2 dxx = -k.x * unit.x * h, dzz = -k.y * unit.y * h, dxz = -k.x * unit.y * h;
   o_a = vec4(h + timesI(dx), dz + timesI(sx));
+#if WG_OCEAN_SLOPES
+  vec2 dxx = -k.x * unit.x * h, dzz = -k.y * unit.y * h, dxz = -k.x * unit.y * h;
   o_b = vec4(sz + timesI(dxx), dzz + timesI(dxz));
+#endif
 }
 )glsl";
 
@@ -50,13 +55,15 @@ void main() {
 // the second half of each block. After log2 N stages the result is in natural order.
 constexpr const char* kStockham = R"glsl(
 uniform highp sampler2D u_a;
-uniform highp sampler2D u_b;
 uniform highp sampler2D u_twiddle;
 uniform int u_ns;
 uniform int u_n;
 uniform int u_vertical;
 layout(location = 0) out vec4 o_a;
+#if WG_OCEAN_SLOPES
+uniform highp sampler2D u_b;
 layout(location = 1) out vec4 o_b;
+#endif
 
 vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
 
@@ -70,27 +77,39 @@ void main() {
   vec2 w = texelFetch(u_twiddle, ivec2(r * (u_n / (2 * u_ns)), 0), 0).xy;
   if ((i / u_ns) % 2 == 1) w = -w;
   vec4 a0 = texelFetch(u_a, first, 0), a1 = texelFetch(u_a, second, 0);
-  vec4 b0 = texelFetch(u_b, first, 0), b1 = texelFetch(u_b, second, 0);
   o_a = vec4(a0.xy + cmul(w, a1.xy), a0.zw + cmul(w, a1.zw));
+#if WG_OCEAN_SLOPES
+  vec4 b0 = texelFetch(u_b, first, 0), b1 = texelFetch(u_b, second, 0);
   o_b = vec4(b0.xy + cmul(w, b1.xy), b0.zw + cmul(w, b1.zw));
+#endif
 }
 )glsl";
 
 constexpr const char* kPack = R"glsl(
 uniform highp sampler2D u_a;
-uniform highp sampler2D u_b;
 uniform float u_lambda;
 layout(location = 0) out vec4 o_displacement;
+#if WG_OCEAN_SLOPES
+uniform highp sampler2D u_b;
 layout(location = 1) out vec4 o_slopes;
+#endif
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 a = texelFetch(u_a, p, 0), b = texelFetch(u_b, p, 0);
-  float h = a.x, dx = a.y, dz = a.z, sx = a.w, sz = b.x, dxx = b.y, dzz = b.z, dxz = b.w;
+  vec4 a = texelFetch(u_a, p, 0);
+  float h = a.x, dx = a.y, dz = a.z;
+#if WG_OCEAN_SLOPES
+  vec4 b = texelFetch(u_b, p, 0);
+  float sx = a.w, sz = b.x, dxx = b.y, dzz = b.z, dxz = b.w;
   // The derivatives of the displacement, not J: J of several cascades is J of their sums,
   // which a sum of per-cascade Js is not.
   o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, u_lambda * dxz);
   o_slopes = vec4(sx, sz, u_lambda * dxx, u_lambda * dzz);
+#else
+  // Nothing reads the slopes, so nothing reads w either (wg_ocean_normal and
+  // wg_ocean_jacobian take both maps).
+  o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, 0.0);
+#endif
 }
 )glsl";
 
@@ -104,13 +123,14 @@ Texture floatTexture(int width, int height, GLenum format) {
   return t;
 }
 
-Framebuffer targetOf(const Texture& first, const Texture& second, const char* what) {
+// A framebuffer drawing into `second` too when there is one (the slope fields).
+Framebuffer targetOf(const Texture& first, const Texture* second, const char* what) {
   Framebuffer f = makeFramebuffer();
   glBindFramebuffer(GL_FRAMEBUFFER, f.id());
   glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, first.id(), 0);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second.id(), 0);
+  if (second) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second->id(), 0);
   const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(2, buffers);
+  glDrawBuffers(second ? 2 : 1, buffers);
   if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw RuntimeError(RuntimeError::Kind::Driver,
                        std::string("the GL driver cannot render into the ocean's RGBA32F ") + what + " textures");
@@ -126,8 +146,8 @@ void bindTexture(int unit, const Texture& t) {
 
 }  // namespace
 
-OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api)
-    : n_(cascade.resolution), tileLength_(cascade.tileLength) {
+OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes)
+    : n_(cascade.resolution), slopes_(slopes), tileLength_(cascade.tileLength) {
   const size_t count = static_cast<size_t>(n_) * n_;
   std::vector<float> h0(count * 4);
   for (int iz = 0; iz < n_; ++iz)
@@ -154,16 +174,17 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   }
   twiddle_ = floatTexture(n_ / 2, 1, GL_RG32F);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, n_ / 2, 1, GL_RG, GL_FLOAT, twiddle.data());
+  const int fields = slopes_ ? 2 : 1;
   for (int s = 0; s < 2; ++s) {
-    for (auto& t : spectra_[s]) t = floatTexture(n_, n_, GL_RGBA32F);
-    spectraTargets_[s] = targetOf(spectra_[s][0], spectra_[s][1], "spectrum");
+    for (int f = 0; f < fields; ++f) spectra_[s][f] = floatTexture(n_, n_, GL_RGBA32F);
+    spectraTargets_[s] = targetOf(spectra_[s][0], slopes_ ? &spectra_[s][1] : nullptr, "spectrum");
   }
-  for (auto& t : maps_) t = floatTexture(n_, n_, GL_RGBA32F);
-  mapTarget_ = targetOf(maps_[0], maps_[1], "map");
+  for (int f = 0; f < fields; ++f) maps_[f] = floatTexture(n_, n_, GL_RGBA32F);
+  mapTarget_ = targetOf(maps_[0], slopes_ ? &maps_[1] : nullptr, "map");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
 
-  const std::string header = sceneShaderHeader(api);
+  const std::string header = sceneShaderHeader(api) + "#define WG_OCEAN_SLOPES " + (slopes_ ? "1" : "0") + "\n";
   const std::string vertex = sceneShaderSources(api).fullscreenVertex;
   auto link = [&](const char* name, const char* body) {
     return linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", vertex},
@@ -207,7 +228,7 @@ void OceanGpuCascade::update(double time, double choppiness) {
   for (int vertical = 0; vertical < 2; ++vertical)
     for (int ns = 1; ns < n_; ns *= 2) {
       bindTexture(0, spectra_[current][0]);
-      bindTexture(1, spectra_[current][1]);
+      if (slopes_) bindTexture(1, spectra_[current][1]);
       glUniform1i(location(stockham_, "u_ns"), ns);
       glUniform1i(location(stockham_, "u_vertical"), vertical);
       drawInto(spectraTargets_[1 - current]);
@@ -216,7 +237,7 @@ void OceanGpuCascade::update(double time, double choppiness) {
 
   glUseProgram(pack_.id());
   bindTexture(0, spectra_[current][0]);
-  bindTexture(1, spectra_[current][1]);
+  if (slopes_) bindTexture(1, spectra_[current][1]);
   glUniform1i(location(pack_, "u_a"), 0);
   glUniform1i(location(pack_, "u_b"), 1);
   glUniform1f(location(pack_, "u_lambda"), static_cast<float>(choppiness));
@@ -225,6 +246,7 @@ void OceanGpuCascade::update(double time, double choppiness) {
 }
 
 std::vector<float> OceanGpuCascade::readMap(int which) const {
+  if (which == 1 && !slopes_) throw std::logic_error("this ocean cascade computes no slope map");
   std::vector<float> out(static_cast<size_t>(n_) * n_ * 4);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, mapTarget_.id());
   glReadBuffer(which == 0 ? GL_COLOR_ATTACHMENT0 : GL_COLOR_ATTACHMENT1);

@@ -21,20 +21,23 @@ namespace wg::rt {
 class OceanGpuCascade {
  public:
   // Uploads h0 (rounded to float32) and the bins' frequency indices, and links the passes.
-  // The GL context must be current; `api` is Gl330 or Es300.
-  OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api);
+  // The GL context must be current; `api` is Gl330 or Es300. Without `slopes` (nothing
+  // reads the slope map) only the first texture's two transforms run, half the work, and
+  // the displacement map's w is 0.
+  OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes = true);
 
   // Computes the maps at time t (seconds) with choppiness lambda. Leaves the viewport, the
   // draw framebuffer, the program and texture units 0-2 changed.
   void update(double time, double choppiness);
 
   int resolution() const { return n_; }
+  bool computesSlopes() const { return slopes_; }
   // RGBA32F, N x N, texel (jx, jz) at x = jx L / N, z = jz L / N:
   //   displacement: (lambda Dx, h, lambda Dz, lambda dDx/dz)
   //   slopes:       (dh/dx, dh/dz, lambda dDx/dx, lambda dDz/dz)
   // so J = (1 + lambda dDx/dx)(1 + lambda dDz/dz) - (lambda dDx/dz)^2 of the summed cascades.
   GLuint displacementMap() const { return maps_[0].id(); }
-  GLuint slopeMap() const { return maps_[1].id(); }
+  GLuint slopeMap() const { return maps_[1].id(); }  // 0 without slopes
   // The two maps read back, N * N * 4 floats each, row jz * N + jx.
   std::vector<float> readDisplacement() const { return readMap(0); }
   std::vector<float> readSlopes() const { return readMap(1); }
@@ -44,6 +47,7 @@ class OceanGpuCascade {
   void drawInto(const Framebuffer& target) const;
 
   int n_ = 0;
+  bool slopes_ = true;
   double tileLength_ = 0;
   Texture h0_, frequency_, twiddle_;
   Texture spectra_[2][2];  // [ping or pong][A or B]

@@ -15,8 +15,9 @@ class OceanSimulation {
  public:
   // Builds every ocean's cascades (initial amplitudes on the CPU, uploaded once). The GL
   // context must be current. A manifest whose ocean options do not parse is a manifest
-  // error.
-  OceanSimulation(const std::vector<OceanInfo>& oceans, SceneShaderApi api);
+  // error. `textures` are the shaders' (the manifest's): a cascade whose slope map none of
+  // them samples computes its displacement alone (half the transforms).
+  OceanSimulation(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures, SceneShaderApi api);
 
   // Every cascade's maps at time t (seconds). Leaves the viewport, the framebuffer, the
   // program and texture units 0-2 changed.
@@ -24,6 +25,8 @@ class OceanSimulation {
   // The GL texture of a manifest's ocean map (a manifest error when it names none).
   GLuint map(const OceanMapRef& ref) const;
   bool empty() const { return oceans_.empty(); }
+  // Whether cascade `cascade` of ocean `ocean` computes the slope fields.
+  bool computesSlopes(int ocean, int cascade) const;
 
  private:
   struct Ocean {

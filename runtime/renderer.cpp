@@ -756,7 +756,7 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
   checkGl("uploading the scene");
   r.createTargets();
   if (r.plan.runs(PassKind::OceanSimulation))
-    r.oceans = std::make_unique<OceanSimulation>(manifest.oceans, es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
+    r.oceans = std::make_unique<OceanSimulation>(manifest.oceans, manifest.textures, es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
   r.setupWaterUniforms(manifest, origins);
   r.cache = nullptr;  // used only while constructing: the caller may destroy it afterwards
 }

@@ -16,13 +16,18 @@
 // ||a^ - a||, ||b^ - b|| <= (B_fft + eta_in) sqrt(||a||^2 + ||b||^2).
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
 
+#include "codegen/compile.h"
+#include "core/graph_io.h"
 #include "core/ocean_fft_reference.h"
+#include "nodes/registry.h"
 #include "runtime/egl_context.h"
 #include "runtime/ocean_gpu_cascade.h"
+#include "runtime/ocean_simulation.h"
 
 namespace wg::rt {
 namespace {
@@ -114,6 +119,61 @@ TEST_P(OceanGpu, FieldsMatchTheDoubleReferenceWithinTheTransformsBound) {
       }
     }
   }
+}
+
+// Nothing reads the slopes: the first texture's two transforms alone, the same
+// displacement within the same bound, w = 0, no slope map.
+TEST_P(OceanGpu, ADisplacementOnlyCascadeComputesTheDisplacementAlone) {
+  auto ctx = EglContext::create(GetParam());
+  const SceneShaderApi api = GetParam() == GlApi::Es32 ? SceneShaderApi::Es300 : SceneShaderApi::Gl330;
+  ocean::SpectrumSettings s;
+  ocean::CascadeSettings c;
+  c.resolution = 64;
+  c.tileLengths = {250};
+  ocean::OceanCascade cascade = ocean::initialCascade(s, c, 0);
+  OceanGpuCascade gpu(cascade, api, /*slopes=*/false);
+  EXPECT_FALSE(gpu.computesSlopes());
+  EXPECT_EQ(gpu.slopeMap(), 0u);
+  EXPECT_THROW(gpu.readSlopes(), std::logic_error);
+  const double lambda = 0.8, t = 3.7, bound = relativeBound(64);
+  gpu.update(t, lambda);
+  std::vector<float> displacement = gpu.readDisplacement();
+  ocean::OceanFields f = ocean::oceanFields(cascade, t, lambda);
+  double z1 = std::hypot(norm(f.height), norm(f.displacementX));
+  double z2 = std::hypot(norm(f.displacementZ), norm(f.slopeX));
+  EXPECT_LE(distance(channel(displacement, 1), f.height), bound * z1);
+  EXPECT_LE(distance(channel(displacement, 0), scaled(f.displacementX, lambda)),
+            lambda * bound * z1 + u * lambda * norm(f.displacementX));
+  EXPECT_LE(distance(channel(displacement, 2), scaled(f.displacementZ, lambda)),
+            lambda * bound * z2 + u * lambda * norm(f.displacementZ));
+  for (double w : channel(displacement, 3)) ASSERT_EQ(w, 0.0);
+}
+
+// The runtime computes the slope fields of a cascade only where a shader samples its slope
+// map: a graph that reads only the displaced position runs half the transforms.
+TEST_P(OceanGpu, TheSimulationComputesOnlyTheMapsTheShadersRead) {
+  auto ctx = EglContext::create(GetParam());
+  const SceneShaderApi api = GetParam() == GlApi::Es32 ? SceneShaderApi::Es300 : SceneShaderApi::Gl330;
+  auto compile = [](const std::string& position, const std::string& color) {
+    Diagnostics diags;
+    auto graph = parseGraph(R"({"version": 1, "name": "sea_test", "nodes": [
+        {"id": "sea", "type": "ocean_spectrum", "options": {"fft_size": 64, "tile_lengths": [100, 10]}},
+        {"id": "moved", "type": "ocean_displacement", "inputs": {"ocean": "sea.ocean"}}],
+        "outputs": {"vertex": {"position": ")" + position + R"("}, "fragment": {"color": ")" + color + R"("}}})",
+                            "sea.json", diags);
+    CompileOptions o;
+    o.targets = {Target::Glsl330};
+    auto result = graph ? compileGraph(*graph, defaultRegistry(), o, diags) : std::nullopt;
+    if (!result) throw std::runtime_error("the test graph does not compile");
+    return result->manifest;
+  };
+  Manifest positionOnly = compile("moved.position", "moved.position");
+  OceanSimulation displacement(positionOnly.oceans, positionOnly.textures, api);
+  for (int c : {0, 1}) EXPECT_FALSE(displacement.computesSlopes(0, c)) << "cascade " << c;
+  Manifest withNormal = compile("moved.position", "moved.normal");
+  OceanSimulation both(withNormal.oceans, withNormal.textures, api);
+  for (int c : {0, 1}) EXPECT_TRUE(both.computesSlopes(0, c)) << "cascade " << c;
+  displacement.update(1.0);  // runs
 }
 
 INSTANTIATE_TEST_SUITE_P(Apis, OceanGpu, ::testing::Values(GlApi::DesktopGl45, GlApi::Es32),
