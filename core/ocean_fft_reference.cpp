@@ -108,12 +108,13 @@ std::optional<SettingError> validateCascades(const CascadeSettings& c) {
       return error("tile_lengths", where + "tile length " + numberText(l) + " m is longer than cascade " +
                                        std::to_string(i - 1) + "'s " + numberText(previous) +
                                        " m: list the cascades from the longest tile to the shortest");
-    // The finer grid's first bin must lie below the coarser grid's last, or the
-    // wavenumbers between them belong to neither.
-    if (!(smallestWavenumber(l) < largestAxialWavenumber(c.resolution, previous)))
+    // The finer grid's first bin must lie below the coarser grid's last at the smallest
+    // resolution (the bands do not move with it: cascadeBands), or the wavenumbers between
+    // them belong to neither.
+    if (!(smallestWavenumber(l) < largestAxialWavenumber(kMinResolution, previous)))
       return error("tile_lengths", where + "tile length " + numberText(l) + " m is more than " +
-                                       std::to_string(c.resolution / 2 - 1) + " times shorter than " + numberText(previous) +
-                                       " m: the wavenumbers between the two grids would be lost");
+                                       std::to_string(kMinResolution / 2 - 1) + " times shorter than " +
+                                       numberText(previous) + " m: the wavenumbers between the two grids would be lost");
   }
   if (!std::isfinite(c.choppiness) || c.choppiness < 0 || c.choppiness > kMaxChoppiness)
     return error("choppiness", numberText(c.choppiness) + " is outside [0, " + numberText(kMaxChoppiness) + "]");
@@ -128,7 +129,7 @@ std::vector<WavenumberBand> cascadeBands(const CascadeSettings& c) {
   for (size_t i = 0; i < count; ++i) {
     bands[i].low = i == 0 ? 0.0 : bands[i - 1].high;
     bands[i].high = i + 1 == count ? std::numeric_limits<double>::infinity()
-                                   : std::sqrt(largestAxialWavenumber(c.resolution, c.tileLengths[i]) *
+                                   : std::sqrt(largestAxialWavenumber(kMinResolution, c.tileLengths[i]) *
                                                smallestWavenumber(c.tileLengths[i + 1]));
   }
   return bands;

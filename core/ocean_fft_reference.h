@@ -51,8 +51,11 @@ std::optional<SettingError> validateCascades(const CascadeSettings& c);
 
 // Each cascade owns the wavenumbers |k| in [low, high): the coarsest from 0, the finest to
 // infinity (its whole grid), and between cascade i and i + 1 the geometric mean of i's
-// largest axial wavenumber (N/2 - 1) 2 pi / L_i and i + 1's smallest 2 pi / L_(i+1). No
-// bin is counted by two cascades, and no wavenumber between the grids is lost.
+// largest axial wavenumber at the smallest resolution, (kMinResolution/2 - 1) 2 pi / L_i,
+// and i + 1's smallest 2 pi / L_(i+1). No bin is counted by two cascades, and no
+// wavenumber between the grids is lost. The bands do not depend on the resolution, so
+// that lowering it (a quality knob) drops only the finest cascade's shortest waves and
+// keeps one sea, instead of moving waves between cascades (where other draws make them).
 struct WavenumberBand {
   double low = 0, high = 0;  // rad/m
 };

@@ -87,8 +87,9 @@ TEST(OceanBadInput, MeaninglessCascadeSettingsAreErrorsNamingTheParameter) {
   EXPECT_EQ(with([](auto& c) { c.tileLengths = {1000, 500, 250, 125, 60}; }), "tile_lengths");
   EXPECT_EQ(with([](auto& c) { c.tileLengths = {0}; }), "tile_lengths");
   EXPECT_EQ(with([](auto& c) { c.tileLengths = {kInf}; }), "tile_lengths");
-  // Out of order, repeated, and so far apart that the wavenumbers between are lost
-  // (256^2: the finer tile at most 126 times shorter).
+  // Out of order, repeated, and so far apart that the wavenumbers between are lost at the
+  // smallest resolution, 64^2, whatever the resolution (the finer tile at most 31 times
+  // shorter: the bands do not move with the resolution).
   CascadeSettings c = ok;
   c.tileLengths = {250, 1000};
   EXPECT_EQ(validateCascades(c)->message,
@@ -96,9 +97,9 @@ TEST(OceanBadInput, MeaninglessCascadeSettingsAreErrorsNamingTheParameter) {
             "the shortest");
   c.tileLengths = {1000, 1000};
   EXPECT_EQ(validateCascades(c)->parameter, "tile_lengths");
-  c.tileLengths = {1000, 1000.0 / 127};
+  c.tileLengths = {1000, 1000.0 / 31};
   EXPECT_EQ(validateCascades(c)->parameter, "tile_lengths");
-  c.tileLengths = {1000, 1000.0 / 126};
+  c.tileLengths = {1000, 1000.0 / 30.9};
   EXPECT_FALSE(validateCascades(c));
   for (double l : {-0.1, 4.5, kNaN}) EXPECT_EQ(with([&](auto& c) { c.choppiness = l; }), "choppiness") << l;
   // A seed names one of 2^32 seas; one outside would alias another, so it is refused.

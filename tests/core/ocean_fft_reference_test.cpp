@@ -3,6 +3,7 @@
 // Moskowitz's Hs = 0.209 U19.5^2 / g, the period 2 pi / sqrt(g k tanh(kd)) of one bin
 // written out, and the closed form of one wave's displacement, slopes and Jacobian.
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <functional>
 
@@ -86,6 +87,37 @@ TEST(OceanFftReference, SameSeedSameSeaOtherSeedOtherSea) {
   }
   EXPECT_EQ(a.h0[0], 0.0);
   EXPECT_NE(second.h0[static_cast<size_t>(31) * 64 + 31], 0.0);
+}
+
+// The resolution is a quality knob: a lower one keeps the same sea and drops only the
+// finest cascade's shortest waves. Every wave of the 128^2 sea is the 256^2 sea's at the
+// same wavenumber (same amplitude, bit for bit); the 256^2 sea's other waves are all in the
+// last cascade, beyond the 128^2 grid.
+TEST(OceanFftReference, ALowerResolutionKeepsTheSeaAndDropsOnlyTheShortestWaves) {
+  SpectrumSettings s;
+  CascadeSettings fine, coarse;
+  fine.tileLengths = coarse.tileLengths = {120, 24, 5};
+  fine.resolution = 256;
+  coarse.resolution = 128;
+  for (int c = 0; c < 3; ++c) {
+    OceanCascade a = initialCascade(s, coarse, c), b = initialCascade(s, fine, c);
+    const double dk = 2 * kPi / a.tileLength;
+    int extra = 0;
+    for (int iz = 0; iz < 256; ++iz)
+      for (int ix = 0; ix < 256; ++ix) {
+        int mx = signedIndex(ix, 256), mz = signedIndex(iz, 256);
+        std::complex<double> big = b.h0[static_cast<size_t>(iz) * 256 + ix];
+        bool inCoarse = mx > -64 && mx < 64 && mz > -64 && mz < 64;
+        if (inCoarse) {
+          size_t j = static_cast<size_t>((mz + 128) % 128) * 128 + static_cast<size_t>((mx + 128) % 128);
+          ASSERT_EQ(big, a.h0[j]) << "cascade " << c << " bin (" << mx << ", " << mz << ")";
+        } else if (big != 0.0) {
+          ++extra;
+          EXPECT_EQ(c, 2) << "a wave of cascade " << c << " at k = " << dk * std::hypot(mx, mz) << " rad/m";
+        }
+      }
+    if (c == 2) EXPECT_GT(extra, 0) << "the finest cascade's shortest waves";
+  }
 }
 
 TEST(OceanFftReference, SurfaceVarianceIsTheSpectrumsIntegral) {
