@@ -13,6 +13,7 @@
 #include "accuracy/fragment_program.h"
 #include "accuracy/gpu_executor.h"
 #include "accuracy/readback.h"
+#include "accuracy/target_agreement.h"
 #include "codegen/cpu_backend.h"
 #include "runtime/memory_budget.h"
 #include "runtime/preview.h"
@@ -112,10 +113,10 @@ std::string referenceUnavailable(const CompileResult& result) {
   if (!p.output(OutputSlot::FragmentColor)) return "no fragment colour";
   if (const ProgramOutput* a = p.output(OutputSlot::FragmentAlpha))
     if (!(a->value.kind == ValueRef::Kind::Const && a->value.constant()[0] == 1.0)) return "the colour is blended by alpha";
-  // A GLSL function node without a `reference` formula: its GLSL is all there is.
-  for (const Op& op : p.ops)
-    if (!op.spec->eval)
-      return "node '" + op.nodeId + "' (" + op.spec->type + ") has no double reference; checked for NaN and Inf only";
+  // A GLSL function node without a `reference` formula: its GLSL is all there is, so the
+  // targets are held to each other (accuracy/target_agreement.h).
+  if (std::string node = nodeWithoutReference(p); !node.empty())
+    return node + " has no double reference; checked for NaN and Inf, and the targets against each other";
   return "";
 }
 
@@ -286,6 +287,8 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   const size_t renderers = 1 + (compare ? static_cast<size_t>(plan.frames()) : 0);
   size_t hostPerPixel = compare ? 4 * plan.channels.size() + 16 * plan.images.size() : 0;
   if (options.errorMaps) hostPerPixel += 16 + 4 + 4 + 4;
+  // Kept frames: every view's linear RGBA, for comparing targets.
+  if (options.keepFrames) hostPerPixel += 16 * checkSweep(underwater).size();
   const std::string size = std::to_string(width) + "x" + std::to_string(height);
   const size_t hostBytes = rt::saturatedProduct(pixels, hostPerPixel);
   rt::checkMemoryBudget(rt::saturatedSum(rt::saturatedProduct(renderers, rt::rendererBytes(result.manifest, settings)), hostBytes),
@@ -315,6 +318,7 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
       if (std::isnan(x)) ++v.nan;
       else if (std::isinf(x)) ++v.inf;
     }
+    if (options.keepFrames) v.frame = img.rgba32f;
     if (compare) {
       if (options.errorMaps) {
         v.frame = img.rgba32f;

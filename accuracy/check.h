@@ -31,6 +31,7 @@ struct CheckOptions {
   int width = 160, height = 90;
   int referenceStride = 8;  // every Nth pixel in each direction is compared
   bool errorMaps = false;   // keep every view's per-pixel errors (CheckViewResult::errors)
+  bool keepFrames = false;  // keep every view's frame (CheckViewResult::frame), to compare targets
   ShaderMutation mutation;  // applied to the water shaders: a wrong node, for tests
 };
 
@@ -44,7 +45,7 @@ struct CheckViewResult {
   // With CheckOptions::errorMaps, per pixel (rows top to bottom): the largest error over
   // R, G and B, and the largest error / bound; -1 where the pixel was not compared.
   std::vector<float> errors, ratios;
-  std::vector<float> frame;  // with errorMaps: the frame's linear RGBA (rows top to bottom)
+  std::vector<float> frame;  // with errorMaps or keepFrames: the frame's linear RGBA (rows top to bottom)
 };
 
 struct CheckReport {

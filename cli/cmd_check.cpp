@@ -15,6 +15,8 @@
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/check.h"
+#include "accuracy/error_bound.h"
+#include "accuracy/target_agreement.h"
 #include "accuracy/gpu_executor.h"
 #include "codegen/compile.h"
 #include "codegen/output_files.h"
@@ -108,6 +110,14 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
     }
   }
   int exit = kExitOk;
+  // Graphs with a node that has no double reference: their reports on each target, frames
+  // kept, held to each other once every target has rendered them.
+  struct WithoutReference {
+    std::string node;
+    double tolerance = 0;
+    std::vector<accuracy::CheckReport> reports;
+  };
+  std::map<std::string, WithoutReference> withoutReference;
   for (Target target : targets) {
     std::unique_ptr<accuracy::GpuExecutor> executor;
     try {
@@ -146,7 +156,10 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         continue;
       }
       try {
-        auto report = accuracy::checkGraph(*result, path, *executor, options);
+        accuracy::CheckOptions graphOptions = options;
+        std::string unreferenced = accuracy::nodeWithoutReference(result->program);
+        graphOptions.keepFrames = !unreferenced.empty();
+        auto report = accuracy::checkGraph(*result, path, *executor, graphOptions);
         std::cout << accuracy::formatCheckText(report);
         if (report.failed()) exit = std::max(exit, kExitGraphError);
         rt::Image map = accuracy::errorMapImage(report, args.view.over(result->program.view));
@@ -156,6 +169,12 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
           std::cout << "  error map: " << file << "\n";
         } else if (options.errorMaps) {
           std::cout << "  error map: none (nothing compared; reference: " << report.reference << ")\n";
+        }
+        if (!unreferenced.empty()) {
+          WithoutReference& kept = withoutReference[path];
+          kept.node = unreferenced;
+          kept.tolerance = accuracy::programErrorModel(result->program).tolerance;
+          kept.reports.push_back(std::move(report));
         }
       } catch (const rt::TextureLoadError& e) {
         Diagnostics textureDiags;
@@ -176,6 +195,26 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
       std::cerr << "watergraph: check: " << e.what() << "\n";
       exit = std::max(exit, e.exitCode());
     }
+  }
+  for (const auto& path : args.graphs) {
+    auto it = withoutReference.find(path);
+    if (it == withoutReference.end()) continue;
+    const WithoutReference& kept = it->second;
+    std::cout << "targets of " << path << " against each other (" << kept.node << " has no double reference):\n";
+    if (kept.reports.size() < 2) {
+      std::cout << "  only " << targetName(kept.reports.front().target)
+                << " was checked: --target all holds glsl330, es300 and vk450 to each other\n";
+      continue;
+    }
+    bool failed = false;
+    for (size_t k = 1; k < kept.reports.size(); ++k) {
+      auto agreement = accuracy::compareTargets(kept.reports.front(), kept.reports[k], kept.tolerance);
+      std::cout << accuracy::formatTargetAgreement(agreement);
+      failed |= agreement.failed();
+    }
+    std::cout << (failed ? "FAIL" : "ok") << ": the targets " << (failed ? "disagree beyond" : "agree within")
+              << " twice the graph's tolerance " << kept.tolerance << "\n";
+    if (failed) exit = std::max(exit, kExitGraphError);
   }
   return exit;
 }

@@ -120,8 +120,26 @@ struct InterfaceOutput {
   SourceRef where;  // the output's key
 };
 
+// A function graph's option, `"interface": {"options": {"pattern": {...}}}`: fixed per
+// instance (`"options": {"pattern": "cells"}` on the instance node), never a port. A choice
+// or a number is read inside as the static value `$pattern` (a choice as the index of the
+// value chosen), a texture by a texture option written `"$debris"` (core/instance_options.h).
+struct InterfaceOption {
+  enum class Kind { Choice, Number, Texture };
+  std::string name;
+  Kind kind = Kind::Choice;
+  std::vector<std::string> choices;  // Choice: the names an instance may choose, file order
+  std::optional<double> min;         // Number: the range an instance's value must lie in
+  std::optional<double> max;
+  nlohmann::json defaultValue;       // null: every instance must set it
+  std::string description;
+  SourceRef where;         // the option's key
+  SourceRef defaultWhere;  // its "default" value
+};
+
 struct GraphInterface {
   std::string description;
+  std::vector<InterfaceOption> options;  // file order
   std::vector<InterfaceOutput> outputs;  // file order
   SourceRef where;                       // the "interface" object
 };

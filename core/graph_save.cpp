@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/graph_io.h"
+#include "core/instance_options.h"
 #include "core/number_format.h"
 
 namespace wg {
@@ -255,6 +256,20 @@ Doc outputsDoc(const Graph& g) {
 Doc interfaceDoc(const GraphInterface& itf) {
   ObjectWriter w;
   if (!itf.description.empty()) w.member("description", quote(itf.description));
+  if (!itf.options.empty()) {
+    ObjectWriter optw;
+    for (const auto& o : itf.options) {
+      ObjectWriter one;
+      one.member("type", quote(interfaceOptionKindName(o.kind)));
+      if (!o.choices.empty()) one.member("choices", jsonDoc(json(o.choices)));
+      if (o.min) one.member("min", formatNumber(*o.min));
+      if (o.max) one.member("max", formatNumber(*o.max));
+      if (!o.defaultValue.is_null()) one.member("default", jsonDoc(o.defaultValue));
+      if (!o.description.empty()) one.member("description", quote(o.description));
+      optw.member(o.name, one.finish());
+    }
+    w.member("options", optw.finish());
+  }
   ObjectWriter ow;
   for (const auto& o : itf.outputs) {
     ObjectWriter one;

@@ -20,6 +20,7 @@
 #include "core/graph_imports.h"
 #include "core/graph_node_type.h"
 #include "core/id_index.h"
+#include "core/instance_options.h"
 #include "core/json_string_columns.h"
 #include "core/load_limits.h"
 #include "core/number_format.h"
@@ -96,6 +97,7 @@ struct InstanceScope {
   // The instances this one lies in, innermost first: every op it makes carries them.
   std::shared_ptr<const std::vector<LocatedNote>> chain;
   std::vector<ValueRef> outputs;  // filled: one per interface output
+  InstanceBindings options;       // the instance's options: statics read as `$name`, textures as "$name"
 };
 
 class Resolver {
@@ -123,6 +125,7 @@ class Resolver {
     shared_.nodeOutputs = nodeOutputs;
     shared_.instanceOptions = &graph_.instanceOptions;
     collectParameters();
+    if (graph_.interface && !graph_.interface->options.empty()) bindOwnOptions();
     resolveBody();
     if (diags_.errorCount() > errorsBefore) return std::nullopt;
     resolveOutputs();
@@ -139,6 +142,7 @@ class Resolver {
     size_t errorsBefore = diags_.errorCount();
     program_.totalNodes += static_cast<int>(graph_.nodes.size());
     for (const auto& p : graph_.parameters) paramValue_.emplace(p.name, scope_->inputs.at(p.name));
+    useOptions(scope_->options);
     resolveBody();
     if (diags_.errorCount() > errorsBefore) return false;
     resolveInterfaceOutputs(scope_->outputs);
@@ -158,6 +162,29 @@ class Resolver {
     std::vector<int> order = topologicalOrder();
     if (diags_.errorCount() > errorsBefore) return;
     buildOps(order);
+  }
+
+  // A function graph compiled on its own: its options take their defaults.
+  void bindOwnOptions() {
+    InstanceOptionRequest request{*graph_.interface, graph_.file};
+    request.topDirectory = shared_.topDirectory;
+    request.accept = [this](const TextureFile& t) { return acceptedTexture(t); };
+    if (auto bound = bindInstanceOptions(request, diags_)) {
+      ownOptions_ = std::move(*bound);
+      useOptions(ownOptions_);
+    }
+  }
+
+  // The options' static values are read as `$name`, folded like a literal input.
+  void useOptions(const InstanceBindings& bound) {
+    options_ = &bound;
+    for (const auto& [name, value] : bound.statics)
+      paramValue_.emplace(name, ValueRef::constant_(shared_.constants.intern(Value::scalar(value))));
+  }
+
+  std::string acceptedTexture(const TextureFile& texture) {
+    std::string why = chargeTextureBudget(texture);
+    return why.empty() ? decodedTexture(texture) : why;
   }
 
   void collectParameters() {
@@ -211,9 +238,28 @@ class Resolver {
         bool applied = std::any_of(node.options.begin(), node.options.end(),
                                    [&](const NodeOption& o) { return o.name == v.option && o.where == v.where; });
         if (applied) continue;
+        if (instanceOf_[static_cast<size_t>(ni)]) {
+          checkPresetInstanceOption(preset, v, *instanceOf_[static_cast<size_t>(ni)]);
+          continue;
+        }
         if (const OptionSpec* option = presetOptionSpec(preset, v, *spec, node.id))
           checkPresetOptionValue(preset, v, *option, node.id, directory_);
       }
+  }
+
+  // A preset member "instance.option" sets an option of the instance's interface: one it
+  // declares, a value it accepts (a texture's file is checked when the preset is applied).
+  void checkPresetInstanceOption(const Preset& preset, const PresetValue& v, const Import& im) {
+    const std::string label = optionLabel(v.option);
+    for (const auto& o : im.graph->interface->options) {
+      if (o.name != v.option) continue;
+      if (std::string why = interfaceOptionValueProblem(o, v.optionValue); !why.empty())
+        diags_.error(DiagCode::InstanceOptionValue, v.where, "preset '" + preset.name + "': " + label + " " + why, v.node,
+                     label);
+      return;
+    }
+    diags_.error(DiagCode::InstanceOptionUnknown, v.keyWhere,
+                 "preset '" + preset.name + "': the interface of '" + im.name + "' declares no " + label, v.node, label);
   }
 
   // The option of `spec` that preset member `v` sets on node `nodeId`; null, reported,
@@ -278,7 +324,7 @@ class Resolver {
     if (!spec) {
       if (nodeTypeOf(*g, registry_, node->type).import)
         diags_.error(DiagCode::UnknownOption, v.keyWhere,
-                     label + ": '" + v.node + "' is a subgraph instance, which takes no options");
+                     label + ": '" + v.node + "' is a subgraph instance, whose options are its interface's (set as \"instance.option\")");
       return;  // an unknown type, reported where the subgraph is checked
     }
     bool applied = std::any_of(graph_.instanceOptions.begin(), graph_.instanceOptions.end(),
@@ -348,6 +394,7 @@ class Resolver {
       }
       bool optionsValid = true;
       for (const auto& opt : n.options) {
+        if (instanceOf_[i]) break;  // an instance's options are its interface's: bound when it is inlined
         int oi = spec->optionIndex(opt.name);
         if (oi < 0) {
           diags_.error(DiagCode::UnknownOption, opt.keyWhere,
@@ -356,6 +403,7 @@ class Resolver {
                        n.id, optionLabel(opt.name));
           continue;
         }
+        if (readsInterfaceTexture(spec->options[static_cast<size_t>(oi)], opt, n)) continue;
         TextureFile texture;
         std::string why = checkOption(spec->options[static_cast<size_t>(oi)], opt.value, directory_, &texture);
         if (why.empty()) why = chargeTextureBudget(texture);
@@ -391,6 +439,21 @@ class Resolver {
                        n.id, inputLabel(in.port));
       }
     }
+  }
+
+  // A texture option written "$name" samples the interface texture `name` (checked where
+  // it was chosen); true when `opt` is one, after reporting one that is not declared.
+  bool readsInterfaceTexture(const OptionSpec& spec, const NodeOption& opt, const Node& n) {
+    if (spec.kind != OptionSpec::Kind::Texture) return false;
+    auto name = interfaceTextureReference(opt.value);
+    if (!name) return false;
+    if (!options_ || !options_->textures.count(*name))
+      diags_.error(DiagCode::InstanceOptionUnknown, opt.where,
+                   "option '" + opt.name + "' reads the interface texture '" + std::string(*name) + "', but " +
+                       (graph_.interface ? "the interface declares no texture option of that name"
+                                         : "the graph has no interface (only a function graph's nodes read one)"),
+                   idOf(n), optionLabel(opt.name));
+    return true;
   }
 
   // Node i's ports: its type's, or (an expression's) those its options give.
@@ -665,6 +728,7 @@ class Resolver {
       } else {
         nlohmann::json complete = completeOptions(*spec, declaredOptions(node, *spec));
         if (scope_) retargetTexturePaths(*spec, complete);
+        if (options_ && !bindInterfaceTextures(*spec, node, complete)) continue;
         // Valid: lookUpSpecs checked each value.
         SharedOptions held = shared_.options.intern(*spec, std::move(complete));
         op.sharedOptions = std::move(held.json);
@@ -874,7 +938,11 @@ class Resolver {
       bool literal = !given[pi] || given[pi]->source.kind == InputSource::Kind::Literal;
       scope.inputs.emplace(p.name, isColorHint(p.hint) && literal && v.kind == ValueRef::Kind::Const ? linearised(v) : v);
     }
-    if (!inRange) return;
+    InstanceOptionRequest request{*sub.interface, sub.file, &node, idOf(node), graph_.file, shared_.topDirectory,
+                                  [this](const TextureFile& t) { return acceptedTexture(t); }};
+    auto bound = bindInstanceOptions(request, diags_);
+    if (!inRange || !bound) return;
+    scope.options = std::move(*bound);
     size_t firstDiag = diags_.all().size();
     size_t firstOp = program_.ops.size();
     bool ok = Resolver(withInstanceOptions(sub, scope.idPrefix), registry_, diags_, program_, shared_, scope).runInstance();
@@ -961,12 +1029,44 @@ class Resolver {
       auto it = options.find(o.name);
       if (it == options.end() || !it->is_string()) continue;
       const std::string& path = it->get_ref<const std::string&>();
-      if (path.rfind(kBuiltinTexturePrefix, 0) == 0) continue;
+      if (path.rfind(kBuiltinTexturePrefix, 0) == 0 || interfaceTextureReference(*it)) continue;
       namespace fs = std::filesystem;
       fs::path top = shared_.topDirectory.empty() ? fs::path(".") : fs::path(shared_.topDirectory);
       fs::path here = directory_.empty() ? fs::path(".") : fs::path(directory_);
       *it = (here / path).lexically_normal().lexically_relative(top.lexically_normal()).generic_string();
     }
+  }
+
+  // Texture options written "$name" become the texture the instance chose, and the sampler
+  // state it set becomes the node's (its wrap, filter and colour space options); a node
+  // without those options samples in its own fixed state, so setting one for it is refused.
+  bool bindInterfaceTextures(const NodeSpec& spec, const Node& node, nlohmann::json& options) {
+    bool ok = true;
+    for (const auto& o : spec.options) {
+      if (o.kind != OptionSpec::Kind::Texture) continue;
+      auto it = options.find(o.name);
+      if (it == options.end()) continue;
+      auto name = interfaceTextureReference(*it);
+      if (!name) continue;
+      const BoundTexture& bound = options_->textures.find(*name)->second;  // lookUpSpecs checked it
+      *it = bound.texture.source;
+      auto set = [&](std::string_view key, const auto& value, auto nameOf) {
+        if (!value) return;
+        if (spec.optionIndex(key) < 0) {
+          diags_.error(DiagCode::InstanceOptionValue, bound.where,
+                       "the texture '" + std::string(*name) + "' sets '" + std::string(key) + "', but node '" + idOf(node) +
+                           "' (" + spec.type + ") that samples it has no such option: it samples in its own fixed state",
+                       idOf(node), optionLabel(o.name));
+          ok = false;
+          return;
+        }
+        options[std::string(key)] = std::string(nameOf(*value));
+      };
+      set("wrap", bound.texture.wrap, wrapName);
+      set("filter", bound.texture.filter, filterName);
+      set("color_space", bound.texture.colorSpace, colorSpaceName);
+    }
+    return ok;
   }
 
   // `v` as type `want`: a float splats to a vector (as a port does), a constant at once,
@@ -1086,6 +1186,8 @@ class Resolver {
   SharedState ownShared_;
   SharedState& shared_;
   InstanceScope* scope_ = nullptr;  // set: resolving a subgraph instance
+  InstanceBindings ownOptions_;     // a function graph compiled on its own: its options' defaults
+  const InstanceBindings* options_ = nullptr;  // the options in force (the scope's or ownOptions_)
   std::string directory_;           // this graph file's folder (its texture paths are relative to it)
   std::vector<const NodeSpec*> specs_;
   std::vector<const Import*> instanceOf_;  // by node index: the import it instances, or null

@@ -125,7 +125,10 @@ OJ optionSchema(const NodeSpec& spec, const OptionSpec& o) {
       s["type"] = "string";
       s["anyOf"] = OJ::array({OJ{{"description", "a built-in procedural texture"}, {"enum", builtins}},
                               OJ{{"description", "a .png path relative to the graph file, inside its folder"},
-                                 {"pattern", "^(?![/\\\\])(?!(.*/)?\\.\\.(/|$)).*\\.png$"}}});
+                                 {"pattern", "^(?![/\\\\])(?!(.*/)?\\.\\.(/|$)).*\\.png$"}},
+                              OJ{{"description", "in a function graph: the texture option of its interface of that name, "
+                                                 "chosen per instance"},
+                                 {"pattern", "^\\$[A-Za-z_][A-Za-z0-9_]*$"}}});
       break;
     }
     case OptionSpec::Kind::Text:
@@ -212,6 +215,32 @@ OJ interfaceSchema() {
                         {"enum", {"float", "vec2", "vec3", "vec4"}}}},
               {"source", defRef("source")},
               {"description", {{"type", "string"}}}}}};
+  // An option fixed per instance (core/instance_options.h): the value's form follows the
+  // type; choices, range and texture files are checked by the loader and resolve.
+  OJ textureValue{{"anyOf", OJ::array({OJ{{"type", "string"}, {"minLength", 1}},
+                                       OJ{{"type", "object"},
+                                          {"additionalProperties", false},
+                                          {"required", {"file"}},
+                                          {"properties",
+                                           {{"file", {{"type", "string"}, {"minLength", 1}}},
+                                            {"wrap", {{"enum", {"repeat", "clamp", "mirror"}}}},
+                                            {"filter", {{"enum", {"nearest", "linear", "mipmapped"}}}},
+                                            {"color_space", {{"enum", {"srgb", "linear"}}}}}}}})}};
+  OJ option{{"type", "object"},
+            {"additionalProperties", false},
+            {"required", {"type"}},
+            {"properties",
+             {{"type", {{"description", "choice: one of named values, read inside as the static `$name` (the index "
+                                        "of the value chosen); number: read as the static `$name`; texture: a PNG "
+                                        "(or builtin:<name>) a texture option written \"$name\" samples"},
+                        {"enum", {"choice", "number", "texture"}}}},
+              {"choices", {{"type", "array"}, {"minItems", 1}, {"uniqueItems", true}, {"items", defRef("identifier")}}},
+              {"min", defRef("number")},
+              {"max", defRef("number")},
+              {"default", {{"description", "the value when an instance does not set it; without one, every instance "
+                                           "must"},
+                           {"anyOf", OJ::array({defRef("identifier"), defRef("number"), textureValue})}}},
+              {"description", {{"type", "string"}}}}}};
   return OJ{{"description", "makes the graph a function graph: a node type for the graphs that import it; its "
                             "parameters are the inputs"},
             {"type", "object"},
@@ -219,6 +248,10 @@ OJ interfaceSchema() {
             {"required", {"outputs"}},
             {"properties",
              {{"description", {{"type", "string"}}},
+              {"options", {{"description", "options fixed per instance: static choices and numbers, textures"},
+                           {"type", "object"},
+                           {"propertyNames", defRef("identifier")},
+                           {"additionalProperties", option}}},
               {"outputs", {{"type", "object"},
                            {"minProperties", 1},
                            {"propertyNames", defRef("identifier")},

@@ -1,5 +1,7 @@
 #include "nodes/node_docs.h"
 
+#include "core/instance_options.h"
+
 #include "nodes/glsl_function_node.h"
 
 #include <map>
@@ -83,6 +85,19 @@ nlohmann::json functionGraphJson(const std::string& type, const Graph& g) {
   for (const auto& o : ports.outputs) outputs.push_back({{"name", o.name}, {"type", portType(o)}, {"doc", o.doc}});
   j["inputs"] = inputs;
   j["outputs"] = outputs;
+  // Options fixed per instance (core/instance_options.h): listed only where declared.
+  if (g.interface && !g.interface->options.empty()) {
+    nlohmann::json options = nlohmann::json::array();
+    for (const auto& o : g.interface->options) {
+      nlohmann::json oj{{"name", o.name}, {"kind", std::string(interfaceOptionKindName(o.kind))}, {"doc", o.description}};
+      if (!o.choices.empty()) oj["choices"] = o.choices;
+      if (o.min) oj["min"] = *o.min;
+      if (o.max) oj["max"] = *o.max;
+      if (!o.defaultValue.is_null()) oj["default"] = o.defaultValue;
+      options.push_back(oj);
+    }
+    j["options"] = options;
+  }
   return j;
 }
 
@@ -103,6 +118,19 @@ std::string functionGraphText(const std::string& type, const Graph& g) {
     s += "    " + shown(in["name"]) + ": " + shown(in["type"]) + ", default " + shown(in["default"]) + range;
     if (!in["doc"].get<std::string>().empty()) s += " — " + shown(in["doc"]);
     s += "\n";
+  }
+  if (j.contains("options")) {
+    s += "  options (fixed per instance):\n";
+    for (const auto& o : j["options"]) {
+      s += "    " + shown(o["name"]) + ": " + shown(o["kind"]);
+      if (o.contains("choices")) s += " " + escapedForTerminal(o["choices"].dump());
+      if (o.contains("min") || o.contains("max"))
+        s += " in [" + (o.contains("min") ? formatNumber(o["min"].get<double>()) : std::string("-inf")) + ", " +
+             (o.contains("max") ? formatNumber(o["max"].get<double>()) : std::string("inf")) + "]";
+      s += o.contains("default") ? ", default " + escapedForTerminal(o["default"].dump()) : std::string(", required");
+      if (!o["doc"].get<std::string>().empty()) s += " — " + shown(o["doc"]);
+      s += "\n";
+    }
   }
   s += "  outputs:\n";
   for (const auto& out : j["outputs"]) {

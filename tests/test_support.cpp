@@ -1,5 +1,7 @@
 #include "test_support.h"
 
+#include "core/graph_io.h"
+
 #include <algorithm>
 #include <array>
 #include <cstdio>
@@ -118,6 +120,23 @@ std::vector<std::string> exampleGraphs() {
   std::vector<std::string> paths;
   for (const auto& name : listFiles(sourcePath("graphs"), ".json")) paths.push_back(sourcePath("graphs/" + name));
   return paths;
+}
+
+namespace {
+bool graphHoldsNodeType(const Graph& g, std::string_view type) {
+  for (const auto& n : g.nodes)
+    if (n.type == type) return true;
+  for (const auto& im : g.imports)
+    if (im.graph && graphHoldsNodeType(*im.graph, type)) return true;
+  return false;
+}
+}  // namespace
+
+bool holdsGlslFunction(const std::string& graphPath) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(graphPath, diags);
+  if (!graph) throw std::runtime_error("holdsGlslFunction: " + graphPath + " does not load");
+  return graphHoldsNodeType(*graph, "glsl_function");
 }
 
 std::string shellQuote(const std::string& s) {

@@ -45,6 +45,9 @@ std::vector<std::string> listFiles(const std::string& dir, const std::string& su
 std::vector<std::string> listFilesRecursive(const std::string& dir);
 // The example graphs: paths of graphs/*.json in the source tree, sorted.
 std::vector<std::string> exampleGraphs();
+// Whether the graph at `graphPath`, or a function graph it imports (at any depth), holds a
+// glsl_function node: its code is GLSL only, so it has no WGSL form.
+bool holdsGlslFunction(const std::string& graphPath);
 // `s` quoted for /bin/sh.
 std::string shellQuote(const std::string& s);
 // Runs a shell command with stdout and stderr captured separately; returns its exit status.

@@ -9,6 +9,8 @@ layout(std140, set = 0, binding = 0) uniform WgUniforms {
   float u_time;
   vec3 p_floor;
 };
+layout(set = 0, binding = 1) uniform sampler2D t0_foam;
+layout(set = 0, binding = 2) uniform sampler2D t1_lagoon_ripples;
 
 // pow with the base clamped at 0 (GLSL leaves x < 0, and x = 0 with y <= 0, undefined):
 // 0^y is 0 for y > 0 and 1 for y <= 0; the exponent of 2 is capped at 127, as exp2's, so
@@ -70,20 +72,47 @@ float wgfn1_caustic(vec2 uv, float scale, float phase) {
 }
 
 void main() {
-  float n2_fine_phase = (u_time * 0.25);
-  float n3_fine_phase = fract(n2_fine_phase);
-  float n4_fine_phase = (6.2831855 * n3_fine_phase);
-  float n5_fine_caustic_t0 = wgfn0_caustic(v_uv, 11.0, n4_fine_phase);
-  float n6_fine_bright = (n5_fine_caustic_t0 * 0.35);
-  vec3 n7_fine_light = (vec3(0.52252156, 0.8900054, 1.0) * vec3(n6_fine_bright));
-  float n8_broad_phase = (u_time * -0.125);
-  float n9_broad_phase = fract(n8_broad_phase);
-  float n10_broad_phase = (6.2831855 * n9_broad_phase);
-  float n11_broad_caustic_t0 = wgfn1_caustic(v_uv, 4.0, n10_broad_phase);
-  float n12_broad_bright = (n11_broad_caustic_t0 * 0.5);
-  vec3 n13_broad_light = (vec3(1.0, 0.8900054, 0.60382736) * vec3(n12_broad_bright));
-  vec3 n14_light = (n7_fine_light + n13_broad_light);
-  vec3 n15_floor = wg_srgb_to_linear_vec3(p_floor);
-  vec3 n16_color = (n15_floor + n14_light);
-  o_color = vec4(n16_color, 1.0);
+  vec2 n2_fine_debris_uv = (v_uv * vec2(5.5));
+  float n3_fine_debris_uv = (0.5 * u_time);
+  float n4_fine_debris_uv = (n3_fine_debris_uv * 0.25);
+  float n5_fine_debris_uv = fract(n4_fine_debris_uv);
+  vec2 n6_fine_debris_uv = vec2(0.0, n5_fine_debris_uv);
+  vec2 n7_fine_debris_uv = (n2_fine_debris_uv + n6_fine_debris_uv);
+  vec4 n8_fine_debris_t0 = texture(t0_foam, n7_fine_debris_uv);
+  vec3 n9_fine_amount = n8_fine_debris_t0.xyz;
+  float n10_fine_amount = dot(n9_fine_amount, vec3(0.2126, 0.7152, 0.0722));
+  float n11_fine_amount = n8_fine_debris_t0.w;
+  float n12_fine_amount = (n10_fine_amount * n11_fine_amount);
+  float n13_fine_phase = (u_time * 0.25);
+  float n14_fine_phase = fract(n13_fine_phase);
+  float n15_fine_phase = (6.2831855 * n14_fine_phase);
+  float n16_fine_caustic_t0 = wgfn0_caustic(v_uv, 11.0, n15_fine_phase);
+  float n17_fine_shaded = (0.8 * n12_fine_amount);
+  float n18_fine_shaded = (1.0 - n17_fine_shaded);
+  float n19_fine_shaded = (n16_fine_caustic_t0 * n18_fine_shaded);
+  float n20_fine_bright = (n19_fine_shaded * 0.35);
+  vec3 n21_fine_light = (vec3(0.52252156, 0.8900054, 1.0) * vec3(n20_fine_bright));
+  vec2 n22_broad_debris_uv = (v_uv * vec2(2.0));
+  float n23_broad_debris_uv = (n3_fine_debris_uv * -0.125);
+  float n24_broad_debris_uv = fract(n23_broad_debris_uv);
+  vec2 n25_broad_debris_uv = vec2(0.0, n24_broad_debris_uv);
+  vec2 n26_broad_debris_uv = (n22_broad_debris_uv + n25_broad_debris_uv);
+  vec4 n27_broad_debris_t0 = texture(t1_lagoon_ripples, n26_broad_debris_uv);
+  vec3 n28_broad_amount = n27_broad_debris_t0.xyz;
+  float n29_broad_amount = dot(n28_broad_amount, vec3(0.2126, 0.7152, 0.0722));
+  float n30_broad_amount = n27_broad_debris_t0.w;
+  float n31_broad_amount = (n29_broad_amount * n30_broad_amount);
+  float n32_broad_phase = (u_time * -0.125);
+  float n33_broad_phase = fract(n32_broad_phase);
+  float n34_broad_phase = (6.2831855 * n33_broad_phase);
+  float n35_broad_caustic_t0 = wgfn1_caustic(v_uv, 4.0, n34_broad_phase);
+  float n36_broad_shaded = (2.0 * n31_broad_amount);
+  float n37_broad_shaded = (1.0 + n36_broad_shaded);
+  float n38_broad_shaded = (n35_broad_caustic_t0 * n37_broad_shaded);
+  float n39_broad_bright = (n38_broad_shaded * 0.5);
+  vec3 n40_broad_light = (vec3(1.0, 0.8900054, 0.60382736) * vec3(n39_broad_bright));
+  vec3 n41_light = (n21_fine_light + n40_broad_light);
+  vec3 n42_floor = wg_srgb_to_linear_vec3(p_floor);
+  vec3 n43_color = (n42_floor + n41_light);
+  o_color = vec4(n43_color, 1.0);
 }
