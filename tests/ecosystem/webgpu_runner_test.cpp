@@ -230,6 +230,27 @@ TEST_F(WebgpuRunner, HalfResolutionScenePassesMatchGlsl330) {
   std::vector<double> psnrs = comparedPsnrs(jobs);
   for (size_t i = 0; i < jobs.size(); ++i) EXPECT_GE(psnrs[i], kWebgpuBuiltinSceneMinPsnrDb) << jobs[i].graph;
 }
+
+// The runtime's shaders as the runner takes them, without a browser
+// (clients/webgpu/test/scene_shaders.test.mjs under node --test): every one the passes use
+// translated by naga and valid, the uniform block's offsets the runner fills, the clip-space
+// conversion on the vertex stages only, and a SceneShaderError naming what it cannot take (a
+// missing shader, a G-buffer input with no location, a non-ES source, a uniform type with no
+// layout, a shader naga refuses). Needs Node.js and the npm packages, not Chromium.
+TEST(WebgpuSceneShaders, ChecksPassUnderNode) {
+  if (!haveTool("node")) GTEST_SKIP() << "Node.js (node) is not on PATH";
+  const std::string client = test::sourcePath("clients/webgpu");
+  CmdResult n = sh(test::shellQuote(test::sourcePath("clients/three/test/npm_ci_cached.sh")) + " " + test::shellQuote(client));
+  ASSERT_EQ(n.exit, 0) << "installing clients/webgpu's npm packages failed: " << n.err;
+  TempDir dir("wg_webgpu_");
+  CmdResult d = wgRun("scene -o " + test::shellQuote(dir / "scene.json"));
+  ASSERT_EQ(d.exit, 0) << d.err;
+  CmdResult t = sh("cd " + test::shellQuote(client) + " && WG_SCENE_DESCRIPTION=" + test::shellQuote(dir / "scene.json") +
+                   " timeout 50 node --test test/scene_shaders.test.mjs");
+  EXPECT_EQ(t.exit, 0) << t.out << t.err;
+  EXPECT_NE(t.out.find("# pass 4"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
+}
 #endif
 
 }  // namespace
