@@ -1,10 +1,12 @@
 // A small WebGPU runner of a compiled graph's GRAPH.wgsl (watergraph compile --target wgsl):
-// builds the bind group from the manifest's "webgpu" section, fills the uniform buffer at the
-// offsets it states, draws a mesh into an RGBA16F target with a depth buffer, and reads the
-// frame back. It runs the water_surface pass alone: a graph whose manifest lists other passes
-// (scene depth, reflection, environment ...) is refused with their names, since this runner
-// renders no scene. Conventions (manifest "webgpu".conventions): GL matrices, y negated in
-// clip space by the module, so the target's row 0 is the view's bottom row and frontFace is "cw".
+// runs the passes of the manifest in the runtime's order (runtime/renderer.cpp) — the scene
+// passes (watergraph-webgpu-passes.js) with the runtime's own shaders, then the water, forward
+// or deferred — builds the water's bind group from the manifest's "webgpu" section, fills the
+// uniform buffer at the offsets it states, and reads the RGBA16F frame back. Conventions
+// (manifest "webgpu".conventions): GL matrices, y negated in clip space by every module, so a
+// target's row 0 is the view's bottom row and frontFace is "cw".
+import { beginTargetPass, createTargets, runScenePass, ScenePasses } from './watergraph-webgpu-passes.js';
+
 export class WebgpuRunnerError extends Error {
   constructor(message) {
     super(message);
@@ -40,22 +42,20 @@ function halfToFloat(h) {
 
 const srgbEncode = (c) => (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
 
-// Renders the water alone over opaque black. `uniformValue(name)` gives each uniform's value;
-// `geometry` holds Float32Arrays position, normal, uv and a Uint32Array index; `textures` maps a
-// node texture's name to an ImageBitmap (bottom row first). Returns {linear: Float32Array RGBA
-// with row 0 at the bottom, srgb8: Uint8ClampedArray RGBA top row first, through clamp and the
-// sRGB encoding}.
-export async function renderWaterOnly(device, { manifest, wgsl, uniformValue, geometry, width, height, textures = {} }) {
-  const webgpu = manifest.webgpu;
-  if (!webgpu) throw new WebgpuRunnerError(`graph '${manifest.graph}' was not compiled for wgsl (--target wgsl)`);
-  const others = manifest.passes.filter((p) => p !== 'water_surface');
-  if (others.length) throw new WebgpuRunnerError(`graph '${manifest.graph}' needs passes this runner does not render: ${others.join(', ')}`);
-  device.pushErrorScope('validation');
-  const module = device.createShaderModule({ code: wgsl });
-  const info = await module.getCompilationInfo();
-  const errors = info.messages.filter((m) => m.type === 'error');
-  if (errors.length) throw new WebgpuRunnerError(`Tint rejected ${manifest.graph}.wgsl: ${errors.map((m) => `${m.lineNum}:${m.linePos}: ${m.message}`).join('; ')}`);
+// The texture of a file the manifest names (an ImageBitmap, bottom row first).
+function fileTexture(device, t, bitmap, colorSpace) {
+  const format = colorSpace === 'srgb' ? 'rgba8unorm-srgb' : 'rgba8unorm';
+  const tex = device.createTexture({ size: [bitmap.width, bitmap.height], format,
+    usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT });
+  device.queue.copyExternalImageToTexture({ source: bitmap }, { texture: tex }, [bitmap.width, bitmap.height]);
+  return tex.createView();
+}
 
+// The water's bind group: the uniform buffer, each file texture from `textures`, each scene
+// texture from `resources` (createTargets; sampled as the runtime does: clamped, nearest where
+// it is depth or 32-bit float, so unfilterable here).
+function waterBindGroup(device, manifest, uniformValue, textures, resources) {
+  const webgpu = manifest.webgpu;
   const entries = [], layoutEntries = [];
   const visibility = GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT;
   for (const b of webgpu.bindings) {
@@ -70,27 +70,74 @@ export async function renderWaterOnly(device, { manifest, wgsl, uniformValue, ge
       continue;
     }
     const t = manifest.textures.find((x) => x.name === b.texture);
-    const sampler = { wrap: 'repeat', filter: 'linear', color_space: 'linear', ...(t.sampler ?? {}) };
+    const scene = t.resource !== undefined ? resources[t.name] : undefined;
+    if (t.resource !== undefined && !scene) throw new WebgpuRunnerError(`texture ${t.name}: no pass of the plan makes the scene resource ${t.resource}`);
     if (b.kind === 'sampler') {
-      if (sampler.filter === 'mipmapped') throw new WebgpuRunnerError(`texture ${t.name}: mipmapped sampling is not in this runner`);
-      const filter = sampler.filter === 'nearest' ? 'nearest' : 'linear';
-      const s = device.createSampler({ addressModeU: ADDRESS[sampler.wrap], addressModeV: ADDRESS[sampler.wrap], magFilter: filter, minFilter: filter });
+      let s;
+      if (scene) {
+        const filter = scene.nearest ? 'nearest' : 'linear';
+        s = device.createSampler({ addressModeU: 'clamp-to-edge', addressModeV: 'clamp-to-edge', addressModeW: 'clamp-to-edge', magFilter: filter, minFilter: filter });
+        layoutEntries.push({ binding: b.binding, visibility, sampler: { type: scene.nearest ? 'non-filtering' : 'filtering' } });
+      } else {
+        const sampler = { wrap: 'repeat', filter: 'linear', ...(t.sampler ?? {}) };
+        if (sampler.filter === 'mipmapped') throw new WebgpuRunnerError(`texture ${t.name}: mipmapped sampling is not in this runner`);
+        const filter = sampler.filter === 'nearest' ? 'nearest' : 'linear';
+        s = device.createSampler({ addressModeU: ADDRESS[sampler.wrap], addressModeV: ADDRESS[sampler.wrap], magFilter: filter, minFilter: filter });
+        layoutEntries.push({ binding: b.binding, visibility, sampler: { type: 'filtering' } });
+      }
       entries.push({ binding: b.binding, resource: s });
-      layoutEntries.push({ binding: b.binding, visibility, sampler: { type: 'filtering' } });
+      continue;
+    }
+    if (scene) {
+      if (b.kind !== (scene.cube ? 'texture_cube' : 'texture_2d')) throw new WebgpuRunnerError(`texture ${t.name}: binding kind ${b.kind} does not fit its scene target`);
+      entries.push({ binding: b.binding, resource: scene.view, gbuffer: scene.gbuffer });
+      layoutEntries.push({ binding: b.binding, visibility,
+        texture: { sampleType: scene.nearest ? 'unfilterable-float' : 'float', viewDimension: scene.cube ? 'cube' : '2d' } });
       continue;
     }
     const bitmap = textures[t.name];
     if (b.kind !== 'texture_2d' || !bitmap) throw new WebgpuRunnerError(`texture ${t.name} (${t.source || 'a scene texture'}) is not given to this runner`);
-    const format = sampler.color_space === 'srgb' ? 'rgba8unorm-srgb' : 'rgba8unorm';
-    const tex = device.createTexture({ size: [bitmap.width, bitmap.height], format,
-      usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT });
-    device.queue.copyExternalImageToTexture({ source: bitmap }, { texture: tex }, [bitmap.width, bitmap.height]);
-    entries.push({ binding: b.binding, resource: tex.createView() });
+    entries.push({ binding: b.binding, resource: fileTexture(device, t, bitmap, t.sampler?.color_space) });
     layoutEntries.push({ binding: b.binding, visibility, texture: { sampleType: 'float' } });
   }
-  const bindGroupLayout = device.createBindGroupLayout({ entries: layoutEntries });
-  const bindGroup = device.createBindGroup({ layout: bindGroupLayout, entries });
+  const layout = device.createBindGroupLayout({ entries: layoutEntries });
+  const group = device.createBindGroup({ layout, entries: entries.map(({ binding, resource }) => ({ binding, resource })) });
+  // For the G-buffer pass, which renders into the G-buffer textures: WebGPU forbids sampling a
+  // texture a pass writes (GL allows it while the program does not read it), so there a 1x1
+  // texture of the same format stands in for them.
+  const gbufferGroup = device.createBindGroup({ layout, entries: entries.map(({ binding, resource, gbuffer }) => {
+    if (!gbuffer) return { binding, resource };
+    const stand = device.createTexture({ size: [1, 1], format: gbuffer, usage: GPUTextureUsage.TEXTURE_BINDING });
+    return { binding, resource: stand.createView() };
+  }) });
+  return { layout, group, gbufferGroup };
+}
 
+// Deferred water's full-screen triangle (the runtime's fullscreen_vertex), writing zeros to the
+// graph's varyings: the graph's fragment stage reads the G-buffer instead, but WebGPU wants
+// every input it declares written.
+const WGSL_TYPES = { float: 'f32', vec2: 'vec2<f32>', vec3: 'vec3<f32>', vec4: 'vec4<f32>' };
+function fullscreenVertexWgsl(manifest) {
+  const fields = manifest.webgpu.varyings.map((v) => {
+    const type = WGSL_TYPES[manifest.varyings.find((x) => x.name === v.name)?.type];
+    if (!type) throw new WebgpuRunnerError(`varying ${v.name}: its type is not in the manifest's "varyings"`);
+    return { ...v, type };
+  });
+  return `struct WgFullscreenOut {\n  @builtin(position) position: vec4<f32>,\n${fields.map((f) => `  @location(${f.location}) ${f.name}: ${f.type},\n`).join('')}}\n` +
+    '@vertex fn main(@builtin(vertex_index) i: u32) -> WgFullscreenOut {\n  var o: WgFullscreenOut;\n' +
+    '  // One triangle covering the viewport; y negated as every module here does.\n' +
+    '  o.position = vec4<f32>(select(-1.0, 3.0, i == 1u), -select(-1.0, 3.0, i == 2u), 0.5, 1.0);\n  return o;\n}\n';
+}
+
+async function compiledModule(device, code, what) {
+  const module = device.createShaderModule({ code, label: what });
+  const errors = (await module.getCompilationInfo()).messages.filter((m) => m.type === 'error');
+  if (errors.length) throw new WebgpuRunnerError(`Tint rejected ${what}: ${errors.map((m) => `${m.lineNum}:${m.linePos}: ${m.message}`).join('; ')}`);
+  return module;
+}
+
+// The water mesh's vertex buffers, in the manifest's "webgpu".vertex_inputs order.
+function waterGeometry(device, webgpu, geometry) {
   const arrays = { a_position: geometry.position, a_normal: geometry.normal, a_uv: geometry.uv };
   const buffers = [], layouts = [];
   for (const input of webgpu.vertex_inputs) {
@@ -103,30 +150,97 @@ export async function renderWaterOnly(device, { manifest, wgsl, uniformValue, ge
   }
   const index = device.createBuffer({ size: geometry.index.byteLength, usage: GPUBufferUsage.INDEX | GPUBufferUsage.COPY_DST });
   device.queue.writeBuffer(index, 0, geometry.index);
+  return { buffers, layouts, index, count: geometry.index.length };
+}
 
-  const pipeline = device.createRenderPipeline({
-    layout: device.createPipelineLayout({ bindGroupLayouts: [bindGroupLayout] }),
-    vertex: { module, entryPoint: webgpu.entry_points.vertex, buffers: layouts },
-    fragment: { module, entryPoint: webgpu.entry_points.fragment, targets: [{ format: 'rgba16float' }] },
-    primitive: { topology: 'triangle-list', cullMode: 'none', frontFace: 'cw' },
-    depthStencil: { format: 'depth32float', depthWriteEnabled: true, depthCompare: 'less-equal' },
+function drawWaterMesh(pass, mesh) {
+  mesh.buffers.forEach((b, i) => pass.setVertexBuffer(i, b));
+  pass.setIndexBuffer(mesh.index, 'uint32');
+  pass.drawIndexed(mesh.count);
+}
+
+// The colour blended by the water's alpha, the frame's alpha kept opaque (the runtime's
+// glBlendFuncSeparate(SRC_ALPHA, ONE_MINUS_SRC_ALPHA, ONE, ONE_MINUS_SRC_ALPHA)).
+const WATER_BLEND = { color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha' },
+  alpha: { srcFactor: 'one', dstFactor: 'one-minus-src-alpha' } };
+
+// Renders one frame of a graph and reads it back. Options:
+//   manifest, wgsl: the compiled graph; plan: clients/three's planPasses(manifest, description,
+//   {width, height, environmentSize}); description: the scene description (`watergraph scene`);
+//   sceneShaders: sceneShadersWgsl(description, naga, gbuffer inputs); drawScene: false draws
+//   no scene (the runtime's `--scene none`: scene targets cleared only); camera: {view,
+//   projection, position} as OpenGL matrices (column-major) and the eye; uniformValue(name): each
+//   water uniform's value; geometry: the water grid (Float32Arrays position, normal, uv and a
+//   Uint32Array index); textures: a node texture's name -> ImageBitmap (bottom row first).
+// Returns {linear: Float32Array RGBA with row 0 at the bottom, srgb8: Uint8ClampedArray RGBA top
+// row first, through clamp and the sRGB encoding}.
+export async function renderGraph(device, options) {
+  const { manifest, wgsl, plan, description, sceneShaders, drawScene = true, camera, uniformValue, geometry, textures = {} } = options;
+  const webgpu = manifest.webgpu;
+  if (!webgpu) throw new WebgpuRunnerError(`graph '${manifest.graph}' was not compiled for wgsl (--target wgsl)`);
+  const deferred = plan.passes.includes('deferred_water');
+  const frameTarget = plan.targets.find((t) => t.name === 'frame');
+  const { width, height } = frameTarget;
+  if (frameTarget.color !== 'rgba16f') throw new WebgpuRunnerError(`the plan's frame is ${frameTarget.color}; this runner renders RGBA16F`);
+  device.pushErrorScope('validation');
+  const module = await compiledModule(device, wgsl, `${manifest.graph}.wgsl`);
+  const { targets, resources } = createTargets(device, plan);
+  const scene = drawScene ? new ScenePasses(device, description, sceneShaders) : null;
+  const water = waterBindGroup(device, manifest, uniformValue, textures, resources);
+  const mesh = waterGeometry(device, webgpu, geometry);
+  const layout = device.createPipelineLayout({ bindGroupLayouts: [water.layout] });
+  const primitive = { topology: 'triangle-list', cullMode: 'none', frontFace: 'cw' };
+  const waterPipeline = device.createRenderPipeline({
+    layout,
+    vertex: deferred ? { module: await compiledModule(device, fullscreenVertexWgsl(manifest), 'the full-screen vertex stage'), entryPoint: 'main' }
+      : { module, entryPoint: webgpu.entry_points.vertex, buffers: mesh.layouts },
+    fragment: { module, entryPoint: webgpu.entry_points.fragment, targets: [{ format: 'rgba16float', blend: WATER_BLEND }] },
+    primitive,
+    // Deferred water shades every pixel with the depth test off (the G-buffer has the surface).
+    depthStencil: { format: 'depth32float', depthWriteEnabled: !deferred, depthCompare: deferred ? 'always' : 'less-equal' },
   });
-  const color = device.createTexture({ size: [width, height], format: 'rgba16float', usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
-  const depth = device.createTexture({ size: [width, height], format: 'depth32float', usage: GPUTextureUsage.RENDER_ATTACHMENT });
+
+  const encoder = device.createCommandEncoder();
+  const clear = description?.clear_color ?? [0, 0, 0, 1];
+  for (const passName of plan.passes) {
+    if (passName === 'output_transform') continue;  // applied on the read-back frame below
+    if (passName === 'deferred_water') {
+      // The G-buffer: the graph's vertex stage (displacement included) writes the surface's
+      // position and depth, normal and uv; where no water is, depth w = 1.
+      if (!sceneShaders?.water_gbuffer_fragment) throw new WebgpuRunnerError('deferred water needs the runtime\'s G-buffer shader (sceneShaders)');
+      const gbuffer = await compiledModule(device, sceneShaders.water_gbuffer_fragment.wgsl, 'the runtime\'s water G-buffer');
+      const pipeline = device.createRenderPipeline({
+        layout, primitive,
+        vertex: { module, entryPoint: webgpu.entry_points.vertex, buffers: mesh.layouts },
+        fragment: { module: gbuffer, entryPoint: 'main', targets: [{ format: 'rgba32float' }, { format: 'rgba32float' }] },
+        depthStencil: { format: 'depth32float', depthWriteEnabled: true, depthCompare: 'less-equal' },
+      });
+      const position = targets.water_position, normal = targets.water_normal;
+      const pass = encoder.beginRenderPass({
+        colorAttachments: [{ view: position.color.createView(), clearValue: [0, 0, 0, 1], loadOp: 'clear', storeOp: 'store' },
+          { view: normal.color.createView(), clearValue: [0, 0, 0, 0], loadOp: 'clear', storeOp: 'store' }],
+        depthStencilAttachment: { view: position.depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'store' },
+      });
+      pass.setPipeline(pipeline);
+      pass.setBindGroup(0, water.gbufferGroup);
+      drawWaterMesh(pass, mesh);
+      pass.end();
+      continue;
+    }
+    if (passName === 'water_surface') {
+      const pass = beginTargetPass(encoder, targets.frame, clear, { load: true });
+      pass.setPipeline(waterPipeline);
+      pass.setBindGroup(0, water.group);
+      if (deferred) pass.draw(3);
+      else drawWaterMesh(pass, mesh);
+      pass.end();
+      continue;
+    }
+    runScenePass(device, encoder, passName, { targets, scene, camera, description, frameFormat: 'rgba16float' });
+  }
   const bytesPerRow = Math.ceil((width * 8) / 256) * 256;
   const readback = device.createBuffer({ size: bytesPerRow * height, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
-  const encoder = device.createCommandEncoder();
-  const pass = encoder.beginRenderPass({
-    colorAttachments: [{ view: color.createView(), clearValue: [0, 0, 0, 1], loadOp: 'clear', storeOp: 'store' }],
-    depthStencilAttachment: { view: depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'store' },
-  });
-  pass.setPipeline(pipeline);
-  pass.setBindGroup(0, bindGroup);
-  buffers.forEach((b, i) => pass.setVertexBuffer(i, b));
-  pass.setIndexBuffer(index, 'uint32');
-  pass.drawIndexed(geometry.index.length);
-  pass.end();
-  encoder.copyTextureToBuffer({ texture: color }, { buffer: readback, bytesPerRow }, [width, height]);
+  encoder.copyTextureToBuffer({ texture: targets.frame.color }, { buffer: readback, bytesPerRow }, [width, height]);
   device.queue.submit([encoder.finish()]);
   const failure = await device.popErrorScope();
   if (failure) throw new WebgpuRunnerError(`WebGPU validation: ${failure.message}`);

@@ -1,11 +1,16 @@
-// The page's script: one frame of a graph's WGSL in WebGPU, the water alone over opaque black
-// (as `watergraph render --scene none --tonemap none --exposure 0`). The uniform values (camera
-// matrices, time phases, sun, parameters) and the water grid come from the three.js client,
-// whose values tests/ecosystem/three_client_test.cpp checks against the runtime; the shaders,
-// bindings and drawing are WebGPU's. Reports through window.wgResult (the PNG as a data URL).
+// The page's script: one frame of a graph's WGSL in WebGPU with every pass its manifest lists,
+// in the built-in scene or (scene=none) with none drawn, through `--tonemap none --exposure 0`
+// (as `watergraph render --tonemap none --exposure 0 [--scene none]`). The uniform values (camera
+// matrices, time phases, sun, parameters), the water grid and the pass plan come from the
+// three.js client, whose values tests/ecosystem/three_client_test.cpp checks against the runtime;
+// the runtime's scene shaders are translated to WGSL by naga; the graph's shaders, bindings and
+// drawing are WebGPU's. Reports through window.wgResult (the PNG as a data URL).
 import { loadWaterGraph, createWaterGridGeometry } from '/three/watergraph-three.js';
 import { loadSceneDescription, presetCamera } from '/three/watergraph-scene.js';
-import { renderWaterOnly } from '/webgpu/watergraph-webgpu.js';
+import { glPerspective, planPasses } from '/three/watergraph-passes.js';
+import { init as initNaga, parseGlsl, validate, writeWgsl } from '/webgpu/node_modules/naga-wasm/dist/index.js';
+import { renderGraph } from '/webgpu/watergraph-webgpu.js';
+import { sceneShadersWgsl } from '/webgpu/watergraph-webgpu-scene-shaders.js';
 
 const q = new URLSearchParams(location.search);
 
@@ -23,6 +28,9 @@ async function main() {
   const width = Number(q.get('width')), height = Number(q.get('height'));
   const description = await loadSceneDescription(q.get('description'));
   const camera = presetCamera(description, q.get('camera'), width / height);
+  // The runtime's projection (glm::perspective), for the water's uniforms and the scene alike.
+  glPerspective(camera.fov, camera.aspect, camera.near, camera.far, camera.projectionMatrix);
+  camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
   const manifestUrl = new URL(q.get('manifest'), location.href);
   const water = await loadWaterGraph(manifestUrl.href, { description });
   water.setViewportSize(width, height);
@@ -35,8 +43,17 @@ async function main() {
     const blob = await (await fetch(new URL(t.file, manifestUrl))).blob();
     textures[t.name] = await createImageBitmap(blob, { imageOrientation: 'flipY', premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
   }
-  const { srgb8 } = await renderWaterOnly(device, {
-    manifest, wgsl, width, height, textures,
+  await initNaga({ module_or_path: new URL('/webgpu/node_modules/naga-wasm/dist/wasm/naga_bg.wasm', location.href) });
+  // Deferred water's G-buffer reads the graph's varyings at their WGSL locations.
+  const gbufferInputs = manifest.passes.includes('deferred_water')
+    ? Object.fromEntries(manifest.webgpu.varyings.map((v) => [v.name, v.location])) : null;
+  const sceneShaders = sceneShadersWgsl(description, { parseGlsl, validate, writeWgsl }, gbufferInputs);
+  const plan = planPasses(manifest, description, { width, height, environmentSize: description.environment.size });
+  const { srgb8 } = await renderGraph(device, {
+    manifest, wgsl, plan, description, sceneShaders, textures,
+    drawScene: q.get('scene') !== 'none',
+    camera: { view: camera.matrixWorldInverse.toArray(), projection: camera.projectionMatrix.toArray(),
+      position: camera.getWorldPosition(camera.position.clone()).toArray() },
     uniformValue: (name) => water.uniforms[name].value,
     geometry: runnerGeometry(createWaterGridGeometry(Number(q.get('grid')), description.water.half_size)),
   });

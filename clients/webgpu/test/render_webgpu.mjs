@@ -2,8 +2,13 @@
 // headless Chromium on SwiftShader and writes the frame as a PNG.
 // Usage: node render_webgpu.mjs --dir DIR --manifest GRAPH.manifest.json --description scene.json
 //          --size WxH --camera above|grazing|underwater|topdown --time T --grid N --png OUT.png
-//          [--chromium /usr/bin/chromium]
-// (scene.json from `watergraph scene`: its camera presets and sun are the runtime's.)
+//          [--scene builtin|none] [--chromium /usr/bin/chromium]
+//        node render_webgpu.mjs --dir DIR --jobs JOBS.json --description scene.json --size WxH
+//          --time T --grid N [--chromium ...]
+// JOBS.json: [{"manifest": PATH under DIR, "camera": NAME, "png": OUT, "scene": "builtin"|"none"}, ...],
+// all rendered by one browser (a page each); a failed job is reported and the others still run.
+// (scene.json from `watergraph scene`: its camera presets, sun, mesh and shaders are the runtime's;
+// --scene none draws the water alone, as `render --scene none`.)
 // Exit status: 0 written; 1 the page failed (message on stderr); 2 usage, or Chromium/WebGPU missing.
 import { access, constants, readFile, writeFile } from 'node:fs/promises';
 import { createServer } from 'node:http';
@@ -15,14 +20,31 @@ const fail = (code, message) => {
   process.stderr.write(`render_webgpu: ${message}\n`);
   process.exit(code);
 };
-const keys = ['dir', 'manifest', 'description', 'size', 'camera', 'time', 'grid', 'png', 'chromium'];
+const keys = ['dir', 'manifest', 'description', 'size', 'camera', 'time', 'grid', 'png', 'chromium', 'scene', 'jobs'];
+const optional = new Set(['chromium', 'scene', 'jobs']);
 let args;
 try {
   ({ values: args } = parseArgs({ options: Object.fromEntries(keys.map((k) => [k, { type: 'string' }])) }));
 } catch (e) {
   fail(2, e.message);
 }
-for (const k of keys) if (k !== 'chromium' && args[k] === undefined) fail(2, `missing --${k}`);
+// One job from the command line, or the list of --jobs.
+if (args.jobs !== undefined) for (const k of ['manifest', 'camera', 'png', 'scene']) optional.add(k);
+for (const k of keys) if (!optional.has(k) && args[k] === undefined) fail(2, `missing --${k}`);
+let jobs = [{ manifest: args.manifest, camera: args.camera, png: args.png, scene: args.scene ?? 'builtin' }];
+if (args.jobs !== undefined) {
+  try {
+    jobs = JSON.parse(await readFile(args.jobs, 'utf8'));
+  } catch (e) {
+    fail(2, `cannot read the jobs ${args.jobs}: ${e.message}`);
+  }
+  if (!Array.isArray(jobs) || jobs.some((j) => !j || typeof j.manifest !== 'string' || typeof j.camera !== 'string' || typeof j.png !== 'string'))
+    fail(2, `${args.jobs}: not a list of {manifest, camera, png, scene}`);
+}
+for (const j of jobs) {
+  j.scene ??= 'builtin';
+  if (!['builtin', 'none'].includes(j.scene)) fail(2, `${j.manifest}: scene must be builtin or none`);
+}
 const [width, height] = args.size.split('x').map(Number);
 const chromiumPath = args.chromium ?? '/usr/bin/chromium';
 try {
@@ -37,7 +59,7 @@ try {
 } catch (e) {
   fail(2, `cannot load playwright-core (run \`npm ci\` in clients/webgpu): ${e.message}`);
 }
-const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.json': 'application/json', '.png': 'image/png' };
+const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.json': 'application/json', '.png': 'image/png', '.wasm': 'application/wasm' };
 const roots = { '/webgpu/': path.resolve(here, '..'), '/three/': path.resolve(here, '../../three'),
   '/out/': path.resolve(args.dir), '/scene/': path.dirname(path.resolve(args.description)) };
 const server = createServer(async (req, res) => {
@@ -62,20 +84,25 @@ const browser = await chromium.launch({
 }).catch((e) => { server.close(); fail(2, `cannot start Chromium at ${chromiumPath}: ${e.message.split('\n')[0]}`); });
 let code = 0;
 try {
-  const page = await browser.newPage();
-  const problems = [];
-  page.on('pageerror', (e) => problems.push(e.message));
-  const query = new URLSearchParams({ manifest: `/out/${args.manifest}`, description: `/scene/${path.basename(args.description)}`,
-    width, height, camera: args.camera, time: args.time, grid: args.grid });
-  await page.goto(`http://127.0.0.1:${server.address().port}/webgpu/test/render.html?${query}`);
-  await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 60000 });
-  const result = await page.evaluate(() => window.wgResult);
-  if (!result.ok) {
-    process.stderr.write(`render_webgpu: ${args.manifest}: ${[result.error, ...problems].join('\n  ')}\n`);
-    code = /WebGPU is not enabled|no WebGPU adapter/.test(result.error) ? 2 : 1;
-  } else {
-    await writeFile(args.png, Buffer.from(result.png, 'base64'));
-    process.stdout.write(`render_webgpu: ${args.manifest} ${width}x${height} on WebGPU (${result.adapter}) -> ${args.png}\n`);
+  for (const job of jobs) {
+    const page = await browser.newPage();
+    const problems = [];
+    page.on('pageerror', (e) => problems.push(e.message));
+    const query = new URLSearchParams({ manifest: `/out/${job.manifest}`, description: `/scene/${path.basename(args.description)}`,
+      width, height, camera: job.camera, time: args.time, grid: args.grid, scene: job.scene });
+    await page.goto(`http://127.0.0.1:${server.address().port}/webgpu/test/render.html?${query}`);
+    await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 60000 });
+    const result = await page.evaluate(() => window.wgResult);
+    await page.close();
+    if (!result.ok) {
+      process.stderr.write(`render_webgpu: ${job.manifest}: ${[result.error, ...problems].join('\n  ')}\n`);
+      // A missing WebGPU is the machine's (2); a job's failure is the graph's or the runner's (1).
+      code = /WebGPU is not enabled|no WebGPU adapter/.test(result.error) ? 2 : Math.max(code, 1);
+      if (code === 2) break;
+    } else {
+      await writeFile(job.png, Buffer.from(result.png, 'base64'));
+      process.stdout.write(`render_webgpu: ${job.manifest} ${job.camera} scene ${job.scene} ${width}x${height} on WebGPU (${result.adapter}) -> ${job.png}\n`);
+    }
   }
 } finally {
   await browser.close();

@@ -1,0 +1,62 @@
+// The runtime's shaders as the WebGPU runner takes them (watergraph-webgpu-scene-shaders.js),
+// without a browser: node --test, with WG_SCENE_DESCRIPTION naming a `watergraph scene` file.
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { test } from 'node:test';
+import * as naga from 'naga-wasm';
+import { glsl450ForNaga, sceneShadersWgsl, SceneShaderError } from '../watergraph-webgpu-scene-shaders.js';
+
+const description = JSON.parse(readFileSync(process.env.WG_SCENE_DESCRIPTION, 'utf8'));
+const gbufferInputs = { v_world_position: 0, v_normal: 1, v_uv: 2 };
+
+test('every runtime shader the passes use becomes a WGSL module naga validates', () => {
+  const s = sceneShadersWgsl(description, naga, gbufferInputs);
+  assert.deepEqual(Object.keys(s).sort(), ['opaque_fragment', 'opaque_vertex', 'sky_fragment', 'sky_vertex', 'water_gbuffer_fragment']);
+  for (const [name, m] of Object.entries(s)) {
+    // Reparsed and validated again: what the runner hands WebGPU is valid WGSL.
+    naga.validate(naga.parseWgsl(m.wgsl));
+    assert.match(m.wgsl, name.endsWith('vertex') ? /@vertex\s+fn main\(/ : /@fragment\s+fn main\(/, name);
+  }
+  // The G-buffer reads the graph's varyings at the locations given.
+  assert.match(s.water_gbuffer_fragment.wgsl, /@location\(0\) v_world_position: vec3<f32>, @location\(1\) v_normal: vec3<f32>, @location\(2\) v_uv: vec2<f32>/);
+  // Without deferred water no G-buffer shader is made (no varyings to place it on).
+  assert.equal(sceneShadersWgsl(description, naga).water_gbuffer_fragment, undefined);
+});
+
+test('the uniform block has the std140 offsets the runner fills', () => {
+  const s = sceneShadersWgsl(description, naga);
+  assert.deepEqual(s.opaque_vertex.uniforms, { size: 96, members: [
+    { name: 'u_view_projection', type: 'mat4', offset: 0 }, { name: 'u_clip_plane', type: 'vec4', offset: 64 },
+    { name: 'u_sun_direction', type: 'vec3', offset: 80 }] });
+  assert.deepEqual(s.sky_fragment.uniforms, { size: 80, members: [
+    { name: 'u_inverse_view_projection', type: 'mat4', offset: 0 }, { name: 'u_sun_direction', type: 'vec3', offset: 64 }] });
+  assert.match(s.opaque_vertex.wgsl, /@group\(0\) @binding\(0\)\s*var<uniform>/);
+});
+
+test('vertex stages convert clip space as the graph\'s vs_main does; fragments are left alone', () => {
+  const v = glsl450ForNaga('sky_vertex', description.shaders.sky_vertex);
+  assert.match(v.glsl, /^#version 450\n/);
+  assert.match(v.glsl, /void wg_runtime_main\(\) \{/);
+  assert.match(v.glsl, /gl_Position = vec4\(gl_Position\.x, -gl_Position\.y, 0\.5 \* \(gl_Position\.z \+ gl_Position\.w\), gl_Position\.w\);/);
+  assert.match(v.glsl, /#define WG_VERTEX_ID gl_VertexIndex\n/);
+  assert.match(v.glsl, /#define WG_LOCATION\(n\) layout\(location = n\)\n/);
+  const f = glsl450ForNaga('opaque_fragment', description.shaders.opaque_fragment);
+  assert.doesNotMatch(f.glsl, /wg_runtime_main/);
+  assert.doesNotMatch(f.glsl, /^uniform /m);
+  // ES 3.00 has no clip distances: the fragment stage discards on the clipped side.
+  assert.match(f.glsl, /discard/);
+});
+
+test('what the runner cannot take is a SceneShaderError naming it', () => {
+  const without = { ...description, shaders: { ...description.shaders } };
+  delete without.shaders.sky_fragment;
+  assert.throws(() => sceneShadersWgsl(without, naga), (e) => e instanceof SceneShaderError && /no shader 'sky_fragment'/.test(e.message));
+  assert.throws(() => sceneShadersWgsl(description, naga, { v_world_position: 0, v_uv: 2 }),
+    (e) => e instanceof SceneShaderError && /water_gbuffer_fragment: no location for its input v_normal/.test(e.message));
+  assert.throws(() => glsl450ForNaga('sky_vertex', '#version 330 core\nvoid main() {}\n'),
+    (e) => e instanceof SceneShaderError && /does not start with "#version 300 es"/.test(e.message));
+  assert.throws(() => glsl450ForNaga('opaque_vertex', '#version 300 es\nuniform float u_x;\nvoid main() {}\n'),
+    (e) => e instanceof SceneShaderError && /u_x: type float has no layout here/.test(e.message));
+  const broken = { ...description, shaders: { ...description.shaders, opaque_fragment: '#version 300 es\nvoid main() { undeclared = 1.0; }\n' } };
+  assert.throws(() => sceneShadersWgsl(broken, naga), (e) => e instanceof SceneShaderError && /naga could not translate the runtime's opaque_fragment/.test(e.message));
+});
