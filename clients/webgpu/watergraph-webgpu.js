@@ -7,6 +7,11 @@
 // target's row 0 is the view's bottom row and frontFace is "cw".
 import { beginTargetPass, createTargets, runScenePass, ScenePasses } from './watergraph-webgpu-passes.js';
 
+// Why a manifest with a spectral ocean is not run here.
+export function oceanRefusal(manifest) {
+  return `graph '${manifest.graph}' has a spectral ocean (its ocean_simulation pass), which the WebGPU runner does not run yet; render it with the watergraph runtime`;
+}
+
 export class WebgpuRunnerError extends Error {
   constructor(message) {
     super(message);
@@ -176,6 +181,9 @@ const WATER_BLEND = { color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src
 // row first, through clamp and the sRGB encoding}.
 export async function renderGraph(device, options) {
   const { manifest, wgsl, plan, description, sceneShaders, drawScene = true, camera, uniformValue, geometry, textures = {} } = options;
+  // A spectral ocean needs its ocean_simulation pass (inverse FFTs into float maps), which
+  // the watergraph runtime runs and this runner does not yet.
+  if (manifest.oceans) throw new WebgpuRunnerError(oceanRefusal(manifest));
   const webgpu = manifest.webgpu;
   if (!webgpu) throw new WebgpuRunnerError(`graph '${manifest.graph}' was not compiled for wgsl (--target wgsl)`);
   const deferred = plan.passes.includes('deferred_water');

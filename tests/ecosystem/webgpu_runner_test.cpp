@@ -37,6 +37,9 @@ constexpr const char* kRunnerSize = "320x180";
 const std::vector<std::string> kWaterOnlyGraphs = {"lake", "lagoon", "shelf", "topdown"};
 const std::vector<std::string> kScenePassGraphs = {"classic_webgl", "deferred_underwater", "ocean", "pool",
                                                    "river", "stylized", "tutorial_pbr"};
+// WGSL emitted and validated, not run: the runner has no ocean_simulation pass yet and
+// refuses a spectral ocean (clients/webgpu/test/scene_shaders.test.mjs holds the message).
+const std::vector<std::string> kNotRunGraphs = {"open_ocean"};
 
 struct RunnerJob {
   std::string graph;   // a path under the source tree, or an absolute one
@@ -189,6 +192,7 @@ TEST_F(WebgpuRunner, TheListsCoverEveryExampleGraphWithAWgslForm) {
   TempDir dir("wg_webgpu_");
   std::set<std::string> listed(kWaterOnlyGraphs.begin(), kWaterOnlyGraphs.end());
   listed.insert(kScenePassGraphs.begin(), kScenePassGraphs.end());
+  listed.insert(kNotRunGraphs.begin(), kNotRunGraphs.end());
   for (const auto& e : std::filesystem::directory_iterator(test::sourcePath("graphs"))) {
     if (e.path().extension() != ".json") continue;
     const std::string name = e.path().stem().string();
@@ -201,6 +205,8 @@ TEST_F(WebgpuRunner, TheListsCoverEveryExampleGraphWithAWgslForm) {
     }
     EXPECT_EQ(listed.count(name), 1u) << name << " has a WGSL form but is in neither list";
     nlohmann::json manifest = nlohmann::json::parse(test::readFile(dir / (name + "/" + name + ".manifest.json")));
+    EXPECT_EQ(manifest.contains("oceans"), std::count(kNotRunGraphs.begin(), kNotRunGraphs.end(), name) == 1) << name;
+    if (manifest.contains("oceans")) continue;
     const bool waterOnly = manifest["passes"] == nlohmann::json::array({"water_surface"});
     EXPECT_EQ(waterOnly, std::count(kWaterOnlyGraphs.begin(), kWaterOnlyGraphs.end(), name) == 1) << name;
   }
@@ -248,7 +254,7 @@ TEST(WebgpuSceneShaders, ChecksPassUnderNode) {
   CmdResult t = sh("cd " + test::shellQuote(client) + " && WG_SCENE_DESCRIPTION=" + test::shellQuote(dir / "scene.json") +
                    " timeout 50 node --test test/scene_shaders.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 4"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 5"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 #endif

@@ -9,7 +9,7 @@ import { loadWaterGraph, createWaterGridGeometry } from '/three/watergraph-three
 import { loadSceneDescription, presetCamera } from '/three/watergraph-scene.js';
 import { glPerspective, planPasses } from '/three/watergraph-passes.js';
 import { init as initNaga, parseGlsl, validate, writeWgsl } from '/webgpu/node_modules/naga-wasm/dist/index.js';
-import { renderGraph } from '/webgpu/watergraph-webgpu.js';
+import { oceanRefusal, renderGraph, WebgpuRunnerError } from '/webgpu/watergraph-webgpu.js';
 import { sceneShadersWgsl } from '/webgpu/watergraph-webgpu-scene-shaders.js';
 
 const q = new URLSearchParams(location.search);
@@ -32,6 +32,8 @@ async function main() {
   glPerspective(camera.fov, camera.aspect, camera.near, camera.far, camera.projectionMatrix);
   camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
   const manifestUrl = new URL(q.get('manifest'), location.href);
+  const listed = await (await fetch(manifestUrl)).json();
+  if (listed.oceans) throw new WebgpuRunnerError(oceanRefusal(listed));  // before the three.js client reads it
   const water = await loadWaterGraph(manifestUrl.href, { description });
   water.setViewportSize(width, height);
   water.update(Number(q.get('time')), camera);

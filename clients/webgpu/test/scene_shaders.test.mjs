@@ -5,6 +5,7 @@ import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 import * as naga from 'naga-wasm';
 import { glsl450ForNaga, sceneShadersWgsl, SceneShaderError } from '../watergraph-webgpu-scene-shaders.js';
+import { renderGraph, WebgpuRunnerError } from '../watergraph-webgpu.js';
 
 const description = JSON.parse(readFileSync(process.env.WG_SCENE_DESCRIPTION, 'utf8'));
 const gbufferInputs = { v_world_position: 0, v_normal: 1, v_uv: 2 };
@@ -60,3 +61,10 @@ test('what the runner cannot take is a SceneShaderError naming it', () => {
   const broken = { ...description, shaders: { ...description.shaders, opaque_fragment: '#version 300 es\nvoid main() { undeclared = 1.0; }\n' } };
   assert.throws(() => sceneShadersWgsl(broken, naga), (e) => e instanceof SceneShaderError && /naga could not translate the runtime's opaque_fragment/.test(e.message));
 });
+
+test('a manifest with a spectral ocean is refused before any GPU work, naming the graph', async () => {
+  const manifest = { graph: 'open_ocean', oceans: [{ node: 'sea', options: {} }], webgpu: {}, passes: ['ocean_simulation', 'water_surface'] };
+  await assert.rejects(renderGraph(null, { manifest, plan: { passes: [], targets: [] } }), (e) =>
+    e instanceof WebgpuRunnerError && /graph 'open_ocean' has a spectral ocean \(its ocean_simulation pass\), which the WebGPU runner does not run yet/.test(e.message));
+});
+
