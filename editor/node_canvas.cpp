@@ -460,6 +460,8 @@ void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std:
   if (!ImGui::BeginPopup("palette")) return;
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(), paletteIndex_ = 0;
   ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
+  if (insertInto_)
+    ImGui::TextDisabled("into the link to %s.%s", insertInto_->node.empty() ? "outputs" : insertInto_->node.c_str(), insertInto_->port.c_str());
   const std::vector<PaletteEntry> entries = paletteEntries(editor.graph(), registry, filter_);
   if (shownFilter_ != filter_) shownFilter_ = filter_, paletteIndex_ = 0;
   const int count = static_cast<int>(entries.size());
