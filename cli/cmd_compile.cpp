@@ -344,8 +344,9 @@ bool writeDepfile(const CompileArgs& args, const std::vector<GraphOutcome>& outc
 std::atomic<bool> gStop{false};
 extern "C" void onStopSignal(int) { gStop = true; }
 
-// Polls the modification times and sizes of the graph files and of every graph they
-// import; recompiles a graph when any of its files changes.
+// Polls the modification times and sizes of the graph files, of every graph they import
+// and of what their last good compile read besides (the depfile's inputs: PNG textures and
+// the .glsl files of function nodes); recompiles a graph when any of its files changes.
 int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOptions& global,
               std::vector<GraphOutcome> outcomes) {
   namespace fs = std::filesystem;
@@ -365,15 +366,20 @@ int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOpt
     return s;
   };
   // Per graph: each file it is made of, with its stamp (re-listed after each change: an
-  // edit may add or drop an import).
+  // edit may add or drop an import, a texture or a function file).
   using Watched = std::vector<std::pair<std::string, Stamp>>;
-  auto watchedOf = [&](const std::string& graph) {
+  auto watchMore = [&](Watched& files, const std::vector<std::string>& paths) {
+    for (const auto& f : paths)
+      if (std::none_of(files.begin(), files.end(), [&](const auto& w) { return w.first == f; })) files.emplace_back(f, stampOf(f));
+  };
+  auto watchedOf = [&](const std::string& graph, const DepfileRule& lastGood) {
     Watched files;
-    for (const auto& f : graphFilesToWatch(graph)) files.emplace_back(f, stampOf(f));
+    watchMore(files, graphFilesToWatch(graph));
+    watchMore(files, lastGood.inputs);
     return files;
   };
   std::vector<Watched> watched;
-  for (const auto& p : args.graphs) watched.push_back(watchedOf(p));
+  for (size_t i = 0; i < args.graphs.size(); ++i) watched.push_back(watchedOf(args.graphs[i], outcomes[i].dependencies));
   std::signal(SIGINT, onStopSignal);
   std::signal(SIGTERM, onStopSignal);
   std::cout << "watching " << args.graphs.size() << " graph" << (args.graphs.size() == 1 ? "" : "s")
@@ -389,12 +395,13 @@ int watchLoop(const CompileArgs& args, const TargetSet& targets, const GlobalOpt
       }
       if (!changed) continue;
       if (!stampOf(args.graphs[i]).exists) continue;  // mid-save by an editor; the next change brings it back
-      watched[i] = watchedOf(args.graphs[i]);
+      watched[i] = watchedOf(args.graphs[i], outcomes[i].dependencies);
       Diagnostics diags;
       GraphOutcome o = compileOne(args.graphs[i], args, targets, true, diags);
-      // An edit may add or drop an import or a texture: the depfile follows (a failed
-      // compile keeps the last good one's dependencies, as it keeps its files).
-      if (o.ok) outcomes[i] = o;
+      // An edit may add or drop an import, a texture or a function file: the depfile and the
+      // watch follow (a failed compile keeps the last good one's dependencies, as it keeps
+      // its files).
+      if (o.ok) outcomes[i] = o, watchMore(watched[i], o.dependencies.inputs);
       if (!args.depfile.empty() && o.ok) writeDepfile(args, outcomes, diags);
       printDiagnostics(diags, global);
       std::cout << "[" << nowHms() << "] recompiled " << outcomeLine(args.graphs[i], o, args, true) << std::endl;

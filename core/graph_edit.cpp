@@ -54,7 +54,9 @@ std::string GraphEditor::checkTarget(const InputTarget& target) const {
   const Node* n = graph_.findNode(target.node);
   if (!n) return "no node '" + target.node + "'";
   if (!isIdentifier(target.port)) return "'" + target.port + "' is not an input name";
-  if (registry_)
+  // A file node's ports come from its file (a glsl_function's .glsl), which the edit model
+  // does not read: compiling checks them, at the node and port.
+  if (registry_ && !registry_->fileNodeType(n->type))
     if (auto ports = portsOfGraphNode(graph_, *registry_, *n); ports && ports->inputIndex(target.port) < 0)
       return "node '" + target.node + "' (" + n->type + ") has no input '" + target.port + "'";
   return "";
@@ -217,7 +219,7 @@ std::string GraphEditor::connect(const std::string& fromNode, const std::string&
   const Node* from = graph_.findNode(fromNode);
   if (!from) return "no node '" + fromNode + "'";
   if (!isIdentifier(fromPort)) return "'" + fromPort + "' is not an output name";
-  if (registry_)
+  if (registry_ && !registry_->fileNodeType(from->type))  // a file node's outputs: as for its inputs
     if (auto ports = portsOfGraphNode(graph_, *registry_, *from); ports && ports->outputIndex(fromPort) < 0)
       return "node '" + fromNode + "' (" + from->type + ") has no output '" + fromPort + "'";
   if (!target.node.empty()) {
@@ -265,7 +267,7 @@ std::string GraphEditor::disconnect(const InputTarget& target) {
 
 std::string GraphEditor::addNode(const std::string& type, const std::string& id, std::array<double, 2> position,
                                  std::string* usedId) {
-  if (registry_ && !nodeTypeOf(graph_, *registry_, type)) return "no node type '" + type + "'";
+  if (registry_ && !nodeTypeOf(graph_, *registry_, type) && !registry_->fileNodeType(type)) return "no node type '" + type + "'";
   if (!isIdentifier(type)) return "'" + type + "' is not a node type name";
   std::string newId = id;
   if (newId.empty()) {
@@ -348,7 +350,7 @@ std::string GraphEditor::insertNodes(std::vector<Node> nodes) {
     if (!isIdentifier(n.id)) return "'" + n.id + "' is not a valid node id ([A-Za-z_][A-Za-z0-9_]*, at most 64)";
     if (graph_.findNode(n.id)) return "a node '" + n.id + "' already exists";
     if (!added.emplace(n.id, &n).second) return "node id '" + n.id + "' is given twice";
-    if (registry_ && !nodeTypeOf(graph_, *registry_, n.type)) return "no node type '" + n.type + "' (node '" + n.id + "')";
+    if (registry_ && !nodeTypeOf(graph_, *registry_, n.type) && !registry_->fileNodeType(n.type)) return "no node type '" + n.type + "' (node '" + n.id + "')";
     if (n.editorPosition && !positionFits(*n.editorPosition)) return "a node position must be finite in float32 range";
   }
   for (const Node& n : nodes)

@@ -25,7 +25,8 @@ class GraphEditor {
  public:
   // With a registry, node types and port names are checked against it and the graph's
   // imports (a loaded subgraph's ports are its interface's, core/graph_node_type.h);
-  // without one only what the file format itself requires is.
+  // without one only what the file format itself requires is. A file node's ports (a
+  // glsl_function's, from its .glsl file) are left to compiling, which reads the file.
   explicit GraphEditor(Graph graph, const Registry* registry = nullptr);
 
   const Graph& graph() const { return graph_; }

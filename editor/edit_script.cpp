@@ -2,6 +2,11 @@
 
 #include "core/file_read.h"
 #include "core/load_limits.h"
+#include "editor/dissolve_nodes.h"
+#include "editor/expression_inputs.h"
+#include "editor/function_template.h"
+#include "editor/link_insert.h"
+#include "editor/texture_choices.h"
 
 #include <cmath>
 #include <fstream>
@@ -15,7 +20,8 @@ const std::set<std::string>& editOps() {
   static const std::set<std::string> ops{"set_parameter", "apply_preset", "set_input", "set_option", "connect", "disconnect", "add_node",
                                          "delete_node", "move_node", "undo", "redo",
                                          "add_parameter", "rename_parameter", "delete_parameter", "move_parameter",
-                                         "create_preset", "rename_preset", "delete_preset"};
+                                         "create_preset", "rename_preset", "delete_preset", "delete_reconnect",
+                                         "declare_input", "rename_input", "retype_input", "remove_input", "choose_texture", "insert_on_link", "new_function_node"};
   return ops;
 }
 
@@ -70,6 +76,48 @@ InputTarget target(const nlohmann::json& step) {
   return {text(step, "node"), text(step, "port")};
 }
 
+Type inputType(const nlohmann::json& step) {
+  auto type = parseType(text(step, "type"));
+  if (!type || !isFloatScalarOrVector(*type)) throw std::invalid_argument("\"type\" is float, vec2, vec3 or vec4");
+  return *type;
+}
+
+// The ops over the node types (editor/dissolve_nodes.h, expression_inputs.h,
+// texture_choices.h); kNotAuthoring for any other op.
+constexpr const char* kNotAuthoring = "\x01";
+std::string applyAuthoringStep(GraphEditor& e, const ScriptStep& step, const EditContext& context) {
+  static const std::set<std::string> ops{"delete_reconnect", "declare_input", "rename_input", "retype_input", "remove_input",
+                                         "choose_texture", "insert_on_link", "new_function_node"};
+  const std::string& op = step.op;
+  if (!ops.count(op)) return kNotAuthoring;
+  if (!context.registry) return "'" + op + "' needs the node registry";
+  const Registry& r = *context.registry;
+  const auto& a = step.args;
+  if (op == "delete_reconnect") {
+    auto it = a.find("ids");
+    if (it == a.end() || !it->is_array()) throw std::invalid_argument("needs a list of node ids \"ids\"");
+    std::vector<std::string> ids;
+    for (const auto& id : *it) {
+      if (!id.is_string()) throw std::invalid_argument("\"ids\" must hold strings only");
+      ids.push_back(id.get<std::string>());
+    }
+    return dissolveNodes(e, r, ids);
+  }
+  if (op == "new_function_node") {
+    double x = a.contains("x") ? number(a, "x") : 0, y = a.contains("y") ? number(a, "y") : 0;
+    return addFunctionNodeFromTemplate(e, r, context.graphDir, text(a, "name"), {x, y});
+  }
+  if (op == "insert_on_link") {
+    double x = a.contains("x") ? number(a, "x") : 0, y = a.contains("y") ? number(a, "y") : 0;
+    return insertNodeOnLink(e, r, text(a, "type"), target(a), {x, y});
+  }
+  if (op == "declare_input") return declareExpressionInput(e, r, text(a, "node"), text(a, "name"), inputType(a));
+  if (op == "retype_input") return retypeExpressionInput(e, r, text(a, "node"), text(a, "name"), inputType(a));
+  if (op == "rename_input") return renameExpressionInput(e, r, text(a, "node"), text(a, "name"), text(a, "to"));
+  if (op == "remove_input") return removeExpressionInput(e, r, text(a, "node"), text(a, "name"));
+  return chooseTexture(e, r, context.graphDir, text(a, "node"), text(a, "option"), text(a, "path"));
+}
+
 }  // namespace
 
 std::optional<std::vector<ScriptStep>> loadScript(const std::string& path, std::string* error) {
@@ -107,10 +155,11 @@ std::optional<std::vector<ScriptStep>> loadScript(const std::string& path, std::
 
 bool isEditOp(const std::string& op) { return editOps().count(op) > 0; }
 
-std::string applyEditStep(GraphEditor& e, const ScriptStep& step) {
+std::string applyEditStep(GraphEditor& e, const ScriptStep& step, const EditContext& context) {
   const auto& a = step.args;
   try {
     const std::string& op = step.op;
+    if (std::string why = applyAuthoringStep(e, step, context); why != kNotAuthoring) return why;
     if (op == "set_parameter") return e.setParameterDefault(text(a, "name"), numbers(a, "value"));
     if (op == "set_input") {
       if (a.contains("parameter")) return e.setInputParameter(target(a), text(a, "parameter"));

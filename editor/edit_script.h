@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/graph_edit.h"
+#include "core/registry.h"
 
 namespace wg::editor {
 
@@ -28,7 +29,14 @@ std::optional<std::vector<ScriptStep>> loadScript(const std::string& path, std::
 
 // True for the ops that edit the graph (applyEditStep handles them).
 bool isEditOp(const std::string& op);
+// What the authoring edits (delete with reconnection, an expression's inputs, a texture
+// choice) need besides the graph: the node types, and the folder textures are relative to.
+struct EditContext {
+  const Registry* registry = nullptr;  // null: those ops are refused
+  std::string graphDir;                // the edited file's folder ("" : the working folder)
+};
+
 // Applies one edit step; "" on success, else why it was refused.
-std::string applyEditStep(GraphEditor& editor, const ScriptStep& step);
+std::string applyEditStep(GraphEditor& editor, const ScriptStep& step, const EditContext& context = {});
 
 }  // namespace wg::editor

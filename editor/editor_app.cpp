@@ -25,6 +25,7 @@
 #include "editor/edit_script.h"
 #include "editor/error_list.h"
 #include "editor/file_watcher.h"
+#include "editor/function_node_ports.h"
 #include "editor/graph_change.h"
 #include "editor/graph_layout.h"
 #include "editor/inspector.h"
@@ -86,14 +87,15 @@ bool EditorWindow::loadFromDisk(bool initial) {
 // the preview follow the imported files as they are now (those that no longer load keep
 // their last good version for the ports; compiling lists their errors).
 bool EditorWindow::reloadImports() {
-  if (editor_.graph().imports.empty()) return false;
+  const bool functionFiles = !functionFilesOf(editor_.graph(), registry_).empty();
+  if (editor_.graph().imports.empty() && !functionFiles) return false;
   Graph now = editor_.graph();
   Diagnostics reportedByCompiling;
   loadImports(now, reportedByCompiling);
   editor_.adoptImports(now);
   watcher_.watch(filesToWatch(editor_.graph()));
   recompile();
-  status_ = "imported graphs read again from disk";
+  status_ = functionFiles ? "imported graphs and function files read again from disk" : "imported graphs read again from disk";
   noteEdit();
   return true;
 }
@@ -217,7 +219,7 @@ void EditorWindow::rebuildThumbnail() {
   retiredThumb_ = std::move(thumb_);  // this frame's draw data may still show it
   thumbMessage_.clear();
   const Node* n = editor_.graph().findNode(selected_);
-  std::optional<NodePorts> ports = n ? portsOfGraphNode(editor_.graph(), registry_, *n) : std::nullopt;
+  std::optional<NodePorts> ports = n ? editorPortsOf(editor_.graph(), registry_, *n) : std::nullopt;
   if (!ports || ports->outputs.empty()) {
     thumbMessage_ = "no output to preview";
     return;

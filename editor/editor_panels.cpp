@@ -24,6 +24,7 @@
 #include "editor/edit_script.h"
 #include "editor/error_list.h"
 #include "editor/file_watcher.h"
+#include "editor/function_node_ports.h"
 #include "editor/graph_change.h"
 #include "editor/graph_layout.h"
 #include "editor/inspector.h"
@@ -238,7 +239,7 @@ void EditorWindow::drawInspectorPanel(float x, float y, float w, float h) {
     // The thumbnail first, so it stays in view above a long list of inputs and options.
     const Node* n = editor_.graph().findNode(selected_);
     std::vector<PortSpec> outputs;
-    if (auto ports = n ? portsOfGraphNode(editor_.graph(), registry_, *n) : std::nullopt) outputs = std::move(ports->outputs);
+    if (auto ports = n ? editorPortsOf(editor_.graph(), registry_, *n) : std::nullopt) outputs = std::move(ports->outputs);
     if (thumb_ && thumb_->ready())
       ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(thumb_->texture())), ImVec2(192, 108), ImVec2(0, 1),
                    ImVec2(1, 0));
@@ -253,7 +254,8 @@ void EditorWindow::drawInspectorPanel(float x, float y, float w, float h) {
         ImGui::EndCombo();
       }
     }
-    if (drawNodeInspector(editor_, registry_, selected_)) openRequest_ = selected_;
+    if (drawNodeInspector(editor_, registry_, selected_, std::filesystem::path(path_).parent_path().string()))
+      openRequest_ = selected_;
   }
   ImGui::End();
 }
@@ -284,7 +286,7 @@ void EditorWindow::drawCanvasPanel(float x, float y, float w, float h) {
   placeNext(x, y, w, h);
   ImGui::Begin("Nodes", nullptr, kPanel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   ImGui::TextDisabled("drag: move, link, box-select | wheel, = -: zoom | Home, F: frame | middle, Alt+drag: pan | "
-                      "right-click: add | Del | Ctrl+C/X/V/D");
+                      "right-click: add (on a link: insert) | Del, Ctrl+Del: reconnect | Ctrl+C/X/V/D");
   if (haveGraph_) canvas_.draw(editor_, registry_, selected_, errors_, keys_);
   if (std::string node = canvas_.takeOpenRequest(); !node.empty()) openRequest_ = node;
   ImGui::End();

@@ -7,12 +7,18 @@
 #include <set>
 
 #include "core/graph_imports.h"
+#include "editor/function_node_ports.h"
+#include "nodes/registry.h"
 
 namespace wg::editor {
 
 // graphFilesRead lists an import that did not load by the path it names (Import::file), so
-// that repairing or creating that file is noticed.
-std::vector<std::string> filesToWatch(const Graph& graph) { return graphFilesRead(graph); }
+// that repairing or creating that file is noticed; function nodes' .glsl files follow.
+std::vector<std::string> filesToWatch(const Graph& graph) {
+  std::vector<std::string> files = graphFilesRead(graph);
+  for (std::string& f : functionFilesOf(graph, defaultRegistry())) files.push_back(std::move(f));
+  return files;
+}
 
 FileWatcher::Stamp FileWatcher::stamp(const std::string& path) {
   struct stat st {};

@@ -2,7 +2,7 @@
 // Notices when files change on disk (another editor saved them) by polling their
 // modification time, size and inode: cheap, and it works for editors that write in place
 // and for those that write a temporary file and rename it over the original. The editor
-// watches the graph it shows and every file that graph imports.
+// watches the graph it shows, every file that graph imports and its function files.
 #include <string>
 #include <vector>
 
@@ -10,8 +10,9 @@
 
 namespace wg::editor {
 
-// The files to watch for `graph`: its own and every imported one (graphFilesRead), and
-// where an import that did not load would be, so that fixing or creating it is noticed.
+// The files to watch for `graph`: its own and every imported one (graphFilesRead), where an
+// import that did not load would be, so that fixing or creating it is noticed, and the
+// .glsl files its function nodes name (editor/function_node_ports.h).
 std::vector<std::string> filesToWatch(const Graph& graph);
 
 class FileWatcher {

@@ -14,9 +14,12 @@
 #include "core/load_limits.h"
 #include "core/node_options.h"
 #include "core/number_format.h"
+#include "editor/authoring_widgets.h"
 #include "editor/blackboard.h"
+#include "editor/function_node_ports.h"
 #include "editor/slider_value.h"
 #include "editor/widget_rects.h"
+#include "nodes/glsl_function_node.h"
 
 namespace wg::editor {
 namespace {
@@ -152,14 +155,25 @@ void drawParameterInspector(GraphEditor& editor) {
   }
 }
 
-bool drawNodeInspector(GraphEditor& editor, const Registry& registry, const std::string& nodeId) {
+bool drawNodeInspector(GraphEditor& editor, const Registry& registry, const std::string& nodeId, const std::string& graphDir) {
   const Node* n = editor.graph().findNode(nodeId);
   if (!n) {
     ImGui::TextDisabled("no node selected (click one on the canvas)");
     return false;
   }
   const GraphNodeType type = nodeTypeOf(editor.graph(), registry, n->type);
-  const NodeSpec* spec = type.spec;
+  // A function node's type is made from its file (its ports, and a texture option per
+  // sampler2D parameter); null while the file does not check (the errors say why).
+  std::shared_ptr<const NodeSpec> fileSpec = fileNodeSpecOf(editor.graph(), registry, *n);
+  const NodeSpec* spec = fileSpec ? fileSpec.get() : type.spec;
+  static const NodeSpec functionFallback = [] {  // its options, to mend the file's name
+    NodeSpec f;
+    f.type = kGlslFunctionType;
+    f.summary = "a function of a .glsl file; the file does not check yet (see the errors)";
+    f.options = glslFunctionOptions();
+    return f;
+  }();
+  if (!spec && n->type == kGlslFunctionType) spec = &functionFallback;
   ImGui::Text("%s : %s", n->id.c_str(), n->type.c_str());
   if (spec) ImGui::TextWrapped("%s", spec->summary.c_str());
   bool open = false;
@@ -172,7 +186,7 @@ bool drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
     ImGui::EndDisabled();
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("edit %s here; \"back\" returns to this graph", type.import->path.c_str());
   }
-  std::optional<NodePorts> known = portsOfGraphNode(editor.graph(), registry, *n);
+  std::optional<NodePorts> known = editorPortsOf(editor.graph(), registry, *n);
   if (!known) return open;
   ImGui::Separator();
   std::string id = n->id;  // `n` may move when an edit reallocates the node list
@@ -260,11 +274,13 @@ bool drawNodeInspector(GraphEditor& editor, const Registry& registry, const std:
         break;
       }
       case OptionSpec::Kind::Json:
+        // An expression's declared inputs as a list (renames carry the formula along), the
+        // JSON text under it for the rest.
+        if (spec->type == "expression" && o.name == "inputs") drawExpressionInputs(editor, registry, id);
         editJsonOption(editor, id, o, label, value);
         break;
       case OptionSpec::Kind::Texture:
-        // Paths: edited in the file (hot reload shows them).
-        ImGui::TextWrapped("%s = %s", label.c_str(), value.dump().c_str());
+        drawTexturePicker(editor, registry, graphDir, id, o.name, value);
         break;
     }
     if (ImGui::IsItemHovered() && !o.doc.empty()) ImGui::SetTooltip("%s", o.doc.c_str());

@@ -12,7 +12,11 @@
 
 #include "core/graph_node_type.h"
 #include "core/number_format.h"
+#include "editor/authoring_widgets.h"
 #include "editor/canvas_minimap.h"
+#include "editor/dissolve_nodes.h"
+#include "editor/function_node_ports.h"
+#include "editor/link_insert.h"
 #include "editor/node_palette.h"
 #include "editor/widget_rects.h"
 
@@ -72,9 +76,25 @@ const InputSource* findSlot(const Graph& g, OutputSlot slot) {
 
 float distance(ImVec2 a, ImVec2 b) { return std::hypot(a.x - b.x, a.y - b.y); }
 
+float linkBend(ImVec2 from, ImVec2 to, float zoom) { return std::max(40.0f * zoom, std::abs(to.x - from.x) * 0.5f); }
+
 void drawLink(ImDrawList* dl, ImVec2 from, ImVec2 to, ImU32 color, float zoom) {
-  float dx = std::max(40.0f * zoom, std::abs(to.x - from.x) * 0.5f);
+  float dx = linkBend(from, to, zoom);
   dl->AddBezierCubic(from, ImVec2(from.x + dx, from.y), ImVec2(to.x - dx, to.y), to, color, std::max(1.5f, 2.5f * zoom));
+}
+
+// A point of the link's curve as drawLink draws it (t from 0 at the output to 1).
+ImVec2 pointOnLink(ImVec2 from, ImVec2 to, float zoom, float t) {
+  float dx = linkBend(from, to, zoom), u = 1 - t;
+  float a = u * u * u, b = 3 * u * u * t, c = 3 * u * t * t, d = t * t * t;
+  return ImVec2(a * from.x + b * (from.x + dx) + c * (to.x - dx) + d * to.x, a * from.y + b * from.y + c * to.y + d * to.y);
+}
+
+// How close `m` comes to the link's curve, sampled finely enough for a 6-pixel reach.
+float distanceToLink(ImVec2 from, ImVec2 to, float zoom, ImVec2 m) {
+  float best = distance(from, m);
+  for (int i = 1; i <= 48; ++i) best = std::min(best, distance(pointOnLink(from, to, zoom, static_cast<float>(i) / 48), m));
+  return best;
 }
 
 // Text at the view's zoom. Below kSmallestText pixels it is not drawn (port labels at 25 %
@@ -129,6 +149,17 @@ struct NodeCanvas::Layout {
         if (distance(p.at, m) <= portReach()) return std::make_pair(b.id, p.name);
     return std::nullopt;
   }
+  // The link under `m` (a node output feeding a node input or an output slot), named by the
+  // input it feeds: right-clicking one inserts a node into it (editor/link_insert.h).
+  std::optional<InputTarget> linkAt(ImVec2 m) const {
+    for (const auto& b : boxes)
+      for (const auto& p : b.inputs) {
+        const InputSource* s = b.id == kInterfaceId ? nullptr : sourceOf({b.id, p.name});
+        if (!s || s->kind != InputSource::Kind::NodeOutput) continue;
+        if (auto from = outputPort(s->name, s->port); from && distanceToLink(*from, p.at, zoom, m) <= 6) return InputTarget{b.id, p.name};
+      }
+    return std::nullopt;
+  }
   const Box* nodeAt(ImVec2 m) const {
     for (auto it = boxes.rbegin(); it != boxes.rend(); ++it)
       if (!it->id.empty() && it->id != kInterfaceId && m.x >= it->min.x && m.x <= it->max.x && m.y >= it->min.y && m.y <= it->max.y) return &*it;
@@ -172,7 +203,7 @@ NodeCanvas::Layout NodeCanvas::layout(const Graph& g, const Registry& registry, 
     b.title = n.id + " : " + n.type;
     b.instance = nodeTypeOf(g, registry, n.type).isInstance();
     std::vector<std::string> ins, outs;
-    if (auto ports = portsOfGraphNode(g, registry, n)) {
+    if (auto ports = editorPortsOf(g, registry, n)) {
       for (const auto& port : ports->inputs) ins.push_back(port.name);
       for (const auto& port : ports->outputs) outs.push_back(port.name);
     } else {
@@ -263,6 +294,8 @@ void NodeCanvas::rightClick(GraphEditor& editor, const Layout& l, ImVec2 mouse, 
     selected = b->id;
     if (!isSelected(b->id)) selection_ = {b->id};
   } else {
+    // On a link, the node chosen goes into it; elsewhere it is added unconnected.
+    insertInto_ = l.linkAt(mouse);
     paletteAt_ = view_.toCanvas(mouse.x - origin.x, mouse.y - origin.y);
     filter_[0] = '\0';
     ImGui::OpenPopup("palette");
@@ -343,6 +376,18 @@ void NodeCanvas::viewKeys(const Layout& l, ImVec2 mouse, ImVec2 origin, ImVec2 s
   }
 }
 
+// For scripts: each link's middle, as "link NODE.PORT" (an output slot: "link outputs.SLOT").
+void NodeCanvas::noteLinks(const Layout& l) const {
+  for (const auto& b : l.boxes)
+    for (const auto& p : b.inputs) {
+      const InputSource* s = b.id == kInterfaceId ? nullptr : l.sourceOf({b.id, p.name});
+      auto from = s && s->kind == InputSource::Kind::NodeOutput ? l.outputPort(s->name, s->port) : std::nullopt;
+      if (!from) continue;
+      ImVec2 mid = pointOnLink(*from, p.at, l.zoom, 0.5f);
+      widgetRects().note("link " + (b.id.empty() ? std::string("outputs") : b.id) + "." + p.name, {mid.x - 2, mid.y - 2, mid.x + 2, mid.y + 2});
+    }
+}
+
 // Links under the boxes; a link being dragged off its input is drawn by continueDrag.
 void NodeCanvas::drawLinks(const Layout& l, ImDrawList* dl) const {
   auto linkColor = IM_COL32(140, 200, 255, 220);
@@ -415,6 +460,8 @@ void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std:
   if (!ImGui::BeginPopup("palette")) return;
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(), paletteIndex_ = 0;
   ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
+  if (insertInto_)
+    ImGui::TextDisabled("into the link to %s.%s", insertInto_->node.empty() ? "outputs" : insertInto_->node.c_str(), insertInto_->port.c_str());
   const std::vector<PaletteEntry> entries = paletteEntries(editor.graph(), registry, filter_);
   if (shownFilter_ != filter_) shownFilter_ = filter_, paletteIndex_ = 0;
   const int count = static_cast<int>(entries.size());
@@ -424,7 +471,7 @@ void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std:
     if (k.key == GLFW_KEY_UP && count > 0) paletteIndex_ = std::max(paletteIndex_ - 1, 0), moved = true;
   }
   const PaletteEntry* chosen = nullptr;
-  if (count > 0 && (wasPressed(keys, GLFW_KEY_ENTER) || wasPressed(keys, GLFW_KEY_KP_ENTER))) chosen = &entries[static_cast<size_t>(paletteIndex_)];
+  if (count > 0 && !newFunctionNameActive() && (wasPressed(keys, GLFW_KEY_ENTER) || wasPressed(keys, GLFW_KEY_KP_ENTER))) chosen = &entries[static_cast<size_t>(paletteIndex_)];
   ImGui::BeginChild("types", ImVec2(260, 320));
   std::string family;
   for (int i = 0; i < count; ++i) {
@@ -436,10 +483,18 @@ void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std:
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", e.summary.c_str());
   }
   ImGui::EndChild();
+  ImGui::Separator();
+  std::string made;
+  if (drawNewFunctionNode(editor, registry, {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &made)) {
+    selected = made, selection_ = {made};
+    ImGui::CloseCurrentPopup();
+  }
   if (chosen) {
     std::string id;
-    if (editor.addNode(chosen->type, "", {std::round(paletteAt_[0]), std::round(paletteAt_[1])}, &id).empty())
-      selected = id, selection_ = {id};
+    std::array<double, 2> at{std::round(paletteAt_[0]), std::round(paletteAt_[1])};
+    std::string why = insertInto_ ? insertNodeOnLink(editor, registry, chosen->type, *insertInto_, at, &id)
+                                  : editor.addNode(chosen->type, "", at, &id);
+    if (why.empty()) selected = id, selection_ = {id};
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();
@@ -494,6 +549,7 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   Layout drawn = layout(editor.graph(), registry, origin);
 
   drawLinks(drawn, dl);
+  noteLinks(drawn);
   drawBoxes(drawn, dl, diagnostics);
   if (minimap) {
     minimap = Minimap::place(origin, size, whole, view_);
@@ -504,10 +560,13 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   }
   dl->PopClipRect();
 
-  // Delete while the mouse is over the canvas: every selected node, one undo step.
-  if (hovered && !selection_.empty() && !io.WantTextInput &&
-      (wasPressed(keys, GLFW_KEY_DELETE) || wasPressed(keys, GLFW_KEY_BACKSPACE))) {
-    if (editor.deleteNodes(selection_).empty()) selection_.clear(), selected.clear();
+  // Delete while the mouse is over the canvas: every selected node, one undo step; with Ctrl,
+  // pass-throughs are reconnected (editor/dissolve_nodes.h).
+  if (hovered && !selection_.empty() && !io.WantTextInput) {
+    bool plain = wasPressed(keys, GLFW_KEY_DELETE) || wasPressed(keys, GLFW_KEY_BACKSPACE);
+    bool reconnect = wasPressed(keys, GLFW_KEY_DELETE, GLFW_MOD_CONTROL) || wasPressed(keys, GLFW_KEY_BACKSPACE, GLFW_MOD_CONTROL);
+    std::string why = reconnect ? dissolveNodes(editor, registry, selection_) : plain ? editor.deleteNodes(selection_) : "-";
+    if (why.empty()) selection_.clear(), selected.clear();
   }
   drawPalette(editor, registry, selected, keys);
   lastSelected_ = selected;

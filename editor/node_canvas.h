@@ -4,13 +4,15 @@
 // drag a box on the background), move (drag a node: every selected one moves), connect
 // (drag from an output port to an input port), disconnect (drag a link off its input, or
 // right-click the input), add from the palette (right-click the background: the graph's
-// subgraphs and the registry's types), delete (Delete key), open a subgraph instance
+// subgraphs and the registry's types; right-click a link: the node goes into it), delete
+// (Delete key; Ctrl+Delete reconnects pass-throughs), open a subgraph instance
 // (double-click). The view zooms about the cursor (wheel, = and -), pans (middle or
 // Alt+left drag), frames the selection (F) or everything (Home), and a minimap in the
 // corner shows the whole graph (click or drag in it to move there). A function graph's
 // interface outputs are shown, read-only, under the output slots. Node positions are the
 // file's "editor": {x, y}.
 #include <array>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -53,6 +55,7 @@ class NodeCanvas {
   void finishDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse, std::string& selected);
   void viewKeys(const Layout& l, ImVec2 mouse, ImVec2 origin, ImVec2 size, bool hovered, const std::vector<KeyPress>& keys);
   void drawLinks(const Layout& l, ImDrawList* dl) const;
+  void noteLinks(const Layout& l) const;
   void drawBoxes(const Layout& l, ImDrawList* dl, const std::vector<Diagnostic>& diagnostics) const;
   void drawPalette(GraphEditor& editor, const Registry& registry, std::string& selected, const std::vector<KeyPress>& keys);
   bool isSelected(const std::string& id) const;
@@ -72,6 +75,7 @@ class NodeCanvas {
   std::array<float, 2> boxStart_{};   // screen pixels
   bool boxAdds_ = false;                // Shift held: the box adds to the selection
   std::array<double, 2> paletteAt_{};   // canvas position for a node added from the palette
+  std::optional<InputTarget> insertInto_;  // the link the palette was opened on: the node goes into it
   char filter_[64] = "";
   std::string shownFilter_;  // the filter paletteIndex_ is for
   int paletteIndex_ = 0;     // the highlighted entry: Enter adds it, the arrows move it

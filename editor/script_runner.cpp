@@ -1,10 +1,12 @@
 #include "editor/script_runner.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
 
 #include "editor/widget_rects.h"
+#include "nodes/registry.h"
 
 namespace wg::editor {
 
@@ -43,7 +45,8 @@ bool ScriptRunner::run(ScriptHost& host, const ScriptStep& step) {
     if (!host.graphLoaded()) return fail(where, "the graph has not loaded");
     GraphEditor& editor = host.graphEditor();
     long before = editor.revision();
-    std::string why = applyEditStep(editor, step);
+    EditContext context{&defaultRegistry(), std::filesystem::path(host.graphPath()).parent_path().string()};
+    std::string why = applyEditStep(editor, step, context);
     editor.seal();
     if (!why.empty()) return fail(where, why);
     if (editor.revision() != before) host.edited();

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "core/graph_node_type.h"
+#include "editor/function_node_ports.h"
 
 namespace wg::editor {
 
@@ -32,7 +33,7 @@ std::vector<Diagnostic> pruneUnreachedNodes(Graph& graph, const Registry& regist
   for (const Node& n : graph.nodes) {
     if (reached.count(n.id)) continue;
     // An unknown type or an import that did not load: nothing is known of its ports.
-    std::optional<NodePorts> ports = portsOfGraphNode(graph, registry, n);
+    std::optional<NodePorts> ports = editorPortsOf(graph, registry, n);
     if (!ports) continue;
     for (const PortSpec& port : ports->inputs) {
       if (!port.required()) continue;

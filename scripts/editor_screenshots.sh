@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The screenshots in docs/editor.md, made by the editor's own script mode under a virtual X
-# server (xvfb-run): the canvas framed with a half-wired node and a box selection, and the
-# palette filtered with Enter's entry highlighted. 1600x900 windows, the preview at 640x360.
+# server (xvfb-run): the canvas framed with a half-wired node and a box selection, the
+# palette filtered with Enter's entry highlighted, the blackboard, the palette opened on a
+# link, an expression's input list and the texture picker. 1600x900 windows, the preview at 640x360.
 #   scripts/editor_screenshots.sh [build-dir] [out-dir]   (defaults: build, docs/images)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -17,6 +18,7 @@ cp graphs/lake.json "$work/lake.json"
 shoot() {  # name steps-json
   printf '%s\n' "$2" > "$work/steps.json"
   cp graphs/lake.json "$work/lake.json"
+  cp graphs/lagoon_ripples.png "$work/lagoon_ripples.png"
   xvfb-run -a -s '-screen 0 1600x1024x24' "$editor" "$work/lake.json" --size 1600x900 --time 3.5 \
     --script "$work/steps.json" --screenshot "$out/$1.png" > /dev/null
   echo "wrote $out/$1.png"
@@ -54,5 +56,37 @@ shoot editor-blackboard '[
   {"op": "click", "widget": "blackboard field"},
   {"op": "type", "text": "deep"},
   {"op": "click", "widget": "blackboard button"},
+  {"op": "frames", "count": 2}
+]'
+
+# Insert into a link: right-click the link from radius to shore, type part of a name; Enter
+# would put the highlighted node into the link.
+shoot editor-insert-link '[
+  {"op": "frames", "count": 1},
+  {"op": "hover", "widget": "canvas"},
+  {"op": "key", "key": "home"},
+  {"op": "frames", "count": 1},
+  {"op": "click", "widget": "link shore.x", "button": "right"},
+  {"op": "type", "text": "satur"},
+  {"op": "frames", "count": 2}
+]'
+
+# An expression's inputs as a list (t renamed t_mix: the formula followed).
+shoot editor-expression-inputs '[
+  {"op": "add_node", "type": "expression", "id": "blend", "x": 700, "y": 330},
+  {"op": "set_option", "node": "blend", "name": "formula", "value": "mix(a, b, t)"},
+  {"op": "set_option", "node": "blend", "name": "inputs", "value": {"a": "vec3", "b": "vec3", "t": "float"}},
+  {"op": "rename_input", "node": "blend", "name": "t", "to": "t_mix"},
+  {"op": "select", "node": "blend"},
+  {"op": "frames", "count": 2}
+]'
+
+# The texture picker of a texture_sample node, open over the graph folder's PNG files.
+shoot editor-texture-picker '[
+  {"op": "add_node", "type": "texture_sample", "id": "ripples", "x": 700, "y": 330},
+  {"op": "choose_texture", "node": "ripples", "option": "texture", "path": "lagoon_ripples.png"},
+  {"op": "select", "node": "ripples"},
+  {"op": "frames", "count": 2},
+  {"op": "click", "widget": "texture picker texture"},
   {"op": "frames", "count": 2}
 ]'

@@ -182,6 +182,31 @@ TEST(Usability, WatchRecompilesWhenAnImportedSubgraphChanges) {
   EXPECT_NE(test::readFile(out + "/pool.glsl330.frag").find("0.0371"), std::string::npos);
 }
 
+// --watch follows the .glsl files of function nodes (the depfile's inputs), here one that a
+// subgraph's glsl_function node calls: saving it recompiles the graph.
+TEST(Usability, WatchRecompilesWhenAFunctionFileChanges) {
+  eco::TempDir tmp;
+  fs::create_directories(tmp / "lib");
+  fs::copy_file(test::sourcePath("graphs/caustic_pool.json"), tmp / "caustic_pool.json");
+  for (const char* lib : {"caustic_light.json", "caustic.glsl"})
+    fs::copy_file(test::sourcePath(std::string("graphs/lib/") + lib), tmp / (std::string("lib/") + lib));
+  std::string log = tmp / "watch.log";
+  std::string out = tmp / "out";
+  WatchProcess watch(tmp / "caustic_pool.json", out, log);
+  ASSERT_GT(watch.pid, 0);
+  std::string text = waitFor(log, "watching 1 graph");
+  ASSERT_NE(text.find("watching 1 graph"), std::string::npos) << text;
+
+  std::string glsl = tmp / "lib/caustic.glsl";
+  std::string code = test::readFile(glsl);
+  size_t at = code.find("0.3 * sin(p.y");
+  ASSERT_NE(at, std::string::npos);
+  test::writeFile(glsl, code.substr(0, at) + "0.4375 * sin(p.y" + code.substr(at + 13));
+  text = waitFor(log, "recompiled ");
+  EXPECT_NE(text.find("recompiled " + std::string(tmp / "caustic_pool.json") + ": ok"), std::string::npos) << text;
+  EXPECT_NE(test::readFile(out + "/caustic_pool.glsl330.frag").find("0.4375"), std::string::npos);
+}
+
 // --watch --depfile: an edit that adds imports rewrites the depfile (it stayed as the first
 // compile wrote it, so a build system missed changes to the new imports).
 TEST(Usability, WatchRewritesTheDepfileWhenTheImportsChange) {
