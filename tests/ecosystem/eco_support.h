@@ -3,6 +3,8 @@
 #include <filesystem>
 #include <string>
 
+#include <nlohmann/json.hpp>
+
 #include "test_support.h"
 
 namespace wg::eco {
@@ -16,6 +18,10 @@ inline CmdResult sh(const std::string& command) { return test::runSplit(command)
 bool haveTool(const std::string& tool);
 // Debian's python3 (where apt's python3-jsonschema lives) when present, else python3 on PATH.
 std::string debianPython();
+
+// graphs/NAME.json with every node that has a `resolution` option at 0.5 (the scene passes
+// at half the frame's size); `scaled` counts those nodes.
+nlohmann::json halfResolutionGraph(const std::string& name, int* scaled);
 
 class TempDir {
  public:

@@ -278,14 +278,8 @@ TEST_F(ThreeClient, HalfResolutionScenePassesMatchTheRuntime) {
   auto cam = rt::cameraPreset("above");
   ASSERT_TRUE(cam.has_value());
   for (const char* g : {"deferred_underwater", "classic_webgl"}) {
-    nlohmann::json graph = nlohmann::json::parse(test::readFile(test::sourcePath(std::string("graphs/") + g + ".json")));
     int scaled = 0;
-    for (auto& node : graph["nodes"]) {
-      const NodeSpec* spec = defaultRegistry().find(node["type"].get<std::string>());
-      if (!spec || spec->optionIndex(kResolutionOption) < 0) continue;
-      node["options"][kResolutionOption] = 0.5;
-      ++scaled;
-    }
+    nlohmann::json graph = halfResolutionGraph(g, &scaled);
     ASSERT_GT(scaled, 0) << g;
     const std::string file = dir / (std::string(g) + ".json"), out = dir / g;
     test::writeFile(file, graph.dump(2));

@@ -221,14 +221,8 @@ TEST_F(WebgpuRunner, HalfResolutionScenePassesMatchGlsl330) {
   TempDir dir("wg_webgpu_half_");
   std::vector<RunnerJob> jobs;
   for (const char* g : {"deferred_underwater", "classic_webgl"}) {
-    nlohmann::json graph = nlohmann::json::parse(test::readFile(test::sourcePath(std::string("graphs/") + g + ".json")));
     int scaled = 0;
-    for (auto& node : graph["nodes"]) {
-      const NodeSpec* spec = defaultRegistry().find(node["type"].get<std::string>());
-      if (!spec || spec->optionIndex(kResolutionOption) < 0) continue;
-      node["options"][kResolutionOption] = 0.5;
-      ++scaled;
-    }
+    nlohmann::json graph = halfResolutionGraph(g, &scaled);
     ASSERT_GT(scaled, 0) << g;
     test::writeFile(dir / (std::string(g) + ".json"), graph.dump(2));
     jobs.push_back({dir / (std::string(g) + ".json"), "above", true});
