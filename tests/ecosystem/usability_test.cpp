@@ -190,6 +190,8 @@ TEST(Usability, WatchRecompilesWhenAFunctionFileChanges) {
   fs::copy_file(test::sourcePath("graphs/caustic_pool.json"), tmp / "caustic_pool.json");
   for (const char* lib : {"caustic_light.json", "caustic.glsl"})
     fs::copy_file(test::sourcePath(std::string("graphs/lib/") + lib), tmp / (std::string("lib/") + lib));
+  // The texture its `broad` instance takes (an instance option).
+  fs::copy_file(test::sourcePath("graphs/lagoon_ripples.png"), tmp / "lagoon_ripples.png");
   std::string log = tmp / "watch.log";
   std::string out = tmp / "out";
   WatchProcess watch(tmp / "caustic_pool.json", out, log);
