@@ -1046,15 +1046,17 @@ class Resolver {
       if (o.kind != OptionSpec::Kind::Texture) continue;
       auto it = options.find(o.name);
       if (it == options.end()) continue;
-      auto name = interfaceTextureReference(*it);
-      if (!name) continue;
-      const BoundTexture& bound = options_->textures.find(*name)->second;  // lookUpSpecs checked it
+      auto reference = interfaceTextureReference(*it);
+      if (!reference) continue;
+      // A copy: the view points into the option's string, which the next line replaces.
+      const std::string name{*reference};
+      const BoundTexture& bound = options_->textures.find(name)->second;  // lookUpSpecs checked it
       *it = bound.texture.source;
       auto set = [&](std::string_view key, const auto& value, auto nameOf) {
         if (!value) return;
         if (spec.optionIndex(key) < 0) {
           diags_.error(DiagCode::InstanceOptionValue, bound.where,
-                       "the texture '" + std::string(*name) + "' sets '" + std::string(key) + "', but node '" + idOf(node) +
+                       "the texture '" + name + "' sets '" + std::string(key) + "', but node '" + idOf(node) +
                            "' (" + spec.type + ") that samples it has no such option: it samples in its own fixed state",
                        idOf(node), optionLabel(o.name));
           ok = false;
