@@ -19,6 +19,7 @@
 #include "core/node_preview_graph.h"
 #include "nodes/registry.h"
 #include "runtime/image.h"
+#include "runtime/ocean_simulation.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 #include "runtime/vk_preview.h"
@@ -65,7 +66,8 @@ const char* colorName(rt::ColorFormat f) {
   return "";
 }
 
-void printStats(const RenderArgs& args, const std::string& name, const rt::Preview& p, const ViewTransform& view) {
+void printStats(const RenderArgs& args, const std::string& name, const rt::Preview& p, const ViewTransform& view,
+                const Manifest& manifest) {
   std::printf("render %s: %s on %s (%s), %dx%d, camera %s, time %g s, view %s at %g EV\n", name.c_str(),
               args.target.c_str(), p.renderer.c_str(), p.version.c_str(), p.image.width, p.image.height,
               args.camera.c_str(), args.time, std::string(toneMapperName(view.toneMapper)).c_str(), view.exposureEv);
@@ -81,6 +83,12 @@ void printStats(const RenderArgs& args, const std::string& name, const rt::Previ
                 t.name == rt::kDisplayTarget ? "(the PNG: the frame through the output transform)"
                 : t.sampler.empty()          ? "(the frame: linear radiance)"
                                              : t.sampler.c_str());
+  }
+  // The spectral ocean's own float textures (runtime/ocean_simulation.h), beside the targets.
+  if (!manifest.oceans.empty()) {
+    size_t bytes = rt::OceanSimulation::textureBytes(manifest.oceans, manifest.textures);
+    std::printf("ocean simulation: %zu bytes (%s) of float textures (amplitudes, spectra, maps)\n", bytes,
+                formatBytes(bytes).c_str());
   }
   double lo = p.frameMs.front(), hi = p.frameMs.front();
   for (double v : p.frameMs) lo = std::min(lo, v), hi = std::max(hi, v);
@@ -136,7 +144,7 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
                         ? rt::renderVulkanPreview(*result, settings, args.frames, /*warmup=*/args.stats, args.vulkanValidation)
                         : rt::renderPreview(*result, target, settings, args.frames, /*warmup=*/args.stats);
     rt::writePng(args.output, p.image);
-    if (args.stats) printStats(args, graphBaseName(args.graph), p, settings.view);
+    if (args.stats) printStats(args, graphBaseName(args.graph), p, settings.view, result->manifest);
   } catch (const rt::TextureLoadError& e) {
     Diagnostics textureDiags;
     reportUnusableTexture(result->program, &*graph, e.source(), e.why(), textureDiags);

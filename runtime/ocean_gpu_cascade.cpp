@@ -197,6 +197,15 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   checkGl("creating the ocean's GPU cascade");
 }
 
+size_t OceanGpuCascade::textureBytes(int n, bool slopes) {
+  const size_t texels = static_cast<size_t>(n) * static_cast<size_t>(n), fields = slopes ? 2 : 1;
+  const size_t rgba32f = 16;
+  return texels * (rgba32f + 4)                // h0 (RGBA32F) and the frequencies (R32UI)
+         + texels * rgba32f * fields * 2       // the spectra, ping and pong
+         + texels * rgba32f * fields           // the maps
+         + static_cast<size_t>(n / 2) * 8;     // the twiddles (RG32F)
+}
+
 void OceanGpuCascade::drawInto(const Framebuffer& target) const {
   glBindFramebuffer(GL_FRAMEBUFFER, target.id());
   glDrawArrays(GL_TRIANGLES, 0, 3);

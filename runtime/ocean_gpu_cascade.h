@@ -9,6 +9,7 @@
 // Eight real fields ride in four complex transforms, two per RGBA32F texture: the inverse
 // transform of a + i b, with a and b Hermitian spectra, is the real field of a plus i times
 // that of b. Texture A holds (h + i Dx, Dz + i dh/dx), B holds (dh/dz + i dDx/dx, dDz/dz + i dDx/dz).
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +30,11 @@ class OceanGpuCascade {
   // Computes the maps at time t (seconds) with choppiness lambda. Leaves the viewport, the
   // draw framebuffer, the program and texture units 0-2 changed.
   void update(double time, double choppiness);
+
+  // The memory of a cascade's textures at resolution n: h0 and the frequencies, the two
+  // spectra in ping and pong, the maps and the twiddles (half of the spectra and maps
+  // without slopes).
+  static size_t textureBytes(int n, bool slopes);
 
   int resolution() const { return n_; }
   bool computesSlopes() const { return slopes_; }

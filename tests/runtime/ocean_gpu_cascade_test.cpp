@@ -174,6 +174,11 @@ TEST_P(OceanGpu, TheSimulationComputesOnlyTheMapsTheShadersRead) {
   OceanSimulation both(withNormal.oceans, withNormal.textures, api);
   for (int c : {0, 1}) EXPECT_TRUE(both.computesSlopes(0, c)) << "cascade " << c;
   displacement.update(1.0);  // runs
+  // What `render --stats` reports: per 64^2 cascade h0 and frequencies (20 B a texel), ping
+  // and pong spectra and the maps (16 B a texel each; two of each with slopes, one
+  // without) and 32 twiddles: 475,392 B with slopes, 278,784 B without.
+  EXPECT_EQ(OceanSimulation::textureBytes(withNormal.oceans, withNormal.textures), 2u * 475392u);
+  EXPECT_EQ(OceanSimulation::textureBytes(positionOnly.oceans, positionOnly.textures), 2u * 278784u);
 }
 
 INSTANTIATE_TEST_SUITE_P(Apis, OceanGpu, ::testing::Values(GlApi::DesktopGl45, GlApi::Es32),

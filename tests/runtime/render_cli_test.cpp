@@ -43,6 +43,23 @@ TEST(RenderCli, WritesAPngAndPrintsStats) {
   std::filesystem::remove_all(dir);
 }
 
+// A spectral ocean's simulation runs first and its textures are reported beside the render
+// targets: open_ocean's three 256^2 cascades, each 7,603,200 B (ocean_gpu_cascade_test
+// derives the sizes); a graph without an ocean prints no such line.
+TEST(RenderCli, StatsReportTheOceanSimulation) {
+  std::string dir = test::makeTempDir("wg_render_");
+  int code = -1;
+  std::string out =
+      render(test::sourcePath("graphs/open_ocean.json") + " -o " + dir + "/o.png --size 64x36 --stats", &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_NE(out.find("passes: ocean_simulation, "), std::string::npos) << out;
+  EXPECT_NE(out.find("ocean simulation: 22809600 bytes"), std::string::npos) << out;
+  out = render(test::sourcePath("graphs/lake.json") + " -o " + dir + "/l.png --size 64x36 --stats", &code);
+  EXPECT_EQ(code, 0) << out;
+  EXPECT_EQ(out.find("ocean simulation:"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(RenderCli, Es300Target) {
   std::string dir = test::makeTempDir("wg_render_");
   int code = -1;
