@@ -84,6 +84,16 @@ class EditorWindow : private ScriptHost {
 
   // --- model and files ---
   bool loadFromDisk(bool initial);
+  // Before another file is loaded in this window (a subgraph opened, a file opened): the
+  // graph, what was read from disk, the canvas and the selection start empty.
+  void forgetGraph() {
+    editor_ = GraphEditor(Graph{}, &registry_);
+    haveGraph_ = false;
+    diskText_.clear();
+    diskRevision_ = -1;
+    canvas_ = NodeCanvas{};
+    selected_.clear();
+  }
   bool reloadImports();
   void recompile();
   bool writeGraph(const std::string& path);  // the editor's graph to `path`; false when it could not

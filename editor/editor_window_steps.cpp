@@ -104,12 +104,7 @@ std::string EditorWindow::openSubgraph(const std::string& node) {
   std::string written = type.import->path;  // the import as the parent writes it: short, and what the user knows
   parents_.push_back({path_, std::move(editor_), std::move(diskText_), std::move(diskGraph_), diskRevision_, node, std::move(canvas_)});
   path_ = file;
-  editor_ = GraphEditor(Graph{}, &registry_);
-  haveGraph_ = false;
-  diskText_.clear();
-  diskRevision_ = -1;
-  canvas_ = NodeCanvas{};
-  selected_.clear();
+  forgetGraph();
   if (!loadFromDisk(true)) {
     std::string why = errors_.empty() ? "cannot read " + file : formatText(errors_.front());
     OpenParent p = std::move(parents_.back());
@@ -198,12 +193,7 @@ std::string EditorWindow::open(const std::string& path, bool discard) {
   if (!std::filesystem::is_regular_file(path, ec)) return "open: " + path + ": no such file";
   path_ = path;
   options_.graphPath = path;
-  editor_ = GraphEditor(Graph{}, &registry_);
-  haveGraph_ = false;
-  diskText_.clear();
-  diskRevision_ = -1;
-  canvas_ = NodeCanvas{};
-  selected_.clear();
+  forgetGraph();
   watcher_ = FileWatcher(path);
   loadFromDisk(true);  // one that does not load lists why, and reloads once fixed on disk
   recompile();

@@ -23,8 +23,8 @@
 // jobs, each an object with the single-job options as keys ("dir", "manifest", ...,
 // "builtin": true). Exit status: 0 all written; 1 a page failed (message on stderr; the
 // other jobs still run); 2 usage or environment (no Chromium, no playwright-core).
-import { createServer } from 'node:http';
 import { readFile, access } from 'node:fs/promises';
+import { startStaticServer } from './static_server.mjs';
 import { constants } from 'node:fs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -83,8 +83,6 @@ try {
   fail(2, `cannot load playwright-core (run \`npm ci\` in ${clientDir}): ${e.message}`);
 }
 
-const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json',
-  '.png': 'image/png' };
 
 // /client/: this folder; /out<i>/: job i's compiled graph; /scene/: the description's folder.
 const roots = { '/client/': clientDir };
@@ -92,24 +90,7 @@ jobs.forEach((job, i) => { roots[`/out${i}/`] = path.resolve(job.dir); });
 if (args.description) roots['/scene/'] = path.dirname(path.resolve(args.description));
 
 // Static files under the roots; anything else (or outside them) is a 404.
-const server = createServer(async (req, res) => {
-  const url = new URL(req.url, 'http://127.0.0.1');
-  const prefix = Object.keys(roots).find((p) => url.pathname.startsWith(p));
-  const file = prefix && path.resolve(roots[prefix], '.' + decodeURIComponent(url.pathname.slice(prefix.length - 1)));
-  if (!file || !(file + path.sep).startsWith(roots[prefix] + path.sep)) {
-    res.writeHead(404).end();
-    return;
-  }
-  try {
-    const body = await readFile(file);
-    res.writeHead(200, { 'content-type': TYPES[path.extname(file)] ?? 'text/plain', 'cache-control': 'no-store' });
-    res.end(body);
-  } catch {
-    res.writeHead(404).end();
-  }
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
-const origin = `http://127.0.0.1:${server.address().port}`;
+const { server, origin } = await startStaticServer(roots);
 
 // WebGL 2 without a GPU: ANGLE on SwiftShader (Chromium ships it).
 const browser = await chromium.launch({

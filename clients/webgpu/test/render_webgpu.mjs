@@ -11,7 +11,7 @@
 // --scene none draws the water alone, as `render --scene none`.)
 // Exit status: 0 written; 1 the page failed (message on stderr); 2 usage, or Chromium/WebGPU missing.
 import { access, constants, readFile, writeFile } from 'node:fs/promises';
-import { createServer } from 'node:http';
+import { startStaticServer } from '../../three/test/static_server.mjs';
 import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
@@ -59,23 +59,9 @@ try {
 } catch (e) {
   fail(2, `cannot load playwright-core (run \`npm ci\` in clients/webgpu): ${e.message}`);
 }
-const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.json': 'application/json', '.png': 'image/png', '.wasm': 'application/wasm' };
 const roots = { '/webgpu/': path.resolve(here, '..'), '/three/': path.resolve(here, '../../three'),
   '/out/': path.resolve(args.dir), '/scene/': path.dirname(path.resolve(args.description)) };
-const server = createServer(async (req, res) => {
-  const url = new URL(req.url, 'http://127.0.0.1');
-  const prefix = Object.keys(roots).find((p) => url.pathname.startsWith(p));
-  const file = prefix && path.resolve(roots[prefix], '.' + decodeURIComponent(url.pathname.slice(prefix.length - 1)));
-  if (!file || !(file + path.sep).startsWith(roots[prefix] + path.sep)) return res.writeHead(404).end();
-  try {
-    const body = await readFile(file);
-    res.writeHead(200, { 'content-type': TYPES[path.extname(file)] ?? 'text/plain', 'cache-control': 'no-store' });
-    res.end(body);
-  } catch {
-    res.writeHead(404).end();
-  }
-});
-await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+const { server, origin } = await startStaticServer(roots);
 const browser = await chromium.launch({
   executablePath: chromiumPath,
   args: ['--enable-unsafe-webgpu', '--enable-features=Vulkan,WebGPU', '--use-angle=swiftshader',
@@ -90,7 +76,7 @@ try {
     page.on('pageerror', (e) => problems.push(e.message));
     const query = new URLSearchParams({ manifest: `/out/${job.manifest}`, description: `/scene/${path.basename(args.description)}`,
       width, height, camera: job.camera, time: args.time, grid: args.grid, scene: job.scene });
-    await page.goto(`http://127.0.0.1:${server.address().port}/webgpu/test/render.html?${query}`);
+    await page.goto(`${origin}/webgpu/test/render.html?${query}`);
     await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 60000 });
     const result = await page.evaluate(() => window.wgResult);
     await page.close();
