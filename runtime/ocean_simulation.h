@@ -24,7 +24,6 @@ class OceanSimulation {
   void update(double time);
   // The GL texture of a manifest's ocean map (a manifest error when it names none).
   GLuint map(const OceanMapRef& ref) const;
-  bool empty() const { return oceans_.empty(); }
   // The GPU memory the simulation of these oceans holds (every cascade's textures), without
   // a GL context: what `render --stats` reports beside the render targets.
   static size_t textureBytes(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures);
