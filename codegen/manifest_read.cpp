@@ -4,6 +4,7 @@
 // when it is read, not in the middle of a frame.
 #include <algorithm>
 #include <initializer_list>
+#include <iterator>
 
 #include "codegen/manifest.h"
 
@@ -275,9 +276,9 @@ TextureInfo textureOf(const json& t) {
     ref.ocean = integer(*o, "ocean", whatMap);
     ref.cascade = integer(*o, "cascade", whatMap);
     const std::string map = text(*o, "map", whatMap);
-    if (map == ocean::kOceanMapNames[ocean::kDisplacementMap]) ref.map = ocean::kDisplacementMap;
-    else if (map == ocean::kOceanMapNames[ocean::kSlopeMap]) ref.map = ocean::kSlopeMap;
-    else fail(whatMap + " names an unknown map '" + map + "'");
+    auto known = std::find(std::begin(ocean::kOceanMapNames), std::end(ocean::kOceanMapNames), map);
+    if (known == std::end(ocean::kOceanMapNames)) fail(whatMap + " names an unknown map '" + map + "'");
+    ref.map = static_cast<int>(known - std::begin(ocean::kOceanMapNames));
     if (ref.ocean < 0 || ref.cascade < 0 || ref.cascade >= ocean::kMaxCascades)
       fail(whatMap + " names an ocean or cascade out of range");
     if (out.type != Type::Sampler2D) fail(what + " is an ocean map and must be a sampler2D");

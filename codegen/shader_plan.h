@@ -51,7 +51,7 @@ struct VaryingInfo {
 struct OceanMapRef {
   int ocean = 0;
   int cascade = 0;
-  int map = 0;  // kDisplacementMap or kSlopeMap
+  int map = 0;  // kDisplacementMap, kSlopeMap or kFoamMap
   bool operator==(const OceanMapRef&) const = default;
 };
 

@@ -5,6 +5,7 @@
 #include <fftw3.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -248,6 +249,31 @@ OceanFields oceanFields(const OceanCascade& cascade, double time, double choppin
     f.jacobian[i] = (1.0 + choppiness * f.dDxdx[i]) * (1.0 + choppiness * f.dDzdz[i]) -
                     choppiness * choppiness * f.dDxdz[i] * f.dDxdz[i];
   return f;
+}
+
+std::vector<double> oceanJacobian(const OceanCascade& cascade, double time, double choppiness) {
+  int n = cascade.resolution;
+  double dk = 2.0 * kPi / cascade.tileLength;
+  std::vector<std::complex<double>> h = evolveSpectrum(cascade, time);
+  auto wavenumber = [&](size_t i) {
+    double kx = dk * signedIndex(static_cast<int>(i % n), n), kz = dk * signedIndex(static_cast<int>(i / n), n);
+    return std::array<double, 3>{kx, kz, std::hypot(kx, kz)};
+  };
+  auto derivative = [&](int a, int b) {
+    return [&, a, b](size_t i) {
+      auto k = wavenumber(i);
+      // As oceanFields rounds it: -k_a (k_b / k).
+      return std::complex<double>(-k[a] * (k[2] > 0 ? k[b] / k[2] : 0.0), 0.0);
+    };
+  };
+  InverseFft fft(n);
+  std::vector<double> xx = fft.transform(h, derivative(0, 0));
+  std::vector<double> zz = fft.transform(h, derivative(1, 1));
+  std::vector<double> xz = fft.transform(h, derivative(0, 1));
+  std::vector<double> j(xx.size());
+  for (size_t i = 0; i < j.size(); ++i)
+    j[i] = (1.0 + choppiness * xx[i]) * (1.0 + choppiness * zz[i]) - choppiness * choppiness * xz[i] * xz[i];
+  return j;
 }
 
 }  // namespace wg::ocean

@@ -101,6 +101,8 @@ struct OceanFields {
   std::vector<double> jacobian;  // (1 + l dDx/dx)(1 + l dDz/dz) - l^2 (dDx/dz)^2; < 0 where the surface folds
 };
 OceanFields oceanFields(const OceanCascade& cascade, double time, double choppiness);
+// The Jacobian alone (three transforms instead of eight), as oceanFields(...).jacobian.
+std::vector<double> oceanJacobian(const OceanCascade& cascade, double time, double choppiness);
 // The height alone (one transform instead of eight), as oceanFields(...).height.
 std::vector<double> oceanHeight(const OceanCascade& cascade, double time);
 

@@ -7,7 +7,12 @@ namespace wg::ocean {
 
 std::optional<SettingError> validateOcean(const OceanSettings& s) {
   if (auto e = validateSpectrum(s.spectrum)) return e;
-  return validateCascades(s.cascades);
+  if (auto e = validateCascades(s.cascades)) return e;
+  return validateFoam(s.foam);
+}
+
+bool makesFoam(const OceanSettings& s, int cascade) {
+  return cascade >= 0 && cascade < s.foam.cascades && static_cast<size_t>(cascade) < s.cascades.tileLengths.size();
 }
 
 std::string settingsKey(const OceanSettings& s) {
@@ -28,6 +33,9 @@ std::string settingsKey(const OceanSettings& s) {
   add(c.choppiness);
   add(static_cast<double>(c.seed));
   for (double l : c.tileLengths) add(l);
+  const FoamSettings& f = s.foam;
+  for (double x : {f.threshold, f.growth, f.decay, f.step}) add(x);
+  add(f.cascades);
   return key;
 }
 

@@ -6,20 +6,27 @@
 #include <string>
 
 #include "core/ocean_fft_reference.h"
+#include "core/ocean_foam.h"
 #include "core/ocean_spectrum.h"
 
 namespace wg::ocean {
 
-// The two RGBA32F maps each cascade fills (runtime/ocean_gpu_cascade.h):
-//   displacement: (lambda Dx, h, lambda Dz, lambda dDx/dz)
-//   slopes:       (dh/dx, dh/dz, lambda dDx/dx, lambda dDz/dz)
-enum OceanMap : int { kDisplacementMap = 0, kSlopeMap = 1 };
-inline constexpr const char* kOceanMapNames[2] = {"displacement", "slopes"};
+// The maps each cascade fills (runtime/ocean_gpu_cascade.h, runtime/ocean_gpu_foam.h):
+//   displacement (RGBA32F): (lambda Dx, h, lambda Dz, lambda dDx/dz)
+//   slopes (RGBA32F):       (dh/dx, dh/dz, lambda dDx/dx, lambda dDz/dz)
+//   foam (R32F):            the persistent foam in [0, 1] (core/ocean_foam.h)
+enum OceanMap : int { kDisplacementMap = 0, kSlopeMap = 1, kFoamMap = 2 };
+inline constexpr int kOceanMapCount = 3;
+inline constexpr const char* kOceanMapNames[kOceanMapCount] = {"displacement", "slopes", "foam"};
 
 struct OceanSettings {
   SpectrumSettings spectrum;
   CascadeSettings cascades;
+  FoamSettings foam;
 };
+
+// Whether cascade `cascade` makes foam (the first foam.cascades of them).
+bool makesFoam(const OceanSettings& s, int cascade);
 
 // Why settings are meaningless (the option's name and a sentence), or nothing.
 std::optional<SettingError> validateOcean(const OceanSettings& s);

@@ -79,6 +79,7 @@ class EditorWindow : private ScriptHost {
     rt::RenderSettings s;
     s.width = w, s.height = h;
     s.waterGridQuads = grid;
+    s.animation = true;  // the preview's frames follow one another: the ocean's foam continues its steps
     return s;
   }
 

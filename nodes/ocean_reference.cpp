@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct RegisteredOcean {
   ocean::OceanSettings settings;
   std::vector<ocean::OceanCascade> cascades;                           // made on first use
   std::vector<std::deque<std::shared_ptr<const CascadeMaps>>> recent;  // per cascade, newest first
+  std::vector<std::deque<std::shared_ptr<const ocean::FoamMaps>>> recentFoam;
 };
 
 // A probe evaluates every pixel at one or a few times: a handful kept per
@@ -57,9 +59,9 @@ std::shared_ptr<const CascadeMaps> computeMaps(const ocean::OceanCascade& cascad
   return maps;
 }
 
-std::shared_ptr<const CascadeMaps> mapsAt(int id, int cascade, double time) {
-  const std::uint32_t tau = ocean::loopFraction(time);
-  std::lock_guard<std::mutex> lock(registryMutex());
+// The registered ocean `id` with its cascades made, and the index of `cascade` checked;
+// called with the registry's lock held.
+RegisteredOcean& oceanWithCascade(int id, int cascade) {
   auto& reg = registry();
   if (id < 0 || static_cast<size_t>(id) >= reg.size()) throw std::logic_error("ocean reference: unknown ocean id");
   RegisteredOcean& o = *reg[static_cast<size_t>(id)];
@@ -67,17 +69,68 @@ std::shared_ptr<const CascadeMaps> mapsAt(int id, int cascade, double time) {
     for (size_t c = 0; c < o.settings.cascades.tileLengths.size(); ++c)
       o.cascades.push_back(ocean::initialCascade(o.settings.spectrum, o.settings.cascades, static_cast<int>(c)));
     o.recent.resize(o.cascades.size());
+    o.recentFoam.resize(o.cascades.size());
   }
   if (cascade < 0 || static_cast<size_t>(cascade) >= o.cascades.size())
     throw std::logic_error("ocean reference: cascade out of range");
-  auto& recent = o.recent[static_cast<size_t>(cascade)];
+  return o;
+}
+
+template <class T, class Key, class Make>
+std::shared_ptr<const T> cached(std::deque<std::shared_ptr<const T>>& recent, Key key, Key T::*field, Make make) {
   for (const auto& m : recent)
-    if (m->tau == tau) return m;
-  // The fields depend on t only through tau (core/ocean_fft_reference.h).
-  auto maps = computeMaps(o.cascades[static_cast<size_t>(cascade)], time, o.settings.cascades.choppiness, tau);
-  recent.push_front(maps);
+    if ((*m).*field == key) return m;
+  auto made = make();
+  recent.push_front(made);
   if (recent.size() > kTimesKept) recent.pop_back();
-  return maps;
+  return made;
+}
+
+std::shared_ptr<const CascadeMaps> mapsAt(int id, int cascade, double time) {
+  const std::uint32_t tau = ocean::loopFraction(time);
+  std::lock_guard<std::mutex> lock(registryMutex());
+  RegisteredOcean& o = oceanWithCascade(id, cascade);
+  // The fields depend on t only through tau (core/ocean_fft_reference.h).
+  return cached(o.recent[static_cast<size_t>(cascade)], tau, &CascadeMaps::tau, [&] {
+    return computeMaps(o.cascades[static_cast<size_t>(cascade)], time, o.settings.cascades.choppiness, tau);
+  });
+}
+
+std::shared_ptr<const ocean::FoamMaps> foamAt(int id, int cascade, std::int64_t step) {
+  std::lock_guard<std::mutex> lock(registryMutex());
+  RegisteredOcean& o = oceanWithCascade(id, cascade);
+  return cached(o.recentFoam[static_cast<size_t>(cascade)], step, &ocean::FoamMaps::step, [&] {
+    return std::make_shared<const ocean::FoamMaps>(ocean::replayFoam(
+        o.cascades[static_cast<size_t>(cascade)], o.settings.cascades.choppiness, o.settings.foam, step));
+  });
+}
+
+// The four texels around the world point (x, z) of an N x N map of tile L and the
+// weights between them, as wg_ocean_map takes them; nothing for a point that is not
+// finite.
+struct Bilinear {
+  size_t i00, i10, i01, i11;
+  double fu, fv;
+};
+std::optional<Bilinear> bilinearAt(const ocean::OceanSettings& s, int cascade, double x, double z) {
+  const int n = s.cascades.resolution;
+  // The constant the shader multiplies by, rounded to float as its literal is.
+  const double texelsPerMetre = static_cast<float>(n / s.cascades.tileLengths[static_cast<size_t>(cascade)]);
+  if (!std::isfinite(x) || !std::isfinite(z)) return std::nullopt;
+  double u = x * texelsPerMetre, v = z * texelsPerMetre;
+  if (!std::isfinite(u) || !std::isfinite(v)) return std::nullopt;
+  double bu = std::floor(u), bv = std::floor(v);
+  auto wrap = [n](double b) { return static_cast<int>(b - n * std::floor(b / n)) & (n - 1); };
+  int x0 = wrap(bu), z0 = wrap(bv), x1 = (x0 + 1) & (n - 1), z1 = (z0 + 1) & (n - 1);
+  auto at = [n](int jx, int jz) { return static_cast<size_t>(jz) * n + jx; };
+  return Bilinear{at(x0, z0), at(x1, z0), at(x0, z1), at(x1, z1), u - bu, v - bv};
+}
+
+template <class Texel>
+double blend(const Bilinear& b, Texel texel) {
+  double bottom = texel(b.i00) + (texel(b.i10) - texel(b.i00)) * b.fu;
+  double top = texel(b.i01) + (texel(b.i11) - texel(b.i01)) * b.fu;
+  return bottom + (top - bottom) * b.fv;
 }
 
 }  // namespace
@@ -106,29 +159,27 @@ const ocean::OceanSettings& settingsOf(int id) {
 
 MapSample sampleCascade(int id, int cascade, double time, double x, double z) {
   auto maps = mapsAt(id, cascade, time);
-  const ocean::OceanSettings& s = settingsOf(id);
-  const int n = s.cascades.resolution;
-  // The constant the shader multiplies by, rounded to float as its literal is.
-  const double texelsPerMetre = static_cast<float>(n / s.cascades.tileLengths[static_cast<size_t>(cascade)]);
   MapSample out;
-  if (!std::isfinite(x) || !std::isfinite(z)) return out;
-  double u = x * texelsPerMetre, v = z * texelsPerMetre;
-  if (!std::isfinite(u) || !std::isfinite(v)) return out;
-  double bu = std::floor(u), bv = std::floor(v);
-  double fu = u - bu, fv = v - bv;
-  auto wrap = [n](double b) { return static_cast<int>(b - n * std::floor(b / n)) & (n - 1); };
-  int x0 = wrap(bu), z0 = wrap(bv), x1 = (x0 + 1) & (n - 1), z1 = (z0 + 1) & (n - 1);
-  auto at = [n](int jx, int jz) { return static_cast<size_t>(jz) * n + jx; };
-  auto blend = [&](const std::vector<std::array<double, 4>>& m, std::array<double, 4>& result) {
-    for (int c = 0; c < 4; ++c) {
-      double bottom = m[at(x0, z0)][c] + (m[at(x1, z0)][c] - m[at(x0, z0)][c]) * fu;
-      double top = m[at(x0, z1)][c] + (m[at(x1, z1)][c] - m[at(x0, z1)][c]) * fu;
-      result[c] = bottom + (top - bottom) * fv;
-    }
-  };
-  blend(maps->displacement, out.displacement);
-  blend(maps->slopes, out.slopes);
+  auto b = bilinearAt(settingsOf(id), cascade, x, z);
+  if (!b) return out;
+  for (int c = 0; c < 4; ++c) {
+    out.displacement[c] = blend(*b, [&](size_t i) { return maps->displacement[i][c]; });
+    out.slopes[c] = blend(*b, [&](size_t i) { return maps->slopes[i][c]; });
+  }
   return out;
+}
+
+double sampleFoam(int id, int cascade, double time, double x, double z) {
+  const ocean::OceanSettings& s = settingsOf(id);
+  if (!ocean::makesFoam(s, cascade)) return 0;
+  const std::int64_t step = ocean::stepIndex(s.foam, time);
+  auto foam = foamAt(id, cascade, step);
+  auto b = bilinearAt(s, cascade, x, z);
+  if (!b) return 0;
+  // In time at each texel, then between the texels, as the simulation writes its map and
+  // the shader reads it.
+  const double fraction = ocean::foamFraction(s.foam, time);
+  return blend(*b, [&](size_t i) { return foam->current[i] + (foam->next[i] - foam->current[i]) * fraction; });
 }
 
 }  // namespace wg::nodes::oceanref

@@ -23,5 +23,9 @@ struct MapSample {
 };
 // Cascade `cascade` of ocean `id` at time t, at the world point (x, z).
 MapSample sampleCascade(int id, int cascade, double time, double x, double z);
+// The persistent foam of cascade `cascade` at time t at the world point (x, z): bilinear in
+// the replayed maps f_n and f_(n+1) (core/ocean_foam.h), then between them in time; 0 for a
+// cascade that makes no foam.
+double sampleFoam(int id, int cascade, double time, double x, double z);
 
 }  // namespace wg::nodes::oceanref

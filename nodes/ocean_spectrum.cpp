@@ -58,6 +58,12 @@ ocean::OceanSettings parseOceanSettings(const OptionReader& o) {
   for (const auto& l : o.json("tile_lengths")) c.tileLengths.push_back(l.get<double>());
   c.choppiness = o.number("choppiness");
   c.seed = o.wholeNumber("seed");
+  ocean::FoamSettings& f = s.foam;
+  f.threshold = o.number("foam_threshold");
+  f.growth = o.number("foam_growth");
+  f.decay = o.number("foam_decay");
+  f.step = o.number("foam_step");
+  f.cascades = o.integer("foam_cascades");
   return s;
 }
 
@@ -129,6 +135,18 @@ NodeSpec oceanSpectrumNode() {
                     "lambda: the horizontal displacement's scale; positive "
                     "sharpens crests"),
       seedOption(),
+      ports::number("foam_threshold", 0.6, -1, 2,
+                    "the persistent foam (ocean_foam) grows where a cascade's Jacobian J is below this "
+                    "(1 on still water, below 0 where the surface folds)"),
+      ports::number("foam_growth", 3, 0, 1000, "foam per second per unit of J below foam_threshold"),
+      ports::number("foam_decay", 1.5, 0.02, 100, "seconds for foam to fall to 1/e; at most 100 foam steps"),
+      ports::knob(ports::number("foam_step", 0.1, ocean::kFoamMinStep, ocean::kFoamMaxStep,
+                                "seconds between the foam's steps (a frame interpolates between two); a still "
+                                "frame replays 5 decay times of them"),
+                  {0.2, 0.1}),
+      ports::integer("foam_cascades", 4, 1, 4,
+                     "only the first (longest) this many cascades make foam: a short tile's folds are "
+                     "spray too small to foam, and each foam cascade costs its own steps"),
   };
   s.parseOptions = optionParser(parseOceanSettings);
   s.checkOptions = [](const ParsedOptions& options) -> std::optional<NodeSpec::OptionProblem> {

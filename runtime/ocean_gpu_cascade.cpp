@@ -5,10 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "runtime/ocean_gpu_passes.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
 namespace {
+
+using namespace oceangpu;
 
 // Each bin's phase is the 32-bit product n tau (uint arithmetic wraps modulo 2^32, as the
 // reference's does); its top 24 bits become a float exactly, so the only rounding is the
@@ -20,7 +23,7 @@ uniform uint u_tau;
 uniform float u_dk;
 uniform int u_n;
 layout(location = 0) out vec4 o_a;
-#if WG_OCEAN_SLOPES
+#if WG_OCEAN_SLOPES && !WG_OCEAN_JACOBIAN_ONLY
 layout(location = 1) out vec4 o_b;
 #endif
 
@@ -41,10 +44,15 @@ void main() {
   vec2 ih = timesI(h);
   vec2 dx = unit.x * ih, dz = unit.y * ih;          // i k/|k| h
   vec2 sx = k.x * ih, sz = k.y * ih;                // i k h
+  vec2 dxx = -k.x * unit.x * h, dzz = -k.y * unit.y * h, dxz = -k.x * unit.y * h;
+#if WG_OCEAN_JACOBIAN_ONLY
+  // The second texture alone, in the first output: the fields the foam's J needs.
+  o_a = vec4(sz + timesI(dxx), dzz + timesI(dxz));
+#else
   o_a = vec4(h + timesI(dx), dz + timesI(sx));
 #if WG_OCEAN_SLOPES
-  vec2 dxx = -k.x * unit.x * h, dzz = -k.y * unit.y * h, dxz = -k.x * unit.y * h;
   o_b = vec4(sz + timesI(dxx), dzz + timesI(dxz));
+#endif
 #endif
 }
 )glsl";
@@ -113,41 +121,10 @@ void main() {
 }
 )glsl";
 
-Texture floatTexture(int width, int height, GLenum format) {
-  Texture t = makeTexture();
-  glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
-  // Integer textures are complete only with nearest filtering; every pass uses texelFetch.
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  return t;
-}
-
-// A framebuffer drawing into `second` too when there is one (the slope fields).
-Framebuffer targetOf(const Texture& first, const Texture* second, const char* what) {
-  Framebuffer f = makeFramebuffer();
-  glBindFramebuffer(GL_FRAMEBUFFER, f.id());
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, first.id(), 0);
-  if (second) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, second->id(), 0);
-  const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glDrawBuffers(second ? 2 : 1, buffers);
-  if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-    throw RuntimeError(RuntimeError::Kind::Driver,
-                       std::string("the GL driver cannot render into the ocean's RGBA32F ") + what + " textures");
-  return f;
-}
-
-GLint location(const Program& p, const char* name) { return glGetUniformLocation(p.id(), name); }
-
-void bindTexture(int unit, const Texture& t) {
-  glActiveTexture(GL_TEXTURE0 + unit);
-  glBindTexture(GL_TEXTURE_2D, t.id());
-}
-
 }  // namespace
 
-OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes)
-    : n_(cascade.resolution), slopes_(slopes), tileLength_(cascade.tileLength) {
+OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes, bool jacobian)
+    : n_(cascade.resolution), slopes_(slopes), jacobian_(jacobian), tileLength_(cascade.tileLength) {
   const size_t count = static_cast<size_t>(n_) * n_;
   std::vector<float> h0(count * 4);
   for (int iz = 0; iz < n_; ++iz)
@@ -184,16 +161,21 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
 
-  const std::string header = sceneShaderHeader(api) + "#define WG_OCEAN_SLOPES " + (slopes_ ? "1" : "0") + "\n";
-  const std::string vertex = sceneShaderSources(api).fullscreenVertex;
-  auto link = [&](const char* name, const char* body) {
-    return linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", vertex},
-                        {GL_FRAGMENT_SHADER, std::string(name) + ".frag", header + body}},
-                       std::string("the ocean's ") + name + " pass");
+  auto link = [&](const char* name, const char* body, bool slopes, bool jacobianOnly = false) {
+    return linkPass(api, name,
+                    std::string("#define WG_OCEAN_SLOPES ") + (slopes ? "1" : "0") + "\n#define WG_OCEAN_JACOBIAN_ONLY " +
+                        (jacobianOnly ? "1" : "0") + "\n",
+                    body);
   };
-  evolve_ = link("ocean_evolve", kEvolve);
-  stockham_ = link("ocean_stockham", kStockham);
-  pack_ = link("ocean_pack", kPack);
+  evolve_ = link("ocean_evolve", kEvolve, slopes_);
+  stockham_ = link("ocean_stockham", kStockham, slopes_);
+  pack_ = link("ocean_pack", kPack, slopes_);
+  if (jacobian) {
+    evolveJacobian_ = link("ocean_evolve_jacobian", kEvolve, false, true);
+    stockhamSingle_ = slopes_ ? link("ocean_stockham_single", kStockham, false) : Program();
+    for (int s = 0; s < 2; ++s) jacobianTargets_[s] = targetOf(spectra_[s][0], nullptr, "spectrum");
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  }
   checkGl("creating the ocean's GPU cascade");
 }
 
@@ -211,38 +193,60 @@ void OceanGpuCascade::drawInto(const Framebuffer& target) const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
-void OceanGpuCascade::update(double time, double choppiness) {
+void OceanGpuCascade::beginPasses() const {
   glViewport(0, 0, n_, n_);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
   glBindVertexArray(emptyVao_.id());
+}
 
-  glUseProgram(evolve_.id());
+void OceanGpuCascade::evolve(const Program& program, double time, const Framebuffer& target) const {
+  glUseProgram(program.id());
   bindTexture(0, h0_);
   bindTexture(1, frequency_);
-  glUniform1i(location(evolve_, "u_h0"), 0);
-  glUniform1i(location(evolve_, "u_frequency"), 1);
-  glUniform1ui(location(evolve_, "u_tau"), ocean::loopFraction(time));
-  glUniform1f(location(evolve_, "u_dk"), static_cast<float>(2.0 * ocean::kPi / tileLength_));
-  glUniform1i(location(evolve_, "u_n"), n_);
-  drawInto(spectraTargets_[0]);
+  glUniform1i(location(program, "u_h0"), 0);
+  glUniform1i(location(program, "u_frequency"), 1);
+  glUniform1ui(location(program, "u_tau"), ocean::loopFraction(time));
+  glUniform1f(location(program, "u_dk"), static_cast<float>(2.0 * ocean::kPi / tileLength_));
+  glUniform1i(location(program, "u_n"), n_);
+  drawInto(target);
+}
 
-  glUseProgram(stockham_.id());
-  glUniform1i(location(stockham_, "u_a"), 0);
-  glUniform1i(location(stockham_, "u_b"), 1);
-  glUniform1i(location(stockham_, "u_twiddle"), 2);
-  glUniform1i(location(stockham_, "u_n"), n_);
+int OceanGpuCascade::transform(const Program& stockham, bool both, const Framebuffer (&targets)[2]) const {
+  glUseProgram(stockham.id());
+  glUniform1i(location(stockham, "u_a"), 0);
+  glUniform1i(location(stockham, "u_b"), 1);
+  glUniform1i(location(stockham, "u_twiddle"), 2);
+  glUniform1i(location(stockham, "u_n"), n_);
   bindTexture(2, twiddle_);
   int current = 0;
   for (int vertical = 0; vertical < 2; ++vertical)
     for (int ns = 1; ns < n_; ns *= 2) {
       bindTexture(0, spectra_[current][0]);
-      if (slopes_) bindTexture(1, spectra_[current][1]);
-      glUniform1i(location(stockham_, "u_ns"), ns);
-      glUniform1i(location(stockham_, "u_vertical"), vertical);
-      drawInto(spectraTargets_[1 - current]);
+      if (both) bindTexture(1, spectra_[current][1]);
+      glUniform1i(location(stockham, "u_ns"), ns);
+      glUniform1i(location(stockham, "u_vertical"), vertical);
+      drawInto(targets[1 - current]);
       current = 1 - current;
     }
+  return current;
+}
+
+const Texture& OceanGpuCascade::jacobianFields(double time) {
+  if (!jacobian_) throw std::logic_error("this ocean cascade was not made to compute its Jacobian's fields alone");
+  beginPasses();
+  evolve(evolveJacobian_, time, jacobianTargets_[0]);
+  const int current = transform(slopes_ ? stockhamSingle_ : stockham_, false, jacobianTargets_);
+  checkGl("the ocean's Jacobian passes");
+  return spectra_[current][0];
+}
+
+void OceanGpuCascade::update(double time, double choppiness) {
+  beginPasses();
+
+  evolve(evolve_, time, spectraTargets_[0]);
+
+  const int current = transform(stockham_, slopes_, spectraTargets_);
 
   glUseProgram(pack_.id());
   bindTexture(0, spectra_[current][0]);

@@ -25,11 +25,19 @@ class OceanGpuCascade {
   // The GL context must be current; `api` is Gl330 or Es300. Without `slopes` (nothing
   // reads the slope map) only the first texture's two transforms run, half the work, and
   // the displacement map's w is 0.
-  OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes = true);
+  // With `jacobian` (the foam reads this cascade) it can also transform the Jacobian's
+  // fields alone (jacobianFields).
+  OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes = true, bool jacobian = false);
 
   // Computes the maps at time t (seconds) with choppiness lambda. Leaves the viewport, the
   // draw framebuffer, the program and texture units 0-2 changed.
   void update(double time, double choppiness);
+
+  // The second texture's fields at time t alone (one texture's evolution and transform, half
+  // of update's work with slopes): texel (jx, jz) holds (dh/dz, dDx/dx, dDz/dz, dDx/dz)
+  // without the choppiness. The texture is the cascade's scratch: valid until the next
+  // update or jacobianFields. Leaves the same state changed as update.
+  const Texture& jacobianFields(double time);
 
   // The memory of a cascade's textures at resolution n: h0 and the frequencies, the two
   // spectra in ping and pong, the maps and the twiddles (half of the spectra and maps
@@ -51,9 +59,15 @@ class OceanGpuCascade {
  private:
   std::vector<float> readMap(int which) const;
   void drawInto(const Framebuffer& target) const;
+  void beginPasses() const;
+  void evolve(const Program& program, double time, const Framebuffer& target) const;
+  // The Stockham stages from spectra_[0] (both textures or the first alone) ping-ponging
+  // through `targets`; returns the index of the spectra holding the result.
+  int transform(const Program& stockham, bool both, const Framebuffer (&targets)[2]) const;
 
   int n_ = 0;
   bool slopes_ = true;
+  bool jacobian_ = false;
   double tileLength_ = 0;
   Texture h0_, frequency_, twiddle_;
   Texture spectra_[2][2];  // [ping or pong][A or B]
@@ -62,6 +76,9 @@ class OceanGpuCascade {
   Framebuffer mapTarget_;
   VertexArray emptyVao_;
   Program evolve_, stockham_, pack_;
+  // The Jacobian's fields alone, into spectra_[.][0] (with `jacobian`).
+  Program evolveJacobian_, stockhamSingle_;
+  Framebuffer jacobianTargets_[2];
 };
 
 }  // namespace wg::rt

@@ -32,10 +32,21 @@ ocean::OceanSettings oceanSettings(const OceanInfo& info) {
   return settings;
 }
 
-// Whether a shader samples the slope map of cascade `cascade` of ocean `ocean`.
-bool slopeMapRead(const std::vector<TextureInfo>& textures, int ocean, int cascade) {
-  const OceanMapRef slopes{ocean, cascade, ocean::kSlopeMap};
-  return std::any_of(textures.begin(), textures.end(), [&](const TextureInfo& t) { return t.ocean && *t.ocean == slopes; });
+// Whether a shader samples map `map` of cascade `cascade` of ocean `ocean`.
+bool mapRead(const std::vector<TextureInfo>& textures, int ocean, int cascade, int map) {
+  const OceanMapRef ref{ocean, cascade, map};
+  return std::any_of(textures.begin(), textures.end(), [&](const TextureInfo& t) { return t.ocean && *t.ocean == ref; });
+}
+
+// Whether the foam of cascade `cascade` of ocean `ocean` is read (a manifest error where
+// the settings give that cascade no foam: no shader the compiler writes samples one).
+bool foamRead(const std::vector<TextureInfo>& textures, const ocean::OceanSettings& settings, int ocean, int cascade,
+              const std::string& nodeId) {
+  if (!mapRead(textures, ocean, cascade, ocean::kFoamMap)) return false;
+  if (!ocean::makesFoam(settings, cascade))
+    manifestError("an ocean texture reads the foam of ocean " + nodeId + " cascade " + std::to_string(cascade) +
+                  ", which its foam_cascades gives no foam");
+  return true;
 }
 
 }  // namespace
@@ -46,10 +57,13 @@ OceanSimulation::OceanSimulation(const std::vector<OceanInfo>& oceans, const std
     const ocean::OceanSettings settings = oceanSettings(info);
     Ocean o;
     o.choppiness = settings.cascades.choppiness;
-    for (size_t c = 0; c < settings.cascades.tileLengths.size(); ++c)
-      o.cascades.push_back(std::make_unique<OceanGpuCascade>(
-          ocean::initialCascade(settings.spectrum, settings.cascades, static_cast<int>(c)), api,
-          slopeMapRead(textures, static_cast<int>(oceans_.size()), static_cast<int>(c))));
+    const int index = static_cast<int>(oceans_.size());
+    for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
+      const bool foam = foamRead(textures, settings, index, c, info.nodeId);
+      o.cascades.push_back(std::make_unique<OceanGpuCascade>(ocean::initialCascade(settings.spectrum, settings.cascades, c),
+                                                             api, mapRead(textures, index, c, ocean::kSlopeMap), foam));
+      o.foam.push_back(foam ? std::make_unique<OceanGpuFoam>(settings.cascades.resolution, settings.foam, api) : nullptr);
+    }
     oceans_.push_back(std::move(o));
   }
 }
@@ -58,16 +72,35 @@ size_t OceanSimulation::textureBytes(const std::vector<OceanInfo>& oceans, const
   size_t bytes = 0;
   for (size_t o = 0; o < oceans.size(); ++o) {
     const ocean::OceanSettings settings = oceanSettings(oceans[o]);
-    for (size_t c = 0; c < settings.cascades.tileLengths.size(); ++c)
+    for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
       bytes += OceanGpuCascade::textureBytes(settings.cascades.resolution,
-                                             slopeMapRead(textures, static_cast<int>(o), static_cast<int>(c)));
+                                             mapRead(textures, static_cast<int>(o), c, ocean::kSlopeMap));
+      if (foamRead(textures, settings, static_cast<int>(o), c, oceans[o].nodeId))
+        bytes += OceanGpuFoam::textureBytes(settings.cascades.resolution);
+    }
   }
   return bytes;
 }
 
 void OceanSimulation::update(double time) {
   for (auto& o : oceans_)
-    for (auto& c : o.cascades) c->update(time, o.choppiness);
+    for (size_t c = 0; c < o.cascades.size(); ++c) {
+      // The foam first: its steps use the cascade's scratch spectra, which update refills.
+      if (o.foam[c]) o.foam[c]->update(time, o.choppiness, *o.cascades[c], foamHistory_);
+      o.cascades[c]->update(time, o.choppiness);
+    }
+}
+
+int OceanSimulation::lastFoamSteps() const {
+  int steps = 0;
+  for (const auto& o : oceans_)
+    for (const auto& f : o.foam)
+      if (f) steps += f->lastSteps();
+  return steps;
+}
+
+bool OceanSimulation::computesFoam(int ocean, int cascade) const {
+  return oceans_.at(static_cast<size_t>(ocean)).foam.at(static_cast<size_t>(cascade)) != nullptr;
 }
 
 bool OceanSimulation::computesSlopes(int ocean, int cascade) const {
@@ -83,6 +116,12 @@ GLuint OceanSimulation::map(const OceanMapRef& ref) const {
   if (ref.map == ocean::kSlopeMap && !c.computesSlopes())
     manifestError("an ocean texture reads the slope map of ocean " + std::to_string(ref.ocean) + " cascade " +
                   std::to_string(ref.cascade) + ", which the simulation was not asked to compute");
+  if (ref.map == ocean::kFoamMap) {
+    if (!computesFoam(ref.ocean, ref.cascade))
+      manifestError("an ocean texture reads the foam of ocean " + std::to_string(ref.ocean) + " cascade " +
+                    std::to_string(ref.cascade) + ", which the simulation was not asked to compute");
+    return oceans_[static_cast<size_t>(ref.ocean)].foam[static_cast<size_t>(ref.cascade)]->map();
+  }
   return ref.map == ocean::kSlopeMap ? c.slopeMap() : c.displacementMap();
 }
 

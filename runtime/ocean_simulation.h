@@ -8,6 +8,7 @@
 
 #include "codegen/shader_plan.h"
 #include "runtime/ocean_gpu_cascade.h"
+#include "runtime/ocean_gpu_foam.h"
 
 namespace wg::rt {
 
@@ -19,23 +20,31 @@ class OceanSimulation {
   // them samples computes its displacement alone (half the transforms).
   OceanSimulation(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures, SceneShaderApi api);
 
-  // Every cascade's maps at time t (seconds). Leaves the viewport, the framebuffer, the
-  // program and texture units 0-2 changed.
+  // Every cascade's maps at time t (seconds), and the foam of those whose foam map a shader
+  // samples. Leaves the viewport, the framebuffer, the program and texture units 0-2
+  // changed.
   void update(double time);
+  // How the foam reaches a frame's time (Replay unless set: a frame depends on its time alone).
+  void setFoamHistory(FoamHistory history) { foamHistory_ = history; }
+  // The foam steps the last update ran, over every cascade.
+  int lastFoamSteps() const;
   // The GL texture of a manifest's ocean map (a manifest error when it names none).
   GLuint map(const OceanMapRef& ref) const;
   // The GPU memory the simulation of these oceans holds (every cascade's textures), without
   // a GL context: what `render --stats` reports beside the render targets.
   static size_t textureBytes(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures);
-  // Whether cascade `cascade` of ocean `ocean` computes the slope fields.
+  // Whether cascade `cascade` of ocean `ocean` computes the slope fields, and its foam.
   bool computesSlopes(int ocean, int cascade) const;
+  bool computesFoam(int ocean, int cascade) const;
 
  private:
   struct Ocean {
     double choppiness = 0;
     std::vector<std::unique_ptr<OceanGpuCascade>> cascades;
+    std::vector<std::unique_ptr<OceanGpuFoam>> foam;  // per cascade, null where no shader reads it
   };
   std::vector<Ocean> oceans_;
+  FoamHistory foamHistory_ = FoamHistory::Replay;
 };
 
 }  // namespace wg::rt

@@ -506,6 +506,7 @@ struct Renderer::Impl {
 
   // Every ocean's cascades at the scene's time (runtime/ocean_simulation.h).
   void oceanSimulationPass() {
+    oceans->setFoamHistory(settings.animation ? FoamHistory::Continue : FoamHistory::Replay);
     oceans->update(settings.scene.time);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, settings.width, settings.height);

@@ -40,6 +40,10 @@ struct RenderSettings {
   // Planar reflection clipped by an oblique near plane on the water (the stylized water shader) instead of
   // a user clip plane (the classic WebGL water renderer's gl_ClipDistance; discard on ES).
   bool obliqueReflection = false;
+  // Frames that follow one another in time (a preview, an animation): the spectral ocean's
+  // foam continues the previous frame's steps instead of replaying its history for each
+  // frame (runtime/ocean_gpu_foam.h, FoamHistory). Off, a frame depends on its time alone.
+  bool animation = false;
 };
 
 // A frame read back: rows top to bottom, 4 channels.

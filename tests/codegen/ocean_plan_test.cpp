@@ -70,6 +70,10 @@ TEST(OceanPlan, OpenOceanCompilesForEveryTargetWithItsSimulationPlanned) {
       auto names = textureNames(m);
       EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
     }
+  // The persistent foam of the two longest cascades (foam_cascades 2), none of the third.
+  auto names = textureNames(m);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_EQ(std::find(names.begin(), names.end(), "u_ocean0_foam" + std::to_string(c)) != names.end(), c < 2) << c;
   // The manifest reads back as written.
   Manifest back = Manifest::fromJson(m.toJson());
   EXPECT_EQ(back.fileText(), m.fileText());

@@ -78,8 +78,8 @@ void main() {
   vec4 n1_displaced_t6 = n1_displaced_t2 * wg_ocean_map(u_ocean0_slopes0, n1_displaced_t1, 2.1333334, 256) + n1_displaced_t3 * wg_ocean_map(u_ocean0_slopes1, n1_displaced_t1, 10.666667, 256) + n1_displaced_t4 * wg_ocean_map(u_ocean0_slopes2, n1_displaced_t1, 51.2, 256);
   vec3 n1_displaced_position = (n1_displaced_t0 + n1_displaced_t5.xyz);
   vec3 n1_displaced_normal = wg_ocean_normal(n1_displaced_t6, n1_displaced_t5.w);
-  vec3 n8_surface_position = (n1_displaced_position + vec3(0.0));
-  gl_Position = u_view_projection * vec4(n8_surface_position, 1.0);
-  v_world_position = n8_surface_position;
+  vec3 n10_surface_position = (n1_displaced_position + vec3(0.0));
+  gl_Position = u_view_projection * vec4(n10_surface_position, 1.0);
+  v_world_position = n10_surface_position;
   v0_displaced_undisplaced = n1_displaced_t0;
 }

@@ -18,11 +18,13 @@ layout(std140, set = 0, binding = 0) uniform WgUniforms {
 };
 layout(set = 0, binding = 1) uniform sampler2D u_ocean0_displacement0;
 layout(set = 0, binding = 2) uniform sampler2D u_ocean0_slopes0;
-layout(set = 0, binding = 3) uniform sampler2D u_ocean0_displacement1;
-layout(set = 0, binding = 4) uniform sampler2D u_ocean0_slopes1;
-layout(set = 0, binding = 5) uniform sampler2D u_ocean0_displacement2;
-layout(set = 0, binding = 6) uniform sampler2D u_ocean0_slopes2;
-layout(set = 0, binding = 7) uniform samplerCube u_environment;
+layout(set = 0, binding = 3) uniform sampler2D u_ocean0_foam0;
+layout(set = 0, binding = 4) uniform sampler2D u_ocean0_displacement1;
+layout(set = 0, binding = 5) uniform sampler2D u_ocean0_slopes1;
+layout(set = 0, binding = 6) uniform sampler2D u_ocean0_foam1;
+layout(set = 0, binding = 7) uniform sampler2D u_ocean0_displacement2;
+layout(set = 0, binding = 8) uniform sampler2D u_ocean0_slopes2;
+layout(set = 0, binding = 9) uniform samplerCube u_environment;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
 
@@ -224,30 +226,35 @@ vec3 wg_ocean_normal(vec4 slopes, float lDxz) {
 
 void main() {
   vec3 b_view_direction = wg_safe_normalize_vec3(u_camera_position - v_world_position);
-  vec3 n2_detail_t0 = v0_displaced_undisplaced;
-  float n2_detail_t1 = wg_ocean_fade(distance(n2_detail_t0, u_camera_position), 1440.0);
-  float n2_detail_t2 = wg_ocean_fade(distance(n2_detail_t0, u_camera_position), 288.0);
-  float n2_detail_t3 = wg_ocean_fade(distance(n2_detail_t0, u_camera_position), 60.0);
-  vec4 n2_detail_t4 = n2_detail_t1 * wg_ocean_map(u_ocean0_displacement0, n2_detail_t0.xz, 2.1333334, 256) + n2_detail_t2 * wg_ocean_map(u_ocean0_displacement1, n2_detail_t0.xz, 10.666667, 256) + n2_detail_t3 * wg_ocean_map(u_ocean0_displacement2, n2_detail_t0.xz, 51.2, 256);
-  vec4 n2_detail_t5 = n2_detail_t1 * wg_ocean_map(u_ocean0_slopes0, n2_detail_t0.xz, 2.1333334, 256) + n2_detail_t2 * wg_ocean_map(u_ocean0_slopes1, n2_detail_t0.xz, 10.666667, 256) + n2_detail_t3 * wg_ocean_map(u_ocean0_slopes2, n2_detail_t0.xz, 51.2, 256);
-  vec3 n2_detail_normal = wg_ocean_normal(n2_detail_t5, n2_detail_t4.w);
-  float n2_detail_jacobian = wg_ocean_jacobian(n2_detail_t5, n2_detail_t4.w);
-  float n3_whitecaps = wg_remap_clamped_float(n2_detail_jacobian, p_foam_start, p_foam_full, 0.0, 1.0);
-  vec3 n4_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
-  float n5_body_fresnel_t0 = wg_cos_incidence(n2_detail_normal, b_view_direction);
-  float n5_body_fresnel_t1 = wg_fresnel_schlick(n5_body_fresnel_t0, 0.02);
-  vec3 n6_body_sky_t0 = wg_reflect_dir(n2_detail_normal, b_view_direction);
-  vec3 n6_body_sky_color = texture(u_environment, n6_body_sky_t0).rgb;
-  vec3 n7_body_blend = mix(n4_deep_color, n6_body_sky_color, vec3(n5_body_fresnel_t1));
-  vec4 n10_ggx_t0 = wg_ggx_specular(n2_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
-  float n10_ggx_t1 = (n10_ggx_t0.x * n10_ggx_t0.w);
-  vec3 n10_ggx_color = (vec3(1.0, 0.82757086, 0.60382736) * n10_ggx_t1);
-  float n12_p_split_y = v_world_position.y;
-  vec3 n13_sss_color = wg_srgb_to_linear_vec3(p_sss_color);
-  float n14_sss_t0 = (p_sss_strength * wg_subsurface_intensity_unit(n2_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n12_p_split_y));
-  vec3 n14_sss_color = (n13_sss_color * n14_sss_t0);
-  vec3 n15_glow = (n7_body_blend + n14_sss_color);
-  vec3 n16_lit = (n15_glow + n10_ggx_color);
-  vec3 n17_color = mix(n16_lit, vec3(0.82757086, 0.8900054, 0.93310684), vec3(n3_whitecaps));
-  o_color = vec4(n17_color, 1.0);
+  vec3 n2_foam_t0 = v0_displaced_undisplaced;
+  float n2_foam_t1 = wg_ocean_fade(distance(n2_foam_t0, u_camera_position), 1440.0);
+  float n2_foam_t2 = wg_ocean_fade(distance(n2_foam_t0, u_camera_position), 288.0);
+  float n2_foam = min(n2_foam_t1 * wg_ocean_map(u_ocean0_foam0, n2_foam_t0.xz, 2.1333334, 256).x + n2_foam_t2 * wg_ocean_map(u_ocean0_foam1, n2_foam_t0.xz, 10.666667, 256).x, 1.0);
+  vec3 n3_detail_t0 = v0_displaced_undisplaced;
+  float n3_detail_t1 = wg_ocean_fade(distance(n3_detail_t0, u_camera_position), 1440.0);
+  float n3_detail_t2 = wg_ocean_fade(distance(n3_detail_t0, u_camera_position), 288.0);
+  float n3_detail_t3 = wg_ocean_fade(distance(n3_detail_t0, u_camera_position), 60.0);
+  vec4 n3_detail_t4 = n3_detail_t1 * wg_ocean_map(u_ocean0_displacement0, n3_detail_t0.xz, 2.1333334, 256) + n3_detail_t2 * wg_ocean_map(u_ocean0_displacement1, n3_detail_t0.xz, 10.666667, 256) + n3_detail_t3 * wg_ocean_map(u_ocean0_displacement2, n3_detail_t0.xz, 51.2, 256);
+  vec4 n3_detail_t5 = n3_detail_t1 * wg_ocean_map(u_ocean0_slopes0, n3_detail_t0.xz, 2.1333334, 256) + n3_detail_t2 * wg_ocean_map(u_ocean0_slopes1, n3_detail_t0.xz, 10.666667, 256) + n3_detail_t3 * wg_ocean_map(u_ocean0_slopes2, n3_detail_t0.xz, 51.2, 256);
+  vec3 n3_detail_normal = wg_ocean_normal(n3_detail_t5, n3_detail_t4.w);
+  float n3_detail_jacobian = wg_ocean_jacobian(n3_detail_t5, n3_detail_t4.w);
+  float n4_whitecaps = wg_remap_clamped_float(n3_detail_jacobian, p_foam_start, p_foam_full, 0.0, 1.0);
+  float n5_cover = max(n4_whitecaps, n2_foam);
+  vec3 n6_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
+  float n7_body_fresnel_t0 = wg_cos_incidence(n3_detail_normal, b_view_direction);
+  float n7_body_fresnel_t1 = wg_fresnel_schlick(n7_body_fresnel_t0, 0.02);
+  vec3 n8_body_sky_t0 = wg_reflect_dir(n3_detail_normal, b_view_direction);
+  vec3 n8_body_sky_color = texture(u_environment, n8_body_sky_t0).rgb;
+  vec3 n9_body_blend = mix(n6_deep_color, n8_body_sky_color, vec3(n7_body_fresnel_t1));
+  vec4 n12_ggx_t0 = wg_ggx_specular(n3_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
+  float n12_ggx_t1 = (n12_ggx_t0.x * n12_ggx_t0.w);
+  vec3 n12_ggx_color = (vec3(1.0, 0.82757086, 0.60382736) * n12_ggx_t1);
+  float n14_p_split_y = v_world_position.y;
+  vec3 n15_sss_color = wg_srgb_to_linear_vec3(p_sss_color);
+  float n16_sss_t0 = (p_sss_strength * wg_subsurface_intensity_unit(n3_detail_normal, b_view_direction, u_sun_direction, 0.3, 4.0, n14_p_split_y));
+  vec3 n16_sss_color = (n15_sss_color * n16_sss_t0);
+  vec3 n17_glow = (n9_body_blend + n16_sss_color);
+  vec3 n18_lit = (n17_glow + n12_ggx_color);
+  vec3 n19_color = mix(n18_lit, vec3(0.82757086, 0.8900054, 0.93310684), vec3(n5_cover));
+  o_color = vec4(n19_color, 1.0);
 }

@@ -18,10 +18,10 @@ layout(std140, set = 0, binding = 0) uniform WgUniforms {
 };
 layout(set = 0, binding = 1) uniform sampler2D u_ocean0_displacement0;
 layout(set = 0, binding = 2) uniform sampler2D u_ocean0_slopes0;
-layout(set = 0, binding = 3) uniform sampler2D u_ocean0_displacement1;
-layout(set = 0, binding = 4) uniform sampler2D u_ocean0_slopes1;
-layout(set = 0, binding = 5) uniform sampler2D u_ocean0_displacement2;
-layout(set = 0, binding = 6) uniform sampler2D u_ocean0_slopes2;
+layout(set = 0, binding = 4) uniform sampler2D u_ocean0_displacement1;
+layout(set = 0, binding = 5) uniform sampler2D u_ocean0_slopes1;
+layout(set = 0, binding = 7) uniform sampler2D u_ocean0_displacement2;
+layout(set = 0, binding = 8) uniform sampler2D u_ocean0_slopes2;
 
 // The spectral ocean's readers (ocean_displacement, ocean_surface): its maps at a world point.
 
@@ -83,8 +83,8 @@ void main() {
   vec4 n1_displaced_t6 = n1_displaced_t2 * wg_ocean_map(u_ocean0_slopes0, n1_displaced_t1, 2.1333334, 256) + n1_displaced_t3 * wg_ocean_map(u_ocean0_slopes1, n1_displaced_t1, 10.666667, 256) + n1_displaced_t4 * wg_ocean_map(u_ocean0_slopes2, n1_displaced_t1, 51.2, 256);
   vec3 n1_displaced_position = (n1_displaced_t0 + n1_displaced_t5.xyz);
   vec3 n1_displaced_normal = wg_ocean_normal(n1_displaced_t6, n1_displaced_t5.w);
-  vec3 n8_surface_position = (n1_displaced_position + vec3(0.0));
-  gl_Position = u_view_projection * vec4(n8_surface_position, 1.0);
-  v_world_position = n8_surface_position;
+  vec3 n10_surface_position = (n1_displaced_position + vec3(0.0));
+  gl_Position = u_view_projection * vec4(n10_surface_position, 1.0);
+  v_world_position = n10_surface_position;
   v0_displaced_undisplaced = n1_displaced_t0;
 }

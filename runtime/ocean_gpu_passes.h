@@ -1,0 +1,23 @@
+#pragma once
+// What the spectral ocean's GPU passes (runtime/ocean_gpu_cascade.h,
+// runtime/ocean_gpu_foam.h) share: float textures read by texelFetch, the framebuffers
+// drawing into them, and binding by unit.
+#include <string>
+
+#include "runtime/gl_resources.h"
+#include "runtime/scene.h"
+
+namespace wg::rt::oceangpu {
+
+// A width x height texture of `format` with nearest filtering (every pass uses texelFetch).
+Texture floatTexture(int width, int height, GLenum format);
+// A framebuffer drawing into `first` and into `second` too when there is one; a driver
+// that cannot render into them is a RuntimeError naming `what`.
+Framebuffer targetOf(const Texture& first, const Texture* second, const char* what);
+GLint location(const Program& p, const char* name);
+void bindTexture(int unit, const Texture& t);
+// A full-screen pass's program: the scene's full-screen vertex shader and `body` after the
+// API's header and `defines`.
+Program linkPass(SceneShaderApi api, const std::string& name, const std::string& defines, const char* body);
+
+}  // namespace wg::rt::oceangpu
