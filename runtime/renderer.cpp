@@ -17,8 +17,11 @@
 #include "runtime/node_texture.h"
 #include "runtime/ocean_simulation.h"
 #include "runtime/gpu_cache.h"
+#include "runtime/gpu_mesh.h"
 #include "runtime/oblique_projection.h"
 #include "runtime/output_transform.h"
+#include "runtime/render_targets.h"
+#include "runtime/water_uniforms.h"
 #include "runtime/runtime_error.h"
 #include "runtime/tessellation_budget.h"
 #include "runtime/uniform_values.h"
@@ -26,78 +29,6 @@
 namespace wg::rt {
 namespace {
 
-
-// One render target: colour and/or depth textures and the framebuffer drawing into them.
-struct GpuTarget {
-  TargetSpec spec;
-  Texture color;
-  Texture depth;
-  Framebuffer fbo;
-  size_t allocatedBytes = 0;  // measured from the driver's view of the textures
-};
-
-size_t internalFormatBytes(GLint f) {
-  switch (f) {
-    case GL_RGBA8: return 4;
-    case GL_RGBA16F: return 8;
-    case GL_RGBA32F: return 16;
-    case GL_DEPTH_COMPONENT32F: return 4;
-    default: return 0;
-  }
-}
-
-// Bytes of level 0 of the bound texture as the driver reports it (all faces of a cube).
-size_t measuredBytes(GLenum bindTarget) {
-  GLenum level = bindTarget == GL_TEXTURE_CUBE_MAP ? GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X) : bindTarget;
-  GLint w = 0, h = 0, f = 0;
-  glGetTexLevelParameteriv(level, 0, GL_TEXTURE_WIDTH, &w);
-  glGetTexLevelParameteriv(level, 0, GL_TEXTURE_HEIGHT, &h);
-  glGetTexLevelParameteriv(level, 0, GL_TEXTURE_INTERNAL_FORMAT, &f);
-  return static_cast<size_t>(w) * static_cast<size_t>(h) * internalFormatBytes(f) * (bindTarget == GL_TEXTURE_CUBE_MAP ? 6 : 1);
-}
-
-struct GpuMesh {
-  VertexArray vao;
-  Buffer vbo, ibo;
-  GLsizei indexCount = 0;
-};
-
-GLenum colorInternalFormat(ColorFormat f) {
-  return f == ColorFormat::Rgba32f ? GL_RGBA32F : f == ColorFormat::Rgba16f ? GL_RGBA16F : GL_RGBA8;
-}
-
-void setFilter(GLenum target, GLint filter) {
-  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
-  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
-  glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  if (target == GL_TEXTURE_CUBE_MAP) glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
-}
-
-GpuMesh uploadMesh(const Mesh& m, const std::vector<std::pair<GLuint, int>>& attributes) {
-  GpuMesh g;
-  g.vao = makeVertexArray();
-  g.vbo = makeBuffer();
-  g.ibo = makeBuffer();
-  glBindVertexArray(g.vao.id());
-  glBindBuffer(GL_ARRAY_BUFFER, g.vbo.id());
-  glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.vertices.size() * sizeof(float)), m.vertices.data(),
-               GL_STATIC_DRAW);
-  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, g.ibo.id());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m.indices.size() * sizeof(unsigned)),
-               m.indices.data(), GL_STATIC_DRAW);
-  GLsizei stride = static_cast<GLsizei>(m.floatsPerVertex * sizeof(float));
-  int offset = 0;
-  for (auto [location, components] : attributes) {
-    glEnableVertexAttribArray(location);
-    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, stride,
-                          reinterpret_cast<const void*>(static_cast<uintptr_t>(offset * sizeof(float))));
-    offset += components;
-  }
-  glBindVertexArray(0);
-  g.indexCount = static_cast<GLsizei>(m.indices.size());
-  return g;
-}
 
 // A node texture's identity: the source and folder, and for a file its size and time of
 // last change (builtin:* sources are made in memory and never change).
@@ -153,7 +84,6 @@ struct Renderer::Impl {
   GLint opaqueVp = -1, opaqueClip = -1, opaqueSun = -1;
   GpuMesh sceneMesh, waterMesh;
   VertexArray emptyVao;
-  std::vector<GpuTarget> targets;
   // Water textures: (texture unit, GL target, texture).
   struct Binding {
     GLuint unit;
@@ -170,75 +100,10 @@ struct Renderer::Impl {
     return std::make_shared<const Program>(linkProgram(sources, what));
   }
 
-  GpuTarget* find(SceneSampler s) {
-    const std::string_view name = sceneSamplerRow(s).target;
-    for (auto& t : targets)
-      if (t.spec.name == name) return &t;
-    return nullptr;
-  }
-  const GpuTarget& frame() const { return targets.front(); }
-  // The target whose colour is the 8-bit picture (PassPlan::picture), or null.
-  const GpuTarget* picture() const {
-    const TargetSpec* p = plan.picture();
-    for (const auto& t : targets)
-      if (p && t.spec.name == p->name) return &t;
-    return nullptr;
-  }
-
-  bool floatLinear = true;
-
-  void createTargets() {
-    floatLinear = !es || epoxy_has_gl_extension("GL_OES_texture_float_linear");
-    for (const TargetSpec& spec : plan.targets) {
-      GpuTarget t;
-      t.spec = spec;
-      t.fbo = makeFramebuffer();
-      GLenum texTarget = spec.cube ? GL_TEXTURE_CUBE_MAP : GL_TEXTURE_2D;
-      if (spec.color != ColorFormat::None) {
-        t.color = makeTexture();
-        glBindTexture(texTarget, t.color.id());
-        glTexStorage2D(texTarget, 1, colorInternalFormat(spec.color), spec.width, spec.height);
-        setFilter(texTarget, sampledNearest(spec, floatLinear) ? GL_NEAREST : GL_LINEAR);
-        t.allocatedBytes += measuredBytes(texTarget);
-      }
-      if (spec.depth != DepthFormat::None) {
-        t.depth = makeTexture();
-        glBindTexture(GL_TEXTURE_2D, t.depth.id());
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_DEPTH_COMPONENT32F, spec.width, spec.height);
-        setFilter(GL_TEXTURE_2D, GL_NEAREST);
-        t.allocatedBytes += measuredBytes(GL_TEXTURE_2D);
-      }
-      glBindFramebuffer(GL_FRAMEBUFFER, t.fbo.id());
-      if (t.color) {
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
-                               spec.cube ? GL_TEXTURE_CUBE_MAP_POSITIVE_X : GL_TEXTURE_2D, t.color.id(), 0);
-        GLenum buf = GL_COLOR_ATTACHMENT0;
-        glDrawBuffers(1, &buf);
-        if (spec.name == sceneSamplerRow(SceneSampler::WaterSurface).target) {  // the G-buffer draws into water_normal as well
-          GpuTarget* normal = find(SceneSampler::WaterNormalUv);
-          if (!normal) throw std::logic_error("the plan creates water_position without water_normal");
-          glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, normal->color.id(), 0);
-          GLenum bufs[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-          glDrawBuffers(2, bufs);
-        }
-      } else {
-        GLenum none = GL_NONE;
-        glDrawBuffers(1, &none);
-        glReadBuffer(GL_NONE);
-      }
-      if (t.depth) glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, t.depth.id(), 0);
-      GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
-      if (status != GL_FRAMEBUFFER_COMPLETE) {
-        char buf[16];
-        std::snprintf(buf, sizeof buf, "0x%04x", status);
-        throw RuntimeError(RuntimeError::Kind::Driver,
-                           "render target '" + spec.name + "' is incomplete on this driver (status " + buf + ")");
-      }
-      targets.push_back(std::move(t));
-    }
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    checkGl("creating render targets");
-  }
+  RenderTargets targets;
+  GpuTarget* find(SceneSampler s) { return targets.find(s); }
+  const GpuTarget& frame() const { return targets.frame(); }
+  const GpuTarget* picture() const { return targets.picture(plan); }
 
   // Uploads a node texture as the CPU reference samples it: its sampler state
   // (runtime/node_texture.h), row 0 at v = 0. Through the cache when there is one, keyed
@@ -266,25 +131,8 @@ struct Renderer::Impl {
     return cache->texture(key, upload);
   }
 
-  // A water uniform from the manifest: a graph parameter (its value kept here, so the
-  // editor can change it between frames without a recompile) or a builtin recomputed from
-  // the camera, time and sun every frame.
-  struct WaterUniform {
-    std::string name, parameter;
-    Type type = Type::Float;
-    BuiltinUniform builtin = BuiltinUniform::Time;  // when parameter is ""
-    double angularFrequency = 0;  // time_phase
-    std::shared_ptr<const DerivedValue> derived;  // derived: computed every frame from the parameters
-    std::vector<float> value;     // parameter values
-    // The parameter's manifest min/max: every value is clamped into them on upload, as the
-    // generated shader may rely on the range (codegen/value_facts.h).
-    float lo = -std::numeric_limits<float>::infinity(), hi = std::numeric_limits<float>::infinity();
-    std::vector<std::pair<GLuint, GLint>> locations;  // (program, location) where it is used
-  };
-  std::vector<WaterUniform> uniforms;
-  static void clampParameter(WaterUniform& u) { clampIntoRange(u.value, u.lo, u.hi); }
-
-  std::vector<float> builtinValue(const WaterUniform& u) const {
+  WaterUniforms uniforms;
+  FrameValues frameValues() const {
     FrameValues f;
     f.camera = camera;
     f.view = view;
@@ -294,50 +142,7 @@ struct Renderer::Impl {
     f.time = settings.scene.time;
     f.width = settings.width;
     f.height = settings.height;
-    if (u.derived) return derivedUniformValue(*u.derived, f, parameterValues());
-    return builtinUniformValue(u.builtin, u.angularFrequency, f);
-  }
-
-  // The parameters' current (clamped) values in manifest order, as derived programs read
-  // them (manifestParameters): what setParameter last gave, so the editor's changes reach
-  // the derived uniforms at the next frame without a recompile.
-  std::vector<Value> parameterValues() const {
-    std::vector<Value> out;
-    for (const auto& u : uniforms) {
-      if (u.parameter.empty()) continue;
-      Value v = Value::ofType(u.type);
-      for (int i = 0; i < v.size() && static_cast<size_t>(i) < u.value.size(); ++i) v[i] = u.value[static_cast<size_t>(i)];
-      out.push_back(v);
-    }
-    return out;
-  }
-
-  // Checked when the manifest is read, so a frame meets no builtin it cannot set. The
-  // runtime provides a builtin when it has a value for it (not the probe's per-case ones).
-  void checkRuntimeBuiltin(const WaterUniform& u) const {
-    if (builtinValue(u).empty())
-      manifestError("uniform " + u.name + " asks for builtin '" + std::string(builtinUniformRow(u.builtin).meaning) +
-                    "', which the runtime does not provide");
-  }
-
-  void setUniform(const WaterUniform& u, const std::vector<float>& v) const {
-    if (!u.locations.empty() && v.size() != static_cast<size_t>(componentCount(u.type)))
-      manifestError("uniform " + u.name + " of type " + std::string(typeName(u.type)) + " got " + std::to_string(v.size()) +
-                    " value(s)");
-    for (auto [program, loc] : u.locations) {
-      glUseProgram(program);
-      switch (u.type) {
-        case Type::Float: glUniform1f(loc, v[0]); break;
-        case Type::Vec2: glUniform2fv(loc, 1, v.data()); break;
-        case Type::Vec3: glUniform3fv(loc, 1, v.data()); break;
-        case Type::Vec4: glUniform4fv(loc, 1, v.data()); break;
-        case Type::Int:
-        case Type::Bool: glUniform1i(loc, static_cast<GLint>(v[0])); break;
-        case Type::Mat3: glUniformMatrix3fv(loc, 1, GL_FALSE, v.data()); break;
-        case Type::Mat4: glUniformMatrix4fv(loc, 1, GL_FALSE, v.data()); break;
-        default: break;  // refused when the manifest is read
-      }
-    }
+    return f;
   }
 
   // Which texture unit each water sampler reads. Set again every frame, with the uniforms:
@@ -350,7 +155,7 @@ struct Renderer::Impl {
 
   // Every frame: the camera, time and sun may have changed since the last one.
   void applyUniforms() const {
-    for (const auto& u : uniforms) setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);
+    uniforms.apply(frameValues());
     for (const auto& s : samplerUnits) {
       glUseProgram(s.program);
       glUniform1i(s.location, s.unit);
@@ -358,33 +163,7 @@ struct Renderer::Impl {
   }
 
   void setupWaterUniforms(const Manifest& manifest, const std::map<std::string, TextureOrigin>& origins) {
-    for (const ManifestUniform& m : manifest.uniforms) {
-      WaterUniform u;
-      u.name = m.name;
-      u.type = m.type;
-      if (isSampler(u.type))
-        manifestError("uniform " + u.name + " has a type the runtime cannot set: " + std::string(typeName(u.type)));
-      if (m.parameter) {
-        u.parameter = m.parameter->name;
-        u.value.assign(m.parameter->defaultValue.begin(), m.parameter->defaultValue.end());
-        if (m.parameter->min) u.lo = static_cast<float>(*m.parameter->min);
-        if (m.parameter->max) u.hi = static_cast<float>(*m.parameter->max);
-        clampParameter(u);
-      } else {
-        u.builtin = m.builtin;
-        u.angularFrequency = m.angularFrequency;
-        u.derived = m.derived;
-        if (u.builtin == BuiltinUniform::Derived && !u.derived) manifestError("derived uniform " + u.name + " has no program");
-        if (!u.derived) checkRuntimeBuiltin(u);
-      }
-      for (GLuint program : waterPrograms()) {
-        GLint loc = glGetUniformLocation(program, u.name.c_str());
-        if (loc >= 0) u.locations.emplace_back(program, loc);  // else optimised out by the driver
-      }
-      uniforms.push_back(std::move(u));
-    }
-    // Errors now, not at the first frame (derived uniforms need every parameter first).
-    for (const auto& u : uniforms) setUniform(u, u.parameter.empty() ? builtinValue(u) : u.value);
+    uniforms.setup(manifest, waterPrograms(), frameValues());
     // Samplers: node textures (loaded here) and scene textures (render targets of the
     // planned passes), one texture unit each in manifest order.
     GLuint nextUnit = 0;
@@ -557,7 +336,7 @@ struct Renderer::Impl {
     // filtered where the colour format can be (float colour on ES without float filtering
     // cannot: nearest there, as the water samples it).
     const bool scaled = copy->spec.width != settings.width || copy->spec.height != settings.height;
-    const GLenum filter = scaled && !sampledNearest(copy->spec, floatLinear) ? GL_LINEAR : GL_NEAREST;
+    const GLenum filter = scaled && !sampledNearest(copy->spec, targets.floatLinear()) ? GL_LINEAR : GL_NEAREST;
     glBlitFramebuffer(0, 0, settings.width, settings.height, 0, 0, copy->spec.width, copy->spec.height, GL_COLOR_BUFFER_BIT,
                       filter);
   }
@@ -755,7 +534,7 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
                            {{iface::kPositionLocation, 3}, {iface::kNormalLocation, 3}, {iface::kUvLocation, 2}});
   r.emptyVao = makeVertexArray();
   checkGl("uploading the scene");
-  r.createTargets();
+  r.targets.create(r.plan, r.es);
   if (r.plan.runs(PassKind::OceanSimulation))
     r.oceans = std::make_unique<OceanSimulation>(manifest.oceans, manifest.textures, es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
   r.setupWaterUniforms(manifest, origins);
@@ -787,7 +566,7 @@ const PassPlan& Renderer::plan() const { return impl_->plan; }
 bool Renderer::samplesNearest(SceneSampler s) const {
   const GpuTarget* t = impl_->find(s);
   if (!t) throw std::logic_error("samplesNearest: the plan has no target for this sampler");
-  return sampledNearest(t->spec, impl_->floatLinear);
+  return sampledNearest(t->spec, impl_->targets.floatLinear());
 }
 int Renderer::createdTargetCount() const { return static_cast<int>(impl_->targets.size()); }
 size_t Renderer::createdTargetBytes() const {
@@ -805,15 +584,7 @@ void Renderer::setScene(const SceneOptions& scene) {
 }
 
 bool Renderer::setParameter(const std::string& parameter, const std::vector<float>& value) {
-  bool found = false;
-  for (auto& u : impl_->uniforms) {
-    if (u.parameter != parameter) continue;
-    if (value.size() != u.value.size()) return false;
-    u.value = value;
-    Impl::clampParameter(u);
-    found = true;
-  }
-  return found;
+  return impl_->uniforms.setParameter(parameter, value);
 }
 
 GLuint Renderer::frameTexture() const {
