@@ -16,6 +16,7 @@
 #include "runtime/runtime_error.h"
 #include "runtime/tessellation_budget.h"
 #include "runtime/vk_output_transform.h"
+#include "runtime/vk_render_targets.h"
 #include "runtime/vk_resources.h"
 #include "runtime/vk_scene_spirv.h"
 #include "runtime/vk_water_bindings.h"
@@ -30,16 +31,6 @@ glm::mat4 vulkanDepthRangeCorrection() {
 }
 
 namespace {
-
-constexpr VkFormat kDepthFormat = VK_FORMAT_D32_SFLOAT;
-
-VkFormat colorFormat(ColorFormat f) {
-  switch (f) {
-    case ColorFormat::Rgba32f: return VK_FORMAT_R32G32B32A32_SFLOAT;
-    case ColorFormat::Rgba16f: return VK_FORMAT_R16G16B16A16_SFLOAT;
-    default: return VK_FORMAT_R8G8B8A8_UNORM;
-  }
-}
 
 // The scene's push constants, laid out as the blocks of scene.h (SceneShaderApi::Vulkan450).
 struct SkyConstants {
@@ -87,11 +78,8 @@ struct VkRenderer::Impl {
   glm::vec3 sun{0.0f, 1.0f, 0.0f};
   bool deferred = false, tessellated = false;
 
-  struct Target {
-    TargetSpec spec;
-    VkImageOwner color, depth;
-  };
-  std::vector<Target> targets;
+  using Target = VkTarget;
+  VkRenderTargets targets;
   VkMesh sceneMesh, waterMesh;
   VkSceneSpirv sceneSpirv;
   std::vector<VkShaderCode> waterStages;
@@ -105,53 +93,12 @@ struct VkRenderer::Impl {
 
   explicit Impl(VkContext& c) : ctx(c) {}
 
-  Target* find(SceneSampler s) {
-    const std::string_view name = sceneSamplerRow(s).target;
-    for (auto& t : targets)
-      if (t.spec.name == name) return &t;
-    return nullptr;
-  }
-  Target& frame() { return targets.front(); }
-  const Target& frame() const { return targets.front(); }
+  Target* find(SceneSampler s) { return targets.find(s); }
+  Target& frame() { return targets.frame(); }
+  const Target& frame() const { return targets.frame(); }
   // The target whose colour is the 8-bit picture (PassPlan::picture), or null.
-  Target* picture() {
-    const TargetSpec* p = plan.picture();
-    for (auto& t : targets)
-      if (p && t.spec.name == p->name) return &t;
-    return nullptr;
-  }
+  Target* picture() { return targets.picture(plan); }
   std::unique_ptr<VkOutputTransform> output;  // when the plan runs the output transform
-
-  void createTargets() {
-    VkFormatProperties floatProps;
-    vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), VK_FORMAT_R32G32B32A32_SFLOAT, &floatProps);
-    floatLinear = floatProps.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT;
-    for (const TargetSpec& spec : plan.targets) {
-      Target t;
-      t.spec = spec;
-      const auto transfer = VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT;
-      if (spec.color != ColorFormat::None) {
-        VkImageSpec s;
-        s.format = colorFormat(spec.color);
-        s.width = static_cast<uint32_t>(spec.width);
-        s.height = static_cast<uint32_t>(spec.height);
-        s.cube = spec.cube;
-        s.layers = spec.cube ? 6 : 1;
-        s.usage = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | transfer;
-        t.color = VkImageOwner(ctx, s);
-      }
-      if (spec.depth != DepthFormat::None) {
-        VkImageSpec s;
-        s.format = kDepthFormat;
-        s.width = static_cast<uint32_t>(spec.width);
-        s.height = static_cast<uint32_t>(spec.height);
-        s.usage = VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT | transfer;
-        t.depth = VkImageOwner(ctx, s);
-      }
-      targets.push_back(std::move(t));
-    }
-  }
-  bool floatLinear = true;
 
   // --- Pipelines.
   VkPipelineLayoutHandle makeLayout(const std::vector<VkDescriptorSetLayout>& sets, uint32_t pushBytes) {
@@ -175,7 +122,7 @@ struct VkRenderer::Impl {
     VkPipelineDescription d;
     d.layout = sceneLayout.get();
     if (color != VK_FORMAT_UNDEFINED) d.colorFormats = {color};
-    d.depthFormat = depth ? kDepthFormat : VK_FORMAT_UNDEFINED;
+    d.depthFormat = depth ? kVkDepthFormat : VK_FORMAT_UNDEFINED;
     if (sky) {
       // At the far plane, after the opaque scene, without depth writes: only uncovered pixels.
       d.stages = {sceneSpirv.skyVertex, sceneSpirv.skyFragment};
@@ -200,7 +147,7 @@ struct VkRenderer::Impl {
     VkPipelineDescription water;
     water.layout = waterLayout.get();
     water.colorFormats = {f.color.spec().format};
-    water.depthFormat = kDepthFormat;
+    water.depthFormat = kVkDepthFormat;
     water.blend = true;  // colour by the water's alpha; the frame's alpha stays 1
     VkPipelineDescription geometry = water;  // the mesh: the graph's vertex (and tessellation) stages
     geometry.vertexStride = static_cast<uint32_t>(8 * sizeof(float));
@@ -391,7 +338,7 @@ struct VkRenderer::Impl {
     blit.dstOffsets[1] = {copy.spec.width, copy.spec.height, 1};
     vkCmdBlitImage(cmd, frame().color.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, copy.color.image(),
                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit,
-                   sampledNearest(copy.spec, floatLinear) ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+                   sampledNearest(copy.spec, targets.floatLinear()) ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
   }
 
   // The water G-buffer: where no water is, the surface's depth w stays 1.
@@ -536,7 +483,7 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   }
   r.sceneSpirv = compileSceneSpirv(gbuffer);
 
-  r.createTargets();
+  r.targets.create(r.ctx, r.plan);
   r.sceneMesh = uploadMesh(context, buildSceneMesh());
   int gridQuads = settings.waterGridQuads;
   if (r.tessellated && manifest.tessellation) gridQuads = tessellatedGridQuads(gridQuads, manifest.tessellation->settings.factor);
@@ -548,7 +495,7 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
         Impl::Target* t = r.find(s);
         if (!t) return out;
         out.image = t->color ? &t->color : &t->depth;
-        out.nearest = sampledNearest(t->spec, r.floatLinear);
+        out.nearest = sampledNearest(t->spec, r.targets.floatLinear());
         return out;
       },
       origins);
@@ -619,7 +566,7 @@ const PassPlan& VkRenderer::plan() const { return impl_->plan; }
 bool VkRenderer::samplesNearest(SceneSampler s) const {
   const Impl::Target* t = impl_->find(s);
   if (!t) throw std::logic_error("samplesNearest: the plan has no target for this sampler");
-  return sampledNearest(t->spec, impl_->floatLinear);
+  return sampledNearest(t->spec, impl_->targets.floatLinear());
 }
 int VkRenderer::createdTargetCount() const { return static_cast<int>(impl_->targets.size()); }
 size_t VkRenderer::createdTargetBytes() const {
