@@ -28,17 +28,13 @@
 #include "runtime/egl_context.h"
 #include "runtime/ocean_gpu_cascade.h"
 #include "runtime/ocean_simulation.h"
+#include "ocean_transform_bound.h"
 
 namespace wg::rt {
 namespace {
 
-constexpr double u = 5.9604644775390625e-8;  // 2^-24
-
-double norm(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x * x;
-  return std::sqrt(s);
-}
+constexpr double u = ocean_test::kUnitRoundoff;
+using ocean_test::norm;
 
 // Channel c of a read-back map, as doubles.
 std::vector<double> channel(const std::vector<float>& map, int c) {
@@ -59,13 +55,6 @@ std::vector<double> scaled(const std::vector<double>& v, double s) {
   return out;
 }
 
-double relativeBound(int resolution) {
-  double stages = 2 * std::log2(resolution);
-  double gamma4 = 4 * u / (1 - 4 * u);
-  double eta = u + gamma4 * (std::sqrt(2.0) + u);
-  return stages * eta / (1 - stages * eta) + 16 * u;
-}
-
 class OceanGpu : public ::testing::TestWithParam<GlApi> {};
 
 TEST_P(OceanGpu, FieldsMatchTheDoubleReferenceWithinTheTransformsBound) {
@@ -79,7 +68,7 @@ TEST_P(OceanGpu, FieldsMatchTheDoubleReferenceWithinTheTransformsBound) {
     c.seed = 3;
     ocean::OceanCascade cascade = ocean::initialCascade(s, c, 0);
     OceanGpuCascade gpu(cascade, api);
-    const double lambda = 0.8, bound = relativeBound(resolution);
+    const double lambda = 0.8, bound = ocean_test::transformBound(resolution);
     for (double t : {0.0, 3.7, 1e6}) {
       SCOPED_TRACE("N = " + std::to_string(resolution) + ", t = " + std::to_string(t));
       gpu.update(t, lambda);
@@ -135,7 +124,7 @@ TEST_P(OceanGpu, ADisplacementOnlyCascadeComputesTheDisplacementAlone) {
   EXPECT_FALSE(gpu.computesSlopes());
   EXPECT_EQ(gpu.slopeMap(), 0u);
   EXPECT_THROW(gpu.readSlopes(), std::logic_error);
-  const double lambda = 0.8, t = 3.7, bound = relativeBound(64);
+  const double lambda = 0.8, t = 3.7, bound = ocean_test::transformBound(64);
   gpu.update(t, lambda);
   std::vector<float> displacement = gpu.readDisplacement();
   ocean::OceanFields f = ocean::oceanFields(cascade, t, lambda);

@@ -25,25 +25,15 @@
 #include "runtime/egl_context.h"
 #include "runtime/ocean_gpu_foam.h"
 #include "runtime/ocean_simulation.h"
+#include "ocean_transform_bound.h"
 
 namespace wg::rt {
 // Named, not anonymous: the unity build joins this file with ocean_gpu_cascade_test.cpp.
 namespace foam_gpu_test {
 
-constexpr double u = 5.9604644775390625e-8;  // 2^-24
-
-double norm(const std::vector<double>& v) {
-  double s = 0;
-  for (double x : v) s += x * x;
-  return std::sqrt(s);
-}
-
-double transformBound(int resolution) {
-  double stages = 2 * std::log2(resolution);
-  double gamma4 = 4 * u / (1 - 4 * u);
-  double eta = u + gamma4 * (std::sqrt(2.0) + u);
-  return stages * eta / (1 - stages * eta) + 16 * u;
-}
+constexpr double u = ocean_test::kUnitRoundoff;
+using ocean_test::norm;
+using ocean_test::transformBound;
 
 SceneShaderApi apiOf(GlApi api) { return api == GlApi::Es32 ? SceneShaderApi::Es300 : SceneShaderApi::Gl330; }
 
