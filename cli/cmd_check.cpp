@@ -25,6 +25,7 @@
 #include "core/node_preview_graph.h"
 #include "nodes/registry.h"
 #include "runtime/image.h"
+#include "runtime/pass_plan.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 #endif
@@ -148,11 +149,11 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         exit = std::max(exit, exitCodeFor(diags));
         continue;
       }
-      if (target == Target::Vk450 && !result->manifest.oceans.empty() && args.target == "all") {
+      if (auto pass = target == Target::Vk450 ? rt::passVulkanDoesNotRun(result->manifest.passes) : std::nullopt;
+          pass && args.target == "all") {
         // Asked for every target, a graph the Vulkan runtime cannot run yet is reported, not
         // failed; asked for vk450 alone, it is the error the runtime gives.
-        std::cout << "check " << path << " on vk450: not run: the Vulkan runtime cannot run the ocean_simulation "
-                     "pass yet (the graph has a spectral ocean)\n";
+        std::cout << "check " << path << " on vk450: not run: " << rt::vulkanCannotRun(*pass) << "\n";
         continue;
       }
       try {

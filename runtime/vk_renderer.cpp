@@ -441,11 +441,9 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   r.sun = sunDirection(settings.scene);
 
   r.plan = planPasses(manifest, planOptionsFor(settings));
-  // The spectral ocean's passes run on the GL runtime only (runtime/ocean_simulation.h).
-  if (r.plan.runs(PassKind::OceanSimulation))
+  if (auto pass = passVulkanDoesNotRun(r.plan.passes))
     throw RuntimeError(RuntimeError::Kind::Manifest,
-                       "the Vulkan runtime cannot run the ocean_simulation pass yet; render this graph with the GL "
-                       "runtime (--target glsl330 or es300)");
+                       vulkanCannotRun(*pass) + "; render this graph with the GL runtime (--target glsl330 or es300)");
   r.memory.emplace(rendererBytes(r.plan, settings.floatColor),
                    "render targets and read-back at " + std::to_string(settings.width) + "x" + std::to_string(settings.height));
   r.deferred = r.plan.runs(PassKind::DeferredWater);
