@@ -182,13 +182,17 @@ TEST(FramesEdit, TextNodesDeleteAndMoveAreOneUndoStepEach) {
   ASSERT_TRUE(e.undo());
   EXPECT_EQ(*e.graph().findNode("a")->editorPosition, (std::array<double, 2>{10, 20}));
 
-  // Deleting nodes takes them out of their frames; a frame left empty goes.
-  ASSERT_EQ(e.deleteNode("c"), "");
+  // Deleting nodes (several at once, or one) takes them out of their frames; a frame left
+  // empty goes.
+  ASSERT_EQ(e.deleteNodes({"a", "c"}), "");
   EXPECT_FALSE(e.graph().findFrame("tail"));
-  ASSERT_EQ(e.deleteNodes({"a"}), "");
   EXPECT_EQ(e.graph().findFrame("head")->nodes, std::vector<std::string>{"b"});
   Diagnostics d;
   EXPECT_TRUE(parseGraph(saveGraph(e.graph()), "g.json", d)) << dump(d);
+  ASSERT_TRUE(e.undo());
+  ASSERT_EQ(e.deleteNode("c"), "");
+  EXPECT_FALSE(e.graph().findFrame("tail"));
+  EXPECT_TRUE(e.graph().findFrame("head"));
 }
 
 }  // namespace
