@@ -203,16 +203,27 @@ TEST(Frames, SavedFramesReadBackAndAHandWrittenFileKeepsItsText) {
   // Moving a node of a hand-written file patches its position only: the frames stay as written.
   test::EditorRun r = c.run(R"([
     {"op": "move_node", "id": "len", "x": 520, "y": 10},
-    {"op": "save"},
+    {"op": "save"}
+  ])");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  std::string moved = test::readFile(c.graph);
+  EXPECT_NE(moved.find("\n  \"editor\": {\"frames\": {\"head\": {\"title\": \"Coordinates\", \"comment\": \"uv, wrapped\", \"nodes\": [\"uv\", \"f\"]}}},\n"),
+            std::string::npos) << moved;
+  r = c.run(R"([
     {"op": "add_frame", "id": "tail", "title": "Shading", "comment": "depth\nthen tint", "nodes": ["len", "shade"]},
     {"op": "set_frame", "id": "head", "title": "UV"},
+    {"op": "save"},
     {"op": "save", "path": ")" + c.path("two.json") + R"("}
   ])");
   ASSERT_EQ(r.status, 0) << r.err << r.out;
+  // The frames edited: the "editor" value is written again, the rest of the text kept.
   std::string text = test::readFile(c.graph);
-  EXPECT_NE(text.find(R"("editor": {"frames": {"head": {"title": "Coordinates", "comment": "uv, wrapped", "nodes": ["uv", "f"]}}},)"),
+  EXPECT_NE(text.find("\n  \"parameters\": {\"sh\": {\"type\": \"vec3\", \"default\": [0, 0.5, 0.5]}},\n"), std::string::npos) << text;
+  EXPECT_NE(text.find("\n    {\"id\": \"f\", \"type\": \"fract\", \"inputs\": {\"x\": \"uv.out\"}, \"editor\": {\"x\": 250, \"y\": 0}},\n"),
             std::string::npos) << text;
+  EXPECT_NE(text, saveGraph(c.saved())) << "not reformatted";
   EXPECT_EQ(at(c.saved(), "len"), (std::array<double, 2>{520, 10}));
+  EXPECT_EQ(saveGraph(c.saved()), test::readFile(c.path("two.json"))) << "the patched text reads as the canonical save";
   Graph two = c.saved("two.json");
   ASSERT_EQ(two.frames.size(), 2u);
   EXPECT_EQ(two.frames[0].title, "UV");
@@ -225,6 +236,23 @@ TEST(Frames, SavedFramesReadBackAndAHandWrittenFileKeepsItsText) {
   r = c.run(R"([{"op": "frames", "count": 1}, {"op": "save"}])");
   ASSERT_EQ(r.status, 0) << r.err << r.out;
   EXPECT_EQ(test::readFile(c.graph), before);
+}
+
+TEST(Frames, AFrameAddedToAHandWrittenFileWithoutOneGoesLast) {
+  RowDir c;
+  test::EditorRun r = c.run(R"([
+    {"op": "add_frame", "id": "tail", "title": "Shading", "nodes": ["len", "shade"]},
+    {"op": "save"}
+  ])");
+  ASSERT_EQ(r.status, 0) << r.err << r.out;
+  std::string text = test::readFile(c.graph);
+  // kRow ends "...}}\n}": the layout goes in before the last line break.
+  std::string expected = kRow;
+  expected.insert(expected.size() - 2, ",\n  \"editor\": {\"frames\": {\n    \"tail\": {\"title\": \"Shading\", \"nodes\": [\"len\", \"shade\"]}\n  }}");
+  EXPECT_EQ(text, expected);
+  Graph g = c.saved();
+  ASSERT_EQ(g.frames.size(), 1u);
+  EXPECT_EQ(g.frames[0].nodes, (std::vector<std::string>{"len", "shade"}));
 }
 
 TEST(Frames, FmtKeepsThemAndCompileIgnoresThem) {
