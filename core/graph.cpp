@@ -26,6 +26,12 @@ const Import* Graph::findImport(std::string_view name) const {
   return nullptr;
 }
 
+const Frame* Graph::findFrame(std::string_view id) const {
+  for (const auto& f : frames)
+    if (f.id == id) return &f;
+  return nullptr;
+}
+
 nlohmann::json writtenOptions(const Node& node) {
   nlohmann::json written = nlohmann::json::object();
   for (const auto& o : node.options) written[o.name] = o.value;

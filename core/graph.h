@@ -154,6 +154,20 @@ struct InstanceOption {
   NodeOption option;
 };
 
+// A frame on the editor's canvas, `"editor": {"frames": {"shore": {"title": "Shore foam",
+// "comment": "...", "nodes": ["foam", "mask"]}}}`: a box with a title and a comment drawn
+// around its nodes. Layout only: compiling never reads it. The box is where its nodes are
+// (their bounding box and a margin), so moving a node moves its frame's edge, and dragging
+// the frame moves its nodes; a node lies in at most one frame.
+struct Frame {
+  std::string id;      // an identifier, unique among the graph's frames
+  std::string title;
+  std::string comment;                // may hold line breaks
+  std::vector<std::string> nodes;     // ids of the graph's nodes, at least one, each once
+  SourceRef where;                    // the frame's key
+  SourceRef nodesWhere;               // its "nodes" value
+};
+
 struct Graph {
   std::string file;      // path as given, used in diagnostics
   std::string schema;    // optional "$schema", kept for editors
@@ -171,11 +185,14 @@ struct Graph {
   // "view": {"tonemap": "agx", "exposure": 0.5}: how the graph's author means its frame to be
   // shown (the output transform); tools use it unless --tonemap / --exposure say otherwise.
   std::optional<ViewTransform> view;
+  // "editor": {"frames": {...}}: the canvas's frames, in file order (drawn in that order).
+  std::vector<Frame> frames;
 
   const Node* findNode(std::string_view id) const;
   const Parameter* findParameter(std::string_view name) const;
   const Preset* findPreset(std::string_view name) const;
   const Import* findImport(std::string_view name) const;
+  const Frame* findFrame(std::string_view id) const;
 };
 
 // True for [A-Za-z_][A-Za-z0-9_]*, at most 64 characters.

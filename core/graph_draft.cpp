@@ -92,7 +92,7 @@ void GraphDraftReader::startContainer(bool isArray, JsonPosition at) {
       case Level::Root:
         if (!isArray && named({"parameters", "presets", "outputs"})) structured = true, level = Level::Section;
         if (!isArray && (s.name == "imports" || s.name == "view")) structured = true, level = Level::Record;
-        if (!isArray && s.name == "interface") structured = true, level = Level::Interface;
+        if (!isArray && (s.name == "interface" || s.name == "editor")) structured = true, level = Level::Interface;
         if (isArray && s.name == "nodes") structured = true, level = Level::Nodes;
         break;
       case Level::Section: structured = !isArray, level = Level::Record; break;

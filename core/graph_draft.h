@@ -1,8 +1,9 @@
 #pragma once
 // A graph file's JSON events gathered into drafts the loader checks (core/graph_load.cpp):
 // the objects the format gives a structure (the graph, its parameters, presets, outputs and
-// each node with its options, inputs and editor position, the imports and the interface) keep their members in file order
-// with positions; every other value is held as a small nlohmann value, with its position.
+// each node with its options, inputs and editor position, the imports, the interface, and
+// the editor layout's frames) keep their members in file order with positions; every other
+// value is held as a small nlohmann value, with its position.
 // Nodes are handed over one at a time, as each ends, and their draft is reused, so no DOM
 // or position tree of the whole file is ever built.
 #include <deque>
@@ -78,7 +79,7 @@ class GraphDraftReader : public JsonEventHandler {
   enum class Level {
     Root,       // the graph: "parameters", "presets", "outputs", "interface" objects and "nodes" are
                 // structured, "imports" is a Record
-    Interface,  // the interface: its "outputs" object is a Section
+    Interface,  // the interface, the graph's "editor" layout: an object member ("outputs", "frames") is a Section
     Section,    // parameters, presets, outputs, the interface's outputs: each member object is a Record
     Record,     // a parameter, a preset, an output stage, an interface output, the imports: members held
     Nodes,     // the nodes array: each element is a node

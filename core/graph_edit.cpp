@@ -299,6 +299,7 @@ std::string GraphEditor::deleteNode(const std::string& id) {
   std::erase_if(graph_.nodes, [&](const Node& n) { return n.id == id; });
   for (auto& n : graph_.nodes) std::erase_if(n.inputs, [&](const NodeInput& in) { return reads(in.source); });
   std::erase_if(graph_.outputs, [&](const GraphOutput& o) { return reads(o.source); });
+  dropFromFrames({id});
   return "";
 }
 
@@ -339,6 +340,7 @@ std::string GraphEditor::deleteNodes(const std::vector<std::string>& ids) {
   std::erase_if(graph_.nodes, [&](const Node& n) { return gone.count(n.id) > 0; });
   for (auto& n : graph_.nodes) std::erase_if(n.inputs, [&](const NodeInput& in) { return reads(in.source); });
   std::erase_if(graph_.outputs, [&](const GraphOutput& o) { return reads(o.source); });
+  dropFromFrames(gone);
   return "";
 }
 

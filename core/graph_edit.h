@@ -6,6 +6,7 @@
 // graph reports them, with the node and port, as for a graph file.
 #include <array>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -80,6 +81,20 @@ class GraphEditor {
   std::string createPreset(const std::string& name);
   std::string renamePreset(const std::string& from, const std::string& to);
   std::string deletePreset(const std::string& name);
+  // The canvas's frames (core/graph_edit_frames.cpp; Frame in core/graph.h), each one undo
+  // step. A new frame around `nodes` (the graph's, at least one): `id` empty means
+  // "frame_<n>", the first free, returned in *usedId; nodes another frame held leave it, and
+  // a frame left empty goes. Refused for an id that is not an identifier or is taken.
+  std::string addFrame(Frame frame, std::string* usedId = nullptr);
+  // A frame's title and comment (any text within the loader's string limit).
+  std::string setFrameText(const std::string& id, const std::string& title, const std::string& comment);
+  // The nodes a frame holds, as addFrame takes them.
+  std::string setFrameNodes(const std::string& id, const std::vector<std::string>& nodes);
+  // Removes the frame; its nodes stay where they are.
+  std::string deleteFrame(const std::string& id);
+  // Moves every node of the frame by `by` (so the frame moves), merged like moveNodes while
+  // the same frame keeps moving.
+  std::string moveFrame(const std::string& id, std::array<double, 2> by);
   // Replaces the whole graph (a reload from disk), undoably.
   void replace(Graph graph, const std::string& label);
   // Takes the imported graphs of `loaded` (the same graph with its imports loaded again)
@@ -117,6 +132,10 @@ class GraphEditor {
   Node* findNode(const std::string& id);
   std::string checkTarget(const InputTarget& target) const;
   void setSource(const InputTarget& target, InputSource source);
+  // Deleted nodes leave their frames; a frame left empty goes (a saved frame holds a node).
+  void dropFromFrames(const std::set<std::string>& gone);
+  std::string checkFrameNodes(const std::vector<std::string>& nodes) const;
+  void takeIntoFrame(Frame& frame, std::vector<std::string> nodes);
 
   Graph graph_;
   const Registry* registry_ = nullptr;

@@ -102,7 +102,7 @@ class Loader : public GraphDraftReader {
 
     checkKeys(root, "the graph",
               {"$schema", "version", "name", "description", "view", "imports", "interface", "parameters", "presets",
-               "nodes", "outputs"});
+               "nodes", "outputs", "editor"});
 
     if (!loadVersion(root, g)) return std::nullopt;  // a newer format: the rest is moot
 
@@ -147,6 +147,7 @@ class Loader : public GraphDraftReader {
       loadOutputs(*v, g);
     }
     if (auto* v = field(root, "interface", json::value_t::object, "'interface'")) loadInterface(*v, g);
+    if (auto* v = field(root, "editor", json::value_t::object, "'editor'")) loadEditorLayout(*v, g);
 
     if (diags_.errorCount() > before) return std::nullopt;
     return g;
@@ -657,6 +658,72 @@ class Loader : public GraphDraftReader {
     if (auto* v = field(o, "description", json::value_t::string, "'description' of " + what))
       out.description = v->value.get<std::string>();
     if (ok) itf.outputs.push_back(std::move(out));
+  }
+
+  // "editor": {"frames": {"shore": {"title": "...", "comment": "...", "nodes": ["a", "b"]}}}:
+  // the canvas's layout, which compiling never reads. Each frame lists at least one of the
+  // graph's nodes, each once, and a node lies in at most one frame (WG013).
+  void loadEditorLayout(const DraftValue& ev, Graph& g) {
+    checkKeys(ev, "'editor'", {"frames"});
+    auto* fv = field(ev, "frames", json::value_t::object, "the editor's 'frames'");
+    if (!fv) return;
+    // Sets, not scans: a hostile frame may list 10^5 ids.
+    std::unordered_set<std::string_view> nodeIds;
+    for (const auto& n : g.nodes) nodeIds.insert(n.id);
+    std::unordered_map<std::string, std::string> frameOfNode;  // node id -> the frame listing it
+    std::optional<NameSuggester> nodeNames;                     // made on the first unknown id
+    const bool nodesKnown = nodeCount() <= kMaxNodes;           // else reported in the nodes' turn
+    for (const DraftValue& f : fv->members) {
+      Frame frame;
+      frame.id = f.name;
+      frame.where = ref(f.key);
+      const std::string what = "frame '" + f.name + "'";
+      if (!isIdentifier(frame.id))
+        diags_.error(DiagCode::InvalidIdentifier, frame.where, "frame id '" + frame.id + "' is not an identifier " + kIdentifierRule);
+      if (f.type != json::value_t::object) {
+        diags_.error(DiagCode::WrongJsonType, ref(f.at), what + " must be an object with \"nodes\", found " + jsonTypeName(f.type));
+        continue;
+      }
+      checkKeys(f, what, {"title", "comment", "nodes"});
+      if (auto* v = field(f, "title", json::value_t::string, "'title' of " + what)) frame.title = v->value.get<std::string>();
+      if (auto* v = field(f, "comment", json::value_t::string, "'comment' of " + what)) frame.comment = v->value.get<std::string>();
+      const DraftValue* nv = f.member("nodes");
+      if (!nv) {
+        missing(f, what + " is missing \"nodes\" (the ids of the nodes it holds)");
+        continue;
+      }
+      frame.nodesWhere = ref(nv->at);
+      bool ids = nv->value.is_array();
+      for (const auto& e : nv->value) ids = ids && e.is_string();
+      if (!ids) {
+        diags_.error(DiagCode::WrongJsonType, frame.nodesWhere, "'nodes' of " + what + " must be an array of node ids, found " + describeValue(nv->value));
+        continue;
+      }
+      if (nv->value.empty()) diags_.error(DiagCode::InvalidFrame, frame.nodesWhere, what + " holds no nodes; a frame lists at least one");
+      std::unordered_set<std::string_view> listed;
+      for (const auto& e : nv->value) {
+        const std::string& id = e.get_ref<const std::string&>();
+        if (!listed.insert(id).second) {
+          diags_.error(DiagCode::InvalidFrame, frame.nodesWhere, what + " lists node '" + id + "' twice");
+          continue;
+        }
+        frame.nodes.push_back(id);
+        if (!nodesKnown) continue;
+        if (!nodeIds.count(id)) {
+          if (!nodeNames) {
+            std::vector<std::string> all;
+            for (const auto& n : g.nodes) all.push_back(n.id);
+            nodeNames.emplace(std::move(all));
+          }
+          diags_.error(DiagCode::InvalidFrame, frame.nodesWhere,
+                       what + " lists node '" + id + "', which the graph does not have" + nodeNames->didYouMean(id));
+        } else if (auto [it, fresh] = frameOfNode.emplace(id, frame.id); !fresh) {
+          diags_.error(DiagCode::InvalidFrame, frame.nodesWhere,
+                       what + " lists node '" + id + "', which frame '" + it->second + "' holds; a node lies in at most one frame");
+        }
+      }
+      g.frames.push_back(std::move(frame));
+    }
   }
 
   // One element of "nodes", as soon as it ends; its diagnostics wait in nodeDiags_ for

@@ -282,6 +282,23 @@ Doc interfaceDoc(const GraphInterface& itf) {
   return w.finish();
 }
 
+// "editor": {"frames": {...}}: the canvas's layout, last in the file (compiling never reads
+// it, so it sits after everything that is compiled). Frames in file order, the order they
+// are drawn in; a frame's nodes in its order.
+Doc editorLayoutDoc(const Graph& g) {
+  ObjectWriter fw;
+  for (const Frame& f : g.frames) {
+    ObjectWriter one;
+    if (!f.title.empty()) one.member("title", quote(f.title));
+    if (!f.comment.empty()) one.member("comment", quote(f.comment));
+    one.member("nodes", jsonDoc(json(f.nodes)));
+    fw.member(f.id, one.finish());
+  }
+  ObjectWriter w;
+  w.member("frames", fw.finish(true));
+  return w.finish();
+}
+
 }  // namespace
 
 std::string saveGraph(const Graph& graph) {
@@ -320,6 +337,7 @@ std::string saveGraph(const Graph& graph) {
   for (const auto& n : graph.nodes) nodes.items.push_back(nodeDoc(n));
   w.member("nodes", std::move(nodes));
   if (!graph.outputs.empty() || !graph.interface) w.member("outputs", outputsDoc(graph));
+  if (!graph.frames.empty()) w.member("editor", editorLayoutDoc(graph));
   std::string out;
   write(out, w.finish(true), 0, 0);
   out += '\n';

@@ -21,7 +21,8 @@ const std::set<std::string>& editOps() {
                                          "delete_node", "move_node", "undo", "redo",
                                          "add_parameter", "rename_parameter", "delete_parameter", "move_parameter",
                                          "create_preset", "rename_preset", "delete_preset", "delete_reconnect",
-                                         "declare_input", "rename_input", "retype_input", "remove_input", "choose_texture", "insert_on_link", "new_function_node"};
+                                         "declare_input", "rename_input", "retype_input", "remove_input", "choose_texture", "insert_on_link", "new_function_node",
+                                         "add_frame", "set_frame", "delete_frame", "move_frame"};
   return ops;
 }
 
@@ -80,6 +81,51 @@ Type inputType(const nlohmann::json& step) {
   auto type = parseType(text(step, "type"));
   if (!type || !isFloatScalarOrVector(*type)) throw std::invalid_argument("\"type\" is float, vec2, vec3 or vec4");
   return *type;
+}
+
+// A list of node ids under `key`.
+std::vector<std::string> nodeIds(const nlohmann::json& step, const char* key) {
+  auto it = step.find(key);
+  if (it == step.end() || !it->is_array()) throw std::invalid_argument(std::string("needs a list of node ids \"") + key + "\"");
+  std::vector<std::string> ids;
+  for (const auto& id : *it) {
+    if (!id.is_string()) throw std::invalid_argument(std::string("\"") + key + "\" must hold strings only");
+    ids.push_back(id.get<std::string>());
+  }
+  return ids;
+}
+
+// The canvas's frames (core/graph_edit_frames.cpp); kNotAFrameOp for any other op.
+constexpr const char* kNotAFrameOp = "\x02";
+std::string applyFrameStep(GraphEditor& e, const ScriptStep& step) {
+  const std::string& op = step.op;
+  const auto& a = step.args;
+  if (op == "add_frame") {
+    Frame f;
+    f.id = a.contains("id") ? text(a, "id") : "";
+    f.title = a.contains("title") ? text(a, "title") : "";
+    f.comment = a.contains("comment") ? text(a, "comment") : "";
+    f.nodes = nodeIds(a, "nodes");
+    return e.addFrame(std::move(f));
+  }
+  if (op == "set_frame") {
+    const std::string id = text(a, "id");
+    const Frame* f = e.graph().findFrame(id);
+    if (!f) return "no frame '" + id + "'";
+    if (a.contains("nodes"))
+      if (std::string why = e.setFrameNodes(id, nodeIds(a, "nodes")); !why.empty()) return why;
+    f = e.graph().findFrame(id);
+    return e.setFrameText(id, a.contains("title") ? text(a, "title") : f->title, a.contains("comment") ? text(a, "comment") : f->comment);
+  }
+  if (op == "delete_frame") return e.deleteFrame(text(a, "id"));
+  if (op == "move_frame") {
+    std::vector<double> by = numbers(a, "by");
+    if (by.size() != 2) throw std::invalid_argument("\"by\" is [dx, dy]");
+    std::string why = e.moveFrame(text(a, "id"), {by[0], by[1]});
+    e.seal();
+    return why;
+  }
+  return kNotAFrameOp;
 }
 
 // The ops over the node types (editor/dissolve_nodes.h, expression_inputs.h,
@@ -160,6 +206,7 @@ std::string applyEditStep(GraphEditor& e, const ScriptStep& step, const EditCont
   try {
     const std::string& op = step.op;
     if (std::string why = applyAuthoringStep(e, step, context); why != kNotAuthoring) return why;
+    if (std::string why = applyFrameStep(e, step); why != kNotAFrameOp) return why;
     if (op == "set_parameter") return e.setParameterDefault(text(a, "name"), numbers(a, "value"));
     if (op == "set_input") {
       if (a.contains("parameter")) return e.setInputParameter(target(a), text(a, "parameter"));

@@ -9,6 +9,7 @@ GraphChange compareGraphs(const Graph& before, const Graph& after) {
   Graph a = before, b = after;
   for (auto& n : a.nodes) n.editorPosition.reset();
   for (auto& n : b.nodes) n.editorPosition.reset();
+  a.frames.clear(), b.frames.clear();  // layout, as positions: never compiled
   if (a.parameters.size() == b.parameters.size()) {
     for (size_t i = 0; i < a.parameters.size(); ++i) {
       Parameter& pa = a.parameters[i];

@@ -10,11 +10,37 @@
 namespace wg::editor {
 namespace {
 
-// The canonical text of `g` without any node position: equal for two graphs that differ
-// only in their layout.
+// The canonical text of `g` without any node position or frame: equal for two graphs that
+// differ only in their layout.
 std::string withoutLayout(Graph g) {
   for (Node& n : g.nodes) n.editorPosition.reset();
+  g.frames.clear();
   return saveGraph(g);
+}
+
+std::string quotedLayoutString(const std::string& s) {
+  return nlohmann::json(s).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+bool sameFrames(const std::vector<Frame>& a, const std::vector<Frame>& b) {
+  return std::equal(a.begin(), a.end(), b.begin(), b.end(), [](const Frame& x, const Frame& y) {
+    return x.id == y.id && x.title == y.title && x.comment == y.comment && x.nodes == y.nodes;
+  });
+}
+
+// The graph's "editor" value with `frames`, one frame per line (an empty "frames" when none).
+std::string layoutText(const std::vector<Frame>& frames) {
+  std::string s = "{\"frames\": {";
+  for (size_t i = 0; i < frames.size(); ++i) {
+    const Frame& f = frames[i];
+    s += (i ? ",\n    " : "\n    ") + quotedLayoutString(f.id) + ": {";
+    if (!f.title.empty()) s += "\"title\": " + quotedLayoutString(f.title) + ", ";
+    if (!f.comment.empty()) s += "\"comment\": " + quotedLayoutString(f.comment) + ", ";
+    s += "\"nodes\": [";
+    for (size_t j = 0; j < f.nodes.size(); ++j) s += (j ? ", " : "") + quotedLayoutString(f.nodes[j]);
+    s += "]}";
+  }
+  return s + (frames.empty() ? "}}" : "\n  }}");
 }
 
 std::optional<size_t> offsetOf(const std::string& text, const SourceRef& at) {
@@ -44,6 +70,7 @@ struct NodeObjectSpans {
 };
 
 // The node object starting at text[open] == '{': where its "editor" value and its end are.
+// (The graph's root object is scanned the same way for its own "editor" value, the frames.)
 std::optional<NodeObjectSpans> scanNodeObject(const std::string& text, size_t open) {
   if (open >= text.size() || text[open] != '{') return std::nullopt;
   NodeObjectSpans spans;
@@ -116,6 +143,20 @@ std::optional<std::string> patchLayoutOnly(const std::string& diskText, const Gr
       while (last > *open && std::isspace(static_cast<unsigned char>(diskText[last - 1]))) --last;
       bool empty = diskText[last - 1] == '{';
       replacements.push_back({last, last, std::string(empty ? "" : ", ") + "\"editor\": " + positionText(*now.editorPosition)});
+    }
+  }
+  if (!sameFrames(onDisk.frames, edited.frames)) {
+    // The frames changed: the root's "editor" value is written again, or added last.
+    size_t root = diskText.find_first_not_of(" \t\r\n");
+    auto spans = root == std::string::npos ? std::nullopt : scanNodeObject(diskText, root);
+    if (!spans) return std::nullopt;
+    if (spans->editorValueBegin != std::string::npos) {
+      if (spans->editorValueEnd == std::string::npos) return std::nullopt;
+      replacements.push_back({spans->editorValueBegin, spans->editorValueEnd, layoutText(edited.frames)});
+    } else {
+      size_t last = spans->close;
+      while (last > root && std::isspace(static_cast<unsigned char>(diskText[last - 1]))) --last;
+      replacements.push_back({last, last, ",\n  \"editor\": " + layoutText(edited.frames)});
     }
   }
   std::string text = diskText;

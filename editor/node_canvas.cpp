@@ -13,6 +13,7 @@
 #include "core/graph_node_type.h"
 #include "core/number_format.h"
 #include "editor/authoring_widgets.h"
+#include "editor/canvas_frames.h"
 #include "editor/canvas_minimap.h"
 #include "editor/dissolve_nodes.h"
 #include "editor/function_node_ports.h"
@@ -122,6 +123,7 @@ struct NodeCanvas::Layout {
   const Graph& g;
   std::vector<Box> boxes;
   float zoom = 1;
+  std::vector<FrameBox> frames;  // behind the boxes (editor/canvas_frames.h)
   float portReach() const { return std::max(kPortRadius * zoom, 3.0f) + 4; }
 
   const Box* boxOf(const std::string& id) const {
@@ -242,11 +244,21 @@ NodeCanvas::Layout NodeCanvas::layout(const Graph& g, const Registry& registry, 
     }
     l.boxes.push_back(std::move(in));
   }
+  auto nodeArea = [&](const std::string& id) { const Box* b = id.empty() ? nullptr : l.boxOf(id); return b ? std::optional(b->area) : std::nullopt; };
+  l.frames = placeFrames(g, nodeArea, view_, origin, ImGui::GetFontSize());
   return l;
 }
 
 bool NodeCanvas::isSelected(const std::string& id) const {
   return std::find(selection_.begin(), selection_.end(), id) != selection_.end();
+}
+
+// A drag of the selected nodes (a node's box, or a frame's title bar) starts.
+void NodeCanvas::beginMove(const Layout& l) {
+  drag_ = Drag::MoveNodes;
+  moveStarts_.clear();
+  for (const auto& id : selection_)
+    if (const Node* n = l.g.findNode(id)) moveStarts_.push_back({id, n->editorPosition.value_or(std::array<double, 2>{0, 0})});
 }
 
 void NodeCanvas::startDrag(const Layout& l, ImVec2 mouse, std::string& selected) {
@@ -271,10 +283,12 @@ void NodeCanvas::startDrag(const Layout& l, ImVec2 mouse, std::string& selected)
     if (io.KeyShift) selection_.push_back(b->id);
     else if (!isSelected(b->id)) selection_ = {b->id};
     selected = b->id;
-    drag_ = Drag::MoveNodes;
-    moveStarts_.clear();
-    for (const auto& id : selection_)
-      if (const Node* n = l.g.findNode(id)) moveStarts_.push_back({id, n->editorPosition.value_or(std::array<double, 2>{0, 0})});
+    beginMove(l);
+  } else if (const FrameBox* f = io.KeyAlt ? nullptr : frameTitleAt(l.frames, mouse)) {
+    // A frame's title bar: its nodes are selected and move with it, one undo step.
+    selection_ = l.g.findFrame(f->id)->nodes;
+    selected = selection_.back();
+    beginMove(l);
   } else if (io.KeyAlt) {
     drag_ = Drag::Pan;
   } else {
@@ -293,6 +307,9 @@ void NodeCanvas::rightClick(GraphEditor& editor, const Layout& l, ImVec2 mouse, 
   } else if (const Box* b = l.nodeAt(mouse)) {
     selected = b->id;
     if (!isSelected(b->id)) selection_ = {b->id};
+  } else if (const FrameBox* f = frameTitleAt(l.frames, mouse)) {
+    frameMenu_.open(l.g, f->id);
+    ImGui::OpenPopup(kFrameMenuPopup);
   } else {
     // On a link, the node chosen goes into it; elsewhere it is added unconnected.
     insertInto_ = l.linkAt(mouse);
@@ -370,6 +387,7 @@ void NodeCanvas::viewKeys(const Layout& l, ImVec2 mouse, ImVec2 origin, ImVec2 s
         all = enclosing(all, b.area);
         if (isSelected(b.id)) box = enclosing(box, b.area);
       }
+      for (const FrameBox& f : l.frames) all = enclosing(all, f.area);
       if (k.key == GLFW_KEY_HOME || !box) box = all;
       if (box) view_.frame(*box, {size.x, size.y});
     }
@@ -460,6 +478,7 @@ void NodeCanvas::drawPalette(GraphEditor& editor, const Registry& registry, std:
   if (!ImGui::BeginPopup("palette")) return;
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere(), paletteIndex_ = 0;
   ImGui::InputTextWithHint("##filter", "filter", filter_, sizeof filter_);
+  if (frameSelectionEntry(editor, selection_)) ImGui::CloseCurrentPopup();
   if (insertInto_)
     ImGui::TextDisabled("into the link to %s.%s", insertInto_->node.empty() ? "outputs" : insertInto_->node.c_str(), insertInto_->port.c_str());
   const std::vector<PaletteEntry> entries = paletteEntries(editor.graph(), registry, filter_);
@@ -524,6 +543,7 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   Layout l = layout(editor.graph(), registry, origin);
   std::optional<CanvasRect> whole;
   for (const Box& b : l.boxes) whole = enclosing(whole, b.area);
+  for (const FrameBox& f : l.frames) whole = enclosing(whole, f.area);
   std::optional<Minimap> minimap = Minimap::place(origin, size, whole, view_);
   auto centreOn = [&](std::array<double, 2> p) {  // the view's centre to canvas point p
     auto now = view_.toPanel(p[0], p[1]);
@@ -548,6 +568,7 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
   // Drawn as it is now: after this frame's zoom, pan and edits.
   Layout drawn = layout(editor.graph(), registry, origin);
 
+  drawFrames(dl, drawn.g, drawn.frames, drawn.zoom, ImGui::GetFontSize(), selection_);
   drawLinks(drawn, dl);
   noteLinks(drawn);
   drawBoxes(drawn, dl, diagnostics);
@@ -567,8 +588,11 @@ void NodeCanvas::draw(GraphEditor& editor, const Registry& registry, std::string
     bool reconnect = wasPressed(keys, GLFW_KEY_DELETE, GLFW_MOD_CONTROL) || wasPressed(keys, GLFW_KEY_BACKSPACE, GLFW_MOD_CONTROL);
     std::string why = reconnect ? dissolveNodes(editor, registry, selection_) : plain ? editor.deleteNodes(selection_) : "-";
     if (why.empty()) selection_.clear(), selected.clear();
+    // Ctrl+G: a frame around the selection (its nodes leave other frames).
+    if (wasPressed(keys, GLFW_KEY_G, GLFW_MOD_CONTROL)) frameAround(editor, selection_);
   }
   drawPalette(editor, registry, selected, keys);
+  frameMenu_.draw(editor, selection_);
   lastSelected_ = selected;
 }
 

@@ -8,7 +8,10 @@
 // (Delete key; Ctrl+Delete reconnects pass-throughs), open a subgraph instance
 // (double-click). The view zooms about the cursor (wheel, = and -), pans (middle or
 // Alt+left drag), frames the selection (F) or everything (Home), and a minimap in the
-// corner shows the whole graph (click or drag in it to move there). A function graph's
+// corner shows the whole graph (click or drag in it to move there). Frames (titled,
+// commented boxes around nodes, editor/canvas_frames.h) are drawn behind the nodes: Ctrl+G
+// makes one around the selection, dragging its title bar moves its nodes, right-clicking
+// the title bar opens its menu. A function graph's
 // interface outputs are shown, read-only, under the output slots. Node positions are the
 // file's "editor": {x, y}.
 #include <array>
@@ -20,6 +23,7 @@
 #include "core/diagnostic.h"
 #include "core/graph_edit.h"
 #include "core/registry.h"
+#include "editor/canvas_frames.h"
 #include "editor/canvas_view.h"
 #include "editor/key_events.h"
 
@@ -50,6 +54,7 @@ class NodeCanvas {
   struct Layout;  // this frame's boxes and ports, and hit tests on them
   Layout layout(const Graph& g, const Registry& registry, ImVec2 origin) const;
   void startDrag(const Layout& l, ImVec2 mouse, std::string& selected);
+  void beginMove(const Layout& l);
   void rightClick(GraphEditor& editor, const Layout& l, ImVec2 mouse, ImVec2 origin, std::string& selected);
   void continueDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse, ImVec2 origin, ImDrawList* dl);
   void finishDrag(GraphEditor& editor, const Layout& l, ImVec2 mouse, std::string& selected);
@@ -81,6 +86,7 @@ class NodeCanvas {
   int paletteIndex_ = 0;     // the highlighted entry: Enter adds it, the arrows move it
   std::string openRequest_;
   std::array<double, 2> pasteAnchor_{};
+  FrameMenu frameMenu_;
 };
 
 }  // namespace wg::editor

@@ -51,6 +51,9 @@ std::vector<Diagnostic> pruneUnreachedNodes(Graph& graph, const Registry& regist
     }
   }
   std::erase_if(graph.nodes, [&](const Node& n) { return !reached.count(n.id); });
+  // What is compiled has no layout: a frame may hold a node just removed, and the text of
+  // this graph must still load.
+  graph.frames.clear();
   return warnings;
 }
 

@@ -16,7 +16,8 @@ namespace wg::editor {
 
 // Removes from `graph` every node that neither an output slot, an interface output nor one
 // of `alsoKeep` (node ids: a thumbnail's node) reaches through links. Returns one WG023
-// warning per required input left unconnected on a removed node, in node order.
+// warning per required input left unconnected on a removed node, in node order. The
+// graph's frames go too (compiling ignores them).
 std::vector<Diagnostic> pruneUnreachedNodes(Graph& graph, const Registry& registry,
                                             const std::vector<std::string>& alsoKeep = {});
 

@@ -409,8 +409,31 @@ nlohmann::ordered_json graphSchema(const Registry& registry) {
                      {"patternProperties", {{kPresetOptionPattern, OJ::object()}}},
                      {"additionalProperties", {{"anyOf", {defRef("number"), vectorLiteral(0)}}}}}}}},
       {"nodes", {{"type", "array"}, {"items", defRef("node")}}},
-      {"outputs", defRef("outputs")}};
+      {"outputs", defRef("outputs")},
+      {"editor", defRef("editor_layout")}};
   defs["outputs"] = outputsSchema();
+  // The editor's layout (docs/editor.md, Frames): compiling never reads it. That a frame's
+  // nodes are the graph's, and in one frame each, is the loader's to check (WG013).
+  defs["editor_layout"] = OJ{
+      {"description", "the editor canvas's layout; compiling ignores it"},
+      {"type", "object"},
+      {"additionalProperties", false},
+      {"properties",
+       {{"frames", {{"description", "frame id -> a titled, commented box drawn around its nodes, moved with them"},
+                    {"type", "object"},
+                    {"propertyNames", defRef("identifier")},
+                    {"additionalProperties",
+                     {{"type", "object"},
+                      {"additionalProperties", false},
+                      {"required", {"nodes"}},
+                      {"properties",
+                       {{"title", {{"type", "string"}}},
+                        {"comment", {{"description", "may hold line breaks"}, {"type", "string"}}},
+                        {"nodes", {{"description", "the ids of the nodes it holds; a node lies in at most one frame"},
+                                   {"type", "array"},
+                                   {"minItems", 1},
+                                   {"uniqueItems", true},
+                                   {"items", defRef("identifier")}}}}}}}}}}}};
   root["definitions"] = defs;
   return root;
 }

@@ -2,7 +2,7 @@
 # The screenshots in docs/editor.md, made by the editor's own script mode under a virtual X
 # server (xvfb-run): the canvas framed with a half-wired node and a box selection, the
 # palette filtered with Enter's entry highlighted, the blackboard, the palette opened on a
-# link, an expression's input list and the texture picker. 1600x900 windows, the preview at 640x360.
+# link, an expression's input list, the texture picker and frames. 1600x900 windows, the preview at 640x360.
 #   scripts/editor_screenshots.sh [build-dir] [out-dir]   (defaults: build, docs/images)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -88,5 +88,21 @@ shoot editor-texture-picker '[
   {"op": "select", "node": "ripples"},
   {"op": "frames", "count": 2},
   {"op": "click", "widget": "texture picker texture"},
+  {"op": "frames", "count": 2}
+]'
+
+# Frames: "Shore" around the nodes that make the shore mask, with a two-line comment, and
+# "Colour", its nodes selected; one zoom step in about the frames.
+shoot editor-frames '[
+  {"op": "add_frame", "id": "shore", "title": "Shore", "comment": "distance from the centre, as a depth:\nshallow near the rim", "nodes": ["from_centre", "radius", "shore"]},
+  {"op": "add_frame", "id": "colour", "title": "Colour", "comment": "the depth tints the water from shallow to deep", "nodes": ["depth", "tint"]},
+  {"op": "frames", "count": 1},
+  {"op": "hover", "widget": "canvas"},
+  {"op": "key", "key": "home"},
+  {"op": "frames", "count": 1},
+  {"op": "hover", "widget": "node shore"},
+  {"op": "key", "key": "="},
+  {"op": "frames", "count": 1},
+  {"op": "click", "widget": "frame colour"},
   {"op": "frames", "count": 2}
 ]'

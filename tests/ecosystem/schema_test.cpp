@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
 
 #include <nlohmann/json.hpp>
 
@@ -108,6 +109,22 @@ TEST(Schema, ValidatorAcceptsEveryLibraryFunctionGraph) {
   auto r = sh(validatorCommand(graphs, false));
   ASSERT_NE(r.exit, 3) << r.out;
   EXPECT_EQ(r.exit, 0) << r.out << r.err;
+}
+
+// The editor's frames ("editor": {"frames": ...}, docs/graph-format.md) are part of the
+// format the schema describes: a graph with one validates (tests/ecosystem/schema_bad has
+// one whose frame holds no node).
+TEST(Schema, ValidatorAcceptsTheEditorsFrames) {
+  std::string dir = test::makeTempDir("wg_schema_frames");
+  std::string graph = dir + "/framed.json";
+  test::writeFile(graph, R"({"version": 1, "name": "framed",
+    "nodes": [{"id": "u", "type": "uv"}, {"id": "s", "type": "saturate", "inputs": {"x": "u.out"}}],
+    "outputs": {"fragment": {"color": [1, 0, 0]}},
+    "editor": {"frames": {"coords": {"title": "Coordinates", "comment": "two\nlines", "nodes": ["u", "s"]}}}})");
+  auto r = sh(validatorCommand({graph}, false));
+  ASSERT_NE(r.exit, 3) << r.out;
+  EXPECT_EQ(r.exit, 0) << r.out << r.err;
+  std::filesystem::remove_all(dir);
 }
 
 TEST(Schema, ValidatorRejectsBadGraphs) {
