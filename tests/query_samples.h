@@ -30,13 +30,16 @@ inline const char* kSteepWaves = R"J([
 inline constexpr double kSteepSum = 0.969;  // sum Q k A of kSteepWaves, rounded down
 
 // A graph of the steep sea alone (kSteepWaves displacing the grid), written to dir/steep.json.
-inline std::string writeSteepGraph(const std::string& dir) {
+// With `shadeByPosition` its colour is the world position, so the vertex stage passes the
+// displaced point to the fragment stage (the vk450 capture of query_gpu_test reads it there).
+inline std::string writeSteepGraph(const std::string& dir, bool shadeByPosition = false) {
   test::writeFile(dir + "/steep.json",
                   test::graphJson(R"J({"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" +
-                                      std::string(kSteepWaves) + R"J(}},
+                                      std::string(kSteepWaves) + "}}," +
+                                      (shadeByPosition ? R"J({"id": "p", "type": "world_position"},)J" : "") + R"J(
       {"id": "surface", "type": "vertex_output", "inputs": {"position": "waves.position", "normal": "waves.normal"}})J",
                                   R"J("vertex": {"position": "surface.position", "normal": "surface.normal"},
-      "fragment": {"color": [0, 0.2, 0.4]})J"));
+      "fragment": {"color": )J" + std::string(shadeByPosition ? "\"p.out\"" : "[0, 0.2, 0.4]") + "}"));
   return dir + "/steep.json";
 }
 
