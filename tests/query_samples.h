@@ -43,6 +43,20 @@ inline std::string writeSteepGraph(const std::string& dir, bool shadeByPosition 
   return dir + "/steep.json";
 }
 
+// A surface an expression folds over: x = x0 + 1.5 sin x0 (slope 1 + 1.5 cos x0, negative on
+// a third of each period, where three water points reach one x), y = 0.5 cos x0; written to
+// dir/fold.json.
+inline std::string writeFoldGraph(const std::string& dir) {
+  test::writeFile(dir + "/fold.json", test::graphJson(R"J({"id": "p", "type": "world_position"},
+      {"id": "bump", "type": "expression",
+       "options": {"inputs": {"p": "vec3"}, "formula": "vec3(1.5 * sin(p.x), 0.5 * cos(p.x), 0.0)"},
+       "inputs": {"p": "p.out"}},
+      {"id": "surface", "type": "vertex_output", "inputs": {"displacement": "bump.out"}})J",
+                                                      R"J("vertex": {"position": "surface.position"},
+      "fragment": {"color": [0, 0.2, 0.4]})J"));
+  return dir + "/fold.json";
+}
+
 // A moderate sea (sum Q k A = 0.415), under the mixed graph's other displacements.
 inline const char* kModerateWaves = R"J([
   {"direction": [1, 0.25], "steepness": 0.45, "wavelength": 14},

@@ -186,21 +186,14 @@ TEST(QueryHeader, ExpressionsSubgraphsAndClampedParameters) {
   std::filesystem::remove_all(dir);
 }
 
-// An expression folds the surface over: x = x0 + 1.5 sin x0 (its slope 1 + 1.5 cos x0 is
-// negative on a third of each period), so up to three water points reach one x and the
-// residual of the inversion has minima that are no root. Every height must be the height
+// An expression folds the surface over (test::writeFoldGraph: x = x0 + 1.5 sin x0), so up
+// to three water points reach one x and the residual of the inversion has minima that are
+// no root. Every height must be the height
 // 0.5 cos x0 of one of the sheets over x, found here by bisection in double, within the
 // stated tolerance carried through the sheet's conditioning: 0.5 tol / |1 + 1.5 cos x0|.
 TEST(QueryHeader, WhereTheSurfaceFoldsHeightAnswersOneOfItsSheets) {
   std::string dir = test::makeTempDir("wg_query_fold");
-  test::writeFile(dir + "/fold.json", test::graphJson(R"J({"id": "p", "type": "world_position"},
-      {"id": "bump", "type": "expression",
-       "options": {"inputs": {"p": "vec3"}, "formula": "vec3(1.5 * sin(p.x), 0.5 * cos(p.x), 0.0)"},
-       "inputs": {"p": "p.out"}},
-      {"id": "surface", "type": "vertex_output", "inputs": {"displacement": "bump.out"}})J",
-                                                      R"J("vertex": {"position": "surface.position"},
-      "fragment": {"color": [0, 0.2, 0.4]})J"));
-  QueryCompiled c = compileQuery(dir + "/fold.json", "g");
+  QueryCompiled c = compileQuery(test::writeFoldGraph(dir), "g");
   const double z = 0.3;
   std::string main = "#include <stdio.h>\n#include \"g.query.h\"\nint main(void) {\n  wg_g_params p;\n  int i;\n"
                      "  wg_g_params_default(&p);\n  for (i = 0; i <= 2000; ++i)\n"
