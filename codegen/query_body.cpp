@@ -1,6 +1,7 @@
 #include "codegen/query_body.h"
 
 #include "codegen/c_names.h"
+#include "codegen/query_header.h"
 #include "codegen/query_program.h"
 #include "core/interface_tables.h"
 
@@ -97,6 +98,15 @@ std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage langua
   // A parameter the kept statements do not read is no reason to touch the struct.
   body.readsParameters = body.statements.find(c ? "p->" : "p.") != std::string::npos;
   return body;
+}
+
+std::string queryRestartTable(HeaderLanguage language) {
+  // Four axes at the full reach, then the four directions between them at half of it.
+  static const char* kTriples =
+      "1.0, 0.0, 1.0, 0.0, 1.0, 1.0, -1.0, 0.0, 1.0, 0.0, -1.0, 1.0, "
+      "0.6, 0.8, 0.5, -0.8, 0.6, 0.5, -0.6, -0.8, 0.5, 0.8, -0.6, 0.5";
+  return language == HeaderLanguage::C ? std::string("const double restart[24] = {") + kTriples + "};"
+                                       : std::string("const restart = [") + kTriples + "];";
 }
 
 }  // namespace wg

@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 
+#include "codegen/c_parameters.h"
 #include "core/diagnostic.h"
 #include "core/program.h"
 
@@ -20,7 +21,19 @@ namespace wg {
 // kQueryHeightTolerance * (1 + |x| + |z|) metres of (x, z) in x and in z, or after
 // kQueryMaxSteps evaluations (then the best point found answers).
 inline constexpr double kQueryHeightTolerance = 1e-13;
-inline constexpr int kQueryMaxSteps = 64;
+inline constexpr int kQueryMaxSteps = 128;
+// A step that does not bring the point closer is halved, at most this many times in a row;
+// then the steps are stuck where the residual has a minimum that is no root (beside a fold
+// of the surface) and start again from the next point of queryRestartTable.
+inline constexpr int kQueryHalvings = 3;
+
+// The declaration of `restart`, eight (direction x, direction z, fraction of the reach)
+// triples: where height() starts again around (x, z), at the largest horizontal
+// displacement seen so far times the fraction (a root lies within the displacement's reach
+// of (x, z): x0 -> (x, z) - D(x0).xz maps that disk into itself), the fraction times 1,
+// 0.7, 0.4 in turn on each pass through the eight. Literals, not trigonometry, so the C header and the JavaScript module start
+// again from the same points to the last bit.
+std::string queryRestartTable(HeaderLanguage language);
 
 // The header's or module's text, or nullopt with WG044 errors naming each node the query
 // cannot evaluate. `program` is the compiled Program (after the passes).

@@ -139,21 +139,31 @@ std::optional<std::string> queryJsModule(const std::string& graphName, const Pro
   m += "  if (velocity) for (let i = 0; i < 3; ++i) velocity[i] = dt[i];\n";
   m += "  if (normal) wgq_normal(dx, dz, normal);\n}\n\n";
 
-  m += "// The height of the surface above the world point (x, z) at time t.\n";
+  m += "// The height of the surface above the world point (x, z) at time t (the C header's steps).\n";
   m += "export function " + g + "height(p, x, z, t) {\n";
   m += "  const P = new Float64Array(3), dx = new Float64Array(3), dz = new Float64Array(3), dt = new Float64Array(3);\n";
-  m += "  let x0 = x, z0 = z, bestX0 = x, bestZ0 = z, bestY = NaN, best = Infinity, sx = 0.0, sz = 0.0;\n";
+  m += "  let x0 = x, z0 = z, ax0 = x, az0 = z, ar = Infinity, bestY = NaN, best = Infinity;\n";
+  m += "  let sx = 0.0, sz = 0.0, reach = 0.0, halvings = 0, restarts = 0;\n";
   m += "  const tolerance = " + jsNumber(kQueryHeightTolerance) + " * (1.0 + fabs(x) + fabs(z));\n";
+  m += "  " + queryRestartTable(HeaderLanguage::JavaScript) + "\n";
   m += "  if (!(wgq_finite(x) && wgq_finite(z) && wgq_finite(t))) return NaN;\n";
   m += "  for (let i = 0; i < " + std::to_string(kQueryMaxSteps) + "; ++i) {\n";
   m += "    " + g + "surface_at(p, x0, z0, t, P, dx, dz, dt);\n";
   m += "    const rx = P[0] - x, rz = P[2] - z;\n";
   m += "    const r = fabs(rx) > fabs(rz) ? fabs(rx) : fabs(rz);\n";
   m += "    if (r !== r) return NaN;\n";
-  m += "    if (!(r < best)) {\n      sx *= 0.5;\n      sz *= 0.5;\n      x0 = bestX0 - sx;\n      z0 = bestZ0 - sz;\n"
-       "      continue;\n    }\n";
-  m += "    best = r;\n    bestX0 = x0;\n    bestZ0 = z0;\n    bestY = P[1];\n";
+  m += "    const ox = P[0] - x0, oz = P[2] - z0, o = sqrt(ox * ox + oz * oz);\n";
+  m += "    if (reach < o) reach = o;\n";
+  m += "    if (r < best) {\n      best = r;\n      bestY = P[1];\n    }\n";
   m += "    if (r <= tolerance) break;\n";
+  m += "    if (!(r < ar)) {\n";
+  m += "      if (++halvings <= " + std::to_string(kQueryHalvings) + ") {\n";
+  m += "        sx *= 0.5;\n        sz *= 0.5;\n        x0 = ax0 - sx;\n        z0 = az0 - sz;\n        continue;\n      }\n";
+  m += "      const k = 3 * (restarts % 8);\n";
+  m += "      const d = reach * restart[k + 2] * (1.0 - 0.3 * ((restarts >> 3) % 3));\n";
+  m += "      x0 = x + d * restart[k];\n      z0 = z + d * restart[k + 1];\n";
+  m += "      ++restarts;\n      halvings = 0;\n      ar = Infinity;\n      continue;\n    }\n";
+  m += "    halvings = 0;\n    ar = r;\n    ax0 = x0;\n    az0 = z0;\n";
   m += "    const det = dx[0] * dz[2] - dz[0] * dx[2];\n";
   m += "    if (fabs(det) > 1e-12) {\n      sx = (rx * dz[2] - rz * dz[0]) / det;\n      sz = (dx[0] * rz - dx[2] * rx) / det;\n";
   m += "    } else {\n      sx = rx;\n      sz = rz;\n    }\n";

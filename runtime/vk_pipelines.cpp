@@ -42,7 +42,9 @@ VkPipelineHandle createGraphicsPipeline(VkDevice device, const VkPipelineDescrip
     vertexInput.pVertexAttributeDescriptions = d.attributes.data();
   }
   VkPipelineInputAssemblyStateCreateInfo assembly{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-  assembly.topology = d.patches ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+  assembly.topology = d.patches  ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST
+                      : d.points ? VK_PRIMITIVE_TOPOLOGY_POINT_LIST
+                                 : VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
   VkPipelineTessellationStateCreateInfo tessellation{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
   tessellation.patchControlPoints = 3;
   VkPipelineViewportStateCreateInfo viewport{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};

@@ -64,6 +64,7 @@ struct VkPipelineDescription {
   uint32_t vertexStride = 0;
   std::vector<VkVertexInputAttributeDescription> attributes;
   bool patches = false;  // tessellated: patch lists of 3 vertices, else triangle lists
+  bool points = false;   // point lists (a test's capture of single vertices), else as above
   bool depthTest = true;  // LEQUAL, as the GL runtime
   bool depthWrite = true;
   bool blend = false;  // colour by source alpha, alpha ONE / ONE_MINUS_SRC_ALPHA (the water)

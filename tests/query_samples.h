@@ -30,14 +30,31 @@ inline const char* kSteepWaves = R"J([
 inline constexpr double kSteepSum = 0.969;  // sum Q k A of kSteepWaves, rounded down
 
 // A graph of the steep sea alone (kSteepWaves displacing the grid), written to dir/steep.json.
-inline std::string writeSteepGraph(const std::string& dir) {
+// With `shadeByPosition` its colour is the world position, so the vertex stage passes the
+// displaced point to the fragment stage (the vk450 capture of query_gpu_test reads it there).
+inline std::string writeSteepGraph(const std::string& dir, bool shadeByPosition = false) {
   test::writeFile(dir + "/steep.json",
                   test::graphJson(R"J({"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" +
-                                      std::string(kSteepWaves) + R"J(}},
+                                      std::string(kSteepWaves) + "}}," +
+                                      (shadeByPosition ? R"J({"id": "p", "type": "world_position"},)J" : "") + R"J(
       {"id": "surface", "type": "vertex_output", "inputs": {"position": "waves.position", "normal": "waves.normal"}})J",
                                   R"J("vertex": {"position": "surface.position", "normal": "surface.normal"},
-      "fragment": {"color": [0, 0.2, 0.4]})J"));
+      "fragment": {"color": )J" + std::string(shadeByPosition ? "\"p.out\"" : "[0, 0.2, 0.4]") + "}"));
   return dir + "/steep.json";
+}
+
+// A surface an expression folds over: x = x0 + 1.5 sin x0 (slope 1 + 1.5 cos x0, negative on
+// a third of each period, where three water points reach one x), y = 0.5 cos x0; written to
+// dir/fold.json.
+inline std::string writeFoldGraph(const std::string& dir) {
+  test::writeFile(dir + "/fold.json", test::graphJson(R"J({"id": "p", "type": "world_position"},
+      {"id": "bump", "type": "expression",
+       "options": {"inputs": {"p": "vec3"}, "formula": "vec3(1.5 * sin(p.x), 0.5 * cos(p.x), 0.0)"},
+       "inputs": {"p": "p.out"}},
+      {"id": "surface", "type": "vertex_output", "inputs": {"displacement": "bump.out"}})J",
+                                                      R"J("vertex": {"position": "surface.position"},
+      "fragment": {"color": [0, 0.2, 0.4]})J"));
+  return dir + "/fold.json";
 }
 
 // A moderate sea (sum Q k A = 0.415), under the mixed graph's other displacements.

@@ -186,6 +186,49 @@ TEST(QueryHeader, ExpressionsSubgraphsAndClampedParameters) {
   std::filesystem::remove_all(dir);
 }
 
+// An expression folds the surface over (test::writeFoldGraph: x = x0 + 1.5 sin x0), so up
+// to three water points reach one x and the residual of the inversion has minima that are
+// no root. Every height must be the height
+// 0.5 cos x0 of one of the sheets over x, found here by bisection in double, within the
+// stated tolerance carried through the sheet's conditioning: 0.5 tol / |1 + 1.5 cos x0|.
+TEST(QueryHeader, WhereTheSurfaceFoldsHeightAnswersOneOfItsSheets) {
+  std::string dir = test::makeTempDir("wg_query_fold");
+  QueryCompiled c = compileQuery(test::writeFoldGraph(dir), "g");
+  const double z = 0.3;
+  std::string main = "#include <stdio.h>\n#include \"g.query.h\"\nint main(void) {\n  wg_g_params p;\n  int i;\n"
+                     "  wg_g_params_default(&p);\n  for (i = 0; i <= 2000; ++i)\n"
+                     "    printf(\"%.17g\\n\", wg_g_height(&p, -10.0 + 0.01 * i, 0.3, 0.0));\n  return 0;\n}\n";
+  test::writeFile(c.dir + "/main.c", main);
+  auto rows = test::compileAndRunC(c.dir, "gcc -std=c99");
+  ASSERT_EQ(rows.size(), 2001u);
+  auto f = [](double x0, double x) { return x0 + 1.5 * std::sin(x0) - x; };
+  int folded = 0;
+  for (int i = 0; i <= 2000; ++i) {
+    const double x = -10.0 + 0.01 * i, h = rows[static_cast<size_t>(i)].at(0);
+    const double tolerance = kQueryHeightTolerance * (1 + std::abs(x) + z);
+    std::vector<double> sheets;  // roots of f within the displacement's reach of x
+    for (double a = x - 1.6; a < x + 1.6; a += 1e-3) {
+      double lo = a, hi = a + 1e-3;
+      if ((f(lo, x) < 0) == (f(hi, x) < 0)) continue;
+      for (int k = 0; k < 100; ++k) {
+        const double mid = 0.5 * (lo + hi);
+        if ((f(lo, x) < 0) == (f(mid, x) < 0)) lo = mid;
+        else hi = mid;
+      }
+      sheets.push_back(lo);
+    }
+    ASSERT_FALSE(sheets.empty()) << x;
+    folded += sheets.size() > 1;
+    bool onASheet = false;
+    for (double x0 : sheets)
+      onASheet |= std::abs(h - 0.5 * std::cos(x0)) <= 0.5 * tolerance / std::abs(1 + 1.5 * std::cos(x0)) + 1e-15;
+    EXPECT_TRUE(onASheet) << "x " << x << ": height " << h << " is on none of the " << sheets.size() << " sheets";
+  }
+  EXPECT_GT(folded, 100) << "the points reach the folded region";
+  std::filesystem::remove_all(c.dir);
+  std::filesystem::remove_all(dir);
+}
+
 TEST(QueryHeader, NonFiniteInputGivesNaNWithoutHanging) {
   QueryCompiled c = compileQuery(test::sourcePath("graphs/ocean.json"), "g");
   const double inf = INFINITY;

@@ -1,8 +1,8 @@
 // The surface query's JavaScript module (`compile --target query-js`) against its C header
 // (`--target query-c`): the same points, run under node and as a compiled C program, agree
 // to 1e-12 in every output (position, normal, velocity, the height at the displaced point)
-// for the ocean, a steep sea and a graph of expressions, a subgraph and parameters set out of
-// range; non-finite input is NaN in both.
+// for the ocean, a steep sea, a graph of expressions, a subgraph and parameters set out of
+// range, and a surface an expression folds over; non-finite input is NaN in both.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -26,7 +26,8 @@ std::vector<QueryPoint> points() {
   return v;
 }
 
-void expectSameAnswers(const std::string& graphPath, const std::string& setC, const std::string& setJs) {
+void expectSameAnswers(const std::string& graphPath, const std::string& setC, const std::string& setJs,
+                       const std::vector<QueryPoint>& at = points()) {
   std::string dir = test::makeTempDir("wg_query_js");
   std::string errors;
   auto program = test::compileFile(graphPath, &errors);
@@ -38,11 +39,11 @@ void expectSameAnswers(const std::string& graphPath, const std::string& setC, co
   test::writeFile(dir + "/g.query.h", *header);
   test::writeFile(dir + "/g.query.js", *module);
   test::writeFile(dir + "/package.json", "{\"type\": \"module\"}\n");
-  test::writeFile(dir + "/main.c", test::queryDriverC("g.query.h", "wg_g_", points(), setC));
-  test::writeFile(dir + "/main.js", test::queryDriverJs("g.query.js", "wg_g_", points(), setJs));
+  test::writeFile(dir + "/main.c", test::queryDriverC("g.query.h", "wg_g_", at, setC));
+  test::writeFile(dir + "/main.js", test::queryDriverJs("g.query.js", "wg_g_", at, setJs));
   auto c = test::compileAndRunC(dir, "gcc -std=c99");
   auto js = test::runNumbers("cd " + test::shellQuote(dir) + " && timeout 60 node main.js");
-  ASSERT_EQ(c.size(), points().size());
+  ASSERT_EQ(c.size(), at.size());
   ASSERT_EQ(js.size(), c.size());
   size_t compared = 0;
   for (size_t k = 0; k < c.size(); ++k) {
@@ -72,6 +73,17 @@ TEST(QueryJs, ExpressionsSubgraphsAndParametersAgreeWithTheCHeader) {
   std::string path = test::writeMixedGraph(dir);
   expectSameAnswers(path, "  p.lift = 5.0;\n  p.zzint = NAN;\n  p.zzint_5f[0] = -0.3;\n  p.zzlinux = 100.0;\n",
                     "p.lift = 5.0;\np.zzint = NaN;\np.zzint_5f[0] = -0.3;\np.zzlinux = 100.0;\n");
+  std::filesystem::remove_all(dir);
+}
+
+// height() where the surface folds starts again from the same points in both languages:
+// 801 water points 0.025 m apart, the heights at their displaced x, 94 of which start again
+// at least once (a module that never started again answers 46 of them differently).
+TEST(QueryJs, AFoldedSurfaceAgreesWithTheCHeader) {
+  std::string dir = test::makeTempDir("wg_query_js_fold");
+  std::vector<QueryPoint> at;
+  for (int i = 0; i <= 800; ++i) at.push_back({-10.0 + 0.025 * i, 0.3, 0.0});
+  expectSameAnswers(test::writeFoldGraph(dir), "", "", at);
   std::filesystem::remove_all(dir);
 }
 

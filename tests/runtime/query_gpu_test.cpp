@@ -1,7 +1,9 @@
 // The surface query (compile --target query-c) against the GPU's vertex stage: the
-// generated vertex shader of glsl330 and es300 runs on llvmpipe with the runtime's uniform
-// values (model and view-projection identity, the time phases computed in double), and
-// transform feedback captures each vertex's displaced position (gl_Position). It differs from the
+// generated vertex shader of glsl330, es300 and vk450 runs on llvmpipe / lavapipe with the
+// runtime's uniform values (model identity, the time phases computed in double), and each
+// vertex's displaced position is read back: for glsl330 and es300 by transform feedback of
+// gl_Position (view-projection identity), for vk450 from the compiled SPIR-V as it is, one
+// point per pixel (query_vk_capture.h). It differs from the
 // query's double answer by no more than the shader's float32 rounding allows: per wave, the
 // phase k mod(D.x, L) + phase carries about 2^-24 (4 pi + 3 k (|x0| + |z0|)) of rounding,
 // which moves the point by A (1 + Q) times that; the sums and the input point add
@@ -11,13 +13,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <functional>
+#include <map>
 
 #include <epoxy/gl.h>
 
 #include "codegen/query_header.h"
 #include "nodes/gerstner_waves.h"
 #include "query_samples.h"
+#include "query_vk_capture.h"
 #include "runtime/egl_context.h"
 #include "runtime/preview.h"
 #include "runtime/uniform_values.h"
@@ -26,6 +32,9 @@ namespace wg::rt {
 namespace {
 
 using test::QueryPoint;
+
+// Parameter values a host sets, by parameter name (before clamping).
+using HostValues = std::map<std::string, std::vector<double>>;
 
 struct Captured {
   std::vector<float> positions;  // 3 per point
@@ -48,9 +57,10 @@ GLuint compiled(GLenum stage, const std::string& source, std::string& error) {
 }
 
 // The displaced positions the vertex shader `vertexText` computes for the points, under the
-// manifest's uniforms at time t: gl_Position, with the view-projection the identity.
+// manifest's uniforms at time t (each parameter `host`'s value or its default, clamped as
+// the runtime clamps it): gl_Position, with the view-projection the identity.
 Captured captureVertexStage(const std::string& vertexText, bool es, const Manifest& manifest,
-                            const std::vector<QueryPoint>& points, double t) {
+                            const std::vector<QueryPoint>& points, double t, const HostValues& host) {
   Captured c;
   GLuint shader = compiled(GL_VERTEX_SHADER, vertexText, c.error);
   // ES programs need a fragment shader even when nothing is rasterised.
@@ -81,7 +91,8 @@ Captured captureVertexStage(const std::string& vertexText, bool es, const Manife
     if (at < 0) continue;
     std::vector<float> v;
     if (u.parameter) {
-      for (double d : u.parameter->defaultValue) v.push_back(static_cast<float>(d));
+      auto set = host.find(u.parameter->name);
+      for (double d : set != host.end() ? set->second : u.parameter->defaultValue) v.push_back(static_cast<float>(d));
       clampIntoRange(v, u.parameter->min ? static_cast<float>(*u.parameter->min) : -INFINITY,
                      u.parameter->max ? static_cast<float>(*u.parameter->max) : INFINITY);
     } else {
@@ -147,6 +158,26 @@ Captured captureVertexStage(const std::string& vertexText, bool es, const Manife
   return c;
 }
 
+// The displaced positions `target`'s vertex shader in `result` computes for the points.
+Captured capturedOn(Target target, const CompileResult& result, const std::vector<QueryPoint>& points, double t,
+                    const HostValues& host) {
+  const std::string suffix = "." + std::string(targetName(target)) + ".vert" + (target == Target::Vk450 ? ".spv" : "");
+  std::string vertex;
+  for (const auto& f : result.files)
+    if (f.name.ends_with(suffix)) vertex = f.contents;
+  if (vertex.empty()) return {{}, "no " + suffix + " file"};
+  if (target != Target::Vk450) {
+    auto context = EglContext::create(apiFor(target));
+    return captureVertexStage(vertex, target == Target::Es300, result.manifest, points, t, host);
+  }
+  std::vector<uint32_t> spirv(vertex.size() / 4);
+  std::memcpy(spirv.data(), vertex.data(), 4 * spirv.size());
+  std::vector<std::pair<double, double>> xz;
+  for (const QueryPoint& q : points) xz.emplace_back(q.x0, q.z0);
+  VkCapturedPoints vk = captureVulkanVertexStage(spirv, result.manifest, xz, t, host);
+  return {vk.positions, vk.error};
+}
+
 // The float32 bound of the header comment for a point.
 double float32Bound(const std::vector<nodes::GerstnerWave>& waves, const QueryPoint& q) {
   const double eps = std::ldexp(1.0, -24), r = std::abs(q.x0) + std::abs(q.z0);
@@ -167,12 +198,21 @@ std::vector<QueryPoint> gpuPoints(double t) {
   return v;
 }
 
-void expectGpuAgrees(const std::string& graphPath, const std::string& what) {
+// What a case adds to the Gerstner waves: parameter values a host sets (the GPU gets them
+// clamped by the runtime's rule, the query as `setParameters`, C statements on `p`, and
+// clamps them itself), and the float32 bound of displacements other than the waves.
+struct HostSettings {
+  HostValues values;
+  std::string setParameters;
+  std::function<double(const QueryPoint&)> extraBound;
+};
+
+void expectGpuAgrees(const std::string& graphPath, const std::string& what, const HostSettings& host = {}) {
   Diagnostics diags;
   auto graph = loadGraphFile(graphPath, diags);
   ASSERT_TRUE(graph);
   CompileOptions o;
-  o.targets = {Target::Glsl330, Target::Es300};
+  o.targets = {Target::Glsl330, Target::Es300, Target::Vk450};
   o.tessellation = false;  // the vertex stage displaces
   auto result = compileGraph(*graph, defaultRegistry(), o, diags);
   ASSERT_TRUE(result);
@@ -190,21 +230,16 @@ void expectGpuAgrees(const std::string& graphPath, const std::string& what) {
   test::writeFile(dir + "/g.query.h", *header);
   for (double t : {0.0, 3.5, 1e6}) {
     std::vector<QueryPoint> points = gpuPoints(t);
-    test::writeFile(dir + "/main.c", test::queryDriverC("g.query.h", "wg_g_", points, ""));
+    test::writeFile(dir + "/main.c", test::queryDriverC("g.query.h", "wg_g_", points, host.setParameters));
     auto query = test::compileAndRunC(dir, "cc -std=c99");
     ASSERT_EQ(query.size(), points.size());
-    for (Target target : {Target::Glsl330, Target::Es300}) {
-      auto context = EglContext::create(apiFor(target));
-      std::string vertex;
-      for (const auto& f : result->files)
-        if (f.name.ends_with("." + std::string(targetName(target)) + ".vert")) vertex = f.contents;
-      ASSERT_FALSE(vertex.empty());
-      Captured gpu = captureVertexStage(vertex, target == Target::Es300, result->manifest, points, t);
+    for (Target target : {Target::Glsl330, Target::Es300, Target::Vk450}) {
+      Captured gpu = capturedOn(target, *result, points, t, host.values);
       ASSERT_TRUE(gpu.error.empty()) << gpu.error;
       ASSERT_EQ(gpu.positions.size(), 3 * points.size());
       double worst = 0;
       for (size_t k = 0; k < points.size(); ++k) {
-        double bound = float32Bound(waves, points[k]);
+        double bound = float32Bound(waves, points[k]) + (host.extraBound ? host.extraBound(points[k]) : 0.0);
         for (int i = 0; i < 3; ++i) {
           double d = std::abs(gpu.positions[3 * k + static_cast<size_t>(i)] - query[k][static_cast<size_t>(i)]);
           worst = std::max(worst, d / bound);
@@ -226,7 +261,41 @@ TEST(QueryGpu, ExampleGraphsThatDisplaceTheirWater) {
 
 TEST(QueryGpu, SteepSeaAtItsCrests) {
   std::string dir = test::makeTempDir("wg_query_gpu_steep");
-  expectGpuAgrees(test::writeSteepGraph(dir), "steep");
+  expectGpuAgrees(test::writeSteepGraph(dir, /*shadeByPosition=*/true), "steep");
+  std::filesystem::remove_all(dir);
+}
+
+// Parameters a host changes at run time reach the GPU and the query alike, clamped alike:
+// `lift` set above its range (the shader gets its maximum), `int` (a C keyword) set to NaN
+// (its minimum), `errno` (a macro, no range) set to a value the graph never had. The
+// expression adds h sin(k x0) to y and 0.01 g to z; in float32 the product k x0 carries
+// k |x0| 2^-24, sin a few units of 2^-24 (4 allowed), the products and the sums one each:
+// 2^-24 (h (k |x0| + 6) + 0.03 |g|).
+TEST(QueryGpu, ParametersAHostSetsAreClampedAsTheRuntimeClampsThem) {
+  std::string dir = test::makeTempDir("wg_query_gpu_host");
+  test::writeFile(dir + "/hosted.json", R"J({"version": 1, "name": "hosted",
+  "parameters": {
+    "lift": {"type": "float", "default": 0.3, "min": 0, "max": 1},
+    "int": {"type": "float", "default": 0.5, "min": 0.1, "max": 1},
+    "errno": {"type": "float", "default": 0.7}},
+  "nodes": [
+    {"id": "waves", "type": "gerstner_waves", "options": {"waves": )J" + std::string(test::kModerateWaves) + R"J(}},
+    {"id": "p", "type": "world_position"},
+    {"id": "bump", "type": "expression",
+     "options": {"inputs": {"p": "vec3", "h": "float", "k": "float", "g": "float"},
+                 "formula": "vec3(0.0, h * sin(k * p.x), 0.01 * g)"},
+     "inputs": {"p": "p.out", "h": "$lift", "k": "$int", "g": "$errno"}},
+    {"id": "surface", "type": "vertex_output",
+     "inputs": {"position": "waves.position", "displacement": "bump.out", "normal": "waves.normal"}}
+  ],
+  "outputs": {"vertex": {"position": "surface.position", "normal": "surface.normal"},
+              "fragment": {"color": "p.out"}}})J");
+  const double h = 1.0, k = 0.1, g = -2.5;  // what the host's values become
+  HostSettings host;
+  host.values = {{"lift", {5.0}}, {"int", {std::nan("")}}, {"errno", {g}}};
+  host.setParameters = "  p.lift = 5.0;\n  p.zzint = NAN;\n  p.zzerrno = -2.5;\n";
+  host.extraBound = [&](const QueryPoint& q) { return std::ldexp(1.0, -24) * (h * (k * std::abs(q.x0) + 6) + 0.03 * std::abs(g)); };
+  expectGpuAgrees(dir + "/hosted.json", "hosted", host);
   std::filesystem::remove_all(dir);
 }
 
