@@ -10,6 +10,7 @@
 #include "codegen/emit_glsl.h"
 #include "codegen/probe_program.h"
 #include "core/resolve.h"
+#include "core/texture_check.h"
 #include "nodes/glsl_function_node.h"
 #include "nodes/registry.h"
 
@@ -33,13 +34,16 @@ std::string gpuText(const std::array<double, 4>& gpu, int components) {
 }
 
 // The options the probe node is made with: the function and its reference as written,
-// every sampler at the default texture its option has (a built-in one), so the sweep
-// does not depend on the PNGs beside a graph or an instance's choice.
+// every sampler at the built-in texture the node names, else at its option's default (a
+// built-in one), so the sweep does not depend on the PNGs beside a graph or an instance's.
 nlohmann::json sweptOptions(const NodeSpec& spec, const nlohmann::json& complete) {
   nlohmann::json o = nlohmann::json::object();
   for (const OptionSpec& option : spec.options) {
     auto it = complete.find(option.name);
-    if (option.kind == OptionSpec::Kind::Texture) o[option.name] = option.defaultValue;
+    if (option.kind == OptionSpec::Kind::Texture) {
+      bool builtin = it != complete.end() && it->is_string() && it->get_ref<const std::string&>().starts_with(kBuiltinTexturePrefix);
+      o[option.name] = builtin ? *it : option.defaultValue;
+    }
     else if (option.name == "reference") {
       if (it != complete.end() && it->is_object() && !it->empty()) o[option.name] = *it;
     } else if (it != complete.end()) {
@@ -47,6 +51,30 @@ nlohmann::json sweptOptions(const NodeSpec& spec, const nlohmann::json& complete
     }
   }
   return o;
+}
+
+// What one case of the sweep sets: the port and the class it takes.
+struct SweptInput {
+  std::string port;
+  FunctionInputClass inputClass;
+};
+
+// One case per (input port, class), named "port=class", the other inputs held; `swept`
+// gets what each case sets.
+std::vector<ProbeCase> functionSweepCases(const NodeSpec& spec, const ProbeCaseFile& suite, std::vector<SweptInput>& swept) {
+  std::vector<ProbeCase> cases;
+  for (const PortSpec& port : spec.inputs) {
+    for (FunctionInputClass& k : functionInputClasses(suite, port.type)) {
+      ProbeCase c;
+      c.name = port.name + "=" + k.name;
+      c.env = defaultProbeEnvironment();
+      for (const PortSpec& other : spec.inputs)
+        c.inputs.emplace_back(other.name, other.name == port.name ? k.value : Value::ofType(other.type, kHeldInput));
+      cases.push_back(std::move(c));
+      swept.push_back({port.name, std::move(k)});
+    }
+  }
+  return cases;
 }
 
 // The per-case GPU results of one output with no reference: the probe shader run on the
@@ -114,26 +142,14 @@ FunctionSweepResult sweepFunctionNodes(const std::vector<FunctionNodeUnderTest>&
   for (const FunctionNodeUnderTest& node : nodes) {
     ++result.nodes;
     const NodeSpec& spec = *node.spec;
-    // One case per (input port, class), named "port=class"; the others held.
-    std::vector<ProbeCase> cases;
-    std::vector<std::pair<std::string, FunctionInputClass>> swept;  // per case: port, class
-    for (const PortSpec& port : spec.inputs) {
-      for (FunctionInputClass& k : functionInputClasses(suite, port.type)) {
-        ProbeCase c;
-        c.name = port.name + "=" + k.name;
-        c.env = defaultProbeEnvironment();
-        for (const PortSpec& other : spec.inputs)
-          c.inputs.emplace_back(other.name, other.name == port.name ? k.value : Value::ofType(other.type, kHeldInput));
-        cases.push_back(std::move(c));
-        swept.emplace_back(port.name, std::move(k));
-      }
-    }
+    std::vector<SweptInput> swept;
+    std::vector<ProbeCase> cases = functionSweepCases(spec, suite, swept);
     if (!node.hasReference)
       result.notes.push_back(node.label + " has no double reference: its outputs are checked for NaN and Inf only");
     for (const OptionSpec& option : spec.options)
       if (option.kind == OptionSpec::Kind::Texture)
         result.notes.push_back(node.label + ": sampler2D '" + option.name + "' is held at the texture " +
-                               option.defaultValue.get<std::string>() + ", not swept");
+                               node.options.value(option.name, std::string()) + ", not swept");
     if (cases.empty()) {
       result.notes.push_back(node.label + " has no input the suite gives a value class for: nothing swept");
       continue;
@@ -141,6 +157,11 @@ FunctionSweepResult sweepFunctionNodes(const std::vector<FunctionNodeUnderTest>&
     NodeProbeSetup setup = makeNodeProbe(spec, node.options, cases);
     setup.graph.file = node.graphFile;  // the node's .glsl file is named relative to this graph
     for (const PortSpec& out : spec.outputs) {
+      if (!isFloatScalarOrVector(out.type)) {  // a probe reads one RGBA pixel per case
+        result.notes.push_back(node.label + ": output '" + out.name + "' is a " + std::string(typeName(out.type)) +
+                               ", which a probe pixel cannot hold: not read back");
+        continue;
+      }
       Diagnostics diags;
       ProbeOutput output{"n", out.name};
       std::vector<std::array<float, 4>> gpu;
@@ -172,9 +193,9 @@ FunctionSweepResult sweepFunctionNodes(const std::vector<FunctionNodeUnderTest>&
         FunctionSweepCase c;
         c.node = node.label;
         c.output = out.name;
-        c.port = swept[i].first;
-        c.inputClass = swept[i].second.name;
-        c.input = swept[i].second.value;
+        c.port = swept[i].port;
+        c.inputClass = swept[i].inputClass.name;
+        c.input = swept[i].inputClass.value;
         c.components = components;
         bool finite = true;
         for (int k = 0; k < components; ++k) {

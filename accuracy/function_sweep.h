@@ -9,7 +9,9 @@
 // checked for NaN/Inf. Where the node has a reference formula the probe's error
 // comparison applies too (accuracy/probe.h); without one, finiteness is all there is to
 // check, and the result says so. A sampler2D parameter is not swept: it is held at the
-// built-in texture its option defaults to.
+// built-in texture the node names, else (a PNG) at its option's default built-in texture.
+// An output of a matrix type is not read back (a probe pixel holds four components); the
+// result notes it.
 #include <array>
 #include <memory>
 #include <string>
@@ -39,7 +41,7 @@ struct FunctionNodeUnderTest {
   std::string label;      // "node 'caustic' (graphs/lib/caustic_light.json, function 'caustic')"
   std::string graphFile;  // the graph file that holds the node: its .glsl file lies beside it
   std::shared_ptr<const NodeSpec> spec;
-  nlohmann::json options;  // file, function, reference (when it has one), each sampler at its default texture
+  nlohmann::json options;  // file, function, reference (when it has one), each sampler at a built-in texture
   bool hasReference = false;
 };
 

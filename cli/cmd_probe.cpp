@@ -357,7 +357,7 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
                 "with a GRAPH: sweep its glsl_function nodes (in its subgraphs too): each input port over every value "
                 "the --cases file gives an input of its type (a float also splatted), the others at 0.5, every output "
                 "checked for NaN/Inf, and against the node's reference formula where it has one; a sampler2D "
-                "parameter is held at its default built-in texture");
+                "parameter is held at a built-in texture (the node's, else its default)");
   cmd->add_flag("--variants", args->variants, "with --node: also every variant of its options");
   cmd->add_option("--sweep", args->sweep,
                   "with --node: NAME[.x|.y|.z|.w]:FROM:TO:COUNT, one input stepped evenly: 'angle' (degrees between "

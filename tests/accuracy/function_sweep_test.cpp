@@ -102,7 +102,9 @@ TEST_P(FunctionSweepOnGpu, CatchesANaNNamingTheNodeThePortAndTheInputClass) {
       << joined(r.failureLines);
   // A positive argument and a non-zero vector stay finite: only the classes that reach the pole fail.
   for (const auto& c : r.cases)
-    if (c.node.find("'root'") != std::string::npos && c.input[0] > 0) EXPECT_EQ(c.failure, "") << c.inputClass;
+    if (c.node.find("'root'") != std::string::npos && c.input[0] > 0) {
+      EXPECT_EQ(c.failure, "") << c.inputClass;
+    }
   EXPECT_TRUE(hasLine(r.notes, {"node 'dir'", "has no double reference"})) << joined(r.notes);
 }
 
@@ -148,7 +150,9 @@ TEST_P(FunctionSweepOnGpu, InputRoundingsFollowTheConditioningOfAReference) {
   EXPECT_EQ(bare.nanInf, 0);
   EXPECT_TRUE(hasLine(bare.failureLines, {"port 'x' case 'time_1000000.time'", "error "})) << joined(bare.failureLines);
   for (const auto& c : bare.cases)
-    if (!c.failure.empty()) EXPECT_GE(std::fabs(c.input[0]), 100.0) << c.inputClass << ": " << c.failure;
+    if (!c.failure.empty()) {
+      EXPECT_GE(std::fabs(c.input[0]), 100.0) << c.inputClass << ": " << c.failure;
+    }
 
   FunctionSweepResult rounded = run(R"("input_roundings": 2, )", "sin(x * 6.28318530718)");
   EXPECT_EQ(rounded.failures, 0) << joined(rounded.failureLines);
@@ -222,6 +226,31 @@ TEST(FunctionSweep, InputClassesComeFromTheSuiteEachOnceAndFinite) {
     }
     EXPECT_TRUE(zero) << typeName(t) << " has no zero class";
   }
+}
+
+// A sampler2D parameter is held at a built-in texture (the node's, else its option's default),
+// a matrix input is swept over the float classes splatted, and a matrix output, which a
+// probe pixel cannot hold, is named as not read back.
+TEST(FunctionSweep, SamplersAreHeldAndMatrixOutputsNoted) {
+  std::string nodes = R"({"id": "a", "type": "glsl_function",
+       "options": {"file": "file.glsl", "function": "tinted", "tex": "builtin:foam"},
+       "inputs": {"uv": [0.5, 0.5], "m": "s.out", "k": 1}},
+     {"id": "s", "type": "glsl_function", "options": {"file": "file.glsl", "function": "scaled"}, "inputs": {"k": 2}},
+     {"id": "rgb", "type": "swizzle", "options": {"mask": "rgb"}, "inputs": {"x": "a.out"}})";
+  SweepTree tree(R"(vec4 tinted(sampler2D tex, vec2 uv, mat3 m, float k) { return vec4(m * texture(tex, uv).rgb * k, 1.0); }
+mat3 scaled(float k) { return mat3(k); }
+)",
+                 nodes, "\"rgb.out\"");
+  auto gpu = makeGpuExecutor(Target::Glsl330);
+  ProbeCaseFile suite = test_suite::loadSuite();
+  FunctionSweepResult r = sweepFunctionNodes(nodesOf(tree.graphPath), suite, *gpu);
+  EXPECT_TRUE(r.errors.empty()) << joined(r.errors);
+  EXPECT_TRUE(hasLine(r.notes, {"node 'a'", "sampler2D 'tex' is held at the texture builtin:foam"})) << joined(r.notes);
+  EXPECT_TRUE(hasLine(r.notes, {"node 's'", "output 'out' is a mat3", "not read back"})) << joined(r.notes);
+  size_t expected = functionInputClasses(suite, Type::Vec2).size() + functionInputClasses(suite, Type::Mat3).size() +
+                    functionInputClasses(suite, Type::Float).size();
+  EXPECT_EQ(r.caseRuns, static_cast<int>(expected));  // node a's three inputs; node s has no output to read
+  EXPECT_EQ(r.failures, 0) << joined(r.failureLines);
 }
 
 TEST(FunctionSweepCli, ExitsOneNamingThePortAndCaseAndZeroWhenClean) {
