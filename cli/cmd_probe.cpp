@@ -11,6 +11,7 @@
 #include "cli/option_values.h"
 
 #ifdef WG_HAVE_RUNTIME
+#include "accuracy/function_sweep.h"
 #include "accuracy/gpu_executor.h"
 #include "accuracy/hard_case_suite.h"
 #include "accuracy/node_probe.h"
@@ -43,6 +44,7 @@ struct ProbeArgs {
   std::string preset;     // graph mode: a preset of the graph, applied before probing
   bool derivedUniforms = false;  // the probe shader reads derived uniforms (as --derived-uniforms compiles)
   bool vulkanValidation = false;  // vk450: under the Khronos validation layer
+  bool functions = false;  // graph mode: sweep the graph's glsl_function nodes over the cases' value classes
 };
 
 
@@ -191,6 +193,48 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
   }
 }
 
+// GRAPH --functions: every glsl_function node the graph resolves to (in its subgraphs too)
+// swept over the value classes of the cases file's inputs (accuracy/function_sweep.h).
+int runFunctionSweep(const ProbeArgs& args, const GlobalOptions& global, Target target) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(args.graph, diags);
+  auto cases = accuracy::loadProbeCases(args.cases, diags);
+  if (graph && !args.preset.empty() && !applyPreset(*graph, args.preset, diags)) graph.reset();
+  std::optional<std::vector<accuracy::FunctionNodeUnderTest>> nodes;
+  if (graph && cases) nodes = accuracy::functionNodesOf(*graph, diags);
+  printDiagnostics(diags, global);
+  if (!nodes) return exitCodeFor(diags);
+  if (nodes->empty()) {
+    std::cerr << args.graph << ": no glsl_function node to sweep\n";
+    return kExitOk;
+  }
+  try {
+    auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
+    accuracy::FunctionSweepResult r = accuracy::sweepFunctionNodes(*nodes, *cases, *executor);
+    executor->finish();
+    if (args.json) {
+      nlohmann::json all = nlohmann::json::array();
+      for (const auto& c : r.cases) {
+        nlohmann::json gpu = nlohmann::json::array();
+        for (int i = 0; i < c.components; ++i) {
+          double g = c.gpu[static_cast<size_t>(i)];
+          gpu.push_back(std::isfinite(g) ? nlohmann::json(g) : nlohmann::json(std::isnan(g) ? "nan" : g > 0 ? "inf" : "-inf"));
+        }
+        all.push_back({{"node", c.node}, {"output", c.output}, {"port", c.port}, {"case", c.inputClass},
+                       {"gpu", gpu}, {"compared", c.compared}, {"passed", c.failure.empty()}});
+        if (c.compared) all.back()["abs_error"] = c.absError, all.back()["bound"] = c.bound;
+        if (!c.failure.empty()) all.back()["failure"] = c.failure;
+      }
+      std::cout << all.dump(2) << "\n";
+    }
+    std::cerr << accuracy::formatFunctionSweep(r);
+    return r.failures || !r.errors.empty() ? kExitGraphError : kExitOk;
+  } catch (const rt::RuntimeError& e) {
+    std::cerr << args.graph << ": error: " << e.what() << "\n";
+    return e.exitCode();
+  }
+}
+
 int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
   if (args.node.empty() == args.graph.empty()) {
     std::cerr << "watergraph: probe needs a GRAPH or --node TYPE (one of them)\n";
@@ -205,6 +249,10 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     }
     mutation = *m;
   }
+  if (args.functions && !args.node.empty()) {
+    std::cerr << "watergraph: --functions needs a GRAPH (it sweeps the graph's glsl_function nodes)\n";
+    return kExitUsageOrIo;
+  }
   if (!args.sweep.empty() && args.node.empty()) {
     std::cerr << "watergraph: --sweep needs --node TYPE\n";
     return kExitUsageOrIo;
@@ -218,6 +266,14 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     return kExitUsageOrIo;
   }
   if (!args.node.empty()) return runNodeProbe(args, global, *parseTarget(args.target), mutation);
+  if (args.functions) {
+    if (args.cases.empty() || !args.output.empty() || mutation.active() || args.derivedUniforms) {
+      std::cerr << "watergraph: probe GRAPH --functions needs --cases FILE (its inputs' values are the classes swept) "
+                   "and takes no --output, --mutate or --derived-uniforms\n";
+      return kExitUsageOrIo;
+    }
+    return runFunctionSweep(args, global, *parseTarget(args.target));
+  }
   if (args.cases.empty()) {
     std::cerr << "watergraph: probe GRAPH needs --cases FILE\n";
     return kExitUsageOrIo;
@@ -272,6 +328,7 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph probe graphs/lake.json --cases tests/hardcases/lake.json\n"
       "  watergraph probe graphs/lake.json --output fresnel.reflectance --cases cases.json --target es300 --json\n"
       "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --variants\n"
+      "  watergraph probe graphs/caustic_pool.json --functions --cases tests/hardcases/suite.json\n"
       "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --target vk450 --vk-validation\n"
       "  watergraph probe --node fresnel --options '{\"model\": \"exact\", \"direction\": \"water_to_air\"}' "
       "--sweep angle:0:90:10000 --table fresnel.dat\n"
@@ -296,6 +353,11 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--node", args->node,
                   "probe a node type alone, every output, with the cases that apply to it (they may set \"inputs\", "
                   "\"options\" and \"ranges\"), as the hard-case suite does");
+  cmd->add_flag("--functions", args->functions,
+                "with a GRAPH: sweep its glsl_function nodes (in its subgraphs too): each input port over every value "
+                "the --cases file gives an input of its type (a float also splatted), the others at 0.5, every output "
+                "checked for NaN/Inf, and against the node's reference formula where it has one; a sampler2D "
+                "parameter is held at a built-in texture (the node's, else its default)");
   cmd->add_flag("--variants", args->variants, "with --node: also every variant of its options");
   cmd->add_option("--sweep", args->sweep,
                   "with --node: NAME[.x|.y|.z|.w]:FROM:TO:COUNT, one input stepped evenly: 'angle' (degrees between "

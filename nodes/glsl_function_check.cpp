@@ -269,7 +269,7 @@ std::optional<FunctionCheckFault> signatureOf(const FunctionDefinition& def, Fun
                      "parameter '" + name + "' has the type " + describeType(t) + (fp.out ? " as an output" : "") +
                          ", which a port cannot carry: " + carried,
                      name);
-      if (name == "out" || name == "file" || name == "function" || name == "reference")
+      if (name == "out" || name == "file" || name == "function" || name == "reference" || name == "input_roundings")
         return fault(FunctionCheckFault::Kind::ParameterType, sym->getLoc(),
                      "parameter '" + name + "' would share its name with the node's " +
                          (name == "out" ? "return value" : "option") + "; rename it",

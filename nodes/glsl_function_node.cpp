@@ -1,5 +1,6 @@
 #include "nodes/glsl_function_node.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "core/file_read.h"
@@ -169,7 +170,13 @@ class FunctionNodeMaker {
                      "option 'reference': " + fault->message, node_.id, "option 'reference'");
         return std::nullopt;
       }
-      spec->eval = std::get<std::function<void(EvalContext&)>>(std::move(made));
+      auto& lowered = std::get<FunctionReference>(made);
+      spec->eval = std::move(lowered.eval);
+      // Held to the bound of the maths its formulas lower into (at least a function's own 1e-5).
+      spec->tolerance = std::max(spec->tolerance, lowered.tolerance);
+      spec->conditionRoundings = lowered.conditionRoundings;
+      if (const NodeOption* roundings = writtenOption(node_, "input_roundings"); roundings && roundings->value.is_number())
+        spec->conditionRoundings = std::max(spec->conditionRoundings, roundings->value.get<double>());
     }
     return FileNode{std::move(spec), display};
   }
@@ -226,7 +233,16 @@ std::vector<OptionSpec> glslFunctionOptions() {
   reference.validate = [](const nlohmann::json& v) -> std::string {
     return v.is_object() ? "" : "must be an object: {\"output\": \"formula\", ...}";
   };
-  return {file, function, reference};
+  OptionSpec roundings;
+  roundings.name = "input_roundings";
+  roundings.kind = OptionSpec::Kind::Number;
+  roundings.defaultValue = 0;
+  roundings.min = 0;
+  roundings.max = 16;
+  roundings.doc = "with a reference: how many float32 roundings of each input the function's float32 arithmetic "
+                  "amounts to, the node's input roundings (docs/accuracy.md, the error bound); the bound then grows "
+                  "where the formula is ill-conditioned (a sine of a phase past 10^4) and nowhere else";
+  return {file, function, reference, roundings};
 }
 
 std::optional<FileNode> makeGlslFunctionNode(const FileNodeRequest& request, Diagnostics& diags) {

@@ -1,5 +1,6 @@
 #include "nodes/glsl_function_reference.h"
 
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -71,7 +72,7 @@ void evaluateReference(const LoweredReference& r, EvalContext& ctx) {
 
 }  // namespace
 
-std::variant<std::function<void(EvalContext&)>, FunctionReferenceFault> makeFunctionReference(
+std::variant<FunctionReference, FunctionReferenceFault> makeFunctionReference(
     const FunctionSignature& signature, const nlohmann::json& reference) {
   if (!reference.is_object()) return FunctionReferenceFault{false, "must be an object: {\"output\": \"formula\", ...}"};
   auto lowered = std::make_shared<LoweredReference>();
@@ -122,7 +123,13 @@ std::variant<std::function<void(EvalContext&)>, FunctionReferenceFault> makeFunc
     lowered->outputs.push_back(f.value);
     lowered->outputTypes.push_back(type);
   }
-  return std::function<void(EvalContext&)>([lowered](EvalContext& ctx) { evaluateReference(*lowered, ctx); });
+  FunctionReference made;
+  for (const Op& op : lowered->program.ops) {
+    made.tolerance = std::max(made.tolerance, op.spec->tolerance);
+    made.conditionRoundings = std::max(made.conditionRoundings, op.spec->conditionRoundings);
+  }
+  made.eval = [lowered](EvalContext& ctx) { evaluateReference(*lowered, ctx); };
+  return made;
 }
 
 }  // namespace wg
