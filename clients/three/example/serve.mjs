@@ -18,11 +18,11 @@ import path from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
 
+import { serveStaticFile } from '../static_files.mjs';
+
 const clientDir = path.resolve(path.dirname(fileURLToPath(import.meta.url)), '..');
 const repoDir = path.resolve(clientDir, '..', '..');
 
-const TYPES = { '.html': 'text/html', '.js': 'text/javascript', '.mjs': 'text/javascript', '.json': 'application/json',
-  '.png': 'image/png', '.css': 'text/css' };
 
 // Compiles the gallery's files into `outDir`: scene.json, gallery.json (graphs with their
 // descriptions and presets) and <graph>/<preset or "default">/ with the compiled graph.
@@ -55,19 +55,7 @@ export function galleryServer(outDir) {
       res.writeHead(302, { location: '/client/example/index.html' }).end();
       return;
     }
-    const prefix = Object.keys(roots).find((p) => url.pathname.startsWith(p));
-    const file = prefix && path.resolve(roots[prefix], '.' + decodeURIComponent(url.pathname.slice(prefix.length - 1)));
-    if (!file || !(file + path.sep).startsWith(roots[prefix] + path.sep)) {
-      res.writeHead(404).end();
-      return;
-    }
-    try {
-      const body = readFileSync(file);
-      res.writeHead(200, { 'content-type': TYPES[path.extname(file)] ?? 'text/plain', 'cache-control': 'no-store' });
-      res.end(body);
-    } catch {
-      res.writeHead(404).end();
-    }
+    serveStaticFile(roots, req, res);
   });
 }
 
