@@ -72,6 +72,7 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ocean_surface", "100 km from the origin", "huge_coordinates", "position"},
       {"ocean_foam", "a calm (wind 0): no foam", "empty_spectrum", ""},
       {"ocean_foam", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
+      {"ocean_foam", "the same storm with foam_growth 1000, where the cover saturates", "surface_folds", "position"},
       {"ocean_foam", "100 km from the origin", "huge_coordinates", "position"},
       {"shore_waves", "huge frequency", "huge_parameter", "frequency"},
       {"shore_waves", "huge amplitude", "huge_parameter", "amplitude"},

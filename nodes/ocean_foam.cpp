@@ -79,7 +79,10 @@ NodeSpec oceanFoamNode() {
                           oceanread::smallSea({{"wind_speed", 0}}), "foam = 0 exactly", 0, 0),
       oceanread::hardCase("a storm at 40 m/s with choppiness 4, where the surface folds", Value::vector({26, 0, 24.5}),
                           oceanread::smallSea({{"wind_speed", 40}, {"choppiness", 4}, {"fetch", 1000}}),
-                          "foam in [0, 1]: the clamp holds where growth is fastest", 0, 1),
+                          "foam has grown where the surface folds (0.85 at t = 0)", 0.1, 1),
+      oceanread::hardCase("the same storm with foam_growth 1000, where the cover saturates", Value::vector({26, 0, 24.5}),
+                          oceanread::smallSea({{"wind_speed", 40}, {"choppiness", 4}, {"fetch", 1000}, {"foam_growth", 1000}}),
+                          "foam = 1 exactly: the clamp holds", 1, 1),
       oceanread::hardCase("100 km from the origin", Value::vector({1e5, 0, -1e5}), oceanread::smallSea(),
                           "foam in [0, 1]: the tiles repeat", 0, 1)};
   return s;
