@@ -61,11 +61,9 @@ NodeSpec oceanDisplacementNode() {
     ctx.output(2, p);
   };
   s.eval = [](EvalContext& ctx) {
-    const int id = oceanread::oceanId(ctx.input("ocean"));
-    const Value& p = ctx.input("position");
-    const Value& camera = ctx.input("camera");
-    auto w = oceanread::weights(oceanref::settingsOf(id), ctx.options<double>(), oceanread::distance(p, camera));
-    oceanref::MapSample m = oceanread::sum(id, ctx.environment().time[0], p[0], p[2], w);
+    const oceanread::EvalPoint at = oceanread::evalPoint(ctx);
+    const Value& p = at.position;
+    oceanref::MapSample m = oceanread::sumAt(at);
     ctx.output(0, Value::vector({p[0] + m.displacement[0], p[1] + m.displacement[1], p[2] + m.displacement[2]}));
     ctx.output(1, oceanread::normalOf(m));
     ctx.output(2, p);

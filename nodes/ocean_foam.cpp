@@ -56,14 +56,13 @@ NodeSpec oceanFoamNode() {
     ctx.output(0, "min(" + sum + ", 1.0)");
   };
   s.eval = [](EvalContext& ctx) {
-    const int id = oceanread::oceanId(ctx.input("ocean"));
-    const Value& p = ctx.input("position");
-    const ocean::OceanSettings& settings = oceanref::settingsOf(id);
-    auto w = oceanread::weights(settings, ctx.options<double>(), oceanread::distance(p, ctx.input("camera")));
+    const oceanread::EvalPoint at = oceanread::evalPoint(ctx);
+    const ocean::OceanSettings& settings = oceanref::settingsOf(at.id);
     double sum = 0;
-    for (size_t c = 0; c < w.size(); ++c)
+    for (size_t c = 0; c < at.weights.size(); ++c)
       if (ocean::makesFoam(settings, static_cast<int>(c)))
-        sum += w[c] * oceanref::sampleFoam(id, static_cast<int>(c), ctx.environment().time[0], p[0], p[2]);
+        sum += at.weights[c] *
+               oceanref::sampleFoam(at.id, static_cast<int>(c), at.time, at.position[0], at.position[2]);
     ctx.output(0, Value::scalar(std::min(sum, 1.0)));
   };
   // The foam integrates the float32 Jacobian's error (~1e-5 on a rough sea) over the

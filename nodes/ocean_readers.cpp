@@ -75,6 +75,19 @@ oceanref::MapSample sum(int oceanId, double t, double x, double z, const std::ve
   return total;
 }
 
+EvalPoint evalPoint(EvalContext& ctx) {
+  EvalPoint at;
+  at.id = oceanId(ctx.input("ocean"));
+  at.position = ctx.input("position");
+  at.time = ctx.environment().time[0];
+  at.weights = weights(oceanref::settingsOf(at.id), ctx.options<double>(), distance(at.position, ctx.input("camera")));
+  return at;
+}
+
+oceanref::MapSample sumAt(const EvalPoint& at) {
+  return sum(at.id, at.time, at.position[0], at.position[2], at.weights);
+}
+
 Value normalOf(const oceanref::MapSample& m) {
   const auto& s = m.slopes;
   const double lDxz = m.displacement[3];

@@ -25,6 +25,18 @@ std::vector<std::string> emitWeights(EmitContext& ctx, double fadeTiles, const s
 std::string emitSum(EmitContext& ctx, int oceanPort, int which, const std::string& xz,
                     const std::vector<std::string>& weights);
 
+// Double: what a reader's eval reads from its inputs: the ocean, the still point, the
+// scene's time and each cascade's weight at the point's camera distance.
+struct EvalPoint {
+  int id = 0;
+  Value position;
+  double time = 0;
+  std::vector<double> weights;
+};
+EvalPoint evalPoint(EvalContext& ctx);
+// Double: the weighted sums of both maps at the point (as sum below).
+oceanref::MapSample sumAt(const EvalPoint& at);
+
 // Double: per cascade its weight at camera distance d.
 std::vector<double> weights(const ocean::OceanSettings& s, double fadeTiles, double d);
 // Double: the weighted sums of both maps at (x, z) and time t.

@@ -56,11 +56,7 @@ NodeSpec oceanSurfaceNode() {
     ctx.output(2, EmitContext::call("wg_ocean_jacobian", {slopes, d + ".w"}));
   };
   s.eval = [](EvalContext& ctx) {
-    const int id = oceanread::oceanId(ctx.input("ocean"));
-    const Value& p = ctx.input("position");
-    const Value& camera = ctx.input("camera");
-    auto w = oceanread::weights(oceanref::settingsOf(id), ctx.options<double>(), oceanread::distance(p, camera));
-    oceanref::MapSample m = oceanread::sum(id, ctx.environment().time[0], p[0], p[2], w);
+    oceanref::MapSample m = oceanread::sumAt(oceanread::evalPoint(ctx));
     ctx.output(0, oceanread::normalOf(m));
     ctx.output(1, Value::vector({m.slopes[0], m.slopes[1]}));
     ctx.output(2, Value::scalar(oceanread::jacobianOf(m)));
