@@ -306,7 +306,16 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   }
 
   std::unique_ptr<WaterFrames> frames = executor.waterFrames(result, sources, options.mutation.active(), settings);
-  for (const auto& view : checkSweep(underwater)) {
+  // The views in order of their times (a stable sort), reported in the sweep's order: a
+  // spectral ocean's simulation runs once per distinct time (its foam replays tens of
+  // transforms per cascade) instead of once per change of time.
+  const std::vector<CheckView> sweep = checkSweep(underwater);
+  std::vector<size_t> order(sweep.size());
+  for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return sweep[a].scene.time < sweep[b].scene.time; });
+  std::vector<std::optional<CheckViewResult>> results(sweep.size());
+  for (size_t at : order) {
+    const CheckView& view = sweep[at];
     frames->setView(view.camera, view.scene);
     rt::Image img = frames->render();
     CheckViewResult v;
@@ -377,8 +386,9 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
         }
       if (v.referenceSamples) v.meanError = sum / (3.0 * v.referenceSamples);
     }
-    report.views.push_back(std::move(v));
+    results[at] = std::move(v);
   }
+  for (auto& v : results) report.views.push_back(std::move(*v));
   return report;
 }
 

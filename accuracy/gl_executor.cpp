@@ -5,6 +5,7 @@
 #include "accuracy/gpu_executor.h"
 #include "accuracy/probe_gpu.h"
 #include "runtime/egl_context.h"
+#include "runtime/ocean_simulation.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 
@@ -29,13 +30,21 @@ class GlExecutor : public GpuExecutor {
   }
   std::unique_ptr<WaterFrames> waterFrames(const CompileResult& result, const std::vector<rt::ShaderSource>& water, bool,
                                            const rt::RenderSettings& settings) override {
-    return std::make_unique<RendererFrames<rt::Renderer>>(result.manifest, water, settings, target_ == Target::Es300,
-                                                          rt::textureOrigins(result));
+    // Frames of the same oceans share one simulation (check's frames and its read-back
+    // frames render each view at one time: the oceans run once for all of them).
+    std::shared_ptr<rt::OceanSimulation> oceans = oceans_.lock();
+    if (oceans && oceans->identity() != rt::OceanSimulation::identity(result.manifest.oceans, result.manifest.textures))
+      oceans.reset();
+    auto frames = std::make_unique<RendererFrames<rt::Renderer>>(result.manifest, water, settings, target_ == Target::Es300,
+                                                                 rt::textureOrigins(result), nullptr, oceans);
+    oceans_ = frames->renderer().oceanSimulation();
+    return frames;
   }
 
  private:
   Target target_;
   std::unique_ptr<rt::EglContext> context_;  // null when the caller's context is current
+  std::weak_ptr<rt::OceanSimulation> oceans_;  // the last frames' oceans, while any frames hold them
 };
 
 }  // namespace

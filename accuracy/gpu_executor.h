@@ -56,6 +56,7 @@ class RendererFrames : public WaterFrames {
     return renderer_.readRgba32f();
   }
   bool samplesNearest(SceneSampler s) const override { return renderer_.samplesNearest(s); }
+  const Renderer& renderer() const { return renderer_; }
 
  private:
   Renderer renderer_;

@@ -30,7 +30,8 @@ class OceanGpuCascade {
   OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes = true, bool jacobian = false);
 
   // Computes the maps at time t (seconds) with choppiness lambda. Leaves the viewport, the
-  // draw framebuffer, the program and texture units 0-2 changed.
+  // draw framebuffer, the program, the vertex array and texture units 0-2 changed, and
+  // depth testing and blending off.
   void update(double time, double choppiness);
 
   // The second texture's fields at time t alone (one texture's evolution and transform, half

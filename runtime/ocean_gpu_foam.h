@@ -25,8 +25,8 @@ class OceanGpuFoam {
   OceanGpuFoam(int resolution, const ocean::FoamSettings& settings, SceneShaderApi api);
 
   // Steps the foam to time t from the cascade's Jacobian with choppiness lambda and writes
-  // the map. Leaves the viewport, the framebuffer, the program and texture units 0-2
-  // changed.
+  // the map. Leaves the viewport, the framebuffer, the program, the vertex array and
+  // texture units 0-2 changed, and depth testing and blending off.
   void update(double time, double choppiness, OceanGpuCascade& cascade, FoamHistory history);
 
   GLuint map() const { return output_.id(); }

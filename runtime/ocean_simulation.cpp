@@ -52,7 +52,8 @@ bool foamRead(const std::vector<TextureInfo>& textures, const ocean::OceanSettin
 }  // namespace
 
 OceanSimulation::OceanSimulation(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures,
-                                 SceneShaderApi api) {
+                                 SceneShaderApi api)
+    : identity_(identity(oceans, textures)) {
   for (const OceanInfo& info : oceans) {
     const ocean::OceanSettings settings = oceanSettings(info);
     Ocean o;
@@ -66,6 +67,15 @@ OceanSimulation::OceanSimulation(const std::vector<OceanInfo>& oceans, const std
     }
     oceans_.push_back(std::move(o));
   }
+}
+
+std::string OceanSimulation::identity(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures) {
+  std::string text;
+  for (const OceanInfo& info : oceans) text += info.nodeId + '\0' + info.options.dump() + '\n';
+  for (const TextureInfo& t : textures)
+    if (t.ocean)
+      text += std::to_string(t.ocean->ocean) + ' ' + std::to_string(t.ocean->cascade) + ' ' + std::to_string(t.ocean->map) + '\n';
+  return text;
 }
 
 size_t OceanSimulation::textureBytes(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures) {
@@ -83,16 +93,23 @@ size_t OceanSimulation::textureBytes(const std::vector<OceanInfo>& oceans, const
 }
 
 void OceanSimulation::update(double time) {
+  // Equal times only (a NaN never equals itself, so it always runs).
+  lastUpdateRan_ = !(heldAt_ && heldAt_->first == time && heldAt_->second == foamHistory_);
+  if (!lastUpdateRan_) return;
+  heldAt_.reset();  // a throw below leaves no claim on the maps
+  ++updatesRun_;
   for (auto& o : oceans_)
     for (size_t c = 0; c < o.cascades.size(); ++c) {
       // The foam first: its steps use the cascade's scratch spectra, which update refills.
       if (o.foam[c]) o.foam[c]->update(time, o.choppiness, *o.cascades[c], foamHistory_);
       o.cascades[c]->update(time, o.choppiness);
     }
+  heldAt_.emplace(time, foamHistory_);
 }
 
 int OceanSimulation::lastFoamSteps() const {
   int steps = 0;
+  if (!lastUpdateRan_) return steps;
   for (const auto& o : oceans_)
     for (const auto& f : o.foam)
       if (f) steps += f->lastSteps();

@@ -4,6 +4,9 @@
 // manifest's ocean textures. The settings are the ocean_spectrum node's options, parsed
 // with the node's own parser and checked as the compiler checks them.
 #include <memory>
+#include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "codegen/shader_plan.h"
@@ -21,13 +24,17 @@ class OceanSimulation {
   OceanSimulation(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures, SceneShaderApi api);
 
   // Every cascade's maps at time t (seconds), and the foam of those whose foam map a shader
-  // samples. Leaves the viewport, the framebuffer, the program and texture units 0-2
-  // changed.
+  // samples. Leaves the viewport, the framebuffer, the program, the vertex array and
+  // texture units 0-2 changed, and depth testing and blending off. After an update to the
+  // same t with the same foam history the maps already hold time t: then nothing runs
+  // (check renders many views of one time; a foam replay is tens of transforms per cascade).
   void update(double time);
   // How the foam reaches a frame's time (Replay unless set: a frame depends on its time alone).
   void setFoamHistory(FoamHistory history) { foamHistory_ = history; }
-  // The foam steps the last update ran, over every cascade.
+  // The foam steps the last update ran, over every cascade (0 when it found the maps at its time).
   int lastFoamSteps() const;
+  // The updates that ran (not those that found the maps at their time).
+  long updatesRun() const { return updatesRun_; }
   // The GL texture of a manifest's ocean map (a manifest error when it names none).
   GLuint map(const OceanMapRef& ref) const;
   // The GPU memory the simulation of these oceans holds (every cascade's textures), without
@@ -36,6 +43,10 @@ class OceanSimulation {
   // Whether cascade `cascade` of ocean `ocean` computes the slope fields, and its foam.
   bool computesSlopes(int ocean, int cascade) const;
   bool computesFoam(int ocean, int cascade) const;
+  // What the simulation computes, as text: two manifests with equal identities (each
+  // ocean's id and options, each ocean map a shader reads) can share one simulation.
+  static std::string identity(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures);
+  const std::string& identity() const { return identity_; }
 
  private:
   struct Ocean {
@@ -44,7 +55,12 @@ class OceanSimulation {
     std::vector<std::unique_ptr<OceanGpuFoam>> foam;  // per cascade, null where no shader reads it
   };
   std::vector<Ocean> oceans_;
+  std::string identity_;
   FoamHistory foamHistory_ = FoamHistory::Replay;
+  // The time and foam history the maps hold, once updated; whether the last update ran.
+  std::optional<std::pair<double, FoamHistory>> heldAt_;
+  bool lastUpdateRan_ = false;
+  long updatesRun_ = 0;
 };
 
 }  // namespace wg::rt

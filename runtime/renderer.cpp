@@ -1,5 +1,6 @@
 #include "runtime/renderer.h"
 
+#include <stdexcept>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -92,7 +93,7 @@ struct Renderer::Impl {
   };
   std::vector<Binding> waterBindings;
   std::vector<std::shared_ptr<const Texture>> nodeTextures;
-  std::unique_ptr<OceanSimulation> oceans;  // when the manifest lists oceans
+  std::shared_ptr<OceanSimulation> oceans;  // when the manifest lists oceans; may be shared
   GpuCache* cache = nullptr;  // not owned; may be null
 
   std::shared_ptr<const Program> link(const std::vector<ShaderSource>& sources, const std::string& what) {
@@ -287,6 +288,9 @@ struct Renderer::Impl {
   void oceanSimulationPass() {
     oceans->setFoamHistory(settings.animation ? FoamHistory::Continue : FoamHistory::Replay);
     oceans->update(settings.scene.time);
+    // The state the passes after it expect (renderFrame's): the simulation turned depth
+    // testing off, and the water mesh drawn without it shows its far waves over its near ones.
+    glEnable(GL_DEPTH_TEST);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, settings.width, settings.height);
   }
@@ -459,7 +463,8 @@ struct Renderer::Impl {
 };
 
 Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSources, const RenderSettings& settings,
-                   bool es, const std::map<std::string, TextureOrigin>& origins, GpuCache* cache)
+                   bool es, const std::map<std::string, TextureOrigin>& origins, GpuCache* cache,
+                   std::shared_ptr<OceanSimulation> oceans)
     : impl_(std::make_unique<Impl>()) {
   Impl& r = *impl_;
   r.settings = settings;
@@ -535,8 +540,13 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
   r.emptyVao = makeVertexArray();
   checkGl("uploading the scene");
   r.targets.create(r.plan, r.es);
-  if (r.plan.runs(PassKind::OceanSimulation))
-    r.oceans = std::make_unique<OceanSimulation>(manifest.oceans, manifest.textures, es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
+  if (r.plan.runs(PassKind::OceanSimulation)) {
+    if (oceans && oceans->identity() != OceanSimulation::identity(manifest.oceans, manifest.textures))
+      throw std::logic_error("a shared ocean simulation simulates other oceans than this manifest's");
+    r.oceans = oceans ? std::move(oceans)
+                      : std::make_shared<OceanSimulation>(manifest.oceans, manifest.textures,
+                                                          es ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
+  }
   r.setupWaterUniforms(manifest, origins);
   r.cache = nullptr;  // used only while constructing: the caller may destroy it afterwards
 }
@@ -575,6 +585,8 @@ size_t Renderer::createdTargetBytes() const {
   return n;
 }
 const RenderSettings& Renderer::settings() const { return impl_->settings; }
+
+std::shared_ptr<OceanSimulation> Renderer::oceanSimulation() const { return impl_->oceans; }
 
 void Renderer::setCamera(const Camera& camera) { impl_->setCamera(camera); }
 

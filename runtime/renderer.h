@@ -21,6 +21,7 @@
 namespace wg::rt {
 
 class GpuCache;
+class OceanSimulation;
 
 struct RenderSettings {
   int width = 1280, height = 720;
@@ -73,8 +74,12 @@ class Renderer {
   // before and node textures it has uploaded are taken from it, not made again: an editor
   // rebuilding the Renderer after each edit keeps the scene's programs, and the water's
   // when only parameter values changed, with their machine code.
+  // With `oceans` (another Renderer's oceanSimulation() for a manifest of the same
+  // oceans and ocean maps: check's frames and its read-back frames), the two share one
+  // simulation, which runs once per time for both; else the Renderer makes its own.
   Renderer(const Manifest& manifest, std::vector<ShaderSource> water, const RenderSettings& settings, bool es,
-           const std::map<std::string, TextureOrigin>& origins = {}, GpuCache* cache = nullptr);
+           const std::map<std::string, TextureOrigin>& origins = {}, GpuCache* cache = nullptr,
+           std::shared_ptr<OceanSimulation> oceans = nullptr);
   ~Renderer();
   Renderer(const Renderer&) = delete;
   Renderer& operator=(const Renderer&) = delete;
@@ -109,6 +114,8 @@ class Renderer {
   int createdTargetCount() const;     // GL render targets actually allocated
   size_t createdTargetBytes() const;  // their image memory
   const RenderSettings& settings() const;
+  // The spectral oceans' simulation (null when the manifest lists no ocean_simulation pass).
+  std::shared_ptr<OceanSimulation> oceanSimulation() const;
 
  private:
   struct Impl;
