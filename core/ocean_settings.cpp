@@ -1,14 +1,33 @@
 // The ocean_spectrum node's settings (core/ocean_settings.h).
 #include "core/ocean_settings.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace wg::ocean {
 
+double foamReplayTexelSteps(const OceanSettings& s) {
+  const double cascades = std::min<double>(s.foam.cascades, static_cast<double>(s.cascades.tileLengths.size()));
+  const double n = s.cascades.resolution;
+  return (historySteps(s.foam) + 1.0) * cascades * n * n;
+}
+
 std::optional<SettingError> validateOcean(const OceanSettings& s) {
   if (auto e = validateSpectrum(s.spectrum)) return e;
   if (auto e = validateCascades(s.cascades)) return e;
-  return validateFoam(s.foam);
+  if (auto e = validateFoam(s.foam)) return e;
+  const double steps = foamReplayTexelSteps(s);
+  if (steps > kFoamReplayBudget) {
+    char text[320];
+    std::snprintf(text, sizeof text,
+                  "%s s makes a still frame replay %d foam steps on %d cascades of %d^2 (%.0f million texel steps, "
+                  "over the budget of %.0f million): raise foam_step, or lower foam_decay, foam_cascades or fft_size",
+                  numberText(s.foam.decay).c_str(), historySteps(s.foam) + 1,
+                  static_cast<int>(std::min<size_t>(static_cast<size_t>(s.foam.cascades), s.cascades.tileLengths.size())),
+                  s.cascades.resolution, steps / 1e6, kFoamReplayBudget / 1e6);
+    return SettingError{"foam_decay", text};
+  }
+  return std::nullopt;
 }
 
 bool makesFoam(const OceanSettings& s, int cascade) {

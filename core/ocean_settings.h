@@ -28,7 +28,17 @@ struct OceanSettings {
 // Whether cascade `cascade` makes foam (the first foam.cascades of them).
 bool makesFoam(const OceanSettings& s, int cascade);
 
-// Why settings are meaningless (the option's name and a sentence), or nothing.
+// The most texel steps a still frame's foam replay may run: (K + 1) steps on every foam
+// cascade's N^2 grid. The defaults run 15 million (76 x 3 x 256^2, about 6 s on llvmpipe);
+// the budget keeps the worst a setting can ask (501 steps on four 512^2 cascades, 525
+// million: minutes per frame there) out, and allows the default foam at fft_size 512.
+inline constexpr double kFoamReplayBudget = 134217728;  // 2^27
+
+// The texel steps a still frame's foam replay runs with these settings.
+double foamReplayTexelSteps(const OceanSettings& s);
+
+// Why settings are meaningless (the option's name and a sentence), or nothing. A foam
+// replay over kFoamReplayBudget is an error at foam_decay, naming the other settings.
 std::optional<SettingError> validateOcean(const OceanSettings& s);
 
 // Every field of the settings as text with all the digits a double holds: two settings

@@ -134,5 +134,32 @@ TEST(OceanFoam, MeaninglessFoamSettingsAreErrorsNamingTheOption) {
   EXPECT_FALSE(makesFoam(s, 1));  // one cascade only
 }
 
+// A still frame's replay is bounded in texel steps, (K + 1) x foam cascades x N^2: at the
+// largest grid the budget admits 170 steps on three cascades and refuses 171 (an error at
+// foam_decay naming the other settings), and counts only cascades that make foam.
+TEST(OceanFoam, AStillFramesReplayIsWithinItsBudget) {
+  OceanSettings s;
+  s.cascades.resolution = 512;
+  s.cascades.tileLengths = {400, 60, 9};
+  s.foam.step = 0.1;
+  s.foam.decay = 3.38;  // K = 169
+  EXPECT_EQ(foamReplayTexelSteps(s), 170.0 * 3 * 512 * 512);
+  EXPECT_LE(foamReplayTexelSteps(s), kFoamReplayBudget);
+  EXPECT_FALSE(validateOcean(s).has_value());
+  s.foam.decay = 3.4;  // K = 170
+  ASSERT_TRUE(validateOcean(s).has_value());
+  EXPECT_EQ(validateOcean(s)->parameter, "foam_decay");
+  EXPECT_NE(validateOcean(s)->message.find("foam_cascades or fft_size"), std::string::npos);
+  s.foam.cascades = 2;  // the third cascade makes none
+  EXPECT_EQ(foamReplayTexelSteps(s), 171.0 * 2 * 512 * 512);
+  EXPECT_FALSE(validateOcean(s).has_value());
+  // The defaults, and the defaults at the largest grid, are within it.
+  EXPECT_FALSE(validateOcean(OceanSettings{}).has_value());
+  OceanSettings large;
+  large.cascades.resolution = 512;
+  large.cascades.tileLengths = {400, 60, 9, 2};
+  EXPECT_FALSE(validateOcean(large).has_value());
+}
+
 }  // namespace
 }  // namespace wg::ocean
