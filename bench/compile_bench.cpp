@@ -248,28 +248,31 @@ void manifest(benchmark::State& state, Case* c) {
   }
 }
 
-// Everything a compile does before glslang, as `watergraph compile` runs it.
-CompileResult compileWithoutGlslang(const Case& c) {
+// Everything a compile does before glslang, as `watergraph compile` runs it: for every
+// target, or (`only`) for one, as `--target es300` (what a WebGL2 page uses, and what
+// three.js TSL's build() makes: bench/tsl/).
+CompileResult compileWithoutGlslang(const Case& c, std::optional<Target> only = std::nullopt) {
   Diagnostics diags;
   auto g = parseGraph(c.sharedText(), c.file, diags);
   if (!g || !loadImports(*g, diags)) throw std::runtime_error(c.name + ": does not load");
   CompileOptions options;
   options.validate = false;
+  if (only) options.targets = {*only};
   auto r = compileGraph(*g, defaultRegistry(), options, diags);
   if (!r) throw std::runtime_error(c.name + ": does not compile");
   return std::move(*r);
 }
 
-void beforeGlslang(benchmark::State& state, Case* c) {
+void beforeGlslang(benchmark::State& state, Case* c, std::optional<Target> only) {
   int kept = 0;
   for (auto _ : state) {
-    CompileResult r = compileWithoutGlslang(*c);
+    CompileResult r = compileWithoutGlslang(*c, only);
     kept = r.nodesKept;
     benchmark::DoNotOptimize(r);
   }
   // The peak heap of one more compile, above what was live before it.
   startHeapWindow();
-  { CompileResult r = compileWithoutGlslang(*c); }
+  { CompileResult r = compileWithoutGlslang(*c, only); }
   state.counters["peak_MiB"] = static_cast<double>(stopHeapWindow()) / (1024.0 * 1024.0);
   state.counters["kept"] = kept;
 }
@@ -303,7 +306,8 @@ void registerCase(Case* c, int nodes) {
   for (Target t : allTargets())
     tune(benchmark::RegisterBenchmark(("emit_" + std::string(targetName(t)) + n).c_str(), emit, c, t));
   tune(benchmark::RegisterBenchmark(("manifest" + n).c_str(), manifest, c));
-  tune(benchmark::RegisterBenchmark(("before_glslang" + n).c_str(), beforeGlslang, c));
+  tune(benchmark::RegisterBenchmark(("before_glslang" + n).c_str(), beforeGlslang, c, std::nullopt));
+  tune(benchmark::RegisterBenchmark(("before_glslang_es300" + n).c_str(), beforeGlslang, c, std::optional(Target::Es300)));
   for (Target t : allTargets()) {
     auto* b = tune(benchmark::RegisterBenchmark(("glslang_" + std::string(targetName(t)) + n).c_str(), glslang, c, t));
     if (nodes >= 100000) b->Iterations(1);  // ~10-30 s each: glslang on a 100,000-line shader

@@ -1,7 +1,9 @@
 // Times three.js's TSL front end on the synthetic graphs (synthetic_tsl.js): for each
 // trial a fresh node graph and a fresh material (no cache of an earlier trial can hit),
 // then GLSLNodeBuilder.build() — TSL to GLSL ES 3.00, the WebGL2 backend's shaders, before
-// any WebGL compile. Query: ?nodes=100,1000,10000&trials=5. window.wgBench receives
+// any WebGL compile. Query: ?nodes=100,1000,10000&trials=5&warmup=3 (warm-up builds of each
+// size first, untimed: the JavaScript engine compiles the builder's code on the first ones,
+// as Google Benchmark warms watergraph's side up). window.wgBench receives
 // { ok, revision, results: [{ nodes, count, constructMs: [...], buildMs: [...] }] } or
 // { ok: false, error }.
 import * as THREE from 'three/webgpu';
@@ -12,6 +14,7 @@ async function run() {
   const query = new URLSearchParams(location.search);
   const sizes = (query.get('nodes') ?? '100,1000,10000').split(',').map(Number);
   const trials = Number(query.get('trials') ?? 5);
+  const warmup = Number(query.get('warmup') ?? 3);
   const renderer = new THREE.WebGPURenderer({ canvas: document.getElementById('view'), forceWebGL: true });
   await renderer.init();
   const geometry = new THREE.PlaneGeometry(1, 1, 1, 1);
@@ -20,7 +23,7 @@ async function run() {
   const results = [];
   for (const nodes of sizes) {
     const r = { nodes, count: 0, constructMs: [], buildMs: [], vertexChars: 0, fragmentChars: 0 };
-    for (let t = 0; t < trials; ++t) {
+    for (let t = -warmup; t < trials; ++t) {
       const t0 = performance.now();
       const graph = buildSynthetic(nodes, TSL);
       const material = new THREE.MeshBasicNodeMaterial();
@@ -42,6 +45,7 @@ async function run() {
       builder.build();
       const t2 = performance.now();
       r.count = graph.count;
+      if (t < 0) continue;
       r.constructMs.push(t1 - t0);
       r.buildMs.push(t2 - t1);
       r.vertexChars = builder.vertexShader.length;
