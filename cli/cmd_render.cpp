@@ -18,6 +18,7 @@
 #include "core/graph_io.h"
 #include "core/node_preview_graph.h"
 #include "nodes/registry.h"
+#include "runtime/floating_buoys.h"
 #include "runtime/image.h"
 #include "runtime/ocean_simulation.h"
 #include "runtime/preview.h"
@@ -44,6 +45,7 @@ struct RenderArgs {
   bool derivedUniforms = false;  // CompileOptions::derivedUniforms
   bool obliqueReflection = false;
   std::string scene = "builtin";
+  bool buoys = false;
   bool vulkanValidation = false;
   ViewFlags view;
 };
@@ -111,6 +113,11 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
     std::cerr << "watergraph: --vk-validation needs --target vk450 (the layer checks Vulkan calls)\n";
     return kExitUsageOrIo;
   }
+  if (args.buoys && (args.scene != "builtin" || target == Target::Vk450)) {
+    std::cerr << "watergraph: --buoys floats the built-in scene's buoys: it needs --scene builtin and a GL target "
+                 "(glsl330, es300)\n";
+    return kExitUsageOrIo;
+  }
   // -o was checked before the command ran (cli/option_values.h, checkOutputPaths).
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
@@ -138,6 +145,11 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   settings.scene.sunAzimuthDegrees = args.sunAzimuth;
   settings.scene.sunElevationDegrees = args.sunElevation;
   settings.scene.drawScene = args.scene == "builtin";
+  if (args.buoys) {
+    std::vector<Value> parameters;
+    for (const auto& p : result->program.parameters) parameters.push_back(p.defaultValue);
+    settings.scene.buoys = rt::floatingBuoys(result->program, parameters, args.time);
+  }
   settings.view = args.view.over(result->program.view);
   try {
     rt::Preview p = target == Target::Vk450
@@ -207,6 +219,9 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
                   "else in any pass), e.g. to compare with another renderer such as clients/three/")
       ->check(CLI::IsMember({"builtin", "none"}))
       ->capture_default_str();
+  cmd->add_flag("--buoys", args->buoys,
+                "float the built-in scene's three buoys on the water: each where the graph's vertex stage moves its "
+                "rest point at --time, tilted to the surface (GL targets; docs/queries.md)");
   cmd->add_option("--grid", args->grid, "quads per side of the 40 x 40 m water grid (finer for short waves; costs time on llvmpipe)")
       ->check(CLI::Range(1, 2048))
       ->capture_default_str();

@@ -248,7 +248,9 @@ void EditorWindow::renderPreviews() {
   if (!previewDirty_ && !playing_) return;
   rt::Camera cam = orbit_.toCamera();
   std::string error;
-  if (preview_.ready()) frameMs_ = preview_.render(cam, scene_, currentView(), &error);
+  rt::SceneOptions scene = scene_;
+  if (buoys_) scene.buoys = preview_.floatingBuoys(scene.time);
+  if (preview_.ready()) frameMs_ = preview_.render(cam, scene, currentView(), &error);
   if (!error.empty()) {
     Diagnostics d;
     d.error(DiagCode::RuntimeRejected, SourceRef{path_, 0, 0}, error);

@@ -115,6 +115,8 @@ void EditorWindow::drawPreviewPanel(float x, float y, float w, float h) {
   ImGui::SameLine();
   ImGui::SetNextItemWidth(160);
   if (ImGui::SliderFloat("sun elevation", &scene_.sunElevationDegrees, -10, 90, "%.0f deg")) previewDirty_ = true;
+  ImGui::SameLine();
+  if (ImGui::Checkbox("buoys", &buoys_)) previewDirty_ = true;
   // The output transform (the graph's "view" until changed here; not saved to the graph).
   ViewTransform view = currentView();
   ImGui::SameLine();

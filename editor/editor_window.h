@@ -183,6 +183,7 @@ class EditorWindow : private ScriptHost {
     return view_.over(preview_.compiled() ? preview_.compiled()->program.view : ViewTransform{});
   }
   bool playing_ = true;
+  bool buoys_ = false;  // float the built-in scene's buoys on the preview's water
   bool previewDirty_ = true;
   double frameMs_ = 0;
   PendingLatency pending_;

@@ -1,6 +1,7 @@
 #include "editor/live_preview.h"
 
 #include "codegen/texture_files.h"
+#include "runtime/floating_buoys.h"
 #include "runtime/preview.h"
 #include "runtime/runtime_error.h"
 
@@ -36,12 +37,27 @@ bool LivePreview::rebuild(const Graph& graph, const Registry& registry, Diagnost
   }
   if (timings) timings->rendererMs = msSince(start);
   compiled_ = std::move(result);
+  setSinceRebuild_.clear();
   return true;
 }
 
 bool LivePreview::setParameter(const std::string& name, const std::vector<double>& value) {
   if (!renderer_) return false;
-  return renderer_->setParameter(name, std::vector<float>(value.begin(), value.end()));
+  if (!renderer_->setParameter(name, std::vector<float>(value.begin(), value.end()))) return false;
+  setSinceRebuild_[name] = value;
+  return true;
+}
+
+std::vector<rt::FloatingPose> LivePreview::floatingBuoys(double time) const {
+  if (!compiled_) return {};
+  std::vector<Value> parameters;
+  for (const auto& p : compiled_->program.parameters) {
+    Value v = p.defaultValue;
+    if (auto set = setSinceRebuild_.find(p.name); set != setSinceRebuild_.end())
+      for (int i = 0; i < v.size() && i < static_cast<int>(set->second.size()); ++i) v[i] = set->second[static_cast<size_t>(i)];
+    parameters.push_back(v);
+  }
+  return rt::floatingBuoys(compiled_->program, parameters, time);
 }
 
 double LivePreview::render(const rt::Camera& camera, const rt::SceneOptions& scene, const ViewTransform& view,

@@ -3,6 +3,7 @@
 // a graph with errors leaves the last good preview on screen and hands back the errors.
 // The GL context (the editor's window) must be current.
 #include <chrono>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -45,6 +46,9 @@ class LivePreview {
   rt::Image read() const;
   const rt::RenderSettings& settings() const { return settings_; }
   const CompileResult* compiled() const { return compiled_ ? &*compiled_ : nullptr; }
+  // The built-in scene's buoys floating at time t on this graph's water, with the parameter
+  // values the preview shows (the compile's, and those set since; runtime/floating_buoys.h).
+  std::vector<rt::FloatingPose> floatingBuoys(double time) const;
 
  private:
   rt::RenderSettings settings_;
@@ -53,6 +57,7 @@ class LivePreview {
   rt::GpuCache cache_;
   std::unique_ptr<rt::Renderer> renderer_, retired_;
   std::optional<CompileResult> compiled_;
+  std::map<std::string, std::vector<double>> setSinceRebuild_;  // setParameter's values
 };
 
 }  // namespace wg::editor

@@ -1,6 +1,7 @@
 // The render targets of a pass plan (runtime/render_targets.h).
 #include "runtime/render_targets.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
@@ -109,6 +110,52 @@ const GpuTarget* RenderTargets::picture(const PassPlan& plan) const {
   for (const auto& t : targets_)
     if (p && t.spec.name == p->name) return &t;
   return nullptr;
+}
+
+namespace {
+
+// GL's rows are bottom-up; images are top-down.
+template <class T>
+void flipRows(std::vector<T>& v, int height, size_t rowElements) {
+  for (int y = 0; y < height / 2; ++y)
+    std::swap_ranges(v.begin() + static_cast<ptrdiff_t>(y * rowElements), v.begin() + static_cast<ptrdiff_t>((y + 1) * rowElements),
+                     v.begin() + static_cast<ptrdiff_t>((height - 1 - y) * rowElements));
+}
+
+}  // namespace
+
+Image readTargetColor(const GpuTarget& t, bool asFloat) {
+  Image img;
+  img.width = t.spec.width;
+  img.height = t.spec.height;
+  const size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height) * 4;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, t.fbo.id());
+  glReadBuffer(GL_COLOR_ATTACHMENT0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (asFloat) {
+    img.rgba32f.resize(n);
+    glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, img.rgba32f.data());
+    flipRows(img.rgba32f, img.height, static_cast<size_t>(img.width) * 4);
+  } else {
+    img.rgba8.resize(n);
+    glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba8.data());
+    flipRows(img.rgba8, img.height, static_cast<size_t>(img.width) * 4);
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  checkGl("reading the frame back");
+  return img;
+}
+
+std::vector<float> readTargetDepth(const GpuTarget& t) {
+  const int w = t.spec.width, h = t.spec.height;
+  std::vector<float> depth(static_cast<size_t>(w) * static_cast<size_t>(h));
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, t.fbo.id());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  checkGl("reading the depth buffer back");
+  flipRows(depth, h, static_cast<size_t>(w));
+  return depth;
 }
 
 }  // namespace wg::rt

@@ -1,11 +1,13 @@
 #pragma once
 // The render targets a pass plan lists (PassPlan::targets), made on the current GL context:
 // each a framebuffer with its colour and/or depth textures, sized and filtered as the plan
-// says, and measured from the driver's view of the textures (render --stats).
+// says, and measured from the driver's view of the textures (render --stats); and a
+// target's images read back.
 #include <cstddef>
 #include <vector>
 
 #include "runtime/gl_resources.h"
+#include "runtime/image.h"
 #include "runtime/pass_plan.h"
 
 namespace wg::rt {
@@ -40,5 +42,10 @@ class RenderTargets {
   std::vector<GpuTarget> targets_;
   bool floatLinear_ = true;
 };
+
+// A target's colour read back, rows top to bottom: as floats (rgba32f) or bytes (rgba8).
+Image readTargetColor(const GpuTarget& t, bool asFloat);
+// A target's depth values read back, rows top to bottom (desktop GL: ES cannot).
+std::vector<float> readTargetDepth(const GpuTarget& t);
 
 }  // namespace wg::rt

@@ -17,6 +17,7 @@
 #include "runtime/memory_budget.h"
 #include "runtime/node_texture.h"
 #include "runtime/ocean_simulation.h"
+#include "runtime/floating_buoys.h"
 #include "runtime/gpu_cache.h"
 #include "runtime/gpu_mesh.h"
 #include "runtime/oblique_projection.h"
@@ -84,6 +85,8 @@ struct Renderer::Impl {
   GLint skyInverseVp = -1, skySun = -1;
   GLint opaqueVp = -1, opaqueClip = -1, opaqueSun = -1;
   GpuMesh sceneMesh, waterMesh;
+  GpuMesh buoys;                         // the floating buoys of settings.scene, in world space
+  std::vector<FloatingPose> buoysDrawn;  // the poses `buoys` holds
   VertexArray emptyVao;
   // Water textures: (texture unit, GL target, texture).
   struct Binding {
@@ -236,6 +239,10 @@ struct Renderer::Impl {
     if (!es) glEnable(GL_CLIP_DISTANCE0);
     glBindVertexArray(sceneMesh.vao.id());
     glDrawElements(GL_TRIANGLES, sceneMesh.indexCount, GL_UNSIGNED_INT, nullptr);
+    if (buoys.indexCount) {
+      glBindVertexArray(buoys.vao.id());
+      glDrawElements(GL_TRIANGLES, buoys.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
     if (!es) glDisable(GL_CLIP_DISTANCE0);
   }
 
@@ -415,6 +422,13 @@ struct Renderer::Impl {
     };
     static_assert(std::size(kPassFunctions) == kRenderPassCount);
     auto start = std::chrono::steady_clock::now();
+    // The buoys where this frame's scene floats them (a few hundred vertices, made again
+    // only when they moved).
+    if (settings.scene.buoys != buoysDrawn) {
+      buoys = settings.scene.buoys.empty() ? GpuMesh{}
+                                           : uploadMesh(buoyMesh(settings.scene.buoys), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});
+      buoysDrawn = settings.scene.buoys;
+    }
     applyUniforms();
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
@@ -429,36 +443,12 @@ struct Renderer::Impl {
   }
 
   Image read(bool asFloat) const {
-    Image img;
-    img.width = settings.width;
-    img.height = settings.height;
-    size_t n = static_cast<size_t>(img.width) * static_cast<size_t>(img.height) * 4;
     // Floats: the linear frame, before the output transform; bytes: the displayed image.
     const GpuTarget* source = asFloat ? &frame() : picture();
     if (!source || (asFloat && source->spec.color == ColorFormat::Rgba8))
       throw RuntimeError(RuntimeError::Kind::Manifest, asFloat ? "the frame holds no float colour"
                                                                : "an 8-bit read-back needs a renderer made without floatColor");
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, source->fbo.id());
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    size_t rowElems = static_cast<size_t>(img.width) * 4;
-    auto flip = [&](auto& v) {  // GL rows are bottom-up; images are top-down
-      for (int y = 0; y < img.height / 2; ++y)
-        std::swap_ranges(v.begin() + static_cast<ptrdiff_t>(y * rowElems), v.begin() + static_cast<ptrdiff_t>((y + 1) * rowElems),
-                         v.begin() + static_cast<ptrdiff_t>((img.height - 1 - y) * rowElems));
-    };
-    if (asFloat) {
-      img.rgba32f.resize(n);
-      glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_FLOAT, img.rgba32f.data());
-      flip(img.rgba32f);
-    } else {
-      img.rgba8.resize(n);
-      glReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.rgba8.data());
-      flip(img.rgba8);
-    }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-    checkGl("reading the frame back");
-    return img;
+    return readTargetColor(*source, asFloat);
   }
 };
 
@@ -559,17 +549,7 @@ Image Renderer::readRgba32f() const { return impl_->read(true); }
 
 std::vector<float> Renderer::readDepth() const {
   if (impl_->es) throw RuntimeError(RuntimeError::Kind::Manifest, "OpenGL ES cannot read the depth buffer back");
-  const int w = impl_->settings.width, h = impl_->settings.height;
-  std::vector<float> depth(static_cast<size_t>(w) * static_cast<size_t>(h));
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, impl_->frame().fbo.id());
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, w, h, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
-  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
-  checkGl("reading the depth buffer back");
-  for (int y = 0; y < h / 2; ++y)  // GL rows are bottom-up
-    std::swap_ranges(depth.begin() + static_cast<ptrdiff_t>(y) * w, depth.begin() + static_cast<ptrdiff_t>(y + 1) * w,
-                     depth.begin() + static_cast<ptrdiff_t>(h - 1 - y) * w);
-  return depth;
+  return readTargetDepth(impl_->frame());
 }
 const PassPlan& Renderer::plan() const { return impl_->plan; }
 

@@ -37,6 +37,14 @@ struct Camera {
 const std::vector<std::string>& cameraPresetNames();
 std::optional<Camera> cameraPreset(std::string_view name);
 
+// An object floating on the water: where it is and which way its up axis points (the
+// surface normal there). runtime/floating_buoys.h computes them from a graph.
+struct FloatingPose {
+  glm::vec3 position{0.0f};
+  glm::vec3 up{0.0f, 1.0f, 0.0f};
+  bool operator==(const FloatingPose&) const = default;
+};
+
 struct SceneOptions {
   double time = 3.5;              // seconds (u_time is its float; phases take it in double)
   float sunAzimuthDegrees = 110;  // from +x towards +z
@@ -45,6 +53,9 @@ struct SceneOptions {
   // pass; the frame and every scene target keep their clear colour, opaque black. Only the
   // water is drawn: for comparing the water alone with another renderer (clients/three).
   bool drawScene = true;
+  // The built-in scene's buoys, where they float this frame (none: no buoys). Drawn with the
+  // opaque scene in every pass that draws it (GL runtime only).
+  std::vector<FloatingPose> buoys;
 };
 glm::vec3 sunDirection(const SceneOptions& o);  // unit vector towards the sun
 
@@ -57,7 +68,8 @@ struct Mesh {
 };
 
 // Opaque scene: position (location 0), normal (1), material id as float (3).
-// Materials: 0 terrain (tiles / sand by position), 1 pillar stone, 2 rock.
+// Materials: 0 terrain (tiles / sand by position), 1 pillar stone, 2 rock, 3 and 4 a buoy's
+// red body and white top (runtime/floating_buoys.h).
 inline constexpr int kSceneMaterialLocation = 3;
 Mesh buildSceneMesh();
 float terrainHeight(float x, float z);  // the floor / shore height field

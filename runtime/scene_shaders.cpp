@@ -143,8 +143,11 @@ void main() {
   if (dot(u_clip_plane, vec4(v_world, 1.0)) < 0.0) discard;
 #endif
   vec3 n = v_normal * inversesqrt(max(dot(v_normal, v_normal), 1e-30));
+  // 2 rock; 3 and 4 a floating buoy's red body and white top.
   vec3 albedo = v_material < 0.5 ? terrainAlbedo(v_world)
-              : v_material < 1.5 ? pillarAlbedo(v_world, n) : vec3(0.40, 0.37, 0.33);
+              : v_material < 1.5 ? pillarAlbedo(v_world, n)
+              : v_material < 2.5 ? vec3(0.40, 0.37, 0.33)
+              : v_material < 3.5 ? vec3(0.62, 0.06, 0.04) : vec3(0.85, 0.85, 0.82);
   // Lambertian: radiance = albedo E / pi, E the sun's irradiance on this plane (no
   // shadows) plus the sky's.
   vec3 e = v_sun_irradiance * max(dot(n, wg_scene_sun()), 0.0) + v_sky_irradiance;

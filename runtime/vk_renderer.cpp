@@ -32,6 +32,12 @@ glm::mat4 vulkanDepthRangeCorrection() {
 
 namespace {
 
+// The floating buoys are drawn by the GL runtime only (runtime/floating_buoys.h).
+void refuseBuoys(const SceneOptions& scene) {
+  if (!scene.buoys.empty())
+    manifestError("the floating buoys are drawn by the GL runtime (glsl330, es300), not yet by the Vulkan runtime");
+}
+
 // The scene's push constants, laid out as the blocks of scene.h (SceneShaderApi::Vulkan450).
 struct SkyConstants {
   glm::mat4 inverseViewProjection;
@@ -439,6 +445,7 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   r.projection = r.camera.projection(static_cast<float>(settings.width) / static_cast<float>(std::max(settings.height, 1)));
   r.viewProjection = r.projection * r.view;
   r.sun = sunDirection(settings.scene);
+  refuseBuoys(settings.scene);
 
   r.plan = planPasses(manifest, planOptionsFor(settings));
   if (auto pass = passVulkanDoesNotRun(r.plan.passes))
@@ -526,6 +533,7 @@ void VkRenderer::setCamera(const Camera& camera) {
 }
 
 void VkRenderer::setScene(const SceneOptions& scene) {
+  refuseBuoys(scene);
   impl_->settings.scene = scene;
   impl_->sun = sunDirection(scene);
 }

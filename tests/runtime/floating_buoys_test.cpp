@@ -1,0 +1,145 @@
+// The built-in scene's floating buoys (runtime/floating_buoys.h): each rides the point the
+// graph's vertex stage moves its rest point to, tilted to the surface normal (the vertex
+// stage's, or the displaced sheet's from central differences), and the renderer draws them
+// with the opaque scene; `render --buoys` floats them, and refuses where it cannot.
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "codegen/compile.h"
+#include "codegen/water_surface_eval.h"
+#include "core/graph_io.h"
+#include "nodes/registry.h"
+#include "runtime/egl_context.h"
+#include "runtime/floating_buoys.h"
+#include "runtime/image.h"
+#include "runtime/preview.h"
+#include "runtime/renderer.h"
+#include "runtime_test_support.h"
+#include "test_support.h"
+
+namespace wg::rt {
+// Named, not anonymous: the unity build joins this file with the other runtime tests.
+namespace buoys_test {
+
+// Two Gerstner waves; `withNormal` writes the waves' normal in the vertex stage too.
+CompileResult compileWaves(bool withNormal) {
+  Diagnostics diags;
+  const std::string vertex = withNormal ? R"("position": "waves.position", "normal": "waves.normal")"
+                                        : R"("position": "waves.position")";
+  auto graph = parseGraph(R"({"version": 1, "name": "buoys_test", "nodes": [
+      {"id": "waves", "type": "gerstner_waves", "options": {"waves": [
+        {"direction": [1, 0.4], "steepness": 0.5, "wavelength": 9, "amplitude": 0.5},
+        {"direction": [-0.3, 1], "steepness": 0.3, "wavelength": 4, "amplitude": 0.15}]}}],
+      "outputs": {"vertex": {)" + vertex + R"(}, "fragment": {"color": [0.02, 0.1, 0.15]}}})",
+                          "buoys_test.json", diags);
+  CompileOptions o;
+  o.targets = {Target::Glsl330};
+  auto result = graph ? compileGraph(*graph, defaultRegistry(), o, diags) : std::nullopt;
+  if (!result) throw std::runtime_error("the test graph does not compile:\n" + diags.sorted().front().message);
+  return std::move(*result);
+}
+
+std::vector<Value> defaults(const wg::Program& program) {
+  std::vector<Value> v;
+  for (const auto& p : program.parameters) v.push_back(p.defaultValue);
+  return v;
+}
+
+TEST(FloatingBuoys, EachRidesThePointTheVertexStageMovesItsRestPointTo) {
+  CompileResult waves = compileWaves(true);
+  const std::vector<Value> params = defaults(waves.program);
+  const double times[] = {0.0, 3.5, 1e6};
+  std::vector<FloatingPose> first;
+  for (double t : times) {
+    const std::vector<FloatingPose> poses = floatingBuoys(waves.program, params, t);
+    ASSERT_EQ(poses.size(), buoyRestPoints().size());
+    for (size_t i = 0; i < poses.size(); ++i) {
+      const WaterSurfacePoint s = waterSurfaceAt(waves.program, params, buoyRestPoints()[i].x, buoyRestPoints()[i].y, t);
+      ASSERT_TRUE(s.hasNormal);
+      for (int k = 0; k < 3; ++k) EXPECT_EQ(poses[i].position[k], static_cast<float>(s.position[k])) << t;
+      const double len = std::sqrt(s.normal[0] * s.normal[0] + s.normal[1] * s.normal[1] + s.normal[2] * s.normal[2]);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(poses[i].up[k], s.normal[k] / len, 1e-6) << t;
+      EXPECT_TRUE(std::isfinite(poses[i].position.y));
+    }
+    if (first.empty()) first = poses;
+  }
+  // They move: heave, sway and tilt differ between t = 0 and t = 3.5 s.
+  const std::vector<FloatingPose> later = floatingBuoys(waves.program, params, 3.5);
+  for (size_t i = 0; i < later.size(); ++i) {
+    EXPECT_GT(std::abs(later[i].position.y - first[i].position.y), 0.01f) << i;
+    EXPECT_GT(std::abs(later[i].up.x - first[i].up.x) + std::abs(later[i].up.z - first[i].up.z), 0.01f) << i;
+  }
+}
+
+// Without a vertex normal the up axis is the displaced sheet's normal from central
+// differences 5 cm apart: the waves' own normal within the differences' O(h^2) error
+// (k h = 2 pi 0.05 / 4 = 0.079: (k h)^2 / 6 of the slope, under 1e-3).
+TEST(FloatingBuoys, WithoutAVertexNormalTheyTiltToTheDisplacedSheet) {
+  CompileResult withNormal = compileWaves(true), without = compileWaves(false);
+  for (double t : {0.0, 3.5, 11.25}) {
+    const auto a = floatingBuoys(withNormal.program, defaults(withNormal.program), t);
+    const auto b = floatingBuoys(without.program, defaults(without.program), t);
+    ASSERT_EQ(a.size(), b.size());
+    for (size_t i = 0; i < a.size(); ++i) {
+      EXPECT_EQ(a[i].position, b[i].position);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[i].up[k], b[i].up[k], 1e-3) << "buoy " << i << " t " << t;
+      EXPECT_GT(std::abs(b[i].up.x) + std::abs(b[i].up.z), 0.02f) << "the case must tilt the buoy";
+    }
+  }
+}
+
+// The renderer draws them with the opaque scene: a frame with buoys differs from one
+// without where they float, and only there (a few hundred pixels of a 320x180 frame).
+TEST(FloatingBuoys, TheRendererDrawsThemWithTheScene) {
+  auto ctx = EglContext::create(GlApi::DesktopGl45);
+  CompileResult waves = compileWaves(true);
+  RenderSettings settings = test::smallSettings();
+  Renderer plain(waves.manifest, waterShaderSources(waves, Target::Glsl330), settings, false);
+  settings.scene.buoys = floatingBuoys(waves.program, defaults(waves.program), settings.scene.time);
+  Renderer floating(waves.manifest, waterShaderSources(waves, Target::Glsl330), settings, false);
+  plain.renderFrame();
+  floating.renderFrame();
+  const Image a = plain.readRgba8(), b = floating.readRgba8();
+  size_t differ = 0, red = 0;
+  for (size_t i = 0; i < a.rgba8.size(); i += 4) {
+    const bool changed = a.rgba8[i] != b.rgba8[i] || a.rgba8[i + 1] != b.rgba8[i + 1] || a.rgba8[i + 2] != b.rgba8[i + 2];
+    differ += changed;
+    red += changed && b.rgba8[i] > 2 * b.rgba8[i + 1] && b.rgba8[i] > 60;  // the buoys' red bodies
+  }
+  EXPECT_GT(red, 30u);
+  EXPECT_LT(differ, a.rgba8.size() / 4 / 20) << "more than 5 % of the frame changed";
+  // Moved to another time's poses, the same renderer draws them there.
+  SceneOptions later = settings.scene;
+  later.time = 5.0;
+  later.buoys = floatingBuoys(waves.program, defaults(waves.program), later.time);
+  floating.setScene(later);
+  floating.renderFrame();
+  const Image c = floating.readRgba8();
+  EXPECT_NE(b.rgba8, c.rgba8);
+}
+
+TEST(FloatingBuoys, RenderFloatsThemAndRefusesWhereItCannot) {
+  const std::string dir = test::makeTempDir("wg_buoys");
+  const std::string wg = test::shellQuote(test::watergraphBinary());
+  const std::string graph = test::shellQuote(test::sourcePath("graphs/topdown.json"));
+  std::string out;
+  EXPECT_EQ(test::runCommand(wg + " render " + graph + " -o " + test::shellQuote(dir + "/b.png") +
+                                 " --size 160x90 --buoys 2>&1",
+                             &out),
+            0)
+      << out;
+  for (const char* bad : {" --scene none", " --target vk450"}) {
+    EXPECT_EQ(test::runCommand(wg + " render " + graph + " -o " + test::shellQuote(dir + "/c.png") + " --buoys" + bad + " 2>&1",
+                               &out),
+              2)
+        << bad;
+    EXPECT_NE(out.find("--buoys"), std::string::npos) << out;
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace buoys_test
+}  // namespace wg::rt
