@@ -71,20 +71,17 @@ const std::vector<glm::dvec2>& buoyRestPoints() {
 std::vector<FloatingPose> floatingBuoys(const wg::Program& program, const std::vector<Value>& parameters, double time) {
   std::vector<FloatingPose> poses;
   for (const glm::dvec2& rest : buoyRestPoints()) {
-    const WaterSurfacePoint s = waterSurfaceAt(program, parameters, rest.x, rest.y, time);
-    glm::dvec3 normal(s.normal[0], s.normal[1], s.normal[2]);
-    if (!s.hasNormal) {
-      // The displaced sheet's tangents along x0 and z0; their cross product is its normal.
-      const double h = kNormalStep;
-      const glm::dvec3 alongX = displaced(program, parameters, rest.x + h, rest.y, time) -
-                                displaced(program, parameters, rest.x - h, rest.y, time);
-      const glm::dvec3 alongZ = displaced(program, parameters, rest.x, rest.y + h, time) -
-                                displaced(program, parameters, rest.x, rest.y - h, time);
-      normal = glm::cross(alongZ, alongX);
-    }
+    const glm::dvec3 at = displaced(program, parameters, rest.x, rest.y, time);
+    // The displaced sheet's tangents along x0 and z0; their cross product is its normal, the
+    // surface queries' normal (which differentiates exactly) within the differences' error.
+    const double h = kNormalStep;
+    const glm::dvec3 alongX = displaced(program, parameters, rest.x + h, rest.y, time) -
+                              displaced(program, parameters, rest.x - h, rest.y, time);
+    const glm::dvec3 alongZ = displaced(program, parameters, rest.x, rest.y + h, time) -
+                              displaced(program, parameters, rest.x, rest.y - h, time);
+    const glm::dvec3 normal = glm::cross(alongZ, alongX);
     FloatingPose pose;
-    pose.position = glm::vec3(static_cast<float>(s.position[0]), static_cast<float>(s.position[1]),
-                              static_cast<float>(s.position[2]));
+    pose.position = glm::vec3(at);
     pose.up = upFrom(normal);
     poses.push_back(pose);
   }

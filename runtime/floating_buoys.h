@@ -19,11 +19,13 @@ namespace wg::rt {
 const std::vector<glm::dvec2>& buoyRestPoints();
 
 // The buoys at time t on the water of `program` (after the compiler's passes) with
-// `parameters` by index. The up axis is the vertex stage's normal where it writes one, else
-// the normal of the displaced surface from central differences 5 cm apart.
+// `parameters` by index. The up axis is the normal of the displaced surface, from central
+// differences 5 cm apart (the surface queries' normal, docs/queries.md, within 1e-3 on
+// waves 4 m long).
 std::vector<FloatingPose> floatingBuoys(const wg::Program& program, const std::vector<Value>& parameters, double time);
 
-// The buoys' triangles in world space, in the opaque scene's vertex layout (position,
+// The buoys' triangles in world space (one pose at the origin, up +y: the buoy in its own
+// space, as the scene description gives it to other renderers), in the opaque scene's vertex layout (position,
 // normal, material 3 for the body and 4 for the top; runtime/scene.h).
 Mesh buoyMesh(const std::vector<FloatingPose>& poses);
 

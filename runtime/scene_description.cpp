@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/interface_tables.h"
+#include "runtime/floating_buoys.h"
 #include "runtime/output_transform.h"
 #include "runtime/renderer.h"
 
@@ -50,6 +51,15 @@ std::string sceneDescriptionJson(const SceneOptions& options) {
                                            {{"name", "a_material"}, {"location", kSceneMaterialLocation}, {"components", 1}}})},
                {"vertices", mesh.vertices},
                {"indices", mesh.indices}};
+
+  // The floating buoys (runtime/floating_buoys.h): where they rest on the water, and one
+  // buoy in its own space (up +y, the water line at y = 0) in the mesh's layout. A renderer
+  // places it each frame where the surface query puts each rest point, rotating positions
+  // and normals as the runtime does: x and z turned with the up axis, the heading fixed.
+  json rests = json::array();
+  for (const glm::dvec2& p : buoyRestPoints()) rests.push_back(json::array({p.x, p.y}));
+  const Mesh buoy = buoyMesh({FloatingPose{}});
+  d["buoys"] = {{"rest_points", rests}, {"vertices", buoy.vertices}, {"indices", buoy.indices}};
 
   // The pass planner's inputs (runtime/pass_plan.cpp): passes in execution order, and per
   // scene sampler its render target, the pass and resource that make it and its format

@@ -22,9 +22,13 @@
 #include <nlohmann/json.hpp>
 
 #include "eco_support.h"
+#include "codegen/compile.h"
+#include "codegen/water_surface_eval.h"
+#include "core/graph_io.h"
 #include "core/view_transform.h"
 #include "nodes/registry.h"
 #include "nodes/texture_source.h"
+#include "runtime/floating_buoys.h"
 #include "runtime/image.h"
 #include "runtime/scene.h"
 
@@ -375,14 +379,41 @@ TEST_F(ThreeClient, AUsersOwnObjectIsReflectedAndRefracted) {
 // The gallery (clients/three/example/) as a person opens it: every example graph compiled
 // with its presets, the page loaded, frames drawn, two graphs picked in turn (deferred
 // water among them), a tone mapper picked and the exposure slider moved, and no console
-// error or failed request.
+// error or failed request. The buoys float on the last graph (topdown's Gerstner waves)
+// by its surface query, where the runtime floats them at the page's time: the positions
+// within 1e-9 m (the query agrees with the vertex stage in double), the up axes within the
+// runtime's central differences' 1e-3.
 TEST_F(ThreeClient, TheGalleryLoadsAndSwitchesGraphsWithoutAConsoleError) {
+  TempDir dir("wg_gallery_buoys_");
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && timeout 200 node test/gallery_check.mjs --watergraph " +
                    test::shellQuote(test::watergraphBinary()) +
-                   " --size 480x270 --switch deferred_underwater,topdown --tonemap agx --exposure 0.5");
+                   " --size 480x270 --switch deferred_underwater,topdown --tonemap agx --exposure 0.5 --buoys-json " +
+                   test::shellQuote(dir / "buoys.json"));
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
   EXPECT_NE(t.out.find("switched to deferred_underwater, topdown: no console errors"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("view agx at 0.5 EV, frame rgba16f"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("3 buoys floating on topdown"), std::string::npos) << t.out;
+  if (t.exit != 0) return;
+  const nlohmann::json floating = nlohmann::json::parse(test::readFile(dir / "buoys.json"));
+  const double time = floating["time"].get<double>();
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/topdown.json"), diags);
+  ASSERT_TRUE(graph);
+  auto program = buildProgram(*graph, defaultRegistry(), diags);
+  ASSERT_TRUE(program);
+  std::vector<Value> parameters;
+  for (const auto& p : program->parameters) parameters.push_back(p.defaultValue);
+  const std::vector<rt::FloatingPose> runtime = rt::floatingBuoys(*program, parameters, time);
+  ASSERT_EQ(floating["buoys"].size(), runtime.size());
+  for (size_t i = 0; i < runtime.size(); ++i) {
+    const auto& b = floating["buoys"][i];
+    const glm::dvec2 rest = rt::buoyRestPoints()[i];
+    const WaterSurfacePoint s = waterSurfaceAt(*program, parameters, rest.x, rest.y, time);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_NEAR(b["position"][k].get<double>(), s.position[k], 1e-9) << "buoy " << i;
+      EXPECT_NEAR(b["normal"][k].get<double>(), runtime[i].up[k], 1e-3) << "buoy " << i;
+    }
+  }
 }
 
 // `watergraph scene` writes the same description to a file as to stdout, and refuses a sun

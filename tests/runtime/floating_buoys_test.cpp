@@ -1,6 +1,6 @@
 // The built-in scene's floating buoys (runtime/floating_buoys.h): each rides the point the
-// graph's vertex stage moves its rest point to, tilted to the surface normal (the vertex
-// stage's, or the displaced sheet's from central differences), and the renderer draws them
+// graph's vertex stage moves its rest point to, tilted to the displaced sheet's normal
+// (central differences), and the renderer draws them
 // with the opaque scene; `render --buoys` floats them, and refuses where it cannot.
 #include <cmath>
 #include <string>
@@ -48,21 +48,25 @@ std::vector<Value> defaults(const wg::Program& program) {
   return v;
 }
 
+// Each buoy sits where the vertex stage moves its rest point, and tilts to the normal of the
+// displaced sheet: central differences 5 cm apart, the waves' own normal within their
+// O(h^2) error (k h = 2 pi 0.05 / 4 = 0.079: (k h)^2 / 6 of the slope, under 1e-3).
 TEST(FloatingBuoys, EachRidesThePointTheVertexStageMovesItsRestPointTo) {
-  CompileResult waves = compileWaves(true);
+  CompileResult waves = compileWaves(true), positionOnly = compileWaves(false);
   const std::vector<Value> params = defaults(waves.program);
-  const double times[] = {0.0, 3.5, 1e6};
   std::vector<FloatingPose> first;
-  for (double t : times) {
+  for (double t : {0.0, 3.5, 11.25, 1e6}) {
     const std::vector<FloatingPose> poses = floatingBuoys(waves.program, params, t);
     ASSERT_EQ(poses.size(), buoyRestPoints().size());
+    // The vertex stage's own normal plays no part: a graph without one floats them alike.
+    EXPECT_EQ(poses, floatingBuoys(positionOnly.program, defaults(positionOnly.program), t));
     for (size_t i = 0; i < poses.size(); ++i) {
       const WaterSurfacePoint s = waterSurfaceAt(waves.program, params, buoyRestPoints()[i].x, buoyRestPoints()[i].y, t);
       ASSERT_TRUE(s.hasNormal);
       for (int k = 0; k < 3; ++k) EXPECT_EQ(poses[i].position[k], static_cast<float>(s.position[k])) << t;
       const double len = std::sqrt(s.normal[0] * s.normal[0] + s.normal[1] * s.normal[1] + s.normal[2] * s.normal[2]);
-      for (int k = 0; k < 3; ++k) EXPECT_NEAR(poses[i].up[k], s.normal[k] / len, 1e-6) << t;
-      EXPECT_TRUE(std::isfinite(poses[i].position.y));
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(poses[i].up[k], s.normal[k] / len, 1e-3) << "buoy " << i << " t " << t;
+      EXPECT_GT(std::abs(poses[i].up.x) + std::abs(poses[i].up.z), 0.02f) << "the case must tilt the buoy";
     }
     if (first.empty()) first = poses;
   }
@@ -71,23 +75,6 @@ TEST(FloatingBuoys, EachRidesThePointTheVertexStageMovesItsRestPointTo) {
   for (size_t i = 0; i < later.size(); ++i) {
     EXPECT_GT(std::abs(later[i].position.y - first[i].position.y), 0.01f) << i;
     EXPECT_GT(std::abs(later[i].up.x - first[i].up.x) + std::abs(later[i].up.z - first[i].up.z), 0.01f) << i;
-  }
-}
-
-// Without a vertex normal the up axis is the displaced sheet's normal from central
-// differences 5 cm apart: the waves' own normal within the differences' O(h^2) error
-// (k h = 2 pi 0.05 / 4 = 0.079: (k h)^2 / 6 of the slope, under 1e-3).
-TEST(FloatingBuoys, WithoutAVertexNormalTheyTiltToTheDisplacedSheet) {
-  CompileResult withNormal = compileWaves(true), without = compileWaves(false);
-  for (double t : {0.0, 3.5, 11.25}) {
-    const auto a = floatingBuoys(withNormal.program, defaults(withNormal.program), t);
-    const auto b = floatingBuoys(without.program, defaults(without.program), t);
-    ASSERT_EQ(a.size(), b.size());
-    for (size_t i = 0; i < a.size(); ++i) {
-      EXPECT_EQ(a[i].position, b[i].position);
-      for (int k = 0; k < 3; ++k) EXPECT_NEAR(a[i].up[k], b[i].up[k], 1e-3) << "buoy " << i << " t " << t;
-      EXPECT_GT(std::abs(b[i].up.x) + std::abs(b[i].up.z), 0.02f) << "the case must tilt the buoy";
-    }
   }
 }
 

@@ -1,14 +1,16 @@
 // The gallery page: a graph picker, the graph's presets (each compiled by serve.mjs with
 // --preset), sliders generated from the manifest's parameters, the view of the output
-// transform (tone mapper and exposure, starting at the graph's own view) and an orbit
-// camera over the built-in scene. window.wgGallery reports state for the headless check.
+// transform (tone mapper and exposure, starting at the graph's own view), an orbit camera
+// over the built-in scene, and the scene's buoys floating on the water by the graph's
+// surface query (query-js; the parameters as the sliders set them). window.wgGallery
+// reports state for the headless check.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { loadWaterGraph, TONE_MAPPERS } from '../watergraph-three.js';
-import { loadSceneDescription, createBuiltinScene, presetCamera } from '../watergraph-scene.js';
+import { loadSceneDescription, createBuiltinScene, createFloatingBuoys, presetCamera } from '../watergraph-scene.js';
 
 const $ = (id) => document.getElementById(id);
-const state = { ready: false, graph: null, preset: null, frames: 0, errors: [], view: null, frameFormat: null };
+const state = { ready: false, graph: null, preset: null, frames: 0, errors: [], view: null, frameFormat: null, buoys: [] };
 window.wgGallery = state;
 
 const [description, gallery] = await Promise.all([
@@ -26,8 +28,41 @@ controls.target.fromArray(description.cameras.above.target);
 controls.update();
 
 const scene = new THREE.Scene();
-scene.add(createBuiltinScene(description));
-let water = null, waterMesh = null;
+const builtin = createBuiltinScene(description);
+const buoys = createFloatingBuoys(description, builtin.userData.sunDirection);
+scene.add(builtin, buoys.group);
+let water = null, waterMesh = null, query = null;
+
+// The graph's surface query: its params_default and displace (one graph per module).
+async function loadQuery(name, preset) {
+  const module = await import(`/out/${name}/${preset}/${name}.query.js`);
+  const find = (suffix) => module[Object.keys(module).find((k) => k.startsWith('wg_') && k.endsWith(suffix))];
+  return { defaults: find('_params_default'), displace: find('_displace') };
+}
+
+// Each buoy where the query moves its rest point at time t, tilted to the normal there.
+function floatBuoys(t) {
+  buoys.group.visible = query !== null && $('buoys').checked;
+  if (!buoys.group.visible) {
+    state.buoys = [];
+    $('buoys-state').textContent = query ? '' : 'no query for this graph';
+    return;
+  }
+  const params = query.defaults();
+  for (const u of water.manifest.uniforms ?? []) {
+    if (!('parameter' in u) || !(u.parameter in params)) continue;
+    const v = water.uniforms[u.name].value;
+    params[u.parameter] = typeof v === 'number' ? v : v.toArray();
+  }
+  const position = [0, 0, 0], normal = [0, 1, 0];
+  state.buoysTime = t;
+  state.buoys = buoys.restPoints.map(([x0, z0], i) => {
+    query.displace(params, x0, z0, t, position, normal, null);
+    buoys.place(i, position, normal);
+    return { position: [...position], normal: [...normal] };
+  });
+  $('buoys-state').textContent = `${state.buoys.length} on the query`;
+}
 
 function resize() {
   const w = Math.max(view.clientWidth, 1), h = Math.max(view.clientHeight, 1);
@@ -102,6 +137,8 @@ function buildParameters(w) {
   }
 }
 
+const graphInfo = (name) => gallery.graphs.find((g) => g.name === name);
+
 async function select(name, preset = 'default') {
   $('error').textContent = '';
   const next = await loadWaterGraph(`/out/${name}/${preset}/${name}.manifest.json`, { description });
@@ -110,9 +147,10 @@ async function select(name, preset = 'default') {
     water.dispose();
   }
   water = next;
+  query = graphInfo(name).query ? await loadQuery(name, preset) : null;
   waterMesh = water.createMesh();
   scene.add(waterMesh);
-  const info = gallery.graphs.find((g) => g.name === name);
+  const info = graphInfo(name);
   $('about').textContent = info.description;
   $('preset').replaceChildren(...['default', ...info.presets].map((p) => new Option(p, p, false, p === preset)));
   $('graph').value = name;
@@ -157,6 +195,7 @@ renderer.setAnimationLoop((ms) => {
   if (!water) return;
   controls.update();
   water.update(ms / 1000, camera);
+  floatBuoys(ms / 1000);
   water.render(renderer, scene, camera, null, state.view);
   if (state.frameFormat !== water.frameFormat) {
     state.frameFormat = water.frameFormat;

@@ -25,7 +25,8 @@ const repoDir = path.resolve(clientDir, '..', '..');
 
 
 // Compiles the gallery's files into `outDir`: scene.json, gallery.json (graphs with their
-// descriptions and presets) and <graph>/<preset or "default">/ with the compiled graph.
+// descriptions, presets and whether they have a surface query) and <graph>/<preset or
+// "default">/ with the compiled graph (and its <graph>.query.js).
 export function prepareGallery({ watergraph, graphsDir = path.join(repoDir, 'graphs'), outDir }) {
   const run = (args) => execFileSync(watergraph, args, { stdio: ['ignore', 'ignore', 'pipe'] });
   run(['scene', '-o', path.join(outDir, 'scene.json')]);
@@ -34,13 +35,22 @@ export function prepareGallery({ watergraph, graphsDir = path.join(repoDir, 'gra
     const name = file.replace(/\.json$/, '');
     const graph = JSON.parse(readFileSync(path.join(graphsDir, file), 'utf8'));
     const presets = Object.keys(graph.presets ?? {});
+    // With the surface query the buoys float by (docs/queries.md); a graph whose
+    // displacement has no query form floats none.
+    let query = true;
     for (const preset of ['default', ...presets]) {
       const dir = path.join(outDir, name, preset);
       mkdirSync(dir, { recursive: true });
-      run(['compile', path.join(graphsDir, file), '-o', dir, '--target', 'es300', '--textures', '--quiet',
-        ...(preset === 'default' ? [] : ['--preset', preset])]);
+      const flags = preset === 'default' ? [] : ['--preset', preset];
+      run(['compile', path.join(graphsDir, file), '-o', dir, '--target', 'es300', '--textures', '--quiet', ...flags]);
+      if (!query) continue;
+      try {
+        run(['compile', path.join(graphsDir, file), '-o', dir, '--target', 'query-js', '--quiet', ...flags]);
+      } catch {
+        query = false;
+      }
     }
-    graphs.push({ name, description: graph.description ?? '', presets });
+    graphs.push({ name, description: graph.description ?? '', presets, query });
   }
   writeFileSync(path.join(outDir, 'gallery.json'), JSON.stringify({ graphs }, null, 1));
   return graphs;

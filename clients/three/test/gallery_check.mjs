@@ -2,13 +2,16 @@
 // `watergraph` (example/serve.mjs), opens the page, waits for frames, switches to each
 // graph named with --switch through the graph picker, then picks the tone mapper --tonemap
 // and sets the exposure slider to --exposure (EV), and fails on any console error or
-// failed request. Used by tests/ecosystem/three_client_test.cpp.
+// failed request. --buoys-json FILE writes the last graph's floating buoys (the page's time
+// and each buoy's position and normal from the graph's surface query). Used by
+// tests/ecosystem/three_client_test.cpp.
 //
 //   node test/gallery_check.mjs --watergraph build/cli/watergraph [--switch deferred_underwater,pool]
-//     [--tonemap agx] [--exposure 0.5] [--size 960x540] [--screenshot gallery.png] [--chromium /usr/bin/chromium]
+//     [--tonemap agx] [--exposure 0.5] [--size 960x540] [--screenshot gallery.png] [--buoys-json FILE]
+//     [--chromium /usr/bin/chromium]
 //
 // Exit status: 0 fine; 1 the page failed (message on stderr); 2 usage or environment.
-import { access, mkdtemp, rm } from 'node:fs/promises';
+import { access, mkdtemp, rm, writeFile } from 'node:fs/promises';
 import { constants } from 'node:fs';
 import { tmpdir } from 'node:os';
 import path from 'node:path';
@@ -23,7 +26,7 @@ function fail(code, message) {
 let args;
 try {
   ({ values: args } = parseArgs({
-    options: Object.fromEntries(['watergraph', 'switch', 'size', 'screenshot', 'chromium', 'tonemap', 'exposure']
+    options: Object.fromEntries(['watergraph', 'switch', 'size', 'screenshot', 'chromium', 'tonemap', 'exposure', 'buoys-json']
       .map((k) => [k, { type: 'string' }])),
   }));
 } catch (e) {
@@ -87,6 +90,9 @@ try {
     const frames = await page.evaluate(() => window.wgGallery.frames);
     await page.waitForFunction((n) => window.wgGallery.errors.length || window.wgGallery.frames >= n + 3, frames, { timeout: 60000 });
     const view = await page.evaluate(() => ({ ...window.wgGallery.view, frameFormat: window.wgGallery.frameFormat }));
+    const floating = await page.evaluate(() => ({ graph: window.wgGallery.graph, time: window.wgGallery.buoysTime,
+      buoys: window.wgGallery.buoys }));
+    if (args['buoys-json']) await writeFile(args['buoys-json'], JSON.stringify(floating));
     const errors = await page.evaluate(() => window.wgGallery.errors);
     problems.push(...errors);
     if (problems.length) {
@@ -96,7 +102,8 @@ try {
       if (args.screenshot) await page.screenshot({ path: args.screenshot });
       process.stdout.write(`gallery_check: ${graphs.length} graphs, started with ${graphs[0].name}, ` +
         `switched to ${switched.join(', ') || 'none'}: no console errors\n` +
-        `gallery_check: view ${view.toneMapping} at ${view.exposure} EV, frame ${view.frameFormat}\n`);
+        `gallery_check: view ${view.toneMapping} at ${view.exposure} EV, frame ${view.frameFormat}\n` +
+        `gallery_check: ${floating.buoys.length} buoys floating on ${floating.graph}\n`);
     }
   } catch (e) {
     process.stderr.write(`gallery_check: ${e.message}\n`);
