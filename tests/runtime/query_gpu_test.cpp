@@ -25,6 +25,8 @@
 #include "query_samples.h"
 #include "query_vk_capture.h"
 #include "core/ocean_fft_reference.h"
+#include "core/ocean_settings.h"
+#include "ocean_transform_bound.h"
 #include "query_ocean_samples.h"
 #include "runtime/egl_context.h"
 #include "runtime/ocean_simulation.h"
