@@ -322,7 +322,7 @@ static inline void wgq_ocean_read(const double* maps, int n, double texelsPerMet
 )";
 }
 
-std::string num(double x) { return numberLiteral(x, HeaderLanguage::C); }
+std::string oceanCNumber(double x) { return numberLiteral(x, HeaderLanguage::C); }
 
 }  // namespace
 
@@ -364,14 +364,14 @@ std::string queryOceanC(const std::string& g, const ocean::OceanSettings& s) {
   h += " * bit), then the maps at t = 0 with no camera. */\n";
   h += "static inline void " + g + "ocean_init(" + g + "ocean* o) {\n";
   h += "  static const wgq_sea sea = {" + std::to_string(static_cast<int>(p.model)) + ", " +
-       std::to_string(static_cast<int>(p.spreading)) + ", " + num(p.windSpeed) + ", " + num(p.windDirection) + ", " +
-       num(p.fetch) + ", " + num(p.depth) + ", " + num(p.gamma) + ", " + num(p.phillipsAmplitude) + ", " +
-       num(p.phillipsSmallWave) + ",\n                                " + num(p.swell.height) + ", " +
-       num(p.swell.period) + ", " + num(p.swell.direction) + ", " + num(p.swell.spread) + "};\n";
-  h += "  static const double tile[" + C + "] = {" + list([&](size_t c) { return num(s.cascades.tileLengths[c]); }) + "};\n";
+       std::to_string(static_cast<int>(p.spreading)) + ", " + oceanCNumber(p.windSpeed) + ", " + oceanCNumber(p.windDirection) + ", " +
+       oceanCNumber(p.fetch) + ", " + oceanCNumber(p.depth) + ", " + oceanCNumber(p.gamma) + ", " + oceanCNumber(p.phillipsAmplitude) + ", " +
+       oceanCNumber(p.phillipsSmallWave) + ",\n                                " + oceanCNumber(p.swell.height) + ", " +
+       oceanCNumber(p.swell.period) + ", " + oceanCNumber(p.swell.direction) + ", " + oceanCNumber(p.swell.spread) + "};\n";
+  h += "  static const double tile[" + C + "] = {" + list([&](size_t c) { return oceanCNumber(s.cascades.tileLengths[c]); }) + "};\n";
   h += "  /* the wavenumbers |k| in [low, high) each cascade owns */\n";
-  h += "  static const double low[" + C + "] = {" + list([&](size_t c) { return num(bands[c].low); }) + "};\n";
-  h += "  static const double high[" + C + "] = {" + list([&](size_t c) { return num(bands[c].high); }) + "};\n";
+  h += "  static const double low[" + C + "] = {" + list([&](size_t c) { return oceanCNumber(bands[c].low); }) + "};\n";
+  h += "  static const double high[" + C + "] = {" + list([&](size_t c) { return oceanCNumber(bands[c].high); }) + "};\n";
   h += "  const uint32_t seed = " + std::to_string(s.cascades.seed) + "u;\n";
   h += "  const int n = " + N + ";\n  int c, ix, iz, j;\n";
   h += "  for (j = 0; j < n / 2; ++j) {\n";
@@ -396,12 +396,12 @@ std::string queryOceanC(const std::string& g, const ocean::OceanSettings& s) {
   h += "/* The maps at time t seen from `camera` (NULL: no fade, every cascade at full weight). The\n";
   h += " * only function that writes the state. */\n";
   h += "static inline void " + g + "ocean_update(" + g + "ocean* o, double t, const double camera[3]) {\n";
-  h += "  static const double tile[" + C + "] = {" + list([&](size_t c) { return num(s.cascades.tileLengths[c]); }) + "};\n";
+  h += "  static const double tile[" + C + "] = {" + list([&](size_t c) { return oceanCNumber(s.cascades.tileLengths[c]); }) + "};\n";
   h += "  const uint32_t tau = wgq_loop_fraction(t);\n  int c;\n";
   h += "  o->time = t;\n  o->fade = camera != NULL;\n";
   h += "  for (c = 0; c < 3; ++c) o->camera[c] = camera ? camera[c] : 0.0;\n";
   h += "  for (c = 0; c < " + C + "; ++c)\n";
-  h += "    wgq_ocean_cascade(o->h0[c], o->frequency[c], " + N + ", tile[c], " + num(s.cascades.choppiness) +
+  h += "    wgq_ocean_cascade(o->h0[c], o->frequency[c], " + N + ", tile[c], " + oceanCNumber(s.cascades.choppiness) +
        ", tau, o->twiddle, o->evolved, o->work, o->line, o->maps[c]);\n}\n\n";
 
   h += "/* The cascades' map channels at the world point (x, z), cascade c weighted by w[c], summed. */\n";
@@ -409,7 +409,7 @@ std::string queryOceanC(const std::string& g, const ocean::OceanSettings& s) {
        "], double out[11]) {\n";
   h += "  /* n / L per cascade, rounded to float as the shader's literal */\n";
   h += "  static const double texelsPerMetre[" + C + "] = {" +
-       list([&](size_t c) { return num(static_cast<float>(n / s.cascades.tileLengths[c])); }) + "};\n";
+       list([&](size_t c) { return oceanCNumber(static_cast<float>(n / s.cascades.tileLengths[c])); }) + "};\n";
   h += "  int c;\n  for (c = 0; c < 11; ++c) out[c] = 0.0;\n";
   h += "  for (c = 0; c < " + C + "; ++c) wgq_ocean_read(o->maps[c], " + N + ", texelsPerMetre[c], w[c], x, z, out);\n}\n\n";
   return h;

@@ -267,7 +267,7 @@ const wgq_ocean_read = (maps, n, texelsPerMetre, weight, x, z, out) => {
 )";
 }
 
-std::string num(double x) { return numberLiteral(x, HeaderLanguage::JavaScript); }
+std::string oceanJsNumber(double x) { return numberLiteral(x, HeaderLanguage::JavaScript); }
 
 }  // namespace
 
@@ -283,20 +283,20 @@ std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
   const auto bands = ocean::cascadeBands(s.cascades);
   const ocean::SpectrumSettings& p = s.spectrum;
   std::string m = oceanJsHelpers();
-  m += "\nconst " + g + "ocean_tile = " + list([&](size_t c) { return num(s.cascades.tileLengths[c]); }) + ";\n\n";
+  m += "\nconst " + g + "ocean_tile = " + list([&](size_t c) { return oceanJsNumber(s.cascades.tileLengths[c]); }) + ";\n\n";
   m += "// A new ocean state (or `o` filled): each cascade's initial amplitudes from the ocean_spectrum's\n";
   m += "// options, then the maps at t = 0 with no camera. Its arrays: h0, frequency, maps per cascade\n";
   m += "// (maps: 11 numbers a texel, as the C header's).\n";
   m += "export function " + g + "ocean_init(o = Object.create(null)) {\n";
   m += "  const sea = {model: " + std::to_string(static_cast<int>(p.model)) +
-       ", spreading: " + std::to_string(static_cast<int>(p.spreading)) + ", wind_speed: " + num(p.windSpeed) +
-       ", wind_direction: " + num(p.windDirection) + ", fetch: " + num(p.fetch) + ", depth: " + num(p.depth) +
-       ",\n    gamma: " + num(p.gamma) + ", phillips_amplitude: " + num(p.phillipsAmplitude) +
-       ", phillips_small_wave: " + num(p.phillipsSmallWave) + ", swell_height: " + num(p.swell.height) +
-       ", swell_period: " + num(p.swell.period) + ",\n    swell_direction: " + num(p.swell.direction) +
-       ", swell_spread: " + num(p.swell.spread) + "};\n";
-  m += "  const low = " + list([&](size_t c) { return num(bands[c].low); }) + ";\n";
-  m += "  const high = " + list([&](size_t c) { return num(bands[c].high); }) + ";\n";
+       ", spreading: " + std::to_string(static_cast<int>(p.spreading)) + ", wind_speed: " + oceanJsNumber(p.windSpeed) +
+       ", wind_direction: " + oceanJsNumber(p.windDirection) + ", fetch: " + oceanJsNumber(p.fetch) + ", depth: " + oceanJsNumber(p.depth) +
+       ",\n    gamma: " + oceanJsNumber(p.gamma) + ", phillips_amplitude: " + oceanJsNumber(p.phillipsAmplitude) +
+       ", phillips_small_wave: " + oceanJsNumber(p.phillipsSmallWave) + ", swell_height: " + oceanJsNumber(p.swell.height) +
+       ", swell_period: " + oceanJsNumber(p.swell.period) + ",\n    swell_direction: " + oceanJsNumber(p.swell.direction) +
+       ", swell_spread: " + oceanJsNumber(p.swell.spread) + "};\n";
+  m += "  const low = " + list([&](size_t c) { return oceanJsNumber(bands[c].low); }) + ";\n";
+  m += "  const high = " + list([&](size_t c) { return oceanJsNumber(bands[c].high); }) + ";\n";
   m += "  const seed = " + std::to_string(s.cascades.seed) + ", n = " + N + ";\n";
   m += "  o.time = 0.0;\n  o.camera = [0.0, 0.0, 0.0];\n  o.fade = 0;\n";
   m += "  o.h0 = [];\n  o.frequency = [];\n  o.maps = [];\n";
@@ -325,13 +325,13 @@ std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
   m += "  o.time = t;\n  o.fade = camera ? 1 : 0;\n";
   m += "  for (let c = 0; c < 3; ++c) o.camera[c] = camera ? camera[c] : 0.0;\n";
   m += "  for (let c = 0; c < " + C + "; ++c)\n";
-  m += "    wgq_ocean_cascade(o.h0[c], o.frequency[c], " + N + ", " + g + "ocean_tile[c], " + num(s.cascades.choppiness) +
+  m += "    wgq_ocean_cascade(o.h0[c], o.frequency[c], " + N + ", " + g + "ocean_tile[c], " + oceanJsNumber(s.cascades.choppiness) +
        ", tau, o.twiddle, o.evolved, o.work, o.line, o.maps[c]);\n}\n\n";
 
   m += "// The cascades' map channels at the world point (x, z), cascade c weighted by w[c], summed.\n";
   m += "export function " + g + "ocean_sample(o, x, z, w, out) {\n";
   m += "  const texelsPerMetre = " +
-       list([&](size_t c) { return num(static_cast<float>(n / s.cascades.tileLengths[c])); }) + ";\n";
+       list([&](size_t c) { return oceanJsNumber(static_cast<float>(n / s.cascades.tileLengths[c])); }) + ";\n";
   m += "  for (let c = 0; c < 11; ++c) out[c] = 0.0;\n";
   m += "  for (let c = 0; c < " + C + "; ++c) wgq_ocean_read(o.maps[c], " + N + ", texelsPerMetre[c], w[c], x, z, out);\n}\n\n";
   return m;
