@@ -99,7 +99,9 @@ const std::vector<std::string_view>& cHeaderSuffixes() {
       // codegen/derived_c_header.cpp
       "parameters", "parameters_default", "draw", "uniforms", "compute_derived",
       // codegen/query_c_header.cpp
-      "params", "params_default", "displace", "height", "displace_batch", "height_batch", "surface_at"};
+      "params", "params_default", "displace", "height", "displace_batch", "height_batch", "surface_at",
+      // codegen/query_ocean_c.cpp
+      "ocean", "ocean_init", "ocean_update", "ocean_sample"};
   return s;
 }
 

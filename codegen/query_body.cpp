@@ -7,10 +7,12 @@
 
 namespace wg {
 
-std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage language, Diagnostics& diags) {
+std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage language, const std::string& prefix,
+                                   Diagnostics& diags) {
   auto query = extractQuery(program, diags);
   if (!query) return std::nullopt;
   QueryBody body;
+  body.ocean = query->ocean;
   const bool c = language == HeaderLanguage::C;
   // The struct holds the parameters a host may change; a static one was folded into the
   // program as a constant, so it is no member.
@@ -22,6 +24,7 @@ std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage langua
     body.members.push_back(cIdentifier(program.parameters[i].name));
   }
   QueryWriter w(language);
+  w.ocean = {prefix, query->ocean};
   std::vector<std::optional<QueryValue>> parameterValues(program.parameters.size());
   auto parameter = [&](int index) -> const QueryValue& {
     auto& v = parameterValues.at(static_cast<size_t>(index));
@@ -47,6 +50,9 @@ std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage langua
       case Builtin::WorldPosition: return {{"x0", {"1.0", "0.0", "0.0"}}, {"0.0"}, {"z0", {"0.0", "1.0", "0.0"}}};
       case Builtin::Time: return {{"t", {"0.0", "0.0", "1.0"}}};
       case Builtin::Normal: return {{"0.0"}, {"1.0"}, {"0.0"}};
+      case Builtin::CameraPosition:  // only an ocean reader's fade reads it (extractQuery)
+        if (c) return {{"o->camera[0]"}, {"o->camera[1]"}, {"o->camera[2]"}};
+        return {{"o.camera[0]"}, {"o.camera[1]"}, {"o.camera[2]"}};
       default: break;
     }
     throw std::logic_error("queryBody: builtin '" + std::string(builtinName(b)) + "' passed extractQuery");

@@ -21,11 +21,15 @@ struct QueryBody {
   std::vector<ProgramParameter> parameters;  // the graph's non-static parameters, in order
   std::vector<std::string> members;          // their member names (cIdentifier)
   bool readsParameters = false;
+  // The spectral ocean the body reads through the state `o` (codegen/query_ocean.h), or nullptr.
+  const ocean::OceanSettings* ocean = nullptr;
 };
 
 // The body for `language`: parameters are read from `p` (C: "p->m[1]", JavaScript:
-// "p.m[1]") and clamped into their ranges; the point is x0, z0, the time t. nullopt with
-// WG044 errors naming each node the query cannot evaluate.
-std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage language, Diagnostics& diags);
+// "p.m[1]") and clamped into their ranges; the point is x0, z0, the time t; a spectral
+// ocean's maps and camera are read from the state `o`, whose functions start with `prefix`.
+// nullopt with WG044 errors naming each node the query cannot evaluate.
+std::optional<QueryBody> queryBody(const Program& program, HeaderLanguage language, const std::string& prefix,
+                                   Diagnostics& diags);
 
 }  // namespace wg

@@ -5,6 +5,7 @@
 #include "codegen/derived_vocabulary.h"
 #include "codegen/query_body.h"
 #include "codegen/query_header.h"
+#include "codegen/query_ocean.h"
 
 namespace wg {
 
@@ -58,9 +59,16 @@ static inline void wgq_normal(const double px[3], const double pz[3], double n[3
 }  // namespace
 
 std::optional<std::string> queryCHeader(const std::string& graphName, const Program& program, Diagnostics& diags) {
-  auto body = queryBody(program, HeaderLanguage::C, diags);
-  if (!body) return std::nullopt;
   const std::string g = cGraphPrefix(graphName);
+  auto body = queryBody(program, HeaderLanguage::C, g, diags);
+  if (!body) return std::nullopt;
+  // A spectral ocean's functions take its state after the parameters, and its time is the
+  // state's (the time its maps were brought to): they have no t of their own.
+  const bool sea = body->ocean != nullptr;
+  const std::string state = sea ? "const " + g + "ocean* o, " : "";
+  const std::string stateArg = sea ? "o, " : "";
+  const std::string time = sea ? "" : ", double t";
+  const std::string timeArg = sea ? "" : ", t";
   const std::string params = g + "params";
   const std::string guard = cIncludeGuard(graphName, "QUERY");
   std::string h;
@@ -79,9 +87,16 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += " * (then the closest point found answers). Where the surface folds over (several x0 reach x)\n";
   h += " * it answers the first sheet the steps reach. A non-finite x, z, x0, z0 or t gives NaN in\n";
   h += " * every output. */\n";
-  h += "#ifndef " + guard + "\n#define " + guard + "\n\n#include <math.h>\n#include <stddef.h>\n\n";
+  if (sea) {
+    h += "/* The graph's water is a spectral ocean: its maps live in a wg_..._ocean state the host\n";
+    h += " * owns (init once, update per time, then query from any number of threads); displace and\n";
+    h += " * height read the state at its time. See docs/queries.md, \"The spectral ocean\". */\n";
+  }
+  h += "#ifndef " + guard + "\n#define " + guard + "\n\n#include <math.h>\n#include <stddef.h>\n";
+  h += sea ? "#include <stdint.h>\n\n" : "\n";
   h += "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n";
   h += std::string(derivedCHelpers()) + queryCHelpers() + "\n";
+  if (sea) h += queryOceanC(g, *body->ocean);
 
   h += "/* The graph's parameters a host may change. Values outside a parameter's range are clamped\n";
   h += " * into it (NaN to its lower end), as the runtime clamps the uniforms it uploads. */\n";
@@ -109,8 +124,8 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += "}\n\n";
 
   h += "/* The displaced point P of the water point (x0, 0, z0) at time t, and its derivatives. */\n";
-  h += "static inline void " + g + "surface_at(const " + params +
-       "* p, double x0, double z0, double t, double P[3], double dPdx0[3], double dPdz0[3], double dPdt[3]) {\n";
+  h += "static inline void " + g + "surface_at(const " + params + "* p, " + state +
+       "double x0, double z0, double t, double P[3], double dPdx0[3], double dPdz0[3], double dPdt[3]) {\n";
   h += body->statements;
   static const char* names[] = {"dPdx0", "dPdz0", "dPdt"};
   for (size_t i = 0; i < 3; ++i) {
@@ -118,22 +133,24 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
     for (size_t j = 0; j < 3; ++j)
       h += "  " + std::string(names[j]) + "[" + std::to_string(i) + "] = " + body->position[i].d[j] + ";\n";
   }
-  h += "  (void)p; (void)x0; (void)z0; (void)t;\n}\n\n";
+  h += std::string("  (void)p; (void)x0; (void)z0; (void)t;") + (sea ? " (void)o;" : "") + "\n}\n\n";
 
   h += "/* Where the water point (x0, 0, z0) is at time t (position), the unit surface normal there\n";
   h += " * (y >= 0) and its velocity in m/s. Any of the three may be NULL. */\n";
-  h += "static inline void " + g + "displace(const " + params +
-       "* p, double x0, double z0, double t, double position[3], double normal[3], double velocity[3]) {\n";
+  h += "static inline void " + g + "displace(const " + params + "* p, " + state + "double x0, double z0" + time +
+       ", double position[3], double normal[3], double velocity[3]) {\n";
+  if (sea) h += "  const double t = o->time;\n";
   h += "  double P[3], dx[3], dz[3], dt[3];\n  int i;\n";
   h += "  if (wgq_finite(x0) && wgq_finite(z0) && wgq_finite(t)) {\n";
-  h += "    " + g + "surface_at(p, x0, z0, t, P, dx, dz, dt);\n";
+  h += "    " + g + "surface_at(p, " + stateArg + "x0, z0, t, P, dx, dz, dt);\n";
   h += "  } else {\n    for (i = 0; i < 3; ++i) P[i] = dx[i] = dz[i] = dt[i] = (double)NAN;\n  }\n";
   h += "  if (position) for (i = 0; i < 3; ++i) position[i] = P[i];\n";
   h += "  if (velocity) for (i = 0; i < 3; ++i) velocity[i] = dt[i];\n";
   h += "  if (normal) wgq_normal(dx, dz, normal);\n}\n\n";
 
   h += "/* The height of the surface above the world point (x, z) at time t (see the top). */\n";
-  h += "static inline double " + g + "height(const " + params + "* p, double x, double z, double t) {\n";
+  h += "static inline double " + g + "height(const " + params + "* p, " + state + "double x, double z" + time + ") {\n";
+  if (sea) h += "  const double t = o->time;\n";
   h += "  double P[3], dx[3], dz[3], dt[3];\n";
   h += "  double x0 = x, z0 = z, ax0 = x, az0 = z, ar = HUGE_VAL, bestY = (double)NAN, best = HUGE_VAL;\n";
   h += "  double sx = 0.0, sz = 0.0, reach = 0.0;\n";
@@ -142,13 +159,13 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += "  int i, halvings = 0, restarts = 0;\n";
   h += "  if (!(wgq_finite(x) && wgq_finite(z) && wgq_finite(t))) return (double)NAN;\n";
   h += "  for (i = 0; i < " + std::to_string(kQueryMaxSteps) + "; ++i) {\n";
-  h += "    double rx, rz, r, det, ox, oz, o;\n";
-  h += "    " + g + "surface_at(p, x0, z0, t, P, dx, dz, dt);\n";
+  h += "    double rx, rz, r, det, ox, oz, moved;\n";
+  h += "    " + g + "surface_at(p, " + stateArg + "x0, z0, t, P, dx, dz, dt);\n";
   h += "    rx = P[0] - x;\n    rz = P[2] - z;\n";
   h += "    r = fabs(rx) > fabs(rz) ? fabs(rx) : fabs(rz);\n";
   h += "    if (r != r) return (double)NAN; /* a NaN parameter */\n";
-  h += "    ox = P[0] - x0;\n    oz = P[2] - z0;\n    o = sqrt(ox * ox + oz * oz);\n";
-  h += "    if (reach < o) reach = o;\n";
+  h += "    ox = P[0] - x0;\n    oz = P[2] - z0;\n    moved = sqrt(ox * ox + oz * oz);\n";
+  h += "    if (reach < moved) reach = moved;\n";
   h += "    if (r < best) {\n      best = r;\n      bestY = P[1];\n    }\n";
   h += "    if (r <= tolerance) break;\n";
   h += "    if (!(r < ar)) { /* no closer than the point the step left: halve the step */\n";
@@ -172,15 +189,16 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
 
   h += "/* displace() for count points at one time: x0[i], z0[i] -> position[3 i .. 3 i + 2], and\n";
   h += " * normal and velocity likewise (any of the three may be NULL). */\n";
-  h += "static inline void " + g + "displace_batch(const " + params +
-       "* p, size_t count, const double* x0, const double* z0, double t, double* position, double* normal, "
+  h += "static inline void " + g + "displace_batch(const " + params + "* p, " + state +
+       "size_t count, const double* x0, const double* z0" + time + ", double* position, double* normal, "
        "double* velocity) {\n";
   h += "  size_t i;\n  for (i = 0; i < count; ++i)\n";
-  h += "    " + g + "displace(p, x0[i], z0[i], t, position ? position + 3 * i : NULL, normal ? normal + 3 * i : NULL, velocity ? velocity + 3 * i : NULL);\n}\n\n";
+  h += "    " + g + "displace(p, " + stateArg + "x0[i], z0[i]" + timeArg + ", position ? position + 3 * i : NULL, normal ? normal + 3 * i : NULL, velocity ? velocity + 3 * i : NULL);\n}\n\n";
   h += "/* height() for count points at one time: height[i] at (x[i], z[i]). */\n";
-  h += "static inline void " + g + "height_batch(const " + params +
-       "* p, size_t count, const double* x, const double* z, double t, double* height) {\n";
-  h += "  size_t i;\n  for (i = 0; i < count; ++i) height[i] = " + g + "height(p, x[i], z[i], t);\n}\n\n";
+  h += "static inline void " + g + "height_batch(const " + params + "* p, " + state +
+       "size_t count, const double* x, const double* z" + time + ", double* height) {\n";
+  h += "  size_t i;\n  for (i = 0; i < count; ++i) height[i] = " + g + "height(p, " + stateArg + "x[i], z[i]" + timeArg +
+       ");\n}\n\n";
   h += "#ifdef __cplusplus\n}\n#endif\n\n#endif\n";
   return h;
 }

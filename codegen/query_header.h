@@ -7,7 +7,9 @@
 //   wg_<graph>_height(p, x, z, t)
 //   wg_<graph>_displace_batch / wg_<graph>_height_batch (many points at one time)
 // <graph> is cIdentifier(graph name) (codegen/c_names.h). No allocation, no state: safe
-// to call from any number of threads.
+// to call from any number of threads. A spectral ocean's maps are the exception: they live
+// in a state the host owns (codegen/query_ocean.h), which displace and height take after the
+// parameters, in place of t, and only read.
 #include <optional>
 #include <string>
 

@@ -86,9 +86,9 @@ const std::map<std::string_view, std::string_view>& derivativeFormulas() {
 
 // The other types with a query form (beside the component-wise ones).
 const std::vector<std::string_view>& structuralTypes() {
-  static const std::vector<std::string_view> t = {"combine", "compare", "cross",    "dot",   "gerstner_waves",
-                                                  "length",  "normal",  "normalize", "select", "split",
-                                                  "swizzle", "time",    "vertex_output", "world_position"};
+  static const std::vector<std::string_view> t = {
+      "combine", "compare",   "cross",  "dot",   "gerstner_waves", "length",        "normal",        "normalize",
+      "select",  "split",     "swizzle", "time", "vertex_output",  "world_position", "ocean_spectrum", "ocean_displacement"};
   return t;
 }
 
@@ -222,15 +222,69 @@ std::vector<QueryValue> gerstnerOp(const Op& op, const std::vector<QueryValue>& 
   return {position, {}, {}, {}};
 }
 
+// ocean_displacement: the point p plus the cascades' maps at p.xz, each cascade weighted by the
+// readers' fade at p's distance from the state's camera (wg_ocean_fade, 1 when the state has
+// no camera), as the vertex shader sums them. Its derivatives along x0, z0 are the maps'
+// own (the slope channels, which the shader's normal reads too, by the chain rule through
+// p.xz), along t the velocity channels; the fade weights' own slope is left out, as the
+// shader's normal leaves it out.
+std::vector<QueryValue> oceanDisplacementOp(const Op& op, const std::vector<QueryValue>& in, QueryWriter& w,
+                                            OpWriter& o, const std::string& name) {
+  const ocean::OceanSettings* sea = w.ocean.settings;
+  if (!sea) o.refuse("its ocean is not the query's ocean_spectrum");
+  const bool c = w.language() == HeaderLanguage::C;
+  const QueryValue &p = in.at(1), &camera = in.at(2);
+  const double fade = op.parsedOptions->as<double>();
+  std::string weights;
+  if (fade > 0) {
+    std::string d2 = "0.0";
+    for (int i = 0; i < 3; ++i) {
+      std::string diff = "(" + comp(p, i).value + " - " + comp(camera, i).value + ")";
+      d2 = i == 0 ? diff + " * " + diff : d2 + " + " + diff + " * " + diff;
+    }
+    std::string distance = o.temp("dist", "sqrt(" + d2 + ")");
+    for (size_t k = 0; k < sea->cascades.tileLengths.size(); ++k) {
+      const double start = static_cast<float>(fade * sea->cascades.tileLengths[k]);  // the shader's literal
+      weights += std::string(k ? ", " : "") + "(" + (c ? "o->fade" : "o.fade") + " ? 1.0 - wgd_smoothstep(" + lit(start) +
+                 ", " + lit(2.0 * start) + ", " + distance + ") : 1.0)";
+    }
+  } else {
+    for (size_t k = 0; k < sea->cascades.tileLengths.size(); ++k) weights += std::string(k ? ", " : "") + "1.0";
+  }
+  const std::string wName = "oc" + name + "_w", sName = "oc" + name + "_s";
+  const std::string call = "  " + w.ocean.prefix + "ocean_sample(o, " + comp(p, 0).value + ", " + comp(p, 2).value + ", " +
+                           wName + ", " + sName + ");\n";
+  if (c)
+    w.statement(sName, "  double " + wName + "[" + std::to_string(sea->cascades.tileLengths.size()) + "] = {" + weights +
+                           "};\n  double " + sName + "[11];\n" + call);
+  else
+    w.statement(sName, "  const " + wName + " = [" + weights + "], " + sName + " = new Float64Array(11);\n" + call);
+  auto ch = [&](int k) { return sName + "[" + std::to_string(k) + "]"; };
+  // Per component of the displacement (lDx, h, lDz): its channel and its derivatives' along x, z, t.
+  const int value[3] = {0, 1, 2}, alongX[3] = {6, 4, 3}, alongZ[3] = {3, 5, 7}, alongT[3] = {8, 9, 10};
+  QueryValue position;
+  for (int i = 0; i < 3; ++i) {
+    std::array<std::string, 3> d;
+    for (size_t j = 0; j < 3; ++j) {
+      d[j] = addS(comp(p, i).d[j], addS(mulS(ch(alongX[i]), comp(p, 0).d[j]), mulS(ch(alongZ[i]), comp(p, 2).d[j])));
+      if (j == 2) d[j] = addS(d[j], ch(alongT[i]));
+    }
+    position.push_back(o.bindScalar(0, i, comp(p, i).value + " + " + ch(value[i]), d));
+  }
+  return {position, {}, p};
+}
+
 }  // namespace
 
 std::string QueryWriter::bind(const std::string& name, const std::string& expr) {
   bool simple = !expr.empty();
   for (char c : expr) simple = simple && (std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '.');
   if (simple) return expr;
-  locals_.emplace_back(name, expr);
+  locals_.push_back({name, expr, false});
   return name;
 }
+
+void QueryWriter::statement(const std::string& name, const std::string& text) { locals_.push_back({name, text, true}); }
 
 namespace {
 
@@ -255,15 +309,17 @@ std::string QueryWriter::text(const std::vector<std::string>& roots) const {
   for (const std::string& r : roots) addNames(r, read);
   std::vector<bool> keep(locals_.size(), false);
   for (size_t k = locals_.size(); k-- > 0;)  // a local reads only earlier ones
-    if (read.count(locals_[k].first)) {
+    if (read.count(locals_[k].name)) {
       keep[k] = true;
-      addNames(locals_[k].second, read);
+      addNames(locals_[k].expr, read);
     }
   std::string text;
   for (size_t k = 0; k < locals_.size(); ++k)
-    if (keep[k])
-      text += std::string(language_ == HeaderLanguage::C ? "  const double " : "  const ") + locals_[k].first + " = " +
-              locals_[k].second + ";\n";
+    if (keep[k] && locals_[k].verbatim)
+      text += locals_[k].expr;
+    else if (keep[k])
+      text += std::string(language_ == HeaderLanguage::C ? "  const double " : "  const ") + locals_[k].name + " = " +
+              locals_[k].expr + ";\n";
   return text;
 }
 
@@ -279,6 +335,8 @@ std::vector<QueryValue> queryOp(const Op& op, const std::vector<QueryValue>& in,
   const std::string& type = op.spec->type;
   if (const char* f = componentWiseFormula(type)) return componentWiseOp(op, f, in, o);
   if (type == "gerstner_waves") return gerstnerOp(op, in, o);
+  if (type == "ocean_spectrum") return {QueryValue{{"0.0"}}};  // a marker: the state is `o`
+  if (type == "ocean_displacement") return oceanDisplacementOp(op, in, w, o, name);
   if (type == "world_position") {
     QueryValue v{{"x0", {"1.0", kZero, kZero}}, {"0.0", {kZero, kZero, kZero}}, {"z0", {kZero, "1.0", kZero}}};
     return {v};

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "codegen/c_parameters.h"
+#include "core/ocean_settings.h"
 #include "core/program.h"
 
 namespace wg {
@@ -36,10 +37,25 @@ class QueryWriter {
   // local nothing reads (a component a swizzle drops) is left out, so -Wall stays quiet.
   std::string text(const std::vector<std::string>& roots) const;
   HeaderLanguage language() const { return language_; }
+  // A statement written as it is (it declares `name`, an array), kept when a kept expression
+  // reads `name`: the spectral ocean's map sample (codegen/query_ocean.h).
+  void statement(const std::string& name, const std::string& text);
+
+  // The spectral ocean the query reads, if any: the graph's prefix (its state is
+  // <prefix>ocean, read through the pointer `o`) and the ocean_spectrum's settings.
+  struct Ocean {
+    std::string prefix;
+    const ocean::OceanSettings* settings = nullptr;
+  };
+  Ocean ocean;
 
  private:
+  struct Local {
+    std::string name, expr;
+    bool verbatim = false;
+  };
   HeaderLanguage language_;
-  std::vector<std::pair<std::string, std::string>> locals_;  // name, expression
+  std::vector<Local> locals_;
 };
 
 // Why an op cannot be part of a query (thrown while writing it; the caller names the node).

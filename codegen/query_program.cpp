@@ -74,6 +74,7 @@ std::optional<QueryProgram> extractQuery(const Program& program, Diagnostics& di
     return q;
   }
   // Mark the cone: which ports of which ops the position reads, walking back in order.
+  int oceanOp = -1;
   std::vector<std::vector<bool>> read(program.ops.size());
   for (size_t i = 0; i < program.ops.size(); ++i) read[i].assign(program.ops[i].outputTypes.size(), false);
   read[static_cast<size_t>(out->value.index)][static_cast<size_t>(out->value.port)] = true;
@@ -97,12 +98,23 @@ std::optional<QueryProgram> extractQuery(const Program& program, Diagnostics& di
     if (op.spec->type == "gerstner_waves")
       for (size_t p = 1; p < read[k].size(); ++p)
         if (read[k][p]) refuse("the displacement reads its output '" + op.spec->outputs[p].name + "', which the query does not differentiate; displace by its position");
+    if (op.spec->type == "ocean_displacement" && read[k].size() > 1 && read[k][1])
+      refuse("the displacement reads its output 'normal', which the query does not differentiate; displace by its position");
+    if (op.spec->type == "ocean_spectrum") {
+      // One state per query: a second sea would need a second one.
+      if (oceanOp >= 0 && program.ops[static_cast<size_t>(oceanOp)].parsedOptions != op.parsedOptions)
+        refuse("the displacement reads two ocean_spectrum nodes ('" + op.nodeId + "' and '" +
+               program.ops[static_cast<size_t>(oceanOp)].nodeId + "'); a query keeps the state of one");
+      oceanOp = static_cast<int>(k);
+    }
     for (int p = 0; p < static_cast<int>(read[k].size()); ++p) {
       if (!read[k][static_cast<size_t>(p)]) continue;
       for (size_t i : inputsRead(op, p)) {
         const ValueRef& r = op.inputs[i];
         if (r.kind == ValueRef::Kind::Op) read[static_cast<size_t>(r.index)][static_cast<size_t>(r.port)] = true;
         if (r.kind == ValueRef::Kind::Builtin) {
+          // The readers' fade distance: the ocean state holds the camera (codegen/query_ocean.h).
+          if (op.spec->type == "ocean_displacement" && static_cast<Builtin>(r.index) == Builtin::CameraPosition) continue;
           std::string why = builtinRefusal(static_cast<Builtin>(r.index));
           if (!why.empty()) refuse(why);
         }
@@ -128,6 +140,7 @@ std::optional<QueryProgram> extractQuery(const Program& program, Diagnostics& di
         r = it == index.end() ? ValueRef{} : ValueRef::op(it->second, r.port);
       }
   q.position = ValueRef::op(index.at(out->value.index), out->value.port);
+  if (oceanOp >= 0) q.ocean = &program.ops[static_cast<size_t>(oceanOp)].parsedOptions->as<ocean::OceanSettings>();
   return q;
 }
 

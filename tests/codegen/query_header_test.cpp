@@ -285,8 +285,8 @@ TEST(QueryHeader, GeneratedTwiceIsTheSameText) {
   EXPECT_NE(a->find("#ifndef WG_ocean_QUERY_H"), std::string::npos);
 }
 
-// A graph whose displacement the query cannot evaluate: the camera, a wave's normal used as
-// a displacement. Each is WG044 at the node; the CLI writes nothing for it.
+// A graph whose displacement the query cannot evaluate: the camera, a wave's or an ocean's
+// normal used as a displacement, two spectral oceans (a query keeps one ocean state). Each is WG044 at the node; the CLI writes nothing for it.
 TEST(QueryHeader, AnUnqueryableDisplacementIsAnErrorNamingTheNode) {
   struct Case {
     std::string nodes, why;
@@ -299,6 +299,17 @@ TEST(QueryHeader, AnUnqueryableDisplacementIsAnErrorNamingTheNode) {
       {R"J({"id": "waves", "type": "gerstner_waves"},
           {"id": "surface", "type": "vertex_output", "inputs": {"displacement": "waves.normal"}})J",
        "the displacement reads its output 'normal'"},
+      {R"J({"id": "sea", "type": "ocean_spectrum", "options": {"fft_size": 64, "tile_lengths": [50, 8]}},
+          {"id": "d", "type": "ocean_displacement", "inputs": {"ocean": "sea.ocean"}},
+          {"id": "surface", "type": "vertex_output", "inputs": {"displacement": "d.normal"}})J",
+       "node 'd' (ocean_displacement) feeds the vertex displacement, but a surface query cannot evaluate it: the "
+       "displacement reads its output 'normal'"},
+      {R"J({"id": "sea", "type": "ocean_spectrum", "options": {"fft_size": 64, "tile_lengths": [50, 8]}},
+          {"id": "swell", "type": "ocean_spectrum", "options": {"fft_size": 64, "tile_lengths": [300, 40], "seed": 7}},
+          {"id": "d", "type": "ocean_displacement", "inputs": {"ocean": "sea.ocean"}},
+          {"id": "e", "type": "ocean_displacement", "inputs": {"ocean": "swell.ocean", "position": "d.position"}},
+          {"id": "surface", "type": "vertex_output", "inputs": {"position": "e.position"}})J",
+       "a query keeps the state of one"},
   };
   for (const Case& k : cases) {
     std::string dir = test::makeTempDir("wg_query_refused");

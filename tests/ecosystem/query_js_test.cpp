@@ -8,6 +8,7 @@
 #include <filesystem>
 
 #include "codegen/query_header.h"
+#include "query_ocean_samples.h"
 #include "query_samples.h"
 
 namespace wg {
@@ -84,6 +85,40 @@ TEST(QueryJs, AFoldedSurfaceAgreesWithTheCHeader) {
   std::vector<QueryPoint> at;
   for (int i = 0; i <= 800; ++i) at.push_back({-10.0 + 0.025 * i, 0.3, 0.0});
   expectSameAnswers(test::writeFoldGraph(dir), "", "", at);
+  std::filesystem::remove_all(dir);
+}
+
+// The spectral ocean (graphs/open_ocean.json, three cascades of 256^2): the module's state,
+// recomputed from the same spectrum and seed with its own transform, answers as the header's
+// at t = 0, 3.5 s and 1e6 s, near the camera, in the cascades' fades and far out.
+TEST(QueryJs, SpectralOceanAgreesWithTheCHeader) {
+  std::string dir = test::makeTempDir("wg_query_js_ocean");
+  auto program = test::compileFile(test::sourcePath("graphs/open_ocean.json"));
+  ASSERT_TRUE(program);
+  Diagnostics diags;
+  auto header = queryCHeader("g", *program, diags);
+  auto module = queryJsModule("g", *program, diags);
+  ASSERT_TRUE(header && module);
+  std::vector<test::OceanPoint> at;
+  for (double x0 : {-9.5, -0.25, 3.0, 11.75})
+    for (double z0 : {-4.0, 0.5, 6.25}) at.push_back({x0, z0});
+  for (double r : {70.0, 100.0, 400.0, 2.5e4}) at.push_back({0.6 * r, -0.8 * r});
+  const std::vector<double> times = {0.0, 3.5, 1e6};
+  const double camera[3] = {1.0, 8.0, -2.0};
+  test::writeFile(dir + "/g.query.h", *header);
+  test::writeFile(dir + "/g.query.js", *module);
+  test::writeFile(dir + "/package.json", "{\"type\": \"module\"}\n");
+  test::writeFile(dir + "/main.c", test::oceanDriverC("g.query.h", "wg_g_", at, times, camera, false));
+  test::writeFile(dir + "/main.js", test::oceanDriverJs("g.query.js", "wg_g_", at, times, camera));
+  auto c = test::compileAndRunC(dir, "gcc -std=c99");
+  auto js = test::runNumbers("cd " + test::shellQuote(dir) + " && timeout 120 node main.js");
+  ASSERT_EQ(c.size(), at.size() * times.size());
+  ASSERT_EQ(js.size(), c.size());
+  for (size_t k = 0; k < c.size(); ++k) {
+    ASSERT_EQ(js[k].size(), c[k].size());
+    for (size_t i = 0; i < c[k].size(); ++i)
+      EXPECT_NEAR(js[k][i], c[k][i], 1e-12 * (1 + std::abs(c[k][i]))) << "row " << k << " output " << i;
+  }
   std::filesystem::remove_all(dir);
 }
 

@@ -24,7 +24,12 @@
 #include "nodes/gerstner_waves.h"
 #include "query_samples.h"
 #include "query_vk_capture.h"
+#include "core/ocean_fft_reference.h"
+#include "core/ocean_settings.h"
+#include "ocean_transform_bound.h"
+#include "query_ocean_samples.h"
 #include "runtime/egl_context.h"
+#include "runtime/ocean_simulation.h"
 #include "runtime/preview.h"
 #include "runtime/uniform_values.h"
 
@@ -58,9 +63,11 @@ GLuint compiled(GLenum stage, const std::string& source, std::string& error) {
 
 // The displaced positions the vertex shader `vertexText` computes for the points, under the
 // manifest's uniforms at time t (each parameter `host`'s value or its default, clamped as
-// the runtime clamps it): gl_Position, with the view-projection the identity.
+// the runtime clamps it), seen from `camera`, with the ocean maps `sea` simulated (null for
+// a graph without a spectral ocean): gl_Position, with the view-projection the identity.
 Captured captureVertexStage(const std::string& vertexText, bool es, const Manifest& manifest,
-                            const std::vector<QueryPoint>& points, double t, const HostValues& host) {
+                            const std::vector<QueryPoint>& points, double t, const HostValues& host,
+                            const OceanSimulation* sea = nullptr, glm::vec3 camera = glm::vec3(0.0f)) {
   Captured c;
   GLuint shader = compiled(GL_VERTEX_SHADER, vertexText, c.error);
   // ES programs need a fragment shader even when nothing is rasterised.
@@ -86,6 +93,7 @@ Captured captureVertexStage(const std::string& vertexText, bool es, const Manife
   glUseProgram(program);
   FrameValues frame;
   frame.time = t;
+  frame.camera.position = camera;
   for (const ManifestUniform& u : manifest.uniforms) {
     GLint at = glGetUniformLocation(program, u.name.c_str());
     if (at < 0) continue;
@@ -106,6 +114,18 @@ Captured captureVertexStage(const std::string& vertexText, bool es, const Manife
       case Type::Mat4: glUniformMatrix4fv(at, 1, GL_FALSE, v.data()); break;
       default: c.error = "uniform " + u.name + " of a type this test does not set"; return c;
     }
+  }
+  GLint unit = 0;
+  for (const TextureInfo& texture : manifest.textures) {
+    GLint at = glGetUniformLocation(program, texture.name.c_str());
+    if (at < 0) continue;
+    if (!texture.ocean || !sea) {
+      c.error = "sampler " + texture.name + " this test does not bind";
+      return c;
+    }
+    glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+    glBindTexture(GL_TEXTURE_2D, sea->map(*texture.ocean));
+    glUniform1i(at, unit++);
   }
   std::vector<float> in;
   for (const QueryPoint& q : points) in.insert(in.end(), {static_cast<float>(q.x0), 0.0f, static_cast<float>(q.z0)});
@@ -304,6 +324,124 @@ TEST_P(QueryGpu, ParametersAHostSetsAreClampedAsTheRuntimeClampsThem) {
   host.setParameters = "  p.lift = 5.0;\n  p.zzint = NAN;\n  p.zzerrno = -2.5;\n";
   host.extraBound = [&](const QueryPoint& q) { return std::ldexp(1.0, -24) * (h * (k * std::abs(q.x0) + 6) + 0.03 * std::abs(g)); };
   expectGpuAgrees(dir + "/hosted.json", "hosted", GetParam(), host);
+  std::filesystem::remove_all(dir);
+}
+
+// The spectral ocean (graphs/open_ocean.json at its largest fft_size, 512, three cascades):
+// the GPU simulates the maps in float32 (runtime/ocean_gpu_cascade.h) and the vertex stage
+// reads them, the query computes them in double (codegen/query_ocean.h). Per component and
+// cascade the float32 bound is the transform's error bound (ocean_transform_bound.h) times the
+// 2-norm of the fields packed with it (h, Dx, Dz and dh/dx share the GPU's first texture),
+// the texel coordinate's rounding 2^-24 (|u| + |v|) times the field's largest step between
+// neighbouring texels, 8 roundings of the field's largest value in the bilinear mix and the
+// weighted sum, and the fade weight's float32 distance and smoothstep (2^-24 (4 + 4.5 d /
+// start)) times that value; plus 2^-24 (|x0| + |z0| + sum of the largest D) twice for the
+// point and the sum. vk450 is not run: the Vulkan runtime does not simulate oceans
+// (rt::vulkanCannotRun).
+TEST(QueryGpuOcean, OpenOceanAtFftSize512OnGlsl330AndEs300) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourcePath("graphs/open_ocean.json"), diags);
+  ASSERT_TRUE(graph);
+  for (Node& node : graph->nodes)
+    if (node.type == "ocean_spectrum") node.options.push_back({"fft_size", 512, {}, {}});
+  CompileOptions o;
+  o.targets = {Target::Glsl330, Target::Es300};
+  o.tessellation = false;
+  auto result = compileGraph(*graph, defaultRegistry(), o, diags);
+  ASSERT_TRUE(result) << diags.sorted().front().message;
+  const ocean::OceanSettings* sea = nullptr;
+  for (const Op& op : result->program.ops)
+    if (op.spec->type == "ocean_spectrum") sea = &op.parsedOptions->as<ocean::OceanSettings>();
+  ASSERT_TRUE(sea);
+  ASSERT_EQ(sea->cascades.resolution, 512);
+  double fade = 0;
+  for (const Op& op : result->program.ops)
+    if (op.spec->type == "ocean_displacement") fade = op.parsedOptions->as<double>();
+  ASSERT_GT(fade, 0);
+  // Points (float32 numbers) near the camera, in each cascade's fade, and far out.
+  const glm::vec3 camera(3.0f, 12.0f, -4.0f);
+  std::vector<test::OceanPoint> at;
+  for (double x0 : {-37.5, -6.25, 0.0, 2.125, 9.75, 48.5})
+    for (double z0 : {-21.0, -0.5, 3.25, 30.0}) at.push_back({x0, z0});
+  for (double r : {61.0, 80.0, 100.0, 119.0, 300.0, 420.0, 560.0, 2000.0}) at.push_back({r * 0.75, -r * 0.625});
+  const std::vector<double> times = {0.0, 3.5, 1e6};
+  std::string dir = test::makeTempDir("wg_query_gpu_ocean");
+  auto header = queryCHeader("g", result->program, diags);
+  ASSERT_TRUE(header);
+  test::writeFile(dir + "/g.query.h", *header);
+  const double cameraD[3] = {camera.x, camera.y, camera.z};
+  test::writeFile(dir + "/main.c", test::oceanDriverC("g.query.h", "wg_g_", at, times, cameraD, false));
+  auto query = test::compileAndRunC(dir, "cc -std=c99");
+  ASSERT_EQ(query.size(), times.size() * at.size());
+  std::vector<QueryPoint> points;
+  for (const auto& p : at) points.push_back({p.x0, p.z0, 0.0});
+  const double eps = std::ldexp(1.0, -24), lambda = sea->cascades.choppiness;
+  const int n = sea->cascades.resolution;
+  for (size_t k = 0; k < times.size(); ++k) {
+    // Per cascade and component (lDx, h, lDz): the fields' norm, largest value and step.
+    struct Scale {
+      double norm = 0, largest[3] = {0, 0, 0}, step[3] = {0, 0, 0};
+    };
+    std::vector<Scale> scales;
+    for (size_t c = 0; c < sea->cascades.tileLengths.size(); ++c) {
+      ocean::OceanFields f = ocean::oceanFields(ocean::initialCascade(sea->spectrum, sea->cascades, static_cast<int>(c)),
+                                                times[k], lambda);
+      Scale s;
+      s.norm = ocean_test::norm(f.height) + ocean_test::norm(f.displacementX) + ocean_test::norm(f.displacementZ) +
+               ocean_test::norm(f.slopeX);
+      const std::vector<double>* fields[3] = {&f.displacementX, &f.height, &f.displacementZ};
+      for (int i = 0; i < 3; ++i) {
+        const double scale = i == 1 ? 1.0 : lambda;
+        for (int jz = 0; jz < n; ++jz)
+          for (int jx = 0; jx < n; ++jx) {
+            auto v = [&](int x, int z) { return scale * (*fields[i])[static_cast<size_t>((z % n) * n + (x % n))]; };
+            s.largest[i] = std::max(s.largest[i], std::abs(v(jx, jz)));
+            s.step[i] = std::max({s.step[i], std::abs(v(jx + 1, jz) - v(jx, jz)), std::abs(v(jx, jz + 1) - v(jx, jz))});
+          }
+      }
+      scales.push_back(s);
+    }
+    auto bound = [&](const test::OceanPoint& p, int i) {
+      const glm::dvec3 d(p.x0 - camera.x, -camera.y, p.z0 - camera.z);
+      const double distance = glm::length(d);
+      double b = 0, reach = 0;
+      for (size_t c = 0; c < scales.size(); ++c) {
+        const double texels = static_cast<float>(n / sea->cascades.tileLengths[c]);
+        const double start = static_cast<float>(fade * sea->cascades.tileLengths[c]);
+        const Scale& s = scales[c];
+        b += ocean_test::transformBound(n) * (i == 1 ? 1.0 : lambda) * s.norm +
+             eps * texels * (std::abs(p.x0) + std::abs(p.z0)) * s.step[i] + 8 * eps * s.largest[i] +
+             eps * (4 + 4.5 * distance / start) * s.largest[i];
+        reach += s.largest[0] + s.largest[1] + s.largest[2];
+      }
+      return b + 2 * eps * (std::abs(p.x0) + std::abs(p.z0) + reach);
+    };
+    for (Target target : {Target::Glsl330, Target::Es300}) {
+      auto context = EglContext::create(apiFor(target));
+      OceanSimulation simulation(result->manifest.oceans, result->manifest.textures,
+                                 target == Target::Es300 ? SceneShaderApi::Es300 : SceneShaderApi::Gl330);
+      simulation.update(times[k]);
+      std::string vertex;
+      for (const auto& f : result->files)
+        if (f.name.ends_with("." + std::string(targetName(target)) + ".vert")) vertex = f.contents;
+      Captured gpu = captureVertexStage(vertex, target == Target::Es300, result->manifest, points, times[k], {},
+                                        &simulation, camera);
+      ASSERT_TRUE(gpu.error.empty()) << gpu.error;
+      ASSERT_EQ(gpu.positions.size(), 3 * points.size());
+      double worst = 0;
+      for (size_t j = 0; j < at.size(); ++j)
+        for (int i = 0; i < 3; ++i) {
+          const double d = std::abs(gpu.positions[3 * j + static_cast<size_t>(i)] -
+                                    query[k * at.size() + j][static_cast<size_t>(i)]);
+          const double allowed = bound(at[j], i);
+          worst = std::max(worst, d / allowed);
+          EXPECT_LE(d, allowed) << targetName(target) << " t " << times[k] << " point (" << at[j].x0 << ", " << at[j].z0
+                                << ") component " << i;
+        }
+      std::printf("open_ocean 512 %s t=%g: worst GPU-query difference %.3f of the float32 bound\n",
+                  std::string(targetName(target)).c_str(), times[k], worst);
+    }
+  }
   std::filesystem::remove_all(dir);
 }
 
