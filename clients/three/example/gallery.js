@@ -34,9 +34,12 @@ scene.add(builtin, buoys.group);
 let water = null, waterMesh = null, query = null;
 
 // The graph's surface query: its params_default and displace (one graph per module).
+// null for a spectral ocean's query, whose state takes its inverse FFTs on the CPU each
+// update (0.6 s in JavaScript: not per frame; docs/queries.md).
 async function loadQuery(name, preset) {
   const module = await import(`/out/${name}/${preset}/${name}.query.js`);
   const find = (suffix) => module[Object.keys(module).find((k) => k.startsWith('wg_') && k.endsWith(suffix))];
+  if (find('_ocean_init')) return null;
   return { defaults: find('_params_default'), displace: find('_displace') };
 }
 
