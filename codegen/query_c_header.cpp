@@ -1,8 +1,8 @@
 // The C form of a surface query (codegen/query_header.h).
 #include <cstdio>
 
+#include "codegen/c_math_formulas.h"
 #include "codegen/c_names.h"
-#include "codegen/derived_vocabulary.h"
 #include "codegen/query_body.h"
 #include "codegen/query_header.h"
 
@@ -81,7 +81,7 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += " * every output. */\n";
   h += "#ifndef " + guard + "\n#define " + guard + "\n\n#include <math.h>\n#include <stddef.h>\n\n";
   h += "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n";
-  h += std::string(derivedCHelpers()) + queryCHelpers() + "\n";
+  h += std::string(cMathHelpers()) + queryCHelpers() + "\n";
 
   h += "/* The graph's parameters a host may change. Values outside a parameter's range are clamped\n";
   h += " * into it (NaN to its lower end), as the runtime clamps the uniforms it uploads. */\n";
