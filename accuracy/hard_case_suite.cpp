@@ -128,7 +128,7 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, GpuExecutor& executor, 
           std::optional<ProbeReport> report;
           std::string label = spec->type + " [" + variant + (key == variantOptions.dump() ? "" : ", " + key) + "]." + out.name;
           try {
-            report = probeNode(*spec, group.first, out.name, group.second, executor, diags, options.mutation, options.derive);
+            report = probeNode(*spec, group.first, out.name, group.second, executor, diags, options.mutation);
           } catch (const rt::RuntimeError& e) {
             result.errors.push_back(label + ": " + e.what());
             continue;

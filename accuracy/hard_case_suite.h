@@ -21,9 +21,6 @@ struct SuiteOptions {
   // Mutation testing: the edit applied to every probe shader that contains its text; runs
   // whose shader does not are left out (SuiteResult::mutatedRuns counts the others).
   ShaderMutation mutation;
-  // Each node's per-draw parts as derived uniforms computed per case in double, as
-  // --derived-uniforms compiles them (probeNode's `derive`).
-  bool derive = false;
 };
 
 struct SuiteRun {

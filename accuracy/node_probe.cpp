@@ -108,13 +108,13 @@ NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options
 
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
                                      const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags,
-                                     const ShaderMutation& mutation, bool derive) {
-  return probeNode(spec, options, output, cases, *currentGlExecutor(target), diags, mutation, derive);
+                                     const ShaderMutation& mutation) {
+  return probeNode(spec, options, output, cases, *currentGlExecutor(target), diags, mutation);
 }
 
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
                                      const std::vector<ProbeCase>& cases, GpuExecutor& executor, Diagnostics& diags,
-                                     const ShaderMutation& mutation, bool derive) {
+                                     const ShaderMutation& mutation) {
   NodeProbeSetup setup = makeNodeProbe(spec, options, cases);
   if (setup.cases.cases.empty()) return ProbeReport{};
   ProbeOutput out{"n", output.empty() ? portsOfNode(spec, options).outputs.at(0).name : output};
@@ -125,7 +125,7 @@ std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json&
     c.ranges.clear();
     c.nodes.clear();
   }
-  auto report = probeGraph(setup.graph, out, graphCases, executor, diags, mutation, derive);
+  auto report = probeGraph(setup.graph, out, graphCases, executor, diags, mutation);
   if (report) {
     report->graph = spec.type;
     report->output = spec.type + "." + out.port;

@@ -30,15 +30,13 @@ struct NodeProbeSetup {
 };
 NodeProbeSetup makeNodeProbe(const NodeSpec& spec, const nlohmann::json& options, const std::vector<ProbeCase>& cases);
 
-// Probes output `output` ("" = the first) of `spec` on `executor`. `derive`: the node's
-// per-draw parts (a scroll phase, a near/far ratio, the camera axis) are derived uniforms,
-// computed per case in double as the runtime computes them per draw (probeGraph's `derive`).
+// Probes output `output` ("" = the first) of `spec` on `executor`.
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
                                      const std::vector<ProbeCase>& cases, GpuExecutor& executor, Diagnostics& diags,
-                                     const ShaderMutation& mutation = {}, bool derive = false);
+                                     const ShaderMutation& mutation = {});
 // The same on the current GL context, whose API must match `target` (glsl330 or es300).
 std::optional<ProbeReport> probeNode(const NodeSpec& spec, const nlohmann::json& options, const std::string& output,
                                      const std::vector<ProbeCase>& cases, Target target, Diagnostics& diags,
-                                     const ShaderMutation& mutation = {}, bool derive = false);
+                                     const ShaderMutation& mutation = {});
 
 }  // namespace wg::accuracy

@@ -111,13 +111,12 @@ void applyMutation(EmitResult& shader, const ShaderMutation& m) {
 }
 
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
-                                      Target target, Diagnostics& diags, const ShaderMutation& mutation, bool derive) {
-  return probeGraph(graph, output, cases, *currentGlExecutor(target), diags, mutation, derive);
+                                      Target target, Diagnostics& diags, const ShaderMutation& mutation) {
+  return probeGraph(graph, output, cases, *currentGlExecutor(target), diags, mutation);
 }
 
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
-                                      GpuExecutor& executor, Diagnostics& diags, const ShaderMutation& mutation,
-                                      bool derive) {
+                                      GpuExecutor& executor, Diagnostics& diags, const ShaderMutation& mutation) {
   const Target target = executor.target();
   // Parameters a case sets must exist in the graph (they may be pruned from the program).
   for (const auto& c : cases.cases) {
@@ -153,7 +152,7 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
   if (diags.hasErrors()) return std::nullopt;
   auto program = buildProbeProgram(graph, defaultRegistry(), output, diags);
   if (!program) return std::nullopt;
-  EmitResult shader = emitProgram(*program, target, graph.file, EmitMode::Probe, true, derive);
+  EmitResult shader = emitProgram(*program, target, graph.file, EmitMode::Probe);
   applyMutation(shader, mutation);
 
   ErrorModel model = programErrorModel(*program);

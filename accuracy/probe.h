@@ -68,15 +68,11 @@ class GpuExecutor;
 // parameter names against the graph (WG060 at the case), runs the cases on the executor
 // (accuracy/gpu_executor.h) and in double. nullopt with diagnostics for graph or case
 // problems; throws rt::RuntimeError for driver problems.
-// `derive`: the probe shader reads derived uniforms, each computed per case in double as
-// the runtime computes it per draw (CompileOptions::derivedUniforms).
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
-                                      GpuExecutor& executor, Diagnostics& diags, const ShaderMutation& mutation = {},
-                                      bool derive = false);
+                                      GpuExecutor& executor, Diagnostics& diags, const ShaderMutation& mutation = {});
 // The same on the current GL context, whose API must match `target` (glsl330 or es300).
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
-                                      Target target, Diagnostics& diags, const ShaderMutation& mutation = {},
-                                      bool derive = false);
+                                      Target target, Diagnostics& diags, const ShaderMutation& mutation = {});
 
 // x in [lo, hi] give or take tolerance * max(1, |bound|).
 bool withinRange(double x, const std::pair<double, double>& range, double tolerance);

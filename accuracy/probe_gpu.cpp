@@ -6,7 +6,6 @@
 #include <memory>
 #include <optional>
 
-#include "codegen/derived_program.h"
 #include "core/ocean_settings.h"
 #include "nodes/texture_source.h"
 #include "runtime/gl_resources.h"
@@ -101,18 +100,6 @@ Value probeUniformValue(const UniformInfo& u, const Program& program, const Prob
     for (const auto& [name, value] : c.parameters)
       if (name == p.name) v = value.convertedTo(p.type);
     return v;
-  }
-  if (u.derived) {
-    // As the runtime does: the program in double from the case's environment and
-    // parameters (then rounded to float by the upload).
-    std::vector<Value> parameters;
-    for (const ProgramParameter& p : program.parameters) {
-      Value v = p.defaultValue;
-      for (const auto& [name, value] : c.parameters)
-        if (name == p.name) v = value.convertedTo(p.type);
-      parameters.push_back(v);
-    }
-    return evaluateDerived(*u.derived, c.env, parameters);
   }
   if (u.builtin == BuiltinUniform::ProbePixel)  // gl_FragCoord at the centre of the case's pixel
     return Value::vector({static_cast<double>(index % 1024) + 0.5, static_cast<double>(index / 1024) + 0.5});

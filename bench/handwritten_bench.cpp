@@ -12,13 +12,11 @@
 // spirv-opt -O (per program: all stages; and the fragment stage alone) of both, compiled
 // the same way (glsl330 under glslang's relaxed Vulkan rules; see relaxedSpirv).
 //
-//   build/bin/wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--derived-uniforms] [--dump-spirv DIR] [graph ...]
+//   build/bin/wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--dump-spirv DIR] [graph ...]
 //
 // Defaults: 15 rounds of 2 frames, sizes 640x360 and 1280x720, both graphs. --water-only
 // draws none of the built-in scene (SceneOptions::drawScene = false): the frame is then
 // mostly the water shader, whose cost the full frame dilutes with the scene passes.
-// --derived-uniforms compiles the generated side with them (the runtime computes them per
-// draw); the hand-written side reads the same manifest's parameter uniforms.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -74,7 +72,7 @@ std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders, co
 }
 
 [[noreturn]] void usage(const char* why) {
-  std::fprintf(stderr, "wg_bench_handwritten: %s\nusage: wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--derived-uniforms] [--dump-spirv DIR] [graph ...]\n", why);
+  std::fprintf(stderr, "wg_bench_handwritten: %s\nusage: wg_bench_handwritten [--rounds N] [--frames N] [--size WxH ...] [--water-only] [--dump-spirv DIR] [graph ...]\n", why);
   std::exit(1);
 }
 
@@ -82,7 +80,7 @@ std::pair<int, int> spirvCounts(const std::vector<wg::ShaderSource>& shaders, co
 
 int main(int argc, char** argv) {
   int rounds = 15, frames = 2;
-  bool waterOnly = false, derived = false;
+  bool waterOnly = false;
   std::string dumpDir;
   std::vector<Size> sizes;
   std::vector<std::string> graphs;
@@ -95,7 +93,6 @@ int main(int argc, char** argv) {
     if (a == "--rounds") rounds = std::atoi(next().c_str());
     else if (a == "--frames") frames = std::atoi(next().c_str());
     else if (a == "--water-only") waterOnly = true;
-    else if (a == "--derived-uniforms") derived = true;
     else if (a == "--dump-spirv") dumpDir = next();
     else if (a == "--size") {
       Size s{};
@@ -116,8 +113,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   std::printf("GL_RENDERER: %s; %d rounds x %d frames per side, interleaved; %s\n\n", context->renderer().c_str(), rounds, frames,
-              waterOnly ? (derived ? "water only (no scene), derived uniforms" : "water only (no scene)")
-                        : (derived ? "full scene, derived uniforms" : "full scene"));
+              waterOnly ? "water only (no scene)" : "full scene");
   std::printf("| graph | size | generated ms | hand-written ms | ratio gen/hand | paired ratio | PSNR dB | SPIR-V -O gen (frag) | SPIR-V -O hand (frag) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
 
@@ -128,7 +124,6 @@ int main(int argc, char** argv) {
       auto graph = wg::loadGraphFile(std::string(WG_SOURCE_DIR) + "/graphs/" + name + ".json", diags);
       wg::CompileOptions options;
       options.targets = {wg::Target::Glsl330};
-      options.derivedUniforms = derived;
       std::optional<wg::CompileResult> result;
       if (graph) result = wg::compileGraph(*graph, wg::defaultRegistry(), options, diags);
       if (!result) {
@@ -136,17 +131,8 @@ int main(int argc, char** argv) {
         status = 1;
         continue;
       }
-      // The hand-written shaders read the uniforms of the graph compiled without derived
-      // uniforms (u_time, the camera, every parameter): they get that manifest.
-      std::optional<wg::CompileResult> plain;
-      if (derived) {
-        wg::CompileOptions off = options;
-        off.derivedUniforms = false;
-        plain = wg::compileGraph(*graph, wg::defaultRegistry(), off, diags);
-      }
-      const wg::CompileResult& handSide = plain ? *plain : *result;
       auto generated = wg::handwritten::generatedShaders(*result);
-      auto hand = wg::handwritten::handwrittenShaders(WG_SOURCE_DIR, name, handSide.manifest);
+      auto hand = wg::handwritten::handwrittenShaders(WG_SOURCE_DIR, name, result->manifest);
       auto [genTotal, genFrag] = spirvCounts(generated, dumpDir.empty() ? "" : dumpDir + "/" + name + ".generated");
       auto [handTotal, handFrag] = spirvCounts(hand, dumpDir.empty() ? "" : dumpDir + "/" + name + ".handwritten");
       auto origins = wg::rt::textureOrigins(*result);
@@ -157,7 +143,7 @@ int main(int argc, char** argv) {
         settings.height = size.height;
         settings.scene.drawScene = !waterOnly;
         wg::rt::Renderer gen(result->manifest, wg::handwritten::forRuntime(generated), settings, false, origins);
-        wg::rt::Renderer hw(handSide.manifest, wg::handwritten::forRuntime(hand), settings, false, origins);
+        wg::rt::Renderer hw(result->manifest, wg::handwritten::forRuntime(hand), settings, false, origins);
         for (int w = 0; w < 2; ++w) gen.renderFrame(), hw.renderFrame();  // llvmpipe compiles at the first draw
         double psnr = wg::rt::psnrRgb8(gen.readRgba8(), hw.readRgba8());
         std::vector<double> genMs, handMs, roundRatios;

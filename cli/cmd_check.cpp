@@ -40,7 +40,6 @@ struct CheckArgs {
   std::string errorMap;  // FILE.png: the error image (several graphs: FILE-GRAPH.png)
   std::string mutate;    // FIND=>REPLACE in the water shaders
   std::string preset;    // a preset of each graph, applied before compiling
-  bool derivedUniforms = false;  // CompileOptions::derivedUniforms
   bool vulkanValidation = false;  // vk450: under the Khronos validation layer
   ViewFlags view;                 // the error map's picture of the frame
 };
@@ -141,8 +140,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         CompileOptions options;
         options.targets = {target};
         options.preset = args.preset;
-        options.derivedUniforms = args.derivedUniforms;
-        result = compileGraph(*graph, defaultRegistry(), options, diags);
+            result = compileGraph(*graph, defaultRegistry(), options, diags);
       }
       printDiagnostics(diags, global);
       if (!result) {
@@ -250,9 +248,6 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
                   "WIDTHxHEIGHT of the frame, each side 8..4096, and within the memory budget (2 GiB; a graph with "
                   "several scene passes reaches it below 4096x4096: the error says what the size needs)")
       ->capture_default_str();
-  cmd->add_flag("--derived-uniforms", args->derivedUniforms,
-                "per-draw values the fragment shader would compute for every pixel become uniforms computed once per "
-                "draw in double (experimental)");
   cmd->add_option("--preset", args->preset,
                   "a preset from each graph's \"presets\" table: its parameter values and node options apply");
   addViewFlags(cmd, args->view);

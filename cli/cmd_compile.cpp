@@ -20,7 +20,6 @@
 #include "cli/commands.h"
 #include "cli/option_values.h"
 #include "codegen/compile.h"
-#include "codegen/derived_c_header.h"
 #include "codegen/query_header.h"
 #include "codegen/depfile.h"
 #include "core/node_preview_graph.h"
@@ -54,22 +53,16 @@ struct CompileArgs {
   bool textures = false;  // also write <graph>.<sampler>.png for every node texture
   std::string depfile;    // write a Make/Ninja depfile here
   bool explainFrequency = false;  // print each graph's frequency report (codegen/frequency_report.h)
-  bool derivedUniforms = false;   // CompileOptions::derivedUniforms
 };
 
-constexpr std::string_view kCHeaderTarget = "c-header";
 constexpr std::string_view kQueryCTarget = "query-c";
 constexpr std::string_view kQueryJsTarget = "query-js";
 constexpr std::string_view kWgslTarget = "wgsl";
-constexpr const char* kTargetNames = "glsl330, es300, vk450, msl, hlsl, wgsl, c-header, query-c, query-js";
+constexpr const char* kTargetNames = "glsl330, es300, vk450, msl, hlsl, wgsl, query-c, query-js";
 
 struct TargetSet {
   std::vector<Target> glsl;
   std::vector<CrossTarget> cross;
-  // c-header: <graph>.derived.h, a C header computing the derived uniforms
-  // (codegen/derived_c_header.h). It implies --derived-uniforms, so the shaders written
-  // beside it read what it computes.
-  bool cHeader = false;
   // query-c / query-js: <graph>.query.h / <graph>.query.js, the surface queries of the
   // vertex stage's displacement (codegen/query_header.h).
   bool queryC = false, queryJs = false;
@@ -81,13 +74,12 @@ struct TargetSet {
     for (Target t : glsl) s += (s.empty() ? "" : ",") + std::string(targetName(t));
     for (CrossTarget t : cross) s += (s.empty() ? "" : ",") + std::string(crossTargetName(t));
     if (wgsl) s += (s.empty() ? "" : ",") + std::string(kWgslTarget);
-    if (cHeader) s += (s.empty() ? "" : ",") + std::string(kCHeaderTarget);
     if (queryC) s += (s.empty() ? "" : ",") + std::string(kQueryCTarget);
     if (queryJs) s += (s.empty() ? "" : ",") + std::string(kQueryJsTarget);
     return s;
   }
   size_t size() const {
-    return glsl.size() + cross.size() + (wgsl ? 1 : 0) + (cHeader ? 1 : 0) + (queryC ? 1 : 0) + (queryJs ? 1 : 0);
+    return glsl.size() + cross.size() + (wgsl ? 1 : 0) + (queryC ? 1 : 0) + (queryJs ? 1 : 0);
   }
 };
 
@@ -110,8 +102,6 @@ bool parseTargets(const std::vector<std::string>& names, TargetSet& out) {
         bool dup = false;
         for (Target have : out.glsl) dup |= have == *t;
         if (!dup) out.glsl.push_back(*t);
-      } else if (part == kCHeaderTarget) {
-        out.cHeader = true;
       } else if (part == kQueryCTarget) {
         out.queryC = true;
       } else if (part == kQueryJsTarget) {
@@ -250,15 +240,6 @@ DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, cons
   return rule;
 }
 
-// <graph>.derived.h: the derived uniforms of the manifest as C, the header's names made from
-// the graph's file name (wg_<name>_compute_derived).
-OutputFile derivedHeaderFile(const std::string& name, const Manifest& manifest) {
-  std::vector<DerivedUniform> derived;
-  for (const ManifestUniform& u : manifest.uniforms)
-    if (u.derived) derived.push_back({u.name, *u.derived});
-  return {name + ".derived.h", derivedCHeader(name, manifestParameters(manifest.uniforms), derived)};
-}
-
 // Compiles one graph (and writes it when `write`). Diagnostics go to `diags`.
 GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const TargetSet& targets, bool write,
                         Diagnostics& diags) {
@@ -279,7 +260,6 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
     CompileOptions options;
     options.targets = targets.glsl;
     options.preset = args.preset;
-    options.derivedUniforms = args.derivedUniforms || targets.cHeader;
     options.wgsl = targets.wgsl;
     result = compileGraphWithCross(*graph, defaultRegistry(), options, targets.cross, diags);
     for (size_t i = 1; library && result && !write && i < library->interface->outputs.size(); ++i) {
@@ -287,7 +267,6 @@ GraphOutcome compileOne(const std::string& path, const CompileArgs& args, const 
       if (auto other = interfaceOutputGraph(*library, &why, i))
         if (!compileGraphWithCross(*other, defaultRegistry(), options, targets.cross, diags)) result.reset();
     }
-    if (result && targets.cHeader) result->files.push_back(derivedHeaderFile(outcome.name, result->manifest));
     if (result && targets.queryC) {
       if (auto h = queryCHeader(outcome.name, result->program, diags)) result->files.push_back({outcome.name + ".query.h", *h});
       else result.reset();
@@ -502,8 +481,7 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
   cmd->add_option("--target", args.targets,
                   "targets, comma separated: glsl330, es300, vk450 (default: these three), msl, hlsl (from the vk450 "
                   "SPIR-V through SPIRV-Cross), wgsl (<graph>.wgsl for WebGPU: both entry points in one module; alone it "
-                  "compiles glsl330 too; validate runs naga and Tint on it where Node.js and Chromium are installed), c-header (<graph>.derived.h: C that computes the derived uniforms "
-                  "once per draw, for a renderer of your own; implies --derived-uniforms), query-c and query-js "
+                  "compiles glsl330 too; validate runs naga and Tint on it where Node.js and Chromium are installed), query-c and query-js "
                   "(<graph>.query.h, <graph>.query.js: where the water surface is, its height, normal and velocity, "
                   "from the vertex stage's displacement, for game code; docs/queries.md)");
   auto* quiet = cmd->add_flag("-q,--quiet", args.quiet, "print only errors");
@@ -514,11 +492,7 @@ void addCommonOptions(CLI::App* cmd, CompileArgs& args) {
                   "parameter defaults; static parameters fold into the shader");
   cmd->add_flag("--explain-frequency", args.explainFrequency,
                 "print, per graph, how many ops are constant, per-draw, per-vertex and per-fragment, and the per-draw "
-                "values the fragment stage computes for every pixel (candidates for uniforms computed once per draw), "
-                "each with its estimated operations per pixel");
-  cmd->add_flag("--derived-uniforms", args.derivedUniforms,
-                "per-draw values the fragment shader would compute for every pixel become uniforms (u_derived<k>) "
-                "that the runtime computes once per draw in double; the manifest holds how (experimental)");
+                "values the fragment stage computes for every pixel, each with its estimated operations per pixel");
 }
 
 }  // namespace
@@ -534,7 +508,6 @@ Runner addCompileCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph compile graphs/*.json -o out --subdirs --summary\n"
       "  watergraph compile graphs/lake.json -o out --target es300\n"
       "  watergraph compile graphs/lake.json -o out --target msl,hlsl\n"
-      "  watergraph compile graphs/lake.json -o out --target glsl330,c-header   # shaders + lake.derived.h\n"
       "  watergraph compile graphs/ocean.json -o out --target glsl330,query-c   # shaders + ocean.query.h\n"
       "  watergraph compile graphs/lake.json -o out --target es300 --textures   # for the three.js client\n"
       "  watergraph compile graphs/*.json -o out --verbose\n"

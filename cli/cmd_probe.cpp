@@ -42,7 +42,6 @@ struct ProbeArgs {
   std::string table;      // with --sweep: where the error curve goes
   std::string mutate;     // FIND=>REPLACE in the probe shader
   std::string preset;     // graph mode: a preset of the graph, applied before probing
-  bool derivedUniforms = false;  // the probe shader reads derived uniforms (as --derived-uniforms compiles)
   bool vulkanValidation = false;  // vk450: under the Khronos validation layer
   bool functions = false;  // graph mode: sweep the graph's glsl_function nodes over the cases' value classes
 };
@@ -165,7 +164,6 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
     options.nodes = {spec->type};
     options.variants = args.variants;
     options.mutation = mutation;
-    options.derive = args.derivedUniforms;
     accuracy::SuiteResult r = accuracy::runHardCaseSuite(*cases, *executor, options);
     executor->finish();
     nlohmann::json all = nlohmann::json::array();
@@ -267,9 +265,9 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
   }
   if (!args.node.empty()) return runNodeProbe(args, global, *parseTarget(args.target), mutation);
   if (args.functions) {
-    if (args.cases.empty() || !args.output.empty() || mutation.active() || args.derivedUniforms) {
+    if (args.cases.empty() || !args.output.empty() || mutation.active()) {
       std::cerr << "watergraph: probe GRAPH --functions needs --cases FILE (its inputs' values are the classes swept) "
-                   "and takes no --output, --mutate or --derived-uniforms\n";
+                   "and takes no --output or --mutate\n";
       return kExitUsageOrIo;
     }
     return runFunctionSweep(args, global, *parseTarget(args.target));
@@ -298,7 +296,7 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
   }
   try {
     auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
-    auto report = accuracy::probeGraph(*graph, output, *cases, *executor, diags, mutation, args.derivedUniforms);
+    auto report = accuracy::probeGraph(*graph, output, *cases, *executor, diags, mutation);
     executor->finish();
     printDiagnostics(diags, global);
     if (!report) return exitCodeFor(diags);
@@ -337,9 +335,6 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
       "errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no EGL/GL context or Vulkan device.");
   cmd->add_option("graph", args->graph, "graph file (.json); or --node");
   cmd->add_option("--output", args->output, "the node output to probe, NODE.PORT (default: the fragment colour)");
-  cmd->add_flag("--derived-uniforms", args->derivedUniforms,
-                "per-draw values the fragment shader would compute for every pixel become uniforms computed once per "
-                "draw in double (experimental)");
   cmd->add_option("--preset", args->preset,
                   "graph mode: a preset from the graph's \"presets\" table: its parameter values and node options apply");
   cmd->add_option("--cases", args->cases, "cases file (.json), see docs/accuracy.md (with --sweep: its first case is the base)");

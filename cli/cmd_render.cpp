@@ -42,7 +42,6 @@ struct RenderArgs {
   float sunElevation = 30.0f;
   int grid = 128;  // = rt::RenderSettings default
   std::string preset;
-  bool derivedUniforms = false;  // CompileOptions::derivedUniforms
   bool obliqueReflection = false;
   std::string scene = "builtin";
   bool buoys = false;
@@ -129,7 +128,6 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
     CompileOptions options;
     options.targets = {target};
     options.preset = args.preset;
-    options.derivedUniforms = args.derivedUniforms;
     result = compileGraph(*graph, defaultRegistry(), options, diags);
   }
   printDiagnostics(diags, global);
@@ -225,9 +223,6 @@ Runner addRenderCommand(CLI::App& app, const GlobalOptions& global) {
   cmd->add_option("--grid", args->grid, "quads per side of the 40 x 40 m water grid (finer for short waves; costs time on llvmpipe)")
       ->check(CLI::Range(1, 2048))
       ->capture_default_str();
-  cmd->add_flag("--derived-uniforms", args->derivedUniforms,
-                "per-draw values the fragment shader would compute for every pixel become uniforms computed once per "
-                "draw in double (experimental)");
   addViewFlags(cmd, args->view);
   cmd->add_option("--preset", args->preset, "a preset from the graph's \"presets\" table (e.g. calm, moderate, choppy)");
   cmd->add_flag("--oblique-reflection", args->obliqueReflection,

@@ -1,12 +1,11 @@
 # watergraph_add_shaders(TARGET <target> GRAPHS <graph.json>...
-#                        [TARGETS glsl330 es300 vk450 msl hlsl c-header query-c query-js] [OUTPUT_DIR <dir>]
+#                        [TARGETS glsl330 es300 vk450 msl hlsl query-c query-js] [OUTPUT_DIR <dir>]
 #                        [TEXTURES] [PRESET <name>])
 #
 # Compiles graphs with watergraph at build time, before <target> builds. Each graph gives
 # <dir>/<name>.<target>.vert/.frag (vk450 also .vert.spv/.frag.spv) and <dir>/<name>.manifest.json;
-# c-header gives <dir>/<name>.derived.h, C that computes the shaders' derived uniforms once per
-# draw (add <dir> to the target's include directories to include it); query-c gives
-# <dir>/<name>.query.h and query-js <dir>/<name>.query.js, the surface queries (docs/queries.md);
+# query-c gives <dir>/<name>.query.h and query-js <dir>/<name>.query.js, the surface queries
+# (docs/queries.md; add <dir> to the target's include directories to include the header);
 # a graph is recompiled when its file, a graph it imports (a subgraph), a PNG texture it
 # samples, or the watergraph executable changes (watergraph writes a depfile, <dir>/<name>.d,
 # which the build reads through add_custom_command's DEPFILE). TARGETS defaults
@@ -44,8 +43,8 @@ function(watergraph_add_shaders)
     set(WG_TARGETS glsl330 es300 vk450)
   endif()
   foreach(t IN LISTS WG_TARGETS)
-    if(NOT t MATCHES "^(glsl330|es300|vk450|msl|hlsl|c-header|query-c|query-js)$")
-      message(FATAL_ERROR "watergraph_add_shaders: unknown target '${t}' (glsl330, es300, vk450, msl, hlsl, c-header, query-c, query-js)")
+    if(NOT t MATCHES "^(glsl330|es300|vk450|msl|hlsl|query-c|query-js)$")
+      message(FATAL_ERROR "watergraph_add_shaders: unknown target '${t}' (glsl330, es300, vk450, msl, hlsl, query-c, query-js)")
     endif()
   endforeach()
   if(NOT WG_OUTPUT_DIR)
@@ -77,10 +76,7 @@ function(watergraph_add_shaders)
     string(REGEX REPLACE "\\.json$" "" name "${name}")
     set(outputs ${WG_OUTPUT_DIR}/${name}.manifest.json)
     foreach(t IN LISTS WG_TARGETS)
-      if(t STREQUAL "c-header")
-        list(APPEND outputs ${WG_OUTPUT_DIR}/${name}.derived.h)
-        continue()
-      elseif(t STREQUAL "query-c")
+      if(t STREQUAL "query-c")
         list(APPEND outputs ${WG_OUTPUT_DIR}/${name}.query.h)
         continue()
       elseif(t STREQUAL "query-js")

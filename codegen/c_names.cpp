@@ -96,8 +96,6 @@ std::string cIncludeGuard(std::string_view graphName, std::string_view kind) {
 
 const std::vector<std::string_view>& cHeaderSuffixes() {
   static const std::vector<std::string_view> s = {
-      // codegen/derived_c_header.cpp
-      "parameters", "parameters_default", "draw", "uniforms", "compute_derived",
       // codegen/query_c_header.cpp
       "params", "params_default", "displace", "height", "displace_batch", "height_batch", "surface_at",
       // codegen/query_ocean_c.cpp

@@ -1,6 +1,6 @@
 #pragma once
-// The C identifiers of the generated C headers (`compile --target c-header` and
-// `--target query-c`), unique by construction.
+// The C identifiers of the generated C header (`compile --target query-c`, and its
+// JavaScript twin's names), unique by construction.
 //
 // A name from a graph (a parameter's, a graph file's base name, which may be any bytes)
 // becomes one C identifier by an injective map:
@@ -19,7 +19,7 @@
 //
 // Global names are "wg_" + cIdentifier(graph) + "_" + suffix, one suffix per thing a
 // header declares (cHeaderSuffixes()). The suffixes are tail-free: none ends in "_" + another
-// one, so graph "a"'s "wg_a_compute_derived" can never be graph "a_compute"'s "wg_a_compute_"
+// one, so graph "a"'s "wg_a_displace_batch" can never be graph "a_displace"'s "wg_a_displace_"
 // + a suffix. Include guards are "WG_" + cIdentifier(graph) + "_" + kind + "_H".
 #include <string>
 #include <string_view>
@@ -36,11 +36,11 @@ bool isPlainCName(std::string_view name);
 // "wg_" + cIdentifier(graphName) + "_": what every global name of a graph's headers starts with.
 std::string cGraphPrefix(std::string_view graphName);
 
-// "WG_" + cIdentifier(graphName) + "_" + kind + "_H" ("DERIVED", "QUERY").
+// "WG_" + cIdentifier(graphName) + "_" + kind + "_H" ("QUERY").
 std::string cIncludeGuard(std::string_view graphName, std::string_view kind);
 
-// Every suffix a header appends to cGraphPrefix(), over both headers (tests hold the headers
-// to this list and the list to the tail-free rule).
+// Every suffix a header appends to cGraphPrefix() (tests hold the header to this list and
+// the list to the tail-free rule).
 const std::vector<std::string_view>& cHeaderSuffixes();
 
 }  // namespace wg

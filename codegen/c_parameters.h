@@ -1,8 +1,7 @@
 #pragma once
-// What the generated headers (the derived-uniform C header, the query C header and its
-// JavaScript twin) write alike about numbers and parameters: literals, the clamp a
-// parameter goes through before use (the one the runtime applies to the uniforms it
-// uploads), and the range a comment states.
+// What the generated query headers (the C header and its JavaScript twin) write alike
+// about numbers and parameters: literals, the clamp a parameter goes through before use
+// (the one the runtime applies to the uniforms it uploads), and the range a comment states.
 #include <string>
 
 #include "core/program.h"
@@ -17,7 +16,7 @@ std::string numberLiteral(double x, HeaderLanguage language);
 
 // `source` clamped into the parameter's range as the runtime clamps an uploaded uniform:
 // below the minimum (NaN included) to the minimum, above the maximum to the maximum; with
-// only a maximum, NaN to the maximum. Calls wgd_min, which both headers define.
+// only a maximum, NaN to the maximum. Calls wgd_min, which both define.
 std::string clampedParameter(const ProgramParameter& p, const std::string& source, HeaderLanguage language);
 
 // "[lo, hi]" with "-inf"/"inf" for a missing end, for comments.

@@ -115,8 +115,7 @@ bool emitTargets(const Program& program, const CompileOptions& options, const st
                  const std::string& sourceName, CompileResult& result, Diagnostics& diags) {
   bool ok = true;
   // One plan per distinct tessellation choice; each target wraps its plan in its dialect.
-  TargetPlans plans =
-      planTargets(program, options.targets, sourceName, options.tessellation, options.derivedUniforms);
+  TargetPlans plans = planTargets(program, options.targets, sourceName, options.tessellation);
   for (size_t ti = 0; ti < options.targets.size(); ++ti) {
     Target target = options.targets[ti];
     EmitResult er = emitGlsl(plans.of(ti), target);
@@ -201,8 +200,8 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   // written: a big graph's plans are megabytes that nothing after the manifest reads.
   if (!emitTargets(*program, options, base, sourceName.empty() ? graph.name : sourceName, result, diags))
     return std::nullopt;
-  if (options.wgsl && !addWgslTarget(*program, base, sourceName.empty() ? graph.name : sourceName, options.derivedUniforms,
-                                     result, diags, &result.wgslLineOp))
+  if (options.wgsl &&
+      !addWgslTarget(*program, base, sourceName.empty() ? graph.name : sourceName, result, diags, &result.wgslLineOp))
     return std::nullopt;
   result.manifest.preset = options.preset;
   result.files.push_back({base + ".manifest.json", result.manifest.fileText()});

@@ -21,9 +21,6 @@ struct CompileOptions {
   bool validate = true;  // glslang; off only for tests of the emitter itself
   std::string preset;    // a graph preset whose values become the parameter defaults ("" none)
   bool tessellation = true;  // false: every target draws the mesh as it is (as es300 always does)
-  // Per-draw values the fragment stage would compute per pixel become uniforms the
-  // runtime computes once per draw in double (issue #19; off until every client has them).
-  bool derivedUniforms = false;
   // Build every other preset that sets node options too (checkOtherPresets): on for the
   // CLI's compile and validate; off where one graph is compiled over and over in variants
   // of its knobs (tune, bench), whose graph was checked when the run began.

@@ -32,9 +32,9 @@ void reportWgslMessage(const Program& program, const std::vector<int>& lineOp, i
   }
 }
 
-bool addWgslTarget(const Program& program, const std::string& base, const std::string& sourceName, bool derive,
+bool addWgslTarget(const Program& program, const std::string& base, const std::string& sourceName,
                    CompileResult& result, Diagnostics& diags, std::vector<int>* lineOp) {
-  ShaderPlan plan = planShaders(program, sourceName, /*tessellate=*/false, derive);
+  ShaderPlan plan = planShaders(program, sourceName, /*tessellate=*/false);
   WgslModule module;
   try {
     module = emitWgsl(plan);

@@ -16,7 +16,7 @@ namespace wg {
 // was built from the GLSL plans: the WGSL plan's must be the same). False, with an error
 // (WG045), when the graph cannot be written as WGSL. `lineOp`, when given, receives the
 // module's line -> op map for mapping a validator's messages back to nodes.
-bool addWgslTarget(const Program& program, const std::string& base, const std::string& sourceName, bool derive,
+bool addWgslTarget(const Program& program, const std::string& base, const std::string& sourceName,
                    CompileResult& result, Diagnostics& diags, std::vector<int>* lineOp = nullptr);
 
 // A validator's message about line `line` (1-based) of a module as a diagnostic (`code`) at

@@ -164,9 +164,9 @@ EmitResult emitGlsl(const ShaderPlan& plan, Target target) {
 }
 
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName, EmitMode mode,
-                       bool allowTessellation, bool derive) {
-  if (mode == EmitMode::Probe) return emitGlsl(planProbe(program, sourceName, derive), target);
-  return emitGlsl(planShaders(program, sourceName, tessellates(target, allowTessellation), derive), target);
+                       bool allowTessellation) {
+  if (mode == EmitMode::Probe) return emitGlsl(planProbe(program, sourceName), target);
+  return emitGlsl(planShaders(program, sourceName, tessellates(target, allowTessellation)), target);
 }
 
 std::vector<EmitResult> emitPrograms(const Program& program, const std::vector<Target>& targets,

@@ -43,9 +43,8 @@ enum class EmitMode { Shader, Probe };
 // One target from a plan of its own. `allowTessellation` false draws the mesh as it is
 // even where the target could tessellate (for HLSL through SPIRV-Cross, which has no HLSL
 // tessellation stages).
-// `derive`: with derived uniforms (planShaders, planProbe).
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName,
-                       EmitMode mode = EmitMode::Shader, bool allowTessellation = true, bool derive = false);
+                       EmitMode mode = EmitMode::Shader, bool allowTessellation = true);
 
 // The same as emitProgram per target (EmitMode::Shader), each result byte-identical to
 // it, from one plan per distinct tessellation choice (planTargets).

@@ -1,9 +1,9 @@
 #pragma once
 // Frequency analysis: how often each op of a Program computes a new value. An op that
 // depends only on parameters, time and per-draw builtins (camera, near/far, view and
-// projection, the sun) is the same for every pixel of a draw; the issue of per-draw work
-// leaving the shader (derived uniforms, like the time phases the runtime computes in
-// double today) starts from this classification. Read-only: it changes no Program.
+// projection, the sun) is the same for every pixel of a draw: the stage pass asks which
+// builtins vary over the surface (isPerDrawBuiltin), and --explain-frequency reports the
+// per-draw work the fragment stage repeats per pixel. Read-only: it changes no Program.
 #include <string_view>
 #include <vector>
 

@@ -37,13 +37,9 @@ bool perDrawInFragment(const Program& program, const std::vector<Frequency>& f, 
 
 FrequencyReport frequencyReport(const Program& program) {
   ShaderPlan plan = planShaders(program, program.file, false);
-  return frequencyReportOf(program, plan.stage(ShaderStage::Fragment));
-}
-
-FrequencyReport frequencyReportOf(const Program& program, const PlannedStage* fragment) {
   FrequencyReport r;
   r.ops = analyseFrequency(program);
-  r.fragmentCost = fragmentCosts(program, fragment, r.fragmentTotalCost);
+  r.fragmentCost = fragmentCosts(program, plan.stage(ShaderStage::Fragment), r.fragmentTotalCost);
   const size_t n = program.ops.size();
   for (size_t i = 0; i < n; ++i) {
     r.counts[static_cast<size_t>(r.ops[i])]++;
@@ -64,7 +60,7 @@ FrequencyReport frequencyReportOf(const Program& program, const PlannedStage* fr
       rootPorts[static_cast<size_t>(out.value.index)].insert(out.value.port);
   for (size_t root = 0; root < n; ++root) {
     if (rootPorts[root].empty()) continue;
-    DerivedCandidate c;
+    PerDrawRoot c;
     c.op = static_cast<int>(root);
     c.ports.assign(rootPorts[root].begin(), rootPorts[root].end());
     // The per-draw ops below the root, walked back in reverse program order.
@@ -80,7 +76,7 @@ FrequencyReport frequencyReportOf(const Program& program, const PlannedStage* fr
         c.ops.push_back(static_cast<int>(i));
         c.cost += r.fragmentCost[i];
       }
-    if (c.cost > 0) r.candidates.push_back(std::move(c));
+    if (c.cost > 0) r.roots.push_back(std::move(c));
   }
   return r;
 }
@@ -93,9 +89,9 @@ std::string formatFrequencyReport(const Program& program, const FrequencyReport&
   s += "\n  per-draw ops computed per pixel: " + std::to_string(report.perDrawInFragment) + ", about " +
        std::to_string(report.perDrawCost) + " of the fragment stage's " +
        plural(report.fragmentTotalCost, "operation") + " per pixel\n";
-  if (report.candidates.empty()) return s + "  derived-uniform candidates: none\n";
-  s += "  derived-uniform candidates (per-draw values computed per pixel; operations per pixel, estimated):\n";
-  for (const auto& c : report.candidates) {
+  if (report.roots.empty()) return s + "  per-draw values computed per pixel: none\n";
+  s += "  per-draw values computed per pixel (operations per pixel, estimated):\n";
+  for (const auto& c : report.roots) {
     const Op& op = program.ops[static_cast<size_t>(c.op)];
     std::string ports;
     for (int p : c.ports) {

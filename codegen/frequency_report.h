@@ -1,9 +1,10 @@
 #pragma once
 // What the frequency analysis (codegen/frequency.h) finds in one final Program, for people
-// (`watergraph compile|validate --explain-frequency`) and the benches: how many ops run
-// at each frequency, and the per-draw values the fragment stage recomputes for every
-// pixel — the candidates for derived uniforms — with their estimated cost per pixel
-// (codegen/glsl_cost.h, over the fragment code the planner writes for them).
+// (`watergraph compile|validate --explain-frequency`): how many ops run at each
+// frequency, and the per-draw values the fragment stage recomputes for every pixel — work
+// a graph or node author may want to move into a parameter or a per-draw split of the
+// node (core/derive.h) — with their estimated cost per pixel (codegen/glsl_cost.h, over
+// the fragment code the planner writes for them).
 #include <array>
 #include <string>
 #include <vector>
@@ -15,7 +16,7 @@ namespace wg {
 
 // A maximal per-draw subexpression of the fragment stage: its root is a per-draw op whose
 // value a per-fragment op or a fragment output reads.
-struct DerivedCandidate {
+struct PerDrawRoot {
   int op = -1;             // the root
   std::vector<int> ports;  // the root's outputs read per pixel
   std::vector<int> ops;    // the per-draw ops the fragment stage computes for it, root included, in program order
@@ -30,17 +31,13 @@ struct FrequencyReport {
   int perDrawCost = 0;            // their estimated operations per pixel, each op once
   int fragmentTotalCost = 0;      // the whole fragment stage's (locals and output lines included)
   // Roots whose subexpression costs more than a uniform read (cost > 0), in program order.
-  std::vector<DerivedCandidate> candidates;
+  std::vector<PerDrawRoot> roots;
 };
 
 // `program` must have been through the pass recipe (stages decided).
 FrequencyReport frequencyReport(const Program& program);
-// The same over the fragment stage of a plan already made from `program` without derived
-// uniforms (planShaders, or planProbe, whose one stage runs every op).
-struct PlannedStage;
-FrequencyReport frequencyReportOf(const Program& program, const PlannedStage* fragment);
 
-// The report as text: a line of counts, then one line per candidate. Every line but the
+// The report as text: a line of counts, then one line per root. Every line but the
 // first is indented by two spaces; ends with '\n'.
 std::string formatFrequencyReport(const Program& program, const FrequencyReport& report);
 

@@ -75,12 +75,6 @@ void writeUniform(JsonTextWriter& w, const ManifestUniform& u) {
   const auto& p = u.parameter;
   if (!p && u.builtin == BuiltinUniform::TimePhase) w.memberNumber("angular_frequency", u.angularFrequency);
   if (!p) w.member("builtin", builtinUniformRow(u.builtin).meaning);
-  // Written whole before the object goes on (the writer keeps the last key's view).
-  const nlohmann::json derived = !p && u.derived ? derivedToJson(*u.derived) : nlohmann::json();
-  if (!derived.is_null()) {
-    w.key("derived");
-    w.value(derived);
-  }
   if (p) {
     if (!p->colorSpace.empty()) w.member("color_space", p->colorSpace);
     w.key("default");
@@ -176,24 +170,6 @@ size_t nodesTextBound(const Manifest& m) {
 }
 
 }  // namespace
-
-std::vector<ProgramParameter> manifestParameters(const std::vector<ManifestUniform>& uniforms) {
-  std::vector<ProgramParameter> out;
-  for (const ManifestUniform& u : uniforms) {
-    if (!u.parameter) continue;
-    ProgramParameter& p = out.emplace_back();
-    p.name = u.parameter->name;
-    p.type = u.type;
-    p.defaultValue = Value::ofType(u.type);
-    for (size_t i = 0; i < u.parameter->defaultValue.size() && static_cast<int>(i) < p.defaultValue.size(); ++i)
-      p.defaultValue[static_cast<int>(i)] = u.parameter->defaultValue[i];
-    p.min = u.parameter->min;
-    p.max = u.parameter->max;
-    p.hint = u.parameter->hint;
-    p.description = u.parameter->description;
-  }
-  return out;
-}
 
 const ManifestTarget* Manifest::target(std::string_view name) const {
   for (const auto& t : targets)

@@ -8,7 +8,6 @@
 // process, and only a manifest read from disk goes through fromJson. Scene resources,
 // passes and builtin uniforms are enumerators of core/interface_tables.h, so nothing
 // compares names after the JSON is read.
-#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -16,8 +15,6 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
-
-#include "codegen/derived_program.h"
 
 #include "codegen/emit_glsl.h"
 #include "codegen/target.h"
@@ -71,14 +68,7 @@ struct ManifestUniform {
   std::optional<ManifestParameter> parameter;     // set for a graph parameter
   BuiltinUniform builtin = BuiltinUniform::Time;  // what it holds otherwise
   double angularFrequency = 0;                    // TimePhase: mod(omega * time, 2 pi)
-  // Derived: the program computing it once per draw, its parameters indexed as
-  // manifestParameters lists them; "derived" in the file (derivedToJson).
-  std::shared_ptr<const DerivedValue> derived;
 };
-
-// The graph parameters of a manifest's parameter uniforms, in uniform order (value,
-// range, hint): the list the derived programs of that manifest read parameters from.
-std::vector<ProgramParameter> manifestParameters(const std::vector<ManifestUniform>& uniforms);
 
 struct ManifestTessellation {
   TessellationSettings settings;

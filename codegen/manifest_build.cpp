@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "core/color_parameters.h"
-#include "nodes/registry.h"
 
 namespace wg {
 namespace {
@@ -28,7 +27,6 @@ ManifestUniform manifestUniform(const Program& program, const UniformInfo& u) {
   } else {
     m.builtin = u.builtin;
     m.angularFrequency = u.omega;
-    m.derived = u.derived;
   }
   return m;
 }
@@ -82,17 +80,6 @@ Manifest buildManifest(const Program& program, const TargetPlans& plans, const s
   const ShaderPlan& first = plans.targets.empty() ? noTarget : plans.of(0);
   m.attributes = first.attributes;
   for (const auto& u : first.uniforms) m.uniforms.push_back(manifestUniform(program, u));
-  // Derived programs index the manifest's parameters (manifestParameters), not the
-  // Program's: through their manifest form, so a manifest built here holds what one read
-  // from its file does.
-  const std::vector<ProgramParameter> parameters = manifestParameters(m.uniforms);
-  for (auto& u : m.uniforms) {
-    if (!u.derived) continue;
-    std::string error;
-    auto d = derivedFromJson(derivedToJson(*u.derived), defaultRegistry(), parameters, error);
-    if (!d) throw std::logic_error("manifest: derived uniform " + u.name + " does not read back: " + error);
-    u.derived = std::make_shared<const DerivedValue>(std::move(*d));
-  }
   m.varyings = first.varyings;
   m.functions = first.functions;
   m.textures = first.textures;

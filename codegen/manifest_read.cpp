@@ -9,7 +9,6 @@
 #include "codegen/manifest.h"
 
 #include "core/ocean_settings.h"
-#include "nodes/registry.h"
 
 namespace wg {
 namespace {
@@ -204,16 +203,17 @@ ManifestUniform uniformOf(const json& u) {
     return out;
   }
   const std::string meaning = text(u, "builtin", what);
+  // A manifest written by the removed --derived-uniforms switch: its shaders read values
+  // that no runtime computes any more (each shader now computes them itself).
+  if (meaning == "derived")
+    fail(what + " is a derived uniform (\"builtin\": \"derived\"), which watergraph no longer has: "
+                "compile the graph again");
   auto builtin = parseBuiltinUniform(meaning);
   if (!builtin) fail(what + " asks for builtin '" + meaning + "', which is not a builtin uniform");
   out.builtin = *builtin;
   if (out.builtin == BuiltinUniform::TimePhase) {
     onlyMembers(u, {"name", "type", "stages", "builtin", "angular_frequency"}, what);
     out.angularFrequency = number(u, "angular_frequency", what);
-  } else if (out.builtin == BuiltinUniform::Derived) {
-    // Its program is read once every parameter uniform is known (derivedOf).
-    onlyMembers(u, {"name", "type", "stages", "builtin", "derived"}, what);
-    if (!member(u, "derived")) fail(what + " is a derived uniform without \"derived\"");
   } else {
     onlyMembers(u, {"name", "type", "stages", "builtin"}, what);
   }
@@ -387,20 +387,6 @@ Manifest Manifest::fromJson(const json& j) {
   }
   for (const auto& a : objects(j, "attributes")) m.attributes.push_back(attributeOf(a));
   for (const auto& u : objects(j, "uniforms")) m.uniforms.push_back(uniformOf(u));
-  // Derived programs name parameters, which any parameter uniform may hold.
-  const std::vector<ProgramParameter> parameters = manifestParameters(m.uniforms);
-  size_t at = 0;
-  for (const auto& u : objects(j, "uniforms")) {
-    ManifestUniform& mu = m.uniforms[at++];
-    if (mu.parameter || mu.builtin != BuiltinUniform::Derived) continue;
-    std::string error;
-    auto d = derivedFromJson(*member(u, "derived"), defaultRegistry(), parameters, error);
-    if (!d) fail("uniform " + mu.name + "'s \"derived\": " + error);
-    if (d->type != mu.type)
-      fail("uniform " + mu.name + " of type " + std::string(typeName(mu.type)) + " holds a derived value of type " +
-           std::string(typeName(d->type)));
-    mu.derived = std::make_shared<const DerivedValue>(std::move(*d));
-  }
   for (const auto& v : objects(j, "varyings")) m.varyings.push_back(varyingOf(v));
   if (const json* functions = member(j, "functions")) m.functions = texts(*functions, "the manifest's \"functions\"");
   for (const auto& t : objects(j, "textures")) m.textures.push_back(textureOf(t));

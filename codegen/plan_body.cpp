@@ -210,10 +210,8 @@ void BodyWriter::writeOps(StageBody& w) {
     if (r.kind != ValueRef::Kind::Op) return;
     used[portBase_[static_cast<size_t>(r.index)] + static_cast<size_t>(r.port)] = 1;
   };
-  // The fragment stage reads a derived uniform instead of computing its cone.
-  auto skipped = [&](size_t i) { return w.stage == kFragmentStage && derived_ && derived_->skip[i]; };
   for (size_t i = 0; i < program_.ops.size(); ++i)
-    if ((program_.ops[i].stage & w.stage) && !skipped(i))
+    if (program_.ops[i].stage & w.stage)
       for (const auto& in : program_.ops[i].inputs) use(in);
   for (const auto& out : program_.outputs)
     if (outputSlotRow(out.slot).stage == w.stage) use(out.value);
@@ -224,7 +222,7 @@ void BodyWriter::writeOps(StageBody& w) {
 
   for (size_t i = 0; i < program_.ops.size(); ++i) {
     const Op& op = program_.ops[i];
-    if (!(op.stage & w.stage) || skipped(i)) continue;
+    if (!(op.stage & w.stage)) continue;
     PlanOpContext ctx(*this, w, static_cast<int>(i));
     ctx.outputs.assign(op.outputTypes.size(), "");
     registered.clear();
@@ -273,11 +271,6 @@ std::string BodyWriter::valueExpr(StageBody& w, const ValueRef& r, Type want) {
     case ValueRef::Kind::Builtin: e = builtinExpr(w, static_cast<Builtin>(r.index)); break;
     case ValueRef::Kind::Op: {
       const Op& op = program_.ops[static_cast<size_t>(r.index)];
-      if (int k = w.stage == kFragmentStage && derived_ ? derived_->valueOf(r.index, r.port) : -1; k >= 0) {
-        e = std::string(builtinUniformRow(BuiltinUniform::Derived).glslName) + std::to_string(k);
-        if (w.derived.insert(k).second) w.noteRegistered(e, [&w, k] { w.derived.erase(k); });
-        break;
-      }
       e = w.stage == kFragmentStage && !(op.stage & kFragmentStage) ? varyingName(r.index, r.port) : opOutput(w, r.index, r.port);
       break;
     }
@@ -433,22 +426,10 @@ std::vector<UniformInfo> BodyWriter::uniforms(const StageBody* vert, const Stage
     if (stages) out.push_back({std::string(row.glslName), row.type, -1, row.id, stages});
   }
   out.insert(out.end(), phases_.begin(), phases_.end());
-  std::set<int> derivedParameters;
-  for (int k : frag.derived) {
-    const auto& d = derived_->values[static_cast<size_t>(k)];
-    UniformInfo u{std::string(builtinUniformRow(BuiltinUniform::Derived).glslName) + std::to_string(k), d->type, -1,
-                  BuiltinUniform::Derived, kFragmentStage};
-    u.derived = d;
-    out.push_back(std::move(u));
-    for (const Op& op : d->program.ops)
-      for (const auto& in : op.inputs)
-        if (in.kind == ValueRef::Kind::Param) derivedParameters.insert(in.index);
-  }
   for (size_t i = 0; i < program_.parameters.size(); ++i) {
     unsigned stages = (vert && vert->parameters.count(static_cast<int>(i)) ? kVertexStage : 0u) |
                       (frag.parameters.count(static_cast<int>(i)) ? kFragmentStage : 0u);
-    if (stages || derivedParameters.count(static_cast<int>(i)))
-      out.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), {}, stages});
+    if (stages) out.push_back({paramNames_[i], program_.parameters[i].type, static_cast<int>(i), {}, stages});
   }
   return out;
 }

@@ -8,7 +8,6 @@
 #include <string>
 #include <vector>
 
-#include "codegen/plan_derived.h"
 #include "codegen/shader_plan.h"
 #include "codegen/value_facts.h"
 #include "core/program.h"
@@ -24,7 +23,6 @@ struct StageBody {
   std::set<Builtin> builtins;
   std::set<int> parameters;
   std::set<BuiltinUniform> builtinUniforms;
-  std::set<int> derived;  // derived uniforms read (DerivedPlan indices)
   // Op outputs whose expression is already a name (a builtin, another temporary): used
   // directly instead of copying into a new local. By the writer's port index ("" none; a
   // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
@@ -62,10 +60,6 @@ class BodyWriter {
   // `knowFacts` false: the builtins and parameters may hold anything (probe cases), so
   // nodes are told nothing about their inputs.
   BodyWriter(const Program& program, bool knowFacts, BuiltinNamer namer);
-  // The fragment stage reads these derived uniforms instead of computing their cones;
-  // `derived` outlives the writer.
-  void useDerived(const DerivedPlan& derived) { derived_ = &derived; }
-
   // Every op of body.stage, one local per used output that is not already a name.
   void writeOps(StageBody& body);
   std::string valueExpr(StageBody& body, const ValueRef& r, Type want);
@@ -82,9 +76,7 @@ class BodyWriter {
   std::vector<OceanInfo> oceans() const;
 
   // The interface the bodies made: builtin uniforms in table order, then the time phases,
-  // then the derived uniforms read, then the parameters `vertex` (may be null) and
-  // `fragment` read, and those only derived uniforms read (declared in no stage: the
-  // runtime needs their value and range).
+  // then the parameters `vertex` (may be null) and `fragment` read.
   std::vector<UniformInfo> uniforms(const StageBody* vertex, const StageBody& fragment) const;
   // Node textures by first use, then scene textures in the manifest's resource order;
   // vk450 bindings follow the uniform block's.
@@ -102,7 +94,6 @@ class BodyWriter {
   bool knowFacts_;
   ValueFacts facts_;  // empty unless knowFacts_
   BuiltinNamer namer_;
-  const DerivedPlan* derived_ = nullptr;
   std::vector<std::string> opNames_;
   std::vector<size_t> portBase_;  // op i's outputs are port indices portBase_[i] ... portBase_[i + 1] - 1
   std::vector<std::string> paramNames_;

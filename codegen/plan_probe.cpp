@@ -34,21 +34,13 @@ std::vector<std::string> probeLocals(const StageBody& w) {
 
 }  // namespace
 
-ShaderPlan planProbe(const Program& program, std::string sourceName, bool derive) {
-  DerivedPlan derived;
-  if (derive) {
-    ShaderPlan plain = planProbe(program, sourceName, false);
-    derived = planDerived(program, plain.stage(ShaderStage::Fragment));
-    if (derived.values.empty()) return plain;
-  }
+ShaderPlan planProbe(const Program& program, std::string sourceName) {
   ShaderPlan plan;
   plan.kind = ShaderPlan::Kind::Probe;
   plan.sourceName = std::move(sourceName);
   plan.graphName = program.graphName;
   // Probe cases hand builtins and parameters any value: no facts about them.
   BodyWriter writer(program, false, probeBuiltin);
-  if (derive) writer.useDerived(derived);
-  plan.derived = derived.values;
   StageBody frag(kFragmentStage);
   writer.writeOps(frag);
   if (program.outputs.empty()) throw std::logic_error("emit: a probe program needs an output");

@@ -69,14 +69,7 @@ std::vector<std::string> fragmentLocals(const ShaderPlan& plan, const StageBody&
 
 }  // namespace
 
-ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate, bool derive) {
-  // Derived uniforms: the costs come from the fragment stage as planned without them.
-  DerivedPlan derived;
-  if (derive) {
-    ShaderPlan plain = planShaders(program, sourceName, tessellate, false);
-    derived = planDerived(program, plain.stage(ShaderStage::Fragment));
-    if (derived.values.empty()) return plain;
-  }
+ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate) {
   ShaderPlan plan;
   plan.sourceName = std::move(sourceName);
   plan.graphName = program.graphName;
@@ -84,8 +77,6 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   if (tessellate) plan.tessellation = requestedTessellation(program);
   const bool deferred = plan.kind == ShaderPlan::Kind::Deferred;
   BodyWriter writer(program, true, [&plan](StageBody& w, Builtin b) { return surfaceBuiltin(plan, w, b); });
-  if (derive) writer.useDerived(derived);
-  plan.derived = derived.values;
 
   StageBody frag(kFragmentStage);
   writer.writeOps(frag);
@@ -174,7 +165,7 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
 }
 
 TargetPlans planTargets(const Program& program, const std::vector<Target>& targets, const std::string& sourceName,
-                        bool allowTessellation, bool derive) {
+                        bool allowTessellation) {
   TargetPlans out;
   out.targets = targets;
   // At most two plans: the geometry stage tessellated or not.
@@ -185,7 +176,7 @@ TargetPlans planTargets(const Program& program, const std::vector<Target>& targe
     std::optional<size_t>& at = byChoice[tess ? 1 : 0];
     if (!at) {
       at = out.plans.size();
-      out.plans.push_back(planShaders(program, sourceName, tess, derive));
+      out.plans.push_back(planShaders(program, sourceName, tess));
     }
     out.planOf.push_back(*at);
   }

@@ -1,8 +1,8 @@
 // The C form of a surface query (codegen/query_header.h).
 #include <cstdio>
 
+#include "codegen/c_math_formulas.h"
 #include "codegen/c_names.h"
-#include "codegen/derived_vocabulary.h"
 #include "codegen/query_body.h"
 #include "codegen/query_header.h"
 #include "codegen/query_ocean.h"
@@ -95,7 +95,7 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += "#ifndef " + guard + "\n#define " + guard + "\n\n#include <math.h>\n#include <stddef.h>\n";
   h += sea ? "#include <stdint.h>\n\n" : "\n";
   h += "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n";
-  h += std::string(derivedCHelpers()) + queryCHelpers() + "\n";
+  h += std::string(cMathHelpers()) + queryCHelpers() + "\n";
   if (sea) h += queryOceanC(g, *body->ocean);
 
   h += "/* The graph's parameters a host may change. Values outside a parameter's range are clamped\n";

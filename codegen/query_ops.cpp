@@ -3,7 +3,7 @@
 #include <map>
 #include <set>
 
-#include "codegen/derived_vocabulary.h"
+#include "codegen/c_math_formulas.h"
 #include "core/interface_tables.h"
 #include "core/number_format.h"
 #include "nodes/gerstner_waves.h"

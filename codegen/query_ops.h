@@ -2,8 +2,8 @@
 // Each node type's form in a surface query: its value and its derivatives along x0, z0
 // and t (forward differentiation), written as expressions that are valid C and JavaScript
 // alike (the JavaScript module defines the <math.h> names and wgd_/wgq_ helpers the C
-// header has). The values follow each node's double eval exactly (the same formulas as
-// the derived-uniform header, codegen/derived_vocabulary.h, and gerstnerReference), so
+// header has). The values follow each node's double eval exactly (the component-wise
+// formulas of codegen/c_math_formulas.h, and gerstnerReference), so
 // the query agrees with the CPU backend to rounding; the derivatives give the surface's
 // normal and velocity and the Newton steps of the height inversion.
 #include <array>

@@ -21,7 +21,6 @@
 namespace wg {
 
 struct GlslItem;
-struct DerivedValue;
 
 struct UniformInfo {
   std::string name;  // GLSL name
@@ -30,9 +29,6 @@ struct UniformInfo {
   BuiltinUniform builtin = BuiltinUniform::Time;  // what it holds, when parameter < 0
   unsigned stages = 0;      // where it is declared
   double omega = 0;         // time_phase: the value is mod(omega * time, 2 pi)
-  // Derived: the program computing it once per draw (codegen/derived_program.h), over
-  // Program::parameters by index.
-  std::shared_ptr<const DerivedValue> derived;
 };
 
 struct AttributeInfo {
@@ -112,10 +108,7 @@ struct ShaderPlan {
   // The interface, the same in every target.
   std::vector<AttributeInfo> attributes;
   std::vector<VaryingInfo> varyings;
-  std::vector<UniformInfo> uniforms;   // builtins in table order, time phases, derived, parameters
-  // The derived uniforms' programs, in the order of their "u_derived<k>" uniforms (empty
-  // unless planned with derived uniforms).
-  std::vector<std::shared_ptr<const DerivedValue>> derived;
+  std::vector<UniformInfo> uniforms;   // builtins in table order, time phases, parameters
   std::vector<TextureInfo> textures;   // node textures by first use, ocean maps, then scene textures
   std::vector<OceanInfo> oceans;       // by first use; each runs RenderPass::OceanSimulation's passes
   std::vector<std::string> functions;  // library items of all stages, in library order
@@ -134,9 +127,7 @@ bool tessellates(Target target, bool allowed);
 
 // The vertex and fragment stages of a drawn surface, or of the deferred pass.
 // `tessellate`: tessellate the geometry stage where a vertex-stage node asks for it.
-// `derive`: the per-draw values the fragment stage would compute per pixel at more than
-// kDerivedMinCost operations become derived uniforms (codegen/plan_derived.h).
-ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate, bool derive = false);
+ShaderPlan planShaders(const Program& program, std::string sourceName, bool tessellate);
 
 // Probe: one fragment shader for `watergraph probe`, run on a full-screen triangle the
 // runtime supplies. Every op runs in it; the surface builtins (uv, world position, normal,
@@ -144,8 +135,7 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
 // (UniformInfo::builtin says which), taken verbatim from the case, so a case can hand a
 // node any value, a zero-length normal included; the program's first output, padded with
 // zeros to a vec4, is o_color.
-// `derive`: as planShaders, so a probe runs the split the runtime draws with.
-ShaderPlan planProbe(const Program& program, std::string sourceName, bool derive = false);
+ShaderPlan planProbe(const Program& program, std::string sourceName);
 
 // The plans for several targets: one per distinct tessellation choice, shared by every
 // target that tessellates alike.
@@ -156,7 +146,7 @@ struct TargetPlans {
   const ShaderPlan& of(size_t targetIndex) const { return plans[planOf[targetIndex]]; }
 };
 TargetPlans planTargets(const Program& program, const std::vector<Target>& targets, const std::string& sourceName,
-                        bool allowTessellation = true, bool derive = false);
+                        bool allowTessellation = true);
 
 // Sets plan.resources and plan.passes: the ocean simulation when plan.oceans is not empty,
 // the scene resources the program reads and the passes producing them (table order), then

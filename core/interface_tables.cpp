@@ -63,7 +63,6 @@ const BuiltinUniformRow kBuiltinUniforms[] = {
     {U::ProbePixel, "probe_pixel", "u_probe_pixel", Type::Vec2, std::nullopt, {}},
     {U::SunDirection, "sun_direction", "u_sun_direction", Type::Vec3, Builtin::SunDirection, {"sun_direction"}},
     {U::TimePhase, "time_phase", "u_phase", Type::Float, std::nullopt, {"time"}},
-    {U::Derived, "derived", "u_derived", Type::Float, std::nullopt, {"time", "camera", "camera_position", "sun_direction"}},
 };
 
 const OutputSlotRow kOutputSlots[] = {

@@ -67,10 +67,6 @@ enum class BuiltinUniform {
   ProbePixel,
   SunDirection,        // vec3, unit, towards the sun
   TimePhase,           // float, mod(omega * time, 2 pi) in double; "u_phase<k>", one per omega
-  // A per-draw value of the graph the runtime computes once per draw in double from the
-  // parameters and the per-draw builtins (codegen/derived_program.h): "u_derived<k>", its
-  // type that of the value.
-  Derived,
 };
 
 struct BuiltinRow {

@@ -65,8 +65,8 @@ struct PortSpec {
   std::string doc;
   // A per-draw input the node computes for itself: resolve fills it with ops of their own
   // through NodeSpec::derive, so the part of the node that is the same for every pixel is
-  // visible to the frequency analysis (and to derived uniforms) as ops. A graph file cannot
-  // connect it; the docs list it apart.
+  // visible to the frequency analysis as ops. A graph file cannot connect it; the docs
+  // list it apart.
   bool derived = false;
   // A colour input (a water, light, haze or fallback colour; not a coefficient such as
   // absorption per metre): a literal a graph file gives it, and its default, are authored

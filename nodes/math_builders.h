@@ -72,7 +72,7 @@ inline auto alwaysWithin(double lo, double hi) {
 }
 
 // The component a swizzle letter names (x/r 0, y/g 1, z/b 2, w/a 3), -1 for another
-// character: the swizzle node, and the C the derived-uniform header writes for it.
+// character: the swizzle node, and the surface query's form of it (codegen/query_ops.cpp).
 inline int swizzleIndex(char c) {
   switch (c) {
     case 'x': case 'r': return 0;

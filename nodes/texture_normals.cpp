@@ -313,12 +313,10 @@ NodeSpec dudvDistortionNode() {
   };
   // fract(time * speed) in float32 at t = 524288 s: ~1e-3 texture units of scroll. Past
   // that the product's rounding grows with it (at t = 1e7 s, speed 0.03: the scroll moves in
-  // steps of 1/32): the conditioning of time * speed, one rounding (exact with derived
-  // uniforms, computed in double).
+  // steps of 1/32): the conditioning of time * speed, one rounding.
   s.tolerance = 1e-3;
   s.conditionRoundings = 1;
-  s.conditionWhy = "grows with time * wave_speed: the scroll fract(time * wave_speed) is formed in float32 in the shader "
-                   "(in double with --derived-uniforms)";
+  s.conditionWhy = "grows with time * wave_speed: the scroll fract(time * wave_speed) is formed in float32 in the shader";
   s.hardCases = {
       {"time 524288 s", {{"time", Value::scalar(524288)}}, {}, "finite, |offset| <= 0.03", -0.03, 0.03, "offset"},
       {"time 13107 s", {{"time", Value::scalar(13107)}}, {}, "finite, |offset| <= 0.03", -0.03, 0.03, "offset"},

@@ -34,7 +34,6 @@ std::vector<float> builtinUniformValue(BuiltinUniform builtin, double angularFre
       v = {static_cast<float>(phase)};
       break;
     }
-    case BuiltinUniform::Derived: break;  // derivedUniformValue: it needs its program and the parameters
     case BuiltinUniform::ProbeUv:
     case BuiltinUniform::ProbeWorldPosition:
     case BuiltinUniform::ProbeNormal:
@@ -45,28 +44,6 @@ std::vector<float> builtinUniformValue(BuiltinUniform builtin, double angularFre
     case BuiltinUniform::ProbePixel: break;  // refused when the manifest is read
   }
   return v;
-}
-
-std::vector<float> derivedUniformValue(const DerivedValue& derived, const FrameValues& f,
-                                       const std::vector<Value>& parameters) {
-  // The builtins as the shaders get them (the same floats), read in double.
-  auto fromFloats = [](Type t, const std::vector<float>& v) {
-    Value out = Value::ofType(t);
-    for (int i = 0; i < out.size() && static_cast<size_t>(i) < v.size(); ++i) out[i] = v[static_cast<size_t>(i)];
-    return out;
-  };
-  auto row = [&](BuiltinUniform u) { return fromFloats(builtinUniformRow(u).type, builtinUniformValue(u, 0, f)); };
-  EvalEnvironment env;
-  env.time = Value::scalar(f.time);  // the frame's double seconds: a scroll fract(t * speed) stays exact at large t
-  env.cameraPosition = row(BuiltinUniform::CameraPosition);
-  env.cameraNearFar = row(BuiltinUniform::CameraNearFar);
-  env.view = row(BuiltinUniform::View);
-  env.projection = row(BuiltinUniform::Projection);
-  env.sunDirection = row(BuiltinUniform::SunDirection);
-  Value v = evaluateDerived(derived, env, parameters);
-  std::vector<float> out;
-  for (int i = 0; i < v.size(); ++i) out.push_back(static_cast<float>(v[i]));
-  return out;
 }
 
 void clampIntoRange(std::vector<float>& value, float lo, float hi) {

@@ -8,7 +8,6 @@
 
 #include <glm/glm.hpp>
 
-#include "codegen/derived_program.h"
 #include "core/interface_tables.h"
 #include "runtime/scene.h"
 
@@ -18,19 +17,12 @@ struct FrameValues {
   Camera camera;
   glm::mat4 view{1.0f}, projection{1.0f}, viewProjection{1.0f};  // as the shaders get them
   glm::vec3 sun{0.0f, 1.0f, 0.0f};
-  double time = 0;  // seconds: the phases and derived values take it in double; u_time is its float
+  double time = 0;  // seconds: the phases take it in double; u_time is its float
   int width = 1, height = 1;
 };
 
 // Column-major matrices; empty for a builtin only `watergraph probe` sets (per case).
 std::vector<float> builtinUniformValue(BuiltinUniform builtin, double angularFrequency, const FrameValues& frame);
-
-// A derived uniform's value for this frame (issue #19): its program evaluated in double
-// with the frame's time, camera (near/far clamped as for u_camera_near_far), view,
-// projection and sun, and `parameters` (the manifest's parameter uniforms in order, see
-// manifestParameters, each already clamped into its range), rounded to float.
-std::vector<float> derivedUniformValue(const DerivedValue& derived, const FrameValues& frame,
-                                       const std::vector<Value>& parameters);
 
 // Into [lo, hi] per component; NaN becomes lo (or hi when lo is unbounded): the generated
 // shader may rely on the range (codegen/value_facts.h).

@@ -29,9 +29,7 @@ VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
     } else {
       u.builtin = m.builtin;
       u.angularFrequency = m.angularFrequency;
-      u.derived = m.derived;
-      if (u.builtin == BuiltinUniform::Derived && !u.derived) manifestError("derived uniform " + u.name + " has no program");
-      if (!u.derived && builtinUniformValue(u.builtin, u.angularFrequency, FrameValues{}).empty())
+      if (builtinUniformValue(u.builtin, u.angularFrequency, FrameValues{}).empty())
         manifestError("uniform " + u.name + " asks for builtin '" + std::string(builtinUniformRow(u.builtin).meaning) +
                       "', which the runtime does not provide");
     }
@@ -112,20 +110,9 @@ VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
 void VkWaterBindings::writeUniforms(const FrameValues& frame) {
   if (blockSize_ == 0) return;
   std::vector<unsigned char> bytes(blockSize_, 0);
-  // Derived programs read the parameters' current values in manifest order (manifestParameters).
-  std::vector<Value> parameters;
-  for (const Uniform& u : uniforms_) {
-    if (!u.isParameter) continue;
-    Value v = Value::ofType(u.type);
-    for (int i = 0; i < v.size() && static_cast<size_t>(i) < u.value.size(); ++i) v[i] = u.value[static_cast<size_t>(i)];
-    parameters.push_back(v);
-  }
-  for (const Uniform& u : uniforms_) {
+  for (const Uniform& u : uniforms_)
     writeBlockMember(bytes.data(), u.member, u.type,
-                     u.isParameter ? u.value
-                     : u.derived   ? derivedUniformValue(*u.derived, frame, parameters)
-                                   : builtinUniformValue(u.builtin, u.angularFrequency, frame));
-  }
+                     u.isParameter ? u.value : builtinUniformValue(u.builtin, u.angularFrequency, frame));
   block_.write(bytes.data(), bytes.size());
 }
 

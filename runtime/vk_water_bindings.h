@@ -46,7 +46,6 @@ class VkWaterBindings {
     bool isParameter = false;
     BuiltinUniform builtin = BuiltinUniform::Time;
     double angularFrequency = 0;
-    std::shared_ptr<const DerivedValue> derived;  // derived: computed every frame from the parameters
     std::vector<float> value;  // a parameter's, clamped into its range
     BlockMember member;
   };

@@ -21,10 +21,8 @@ void WaterUniforms::setup(const Manifest& manifest, const std::vector<GLuint>& p
     } else {
       u.builtin = m.builtin;
       u.angularFrequency = m.angularFrequency;
-      u.derived = m.derived;
-      if (u.builtin == BuiltinUniform::Derived && !u.derived) manifestError("derived uniform " + u.name + " has no program");
       // The runtime provides a builtin when it has a value for it (not the probe's per-case ones).
-      if (!u.derived && builtinValue(u, frame).empty())
+      if (builtinValue(u, frame).empty())
         manifestError("uniform " + u.name + " asks for builtin '" + std::string(builtinUniformRow(u.builtin).meaning) +
                       "', which the runtime does not provide");
     }
@@ -34,7 +32,7 @@ void WaterUniforms::setup(const Manifest& manifest, const std::vector<GLuint>& p
     }
     uniforms_.push_back(std::move(u));
   }
-  // Errors now, not at the first frame (derived uniforms need every parameter first).
+  // Errors now, not at the first frame.
   apply(frame);
 }
 
@@ -55,19 +53,7 @@ bool WaterUniforms::setParameter(const std::string& parameter, const std::vector
 }
 
 std::vector<float> WaterUniforms::builtinValue(const WaterUniform& u, const FrameValues& frame) const {
-  if (u.derived) return derivedUniformValue(*u.derived, frame, parameterValues());
   return builtinUniformValue(u.builtin, u.angularFrequency, frame);
-}
-
-std::vector<Value> WaterUniforms::parameterValues() const {
-  std::vector<Value> out;
-  for (const auto& u : uniforms_) {
-    if (u.parameter.empty()) continue;
-    Value v = Value::ofType(u.type);
-    for (int i = 0; i < v.size() && static_cast<size_t>(i) < u.value.size(); ++i) v[i] = u.value[static_cast<size_t>(i)];
-    out.push_back(v);
-  }
-  return out;
 }
 
 void WaterUniforms::set(const WaterUniform& u, const std::vector<float>& v) const {

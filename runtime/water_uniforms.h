@@ -4,7 +4,6 @@
 // from the camera, time and sun every frame (runtime/uniform_values.h), set in every water
 // program that uses them.
 #include <limits>
-#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,7 +20,6 @@ struct WaterUniform {
   Type type = Type::Float;
   BuiltinUniform builtin = BuiltinUniform::Time;  // when parameter is ""
   double angularFrequency = 0;                    // time_phase
-  std::shared_ptr<const DerivedValue> derived;    // derived: computed every frame from the parameters
   std::vector<float> value;                       // parameter values
   // The parameter's manifest min/max: every value is clamped into them on upload, as the
   // generated shader may rely on the range (codegen/value_facts.h).
@@ -42,10 +40,6 @@ class WaterUniforms {
 
  private:
   std::vector<float> builtinValue(const WaterUniform& u, const FrameValues& frame) const;
-  // The parameters' current (clamped) values in manifest order, as derived programs read
-  // them (manifestParameters): what setParameter last gave, so the editor's changes reach
-  // the derived uniforms at the next frame without a recompile.
-  std::vector<Value> parameterValues() const;
   void set(const WaterUniform& u, const std::vector<float>& v) const;
 
   std::vector<WaterUniform> uniforms_;

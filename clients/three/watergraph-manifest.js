@@ -18,9 +18,9 @@ const TOP_LEVEL = setOf(['format', 'graph', 'description', 'preset', 'imports', 
   'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color', 'oceans']);
 // Components of each uniform type the client uploads.
 export const UNIFORM_COMPONENTS = table({ float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 });
-// The builtins the client computes (watergraph-three.js BUILTIN_INITIAL, time_phase and derived).
+// The builtins the client computes (watergraph-three.js BUILTIN_INITIAL and time_phase).
 export const CLIENT_BUILTINS = setOf(['model', 'view_projection', 'view', 'projection', 'camera_position', 'time', 'time_phase',
-  'viewport_size', 'camera_near_far', 'sun_direction', 'derived']);
+  'viewport_size', 'camera_near_far', 'sun_direction']);
 const STAGES = setOf(['vertex', 'fragment']);
 const SCENE_RESOURCES = setOf(['scene_depth', 'scene_color', 'planar_reflection', 'refraction', 'environment', 'underwater']);
 const SCALABLE_PASSES = setOf(['depth_prepass', 'planar_reflection', 'refraction', 'scene_color_copy', 'deferred_water']);
@@ -30,9 +30,6 @@ const SAMPLER_CHOICES = table({
   filter: setOf(['nearest', 'linear', 'mipmapped']),
   color_space: setOf(['linear', 'srgb']),
 });
-const DERIVED_TYPES = setOf(['float', 'vec2', 'vec3', 'vec4', 'mat4', 'invalid']);
-const DERIVED_BUILTINS = setOf(['time', 'camera_position', 'camera_near_far', 'view', 'projection', 'sun_direction']);
-const COMPARE_OPS = setOf(['less', 'less_equal', 'greater', 'greater_equal', 'equal', 'not_equal']);
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
 
 export const has = (object, key) => Object.prototype.hasOwnProperty.call(object, key);
@@ -141,7 +138,7 @@ export function checkManifest(manifest) {
 
   const uniforms = has(manifest, 'uniforms') ? list(manifest.uniforms, 'uniforms') : [];
   const names = new Set();
-  const parameters = new Map();  // parameter name -> components
+  const parameters = new Set();  // parameter names
   const unique = (name, field) => {
     if (names.has(name)) fail(field, 'names a uniform or texture twice', name);
     names.add(name);
@@ -169,22 +166,20 @@ export function checkManifest(manifest) {
       optional(u, 'hint', text, field);
       optional(u, 'description', text, field);
       if (has(u, 'color_space') && u.color_space !== 'srgb') fail(`${field}.color_space`, "must be 'srgb' or absent", u.color_space);
-      parameters.set(name, UNIFORM_COMPONENTS[u.type]);
+      parameters.add(name);
       return;
     }
+    // A manifest written by the removed --derived-uniforms switch: its shader reads values
+    // nothing computes any more.
+    if (u.builtin === 'derived')
+      fail(`${field}.builtin`, "is 'derived', a uniform watergraph no longer has: compile the graph again");
     const builtin = oneOf(u.builtin, CLIENT_BUILTINS, `${field}.builtin`);
     if (builtin === 'time_phase') {
       members(u, setOf(['name', 'type', 'stages', 'builtin', 'angular_frequency']), field);
       finite(u.angular_frequency, `${field}.angular_frequency`);
-    } else if (builtin === 'derived') {
-      members(u, setOf(['name', 'type', 'stages', 'builtin', 'derived']), field);
     } else {
       members(u, setOf(['name', 'type', 'stages', 'builtin']), field);
     }
-  });
-  // Derived programs may read any parameter uniform, wherever it is listed.
-  uniforms.forEach((u, i) => {
-    if (u.builtin === 'derived') checkDerived(u.derived, `uniforms[${i}].derived`, parameters, { fail, object, list, text, natural, oneOf });
   });
 
   if (has(manifest, 'textures'))
@@ -217,49 +212,4 @@ export function checkManifest(manifest) {
 
   if (has(manifest, 'color')) object(manifest.color, 'color');  // its members: manifestView (watergraph-output.js)
   return manifest;
-}
-
-// A derived uniform's program (docs/integration.md, "Derived uniforms"): the shape
-// compileDerived (watergraph-derived.js) relies on; what each node type computes is its own.
-function checkDerived(program, field, parameters, { fail, object, list, text, natural, oneOf }) {
-  object(program, field);
-  if (has(program, 'type')) oneOf(program.type, DERIVED_TYPES, `${field}.type`);
-  const ops = list(program.ops, `${field}.ops`);
-  ops.forEach((op, k) => {
-    const at = `${field}.ops[${k}]`;
-    object(op, at);
-    text(op.type, `${at}.type`);
-    if (has(op, 'node')) text(op.node, `${at}.node`);
-    for (const key of ['input_types', 'output_types'])
-      list(op[key], `${at}.${key}`).forEach((t, j) => oneOf(t, DERIVED_TYPES, `${at}.${key}[${j}]`));
-    if (has(op, 'options')) {
-      const options = object(op.options, `${at}.options`);
-      if (has(options, 'op')) oneOf(options.op, COMPARE_OPS, `${at}.options.op`);
-      if (has(options, 'mask') && (typeof options.mask !== 'string' || !/^[xyzwrgba]{1,4}$/.test(options.mask)))
-        fail(`${at}.options.mask`, 'must be a swizzle mask of 1 to 4 of xyzw or rgba', options.mask);
-      if (has(options, 'clamp') && typeof options.clamp !== 'boolean') fail(`${at}.options.clamp`, 'must be true or false', options.clamp);
-    }
-    list(op.inputs, `${at}.inputs`).forEach((input, j) => {
-      const inAt = `${at}.inputs[${j}]`;
-      object(input, inAt);
-      const kinds = ['op', 'parameter', 'builtin', 'constant'].filter((key) => has(input, key));
-      if (kinds.length !== 1) fail(inAt, 'must have exactly one of "op", "parameter", "builtin", "constant"');
-      if (has(input, 'op')) {
-        if (!(natural(input.op, `${inAt}.op`) < k)) fail(`${inAt}.op`, 'must name an earlier op', input.op);
-        if (has(input, 'port')) natural(input.port, `${inAt}.port`);
-      } else if (has(input, 'parameter')) {
-        if (typeof input.parameter !== 'string' || !parameters.has(input.parameter))
-          fail(`${inAt}.parameter`, 'must name a parameter uniform of the manifest', input.parameter);
-      } else if (has(input, 'builtin')) {
-        oneOf(input.builtin, DERIVED_BUILTINS, `${inAt}.builtin`);
-      } else {
-        const c = list(input.constant, `${inAt}.constant`);
-        if (c.length === 0 || c.some((x) => typeof x !== 'number' || !Number.isFinite(x)))
-          fail(`${inAt}.constant`, 'must be a list of finite numbers', input.constant);
-      }
-    });
-  });
-  const value = object(program.value, `${field}.value`);
-  if (!(natural(value.op, `${field}.value.op`) < ops.length)) fail(`${field}.value.op`, 'must name an op', value.op);
-  if (has(value, 'port')) natural(value.port, `${field}.value.port`);
 }

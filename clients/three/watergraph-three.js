@@ -4,7 +4,6 @@
 // See README.md beside this file for the API and what is not supported.
 import * as THREE from 'three';
 import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
-import { compileDerived, drawValues } from './watergraph-derived.js';
 import { manifestView, renderView } from './watergraph-output.js';
 import { checkManifest, has } from './watergraph-manifest.js';
 
@@ -200,23 +199,10 @@ export class WaterGraph {
     this.uniforms = table();  // uniform name -> { value }, as three.js takes them
     this.phases = [];  // [uniform name, angular frequency]
     this.builtins = table();  // builtin -> uniform name
-    this.derived = [];  // [uniform name, function of (parameters, draw)]: derived uniforms
-    // What derived uniforms read per draw (watergraph-derived.js drawValues), kept here
-    // because the shader may declare none of these uniforms itself.
-    this.frame = { time: 0, cameraPosition: [0, 0, 0], near: 0.1, far: 200, sunDirection: BUILTIN_INITIAL.sun_direction().toArray() };
     for (const u of manifest.uniforms ?? []) {
       if (!u.name || !u.type) throw new WaterGraphError('a manifest uniform lacks "name" or "type"');
       if ('parameter' in u) {
         this.uniforms[u.name] = { value: parameterValue(u) };
-        continue;
-      }
-      if (u.builtin === 'derived') {
-        this.uniforms[u.name] = { value: parameterValue({ ...u, default: new Array({ float: 1, vec2: 2, vec3: 3, vec4: 4 }[u.type] ?? 0).fill(0) }) };
-        try {
-          this.derived.push([u.name, compileDerived(u.derived, `derived uniform ${u.name}`)]);
-        } catch (e) {
-          throw new WaterGraphError(e.message);
-        }
         continue;
       }
       const make = BUILTIN_INITIAL[u.builtin];
@@ -283,30 +269,8 @@ export class WaterGraph {
       depthFunc: THREE.LessEqualDepth,
     });
     // The description's sun, which its sky and scene are lit by.
-    if (description) {
-      this.frame.sunDirection = Array.from(description.sun_direction);
-      if (this.builtins.sun_direction) this.uniforms[this.builtins.sun_direction].value.fromArray(description.sun_direction);
-    }
-    this.#updateDerived();
-  }
-
-  // Every derived uniform from the current parameters and frame, in double, as the runtime
-  // computes them before each draw.
-  #updateDerived() {
-    if (this.derived.length === 0) return;
-    const parameters = table();
-    for (const u of this.manifest.uniforms ?? []) {
-      if (!('parameter' in u)) continue;
-      const v = this.uniforms[u.name].value;
-      parameters[u.parameter] = typeof v === 'number' ? v : v.toArray();
-    }
-    const draw = drawValues(this.frame);
-    for (const [name, fn] of this.derived) {
-      const v = fn(parameters, draw);
-      const slot = this.uniforms[name];
-      if (typeof slot.value === 'number') slot.value = v[0];
-      else slot.value.fromArray(v);
-    }
+    if (description && this.builtins.sun_direction)
+      this.uniforms[this.builtins.sun_direction].value.fromArray(description.sun_direction);
   }
 
   // A mesh whose world matrix becomes u_model and the drawing-buffer size u_viewport_size.
@@ -407,13 +371,6 @@ export class WaterGraph {
     // does: the generated depth linearisation relies on that range.
     const plane = (x) => (!(x >= 1e-6) ? 1e-6 : Math.min(x, 1e30));
     set('camera_near_far', (u) => u.value.set(plane(camera.near), plane(camera.far)));
-    this.frame.time = time;
-    this.frame.cameraPosition = new THREE.Vector3().setFromMatrixPosition(camera.matrixWorld).toArray();
-    this.frame.near = camera.near;
-    this.frame.far = camera.far;
-    this.frame.view = camera.matrixWorldInverse.toArray();
-    this.frame.projection = camera.projectionMatrix.toArray();
-    this.#updateDerived();
   }
 
   setModelMatrix(matrix) {
@@ -425,12 +382,9 @@ export class WaterGraph {
   setSunDirection(direction) {
     if (!(direction.lengthSq() > 0)) throw new WaterGraphError('the sun direction must not be a zero vector');
     const unit = direction.clone().normalize();
-    this.frame.sunDirection = unit.toArray();
     const name = this.builtins.sun_direction;
     if (name) this.uniforms[name].value.copy(unit);
-    this.#updateDerived();
   }
-
 
   setViewportSize(width, height) {
     const name = this.builtins.viewport_size;
@@ -450,7 +404,6 @@ export class WaterGraph {
       const v = slot.value.toArray().map((x) => clampToRange(x, u));
       slot.value.fromArray(v);
     }
-    this.#updateDerived();
   }
 
   dispose() {

@@ -99,7 +99,7 @@ bool WaterDraw::load(const std::string& manifestPath, int quads, float halfSize,
     for (const char* k : known) ok = ok || u["builtin"] == k;
     if (!ok) {
       why = manifestPath + ": the builtin '" + u["builtin"].get<std::string>() +
-            "' (a graph compiled with --derived-uniforms, or for the probe), which this host does not compute";
+            "' (a probe's, or the removed --derived-uniforms'), which this host does not compute";
       return false;
     }
   }

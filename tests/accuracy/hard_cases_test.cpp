@@ -66,38 +66,6 @@ TEST_P(HardCasesOnGpu, FiniteAndWithinEveryNodesTolerance) {
               r.caseRuns, probed.size(), r.failures);
 }
 
-// With derived uniforms (--derived-uniforms): the per-draw parts of each node that has them
-// (scroll phases, near and near/far, the camera axis) are computed per case in double, as the
-// runtime computes them per draw, and the rest on the GPU; the node still meets its
-// tolerance on every case, with no NaN/Inf. The identity edit of "u_derived0" counts the
-// runs whose probe shader reads a derived uniform: each node must have some, or the case
-// would pass without the path it names (runs whose shader reads none are the suite's own and
-// left out here). linearize_depth is not in the list: alone, its near/far ratio is one
-// operation per pixel, below what the planner takes out; water_depth, with two
-// linearisations sharing it, is.
-TEST_P(HardCasesOnGpu, NodesWithPerDrawPartsPassWithDerivedUniforms) {
-  ProbeCaseFile suite = loadSuite();
-  Target target = GetParam();
-  auto context = rt::EglContext::create(target == Target::Es300 ? rt::GlApi::Es32 : rt::GlApi::DesktopGl45);
-  for (const char* node : {"dudv_distortion", "normal_map_scroll", "flow_map", "scene_depth", "underwater",
-                           "water_depth"}) {
-    SCOPED_TRACE(node);
-    SuiteOptions options;
-    options.nodes = {node};
-    options.derive = true;
-    options.mutation = {"u_derived0", "u_derived0"};
-    SuiteResult r = runHardCaseSuite(suite, target, options);
-    for (const auto& e : r.errors) ADD_FAILURE() << e;
-    for (const auto& f : r.failureLines) ADD_FAILURE() << f;
-    EXPECT_EQ(r.nanInf, 0);
-    EXPECT_EQ(r.failures, 0);
-    EXPECT_GT(r.caseRuns, 0);
-    EXPECT_GE(r.mutatedRuns, 1) << "no probe shader of " << node << " reads a derived uniform";
-    std::printf("[ derived  ] %s %s: %d case runs, %d runs read derived uniforms\n",
-                std::string(targetName(target)).c_str(), node, r.caseRuns, r.mutatedRuns);
-  }
-}
-
 INSTANTIATE_TEST_SUITE_P(Targets, HardCasesOnGpu, ::testing::Values(Target::Glsl330, Target::Es300),
                          [](const auto& info) { return std::string(targetName(info.param)); });
 

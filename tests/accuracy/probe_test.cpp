@@ -8,8 +8,6 @@
 
 #include "accuracy/node_probe.h"
 #include "accuracy/probe.h"
-#include "codegen/emit_glsl.h"
-#include "codegen/probe_program.h"
 #include "core/diagnostic_text.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
@@ -127,62 +125,6 @@ TEST_P(ProbeOnGpu, ANodeOutputCanBeProbedAndUnknownPortsAreNamed) {
   auto bad = probeGraph(*graph, ProbeOutput{node, "no_such_port"}, cases, GetParam(), diags);
   EXPECT_FALSE(bad);
   EXPECT_NE(core_test::dump(diags).find("has no output 'no_such_port'"), std::string::npos) << core_test::dump(diags);
-}
-
-// With derived uniforms (CompileOptions::derivedUniforms) the probe shader reads each
-// per-draw value as a uniform the probe computes per case in double, as the runtime does
-// per draw: every example graph still passes the graph cases, with no NaN or Inf.
-TEST_P(ProbeOnGpu, EveryExampleGraphPassesTheGraphCasesWithDerivedUniforms) {
-  Diagnostics diags;
-  auto cases = loadProbeCases(test::sourcePath("tests/hardcases/graphs.json"), diags);
-  ASSERT_TRUE(cases) << core_test::dump(diags);
-  int derivedGraphs = 0;
-  for (const auto& path : test::exampleGraphs()) {
-    SCOPED_TRACE(path);
-    auto graph = loadGraphFile(path, diags);
-    ASSERT_TRUE(graph) << core_test::dump(diags);
-    auto program = buildProbeProgram(*graph, defaultRegistry(), {}, diags);
-    ASSERT_TRUE(program) << core_test::dump(diags);
-    EmitResult shader = emitProgram(*program, GetParam(), graph->file, EmitMode::Probe, true, true);
-    derivedGraphs += shader.shaders.back().text.find("u_derived0") != std::string::npos;
-    auto report = probeGraph(*graph, {}, *cases, GetParam(), diags, {}, /*derive=*/true);
-    ASSERT_TRUE(report) << core_test::dump(diags);
-    EXPECT_EQ(report->cases.size(), cases->cases.size());
-    for (const auto& c : report->cases) EXPECT_TRUE(c.gpuFinite) << c.name;
-    EXPECT_TRUE(report->passed()) << formatProbeText(*report);
-  }
-  EXPECT_GE(derivedGraphs, 1);
-}
-
-// A per-draw value of the parameters and time, probed at extreme cases: the derived
-// uniform carries exactly what the double reference computes.
-TEST_P(ProbeOnGpu, ADerivedUniformTakesTheCaseParametersAndTime) {
-  Diagnostics diags;
-  auto graph = parseGraph(R"({"version": 1, "name": "d",
-    "parameters": {"k": {"type": "float", "default": 0.5}, "wind": {"type": "vec3", "default": [1, 0, 2]}},
-    "nodes": [{"id": "u", "type": "uv"}, {"id": "l", "type": "length", "inputs": {"x": "u.out"}},
-              {"id": "t", "type": "time"}, {"id": "kt", "type": "mul", "inputs": {"a": "t.out", "b": "$k"}},
-              {"id": "s", "type": "sin", "inputs": {"x": "kt.out"}},
-              {"id": "w", "type": "normalize", "inputs": {"x": "$wind"}},
-              {"id": "dir", "type": "mul", "inputs": {"a": "w.out", "b": "s.out"}},
-              {"id": "shade", "type": "mul", "inputs": {"a": "dir.out", "b": "l.out"}}],
-    "outputs": {"fragment": {"color": "shade.out"}}})", "d.json", diags);
-  ASSERT_TRUE(graph) << core_test::dump(diags);
-  auto cases = parseProbeCases(R"({"cases": [
-    {"name": "late", "time": 100000.25, "parameters": {"k": 3.75, "wind": [0, 0, 1e-30]}, "uv": [0.3, 0.4]},
-    {"name": "zero_wind", "time": 2, "parameters": {"wind": [0, 0, 0]}, "uv": [1, 0]},
-    {"name": "large", "time": 1.5, "parameters": {"k": 1, "wind": [1e30, 1e30, 0]}, "uv": [0.6, 0.8]}]})",
-                               "c.json", diags);
-  ASSERT_TRUE(cases) << core_test::dump(diags);
-  auto program = buildProbeProgram(*graph, defaultRegistry(), {}, diags);
-  ASSERT_TRUE(program);
-  EmitResult shader = emitProgram(*program, GetParam(), graph->file, EmitMode::Probe, true, true);
-  const std::string& frag = shader.shaders.back().text;
-  EXPECT_NE(frag.find("u_derived0"), std::string::npos) << frag;
-  EXPECT_EQ(frag.find("sin("), std::string::npos) << frag;
-  auto report = probeGraph(*graph, {}, *cases, GetParam(), diags, {}, /*derive=*/true);
-  ASSERT_TRUE(report) << core_test::dump(diags);
-  EXPECT_TRUE(report->passed()) << formatProbeText(*report);
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, ProbeOnGpu, ::testing::Values(Target::Glsl330, Target::Es300),

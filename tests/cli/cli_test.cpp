@@ -120,6 +120,20 @@ TEST(CliCompile, UnknownTargetIsAUsageError) {
   EXPECT_FALSE(fs::exists(tmp / "out"));
 }
 
+// The experimental derived uniforms are gone: their switch and the c-header target they
+// implied are usage errors like any unknown option or target.
+TEST(CliCompile, TheRemovedDerivedUniformsAndCHeaderAreUsageErrors) {
+  TempDir tmp;
+  const std::string base = "compile " + shellQuote(test::sourcePath("graphs/lake.json")) + " -o " + shellQuote(tmp / "out");
+  CmdResult flag = wgRun(base + " --derived-uniforms");
+  EXPECT_EQ(flag.exit, 2) << flag.out << flag.err;
+  EXPECT_NE(flag.err.find("--derived-uniforms"), std::string::npos) << flag.err;
+  CmdResult target = wgRun(base + " --target glsl330,c-header");
+  EXPECT_EQ(target.exit, 2) << target.out << target.err;
+  EXPECT_NE(target.err.find("unknown target 'c-header'"), std::string::npos) << target.err;
+  EXPECT_FALSE(fs::exists(tmp / "out"));
+}
+
 // a/water.json and b/water.json write water.* (with --subdirs, water/): the second would
 // replace the first. A usage error, nothing written.
 TEST(CliCompile, TwoGraphsOfOneFileNameAreRefusedBeforeWriting) {

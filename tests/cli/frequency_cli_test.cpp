@@ -13,7 +13,7 @@ namespace {
 namespace fs = std::filesystem;
 using test::shellQuote;
 
-TEST(CliFrequency, ValidatePrintsEachGraphsReportWithItsCandidates) {
+TEST(CliFrequency, ValidatePrintsEachGraphsReportWithItsPerDrawRoots) {
   std::string dir = test::makeTempDir("wg_freq_");
   std::string graph = dir + "/chain.json";
   // tint = colour * k * 0.5 depends only on parameters; the uv makes the rest per-pixel.

@@ -1,13 +1,12 @@
 // Colour-managed values (core/color_parameters.h, docs/graph-format.md "Colour"): colour
 // parameters reach the nodes through srgb_to_linear (in the shader for a uniform, folded to
-// the exact linear constant for a static one, on the CPU with derived uniforms); colour
+// the exact linear constant for a static one); colour
 // literals and defaults of colour ports are linearised at resolve time; data is untouched.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "codegen/compile.h"
-#include "codegen/derived_program.h"
 #include "codegen/manifest.h"
 #include "core/graph_io.h"
 #include "pass_test_support.h"
@@ -29,14 +28,13 @@ std::string graphOf(const std::string& parameters, const std::string& source, co
                    R"("fragment": {"color": "shade.out"})", parameters);
 }
 
-CompileResult compile(const std::string& json, bool derive = false) {
+CompileResult compile(const std::string& json) {
   Diagnostics diags;
   auto graph = parseGraph(json, "test.json", diags);
   EXPECT_TRUE(graph) << allText(diags);
   if (!graph) return {};
   CompileOptions options;
   options.targets = {Target::Glsl330};
-  options.derivedUniforms = derive;
   auto r = compileGraph(*graph, defaultRegistry(), options, diags);
   EXPECT_TRUE(r) << allText(diags);
   return r ? std::move(*r) : CompileResult{};
@@ -128,21 +126,6 @@ TEST(ColorParameters, AVec4ColourKeepsItsAlpha) {
   const ProgramOutput& alpha = outputOf(p, OutputSlot::FragmentAlpha);
   ASSERT_EQ(alpha.value.kind, ValueRef::Kind::Const);
   EXPECT_EQ(alpha.value.constant()[0], 0.5);
-}
-
-TEST(ColorParameters, WithDerivedUniformsTheConversionIsComputedOnTheCpu) {
-  CompileResult r = compile(graphOf(kColor, "$tint"), true);
-  std::string frag = fragmentOf(r);
-  EXPECT_EQ(frag.find("wg_srgb_to_linear"), std::string::npos) << frag;
-  EXPECT_EQ(frag.find("p_tint"), std::string::npos) << frag;
-  const ManifestUniform* d = nullptr;
-  for (const auto& u : r.manifest.uniforms)
-    if (u.derived) d = &u;
-  ASSERT_TRUE(d) << frag;
-  EXPECT_EQ(d->derived->program.ops.at(0).spec->type, "srgb_to_linear");
-  // The value the runtime uploads, computed in double from the parameter's sRGB value.
-  Value v = evaluateDerived(*d->derived, EvalEnvironment{}, {Value::vector({0.5, 0.2, 1})});
-  expectLinearOf(v, {0.5, 0.2, 1});
 }
 
 TEST(ColorParameters, ALiteralOnAColourPortIsLinearisedAndOnAnyOtherPortNot) {

@@ -91,7 +91,7 @@ TEST(Frequency, ConstantsAreConstantAndFoldAway) {
   EXPECT_EQ(opFrequency(p, f, "ck"), Frequency::PerDraw);
 }
 
-TEST(FrequencyReport, TheCandidateIsTheMaximalPerDrawSubexpression) {
+TEST(FrequencyReport, TheRootIsTheMaximalPerDrawSubexpression) {
   Program p = finalProgram(kParameterChain);
   FrequencyReport r = frequencyReport(p);
   EXPECT_EQ(r.counts[static_cast<size_t>(Frequency::PerDraw)], 4);
@@ -100,8 +100,8 @@ TEST(FrequencyReport, TheCandidateIsTheMaximalPerDrawSubexpression) {
   EXPECT_EQ(r.perDrawInFragment, 4);
   EXPECT_EQ(r.perDrawCost, 3);
   EXPECT_EQ(r.fragmentTotalCost, 5) << "and length(uv), shade's product";
-  ASSERT_EQ(r.candidates.size(), 1u) << formatFrequencyReport(p, r);
-  const DerivedCandidate& c = r.candidates[0];
+  ASSERT_EQ(r.roots.size(), 1u) << formatFrequencyReport(p, r);
+  const PerDrawRoot& c = r.roots[0];
   EXPECT_EQ(c.op, opIndex(p, "kn")) << "the root is the last per-draw op, not one inside the chain";
   EXPECT_EQ(c.ports, std::vector<int>{0});
   std::vector<int> want = {opIndex(p, "t"), opIndex(p, "k2"), opIndex(p, "kt"), opIndex(p, "kn")};
@@ -114,7 +114,7 @@ TEST(FrequencyReport, TheCandidateIsTheMaximalPerDrawSubexpression) {
   EXPECT_NE(text.find("node 'kn' (sin) output out (float): 3 operations from 4 ops"), std::string::npos) << text;
 }
 
-TEST(FrequencyReport, AUniformReadAloneIsNoCandidate) {
+TEST(FrequencyReport, AUniformReadAloneIsNoRoot) {
   // The time node is per-draw and read per pixel, but it is the uniform already.
   Program p = finalProgram(graphJson(
       R"({"id": "u", "type": "uv"}, {"id": "l", "type": "length", "inputs": {"x": "u.out"}},
@@ -123,8 +123,8 @@ TEST(FrequencyReport, AUniformReadAloneIsNoCandidate) {
   FrequencyReport r = frequencyReport(p);
   EXPECT_EQ(r.perDrawInFragment, 1);
   EXPECT_EQ(r.perDrawCost, 0);
-  EXPECT_TRUE(r.candidates.empty()) << formatFrequencyReport(p, r);
-  EXPECT_NE(formatFrequencyReport(p, r).find("derived-uniform candidates: none"), std::string::npos);
+  EXPECT_TRUE(r.roots.empty()) << formatFrequencyReport(p, r);
+  EXPECT_NE(formatFrequencyReport(p, r).find("per-draw values computed per pixel: none"), std::string::npos);
 }
 
 TEST(FrequencyReport, PerDrawWorkOnlyTheVertexStageDoesCostsNoPixel) {
@@ -137,7 +137,7 @@ TEST(FrequencyReport, PerDrawWorkOnlyTheVertexStageDoesCostsNoPixel) {
   FrequencyReport r = frequencyReport(p);
   EXPECT_EQ(r.ops[static_cast<size_t>(opIndex(p, "k2"))], Frequency::PerDraw);
   EXPECT_EQ(r.perDrawInFragment, 0);
-  EXPECT_TRUE(r.candidates.empty());
+  EXPECT_TRUE(r.roots.empty());
 }
 
 TEST(GlslCost, CountsOperatorsAndCallsNotSignsConstructorsOrComments) {

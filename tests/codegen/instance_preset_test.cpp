@@ -61,7 +61,7 @@ struct Tree {
   }
 };
 
-struct Built {
+struct PresetBuilt {
   std::optional<CompileResult> result;
   Diagnostics diags;
   std::string firstError() const { return diags.all().empty() ? "" : formatText(diags.sorted().front()); }
@@ -72,8 +72,8 @@ struct Built {
   }
 };
 
-Built build(const std::string& path, const std::string& preset) {
-  Built b;
+PresetBuilt build(const std::string& path, const std::string& preset) {
+  PresetBuilt b;
   auto graph = loadGraphFile(path, b.diags);
   CompileOptions options;
   options.targets = {Target::Glsl330};
@@ -86,7 +86,7 @@ Built build(const std::string& path, const std::string& preset) {
 TEST(InstancePresetOptions, SetTheOptionOfTheNodeInsideThatInstanceOnly) {
   Tree tree;
   std::string path = tree.write("parent.json", parent(R"("a/fresnel.model": "exact")"));
-  Built plain = build(path, ""), fast = build(path, "fast");
+  PresetBuilt plain = build(path, ""), fast = build(path, "fast");
   ASSERT_TRUE(plain.result) << plain.firstError();
   ASSERT_TRUE(fast.result) << fast.firstError();
   // Written: both instances take Schlick of the same inputs, one computation after CSE.
@@ -102,7 +102,7 @@ TEST(InstancePresetOptions, SetTheOptionOfTheNodeInsideThatInstanceOnly) {
 
 TEST(InstancePresetOptions, APathThatNamesNoNodeOrNoInstanceIsRefused) {
   Tree tree;
-  Built b = build(tree.write("p1.json", parent(R"("c/fresnel.model": "exact")")), "");
+  PresetBuilt b = build(tree.write("p1.json", parent(R"("c/fresnel.model": "exact")")), "");
   EXPECT_FALSE(b.result);
   EXPECT_NE(b.firstError().find("error: [WG024] preset 'fast' sets an option of node 'c', which the graph does not have"),
             std::string::npos)
@@ -127,7 +127,7 @@ TEST(InstancePresetOptions, APathThatNamesNoNodeOrNoInstanceIsRefused) {
 // Whichever preset is applied, the inner node's type checks the option and its value.
 TEST(InstancePresetOptions, AnOptionTheInnerTypeLacksOrAValueItRefusesIsReported) {
   Tree tree;
-  Built b = build(tree.write("p1.json", parent(R"("a/fresnel.modl": "exact")")), "");
+  PresetBuilt b = build(tree.write("p1.json", parent(R"("a/fresnel.modl": "exact")")), "");
   EXPECT_FALSE(b.result);
   EXPECT_NE(b.firstError().find("[WG022] preset 'fast': node type 'fresnel' has no option 'modl' (did you mean 'model'?)"),
             std::string::npos)

@@ -113,6 +113,14 @@ TEST(Manifest, FromJsonNamesWhatIsWrong) {
       {"uniforms not a list", [](auto& m) { m["uniforms"] = nlohmann::json::object(); }, "\"uniforms\" is not a list"},
       {"unknown builtin", [](auto& m) { firstWith(m["uniforms"], "builtin")["builtin"] = "wind"; },
        "uniform u_model asks for builtin 'wind'"},
+      // What the removed --derived-uniforms wrote: refused, saying what to do.
+      {"derived uniform",
+       [](auto& m) {
+         auto& u = firstWith(m["uniforms"], "builtin");
+         u["builtin"] = "derived";
+         u["derived"] = nlohmann::json::object();
+       },
+       "uniform u_model is a derived uniform (\"builtin\": \"derived\"), which watergraph no longer has: compile the graph again"},
       {"unknown type", [](auto& m) { firstWith(m["uniforms"], "builtin")["type"] = "vec5"; }, "unknown type 'vec5'"},
       {"no stages", [](auto& m) { firstWith(m["uniforms"], "builtin").erase("stages"); }, "lacks the list \"stages\""},
       {"unknown stage", [](auto& m) { firstWith(m["uniforms"], "builtin")["stages"] = {"geometry"}; },

@@ -573,22 +573,22 @@ TEST_F(ThreeClient, ApiChecksPassUnderNode) {
 // Hostile manifests (clients/three/test/manifest.test.mjs under node --test): every field
 // kind of the documented shape refused with a WaterGraphError naming its path, through
 // checkManifest and the WaterGraph constructor (a builtin "__proto__", "textures": 5, a null
-// uniform, a comparison "constructor", an angular_frequency "abc", ...: before, a TypeError
-// or a value taken silently), and parameters named __proto__ and constructor feeding their
-// derived uniform (before, NaN). The fixtures are what compile writes for four graphs with
-// derived uniforms, time phases, a node texture and a scene texture.
+// uniform, an angular_frequency "abc", a derived uniform of the removed --derived-uniforms,
+// ...: before, a TypeError or a value taken silently), and parameters named __proto__ and
+// constructor set as uniforms. The fixtures are what compile writes for four graphs with
+// such parameters, time phases, a node texture and a scene texture.
 TEST_F(ThreeClient, HostileManifestsAreRefusedNamingTheField) {
   TempDir dir("wg_three_");
   for (const char* graph : {"tests/ecosystem/data/proto_parameter.json", "graphs/topdown.json", "graphs/lagoon.json",
                             "tests/ecosystem/data/three_environment.json"}) {
     CmdResult c = wgRun("compile " + test::shellQuote(test::sourcePath(graph)) + " -o " + test::shellQuote(dir.path()) +
-                        " --target es300 --derived-uniforms --quiet");
+                        " --target es300 --quiet");
     ASSERT_EQ(c.exit, 0) << graph << ": " << c.err;
   }
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && WG_THREE_FIXTURES=" + test::shellQuote(dir.path()) +
                    " timeout 50 node --test test/manifest.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 56"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 44"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 

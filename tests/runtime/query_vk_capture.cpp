@@ -26,7 +26,6 @@ std::vector<unsigned char> queryCaptureBlock(const Manifest& manifest, double t,
   frame.viewProjection = viewProjection;
   std::vector<BlockMember> members;
   std::vector<std::vector<float>> values;
-  std::vector<Value> parameters;  // what derived programs read, in manifest order
   size_t end = 0;
   for (const ManifestUniform& u : manifest.uniforms) {
     members.push_back(std140Member(end, u.type));
@@ -39,18 +38,13 @@ std::vector<unsigned char> queryCaptureBlock(const Manifest& manifest, double t,
       const float inf = std::numeric_limits<float>::infinity();
       clampIntoRange(v, u.parameter->min ? static_cast<float>(*u.parameter->min) : -inf,
                      u.parameter->max ? static_cast<float>(*u.parameter->max) : inf);
-      Value p = Value::ofType(u.type);
-      for (int i = 0; i < p.size() && static_cast<size_t>(i) < v.size(); ++i) p[i] = v[static_cast<size_t>(i)];
-      parameters.push_back(p);
     }
     values.push_back(std::move(v));
   }
   std::vector<unsigned char> block((end + 15) / 16 * 16, 0);
   for (size_t i = 0; i < manifest.uniforms.size(); ++i) {
     const ManifestUniform& u = manifest.uniforms[i];
-    std::vector<float> v = u.parameter ? values[i]
-                           : u.derived ? derivedUniformValue(*u.derived, frame, parameters)
-                                       : builtinUniformValue(u.builtin, u.angularFrequency, frame);
+    std::vector<float> v = u.parameter ? values[i] : builtinUniformValue(u.builtin, u.angularFrequency, frame);
     writeBlockMember(block.data(), members[i], u.type, v);
   }
   return block;

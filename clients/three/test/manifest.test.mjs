@@ -2,16 +2,15 @@
 // shape (watergraph-manifest.js) refused with a WaterGraphError naming its path, through
 // checkManifest and through the WaterGraph constructor, never a TypeError or a value taken
 // silently; names from the manifest ("__proto__", "constructor") kept in tables without a
-// prototype. WG_THREE_FIXTURES names a folder of manifests and es300 shaders compiled with
-// --derived-uniforms from proto_parameter (tests/ecosystem/data), topdown, lagoon and
-// three_environment; tests/ecosystem/three_client_test.cpp writes them and runs this file.
+// prototype. WG_THREE_FIXTURES names a folder of manifests and es300 shaders compiled from
+// proto_parameter (tests/ecosystem/data), topdown, lagoon and three_environment;
+// tests/ecosystem/three_client_test.cpp writes them and runs this file.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
 import path from 'node:path';
 import * as THREE from 'three';
 import { WaterGraph, WaterGraphError, checkManifest, applySamplerState } from '../watergraph-three.js';
-import { compileDerived, DerivedProgramError } from '../watergraph-derived.js';
 import { presetCamera } from '../watergraph-scene.js';
 
 const dir = process.env.WG_THREE_FIXTURES;
@@ -32,43 +31,33 @@ const index = (list, pred, what) => {
   return i;
 };
 
-// The sRGB decoding of the client's derived programs (watergraph-derived.js srgbToLinear).
-const srgbToLinear = (c) => (c <= 0.04045 ? c / 12.92 : Math.pow((c + 0.055) / 1.055, 2.4));
-
 test('every manifest compile writes has the documented shape', () => {
   const manifests = readdirSync(dir).filter((f) => f.endsWith('.manifest.json'));
   assert.equal(manifests.length, 4, manifests.join(', '));
   for (const f of manifests) assert.doesNotThrow(() => checkManifest(JSON.parse(read(f))), f);
 });
 
-test('parameters named __proto__ and constructor feed their derived uniform', () => {
-  const water = new WaterGraph(graph('proto_parameter'));
-  const derived = () => water.uniforms.u_derived0.value.toArray();
-  const want = (rgb, k) => rgb.map((c) => srgbToLinear(c) * k);
-  const close = (got, expected) => got.forEach((x, i) => assert.ok(Math.abs(x - expected[i]) < 1e-12, `${got} vs ${expected}`));
-  close(derived(), want([0.2, 0.5, 0.8], 0.25));
+test('parameters named __proto__ and constructor are uniforms setParameter sets', () => {
+  const g = graph('proto_parameter');
+  const water = new WaterGraph(g);
+  const slot = (parameter) => water.uniforms[g.manifest.uniforms.find((x) => x.parameter === parameter).name];
+  assert.deepEqual(slot('__proto__').value.toArray(), [0.2, 0.5, 0.8]);
+  assert.equal(slot('constructor').value, 0.25);
   water.setParameter('__proto__', [1, 0.5, 0]);
-  close(derived(), want([1, 0.5, 0], 0.25));
-  water.setParameter('constructor', 1);
-  close(derived(), want([1, 0.5, 0], 1));
+  assert.deepEqual(slot('__proto__').value.toArray(), [1, 0.5, 0]);
+  water.setParameter('constructor', 3);  // clamped into the manifest's [0, 1]
+  assert.equal(slot('constructor').value, 1);
   assert.equal(Object.getPrototypeOf(water.uniforms), null);
 });
 
 // Each case: a change to a compiled manifest, and the field its error must name.
 const u = (m, pred, what) => index(m.uniforms, pred, what);
-const derivedOf = (m) => m.uniforms[u(m, (x) => x.builtin === 'derived', 'derived uniform')];
 const CASES = [
   // The review's cases.
   ['topdown', 'a builtin "__proto__"', (m) => { const i = u(m, (x) => x.builtin === 'model', 'model'); m.uniforms[i].builtin = '__proto__'; return `uniforms[${i}].builtin`; }],
   ['topdown', 'a builtin "constructor"', (m) => { const i = u(m, (x) => x.builtin === 'view_projection', 'view_projection'); m.uniforms[i].builtin = 'constructor'; return `uniforms[${i}].builtin`; }],
   ['lagoon', '"textures": 5', (m) => { m.textures = 5; return 'textures'; }],
   ['topdown', 'a null uniform', (m) => { m.uniforms.splice(1, 0, null); return 'uniforms[1]'; }],
-  ['proto_parameter', 'a comparison "constructor"', (m) => {
-    const op = derivedOf(m).derived.ops[1];
-    op.type = 'compare';
-    op.options = { op: 'constructor' };
-    return `uniforms[${u(m, (x) => x.builtin === 'derived', 'derived')}].derived.ops[1].options.op`;
-  }],
   ['topdown', 'an angular_frequency "abc"', (m) => { const i = u(m, (x) => x.builtin === 'time_phase', 'time_phase'); m.uniforms[i].angular_frequency = 'abc'; return `uniforms[${i}].angular_frequency`; }],
   // Top level.
   ['topdown', 'a misspelt member', (m) => { m.uniform = m.uniforms; return 'uniform'; }],
@@ -95,18 +84,6 @@ const CASES = [
   ['proto_parameter', 'a min above max', (m) => { const i = u(m, (x) => x.parameter === 'constructor', 'parameter'); m.uniforms[i].min = 2; return `uniforms[${i}].min`; }],
   ['proto_parameter', 'a parameter held twice', (m) => { const i = u(m, (x) => x.parameter === 'constructor', 'parameter'); m.uniforms[i].parameter = '__proto__'; return `uniforms[${i}].parameter`; }],
   ['proto_parameter', 'a colour space "constructor"', (m) => { const i = u(m, (x) => x.parameter === '__proto__', 'parameter'); m.uniforms[i].color_space = 'constructor'; return `uniforms[${i}].color_space`; }],
-  // Derived programs.
-  ['proto_parameter', 'derived ops null', (m) => { derivedOf(m).derived.ops = null; return `${dpath(m)}.ops`; }],
-  ['proto_parameter', 'a derived op null', (m) => { derivedOf(m).derived.ops[0] = null; return `${dpath(m)}.ops[0]`; }],
-  ['proto_parameter', 'a derived input null', (m) => { derivedOf(m).derived.ops[1].inputs[0] = null; return `${dpath(m)}.ops[1].inputs[0]`; }],
-  ['proto_parameter', 'a derived input of two kinds', (m) => { derivedOf(m).derived.ops[1].inputs[0].builtin = 'time'; return `${dpath(m)}.ops[1].inputs[0]`; }],
-  ['proto_parameter', 'a derived input reading a later op', (m) => { derivedOf(m).derived.ops[1].inputs[0].op = 1; return `${dpath(m)}.ops[1].inputs[0].op`; }],
-  ['proto_parameter', 'a derived input reading no parameter', (m) => { derivedOf(m).derived.ops[1].inputs[1].parameter = 'toString'; return `${dpath(m)}.ops[1].inputs[1].parameter`; }],
-  ['proto_parameter', 'a derived builtin "__proto__"', (m) => { derivedOf(m).derived.ops[1].inputs[1] = { builtin: '__proto__' }; return `${dpath(m)}.ops[1].inputs[1].builtin`; }],
-  ['proto_parameter', 'a derived constant of strings', (m) => { derivedOf(m).derived.ops[1].inputs[1] = { constant: ['1'] }; return `${dpath(m)}.ops[1].inputs[1].constant`; }],
-  ['proto_parameter', 'a derived output type "constructor"', (m) => { derivedOf(m).derived.ops[0].output_types = ['constructor']; return `${dpath(m)}.ops[0].output_types[0]`; }],
-  ['proto_parameter', 'a derived swizzle mask "constructor"', (m) => { derivedOf(m).derived.ops[0].options = { mask: 'constructor' }; return `${dpath(m)}.ops[0].options.mask`; }],
-  ['proto_parameter', 'a derived value past the ops', (m) => { derivedOf(m).derived.value.op = 7; return `${dpath(m)}.value.op`; }],
   // Textures.
   ['lagoon', 'a texture null', (m) => { m.textures[0] = null; return 'textures[0]'; }],
   ['lagoon', 'a texture with a source and a resource', (m) => { m.textures[0].resource = 'environment'; return 'textures[0]'; }],
@@ -118,7 +95,6 @@ const CASES = [
   ['lagoon', 'a texture of type "__proto__"', (m) => { m.textures[0].type = '__proto__'; return 'textures[0].type'; }],
   ['three_environment', 'a scene texture of resource "constructor"', (m) => { m.textures[0].resource = 'constructor'; return 'textures[0].resource'; }],
 ];
-const dpath = (m) => `uniforms[${u(m, (x) => x.builtin === 'derived', 'derived')}].derived`;
 
 for (const [fixture, what, change] of CASES) {
   test(`refused, naming its field: ${what}`, () => {
@@ -144,27 +120,22 @@ test('without a scene description, a pass the client does not know is refused by
     e.message.includes('constructor (a pass this client does not know)'));
 });
 
+// What the removed --derived-uniforms wrote: a uniform no client computes, refused with
+// what to do about it (not as an unknown builtin).
+test('a derived uniform is refused, saying to compile the graph again', () => {
+  const g = graph('topdown');
+  const i = index(g.manifest.uniforms, (x) => x.builtin === 'model', 'model');
+  g.manifest.uniforms[i].builtin = 'derived';
+  g.manifest.uniforms[i].derived = { ops: [], value: { op: 0 } };
+  const refused = (e) => e instanceof WaterGraphError && e.field === `uniforms[${i}].builtin` &&
+    e.message.includes('no longer has: compile the graph again');
+  assert.throws(() => checkManifest(g.manifest), refused);
+  assert.throws(() => new WaterGraph(g), refused);
+});
+
 test('a manifest that is no object is refused', () => {
   for (const m of [null, 5, 'x', []])
     assert.throws(() => checkManifest(m), (e) => e instanceof WaterGraphError && e.field === '');
-});
-
-test('compileDerived refuses hostile programs with its own error, not a TypeError', () => {
-  const op = (extra) => ({ type: 'add', input_types: ['float', 'float'], output_types: ['float'],
-    inputs: [{ constant: [1] }, { constant: [2] }], ...extra });
-  assert.deepEqual(compileDerived({ ops: [op({})], value: { op: 0 } })({}, {}), [3]);
-  const refused = (program, pattern) => assert.throws(() => compileDerived(program), (e) =>
-    e instanceof DerivedProgramError && pattern.test(e.message));
-  refused({ ops: [null], value: { op: 0 } }, /op 0: not an object/);
-  refused({ ops: [op({ inputs: [null, null] })], value: { op: 0 } }, /input 0 is not an object/);
-  refused({ ops: [op({ type: 'constructor' })], value: { op: 0 } }, /'constructor' cannot be computed outside the shader/);
-  refused({ ops: [op({ type: 'compare', options: { op: 'constructor' } })], value: { op: 0 } }, /unknown comparison 'constructor'/);
-  refused({ ops: [op({ type: 'compare', options: { op: '__proto__' } })], value: { op: 0 } }, /unknown comparison '__proto__'/);
-  refused({ ops: [op({ output_types: 5 })], value: { op: 0 } }, /the value is no op output/);
-  // A parameter "__proto__" from JSON is an own member; one never given is not read off the prototype.
-  const read = compileDerived({ ops: [op({ inputs: [{ parameter: '__proto__' }, { constant: [0] }] })], value: { op: 0 } });
-  assert.deepEqual(read(JSON.parse('{"__proto__": 4}'), {}), [4]);
-  assert.throws(() => read({}, {}), /parameter '__proto__' has no value/);
 });
 
 test('a sampler state naming a prototype member is refused', () => {
