@@ -133,7 +133,7 @@ void Resolver::checkImportNames() {
 
 // The type a source provides, or Invalid after reporting. `node`: the node index of a
 // NodeOutput source when already known (-1: look it up by id).
-std::optional<ValueRef> Resolver::sourceRef(const InputSource& s, int node) {
+std::optional<ValueRef> Resolver::sourceRef(const InputSource& s, int node, int port) {
   switch (s.kind) {
     case InputSource::Kind::Literal: return ValueRef::constant_(shared_.constants.intern(literalValue(s.literal)));
     case InputSource::Kind::Parameter: {
@@ -149,15 +149,17 @@ std::optional<ValueRef> Resolver::sourceRef(const InputSource& s, int node) {
         node = nodeIndex_.find(s.name);
         if (node < 0) return std::nullopt;
       }
+      // `port` (when known) indexes outputsOf(node): the expanded values, and the op's own
+      // outputs unless the node's options gave it ports other than its type's.
       if (const auto& values = expandedOutputs_[static_cast<size_t>(node)]; !values.empty()) {
-        int port = portIndex(outputsOf(static_cast<size_t>(node)), s.port);
+        if (port < 0) port = portIndex(outputsOf(static_cast<size_t>(node)), s.port);
         if (port < 0) return std::nullopt;
         return values[static_cast<size_t>(port)];
       }
       int opIndex = opOfNode_[static_cast<size_t>(node)];
       if (opIndex < 0) return std::nullopt;
-      const Op& op = program_.ops[static_cast<size_t>(opIndex)];
-      int port = op.spec->outputIndex(s.port);
+      if (port < 0 || ports_[static_cast<size_t>(node)])
+        port = program_.ops[static_cast<size_t>(opIndex)].spec->outputIndex(s.port);
       if (port < 0) return std::nullopt;
       return ValueRef::op(opIndex, port);
     }

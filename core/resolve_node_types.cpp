@@ -39,6 +39,10 @@ const NodeSpec* Resolver::instanceSpec(const Import& im) {
 }
 
 void Resolver::lookUpSpecs() {
+  const size_t nodeCount = graph_.nodes.size();
+  inputBase_.assign(nodeCount + 1, 0);
+  for (size_t i = 0; i < nodeCount; ++i) inputBase_[i + 1] = inputBase_[i] + graph_.nodes[i].inputs.size();
+  inputPort_.assign(inputBase_[nodeCount], -1);
   specs_.assign(graph_.nodes.size(), nullptr);
   ports_.resize(graph_.nodes.size());
   instanceOf_.assign(graph_.nodes.size(), nullptr);
@@ -103,8 +107,10 @@ void Resolver::lookUpSpecs() {
     }
     specs_[i] = spec;
     const std::vector<PortSpec>& inputs = inputsOf(i);
-    for (const auto& in : n.inputs) {
+    for (size_t k = 0; k < n.inputs.size(); ++k) {
+      const NodeInput& in = n.inputs[k];
       int pi = portIndex(inputs, in.port);
+      inputPort_[inputBase_[i] + k] = pi;
       // A derived input is the node's own (NodeSpec::derive): not a port of the file.
       if (pi >= 0 && inputs[static_cast<size_t>(pi)].derived)
         diags_.error(DiagCode::UnknownInputPort, in.keyWhere,

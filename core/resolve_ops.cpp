@@ -61,11 +61,12 @@ void Resolver::buildOps(const std::vector<int>& order) {
     bool ok = true;
     for (size_t k = 0; k < node.inputs.size(); ++k) {
       const NodeInput& in = node.inputs[k];
-      int pi = portIndex(ports, in.port);
+      const size_t edge = inputBase_[static_cast<size_t>(ni)] + k;
+      int pi = inputPort_[edge];  // portIndex(ports, in.port), looked up once in lookUpSpecs
       if (pi < 0) continue;
       given[static_cast<size_t>(pi)] = &in;
-      // The referenced node was found by id once, in topologicalOrder.
-      auto ref = sourceRef(in.source, inputNode_[inputBase_[static_cast<size_t>(ni)] + k]);
+      // The referenced node and its port were found by name once, in topologicalOrder.
+      auto ref = sourceRef(in.source, inputNode_[edge], inputSourcePort_[edge]);
       if (!ref) {
         ok = false;  // already reported (dangling, unknown parameter, bad upstream node)
         continue;

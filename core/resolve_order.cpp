@@ -15,9 +15,9 @@ namespace wg::resolving {
 std::vector<int> Resolver::topologicalOrder() {
   size_t n = graph_.nodes.size();
   std::vector<int> pending(n, 0);
-  inputBase_.assign(n + 1, 0);
-  for (size_t i = 0; i < n; ++i) inputBase_[i + 1] = inputBase_[i] + graph_.nodes[i].inputs.size();
+  // inputBase_: laid out by lookUpSpecs.
   inputNode_.assign(inputBase_[n], -1);
+  inputSourcePort_.assign(inputBase_[n], -1);
   for (size_t i = 0; i < n; ++i) {
     const Node& node = graph_.nodes[i];
     for (size_t k = 0; k < node.inputs.size(); ++k) {
@@ -37,7 +37,7 @@ std::vector<int> Resolver::topologicalOrder() {
         continue;
       }
       if (in.source.kind != InputSource::Kind::NodeOutput) continue;
-      int dep = referencedNode(in.source, node.id, [&] { return inputLabel(in.port); });
+      int dep = referencedNode(in.source, node.id, [&] { return inputLabel(in.port); }, &inputSourcePort_[inputBase_[i] + k]);
       if (dep < 0) continue;
       inputNode_[inputBase_[i] + k] = dep;
       if (static_cast<size_t>(dep) == i) {
