@@ -29,8 +29,8 @@
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest_build.h"
 #include "codegen/passes.h"
-#include "core/graph_imports.h"
-#include "core/graph_io.h"
+#include "core/graph_load.h"
+#include "core/graph_parse.h"
 #include "core/resolve.h"
 #include "nodes/registry.h"
 
@@ -81,8 +81,8 @@ struct Case {
   std::unique_ptr<Prepared> prepare() const {
     auto p = std::make_unique<Prepared>();
     Diagnostics diags;
-    auto g = parseGraph(text, file, diags);
-    if (!g || !loadImports(*g, diags)) throw std::runtime_error(name + ": does not load");
+    auto g = loadGraphText(sharedText(), file, diags);
+    if (!g) throw std::runtime_error(name + ": does not load");
     p->graph = std::move(*g);
     auto r = resolveGraph(p->graph, defaultRegistry(), diags);
     if (!r) throw std::runtime_error(name + ": does not resolve");
@@ -149,8 +149,8 @@ double seconds(Clock::duration d) { return std::chrono::duration<double>(d).coun
 void load(benchmark::State& state, Case* c) {
   for (auto _ : state) {
     Diagnostics diags;
-    auto g = parseGraph(c->sharedText(), c->file, diags);
-    if (!g || !loadImports(*g, diags)) state.SkipWithError("load failed");
+    auto g = loadGraphText(c->sharedText(), c->file, diags);
+    if (!g) state.SkipWithError("load failed");
     benchmark::DoNotOptimize(g);
   }
   state.counters["bytes"] = static_cast<double>(c->text.size());
@@ -158,8 +158,7 @@ void load(benchmark::State& state, Case* c) {
   startHeapWindow();
   {
     Diagnostics diags;
-    auto g = parseGraph(c->sharedText(), c->file, diags);
-    if (g) loadImports(*g, diags);
+    auto g = loadGraphText(c->sharedText(), c->file, diags);
   }
   state.counters["peak_MiB"] = static_cast<double>(stopHeapWindow()) / (1024.0 * 1024.0);
 }
@@ -253,8 +252,8 @@ void manifest(benchmark::State& state, Case* c) {
 // three.js TSL's build() makes: bench/tsl/).
 CompileResult compileWithoutGlslang(const Case& c, std::optional<Target> only = std::nullopt) {
   Diagnostics diags;
-  auto g = parseGraph(c.sharedText(), c.file, diags);
-  if (!g || !loadImports(*g, diags)) throw std::runtime_error(c.name + ": does not load");
+  auto g = loadGraphText(c.sharedText(), c.file, diags);
+  if (!g) throw std::runtime_error(c.name + ": does not load");
   CompileOptions options;
   options.validate = false;
   if (only) options.targets = {*only};

@@ -31,6 +31,7 @@
 #include "cli/wgsl_checks.h"
 #include "codegen/texture_files.h"
 #include "core/graph_imports.h"
+#include "core/graph_load.h"
 #include "core/graph_io.h"
 #include "core/texture_check.h"
 #include "nodes/registry.h"

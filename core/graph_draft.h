@@ -1,5 +1,5 @@
 #pragma once
-// A graph file's JSON events gathered into drafts the loader checks (core/graph_load.cpp):
+// A graph file's JSON events gathered into drafts the loader checks (core/graph_parse*.cpp):
 // the objects the format gives a structure (the graph, its parameters, presets, outputs and
 // each node with its options, inputs and editor position, the imports, the interface, and
 // the editor layout's frames) keep their members in file order with positions; every other

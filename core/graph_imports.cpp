@@ -11,7 +11,7 @@
 
 #include "core/color_parameters.h"
 #include "core/file_read.h"
-#include "core/graph_io.h"
+#include "core/graph_parse.h"
 #include "core/load_limits.h"
 
 namespace wg {
@@ -194,16 +194,6 @@ InlinedSize measureInlined(const Graph& g, std::unordered_map<const Graph*, Inli
 }
 
 }  // namespace
-
-std::vector<std::string> graphFilesToWatch(const std::string& path) {
-  Diagnostics ignored;
-  auto text = readGraphFile(path, ignored);
-  if (!text) return {path};
-  auto graph = parseGraph(*text, path, ignored);
-  if (!graph) return {path};
-  loadImports(*graph, ignored);
-  return graphFilesRead(*graph);
-}
 
 NodePorts interfacePorts(const Graph& g) {
   NodePorts ports;

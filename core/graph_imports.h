@@ -1,6 +1,7 @@
 #pragma once
 // Function graphs used as node types (docs/graph-format.md, "Subgraphs"): loading what a
-// graph imports, and what follows from the whole tree of files.
+// graph imports (each file parsed with core/graph_parse.h), and what follows from the whole
+// tree of files. A graph file with its imports in one call: core/graph_load.h.
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -26,10 +27,6 @@ bool loadImports(Graph& graph, Diagnostics& diags);
 // diagnostics name them. An import that failed to load is listed by the path it names,
 // so that a watcher sees it repaired.
 std::vector<std::string> graphFilesRead(const Graph& graph);
-
-// graphFilesRead of the graph file at `path`, read afresh, whatever its faults: the files
-// a watcher follows (at least `path` itself, even when it cannot be read).
-std::vector<std::string> graphFilesToWatch(const std::string& path);
 
 // The ports a function graph has as a node type: an input per parameter (fixed to the
 // parameter's type, its default the parameter's), an output per interface output.

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "core/graph_io.h"
+#include "core/graph_save.h"
 #include "core/instance_options.h"
 #include "core/number_format.h"
 

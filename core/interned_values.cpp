@@ -18,16 +18,41 @@ bool sameBits(const Value& a, const Value& b) {
   return true;
 }
 
+// The slot a hash starts probing at: its top bits after a multiply, since mix() keeps the
+// low bits of a double's mantissa, which are zero for most short literals.
+std::size_t constantSlot(std::size_t hash, int shift) {
+  return static_cast<std::size_t>((static_cast<uint64_t>(hash) * 0x9e3779b97f4a7c15ull) >> shift);
+}
+
 }  // namespace
 
 std::shared_ptr<const Value> ConstantTable::intern(const Value& v) {
   size_t h = static_cast<size_t>(v.type);
   for (int i = 0; i < v.size(); ++i) h = mix(h, std::bit_cast<uint64_t>(v[i]));
-  auto& bucket = byHash_[h];
-  for (const auto& held : bucket)
-    if (sameBits(*held, v)) return held;
-  bucket.push_back(std::make_shared<const Value>(v));
-  return bucket.back();
+  if (4 * (size_ + 1) > 3 * slots_.size()) grow();
+  const std::size_t mask = slots_.size() - 1;
+  for (std::size_t i = constantSlot(h, shift_);; i = (i + 1) & mask) {
+    Slot& s = slots_[i];
+    if (!s.value) {
+      s = {h, std::make_shared<const Value>(v)};
+      ++size_;
+      return s.value;
+    }
+    if (s.hash == h && sameBits(*s.value, v)) return s.value;
+  }
+}
+
+void ConstantTable::grow() {
+  std::vector<Slot> old = std::move(slots_);
+  const std::size_t capacity = old.empty() ? 64 : 2 * old.size();
+  slots_.assign(capacity, Slot{});
+  shift_ = 64 - std::countr_zero(capacity);
+  for (Slot& s : old) {
+    if (!s.value) continue;
+    std::size_t i = constantSlot(s.hash, shift_);
+    while (slots_[i].value) i = (i + 1) & (capacity - 1);
+    slots_[i] = std::move(s);
+  }
 }
 
 SharedOptions OptionsTable::intern(const NodeSpec& spec, nlohmann::json complete) {

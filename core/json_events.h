@@ -4,7 +4,7 @@
 // UTF-8, a byte-order mark), duplicate keys (WG003, every duplicate, with the first
 // occurrence as a note), a float literal beyond double (WG010) and nesting deeper than 64
 // levels (WG035). A handler sees the events; it builds a DOM (core/json_source.h) or a
-// Graph directly (core/graph_load.cpp) without one.
+// Graph directly (core/graph_parse.cpp) without one.
 #include <cstdint>
 #include <string>
 #include <string_view>

@@ -7,6 +7,7 @@
 
 #include "core/diagnostic.h"
 #include "core/graph.h"
+#include "core/node_output_values.h"
 #include "core/program.h"
 #include "core/registry.h"
 
@@ -14,18 +15,7 @@ namespace wg {
 
 std::optional<Program> resolveGraph(const Graph& graph, const Registry& registry, Diagnostics& diags);
 
-// One output of a node as the resolved program holds it: an op's output, or the value an
-// expanded node's output stands for (an expression's `out`). Invalid type: the output
-// does not exist for the node's input types (split.w of a vec3).
-struct NodeOutputValue {
-  std::string port;
-  ValueRef value;
-  Type type = Type::Invalid;
-};
-// By node id, every output of every node that resolved: what a probe of "node.port" reads.
-// Indices are those of the program resolve returns, before any pass renumbers its ops.
-using NodeOutputValues = std::map<std::string, std::vector<NodeOutputValue>, std::less<>>;
-
+// The same, listing what every node of the graph resolved to (core/node_output_values.h).
 std::optional<Program> resolveGraph(const Graph& graph, const Registry& registry, Diagnostics& diags,
                                     NodeOutputValues& nodeOutputs);
 

@@ -359,6 +359,34 @@ TEST(GraphLoad, FileErrors) {
   std::filesystem::remove_all(dir);
 }
 
+// Loading is two steps: parseGraph reads one file and leaves its imports unfollowed (no
+// file is opened: a missing one is no error there); loadGraphText and loadGraphFile parse
+// it and then follow them, so the missing file is WG070 at the import's path.
+TEST(GraphLoad, ParsingOneFileDoesNotFollowItsImports) {
+  std::string dir = test::makeTempDir("wg_parse_only");
+  const std::string path = dir + "/g.json";
+  const std::string text = R"({"version": 1, "name": "g", "imports": {"foam": "lib/missing.json"},
+  "nodes": [{"id": "f", "type": "fresnel"}], "outputs": {"fragment": {"color": "f.reflectance"}}})";
+  { std::ofstream(path, std::ios::binary) << text; }
+  Diagnostics parsed;
+  auto g = parseGraph(text, path, parsed);
+  ASSERT_TRUE(g) << dump(parsed);
+  EXPECT_TRUE(parsed.all().empty()) << dump(parsed);
+  ASSERT_EQ(g->imports.size(), 1u);
+  EXPECT_EQ(g->imports[0].graph, nullptr);
+  EXPECT_TRUE(g->imports[0].file.empty());
+
+  for (int fromFile = 0; fromFile < 2; ++fromFile) {
+    Diagnostics loaded;
+    auto tree = fromFile ? loadGraphFile(path, loaded) : loadGraphText(std::make_shared<const std::string>(text), path, loaded);
+    EXPECT_FALSE(tree);
+    ASSERT_EQ(loaded.all().size(), 1u) << dump(loaded);
+    EXPECT_EQ(loaded.all()[0].code, DiagCode::ImportMissing) << dump(loaded);
+    EXPECT_EQ(loaded.all()[0].where.line, 1) << dump(loaded);
+  }
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace wg
 
