@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <functional>
 #include <optional>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -15,6 +14,7 @@
 
 #include "codegen/compile.h"
 #include "codegen/cpu_backend.h"
+#include "codegen/water_surface_eval.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "test_support.h"
@@ -129,53 +129,12 @@ inline std::optional<Program> compileFile(const std::string& path, std::string* 
 }
 
 // The vertex stage in double: the ops the vertex position and normal outputs read (every
-// input of each), evaluated by their node evals at the water point (x0, 0, z0), time t.
-struct VertexReference {
-  double position[3];
-  double normal[3];
-};
+// input of each), evaluated by their node evals at the water point (x0, 0, z0), time t
+// (codegen/water_surface_eval.h: the CPU backend, not the query's own extraction).
+using VertexReference = WaterSurfacePoint;
 inline VertexReference vertexReference(const Program& program, double x0, double z0, double t,
                                        const std::vector<Value>& parameters) {
-  std::set<int> needed;
-  std::vector<int> stack;
-  for (const auto& o : program.outputs)
-    if ((o.slot == OutputSlot::VertexPosition || o.slot == OutputSlot::VertexNormal) && o.value.kind == ValueRef::Kind::Op)
-      stack.push_back(o.value.index);
-  while (!stack.empty()) {
-    int k = stack.back();
-    stack.pop_back();
-    if (!needed.insert(k).second) continue;
-    for (const auto& r : program.ops[static_cast<size_t>(k)].inputs)
-      if (r.kind == ValueRef::Kind::Op) stack.push_back(r.index);
-  }
-  EvalEnvironment env;
-  env.worldPosition = Value::vector({x0, 0, z0});
-  env.normal = Value::vector({0, 1, 0});
-  env.time = Value::scalar(t);
-  std::vector<std::vector<Value>> outs(program.ops.size());
-  auto valueOf = [&](const ValueRef& r) -> Value {
-    switch (r.kind) {
-      case ValueRef::Kind::Op: return outs[static_cast<size_t>(r.index)][static_cast<size_t>(r.port)];
-      case ValueRef::Kind::Param: return parameters.at(static_cast<size_t>(r.index));
-      case ValueRef::Kind::Const: return r.constant();
-      case ValueRef::Kind::Builtin: return env.builtin(static_cast<Builtin>(r.index));
-      case ValueRef::Kind::None: break;
-    }
-    return {};
-  };
-  for (int k : needed) {  // std::set: ascending, and the ops are in topological order
-    std::vector<Value> in;
-    for (const auto& r : program.ops[static_cast<size_t>(k)].inputs) in.push_back(valueOf(r));
-    outs[static_cast<size_t>(k)] = evaluateOp(program.ops[static_cast<size_t>(k)], in, env);
-  }
-  VertexReference v{{x0, 0, z0}, {0, 1, 0}};
-  for (const auto& o : program.outputs) {
-    if (o.slot != OutputSlot::VertexPosition && o.slot != OutputSlot::VertexNormal) continue;
-    Value value = valueOf(o.value).convertedTo(Type::Vec3);
-    double* to = o.slot == OutputSlot::VertexPosition ? v.position : v.normal;
-    for (int i = 0; i < 3; ++i) to[i] = value[i];
-  }
-  return v;
+  return waterSurfaceAt(program, parameters, x0, z0, t);
 }
 
 // A parameter value clamped as the runtime clamps an uploaded uniform (NaN to the lower end).
