@@ -111,6 +111,11 @@ TEST(ReadbackTaps, ListedLookUpsAreTheTextureCallsMainMakes) {
         EXPECT_EQ(f.atScreenUv, f.coord == "b_screen_uv");
       }
       fetches += listed;
+      // Every texture() call of the sampler in main() is a listed one, handed on or not.
+      size_t calls = 0;
+      for (size_t k = main.find("texture(" + name + ", "); k != std::string::npos; k = main.find("texture(" + name + ", ", k + 1))
+        ++calls;
+      EXPECT_EQ(calls, listed);
       if (fs.handedOn.count(name)) {
         ++handedOn;
         EXPECT_GT(mentions(main, name), listed);
