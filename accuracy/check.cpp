@@ -246,15 +246,9 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   const bool underwater = result.manifest.lists(RenderPass::DeferredWater);
   std::vector<rt::ShaderSource> sources = rt::waterShaderSources(result, target);
   if (options.mutation.active()) {
-    if (options.mutation.find.find('\n') != std::string::npos || options.mutation.replace.find('\n') != std::string::npos)
-      throw std::invalid_argument("a shader mutation edits within one line");
+    // The user's deliberate edit (check --mutate), not a search the check decides on.
     bool found = false;
-    for (auto& stage : sources)
-      for (size_t at = stage.text.find(options.mutation.find); at != std::string::npos;
-           at = stage.text.find(options.mutation.find, at + options.mutation.replace.size())) {
-        stage.text.replace(at, options.mutation.find.size(), options.mutation.replace);
-        found = true;
-      }
+    for (auto& stage : sources) found |= mutateText(stage.text, options.mutation);
     if (!found) throw std::invalid_argument("the mutation's text '" + options.mutation.find + "' is not in the water shaders");
   }
   rt::RenderSettings settings;
@@ -264,14 +258,14 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   settings.environmentSize = 32;  // the sky cube map: small frames need no more
   settings.waterGridQuads = 64;
 
-  // The reference: the fragment stage in double on the inputs the GPU read back.
+  // The reference: the fragment stage in double on the inputs the GPU read back, planned
+  // from the plan the water shaders were emitted from.
   ReadbackPlan plan;
+  std::optional<ShaderPlan> shaders;
   report.reference = referenceUnavailable(result);
   if (report.reference.empty()) {
-    std::string fragmentText;
-    for (const auto& stage : sources)
-      if (stage.stage == GL_FRAGMENT_SHADER) fragmentText = stage.text;
-    report.reference = planReadback(result, fragmentText, &plan);
+    shaders = waterPlan(result, target);
+    report.reference = planReadback(result, *shaders, &plan);
   }
   // es300 renders the sweep for NaN and Inf only (docs/accuracy.md); glsl330 and vk450
   // (lavapipe: llvmpipe's rasteriser, the same pixel quads) are compared.
@@ -299,7 +293,7 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   ErrorModel model;
   std::vector<Value> parameters;
   if (compare) {
-    readback.emplace(executor, result, sources, plan, settings);
+    readback.emplace(executor, result, sources, *shaders, plan, settings, options.mutation);
     fragment = fragmentProgram(result.program);
     model = programErrorModel(fragment.program);
     for (const auto& p : fragment.program.parameters) parameters.push_back(p.defaultValue);

@@ -97,16 +97,22 @@ int ProbeReport::failures() const {
   return static_cast<int>(std::count_if(cases.begin(), cases.end(), [](const ProbeCaseResult& c) { return !c.passed(); }));
 }
 
-void applyMutation(EmitResult& shader, const ShaderMutation& m) {
-  if (!m.active()) return;
+bool mutateText(std::string& text, const ShaderMutation& m) {
+  if (!m.active()) return false;
   if (m.find.find('\n') != std::string::npos || m.replace.find('\n') != std::string::npos)
     throw std::invalid_argument("a shader mutation edits within one line");
   bool found = false;
-  for (auto& stage : shader.shaders)
-    for (size_t at = stage.text.find(m.find); at != std::string::npos; at = stage.text.find(m.find, at + m.replace.size())) {
-      stage.text.replace(at, m.find.size(), m.replace);
-      found = true;
-    }
+  for (size_t at = text.find(m.find); at != std::string::npos; at = text.find(m.find, at + m.replace.size())) {
+    text.replace(at, m.find.size(), m.replace);
+    found = true;
+  }
+  return found;
+}
+
+void applyMutation(EmitResult& shader, const ShaderMutation& m) {
+  if (!m.active()) return;
+  bool found = false;
+  for (auto& stage : shader.shaders) found |= mutateText(stage.text, m);
   if (!found) throw std::invalid_argument("the mutation's text '" + m.find + "' is not in the probe shader");
 }
 

@@ -61,6 +61,10 @@ struct ShaderMutation {
 
 // Applies `m` to every stage of `shader` (see ShaderMutation).
 void applyMutation(EmitResult& shader, const ShaderMutation& m);
+// Applies `m` to one text: whether `find` occurred. The user's deliberate edit of a shader,
+// the one place a shader's text is searched outside tests; std::invalid_argument for a
+// `find` or `replace` spanning lines.
+bool mutateText(std::string& text, const ShaderMutation& m);
 
 class GpuExecutor;
 

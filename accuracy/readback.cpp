@@ -1,161 +1,135 @@
 #include "accuracy/readback.h"
 
-#include <cctype>
+#include <algorithm>
 #include <stdexcept>
 
 #include "accuracy/gpu_executor.h"
-#include "codegen/shader_interface.h"
 #include "runtime/preview.h"
 
 namespace wg::accuracy {
 namespace {
 
-// Adds the components of a GLSL expression of `size` floats as channels; returns the first.
-int addChannels(ReadbackPlan& plan, const std::string& expr, int size) {
-  static const char* const kComponents[] = {".x", ".y", ".z", ".w"};
+// Adds the `size` components of `value` as channels; returns the first.
+int addChannels(ReadbackPlan& plan, TapChannel value, int size) {
   int first = static_cast<int>(plan.channels.size());
-  for (int k = 0; k < size; ++k) plan.channels.push_back(size == 1 ? expr : "(" + expr + ")" + kComponents[k]);
+  for (int k = 0; k < size; ++k) {
+    value.component = size == 1 ? -1 : k;
+    plan.channels.push_back(value);
+  }
   return first;
 }
 
-// The end of the call whose '(' is at `open`: the index just past its ')', or npos.
-size_t callEnd(const std::string& text, size_t open) {
-  int depth = 0;
-  for (size_t i = open; i < text.size(); ++i) {
-    if (text[i] == '(') ++depth;
-    else if (text[i] == ')' && --depth == 0) return i + 1;
-  }
-  return std::string::npos;
-}
-
-// Where main()'s body begins and where its colour statement is.
-struct MainBody {
-  size_t begin = std::string::npos, colorLine = std::string::npos;
-};
-MainBody findMain(const std::string& text) {
-  MainBody m;
-  m.begin = text.find("void main()");
-  if (m.begin == std::string::npos) return m;
-  std::string color = std::string("\n  ") + iface::kColorOutput + " = ";
-  size_t at = text.rfind(color);
-  if (at != std::string::npos && at > m.begin) m.colorLine = at + 1;
-  return m;
-}
-
-// How a fragment shader uses a sampler: every mention outside comments, and the
-// texture() calls main() makes with it (their text).
-struct SamplerUse {
-  size_t uses = 0;
-  std::vector<std::string> fetches;
-};
-SamplerUse samplerUse(const std::string& text, const MainBody& main, const std::string& name) {
-  SamplerUse use;
-  for (size_t at = text.find(name); at != std::string::npos; at = text.find(name, at + 1)) {
-    char next = at + name.size() < text.size() ? text[at + name.size()] : '\0';
-    if (std::isalnum(static_cast<unsigned char>(next)) || next == '_') continue;  // a longer name
-    size_t lineStart = text.rfind('\n', at);
-    size_t comment = text.find("//", lineStart == std::string::npos ? 0 : lineStart);
-    if (comment < at) continue;  // named in a comment
-    ++use.uses;
-  }
-  std::string call = "texture(" + name + ", ";
-  for (size_t at = text.find(call, main.begin); at != std::string::npos && at < main.colorLine; at = text.find(call, at + 1)) {
-    size_t end = callEnd(text, at + 7);
-    if (end == std::string::npos) break;  // unbalanced: counted as a use only, so not read back
-    use.fetches.push_back(text.substr(at, end - at));
-  }
-  return use;
+TapChannel tapOf(TapChannel::Kind kind, size_t index = 0) {
+  TapChannel c;
+  c.kind = kind;
+  c.index = index;
+  return c;
 }
 
 }  // namespace
 
-std::string planReadback(const CompileResult& result, const std::string& text, ReadbackPlan* out) {
+std::string planReadback(const CompileResult& result, const ShaderPlan& shaders, ReadbackPlan* out) {
   ReadbackPlan plan;
-  MainBody main = findMain(text);
-  if (main.colorLine == std::string::npos) return "the fragment shader writes no colour in main()";
+  const PlannedStage* fs = shaders.stage(ShaderStage::Fragment);
+  if (!fs || fs->colorStatement == std::string::npos) return "the fragment shader writes no colour in main()";
   // Deferred water draws its fragment shader over the whole screen and takes the surface
   // builtins from G-buffer locals of main() (codegen/plan_deferred.cpp) under the names
   // of the forward varyings, which it then does not declare.
-  const bool deferred = result.manifest.lists(RenderPass::DeferredWater);
-  auto declaredLocal = [&](const std::string& name) {
-    return text.find(" " + name + " = ", main.begin) < main.colorLine;
-  };
-  plan.mask = addChannels(plan, "-3.0", 1);  // kWaterMark
-  if (!deferred) plan.fragDepth = addChannels(plan, "gl_FragCoord.z", 1);
-  else if (declaredLocal("b_water_surface")) plan.fragDepth = addChannels(plan, "b_water_surface.w", 1);
-  const auto& varyings = result.manifest.varyings;
+  const bool deferred = shaders.kind == ShaderPlan::Kind::Deferred;
+  TapChannel mark = tapOf(TapChannel::Kind::Constant);
+  mark.constant = kWaterMark;
+  plan.mask = addChannels(plan, mark, 1);
+  if (tapHoldsFragDepth(shaders)) plan.fragDepth = addChannels(plan, tapOf(TapChannel::Kind::FragDepth), 1);
   size_t nodeVaryings = 0;
-  for (const auto& v : varyings) {
-    int size = componentCount(v.type);
-    if (deferred && !declaredLocal(v.name)) continue;
-    if (v.carries == "world_position") plan.worldPosition = addChannels(plan, v.name, size);
-    else if (v.carries == "normal") plan.normal = addChannels(plan, v.name, size);
-    else if (v.carries == "uv") plan.uv = addChannels(plan, v.name, size);
+  for (size_t i = 0; i < shaders.varyings.size(); ++i) {
+    const VaryingInfo& v = shaders.varyings[i];
+    if (!tapHoldsVarying(shaders, i)) continue;
+    int first = addChannels(plan, tapOf(TapChannel::Kind::Varying, i), componentCount(v.type));
+    if (v.carries == "world_position") plan.worldPosition = first;
+    else if (v.carries == "normal") plan.normal = first;
+    else if (v.carries == "uv") plan.uv = first;
     else {
-      plan.varyings.push_back(addChannels(plan, v.name, size));
+      plan.varyings.push_back(first);
       ++nodeVaryings;
     }
   }
   if (nodeVaryings != result.program.varyings.size()) return "the manifest's varyings do not match the program's";
+  // The look-ups main() makes of one sampler (indices into fs->fetches), in its order.
+  auto fetchesOf = [&](const std::string& name) {
+    std::vector<size_t> at;
+    for (size_t k = 0; k < fs->fetches.size(); ++k)
+      if (fs->fetches[k].sampler == name) at.push_back(k);
+    return at;
+  };
+  auto declared = [&](size_t texture) {
+    return std::find(fs->textures.begin(), fs->textures.end(), texture) != fs->textures.end();
+  };
   for (const auto& row : sceneSamplerTable()) {
-    std::string name(row.glslName);
-    SamplerUse use = samplerUse(text, main, name);
-    if (use.uses == 0) continue;
-    // The declaration is the one other use: anything more is a library function sampling it.
-    const bool onlyInMain = use.uses == use.fetches.size() + 1;
+    size_t texture = shaders.textures.size();
+    for (size_t i = 0; i < shaders.textures.size(); ++i)
+      if (shaders.textures[i].scene == row.id && declared(i)) texture = i;
+    if (texture == shaders.textures.size()) continue;
+    const std::string name(row.glslName);
+    const std::vector<size_t> fetches = fetchesOf(name);
+    const bool onlyInMain = !fs->handedOn.count(name);
     if (!row.environment) {
       // The G-buffer: the reference takes it as this pixel's surface builtins.
       bool atThisPixel = deferred && onlyInMain;
-      for (const auto& call : use.fetches) atThisPixel &= call == "texture(" + name + ", b_screen_uv)";
+      for (size_t k : fetches) atThisPixel &= fs->fetches[k].atScreenUv;
       if (!atThisPixel)
         return "it reads the water G-buffer (" + name + ") other than at the pixel's own position";
       // A shader that reads the surface only inside a node (the underwater node's water
       // term) declares no surface locals: fetch the texel itself.
       if (row.id == SceneSampler::WaterSurface) {
-        const std::string texel = "texelFetch(" + name + ", ivec2(gl_FragCoord.xy), 0)";
-        if (plan.worldPosition < 0) plan.worldPosition = addChannels(plan, texel + ".xyz", 3);
-        if (plan.fragDepth < 0) plan.fragDepth = addChannels(plan, texel + ".w", 1);
+        TapChannel texel = tapOf(TapChannel::Kind::TexelAtPixel, texture);
+        if (plan.worldPosition < 0) plan.worldPosition = addChannels(plan, texel, 3);
+        if (plan.fragDepth < 0) {
+          texel.component = 3;
+          plan.fragDepth = static_cast<int>(plan.channels.size());
+          plan.channels.push_back(texel);
+        }
       }
       continue;
     }
     int size = row.id == SceneSampler::SceneDepth ? 1 : 3;
     if (deferred && row.type == Type::Sampler2D) {
-      static const char* const kSwizzle[] = {"", ".r", "", ".rgb"};
-      plan.images.push_back(
-          {row.id, addChannels(plan, "texelFetch(" + name + ", ivec2(gl_FragCoord.xy), 0)" + kSwizzle[size], size), size});
+      // Read back whole: a texel per pixel, its first `size` components.
+      TapChannel texel = tapOf(TapChannel::Kind::TexelAtPixel, texture);
+      int first = static_cast<int>(plan.channels.size());
+      for (int k = 0; k < size; ++k) {
+        texel.component = k;
+        plan.channels.push_back(texel);
+      }
+      plan.images.push_back({row.id, first, size});
       continue;
     }
     if (!onlyInMain)
       return "the fragment shader samples " + name +
              " inside a library function (several look-ups a pixel, where the reference has one value per texture)";
-    for (const auto& call : use.fetches) plan.lookups.push_back({row.id, addChannels(plan, call, size), size});
+    for (size_t k : fetches) plan.lookups.push_back({row.id, addChannels(plan, tapOf(TapChannel::Kind::Fetch, k), size), size});
   }
-  // Node textures sampled only in main() are read back too; one a library function
-  // samples is left to the reference's own sampling (nodes/texture_sampling.h).
-  for (const auto& t : result.manifest.textures) {
-    if (t.scene) continue;
-    SamplerUse use = samplerUse(text, main, t.name);
-    if (use.fetches.empty() || use.uses != use.fetches.size() + 1) continue;
-    for (const auto& call : use.fetches) plan.textureFetches.push_back({t.source, addChannels(plan, call, 4)});
+  // Node textures sampled only in main() are read back too; one handed to a library
+  // function is left to the reference's own sampling (nodes/texture_sampling.h).
+  for (size_t i = 0; i < shaders.textures.size(); ++i) {
+    const TextureInfo& t = shaders.textures[i];
+    if (t.scene || !declared(i)) continue;
+    const std::vector<size_t> fetches = fetchesOf(t.name);
+    if (fetches.empty() || fs->handedOn.count(t.name)) continue;
+    for (size_t k : fetches) plan.textureFetches.push_back({t.source, addChannels(plan, tapOf(TapChannel::Kind::Fetch, k), 4)});
   }
   *out = std::move(plan);
   return "";
 }
 
-std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ReadbackPlan& plan, int frame) {
+std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, Target target,
+                                         const ReadbackPlan& plan, int frame) {
+  std::vector<TapChannel> channels;
+  for (size_t c = 3 * static_cast<size_t>(frame); c < plan.channels.size() && channels.size() < 3; ++c)
+    channels.push_back(plan.channels[c]);
   std::vector<rt::ShaderSource> out = water;
   for (auto& stage : out) {
     if (stage.stage != GL_FRAGMENT_SHADER) continue;
-    MainBody main = findMain(stage.text);
-    if (main.colorLine == std::string::npos) throw std::logic_error("tapShaders: no colour statement in main()");
-    std::string value;
-    for (int k = 0; k < 3; ++k) {
-      size_t c = static_cast<size_t>(3 * frame + k);
-      value += (c < plan.channels.size() ? "float(" + plan.channels[c] + ")" : std::string("0.0")) + ", ";
-    }
-    size_t end = stage.text.find('\n', main.colorLine);
-    stage.text.replace(main.colorLine, end - main.colorLine,
-                       std::string("  ") + iface::kColorOutput + " = vec4(" + value + "1.0);");
+    stage.text = emitTapFragment(shaders, target, channels).text;
     stage.name += " (read-back " + std::to_string(frame) + ")";
   }
   return out;
@@ -180,11 +154,15 @@ SceneImage ReadbackImage::sceneImage(const ReadbackPlan::Image& image, bool near
 bool ReadbackRenderer::samplesNearest(SceneSampler s) const { return renderers_.front()->samplesNearest(s); }
 
 ReadbackRenderer::ReadbackRenderer(GpuExecutor& executor, const CompileResult& result,
-                                   const std::vector<rt::ShaderSource>& water, ReadbackPlan plan,
-                                   const rt::RenderSettings& settings)
+                                   const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, ReadbackPlan plan,
+                                   const rt::RenderSettings& settings, const ShaderMutation& mutation)
     : plan_(std::move(plan)) {
-  for (int f = 0; f < plan_.frames(); ++f)
-    renderers_.push_back(executor.waterFrames(result, tapShaders(water, plan_, f), /*edited=*/true, settings));
+  for (int f = 0; f < plan_.frames(); ++f) {
+    std::vector<rt::ShaderSource> taps = tapShaders(water, shaders, executor.target(), plan_, f);
+    for (auto& stage : taps)
+      if (stage.stage == GL_FRAGMENT_SHADER) mutateText(stage.text, mutation);
+    renderers_.push_back(executor.waterFrames(result, taps, /*edited=*/true, settings));
+  }
 }
 
 ReadbackRenderer::~ReadbackRenderer() = default;

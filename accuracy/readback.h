@@ -5,16 +5,21 @@
 // look-up it makes (depth, scene colour, reflection, refraction, environment) as the
 // passes rendered them and the shader fetched them, and its node texture look-ups (as
 // llvmpipe filtered them: the reference's own filtering differs in the last bits, which
-// steep formulas downstream, a GGX highlight, would amplify past any bound). Each quantity is a GLSL float
-// expression valid at the end of the fragment shader's main(); a "tap" shader writes
-// three of them as the colour in place of the graph's, into the RGBA32F frame, so each
-// float comes back exactly. The vertex shader and every other pass are the graph's own,
-// so the same fragments win the depth test as in the graph's frame.
+// steep formulas downstream, a GGX highlight, would amplify past any bound). All of it is
+// planned from the ShaderPlan the water shaders were emitted from (codegen/compile.h
+// waterPlan): its varyings, the look-ups its fragment stage makes (PlannedStage::fetches)
+// and the samplers it hands to functions. A "tap" frame is the fragment stage emitted in
+// the tap mode (codegen/readback_taps.h): three of the planned values as the colour in
+// place of the graph's, into the RGBA32F frame, so each float comes back exactly. The
+// vertex shader and every other pass are the graph's own, so the same fragments win the
+// depth test as in the graph's frame.
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "accuracy/probe.h"
 #include "codegen/compile.h"
+#include "codegen/readback_taps.h"
 #include "core/interface_tables.h"
 #include "core/node_spec.h"
 #include "runtime/renderer.h"
@@ -22,7 +27,7 @@
 namespace wg::accuracy {
 
 struct ReadbackPlan {
-  std::vector<std::string> channels;  // one float GLSL expression each
+  std::vector<TapChannel> channels;  // one float main() holds each
   // First channel of each quantity; -1 where the fragment shader does not read it.
   int mask = -1;  // holds kWaterMark wherever the water surface was drawn
   int fragDepth = -1, worldPosition = -1, normal = -1, uv = -1;
@@ -58,16 +63,17 @@ struct ReadbackPlan {
 // A value no scene colour takes: the mask channel's literal.
 inline constexpr float kWaterMark = -3.0f;
 
-// Plans the read-back of `fragmentText` (the water fragment shader of `result`). Returns
-// why the per-pixel reference cannot be built from it ("" when it can): a scene texture
-// sampled inside a library function of forward-drawn water (many look-ups a pixel, where
-// the reference has one value per texture and the water does not cover the screen to read
-// the texture whole), or the G-buffer read other than at this pixel.
-std::string planReadback(const CompileResult& result, const std::string& fragmentText, ReadbackPlan* plan);
+// Plans the read-back of the water fragment stage of `shaders` (waterPlan of `result`).
+// Returns why the per-pixel reference cannot be built from it ("" when it can): a scene
+// texture handed to a function by forward-drawn water (many look-ups a pixel, where the
+// reference has one value per texture and the water does not cover the screen to read the
+// texture whole), or the G-buffer read other than at this pixel.
+std::string planReadback(const CompileResult& result, const ShaderPlan& shaders, ReadbackPlan* plan);
 
-// `water` (vertex and fragment) with the fragment colour replaced by channels
-// 3*frame .. 3*frame+2 of `plan`.
-std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ReadbackPlan& plan, int frame);
+// `water` (the target's shaders, rt::waterShaderSources) with the fragment stage emitted as
+// the tap frame of channels 3*frame .. 3*frame+2 of `plan`.
+std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, Target target,
+                                         const ReadbackPlan& plan, int frame);
 
 // One view's channels, per pixel (rows top to bottom).
 struct ReadbackImage {
@@ -83,11 +89,14 @@ class GpuExecutor;
 class WaterFrames;
 
 // The tap renderers of a graph: one per frame of the plan, reused over the views, on the
-// executor's API (the tap shaders are edited texts of its target's water shaders).
+// executor's API (the tap shaders are variants of its target's water shaders, compiled as
+// edited texts). `mutation`, the user's edit of the water shaders (check --mutate), is
+// applied to the tap frames too, wherever its text occurs in them.
 class ReadbackRenderer {
  public:
   ReadbackRenderer(GpuExecutor& executor, const CompileResult& result, const std::vector<rt::ShaderSource>& water,
-                   ReadbackPlan plan, const rt::RenderSettings& settings);
+                   const ShaderPlan& shaders, ReadbackPlan plan, const rt::RenderSettings& settings,
+                   const ShaderMutation& mutation = {});
   ~ReadbackRenderer();
   ReadbackImage read(const rt::Camera& camera, const rt::SceneOptions& scene);
   const ReadbackPlan& plan() const { return plan_; }

@@ -174,6 +174,11 @@ bool checkOtherPresets(const Graph& graphAsWritten, std::string_view applied, co
 
 }  // namespace
 
+ShaderPlan waterPlan(const CompileResult& result, Target target) {
+  // As planTargets: a target tessellates when the graph asks and the target can.
+  return planShaders(result.program, result.sourceName, tessellates(target, result.tessellation), result.derivedUniforms);
+}
+
 std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
                                           const CompileOptions& options, Diagnostics& diags) {
   Graph withPreset;
@@ -204,6 +209,9 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
       !addWgslTarget(*program, base, sourceName.empty() ? graph.name : sourceName, result, diags, &result.wgslLineOp))
     return std::nullopt;
   result.manifest.preset = options.preset;
+  result.sourceName = sourceName.empty() ? graph.name : sourceName;
+  result.tessellation = options.tessellation;
+  result.derivedUniforms = options.derivedUniforms;
   result.files.push_back({base + ".manifest.json", result.manifest.fileText()});
   result.program = std::move(*program);
   return result;

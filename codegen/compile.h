@@ -41,7 +41,16 @@ struct CompileResult {
   int nodesTotal = 0;
   int nodesKept = 0;  // graph nodes some op still comes from (an expanded node counts once)
   std::vector<int> wgslLineOp;  // with CompileOptions::wgsl: GRAPH.wgsl's line -> op map
+  // How the shaders were planned, so waterPlan can plan a target's again (the plans
+  // themselves are not kept: a big graph's are megabytes).
+  std::string sourceName;
+  bool tessellation = true, derivedUniforms = false;
 };
+
+// The plan `result`'s shaders for `target` were emitted from, made again from its program:
+// emitGlsl of it gives the compile's texts byte for byte (check's tap frames are variants
+// of its fragment stage, codegen/readback_taps.h).
+ShaderPlan waterPlan(const CompileResult& result, Target target);
 
 // glslang's messages about generated shaders as diagnostics at the graph node whose op wrote
 // the line (and the subgraph instances it lies in), or at the graph file for a line no op wrote.

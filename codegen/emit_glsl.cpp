@@ -163,6 +163,10 @@ EmitResult emitGlsl(const ShaderPlan& plan, Target target) {
   return result;
 }
 
+EmittedShader emitStage(const ShaderPlan& plan, const PlannedStage& stage, Target target) {
+  return StageAssembler(plan, target).assemble(stage);
+}
+
 EmitResult emitProgram(const Program& program, Target target, const std::string& sourceName, EmitMode mode,
                        bool allowTessellation) {
   if (mode == EmitMode::Probe) return emitGlsl(planProbe(program, sourceName), target);

@@ -37,7 +37,11 @@ struct EmitResult {
 // tessellation stages (not es300).
 EmitResult emitGlsl(const ShaderPlan& plan, Target target);
 
-// Shader: planShaders; Probe: planProbe (see codegen/shader_plan.h).
+// One stage of `plan` (or a variant of one of its stages: codegen/readback_taps.h) for `target`.
+EmittedShader emitStage(const ShaderPlan& plan, const PlannedStage& stage, Target target);
+
+// Shader: planShaders; Probe: planProbe (see codegen/shader_plan.h). The tap frames of
+// `check` are a third mode, of the fragment stage alone: emitTapFragment (codegen/readback_taps.h).
 enum class EmitMode { Shader, Probe };
 
 // One target from a plan of its own. `allowTessellation` false draws the mesh as it is

@@ -61,24 +61,24 @@ class PlanOpContext final : public EmitContext {
   std::string timePhase(double omega) override { return w_.phaseUniform(b_, omega); }
   using EmitContext::texture;
   std::string texture(std::string_view option, const SamplerState& sampler) override {
-    const nlohmann::json& v = op().options().at(option);
-    if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
-    return w_.nodeTexture(b_, v.get<std::string>(), sampler);
+    return w_.handOn(b_, nodeTexture(option, sampler));
   }
-  std::string sceneTexture(SceneResource resource) override {
-    const auto& resources = spec().resources;
-    const SceneResourceRow& row = sceneResourceRow(resource);
-    if (std::find(resources.begin(), resources.end(), resource) == resources.end())
-      throw std::logic_error("node '" + spec().type + "' samples scene resource '" + std::string(row.name) +
-                             "' without listing it in its resources");
-    return w_.sceneSampler(b_, row.sampler);
+  std::string sceneTexture(SceneResource resource) override { return w_.handOn(b_, sceneTextureName(resource)); }
+  using EmitContext::sampleTexture;
+  std::string sampleTexture(std::string_view option, const SamplerState& sampler, const std::string& coord) override {
+    return w_.fetch(b_, nodeTexture(option, sampler), coord);
   }
+  using EmitContext::sampleScene;
+  std::string sampleScene(SceneResource resource, const std::string& coord) override {
+    return w_.fetch(b_, sceneTextureName(resource), coord);
+  }
+  void reserveTexture(std::string_view option) override { nodeTexture(option, SamplerState{}); }
   const ocean::OceanSettings& oceanSettings(int port) const override {
     return spectrumOp(port).parsedOptions->as<ocean::OceanSettings>();
   }
   std::string oceanMap(int port, int cascade, int which) override {
     spectrumOp(port);
-    return w_.oceanMap(b_, op().inputs.at(static_cast<size_t>(port)).index, cascade, which);
+    return w_.handOn(b_, w_.oceanMap(b_, op().inputs.at(static_cast<size_t>(port)).index, cascade, which));
   }
   const NodeSpec& spec() const override { return *op().spec; }
   ValueFact inputFact(int port) const override {
@@ -107,6 +107,19 @@ class PlanOpContext final : public EmitContext {
 
  private:
   const Op& op() const { return w_.program().ops[static_cast<size_t>(opIndex_)]; }
+  std::string nodeTexture(std::string_view option, const SamplerState& sampler) {
+    const nlohmann::json& v = op().options().at(option);
+    if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
+    return w_.nodeTexture(b_, v.get<std::string>(), sampler);
+  }
+  std::string sceneTextureName(SceneResource resource) {
+    const auto& resources = spec().resources;
+    const SceneResourceRow& row = sceneResourceRow(resource);
+    if (std::find(resources.begin(), resources.end(), resource) == resources.end())
+      throw std::logic_error("node '" + spec().type + "' samples scene resource '" + std::string(row.name) +
+                             "' without listing it in its resources");
+    return w_.sceneSampler(b_, row.sampler);
+  }
   // The ocean_spectrum op feeding an `ocean` input (resolve admits nothing else there).
   const Op& spectrumOp(int port) const {
     const ValueRef& in = op().inputs.at(static_cast<size_t>(port));
@@ -381,6 +394,21 @@ std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
   sceneTextures_.push_back(t);
   w.noteRegistered(t.name, [this, n = sceneTextures_.size()] { popIfLast(sceneTextures_, n); });
   return t.name;
+}
+
+// Taken back, like a declaration, when the op's text holding it is left out.
+std::string BodyWriter::fetch(StageBody& w, const std::string& sampler, const std::string& coord) {
+  TextureFetch f{sampler, coord};
+  std::string call = f.call();
+  w.fetches.push_back({std::move(f)});
+  w.noteRegistered(call, [&w, at = w.fetches.size() - 1] { w.fetches[at].kept = false; });
+  return call;
+}
+
+std::string BodyWriter::handOn(StageBody& w, std::string sampler) {
+  ++w.handedOn[sampler];
+  w.noteRegistered(sampler, [&w, sampler] { --w.handedOn[sampler]; });
+  return sampler;
 }
 
 // One sampler per ocean, cascade and map, named after them ("u_ocean0_slopes2").

@@ -4,6 +4,7 @@
 // phases and samplers, and records what the body used; how a builtin is named is the one
 // thing each kind of plan decides for itself (the BuiltinNamer it is given).
 #include <functional>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -27,6 +28,15 @@ struct StageBody {
   // directly instead of copying into a new local. By the writer's port index ("" none; a
   // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
   std::vector<std::string> aliases;
+  // The look-ups the ops make through EmitContext::sampleTexture and sampleScene (in the
+  // order of the text; `kept` false once the text holding one was left out), and how often
+  // each sampler is handed on by name (texture(), sceneTexture(), oceanMap()).
+  struct Fetch {
+    TextureFetch fetch;
+    bool kept = true;
+  };
+  std::vector<Fetch> fetches;
+  std::map<std::string, int> handedOn;
 
   // While an op is written: what its emit declared for the first time in this stage (a
   // parameter, a builtin uniform, a texture, ...), each with how to take it back, so a local
@@ -70,6 +80,10 @@ class BodyWriter {
   std::string phaseUniform(StageBody& body, double omega);
   std::string nodeTexture(StageBody& body, const std::string& source, const SamplerState& sampler);
   std::string sceneSampler(StageBody& body, SceneSampler sampler);
+  // Records a look-up of `sampler` at `coord` in `body`; returns the call.
+  std::string fetch(StageBody& body, const std::string& sampler, const std::string& coord);
+  // Records that an op hands `sampler` on by name (to a function); returns the name.
+  std::string handOn(StageBody& body, std::string sampler);
   // Map `which` of cascade `cascade` of the ocean op `spectrumOp` computes.
   std::string oceanMap(StageBody& body, int spectrumOp, int cascade, int which);
   // The oceans the maps read, by first use.
@@ -124,6 +138,8 @@ std::vector<size_t> texturesIn(const ShaderPlan& plan, unsigned bit);
 void planDeferredSamplers(BodyWriter& writer, StageBody& fragment);
 // Deferred: the fragment's surface builtins read from the G-buffer, under the varyings' names.
 std::vector<std::string> deferredLocals(const StageBody& fragment);
+// Deferred: the look-ups those locals make, in their order.
+std::vector<TextureFetch> deferredFetches(const StageBody& fragment);
 // Tessellation asked for by a vertex-stage node, if any.
 std::optional<TessellationSettings> requestedTessellation(const Program& program);
 // Tessellated: the evaluation stage's builtin locals (the patch corners interpolated).

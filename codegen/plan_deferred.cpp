@@ -32,6 +32,14 @@ void planDeferredSamplers(BodyWriter& writer, StageBody& fragment) {
   if (reads.normalUv) writer.sceneSampler(fragment, SceneSampler::WaterNormalUv);
 }
 
+std::vector<TextureFetch> deferredFetches(const StageBody& fragment) {
+  GBufferReads reads = gBufferReads(fragment);
+  std::vector<TextureFetch> fetches;
+  if (reads.surface) fetches.push_back({gBufferSampler(SceneSampler::WaterSurface), "b_screen_uv", true});
+  if (reads.normalUv) fetches.push_back({gBufferSampler(SceneSampler::WaterNormalUv), "b_screen_uv", true});
+  return fetches;
+}
+
 // The normal faces up, so its y is sqrt(1 - x^2 - z^2).
 std::vector<std::string> deferredLocals(const StageBody& fragment) {
   const auto& b = fragment.builtins;

@@ -11,6 +11,9 @@ namespace {
 
 std::string surfaceUniformName(BuiltinUniform u) { return std::string(builtinUniformRow(u).glslName); }
 
+// The screen uv builtin in both stages (a local of main()).
+const char* const kSurfaceScreenUv = "b_screen_uv";
+
 // How a surface's (or the deferred pass's) stage bodies name the builtins: vertex stages
 // compute them as locals from the attributes (or the patch), fragment stages from the
 // varyings (or the G-buffer).
@@ -28,7 +31,7 @@ std::string surfaceBuiltin(const ShaderPlan& plan, StageBody& w, Builtin b) {
       w.use(BuiltinUniform::CameraPosition);
       if (vertex) w.use(BuiltinUniform::Model);
       return "b_view_direction";
-    case Builtin::ScreenUv: w.use(BuiltinUniform::ViewportSize); return "b_screen_uv";
+    case Builtin::ScreenUv: w.use(BuiltinUniform::ViewportSize); return kSurfaceScreenUv;
     case Builtin::FragDepth:
       return plan.kind == ShaderPlan::Kind::Deferred && !vertex ? "b_water_surface.w" : "gl_FragCoord.z";
     case Builtin::CameraPosition:
@@ -82,6 +85,7 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   writer.writeOps(frag);
   std::string color = writer.outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
   std::string alpha = writer.outputExpr(frag, OutputSlot::FragmentAlpha, "1.0");
+  const size_t colorStatement = frag.body.size(), colorLine = frag.lineOp.size();
   frag.line(-1, iface::kColorOutput, " = vec4(", color, ", ", alpha, ");");
   if (deferred) planDeferredSamplers(writer, frag);
 
@@ -154,8 +158,14 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
     vs.uniforms = uniformsWhere(plan, [](const UniformInfo& u) { return (u.stages & kVertexStage) != 0; });
     vs.textures = texturesIn(plan, kVertexStage);
   }
+  // Deferred: the look-ups of the G-buffer locals come first in main().
+  std::vector<TextureFetch> localFetches = deferred ? deferredFetches(frag) : std::vector<TextureFetch>{};
   PlannedStage& fs = plan.stages.emplace_back(plannedStage(ShaderStage::Fragment, std::move(frag), fragmentLocals(plan, frag)));
   addOwnGlsl(program, fs);
+  fs.colorStatement = colorStatement;
+  fs.colorLine = colorLine;
+  for (auto& f : fs.fetches) f.atScreenUv = f.coord == kSurfaceScreenUv;
+  fs.fetches.insert(fs.fetches.begin(), localFetches.begin(), localFetches.end());
   // Deferred: the full-screen fragment shader reads the G-buffer instead of varyings.
   if (!deferred) fs.inputs = varyings;
   fs.uniforms = uniformsWhere(plan, [](const UniformInfo& u) { return (u.stages & kFragmentStage) != 0; });

@@ -35,6 +35,10 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, std::vector<std::str
   s.body.shrink_to_fit();
   s.lineOp.shrink_to_fit();
   s.builtins = std::move(w.builtins);
+  for (auto& f : w.fetches)
+    if (f.kept) s.fetches.push_back(std::move(f.fetch));
+  for (const auto& [sampler, times] : w.handedOn)
+    if (times > 0) s.handedOn.insert(sampler);
   s.library = libraryFor(code);
   return s;
 }

@@ -76,6 +76,17 @@ struct StageVariable {
   std::string name;
 };
 
+// A texture() look-up main() makes: a node's (EmitContext::sampleTexture, sampleScene) or
+// a deferred G-buffer local's. Its coordinate names only what main() declares before it,
+// so the call is valid anywhere after, up to the end of main() (check's tap frames read it
+// back there, accuracy/readback.h).
+struct TextureFetch {
+  std::string sampler;  // GLSL name, as in ShaderPlan::textures
+  std::string coord;    // the coordinate expression
+  bool atScreenUv = false;  // the coordinate is the stage's screen uv builtin itself
+  std::string call() const { return "texture(" + sampler + ", " + coord + ")"; }
+};
+
 // One shader of the pipeline, before any target's declarations are wrapped around it.
 struct PlannedStage {
   ShaderStage stage{};
@@ -93,6 +104,14 @@ struct PlannedStage {
   // the library, with the first op that needs it (glslang's errors in it name that node).
   std::vector<std::shared_ptr<const std::string>> ownGlsl;
   std::vector<int> ownGlslOp;
+  // What main() samples, as planned, not as read from the text: its look-ups in the order of
+  // the text, and the samplers it hands to a function or to a call other than texture()
+  // (look-ups inside those are not listed).
+  std::vector<TextureFetch> fetches;
+  std::set<std::string> handedOn;
+  // A drawn fragment stage: where the colour statement, the body's last line, begins
+  // (offset into body, and its index in lineOp); npos where the stage writes none.
+  size_t colorStatement = std::string::npos, colorLine = std::string::npos;
 };
 
 struct ShaderPlan {

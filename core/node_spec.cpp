@@ -44,6 +44,20 @@ std::string EmitContext::sceneTexture(std::string_view resource) {
   return sceneTexture(*r);
 }
 
+std::string EmitContext::sampleTexture(std::string_view option, const SamplerState& sampler, const std::string& coord) {
+  return "texture(" + texture(option, sampler) + ", " + coord + ")";
+}
+
+std::string EmitContext::sampleScene(SceneResource resource, const std::string& coord) {
+  return "texture(" + sceneTexture(resource) + ", " + coord + ")";
+}
+
+std::string EmitContext::sampleScene(std::string_view resource, const std::string& coord) {
+  auto r = parseSceneResource(resource);
+  if (!r) throw std::logic_error("node '" + spec().type + "' samples unknown scene resource '" + std::string(resource) + "'");
+  return sampleScene(*r, coord);
+}
+
 ValueFact builtinFact(Builtin b) {
   ValueFact f;
   switch (b) {

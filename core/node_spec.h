@@ -172,6 +172,20 @@ class EmitContext {
   // (SceneDepth -> u_scene_depth; see core/interface_tables.h).
   virtual std::string sceneTexture(SceneResource resource) = 0;
   std::string sceneTexture(std::string_view resource);  // by the resource's name
+  // A look-up the node's own expressions make, "texture(S, coord)", of the texture of option
+  // `option` or of scene resource `resource`. Through these the planner lists every look-up
+  // main() makes (codegen/shader_plan.h TextureFetch: check reads them back); a sampler
+  // named by texture(), sceneTexture() or oceanMap() is one handed on to a function (or to
+  // textureLod), whose look-ups the planner does not see.
+  virtual std::string sampleTexture(std::string_view option, const SamplerState& sampler, const std::string& coord);
+  std::string sampleTexture(std::string_view option, const std::string& coord) {
+    return sampleTexture(option, SamplerState{}, coord);
+  }
+  virtual std::string sampleScene(SceneResource resource, const std::string& coord);
+  std::string sampleScene(std::string_view resource, const std::string& coord);
+  // Declares the texture of option `option` now, for a node that samples it with
+  // sampleTexture only after another texture (node textures are numbered by first use).
+  virtual void reserveTexture(std::string_view option) { texture(option); }
 
   // The spectral ocean (ocean_* readers): the settings of the ocean_spectrum feeding input
   // `port` (an `ocean` port), and the sampler2D holding its cascade `cascade`'s map

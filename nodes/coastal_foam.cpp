@@ -62,13 +62,12 @@ NodeSpec coastalFoamNode() {
   s.isSource = true;  // samples a texture
   s.parseOptions = optionParser(parseCoastalFoamOptions);
   s.emit = [](EmitContext& ctx) {
-    std::string sampler = ctx.texture("texture");
     bool cubic = ctx.options<CoastalFoamOptions>().cubic;
     std::string uv = EmitContext::call("wg_coastal_foam_uv", {ctx.input("position"), ctx.input("normal"), ctx.input("tex_scale"),
                                                               ctx.input("distortion")});
     std::string amount = EmitContext::call("wg_coastal_foam_amount", {ctx.input("depth"), ctx.input("max_depth"),
                                                                       ctx.input("intensity"), ctx.input("crest")});
-    std::string foam = ctx.temporary(Type::Float, "clamp(" + amount + " * texture(" + sampler + ", " + uv + ").r, 0.0, 1.0)");
+    std::string foam = ctx.temporary(Type::Float, "clamp(" + amount + " * " + ctx.sampleTexture("texture", uv) + ".r, 0.0, 1.0)");
     ctx.output(0, foam);
     ctx.output(1, EmitContext::call(cubic ? "wg_coastal_foam_specular_cubic" : "wg_coastal_foam_specular_linear",
                                     {foam, ctx.input("k")}));

@@ -74,7 +74,6 @@ NodeSpec edgeFoamNode() {
   s.parseOptions = optionParser(parseEdgeFoamOptions);
   s.emit = [](EmitContext& ctx) {
     const auto& [smooth, speed] = ctx.options<EdgeFoamOptions>();
-    std::string sampler = ctx.texture("texture");
     // mod(speed t, 1) = mod(2 pi speed t, 2 pi) / 2 pi, and the same at half the speed.
     std::string off = "vec2(0.0)";
     if (speed != 0.0) {
@@ -88,8 +87,9 @@ NodeSpec edgeFoamNode() {
     std::string xz = ctx.temporary(Type::Vec2, position + ".xz * " + foamScale);
     std::string uv1 = xz + " * " + ctx.literal(kLayer1Scale) + " + " + off;
     std::string uv2 = xz + " * " + ctx.literal(kLayer2Scale) + " + vec2(-" + off + ".y, " + off + ".x)";
-    std::string t = ctx.temporary(Type::Float, "0.5 * (texture(" + sampler + ", " + uv1 + ").r + texture(" + sampler +
-                                                   ", " + uv2 + ").r)");
+    std::string layer1 = ctx.sampleTexture("texture", uv1);  // one look-up per statement: in the order of the text
+    std::string layer2 = ctx.sampleTexture("texture", uv2);
+    std::string t = ctx.temporary(Type::Float, "0.5 * (" + layer1 + ".r + " + layer2 + ".r)");
     std::string mask = EmitContext::call(smooth ? "wg_edge_foam_mask_smooth" : "wg_edge_foam_mask_linear",
                                          {ctx.input("depth"), ctx.input("width")});
     ctx.output(0, EmitContext::call("wg_edge_foam", {t, mask, ctx.input("cutoff"), ctx.input("softness"), ctx.input("strength")}));

@@ -74,17 +74,17 @@ NodeSpec flowMapNode() {
     ctx.set("fade_b", weight(pb));
   };
   s.emit = [](EmitContext& ctx) {
-    std::string tex = ctx.texture("texture");
+    ctx.reserveTexture("texture");  // declared before flow_texture, which it samples after it
     std::string uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
-    std::string flow =
-        ctx.options<FlowMapOptions>().flowFromTexture
-            ? EmitContext::call("wg_flow_map_decode", {"texture(" + ctx.texture("flow_texture") + ", " + uv + ")"})
-            : ctx.input("flow");
+    std::string flow = ctx.options<FlowMapOptions>().flowFromTexture
+                           ? EmitContext::call("wg_flow_map_decode", {ctx.sampleTexture("flow_texture", uv)})
+                           : ctx.input("flow");
     std::string drag = ctx.temporary(Type::Vec2, "(" + flow + ") * " + ctx.input("strength"));
     std::string pa = ctx.input("progress_a"), pb = ctx.input("progress_b");
     std::string wa = ctx.input("fade_a"), wb = ctx.input("fade_b");
-    ctx.output(0, "(texture(" + tex + ", " + uv + " - " + drag + " * " + pa + ") * " + wa + " + texture(" + tex + ", " +
-                      uv + " - " + drag + " * " + pb + ") * " + wb + ")");
+    std::string a = ctx.sampleTexture("texture", uv + " - " + drag + " * " + pa);  // in the order of the text
+    std::string b = ctx.sampleTexture("texture", uv + " - " + drag + " * " + pb);
+    ctx.output(0, "(" + a + " * " + wa + " + " + b + " * " + wb + ")");
     ctx.output(1, wa);
     ctx.output(2, wb);
   };

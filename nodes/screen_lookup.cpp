@@ -18,7 +18,7 @@ void makeScreenLookup(NodeSpec& s, SceneResource resource, const std::string& di
   s.emit = [resource](EmitContext& ctx) {
     std::string uv = ctx.temporary(
         Type::Vec2, EmitContext::call("wg_scene_color_uv", {ctx.input("screen_uv"), ctx.input("distortion")}));
-    ctx.output(0, "texture(" + ctx.sceneTexture(resource) + ", " + uv + ").rgb");
+    ctx.output(0, ctx.sampleScene(resource, uv) + ".rgb");
     ctx.output(1, uv);
   };
   const SceneSampler sampler = sceneResourceRow(resource).sampler;

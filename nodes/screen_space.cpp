@@ -66,7 +66,7 @@ NodeSpec sceneDepthNode() {
   };
   s.emit = [](EmitContext& ctx) {
     std::string uv = ctx.input("screen_uv");
-    std::string raw = ctx.temporary(Type::Float, "texture(" + ctx.sceneTexture("scene_depth") + ", " + uv + ").r");
+    std::string raw = ctx.temporary(Type::Float, ctx.sampleScene("scene_depth", uv) + ".r");
     std::string fn = linearizeDepthRatioFunction(kDepthTextureFact, ctx.knownBuiltin(Builtin::CameraNearFar));
     std::string lin = ctx.temporary(Type::Float, EmitContext::call(fn, {raw, ctx.input("near"), ctx.input("ratio")}));
     ctx.output(0, raw);
@@ -150,7 +150,7 @@ NodeSpec planarReflectionNode() {
     std::string uv = ctx.temporary(
         Type::Vec2, EmitContext::call(flip ? "wg_planar_reflection_uv_flipped" : "wg_scene_color_uv",
                                       {ctx.input("screen_uv"), ctx.input("distortion")}));
-    ctx.output(0, "texture(" + ctx.sceneTexture("planar_reflection") + ", " + uv + ").rgb");
+    ctx.output(0, ctx.sampleScene("planar_reflection", uv) + ".rgb");
     ctx.output(1, uv);
   };
   s.eval = [](EvalContext& ctx) {
@@ -186,7 +186,7 @@ NodeSpec cubemapReflectionNode() {
   s.resources = {SceneResource::Environment};
   s.emit = [](EmitContext& ctx) {
     std::string r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {ctx.input("normal"), ctx.input("view")}));
-    ctx.output(0, "texture(" + ctx.sceneTexture("environment") + ", " + r + ").rgb");
+    ctx.output(0, ctx.sampleScene("environment", r) + ".rgb");
     ctx.output(1, r);
   };
   s.eval = [](EvalContext& ctx) {

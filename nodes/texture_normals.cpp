@@ -114,7 +114,6 @@ NodeSpec normalMapScrollNode() {
     ctx.set("scroll_b", deriveScroll(ctx, ctx.input("speed_b"), ctx.input("time")));
   };
   s.emit = [](EmitContext& ctx) {
-    std::string tex = ctx.texture("texture");
     auto layer = [&](const char* scale, const char* scroll) {
       // A layer that neither scales nor scrolls reads the texture at uv itself: uv * 1.0 +
       // 0.0 is uv exactly, but glslang and spirv-opt keep it.
@@ -123,7 +122,7 @@ NodeSpec normalMapScrollNode() {
                              : EmitContext::call("wg_normal_map_scroll_uv",
                                                  {ctx.input("uv"), ctx.input(scale), ctx.input(scroll)});
       return ctx.temporary(Type::Vec3,
-                           EmitContext::call("wg_normal_map_scroll_unpack", {"texture(" + tex + ", " + uv + ")"}));
+                           EmitContext::call("wg_normal_map_scroll_unpack", {ctx.sampleTexture("texture", uv)}));
     };
     std::string a = layer("scale_a", "scroll_a"), b = layer("scale_b", "scroll_b");
     std::string n = ctx.temporary(

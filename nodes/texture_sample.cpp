@@ -79,8 +79,8 @@ NodeSpec textureSampleNode() {
     return std::vector<ValueFact>{unit, unit, unit};
   };
   s.emit = [](EmitContext& ctx) {
-    std::string tex = ctx.texture("texture", ctx.options<TextureSampleOptions>().sampler);
-    std::string texel = ctx.temporary(Type::Vec4, "texture(" + tex + ", " + ctx.input("uv") + ")");
+    std::string uv = ctx.input("uv");
+    std::string texel = ctx.temporary(Type::Vec4, ctx.sampleTexture("texture", ctx.options<TextureSampleOptions>().sampler, uv));
     ctx.output(0, texel + ".rgb");
     ctx.output(1, texel + ".a");
     ctx.output(2, texel);

@@ -106,8 +106,8 @@ NodeSpec underwaterNode() {
   s.resources = {SceneResource::Underwater, SceneResource::SceneDepth, SceneResource::SceneColor};
   s.emit = [](EmitContext& ctx) {
     std::string uv = ctx.input("screen_uv");
-    std::string water = ctx.temporary(Type::Vec4, "texture(" + ctx.sceneTexture("underwater") + ", " + uv + ")");
-    std::string raw = ctx.temporary(Type::Float, "texture(" + ctx.sceneTexture("scene_depth") + ", " + uv + ").r");
+    std::string water = ctx.temporary(Type::Vec4, ctx.sampleScene("underwater", uv));
+    std::string raw = ctx.temporary(Type::Float, ctx.sampleScene("scene_depth", uv) + ".r");
     std::string cam = ctx.builtin(Builtin::CameraPosition);
     std::string lin = EmitContext::call("wg_linearize_depth_ratio", {raw, ctx.input("near"), ctx.input("ratio")});
     std::string scene = ctx.temporary(

@@ -111,7 +111,7 @@ NodeSpec waterDepthNode() {
     ValueFact nearFar = ctx.knownBuiltin(Builtin::CameraNearFar);
     std::string sceneFn = linearizeDepthRatioFunction(kDepthTextureFact, nearFar);
     std::string surfaceFn = linearizeDepthRatioFunction(ctx.knownBuiltin(Builtin::FragDepth), nearFar);
-    std::string sceneDepth = "texture(" + ctx.sceneTexture("scene_depth") + ", " + ctx.input("screen_uv") + ").r";
+    std::string sceneDepth = ctx.sampleScene("scene_depth", ctx.input("screen_uv")) + ".r";
     std::string scene = ctx.temporary(Type::Float, EmitContext::call(sceneFn, {sceneDepth, n, r}));
     std::string surface = ctx.temporary(Type::Float, EmitContext::call(surfaceFn, {ctx.builtin(Builtin::FragDepth), n, r}));
     std::string view = ctx.input("view");

@@ -27,6 +27,18 @@ CompileResult compiled(const std::string& name) {
   return *result;
 }
 
+// A channel of the plan: what it reads (kind, index) and which component.
+bool reads(const TapChannel& c, TapChannel::Kind kind, int component, size_t index = 0) {
+  return c.kind == kind && c.component == component && (kind == TapChannel::Kind::FragDepth || c.index == index);
+}
+
+size_t textureNamed(const ShaderPlan& plan, const std::string& name) {
+  for (size_t i = 0; i < plan.textures.size(); ++i)
+    if (plan.textures[i].name == name) return i;
+  ADD_FAILURE() << "no texture " << name;
+  return 0;
+}
+
 std::string fragmentText(const std::vector<rt::ShaderSource>& sources) {
   for (const auto& s : sources)
     if (s.stage == GL_FRAGMENT_SHADER) return s.text;
@@ -38,9 +50,9 @@ std::string fragmentText(const std::vector<rt::ShaderSource>& sources) {
 // function, so the reference samples that one itself.
 TEST(ReadbackPlan, ListsTheVaryingsAndLookUpsOfTheFragmentShader) {
   CompileResult r = compiled("classic_webgl.json");
-  auto sources = rt::waterShaderSources(r, Target::Glsl330);
+  ShaderPlan shaders = waterPlan(r, Target::Glsl330);
   ReadbackPlan plan;
-  ASSERT_EQ(planReadback(r, fragmentText(sources), &plan), "");
+  ASSERT_EQ(planReadback(r, shaders, &plan), "");
   EXPECT_GE(plan.mask, 0);
   EXPECT_GE(plan.fragDepth, 0);
   EXPECT_GE(plan.worldPosition, 0);
@@ -55,12 +67,20 @@ TEST(ReadbackPlan, ListsTheVaryingsAndLookUpsOfTheFragmentShader) {
   EXPECT_EQ(plan.frames(), (static_cast<int>(plan.channels.size()) + 2) / 3);
 
   // A tap frame writes its three channels as the colour instead of the graph's.
-  auto tapped = tapShaders(sources, plan, 0);
+  auto sources = rt::waterShaderSources(r, Target::Glsl330);
+  auto tapped = tapShaders(sources, shaders, Target::Glsl330, plan, 0);
   std::string text = fragmentText(tapped);
   EXPECT_NE(text.find("o_color = vec4(float(-3.0), float(gl_FragCoord.z), float((v_world_position).x), 1.0);"),
             std::string::npos)
       << text;
   EXPECT_EQ(text.find("o_color = vec4(n14_color, 1.0);"), std::string::npos);
+  // Each look-up channel reads a look-up main() makes of its sampler.
+  const PlannedStage& fs = *shaders.stage(ShaderStage::Fragment);
+  for (const auto& l : plan.lookups) {
+    const TapChannel& c = plan.channels[static_cast<size_t>(l.channel)];
+    ASSERT_EQ(c.kind, TapChannel::Kind::Fetch);
+    EXPECT_EQ(fs.fetches.at(c.index).sampler, sceneSamplerRow(l.sampler).glslName);
+  }
 }
 
 // Deferred water: the surface builtins come from the G-buffer locals of main() (no
@@ -68,17 +88,20 @@ TEST(ReadbackPlan, ListsTheVaryingsAndLookUpsOfTheFragmentShader) {
 // march and underwater node sample at positions of their own, are read back whole.
 TEST(ReadbackPlan, PlansDeferredWaterFromTheGBufferAndWholeSceneTextures) {
   CompileResult r = compiled("deferred_underwater.json");
+  ShaderPlan shaders = waterPlan(r, Target::Glsl330);
   ReadbackPlan plan;
-  std::string why = planReadback(r, fragmentText(rt::waterShaderSources(r, Target::Glsl330)), &plan);
+  std::string why = planReadback(r, shaders, &plan);
   ASSERT_EQ(why, "");
   ASSERT_GE(plan.worldPosition, 0);
-  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.worldPosition)], "(v_world_position).x");
+  EXPECT_TRUE(reads(plan.channels[static_cast<size_t>(plan.worldPosition)], TapChannel::Kind::Varying, 0));
+  EXPECT_EQ(shaders.varyings[plan.channels[static_cast<size_t>(plan.worldPosition)].index].name, "v_world_position");
   ASSERT_GE(plan.fragDepth, 0);
-  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.fragDepth)], "b_water_surface.w");
+  EXPECT_TRUE(reads(plan.channels[static_cast<size_t>(plan.fragDepth)], TapChannel::Kind::FragDepth, -1));
   EXPECT_EQ(plan.normal, -1);  // not declared by this shader: nothing reads the G-buffer normal
   ASSERT_EQ(plan.images.size(), 2u);
   EXPECT_EQ(plan.images[0].sampler, SceneSampler::SceneDepth);
-  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.images[0].channel)], "texelFetch(u_scene_depth, ivec2(gl_FragCoord.xy), 0).r");
+  EXPECT_TRUE(reads(plan.channels[static_cast<size_t>(plan.images[0].channel)], TapChannel::Kind::TexelAtPixel, 0,
+                    textureNamed(shaders, "u_scene_depth")));
   EXPECT_EQ(plan.images[1].sampler, SceneSampler::SceneColor);
   EXPECT_EQ(plan.images[1].size, 3);
   for (const auto& lookup : plan.lookups) EXPECT_EQ(lookup.sampler, SceneSampler::Environment);
@@ -94,26 +117,26 @@ TEST(ReadbackPlan, FetchesTheSurfaceTexelWhereNoLocalHoldsIt) {
     "outputs": {"fragment": {"color": "water.color"}}})");
   std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));
   ASSERT_EQ(text.find("vec3 v_world_position = "), std::string::npos) << text;
+  ShaderPlan shaders = waterPlan(r, Target::Glsl330);
   ReadbackPlan plan;
-  ASSERT_EQ(planReadback(r, text, &plan), "");
+  ASSERT_EQ(planReadback(r, shaders, &plan), "");
+  const size_t surface = textureNamed(shaders, "u_water_surface");
   ASSERT_GE(plan.worldPosition, 0);
-  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.worldPosition)],
-            "(texelFetch(u_water_surface, ivec2(gl_FragCoord.xy), 0).xyz).x");
+  for (int k = 0; k < 3; ++k)
+    EXPECT_TRUE(reads(plan.channels[static_cast<size_t>(plan.worldPosition + k)], TapChannel::Kind::TexelAtPixel, k, surface));
   ASSERT_GE(plan.fragDepth, 0);
-  EXPECT_EQ(plan.channels[static_cast<size_t>(plan.fragDepth)], "texelFetch(u_water_surface, ivec2(gl_FragCoord.xy), 0).w");
+  EXPECT_TRUE(reads(plan.channels[static_cast<size_t>(plan.fragDepth)], TapChannel::Kind::TexelAtPixel, 3, surface));
 }
 
 // The reference takes the G-buffer as this pixel's builtins, so a look-up of it anywhere
-// else is refused with that reason.
+// else is refused with that reason: the underwater node reading the surface at a fixed
+// position instead of the pixel's.
 TEST(ReadbackPlan, RefusesAGBufferLookUpAwayFromThePixel) {
-  CompileResult r = compiled("deferred_underwater.json");
-  std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));
-  const std::string own = "vec4 n25_water_t0 = texture(u_water_surface, b_screen_uv);";
-  size_t at = text.find(own);
-  ASSERT_NE(at, std::string::npos) << text;
-  text.replace(at, own.size(), "vec4 n25_water_t0 = texture(u_water_surface, b_screen_uv * 0.5);");
+  CompileResult r = test::compileText(R"({"version": 1, "name": "t", "nodes": [
+      {"id": "water", "type": "underwater", "inputs": {"normal": [0, 1, 0], "screen_uv": [0.25, 0.5]}}],
+    "outputs": {"fragment": {"color": "water.color"}}})");
   ReadbackPlan plan;
-  std::string why = planReadback(r, text, &plan);
+  std::string why = planReadback(r, waterPlan(r, Target::Glsl330), &plan);
   EXPECT_NE(why.find("u_water_surface) other than at the pixel's own position"), std::string::npos) << why;
 }
 
@@ -136,13 +159,10 @@ TEST(ReadbackImage, SceneImagesHaveGlsRowOrder) {
 // the water does not cover the screen, so the texture cannot be read back whole.
 TEST(ReadbackPlan, RefusesALibraryLookUpOfForwardWater) {
   CompileResult r = compiled("deferred_underwater.json");
-  std::string text = fragmentText(rt::waterShaderSources(r, Target::Glsl330));
-  Manifest forward = r.manifest;
-  forward.passes.erase(std::remove(forward.passes.begin(), forward.passes.end(), RenderPass::DeferredWater),
-                       forward.passes.end());
-  r.manifest = forward;
+  ShaderPlan forward = waterPlan(r, Target::Glsl330);
+  forward.kind = ShaderPlan::Kind::Surface;
   ReadbackPlan plan;
-  std::string why = planReadback(r, text, &plan);
+  std::string why = planReadback(r, forward, &plan);
   EXPECT_NE(why.find("u_scene_depth inside a library function"), std::string::npos) << why;
 }
 
