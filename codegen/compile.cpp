@@ -176,7 +176,7 @@ bool checkOtherPresets(const Graph& graphAsWritten, std::string_view applied, co
 
 ShaderPlan waterPlan(const CompileResult& result, Target target) {
   // As planTargets: a target tessellates when the graph asks and the target can.
-  return planShaders(result.program, result.sourceName, tessellates(target, result.tessellation), result.derivedUniforms);
+  return planShaders(result.program, result.sourceName, tessellates(target, result.tessellation));
 }
 
 std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Registry& registry,
@@ -211,7 +211,6 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   result.manifest.preset = options.preset;
   result.sourceName = sourceName.empty() ? graph.name : sourceName;
   result.tessellation = options.tessellation;
-  result.derivedUniforms = options.derivedUniforms;
   result.files.push_back({base + ".manifest.json", result.manifest.fileText()});
   result.program = std::move(*program);
   return result;

@@ -44,7 +44,7 @@ struct CompileResult {
   // How the shaders were planned, so waterPlan can plan a target's again (the plans
   // themselves are not kept: a big graph's are megabytes).
   std::string sourceName;
-  bool tessellation = true, derivedUniforms = false;
+  bool tessellation = true;
 };
 
 // The plan `result`'s shaders for `target` were emitted from, made again from its program:
