@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 
+#include "core/graph_edit.h"
 #include "core/graph_io.h"
 #include "editor/graph_change.h"
 #include "editor/unreached_nodes.h"
