@@ -49,13 +49,7 @@ inline std::string oceanDriverC(const std::string& header, const std::string& pr
 // The same for the ES module (run by node).
 inline std::string oceanDriverJs(const std::string& module, const std::string& prefix, const std::vector<OceanPoint>& points,
                                  const std::vector<double>& times, const double camera[3]) {
-  auto num = [](double x) {
-    if (std::isnan(x)) return std::string("NaN");
-    if (std::isinf(x)) return std::string(x > 0 ? "Infinity" : "-Infinity");
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    return std::string(buf);
-  };
+  const auto num = jsDouble;
   std::string js = "import * as q from './" + module + "';\nconst points = [\n";
   for (const auto& pt : points) js += "  [" + num(pt.x0) + ", " + num(pt.z0) + "],\n";
   js += "];\nconst times = [";

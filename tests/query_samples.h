@@ -151,6 +151,15 @@ struct QueryPoint {
   double x0, z0, t;
 };
 
+// A double as a JavaScript literal that reads back to the same double.
+inline std::string jsDouble(double x) {
+  if (std::isnan(x)) return "NaN";
+  if (std::isinf(x)) return x > 0 ? "Infinity" : "-Infinity";
+  char buf[40];
+  std::snprintf(buf, sizeof buf, "%.17g", x);
+  return buf;
+}
+
 inline std::string cDouble(double x) {
   if (std::isnan(x)) return "NAN";
   if (std::isinf(x)) return x > 0 ? "HUGE_VAL" : "-HUGE_VAL";
@@ -180,13 +189,7 @@ inline std::string queryDriverC(const std::string& header, const std::string& pr
 inline std::string queryDriverJs(const std::string& module, const std::string& prefix, const std::vector<QueryPoint>& points,
                                  const std::string& setParameters) {
   std::string js = "import * as q from './" + module + "';\nconst points = [\n";
-  auto num = [](double x) {
-    if (std::isnan(x)) return std::string("NaN");
-    if (std::isinf(x)) return std::string(x > 0 ? "Infinity" : "-Infinity");
-    char buf[40];
-    std::snprintf(buf, sizeof buf, "%.17g", x);
-    return std::string(buf);
-  };
+  const auto num = jsDouble;
   for (const auto& pt : points) js += "  [" + num(pt.x0) + ", " + num(pt.z0) + ", " + num(pt.t) + "],\n";
   js += "];\nconst p = q." + prefix + "params_default();\n" + setParameters;
   js += "const lines = [];\nfor (const [x0, z0, t] of points) {\n";
