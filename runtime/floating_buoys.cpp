@@ -2,9 +2,11 @@
 #include "runtime/floating_buoys.h"
 
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "codegen/water_surface_eval.h"
+#include "runtime/uniform_values.h"
 
 namespace wg::rt {
 namespace {
@@ -68,7 +70,16 @@ const std::vector<glm::dvec2>& buoyRestPoints() {
   return points;
 }
 
-std::vector<FloatingPose> floatingBuoys(const wg::Program& program, const std::vector<Value>& parameters, double time) {
+std::vector<FloatingPose> floatingBuoys(const wg::Program& program, const std::vector<Value>& given, double time) {
+  // Each value clamped into its range as the renderer clamps the uniform it uploads, so the
+  // buoys ride the water the frame shows.
+  std::vector<Value> parameters = given;
+  const double unbounded = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < parameters.size() && i < program.parameters.size(); ++i) {
+    const ProgramParameter& p = program.parameters[i];
+    for (int k = 0; k < parameters[i].size(); ++k)
+      parameters[i][k] = clampedIntoRange(parameters[i][k], p.min.value_or(-unbounded), p.max.value_or(unbounded));
+  }
   std::vector<FloatingPose> poses;
   for (const glm::dvec2& rest : buoyRestPoints()) {
     const glm::dvec3 at = displaced(program, parameters, rest.x, rest.y, time);

@@ -19,7 +19,8 @@ namespace wg::rt {
 const std::vector<glm::dvec2>& buoyRestPoints();
 
 // The buoys at time t on the water of `program` (after the compiler's passes) with
-// `parameters` by index. The up axis is the normal of the displaced surface, from central
+// `parameters` by index, each clamped into its range as the renderer clamps the uniform
+// (NaN to the lower end). The up axis is the normal of the displaced surface, from central
 // differences 5 cm apart (the surface queries' normal, docs/queries.md, within 1e-3 on
 // waves 4 m long).
 std::vector<FloatingPose> floatingBuoys(const wg::Program& program, const std::vector<Value>& parameters, double time);

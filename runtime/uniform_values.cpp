@@ -47,10 +47,7 @@ std::vector<float> builtinUniformValue(BuiltinUniform builtin, double angularFre
 }
 
 void clampIntoRange(std::vector<float>& value, float lo, float hi) {
-  for (float& x : value) {
-    if (!(x >= lo)) x = std::isfinite(lo) ? lo : (std::isfinite(hi) ? hi : x);
-    if (x > hi) x = hi;
-  }
+  for (float& x : value) x = clampedIntoRange(x, lo, hi);
 }
 
 }  // namespace wg::rt

@@ -3,6 +3,7 @@
 // from the frame's camera, time and sun, or a graph parameter clamped into its manifest
 // range. The GL renderer uploads them with glUniform*, the Vulkan renderer writes them
 // into the std140 block (codegen/uniform_block_layout.h).
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -26,6 +27,11 @@ std::vector<float> builtinUniformValue(BuiltinUniform builtin, double angularFre
 
 // Into [lo, hi] per component; NaN becomes lo (or hi when lo is unbounded): the generated
 // shader may rely on the range (codegen/value_facts.h).
+template <class T>
+T clampedIntoRange(T x, T lo, T hi) {
+  if (!(x >= lo)) x = std::isfinite(lo) ? lo : (std::isfinite(hi) ? hi : x);
+  return x > hi ? hi : x;
+}
 void clampIntoRange(std::vector<float>& value, float lo, float hi);
 
 }  // namespace wg::rt

@@ -1,6 +1,8 @@
 // The editor's preview floats the built-in scene's buoys (the "buoys" box beside the time
 // and sun controls): LivePreview::floatingBuoys places them on the compiled graph's water
-// with the parameter values the preview shows, those set since the last compile included.
+// with the parameter values the preview shows, those set since the last compile included,
+// clamped into their ranges as the renderer clamps them.
+#include <cmath>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -44,6 +46,16 @@ TEST(LivePreviewBuoys, FloatOnTheShownWaterWithTheParametersSetSinceTheCompile) 
   const std::vector<rt::FloatingPose> after = preview.floatingBuoys(2.0);
   EXPECT_EQ(after, rt::floatingBuoys(program, parameters, 2.0));
   EXPECT_NE(after, before);
+  // Out of its range [0, 1] it is clamped as the renderer clamps the uniform: 5 rides as 1,
+  // NaN as the lower end 0.
+  ASSERT_TRUE(preview.setParameter("lift", {5.0}));
+  parameters[lift] = Value::scalar(1.0);
+  EXPECT_EQ(preview.floatingBuoys(2.0), rt::floatingBuoys(program, parameters, 2.0));
+  ASSERT_TRUE(preview.setParameter("lift", {std::nan("")}));
+  parameters[lift] = Value::scalar(0.0);
+  const std::vector<rt::FloatingPose> low = preview.floatingBuoys(2.0);
+  EXPECT_EQ(low, rt::floatingBuoys(program, parameters, 2.0));
+  for (const auto& pose : low) EXPECT_TRUE(std::isfinite(pose.position.y));
   // A rebuild takes its values from the graph again.
   ASSERT_TRUE(preview.rebuild(*graph, defaultRegistry(), diags));
   EXPECT_EQ(preview.floatingBuoys(2.0), before);
