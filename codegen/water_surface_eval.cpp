@@ -4,11 +4,14 @@
 #include <set>
 
 #include "codegen/cpu_backend.h"
+#include "nodes/texture_source.h"
 
 namespace wg {
 
 WaterSurfacePoint waterSurfaceAt(const Program& program, const std::vector<Value>& parameters, double x0, double z0,
-                                 double t) {
+                                 double t, TextureCache* textures) {
+  TextureCache own;
+  if (!textures) textures = &own;
   // Only what the vertex outputs read: the fragment stage's ops may sample textures the
   // vertex stage has no coordinates for.
   std::set<int> needed;
@@ -41,7 +44,7 @@ WaterSurfacePoint waterSurfaceAt(const Program& program, const std::vector<Value
   for (int k : needed) {  // ascending: the ops are in topological order
     std::vector<Value> in;
     for (const auto& r : program.ops[static_cast<size_t>(k)].inputs) in.push_back(valueOf(r));
-    outs[static_cast<size_t>(k)] = evaluateOp(program.ops[static_cast<size_t>(k)], in, env);
+    outs[static_cast<size_t>(k)] = evaluateOp(program.ops[static_cast<size_t>(k)], in, env, textures, program.directory);
   }
   WaterSurfacePoint p{{x0, 0, z0}, {0, 1, 0}, false};
   for (const auto& o : program.outputs) {

@@ -16,9 +16,13 @@ struct WaterSurfacePoint {
   bool hasNormal = false;  // whether the vertex stage writes a normal
 };
 
+class TextureCache;
+
 // The vertex stage of `program` (after the compiler's passes) at (x0, 0, z0), time t, with
-// `parameters` by index (the program's own count; a host's values, already clamped).
+// `parameters` by index (the program's own count; a host's values, already clamped). A
+// node texture the vertex stage samples is read through `textures` (null: a cache for this
+// call alone; pass one to read the files once over many points), from program.directory.
 WaterSurfacePoint waterSurfaceAt(const Program& program, const std::vector<Value>& parameters, double x0, double z0,
-                                 double t);
+                                 double t, TextureCache* textures = nullptr);
 
 }  // namespace wg

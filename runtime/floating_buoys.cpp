@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "codegen/water_surface_eval.h"
+#include "nodes/texture_source.h"
 #include "runtime/uniform_values.h"
 
 namespace wg::rt {
@@ -17,8 +18,9 @@ constexpr int kBuoySegments = 16;
 constexpr float kBuoyRadius = 0.35f, kBuoyDraft = 0.4f, kBodyTop = 0.35f, kTopTip = 0.9f, kTipRadius = 0.05f;
 constexpr float kBodyMaterial = 3.0f, kTopMaterial = 4.0f;
 
-glm::dvec3 displaced(const wg::Program& program, const std::vector<Value>& parameters, double x0, double z0, double t) {
-  const WaterSurfacePoint p = waterSurfaceAt(program, parameters, x0, z0, t);
+glm::dvec3 displaced(const wg::Program& program, const std::vector<Value>& parameters, double x0, double z0, double t,
+                     TextureCache& textures) {
+  const WaterSurfacePoint p = waterSurfaceAt(program, parameters, x0, z0, t, &textures);
   return {p.position[0], p.position[1], p.position[2]};
 }
 
@@ -81,15 +83,16 @@ std::vector<FloatingPose> floatingBuoys(const wg::Program& program, const std::v
       parameters[i][k] = clampedIntoRange(parameters[i][k], p.min.value_or(-unbounded), p.max.value_or(unbounded));
   }
   std::vector<FloatingPose> poses;
+  TextureCache textures;  // a vertex stage's node textures, read once for every point
   for (const glm::dvec2& rest : buoyRestPoints()) {
-    const glm::dvec3 at = displaced(program, parameters, rest.x, rest.y, time);
+    const glm::dvec3 at = displaced(program, parameters, rest.x, rest.y, time, textures);
     // The displaced sheet's tangents along x0 and z0; their cross product is its normal, the
     // surface queries' normal (which differentiates exactly) within the differences' error.
     const double h = kNormalStep;
-    const glm::dvec3 alongX = displaced(program, parameters, rest.x + h, rest.y, time) -
-                              displaced(program, parameters, rest.x - h, rest.y, time);
-    const glm::dvec3 alongZ = displaced(program, parameters, rest.x, rest.y + h, time) -
-                              displaced(program, parameters, rest.x, rest.y - h, time);
+    const glm::dvec3 alongX = displaced(program, parameters, rest.x + h, rest.y, time, textures) -
+                              displaced(program, parameters, rest.x - h, rest.y, time, textures);
+    const glm::dvec3 alongZ = displaced(program, parameters, rest.x, rest.y + h, time, textures) -
+                              displaced(program, parameters, rest.x, rest.y - h, time, textures);
     const glm::dvec3 normal = glm::cross(alongZ, alongX);
     FloatingPose pose;
     pose.position = glm::vec3(at);

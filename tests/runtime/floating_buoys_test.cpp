@@ -2,6 +2,7 @@
 // graph's vertex stage moves its rest point to, tilted to the displaced sheet's normal
 // (central differences), and the renderer draws them
 // with the opaque scene; `render --buoys` floats them, and refuses where it cannot.
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -76,6 +77,32 @@ TEST(FloatingBuoys, EachRidesThePointTheVertexStageMovesItsRestPointTo) {
     EXPECT_GT(std::abs(later[i].position.y - first[i].position.y), 0.01f) << i;
     EXPECT_GT(std::abs(later[i].up.x - first[i].up.x) + std::abs(later[i].up.z - first[i].up.z), 0.01f) << i;
   }
+}
+
+// A vertex stage that samples a node texture (a height from builtin:foam's alpha) floats
+// them too: the texture is read for the evaluation (it was an internal error).
+TEST(FloatingBuoys, AVertexStageSamplingATextureFloatsThem) {
+  Diagnostics diags;
+  auto graph = parseGraph(R"({"version": 1, "name": "vtex", "nodes": [
+      {"id": "uv", "type": "uv"},
+      {"id": "tex", "type": "texture_sample", "options": {"texture": "builtin:foam"}, "inputs": {"uv": "uv.out"}},
+      {"id": "p", "type": "world_position"},
+      {"id": "lift", "type": "combine", "inputs": {"x": 0, "y": "tex.alpha", "z": 0}},
+      {"id": "moved", "type": "add", "inputs": {"a": "p.out", "b": "lift.out"}}],
+      "outputs": {"vertex": {"position": "moved.out"}, "fragment": {"color": [0.1, 0.2, 0.3]}}})",
+                          "vtex.json", diags);
+  ASSERT_TRUE(graph);
+  auto program = buildProgram(*graph, defaultRegistry(), diags);
+  ASSERT_TRUE(program);
+  const std::vector<FloatingPose> poses = floatingBuoys(*program, {}, 3.5);
+  ASSERT_EQ(poses.size(), buoyRestPoints().size());
+  float highest = 0;
+  for (size_t i = 0; i < poses.size(); ++i) {
+    const WaterSurfacePoint s = waterSurfaceAt(*program, {}, buoyRestPoints()[i].x, buoyRestPoints()[i].y, 3.5);
+    EXPECT_EQ(poses[i].position.y, static_cast<float>(s.position[1]));
+    highest = std::max(highest, poses[i].position.y);
+  }
+  EXPECT_GT(highest, 0.0f) << "the texture lifts no buoy: the case does not reach the look-up";
 }
 
 // The renderer draws them with the opaque scene: a frame with buoys differs from one
