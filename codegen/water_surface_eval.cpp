@@ -46,13 +46,12 @@ WaterSurfacePoint waterSurfaceAt(const Program& program, const std::vector<Value
     for (const auto& r : program.ops[static_cast<size_t>(k)].inputs) in.push_back(valueOf(r));
     outs[static_cast<size_t>(k)] = evaluateOp(program.ops[static_cast<size_t>(k)], in, env, textures, program.directory);
   }
-  WaterSurfacePoint p{{x0, 0, z0}, {0, 1, 0}, false};
+  WaterSurfacePoint p{{x0, 0, z0}, {0, 1, 0}};
   for (const auto& o : program.outputs) {
     if (o.slot != OutputSlot::VertexPosition && o.slot != OutputSlot::VertexNormal) continue;
     const Value value = valueOf(o.value).convertedTo(Type::Vec3);
     double* to = o.slot == OutputSlot::VertexPosition ? p.position : p.normal;
     for (int i = 0; i < 3; ++i) to[i] = value[i];
-    if (o.slot == OutputSlot::VertexNormal) p.hasNormal = true;
   }
   return p;
 }

@@ -13,7 +13,6 @@ namespace wg {
 struct WaterSurfacePoint {
   double position[3];  // the displaced point (x0, 0, z0 where nothing displaces it)
   double normal[3];    // the vertex stage's normal output, (0, 1, 0) where it has none
-  bool hasNormal = false;  // whether the vertex stage writes a normal
 };
 
 class TextureCache;

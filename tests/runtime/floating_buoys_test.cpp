@@ -63,7 +63,6 @@ TEST(FloatingBuoys, EachRidesThePointTheVertexStageMovesItsRestPointTo) {
     EXPECT_EQ(poses, floatingBuoys(positionOnly.program, defaults(positionOnly.program), t));
     for (size_t i = 0; i < poses.size(); ++i) {
       const WaterSurfacePoint s = waterSurfaceAt(waves.program, params, buoyRestPoints()[i].x, buoyRestPoints()[i].y, t);
-      ASSERT_TRUE(s.hasNormal);
       for (int k = 0; k < 3; ++k) EXPECT_EQ(poses[i].position[k], static_cast<float>(s.position[k])) << t;
       const double len = std::sqrt(s.normal[0] * s.normal[0] + s.normal[1] * s.normal[1] + s.normal[2] * s.normal[2]);
       for (int k = 0; k < 3; ++k) EXPECT_NEAR(poses[i].up[k], s.normal[k] / len, 1e-3) << "buoy " << i << " t " << t;
