@@ -31,6 +31,9 @@
 namespace wg::rt {
 namespace {
 
+// The opaque scene's vertex layout (runtime/scene.h): position, normal, material.
+const std::vector<std::pair<GLuint, int>> kOpaqueAttributes = {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}};
+
 
 // A node texture's identity: the source and folder, and for a file its size and time of
 // last change (builtin:* sources are made in memory and never change).
@@ -426,7 +429,7 @@ struct Renderer::Impl {
     // only when they moved).
     if (settings.scene.buoys != buoysDrawn) {
       buoys = settings.scene.buoys.empty() ? GpuMesh{}
-                                           : uploadMesh(buoyMesh(settings.scene.buoys), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});
+                                           : uploadMesh(buoyMesh(settings.scene.buoys), kOpaqueAttributes);
       buoysDrawn = settings.scene.buoys;
     }
     applyUniforms();
@@ -521,7 +524,7 @@ Renderer::Renderer(const Manifest& manifest, std::vector<ShaderSource> waterSour
     r.water = r.link(waterSources, "the graph's water surface; glslang accepted it");
   }
 
-  r.sceneMesh = uploadMesh(buildSceneMesh(), {{0, 3}, {1, 3}, {kSceneMaterialLocation, 1}});
+  r.sceneMesh = uploadMesh(buildSceneMesh(), kOpaqueAttributes);
   // A tessellated draw stays within its budget of generated triangles (tessellation_budget.h).
   int gridQuads = settings.waterGridQuads;
   if (r.tessellated && manifest.tessellation) gridQuads = tessellatedGridQuads(gridQuads, manifest.tessellation->settings.factor);
