@@ -76,16 +76,19 @@ std::optional<std::string> queryCHeader(const std::string& graphName, const Prog
   h += " * Do not edit: recompile the graph. Where the graph's vertex stage moves the water point\n";
   h += " * (x0, 0, z0) at time t, computed in double from the same program the shaders run, with the\n";
   h += " * surface normal and velocity there; and the height at a world point (x, z). C99 and C++,\n";
-  h += " * no allocation, no state: safe from any number of threads. See docs/queries.md.\n";
+  h += sea ? " * no allocation; the ocean's state (below) is the host's and the queries only read it: safe\n"
+             " * from any number of threads between updates. See docs/queries.md.\n"
+           : " * no allocation, no state: safe from any number of threads. See docs/queries.md.\n";
   h += " *\n";
-  h += " * height(x, z, t) solves (x, z) = (x0, z0) + D(x0, z0, t).xz by Newton steps from x0 = x\n";
+  h += std::string(sea ? " * height(x, z)" : " * height(x, z, t)") + " solves (x, z) = (x0, z0) + D(x0, z0, t).xz by Newton steps from x0 = x\n";
   h += " * (a step that does not bring the point closer is halved; after " + std::to_string(kQueryHalvings) +
        " halvings, stuck beside a fold, the\n";
   h += " * steps start again from a point at the displacement's reach around (x, z)) until the\n";
   h += " * displaced point is within " + cNumber(kQueryHeightTolerance) + " * (1 + |x| + |z|) m of (x, z), or " +
        std::to_string(kQueryMaxSteps) + " evaluations\n";
   h += " * (then the closest point found answers). Where the surface folds over (several x0 reach x)\n";
-  h += " * it answers the first sheet the steps reach. A non-finite x, z, x0, z0 or t gives NaN in\n";
+  h += std::string(" * it answers the first sheet the steps reach. A non-finite x, z, x0, z0 ") +
+       (sea ? "or state time" : "or t") + " gives NaN in\n";
   h += " * every output. */\n";
   if (sea) {
     h += "/* The graph's water is a spectral ocean: its maps live in a wg_..._ocean state the host\n";
