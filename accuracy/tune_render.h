@@ -4,8 +4,8 @@
 // times) and compared frame by frame with the reference's (every knob at its most exact
 // level); its cost is CPU ms per megapixel (the process's CPU time, llvmpipe's threads
 // included, across each frame of an animation: a spectral ocean's simulation included),
-// timed in interleaved repeats beside the other configurations of the same round, plus the fragment shader's SPIR-V instruction count
-// after spirv-opt -O.
+// timed in interleaved repeats beside the other configurations of the same round, plus the
+// fragment shader's SPIR-V instruction count after spirv-opt -O.
 #include <map>
 #include <memory>
 #include <optional>
