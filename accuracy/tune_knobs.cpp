@@ -5,6 +5,7 @@
 
 #include "codegen/compile.h"
 #include "core/graph_node_type.h"
+#include "core/ocean_settings.h"
 #include "core/preset.h"
 #include "nodes/registry.h"
 
@@ -27,8 +28,8 @@ void collectKnobs(const Graph& graph, const std::string& prefix, int depth, std:
 
 // The shaders the compiler writes for a configuration (the tessellation factor is a
 // constant of the control stage, the passes follow from the samplers the shaders declare).
-// Not the manifest (only its pass sizes): it lists the bypassed nodes, so switching off a node whose output
-// nothing reads would count as a change.
+// Not the manifest (only its pass sizes and its oceans' options): it lists the bypassed nodes,
+// so switching off a node whose output nothing reads would count as a change.
 std::string compiledText(const Graph& graph, Target target) {
   Diagnostics diags;
   CompileOptions options;
@@ -43,6 +44,20 @@ std::string compiledText(const Graph& graph, Target target) {
   // The scene passes' sizes: a `resolution` level changes no shader, only these.
   for (const auto& p : compiled->manifest.passScales)
     all += std::string(renderPassRow(p.pass).name) + '=' + std::to_string(p.scale) + '\0';
+  // The spectral oceans' options: the simulation passes run from them, not from shader text,
+  // so a level of `foam_step` changes the foam every frame shows and what its steps cost
+  // while the shaders stay the same. The foam's options only where a shader reads the foam
+  // (without ocean_foam no foam is computed, and its step changes nothing).
+  const Manifest& m = compiled->manifest;
+  for (size_t i = 0; i < m.oceans.size(); ++i) {
+    const bool foamRead = std::any_of(m.textures.begin(), m.textures.end(), [&](const TextureInfo& t) {
+      return t.ocean && t.ocean->ocean == static_cast<int>(i) && t.ocean->map == ocean::kFoamMap;
+    });
+    nlohmann::json options = m.oceans[i].options;
+    if (!foamRead && options.is_object())
+      for (auto it = options.begin(); it != options.end();) it = it.key().starts_with("foam_") ? options.erase(it) : std::next(it);
+    all += "ocean " + m.oceans[i].nodeId + '=' + options.dump() + '\0';
+  }
   return all;
 }
 

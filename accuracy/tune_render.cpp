@@ -13,6 +13,7 @@
 #include "nodes/registry.h"
 #include "runtime/egl_context.h"
 #include "runtime/memory_budget.h"
+#include "runtime/ocean_simulation.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
 #include "runtime/median.h"
@@ -28,6 +29,9 @@ struct GlTuneMeasurements::Entry {
 namespace {
 
 using rt::median;
+
+// The interval between the timed frames of a configuration: an animation at 60 frames a second.
+constexpr double kTimedFrameInterval = 1.0 / 60.0;
 
 std::string diagText(const Diagnostics& d) {
   std::string s;
@@ -191,27 +195,45 @@ std::vector<TuneCost> GlTuneMeasurements::cost(const std::vector<TuneConfig>& co
 std::vector<TuneCost> GlTuneMeasurements::costOf(const std::vector<std::optional<TuneConfig>>& configs) {
   std::vector<Entry*> entries;
   for (const auto& c : configs) entries.push_back(&entry(c));
-  // Each repeat renders every configuration from every camera (at the first time), one
-  // configuration after another: the medians share the machine's state. A frame's cost is
-  // the process's CPU time across it (the frame and its glFinish).
+  // Each repeat renders every configuration from every camera, one configuration after
+  // another: the medians share the machine's state. A frame's cost is the process's CPU
+  // time across it (the frame and its glFinish). The frames are those of an animation from
+  // the first time on, kTimedFrameInterval apart, the same times for every configuration: a
+  // spectral ocean's simulation runs at every new time (its update, and its foam's steps
+  // as they fall due), as an animation pays it; frames at one held time would find the
+  // maps at their time and time the drawing alone (runtime/ocean_simulation.h).
   std::vector<std::vector<double>> ms(entries.size());
   rt::SceneOptions scene;
-  scene.time = static_cast<float>(sweep_.times.front());
+  const double start = sweep_.times.front();
+  for (auto* e : entries) {
+    // Untimed: the still frames compared before leave the foam at another time, which an
+    // animation's first frame replays (a replay is tens of transforms).
+    e->renderer->setAnimation(true);
+    scene.time = static_cast<float>(start);
+    e->renderer->setScene(scene);
+    e->renderer->renderFrame();
+  }
   // The order rotates from repeat to repeat: whichever configuration comes first after
   // another's frames does not always pay for the switch.
   for (int run = 0; run < std::max(sweep_.runs, 1); ++run)
     for (size_t j = 0; j < entries.size(); ++j) {
       size_t i = (j + static_cast<size_t>(run)) % entries.size();
       double sum = 0;
-      for (const auto& cam : sweep_.cameras) {
-        entries[i]->renderer->setCamera(*rt::cameraPreset(cam));
+      for (size_t c = 0; c < sweep_.cameras.size(); ++c) {
+        const double frame = 1.0 + static_cast<double>(static_cast<size_t>(run) * sweep_.cameras.size() + c);
+        scene.time = static_cast<float>(start + frame * kTimedFrameInterval);
+        entries[i]->renderer->setCamera(*rt::cameraPreset(sweep_.cameras[c]));
         entries[i]->renderer->setScene(scene);
+        const auto oceans = entries[i]->renderer->oceanSimulation();
+        const long updates = oceans ? oceans->updatesRun() : 0;
         double before = processCpuMs();
         entries[i]->renderer->renderFrame();
         sum += processCpuMs() - before;
+        if (oceans) timedSimulationUpdates_ += oceans->updatesRun() - updates;
       }
       ms[i].push_back(sum);
     }
+  for (auto* e : entries) e->renderer->setAnimation(false);  // still frames again, should it be compared
   double megapixels = sweep_.width * static_cast<double>(sweep_.height) * static_cast<double>(sweep_.cameras.size()) / 1e6;
   std::vector<TuneCost> costs;
   for (size_t i = 0; i < entries.size(); ++i) {

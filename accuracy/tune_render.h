@@ -3,9 +3,9 @@
 // quality knobs is compiled, rendered into RGBA32F frames over a sweep of views (cameras x
 // times) and compared frame by frame with the reference's (every knob at its most exact
 // level); its cost is CPU ms per megapixel (the process's CPU time, llvmpipe's threads
-// included, across each frame), timed in interleaved repeats beside the other
-// configurations of the same round, plus the fragment shader's SPIR-V instruction count
-// after spirv-opt -O.
+// included, across each frame of an animation: a spectral ocean's simulation included),
+// timed in interleaved repeats beside the other configurations of the same round, plus the
+// fragment shader's SPIR-V instruction count after spirv-opt -O.
 #include <map>
 #include <memory>
 #include <optional>
@@ -50,6 +50,10 @@ class GlTuneMeasurements : public TuneMeasurements {
 
   const std::vector<std::string>& viewLabels() const { return labels_; }
   const TuneSweep& sweep() const { return sweep_; }
+  // The spectral ocean simulation updates that ran inside timed frames (over every
+  // configuration timed so far): each timed frame is a new time of an animation, so a graph
+  // with an ocean runs one per timed frame; 0 without an ocean.
+  long timedSimulationUpdates() const { return timedSimulationUpdates_; }
   std::string renderer() const;
 
  private:
@@ -72,6 +76,7 @@ class GlTuneMeasurements : public TuneMeasurements {
   std::vector<std::vector<float>> reference_;  // RGBA32F per view
   std::optional<rt::MemoryReservation> referenceMemory_;  // reference_'s share of the memory budget
   std::map<std::string, std::unique_ptr<Entry>> cache_;
+  long timedSimulationUpdates_ = 0;
 };
 
 }  // namespace wg::accuracy

@@ -589,4 +589,6 @@ GLuint Renderer::frameTexture() const {
 
 void Renderer::setView(const ViewTransform& view) { impl_->settings.view = view; }
 
+void Renderer::setAnimation(bool animation) { impl_->settings.animation = animation; }
+
 }  // namespace wg::rt

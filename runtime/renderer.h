@@ -106,6 +106,9 @@ class Renderer {
   GLuint frameTexture() const;
   // A new exposure or tone mapper for the next frames (the editor's view controls).
   void setView(const ViewTransform& view);
+  // Whether the next frames follow one another in time (RenderSettings::animation): `tune`
+  // times a configuration's frames as an animation and compares its still frames.
+  void setAnimation(bool animation);
 
   const PassPlan& plan() const;
   // Whether the scene texture bound to `s` is sampled nearest (runtime/pass_plan.h); the

@@ -117,6 +117,41 @@ TEST(TuneKnobs, SceneResolutionIsTunedThoughItChangesNoShader) {
   EXPECT_EQ(fileOf(withKnobLevels(g, knobs, config), ".glsl330.frag"), fileOf(g, ".glsl330.frag"));
 }
 
+// A spectral ocean's foam_step changes no shader (the foam's steps run in the simulation
+// passes, from the manifest's ocean options), yet each level is another foam and another
+// cost: tune keeps it. fft_size changes the readers' texel scale, a shader change.
+TEST(TuneKnobs, TheOceansFoamStepIsTunedThoughItChangesNoShader) {
+  Graph g = parse(R"({"version": 1, "name": "sea", "nodes": [
+    {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [40], "fft_size": 64}},
+    {"id": "foam", "type": "ocean_foam", "inputs": {"ocean": "sea.ocean", "position": [0, 0, 0]}}],
+    "outputs": {"fragment": {"color": "foam.foam"}}})");
+  std::vector<std::string> unchanged;
+  std::vector<TuneKnob> knobs = distinctKnobLevels(g, graphKnobs(g), Target::Glsl330, unchanged);
+  EXPECT_TRUE(unchanged.empty()) << unchanged.front();
+  const TuneKnob* step = find(knobs, "sea.foam_step");
+  const TuneKnob* size = find(knobs, "sea.fft_size");
+  ASSERT_TRUE(step && size);
+  EXPECT_EQ(nlohmann::json(step->levels).dump(), "[0.2,0.1]");
+  EXPECT_EQ(nlohmann::json(size->levels).dump(), "[64,128,256]");
+  TuneConfig exact(knobs.size());
+  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
+  TuneConfig config = exact;
+  config[static_cast<size_t>(step - knobs.data())] = 0;
+  Graph cheap = withKnobLevels(g, knobs, config);
+  EXPECT_EQ(fileOf(cheap, ".glsl330.frag"), fileOf(withKnobLevels(g, knobs, exact), ".glsl330.frag"));
+  EXPECT_NE(fileOf(cheap, ".manifest.json").find(R"("foam_step": 0.2)"), std::string::npos) << fileOf(cheap, ".manifest.json");
+
+  // Without ocean_foam no foam is computed: its step changes nothing, and is not tuned.
+  Graph noFoam = parse(R"({"version": 1, "name": "sea", "nodes": [
+    {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [40], "fft_size": 64}},
+    {"id": "detail", "type": "ocean_surface", "inputs": {"ocean": "sea.ocean", "position": [0, 0, 0]}}],
+    "outputs": {"fragment": {"color": "detail.normal"}}})");
+  unchanged.clear();
+  knobs = distinctKnobLevels(noFoam, graphKnobs(noFoam), Target::Glsl330, unchanged);
+  EXPECT_EQ(unchanged, std::vector<std::string>{"sea.foam_step"});
+  EXPECT_TRUE(find(knobs, "sea.fft_size"));
+}
+
 TEST(TuneKnobs, KnobsInsideSubgraphInstancesAreNamedByTheInstance) {
   std::string dir = test::makeTempDir("wg_tune_knobs");
   std::filesystem::create_directories(dir + "/lib");
