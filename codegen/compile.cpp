@@ -10,6 +10,7 @@
 
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest_build.h"
+#include "codegen/ocean_module_js.h"
 #include "codegen/passes.h"
 #include "core/color_parameters.h"
 #include "core/preset.h"
@@ -211,6 +212,12 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   result.manifest.preset = options.preset;
   result.sourceName = sourceName.empty() ? graph.name : sourceName;
   result.tessellation = options.tessellation;
+  // A web target's client simulates the oceans from the module only the compiler can write.
+  const bool web = options.wgsl || std::find(options.targets.begin(), options.targets.end(), Target::Es300) != options.targets.end();
+  if (web && !result.manifest.oceans.empty()) {
+    result.manifest.oceanModule = oceanModuleFileName(base);
+    result.files.push_back({result.manifest.oceanModule, oceanModuleJs(base, *program, result.manifest.oceans)});
+  }
   result.files.push_back({base + ".manifest.json", result.manifest.fileText()});
   result.program = std::move(*program);
   return result;

@@ -227,6 +227,7 @@ std::string Manifest::fileText() const {
     w.beginArray();
     for (const auto& o : oceans) {
       w.beginObject();
+      if (!oceanModule.empty()) w.member("module", oceanModule);
       w.member("node", o.nodeId);
       w.key("options");
       w.value(o.options);

@@ -116,6 +116,9 @@ struct Manifest {
   // The spectral oceans the ocean maps come from (written as "oceans" only when there are
   // any): each ocean_spectrum node's id and complete options.
   std::vector<OceanInfo> oceans;
+  // The web clients' ocean module beside the manifest (codegen/ocean_module_js.h), written
+  // as each ocean's "module"; "" when the compile wrote none (no web target).
+  std::string oceanModule;
   std::optional<ManifestTessellation> tessellation;
   std::vector<SceneResource> resources;     // table order
   std::vector<RenderPass> passes;           // the passes producing them, then WaterSurface

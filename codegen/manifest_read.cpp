@@ -391,9 +391,15 @@ Manifest Manifest::fromJson(const json& j) {
   if (const json* functions = member(j, "functions")) m.functions = texts(*functions, "the manifest's \"functions\"");
   for (const auto& t : objects(j, "textures")) m.textures.push_back(textureOf(t));
   for (const auto& o : objects(j, "oceans")) {
-    onlyMembers(o, {"node", "options"}, "an entry of the manifest's \"oceans\"");
+    onlyMembers(o, {"module", "node", "options"}, "an entry of the manifest's \"oceans\"");
     OceanInfo info;
     info.nodeId = text(o, "node", "an entry of the manifest's \"oceans\"");
+    // The web clients' module (codegen/ocean_module_js.h): one file for all the oceans.
+    if (member(o, "module")) {
+      std::string module = text(o, "module", "ocean " + info.nodeId + "'s \"module\"");
+      if (!m.oceans.empty() && module != m.oceanModule) fail("ocean " + info.nodeId + " names another \"module\" than the first ocean");
+      m.oceanModule = std::move(module);
+    }
     const json* options = member(o, "options");
     if (!options || !options->is_object()) fail("ocean " + info.nodeId + " has no \"options\" object");
     info.options = *options;

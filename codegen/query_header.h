@@ -40,6 +40,9 @@ std::string queryRestartTable(HeaderLanguage language);
 // The header's or module's text, or nullopt with WG044 errors naming each node the query
 // cannot evaluate. `program` is the compiled Program (after the passes).
 std::optional<std::string> queryCHeader(const std::string& graphName, const Program& program, Diagnostics& diags);
+// The <math.h> names and the wgd_/wgq_ helpers the JavaScript query's expressions call,
+// each as its C form computes it (const declarations at a module's top level).
+std::string queryJsMathHelpers();
 std::optional<std::string> queryJsModule(const std::string& graphName, const Program& program, Diagnostics& diags);
 
 }  // namespace wg

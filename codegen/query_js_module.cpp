@@ -13,7 +13,9 @@ namespace {
 
 std::string jsNumber(double x) { return numberLiteral(x, HeaderLanguage::JavaScript); }
 
-std::string queryJsHelpers() {
+}  // namespace
+
+std::string queryJsMathHelpers() {
   return R"(const sin = Math.sin, cos = Math.cos, asin = Math.asin, acos = Math.acos, atan = Math.atan;
 const sinh = Math.sinh, cosh = Math.cosh, tanh = Math.tanh, fabs = Math.abs, floor = Math.floor;
 const ceil = Math.ceil, trunc = Math.trunc, sqrt = Math.sqrt, exp = Math.exp, log = Math.log, log2 = Math.log2;
@@ -86,8 +88,6 @@ const wgq_normal = (px, pz, n) => {
 )";
 }
 
-}  // namespace
-
 std::optional<std::string> queryJsModule(const std::string& graphName, const Program& program, Diagnostics& diags) {
   const std::string g = cGraphPrefix(graphName);
   auto body = queryBody(program, HeaderLanguage::JavaScript, g, diags);
@@ -104,7 +104,7 @@ std::optional<std::string> queryJsModule(const std::string& graphName, const Pro
        std::to_string(kQueryMaxSteps) + " evaluations;\n";
   m += "// a non-finite input gives NaN in every output.\n";
   m += "/* eslint-disable */\n\n";
-  m += queryJsHelpers() + "\n";
+  m += queryJsMathHelpers() + "\n";
   if (sea) m += queryOceanJs(g, *body->ocean);
 
   m += "// The graph's parameters a host may change, with their defaults; values outside a\n";

@@ -45,6 +45,15 @@ inline constexpr double kQueryOceanHeightTolerance = 1e-12;
 std::string queryOceanC(const std::string& prefix, const ocean::OceanSettings& settings);
 std::string queryOceanJs(const std::string& prefix, const ocean::OceanSettings& settings);
 
+// What the ocean's JavaScript needs beside the math names (queryJsMathHelpers): the
+// spectrum's physics, the counter-based Gaussian numbers, the 32-bit phases, the transform.
+const char* queryOceanJsHelpers();
+// A JavaScript function `name()` returning {h0, frequency}: per cascade the initial
+// amplitudes (a Float64Array of re, im per bin, row iz * N + ix) and the bins' frequency
+// indices (a Uint32Array), as core/ocean_spectrum.h draws them. The query's state and the
+// web clients' ocean module (codegen/ocean_module_js.h) both call it.
+std::string queryOceanSpectraJs(const std::string& name, const ocean::OceanSettings& settings);
+
 // The state's size in bytes in C (sizeof wg_<graph>_ocean, up to padding), for the docs and
 // the header's comment.
 size_t queryOceanStateBytes(const ocean::OceanSettings& settings);

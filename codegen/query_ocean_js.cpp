@@ -7,9 +7,7 @@
 
 namespace wg {
 
-namespace {
-
-const char* oceanJsHelpers() {
+const char* queryOceanJsHelpers() {
   return R"(const WGQ_PI = 3.141592653589793, WGQ_G = 9.81;
 const hypot = Math.hypot;
 // ln Gamma(x) for x >= 0.5 (Lanczos, g = 7, n = 9): within ~1e-15 relative of C's lgamma for
@@ -267,14 +265,14 @@ const wgq_ocean_read = (maps, n, texelsPerMetre, weight, x, z, out) => {
 )";
 }
 
+namespace {
+
 std::string oceanJsNumber(double x) { return numberLiteral(x, HeaderLanguage::JavaScript); }
 
 }  // namespace
 
-std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
-  const int n = s.cascades.resolution;
+std::string queryOceanSpectraJs(const std::string& name, const ocean::OceanSettings& s) {
   const size_t cascades = s.cascades.tileLengths.size();
-  const std::string C = std::to_string(cascades), N = std::to_string(n);
   auto list = [&](auto value) {
     std::string out;
     for (size_t c = 0; c < cascades; ++c) out += (c ? ", " : "") + value(c);
@@ -282,12 +280,10 @@ std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
   };
   const auto bands = ocean::cascadeBands(s.cascades);
   const ocean::SpectrumSettings& p = s.spectrum;
-  std::string m = oceanJsHelpers();
-  m += "\nconst " + g + "ocean_tile = " + list([&](size_t c) { return oceanJsNumber(s.cascades.tileLengths[c]); }) + ";\n\n";
-  m += "// A new ocean state (or `o` filled): each cascade's initial amplitudes from the ocean_spectrum's\n";
-  m += "// options, then the maps at t = 0 with no camera. Its arrays: h0, frequency, maps per cascade\n";
-  m += "// (maps: 11 numbers a texel, as the C header's).\n";
-  m += "export function " + g + "ocean_init(o = Object.create(null)) {\n";
+  std::string m;
+  m += "// Each cascade's initial amplitudes h0 (re, im a bin) and frequency indices, drawn from the\n";
+  m += "// ocean_spectrum's options with its counter-based Gaussian numbers.\n";
+  m += "function " + name + "() {\n";
   m += "  const sea = {model: " + std::to_string(static_cast<int>(p.model)) +
        ", spreading: " + std::to_string(static_cast<int>(p.spreading)) + ", wind_speed: " + oceanJsNumber(p.windSpeed) +
        ", wind_direction: " + oceanJsNumber(p.windDirection) + ", fetch: " + oceanJsNumber(p.fetch) + ", depth: " + oceanJsNumber(p.depth) +
@@ -295,17 +291,13 @@ std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
        ", phillips_small_wave: " + oceanJsNumber(p.phillipsSmallWave) + ", swell_height: " + oceanJsNumber(p.swell.height) +
        ", swell_period: " + oceanJsNumber(p.swell.period) + ",\n    swell_direction: " + oceanJsNumber(p.swell.direction) +
        ", swell_spread: " + oceanJsNumber(p.swell.spread) + "};\n";
+  m += "  const tile = " + list([&](size_t c) { return oceanJsNumber(s.cascades.tileLengths[c]); }) + ";\n";
   m += "  const low = " + list([&](size_t c) { return oceanJsNumber(bands[c].low); }) + ";\n";
   m += "  const high = " + list([&](size_t c) { return oceanJsNumber(bands[c].high); }) + ";\n";
-  m += "  const seed = " + std::to_string(s.cascades.seed) + ", n = " + N + ";\n";
-  m += "  o.time = 0.0;\n  o.camera = [0.0, 0.0, 0.0];\n  o.fade = 0;\n";
-  m += "  o.h0 = [];\n  o.frequency = [];\n  o.maps = [];\n";
-  m += "  o.twiddle = new Float64Array(n);\n  o.evolved = new Float64Array(n * n * 4);\n";
-  m += "  o.work = new Float64Array(n * n * 2);\n  o.line = new Float64Array(2 * n);\n";
-  m += "  for (let j = 0; j < n / 2; ++j) {\n";
-  m += "    o.twiddle[2 * j] = cos((2.0 * WGQ_PI * j) / n);\n    o.twiddle[2 * j + 1] = sin((2.0 * WGQ_PI * j) / n);\n  }\n";
-  m += "  for (let c = 0; c < " + C + "; ++c) {\n";
-  m += "    const dk = (2.0 * WGQ_PI) / " + g + "ocean_tile[c];\n";
+  m += "  const seed = " + std::to_string(s.cascades.seed) + ", n = " + std::to_string(s.cascades.resolution) + ";\n";
+  m += "  const spectra = {h0: [], frequency: []};\n";
+  m += "  for (let c = 0; c < " + std::to_string(cascades) + "; ++c) {\n";
+  m += "    const dk = (2.0 * WGQ_PI) / tile[c];\n";
   m += "    const h0 = new Float64Array(n * n * 2), frequency = new Uint32Array(n * n);\n";
   m += "    for (let iz = 0; iz < n; ++iz)\n      for (let ix = 0; ix < n; ++ix) {\n";
   m += "        const i = iz * n + ix;\n";
@@ -316,7 +308,35 @@ std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
   m += "        const variance = wgq_directional_spectrum(sea, kx, kz) * dk * dk;\n";
   m += "        const [re, im] = wgq_bin_gaussians(c, sx, sz, seed);\n";
   m += "        h0[2 * i] = re * (0.5 * sqrt(variance));\n        h0[2 * i + 1] = im * (0.5 * sqrt(variance));\n      }\n";
-  m += "    o.h0.push(h0);\n    o.frequency.push(frequency);\n    o.maps.push(new Float64Array(n * n * 11));\n  }\n";
+  m += "    spectra.h0.push(h0);\n    spectra.frequency.push(frequency);\n  }\n";
+  m += "  return spectra;\n}\n\n";
+  return m;
+}
+
+std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
+  const int n = s.cascades.resolution;
+  const size_t cascades = s.cascades.tileLengths.size();
+  const std::string C = std::to_string(cascades), N = std::to_string(n);
+  auto list = [&](auto value) {
+    std::string out;
+    for (size_t c = 0; c < cascades; ++c) out += (c ? ", " : "") + value(c);
+    return "[" + out + "]";
+  };
+  std::string m = queryOceanJsHelpers();
+  m += "\nconst " + g + "ocean_tile = " + list([&](size_t c) { return oceanJsNumber(s.cascades.tileLengths[c]); }) + ";\n\n";
+  m += queryOceanSpectraJs(g + "ocean_spectra", s);
+  m += "// A new ocean state (or `o` filled): each cascade's initial amplitudes from the ocean_spectrum's\n";
+  m += "// options, then the maps at t = 0 with no camera. Its arrays: h0, frequency, maps per cascade\n";
+  m += "// (maps: 11 numbers a texel, as the C header's).\n";
+  m += "export function " + g + "ocean_init(o = Object.create(null)) {\n";
+  m += "  const n = " + N + ", spectra = " + g + "ocean_spectra();\n";
+  m += "  o.time = 0.0;\n  o.camera = [0.0, 0.0, 0.0];\n  o.fade = 0;\n";
+  m += "  o.h0 = spectra.h0;\n  o.frequency = spectra.frequency;\n  o.maps = [];\n";
+  m += "  o.twiddle = new Float64Array(n);\n  o.evolved = new Float64Array(n * n * 4);\n";
+  m += "  o.work = new Float64Array(n * n * 2);\n  o.line = new Float64Array(2 * n);\n";
+  m += "  for (let j = 0; j < n / 2; ++j) {\n";
+  m += "    o.twiddle[2 * j] = cos((2.0 * WGQ_PI * j) / n);\n    o.twiddle[2 * j + 1] = sin((2.0 * WGQ_PI * j) / n);\n  }\n";
+  m += "  for (let c = 0; c < " + C + "; ++c) o.maps.push(new Float64Array(n * n * 11));\n";
   m += "  " + g + "ocean_update(o, 0.0, null);\n  return o;\n}\n\n";
 
   m += "// The maps at time t seen from `camera` (null: no fade, every cascade at full weight).\n";

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "runtime/gl_resources.h"
+#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/scene.h"
 
 namespace wg::rt::oceangpu {
@@ -16,8 +17,7 @@ Texture floatTexture(int width, int height, GLenum format);
 Framebuffer targetOf(const Texture& first, const Texture* second, const char* what);
 GLint location(const Program& p, const char* name);
 void bindTexture(int unit, const Texture& t);
-// A full-screen pass's program: the scene's full-screen vertex shader and `body` after the
-// API's header and `defines`.
-Program linkPass(SceneShaderApi api, const std::string& name, const std::string& defines, const char* body);
+// A full-screen pass's program: the scene's full-screen vertex shader and `shader`'s text.
+Program linkPass(SceneShaderApi api, OceanPassShader shader);
 
 }  // namespace wg::rt::oceangpu

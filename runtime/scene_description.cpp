@@ -4,6 +4,7 @@
 
 #include "core/interface_tables.h"
 #include "runtime/floating_buoys.h"
+#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/output_transform.h"
 #include "runtime/renderer.h"
 
@@ -87,6 +88,12 @@ std::string sceneDescriptionJson(const SceneOptions& options) {
                   {"opaque_vertex", s.opaqueVertex},     {"opaque_fragment", s.opaqueFragment},
                   {"fullscreen_vertex", s.fullscreenVertex}, {"water_gbuffer_fragment", s.waterGbufferFragment},
                   {"output_transform_fragment", outputTransformFragment(SceneShaderApi::Es300)}};
+  // The spectral ocean's simulation passes (runtime/ocean_gpu_shaders.h), each drawn with
+  // fullscreen_vertex into N x N float targets.
+  for (int i = 0; i < kOceanPassShaderCount; ++i) {
+    const auto shader = static_cast<OceanPassShader>(i);
+    d["shaders"][oceanPassShaderName(shader)] = oceanPassFragment(SceneShaderApi::Es300, shader);
+  }
   return d.dump() + "\n";
 }
 

@@ -30,6 +30,7 @@ const SAMPLER_CHOICES = table({
   filter: setOf(['nearest', 'linear', 'mipmapped']),
   color_space: setOf(['linear', 'srgb']),
 });
+const OCEAN_MAP_NAMES = setOf(['displacement', 'slopes', 'foam']);
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
 
 export const has = (object, key) => Object.prototype.hasOwnProperty.call(object, key);
@@ -90,10 +91,6 @@ export function checkManifest(manifest) {
 
   if (!isObject(manifest)) throw new WaterGraphError(`the manifest must be a JSON object (got ${describe(manifest)})`, { field: '' });
   members(manifest, TOP_LEVEL, '');
-  // A spectral ocean needs the ocean_simulation pass (inverse FFTs into float maps), which
-  // the watergraph runtime runs and this client does not yet.
-  if (has(manifest, 'oceans'))
-    throw new WaterGraphError(`graph '${graph}' has a spectral ocean (its ocean_simulation pass), which the three.js client does not run yet; render it with the watergraph runtime`, { field: 'oceans' });
   if (has(manifest, 'format') && manifest.format !== MANIFEST_FORMAT)
     fail('format', `must be ${MANIFEST_FORMAT}, the format this client reads`, manifest.format);
   for (const key of ['graph', 'description', 'preset']) if (has(manifest, key)) text(manifest[key], key);
@@ -186,14 +183,24 @@ export function checkManifest(manifest) {
     list(manifest.textures, 'textures').forEach((t, i) => {
       const field = `textures[${i}]`;
       object(t, field);
-      members(t, setOf(['name', 'type', 'binding', 'stages', 'source', 'file', 'resource', 'sampler']), field);
+      members(t, setOf(['name', 'type', 'binding', 'stages', 'source', 'file', 'resource', 'sampler', 'ocean']), field);
       identifier(t.name, `${field}.name`);
       unique(t.name, `${field}.name`);
       oneOf(t.type, TEXTURE_TYPES, `${field}.type`);
       natural(t.binding, `${field}.binding`);
       list(t.stages, `${field}.stages`).forEach((s, k) => oneOf(s, STAGES, `${field}.stages[${k}]`));
-      if (has(t, 'source') === has(t, 'resource')) fail(field, 'must have exactly one of "source" and "resource"');
-      if (has(t, 'source')) {
+      if ((has(t, 'source') ? 1 : 0) + (has(t, 'resource') ? 1 : 0) + (has(t, 'ocean') ? 1 : 0) !== 1)
+        fail(field, 'must have exactly one of "source", "resource" and "ocean"');
+      if (has(t, 'ocean')) {
+        // A map of the ocean simulation (watergraph-ocean.js); "oceans" is checked below.
+        if (has(t, 'sampler') || has(t, 'file')) fail(field, 'is an ocean map ("ocean"), which has no "sampler" or "file"');
+        if (t.type !== 'sampler2D') fail(`${field}.type`, 'must be sampler2D for an ocean map', t.type);
+        const ref = object(t.ocean, `${field}.ocean`);
+        members(ref, setOf(['ocean', 'cascade', 'map']), `${field}.ocean`);
+        natural(ref.ocean, `${field}.ocean.ocean`);
+        natural(ref.cascade, `${field}.ocean.cascade`);
+        oneOf(ref.map, OCEAN_MAP_NAMES, `${field}.ocean.map`);
+      } else if (has(t, 'source')) {
         text(t.source, `${field}.source`);
         // The PNG `compile --textures` wrote: a plain file name beside the manifest.
         const file = text(t.file, `${field}.file`);
@@ -209,6 +216,30 @@ export function checkManifest(manifest) {
         oneOf(t.resource, SCENE_RESOURCES, `${field}.resource`);
       }
     });
+
+  // The spectral oceans (watergraph-ocean.js): each names the module `compile` wrote beside
+  // the manifest (one for all of them), which the client imports; the options are the
+  // runtime's (the module holds what the client needs of them).
+  const oceans = has(manifest, 'oceans') ? list(manifest.oceans, 'oceans') : [];
+  if ((oceans.length > 0) !== passes.includes('ocean_simulation'))
+    fail(oceans.length ? 'passes' : 'oceans', oceans.length ? 'must list ocean_simulation for the manifest\'s "oceans"'
+      : 'must describe the oceans of the ocean_simulation pass "passes" lists');
+  oceans.forEach((o, i) => {
+    const field = `oceans[${i}]`;
+    object(o, field);
+    members(o, setOf(['module', 'node', 'options']), field);
+    text(o.node, `${field}.node`);
+    object(o.options, `${field}.options`);
+    if (!has(o, 'module')) fail(`${field}.module`, 'is missing: compile the graph for es300, which writes the ocean module the client simulates it from');
+    const module = text(o.module, `${field}.module`);
+    if (!/^[^\/\\]+\.js$/.test(module) || module === '.js') fail(`${field}.module`, 'must be a .js file name beside the manifest', module);
+    if (module !== oceans[0].module) fail(`${field}.module`, 'must be the module the first ocean names', module);
+  });
+  (manifest.textures ?? []).forEach((t, i) => {
+    if (!has(t, 'ocean')) return;
+    const ref = t.ocean, field = `textures[${i}].ocean`;
+    if (!Number.isInteger(ref.ocean) || ref.ocean < 0 || ref.ocean >= oceans.length) fail(`${field}.ocean`, 'must index the manifest\'s "oceans"', ref.ocean);
+  });
 
   if (has(manifest, 'color')) object(manifest.color, 'color');  // its members: manifestView (watergraph-output.js)
   return manifest;

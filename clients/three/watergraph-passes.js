@@ -13,7 +13,7 @@ import { WaterGraphError } from './watergraph-error.js';
 export { WaterGraphError };
 
 // The passes render() knows how to run.
-const CLIENT_PASSES = new Set(['environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction', 'opaque_scene',
+const CLIENT_PASSES = new Set(['ocean_simulation', 'environment_cubemap', 'depth_prepass', 'planar_reflection', 'refraction', 'opaque_scene',
   'scene_color_copy', 'deferred_water', 'water_surface', 'output_transform']);
 // The passes the runtime always runs, which a manifest never lists.
 const RUNTIME_PASSES = new Set(['opaque_scene', 'output_transform']);
@@ -214,6 +214,9 @@ export class WaterPasses {
     if (this.deferred && !renderer.extensions.has('EXT_color_buffer_float'))
       throw new WaterGraphError(`graph '${this.manifest.graph}' uses deferred water, whose G-buffer is RGBA32F: ` +
         'this WebGL 2 context has no EXT_color_buffer_float to render it');
+    if (this.manifest.oceans && !renderer.extensions.has('EXT_color_buffer_float'))
+      throw new WaterGraphError(`graph '${this.manifest.graph}' has a spectral ocean, whose simulation renders into RGBA32F and R32F ` +
+        'textures: this WebGL 2 context has no EXT_color_buffer_float to render it');
     const format = rendersHalfFloat(renderer) ? 'rgba16f' : 'rgba8';
     if (format === this.frameFormat) return false;
     this.frameFormat = format;
@@ -317,6 +320,8 @@ export class WaterPasses {
     try {
       for (const pass of this.plan.passes) {
         switch (pass) {
+          // Every ocean's maps at the water's time (watergraph-ocean.js); they hold it after.
+          case 'ocean_simulation': water.ocean.update(renderer, water.time, water.foamHistory); break;
           case 'environment_cubemap': this.#environment(renderer); break;
           case 'depth_prepass': this.#sceneInto(renderer, scene, camera, this.targets.scene_depth.target, null, false); break;
           // Reflected: what is on the camera's side of the water; refracted: the other side.

@@ -6,6 +6,7 @@ import * as THREE from 'three';
 import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
 import { manifestView, renderView } from './watergraph-output.js';
 import { checkManifest, has } from './watergraph-manifest.js';
+import { OceanSimulation } from './watergraph-ocean.js';
 
 export { WaterGraphError };
 export { TONE_MAPPERS, EXPOSURE_RANGE } from './watergraph-output.js';
@@ -93,7 +94,11 @@ function checkPasses(manifest, resources, hasPasses = false) {
   // Without a description the client draws the water alone: a pass it does not know would
   // be skipped silently.
   const known = new Set(['water_surface', ...Object.values(RESOURCE_PASSES)]);
-  if (!hasPasses) for (const pass of passes) if (!known.has(pass)) missing.push(`${pass} (a pass this client does not know)`);
+  if (!hasPasses)
+    for (const pass of passes) {
+      if (pass === 'ocean_simulation') missing.push(`${pass} (a spectral ocean: its passes' shaders come with a scene description)`);
+      else if (!known.has(pass)) missing.push(`${pass} (a pass this client does not know)`);
+    }
   for (const resource of manifest.resources ?? []) {
     const pass = has(RESOURCE_PASSES, resource) ? RESOURCE_PASSES[resource] : undefined;
     if (!pass) missing.push(`${resource} (an unknown scene resource)`);
@@ -177,8 +182,10 @@ export class WaterGraph {
   // texture with a "source" (loadWaterGraph loads them); resources: scene resource name ->
   // THREE texture the application renders itself (see RESOURCE_PASSES). description: a
   // scene description (`watergraph scene`): the client then renders every pass the
-  // manifest lists itself (WaterPasses), and render() draws a frame.
-  constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {}, description = null }) {
+  // manifest lists itself (WaterPasses), and render() draws a frame. oceanModule: for a
+  // manifest with "oceans", the ES module its entries name (<graph>.ocean.js, imported by
+  // loadWaterGraph), from which the ocean_simulation pass simulates them.
+  constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {}, description = null, oceanModule = null }) {
     if (!manifest || typeof manifest !== 'object') throw new WaterGraphError('no manifest given');
     checkManifest(manifest);  // its documented shape, before any of it is used
     checkPasses(manifest, resources, description !== null);
@@ -189,6 +196,12 @@ export class WaterGraph {
       this.passes = new WaterPasses(manifest, description, { width: 1, height: 1 });
       resources = this.passes.resources;
     }
+    // The spectral oceans' simulation (watergraph-ocean.js), run by render() as the first pass.
+    this.ocean = manifest.oceans ? new OceanSimulation(manifest, oceanModule, description) : null;
+    // How render() reaches a frame's foam: 'replay' (a still frame: its time's foam alone, as
+    // the runtime's render) or 'continue' (an animation: from the previous frame's steps).
+    this.foamHistory = 'replay';
+    this.time = 0;
     this.meshes = [];
     for (const a of manifest.attributes ?? []) {
       const want = GRID_ATTRIBUTES[a.name];
@@ -216,6 +229,8 @@ export class WaterGraph {
       if ('source' in t) {
         texture = has(textures, t.name) ? textures[t.name] : undefined;
         if (!texture) throw new WaterGraphError(`texture ${t.name} (${t.source}) was not given`);
+      } else if ('ocean' in t) {
+        texture = this.ocean.map(t.ocean);
       } else if ('resource' in t) {
         // By sampler first: the G-buffer's two samplers share the resource `underwater`.
         texture = (has(resources, t.name) ? resources[t.name] : undefined) ??
@@ -361,6 +376,7 @@ export class WaterGraph {
       if (name) fn(this.uniforms[name]);
     };
     camera.updateMatrixWorld();
+    this.time = time;  // the ocean simulation's, in double
     set('time', (u) => { u.value = time; });
     for (const [name, omega] of this.phases) this.uniforms[name].value = timePhase(omega, time);
     set('view', (u) => u.value.copy(camera.matrixWorldInverse));
@@ -410,6 +426,7 @@ export class WaterGraph {
     this.material.dispose();
     this.gbufferMaterial?.dispose();
     this.passes?.dispose();
+    this.ocean?.dispose();
     for (const t of this.manifest.textures ?? [])
       if ('source' in t) this.uniforms[t.name]?.value?.dispose();
   }
@@ -489,6 +506,8 @@ export async function loadWaterGraph(manifestUrl, { resources = {}, description 
     throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
   const text = async (file) => (await fetchOk(new URL(file, base), file)).text();
   const [vertexShader, fragmentShader] = await Promise.all([text(es300.vert), text(es300.frag)]);
+  // The oceans' module (checkManifest: a .js file name beside the manifest), as an ES module.
+  const oceanModule = manifest.oceans ? await importOceanModule(new URL(manifest.oceans[0].module, base)) : null;
   const textures = table();
   for (const t of manifest.textures ?? []) {
     if (!('source' in t)) continue;
@@ -497,5 +516,13 @@ export async function loadWaterGraph(manifestUrl, { resources = {}, description 
       new URL(file, base),
       `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``, t.sampler);
   }
-  return new WaterGraph({ manifest, vertexShader, fragmentShader, textures, resources, description });
+  return new WaterGraph({ manifest, vertexShader, fragmentShader, textures, resources, description, oceanModule });
+}
+
+async function importOceanModule(url) {
+  try {
+    return await import(url.href);
+  } catch (e) {
+    throw new WaterGraphError(`cannot load the ocean module from ${url} (written by \`watergraph compile --target es300\`): ${e.message}`);
+  }
 }

@@ -7,11 +7,6 @@
 // target's row 0 is the view's bottom row and frontFace is "cw".
 import { beginTargetPass, createTargets, runScenePass, ScenePasses } from './watergraph-webgpu-passes.js';
 
-// Why a manifest with a spectral ocean is not run here.
-export function oceanRefusal(manifest) {
-  return `graph '${manifest.graph}' has a spectral ocean (its ocean_simulation pass), which the WebGPU runner does not run yet; render it with the watergraph runtime`;
-}
-
 export class WebgpuRunnerError extends Error {
   constructor(message) {
     super(message);
@@ -59,7 +54,7 @@ function fileTexture(device, t, bitmap, colorSpace) {
 // The water's bind group: the uniform buffer, each file texture from `textures`, each scene
 // texture from `resources` (createTargets; sampled as the runtime does: clamped, nearest where
 // it is depth or 32-bit float, so unfilterable here).
-function waterBindGroup(device, manifest, uniformValue, textures, resources) {
+function waterBindGroup(device, manifest, uniformValue, textures, resources, ocean) {
   const webgpu = manifest.webgpu;
   const entries = [], layoutEntries = [];
   const visibility = GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT;
@@ -75,6 +70,19 @@ function waterBindGroup(device, manifest, uniformValue, textures, resources) {
       continue;
     }
     const t = manifest.textures.find((x) => x.name === b.texture);
+    if (t.ocean) {
+      // A map of the ocean simulation (watergraph-webgpu-ocean.js), 32-bit float read with
+      // textureLoad: unfilterable, its sampler (unused) nearest.
+      if (!ocean) throw new WebgpuRunnerError(`texture ${t.name}: an ocean map needs the ocean simulation (options.ocean)`);
+      if (b.kind === 'sampler') {
+        entries.push({ binding: b.binding, resource: device.createSampler({ magFilter: 'nearest', minFilter: 'nearest' }) });
+        layoutEntries.push({ binding: b.binding, visibility, sampler: { type: 'non-filtering' } });
+      } else {
+        entries.push({ binding: b.binding, resource: ocean.map(t.ocean).createView() });
+        layoutEntries.push({ binding: b.binding, visibility, texture: { sampleType: 'unfilterable-float' } });
+      }
+      continue;
+    }
     const scene = t.resource !== undefined ? resources[t.name] : undefined;
     if (t.resource !== undefined && !scene) throw new WebgpuRunnerError(`texture ${t.name}: no pass of the plan makes the scene resource ${t.resource}`);
     if (b.kind === 'sampler') {
@@ -176,14 +184,15 @@ const WATER_BLEND = { color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src
 //   no scene (the runtime's `--scene none`: scene targets cleared only); camera: {view,
 //   projection, position} as OpenGL matrices (column-major) and the eye; uniformValue(name): each
 //   water uniform's value; geometry: the water grid (Float32Arrays position, normal, uv and a
-//   Uint32Array index); textures: a node texture's name -> ImageBitmap (bottom row first).
+//   Uint32Array index); textures: a node texture's name -> ImageBitmap (bottom row first);
+//   ocean, time: for a manifest with "oceans", its WebgpuOceanSimulation
+//   (watergraph-webgpu-ocean.js) and the frame's time in seconds.
 // Returns {linear: Float32Array RGBA with row 0 at the bottom, srgb8: Uint8ClampedArray RGBA top
 // row first, through clamp and the sRGB encoding}.
 export async function renderGraph(device, options) {
-  const { manifest, wgsl, plan, description, sceneShaders, drawScene = true, camera, uniformValue, geometry, textures = {} } = options;
-  // A spectral ocean needs its ocean_simulation pass (inverse FFTs into float maps), which
-  // the watergraph runtime runs and this runner does not yet.
-  if (manifest.oceans) throw new WebgpuRunnerError(oceanRefusal(manifest));
+  const { manifest, wgsl, plan, description, sceneShaders, drawScene = true, camera, uniformValue, geometry, textures = {},
+    ocean = null, time = 0 } = options;
+  if (manifest.oceans && !ocean) throw new WebgpuRunnerError(`graph '${manifest.graph}' has a spectral ocean: give its simulation (options.ocean)`);
   const webgpu = manifest.webgpu;
   if (!webgpu) throw new WebgpuRunnerError(`graph '${manifest.graph}' was not compiled for wgsl (--target wgsl)`);
   const deferred = plan.passes.includes('deferred_water');
@@ -194,7 +203,7 @@ export async function renderGraph(device, options) {
   const module = await compiledModule(device, wgsl, `${manifest.graph}.wgsl`);
   const { targets, resources } = createTargets(device, plan);
   const scene = drawScene ? new ScenePasses(device, description, sceneShaders) : null;
-  const water = waterBindGroup(device, manifest, uniformValue, textures, resources);
+  const water = waterBindGroup(device, manifest, uniformValue, textures, resources, ocean);
   const mesh = waterGeometry(device, webgpu, geometry);
   const layout = device.createPipelineLayout({ bindGroupLayouts: [water.layout] });
   const primitive = { topology: 'triangle-list', cullMode: 'none', frontFace: 'cw' };
@@ -212,6 +221,10 @@ export async function renderGraph(device, options) {
   const clear = description?.clear_color ?? [0, 0, 0, 1];
   for (const passName of plan.passes) {
     if (passName === 'output_transform') continue;  // applied on the read-back frame below
+    if (passName === 'ocean_simulation') {  // every ocean's maps at the frame's time, first
+      ocean.encode(encoder, time);
+      continue;
+    }
     if (passName === 'deferred_water') {
       // The G-buffer: the graph's vertex stage (displacement included) writes the surface's
       // position and depth, normal and uv; where no water is, depth w = 1.

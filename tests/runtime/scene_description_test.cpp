@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/interface_tables.h"
+#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/renderer.h"
 #include "runtime/scene_description.h"
 
@@ -42,6 +43,13 @@ TEST(SceneDescription, HoldsTheRuntimesEsShadersCamerasAndSun) {
   EXPECT_EQ(d["shaders"]["opaque_fragment"], s.opaqueFragment);
   EXPECT_EQ(d["shaders"]["fullscreen_vertex"], s.fullscreenVertex);
   EXPECT_EQ(d["shaders"]["water_gbuffer_fragment"], s.waterGbufferFragment);
+  // The spectral ocean's passes, each the very text the runtime links on ES (the web
+  // clients run them; ThreeClient's open_ocean frames show they work).
+  for (int i = 0; i < kOceanPassShaderCount; ++i) {
+    const auto shader = static_cast<OceanPassShader>(i);
+    EXPECT_EQ(d["shaders"][oceanPassShaderName(shader)], oceanPassFragment(SceneShaderApi::Es300, shader))
+        << oceanPassShaderName(shader);
+  }
   EXPECT_EQ(vec3Of(d["sun_direction"]), sunDirection(o));
   ASSERT_EQ(d["cameras"].size(), cameraPresetNames().size());
   for (const auto& name : cameraPresetNames()) {

@@ -150,6 +150,8 @@ async function select(name, preset = 'default') {
     water.dispose();
   }
   water = next;
+  // An animation: a spectral ocean's foam continues from the previous frame's steps.
+  water.foamHistory = 'continue';
   query = graphInfo(name).query ? await loadQuery(name, preset) : null;
   waterMesh = water.createMesh();
   scene.add(waterMesh);

@@ -94,6 +94,12 @@ const CASES = [
   ['lagoon', 'a texture binding "0"', (m) => { m.textures[0].binding = '0'; return 'textures[0].binding'; }],
   ['lagoon', 'a texture of type "__proto__"', (m) => { m.textures[0].type = '__proto__'; return 'textures[0].type'; }],
   ['three_environment', 'a scene texture of resource "constructor"', (m) => { m.textures[0].resource = 'constructor'; return 'textures[0].resource'; }],
+  // A spectral ocean's members (the shape `compile --target es300` writes for open_ocean).
+  ['topdown', 'an ocean without its module', (m) => { m.oceans = [{ node: 'sea', options: {} }]; m.passes.unshift('ocean_simulation'); return 'oceans[0].module'; }],
+  ['topdown', 'an ocean module outside the manifest\'s folder', (m) => { m.oceans = [{ module: '../x.js', node: 'sea', options: {} }]; m.passes.unshift('ocean_simulation'); return 'oceans[0].module'; }],
+  ['topdown', 'oceans without the ocean_simulation pass', (m) => { m.oceans = [{ module: 'topdown.ocean.js', node: 'sea', options: {} }]; return 'passes'; }],
+  ['topdown', 'an ocean map of an ocean "oceans" lacks', (m) => { m.textures = [{ name: 'u_map', type: 'sampler2D', binding: 1, stages: ['vertex'], ocean: { ocean: 0, cascade: 0, map: 'displacement' } }]; return 'textures[0].ocean.ocean'; }],
+  ['topdown', 'an ocean map "__proto__"', (m) => { m.textures = [{ name: 'u_map', type: 'sampler2D', binding: 1, stages: ['vertex'], ocean: { ocean: 0, cascade: 0, map: '__proto__' } }]; return 'textures[0].ocean.map'; }],
 ];
 
 for (const [fixture, what, change] of CASES) {
@@ -118,6 +124,15 @@ test('without a scene description, a pass the client does not know is refused by
   assert.doesNotThrow(() => checkManifest(g.manifest));  // a name: a newer runtime's description may have it
   assert.throws(() => new WaterGraph(g), (e) => e instanceof WaterGraphError &&
     e.message.includes('constructor (a pass this client does not know)'));
+});
+
+test('without a scene description, a spectral ocean is refused naming its pass', () => {
+  const g = graph('topdown');
+  g.manifest.oceans = [{ module: 'topdown.ocean.js', node: 'sea', options: {} }];
+  g.manifest.passes.unshift('ocean_simulation');
+  assert.doesNotThrow(() => checkManifest(g.manifest));
+  assert.throws(() => new WaterGraph(g), (e) => e instanceof WaterGraphError &&
+    e.message.includes("ocean_simulation (a spectral ocean: its passes' shaders come with a scene description)"));
 });
 
 // What the removed --derived-uniforms wrote: a uniform no client computes, refused with

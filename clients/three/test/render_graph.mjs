@@ -119,7 +119,9 @@ try {
     page.on('requestfailed', (r) => problems.push(`request failed: ${r.url()}`));
     try {
       await page.goto(`${origin}/client/test/render.html?${query}`);
-      await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 30000 });
+      // 120 s: a spectral ocean's still frame replays its foam (tens of inverse FFTs per
+      // cascade) on SwiftShader, about 20 s on an idle machine.
+      await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 120000 });
       const result = await page.evaluate(() => window.wgResult);
       if (!result.ok) problems.unshift(result.error);
       if (problems.length) {

@@ -9,7 +9,8 @@ import { loadWaterGraph, createWaterGridGeometry } from '/three/watergraph-three
 import { loadSceneDescription, presetCamera } from '/three/watergraph-scene.js';
 import { glPerspective, planPasses } from '/three/watergraph-passes.js';
 import { init as initNaga, parseGlsl, validate, writeWgsl } from '/webgpu/node_modules/naga-wasm/dist/index.js';
-import { oceanRefusal, renderGraph, WebgpuRunnerError } from '/webgpu/watergraph-webgpu.js';
+import { renderGraph } from '/webgpu/watergraph-webgpu.js';
+import { oceanPassesWgsl, WebgpuOceanSimulation } from '/webgpu/watergraph-webgpu-ocean.js';
 import { sceneShadersWgsl } from '/webgpu/watergraph-webgpu-scene-shaders.js';
 
 const q = new URLSearchParams(location.search);
@@ -32,8 +33,6 @@ async function main() {
   glPerspective(camera.fov, camera.aspect, camera.near, camera.far, camera.projectionMatrix);
   camera.projectionMatrixInverse.copy(camera.projectionMatrix).invert();
   const manifestUrl = new URL(q.get('manifest'), location.href);
-  const listed = await (await fetch(manifestUrl)).json();
-  if (listed.oceans) throw new WebgpuRunnerError(oceanRefusal(listed));  // before the three.js client reads it
   const water = await loadWaterGraph(manifestUrl.href, { description });
   water.setViewportSize(width, height);
   water.update(Number(q.get('time')), camera);
@@ -50,6 +49,11 @@ async function main() {
   const gbufferInputs = manifest.passes.includes('deferred_water')
     ? Object.fromEntries(manifest.webgpu.varyings.map((v) => [v.name, v.location])) : null;
   const sceneShaders = sceneShadersWgsl(description, { parseGlsl, validate, writeWgsl }, gbufferInputs);
+  // A spectral ocean: the runtime's pass shaders through naga, the compiler's ocean module.
+  const ocean = manifest.oceans
+    ? new WebgpuOceanSimulation(device, manifest, await import(new URL(manifest.oceans[0].module, manifestUrl).href),
+      oceanPassesWgsl(description, { parseGlsl, validate, writeWgsl }))
+    : null;
   const plan = planPasses(manifest, description, { width, height, environmentSize: description.environment.size });
   const { srgb8 } = await renderGraph(device, {
     manifest, wgsl, plan, description, sceneShaders, textures,
@@ -57,6 +61,7 @@ async function main() {
     camera: { view: camera.matrixWorldInverse.toArray(), projection: camera.projectionMatrix.toArray(),
       position: camera.getWorldPosition(camera.position.clone()).toArray() },
     uniformValue: (name) => water.uniforms[name].value,
+    ocean, time: Number(q.get('time')),
     geometry: runnerGeometry(createWaterGridGeometry(Number(q.get('grid')), description.water.half_size)),
   });
   const canvas = new OffscreenCanvas(width, height);

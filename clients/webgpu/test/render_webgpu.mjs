@@ -77,7 +77,8 @@ try {
     const query = new URLSearchParams({ manifest: `/out/${job.manifest}`, description: `/scene/${path.basename(args.description)}`,
       width, height, camera: job.camera, time: args.time, grid: args.grid, scene: job.scene });
     await page.goto(`${origin}/webgpu/test/render.html?${query}`);
-    await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 60000 });
+    // 120 s: a spectral ocean's still frame replays its foam (tens of transforms per cascade).
+    await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 120000 });
     const result = await page.evaluate(() => window.wgResult);
     await page.close();
     if (!result.ok) {

@@ -6,6 +6,7 @@ import { test } from 'node:test';
 import * as naga from 'naga-wasm';
 import { glsl450ForNaga, sceneShadersWgsl, SceneShaderError } from '../watergraph-webgpu-scene-shaders.js';
 import { renderGraph, WebgpuRunnerError } from '../watergraph-webgpu.js';
+import { oceanPassesWgsl } from '../watergraph-webgpu-ocean.js';
 
 const description = JSON.parse(readFileSync(process.env.WG_SCENE_DESCRIPTION, 'utf8'));
 const gbufferInputs = { v_world_position: 0, v_normal: 1, v_uv: 2 };
@@ -62,9 +63,24 @@ test('what the runner cannot take is a SceneShaderError naming it', () => {
   assert.throws(() => sceneShadersWgsl(broken, naga), (e) => e instanceof SceneShaderError && /naga could not translate the runtime's opaque_fragment/.test(e.message));
 });
 
-test('a manifest with a spectral ocean is refused before any GPU work, naming the graph', async () => {
+test('a manifest with a spectral ocean needs its simulation, refused before any GPU work', async () => {
   const manifest = { graph: 'open_ocean', oceans: [{ node: 'sea', options: {} }], webgpu: {}, passes: ['ocean_simulation', 'water_surface'] };
   await assert.rejects(renderGraph(null, { manifest, plan: { passes: [], targets: [] } }), (e) =>
-    e instanceof WebgpuRunnerError && /graph 'open_ocean' has a spectral ocean \(its ocean_simulation pass\), which the WebGPU runner does not run yet/.test(e.message));
+    e instanceof WebgpuRunnerError && /graph 'open_ocean' has a spectral ocean: give its simulation \(options.ocean\)/.test(e.message));
+});
+
+test('the ocean simulation\'s pass shaders become WGSL fragment modules naga validates, with their bindings', () => {
+  const passes = oceanPassesWgsl(description, naga);
+  assert.equal(Object.keys(passes).length, 9);
+  for (const [name, p] of Object.entries(passes)) {
+    naga.validate(naga.parseWgsl(p.wgsl));
+    assert.match(p.wgsl, /@fragment\s+fn main\(/, name);
+    assert.ok(p.wgsl.includes('textureLoad('), name);
+  }
+  // The variants keep only the textures they read: the two-texture stage reads u_b, the single one not.
+  assert.deepEqual(passes.ocean_stockham.textures.map((t) => t.name), ['u_a', 'u_twiddle', 'u_b']);
+  assert.deepEqual(passes.ocean_stockham_single.textures.map((t) => t.name), ['u_a', 'u_twiddle']);
+  assert.deepEqual(passes.ocean_evolve.uniforms.map((u) => [u.name, u.type, u.offset]), [['u_tau', 'uint', 0], ['u_dk', 'float', 4], ['u_n', 'int', 8]]);
+  assert.equal(passes.ocean_evolve.textures.find((t) => t.name === 'u_frequency').sampleType, 'uint');
 });
 
