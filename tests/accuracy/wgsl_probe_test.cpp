@@ -61,13 +61,14 @@ class WgslProbe : public ::testing::Test {
   static inline std::string skip_, npmError_;
 };
 
-// Nodes whose WGSL differs most from a line-for-line copy of their GLSL: mod and ?: become
-// helpers and select(), the trochoid's ray march samples in a loop (textureSampleLevel), the
-// scene look-ups read 1x1 textures through unfilterable bindings, a node texture is
-// uploaded as the runtime uploads it, integer hashing, matrices in the uniform buffer.
-const std::vector<std::string> kWgslProbeNodes = {
-    "fresnel",  "gerstner_waves", "trochoid_wave", "absorption",      "water_depth",    "scene_depth", "linearize_depth",
-    "voronoi",  "hash",           "fbm",           "normal_map_scroll", "smoothstep",   "pow",         "refract_dir"};
+// Nodes whose WGSL differs most from a line-for-line copy of their GLSL: mod becomes a
+// helper (WGSL's % truncates), the trochoid's ray march and ssr sample in loops
+// (textureSampleLevel), 2D and cube scene textures through unfilterable bindings, a node
+// texture uploaded as the runtime uploads it, integer hashing, the waves' uniforms of every
+// size, and a constant the mutation below edits.
+const std::vector<std::string> kWgslProbeNodes = {"fresnel", "gerstner_waves", "trochoid_wave", "ssr",
+                                                  "water_depth", "cubemap_reflection", "normal_map_scroll",
+                                                  "voronoi", "hash", "mod"};
 
 TEST_F(WgslProbe, NodesAndExampleGraphsAgreeWithTheDoubleReference) {
   needChromium();
@@ -87,7 +88,7 @@ TEST_F(WgslProbe, NodesAndExampleGraphsAgreeWithTheDoubleReference) {
     for (const auto& c : run.report.cases) worst = std::max(worst, c.bound > 0 ? c.absError / c.bound : 0.0);
   }
   for (const auto& node : kWgslProbeNodes) EXPECT_TRUE(probed.count(node)) << node << " was not probed";
-  EXPECT_GT(r.caseRuns, 300);
+  EXPECT_GT(r.caseRuns, 200);
   std::printf("[ wgsl     ] %zu nodes: %d case runs, %d failures, %d NaN/Inf, worst error/bound %.3g (%s)\n", probed.size(),
               r.caseRuns, r.failures, r.nanInf, worst, executor->deviceName().c_str());
 
