@@ -4,6 +4,10 @@
 
 namespace wg::accuracy {
 
+std::optional<EmitResult> GpuExecutor::probeShader(const Program& program, const std::string& sourceName, Diagnostics&) {
+  return emitProgram(program, target(), sourceName, EmitMode::Probe);
+}
+
 std::unique_ptr<GpuExecutor> makeGpuExecutor(Target target, const ExecutorOptions& options) {
   if (target == Target::Vk450) return makeVkExecutor(options);
   if (options.vulkanValidation)

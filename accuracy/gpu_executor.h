@@ -5,9 +5,11 @@
 // core, es300 on OpenGL ES 3.2, through EGL, compiling the emitted GLSL text. Vulkan
 // (vk_executor.cpp): vk450 on Vulkan 1.3 (lavapipe), running SPIR-V: for check the
 // compile's own modules, the ones `compile --target vk450` writes; for the probe the probe
-// shader's vk450 text through the same glslang path.
+// shader's vk450 text through the same glslang path. WebGPU (wgsl_executor.cpp): the wgsl
+// target's module of the probe plan, in headless Chromium's WebGPU through Node.js (probe only).
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -65,8 +67,17 @@ class RendererFrames : public WaterFrames {
 class GpuExecutor {
  public:
   virtual ~GpuExecutor() = default;
+  // The GLSL dialect it runs, or, for WGSL, the one whose plan its module shares (es300's:
+  // no tessellation).
   virtual Target target() const = 0;
-  virtual std::string deviceName() const = 0;  // GL_RENDERER, or the Vulkan device's name
+  // What the reports name: the target's name ("glsl330", "vk450", "wgsl").
+  virtual std::string targetLabel() const { return std::string(targetName(target())); }
+  virtual std::string deviceName() const = 0;  // GL_RENDERER, the Vulkan device's or the WebGPU adapter's name
+
+  // The probe shader of `program` (codegen EmitMode::Probe) for this executor: the target's
+  // GLSL, or the WGSL module (codegen/emit_wgsl.h emitWgslProbe). nullopt, with an error at
+  // the node, when the program has no form for it.
+  virtual std::optional<EmitResult> probeShader(const Program& program, const std::string& sourceName, Diagnostics& diags);
 
   // Runs a probe shader (EmitMode::Probe, this target) per case: one RGBA32F pixel each
   // (probe_gpu.h, vk_probe.h). `what` names the shader in errors.
@@ -95,6 +106,19 @@ std::unique_ptr<GpuExecutor> makeGpuExecutor(Target target, const ExecutorOption
 // The two implementations, which makeGpuExecutor picks between.
 std::unique_ptr<GpuExecutor> makeGlExecutor(Target target);
 std::unique_ptr<GpuExecutor> makeVkExecutor(const ExecutorOptions& options);
+
+// What the WebGPU executor runs: Node.js and the client folder holding probe_server.mjs and
+// its npm packages (clients/webgpu), and the Chromium it starts.
+struct WebgpuTools {
+  std::string node;       // the node executable
+  std::string clientDir;  // clients/webgpu (with node_modules)
+  std::string chromium = "/usr/bin/chromium";
+};
+
+// The WebGPU executor (probe only: waterFrames throws). Throws rt::RuntimeError
+// (Kind::Environment) when the page cannot run WebGPU: Chromium missing or not starting, no
+// adapter; the message says why the probe did not run.
+std::unique_ptr<GpuExecutor> makeWgslExecutor(const WebgpuTools& tools);
 
 // A GL executor on the GL context current on this thread (made by the caller), for
 // glsl330 or es300.

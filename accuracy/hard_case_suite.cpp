@@ -95,7 +95,7 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, Target target, const Su
 }
 
 SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, GpuExecutor& executor, const SuiteOptions& options) {
-  const Target target = executor.target();
+  const std::string target = executor.targetLabel();
   SuiteResult result;
   for (const NodeSpec* spec : defaultRegistry().all()) {
     if (!options.nodes.empty() && std::find(options.nodes.begin(), options.nodes.end(), spec->type) == options.nodes.end())
@@ -157,7 +157,7 @@ SuiteResult runHardCaseSuite(const ProbeCaseFile& suite, GpuExecutor& executor, 
               gpu += (i ? ", " : "") + significantDigits(c.gpu[static_cast<size_t>(i)], 6);
               ref += (i ? ", " : "") + significantDigits(c.reference[static_cast<size_t>(i)], 6);
             }
-            result.failureLines.push_back(std::string(targetName(target)) + " " + label + " case '" + c.name +
+            result.failureLines.push_back(target + " " + label + " case '" + c.name +
                                           "': " + c.failure() + " (gpu " + gpu + "; ref " + ref + ")");
           }
           result.runs.push_back({spec->type, variant, completeOptions(*spec, group.first), std::move(*report)});

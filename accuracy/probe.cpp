@@ -123,7 +123,6 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
 
 std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& output, const ProbeCaseFile& cases,
                                       GpuExecutor& executor, Diagnostics& diags, const ShaderMutation& mutation) {
-  const Target target = executor.target();
   // Parameters a case sets must exist in the graph (they may be pruned from the program).
   for (const auto& c : cases.cases) {
     // The node-probe keys have no meaning for a graph: say which keys a graph case takes.
@@ -158,7 +157,9 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
   if (diags.hasErrors()) return std::nullopt;
   auto program = buildProbeProgram(graph, defaultRegistry(), output, diags);
   if (!program) return std::nullopt;
-  EmitResult shader = emitProgram(*program, target, graph.file, EmitMode::Probe);
+  std::optional<EmitResult> probeShader = executor.probeShader(*program, graph.file, diags);
+  if (!probeShader) return std::nullopt;
+  EmitResult& shader = *probeShader;
   applyMutation(shader, mutation);
 
   ErrorModel model = programErrorModel(*program);
@@ -178,10 +179,10 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
     report.output = output.node + "." + port;
   }
   report.type = program->outputs.front().type;
-  report.target = target;
+  report.target = executor.targetLabel();
   report.renderer = executor.deviceName();
   std::vector<std::array<float, 4>> gpu =
-      executor.runProbe(shader, *program, cases.cases, graph.file + " (probe, " + std::string(targetName(target)) + ")");
+      executor.runProbe(shader, *program, cases.cases, graph.file + " (probe, " + report.target + ")");
   for (size_t i = 0; i < cases.cases.size(); ++i) {
     const ProbeCase& c = cases.cases[i];
     std::vector<Value> params;
@@ -200,7 +201,7 @@ std::optional<ProbeReport> probeGraph(const Graph& graph, const ProbeOutput& out
 
 std::string formatProbeText(const ProbeReport& r) {
   std::string out = "probe " + r.graph + " output " + r.output + " (" + std::string(typeName(r.type)) + ") on " +
-                    std::string(targetName(r.target)) + " (" + r.renderer + "), " + std::to_string(r.cases.size()) +
+                    r.target + " (" + r.renderer + "), " + std::to_string(r.cases.size()) +
                     " case" + (r.cases.size() == 1 ? "" : "s") + "\n";
   for (const auto& c : r.cases) {
     out += (c.passed() ? "  ok    " : "  FAIL  ") + c.name + "\n";
@@ -221,7 +222,7 @@ nlohmann::json probeJson(const ProbeReport& r) {
   j["graph"] = r.graph;
   j["output"] = r.output;
   j["type"] = std::string(typeName(r.type));
-  j["target"] = std::string(targetName(r.target));
+  j["target"] = r.target;
   j["renderer"] = r.renderer;
   j["passed"] = r.passed();
   j["cases"] = nlohmann::json::array();

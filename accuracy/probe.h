@@ -43,8 +43,8 @@ struct ProbeReport {
   std::string graph;   // file
   std::string output;  // "wave.normal" or "fragment.color"
   Type type = Type::Float;
-  Target target = Target::Glsl330;
-  std::string renderer;  // GL_RENDERER, or the Vulkan device
+  std::string target = "glsl330";  // the executor's target label ("glsl330", "vk450", "wgsl")
+  std::string renderer;  // GL_RENDERER, the Vulkan device or the WebGPU adapter
   std::vector<ProbeCaseResult> cases;
   bool passed() const;
   int failures() const;

@@ -126,7 +126,7 @@ std::vector<ProbeCase> sweepCases(const NodePorts& ports, const SweepAxis& axis,
 }
 
 std::string sweepTable(const SweepAxis& axis, const ProbeReport& report) {
-  std::string out = "# " + report.output + " on " + std::string(targetName(report.target)) + ": " + axis.name +
+  std::string out = "# " + report.output + " on " + report.target + ": " + axis.name +
                     (axis.component >= 0 ? std::string(".") + "xyzw"[axis.component] : "") +
                     " gpu reference abs_error bound\n";
   for (size_t i = 0; i < report.cases.size(); ++i) {

@@ -1,5 +1,6 @@
 // probe: one output of a graph evaluated per case on the GPU in float32 (one pixel of an
-// RGBA32F target per case; GL for glsl330 and es300, Vulkan for vk450) and by the double
+// RGBA32F target per case; GL for glsl330 and es300, Vulkan for vk450, WebGPU in headless
+// Chromium for wgsl) and by the double
 // reference; prints both, the errors and the
 // NaN/Inf flags. Exit 1 when a case is NaN/Inf, out of its range or over its tolerance.
 #include <cmath>
@@ -9,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/option_values.h"
+#include "cli/wgsl_checks.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/function_sweep.h"
@@ -18,6 +20,7 @@
 #include "accuracy/probe.h"
 #include "accuracy/sweep.h"
 #include "nodes/registry.h"
+#include "codegen/emit_wgsl.h"
 #include "codegen/output_files.h"
 #include "core/graph_io.h"
 #include "core/json_source.h"
@@ -48,6 +51,22 @@ struct ProbeArgs {
 
 
 #ifdef WG_HAVE_RUNTIME
+// The executor --target names: GL or Vulkan, or WebGPU through Node.js and headless Chromium
+// (clients/webgpu/probe_server.mjs). Throws rt::RuntimeError (Kind::Environment: exit 2)
+// naming what is missing when the WebGPU probe cannot run: it did not run, and never passes.
+std::unique_ptr<accuracy::GpuExecutor> probeExecutor(const ProbeArgs& args) {
+  if (args.target != kWgslTargetName) return accuracy::makeGpuExecutor(*parseTarget(args.target), {args.vulkanValidation});
+  const std::string notRun = "the probe did not run on wgsl: ";
+  if (std::string why = webgpuClientMissing("playwright-core"); !why.empty())
+    throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + why);
+  try {
+    return accuracy::makeWgslExecutor({nodeExecutable(), webgpuClientDir()});
+  } catch (const rt::RuntimeError& e) {
+    if (e.kind() != rt::RuntimeError::Kind::Environment) throw;
+    throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + e.what());
+  }
+}
+
 // "FIND=>REPLACE" (GLSL has '=' but no "=>").
 std::optional<accuracy::ShaderMutation> parseMutation(const std::string& text) {
   auto at = text.find("=>");
@@ -57,9 +76,8 @@ std::optional<accuracy::ShaderMutation> parseMutation(const std::string& text) {
 
 // --node TYPE --sweep AXIS: the first case of --cases (or the default case) repeated along
 // the axis, one output, the options given; prints a summary, writes the curve to --table.
-int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec& spec, Target target,
+int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec& spec,
              const accuracy::ShaderMutation& mutation) {
-  const accuracy::ExecutorOptions executorOptions{args.vulkanValidation};
   std::string why;
   auto axis = accuracy::parseSweepAxis(args.sweep, why);
   if (!axis) {
@@ -97,7 +115,7 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
     if (!cases->cases.empty()) base = cases->cases.front();
   }
   try {
-    auto executor = accuracy::makeGpuExecutor(target, executorOptions);
+    auto executor = probeExecutor(args);
     Diagnostics diags;
     auto report = accuracy::probeNode(spec, options, args.output, accuracy::sweepCases(ports, *axis, base), *executor, diags,
                                       mutation);
@@ -123,7 +141,7 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
       j["sweep"] = {{"axis", args.sweep}, {"max_abs_error", maxError}, {"worst_error_to_bound", worst}, {"worst_at", worstAt}};
       std::cout << j.dump(2) << "\n";
     }
-    std::cerr << "sweep " << args.sweep << " of " << report->output << " on " << targetName(target) << ": "
+    std::cerr << "sweep " << args.sweep << " of " << report->output << " on " << report->target << ": "
               << report->cases.size() << " points, " << report->failures() << " over the bound; max error " << maxError
               << ", worst error/bound " << worst << " at " << worstAt << "\n";
     return report->passed() ? kExitOk : kExitGraphError;
@@ -138,14 +156,13 @@ int runSweep(const ProbeArgs& args, const GlobalOptions& global, const NodeSpec&
 
 // --node TYPE: the cases that apply to the node (a port they set, a builtin it reads), each
 // output, grouped by the options the cases give it; the suite's code path.
-int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target target,
-                 const accuracy::ShaderMutation& mutation) {
+int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, const accuracy::ShaderMutation& mutation) {
   const NodeSpec* spec = defaultRegistry().find(args.node);
   if (!spec) {
     std::cerr << "watergraph: --node: no node type '" << args.node << "' (see watergraph nodes)\n";
     return kExitUsageOrIo;
   }
-  if (!args.sweep.empty()) return runSweep(args, global, *spec, target, mutation);
+  if (!args.sweep.empty()) return runSweep(args, global, *spec, mutation);
   if (!args.options.empty()) {  // the cases give the options they probe ("options" in each case)
     std::cerr << "watergraph: --options applies to --sweep; with --cases, give each case its \"options\"\n";
     return kExitUsageOrIo;
@@ -159,7 +176,7 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
   printDiagnostics(diags, global);
   if (!cases) return exitCodeFor(diags);
   try {
-    auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
+    auto executor = probeExecutor(args);
     accuracy::SuiteOptions options;
     options.nodes = {spec->type};
     options.variants = args.variants;
@@ -193,7 +210,7 @@ int runNodeProbe(const ProbeArgs& args, const GlobalOptions& global, Target targ
 
 // GRAPH --functions: every glsl_function node the graph resolves to (in its subgraphs too)
 // swept over the value classes of the cases file's inputs (accuracy/function_sweep.h).
-int runFunctionSweep(const ProbeArgs& args, const GlobalOptions& global, Target target) {
+int runFunctionSweep(const ProbeArgs& args, const GlobalOptions& global) {
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
   auto cases = accuracy::loadProbeCases(args.cases, diags);
@@ -207,7 +224,7 @@ int runFunctionSweep(const ProbeArgs& args, const GlobalOptions& global, Target 
     return kExitOk;
   }
   try {
-    auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
+    auto executor = probeExecutor(args);
     accuracy::FunctionSweepResult r = accuracy::sweepFunctionNodes(*nodes, *cases, *executor);
     executor->finish();
     if (args.json) {
@@ -247,6 +264,10 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     }
     mutation = *m;
   }
+  if (args.functions && args.target == kWgslTargetName) {
+    std::cerr << "watergraph: --functions sweeps glsl_function nodes, which are GLSL only: give a GLSL --target\n";
+    return kExitUsageOrIo;
+  }
   if (args.functions && !args.node.empty()) {
     std::cerr << "watergraph: --functions needs a GRAPH (it sweeps the graph's glsl_function nodes)\n";
     return kExitUsageOrIo;
@@ -263,14 +284,14 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     std::cerr << "watergraph: --preset needs a GRAPH (a node probed alone has no presets; give it --options)\n";
     return kExitUsageOrIo;
   }
-  if (!args.node.empty()) return runNodeProbe(args, global, *parseTarget(args.target), mutation);
+  if (!args.node.empty()) return runNodeProbe(args, global, mutation);
   if (args.functions) {
     if (args.cases.empty() || !args.output.empty() || mutation.active()) {
       std::cerr << "watergraph: probe GRAPH --functions needs --cases FILE (its inputs' values are the classes swept) "
                    "and takes no --output or --mutate\n";
       return kExitUsageOrIo;
     }
-    return runFunctionSweep(args, global, *parseTarget(args.target));
+    return runFunctionSweep(args, global);
   }
   if (args.cases.empty()) {
     std::cerr << "watergraph: probe GRAPH needs --cases FILE\n";
@@ -285,7 +306,6 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     }
     output = *o;
   }
-  Target target = *parseTarget(args.target);
   Diagnostics diags;
   auto graph = loadGraphFile(args.graph, diags);
   auto cases = accuracy::loadProbeCases(args.cases, diags);
@@ -295,7 +315,7 @@ int runProbe(const ProbeArgs& args, const GlobalOptions& global) {
     return exitCodeFor(diags);
   }
   try {
-    auto executor = accuracy::makeGpuExecutor(target, {args.vulkanValidation});
+    auto executor = probeExecutor(args);
     auto report = accuracy::probeGraph(*graph, output, *cases, *executor, diags, mutation);
     executor->finish();
     printDiagnostics(diags, global);
@@ -320,7 +340,7 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
   CLI::App* cmd = app.add_subcommand(
       "probe",
       "Evaluate one output of a graph per case on the GPU in float32 (headless: GL for glsl330 and es300, Vulkan for "
-      "vk450; one pixel of an RGBA32F target per case) and with the double reference; print GPU value, reference, absolute and relative error and NaN/Inf flags. "
+      "vk450, WebGPU in headless Chromium for wgsl; one pixel of an RGBA32F target per case) and with the double reference; print GPU value, reference, absolute and relative error and NaN/Inf flags. "
       "A case sets the builtins (uv, world_position, normal, view_direction, time, camera, screen_uv, frag_depth, "
       "near_far), the scene textures' values and parameters; see docs/accuracy.md.\n\nExamples:\n"
       "  watergraph probe graphs/lake.json --cases tests/hardcases/lake.json\n"
@@ -328,19 +348,22 @@ Runner addProbeCommand(CLI::App& app, const GlobalOptions& global) {
       "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --variants\n"
       "  watergraph probe graphs/caustic_pool.json --functions --cases tests/hardcases/suite.json\n"
       "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --target vk450 --vk-validation\n"
+      "  watergraph probe --node fresnel --cases tests/hardcases/suite.json --target wgsl\n"
       "  watergraph probe --node fresnel --options '{\"model\": \"exact\", \"direction\": \"water_to_air\"}' "
       "--sweep angle:0:90:10000 --table fresnel.dat\n"
       "  watergraph probe --node fresnel --cases c.json --mutate '1.333=>1.3331'\n\n"
       "Exit codes: 0 every case finite and within tolerance; 1 a NaN/Inf, a range or tolerance failure, or graph/case "
-      "errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no EGL/GL context or Vulkan device.");
+      "errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no EGL/GL context or Vulkan device "
+      "(wgsl: no Node.js, npm packages, Chromium or WebGPU adapter: the probe did not run).");
   cmd->add_option("graph", args->graph, "graph file (.json); or --node");
   cmd->add_option("--output", args->output, "the node output to probe, NODE.PORT (default: the fragment colour)");
   cmd->add_option("--preset", args->preset,
                   "graph mode: a preset from the graph's \"presets\" table: its parameter values and node options apply");
   cmd->add_option("--cases", args->cases, "cases file (.json), see docs/accuracy.md (with --sweep: its first case is the base)");
   cmd->add_option("--target", args->target,
-                  "glsl330 (OpenGL 4.5 core), es300 (OpenGL ES 3.2) or vk450 (its SPIR-V on Vulkan 1.3)")
-      ->check(CLI::IsMember({"glsl330", "es300", "vk450"}))
+                  "glsl330 (OpenGL 4.5 core), es300 (OpenGL ES 3.2), vk450 (its SPIR-V on Vulkan 1.3) or wgsl (the "
+                  "WGSL module in headless Chromium's WebGPU, through Node.js and clients/webgpu's npm packages)")
+      ->check(CLI::IsMember({"glsl330", "es300", "vk450", "wgsl"}))
       ->capture_default_str();
   cmd->add_flag("--vk-validation", args->vulkanValidation,
                 "vk450: run under the Khronos validation layer; any message it reports fails the probe (exit 1)");

@@ -56,16 +56,10 @@ WgslCheckOutcome runCheckScript(const std::string& checker, const std::string& s
                                 const std::string& wgsl) {
   WgslCheckOutcome o;
   o.checker = checker;
-  std::string node = onSearchPath("node");
-  if (node.empty()) {
-    o.notRunBecause = "Node.js (node) is not on PATH";
-    return o;
-  }
+  o.notRunBecause = webgpuClientMissing(needs);
+  if (!o.notRunBecause.empty()) return o;
+  const std::string node = nodeExecutable();
   const std::string dir = webgpuClientDir();
-  if (!fs::exists(fs::path(dir) / "node_modules" / needs)) {
-    o.notRunBecause = "the npm package " + needs + " is not installed in " + dir + " (run `npm ci` there)";
-    return o;
-  }
   std::error_code ec;
   fs::path tmp = fs::temp_directory_path(ec) / ("watergraph-" + checker + "-" + std::to_string(::getpid()) + ".wgsl");
   {
@@ -107,6 +101,16 @@ WgslCheckOutcome runCheckScript(const std::string& checker, const std::string& s
 std::string webgpuClientDir() {
   if (const char* env = std::getenv("WATERGRAPH_WEBGPU_CLIENT"); env && *env) return env;
   return WG_WEBGPU_CLIENT_DIR;
+}
+
+std::string nodeExecutable() { return onSearchPath("node"); }
+
+std::string webgpuClientMissing(const std::string& package) {
+  if (nodeExecutable().empty()) return "Node.js (node) is not on PATH";
+  const std::string dir = webgpuClientDir();
+  if (!fs::exists(fs::path(dir) / "node_modules" / package))
+    return "the npm package " + package + " is not installed in " + dir + " (run `npm ci` there)";
+  return "";
 }
 
 WgslCheckOutcome runNagaCheck(const std::string& wgsl) { return runCheckScript("naga", "naga_check.mjs", "naga-wasm", wgsl); }

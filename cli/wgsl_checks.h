@@ -1,7 +1,7 @@
 #pragma once
 // The checks of a WGSL module that run outside the compiler, in JavaScript: naga
 // (clients/webgpu/naga_check.mjs, npm naga-wasm) and Tint (clients/webgpu/tint_check.mjs,
-// Chromium's WebGPU). Each either ran, with the messages it gave, or did not run, with the
+// Chromium's WebGPU), and what `probe --target wgsl` needs to start its helper. Each either ran, with the messages it gave, or did not run, with the
 // reason (no Node.js, the client's npm packages not installed, no Chromium, no WebGPU
 // adapter): a check that did not run is never reported as passed.
 #include <string>
@@ -24,6 +24,12 @@ struct WgslCheckOutcome {
 // The folder holding the client's scripts and node_modules: $WATERGRAPH_WEBGPU_CLIENT, else the
 // source tree's clients/webgpu this binary was built from.
 std::string webgpuClientDir();
+
+// Node.js found on $PATH, or "".
+std::string nodeExecutable();
+// Why the client's scripts needing the npm package `package` cannot run (no Node.js, the
+// package not installed), or "" when they can (Chromium is the scripts' own question).
+std::string webgpuClientMissing(const std::string& package);
 
 // Runs the checker on `wgsl` (written to a temporary file that is removed afterwards).
 WgslCheckOutcome runNagaCheck(const std::string& wgsl);

@@ -59,7 +59,9 @@ class WgslAssembler {
       throw WgslRefused{"WGSL has no tessellation stages: the plan must draw the mesh as it is", -1};
     const PlannedStage* vert = plan_.stage(ShaderStage::Vertex);
     const PlannedStage* frag = plan_.stage(ShaderStage::Fragment);
-    if (!vert || !frag) throw WgslRefused{"WGSL needs a vertex and a fragment stage", -1};
+    // A probe plan has a fragment stage alone: the module brings the full-screen triangle.
+    const bool probe = plan_.kind == ShaderPlan::Kind::Probe;
+    if (!frag || (!vert && !probe)) throw WgslRefused{"WGSL needs a vertex and a fragment stage", -1};
     // A function node's file is GLSL the user wrote: translating it is not ours to guess.
     for (const PlannedStage& st : plan_.stages)
       if (!st.ownGlsl.empty())
@@ -70,9 +72,9 @@ class WgslAssembler {
     out_.add("");
     declareUniforms();
     declareTextures();
-    declareVertexOutput(*vert);
+    declareVertexOutput(vert);
     // The stages are translated before the library text is known; the functions go above them.
-    std::string vertexText = entryPoint(*vert, StageMode::Vertex);
+    std::string vertexText = probe ? probeVertexEntry() : entryPoint(*vert, StageMode::Vertex);
     std::string fragmentText = entryPoint(*frag, StageMode::Fragment);
     out_.addLines(translator_.functionsText());
     appendWithOps(vertexText, vertexOps_);
@@ -83,18 +85,13 @@ class WgslAssembler {
 
  private:
   void declareUniforms() {
-    size_t offset = 0;
-    for (const auto& u : plan_.uniforms) {
-      if (isSampler(u.type)) continue;
-      WgslUniformMember m = wgslUniformMember(offset, u.type);
-      m.name = u.name;
-      offset = m.offset + m.size;
-      out_.module.uniforms.push_back(m);
-      std::string read = std::string(kWgslUniformVariable) + "." + u.name;
-      translator_.declareGlobal(u.name, wgslValueTypeOf(u.type), u.type == Type::Bool ? "(" + read + " != 0u)" : read);
+    out_.module.uniforms = wgslUniformLayout(plan_.uniforms);
+    for (const auto& m : out_.module.uniforms) {
+      std::string read = std::string(kWgslUniformVariable) + "." + m.name;
+      translator_.declareGlobal(m.name, wgslValueTypeOf(m.type), m.type == Type::Bool ? "(" + read + " != 0u)" : read);
     }
     if (out_.module.uniforms.empty()) return;
-    out_.module.uniformBufferSize = wgslUniformBufferSize(offset);
+    out_.module.uniformBufferSize = wgslUniformBufferSize(out_.module.uniforms.back().offset + out_.module.uniforms.back().size);
     out_.add("struct WgUniforms {");
     for (const auto& m : out_.module.uniforms) {
       std::string type = m.type == Type::Bool ? "u32" : wgsl::wgslTypeName(wgslValueTypeOf(m.type));
@@ -123,7 +120,8 @@ class WgslAssembler {
 
   static std::string interpolation(const ValueType& t) { return t.base == 'f' ? "" : "@interpolate(flat) "; }
 
-  void declareVertexOutput(const PlannedStage& vert) {
+  // `vert` is null for a probe plan: its triangle passes nothing but the position.
+  void declareVertexOutput(const PlannedStage* vert) {
     out_.add("struct WgVertexOutput {");
     out_.add("  @builtin(position) " + std::string(kWgslPosition) + ": vec4<f32>,");
     // Locations in the order of the plan's varyings, as the manifest numbers them.
@@ -133,10 +131,31 @@ class WgslAssembler {
       out_.add("  @location(" + std::to_string(location) + ") " + interpolation(t) + v.name + ": " + wgsl::wgslTypeName(t) + ",");
       varyingLocation_[v.name] = location++;
     }
-    for (const auto& v : vert.outputs)
-      if (!varyingLocation_.count(v.name)) throw WgslRefused{"vertex output " + v.name + " is not a planned varying", -1};
+    if (vert)
+      for (const auto& v : vert->outputs)
+        if (!varyingLocation_.count(v.name)) throw WgslRefused{"vertex output " + v.name + " is not a planned varying", -1};
     out_.add("}");
     out_.add("");
+  }
+
+  // The probe's vertex stage: one triangle covering the viewport (the GL probe's
+  // full-screen triangle, y negated as every module here negates it), which the probe
+  // restricts to one pixel per case.
+  std::string probeVertexEntry() {
+    const std::string out = kWgslVertexOut, p = out + "." + kWgslPosition;
+    std::string text;
+    auto line = [&](const std::string& l) {
+      text += l + "\n";
+      vertexOps_.push_back(-1);
+    };
+    line("@vertex");
+    line("fn vs_main(@builtin(vertex_index) wg_vertex: u32) -> WgVertexOutput {");
+    line("  var " + out + ": WgVertexOutput;");
+    line("  let wg_corner = vec2<f32>(f32((wg_vertex & 1u) << 2u) - 1.0, f32((wg_vertex & 2u) << 1u) - 1.0);");
+    line("  " + p + " = vec4<f32>(wg_corner.x, -wg_corner.y, 0.5, 1.0);");
+    line("  return " + out + ";");
+    line("}");
+    return text;
   }
 
   // The entry point's text; its body lines' ops go to vertexOps_ / fragmentOps_.
@@ -282,6 +301,31 @@ WgslUniformMember wgslUniformMember(size_t offsetSoFar, Type type) {
   return m;
 }
 
+std::vector<WgslUniformMember> wgslUniformLayout(const std::vector<UniformInfo>& uniforms) {
+  std::vector<WgslUniformMember> members;
+  size_t offset = 0;
+  for (const auto& u : uniforms) {
+    if (isSampler(u.type)) continue;
+    WgslUniformMember m = wgslUniformMember(offset, u.type);
+    m.name = u.name;
+    offset = m.offset + m.size;
+    members.push_back(m);
+  }
+  return members;
+}
+
 WgslModule emitWgsl(const ShaderPlan& plan) { return WgslAssembler(plan).assemble(); }
+
+EmitResult emitWgslProbe(const Program& program, const std::string& sourceName) {
+  ShaderPlan plan = planProbe(program, sourceName);
+  WgslModule module = emitWgsl(plan);
+  EmitResult r;
+  r.shaders.push_back({ShaderStage::Fragment, std::move(module.text), std::move(module.lineOp)});
+  r.uniforms = plan.uniforms;
+  r.textures = plan.textures;
+  r.oceans = plan.oceans;
+  r.functions = plan.functions;
+  return r;
+}
 
 }  // namespace wg

@@ -13,10 +13,13 @@
 // gl_FragCoord, and a triangle's winding is mirrored: the pipeline's frontFace is "cw".
 // WGSL has no tessellation stages: the plan must be made without tessellation (the mesh is
 // drawn as it is, as es300 does).
+// A probe plan (planProbe: a fragment stage alone) gets a vs_main drawing one triangle over
+// the viewport, which `probe --target wgsl` restricts to a pixel per case.
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "codegen/emit_glsl.h"
 #include "codegen/shader_plan.h"
 
 namespace wg {
@@ -50,6 +53,13 @@ struct WgslRefused {
 };
 WgslModule emitWgsl(const ShaderPlan& plan);
 
+// `probe --target wgsl`: the probe plan of `program` (planProbe, as the GLSL probe's) as one
+// WGSL module, held as the one shader of an EmitResult (stage Fragment, both entry points in
+// its text) with the plan's interface, so the probe's mutation and runner take it as they
+// take a GLSL probe shader. The uniform buffer is laid out by wgslUniformLayout of
+// `uniforms`, texture k is at wgslTextureBinding(k). Throws WgslRefused.
+EmitResult emitWgslProbe(const Program& program, const std::string& sourceName);
+
 // The bind group layout, shared by the emitter and the manifest's "webgpu" section.
 inline constexpr const char* kWgslTargetName = "wgsl";      // the manifest's target name
 inline constexpr const char* kWgslUniformVariable = "wg_u";  // the uniform buffer's variable
@@ -60,6 +70,10 @@ inline constexpr int kWgslUniformBinding = 0;
 inline int wgslTextureBinding(size_t k) { return 1 + 2 * static_cast<int>(k); }
 // The buffer's size for members ending at `end` bytes: rounded up to 16.
 inline size_t wgslUniformBufferSize(size_t end) { return (end + 15) / 16 * 16; }
+
+// The uniform buffer's members for a plan's uniforms (samplers are bindings of their own),
+// in order: what the module declares and what a host writes.
+std::vector<WgslUniformMember> wgslUniformLayout(const std::vector<UniformInfo>& uniforms);
 
 // WGSL's uniform address space layout of one member after `offsetSoFar` bytes (WGSL section
 // 14.4: f32/i32/u32 align 4, vec2 8, vec3 and vec4 16, matCx3 and matCx4 columns 16).

@@ -26,7 +26,7 @@ bool sameNameGeneric(const std::string& n) {
   return isOneOfNames(n, {"abs",  "sign",  "floor", "ceil", "fract", "sqrt",  "exp",       "exp2",  "log",   "log2",
                    "sin",  "cos",   "tan",   "asin", "acos",  "sinh",  "cosh",      "tanh",  "pow",   "min",
                    "max",  "clamp", "mix",   "step", "smoothstep", "normalize", "reflect", "refract", "trunc",
-                   "fma",  "radians", "degrees", "faceforward", "fwidth", "round"});
+                   "fma",  "radians", "degrees", "fwidth", "round"});
 }
 
 // Functions whose scalar arguments GLSL widens to the vector beside them.
@@ -274,6 +274,7 @@ Printed ExpressionPrinter::builtin(const std::string& n, std::vector<Printed> ar
   if (n == "mix") return {"mix(" + list() + ")", first.size >= args[1].type.size ? first : args[1].type, "", ""};
   if (sameNameGeneric(n)) return {n + "(" + list() + ")", first, "", ""};
   if (n == "inversesqrt") return {"inverseSqrt(" + list() + ")", first, "", ""};
+  if (n == "faceforward") return {"faceForward(" + list() + ")", first, "", ""};
   if (n == "atan") return {(args.size() == 2 ? "atan2(" : "atan(") + list() + ")", first, "", ""};
   if (n == "roundEven") return {"round(" + list() + ")", first, "", ""};
   if (n == "dFdx" || n == "dFdy") {

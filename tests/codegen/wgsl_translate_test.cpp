@@ -29,6 +29,12 @@ TEST(WgslTranslate, ScalarsBesideVectorsAreSplattedWhereGlslWidensThem) {
   EXPECT_NE(w.find("max(v, vec3<f32>(2.0))"), std::string::npos) << w;
 }
 
+// Built-ins WGSL spells otherwise (Tint rejected `faceforward`, found by `probe --target wgsl`).
+TEST(WgslTranslate, BuiltinsWgslSpellsOtherwiseAreRenamed) {
+  std::string w = translatedItem("vec3 wg_t(vec3 n, vec3 i, float x) { return faceforward(n, i, n) * inversesqrt(x); }");
+  EXPECT_NE(w.find("faceForward(n, i, n) * inverseSqrt(x)"), std::string::npos) << w;
+}
+
 TEST(WgslTranslate, VectorEqualityIsReducedAndTernaryIsSelect) {
   std::string w = translatedItem("float wg_t(vec2 a, vec2 b) { return a == b ? 1.0 : 0.0; }");
   EXPECT_NE(w.find("select(0.0, 1.0, all(a == b))"), std::string::npos) << w;

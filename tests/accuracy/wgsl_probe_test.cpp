@@ -1,0 +1,172 @@
+// `probe --target wgsl`: the probe plan's WGSL module (codegen/emit_wgsl.h emitWgslProbe) run
+// in headless Chromium's WebGPU on SwiftShader by clients/webgpu/probe_server.mjs, each case
+// one pixel read back and held to the double reference within the same bounds as the GLSL
+// targets (accuracy/error_bound.h). One Chromium per test (its start takes seconds): nodes of
+// the hard-case suite and every example graph the probe can run, then a wrong constant in
+// the WGSL that must fail. Skipped, with the reason, without Node.js or Chromium; the paths
+// where the probe cannot run are tested apart and never pass.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <set>
+
+#include "accuracy/gpu_executor.h"
+#include "accuracy/hard_case_suite.h"
+#include "accuracy/probe.h"
+#include "core/graph_load.h"
+#include "runtime/runtime_error.h"
+#include "suite_file.h"
+#include "test_support.h"
+
+namespace wg::accuracy {
+namespace {
+
+// Node.js on $PATH, or "".
+std::string nodeForWgslProbe() {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  for (size_t start = 0; start <= dirs.size();) {
+    size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    std::filesystem::path candidate = std::filesystem::path(dirs.substr(start, end - start)) / "node";
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(candidate, ec)) return candidate.string();
+    start = end + 1;
+  }
+  return "";
+}
+
+WebgpuTools wgslProbeTools() { return {nodeForWgslProbe(), test::sourcePath("clients/webgpu")}; }
+
+class WgslProbe : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    if (nodeForWgslProbe().empty()) {
+      skip_ = "Node.js (node) is not on PATH";
+      return;
+    }
+    test::CmdResult r = test::runSplit(test::shellQuote(test::sourcePath("clients/three/test/npm_ci_cached.sh")) + " " +
+                                       test::shellQuote(test::sourcePath("clients/webgpu")));
+    npmError_ = r.exit == 0 ? "" : "installing clients/webgpu's npm packages failed: " + r.err;
+  }
+  void SetUp() override {
+    if (!skip_.empty()) GTEST_SKIP() << skip_;
+    ASSERT_TRUE(npmError_.empty()) << npmError_;
+  }
+  static void needChromium() {
+    if (!std::filesystem::exists("/usr/bin/chromium")) GTEST_SKIP() << "Debian's chromium is not installed (/usr/bin/chromium)";
+  }
+  static inline std::string skip_, npmError_;
+};
+
+// Nodes whose WGSL differs most from a line-for-line copy of their GLSL: mod becomes a
+// helper (WGSL's % truncates), the trochoid's ray march and ssr sample in loops
+// (textureSampleLevel), 2D and cube scene textures through unfilterable bindings, a node
+// texture uploaded as the runtime uploads it, integer hashing, the waves' uniforms of every
+// size, and a constant the mutation below edits.
+const std::vector<std::string> kWgslProbeNodes = {"fresnel", "gerstner_waves", "trochoid_wave", "ssr",
+                                                  "water_depth", "cubemap_reflection", "normal_map_scroll",
+                                                  "voronoi", "hash", "mod"};
+
+TEST_F(WgslProbe, NodesAndExampleGraphsAgreeWithTheDoubleReference) {
+  needChromium();
+  auto executor = makeWgslExecutor(wgslProbeTools());
+  EXPECT_EQ(executor->targetLabel(), "wgsl");
+  SuiteOptions options;
+  options.nodes = kWgslProbeNodes;
+  SuiteResult r = runHardCaseSuite(test_suite::loadSuite(), *executor, options);
+  for (const auto& e : r.errors) ADD_FAILURE() << e;
+  for (const auto& f : r.failureLines) ADD_FAILURE() << f;
+  EXPECT_EQ(r.nanInf, 0);
+  std::set<std::string> probed;
+  double worst = 0;
+  for (const auto& run : r.runs) {
+    probed.insert(run.node);
+    EXPECT_EQ(run.report.target, "wgsl");
+    for (const auto& c : run.report.cases) worst = std::max(worst, c.bound > 0 ? c.absError / c.bound : 0.0);
+  }
+  for (const auto& node : kWgslProbeNodes) EXPECT_TRUE(probed.count(node)) << node << " was not probed";
+  EXPECT_GT(r.caseRuns, 200);
+  std::printf("[ wgsl     ] %zu nodes: %d case runs, %d failures, %d NaN/Inf, worst error/bound %.3g (%s)\n", probed.size(),
+              r.caseRuns, r.failures, r.nanInf, worst, executor->deviceName().c_str());
+
+  // Every example graph with a WGSL form, at the whole-graph hard cases; the spectral ocean's
+  // maps come from the runtime's simulation, which this runner does not have: refused, named.
+  Diagnostics diags;
+  auto cases = loadProbeCases(test::sourcePath("tests/hardcases/graphs.json"), diags);
+  ASSERT_TRUE(cases);
+  int graphs = 0;
+  for (const auto& path : test::exampleGraphs()) {
+    if (test::holdsGlslFunction(path)) continue;
+    auto graph = loadGraphFile(path, diags);
+    ASSERT_TRUE(graph) << path;
+    std::optional<ProbeReport> report;
+    try {
+      report = probeGraph(*graph, {}, *cases, *executor, diags);
+    } catch (const rt::RuntimeError& e) {
+      EXPECT_NE(std::string(e.what()).find("spectral ocean"), std::string::npos) << path << ": " << e.what();
+      EXPECT_EQ(e.exitCode(), 1) << path;
+      continue;
+    }
+    ASSERT_TRUE(report) << path;
+    ++graphs;
+    double graphWorst = 0;
+    for (const auto& c : report->cases) {
+      EXPECT_TRUE(c.passed()) << path << " case " << c.name << ": " << c.failure();
+      graphWorst = std::max(graphWorst, c.bound > 0 ? c.absError / c.bound : 0.0);
+    }
+    std::printf("[ wgsl     ] %s: %zu cases, %d failed, worst error/bound %.3g\n", graph->file.c_str(), report->cases.size(),
+                report->failures(), graphWorst);
+  }
+  EXPECT_GE(graphs, 8);
+}
+
+// The mutation is made in the WGSL module itself: fresnel's water index 1.333 (the f32
+// literal as the translator prints it) off by 1e-4 is outside the node's bound at normal
+// incidence, where the reflectance is ((n - 1) / (n + 1))^2.
+TEST_F(WgslProbe, AWrongConstantInTheWgslFails) {
+  needChromium();
+  auto executor = makeWgslExecutor(wgslProbeTools());
+  SuiteOptions options;
+  options.nodes = {"fresnel"};
+  options.mutation = {"1.333", "1.3331"};
+  SuiteResult r = runHardCaseSuite(test_suite::loadSuite(), *executor, options);
+  EXPECT_GT(r.mutatedRuns, 0) << "1.333 is in none of fresnel's WGSL probe modules";
+  EXPECT_GT(r.failures, 0) << "a wrong refractive index passed the probe";
+}
+
+// Without what it needs the probe does not run, says why, and exits 2 as a missing GL context
+// does: never a pass.
+TEST_F(WgslProbe, SaysWhyItDidNotRun) {
+  const std::string probe = "probe --node fresnel --cases " + test::shellQuote(test::sourcePath("tests/hardcases/suite.json")) +
+                            " --target wgsl";
+  test::CmdResult noNode = test::runSplit("env PATH=/nonexistent " + test::shellQuote(test::watergraphBinary()) + " " + probe);
+  EXPECT_EQ(noNode.exit, 2) << noNode.out << noNode.err;
+  EXPECT_NE(noNode.err.find("did not run on wgsl: Node.js (node) is not on PATH"), std::string::npos) << noNode.err;
+  EXPECT_EQ(noNode.out.find("cases passed"), std::string::npos) << noNode.out;
+
+  const std::filesystem::path empty = std::filesystem::temp_directory_path() / "wg_wgsl_probe_no_client";
+  std::filesystem::create_directories(empty);
+  test::CmdResult noPackages =
+      test::runSplit("env WATERGRAPH_WEBGPU_CLIENT=" + test::shellQuote(empty.string()) + " " +
+                     test::shellQuote(test::watergraphBinary()) + " " + probe);
+  EXPECT_EQ(noPackages.exit, 2) << noPackages.out << noPackages.err;
+  EXPECT_NE(noPackages.err.find("the npm package playwright-core is not installed"), std::string::npos) << noPackages.err;
+  std::filesystem::remove_all(empty);
+
+  // No Chromium: the helper says so before any probe and the executor is not made.
+  WebgpuTools tools = wgslProbeTools();
+  tools.chromium = "/nonexistent/chromium";
+  try {
+    makeWgslExecutor(tools);
+    ADD_FAILURE() << "a WebGPU executor was made without Chromium";
+  } catch (const rt::RuntimeError& e) {
+    EXPECT_EQ(e.kind(), rt::RuntimeError::Kind::Environment);
+    EXPECT_NE(std::string(e.what()).find("no Chromium at /nonexistent/chromium"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace wg::accuracy
