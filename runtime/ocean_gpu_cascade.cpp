@@ -6,120 +6,13 @@
 #include <string>
 
 #include "runtime/ocean_gpu_passes.h"
+#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
 namespace {
 
 using namespace oceangpu;
-
-// Each bin's phase is the 32-bit product n tau (uint arithmetic wraps modulo 2^32, as the
-// reference's does); its top 24 bits become a float exactly, so the only rounding is the
-// product by 2 pi / 2^24 and the sine and cosine.
-constexpr const char* kEvolve = R"glsl(
-uniform highp sampler2D u_h0;
-uniform highp usampler2D u_frequency;
-uniform uint u_tau;
-uniform float u_dk;
-uniform int u_n;
-layout(location = 0) out vec4 o_a;
-#if WG_OCEAN_SLOPES && !WG_OCEAN_JACOBIAN_ONLY
-layout(location = 1) out vec4 o_b;
-#endif
-
-vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
-vec2 timesI(vec2 a) { return vec2(-a.y, a.x); }
-
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 h0 = texelFetch(u_h0, p, 0);  // h0(k) and conj(h0(-k))
-  uint turns = texelFetch(u_frequency, p, 0).r * u_tau;
-  float phase = float(turns >> 8u) * (6.283185307179586 / 16777216.0);
-  vec2 turn = vec2(cos(phase), sin(phase));
-  vec2 h = cmul(h0.xy, vec2(turn.x, -turn.y)) + cmul(h0.zw, turn);
-  ivec2 m = ivec2(p.x < u_n / 2 ? p.x : p.x - u_n, p.y < u_n / 2 ? p.y : p.y - u_n);
-  vec2 k = vec2(m) * u_dk;
-  float kl = length(k);
-  vec2 unit = kl > 0.0 ? k / kl : vec2(0.0);
-  vec2 ih = timesI(h);
-  vec2 dx = unit.x * ih, dz = unit.y * ih;          // i k/|k| h
-  vec2 sx = k.x * ih, sz = k.y * ih;                // i k h
-  vec2 dxx = -k.x * unit.x * h, dzz = -k.y * unit.y * h, dxz = -k.x * unit.y * h;
-#if WG_OCEAN_JACOBIAN_ONLY
-  // The second texture alone, in the first output: the fields the foam's J needs.
-  o_a = vec4(sz + timesI(dxx), dzz + timesI(dxz));
-#else
-  o_a = vec4(h + timesI(dx), dz + timesI(sx));
-#if WG_OCEAN_SLOPES
-  o_b = vec4(sz + timesI(dxx), dzz + timesI(dxz));
-#endif
-#endif
-}
-)glsl";
-
-// One radix-2 Stockham stage of the inverse DFT (sum of x_k exp(+2 pi i k j / N)) along x
-// or z, for sub-transforms of length Ns: output i takes inputs j and j + N/2 with
-// j = (i / 2Ns) Ns + i mod Ns, and the twiddle exp(2 pi i (i mod Ns) / 2Ns), negated for
-// the second half of each block. After log2 N stages the result is in natural order.
-constexpr const char* kStockham = R"glsl(
-uniform highp sampler2D u_a;
-uniform highp sampler2D u_twiddle;
-uniform int u_ns;
-uniform int u_n;
-uniform int u_vertical;
-layout(location = 0) out vec4 o_a;
-#if WG_OCEAN_SLOPES
-uniform highp sampler2D u_b;
-layout(location = 1) out vec4 o_b;
-#endif
-
-vec2 cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
-
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  int i = u_vertical == 1 ? p.y : p.x;
-  int r = i % u_ns;
-  int j = (i / (2 * u_ns)) * u_ns + r;
-  ivec2 first = u_vertical == 1 ? ivec2(p.x, j) : ivec2(j, p.y);
-  ivec2 second = u_vertical == 1 ? ivec2(p.x, j + u_n / 2) : ivec2(j + u_n / 2, p.y);
-  vec2 w = texelFetch(u_twiddle, ivec2(r * (u_n / (2 * u_ns)), 0), 0).xy;
-  if ((i / u_ns) % 2 == 1) w = -w;
-  vec4 a0 = texelFetch(u_a, first, 0), a1 = texelFetch(u_a, second, 0);
-  o_a = vec4(a0.xy + cmul(w, a1.xy), a0.zw + cmul(w, a1.zw));
-#if WG_OCEAN_SLOPES
-  vec4 b0 = texelFetch(u_b, first, 0), b1 = texelFetch(u_b, second, 0);
-  o_b = vec4(b0.xy + cmul(w, b1.xy), b0.zw + cmul(w, b1.zw));
-#endif
-}
-)glsl";
-
-constexpr const char* kPack = R"glsl(
-uniform highp sampler2D u_a;
-uniform float u_lambda;
-layout(location = 0) out vec4 o_displacement;
-#if WG_OCEAN_SLOPES
-uniform highp sampler2D u_b;
-layout(location = 1) out vec4 o_slopes;
-#endif
-
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 a = texelFetch(u_a, p, 0);
-  float h = a.x, dx = a.y, dz = a.z;
-#if WG_OCEAN_SLOPES
-  vec4 b = texelFetch(u_b, p, 0);
-  float sx = a.w, sz = b.x, dxx = b.y, dzz = b.z, dxz = b.w;
-  // The derivatives of the displacement, not J: J of several cascades is J of their sums,
-  // which a sum of per-cascade Js is not.
-  o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, u_lambda * dxz);
-  o_slopes = vec4(sx, sz, u_lambda * dxx, u_lambda * dzz);
-#else
-  // Nothing reads the slopes, so nothing reads w either (wg_ocean_normal and
-  // wg_ocean_jacobian take both maps).
-  o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, 0.0);
-#endif
-}
-)glsl";
 
 }  // namespace
 
@@ -161,18 +54,15 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
 
-  auto link = [&](const char* name, const char* body, bool slopes, bool jacobianOnly = false) {
-    return linkPass(api, name,
-                    std::string("#define WG_OCEAN_SLOPES ") + (slopes ? "1" : "0") + "\n#define WG_OCEAN_JACOBIAN_ONLY " +
-                        (jacobianOnly ? "1" : "0") + "\n",
-                    body);
+  auto link = [&](const char* name, OceanPass pass, bool slopes, bool jacobianOnly = false) {
+    return linkPass(api, name, oceanPassFragment(pass, api, {slopes, jacobianOnly}));
   };
-  evolve_ = link("ocean_evolve", kEvolve, slopes_);
-  stockham_ = link("ocean_stockham", kStockham, slopes_);
-  pack_ = link("ocean_pack", kPack, slopes_);
+  evolve_ = link("ocean_evolve", OceanPass::Evolve, slopes_);
+  stockham_ = link("ocean_stockham", OceanPass::Stockham, slopes_);
+  pack_ = link("ocean_pack", OceanPass::Pack, slopes_);
   if (jacobian) {
-    evolveJacobian_ = link("ocean_evolve_jacobian", kEvolve, false, true);
-    stockhamSingle_ = slopes_ ? link("ocean_stockham_single", kStockham, false) : Program();
+    evolveJacobian_ = link("ocean_evolve_jacobian", OceanPass::Evolve, false, true);
+    stockhamSingle_ = slopes_ ? link("ocean_stockham_single", OceanPass::Stockham, false) : Program();
     for (int s = 0; s < 2; ++s) jacobianTargets_[s] = targetOf(spectra_[s][0], nullptr, "spectrum");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }

@@ -4,47 +4,13 @@
 #include <cmath>
 
 #include "runtime/ocean_gpu_passes.h"
+#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
 namespace {
 
 using namespace oceangpu;
-
-// f_(m+1) = min(1, f_m keep + gain max(0, threshold - J)), J from the transformed fields
-// (dh/dz, dDx/dx, dDz/dz, dDx/dz) as the pack pass forms it.
-constexpr const char* kFoamStep = R"glsl(
-uniform highp sampler2D u_fields;
-uniform highp sampler2D u_previous;
-uniform float u_lambda;
-uniform float u_keep;
-uniform float u_gain;
-uniform float u_threshold;
-layout(location = 0) out vec4 o_foam;
-
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  vec4 b = texelFetch(u_fields, p, 0);
-  float lxx = u_lambda * b.y, lzz = u_lambda * b.z, lxz = u_lambda * b.w;
-  float j = (1.0 + lxx) * (1.0 + lzz) - lxz * lxz;
-  float f = texelFetch(u_previous, p, 0).r * u_keep + u_gain * max(u_threshold - j, 0.0);
-  o_foam = vec4(min(f, 1.0), 0.0, 0.0, 1.0);
-}
-)glsl";
-
-// The foam at the frame's time: f_n + (f_(n+1) - f_n) fraction at each texel.
-constexpr const char* kFoamBlend = R"glsl(
-uniform highp sampler2D u_current;
-uniform highp sampler2D u_next;
-uniform float u_fraction;
-layout(location = 0) out vec4 o_foam;
-
-void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  float a = texelFetch(u_current, p, 0).r, b = texelFetch(u_next, p, 0).r;
-  o_foam = vec4(a + (b - a) * u_fraction, 0.0, 0.0, 1.0);
-}
-)glsl";
 
 }  // namespace
 
@@ -58,8 +24,8 @@ OceanGpuFoam::OceanGpuFoam(int resolution, const ocean::FoamSettings& settings, 
   outputTarget_ = targetOf(output_, nullptr, "foam");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
-  step_ = linkPass(api, "ocean_foam_step", "", kFoamStep);
-  blend_ = linkPass(api, "ocean_foam_blend", "", kFoamBlend);
+  step_ = linkPass(api, "ocean_foam_step", oceanPassFragment(OceanPass::FoamStep, api));
+  blend_ = linkPass(api, "ocean_foam_blend", oceanPassFragment(OceanPass::FoamBlend, api));
   checkGl("creating the ocean's foam");
 }
 

@@ -16,8 +16,8 @@ Texture floatTexture(int width, int height, GLenum format);
 Framebuffer targetOf(const Texture& first, const Texture* second, const char* what);
 GLint location(const Program& p, const char* name);
 void bindTexture(int unit, const Texture& t);
-// A full-screen pass's program: the scene's full-screen vertex shader and `body` after the
-// API's header and `defines`.
-Program linkPass(SceneShaderApi api, const std::string& name, const std::string& defines, const char* body);
+// A full-screen pass's program: the scene's full-screen vertex shader and `fragment`
+// (oceanPassFragment, runtime/ocean_gpu_shaders.h).
+Program linkPass(SceneShaderApi api, const std::string& name, const std::string& fragment);
 
 }  // namespace wg::rt::oceangpu
