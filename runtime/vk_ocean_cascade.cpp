@@ -6,8 +6,11 @@
 #include <stdexcept>
 
 namespace wg::rt {
+namespace {
 
 using oceangpu::OceanPass;
+
+}  // namespace
 
 VkOceanCascade::VkOceanCascade(VkOceanPasses& passes, const ocean::OceanCascade& cascade, bool slopes, bool jacobian)
     : context_(passes.context()), n_(cascade.resolution), slopes_(slopes), tileLength_(cascade.tileLength) {

@@ -49,7 +49,8 @@ VkOceanPass::VkOceanPass(VkContext& context, oceangpu::OceanPass pass, const oce
   constants_ = oceangpu::oceanPassConstants(pass).size();
   const std::vector<VkFormat> outputs = oceanPassOutputs(pass, variant);
   outputs_ = outputs.size();
-  const std::vector<ShaderSource> sources = {
+  // wg::ShaderSource (glslang's input), not the GL runtime's rt::ShaderSource.
+  const std::vector<wg::ShaderSource> sources = {
       {ShaderStage::Vertex, "runtime fullscreen.vert", sceneShaderSources(SceneShaderApi::Vulkan450).fullscreenVertex},
       {ShaderStage::Fragment, "runtime " + name_ + ".frag",
        oceangpu::oceanPassFragment(pass, SceneShaderApi::Vulkan450, variant)}};
