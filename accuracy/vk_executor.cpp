@@ -10,6 +10,7 @@
 #include "runtime/runtime_error.h"
 #include "runtime/preview.h"
 #include "runtime/vk_preview.h"
+#include "runtime/vk_ocean_simulation.h"
 #include "runtime/vk_renderer.h"
 
 namespace wg::accuracy {
@@ -60,13 +61,20 @@ class VkExecutor : public GpuExecutor {
     if (tessellated && !tessellation_)
       throw rt::RuntimeError(rt::RuntimeError::Kind::Environment,
                              "the water is tessellated and this Vulkan executor was made without tessellation shaders");
-    return std::make_unique<RendererFrames<rt::VkRenderer>>(*context_, result.manifest, std::move(modules), settings,
-                                                            rt::textureOrigins(result));
+    // Frames of the same oceans share one simulation, as on GL (gl_executor.cpp).
+    std::shared_ptr<rt::VkOceanSimulation> oceans = oceans_.lock();
+    if (oceans && oceans->identity() != rt::VkOceanSimulation::identity(result.manifest.oceans, result.manifest.textures))
+      oceans.reset();
+    auto frames = std::make_unique<RendererFrames<rt::VkRenderer>>(*context_, result.manifest, std::move(modules), settings,
+                                                                   rt::textureOrigins(result), oceans);
+    oceans_ = frames->renderer().oceanSimulation();
+    return frames;
   }
 
  private:
   bool tessellation_;
   std::unique_ptr<rt::VkContext> context_;
+  std::weak_ptr<rt::VkOceanSimulation> oceans_;  // the last frames' oceans, while any frames hold them
 };
 
 }  // namespace

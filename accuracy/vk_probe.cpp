@@ -1,12 +1,16 @@
 #include "accuracy/vk_probe.h"
 
 #include <cstring>
+#include <memory>
+#include <optional>
 
 #include "accuracy/probe_gpu.h"
 #include "codegen/glslang_validate.h"
 #include "codegen/shader_interface.h"
 #include "codegen/uniform_block_layout.h"
 #include "runtime/runtime_error.h"
+#include "core/ocean_fft_reference.h"
+#include "runtime/vk_ocean_simulation.h"
 #include "runtime/vk_pipelines.h"
 #include "runtime/vk_resources.h"
 #include "runtime/vk_shader_inputs.h"
@@ -96,13 +100,18 @@ std::vector<std::array<float, 4>> drawCases(rt::VkContext& context, const EmitRe
   std::vector<VkDescriptorSetLayoutBinding> bindings;
   std::vector<VkDescriptorImageInfo> images;
   size_t texelsPerCase = 0;
+  // The ocean maps come from the Vulkan simulation, recorded at each case's time as GL's
+  // probe updates its own (probe_gpu.cpp).
+  std::unique_ptr<rt::VkOceanSimulation> oceans;
+  if (!shader.oceans.empty()) oceans = std::make_unique<rt::VkOceanSimulation>(context, shader.oceans, shader.textures);
   for (const TextureInfo& t : shader.textures) {
-    if (t.ocean)
-      throw RuntimeError(RuntimeError::Kind::Manifest,
-                         what + ": the Vulkan probe cannot run the ocean simulation yet; probe it with --target glsl330 or es300");
     VkDescriptorImageInfo info{};
     info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    if (t.scene) {
+    if (t.ocean) {
+      if (!oceans) throw RuntimeError(RuntimeError::Kind::Manifest, what + ": an ocean map without an ocean");
+      info.imageView = oceans->map(*t.ocean).view();
+      info.sampler = nearest.get();
+    } else if (t.scene) {
       const bool cube = t.type == Type::SamplerCube;
       rt::VkImageSpec spec;
       spec.format = kTargetFormat;
@@ -222,7 +231,13 @@ std::vector<std::array<float, 4>> drawCases(rt::VkContext& context, const EmitRe
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.get());
       rendering = cleared = true;
     };
+    std::optional<std::uint32_t> oceanTime;  // the loop fraction the maps hold
     for (size_t i = 0; i < cases.size(); ++i) {
+      if (oceans && oceanTime != ocean::loopFraction(cases[i].env.time[0])) {
+        if (rendering) vkCmdEndRendering(cmd), rendering = false;
+        oceans->record(cmd, cases[i].env.time[0]);
+        oceanTime = ocean::loopFraction(cases[i].env.time[0]);
+      }
       if (!sceneTextures.empty()) {
         // The case's texels: copies happen outside rendering, after the last draw read the images.
         if (rendering) vkCmdEndRendering(cmd), rendering = false;

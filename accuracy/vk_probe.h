@@ -7,7 +7,9 @@
 // offsets (codegen/uniform_block_layout.h) in its own copy of the WgUniforms block (set 0,
 // binding 0, bound at a dynamic offset per case), every sampler at its vk450 binding. Scene
 // textures are 1x1 RGBA32F images (six layers for a cube) refilled with the case's texel
-// before its draw; node textures are loaded as the Vulkan renderer loads them.
+// before its draw; node textures are loaded as the Vulkan renderer loads them; ocean maps
+// are the Vulkan runtime's simulation (runtime/vk_ocean_simulation.h), recorded before
+// the first case of each time.
 #include <array>
 #include <string>
 #include <vector>

@@ -7,8 +7,11 @@
 // round. Reported per level: the median frame time (CPU wall time around the frame and its
 // glFinish, llvmpipe), the median simulation time, and the median over rounds of each
 // round's simulation / frame ratio (paired: the frame includes one simulation update).
+// With --target vk450 the same on Vulkan (lavapipe): the VkRenderer's frames, and the
+// Vulkan simulation (runtime/vk_ocean_simulation.h) recorded into a command buffer of its
+// own, submitted and waited for.
 //
-//   build/bin/wg_bench_ocean [--rounds N] [--size WxH] [--fft-sizes 64,128,256] [graph]
+//   build/bin/wg_bench_ocean [--rounds N] [--size WxH] [--fft-sizes 64,128,256] [--target glsl330|vk450] [graph]
 //
 // Defaults: 9 rounds, 1280x720, fft_size 64, 128 and 256, graphs/open_ocean.json.
 #include <algorithm>
@@ -16,6 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -32,12 +36,17 @@
 #include "runtime/ocean_simulation.h"
 #include "runtime/preview.h"
 #include "runtime/renderer.h"
+#include "runtime/vk_context.h"
+#include "runtime/vk_ocean_simulation.h"
+#include "runtime/vk_preview.h"
+#include "runtime/vk_renderer.h"
 
 namespace {
 
 [[noreturn]] void usage(const char* why) {
   std::fprintf(stderr,
-               "wg_bench_ocean: %s\nusage: wg_bench_ocean [--rounds N] [--size WxH] [--fft-sizes 64,128,256] [graph]\n",
+               "wg_bench_ocean: %s\nusage: wg_bench_ocean [--rounds N] [--size WxH] [--fft-sizes 64,128,256] "
+               "[--target glsl330|vk450] [graph]\n",
                why);
   std::exit(2);
 }
@@ -55,6 +64,56 @@ wg::Graph withFftSize(wg::Graph graph, int n) {
   return graph;
 }
 
+using FrameFunction = std::function<double()>;            // renders a frame, returns its ms
+using UpdateFunction = std::function<void(double)>;        // a simulation update to t, waited for
+using StepsFunction = std::function<int()>;                // the foam steps the last update ran
+
+// The rounds, the table's row and the foam's line for one fft_size (file comment).
+void measure(int rounds, int n, size_t cascades, const nlohmann::json& oceanOptions, const FrameFunction& frame,
+             const UpdateFunction& update, const StepsFunction& lastFoamSteps) {
+  frame();  // warm-up: llvmpipe and lavapipe compile at the first draw
+  double time = 3.5;
+  update(time);
+  std::vector<double> frameMs, simulationMs, ratio;
+  for (int r = 0; r < rounds; ++r) {
+    double frameTime = 0, updateTime = 0;
+    for (int k = 0; k < 2; ++k) {
+      if ((k + r) % 2 == 0) {
+        frameTime = frame();
+      } else {
+        time += 1.0 / 60.0;
+        auto start = std::chrono::steady_clock::now();
+        update(time);
+        updateTime = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      }
+    }
+    frameMs.push_back(frameTime);
+    simulationMs.push_back(updateTime);
+    ratio.push_back(updateTime / frameTime);
+  }
+  std::printf("| %d | %zu | %.1f | %.1f | %.3f |\n", n, cascades, wg::rt::median(frameMs), wg::rt::median(simulationMs),
+              wg::rt::median(ratio));
+  // The persistent foam: the rounds above step it at most once (a step every foam_step
+  // seconds of 1/60 s frames), so its cost is measured apart: a still frame's replay (the
+  // first frame, or one after a jump in time), and from it one step's cost.
+  time += 1000;
+  auto start = std::chrono::steady_clock::now();
+  update(time);
+  const double replayMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  const int steps = lastFoamSteps();
+  if (steps > 0) {
+    const double stepMs = (replayMs - wg::rt::median(simulationMs)) / steps;
+    // Per 60 fps frame each foam cascade steps (1/60) / foam_step times on average.
+    wg::ocean::FoamSettings foam;
+    foam.step = oceanOptions.value("foam_step", foam.step);
+    foam.decay = oceanOptions.value("foam_decay", foam.decay);
+    const int foamCascades = steps / (wg::ocean::historySteps(foam) + 1);
+    std::printf("|   | foam: a still frame's replay %d steps %.1f ms; a step %.2f ms; an animation at 60 fps %.2f ms a frame |\n",
+                steps, replayMs, stepMs, stepMs * foamCascades * (1.0 / 60.0) / foam.step);
+  }
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -62,6 +121,7 @@ int main(int argc, char** argv) {
   int rounds = 9, width = 1280, height = 720;
   std::vector<int> sizes = {64, 128, 256};
   std::string path = std::string(WG_SOURCE_DIR) + "/graphs/open_ocean.json";
+  bool vulkan = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto next = [&]() -> std::string {
@@ -76,6 +136,10 @@ int main(int argc, char** argv) {
       sizes.clear();
       std::stringstream list(next());
       for (std::string item; std::getline(list, item, ',');) sizes.push_back(std::atoi(item.c_str()));
+    } else if (a == "--target") {
+      const std::string t = next();
+      if (t != "glsl330" && t != "vk450") usage("--target is glsl330 or vk450");
+      vulkan = t == "vk450";
     } else if (!a.empty() && a[0] == '-') {
       usage(("unknown option " + a).c_str());
     } else {
@@ -84,9 +148,15 @@ int main(int argc, char** argv) {
   }
 
   try {
-    auto context = rt::EglContext::create(rt::GlApi::DesktopGl45);
-    std::printf("%s, %dx%d, camera above, %d rounds, glsl330 on %s\n\n", path.c_str(), width, height, rounds,
-                context->renderer().c_str());
+    // One context for every level: EGL for glsl330, a Vulkan device (no validation) for vk450.
+    std::unique_ptr<rt::EglContext> context;
+    std::unique_ptr<rt::VkContext> vkContext;
+    if (vulkan)
+      vkContext = rt::VkContext::create({});
+    else
+      context = rt::EglContext::create(rt::GlApi::DesktopGl45);
+    std::printf("%s, %dx%d, camera above, %d rounds, %s on %s\n\n", path.c_str(), width, height, rounds,
+                vulkan ? "vk450" : "glsl330", vulkan ? vkContext->deviceName().c_str() : context->renderer().c_str());
     std::printf("| fft_size | cascades | frame ms | simulation ms | simulation / frame |\n|---|---|---|---|---|\n");
     Diagnostics loadDiags;
     auto original = loadGraphFile(path, loadDiags);
@@ -98,7 +168,7 @@ int main(int argc, char** argv) {
       Diagnostics diags;
       std::optional<Graph> graph = withFftSize(*original, n);
       CompileOptions options;
-      options.targets = {Target::Glsl330};
+      options.targets = {vulkan ? Target::Vk450 : Target::Glsl330};
       std::optional<CompileResult> result;
       if (graph) result = compileGraph(*graph, defaultRegistry(), options, diags);
       if (!result || result->manifest.oceans.empty()) {
@@ -107,58 +177,30 @@ int main(int argc, char** argv) {
       }
       rt::RenderSettings s;
       s.width = width, s.height = height;
+      size_t cascades = 0;
+      for (const auto& o : result->manifest.oceans) cascades += o.options.value("tile_lengths", nlohmann::json::array()).size();
+      const nlohmann::json& oceanOptions = result->manifest.oceans.front().options;
+      if (vulkan) {
+        rt::VkRenderer renderer(*vkContext, result->manifest, rt::waterSpirv(*result), s, rt::textureOrigins(*result));
+        rt::VkOceanSimulation simulation(*vkContext, result->manifest.oceans, result->manifest.textures);
+        simulation.setFoamHistory(rt::FoamHistory::Continue);  // frames follow one another, as in an animation
+        measure(
+            rounds, n, cascades, oceanOptions, [&] { return renderer.renderFrame(); },
+            [&](double t) { vkContext->submit([&](VkCommandBuffer cmd) { simulation.record(cmd, t); }); },
+            [&] { return simulation.lastFoamSteps(); });
+        continue;
+      }
       rt::Renderer renderer(result->manifest, rt::waterShaderSources(*result, Target::Glsl330), s, false,
                             rt::textureOrigins(*result));
       rt::OceanSimulation simulation(result->manifest.oceans, result->manifest.textures, rt::SceneShaderApi::Gl330);
       simulation.setFoamHistory(rt::FoamHistory::Continue);  // frames follow one another, as in an animation
-      renderer.renderFrame();  // warm-up: llvmpipe compiles at the first draw
-      double time = 3.5;
-      simulation.update(time);
-      glFinish();
-      std::vector<double> frameMs, simulationMs, ratio;
-      for (int r = 0; r < rounds; ++r) {
-        double frame = 0, update = 0;
-        for (int k = 0; k < 2; ++k) {
-          if ((k + r) % 2 == 0) {
-            frame = renderer.renderFrame();
-          } else {
-            time += 1.0 / 60.0;
-            auto start = std::chrono::steady_clock::now();
-            simulation.update(time);
+      measure(
+          rounds, n, cascades, oceanOptions, [&] { return renderer.renderFrame(); },
+          [&](double t) {
+            simulation.update(t);
             glFinish();
-            update = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-          }
-        }
-        frameMs.push_back(frame);
-        simulationMs.push_back(update);
-        ratio.push_back(update / frame);
-      }
-      size_t cascades = 0;
-      for (const auto& o : result->manifest.oceans) cascades += o.options.value("tile_lengths", nlohmann::json::array()).size();
-      std::printf("| %d | %zu | %.1f | %.1f | %.3f |\n", n, cascades, rt::median(frameMs), rt::median(simulationMs),
-                  rt::median(ratio));
-      // The persistent foam: the rounds above step it at most once (a step every
-      // foam_step seconds of 1/60 s frames), so its cost is measured apart: a still frame's
-      // replay (the first frame, or one after a jump in time), and from it one step's cost.
-      time += 1000;
-      auto start = std::chrono::steady_clock::now();
-      simulation.update(time);
-      glFinish();
-      const double replayMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-      const int steps = simulation.lastFoamSteps();
-      if (steps > 0) {
-        const double stepMs = (replayMs - rt::median(simulationMs)) / steps;
-        // Per 60 fps frame each foam cascade steps (1/60) / foam_step times on average.
-        const nlohmann::json& options = result->manifest.oceans.front().options;
-        ocean::FoamSettings foam;
-        foam.step = options.value("foam_step", foam.step);
-        foam.decay = options.value("foam_decay", foam.decay);
-        const int foamCascades = steps / (ocean::historySteps(foam) + 1);
-        const double stepSeconds = foam.step;
-        std::printf("|   | foam: a still frame's replay %d steps %.1f ms; a step %.2f ms; an animation at 60 fps %.2f ms a frame |\n",
-                    steps, replayMs, stepMs, stepMs * foamCascades * (1.0 / 60.0) / stepSeconds);
-      }
-      std::fflush(stdout);
+          },
+          [&] { return simulation.lastFoamSteps(); });
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "wg_bench_ocean: %s\n", e.what());

@@ -147,13 +147,6 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         exit = std::max(exit, exitCodeFor(diags));
         continue;
       }
-      if (auto pass = target == Target::Vk450 ? rt::passVulkanDoesNotRun(result->manifest.passes) : std::nullopt;
-          pass && args.target == "all") {
-        // Asked for every target, a graph the Vulkan runtime cannot run yet is reported, not
-        // failed; asked for vk450 alone, it is the error the runtime gives.
-        std::cout << "check " << path << " on vk450: not run: " << rt::vulkanCannotRun(*pass) << "\n";
-        continue;
-      }
       try {
         accuracy::CheckOptions graphOptions = options;
         std::string unreferenced = accuracy::nodeWithoutReference(result->program);

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "runtime/ocean_gpu_passes.h"
+#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
@@ -53,13 +54,15 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
 
-  using S = OceanPassShader;
-  evolve_ = linkPass(api, slopes_ ? S::Evolve : S::EvolveDisplacement);
-  stockham_ = linkPass(api, slopes_ ? S::Stockham : S::StockhamSingle);
-  pack_ = linkPass(api, slopes_ ? S::Pack : S::PackDisplacement);
+  auto link = [&](const char* name, OceanPass pass, bool slopes, bool jacobianOnly = false) {
+    return linkPass(api, name, oceanPassFragment(pass, api, {slopes, jacobianOnly}));
+  };
+  evolve_ = link("ocean_evolve", OceanPass::Evolve, slopes_);
+  stockham_ = link("ocean_stockham", OceanPass::Stockham, slopes_);
+  pack_ = link("ocean_pack", OceanPass::Pack, slopes_);
   if (jacobian) {
-    evolveJacobian_ = linkPass(api, S::EvolveJacobian);
-    stockhamSingle_ = slopes_ ? linkPass(api, S::StockhamSingle) : Program();
+    evolveJacobian_ = link("ocean_evolve_jacobian", OceanPass::Evolve, false, true);
+    stockhamSingle_ = slopes_ ? link("ocean_stockham_single", OceanPass::Stockham, false) : Program();
     for (int s = 0; s < 2; ++s) jacobianTargets_[s] = targetOf(spectra_[s][0], nullptr, "spectrum");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }

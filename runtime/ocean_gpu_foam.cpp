@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "runtime/ocean_gpu_passes.h"
+#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/runtime_error.h"
 
 namespace wg::rt {
@@ -23,8 +24,8 @@ OceanGpuFoam::OceanGpuFoam(int resolution, const ocean::FoamSettings& settings, 
   outputTarget_ = targetOf(output_, nullptr, "foam");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
-  step_ = linkPass(api, OceanPassShader::FoamStep);
-  blend_ = linkPass(api, OceanPassShader::FoamBlend);
+  step_ = linkPass(api, "ocean_foam_step", oceanPassFragment(OceanPass::FoamStep, api));
+  blend_ = linkPass(api, "ocean_foam_blend", oceanPassFragment(OceanPass::FoamBlend, api));
   checkGl("creating the ocean's foam");
 }
 

@@ -35,10 +35,9 @@ void bindTexture(int unit, const Texture& t) {
   glBindTexture(GL_TEXTURE_2D, t.id());
 }
 
-Program linkPass(SceneShaderApi api, OceanPassShader shader) {
-  const std::string name = oceanPassShaderName(shader);
+Program linkPass(SceneShaderApi api, const std::string& name, const std::string& fragment) {
   return linkProgram({{GL_VERTEX_SHADER, "fullscreen.vert", sceneShaderSources(api).fullscreenVertex},
-                      {GL_FRAGMENT_SHADER, name + ".frag", oceanPassFragment(api, shader)}},
+                      {GL_FRAGMENT_SHADER, name + ".frag", fragment}},
                      "the ocean's " + name + " pass");
 }
 

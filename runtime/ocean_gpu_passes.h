@@ -5,7 +5,6 @@
 #include <string>
 
 #include "runtime/gl_resources.h"
-#include "runtime/ocean_gpu_shaders.h"
 #include "runtime/scene.h"
 
 namespace wg::rt::oceangpu {
@@ -17,7 +16,8 @@ Texture floatTexture(int width, int height, GLenum format);
 Framebuffer targetOf(const Texture& first, const Texture* second, const char* what);
 GLint location(const Program& p, const char* name);
 void bindTexture(int unit, const Texture& t);
-// A full-screen pass's program: the scene's full-screen vertex shader and `shader`'s text.
-Program linkPass(SceneShaderApi api, OceanPassShader shader);
+// A full-screen pass's program: the scene's full-screen vertex shader and `fragment`
+// (oceanPassFragment, runtime/ocean_gpu_shaders.h).
+Program linkPass(SceneShaderApi api, const std::string& name, const std::string& fragment);
 
 }  // namespace wg::rt::oceangpu

@@ -1,22 +1,15 @@
-// The spectral ocean simulation's fragment shaders (runtime/ocean_gpu_shaders.h).
+// The spectral ocean's GPU passes as GLSL for both runtimes (runtime/ocean_gpu_shaders.h).
 #include "runtime/ocean_gpu_shaders.h"
 
 #include <stdexcept>
 
-namespace wg::rt {
+namespace wg::rt::oceangpu {
 namespace {
 
-// Each map's fields (core/ocean_settings.h): texture A holds (h + i Dx, Dz + i dh/dx), B holds
-// (dh/dz + i dDx/dx, dDz/dz + i dDx/dz); WG_OCEAN_SLOPES says whether B exists.
 // Each bin's phase is the 32-bit product n tau (uint arithmetic wraps modulo 2^32, as the
 // reference's does); its top 24 bits become a float exactly, so the only rounding is the
 // product by 2 pi / 2^24 and the sine and cosine.
-constexpr const char* kEvolve = R"glsl(
-uniform highp sampler2D u_h0;
-uniform highp usampler2D u_frequency;
-uniform uint u_tau;
-uniform float u_dk;
-uniform int u_n;
+constexpr const char* kEvolveBody = R"glsl(
 layout(location = 0) out vec4 o_a;
 #if WG_OCEAN_SLOPES && !WG_OCEAN_JACOBIAN_ONLY
 layout(location = 1) out vec4 o_b;
@@ -56,15 +49,9 @@ void main() {
 // or z, for sub-transforms of length Ns: output i takes inputs j and j + N/2 with
 // j = (i / 2Ns) Ns + i mod Ns, and the twiddle exp(2 pi i (i mod Ns) / 2Ns), negated for
 // the second half of each block. After log2 N stages the result is in natural order.
-constexpr const char* kStockham = R"glsl(
-uniform highp sampler2D u_a;
-uniform highp sampler2D u_twiddle;
-uniform int u_ns;
-uniform int u_n;
-uniform int u_vertical;
+constexpr const char* kStockhamBody = R"glsl(
 layout(location = 0) out vec4 o_a;
 #if WG_OCEAN_SLOPES
-uniform highp sampler2D u_b;
 layout(location = 1) out vec4 o_b;
 #endif
 
@@ -88,12 +75,9 @@ void main() {
 }
 )glsl";
 
-constexpr const char* kPack = R"glsl(
-uniform highp sampler2D u_a;
-uniform float u_lambda;
+constexpr const char* kPackBody = R"glsl(
 layout(location = 0) out vec4 o_displacement;
 #if WG_OCEAN_SLOPES
-uniform highp sampler2D u_b;
 layout(location = 1) out vec4 o_slopes;
 #endif
 
@@ -118,13 +102,7 @@ void main() {
 
 // f_(m+1) = min(1, f_m keep + gain max(0, threshold - J)), J from the transformed fields
 // (dh/dz, dDx/dx, dDz/dz, dDx/dz) as the pack pass forms it.
-constexpr const char* kFoamStep = R"glsl(
-uniform highp sampler2D u_fields;
-uniform highp sampler2D u_previous;
-uniform float u_lambda;
-uniform float u_keep;
-uniform float u_gain;
-uniform float u_threshold;
+constexpr const char* kFoamStepBody = R"glsl(
 layout(location = 0) out vec4 o_foam;
 
 void main() {
@@ -138,10 +116,7 @@ void main() {
 )glsl";
 
 // The foam at the frame's time: f_n + (f_(n+1) - f_n) fraction at each texel.
-constexpr const char* kFoamBlend = R"glsl(
-uniform highp sampler2D u_current;
-uniform highp sampler2D u_next;
-uniform float u_fraction;
+constexpr const char* kFoamBlendBody = R"glsl(
 layout(location = 0) out vec4 o_foam;
 
 void main() {
@@ -151,36 +126,104 @@ void main() {
 }
 )glsl";
 
-struct OceanPassVariant {
+// A declaration: GLSL type and name.
+struct OceanDeclaration {
+  const char* type;
   const char* name;
-  const char* body;
-  bool slopes;
-  bool jacobianOnly;
 };
 
-OceanPassVariant variantOf(OceanPassShader shader) {
+struct OceanPassText {
+  std::vector<OceanDeclaration> samplers;  // binding order; `optional` ones last
+  std::vector<OceanDeclaration> constants;
+  const char* body;
+};
+
+OceanPassText oceanPassText(OceanPass pass, const OceanPassVariant& v) {
+  switch (pass) {
+    case OceanPass::Evolve:
+      return {{{"highp sampler2D", "u_h0"}, {"highp usampler2D", "u_frequency"}},
+              {{"uint", "u_tau"}, {"float", "u_dk"}, {"int", "u_n"}},
+              kEvolveBody};
+    case OceanPass::Stockham: {
+      OceanPassText t{{{"highp sampler2D", "u_a"}, {"highp sampler2D", "u_twiddle"}},
+                      {{"int", "u_ns"}, {"int", "u_n"}, {"int", "u_vertical"}},
+                      kStockhamBody};
+      if (v.slopes) t.samplers.push_back({"highp sampler2D", "u_b"});
+      return t;
+    }
+    case OceanPass::Pack: {
+      OceanPassText t{{{"highp sampler2D", "u_a"}}, {{"float", "u_lambda"}}, kPackBody};
+      if (v.slopes) t.samplers.push_back({"highp sampler2D", "u_b"});
+      return t;
+    }
+    case OceanPass::FoamStep:
+      return {{{"highp sampler2D", "u_fields"}, {"highp sampler2D", "u_previous"}},
+              {{"float", "u_lambda"}, {"float", "u_keep"}, {"float", "u_gain"}, {"float", "u_threshold"}},
+              kFoamStepBody};
+    case OceanPass::FoamBlend:
+      return {{{"highp sampler2D", "u_current"}, {"highp sampler2D", "u_next"}}, {{"float", "u_fraction"}}, kFoamBlendBody};
+  }
+  throw std::logic_error("an unknown ocean pass");
+}
+
+}  // namespace
+
+std::vector<std::string> oceanPassSamplers(OceanPass pass, const OceanPassVariant& variant) {
+  std::vector<std::string> out;
+  for (const OceanDeclaration& d : oceanPassText(pass, variant).samplers) out.emplace_back(d.name);
+  return out;
+}
+
+std::vector<std::string> oceanPassConstants(OceanPass pass) {
+  std::vector<std::string> out;
+  for (const OceanDeclaration& d : oceanPassText(pass, {}).constants) out.emplace_back(d.name);
+  return out;
+}
+
+std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant) {
+  const OceanPassText t = oceanPassText(pass, variant);
+  std::string s = sceneShaderHeader(api) + "#define WG_OCEAN_SLOPES " + (variant.slopes ? "1" : "0") +
+                  "\n#define WG_OCEAN_JACOBIAN_ONLY " + (variant.jacobianOnly ? "1" : "0") + "\n";
+  const bool vulkan = api == SceneShaderApi::Vulkan450;
+  for (size_t i = 0; i < t.samplers.size(); ++i)
+    s += (vulkan ? "layout(set = 0, binding = " + std::to_string(i) + ") " : std::string()) + "uniform " +
+         t.samplers[i].type + " " + t.samplers[i].name + ";\n";
+  if (vulkan) s += "layout(push_constant) uniform WgOceanPassConstants {\n";
+  for (const OceanDeclaration& c : t.constants) s += std::string(vulkan ? "  " : "uniform ") + c.type + " " + c.name + ";\n";
+  if (vulkan) s += "};\n";
+  return s + t.body;
+}
+
+namespace {
+
+struct NamedOceanPass {
+  const char* name;
+  OceanPass pass;
+  OceanPassVariant variant;
+};
+
+NamedOceanPass namedOceanPass(OceanPassShader shader) {
   switch (shader) {
-    case OceanPassShader::Evolve: return {"ocean_evolve", kEvolve, true, false};
-    case OceanPassShader::EvolveDisplacement: return {"ocean_evolve_displacement", kEvolve, false, false};
-    case OceanPassShader::EvolveJacobian: return {"ocean_evolve_jacobian", kEvolve, false, true};
-    case OceanPassShader::Stockham: return {"ocean_stockham", kStockham, true, false};
-    case OceanPassShader::StockhamSingle: return {"ocean_stockham_single", kStockham, false, false};
-    case OceanPassShader::Pack: return {"ocean_pack", kPack, true, false};
-    case OceanPassShader::PackDisplacement: return {"ocean_pack_displacement", kPack, false, false};
-    case OceanPassShader::FoamStep: return {"ocean_foam_step", kFoamStep, false, false};
-    case OceanPassShader::FoamBlend: return {"ocean_foam_blend", kFoamBlend, false, false};
+    case OceanPassShader::Evolve: return {"ocean_evolve", OceanPass::Evolve, {true, false}};
+    case OceanPassShader::EvolveDisplacement: return {"ocean_evolve_displacement", OceanPass::Evolve, {false, false}};
+    case OceanPassShader::EvolveJacobian: return {"ocean_evolve_jacobian", OceanPass::Evolve, {false, true}};
+    case OceanPassShader::Stockham: return {"ocean_stockham", OceanPass::Stockham, {true, false}};
+    case OceanPassShader::StockhamSingle: return {"ocean_stockham_single", OceanPass::Stockham, {false, false}};
+    case OceanPassShader::Pack: return {"ocean_pack", OceanPass::Pack, {true, false}};
+    case OceanPassShader::PackDisplacement: return {"ocean_pack_displacement", OceanPass::Pack, {false, false}};
+    case OceanPassShader::FoamStep: return {"ocean_foam_step", OceanPass::FoamStep, {}};
+    case OceanPassShader::FoamBlend: return {"ocean_foam_blend", OceanPass::FoamBlend, {}};
   }
   throw std::logic_error("an ocean pass shader that does not exist");
 }
 
 }  // namespace
 
-const char* oceanPassShaderName(OceanPassShader shader) { return variantOf(shader).name; }
+const char* oceanPassShaderName(OceanPassShader shader) { return namedOceanPass(shader).name; }
 
 std::string oceanPassFragment(SceneShaderApi api, OceanPassShader shader) {
-  const OceanPassVariant v = variantOf(shader);
-  return sceneShaderHeader(api) + "#define WG_OCEAN_SLOPES " + (v.slopes ? "1" : "0") + "\n#define WG_OCEAN_JACOBIAN_ONLY " +
-         (v.jacobianOnly ? "1" : "0") + "\n" + v.body;
+  const NamedOceanPass n = namedOceanPass(shader);
+  return oceanPassFragment(n.pass, api, n.variant);
 }
 
-}  // namespace wg::rt
+}  // namespace wg::rt::oceangpu

@@ -1,15 +1,41 @@
 #pragma once
-// The spectral ocean simulation's fragment shaders (runtime/ocean_gpu_cascade.h,
-// runtime/ocean_gpu_foam.h): one text each, in variants by #define, drawn with the scene's
-// full-screen vertex shader into N x N float targets. The runtime links them, and the scene
-// description (`watergraph scene`) carries the es300 forms under these names for the web
-// clients, which run the same passes in WebGL 2.
+// The spectral ocean's GPU passes as GLSL, one text per pass for both runtimes: the GL
+// runtime (runtime/ocean_gpu_cascade.h, ocean_gpu_foam.h) links them with loose uniforms,
+// the Vulkan runtime (runtime/vk_ocean_cascade.h, vk_ocean_foam.h) compiles them to SPIR-V
+// with the same bodies. Each body uses ivec2(gl_FragCoord.xy) as its texel: in either API
+// that is the texel the pass writes and the one texelFetch reads at the same coordinates
+// (GL's window row 0 and Vulkan's framebuffer row 0 are both the image's first row).
+//
+// A pass's uniforms are its samplers and its scalar constants, declared per API: loose
+// uniforms for GL; for Vulkan, sampler i at set 0, binding i, and the constants one
+// push-constant block, constant i at byte offset 4 i (every constant is a 32-bit scalar).
 #include <string>
+#include <vector>
 
 #include "runtime/scene.h"
 
-namespace wg::rt {
+namespace wg::rt::oceangpu {
 
+enum class OceanPass { Evolve, Stockham, Pack, FoamStep, FoamBlend };
+
+// The defines that choose a cascade pass's variant (the foam passes take none).
+struct OceanPassVariant {
+  bool slopes = false;        // WG_OCEAN_SLOPES: the second texture (slopes, the Jacobian's fields) too
+  bool jacobianOnly = false;  // WG_OCEAN_JACOBIAN_ONLY: the second texture's fields alone, in the first output
+};
+
+// The sampler names of `pass` in binding order, for this variant (a sampler the variant
+// does not read is not declared).
+std::vector<std::string> oceanPassSamplers(OceanPass pass, const OceanPassVariant& variant);
+// The scalar constant names of `pass` in push-constant order.
+std::vector<std::string> oceanPassConstants(OceanPass pass);
+// The whole fragment shader: the API's header (sceneShaderHeader), the variant's defines,
+// the declarations and the body.
+std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant = {});
+
+// The nine programs the runtimes link, by name: the scene description (`watergraph scene`)
+// carries their es300 forms under these names for the web clients, which run the same
+// passes in WebGL 2 and (translated by naga) in WebGPU.
 enum class OceanPassShader {
   Evolve,              // h~(k, t) from h0 into both spectra textures (A and B)
   EvolveDisplacement,  // into texture A alone (nothing reads the slope map)
@@ -23,11 +49,9 @@ enum class OceanPassShader {
 };
 inline constexpr int kOceanPassShaderCount = 9;
 
-// "ocean_evolve", "ocean_evolve_displacement", ...: the scene description's name and the
-// program's in error messages.
+// "ocean_evolve", "ocean_evolve_displacement", ...
 const char* oceanPassShaderName(OceanPassShader shader);
-// The fragment shader's whole text for `api` (Gl330 or Es300): the runtime's header, the
-// variant's #defines, the body.
+// The named program's fragment shader for `api`.
 std::string oceanPassFragment(SceneShaderApi api, OceanPassShader shader);
 
-}  // namespace wg::rt
+}  // namespace wg::rt::oceangpu

@@ -18,17 +18,6 @@ int scaledSize(int frameSize, double scale) {
 
 const char* passName(PassKind p) { return renderPassRow(p).name.data(); }  // a literal: NUL-terminated
 
-std::optional<PassKind> passVulkanDoesNotRun(const std::vector<PassKind>& passes) {
-  // The spectral ocean's simulation runs on the GL runtime only (runtime/ocean_simulation.h).
-  for (PassKind p : passes)
-    if (p == PassKind::OceanSimulation) return p;
-  return std::nullopt;
-}
-
-std::string vulkanCannotRun(PassKind p) {
-  return std::string("the Vulkan runtime cannot run the ") + passName(p) + " pass yet";
-}
-
 std::optional<PassKind> parsePassName(const std::string& name) { return parseRenderPass(name); }
 
 size_t bytesPerPixel(ColorFormat f) {

@@ -79,13 +79,6 @@ inline constexpr const char* kDisplayTarget = "display";
 bool sampledNearest(const TargetSpec& target, bool floatLinear);
 size_t bytesPerPixel(DepthFormat f);
 
-// The one pass kind the GL runtime runs and the Vulkan runtime does not yet: the first of
-// `passes` the Vulkan runtime cannot run, or nothing. The VkRenderer refuses such a
-// manifest, and `check` asked for every target reports vk450 as not run, each with
-// vulkanCannotRun's sentence.
-std::optional<PassKind> passVulkanDoesNotRun(const std::vector<PassKind>& passes);
-std::string vulkanCannotRun(PassKind p);
-
 // Throws RuntimeError(Kind::Manifest) for passes without water_surface or a render size
 // that is not positive. Duplicates count once; the opaque scene always runs.
 PassPlan planPasses(const Manifest& manifest, const PlanOptions& options);

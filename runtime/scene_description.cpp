@@ -90,9 +90,9 @@ std::string sceneDescriptionJson(const SceneOptions& options) {
                   {"output_transform_fragment", outputTransformFragment(SceneShaderApi::Es300)}};
   // The spectral ocean's simulation passes (runtime/ocean_gpu_shaders.h), each drawn with
   // fullscreen_vertex into N x N float targets.
-  for (int i = 0; i < kOceanPassShaderCount; ++i) {
-    const auto shader = static_cast<OceanPassShader>(i);
-    d["shaders"][oceanPassShaderName(shader)] = oceanPassFragment(SceneShaderApi::Es300, shader);
+  for (int i = 0; i < oceangpu::kOceanPassShaderCount; ++i) {
+    const auto shader = static_cast<oceangpu::OceanPassShader>(i);
+    d["shaders"][oceangpu::oceanPassShaderName(shader)] = oceangpu::oceanPassFragment(SceneShaderApi::Es300, shader);
   }
   return d.dump() + "\n";
 }

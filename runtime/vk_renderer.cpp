@@ -15,6 +15,8 @@
 #include "runtime/oblique_projection.h"
 #include "runtime/runtime_error.h"
 #include "runtime/tessellation_budget.h"
+#include "runtime/vk_mesh.h"
+#include "runtime/vk_ocean_simulation.h"
 #include "runtime/vk_output_transform.h"
 #include "runtime/vk_render_targets.h"
 #include "runtime/vk_resources.h"
@@ -53,26 +55,6 @@ static_assert(sizeof(SkyConstants) <= kPushConstantBytes && kPushConstantBytes <
 
 }  // namespace
 
-// Outside the anonymous namespace: VkRenderer::Impl, declared in a header, holds two.
-struct VkMesh {
-  VkBufferOwner vertices, indices;
-  uint32_t indexCount = 0;
-};
-
-namespace {
-
-VkMesh uploadMesh(VkContext& context, const Mesh& m) {
-  VkMesh g;
-  g.vertices = VkBufferOwner(context, m.vertices.size() * sizeof(float), VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
-  g.vertices.write(m.vertices.data(), g.vertices.size());
-  g.indices = VkBufferOwner(context, m.indices.size() * sizeof(unsigned), VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
-  g.indices.write(m.indices.data(), g.indices.size());
-  g.indexCount = static_cast<uint32_t>(m.indices.size());
-  return g;
-}
-
-}  // namespace
-
 struct VkRenderer::Impl {
   VkContext& ctx;
   RenderSettings settings;
@@ -91,6 +73,7 @@ struct VkRenderer::Impl {
   std::vector<VkShaderCode> waterStages;
   std::vector<VkVertexInputAttributeDescription> waterAttributes;
   std::unique_ptr<VkWaterBindings> bindings;
+  std::shared_ptr<VkOceanSimulation> oceans;  // when the plan runs ocean_simulation; may be shared
   VkPipelineLayoutHandle sceneLayout, waterLayout;
   // Scene pipelines by the formats of the target they draw into.
   std::map<std::pair<VkFormat, bool>, VkPipelineHandle> skyPipelines, opaquePipelines;
@@ -267,8 +250,11 @@ struct VkRenderer::Impl {
   static inline const glm::vec4 kNoClip = glm::vec4(0, 0, 0, 1);
 
   // --- One function per pass kind (PassKind), run in the plan's order, as the GL runtime.
-  // Refused when the renderer is made (above); a frame never reaches it.
-  void oceanSimulationPass() { throw std::logic_error("the Vulkan runtime has no ocean simulation"); }
+  // Every ocean's cascades at the scene's time (runtime/vk_ocean_simulation.h).
+  void oceanSimulationPass() {
+    oceans->setFoamHistory(settings.animation ? FoamHistory::Continue : FoamHistory::Replay);
+    oceans->record(cmd, settings.scene.time);
+  }
 
   void environmentPass() {
     Target& t = *find(SceneSampler::Environment);
@@ -409,11 +395,16 @@ struct VkRenderer::Impl {
     static_assert(std::size(kPassFunctions) == kRenderPassCount);
     auto start = std::chrono::steady_clock::now();
     bindings->writeUniforms(frameValues());
-    ctx.submit([&](VkCommandBuffer c) {
-      cmd = c;
-      for (PassKind pass : plan.passes) (this->*kPassFunctions[static_cast<size_t>(pass)])();
-      cmd = VK_NULL_HANDLE;
-    });
+    try {
+      ctx.submit([&](VkCommandBuffer c) {
+        cmd = c;
+        for (PassKind pass : plan.passes) (this->*kPassFunctions[static_cast<size_t>(pass)])();
+        cmd = VK_NULL_HANDLE;
+      });
+    } catch (...) {
+      if (oceans) oceans->forgetHeldTime();  // what it recorded may not have run
+      throw;
+    }
     auto end = std::chrono::steady_clock::now();
     ctx.throwOnValidationMessages("rendering a frame");
     return std::chrono::duration<double, std::milli>(end - start).count();
@@ -434,7 +425,8 @@ struct VkRenderer::Impl {
 };
 
 VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector<VkShaderCode> water,
-                       const RenderSettings& settings, const std::map<std::string, TextureOrigin>& origins)
+                       const RenderSettings& settings, const std::map<std::string, TextureOrigin>& origins,
+                       std::shared_ptr<VkOceanSimulation> oceans)
     : impl_(std::make_unique<Impl>(context)) {
   Impl& r = *impl_;
   r.settings = settings;
@@ -448,9 +440,6 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   refuseBuoys(settings.scene);
 
   r.plan = planPasses(manifest, planOptionsFor(settings));
-  if (auto pass = passVulkanDoesNotRun(r.plan.passes))
-    throw RuntimeError(RuntimeError::Kind::Manifest,
-                       vulkanCannotRun(*pass) + "; render this graph with the GL runtime (--target glsl330 or es300)");
   r.memory.emplace(rendererBytes(r.plan, settings.floatColor),
                    "render targets and read-back at " + std::to_string(settings.width) + "x" + std::to_string(settings.height));
   r.deferred = r.plan.runs(PassKind::DeferredWater);
@@ -489,10 +478,15 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
   r.sceneSpirv = compileSceneSpirv(gbuffer);
 
   r.targets.create(r.ctx, r.plan);
-  r.sceneMesh = uploadMesh(context, buildSceneMesh());
+  r.sceneMesh = uploadVkMesh(context, buildSceneMesh());
   int gridQuads = settings.waterGridQuads;
   if (r.tessellated && manifest.tessellation) gridQuads = tessellatedGridQuads(gridQuads, manifest.tessellation->settings.factor);
-  r.waterMesh = uploadMesh(context, buildWaterGrid(gridQuads));
+  r.waterMesh = uploadVkMesh(context, buildWaterGrid(gridQuads));
+  if (r.plan.runs(PassKind::OceanSimulation)) {
+    if (oceans && oceans->identity() != VkOceanSimulation::identity(manifest.oceans, manifest.textures))
+      throw std::logic_error("a shared ocean simulation simulates other oceans than this manifest's");
+    r.oceans = oceans ? std::move(oceans) : std::make_shared<VkOceanSimulation>(context, manifest.oceans, manifest.textures);
+  }
   r.bindings = std::make_unique<VkWaterBindings>(
       context, manifest,
       [&r](SceneSampler s) {
@@ -503,7 +497,7 @@ VkRenderer::VkRenderer(VkContext& context, const Manifest& manifest, std::vector
         out.nearest = sampledNearest(t->spec, r.targets.floatLinear());
         return out;
       },
-      origins);
+      [&r](const OceanMapRef& ref) { return r.oceans ? &r.oceans->map(ref) : nullptr; }, origins);
   r.sceneLayout = r.makeLayout({}, kPushConstantBytes);
   r.createWaterPipelines(manifest);
   if (Impl::Target* d = r.plan.runs(PassKind::OutputTransform) ? r.picture() : nullptr)
@@ -568,6 +562,7 @@ std::vector<float> VkRenderer::readDepth() const {
 }
 
 const PassPlan& VkRenderer::plan() const { return impl_->plan; }
+std::shared_ptr<VkOceanSimulation> VkRenderer::oceanSimulation() const { return impl_->oceans; }
 
 bool VkRenderer::samplesNearest(SceneSampler s) const {
   const Impl::Target* t = impl_->find(s);

@@ -19,6 +19,8 @@
 
 namespace wg::rt {
 
+class VkOceanSimulation;
+
 // Vulkan's clip space takes z in [0, w] where GL's takes [-w, w]: z' = (z + w) / 2. Every
 // projection the runtime hands a Vulkan shader is this times the GL one, so depth-buffer
 // values equal GL's window depths and the graph's depth nodes read the same numbers.
@@ -29,9 +31,11 @@ class VkRenderer {
   // `water`: the graph's SPIR-V modules in pipeline order (vertex, [tessellation], fragment).
   // `context` must outlive the renderer and have the tessellation feature when the water
   // is tessellated. Throws RuntimeError as Renderer does; with validation, also when the
-  // layer reports anything while the renderer is built (Kind::Driver).
+  // layer reports anything while the renderer is built (Kind::Driver). With `oceans`
+  // (another VkRenderer's oceanSimulation() on this context for a manifest of the same
+  // oceans and ocean maps), the two share one simulation, as Renderer's `oceans`.
   VkRenderer(VkContext& context, const Manifest& manifest, std::vector<VkShaderCode> water, const RenderSettings& settings,
-             const std::map<std::string, TextureOrigin>& origins = {});
+             const std::map<std::string, TextureOrigin>& origins = {}, std::shared_ptr<VkOceanSimulation> oceans = nullptr);
   ~VkRenderer();
   VkRenderer(const VkRenderer&) = delete;
   VkRenderer& operator=(const VkRenderer&) = delete;
@@ -50,6 +54,8 @@ class VkRenderer {
   std::vector<float> readDepth() const;  // rows top to bottom, as Renderer::readDepth
 
   const PassPlan& plan() const;
+  // The spectral oceans' simulation (null when the plan runs no ocean_simulation pass).
+  std::shared_ptr<VkOceanSimulation> oceanSimulation() const;
   bool samplesNearest(SceneSampler s) const;  // as Renderer::samplesNearest
   int createdTargetCount() const;
   size_t createdTargetBytes() const;  // level 0 of every image, from the formats

@@ -79,12 +79,15 @@ class VkImageOwner {
   VkImageLayout layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
 };
 
-size_t formatBytes(VkFormat format);  // per texel: RGBA8 4, RGBA16F 8, RGBA32F 16, D32 4
+size_t formatBytes(VkFormat format);  // per texel: RGBA8 4, RGBA16F 8, RGBA32F 16, D32 4, R32F/R32UI 4, RG32F 8
 bool isDepthFormat(VkFormat format);
 
 // Uploads RGBA8 texels (rows as given) to level 0 of a 2D image and, when it has more
 // levels, fills them by linear blits; leaves it in SHADER_READ_ONLY_OPTIMAL.
 void uploadRgba8(VkContext& context, VkImageOwner& image, const unsigned char* rgba);
+// Uploads level 0, layer 0 of a single-level image of any format formatBytes knows (rows
+// as given, width * height texels); leaves it in SHADER_READ_ONLY_OPTIMAL.
+void uploadTexels(VkContext& context, VkImageOwner& image, const void* texels);
 // Copies level 0, layer 0 into host memory, rows in the image's order (row 0 first).
 std::vector<unsigned char> readBack(VkContext& context, VkImageOwner& image);
 

@@ -9,6 +9,7 @@
 namespace wg::rt {
 VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
                                  const std::function<SceneImage(SceneSampler)>& sceneImage,
+                                 const std::function<VkImageOwner*(const OceanMapRef&)>& oceanMap,
                                  const std::map<std::string, TextureOrigin>& origins)
     : context_(context) {
   const VkDevice device = context.device();
@@ -52,7 +53,13 @@ VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
     const bool cube = t.type == Type::SamplerCube;
     VkDescriptorImageInfo info{};
     info.imageLayout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    if (t.scene) {
+    if (t.ocean) {
+      VkImageOwner* map = oceanMap(*t.ocean);
+      if (!map) manifestError("texture " + t.name + " is an ocean map, but the manifest lists no ocean_simulation pass");
+      if (t.type != Type::Sampler2D) manifestError("ocean map " + t.name + " must be a sampler2D, not " + std::string(typeName(t.type)));
+      samplers_.push_back(makeVkSampler(device, false, VK_SAMPLER_ADDRESS_MODE_REPEAT, false));
+      info.imageView = map->view();
+    } else if (t.scene) {
       SceneImage s = sceneImage(*t.scene);
       if (!s.image)
         manifestError("texture " + t.name + " (scene resource '" +

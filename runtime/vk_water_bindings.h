@@ -3,7 +3,8 @@
 // block WgUniforms at set 0, binding 0 (member offsets from codegen/uniform_block_layout.h,
 // rewritten every frame from the camera, time, sun and parameter values), and one combined
 // image sampler per manifest texture at its binding: node textures (loaded here with their
-// sampler state) and scene textures (the render targets of the planned passes).
+// sampler state), scene textures (the render targets of the planned passes) and ocean maps
+// (the ocean simulation's images, runtime/vk_ocean_simulation.h).
 #include <functional>
 #include <map>
 #include <string>
@@ -27,9 +28,12 @@ class VkWaterBindings {
     VkImageOwner* image = nullptr;
     bool nearest = false;
   };
+  // `oceanMap` gives the image of an ocean map (null when the manifest runs no ocean
+  // simulation: a manifest error); ocean maps are sampled texel by texel (texelFetch).
   // Throws RuntimeError(Kind::Manifest) for uniforms or textures the runtime cannot provide,
   // TextureLoadError for a node texture that does not load.
   VkWaterBindings(VkContext& context, const Manifest& manifest, const std::function<SceneImage(SceneSampler)>& sceneImage,
+                  const std::function<VkImageOwner*(const OceanMapRef&)>& oceanMap,
                   const std::map<std::string, TextureOrigin>& origins);
 
   VkDescriptorSetLayout setLayout() const { return setLayout_.get(); }

@@ -336,8 +336,9 @@ TEST_P(QueryGpu, ParametersAHostSetsAreClampedAsTheRuntimeClampsThem) {
 // neighbouring texels, 8 roundings of the field's largest value in the bilinear mix and the
 // weighted sum, and the fade weight's float32 distance and smoothstep (2^-24 (4 + 4.5 d /
 // start)) times that value; plus 2^-24 (|x0| + |z0| + sum of the largest D) twice for the
-// point and the sum. vk450 is not run: the Vulkan runtime does not simulate oceans
-// (rt::vulkanCannotRun).
+// point and the sum. vk450 is not run here: the Vulkan vertex capture (query_vk_capture.h)
+// binds no ocean maps; the Vulkan runtime's maps are held to the same double reference by
+// tests/runtime/vk_ocean_test.cpp.
 TEST(QueryGpuOcean, OpenOceanAtFftSize512OnGlsl330AndEs300) {
   Diagnostics diags;
   auto graph = loadGraphFile(test::sourcePath("graphs/open_ocean.json"), diags);

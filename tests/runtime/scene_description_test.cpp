@@ -45,10 +45,10 @@ TEST(SceneDescription, HoldsTheRuntimesEsShadersCamerasAndSun) {
   EXPECT_EQ(d["shaders"]["water_gbuffer_fragment"], s.waterGbufferFragment);
   // The spectral ocean's passes, each the very text the runtime links on ES (the web
   // clients run them; ThreeClient's open_ocean frames show they work).
-  for (int i = 0; i < kOceanPassShaderCount; ++i) {
-    const auto shader = static_cast<OceanPassShader>(i);
-    EXPECT_EQ(d["shaders"][oceanPassShaderName(shader)], oceanPassFragment(SceneShaderApi::Es300, shader))
-        << oceanPassShaderName(shader);
+  for (int i = 0; i < oceangpu::kOceanPassShaderCount; ++i) {
+    const auto shader = static_cast<oceangpu::OceanPassShader>(i);
+    EXPECT_EQ(d["shaders"][oceangpu::oceanPassShaderName(shader)], oceangpu::oceanPassFragment(SceneShaderApi::Es300, shader))
+        << oceangpu::oceanPassShaderName(shader);
   }
   EXPECT_EQ(vec3Of(d["sun_direction"]), sunDirection(o));
   ASSERT_EQ(d["cameras"].size(), cameraPresetNames().size());
