@@ -28,16 +28,16 @@ struct PlainStringBytes {
 };
 constexpr PlainStringBytes kPlainStringBytes;
 
-constexpr bool isDigit(char c) { return c >= '0' && c <= '9'; }
+constexpr bool isJsonDigit(char c) { return c >= '0' && c <= '9'; }
 
-int hexValue(char c) {
+int jsonHexValue(char c) {
   if (c >= '0' && c <= '9') return c - '0';
   if (c >= 'a' && c <= 'f') return c - 'a' + 10;
   if (c >= 'A' && c <= 'F') return c - 'A' + 10;
   return -1;
 }
 
-void appendUtf8(std::string& out, std::uint32_t cp) {
+void appendJsonUtf8(std::string& out, std::uint32_t cp) {
   if (cp < 0x80) {
     out += static_cast<char>(cp);
   } else if (cp < 0x800) {
@@ -238,7 +238,7 @@ class WellFormedReader {
       if (!hex4(low) || low < 0xDC00 || low > 0xDFFF) return false;
       cp = 0x10000 + ((cp - 0xD800) << 10) + (low - 0xDC00);
     }
-    appendUtf8(out, cp);
+    appendJsonUtf8(out, cp);
     return true;
   }
 
@@ -246,7 +246,7 @@ class WellFormedReader {
     if (end_ - p_ < 4) return false;
     cp = 0;
     for (int i = 0; i < 4; ++i) {
-      int h = hexValue(p_[i]);
+      int h = jsonHexValue(p_[i]);
       if (h < 0) return false;
       cp = cp * 16 + static_cast<std::uint32_t>(h);
     }
@@ -299,7 +299,7 @@ class WellFormedReader {
     if (*p_ == '0') {
       ++p_;
     } else if (*p_ >= '1' && *p_ <= '9') {
-      while (p_ < end_ && isDigit(*p_)) ++p_;
+      while (p_ < end_ && isJsonDigit(*p_)) ++p_;
     } else {
       return false;
     }
@@ -307,15 +307,15 @@ class WellFormedReader {
     if (p_ < end_ && *p_ == '.') {
       integral = false;
       ++p_;
-      if (p_ == end_ || !isDigit(*p_)) return false;
-      while (p_ < end_ && isDigit(*p_)) ++p_;
+      if (p_ == end_ || !isJsonDigit(*p_)) return false;
+      while (p_ < end_ && isJsonDigit(*p_)) ++p_;
     }
     if (p_ < end_ && (*p_ == 'e' || *p_ == 'E')) {
       integral = false;
       ++p_;
       if (p_ < end_ && (*p_ == '+' || *p_ == '-')) ++p_;
-      if (p_ == end_ || !isDigit(*p_)) return false;
-      while (p_ < end_ && isDigit(*p_)) ++p_;
+      if (p_ == end_ || !isJsonDigit(*p_)) return false;
+      while (p_ < end_ && isJsonDigit(*p_)) ++p_;
     }
     JsonScalar s;
     if (integral) {
