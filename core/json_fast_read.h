@@ -10,7 +10,7 @@
 // what is wrong in the words every diagnostic of the format has always used.
 #include <string_view>
 
-#include "core/json_events.h"
+#include "core/json_event_handler.h"
 
 namespace wg {
 

@@ -7,7 +7,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "core/json_events.h"
+#include "core/json_event_handler.h"
 
 namespace wg {
 
