@@ -10,11 +10,12 @@ PassResult simplifyPass(Program& program, PassContext&) {
   std::vector<std::vector<ValueRef>> replace(n);
   std::vector<bool> keep(n, true);
   bool changed = false;
+  std::vector<std::optional<Value>> constants;  // one op's at a time; reused, not reallocated per op
   for (size_t i = 0; i < n; ++i) {
     Op& op = program.ops[i];
     forwardReplacedInputs(op, replace);
     if (!op.spec->identity || op.outputTypes.size() != 1) continue;
-    std::vector<std::optional<Value>> constants;
+    constants.clear();
     for (const auto& in : op.inputs)
       constants.push_back(in.kind == ValueRef::Kind::Const ? std::optional<Value>(in.constant()) : std::nullopt);
     int which = op.spec->identity(constants);

@@ -71,9 +71,11 @@ void GraphDraftReader::scalar(JsonScalar& v, JsonPosition at) {
 
 void GraphDraftReader::startContainer(bool isArray, JsonPosition at) {
   using value_t = nlohmann::json::value_t;
-  nlohmann::json empty = isArray ? nlohmann::json::array() : nlohmann::json::object();
+  // An empty held container, made only for one: an empty json object is a heap block, and
+  // the structured ones (every node and its inputs) hold no json.
+  auto empty = [isArray] { return isArray ? nlohmann::json::array() : nlohmann::json::object(); };
   if (!held_.empty()) {
-    held_.push_back(hold(std::move(empty)));
+    held_.push_back(hold(empty()));
     return;
   }
   DraftValue& s = slot(at);
@@ -103,7 +105,7 @@ void GraphDraftReader::startContainer(bool isArray, JsonPosition at) {
     }
   }
   if (!structured) {
-    s.value = std::move(empty);
+    s.value = empty();
     held_.push_back(&s.value);
     return;
   }

@@ -19,7 +19,9 @@ void GraphParser::node(DraftValue& nv) {
     out.error(DiagCode::WrongJsonType, ref(nv.at), "each node must be an object, found " + jsonTypeName(nv.type));
     return;
   }
-  Node n;
+  // Built in its place in the graph's array (reserved for the file's nodes): a Node moved
+  // in afterwards moved every input's strings once more.
+  Node& n = nodes_.emplace_back();
   n.where = ref(nv.at);
   std::string label;  // for diagnostics: the id when it is a valid one
   if (!nv.member("id")) {
@@ -47,11 +49,11 @@ void GraphParser::node(DraftValue& nv) {
   if (auto* v = field(nv, "inputs", json::value_t::object, "a node's 'inputs'", label, &out)) {
     n.inputs.reserve(v->members.size());
     for (DraftValue& e : v->members) {
-      NodeInput in;
+      NodeInput& in = n.inputs.emplace_back();
       in.port = std::move(e.name);
       in.keyWhere = ref(e.key);
-      if (parseSource(e.value, ref(e.at), in.source, label, [&] { return "input '" + in.port + "'"; }, out))
-        n.inputs.push_back(std::move(in));
+      if (!parseSource(e.value, ref(e.at), in.source, label, [&] { return "input '" + in.port + "'"; }, out))
+        n.inputs.pop_back();
     }
   }
   if (auto* v = field(nv, "editor", json::value_t::object, "a node's 'editor'", label, &out)) {
@@ -72,7 +74,6 @@ void GraphParser::node(DraftValue& nv) {
     }
     if (ok) n.editorPosition = pos;
   }
-  nodes_.push_back(std::move(n));
 }
 
 // A graph with nothing connected loads (the editor saves one when the user disconnects

@@ -24,11 +24,10 @@ class IdIndex {
   // The index stored for `name`, or -1.
   int find(std::string_view name) const {
     if (slots_.empty()) return -1;
-    std::size_t h = std::hash<std::string_view>{}(name);
-    for (std::size_t i = h & mask();; i = (i + 1) & mask()) {
+    for (std::size_t i = hashOf(name) & mask();; i = (i + 1) & mask()) {
       const Slot& s = slots_[i];
       if (s.value < 0) return -1;
-      if (s.hash == h && s.size == name.size() && std::string_view(s.data, s.size) == name) return s.value;
+      if (s.name() == name) return s.value;
     }
   }
 
@@ -36,25 +35,30 @@ class IdIndex {
   // earlier one when it was there) and whether this call stored it.
   std::pair<int, bool> emplace(std::string_view name, int index) {
     if (2 * (size_ + 1) > slots_.size()) rehash(slots_.empty() ? 16 : 2 * slots_.size());
-    std::size_t h = std::hash<std::string_view>{}(name);
-    for (std::size_t i = h & mask();; i = (i + 1) & mask()) {
+    for (std::size_t i = hashOf(name) & mask();; i = (i + 1) & mask()) {
       Slot& s = slots_[i];
       if (s.value < 0) {
-        s = {name.data(), name.size(), h, index};
+        s = {name.data(), static_cast<std::uint32_t>(name.size()), index};
         ++size_;
         return {index, true};
       }
-      if (s.hash == h && s.size == name.size() && std::string_view(s.data, s.size) == name) return {s.value, false};
+      if (s.name() == name) return {s.value, false};
     }
   }
 
  private:
+  // 16 bytes: a table at most half full of 10,000 ids is 32,768 slots, and with the hash
+  // kept beside each name (32 bytes a slot) it was a megabyte of the compile's peak heap.
+  // Without it a probe compares the lengths first, and the ids that share a slot's run
+  // rarely share a length and a first byte.
   struct Slot {
     const char* data = nullptr;
-    std::size_t size = 0;
-    std::size_t hash = 0;
-    int value = -1;  // -1: empty (indices are never negative)
+    std::uint32_t size = 0;  // a name from a file of at most 16 MiB
+    int value = -1;          // -1: empty (indices are never negative)
+    std::string_view name() const { return {data, size}; }
   };
+
+  static std::size_t hashOf(std::string_view name) { return std::hash<std::string_view>{}(name); }
 
   std::size_t mask() const { return slots_.size() - 1; }
 
@@ -63,7 +67,7 @@ class IdIndex {
     slots_.assign(capacity, Slot{});
     for (const Slot& s : old) {
       if (s.value < 0) continue;
-      std::size_t i = s.hash & mask();
+      std::size_t i = hashOf(s.name()) & mask();
       while (slots_[i].value >= 0) i = (i + 1) & mask();
       slots_[i] = s;
     }
