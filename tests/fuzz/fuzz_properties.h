@@ -12,6 +12,7 @@
 #include "codegen/compile.h"
 #include "core/diagnostic.h"
 #include "core/graph_io.h"
+#include "json_reader_property.h"
 #include "nodes/registry.h"
 
 namespace wg::fuzz {
@@ -41,6 +42,7 @@ inline std::string checkErrors(const Diagnostics& diags) {
 // The loader: a graph exactly when no error; errors are clear; an accepted graph survives
 // the canonical save: saveGraph(parse(saveGraph(g))) == saveGraph(g) (core/graph_io.h).
 inline std::string loaderProperty(std::string_view text) {
+  if (std::string why = jsonReaderProperty(text); !why.empty()) return why;
   Diagnostics diags;
   auto graph = parseGraph(text, "fuzz.json", diags);
   if (!graph) return checkErrors(diags);
