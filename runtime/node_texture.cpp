@@ -15,7 +15,7 @@ GLint glWrap(TextureWrap w) {
 }
 
 // The number of levels of a full chain: 1 + floor(log2(max(w, h))).
-GLsizei fullChainLevels(int width, int height) {
+GLsizei glFullChainLevels(int width, int height) {
   GLsizei levels = 1;
   for (int side = std::max(width, height); side > 1; side /= 2) ++levels;
   return levels;
@@ -27,7 +27,7 @@ Texture makeNodeTexture(int width, int height, const unsigned char* rgba, const 
   const bool mipmapped = sampler.filter == TextureFilter::Mipmapped;
   Texture t = makeTexture();
   glBindTexture(GL_TEXTURE_2D, t.id());
-  glTexStorage2D(GL_TEXTURE_2D, mipmapped ? fullChainLevels(width, height) : 1,
+  glTexStorage2D(GL_TEXTURE_2D, mipmapped ? glFullChainLevels(width, height) : 1,
                  sampler.colorSpace == TextureColorSpace::Srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, width, height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);

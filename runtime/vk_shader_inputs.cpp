@@ -18,7 +18,7 @@ VkSamplerAddressMode addressMode(TextureWrap w) {
   return VK_SAMPLER_ADDRESS_MODE_REPEAT;
 }
 
-uint32_t fullChainLevels(int width, int height) {
+uint32_t vkFullChainLevels(int width, int height) {
   uint32_t levels = 1;
   for (int side = std::max(width, height); side > 1; side /= 2) ++levels;
   return levels;
@@ -51,7 +51,7 @@ VkNodeTexture loadVkNodeTexture(VkContext& context, const TextureInfo& t, const 
   spec.format = t.sampler.colorSpace == TextureColorSpace::Srgb ? VK_FORMAT_R8G8B8A8_SRGB : VK_FORMAT_R8G8B8A8_UNORM;
   spec.width = static_cast<uint32_t>(img->width);
   spec.height = static_cast<uint32_t>(img->height);
-  spec.mipLevels = mipmapped ? fullChainLevels(img->width, img->height) : 1;
+  spec.mipLevels = mipmapped ? vkFullChainLevels(img->width, img->height) : 1;
   spec.usage = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
   VkNodeTexture out{VkImageOwner(context, spec), {}};
   uploadRgba8(context, out.image, img->rgba.data());  // row 0 at v = 0, as GL
