@@ -3,13 +3,11 @@
 // of GPU cascades (runtime/ocean_gpu_cascade.h) updated once per frame, whose maps are the
 // manifest's ocean textures. The settings are the ocean_spectrum node's options, parsed
 // with the node's own parser and checked as the compiler checks them.
-#include <memory>
-#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "codegen/shader_plan.h"
+#include "runtime/ocean_cascade_set.h"
 #include "runtime/ocean_gpu_cascade.h"
 #include "runtime/ocean_gpu_foam.h"
 
@@ -30,37 +28,27 @@ class OceanSimulation {
   // (check renders many views of one time; a foam replay is tens of transforms per cascade).
   void update(double time);
   // How the foam reaches a frame's time (Replay unless set: a frame depends on its time alone).
-  void setFoamHistory(FoamHistory history) { foamHistory_ = history; }
+  void setFoamHistory(FoamHistory history) { set_.setFoamHistory(history); }
   // The foam steps the last update ran, over every cascade (0 when it found the maps at its time).
-  int lastFoamSteps() const;
+  int lastFoamSteps() const { return set_.lastFoamSteps(); }
   // The updates that ran (not those that found the maps at their time).
-  long updatesRun() const { return updatesRun_; }
+  long updatesRun() const { return set_.runs(); }
   // The GL texture of a manifest's ocean map (a manifest error when it names none).
   GLuint map(const OceanMapRef& ref) const;
   // The GPU memory the simulation of these oceans holds (every cascade's textures), without
   // a GL context: what `render --stats` reports beside the render targets.
   static size_t textureBytes(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures);
   // Whether cascade `cascade` of ocean `ocean` computes the slope fields, and its foam.
-  bool computesSlopes(int ocean, int cascade) const;
-  bool computesFoam(int ocean, int cascade) const;
+  bool computesSlopes(int ocean, int cascade) const { return set_.computesSlopes(ocean, cascade); }
+  bool computesFoam(int ocean, int cascade) const { return set_.computesFoam(ocean, cascade); }
   // What the simulation computes, as text: two manifests with equal identities (each
   // ocean's id and options, each ocean map a shader reads) can share one simulation.
   static std::string identity(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures);
   const std::string& identity() const { return identity_; }
 
  private:
-  struct Ocean {
-    double choppiness = 0;
-    std::vector<std::unique_ptr<OceanGpuCascade>> cascades;
-    std::vector<std::unique_ptr<OceanGpuFoam>> foam;  // per cascade, null where no shader reads it
-  };
-  std::vector<Ocean> oceans_;
+  OceanCascadeSet<OceanGpuCascade, OceanGpuFoam> set_;
   std::string identity_;
-  FoamHistory foamHistory_ = FoamHistory::Replay;
-  // The time and foam history the maps hold, once updated; whether the last update ran.
-  std::optional<std::pair<double, FoamHistory>> heldAt_;
-  bool lastUpdateRan_ = false;
-  long updatesRun_ = 0;
 };
 
 }  // namespace wg::rt

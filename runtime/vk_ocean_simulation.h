@@ -7,12 +7,11 @@
 // is reached), a time the maps already hold records nothing, and the foam reaches a
 // frame's time as FoamHistory says, as on GL.
 #include <memory>
-#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "codegen/shader_plan.h"
+#include "runtime/ocean_cascade_set.h"
 #include "runtime/vk_ocean_foam.h"
 
 namespace wg::rt {
@@ -28,31 +27,22 @@ class VkOceanSimulation {
   // before the next record: the simulation counts the maps as holding time t from here.
   void record(VkCommandBuffer cmd, double time);
   // After a command buffer with a record failed: the maps hold no known time.
-  void forgetHeldTime() { heldAt_.reset(); }
-  void setFoamHistory(FoamHistory history) { foamHistory_ = history; }
-  int lastFoamSteps() const;  // over every cascade; 0 when the last record found the maps at its time
-  long updatesRecorded() const { return updatesRecorded_; }
+  void forgetHeldTime() { set_.forgetHeldTime(); }
+  void setFoamHistory(FoamHistory history) { set_.setFoamHistory(history); }
+  int lastFoamSteps() const { return set_.lastFoamSteps(); }  // 0 when the last record found the maps at its time
+  long updatesRecorded() const { return set_.runs(); }
   // The image of a manifest's ocean map (a manifest error when it names none).
   VkImageOwner& map(const OceanMapRef& ref);
-  bool computesSlopes(int ocean, int cascade) const;
-  bool computesFoam(int ocean, int cascade) const;
+  bool computesSlopes(int ocean, int cascade) const { return set_.computesSlopes(ocean, cascade); }
+  bool computesFoam(int ocean, int cascade) const { return set_.computesFoam(ocean, cascade); }
   // As OceanSimulation::identity: equal identities can share one simulation.
   static std::string identity(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures);
   const std::string& identity() const { return identity_; }
 
  private:
-  struct Ocean {
-    double choppiness = 0;
-    std::vector<std::unique_ptr<VkOceanCascade>> cascades;
-    std::vector<std::unique_ptr<VkOceanFoam>> foam;  // per cascade, null where no shader reads it
-  };
-  std::unique_ptr<VkOceanPasses> passes_;
-  std::vector<Ocean> oceans_;
+  std::unique_ptr<VkOceanPasses> passes_;  // before set_: its cascades hold the passes
+  OceanCascadeSet<VkOceanCascade, VkOceanFoam> set_;
   std::string identity_;
-  FoamHistory foamHistory_ = FoamHistory::Replay;
-  std::optional<std::pair<double, FoamHistory>> heldAt_;
-  bool lastRecordRan_ = false;
-  long updatesRecorded_ = 0;
 };
 
 }  // namespace wg::rt
