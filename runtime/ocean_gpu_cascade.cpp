@@ -54,15 +54,15 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
 
-  auto link = [&](const char* name, OceanPass pass, bool slopes, bool jacobianOnly = false) {
-    return linkPass(api, name, oceanPassFragment(pass, api, {slopes, jacobianOnly}));
-  };
-  evolve_ = link("ocean_evolve", OceanPass::Evolve, slopes_);
-  stockham_ = link("ocean_stockham", OceanPass::Stockham, slopes_);
-  pack_ = link("ocean_pack", OceanPass::Pack, slopes_);
+  // The named programs the scene description carries for the web clients (one table).
+  using S = OceanPassShader;
+  auto link = [&](S shader) { return linkPass(api, oceanPassShaderName(shader), oceanPassFragment(api, shader)); };
+  evolve_ = link(slopes_ ? S::Evolve : S::EvolveDisplacement);
+  stockham_ = link(slopes_ ? S::Stockham : S::StockhamSingle);
+  pack_ = link(slopes_ ? S::Pack : S::PackDisplacement);
   if (jacobian) {
-    evolveJacobian_ = link("ocean_evolve_jacobian", OceanPass::Evolve, false, true);
-    stockhamSingle_ = slopes_ ? link("ocean_stockham_single", OceanPass::Stockham, false) : Program();
+    evolveJacobian_ = link(S::EvolveJacobian);
+    stockhamSingle_ = slopes_ ? link(S::StockhamSingle) : Program();
     for (int s = 0; s < 2; ++s) jacobianTargets_[s] = targetOf(spectra_[s][0], nullptr, "spectrum");
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
   }

@@ -24,8 +24,8 @@ OceanGpuFoam::OceanGpuFoam(int resolution, const ocean::FoamSettings& settings, 
   outputTarget_ = targetOf(output_, nullptr, "foam");
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
-  step_ = linkPass(api, "ocean_foam_step", oceanPassFragment(OceanPass::FoamStep, api));
-  blend_ = linkPass(api, "ocean_foam_blend", oceanPassFragment(OceanPass::FoamBlend, api));
+  step_ = linkPass(api, oceanPassShaderName(OceanPassShader::FoamStep), oceanPassFragment(api, OceanPassShader::FoamStep));
+  blend_ = linkPass(api, oceanPassShaderName(OceanPassShader::FoamBlend), oceanPassFragment(api, OceanPassShader::FoamBlend));
   checkGl("creating the ocean's foam");
 }
 
