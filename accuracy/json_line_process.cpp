@@ -21,8 +21,12 @@ namespace wg::accuracy {
 
 JsonLineProcess::JsonLineProcess(const std::vector<std::string>& argv) {
   if (argv.empty()) throw std::runtime_error("no program to start");
+  // The helper's stderr goes to an unlinked file in the temporary directory (TMPDIR, else
+  // /tmp when TMPDIR names nothing usable), never into the working directory.
   std::error_code ec;
-  std::string pattern = (std::filesystem::temp_directory_path(ec) / "watergraph-helper-XXXXXX").string();
+  std::filesystem::path dir = std::filesystem::temp_directory_path(ec);
+  if (ec || dir.empty()) dir = "/tmp";
+  std::string pattern = (dir / "watergraph-helper-XXXXXX").string();
   stderrFile_ = ::mkstemp(pattern.data());
   if (stderrFile_ < 0) throw std::runtime_error("cannot make a temporary file for " + argv[0] + "'s messages");
   ::unlink(pattern.c_str());
