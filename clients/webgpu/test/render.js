@@ -4,7 +4,10 @@
 // matrices, time phases, sun, parameters), the water grid and the pass plan come from the
 // three.js client, whose values tests/ecosystem/three_client_test.cpp checks against the runtime;
 // the runtime's scene shaders are translated to WGSL by naga; the graph's shaders, bindings and
-// drawing are WebGPU's. Reports through window.wgResult (the PNG as a data URL).
+// drawing are WebGPU's. render_webgpu.mjs calls window.wgRender(job) once per frame in one
+// page; what does not depend on the job (naga's module, a scene description and its shaders
+// translated by naga) is made once and kept, each frame gets its own device. Each call
+// resolves to { ok, png (base64), adapter } or { ok: false, error }.
 import { loadWaterGraph, createWaterGridGeometry } from '/three/watergraph-three.js';
 import { loadSceneDescription, presetCamera } from '/three/watergraph-scene.js';
 import { glPerspective, planPasses } from '/three/watergraph-passes.js';
@@ -13,7 +16,22 @@ import { renderGraph } from '/webgpu/watergraph-webgpu.js';
 import { oceanPassesWgsl, WebgpuOceanSimulation } from '/webgpu/watergraph-webgpu-ocean.js';
 import { sceneShadersWgsl } from '/webgpu/watergraph-webgpu-scene-shaders.js';
 
-const q = new URLSearchParams(location.search);
+// What frames share: naga's module, and each description (by URL) with its translated
+// scene shaders (by the G-buffer inputs they are made for).
+let nagaReady = null;
+const descriptions = new Map();
+const naga = { parseGlsl, validate, writeWgsl };
+
+function sharedDescription(url) {
+  if (!descriptions.has(url)) descriptions.set(url, { description: loadSceneDescription(url), sceneShaders: new Map() });
+  return descriptions.get(url);
+}
+
+function sharedSceneShaders(shared, description, gbufferInputs) {
+  const key = JSON.stringify(gbufferInputs);
+  if (!shared.sceneShaders.has(key)) shared.sceneShaders.set(key, sceneShadersWgsl(description, naga, gbufferInputs));
+  return shared.sceneShaders.get(key);
+}
 
 // The client's THREE.BufferGeometry (attributes named as the manifest's inputs) as plain arrays.
 function runnerGeometry(g) {
@@ -21,13 +39,15 @@ function runnerGeometry(g) {
     index: Uint32Array.from(g.index.array) };
 }
 
-async function main() {
+async function renderJob(job) {
+  const q = new Map(Object.entries(job).map(([k, v]) => [k, String(v)]));
   if (!navigator.gpu) throw new Error('no navigator.gpu: WebGPU is not enabled in this browser');
   const adapter = await navigator.gpu.requestAdapter();
   if (!adapter) throw new Error('no WebGPU adapter');
   const device = await adapter.requestDevice();
   const width = Number(q.get('width')), height = Number(q.get('height'));
-  const description = await loadSceneDescription(q.get('description'));
+  const shared = sharedDescription(q.get('description'));
+  const description = await shared.description;
   const camera = presetCamera(description, q.get('camera'), width / height);
   // The runtime's projection (glm::perspective), for the water's uniforms and the scene alike.
   glPerspective(camera.fov, camera.aspect, camera.near, camera.far, camera.projectionMatrix);
@@ -44,15 +64,16 @@ async function main() {
     const blob = await (await fetch(new URL(t.file, manifestUrl))).blob();
     textures[t.name] = await createImageBitmap(blob, { imageOrientation: 'flipY', premultiplyAlpha: 'none', colorSpaceConversion: 'none' });
   }
-  await initNaga({ module_or_path: new URL('/webgpu/node_modules/naga-wasm/dist/wasm/naga_bg.wasm', location.href) });
+  nagaReady ??= initNaga({ module_or_path: new URL('/webgpu/node_modules/naga-wasm/dist/wasm/naga_bg.wasm', location.href) });
+  await nagaReady;
   // Deferred water's G-buffer reads the graph's varyings at their WGSL locations.
   const gbufferInputs = manifest.passes.includes('deferred_water')
     ? Object.fromEntries(manifest.webgpu.varyings.map((v) => [v.name, v.location])) : null;
-  const sceneShaders = sceneShadersWgsl(description, { parseGlsl, validate, writeWgsl }, gbufferInputs);
+  const sceneShaders = sharedSceneShaders(shared, description, gbufferInputs);
   // A spectral ocean: the runtime's pass shaders through naga, the compiler's ocean module.
   const ocean = manifest.oceans
     ? new WebgpuOceanSimulation(device, manifest, await import(new URL(manifest.oceans[0].module, manifestUrl).href),
-      oceanPassesWgsl(description, { parseGlsl, validate, writeWgsl }))
+      oceanPassesWgsl(description, naga))
     : null;
   const plan = planPasses(manifest, description, { width, height, environmentSize: description.environment.size });
   const { srgb8 } = await renderGraph(device, {
@@ -73,6 +94,7 @@ async function main() {
   return { png: btoa(binary), adapter: (await adapter.requestAdapterInfo?.())?.architecture ?? adapter.info?.architecture ?? '' };
 }
 
-main().then(
-  (r) => { window.wgResult = { ok: true, ...r }; },
-  (e) => { window.wgResult = { ok: false, error: `${e.name}: ${e.message}` }; });
+window.wgRender = (job) => renderJob(job).then(
+  (r) => ({ ok: true, ...r }),
+  (e) => ({ ok: false, error: `${e.name}: ${e.message}` }));
+window.wgReady = true;

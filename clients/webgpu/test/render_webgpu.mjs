@@ -6,7 +6,8 @@
 //        node render_webgpu.mjs --dir DIR --jobs JOBS.json --description scene.json --size WxH
 //          --time T --grid N [--chromium ...]
 // JOBS.json: [{"manifest": PATH under DIR, "camera": NAME, "png": OUT, "scene": "builtin"|"none"}, ...],
-// all rendered by one browser (a page each); a failed job is reported and the others still run.
+// all rendered by one page; a failed job is reported and the others still run (not after a
+// job that timed out or crashed the page: the page is not trusted with the next).
 // (scene.json from `watergraph scene`: its camera presets, sun, mesh and shaders are the runtime's;
 // --scene none draws the water alone, as `render --scene none`.)
 // Exit status: 0 written; 1 the page failed (message on stderr); 2 usage, or Chromium/WebGPU missing.
@@ -70,22 +71,30 @@ const browser = await chromium.launch({
 }).catch((e) => { server.close(); fail(2, `cannot start Chromium at ${chromiumPath}: ${e.message.split('\n')[0]}`); });
 let code = 0;
 try {
+  // One page renders every job (window.wgRender, test/render.js), so naga and the scene's
+  // translated shaders are made once; a page error is reported with the job it came in.
+  const page = await browser.newPage();
+  const problems = [];
+  page.on('pageerror', (e) => problems.push(e.message));
+  await page.goto(`${origin}/webgpu/test/render.html`);
+  await page.waitForFunction(() => window.wgReady === true, null, { timeout: 60000 });
   for (const job of jobs) {
-    const page = await browser.newPage();
-    const problems = [];
-    page.on('pageerror', (e) => problems.push(e.message));
-    const query = new URLSearchParams({ manifest: `/out/${job.manifest}`, description: `/scene/${path.basename(args.description)}`,
-      width, height, camera: job.camera, time: args.time, grid: args.grid, scene: job.scene });
-    await page.goto(`${origin}/webgpu/test/render.html?${query}`);
+    problems.length = 0;
+    const params = { manifest: `/out/${job.manifest}`, description: `/scene/${path.basename(args.description)}`,
+      width, height, camera: job.camera, time: args.time, grid: args.grid, scene: job.scene };
     // 120 s: a spectral ocean's still frame replays its foam (tens of transforms per cascade).
-    await page.waitForFunction(() => window.wgResult !== undefined, null, { timeout: 120000 });
-    const result = await page.evaluate(() => window.wgResult);
-    await page.close();
+    let timer;
+    const timeout = new Promise((resolve) => {
+      timer = setTimeout(() => resolve({ ok: false, error: 'TimeoutError: the frame took over 120 s' }), 120000);
+    });
+    const result = await Promise.race([page.evaluate((p) => window.wgRender(p), params), timeout])
+      .catch((e) => ({ ok: false, error: `${e.name}: ${e.message.split('\n')[0]}` }));
+    clearTimeout(timer);
     if (!result.ok) {
       process.stderr.write(`render_webgpu: ${job.manifest}: ${[result.error, ...problems].join('\n  ')}\n`);
       // A missing WebGPU is the machine's (2); a job's failure is the graph's or the runner's (1).
       code = /WebGPU is not enabled|no WebGPU adapter/.test(result.error) ? 2 : Math.max(code, 1);
-      if (code === 2) break;
+      if (code === 2 || /TimeoutError|Target closed|crashed/.test(result.error)) break;
     } else {
       await writeFile(job.png, Buffer.from(result.png, 'base64'));
       process.stdout.write(`render_webgpu: ${job.manifest} ${job.camera} scene ${job.scene} ${width}x${height} on WebGPU (${result.adapter}) -> ${job.png}\n`);
