@@ -69,7 +69,7 @@ export async function runCheckJob(device, job) {
       const textures = {};
       for (const t of job.textures) textures[t.name] = { width: t.width, height: t.height, rgba: bytesOfBase64(t.rgba) };
       state.waters.set(job.id, { manifest: job.manifest, wgsl: job.wgsl, plan: job.plan, textures,
-        geometry: gridGeometry(job.grid), sceneShaders: await sceneShadersFor(job.manifest) });
+        geometry: gridGeometry(job.grid), sceneShaders: await sceneShadersFor(job.manifest), keepAlive: {} });
       return { ok: true };
     }
     case 'frame': {
@@ -78,7 +78,7 @@ export async function runCheckJob(device, job) {
       const { linear } = await renderGraph(device, {
         manifest: w.manifest, wgsl: w.wgsl, plan: w.plan, description: state.description, sceneShaders: w.sceneShaders,
         textures: w.textures, camera: job.camera, sun: job.sun, time: job.time, geometry: w.geometry,
-        uniformBytes: bytesOfBase64(job.uniforms).buffer,
+        uniformBytes: bytesOfBase64(job.uniforms).buffer, keepAlive: w.keepAlive,
       });
       return { frame: base64OfBytes(new Uint8Array(linear.buffer)) };
     }

@@ -199,14 +199,19 @@ const FRAME_FORMATS = { rgba16f: { format: 'rgba16float', bytes: 8 }, rgba32f: {
 //   shaders (default the description's sun_direction); geometry: the water grid (Float32Arrays position, normal, uv and a
 //   Uint32Array index); textures: a node texture's name -> ImageBitmap (bottom row first);
 //   ocean, time: for a manifest with "oceans", its WebgpuOceanSimulation
-//   (watergraph-webgpu-ocean.js) and the frame's time in seconds.
+//   (watergraph-webgpu-ocean.js) and the frame's time in seconds; keepAlive: for a series of
+//   frames of one graph (check's), an object given to each: it holds the scene passes (reused
+//   while the description and scene shaders are the same objects) and the frame's modules and
+//   pipelines until the next frame has made its own, since a WebGPU implementation hands back
+//   the pipeline it made for the same descriptor while that one lives (Dawn does): the frames
+//   compile their shaders once instead of once each.
 // The plan's frame is RGBA16F or RGBA32F (planPasses' frameFormat); an RGBA32F frame needs a
 // device with "float32-blendable" (the water blends into it).
 // Returns {linear: Float32Array RGBA with row 0 at the bottom, srgb8: Uint8ClampedArray RGBA top
 // row first, through clamp and the sRGB encoding}.
 export async function renderGraph(device, options) {
   const { manifest, wgsl, plan, description, sceneShaders, drawScene = true, camera, uniformValue, geometry, textures = {},
-    ocean = null, time = 0, uniformBytes = null, sun = null } = options;
+    ocean = null, time = 0, uniformBytes = null, sun = null, keepAlive = null } = options;
   if (manifest.oceans && !ocean) throw new WebgpuRunnerError(`graph '${manifest.graph}' has a spectral ocean: give its simulation (options.ocean)`);
   const webgpu = manifest.webgpu;
   if (!webgpu) throw new WebgpuRunnerError(`graph '${manifest.graph}' was not compiled for wgsl (--target wgsl)`);
@@ -220,7 +225,10 @@ export async function renderGraph(device, options) {
   device.pushErrorScope('validation');
   const module = await compiledModule(device, wgsl, `${manifest.graph}.wgsl`);
   const { targets, resources } = createTargets(device, plan);
-  const scene = drawScene ? new ScenePasses(device, description, sceneShaders) : null;
+  const kept = keepAlive?.scene;
+  const scene = !drawScene ? null
+    : kept && kept.description === description && kept.shaders === sceneShaders ? kept : new ScenePasses(device, description, sceneShaders);
+  const made = [module];  // what keepAlive holds until the next frame
   if (scene && sun) scene.sun = sun;
   const water = waterBindGroup(device, manifest, uniformValue, uniformBytes, textures, resources, ocean);
   const mesh = waterGeometry(device, webgpu, geometry);
@@ -235,6 +243,7 @@ export async function renderGraph(device, options) {
     // Deferred water shades every pixel with the depth test off (the G-buffer has the surface).
     depthStencil: { format: 'depth32float', depthWriteEnabled: !deferred, depthCompare: deferred ? 'always' : 'less-equal' },
   });
+  made.push(waterPipeline);
 
   const encoder = device.createCommandEncoder();
   const clear = description?.clear_color ?? [0, 0, 0, 1];
@@ -255,6 +264,7 @@ export async function renderGraph(device, options) {
         fragment: { module: gbuffer, entryPoint: 'main', targets: [{ format: 'rgba32float' }, { format: 'rgba32float' }] },
         depthStencil: { format: 'depth32float', depthWriteEnabled: true, depthCompare: 'less-equal' },
       });
+      made.push(gbuffer, pipeline);
       const position = targets.water_position, normal = targets.water_normal;
       const pass = encoder.beginRenderPass({
         colorAttachments: [{ view: position.color.createView(), clearValue: [0, 0, 0, 1], loadOp: 'clear', storeOp: 'store' },
@@ -282,6 +292,10 @@ export async function renderGraph(device, options) {
   const readback = device.createBuffer({ size: bytesPerRow * height, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
   encoder.copyTextureToBuffer({ texture: targets.frame.color }, { buffer: readback, bytesPerRow }, [width, height]);
   device.queue.submit([encoder.finish()]);
+  if (keepAlive) {
+    keepAlive.scene = scene;
+    keepAlive.made = made;
+  }
   const failure = await device.popErrorScope();
   if (failure) throw new WebgpuRunnerError(`WebGPU validation: ${failure.message}`);
   await readback.mapAsync(GPUMapMode.READ);

@@ -3,7 +3,7 @@
 // Chromium's WebGPU on SwiftShader (accuracy/wgsl_water_frames.h), every sampled water pixel
 // held to the double reference on the inputs read back, within the same bounds as on glsl330
 // and vk450. One Chromium per test (its start takes seconds): the API test checks a graph and
-// the same graph with a wrong constant in its WGSL; the CLI test checks a graph it passes and
+// a graph with a wrong node in its WGSL; the CLI test checks a graph it passes and
 // one it cannot read back (exit 1, the reason named). Skipped, with the reason, without
 // Node.js or Chromium; without them check says it did not run and exits 2.
 #include <gtest/gtest.h>
@@ -54,45 +54,47 @@ std::optional<CompileResult> compileForWgsl(const std::string& path) {
   return compileGraph(*graph, defaultRegistry(), o, diags);
 }
 
-// The lake: forward water reading the scene's depth, refraction and reflection and a node
-// texture, every one read back through a WGSL tap module. Its Fresnel's water index 1.333 (the
-// f32 literal as the translator prints it) off by 1e-3 puts the grazing views' reflectance
-// outside the bound.
-TEST_F(WgslCheck, AGraphAgreesWithTheDoubleReferenceAndAWrongConstantFails) {
+// The ocean: forward water reading the environment cube and a node texture, both look-ups
+// read back through a WGSL tap module; then, on the same executor, the lake with a wrong node
+// in its WGSL (its Schlick F0 0.02 -> 0.0201, as CheckCli.FailsWhenANodeIsWrong on glsl330),
+// which must fail.
+TEST_F(WgslCheck, AGraphAgreesWithTheDoubleReferenceAndAWrongNodeFails) {
   needChromium();
   auto executor = makeWgslExecutor({test::nodeOnPath(), test::sourcePath("clients/webgpu")});
-  const std::string path = test::sourcePath("graphs/lake.json");
-  auto result = compileForWgsl(path);
-  ASSERT_TRUE(result);
   CheckOptions options;
   options.width = 48;
   options.height = 27;
-  options.referenceStride = 4;
-  CheckReport report = checkGraph(*result, path, *executor, options);
+  const std::string ocean = test::sourcePath("graphs/ocean.json");
+  auto result = compileForWgsl(ocean);
+  ASSERT_TRUE(result);
+  CheckReport report = checkGraph(*result, ocean, *executor, options);
   EXPECT_EQ(report.targetLabel, "wgsl");
   EXPECT_EQ(report.reference, "cpu");
   EXPECT_EQ(report.nanInf(), 0);
   EXPECT_EQ(report.overBound(), 0) << formatCheckText(report);
-  EXPECT_GT(report.samples(), 50) << formatCheckText(report);
+  EXPECT_GT(report.samples(), 80) << formatCheckText(report);
   EXPECT_NE(formatCheckText(report).find("on wgsl, 48x27"), std::string::npos) << formatCheckText(report);
-  std::printf("[ wgsl     ] lake: %d px compared, worst error/bound %.3g, max %.2e (%s)\n", report.samples(),
+  std::printf("[ wgsl     ] ocean: %d px compared, worst error/bound %.3g, max %.2e (%s)\n", report.samples(),
               report.worstRatio(), report.maxError(), executor->deviceName().c_str());
 
-  options.mutation = {"1.333", "1.334"};
-  CheckReport wrong = checkGraph(*result, path, *executor, options);
-  EXPECT_GT(wrong.overBound(), 0) << "a wrong refractive index in the WGSL passed check\n" << formatCheckText(wrong);
+  const std::string lake = test::sourcePath("graphs/lake.json");
+  auto lakeResult = compileForWgsl(lake);
+  ASSERT_TRUE(lakeResult);
+  options.mutation = {"wg_fresnel_schlick(n8_fresnel_t0, 0.02)", "wg_fresnel_schlick(n8_fresnel_t0, 0.0201)"};
+  CheckReport wrong = checkGraph(*lakeResult, lake, *executor, options);
+  EXPECT_GT(wrong.overBound(), 0) << "a wrong Fresnel F0 in the WGSL passed check\n" << formatCheckText(wrong);
   EXPECT_TRUE(wrong.failed());
 }
 
-// The CLI, one Chromium for both graphs: the pool passes; the spectral ocean, whose maps the
+// The CLI, one Chromium for both graphs: the lake passes; the spectral ocean, whose maps the
 // WebGPU check does not simulate, is an error naming why (exit 1), never a pass.
 TEST_F(WgslCheck, TheCliPassesAGraphAndNamesWhatItCannotReadBack) {
   needChromium();
   test::CmdResult r = test::runSplit(test::shellQuote(test::watergraphBinary()) + " check " +
-                                     test::shellQuote(test::sourcePath("graphs/pool.json")) + " " +
+                                     test::shellQuote(test::sourcePath("graphs/lake.json")) + " " +
                                      test::shellQuote(test::sourcePath("graphs/open_ocean.json")) + " --target wgsl --size 48x27");
   EXPECT_EQ(r.exit, 1) << r.out << r.err;
-  EXPECT_NE(r.out.find("check " + test::sourcePath("graphs/pool.json") + " on wgsl"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("check " + test::sourcePath("graphs/lake.json") + " on wgsl"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("reference: cpu"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ok: 0 NaN/Inf pixel values, 0 pixels over the error bound"), std::string::npos) << r.out;
   EXPECT_NE(r.err.find("open_ocean.json: error: not read back on wgsl: the WebGPU check has no spectral ocean simulation"),
