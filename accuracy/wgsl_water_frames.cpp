@@ -61,10 +61,15 @@ class WgslWaterFrames : public WaterFrames {
                   const rt::RenderSettings& settings)
       : session_(session), what_(module.name), width_(settings.width), height_(settings.height) {
     const Manifest& manifest = result.manifest;
-    if (!manifest.oceans.empty())
-      throw RuntimeError(RuntimeError::Kind::Manifest,
-                         "not read back on wgsl: the WebGPU check has no spectral ocean simulation (its maps need the "
-                         "graph's ocean module in the page)");
+    // A spectral ocean: the runner simulates it (watergraph-webgpu-ocean.js) from the module the
+    // compile writes for web targets (codegen/ocean_module_js.h).
+    std::string oceanModule;
+    if (!manifest.oceans.empty()) {
+      for (const OutputFile& f : result.files)
+        if (f.name == manifest.oceanModule) oceanModule = f.contents;
+      if (oceanModule.empty())
+        throw RuntimeError(RuntimeError::Kind::Manifest, "the graph's spectral ocean has no ocean module (compile it for a web target)");
+    }
     rt::PlanOptions po;
     po.width = settings.width;
     po.height = settings.height;
@@ -124,7 +129,8 @@ class WgslWaterFrames : public WaterFrames {
                        {{"vertices", base64Text(grid.vertices.data(), grid.vertices.size() * sizeof(float))},
                         {"indices", base64Text(grid.indices.data(), grid.indices.size() * sizeof(unsigned))},
                         {"floatsPerVertex", grid.floatsPerVertex}}},
-                      {"textures", std::move(textures)}},
+                      {"textures", std::move(textures)},
+                      {"oceanModule", oceanModule}},
                      kWgslWaterSeconds, what_);
   }
 

@@ -14,9 +14,10 @@
 namespace wg::accuracy {
 
 // `module`: the WGSL text (a ShaderSource of stage GL_FRAGMENT_SHADER holding both entry
-// points). Throws rt::RuntimeError: Kind::Manifest for what the runner cannot draw (a spectral
-// ocean, a mipmapped node texture), rt::TextureLoadError for a node texture that does not
-// load, Kind::Driver for Tint's or WebGPU's errors.
+// points). A spectral ocean is simulated in the page from the compile's ocean module. Throws
+// rt::RuntimeError: Kind::Manifest for what the runner cannot draw (a mipmapped node texture),
+// rt::TextureLoadError for a node texture that does not load, Kind::Driver for Tint's or
+// WebGPU's errors.
 std::unique_ptr<WaterFrames> makeWgslWaterFrames(WebgpuSession& session, const CompileResult& result,
                                                  const rt::ShaderSource& module, const rt::RenderSettings& settings);
 

@@ -7,12 +7,14 @@
 //   {kind: "scene", description}: the scene description (`watergraph scene`) for every water;
 //   {kind: "water", id, manifest, wgsl, plan: runtime/pass_plan's targets in planPasses' form,
 //     grid: {vertices, indices (base64 float32 / uint32), floatsPerVertex}, textures:
-//     [{name, width, height, rgba (base64, row 0 first)}]};
+//     [{name, width, height, rgba (base64, row 0 first)}], oceanModule: a spectral ocean's
+//     <graph>.ocean.js text (watergraph-webgpu-ocean.js simulates it at each frame's time)};
 //   {kind: "frame", water: id, uniforms (base64 bytes), camera: {view, projection, position},
 //     sun, time} -> {frame: base64 of the float32 RGBA frame, row 0 at the bottom};
 //   {kind: "drop", water: id}.
 // Answers {ok: true} to the others; throws (the server answers {error}) for what it cannot run.
 import { renderGraph } from './watergraph-webgpu.js';
+import { oceanPassesWgsl, WebgpuOceanSimulation } from './watergraph-webgpu-ocean.js';
 import { sceneShadersWgsl } from './watergraph-webgpu-scene-shaders.js';
 
 function bytesOfBase64(text) {
@@ -42,7 +44,19 @@ function gridGeometry(grid) {
   return { position, normal, uv, index: new Uint32Array(bytesOfBase64(grid.indices).buffer) };
 }
 
-const state = { description: null, naga: null, sceneShaders: new Map(), waters: new Map() };
+const state = { description: null, naga: null, sceneShaders: new Map(), oceanPasses: null, waters: new Map() };
+
+// A spectral ocean's simulation from the compiler's ocean module (its text, imported as a module).
+async function oceanSimulation(device, manifest, moduleText) {
+  if (!manifest.oceans) return null;
+  state.oceanPasses ??= oceanPassesWgsl(state.description, state.naga);
+  const url = URL.createObjectURL(new Blob([moduleText], { type: 'text/javascript' }));
+  try {
+    return new WebgpuOceanSimulation(device, manifest, await import(url), state.oceanPasses);
+  } finally {
+    URL.revokeObjectURL(url);
+  }
+}
 
 // The runtime's scene shaders through naga, once per set of G-buffer inputs.
 async function sceneShadersFor(manifest) {
@@ -68,8 +82,10 @@ export async function runCheckJob(device, job) {
       if (!state.description) throw new Error('a water before the scene');
       const textures = {};
       for (const t of job.textures) textures[t.name] = { width: t.width, height: t.height, rgba: bytesOfBase64(t.rgba) };
+      const sceneShaders = await sceneShadersFor(job.manifest);
       state.waters.set(job.id, { manifest: job.manifest, wgsl: job.wgsl, plan: job.plan, textures,
-        geometry: gridGeometry(job.grid), sceneShaders: await sceneShadersFor(job.manifest), keepAlive: {} });
+        geometry: gridGeometry(job.grid), sceneShaders, keepAlive: {},
+        ocean: await oceanSimulation(device, job.manifest, job.oceanModule) });
       return { ok: true };
     }
     case 'frame': {
@@ -77,7 +93,7 @@ export async function runCheckJob(device, job) {
       if (!w) throw new Error(`no water ${job.water}`);
       const { linear } = await renderGraph(device, {
         manifest: w.manifest, wgsl: w.wgsl, plan: w.plan, description: state.description, sceneShaders: w.sceneShaders,
-        textures: w.textures, camera: job.camera, sun: job.sun, time: job.time, geometry: w.geometry,
+        textures: w.textures, camera: job.camera, sun: job.sun, time: job.time, geometry: w.geometry, ocean: w.ocean,
         uniformBytes: bytesOfBase64(job.uniforms).buffer, keepAlive: w.keepAlive,
       });
       return { frame: base64OfBytes(new Uint8Array(linear.buffer)) };

@@ -3,8 +3,8 @@
 // Chromium's WebGPU on SwiftShader (accuracy/wgsl_water_frames.h), every sampled water pixel
 // held to the double reference on the inputs read back, within the same bounds as on glsl330
 // and vk450. One Chromium per test (its start takes seconds): the API test checks a graph and
-// a graph with a wrong node in its WGSL; the CLI test checks a graph it passes and
-// one it cannot read back (exit 1, the reason named). Skipped, with the reason, without
+// a graph with a wrong node in its WGSL; the CLI test checks a graph it passes and one with
+// no WGSL form (exit 1, the node named). Skipped, with the reason, without
 // Node.js or Chromium; without them check says it did not run and exits 2.
 #include <gtest/gtest.h>
 
@@ -98,21 +98,20 @@ TEST_F(WgslCheck, AGraphAgreesWithTheDoubleReferenceAndAWrongNodeFails) {
   EXPECT_TRUE(wrong.failed());
 }
 
-// The CLI, one Chromium for both graphs: the lake passes; the spectral ocean, whose maps the
-// WebGPU check does not simulate, is an error naming why (exit 1), never a pass.
-TEST_F(WgslCheck, TheCliPassesAGraphAndNamesWhatItCannotReadBack) {
+// The CLI, one Chromium for both graphs: the lake passes; caustic_pool, whose glsl_function node
+// has no WGSL form, is an error at that node (exit 1), never a pass.
+TEST_F(WgslCheck, TheCliPassesAGraphAndNamesWhatItCannotCheck) {
   needChromium();
   test::CmdResult r = test::runSplit(test::shellQuote(test::watergraphBinary()) + " check " +
                                      test::shellQuote(test::sourcePath("graphs/lake.json")) + " " +
-                                     test::shellQuote(test::sourcePath("graphs/open_ocean.json")) + " --target wgsl --size 48x27");
+                                     test::shellQuote(test::sourcePath("graphs/caustic_pool.json")) + " --target wgsl --size 48x27");
   EXPECT_EQ(r.exit, 1) << r.out << r.err;
   EXPECT_NE(r.out.find("check " + test::sourcePath("graphs/lake.json") + " on wgsl"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("reference: cpu"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("ok: 0 NaN/Inf pixel values, 0 pixels over the error bound"), std::string::npos) << r.out;
-  EXPECT_NE(r.err.find("open_ocean.json: error: not read back on wgsl: the WebGPU check has no spectral ocean simulation"),
-            std::string::npos)
+  EXPECT_NE(r.err.find("error: [WG045] no WGSL form (--target wgsl): a glsl_function node's file is GLSL only"), std::string::npos)
       << r.err;
-  EXPECT_EQ(r.out.find("check " + test::sourcePath("graphs/open_ocean.json")), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("check " + test::sourcePath("graphs/caustic_pool.json")), std::string::npos) << r.out;
 }
 
 // Without what it needs check does not run, says why, and exits 2 as a missing GL context
