@@ -239,12 +239,13 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
   CheckReport report;
   report.graph = graphFile;
   report.target = target;
+  report.targetLabel = executor.targetLabel();
   report.width = width;
   report.height = height;
   for (const auto& p : compiled.manifest.passScales)
     report.scaledPasses.push_back(std::string(renderPassRow(p.pass).name) + " at " + formatScale(p.scale));
   const bool underwater = result.manifest.lists(RenderPass::DeferredWater);
-  std::vector<rt::ShaderSource> sources = rt::waterShaderSources(result, target);
+  std::vector<rt::ShaderSource> sources = executor.waterShaders(result);
   if (options.mutation.active()) {
     // The user's deliberate edit (check --mutate), not a search the check decides on.
     bool found = false;
@@ -267,9 +268,11 @@ CheckReport checkGraph(const CompileResult& compiled, const std::string& graphFi
     shaders = waterPlan(result, target);
     report.reference = planReadback(result, *shaders, &plan);
   }
-  // es300 renders the sweep for NaN and Inf only (docs/accuracy.md); glsl330 and vk450
-  // (lavapipe: llvmpipe's rasteriser, the same pixel quads) are compared.
-  if (report.reference.empty() && target == Target::Es300) report.reference = "reference on glsl330 and vk450 only";
+  // es300 renders the sweep for NaN and Inf only (docs/accuracy.md); glsl330, vk450
+  // (lavapipe: llvmpipe's rasteriser, the same pixel quads) and wgsl (f32 everywhere; its
+  // module shares es300's plan, so the executor's target is es300) are compared.
+  if (report.reference.empty() && target == Target::Es300 && report.targetLabel == targetName(Target::Es300))
+    report.reference = "reference on glsl330, vk450 and wgsl only";
   const bool compare = report.reference.empty();
   if (compare) report.reference = "cpu";
   // Everything the check holds at once, estimated before the first target is made
@@ -420,7 +423,7 @@ rt::Image errorMapImage(const CheckReport& report, const ViewTransform& view) {
 std::string formatCheckText(const CheckReport& r) {
   char buf[256];
   std::snprintf(buf, sizeof buf, "check %s on %s, %dx%d RGBA32F, reference: %s\n", r.graph.c_str(),
-                std::string(targetName(r.target)).c_str(), r.width, r.height, r.reference.c_str());
+                (r.targetLabel.empty() ? std::string(targetName(r.target)) : r.targetLabel).c_str(), r.width, r.height, r.reference.c_str());
   std::string out = buf;
   if (!r.scaledPasses.empty()) {
     out += "  compared at full scene resolution: the graph renders";

@@ -2,7 +2,7 @@
 // `watergraph check`: a compiled graph rendered into an RGBA32F frame over a sweep of
 // views — camera elevation from grazing to top-down, under water when the graph has the
 // deferred underwater pass, times up to 1e6 s, sun positions — counting NaN and Inf
-// pixels. On glsl330 and vk450 the frame is compared, on a grid of sampled water pixels, with the
+// pixels. On glsl330, vk450 and wgsl the frame is compared, on a grid of sampled water pixels, with the
 // double reference of the graph's fragment stage evaluated on the inputs the GPU's
 // fragment shader had there, read back (accuracy/readback.h: varyings of the displaced
 // surface, depth, scene and node texture look-ups), and each sample is held to the
@@ -51,6 +51,7 @@ struct CheckViewResult {
 struct CheckReport {
   std::string graph;
   Target target = Target::Glsl330;
+  std::string targetLabel;  // what the report names: the target's name, or "wgsl" (whose target is es300's plan)
   int width = 0, height = 0;
   std::string reference;  // "cpu" when compared, else why not
   // The graph's scene passes below the frame's size ("depth_prepass at 0.5"): check renders

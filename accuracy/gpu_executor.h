@@ -6,7 +6,8 @@
 // (vk_executor.cpp): vk450 on Vulkan 1.3 (lavapipe), running SPIR-V: for check the
 // compile's own modules, the ones `compile --target vk450` writes; for the probe the probe
 // shader's vk450 text through the same glslang path. WebGPU (wgsl_executor.cpp): the wgsl
-// target's module of the probe plan, in headless Chromium's WebGPU through Node.js (probe only).
+// target's modules (the probe plan's; for check the compile's GRAPH.wgsl and its tap modules)
+// in headless Chromium's WebGPU through Node.js.
 #include <array>
 #include <memory>
 #include <optional>
@@ -17,6 +18,7 @@
 #include "accuracy/probe_cases.h"
 #include "codegen/compile.h"
 #include "codegen/emit_glsl.h"
+#include "codegen/readback_taps.h"
 #include "runtime/renderer.h"
 
 namespace wg::accuracy {
@@ -84,6 +86,15 @@ class GpuExecutor {
   virtual std::vector<std::array<float, 4>> runProbe(const EmitResult& shader, const Program& program,
                                                      const std::vector<ProbeCase>& cases, const std::string& what) = 0;
 
+  // The water shaders check renders of `result` (compiled for this target): the target's GLSL
+  // (rt::waterShaderSources), or for WGSL the compile's module as one source (stage
+  // GL_FRAGMENT_SHADER, both entry points in its text). A mutation (check --mutate) edits these.
+  virtual std::vector<rt::ShaderSource> waterShaders(const CompileResult& result);
+  // `water` with the fragment stage written as the read-back tap frame `frame` holding
+  // `channels` (codegen/readback_taps.h), from `shaders`, the plan `water` was emitted from.
+  virtual std::vector<rt::ShaderSource> tapFrameShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders,
+                                                        const std::vector<TapChannel>& channels, int frame);
+
   // Frames of `result` (compiled for this target). `water` is the target's water shaders as
   // rt::waterShaderSources gives them; `edited` says they were changed (tap shaders, a
   // mutation): GL compiles the texts either way, Vulkan runs the compile's SPIR-V modules
@@ -107,7 +118,7 @@ std::unique_ptr<GpuExecutor> makeGpuExecutor(Target target, const ExecutorOption
 std::unique_ptr<GpuExecutor> makeGlExecutor(Target target);
 std::unique_ptr<GpuExecutor> makeVkExecutor(const ExecutorOptions& options);
 
-// What the WebGPU executor runs: Node.js and the client folder holding probe_server.mjs and
+// What the WebGPU executor runs: Node.js and the client folder holding executor_server.mjs and
 // its npm packages (clients/webgpu), and the Chromium it starts.
 struct WebgpuTools {
   std::string node;       // the node executable
@@ -115,9 +126,10 @@ struct WebgpuTools {
   std::string chromium = "/usr/bin/chromium";
 };
 
-// The WebGPU executor (probe only: waterFrames throws). Throws rt::RuntimeError
+// The WebGPU executor: probes, and check's frames of a graph compiled for es300 with
+// CompileOptions::wgsl (accuracy/wgsl_water_frames.h). Throws rt::RuntimeError
 // (Kind::Environment) when the page cannot run WebGPU: Chromium missing or not starting, no
-// adapter; the message says why the probe did not run.
+// adapter; the message says why the probe or check did not run.
 std::unique_ptr<GpuExecutor> makeWgslExecutor(const WebgpuTools& tools);
 
 // A GL executor on the GL context current on this thread (made by the caller), for

@@ -121,11 +121,15 @@ std::string planReadback(const CompileResult& result, const ShaderPlan& shaders,
   return "";
 }
 
-std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, Target target,
-                                         const ReadbackPlan& plan, int frame) {
+std::vector<TapChannel> tapFrameChannels(const ReadbackPlan& plan, int frame) {
   std::vector<TapChannel> channels;
   for (size_t c = 3 * static_cast<size_t>(frame); c < plan.channels.size() && channels.size() < 3; ++c)
     channels.push_back(plan.channels[c]);
+  return channels;
+}
+
+std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, Target target,
+                                         const std::vector<TapChannel>& channels, int frame) {
   std::vector<rt::ShaderSource> out = water;
   for (auto& stage : out) {
     if (stage.stage != GL_FRAGMENT_SHADER) continue;
@@ -133,6 +137,11 @@ std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& wa
     stage.name += " (read-back " + std::to_string(frame) + ")";
   }
   return out;
+}
+
+std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, Target target,
+                                         const ReadbackPlan& plan, int frame) {
+  return tapShaders(water, shaders, target, tapFrameChannels(plan, frame), frame);
 }
 
 bool ReadbackImage::water(int px, int py, const ReadbackPlan& plan) const {
@@ -158,7 +167,7 @@ ReadbackRenderer::ReadbackRenderer(GpuExecutor& executor, const CompileResult& r
                                    const rt::RenderSettings& settings, const ShaderMutation& mutation)
     : plan_(std::move(plan)) {
   for (int f = 0; f < plan_.frames(); ++f) {
-    std::vector<rt::ShaderSource> taps = tapShaders(water, shaders, executor.target(), plan_, f);
+    std::vector<rt::ShaderSource> taps = executor.tapFrameShaders(water, shaders, tapFrameChannels(plan_, f), f);
     for (auto& stage : taps)
       if (stage.stage == GL_FRAGMENT_SHADER) mutateText(stage.text, mutation);
     renderers_.push_back(executor.waterFrames(result, taps, /*edited=*/true, settings));

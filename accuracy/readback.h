@@ -70,8 +70,14 @@ inline constexpr float kWaterMark = -3.0f;
 // texture whole), or the G-buffer read other than at this pixel.
 std::string planReadback(const CompileResult& result, const ShaderPlan& shaders, ReadbackPlan* plan);
 
-// `water` (the target's shaders, rt::waterShaderSources) with the fragment stage emitted as
-// the tap frame of channels 3*frame .. 3*frame+2 of `plan`.
+// The channels tap frame `frame` writes: 3*frame .. 3*frame+2 of `plan` (GpuExecutor::tapFrameShaders
+// writes the frame's shaders for its target).
+std::vector<TapChannel> tapFrameChannels(const ReadbackPlan& plan, int frame);
+
+// `water` (a GLSL target's shaders, rt::waterShaderSources) with the fragment stage emitted as
+// the tap frame writing `channels`, or tap frame `frame` of `plan`.
+std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, Target target,
+                                         const std::vector<TapChannel>& channels, int frame);
 std::vector<rt::ShaderSource> tapShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders, Target target,
                                          const ReadbackPlan& plan, int frame);
 

@@ -1,6 +1,7 @@
 // The WebGPU side of GpuExecutor (gpu_executor.h): the probe plan's WGSL module
 // (codegen/emit_wgsl.h emitWgslProbe) run in headless Chromium's WebGPU by
-// clients/webgpu/probe_server.mjs, one Chromium for every probe of the executor. As on GL and
+// clients/webgpu/executor_server.mjs, one Chromium for every probe and check of the executor
+// (accuracy/webgpu_session.h); check's frames are accuracy/wgsl_water_frames.h. As on GL and
 // Vulkan, each case is one pixel of an RGBA32F target drawn by a full-screen triangle
 // restricted to it; here the case's uniforms are written at the module's WGSL offsets
 // (wgslUniformLayout), each scene texture is a 1x1 RGBA32F texture holding the case's texel
@@ -11,10 +12,13 @@
 #include <cstdint>
 
 #include "accuracy/gpu_executor.h"
-#include "accuracy/json_line_process.h"
+#include "accuracy/base64_text.h"
+#include "accuracy/webgpu_session.h"
+#include "accuracy/wgsl_water_frames.h"
 #include "accuracy/probe_gpu.h"
 #include "codegen/compile_wgsl.h"
 #include "codegen/emit_wgsl.h"
+#include "codegen/readback_taps.h"
 #include "nodes/texture_source.h"
 #include "runtime/runtime_error.h"
 
@@ -23,26 +27,9 @@ namespace {
 
 using rt::RuntimeError;
 
-// How long Chromium may take to start and hand out an adapter, and to run one probe shader
-// over its cases (SwiftShader compiles the library's functions on the CPU).
-constexpr int kWebgpuStartSeconds = 120;
+// How long one probe shader may take over its cases (SwiftShader compiles the library's
+// functions on the CPU).
 constexpr int kWebgpuProbeSeconds = 300;
-
-std::string base64OfTexels(const std::vector<std::uint8_t>& bytes) {
-  static const char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    std::uint32_t v = std::uint32_t(bytes[i]) << 16;
-    if (i + 1 < bytes.size()) v |= std::uint32_t(bytes[i + 1]) << 8;
-    if (i + 2 < bytes.size()) v |= bytes[i + 2];
-    out += digits[(v >> 18) & 63];
-    out += digits[(v >> 12) & 63];
-    out += i + 1 < bytes.size() ? digits[(v >> 6) & 63] : '=';
-    out += i + 2 < bytes.size() ? digits[v & 63] : '=';
-  }
-  return out;
-}
 
 // One uniform's value at its offset in the buffer's 32-bit words (WGSL's uniform layout:
 // a mat3's columns padded to 16 bytes, a bool as a u32).
@@ -63,22 +50,10 @@ void writeWgslUniform(std::vector<std::uint32_t>& words, const WgslUniformMember
 
 class WgslExecutor : public GpuExecutor {
  public:
-  explicit WgslExecutor(const WebgpuTools& tools) {
-    try {
-      helper_ = std::make_unique<JsonLineProcess>(
-          std::vector<std::string>{tools.node, tools.clientDir + "/probe_server.mjs", "--chromium", tools.chromium});
-      nlohmann::json ready = helper_->receive(kWebgpuStartSeconds);
-      if (ready.contains("skipped"))
-        throw RuntimeError(RuntimeError::Kind::Environment, "WebGPU is not available: " + ready["skipped"].get<std::string>());
-      device_ = ready.value("device", std::string("WebGPU"));
-    } catch (const std::runtime_error& e) {
-      if (dynamic_cast<const RuntimeError*>(&e)) throw;
-      throw RuntimeError(RuntimeError::Kind::Environment, std::string("the WebGPU helper did not start: ") + e.what());
-    }
-  }
+  explicit WgslExecutor(const WebgpuTools& tools) : session_(tools) {}
   Target target() const override { return Target::Es300; }
   std::string targetLabel() const override { return kWgslTargetName; }
-  std::string deviceName() const override { return device_; }
+  std::string deviceName() const override { return session_.device(); }
 
   std::optional<EmitResult> probeShader(const Program& program, const std::string& sourceName, Diagnostics& diags) override {
     try {
@@ -119,7 +94,7 @@ class WgslExecutor : public GpuExecutor {
         entry["kind"] = "file";
         entry["width"] = img->width;
         entry["height"] = img->height;
-        entry["rgba"] = base64OfTexels(img->rgba);
+        entry["rgba"] = base64Text(img->rgba.data(), img->rgba.size());
         entry["wrap"] = std::string(wrapName(t.sampler.wrap));
         entry["filter"] = std::string(filterName(t.sampler.filter));
         entry["srgb"] = t.sampler.colorSpace == TextureColorSpace::Srgb;
@@ -145,15 +120,7 @@ class WgslExecutor : public GpuExecutor {
       runs.push_back({{"uniforms", words}, {"texels", std::move(texels)}});
     }
     request["cases"] = std::move(runs);
-    nlohmann::json reply;
-    try {
-      helper_->send(request);
-      reply = helper_->receive(kWebgpuProbeSeconds);
-    } catch (const std::runtime_error& e) {
-      if (dynamic_cast<const RuntimeError*>(&e)) throw;
-      throw RuntimeError(RuntimeError::Kind::Environment, what + ": the WebGPU helper failed: " + e.what());
-    }
-    if (reply.contains("error")) throw RuntimeError(RuntimeError::Kind::Driver, what + ": " + reply["error"].get<std::string>());
+    nlohmann::json reply = session_.request(request, kWebgpuProbeSeconds, what);
     const nlohmann::json& pixels = reply.at("pixels");
     if (!pixels.is_array() || pixels.size() != 4 * cases.size())
       throw RuntimeError(RuntimeError::Kind::Driver, what + ": the WebGPU helper returned " + std::to_string(pixels.size()) +
@@ -164,14 +131,35 @@ class WgslExecutor : public GpuExecutor {
     return out;
   }
 
-  std::unique_ptr<WaterFrames> waterFrames(const CompileResult&, const std::vector<rt::ShaderSource>&, bool,
-                                           const rt::RenderSettings&) override {
-    throw RuntimeError(RuntimeError::Kind::Manifest, "the WebGPU executor runs probes; it renders no water frames");
+  // check: the compile's WGSL module (compiled with CompileOptions::wgsl) as one source.
+  std::vector<rt::ShaderSource> waterShaders(const CompileResult& result) override {
+    std::string file;
+    for (const ManifestTarget& t : result.manifest.targets)
+      if (t.name == kWgslTargetName && !t.files.empty()) file = t.files.front().file;
+    for (const OutputFile& f : result.files)
+      if (f.name == file) return {{GL_FRAGMENT_SHADER, f.name, f.contents}};
+    throw RuntimeError(RuntimeError::Kind::Manifest, "the graph was compiled without the wgsl target (CompileOptions::wgsl)");
+  }
+
+  // A tap frame: the plan's WGSL module with the tap fragment stage (codegen/readback_taps.h).
+  std::vector<rt::ShaderSource> tapFrameShaders(const std::vector<rt::ShaderSource>& water, const ShaderPlan& shaders,
+                                                const std::vector<TapChannel>& channels, int frame) override {
+    try {
+      return {{GL_FRAGMENT_SHADER, water.at(0).name + " (read-back " + std::to_string(frame) + ")",
+               emitTapModuleWgsl(shaders, channels)}};
+    } catch (const WgslRefused& r) {
+      throw RuntimeError(RuntimeError::Kind::Manifest, "the read-back frame has no WGSL form: " + r.message);
+    }
+  }
+
+  std::unique_ptr<WaterFrames> waterFrames(const CompileResult& result, const std::vector<rt::ShaderSource>& water, bool,
+                                           const rt::RenderSettings& settings) override {
+    if (water.size() != 1) throw RuntimeError(RuntimeError::Kind::Manifest, "the wgsl water is one module");
+    return makeWgslWaterFrames(session_, result, water.front(), settings);
   }
 
  private:
-  std::unique_ptr<JsonLineProcess> helper_;
-  std::string device_;
+  WebgpuSession session_;
 };
 
 }  // namespace

@@ -12,6 +12,8 @@
 #include "cli/commands.h"
 #include "cli/option_values.h"
 #include "cli/view_flags.h"
+#include "cli/wgsl_checks.h"
+#include "codegen/emit_wgsl.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/check.h"
@@ -47,14 +49,31 @@ struct CheckArgs {
 #ifdef WG_HAVE_RUNTIME
 // The error map of one graph on one target: FILE.png, with -GRAPH for several graphs and
 // -TARGET for several targets (--target all), so none replaces another.
-std::string errorMapFile(const std::string& given, const std::string& graphPath, Target target, bool severalGraphs,
+std::string errorMapFile(const std::string& given, const std::string& graphPath, const std::string& target, bool severalGraphs,
                          bool severalTargets) {
   std::filesystem::path f(given);
   std::string stem = f.stem().string();
   if (severalGraphs) stem += "-" + std::filesystem::path(graphPath).stem().string();
-  if (severalTargets) stem += "-" + std::string(targetName(target));
+  if (severalTargets) stem += "-" + target;
   f.replace_filename(stem + f.extension().string());
   return f.string();
+}
+
+// The WebGPU executor (clients/webgpu/executor_server.mjs: Node.js and headless Chromium).
+// Throws rt::RuntimeError (Kind::Environment: exit 2) naming what is missing: check did not
+// run on wgsl, and never passes.
+std::unique_ptr<accuracy::GpuExecutor> wgslCheckExecutor() {
+  const std::string notRun = "check did not run on wgsl: ";
+  // playwright-core starts Chromium; naga-wasm translates the runtime's scene shaders.
+  for (const char* package : {"playwright-core", "naga-wasm"})
+    if (std::string why = webgpuClientMissing(package); !why.empty())
+      throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + why);
+  try {
+    return accuracy::makeWgslExecutor({nodeExecutable(), webgpuClientDir()});
+  } catch (const rt::RuntimeError& e) {
+    if (e.kind() != rt::RuntimeError::Kind::Environment) throw;
+    throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + e.what());
+  }
 }
 
 int runCheck(const CheckArgs& args, const GlobalOptions& global) {
@@ -81,9 +100,11 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
     std::cerr << "watergraph: --vk-validation needs --target vk450 or all (the layer checks Vulkan calls)\n";
     return kExitUsageOrIo;
   }
-  std::vector<Target> targets;
-  if (args.target == "all") targets = {Target::Glsl330, Target::Es300, Target::Vk450};
-  else targets = {*parseTarget(args.target)};
+  // The targets by the names the reports use: wgsl's module shares es300's plan (its executor's
+  // target is es300; the compile adds GRAPH.wgsl).
+  std::vector<std::string> targets;
+  if (args.target == "all") targets = {"glsl330", "es300", "vk450"};
+  else targets = {args.target};
   // One error map per graph and target: two graphs of one file name would write the same
   // FILE-GRAPH.png, the second replacing the first; refused before anything is rendered.
   if (!args.errorMap.empty() && args.graphs.size() > 1) {
@@ -101,7 +122,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
   // rendered, as FILE.png was (cli/option_values.h).
   if (!args.errorMap.empty()) {
     Diagnostics out;
-    for (Target target : targets)
+    for (const std::string& target : targets)
       for (const auto& path : args.graphs)
         checkWritable(errorMapFile(args.errorMap, path, target, args.graphs.size() > 1, targets.size() > 1), out);
     if (out.hasErrors()) {
@@ -118,13 +139,19 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
     std::vector<accuracy::CheckReport> reports;
   };
   std::map<std::string, WithoutReference> withoutReference;
-  for (Target target : targets) {
+  for (const std::string& targetLabel : targets) {
+    const bool wgsl = targetLabel == kWgslTargetName;
+    const Target target = wgsl ? Target::Es300 : *parseTarget(targetLabel);
     std::unique_ptr<accuracy::GpuExecutor> executor;
     try {
-      accuracy::ExecutorOptions executorOptions;
-      executorOptions.vulkanValidation = args.vulkanValidation && target == Target::Vk450;
-      executorOptions.tessellation = true;  // a graph may tessellate its water
-      executor = accuracy::makeGpuExecutor(target, executorOptions);
+      if (wgsl) {
+        executor = wgslCheckExecutor();
+      } else {
+        accuracy::ExecutorOptions executorOptions;
+        executorOptions.vulkanValidation = args.vulkanValidation && target == Target::Vk450;
+        executorOptions.tessellation = true;  // a graph may tessellate its water
+        executor = accuracy::makeGpuExecutor(target, executorOptions);
+      }
     } catch (const rt::RuntimeError& e) {
       std::cerr << "watergraph: check: " << e.what() << "\n";
       return e.exitCode();
@@ -139,6 +166,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
       if (graph) {
         CompileOptions options;
         options.targets = {target};
+        options.wgsl = wgsl;
         options.preset = args.preset;
             result = compileGraph(*graph, defaultRegistry(), options, diags);
       }
@@ -156,7 +184,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
         if (report.failed()) exit = std::max(exit, kExitGraphError);
         rt::Image map = accuracy::errorMapImage(report, args.view.over(result->program.view));
         if (map.width > 0) {
-          std::string file = errorMapFile(args.errorMap, path, target, args.graphs.size() > 1, targets.size() > 1);
+          std::string file = errorMapFile(args.errorMap, path, targetLabel, args.graphs.size() > 1, targets.size() > 1);
           rt::writePng(file, map);
           std::cout << "  error map: " << file << "\n";
         } else if (options.errorMaps) {
@@ -194,7 +222,7 @@ int runCheck(const CheckArgs& args, const GlobalOptions& global) {
     const WithoutReference& kept = it->second;
     std::cout << "targets of " << path << " against each other (" << kept.node << " has no double reference):\n";
     if (kept.reports.size() < 2) {
-      std::cout << "  only " << targetName(kept.reports.front().target)
+      std::cout << "  only " << kept.reports.front().targetLabel
                 << " was checked: --target all holds glsl330, es300 and vk450 to each other\n";
       continue;
     }
@@ -220,20 +248,24 @@ Runner addCheckCommand(CLI::App& app, const GlobalOptions& global) {
       "check",
       "Render graphs headless into an RGBA32F frame over a sweep: camera elevation 0.5 to 89.5 degrees, under water "
       "(graphs with the underwater node), times 13107, 524288 and 1e6 s, sun near the horizon, overhead and below it. "
-      "glsl330 and es300 run on headless GL, vk450 (the SPIR-V compile writes) on Vulkan. "
-      "Counts NaN and Inf pixels; on glsl330 and vk450 compares sampled water pixels with the CPU reference evaluated on the "
+      "glsl330 and es300 run on headless GL, vk450 (the SPIR-V compile writes) on Vulkan, wgsl (GRAPH.wgsl) in headless "
+      "Chromium's WebGPU through Node.js and clients/webgpu (the WebGPU runner's passes; a mipmapped node texture is not "
+      "read back there: an error saying so). "
+      "Counts NaN and Inf pixels; on glsl330, vk450 and wgsl compares sampled water pixels with the CPU reference evaluated on the "
       "inputs the GPU's fragment shader had there (read back: varyings, depth, scene and texture look-ups), each held to the graph's error bound (the probe's: the largest tolerance of its ops plus the conditioning of "
       "the pixel's inputs), and reports max and mean error per view and per graph. Scene passes are rendered at the "
       "frame's size, also for a graph whose nodes' `resolution` reduces them (the output says so). See docs/accuracy.md.\n\n"
       "Examples:\n  watergraph check graphs/*.json\n"
       "  watergraph check graphs/lake.json --target glsl330 --size 320x180 --error-map lake-error.png\n"
-      "  watergraph check graphs/*.json --target vk450 --vk-validation\n\n"
+      "  watergraph check graphs/*.json --target vk450 --vk-validation\n"
+      "  watergraph check graphs/lake.json --target wgsl\n\n"
       "Exit codes: 0 no NaN/Inf and every compared pixel within its bound; 1 a NaN/Inf pixel, a pixel over its bound, "
       "graph errors, a shader the driver rejects or a validation message; 2 usage, I/O, or no EGL/GL context or Vulkan "
-      "device.");
+      "device (wgsl: no Node.js, npm packages, Chromium or WebGPU adapter: check did not run).");
   cmd->add_option("graphs", args->graphs, "graph files (.json)")->required();
-  cmd->add_option("--target", args->target, "glsl330, es300, vk450 or all (the three)")
-      ->check(CLI::IsMember({"glsl330", "es300", "vk450", "all"}))
+  cmd->add_option("--target", args->target,
+                  "glsl330, es300, vk450, all (the three), or wgsl (WebGPU in headless Chromium through Node.js; not in all)")
+      ->check(CLI::IsMember({"glsl330", "es300", "vk450", "wgsl", "all"}))
       ->capture_default_str();
   cmd->add_flag("--vk-validation", args->vulkanValidation,
                 "vk450: run under the Khronos validation layer; any message it reports fails the graph (exit 1)");

@@ -52,7 +52,7 @@ struct ProbeArgs {
 
 #ifdef WG_HAVE_RUNTIME
 // The executor --target names: GL or Vulkan, or WebGPU through Node.js and headless Chromium
-// (clients/webgpu/probe_server.mjs). Throws rt::RuntimeError (Kind::Environment: exit 2)
+// (clients/webgpu/executor_server.mjs). Throws rt::RuntimeError (Kind::Environment: exit 2)
 // naming what is missing when the WebGPU probe cannot run: it did not run, and never passes.
 std::unique_ptr<accuracy::GpuExecutor> probeExecutor(const ProbeArgs& args) {
   if (args.target != kWgslTargetName) return accuracy::makeGpuExecutor(*parseTarget(args.target), {args.vulkanValidation});

@@ -1,16 +1,17 @@
-// naga and Tint on a WGSL module, through Node.js (cli/wgsl_checks.h).
+// naga and Tint on a WGSL module, through Node.js (cli/wgsl_checks.h), each run to its end
+// as a core/json_line_process.h helper.
 #include "cli/wgsl_checks.h"
 
-#include <array>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sys/wait.h>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
+
+#include "core/json_line_process.h"
 
 namespace wg {
 namespace {
@@ -33,23 +34,8 @@ std::string onSearchPath(const std::string& program) {
   return "";
 }
 
-std::string quotedForShell(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs `command`; its stdout, and its exit status (-1 when it could not start).
-std::pair<int, std::string> capturedOutput(const std::string& command) {
-  std::string out;
-  FILE* p = popen((command + " 2>&1").c_str(), "r");
-  if (!p) return {-1, ""};
-  std::array<char, 4096> buf{};
-  size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) out.append(buf.data(), n);
-  int status = pclose(p);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
+// How long a checker may take: Tint's starts Chromium, naga's loads its WebAssembly.
+constexpr int kWgslCheckerSeconds = 300;
 
 // Writes `wgsl` to a fresh temporary file and runs `script` on it; parses its JSON lines.
 WgslCheckOutcome runCheckScript(const std::string& checker, const std::string& script, const std::string& needs,
@@ -70,28 +56,32 @@ WgslCheckOutcome runCheckScript(const std::string& checker, const std::string& s
       return o;
     }
   }
-  auto [status, out] = capturedOutput(quotedForShell(node) + " " + quotedForShell(dir + "/" + script) + " " +
-                                      quotedForShell(tmp.string()));
+  int status = -1;
+  std::vector<nlohmann::json> lines;
+  std::string failed;
+  try {
+    JsonLineProcess helper({node, dir + "/" + script, tmp.string()});
+    lines = helper.receiveToEnd(kWgslCheckerSeconds, &status);
+    if (lines.empty()) failed = helper.stderrTail();
+  } catch (const std::runtime_error& e) {
+    failed = e.what();
+  }
   fs::remove(tmp, ec);
   // One JSON line for the file; anything else (status 2, or no line) says why it did not run.
-  for (size_t start = 0; start < out.size();) {
-    size_t end = out.find('\n', start);
-    if (end == std::string::npos) end = out.size();
-    auto line = nlohmann::json::parse(out.substr(start, end - start), nullptr, false);
-    start = end + 1;
-    if (!line.is_object() || !line.contains("ok")) continue;
+  for (const nlohmann::json& line : lines) {
+    if (!line.contains("ok")) continue;
     if (line.contains("skipped")) {
-      o.notRunBecause = line["skipped"].get<std::string>();
+      o.notRunBecause = line["skipped"].is_string() ? line["skipped"].get<std::string>() : line["skipped"].dump();
       return o;
     }
     o.ran = true;
     if (line.contains("errors"))
       for (const auto& e : line["errors"])
         o.errors.push_back({e.value("line", 0), e.value("column", 0), e.value("message", std::string("(no message)"))});
-    if (!line["ok"].get<bool>() && o.errors.empty()) o.errors.push_back({0, 0, "rejected without a message"});
+    if (!(line["ok"].is_boolean() && line["ok"].get<bool>()) && o.errors.empty()) o.errors.push_back({0, 0, "rejected without a message"});
     return o;
   }
-  std::string first = out.substr(0, out.find('\n'));
+  std::string first = failed.substr(0, failed.find('\n'));
   o.notRunBecause = script + " gave no result (exit status " + std::to_string(status) + ")" + (first.empty() ? "" : ": " + first);
   return o;
 }

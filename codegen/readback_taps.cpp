@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 
+#include "codegen/emit_wgsl.h"
 #include "codegen/shader_interface.h"
 #include "core/number_format.h"
 
@@ -38,9 +39,13 @@ std::string tapValue(const ShaderPlan& plan, const PlannedStage& fs, const TapCh
     case TapChannel::Kind::TexelAtPixel: e = "texelFetch(" + plan.textures.at(c.index).name + ", ivec2(gl_FragCoord.xy), 0)"; break;
   }
   static const char* const kComponents[] = {".x", ".y", ".z", ".w"};
-  if (c.component < 0) return "float(" + e + ")";
-  if (c.component > 3) throw std::logic_error("emitTapFragment: a component past w");
-  return "float((" + e + ")" + kComponents[c.component] + ")";
+  // A look-up is a vec4 (a depth texture's too): its value is x, which GLSL's float() takes
+  // and WGSL's f32() does not.
+  const bool vec4 = c.kind == TapChannel::Kind::Fetch || c.kind == TapChannel::Kind::TexelAtPixel;
+  const int component = c.component < 0 && vec4 ? 0 : c.component;
+  if (component < 0) return "float(" + e + ")";
+  if (component > 3) throw std::logic_error("emitTapFragment: a component past w");
+  return "float((" + e + ")" + kComponents[component] + ")";
 }
 
 }  // namespace
@@ -59,7 +64,10 @@ bool tapHoldsVarying(const ShaderPlan& plan, size_t varying) {
   return false;  // a node's varying feeds the G-buffer pass only
 }
 
-EmittedShader emitTapFragment(const ShaderPlan& plan, Target target, const std::vector<TapChannel>& channels) {
+namespace {
+
+// The fragment stage of `plan` up to its colour statement, then the channels as the colour.
+PlannedStage tapStage(const ShaderPlan& plan, const std::vector<TapChannel>& channels) {
   const PlannedStage& fs = tapFragmentStage(plan);
   if (channels.size() > 3) throw std::logic_error("emitTapFragment: more than three channels");
   std::string statement = std::string("  ") + iface::kColorOutput + " = vec4(";
@@ -70,7 +78,20 @@ EmittedShader emitTapFragment(const ShaderPlan& plan, Target target, const std::
   tap.body += statement;
   tap.lineOp.resize(fs.colorLine);
   tap.lineOp.push_back(-1);
-  return emitStage(plan, tap, target);
+  return tap;
+}
+
+}  // namespace
+
+EmittedShader emitTapFragment(const ShaderPlan& plan, Target target, const std::vector<TapChannel>& channels) {
+  return emitStage(plan, tapStage(plan, channels), target);
+}
+
+std::string emitTapModuleWgsl(const ShaderPlan& plan, const std::vector<TapChannel>& channels) {
+  ShaderPlan tapped = plan;
+  for (PlannedStage& stage : tapped.stages)
+    if (stage.stage == ShaderStage::Fragment) stage = tapStage(plan, channels);
+  return emitWgsl(tapped).text;
 }
 
 }  // namespace wg

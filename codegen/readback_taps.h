@@ -35,4 +35,9 @@ bool tapHoldsVarying(const ShaderPlan& plan, size_t varying);
 // plan whose fragment stage writes no colour or a channel it does not hold.
 EmittedShader emitTapFragment(const ShaderPlan& plan, Target target, const std::vector<TapChannel>& channels);
 
+// The same tap frame for the wgsl target (`check --target wgsl`): the WGSL module of `plan`
+// (codegen/emit_wgsl.h, a plan without tessellation) with its fragment stage replaced by the
+// tap frame's; vs_main is the graph's own. Throws WgslRefused as emitWgsl does.
+std::string emitTapModuleWgsl(const ShaderPlan& plan, const std::vector<TapChannel>& channels);
+
 }  // namespace wg

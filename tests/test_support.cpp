@@ -139,6 +139,20 @@ bool holdsGlslFunction(const std::string& graphPath) {
   return graphHoldsNodeType(*graph, "glsl_function");
 }
 
+std::string nodeOnPath() {
+  const char* path = std::getenv("PATH");
+  std::string dirs = path ? path : "";
+  for (size_t start = 0; start <= dirs.size();) {
+    size_t end = dirs.find(':', start);
+    if (end == std::string::npos) end = dirs.size();
+    std::filesystem::path candidate = std::filesystem::path(dirs.substr(start, end - start)) / "node";
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(candidate, ec)) return candidate.string();
+    start = end + 1;
+  }
+  return "";
+}
+
 std::string shellQuote(const std::string& s) {
   std::string q = "'";
   for (char c : s) {

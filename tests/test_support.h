@@ -48,6 +48,8 @@ std::vector<std::string> exampleGraphs();
 // Whether the graph at `graphPath`, or a function graph it imports (at any depth), holds a
 // glsl_function node: its code is GLSL only, so it has no WGSL form.
 bool holdsGlslFunction(const std::string& graphPath);
+// Node.js (`node`) found on $PATH, or "": the WebGPU executor's tests run it.
+std::string nodeOnPath();
 // `s` quoted for /bin/sh.
 std::string shellQuote(const std::string& s);
 // Runs a shell command with stdout and stderr captured separately; returns its exit status.

@@ -2,7 +2,7 @@
 // vs_main and fs_main) over its cases in WebGPU, as the GL and Vulkan probes run theirs: one
 // pixel of an RGBA32F target per case (up to 1024 a row), drawn by the module's full-screen
 // triangle with the viewport restricted to that pixel, so @builtin(position) is the pixel's
-// centre, the case's u_probe_pixel. The job (from probe_server.mjs, made by the compiler):
+// centre, the case's u_probe_pixel. The job (from executor_server.mjs, made by the compiler):
 //   what: the shader's name in errors; wgsl: the module; uniformSize: the uniform buffer's
 //   bytes (0: none);
 //   textures: [{binding, cube, kind: "scene"}] a 1x1 RGBA32F texture per case holding the

@@ -2,7 +2,8 @@
 // runs the passes of the manifest in the runtime's order (runtime/renderer.cpp) — the scene
 // passes (watergraph-webgpu-passes.js) with the runtime's own shaders, then the water, forward
 // or deferred — builds the water's bind group from the manifest's "webgpu" section, fills the
-// uniform buffer at the offsets it states, and reads the RGBA16F frame back. Conventions
+// uniform buffer at the offsets it states, and reads the frame back: RGBA16F for pictures,
+// RGBA32F for `watergraph check --target wgsl` (watergraph-webgpu-check.js). Conventions
 // (manifest "webgpu".conventions): GL matrices, y negated in clip space by every module, so a
 // target's row 0 is the view's bottom row and frontFace is "cw".
 import { beginTargetPass, createTargets, runScenePass, ScenePasses } from './watergraph-webgpu-passes.js';
@@ -42,28 +43,35 @@ function halfToFloat(h) {
 
 const srgbEncode = (c) => (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) - 0.055);
 
-// The texture of a file the manifest names (an ImageBitmap, bottom row first).
+// The texture of a file the manifest names: an ImageBitmap, bottom row first, or its texels as
+// {width, height, rgba: Uint8Array}, row 0 first (as the runtime uploads them).
 function fileTexture(device, t, bitmap, colorSpace) {
   const format = colorSpace === 'srgb' ? 'rgba8unorm-srgb' : 'rgba8unorm';
   const tex = device.createTexture({ size: [bitmap.width, bitmap.height], format,
     usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | GPUTextureUsage.RENDER_ATTACHMENT });
-  device.queue.copyExternalImageToTexture({ source: bitmap }, { texture: tex }, [bitmap.width, bitmap.height]);
+  if (bitmap.rgba) device.queue.writeTexture({ texture: tex }, bitmap.rgba, { bytesPerRow: 4 * bitmap.width }, [bitmap.width, bitmap.height]);
+  else device.queue.copyExternalImageToTexture({ source: bitmap }, { texture: tex }, [bitmap.width, bitmap.height]);
   return tex.createView();
 }
 
 // The water's bind group: the uniform buffer, each file texture from `textures`, each scene
 // texture from `resources` (createTargets; sampled as the runtime does: clamped, nearest where
 // it is depth or 32-bit float, so unfilterable here).
-function waterBindGroup(device, manifest, uniformValue, textures, resources, ocean) {
+function waterBindGroup(device, manifest, uniformValue, uniformBytes, textures, resources, ocean) {
   const webgpu = manifest.webgpu;
   const entries = [], layoutEntries = [];
   const visibility = GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT;
   for (const b of webgpu.bindings) {
     if (b.kind === 'uniform_buffer') {
       const buffer = device.createBuffer({ size: webgpu.uniform_buffer.size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
-      const bytes = new ArrayBuffer(webgpu.uniform_buffer.size);
-      const view = new DataView(bytes);
-      for (const m of webgpu.uniform_buffer.members) writeUniform(view, m, uniformValue(m.name));
+      let bytes = uniformBytes;
+      if (!bytes) {
+        bytes = new ArrayBuffer(webgpu.uniform_buffer.size);
+        const view = new DataView(bytes);
+        for (const m of webgpu.uniform_buffer.members) writeUniform(view, m, uniformValue(m.name));
+      } else if (bytes.byteLength !== webgpu.uniform_buffer.size) {
+        throw new WebgpuRunnerError(`the uniform buffer holds ${webgpu.uniform_buffer.size} bytes; ${bytes.byteLength} were given`);
+      }
       device.queue.writeBuffer(buffer, 0, bytes);
       entries.push({ binding: b.binding, resource: { buffer } });
       layoutEntries.push({ binding: b.binding, visibility, buffer: { type: 'uniform' } });
@@ -177,33 +185,52 @@ function drawWaterMesh(pass, mesh) {
 const WATER_BLEND = { color: { srcFactor: 'src-alpha', dstFactor: 'one-minus-src-alpha' },
   alpha: { srcFactor: 'one', dstFactor: 'one-minus-src-alpha' } };
 
+// The frame formats this runner renders and reads back.
+const FRAME_FORMATS = { rgba16f: { format: 'rgba16float', bytes: 8 }, rgba32f: { format: 'rgba32float', bytes: 16 } };
+
 // Renders one frame of a graph and reads it back. Options:
 //   manifest, wgsl: the compiled graph; plan: clients/three's planPasses(manifest, description,
 //   {width, height, environmentSize}); description: the scene description (`watergraph scene`);
 //   sceneShaders: sceneShadersWgsl(description, naga, gbuffer inputs); drawScene: false draws
 //   no scene (the runtime's `--scene none`: scene targets cleared only); camera: {view,
 //   projection, position} as OpenGL matrices (column-major) and the eye; uniformValue(name): each
-//   water uniform's value; geometry: the water grid (Float32Arrays position, normal, uv and a
+//   water uniform's value, or uniformBytes: the whole uniform buffer (an ArrayBuffer laid out
+//   as "webgpu".uniform_buffer states); sun: the direction towards the sun for the scene's
+//   shaders (default the description's sun_direction); geometry: the water grid (Float32Arrays position, normal, uv and a
 //   Uint32Array index); textures: a node texture's name -> ImageBitmap (bottom row first);
 //   ocean, time: for a manifest with "oceans", its WebgpuOceanSimulation
-//   (watergraph-webgpu-ocean.js) and the frame's time in seconds.
+//   (watergraph-webgpu-ocean.js) and the frame's time in seconds; keepAlive: for a series of
+//   frames of one graph (check's), an object given to each: it holds the scene passes (reused
+//   while the description and scene shaders are the same objects) and the frame's modules and
+//   pipelines until the next frame has made its own, since a WebGPU implementation hands back
+//   the pipeline it made for the same descriptor while that one lives (Dawn does): the frames
+//   compile their shaders once instead of once each.
+// The plan's frame is RGBA16F or RGBA32F (planPasses' frameFormat); an RGBA32F frame needs a
+// device with "float32-blendable" (the water blends into it).
 // Returns {linear: Float32Array RGBA with row 0 at the bottom, srgb8: Uint8ClampedArray RGBA top
 // row first, through clamp and the sRGB encoding}.
 export async function renderGraph(device, options) {
   const { manifest, wgsl, plan, description, sceneShaders, drawScene = true, camera, uniformValue, geometry, textures = {},
-    ocean = null, time = 0 } = options;
+    ocean = null, time = 0, uniformBytes = null, sun = null, keepAlive = null } = options;
   if (manifest.oceans && !ocean) throw new WebgpuRunnerError(`graph '${manifest.graph}' has a spectral ocean: give its simulation (options.ocean)`);
   const webgpu = manifest.webgpu;
   if (!webgpu) throw new WebgpuRunnerError(`graph '${manifest.graph}' was not compiled for wgsl (--target wgsl)`);
   const deferred = plan.passes.includes('deferred_water');
   const frameTarget = plan.targets.find((t) => t.name === 'frame');
   const { width, height } = frameTarget;
-  if (frameTarget.color !== 'rgba16f') throw new WebgpuRunnerError(`the plan's frame is ${frameTarget.color}; this runner renders RGBA16F`);
+  const frame = FRAME_FORMATS[frameTarget.color];
+  if (!frame) throw new WebgpuRunnerError(`the plan's frame is ${frameTarget.color}; this runner renders RGBA16F or RGBA32F`);
+  if (frame.format === 'rgba32float' && !device.features.has('float32-blendable'))
+    throw new WebgpuRunnerError('an RGBA32F frame needs the device feature float32-blendable (the water blends into the frame)');
   device.pushErrorScope('validation');
   const module = await compiledModule(device, wgsl, `${manifest.graph}.wgsl`);
   const { targets, resources } = createTargets(device, plan);
-  const scene = drawScene ? new ScenePasses(device, description, sceneShaders) : null;
-  const water = waterBindGroup(device, manifest, uniformValue, textures, resources, ocean);
+  const kept = keepAlive?.scene;
+  const scene = !drawScene ? null
+    : kept && kept.description === description && kept.shaders === sceneShaders ? kept : new ScenePasses(device, description, sceneShaders);
+  const made = [module];  // what keepAlive holds until the next frame
+  if (scene && sun) scene.sun = sun;
+  const water = waterBindGroup(device, manifest, uniformValue, uniformBytes, textures, resources, ocean);
   const mesh = waterGeometry(device, webgpu, geometry);
   const layout = device.createPipelineLayout({ bindGroupLayouts: [water.layout] });
   const primitive = { topology: 'triangle-list', cullMode: 'none', frontFace: 'cw' };
@@ -211,11 +238,12 @@ export async function renderGraph(device, options) {
     layout,
     vertex: deferred ? { module: await compiledModule(device, fullscreenVertexWgsl(manifest), 'the full-screen vertex stage'), entryPoint: 'main' }
       : { module, entryPoint: webgpu.entry_points.vertex, buffers: mesh.layouts },
-    fragment: { module, entryPoint: webgpu.entry_points.fragment, targets: [{ format: 'rgba16float', blend: WATER_BLEND }] },
+    fragment: { module, entryPoint: webgpu.entry_points.fragment, targets: [{ format: frame.format, blend: WATER_BLEND }] },
     primitive,
     // Deferred water shades every pixel with the depth test off (the G-buffer has the surface).
     depthStencil: { format: 'depth32float', depthWriteEnabled: !deferred, depthCompare: deferred ? 'always' : 'less-equal' },
   });
+  made.push(waterPipeline);
 
   const encoder = device.createCommandEncoder();
   const clear = description?.clear_color ?? [0, 0, 0, 1];
@@ -236,6 +264,7 @@ export async function renderGraph(device, options) {
         fragment: { module: gbuffer, entryPoint: 'main', targets: [{ format: 'rgba32float' }, { format: 'rgba32float' }] },
         depthStencil: { format: 'depth32float', depthWriteEnabled: true, depthCompare: 'less-equal' },
       });
+      made.push(gbuffer, pipeline);
       const position = targets.water_position, normal = targets.water_normal;
       const pass = encoder.beginRenderPass({
         colorAttachments: [{ view: position.color.createView(), clearValue: [0, 0, 0, 1], loadOp: 'clear', storeOp: 'store' },
@@ -257,22 +286,34 @@ export async function renderGraph(device, options) {
       pass.end();
       continue;
     }
-    runScenePass(device, encoder, passName, { targets, scene, camera, description, frameFormat: 'rgba16float' });
+    runScenePass(device, encoder, passName, { targets, scene, camera, description, frameFormat: frame.format });
   }
-  const bytesPerRow = Math.ceil((width * 8) / 256) * 256;
+  const bytesPerRow = Math.ceil((width * frame.bytes) / 256) * 256;
   const readback = device.createBuffer({ size: bytesPerRow * height, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
   encoder.copyTextureToBuffer({ texture: targets.frame.color }, { buffer: readback, bytesPerRow }, [width, height]);
   device.queue.submit([encoder.finish()]);
+  if (keepAlive) {
+    keepAlive.scene = scene;
+    keepAlive.made = made;
+  }
   const failure = await device.popErrorScope();
   if (failure) throw new WebgpuRunnerError(`WebGPU validation: ${failure.message}`);
   await readback.mapAsync(GPUMapMode.READ);
-  const halves = new Uint16Array(readback.getMappedRange().slice(0));
+  const mapped = readback.getMappedRange().slice(0);
   readback.unmap();
+  // Freed now, not when collected: check renders tens of frames a graph.
+  readback.destroy();
+  for (const entry of Object.values(targets)) {
+    entry.color?.destroy();
+    entry.depth?.destroy();
+  }
+  const halves = frame.bytes === 8 ? new Uint16Array(mapped) : null, floats = halves ? null : new Float32Array(mapped);
+  const rowFloats = bytesPerRow / 4;
   const linear = new Float32Array(width * height * 4);
   const srgb8 = new Uint8ClampedArray(width * height * 4);
   for (let y = 0; y < height; ++y) {
     for (let x = 0; x < width * 4; ++x) {
-      const value = halfToFloat(halves[(y * bytesPerRow) / 2 + x]);
+      const value = halves ? halfToFloat(halves[(y * bytesPerRow) / 2 + x]) : floats[y * rowFloats + x];
       linear[y * width * 4 + x] = value;
       // The output transform `render --tonemap none --exposure 0` applies: clamp, then sRGB (alpha kept).
       const c = Math.min(Math.max(Number.isNaN(value) ? 0 : value, 0), 1);

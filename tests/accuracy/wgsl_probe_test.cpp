@@ -1,5 +1,5 @@
 // `probe --target wgsl`: the probe plan's WGSL module (codegen/emit_wgsl.h emitWgslProbe) run
-// in headless Chromium's WebGPU on SwiftShader by clients/webgpu/probe_server.mjs, each case
+// in headless Chromium's WebGPU on SwiftShader by clients/webgpu/executor_server.mjs, each case
 // one pixel read back and held to the double reference within the same bounds as the GLSL
 // targets (accuracy/error_bound.h). One Chromium per test (its start takes seconds): nodes of
 // the hard-case suite and every example graph the probe can run, then a wrong constant in
@@ -23,27 +23,12 @@
 namespace wg::accuracy {
 namespace {
 
-// Node.js on $PATH, or "".
-std::string nodeForWgslProbe() {
-  const char* path = std::getenv("PATH");
-  std::string dirs = path ? path : "";
-  for (size_t start = 0; start <= dirs.size();) {
-    size_t end = dirs.find(':', start);
-    if (end == std::string::npos) end = dirs.size();
-    std::filesystem::path candidate = std::filesystem::path(dirs.substr(start, end - start)) / "node";
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(candidate, ec)) return candidate.string();
-    start = end + 1;
-  }
-  return "";
-}
-
-WebgpuTools wgslProbeTools() { return {nodeForWgslProbe(), test::sourcePath("clients/webgpu")}; }
+WebgpuTools wgslProbeTools() { return {test::nodeOnPath(), test::sourcePath("clients/webgpu")}; }
 
 class WgslProbe : public ::testing::Test {
  protected:
   static void SetUpTestSuite() {
-    if (nodeForWgslProbe().empty()) {
+    if (test::nodeOnPath().empty()) {
       skip_ = "Node.js (node) is not on PATH";
       return;
     }

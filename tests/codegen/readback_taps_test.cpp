@@ -188,3 +188,52 @@ TEST(ReadbackTaps, ChannelsReadComponentsAndRefuseWhatMainDoesNotHold) {
 
 }  // namespace
 }  // namespace wg
+
+namespace wg {
+namespace {
+
+// check --target wgsl's tap modules: the same plan's WGSL module (the compile's GRAPH.wgsl,
+// byte for byte outside fs_main) with the colour written from the channels; a look-up's value
+// is its x taken explicitly (WGSL's f32() takes no vector, where GLSL's float() takes the first
+// component).
+TEST(ReadbackTaps, WgslTapModulesDifferFromTheGraphsModuleInTheColourAlone) {
+  Diagnostics diags;
+  auto graph = loadGraphFile(test::sourceDir() + "/graphs/pool.json", diags);
+  ASSERT_TRUE(graph);
+  CompileOptions o;
+  o.targets = {Target::Es300};
+  o.wgsl = true;
+  o.validate = false;
+  auto r = compileGraph(*graph, defaultRegistry(), o, diags);
+  ASSERT_TRUE(r);
+  std::string module;
+  for (const auto& f : r->files)
+    if (f.name == "pool.wgsl") module = f.contents;
+  ASSERT_FALSE(module.empty());
+  ShaderPlan plan = waterPlan(*r, Target::Es300);
+  const PlannedStage& fs = *plan.stage(ShaderStage::Fragment);
+  ASSERT_FALSE(fs.fetches.empty());
+  TapChannel mark, depth, fetch;
+  mark.constant = -3.0;
+  depth.kind = TapChannel::Kind::FragDepth;
+  fetch.kind = TapChannel::Kind::Fetch;  // the depth look-up: a vec4, its x wanted
+  std::string tap = emitTapModuleWgsl(plan, {mark, depth, fetch});
+  std::vector<std::string> tapLines, waterLines;
+  for (auto* out : {&tapLines, &waterLines}) {
+    std::istringstream in(out == &tapLines ? tap : module);
+    for (std::string line; std::getline(in, line);) out->push_back(line);
+  }
+  ASSERT_EQ(tapLines.size(), waterLines.size());
+  std::vector<size_t> differ;
+  for (size_t k = 0; k < tapLines.size(); ++k)
+    if (tapLines[k] != waterLines[k]) differ.push_back(k);
+  ASSERT_EQ(differ.size(), 1u) << tap;
+  EXPECT_EQ(waterLines[differ[0]].rfind("  o_color = vec4<f32>(", 0), 0u) << waterLines[differ[0]];
+  const std::string line = tapLines[differ[0]];
+  EXPECT_EQ(line.rfind("  o_color = vec4<f32>(-3.0, wg_frag_coord.z, textureSample(u_scene_depth, u_scene_depth_sampler, ", 0), 0u)
+      << line;
+  EXPECT_TRUE(line.ends_with(").x, 1.0);")) << line;
+}
+
+}  // namespace
+}  // namespace wg

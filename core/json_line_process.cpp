@@ -1,7 +1,7 @@
-// A helper program spoken to in JSON lines (accuracy/json_line_process.h). One socket pair
+// A helper program spoken to in JSON lines (core/json_line_process.h). One socket pair
 // carries both directions, so a write to a helper that has died fails with EPIPE
 // (MSG_NOSIGNAL) instead of raising SIGPIPE in the compiler.
-#include "accuracy/json_line_process.h"
+#include "core/json_line_process.h"
 
 #include <cerrno>
 #include <chrono>
@@ -17,7 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-namespace wg::accuracy {
+namespace wg {
 
 JsonLineProcess::JsonLineProcess(const std::vector<std::string>& argv) {
   if (argv.empty()) throw std::runtime_error("no program to start");
@@ -110,6 +110,34 @@ void JsonLineProcess::send(const nlohmann::json& request) {
   }
 }
 
+std::vector<nlohmann::json> JsonLineProcess::receiveToEnd(int timeoutSeconds, int* exitStatus) {
+  if (socket_ >= 0) ::shutdown(socket_, SHUT_WR);
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);
+  std::vector<nlohmann::json> lines;
+  for (bool open = true; open;) {
+    auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0) fail("the helper did not finish within " + std::to_string(timeoutSeconds) + " s");
+    pollfd p{socket_, POLLIN, 0};
+    int ready = ::poll(&p, 1, static_cast<int>(left));
+    if (ready <= 0) continue;
+    char buf[65536];
+    ssize_t n = ::recv(socket_, buf, sizeof buf, 0);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) open = false;
+    else pending_.append(buf, static_cast<size_t>(n));
+  }
+  pending_ += '\n';  // a last line without its newline
+  for (size_t end = pending_.find('\n'); end != std::string::npos; end = pending_.find('\n')) {
+    auto j = nlohmann::json::parse(pending_.substr(0, end), nullptr, false);
+    pending_.erase(0, end + 1);
+    if (j.is_object()) lines.push_back(std::move(j));
+  }
+  int status = 0;
+  *exitStatus = pid_ > 0 && ::waitpid(pid_, &status, 0) == pid_ && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  pid_ = -1;
+  return lines;
+}
+
 nlohmann::json JsonLineProcess::receive(int timeoutSeconds) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(timeoutSeconds);
   for (;;) {
@@ -133,4 +161,4 @@ nlohmann::json JsonLineProcess::receive(int timeoutSeconds) {
   }
 }
 
-}  // namespace wg::accuracy
+}  // namespace wg
