@@ -229,7 +229,7 @@ void BodyWriter::writeOps(StageBody& w) {
     const Op& op = program_.ops[i];
     if (!(op.stage & w.stage)) continue;
     PlanOpContext ctx(*this, w, static_cast<int>(i));
-    ctx.outputs.assign(op.outputTypes.size(), GlslExpr());
+    ctx.outputs.resize(op.outputTypes.size());
     registered.clear();
     w.registered = &registered;
     op.spec->emit(ctx);
@@ -244,9 +244,8 @@ void BodyWriter::writeOps(StageBody& w) {
       forgetUnread(registered, ctx, outputRead, needed);
     const size_t opCallsBefore = w.opCalls.size();
     forKeptValues(ctx, outputRead, needed, [&](const GlslExpr& e) {
-      for (const std::string& fn : e.calls()) {
-        w.calls.insert(fn);
-        const std::pair<int, std::string> call{static_cast<int>(i), fn};
+      for (uint32_t fn : e.callIds()) {
+        const std::pair<int, uint32_t> call{static_cast<int>(i), fn};
         if (std::find(w.opCalls.begin() + static_cast<std::ptrdiff_t>(opCallsBefore), w.opCalls.end(), call) == w.opCalls.end())
           w.opCalls.push_back(call);
       }
@@ -421,7 +420,7 @@ GlslExpr BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
 GlslExpr BodyWriter::fetch(StageBody& w, const GlslExpr& sampler, const GlslExpr& coord) {
   GlslExpr call = "texture(" + sampler + ", " + coord + ")";
   const uint32_t symbol = planSymbol(PlanSymbol::Fetch, w.fetches.size());
-  const std::vector<uint32_t>& reads = coord.symbols();
+  const std::span<const uint32_t> reads = coord.symbols();
   const bool atScreenUv = coord.isName() && std::find(reads.begin(), reads.end(),
                                                       planSymbol(PlanSymbol::Builtin, static_cast<size_t>(Builtin::ScreenUv))) != reads.end();
   w.fetches.push_back({TextureFetch{sampler.text(), coord.text()}, true, atScreenUv});

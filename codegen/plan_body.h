@@ -47,10 +47,9 @@ struct StageBody {
   std::set<Builtin> builtins;
   std::set<int> parameters;
   std::set<BuiltinUniform> builtinUniforms;
-  // The functions the kept lines call (EmitContext::call), each once, and which op calls
-  // which, in the order of the body (PlannedStage::opCalls).
-  std::set<std::string> calls;
-  std::vector<std::pair<int, std::string>> opCalls;
+  // The functions the kept lines call (EmitContext::call, GlslExpr::callIds): which op
+  // calls which, each pair once, in the order of the body (PlannedStage::opCalls).
+  std::vector<std::pair<int, uint32_t>> opCalls;
   // Op outputs whose expression is already a name (a builtin, another temporary): used
   // directly instead of copying into a new local, reading what the name reads (but not the
   // op's own temporaries: their symbols mean something only inside that op). By the

@@ -12,11 +12,16 @@ std::vector<const GlslItem*> libraryFor(const std::vector<std::string>& called) 
   return GlslLibrary::builtin().itemsNamed(called);
 }
 
-// The library items are those the kept values call (StageBody::calls) and those the
+// The library items are those the kept values call (StageBody::opCalls) and those the
 // locals call: known from the values, not read from the text.
 PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) {
-  std::vector<std::string> called(w.calls.begin(), w.calls.end());
-  called.insert(called.end(), locals.calls.begin(), locals.calls.end());
+  std::vector<std::string> called = std::move(locals.calls);
+  std::vector<uint32_t> seen;
+  for (const auto& [op, fn] : w.opCalls) {
+    if (std::find(seen.begin(), seen.end(), fn) != seen.end()) continue;
+    seen.push_back(fn);
+    called.push_back(GlslExpr::callName(fn));
+  }
   PlannedStage s;
   s.stage = stage;
   s.locals = std::move(locals.lines);
@@ -32,7 +37,7 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) 
   for (const auto& [sampler, times] : w.handedOn)
     if (times > 0) s.handedOn.insert(sampler);
   s.library = libraryFor(called);
-  s.opCalls = std::move(w.opCalls);
+  for (const auto& [op, fn] : w.opCalls) s.opCalls.emplace_back(op, GlslExpr::callName(fn));
   return s;
 }
 

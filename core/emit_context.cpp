@@ -1,7 +1,10 @@
 #include "core/emit_context.h"
 
 #include <algorithm>
+#include <deque>
+#include <mutex>
 #include <stdexcept>
+#include <unordered_map>
 
 #include "core/number_format.h"
 #include "core/ocean_settings.h"
@@ -9,18 +12,63 @@
 namespace wg {
 namespace {
 
-template <class T>
-void appendEachOnce(std::vector<T>& to, const std::vector<T>& from) {
-  for (const T& x : from)
-    if (std::find(to.begin(), to.end(), x) == to.end()) to.push_back(x);
+// The names of the functions called through EmitContext::call, one id each for the whole
+// process (a few hundred names at most: the library's and GLSL's built-in functions).
+struct CalledNames {
+  std::mutex mutex;
+  std::deque<std::string> names;  // by id; a deque keeps each name where it is
+  std::unordered_map<std::string_view, uint32_t> ids;
+};
+
+CalledNames& calledNames() {
+  static CalledNames names;
+  return names;
+}
+
+uint32_t calledNameId(std::string_view fn) {
+  CalledNames& c = calledNames();
+  std::lock_guard<std::mutex> lock(c.mutex);
+  if (auto it = c.ids.find(fn); it != c.ids.end()) return it->second;
+  const uint32_t id = static_cast<uint32_t>(c.names.size());
+  c.ids.emplace(c.names.emplace_back(fn), id);
+  return id;
 }
 
 }  // namespace
 
+bool GlslExprIds::contains(uint32_t id) const {
+  for (uint32_t x : view())
+    if (x == id) return true;
+  return false;
+}
+
+void GlslExprIds::add(uint32_t id) {
+  if (contains(id)) return;
+  if (heap_.empty() && size_ < kInline) {
+    inline_[size_++] = id;
+    return;
+  }
+  if (heap_.empty()) heap_.assign(inline_, inline_ + size_);
+  heap_.push_back(id);
+  ++size_;
+}
+
+const std::string& GlslExpr::callName(uint32_t id) {
+  CalledNames& c = calledNames();
+  std::lock_guard<std::mutex> lock(c.mutex);
+  return c.names.at(id);
+}
+
+std::vector<std::string> GlslExpr::calls() const {
+  std::vector<std::string> out;
+  for (uint32_t id : callIds()) out.push_back(callName(id));
+  return out;
+}
+
 GlslExpr GlslExpr::symbol(std::string text, uint32_t symbol, bool isName) {
   GlslExpr e(std::move(text));
   e.name_ = isName;
-  e.symbols_.push_back(symbol);
+  e.symbols_.add(symbol);
   return e;
 }
 
@@ -31,7 +79,7 @@ GlslExpr GlslExpr::name(std::string text) {
 }
 
 GlslExpr& GlslExpr::reading(uint32_t symbol) {
-  if (std::find(symbols_.begin(), symbols_.end(), symbol) == symbols_.end()) symbols_.push_back(symbol);
+  symbols_.add(symbol);
   return *this;
 }
 
@@ -44,8 +92,8 @@ GlslExpr& GlslExpr::operator+=(const GlslExpr& b) {
     name_ = false;
   }
   text_ += b.text_;
-  appendEachOnce(symbols_, b.symbols_);
-  appendEachOnce(calls_, b.calls_);
+  symbols_.addAll(b.symbols_);
+  calls_.addAll(b.calls_);
   return *this;
 }
 
@@ -109,7 +157,11 @@ GlslExpr EmitContext::literal(const Value& v) const {
 }
 
 GlslExpr EmitContext::call(std::string_view fn, std::initializer_list<GlslExpr> args) {
-  GlslExpr e(fn);
+  size_t length = fn.size() + 2;
+  for (const auto& a : args) length += a.text_.size() + 2;
+  GlslExpr e;
+  e.text_.reserve(length);
+  e.text_ = fn;
   e += '(';
   bool first = true;
   for (const auto& a : args) {
@@ -118,7 +170,7 @@ GlslExpr EmitContext::call(std::string_view fn, std::initializer_list<GlslExpr> 
     first = false;
   }
   e += ')';
-  if (std::find(e.calls_.begin(), e.calls_.end(), fn) == e.calls_.end()) e.calls_.emplace_back(fn);
+  e.calls_.add(calledNameId(fn));
   return e;
 }
 

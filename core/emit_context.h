@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -17,6 +18,27 @@
 #include "core/node_spec.h"
 
 namespace wg {
+
+// A few ids, each once, in order of first insertion: inline up to four (what nearly every
+// expression reads), on the heap beyond, so building an expression allocates for its text
+// alone.
+class GlslExprIds {
+ public:
+  std::span<const uint32_t> view() const {
+    return heap_.empty() ? std::span<const uint32_t>(inline_, size_) : std::span<const uint32_t>(heap_);
+  }
+  bool contains(uint32_t id) const;
+  void add(uint32_t id);
+  void addAll(const GlslExprIds& other) {
+    for (uint32_t id : other.view()) add(id);
+  }
+
+ private:
+  static constexpr uint32_t kInline = 4;
+  uint32_t inline_[kInline] = {};
+  uint32_t size_ = 0;
+  std::vector<uint32_t> heap_;  // all of them, once there are more than kInline
+};
 
 class GlslExpr {
  public:
@@ -39,9 +61,12 @@ class GlslExpr {
   bool empty() const { return text_.empty(); }
   bool isName() const { return name_; }
   // The context's symbols the text reads, each once, in order of first use.
-  const std::vector<uint32_t>& symbols() const { return symbols_; }
-  // The functions called through EmitContext::call, each once, in order of first call.
-  const std::vector<std::string>& calls() const { return calls_; }
+  std::span<const uint32_t> symbols() const { return symbols_.view(); }
+  // The functions called through EmitContext::call, each once, in order of first call: as
+  // ids (callName gives the name; one id per name for the whole process) and as names.
+  std::span<const uint32_t> callIds() const { return calls_.view(); }
+  std::vector<std::string> calls() const;
+  static const std::string& callName(uint32_t id);
 
   GlslExpr& operator+=(const GlslExpr& b);
   GlslExpr& operator+=(std::string_view b);
@@ -53,8 +78,8 @@ class GlslExpr {
   friend class EmitContext;
   std::string text_;
   bool name_ = false;
-  std::vector<uint32_t> symbols_;
-  std::vector<std::string> calls_;
+  GlslExprIds symbols_;
+  GlslExprIds calls_;
 };
 
 inline GlslExpr operator+(GlslExpr a, const GlslExpr& b) { return a += b; }
