@@ -260,10 +260,12 @@ void BodyWriter::writeOps(StageBody& w) {
                                op.spec->outputs[p].name + "'");
       if (ctx.outputs[p].isName()) {
         if (w.aliases.empty()) w.aliases.resize(portBase_.back());
-        StageBody::Alias& alias = w.aliases[portBase_[i] + p];
-        alias.name = ctx.outputs[p].text();
+        const size_t at = portBase_[i] + p;
+        w.aliases[at] = ctx.outputs[p].text();
+        std::vector<uint32_t> symbols;
         for (uint32_t symbol : ctx.outputs[p].symbols())
-          if (planSymbolKind(symbol) != PlanSymbol::Temporary) alias.symbols.push_back(symbol);
+          if (planSymbolKind(symbol) != PlanSymbol::Temporary) symbols.push_back(symbol);
+        if (!symbols.empty()) w.aliasSymbols.emplace_back(at, std::move(symbols));
         continue;
       }
       const int at = static_cast<int>(i);
@@ -331,9 +333,12 @@ GlslExpr BodyWriter::builtinExpr(StageBody& w, Builtin b) {
 
 GlslExpr BodyWriter::opOutput(const StageBody& w, int op, int port) const {
   size_t at = portBase_[static_cast<size_t>(op)] + static_cast<size_t>(port);
-  if (at < w.aliases.size() && !w.aliases[at].name.empty()) {
-    GlslExpr e = GlslExpr::name(w.aliases[at].name);
-    for (uint32_t symbol : w.aliases[at].symbols) e.reading(symbol);
+  if (at < w.aliases.size() && !w.aliases[at].empty()) {
+    GlslExpr e = GlslExpr::name(w.aliases[at]);
+    auto read = std::lower_bound(w.aliasSymbols.begin(), w.aliasSymbols.end(), at,
+                                 [](const auto& entry, size_t port) { return entry.first < port; });
+    if (read != w.aliasSymbols.end() && read->first == at)
+      for (uint32_t symbol : read->second) e.reading(symbol);
     return e;
   }
   return GlslExpr::name(tempName(op, port));

@@ -51,15 +51,14 @@ struct StageBody {
   // calls which, each pair once, in the order of the body (PlannedStage::opCalls).
   std::vector<std::pair<int, uint32_t>> opCalls;
   // Op outputs whose expression is already a name (a builtin, another temporary): used
-  // directly instead of copying into a new local, reading what the name reads (but not the
-  // op's own temporaries: their symbols mean something only inside that op). By the
-  // writer's port index (empty name: none; a flat vector: a map keyed by (op, port) was a
-  // tree walk per input on large graphs).
-  struct Alias {
-    std::string name;
-    std::vector<uint32_t> symbols;
-  };
-  std::vector<Alias> aliases;
+  // directly instead of copying into a new local. By the writer's port index ("" none; a
+  // flat vector: a map keyed by (op, port) was a tree walk per input on large graphs).
+  // An alias reads what its name reads, but not the op's own temporaries (their symbols
+  // mean something only inside that op): those symbols by port index, in the order the
+  // aliases were made (ascending), only for the aliases that read any (a builtin, a
+  // parameter, a sampler), so the flat vector stays one string per port.
+  std::vector<std::string> aliases;
+  std::vector<std::pair<size_t, std::vector<uint32_t>>> aliasSymbols;
   // The look-ups the ops make through EmitContext::sampleTexture and sampleScene (in the
   // order of the text; `kept` false once the text holding one was left out), and how often
   // each sampler is handed on by name (texture(), sceneTexture(), oceanMap()).

@@ -15,14 +15,15 @@ std::vector<const GlslItem*> libraryFor(const std::vector<std::string>& called) 
 // The library items are those the kept values call (StageBody::opCalls) and those the
 // locals call: known from the values, not read from the text.
 PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) {
+  PlannedStage s;
   std::vector<std::string> called = std::move(locals.calls);
   std::vector<uint32_t> seen;
   for (const auto& [op, fn] : w.opCalls) {
     if (std::find(seen.begin(), seen.end(), fn) != seen.end()) continue;
     seen.push_back(fn);
     called.push_back(GlslExpr::callName(fn));
+    s.opCalls.emplace_back(op, called.back());
   }
-  PlannedStage s;
   s.stage = stage;
   s.locals = std::move(locals.lines);
   s.body = std::move(w.body);
@@ -37,7 +38,6 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) 
   for (const auto& [sampler, times] : w.handedOn)
     if (times > 0) s.handedOn.insert(sampler);
   s.library = libraryFor(called);
-  for (const auto& [op, fn] : w.opCalls) s.opCalls.emplace_back(op, GlslExpr::callName(fn));
   return s;
 }
 
