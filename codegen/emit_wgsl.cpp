@@ -253,17 +253,12 @@ class WgslAssembler {
     return -1;
   }
 
-  // The op of the first body line calling `item` (or an item that uses it), for an error in it.
+  // The first op whose lines call `item` (or an item that uses it), for an error in it: from
+  // the plan's record of the calls (PlannedStage::opCalls).
   int firstOpCalling(const PlannedStage& s, const std::string& item) const {
-    size_t start = 0, line = 0;
-    while (start < s.body.size()) {
-      size_t end = s.body.find('\n', start);
-      if (end == std::string::npos) end = s.body.size();
-      for (const GlslItem* used : GlslLibrary::builtin().itemsFor(std::string_view(s.body).substr(start, end - start)))
-        if (used->name == item) return line < s.lineOp.size() ? s.lineOp[line] : -1;
-      start = end + 1;
-      ++line;
-    }
+    for (const auto& [op, fn] : s.opCalls)
+      for (const GlslItem* used : GlslLibrary::builtin().itemsNamed({fn}))
+        if (used->name == item) return op;
     return -1;
   }
 

@@ -26,13 +26,6 @@ std::string glslLiteral(const Value& v) {
   return s + ')';
 }
 
-bool isGlslName(const std::string& e) {
-  if (e.empty() || (e[0] >= '0' && e[0] <= '9')) return false;
-  for (char c : e)
-    if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_')) return false;
-  return true;
-}
-
 // Scene samplers are declared in the order of their resources' table rows.
 int sceneSamplerRank(const TextureInfo& t) { return static_cast<int>(sceneSamplerRow(*t.scene).resource); }
 
@@ -40,7 +33,7 @@ int sceneSamplerRank(const TextureInfo& t) { return static_cast<int>(sceneSample
 class PlanOpContext final : public EmitContext {
  public:
   PlanOpContext(BodyWriter& w, StageBody& b, int opIndex) : w_(w), b_(b), opIndex_(opIndex) {}
-  std::string input(int port) override {
+  GlslExpr input(int port) override {
     return w_.valueExpr(b_, op().inputs.at(static_cast<size_t>(port)), op().inputTypes.at(static_cast<size_t>(port)));
   }
   Type inputType(int port) const override { return op().inputTypes.at(static_cast<size_t>(port)); }
@@ -49,34 +42,34 @@ class PlanOpContext final : public EmitContext {
     if (!op().parsedOptions) throw std::logic_error("op '" + op().nodeId + "' has no parsed options");
     return *op().parsedOptions;
   }
-  void output(int port, std::string expression) override { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
-  std::string builtin(Builtin b) override { return w_.builtinExpr(b_, b); }
+  void output(int port, GlslExpr expression) override { outputs.at(static_cast<size_t>(port)) = std::move(expression); }
+  GlslExpr builtin(Builtin b) override { return w_.builtinExpr(b_, b); }
   // Held until the op's outputs are known: writeOps leaves out a local no read output needs.
-  std::string temporary(Type type, std::string expression) override {
+  GlslExpr temporary(Type type, GlslExpr expression) override {
     std::string name = w_.opName(opIndex_) + "_t" + std::to_string(temps.size());
     temps.push_back({type, name, std::move(expression)});
-    return name;
+    return GlslExpr::symbol(std::move(name), planSymbol(PlanSymbol::Temporary, temps.size() - 1));
   }
   unsigned stage() const override { return b_.stage; }
-  std::string timePhase(double omega) override { return w_.phaseUniform(b_, omega); }
+  GlslExpr timePhase(double omega) override { return w_.phaseUniform(b_, omega); }
   using EmitContext::texture;
-  std::string texture(std::string_view option, const SamplerState& sampler) override {
+  GlslExpr texture(std::string_view option, const SamplerState& sampler) override {
     return w_.handOn(b_, nodeTexture(option, sampler));
   }
-  std::string sceneTexture(SceneResource resource) override { return w_.handOn(b_, sceneTextureName(resource)); }
+  GlslExpr sceneTexture(SceneResource resource) override { return w_.handOn(b_, sceneTextureName(resource)); }
   using EmitContext::sampleTexture;
-  std::string sampleTexture(std::string_view option, const SamplerState& sampler, const std::string& coord) override {
+  GlslExpr sampleTexture(std::string_view option, const SamplerState& sampler, const GlslExpr& coord) override {
     return w_.fetch(b_, nodeTexture(option, sampler), coord);
   }
   using EmitContext::sampleScene;
-  std::string sampleScene(SceneResource resource, const std::string& coord) override {
+  GlslExpr sampleScene(SceneResource resource, const GlslExpr& coord) override {
     return w_.fetch(b_, sceneTextureName(resource), coord);
   }
   void reserveTexture(std::string_view option) override { nodeTexture(option, SamplerState{}); }
   const ocean::OceanSettings& oceanSettings(int port) const override {
     return spectrumOp(port).parsedOptions->as<ocean::OceanSettings>();
   }
-  std::string oceanMap(int port, int cascade, int which) override {
+  GlslExpr oceanMap(int port, int cascade, int which) override {
     spectrumOp(port);
     return w_.handOn(b_, w_.oceanMap(b_, op().inputs.at(static_cast<size_t>(port)).index, cascade, which));
   }
@@ -100,19 +93,20 @@ class PlanOpContext final : public EmitContext {
 
   struct Temporary {
     Type type;
-    std::string name, expression;
+    std::string name;
+    GlslExpr expression;
   };
-  std::vector<std::string> outputs;
+  std::vector<GlslExpr> outputs;
   std::vector<Temporary> temps;
 
  private:
   const Op& op() const { return w_.program().ops[static_cast<size_t>(opIndex_)]; }
-  std::string nodeTexture(std::string_view option, const SamplerState& sampler) {
+  GlslExpr nodeTexture(std::string_view option, const SamplerState& sampler) {
     const nlohmann::json& v = op().options().at(option);
     if (!v.is_string()) throw std::logic_error("texture(): option '" + std::string(option) + "' is not a texture");
     return w_.nodeTexture(b_, v.get<std::string>(), sampler);
   }
-  std::string sceneTextureName(SceneResource resource) {
+  GlslExpr sceneTextureName(SceneResource resource) {
     const auto& resources = spec().resources;
     const SceneResourceRow& row = sceneResourceRow(resource);
     if (std::find(resources.begin(), resources.end(), resource) == resources.end())
@@ -142,50 +136,48 @@ void popIfLast(std::vector<T>& entries, size_t size) {
   if (entries.size() == size) entries.pop_back();
 }
 
-// Whether `text` reads the identifier `name` (not as part of a longer identifier).
-bool readsName(std::string_view text, std::string_view name) {
-  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
-  for (size_t k = text.find(name); k != std::string_view::npos; k = text.find(name, k + 1)) {
-    bool startsWord = k == 0 || !word(text[k - 1]);
-    bool endsWord = k + name.size() == text.size() || !word(text[k + name.size()]);
-    if (startsWord && endsWord) return true;
-  }
-  return false;
-}
-
-// Which of an op's locals the stage needs: those its read outputs use, and those the needed
-// ones use (a local reads only earlier ones).
+// Which of an op's locals the stage needs: those its read outputs read, and those the
+// needed ones read (a local reads only earlier ones).
 std::vector<char> neededTemporaries(const PlanOpContext& ctx, const std::vector<char>& outputRead) {
   const size_t n = ctx.temps.size();
   std::vector<char> needed(n, 0);
+  auto markRead = [&](const GlslExpr& e) {
+    for (uint32_t symbol : e.symbols())
+      if (planSymbolKind(symbol) == PlanSymbol::Temporary) needed[planSymbolIndex(symbol)] = 1;
+  };
   for (size_t p = 0; p < ctx.outputs.size(); ++p)
-    if (outputRead[p])
-      for (size_t t = 0; t < n; ++t) needed[t] |= readsName(ctx.outputs[p], ctx.temps[t].name);
+    if (outputRead[p]) markRead(ctx.outputs[p]);
   for (size_t t = n; t-- > 0;)
-    if (needed[t])
-      for (size_t u = 0; u < t; ++u) needed[u] |= readsName(ctx.temps[t].expression, ctx.temps[u].name);
+    if (needed[t]) markRead(ctx.temps[t].expression);
   return needed;
 }
 
+// Calls `each` with every value of the op the stage keeps: its read outputs and needed locals.
+template <class F>
+void forKeptValues(const PlanOpContext& ctx, const std::vector<char>& outputRead, const std::vector<char>& needed, F each) {
+  for (size_t p = 0; p < ctx.outputs.size(); ++p)
+    if (outputRead[p]) each(ctx.outputs[p]);
+  for (size_t t = 0; t < ctx.temps.size(); ++t)
+    if (needed[t]) each(ctx.temps[t].expression);
+}
+
 // Takes back what only left-out locals read: a uniform, texture or builtin the op declared
-// first whose name is in none of the text the stage keeps from it (newest first, so a
-// texture appended last is popped first).
+// first that none of the values the stage keeps from it reads (newest first, so a texture
+// appended last is popped first).
 void forgetUnread(std::vector<StageBody::Registration>& registered, const PlanOpContext& ctx,
                   const std::vector<char>& outputRead, const std::vector<char>& needed) {
-  std::string kept;
-  for (size_t p = 0; p < ctx.outputs.size(); ++p)
-    if (outputRead[p]) kept += ctx.outputs[p] + '\n';
-  for (size_t t = 0; t < ctx.temps.size(); ++t)
-    if (needed[t]) kept += ctx.temps[t].expression + '\n';
+  std::vector<uint32_t> kept;
+  forKeptValues(ctx, outputRead, needed, [&](const GlslExpr& e) { kept.insert(kept.end(), e.symbols().begin(), e.symbols().end()); });
   for (size_t k = registered.size(); k-- > 0;)
-    if (kept.find(registered[k].name) == std::string::npos) registered[k].undo();
+    if (std::find(kept.begin(), kept.end(), registered[k].symbol) == kept.end()) registered[k].undo();
 }
 
 }  // namespace
 
 std::string StageBody::use(BuiltinUniform u) {
   std::string name(builtinUniformRow(u).glslName);
-  if (builtinUniforms.insert(u).second) noteRegistered(name, [this, u] { builtinUniforms.erase(u); });
+  if (builtinUniforms.insert(u).second)
+    noteRegistered(planSymbol(PlanSymbol::Uniform, static_cast<size_t>(u)), [this, u] { builtinUniforms.erase(u); });
   return name;
 }
 
@@ -237,7 +229,7 @@ void BodyWriter::writeOps(StageBody& w) {
     const Op& op = program_.ops[i];
     if (!(op.stage & w.stage)) continue;
     PlanOpContext ctx(*this, w, static_cast<int>(i));
-    ctx.outputs.assign(op.outputTypes.size(), "");
+    ctx.outputs.resize(op.outputTypes.size());
     registered.clear();
     w.registered = &registered;
     op.spec->emit(ctx);
@@ -250,77 +242,106 @@ void BodyWriter::writeOps(StageBody& w) {
     if (!registered.empty() && (std::find(needed.begin(), needed.end(), 0) != needed.end() ||
                                 std::find(outputRead.begin(), outputRead.end(), 0) != outputRead.end()))
       forgetUnread(registered, ctx, outputRead, needed);
+    const size_t opCallsBefore = w.opCalls.size();
+    forKeptValues(ctx, outputRead, needed, [&](const GlslExpr& e) {
+      for (uint32_t fn : e.callIds()) {
+        const std::pair<int, uint32_t> call{static_cast<int>(i), fn};
+        if (std::find(w.opCalls.begin() + static_cast<std::ptrdiff_t>(opCallsBefore), w.opCalls.end(), call) == w.opCalls.end())
+          w.opCalls.push_back(call);
+      }
+    });
     for (size_t t = 0; t < ctx.temps.size(); ++t)
       if (needed[t])
-        w.line(static_cast<int>(i), typeName(ctx.temps[t].type), " ", ctx.temps[t].name, " = ", ctx.temps[t].expression, ";");
+        w.line(static_cast<int>(i), typeName(ctx.temps[t].type), " ", ctx.temps[t].name, " = ", ctx.temps[t].expression.text(), ";");
     for (size_t p = 0; p < op.outputTypes.size(); ++p) {
       if (!used[portBase_[i] + p]) continue;
       if (ctx.outputs[p].empty())
         throw std::logic_error("node '" + op.spec->type + "' emitted no expression for output '" +
                                op.spec->outputs[p].name + "'");
-      if (isGlslName(ctx.outputs[p])) {
+      if (ctx.outputs[p].isName()) {
         if (w.aliases.empty()) w.aliases.resize(portBase_.back());
-        w.aliases[portBase_[i] + p] = std::move(ctx.outputs[p]);
+        const size_t at = portBase_[i] + p;
+        w.aliases[at] = ctx.outputs[p].text();
+        std::vector<uint32_t> symbols;
+        for (uint32_t symbol : ctx.outputs[p].symbols())
+          if (planSymbolKind(symbol) != PlanSymbol::Temporary) symbols.push_back(symbol);
+        if (!symbols.empty()) w.aliasSymbols.emplace_back(at, std::move(symbols));
         continue;
       }
       const int at = static_cast<int>(i);
       if (op.outputTypes.size() > 1)
-        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], "_", op.spec->outputs[p].name, " = ", ctx.outputs[p], ";");
+        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], "_", op.spec->outputs[p].name, " = ", ctx.outputs[p].text(), ";");
       else
-        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], " = ", ctx.outputs[p], ";");
+        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], " = ", ctx.outputs[p].text(), ";");
     }
   }
 }
 
-std::string BodyWriter::valueExpr(StageBody& w, const ValueRef& r, Type want) {
-  std::string e;
+GlslExpr BodyWriter::valueExpr(StageBody& w, const ValueRef& r, Type want) {
+  GlslExpr e;
   Type have = program_.typeOf(r);
   switch (r.kind) {
     case ValueRef::Kind::Const: return glslLiteral(r.constant().convertedTo(want));
-    case ValueRef::Kind::Param:
-      e = paramNames_[static_cast<size_t>(r.index)];
-      if (w.parameters.insert(r.index).second) w.noteRegistered(e, [&w, i = r.index] { w.parameters.erase(i); });
+    case ValueRef::Kind::Param: {
+      const uint32_t symbol = planSymbol(PlanSymbol::Parameter, static_cast<size_t>(r.index));
+      e = GlslExpr::symbol(paramNames_[static_cast<size_t>(r.index)], symbol);
+      if (w.parameters.insert(r.index).second) w.noteRegistered(symbol, [&w, i = r.index] { w.parameters.erase(i); });
       break;
+    }
     case ValueRef::Kind::Builtin: e = builtinExpr(w, static_cast<Builtin>(r.index)); break;
     case ValueRef::Kind::Op: {
+      // Another op's value: what it reads was declared for that op, which keeps it.
       const Op& op = program_.ops[static_cast<size_t>(r.index)];
-      e = w.stage == kFragmentStage && !(op.stage & kFragmentStage) ? varyingName(r.index, r.port) : opOutput(w, r.index, r.port);
+      e = w.stage == kFragmentStage && !(op.stage & kFragmentStage) ? GlslExpr::name(varyingName(r.index, r.port))
+                                                                    : opOutput(w, r.index, r.port);
       break;
     }
     case ValueRef::Kind::None: throw std::logic_error("emit: unset value");
   }
-  if (have != want && have == Type::Float) return std::string(typeName(want)) + "(" + e + ")";
+  if (have != want && have == Type::Float) return GlslExpr(typeName(want)) + "(" + e + ")";
   return e;
 }
 
-std::string BodyWriter::outputExpr(StageBody& w, OutputSlot slot, std::string fallback) {
+GlslExpr BodyWriter::outputExpr(StageBody& w, OutputSlot slot, GlslExpr fallback) {
   const ProgramOutput* out = program_.output(slot);
   if (!out) return fallback;
   return valueExpr(w, out->value, out->type);
 }
 
-std::string BodyWriter::builtinExpr(StageBody& w, Builtin b) {
+GlslExpr BodyWriter::builtinExpr(StageBody& w, Builtin b) {
   bool added = w.builtins.insert(b).second;
   // What the builtin's own expression declares (u_camera_position for the view direction)
   // is read by the builtin's line, not by the op: it goes and stays with the builtin.
   std::vector<StageBody::Registration> inner, *outer = w.registered;
   w.registered = &inner;
-  std::string e = namer_(w, b);
+  GlslExpr e = namer_(w, b);
   w.registered = outer;
+  const uint32_t symbol = planSymbol(PlanSymbol::Builtin, static_cast<size_t>(b));
+  e.reading(symbol);
   if (added)
-    w.noteRegistered(e, [&w, b, inner = std::move(inner)] {
+    w.noteRegistered(symbol, [&w, b, inner = std::move(inner)] {
       w.builtins.erase(b);
       for (size_t k = inner.size(); k-- > 0;) inner[k].undo();
     });
   else
-    for (auto& r : inner) w.noteRegistered(r.name, std::move(r.undo));
+    for (auto& r : inner) {
+      e.reading(r.symbol);
+      w.noteRegistered(r.symbol, std::move(r.undo));
+    }
   return e;
 }
 
-std::string BodyWriter::opOutput(const StageBody& w, int op, int port) const {
+GlslExpr BodyWriter::opOutput(const StageBody& w, int op, int port) const {
   size_t at = portBase_[static_cast<size_t>(op)] + static_cast<size_t>(port);
-  if (at < w.aliases.size() && !w.aliases[at].empty()) return w.aliases[at];
-  return tempName(op, port);
+  if (at < w.aliases.size() && !w.aliases[at].empty()) {
+    GlslExpr e = GlslExpr::name(w.aliases[at]);
+    auto read = std::lower_bound(w.aliasSymbols.begin(), w.aliasSymbols.end(), at,
+                                 [](const auto& entry, size_t port) { return entry.first < port; });
+    if (read != w.aliasSymbols.end() && read->first == at)
+      for (uint32_t symbol : read->second) e.reading(symbol);
+    return e;
+  }
+  return GlslExpr::name(tempName(op, port));
 }
 
 std::string BodyWriter::tempName(int op, int port) const {
@@ -335,33 +356,35 @@ const std::string& BodyWriter::varyingName(int op, int port) const {
   return name;
 }
 
-std::string BodyWriter::phaseUniform(StageBody& w, double omega) {
+GlslExpr BodyWriter::phaseUniform(StageBody& w, double omega) {
   for (auto& p : phases_)
     if (p.omega == omega) {
+      const size_t at = static_cast<size_t>(&p - phases_.data());
+      const uint32_t symbol = planSymbol(PlanSymbol::Phase, at);
       if (!(p.stages & w.stage))
-        w.noteRegistered(p.name, [this, at = &p - phases_.data(), s = w.stage] { phases_[static_cast<size_t>(at)].stages &= ~s; });
+        w.noteRegistered(symbol, [this, at, s = w.stage] { phases_[at].stages &= ~s; });
       p.stages |= w.stage;
-      return p.name;
+      return GlslExpr::symbol(p.name, symbol);
     }
   UniformInfo u{std::string(builtinUniformRow(BuiltinUniform::TimePhase).glslName) + std::to_string(phases_.size()),
                 Type::Float, -1, BuiltinUniform::TimePhase, w.stage, omega};
+  const uint32_t symbol = planSymbol(PlanSymbol::Phase, phases_.size());
   phases_.push_back(u);
-  w.noteRegistered(u.name, [this, n = phases_.size()] { popIfLast(phases_, n); });
-  return u.name;
+  w.noteRegistered(symbol, [this, n = phases_.size()] { popIfLast(phases_, n); });
+  return GlslExpr::symbol(u.name, symbol);
 }
 
 // One sampler per distinct (source, sampler state): GL 3.3 keeps wrap and filter in the
 // texture object (the runtime uses no sampler objects) and sRGB is its internal format,
 // so a PNG read two ways is two textures, each with its own unit.
-std::string BodyWriter::nodeTexture(StageBody& w, const std::string& source, const SamplerState& sampler) {
+GlslExpr BodyWriter::nodeTexture(StageBody& w, const std::string& source, const SamplerState& sampler) {
   for (auto& t : nodeTextures_)
     if (t.source == source && t.sampler == sampler) {
-      if (!(t.stages & w.stage))
-        w.noteRegistered(t.name, [this, at = &t - nodeTextures_.data(), s = w.stage] {
-          nodeTextures_[static_cast<size_t>(at)].stages &= ~s;
-        });
+      const size_t at = static_cast<size_t>(&t - nodeTextures_.data());
+      const uint32_t symbol = planSymbol(PlanSymbol::NodeTexture, at);
+      if (!(t.stages & w.stage)) w.noteRegistered(symbol, [this, at, s = w.stage] { nodeTextures_[at].stages &= ~s; });
       t.stages |= w.stage;
-      return t.name;
+      return GlslExpr::symbol(t.name, symbol);
     }
   std::string stem = source.rfind(kBuiltinTexturePrefix, 0) == 0 ? source.substr(kBuiltinTexturePrefix.size())
                                                                    : std::filesystem::path(source).stem().string();
@@ -370,20 +393,22 @@ std::string BodyWriter::nodeTexture(StageBody& w, const std::string& source, con
   t.source = source;
   t.sampler = sampler;
   t.stages = w.stage;
+  const uint32_t symbol = planSymbol(PlanSymbol::NodeTexture, nodeTextures_.size());
   nodeTextures_.push_back(t);
-  w.noteRegistered(t.name, [this, n = nodeTextures_.size()] { popIfLast(nodeTextures_, n); });
-  return t.name;
+  w.noteRegistered(symbol, [this, n = nodeTextures_.size()] { popIfLast(nodeTextures_, n); });
+  return GlslExpr::symbol(t.name, symbol);
 }
 
-std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
+GlslExpr BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
+  const uint32_t symbol = planSymbol(PlanSymbol::SceneTexture, static_cast<size_t>(sampler));
   for (auto& t : sceneTextures_)
     if (t.scene == sampler) {
       if (!(t.stages & w.stage))
-        w.noteRegistered(t.name, [this, at = &t - sceneTextures_.data(), s = w.stage] {
+        w.noteRegistered(symbol, [this, at = &t - sceneTextures_.data(), s = w.stage] {
           sceneTextures_[static_cast<size_t>(at)].stages &= ~s;
         });
       t.stages |= w.stage;
-      return t.name;
+      return GlslExpr::symbol(t.name, symbol);
     }
   const SceneSamplerRow& row = sceneSamplerRow(sampler);
   TextureInfo t;
@@ -392,52 +417,58 @@ std::string BodyWriter::sceneSampler(StageBody& w, SceneSampler sampler) {
   t.scene = sampler;
   t.stages = w.stage;
   sceneTextures_.push_back(t);
-  w.noteRegistered(t.name, [this, n = sceneTextures_.size()] { popIfLast(sceneTextures_, n); });
-  return t.name;
+  w.noteRegistered(symbol, [this, n = sceneTextures_.size()] { popIfLast(sceneTextures_, n); });
+  return GlslExpr::symbol(t.name, symbol);
 }
 
-// Taken back, like a declaration, when the op's text holding it is left out.
-std::string BodyWriter::fetch(StageBody& w, const std::string& sampler, const std::string& coord) {
-  TextureFetch f{sampler, coord};
-  std::string call = f.call();
-  w.fetches.push_back({std::move(f)});
-  w.noteRegistered(call, [&w, at = w.fetches.size() - 1] { w.fetches[at].kept = false; });
-  return call;
+// Taken back, like a declaration, when the op's value holding it is left out.
+GlslExpr BodyWriter::fetch(StageBody& w, const GlslExpr& sampler, const GlslExpr& coord) {
+  GlslExpr call = "texture(" + sampler + ", " + coord + ")";
+  const uint32_t symbol = planSymbol(PlanSymbol::Fetch, w.fetches.size());
+  const std::span<const uint32_t> reads = coord.symbols();
+  const bool atScreenUv = coord.isName() && std::find(reads.begin(), reads.end(),
+                                                      planSymbol(PlanSymbol::Builtin, static_cast<size_t>(Builtin::ScreenUv))) != reads.end();
+  w.fetches.push_back({TextureFetch{sampler.text(), coord.text()}, true, atScreenUv});
+  w.noteRegistered(symbol, [&w, at = w.fetches.size() - 1] { w.fetches[at].kept = false; });
+  return call.reading(symbol);
 }
 
-std::string BodyWriter::handOn(StageBody& w, std::string sampler) {
-  ++w.handedOn[sampler];
-  w.noteRegistered(sampler, [&w, sampler] { --w.handedOn[sampler]; });
+// Counted under the sampler's own symbol (the first it reads): kept while a kept value of
+// the op names the sampler.
+GlslExpr BodyWriter::handOn(StageBody& w, GlslExpr sampler) {
+  ++w.handedOn[sampler.text()];
+  w.noteRegistered(sampler.symbols().front(), [&w, name = sampler.text()] { --w.handedOn[name]; });
   return sampler;
 }
 
 // One sampler per ocean, cascade and map, named after them ("u_ocean0_slopes2").
-std::string BodyWriter::oceanMap(StageBody& w, int spectrumOp, int cascade, int which) {
+GlslExpr BodyWriter::oceanMap(StageBody& w, int spectrumOp, int cascade, int which) {
   auto known = std::find(oceanOps_.begin(), oceanOps_.end(), spectrumOp);
   const int ocean = static_cast<int>(known - oceanOps_.begin());
   const OceanMapRef ref{ocean, cascade, which};
+  // Every map reads its ocean: kept while any kept value samples one of its maps.
+  const uint32_t oceanSymbol = planSymbol(PlanSymbol::Ocean, static_cast<size_t>(ocean));
   if (known == oceanOps_.end()) {
     // Taken back with the op's maps when no read output needs them (then no ocean is simulated).
     oceanOps_.push_back(spectrumOp);
-    // Its name is the prefix of its maps' names: kept while any kept text samples one of them.
-    w.noteRegistered("u_ocean" + std::to_string(ocean) + "_", [this, n = oceanOps_.size()] { popIfLast(oceanOps_, n); });
+    w.noteRegistered(oceanSymbol, [this, n = oceanOps_.size()] { popIfLast(oceanOps_, n); });
   }
   for (auto& t : oceanTextures_)
     if (t.ocean == ref) {
-      if (!(t.stages & w.stage))
-        w.noteRegistered(t.name, [this, at = &t - oceanTextures_.data(), s = w.stage] {
-          oceanTextures_[static_cast<size_t>(at)].stages &= ~s;
-        });
+      const size_t at = static_cast<size_t>(&t - oceanTextures_.data());
+      const uint32_t symbol = planSymbol(PlanSymbol::OceanTexture, at);
+      if (!(t.stages & w.stage)) w.noteRegistered(symbol, [this, at, s = w.stage] { oceanTextures_[at].stages &= ~s; });
       t.stages |= w.stage;
-      return t.name;
+      return GlslExpr::symbol(t.name, symbol).reading(oceanSymbol);
     }
   TextureInfo t;
   t.name = "u_ocean" + std::to_string(ocean) + "_" + ocean::kOceanMapNames[which] + std::to_string(cascade);
   t.ocean = ref;
   t.stages = w.stage;
+  const uint32_t symbol = planSymbol(PlanSymbol::OceanTexture, oceanTextures_.size());
   oceanTextures_.push_back(t);
-  w.noteRegistered(t.name, [this, n = oceanTextures_.size()] { popIfLast(oceanTextures_, n); });
-  return t.name;
+  w.noteRegistered(symbol, [this, n = oceanTextures_.size()] { popIfLast(oceanTextures_, n); });
+  return GlslExpr::symbol(t.name, symbol).reading(oceanSymbol);
 }
 
 std::vector<OceanInfo> BodyWriter::oceans() const {

@@ -41,22 +41,22 @@ std::vector<TextureFetch> deferredFetches(const StageBody& fragment) {
 }
 
 // The normal faces up, so its y is sqrt(1 - x^2 - z^2).
-std::vector<std::string> deferredLocals(const StageBody& fragment) {
+StageLocals deferredLocals(const StageBody& fragment) {
   const auto& b = fragment.builtins;
   GBufferReads reads = gBufferReads(fragment);
-  std::vector<std::string> lines;
+  StageLocals lines;
   if (b.count(Builtin::ScreenUv))
-    lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + std::string(builtinUniformRow(BuiltinUniform::ViewportSize).glslName) + ";");
+    lines.add("vec2 b_screen_uv = gl_FragCoord.xy / " + std::string(builtinUniformRow(BuiltinUniform::ViewportSize).glslName) + ";");
   if (reads.surface) {
-    lines.push_back("vec4 b_water_surface = texture(" + gBufferSampler(SceneSampler::WaterSurface) + ", b_screen_uv);");
-    lines.push_back("vec3 v_world_position = b_water_surface.xyz;");
+    lines.add("vec4 b_water_surface = texture(" + gBufferSampler(SceneSampler::WaterSurface) + ", b_screen_uv);");
+    lines.add("vec3 v_world_position = b_water_surface.xyz;");
   }
   if (reads.normalUv) {
-    lines.push_back("vec4 b_water_normal_uv = texture(" + gBufferSampler(SceneSampler::WaterNormalUv) + ", b_screen_uv);");
+    lines.add("vec4 b_water_normal_uv = texture(" + gBufferSampler(SceneSampler::WaterNormalUv) + ", b_screen_uv);");
     if (b.count(Builtin::Normal))
-      lines.push_back("vec3 v_normal = vec3(b_water_normal_uv.x, sqrt(max(1.0 - dot(b_water_normal_uv.xy, "
+      lines.add("vec3 v_normal = vec3(b_water_normal_uv.x, sqrt(max(1.0 - dot(b_water_normal_uv.xy, "
                       "b_water_normal_uv.xy), 0.0)), b_water_normal_uv.y);");
-    if (b.count(Builtin::Uv)) lines.push_back("vec2 v_uv = b_water_normal_uv.zw;");
+    if (b.count(Builtin::Uv)) lines.add("vec2 v_uv = b_water_normal_uv.zw;");
   }
   return lines;
 }

@@ -10,26 +10,28 @@ namespace {
 
 std::string probeUniformName(BuiltinUniform u) { return std::string(builtinUniformRow(u).glslName); }
 
-std::string probeBuiltin(StageBody& w, Builtin b) {
+GlslExpr probeBuiltin(StageBody& w, Builtin b) {
   if (b == Builtin::Uv) {
     // b_uv (probeLocals): the case's uv, varying across the quad by its gradient.
     w.use(BuiltinUniform::ProbeUvGradient);
     w.use(BuiltinUniform::ProbePixel);
     w.use(builtinRow(b).uniform);
-    return "b_uv";
+    return GlslExpr::name("b_uv");
   }
-  return w.use(builtinRow(b).uniform);
+  return w.uniform(builtinRow(b).uniform);
 }
 
 // uv also moves by the case's gradient per pixel away from the case's pixel, so dFdx(uv)
 // and dFdy(uv) (the level of detail of a mipmapped texture()) are the gradient, while at
 // the pixel itself the offset is exactly 0 and uv is the case's value bit for bit.
-std::vector<std::string> probeLocals(const StageBody& w) {
+StageLocals probeLocals(const StageBody& w) {
   if (!w.builtins.count(Builtin::Uv)) return {};
   const std::string gradient = probeUniformName(BuiltinUniform::ProbeUvGradient);
   const std::string pixel = probeUniformName(BuiltinUniform::ProbePixel);
-  return {"vec2 b_uv = " + probeUniformName(BuiltinUniform::ProbeUv) + " + " + gradient + ".xy * (gl_FragCoord.x - " + pixel +
-          ".x) + " + gradient + ".zw * (gl_FragCoord.y - " + pixel + ".y);"};
+  StageLocals locals;
+  locals.add("vec2 b_uv = " + probeUniformName(BuiltinUniform::ProbeUv) + " + " + gradient + ".xy * (gl_FragCoord.x - " + pixel +
+             ".x) + " + gradient + ".zw * (gl_FragCoord.y - " + pixel + ".y);");
+  return locals;
 }
 
 }  // namespace
@@ -45,7 +47,7 @@ ShaderPlan planProbe(const Program& program, std::string sourceName) {
   writer.writeOps(frag);
   if (program.outputs.empty()) throw std::logic_error("emit: a probe program needs an output");
   const ProgramOutput& out = program.outputs.front();
-  std::string value = writer.valueExpr(frag, out.value, out.type);
+  std::string value = writer.valueExpr(frag, out.value, out.type).text();
   const char* pad[] = {"", ", 0.0, 0.0, 0.0", ", 0.0, 0.0", ", 0.0", ""};
   int n = componentCount(out.type);
   if (n < 1 || n > 4) throw std::logic_error("emit: a probe output must be a float or a vector");

@@ -17,57 +17,60 @@ const char* const kSurfaceScreenUv = "b_screen_uv";
 // How a surface's (or the deferred pass's) stage bodies name the builtins: vertex stages
 // compute them as locals from the attributes (or the patch), fragment stages from the
 // varyings (or the G-buffer).
-std::string surfaceBuiltin(const ShaderPlan& plan, StageBody& w, Builtin b) {
+GlslExpr surfaceBuiltin(const ShaderPlan& plan, StageBody& w, Builtin b) {
   bool vertex = w.stage == kVertexStage;
   switch (b) {
-    case Builtin::Uv: return vertex ? (plan.tessellation ? "b_uv" : iface::kUvAttribute) : "v_uv";
+    case Builtin::Uv: return GlslExpr::name(vertex ? (plan.tessellation ? "b_uv" : iface::kUvAttribute) : "v_uv");
     case Builtin::WorldPosition:
       if (vertex) w.use(BuiltinUniform::Model);
-      return vertex ? "b_world_position" : "v_world_position";
+      return GlslExpr::name(vertex ? "b_world_position" : "v_world_position");
     case Builtin::Normal:
       if (vertex) w.use(BuiltinUniform::Model);
-      return "b_normal";
+      return GlslExpr::name("b_normal");
     case Builtin::ViewDirection:
       w.use(BuiltinUniform::CameraPosition);
       if (vertex) w.use(BuiltinUniform::Model);
-      return "b_view_direction";
-    case Builtin::ScreenUv: w.use(BuiltinUniform::ViewportSize); return kSurfaceScreenUv;
+      return GlslExpr::name("b_view_direction");
+    case Builtin::ScreenUv: w.use(BuiltinUniform::ViewportSize); return GlslExpr::name(kSurfaceScreenUv);
     case Builtin::FragDepth:
-      return plan.kind == ShaderPlan::Kind::Deferred && !vertex ? "b_water_surface.w" : "gl_FragCoord.z";
+      return GlslExpr(plan.kind == ShaderPlan::Kind::Deferred && !vertex ? "b_water_surface.w" : "gl_FragCoord.z");
     case Builtin::CameraPosition:
     case Builtin::Time:
     case Builtin::CameraNearFar:
     case Builtin::View:
     case Builtin::Projection:
-    case Builtin::SunDirection: return w.use(builtinRow(b).uniform);
+    case Builtin::SunDirection: return w.uniform(builtinRow(b).uniform);
   }
-  return "";
+  return GlslExpr();
 }
 
 // The untessellated vertex shader's builtin locals: the mesh in world space.
-std::vector<std::string> vertexLocals(const StageBody& w) {
+StageLocals vertexLocals(const StageBody& w) {
   const std::string model = surfaceUniformName(BuiltinUniform::Model);
-  std::vector<std::string> lines;
-  lines.push_back("vec3 b_world_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
+  StageLocals locals;
+  locals.add("vec3 b_world_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
   if (w.builtins.count(Builtin::Normal))
-    lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");");
+    locals.add("vec3 b_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");",
+               "wg_safe_normalize_vec3");
   if (w.builtins.count(Builtin::ViewDirection))
-    lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
-                    " - b_world_position);");
-  return lines;
+    locals.add("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
+                   " - b_world_position);",
+               "wg_safe_normalize_vec3");
+  return locals;
 }
 
 // The fragment shader's builtin locals, from the varyings (deferred: from the G-buffer).
-std::vector<std::string> fragmentLocals(const ShaderPlan& plan, const StageBody& w) {
+StageLocals fragmentLocals(const ShaderPlan& plan, const StageBody& w) {
   const bool deferred = plan.kind == ShaderPlan::Kind::Deferred;
-  std::vector<std::string> lines = deferred ? deferredLocals(w) : std::vector<std::string>{};
-  if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(v_normal);");
+  StageLocals locals = deferred ? deferredLocals(w) : StageLocals{};
+  if (w.builtins.count(Builtin::Normal)) locals.add("vec3 b_normal = wg_safe_normalize_vec3(v_normal);", "wg_safe_normalize_vec3");
   if (w.builtins.count(Builtin::ViewDirection))
-    lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
-                    " - v_world_position);");
+    locals.add("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
+                   " - v_world_position);",
+               "wg_safe_normalize_vec3");
   if (w.builtins.count(Builtin::ScreenUv) && !deferred)
-    lines.push_back("vec2 b_screen_uv = gl_FragCoord.xy / " + surfaceUniformName(BuiltinUniform::ViewportSize) + ";");
-  return lines;
+    locals.add("vec2 b_screen_uv = gl_FragCoord.xy / " + surfaceUniformName(BuiltinUniform::ViewportSize) + ";");
+  return locals;
 }
 
 }  // namespace
@@ -83,8 +86,8 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
 
   StageBody frag(kFragmentStage);
   writer.writeOps(frag);
-  std::string color = writer.outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
-  std::string alpha = writer.outputExpr(frag, OutputSlot::FragmentAlpha, "1.0");
+  std::string color = writer.outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)").text();
+  std::string alpha = writer.outputExpr(frag, OutputSlot::FragmentAlpha, "1.0").text();
   const size_t colorStatement = frag.body.size(), colorLine = frag.lineOp.size();
   frag.line(-1, iface::kColorOutput, " = vec4(", color, ", ", alpha, ");");
   if (deferred) planDeferredSamplers(writer, frag);
@@ -97,12 +100,13 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   bool fragNeedsUv = frag.builtins.count(Builtin::Uv) > 0;
   // Deferred: the vertex shader feeds the runtime's G-buffer pass, which stores all three.
   if (deferred) fragNeedsPosition = fragNeedsNormal = fragNeedsUv = true;
-  std::string position = writer.outputExpr(vert, OutputSlot::VertexPosition, writer.builtinExpr(vert, Builtin::WorldPosition));
+  std::string position = writer.outputExpr(vert, OutputSlot::VertexPosition, writer.builtinExpr(vert, Builtin::WorldPosition)).text();
   vert.line(-1, "gl_Position = ", vert.use(BuiltinUniform::ViewProjection), " * vec4(", position, ", 1.0);");
   if (fragNeedsPosition) vert.line(-1, "v_world_position = ", position, ";");
   if (fragNeedsNormal) {
-    std::string normal = program.output(OutputSlot::VertexNormal) ? writer.outputExpr(vert, OutputSlot::VertexNormal, "")
-                                                                   : writer.builtinExpr(vert, Builtin::Normal);
+    std::string normal = (program.output(OutputSlot::VertexNormal) ? writer.outputExpr(vert, OutputSlot::VertexNormal, "")
+                                                                    : writer.builtinExpr(vert, Builtin::Normal))
+                             .text();
     vert.line(-1, "v_normal = ", normal, ";");
   }
   if (fragNeedsUv) {
@@ -110,7 +114,7 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
     vert.line(-1, "v_uv = ", plan.tessellation ? "b_uv" : iface::kUvAttribute, ";");
   }
   for (const auto& v : program.varyings)
-    vert.line(-1, writer.varyingName(v.index, v.port), " = ", writer.opOutput(vert, v.index, v.port), ";");
+    vert.line(-1, writer.varyingName(v.index, v.port), " = ", writer.opOutput(vert, v.index, v.port).text(), ";");
   if (plan.tessellation) {
     // The vertex shader places the mesh (model), the control stage measures distances.
     vert.use(BuiltinUniform::Model);
@@ -160,11 +164,11 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   }
   // Deferred: the look-ups of the G-buffer locals come first in main().
   std::vector<TextureFetch> localFetches = deferred ? deferredFetches(frag) : std::vector<TextureFetch>{};
+  for (auto& f : frag.fetches) f.fetch.atScreenUv = f.coordIsScreenUv;
   PlannedStage& fs = plan.stages.emplace_back(plannedStage(ShaderStage::Fragment, std::move(frag), fragmentLocals(plan, frag)));
   addOwnGlsl(program, fs);
   fs.colorStatement = colorStatement;
   fs.colorLine = colorLine;
-  for (auto& f : fs.fetches) f.atScreenUv = f.coord == kSurfaceScreenUv;
   fs.fetches.insert(fs.fetches.begin(), localFetches.begin(), localFetches.end());
   // Deferred: the full-screen fragment shader reads the G-buffer instead of varyings.
   if (!deferred) fs.inputs = varyings;

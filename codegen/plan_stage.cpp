@@ -8,26 +8,24 @@
 
 namespace wg {
 
-std::vector<const GlslItem*> libraryFor(std::string_view code) { return GlslLibrary::builtin().itemsFor(code); }
+std::vector<const GlslItem*> libraryFor(const std::vector<std::string>& called) {
+  return GlslLibrary::builtin().itemsNamed(called);
+}
 
-PlannedStage plannedStage(ShaderStage stage, StageBody&& w, std::vector<std::string> locals) {
-  // Only lines that name a library item ("wg_"/"WG_" words) can call one: the scan reads
-  // those instead of a copy of the whole body.
-  auto callsLibrary = [](std::string_view l) {
-    return l.find("wg_") != std::string_view::npos || l.find("WG_") != std::string_view::npos;
-  };
-  std::string code;
-  for (const auto& l : locals)
-    if (callsLibrary(l)) code.append(l).push_back('\n');
-  const std::string_view body = w.body;
-  for (size_t start = 0; start < body.size();) {
-    size_t end = body.find('\n', start) + 1;  // every body line ends in '\n'
-    if (callsLibrary(body.substr(start, end - start))) code.append(body.substr(start, end - start));
-    start = end;
-  }
+// The library items are those the kept values call (StageBody::opCalls) and those the
+// locals call: known from the values, not read from the text.
+PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) {
   PlannedStage s;
+  std::vector<std::string> called = std::move(locals.calls);
+  std::vector<uint32_t> seen;
+  for (const auto& [op, fn] : w.opCalls) {
+    if (std::find(seen.begin(), seen.end(), fn) != seen.end()) continue;
+    seen.push_back(fn);
+    called.push_back(GlslExpr::callName(fn));
+    s.opCalls.emplace_back(op, called.back());
+  }
   s.stage = stage;
-  s.locals = std::move(locals);
+  s.locals = std::move(locals.lines);
   s.body = std::move(w.body);
   s.lineOp = std::move(w.lineOp);
   // Written by appending, the body may hold up to twice its size; the plan keeps it until
@@ -39,7 +37,7 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, std::vector<std::str
     if (f.kept) s.fetches.push_back(std::move(f.fetch));
   for (const auto& [sampler, times] : w.handedOn)
     if (times > 0) s.handedOn.insert(sampler);
-  s.library = libraryFor(code);
+  s.library = libraryFor(called);
   return s;
 }
 

@@ -13,13 +13,12 @@ namespace {
 
 std::string tessUniformName(BuiltinUniform u) { return std::string(builtinUniformRow(u).glslName); }
 
-// A stage whose body is fixed text (no op wrote it). Its library items come from the
-// whole body: its lines are few and short.
-PlannedStage fixedStage(ShaderStage stage, std::string body) {
+// A stage whose body is fixed text (no op wrote it), calling the library functions `calls`.
+PlannedStage fixedStage(ShaderStage stage, std::string body, const std::vector<std::string>& calls) {
   PlannedStage s;
   s.stage = stage;
   s.lineOp.assign(static_cast<size_t>(std::count(body.begin(), body.end(), '\n')), -1);
-  s.library = libraryFor(body);
+  s.library = libraryFor(calls);
   s.body = std::move(body);
   return s;
 }
@@ -41,28 +40,33 @@ std::vector<StageVariable> patchVariables(const StageBody& geometry, const std::
 }
 
 // The patch's corners, interpolated at gl_TessCoord.
-std::vector<std::string> tessEvaluationLocals(const StageBody& w) {
+StageLocals tessEvaluationLocals(const StageBody& w) {
   auto lerp3 = [](const std::string& a) {
     return "gl_TessCoord.x * " + a + "[0] + gl_TessCoord.y * " + a + "[1] + gl_TessCoord.z * " + a + "[2]";
   };
-  std::vector<std::string> lines;
-  lines.push_back("vec3 b_world_position = " + lerp3("te_position") + ";");
-  if (w.builtins.count(Builtin::Normal)) lines.push_back("vec3 b_normal = wg_safe_normalize_vec3(" + lerp3("te_normal") + ");");
-  if (w.builtins.count(Builtin::Uv)) lines.push_back("vec2 b_uv = " + lerp3("te_uv") + ";");
+  StageLocals locals;
+  locals.add("vec3 b_world_position = " + lerp3("te_position") + ";");
+  if (w.builtins.count(Builtin::Normal))
+    locals.add("vec3 b_normal = wg_safe_normalize_vec3(" + lerp3("te_normal") + ");", "wg_safe_normalize_vec3");
+  if (w.builtins.count(Builtin::Uv)) locals.add("vec2 b_uv = " + lerp3("te_uv") + ";");
   if (w.builtins.count(Builtin::ViewDirection))
-    lines.push_back("vec3 b_view_direction = wg_safe_normalize_vec3(" + tessUniformName(BuiltinUniform::CameraPosition) +
-                    " - b_world_position);");
-  return lines;
+    locals.add("vec3 b_view_direction = wg_safe_normalize_vec3(" + tessUniformName(BuiltinUniform::CameraPosition) +
+                   " - b_world_position);",
+               "wg_safe_normalize_vec3");
+  return locals;
 }
 
 PlannedStage tessVertexStage(const ShaderPlan& plan, const StageBody& geometry) {
   const std::string model = tessUniformName(BuiltinUniform::Model);
   std::string body = "  tc_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;\n";
-  if (geometry.builtins.count(Builtin::Normal))
+  std::vector<std::string> calls;
+  if (geometry.builtins.count(Builtin::Normal)) {
     body += "  tc_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");\n";
+    calls.emplace_back("wg_safe_normalize_vec3");
+  }
   if (geometry.builtins.count(Builtin::Uv)) body += "  tc_uv = " + std::string(iface::kUvAttribute) + ";\n";
   body += "  gl_Position = vec4(tc_position, 1.0);\n";
-  PlannedStage s = fixedStage(ShaderStage::Vertex, body);
+  PlannedStage s = fixedStage(ShaderStage::Vertex, body, calls);
   s.attributes = plan.attributes;
   s.outputs = patchVariables(geometry, "tc_");
   s.uniforms = uniformsWhere(plan, [&](const UniformInfo& u) { return u.name == model; });
@@ -86,7 +90,7 @@ PlannedStage tessControlStage(const ShaderPlan& plan, const StageBody& geometry)
   body += "    gl_TessLevelOuter[2] = 0.5 * (f0 + f1);\n";
   body += "    gl_TessLevelInner[0] = (f0 + f1 + f2) / 3.0;\n";
   body += "  }\n";
-  PlannedStage s = fixedStage(ShaderStage::TessControl, body);
+  PlannedStage s = fixedStage(ShaderStage::TessControl, body, {"wg_tess_distance_factor"});
   s.inputs = patchVariables(geometry, "tc_");
   s.outputs = patchVariables(geometry, "te_");
   s.arrayedInputs = s.arrayedOutputs = true;

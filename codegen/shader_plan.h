@@ -100,6 +100,10 @@ struct PlannedStage {
   std::vector<size_t> uniforms;  // indices into ShaderPlan::uniforms declared loose here
   std::vector<size_t> textures;  // indices into ShaderPlan::textures sampled here
   std::vector<const GlslItem*> library;  // items of GlslLibrary::builtin() called, dependencies first
+  // The functions the kept lines call (EmitContext::call), each once, with the first op
+  // whose lines call it, in the order of the body. The WGSL target names the node behind an
+  // error in a library item from it.
+  std::vector<std::pair<int, std::string>> opCalls;
   // The ops' own GLSL (NodeSpec::ownGlsl: function nodes' files, renamed), each once, after
   // the library, with the first op that needs it (glslang's errors in it name that node).
   std::vector<std::shared_ptr<const std::string>> ownGlsl;

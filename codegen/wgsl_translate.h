@@ -37,7 +37,7 @@ class Translator {
 
   // One library item in `mode`, appended to the module's functions unless its WGSL form is
   // there already (an item that does not sample is the same in both stages). Items must come
-  // dependencies first (GlslLibrary::itemsFor's order).
+  // dependencies first (GlslLibrary::itemsNamed's order).
   void addItem(const GlslItem& item, StageMode mode);
 
   // Statements of a stage body, one WGSL line per statement, `indent` before each; for each

@@ -30,34 +30,6 @@ int NodeSpec::optionIndex(std::string_view name) const {
   return -1;
 }
 
-int EmitContext::inputIndex(std::string_view port) const {
-  int i = spec().inputIndex(port);
-  if (i < 0) throw std::logic_error("node '" + spec().type + "' has no input '" + std::string(port) + "'");
-  return i;
-}
-
-std::string EmitContext::input(std::string_view port) { return input(inputIndex(port)); }
-
-std::string EmitContext::sceneTexture(std::string_view resource) {
-  auto r = parseSceneResource(resource);
-  if (!r) throw std::logic_error("node '" + spec().type + "' samples unknown scene resource '" + std::string(resource) + "'");
-  return sceneTexture(*r);
-}
-
-std::string EmitContext::sampleTexture(std::string_view option, const SamplerState& sampler, const std::string& coord) {
-  return "texture(" + texture(option, sampler) + ", " + coord + ")";
-}
-
-std::string EmitContext::sampleScene(SceneResource resource, const std::string& coord) {
-  return "texture(" + sceneTexture(resource) + ", " + coord + ")";
-}
-
-std::string EmitContext::sampleScene(std::string_view resource, const std::string& coord) {
-  auto r = parseSceneResource(resource);
-  if (!r) throw std::logic_error("node '" + spec().type + "' samples unknown scene resource '" + std::string(resource) + "'");
-  return sampleScene(*r, coord);
-}
-
 ValueFact builtinFact(Builtin b) {
   ValueFact f;
   switch (b) {
@@ -84,43 +56,6 @@ ValueFact builtinFact(Builtin b) {
     default: break;
   }
   return f;
-}
-
-ValueFact EmitContext::inputFact(int) const { return {}; }
-const ocean::OceanSettings& EmitContext::oceanSettings(int) const {
-  static const ocean::OceanSettings defaults;
-  return defaults;
-}
-std::string EmitContext::oceanMap(int, int, int) {
-  throw std::logic_error("node '" + spec().type + "' reads an ocean map where no planner gives one");
-}
-ValueFact EmitContext::knownBuiltin(Builtin) const { return {}; }
-std::optional<Value> EmitContext::inputConstant(int) const { return std::nullopt; }
-ValueFact EmitContext::inputFact(std::string_view port) const { return inputFact(inputIndex(port)); }
-
-std::string EmitContext::literal(double x) const { return formatGlslFloat(x); }
-
-std::string EmitContext::literal(const Value& v) const {
-  if (v.size() == 1) return formatGlslFloat(v[0]);
-  std::string s(typeName(v.type));
-  s += '(';
-  for (int i = 0; i < v.size(); ++i) {
-    if (i) s += ", ";
-    s += formatGlslFloat(v[i]);
-  }
-  return s + ')';
-}
-
-std::string EmitContext::call(std::string_view fn, std::initializer_list<std::string> args) {
-  std::string s(fn);
-  s += '(';
-  bool first = true;
-  for (const auto& a : args) {
-    if (!first) s += ", ";
-    s += a;
-    first = false;
-  }
-  return s + ')';
 }
 
 const Value& EvalContext::input(std::string_view port) const {

@@ -3,6 +3,7 @@
 // background).
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -54,7 +55,7 @@ NodeSpec absorptionNode() {
   s.parseOptions = optionParser(parseAbsorptionOptions);
   s.emit = [](EmitContext& ctx) {
     bool relative = ctx.options<AbsorptionOptions>().relative;
-    std::string t = ctx.temporary(
+    GlslExpr t = ctx.temporary(
         Type::Vec3, relative ? EmitContext::call("wg_absorption_relative",
                                                  {ctx.input("distance"), ctx.input("max_distance"),
                                                   ctx.input("relative_red"), ctx.input("relative_green")})
@@ -105,7 +106,7 @@ NodeSpec hazeNode() {
   s.outputs = {ports::fixed("color", Type::Vec3, "mix(color, background, factor)"),
                ports::fixed("factor", Type::Float, "the haze amount in [0, 1]")};
   s.emit = [](EmitContext& ctx) {
-    std::string f = ctx.temporary(Type::Float,
+    GlslExpr f = ctx.temporary(Type::Float,
                                   EmitContext::call("wg_haze_factor", {ctx.input("distance"), ctx.input("haze_distance")}));
     ctx.output(0, EmitContext::call("mix", {ctx.input("color"), ctx.input("background"), f}));
     ctx.output(1, f);

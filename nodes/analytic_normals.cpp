@@ -3,6 +3,7 @@
 // with constant angular speeds, so every time term is an exact CPU-side phase uniform.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -85,16 +86,16 @@ NodeSpec sineNormalsNode() {
   s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{ValueFact::unitVector(), {}}; };
   s.emit = [](EmitContext& ctx) {
     int octaves = ctx.options<OctaveOptions>().octaves;
-    std::string p = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * " + ctx.input("scale"));
+    GlslExpr p = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * " + ctx.input("scale"));
     static const double kOmega[3][2] = {{0.8, 0.6}, {2.0, 1.8}, {3.0, 2.5}};
-    std::string sum;
+    GlslExpr sum;
     for (int i = 0; i < octaves; ++i) {
-      std::string layer = EmitContext::call("wg_sine_normals_layer" + std::to_string(i + 1),
+      GlslExpr layer = EmitContext::call("wg_sine_normals_layer" + std::to_string(i + 1),
                                             {p, ctx.timePhase(kOmega[i][0]), ctx.timePhase(kOmega[i][1])});
       sum += (sum.empty() ? "" : " + ") + layer;
     }
-    std::string slope = ctx.temporary(Type::Vec2, sum);
-    std::string k = ctx.temporary(Type::Float, ctx.input("strength"));
+    GlslExpr slope = ctx.temporary(Type::Vec2, sum);
+    GlslExpr k = ctx.temporary(Type::Float, ctx.input("strength"));
     ctx.output(0, EmitContext::call("wg_safe_normalize_vec3",
                                     {"vec3(" + k + " * " + slope + ".x, 1.0, " + k + " * " + slope + ".y)"}));
     ctx.output(1, slope);
@@ -165,21 +166,21 @@ NodeSpec rippleNormalsNode() {
   s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{ValueFact::unitVector(), {}}; };
   s.emit = [](EmitContext& ctx) {
     int octaves = ctx.options<OctaveOptions>().octaves;
-    std::string uv = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * (" + ctx.input("scale") + " * 0.08)");
-    std::string sum;
+    GlslExpr uv = ctx.temporary(Type::Vec2, ctx.input("position") + ".xz * (" + ctx.input("scale") + " * 0.08)");
+    GlslExpr sum;
     for (int i = 0; i < octaves; ++i) {
       const RippleLayer& l = kRipples[i];
       auto phase = [&](double w) { return (w < 0 ? "-" : "") + ctx.timePhase(std::abs(w)); };
       // One phase per statement: the operands of + are evaluated in an unspecified order
       // (GCC and Clang differ), and each call names the next phase uniform.
-      std::string phaseA = phase(l.omegaA);
-      std::string phaseB = phase(l.omegaB);
-      std::string layer = EmitContext::call("wg_ripple_normals_layer",
+      GlslExpr phaseA = phase(l.omegaA);
+      GlslExpr phaseB = phase(l.omegaB);
+      GlslExpr layer = EmitContext::call("wg_ripple_normals_layer",
                                             {uv, ctx.literal(Value::vector({l.fa[0], l.fa[1], l.fb[0], l.fb[1]})),
                                              "vec2(" + phaseA + ", " + phaseB + ")"});
       sum += (sum.empty() ? "" : " + ") + layer + " * " + ctx.literal(l.weight);
     }
-    std::string r = ctx.temporary(Type::Vec2, sum);
+    GlslExpr r = ctx.temporary(Type::Vec2, sum);
     ctx.output(0, EmitContext::call("wg_waves_unit_or_vec3", {ctx.input("normal") + " + " + ctx.input("strength") +
                                                                   " * vec3(" + r + ".x, 0.0, " + r + ".y)",
                                                               "vec3(0.0, 1.0, 0.0)"}));

@@ -2,6 +2,7 @@
 // every pixel of a draw (a uniform source): water_depth derives its ray factor's axis from
 // it (NodeSpec::derive), so the normalisation that used to run per pixel inside the ray
 // factor is an op of its own that the frequency analysis classifies per-draw.
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"

@@ -2,6 +2,7 @@
 // times a foam texture distorted by the surface normal, and its dimming of the specular.
 #include <algorithm>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
@@ -63,11 +64,11 @@ NodeSpec coastalFoamNode() {
   s.parseOptions = optionParser(parseCoastalFoamOptions);
   s.emit = [](EmitContext& ctx) {
     bool cubic = ctx.options<CoastalFoamOptions>().cubic;
-    std::string uv = EmitContext::call("wg_coastal_foam_uv", {ctx.input("position"), ctx.input("normal"), ctx.input("tex_scale"),
+    GlslExpr uv = EmitContext::call("wg_coastal_foam_uv", {ctx.input("position"), ctx.input("normal"), ctx.input("tex_scale"),
                                                               ctx.input("distortion")});
-    std::string amount = EmitContext::call("wg_coastal_foam_amount", {ctx.input("depth"), ctx.input("max_depth"),
+    GlslExpr amount = EmitContext::call("wg_coastal_foam_amount", {ctx.input("depth"), ctx.input("max_depth"),
                                                                       ctx.input("intensity"), ctx.input("crest")});
-    std::string foam = ctx.temporary(Type::Float, "clamp(" + amount + " * " + ctx.sampleTexture("texture", uv) + ".r, 0.0, 1.0)");
+    GlslExpr foam = ctx.temporary(Type::Float, "clamp(" + amount + " * " + ctx.sampleTexture("texture", uv) + ".r, 0.0, 1.0)");
     ctx.output(0, foam);
     ctx.output(1, EmitContext::call(cubic ? "wg_coastal_foam_specular_cubic" : "wg_coastal_foam_specular_linear",
                                     {foam, ctx.input("k")}));

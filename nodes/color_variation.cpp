@@ -4,6 +4,7 @@
 // so that its time drift can be wrapped exactly.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -69,10 +70,10 @@ NodeSpec colorVariationNode() {
   s.parseOptions = optionParser(parseColorVariationOptions);
   s.emit = [](EmitContext& ctx) {
     const auto& [scale, drift] = ctx.options<ColorVariationOptions>();
-    std::string p = "(" + ctx.input("position") + ".xz * " + ctx.literal(scale) + ")";
+    GlslExpr p = "(" + ctx.input("position") + ".xz * " + ctx.literal(scale) + ")";
     if (drift != 0.0)
       p = "(" + p + " + vec2(" + ctx.timePhase(variationDriftOmega(drift)) + " * " + ctx.literal(kNoisePeriod / glsl::kTau) + "))";
-    std::string noise = ctx.temporary(Type::Float, EmitContext::call("wg_color_variation_noise", {p}));
+    GlslExpr noise = ctx.temporary(Type::Float, EmitContext::call("wg_color_variation_noise", {p}));
     ctx.output(0, EmitContext::call("wg_color_variation",
                                     {ctx.input("color"), ctx.input("normal"), ctx.input("sun"), ctx.input("height"),
                                      noise, ctx.input("slope_strength"), ctx.input("noise_strength"),

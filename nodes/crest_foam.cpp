@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
@@ -78,16 +79,16 @@ NodeSpec crestFoamNode() {
   s.parseOptions = optionParser(parseCrestFoamOptions);
   s.emit = [](EmitContext& ctx) {
     double ns = ctx.options<CrestFoamOptions>().noiseSpeed;
-    std::string drift = "vec2(0.0)";
+    GlslExpr drift = "vec2(0.0)";
     if (ns != 0.0) {
-      std::string p1 = ctx.timePhase(crestDriftOmega(kDrift1 * ns));  // one call per statement: a stable order
-      std::string p2 = ctx.timePhase(crestDriftOmega(kDrift2 * ns));
+      GlslExpr p1 = ctx.timePhase(crestDriftOmega(kDrift1 * ns));  // one call per statement: a stable order
+      GlslExpr p2 = ctx.timePhase(crestDriftOmega(kDrift2 * ns));
       drift = "vec2(" + p1 + ", " + p2 + ") * " + ctx.literal(kPeriod / glsl::kTau);
     }
     drift = ctx.temporary(Type::Vec2, drift);
-    std::string height = ctx.input("height");
-    std::string normal = ctx.input("normal");
-    std::string position = ctx.input("position");
+    GlslExpr height = ctx.input("height");
+    GlslExpr normal = ctx.input("normal");
+    GlslExpr position = ctx.input("position");
     ctx.output(0, EmitContext::call("wg_crest_foam", {height, normal, position + ".xz",
                                                       drift, ctx.input("threshold"), ctx.input("intensity"),
                                                       ctx.input("coverage"), ctx.input("sharpness")}));

@@ -1,6 +1,7 @@
 // depth_tint: shallow-to-deep colour over the water's thickness (the advanced shaders tutorial and the stylized water shader).
 #include <algorithm>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -38,7 +39,7 @@ NodeSpec depthTintNode() {
   s.parseOptions = optionParser(parseDepthTintOptions);
   s.emit = [](EmitContext& ctx) {
     bool smooth = ctx.options<DepthTintOptions>().smooth;
-    std::string t = ctx.temporary(
+    GlslExpr t = ctx.temporary(
         Type::Float, EmitContext::call(smooth                                     ? "wg_depth_tint_smooth"
                                        : ctx.inputFact("max_depth").atLeast(1e-6) ? "wg_depth_tint_linear_floored"
                                                                                   : "wg_depth_tint_linear",

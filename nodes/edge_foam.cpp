@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
@@ -75,22 +76,22 @@ NodeSpec edgeFoamNode() {
   s.emit = [](EmitContext& ctx) {
     const auto& [smooth, speed] = ctx.options<EdgeFoamOptions>();
     // mod(speed t, 1) = mod(2 pi speed t, 2 pi) / 2 pi, and the same at half the speed.
-    std::string off = "vec2(0.0)";
+    GlslExpr off = "vec2(0.0)";
     if (speed != 0.0) {
-      std::string p1 = ctx.timePhase(glsl::kTau * speed);  // one call per statement: a stable emission order
-      std::string p2 = ctx.timePhase(0.5 * glsl::kTau * speed);
+      GlslExpr p1 = ctx.timePhase(glsl::kTau * speed);  // one call per statement: a stable emission order
+      GlslExpr p2 = ctx.timePhase(0.5 * glsl::kTau * speed);
       off = "vec2(" + p1 + ", " + p2 + ") * " + ctx.literal(1.0 / glsl::kTau);
     }
     off = ctx.temporary(Type::Vec2, off);
-    std::string position = ctx.input("position");
-    std::string foamScale = ctx.input("foam_scale");
-    std::string xz = ctx.temporary(Type::Vec2, position + ".xz * " + foamScale);
-    std::string uv1 = xz + " * " + ctx.literal(kLayer1Scale) + " + " + off;
-    std::string uv2 = xz + " * " + ctx.literal(kLayer2Scale) + " + vec2(-" + off + ".y, " + off + ".x)";
-    std::string layer1 = ctx.sampleTexture("texture", uv1);  // one look-up per statement: in the order of the text
-    std::string layer2 = ctx.sampleTexture("texture", uv2);
-    std::string t = ctx.temporary(Type::Float, "0.5 * (" + layer1 + ".r + " + layer2 + ".r)");
-    std::string mask = EmitContext::call(smooth ? "wg_edge_foam_mask_smooth" : "wg_edge_foam_mask_linear",
+    GlslExpr position = ctx.input("position");
+    GlslExpr foamScale = ctx.input("foam_scale");
+    GlslExpr xz = ctx.temporary(Type::Vec2, position + ".xz * " + foamScale);
+    GlslExpr uv1 = xz + " * " + ctx.literal(kLayer1Scale) + " + " + off;
+    GlslExpr uv2 = xz + " * " + ctx.literal(kLayer2Scale) + " + vec2(-" + off + ".y, " + off + ".x)";
+    GlslExpr layer1 = ctx.sampleTexture("texture", uv1);  // one look-up per statement: in the order of the text
+    GlslExpr layer2 = ctx.sampleTexture("texture", uv2);
+    GlslExpr t = ctx.temporary(Type::Float, "0.5 * (" + layer1 + ".r + " + layer2 + ".r)");
+    GlslExpr mask = EmitContext::call(smooth ? "wg_edge_foam_mask_smooth" : "wg_edge_foam_mask_linear",
                                          {ctx.input("depth"), ctx.input("width")});
     ctx.output(0, EmitContext::call("wg_edge_foam", {t, mask, ctx.input("cutoff"), ctx.input("softness"), ctx.input("strength")}));
   };

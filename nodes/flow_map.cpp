@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/derive.h"
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -75,15 +76,15 @@ NodeSpec flowMapNode() {
   };
   s.emit = [](EmitContext& ctx) {
     ctx.reserveTexture("texture");  // declared before flow_texture, which it samples after it
-    std::string uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
-    std::string flow = ctx.options<FlowMapOptions>().flowFromTexture
+    GlslExpr uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
+    GlslExpr flow = ctx.options<FlowMapOptions>().flowFromTexture
                            ? EmitContext::call("wg_flow_map_decode", {ctx.sampleTexture("flow_texture", uv)})
                            : ctx.input("flow");
-    std::string drag = ctx.temporary(Type::Vec2, "(" + flow + ") * " + ctx.input("strength"));
-    std::string pa = ctx.input("progress_a"), pb = ctx.input("progress_b");
-    std::string wa = ctx.input("fade_a"), wb = ctx.input("fade_b");
-    std::string a = ctx.sampleTexture("texture", uv + " - " + drag + " * " + pa);  // in the order of the text
-    std::string b = ctx.sampleTexture("texture", uv + " - " + drag + " * " + pb);
+    GlslExpr drag = ctx.temporary(Type::Vec2, "(" + flow + ") * " + ctx.input("strength"));
+    GlslExpr pa = ctx.input("progress_a"), pb = ctx.input("progress_b");
+    GlslExpr wa = ctx.input("fade_a"), wb = ctx.input("fade_b");
+    GlslExpr a = ctx.sampleTexture("texture", uv + " - " + drag + " * " + pa);  // in the order of the text
+    GlslExpr b = ctx.sampleTexture("texture", uv + " - " + drag + " * " + pb);
     ctx.output(0, "(" + a + " * " + wa + " + " + b + " * " + wb + ")");
     ctx.output(1, wa);
     ctx.output(2, wb);

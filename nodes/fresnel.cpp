@@ -4,6 +4,7 @@
 // below (`water_to_air`), light beyond the critical angle is totally reflected.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/fresnel_reference.h"
 #include "nodes/node_library.h"
@@ -69,11 +70,11 @@ NodeSpec fresnelNode() {
     const FresnelSetup& o = ctx.options<FresnelSetup>();
     bool below = o.fromBelow;
     double ior = o.ior;
-    std::string c = ctx.temporary(Type::Float, EmitContext::call("wg_cos_incidence", {ctx.input("normal"), ctx.input("view")}));
-    std::string f;
+    GlslExpr c = ctx.temporary(Type::Float, EmitContext::call("wg_cos_incidence", {ctx.input("normal"), ctx.input("view")}));
+    GlslExpr f;
     // Snell's constants for the viewer's side, eta = n_viewer / n_other.
     SnellConstants snell = snellConstants(below ? ior : 1.0 / ior);
-    std::string eta2 = ctx.literal(snell.eta2), cosCrit2 = ctx.literal(snell.cosCrit2);
+    GlslExpr eta2 = ctx.literal(snell.eta2), cosCrit2 = ctx.literal(snell.cosCrit2);
     if (o.model == FresnelModel::Schlick) {
       f = below ? EmitContext::call("wg_fresnel_schlick_from_below", {c, ctx.input("f0"), eta2, cosCrit2})
                 : EmitContext::call("wg_fresnel_schlick", {c, ctx.input("f0")});
@@ -87,7 +88,7 @@ NodeSpec fresnelNode() {
       if (ctx.inputFact("strength").above(0)) fn += "_positive";
       f = EmitContext::call(fn, {c, ctx.input("strength")});
     }
-    std::string r = ctx.temporary(Type::Float, f);
+    GlslExpr r = ctx.temporary(Type::Float, f);
     ctx.output(0, r);
     ctx.output(1, "(1.0 - " + r + ")");
   };

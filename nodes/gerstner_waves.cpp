@@ -3,6 +3,7 @@
 // ch. 1). GPU Gems' eq. 12 evaluates the normal from per-wave terms, which is exact only
 // for a single wave; here the partial derivatives dP/dx and dP/dz are summed over all
 // waves and crossed, so the cross terms between waves are kept.
+#include "core/emit_context.h"
 #include "nodes/gerstner_waves.h"
 
 #include <cmath>
@@ -209,11 +210,11 @@ NodeSpec gerstnerWavesNode() {
   };
   s.emit = [](EmitContext& ctx) {
     const auto& ws = ctx.options<std::vector<GerstnerWave>>();
-    std::string p = ctx.temporary(Type::Vec3, ctx.input("position"));
-    std::string xz = ctx.temporary(Type::Vec2, p + ".xz");
-    std::string acc = "mat3(0.0)";
+    GlslExpr p = ctx.temporary(Type::Vec3, ctx.input("position"));
+    GlslExpr xz = ctx.temporary(Type::Vec2, p + ".xz");
+    GlslExpr acc = "mat3(0.0)";
     for (const auto& w : ws) {
-      std::string phase = "(" + ctx.literal(w.phase) + " - " + ctx.timePhase(w.omega) + ")";
+      GlslExpr phase = "(" + ctx.literal(w.phase) + " - " + ctx.timePhase(w.omega) + ")";
       acc = ctx.temporary(Type::Mat3, EmitContext::call("wg_gerstner_wave_add",
                                                         {acc, xz, ctx.literal(Value::vector({w.dirX, w.dirZ})),
                                                          ctx.literal(w.k), ctx.literal(w.wavelength),

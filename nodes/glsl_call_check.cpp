@@ -1,3 +1,4 @@
+#include "core/emit_context.h"
 #include "nodes/glsl_call_check.h"
 
 #include <set>
@@ -8,29 +9,29 @@
 namespace wg {
 namespace {
 
-// An EmitContext that hands out placeholder names (none of them wg_*) and keeps every
-// expression the node writes, so the library names in them can be looked up.
+// An EmitContext that hands out placeholder names and keeps every expression the node
+// writes, so the functions they call (GlslExpr::calls) can be looked up.
 class RecordingEmitContext final : public EmitContext {
  public:
   RecordingEmitContext(const NodeSpec& spec, const ParsedOptions& options, const PortTyping& types, bool withFacts)
       : spec_(spec), options_(options), types_(types), withFacts_(withFacts) {}
 
-  std::string input(int port) override { return "in" + std::to_string(port); }
+  GlslExpr input(int port) override { return GlslExpr::name("in" + std::to_string(port)); }
   Type inputType(int port) const override { return types_.inputTypes.at(static_cast<size_t>(port)); }
   Type outputType(int port) const override { return types_.outputTypes.at(static_cast<size_t>(port)); }
   const ParsedOptions& parsedOptions() const override { return options_; }
-  void output(int, std::string expression) override { written.push_back(std::move(expression)); }
-  std::string builtin(Builtin) override { return "builtin"; }
-  std::string temporary(Type, std::string expression) override {
+  void output(int, GlslExpr expression) override { written.push_back(std::move(expression)); }
+  GlslExpr builtin(Builtin) override { return GlslExpr::name("builtin"); }
+  GlslExpr temporary(Type, GlslExpr expression) override {
     written.push_back(std::move(expression));
-    return "t" + std::to_string(written.size());
+    return GlslExpr::name("t" + std::to_string(written.size()));
   }
   unsigned stage() const override { return spec_.stages & kFragmentStage ? kFragmentStage : kVertexStage; }
-  std::string timePhase(double) override { return "phase"; }
+  GlslExpr timePhase(double) override { return GlslExpr::name("phase"); }
   using EmitContext::texture;
-  std::string texture(std::string_view, const SamplerState&) override { return "sampler"; }
-  std::string sceneTexture(SceneResource) override { return "scene_sampler"; }
-  std::string oceanMap(int, int, int) override { return "ocean_sampler"; }
+  GlslExpr texture(std::string_view, const SamplerState&) override { return GlslExpr::name("sampler"); }
+  GlslExpr sceneTexture(SceneResource) override { return GlslExpr::name("scene_sampler"); }
+  GlslExpr oceanMap(int, int, int) override { return GlslExpr::name("ocean_sampler"); }
   const NodeSpec& spec() const override { return spec_; }
 
   // With facts: distinct constants per port (so two ranges never overlap), unit vectors,
@@ -46,7 +47,7 @@ class RecordingEmitContext final : public EmitContext {
     return spec_.inputs.at(static_cast<size_t>(port)).defaultValue;
   }
 
-  std::vector<std::string> written;
+  std::vector<GlslExpr> written;
 
  private:
   const NodeSpec& spec_;
@@ -87,9 +88,11 @@ void checkGlslCalls(const NodeSpec& spec, const GlslLibrary& library) {
       for (bool withFacts : {false, true}) {
         RecordingEmitContext ctx(spec, *options, types, withFacts);
         spec.emit(ctx);
+        // A called name of the library's form (wg_*) that the library lacks; other names
+        // are GLSL's built-in functions, which glslang judges.
         for (const auto& code : ctx.written)
-          for (const auto& name : libraryIdentifiers(code))
-            if (seen.insert(name).second && !library.has(name))
+          for (const auto& name : code.calls())
+            if (name.rfind("wg_", 0) == 0 && seen.insert(name).second && !library.has(name))
               throw std::logic_error("node spec '" + spec.type + "': emit calls '" + name + "' (options " +
                                      complete.dump() + "), which the GLSL library (nodes/glsl/) does not define");
       }

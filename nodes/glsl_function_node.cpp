@@ -1,3 +1,4 @@
+#include "core/emit_context.h"
 #include "nodes/glsl_function_node.h"
 
 #include <algorithm>
@@ -69,24 +70,24 @@ std::string zeroOf(Type t) {
 // call's local, so the planner keeps the call whenever any output is read.
 std::function<void(EmitContext&)> emitCall(FunctionSignature sig, std::string renamed) {
   return [sig = std::move(sig), renamed = std::move(renamed)](EmitContext& ctx) {
-    std::vector<std::string> args;
-    std::vector<std::pair<int, std::string>> outs;  // output port, local
+    std::vector<GlslExpr> args;
+    std::vector<std::pair<int, GlslExpr>> outs;  // output port, local
     int input = 0, output = sig.returns == Type::Invalid ? 0 : 1;
     for (const auto& p : sig.parameters) {
       if (p.type == Type::Sampler2D) {
         args.push_back(ctx.texture(p.name));
       } else if (p.out) {
-        std::string local = ctx.temporary(p.type, zeroOf(p.type));
+        GlslExpr local = ctx.temporary(p.type, zeroOf(p.type));
         args.push_back(local);
         outs.emplace_back(output++, local);
       } else {
         args.push_back(ctx.input(input++));
       }
     }
-    std::string call = renamed + "(";
+    GlslExpr call = renamed + "(";
     for (std::size_t i = 0; i < args.size(); ++i) call += (i ? ", " : "") + args[i];
     call += ")";
-    std::string result = sig.returns == Type::Invalid ? ctx.temporary(Type::Float, "(" + call + ", 0.0)")
+    GlslExpr result = sig.returns == Type::Invalid ? ctx.temporary(Type::Float, "(" + call + ", 0.0)")
                                                        : ctx.temporary(sig.returns, call);
     if (sig.returns != Type::Invalid) ctx.output(0, result);
     for (const auto& [port, local] : outs) ctx.output(port, "(" + result + ", " + local + ")");

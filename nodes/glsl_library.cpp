@@ -139,7 +139,7 @@ GlslLibrary::GlslLibrary(const std::vector<GlslSourceFile>& files) {
     for (const auto& id : libraryIdentifiers(withoutLineComments(it.text)))
       if (id != it.name && names.count(id)) it.uses.push_back(id);
   }
-  // Indexed once: itemsFor runs for every stage of every compile.
+  // Indexed once: itemsNamed runs for every stage of every compile.
   for (size_t i = 0; i < items_.size(); ++i) index_.emplace(items_[i].name, i);
   useIndex_.resize(items_.size());
   for (size_t i = 0; i < items_.size(); ++i)
@@ -153,13 +153,13 @@ const GlslLibrary& GlslLibrary::builtin() {
 
 bool GlslLibrary::has(std::string_view name) const { return index_.count(std::string(name)) > 0; }
 
-std::vector<const GlslItem*> GlslLibrary::itemsFor(std::string_view code) const {
+std::vector<const GlslItem*> GlslLibrary::itemsNamed(const std::vector<std::string>& names) const {
   // Reachable set, then emit in library order whenever all uses are already emitted
   // (the library has no recursion: GLSL forbids it). Names are unique (the constructor
   // refuses a second definition), so an item is emitted once it is done.
   std::vector<char> wanted(items_.size(), 0);
   std::vector<size_t> work;
-  for (const auto& name : libraryIdentifiers(code)) {
+  for (const auto& name : names) {
     auto it = index_.find(name);
     if (it != index_.end() && !wanted[it->second]) {
       wanted[it->second] = 1;

@@ -30,9 +30,11 @@ class GlslLibrary {
   static const GlslLibrary& builtin();  // the embedded library
 
   bool has(std::string_view name) const;
-  // The items `code` refers to (wg_*/WG_* identifiers), plus everything they use, ordered
-  // so each item follows what it uses; ties keep library order (file name, position).
-  std::vector<const GlslItem*> itemsFor(std::string_view code) const;
+  // The items named in `names` (names the library lacks are no items of it: GLSL built-in
+  // functions), plus everything they use, ordered so each item follows what it uses; ties
+  // keep library order (file name, position). The names come from the calls the plan
+  // recorded (EmitContext::call), never from a search of generated text.
+  std::vector<const GlslItem*> itemsNamed(const std::vector<std::string>& names) const;
   const std::vector<GlslItem>& items() const { return items_; }
 
  private:
@@ -41,7 +43,8 @@ class GlslLibrary {
   std::vector<std::vector<size_t>> useIndex_;      // per item: the items it uses
 };
 
-// Every wg_* / WG_* identifier in `code`, in order of first appearance.
+// Every wg_* / WG_* identifier in `code`, in order of first appearance: what a library
+// item's own (hand-written) text uses.
 std::vector<std::string> libraryIdentifiers(std::string_view code);
 
 }  // namespace wg

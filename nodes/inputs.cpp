@@ -1,6 +1,7 @@
 // Input nodes: values the stage provides (mesh attributes, camera, time, screen). They
 // are sources: never folded, and each one declares only the attribute, varying or
 // uniform it reads.
+#include "core/emit_context.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 

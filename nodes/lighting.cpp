@@ -3,6 +3,7 @@
 // Cook-Torrance with GGX D, Schlick F and Smith/Schlick-GGX G).
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/fresnel_reference.h"
 #include "nodes/node_library.h"
@@ -60,7 +61,7 @@ NodeSpec lambertNode() {
   s.outputs = {ports::fixed("intensity", Type::Float, "N.L in [0, 1]"),
                ports::fixed("color", Type::Vec3, "light_color * surface_color * intensity")};
   s.emit = [](EmitContext& ctx) {
-    std::string i = ctx.temporary(Type::Float, EmitContext::call("wg_lambert", {ctx.input("normal"), ctx.input("light")}));
+    GlslExpr i = ctx.temporary(Type::Float, EmitContext::call("wg_lambert", {ctx.input("normal"), ctx.input("light")}));
     ctx.output(0, i);
     ctx.output(1, "(" + ctx.input("light_color") + " * " + ctx.input("surface_color") + " * " + i + ")");
   };
@@ -102,12 +103,12 @@ NodeSpec blinnPhongNode() {
                ports::fixed("diffuse", Type::Float, "max(N.L, 0)"),
                ports::fixed("color", Type::Vec3, "light_color * (surface_color * diffuse + specular)")};
   s.emit = [](EmitContext& ctx) {
-    std::string sp = ctx.temporary(
+    GlslExpr sp = ctx.temporary(
         Type::Float, "(" + ctx.input("strength") + " * " +
                          EmitContext::call("wg_blinn_phong_specular", {ctx.input("normal"), ctx.input("view"),
                                                                        ctx.input("light"), ctx.input("shininess")}) +
                          ")");
-    std::string di = ctx.temporary(Type::Float, EmitContext::call("wg_lambert", {ctx.input("normal"), ctx.input("light")}));
+    GlslExpr di = ctx.temporary(Type::Float, EmitContext::call("wg_lambert", {ctx.input("normal"), ctx.input("light")}));
     ctx.output(0, sp);
     ctx.output(1, di);
     ctx.output(2, "(" + ctx.input("light_color") + " * (" + ctx.input("surface_color") + " * " + di + " + " + sp + "))");
@@ -182,8 +183,8 @@ NodeSpec phongSpecularNode() {
                                {ctx.input("normal"), ctx.input("view"), ctx.input(light)});
     };
     std::string pow = ctx.inputFact("shine").above(0) ? "wg_pow_known_safe_float" : "wg_safe_pow_float";
-    std::string sun = ctx.temporary(Type::Float, EmitContext::call(pow, {lobe("sun"), ctx.input("shine")}));
-    std::string env = ctx.temporary(Type::Float, lobe("environment"));
+    GlslExpr sun = ctx.temporary(Type::Float, EmitContext::call(pow, {lobe("sun"), ctx.input("shine")}));
+    GlslExpr env = ctx.temporary(Type::Float, lobe("environment"));
     ctx.output(0, sun);
     ctx.output(1, env);
     ctx.output(2, "(" + sun + " * " + ctx.input("sun_color") + " + " + env + " * " + ctx.input("environment_color") + ")");
@@ -235,10 +236,10 @@ NodeSpec ggxSpecularNode() {
                ports::fixed("fresnel", Type::Float, "the Schlick term F"),
                ports::fixed("color", Type::Vec3, "light_color * specular")};
   s.emit = [](EmitContext& ctx) {
-    std::string t = ctx.temporary(
+    GlslExpr t = ctx.temporary(
         Type::Vec4, EmitContext::call("wg_ggx_specular", {ctx.input("normal"), ctx.input("view"), ctx.input("light"),
                                                           ctx.input("roughness"), ctx.input("f0")}));
-    std::string sp = ctx.temporary(Type::Float, "(" + t + ".x * " + t + ".w)");
+    GlslExpr sp = ctx.temporary(Type::Float, "(" + t + ".x * " + t + ".w)");
     ctx.output(0, sp);
     ctx.output(1, t + ".x");
     ctx.output(2, t + ".y");

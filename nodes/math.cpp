@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/math_builders.h"
 #include "nodes/node_library.h"
@@ -352,7 +353,7 @@ NodeSpec splitNode() {
   };
   s.emit = [](EmitContext& ctx) {
     int n = componentCount(ctx.inputType(0));
-    std::string v = ctx.input(0);
+    GlslExpr v = ctx.input(0);
     for (int i = 0; i < n; ++i) ctx.output(i, v + "." + "xyzw"[i]);
   };
   s.eval = [](EvalContext& ctx) {
@@ -375,7 +376,7 @@ NodeSpec combineNode() {
   s.infer = [](InferContext& ctx) { ctx.outputTypes[0] = ctx.options.as<CombineOptions>().type; };
   s.emit = [](EmitContext& ctx) {
     int n = componentCount(ctx.outputType(0));
-    std::string e(typeName(ctx.outputType(0)));
+    GlslExpr e(typeName(ctx.outputType(0)));
     e += "(";
     for (int i = 0; i < n; ++i) e += (i ? ", " : "") + ctx.input(i);
     ctx.output(0, e + ")");

@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/port_builders.h"
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/math_builders.h"
 #include "nodes/node_library.h"
@@ -47,7 +48,7 @@ bool holds(Comparison op, double a, double b) {
 
 // The comparison as a GLSL bool (float) or bvecN (vectors: GLSL's operators compare
 // scalars only, so vectors use lessThan and its kin).
-std::string condition(Comparison op, Type t, const std::string& a, const std::string& b) {
+GlslExpr condition(Comparison op, Type t, const GlslExpr& a, const GlslExpr& b) {
   static const char* const scalar[] = {"<", "<=", ">", ">=", "==", "!="};
   static const char* const vector[] = {"lessThan", "lessThanEqual", "greaterThan", "greaterThanEqual", "equal", "notEqual"};
   int i = static_cast<int>(op);
@@ -98,7 +99,7 @@ NodeSpec selectNode() {
   };
   s.emit = [](EmitContext& ctx) {
     Type t = ctx.outputType(0);
-    std::string c = condition(ctx.options<ComparisonOptions>().op, t, ctx.input(0), ctx.input(1));
+    GlslExpr c = condition(ctx.options<ComparisonOptions>().op, t, ctx.input(0), ctx.input(1));
     // mix with a bvec selects (GLSL 1.30 on, ES 3.00): the value not chosen is never used.
     ctx.output(0, t == Type::Float ? "(" + c + " ? " + ctx.input(2) + " : " + ctx.input(3) + ")"
                                    : EmitContext::call("mix", {ctx.input(3), ctx.input(2), c}));
@@ -132,7 +133,7 @@ NodeSpec inverseMixNode() {
     ValueFact a = ctx.inputFact(0), b = ctx.inputFact(1);
     const double gap = static_cast<double>(std::numeric_limits<float>::min());
     bool nonempty = b.lo - a.hi >= gap || a.lo - b.hi >= gap;
-    std::string x = ctx.input(2), lo = ctx.input(0), hi = ctx.input(1);
+    GlslExpr x = ctx.input(2), lo = ctx.input(0), hi = ctx.input(1);
     ctx.output(0, nonempty ? "((" + x + " - " + lo + ") / (" + hi + " - " + lo + "))"
                            : EmitContext::call(math::typedName("wg_inverse_mix", ctx.outputType(0)), {lo, hi, x}));
   };

@@ -5,6 +5,7 @@
 // built-in where the guard is dead.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/math_builders.h"
 #include "nodes/node_library.h"

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/math_builders.h"
 #include "nodes/node_library.h"

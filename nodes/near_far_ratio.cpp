@@ -4,6 +4,7 @@
 // of its own that the frequency analysis classifies per-draw.
 #include <algorithm>
 
+#include "core/emit_context.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 #include "nodes/shading_reference.h"
@@ -31,10 +32,10 @@ NodeSpec nearFarRatioNode() {
     return std::vector<ValueFact>{nearPlane, ValueFact{0, 1, false}};
   };
   s.emit = [](EmitContext& ctx) {
-    std::string nf = ctx.temporary(Type::Vec2, ctx.input("near_far"));
+    GlslExpr nf = ctx.temporary(Type::Vec2, ctx.input("near_far"));
     // Where the facts prove near >= 1e-6 (the runtime's clamped u_camera_near_far), the
     // floor is dead: near itself, as wg_linearize_depth_known reads it.
-    std::string n = ctx.inputFact("near_far").atLeast(1e-6) ? nf + ".x"
+    GlslExpr n = ctx.inputFact("near_far").atLeast(1e-6) ? nf + ".x"
                                                              : EmitContext::call("wg_near_far_floor", {nf});
     n = ctx.temporary(Type::Float, n);
     ctx.output(0, n);

@@ -3,6 +3,7 @@
 // noise). `voronoi` is in voronoi.cpp. The double references live in noise_reference.cpp.
 #include <string>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/noise_reference.h"
@@ -24,9 +25,9 @@ void requireVec2OrVec3(InferContext& ctx, int port) {
 std::string suffix(Type t) { return t == Type::Vec2 ? "_vec2" : "_vec3"; }
 
 // The coordinate times the scale input, as GLSL and in double.
-std::string scaled(EmitContext& ctx) {
-  std::string p = ctx.input("p");  // one call per statement: a stable emission order
-  std::string k = ctx.input("scale");
+GlslExpr scaled(EmitContext& ctx) {
+  GlslExpr p = ctx.input("p");  // one call per statement: a stable emission order
+  GlslExpr k = ctx.input("scale");
   return "(" + p + " * " + k + ")";
 }
 Value scaled(EvalContext& ctx) { return glsl::scale(ctx.input("p"), ctx.scalar("scale")); }
@@ -65,7 +66,7 @@ NodeSpec hashNode() {
                ports::fixed("vec", Type::Vec3, "three independent hashed numbers in [0, 1)")};
   s.infer = [](InferContext& ctx) { requireVec2OrVec3(ctx, 0); };
   s.emit = [](EmitContext& ctx) {
-    std::string h = ctx.temporary(Type::Vec3, EmitContext::call("wg_hash" + suffix(ctx.inputType(0)), {ctx.input("p")}));
+    GlslExpr h = ctx.temporary(Type::Vec3, EmitContext::call("wg_hash" + suffix(ctx.inputType(0)), {ctx.input("p")}));
     ctx.output(0, h + ".x");
     ctx.output(1, h);
   };

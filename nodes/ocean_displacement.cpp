@@ -3,6 +3,7 @@
 // cascades' maps summed (each faded with the camera distance), and the
 // displaced surface's normal comes from the same maps. docs/ocean.md describes
 // the model; ocean_spectrum makes the maps.
+#include "core/emit_context.h"
 #include "core/ocean_settings.h"
 #include "nodes/node_library.h"
 #include "nodes/ocean_readers.h"
@@ -49,13 +50,13 @@ NodeSpec oceanDisplacementNode() {
   };
   s.emit = [](EmitContext& ctx) {
     const int ocean = ctx.inputIndex("ocean");
-    std::string p = ctx.temporary(Type::Vec3, ctx.input("position"));
-    std::string xz = ctx.temporary(Type::Vec2, p + ".xz");
+    GlslExpr p = ctx.temporary(Type::Vec3, ctx.input("position"));
+    GlslExpr xz = ctx.temporary(Type::Vec2, p + ".xz");
     double fade = ctx.options<double>();
-    std::vector<std::string> w =
+    std::vector<GlslExpr> w =
         oceanread::emitWeights(ctx, fade, fade > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
-    std::string d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
-    std::string slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
+    GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
+    GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
     ctx.output(0, "(" + p + " + " + d + ".xyz)");
     ctx.output(1, EmitContext::call("wg_ocean_normal", {slopes, d + ".w"}));
     ctx.output(2, p);

@@ -4,6 +4,7 @@
 // point, summed over the cascades with the readers' distance fade.
 #include <algorithm>
 
+#include "core/emit_context.h"
 #include "core/ocean_settings.h"
 #include "nodes/node_library.h"
 #include "nodes/ocean_readers.h"
@@ -40,15 +41,15 @@ NodeSpec oceanFoamNode() {
   s.emit = [](EmitContext& ctx) {
     const int ocean = ctx.inputIndex("ocean");
     const auto& settings = ctx.oceanSettings(ocean);
-    std::string p = ctx.temporary(Type::Vec3, ctx.input("position"));
+    GlslExpr p = ctx.temporary(Type::Vec3, ctx.input("position"));
     double fade = ctx.options<double>();
-    std::vector<std::string> w =
+    std::vector<GlslExpr> w =
         oceanread::emitWeights(ctx, fade, fade > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
     const int n = settings.cascades.resolution;
-    std::string sum;
+    GlslExpr sum;
     for (size_t c = 0; c < settings.cascades.tileLengths.size(); ++c) {
       if (!ocean::makesFoam(settings, static_cast<int>(c))) continue;
-      std::string map = EmitContext::call(
+      GlslExpr map = EmitContext::call(
           "wg_ocean_map", {ctx.oceanMap(ocean, static_cast<int>(c), ocean::kFoamMap), p + ".xz",
                            ctx.literal(n / settings.cascades.tileLengths[c]), std::to_string(n)}) + ".x";
       sum += (sum.empty() ? "" : " + ") + (w[c].empty() ? map : w[c] + " * " + map);

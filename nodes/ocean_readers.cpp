@@ -1,4 +1,5 @@
 // The ocean readers' shared parts (nodes/ocean_readers.h).
+#include "core/emit_context.h"
 #include "nodes/ocean_readers.h"
 
 #include <cmath>
@@ -25,9 +26,9 @@ double distance(const Value& p, const Value& camera) {
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
-std::vector<std::string> emitWeights(EmitContext& ctx, double fadeTiles, const std::string& distance) {
+std::vector<GlslExpr> emitWeights(EmitContext& ctx, double fadeTiles, const GlslExpr& distance) {
   const auto& s = ctx.oceanSettings(ctx.inputIndex("ocean"));
-  std::vector<std::string> out;
+  std::vector<GlslExpr> out;
   for (double l : s.cascades.tileLengths)
     out.push_back(fadeTiles > 0 ? ctx.temporary(Type::Float, EmitContext::call("wg_ocean_fade",
                                                                                {distance, ctx.literal(fadeTiles * l)}))
@@ -35,16 +36,15 @@ std::vector<std::string> emitWeights(EmitContext& ctx, double fadeTiles, const s
   return out;
 }
 
-std::string emitSum(EmitContext& ctx, int oceanPort, int which, const std::string& xz,
-                    const std::vector<std::string>& weights) {
+GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz, const std::vector<GlslExpr>& weights) {
   const auto& s = ctx.oceanSettings(oceanPort);
   const int n = s.cascades.resolution;
-  std::string sum;
+  GlslExpr sum;
   for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
-    std::string map =
+    GlslExpr map =
         EmitContext::call("wg_ocean_map", {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz,
                                            ctx.literal(n / s.cascades.tileLengths[c]), std::to_string(n)});
-    std::string term = weights[c].empty() ? map : weights[c] + " * " + map;
+    GlslExpr term = weights[c].empty() ? map : weights[c] + " * " + map;
     sum += (sum.empty() ? "" : " + ") + term;
   }
   return ctx.temporary(Type::Vec4, sum);

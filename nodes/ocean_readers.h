@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/emit_context.h"
 #include "core/node_spec.h"
 #include "nodes/ocean_reference.h"
 
@@ -19,11 +20,10 @@ double distance(const Value& p, const Value& camera);
 
 // GLSL: per cascade its weight ("" for 1) at camera distance `distance` (an
 // expression).
-std::vector<std::string> emitWeights(EmitContext& ctx, double fadeTiles, const std::string& distance);
+std::vector<GlslExpr> emitWeights(EmitContext& ctx, double fadeTiles, const GlslExpr& distance);
 // GLSL: the weighted sum over the cascades of map `which` at `xz`, as a vec4
 // expression.
-std::string emitSum(EmitContext& ctx, int oceanPort, int which, const std::string& xz,
-                    const std::vector<std::string>& weights);
+GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz, const std::vector<GlslExpr>& weights);
 
 // Double: what a reader's eval reads from its inputs: the ocean, the still point, the
 // scene's time and each cascade's weight at the point's camera distance.

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/emit_context.h"
 #include "core/ocean_settings.h"
 #include "nodes/node_library.h"
 #include "nodes/ocean_reference.h"
@@ -166,7 +167,9 @@ NodeSpec oceanSpectrumNode() {
   s.recomputeInFragment = true;
   // A name, so the body writer declares nothing: the readers name the maps
   // themselves.
-  s.emit = [](EmitContext& ctx) { ctx.output(0, "ocean_handle"); };
+  // A name no line declares: the readers take the ocean's maps from the planner
+  // (EmitContext::oceanMap), never this value, so the writer keeps it as an alias.
+  s.emit = [](EmitContext& ctx) { ctx.output(0, GlslExpr::name("ocean_handle")); };
   s.eval = [](EvalContext& ctx) {
     Value v = Value::ofType(Type::Ocean);
     v[0] = oceanref::registerOcean(ctx.options<ocean::OceanSettings>());

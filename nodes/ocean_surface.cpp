@@ -2,6 +2,7 @@
 // the normal of the displaced surface, the slopes and the Jacobian J (where J <
 // 0 the surface folds: whitecaps), read per pixel at the still point
 // ocean_displacement passes on.
+#include "core/emit_context.h"
 #include "core/ocean_settings.h"
 #include "nodes/node_library.h"
 #include "nodes/ocean_readers.h"
@@ -44,13 +45,13 @@ NodeSpec oceanSurfaceNode() {
   };
   s.emit = [](EmitContext& ctx) {
     const int ocean = ctx.inputIndex("ocean");
-    std::string p = ctx.temporary(Type::Vec3, ctx.input("position"));
+    GlslExpr p = ctx.temporary(Type::Vec3, ctx.input("position"));
     double fade = ctx.options<double>();
-    std::vector<std::string> w =
+    std::vector<GlslExpr> w =
         oceanread::emitWeights(ctx, fade, fade > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
-    std::string xz = p + ".xz";
-    std::string d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
-    std::string slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
+    GlslExpr xz = p + ".xz";
+    GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
+    GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
     ctx.output(0, EmitContext::call("wg_ocean_normal", {slopes, d + ".w"}));
     ctx.output(1, slopes + ".xy");
     ctx.output(2, EmitContext::call("wg_ocean_jacobian", {slopes, d + ".w"}));

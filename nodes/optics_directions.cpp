@@ -2,6 +2,7 @@
 // (Snell refraction with total internal reflection), the advanced shaders tutorial, parts 5 and 6.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -83,7 +84,7 @@ NodeSpec refractDirNode() {
   s.emit = [](EmitContext& ctx) {
     double eta = ctx.options<RefractDirOptions>().eta;
     SnellConstants snell = snellConstants(eta);
-    std::string t = ctx.temporary(
+    GlslExpr t = ctx.temporary(
         Type::Vec4, EmitContext::call("wg_refract_dir", {ctx.input("normal"), ctx.input("view"), ctx.literal(eta),
                                                          ctx.literal(snell.eta2), ctx.literal(snell.cosCrit2)}));
     ctx.output(0, t + ".xyz");

@@ -1,3 +1,4 @@
+#include "core/emit_context.h"
 #include "nodes/screen_lookup.h"
 
 #include "nodes/port_builders.h"
@@ -16,7 +17,7 @@ void makeScreenLookup(NodeSpec& s, SceneResource resource, const std::string& di
   s.isSource = true;
   s.resources = {resource};
   s.emit = [resource](EmitContext& ctx) {
-    std::string uv = ctx.temporary(
+    GlslExpr uv = ctx.temporary(
         Type::Vec2, EmitContext::call("wg_scene_color_uv", {ctx.input("screen_uv"), ctx.input("distortion")}));
     ctx.output(0, ctx.sampleScene(resource, uv) + ".rgb");
     ctx.output(1, uv);

@@ -7,6 +7,7 @@
 // returns the same value wherever it is sampled.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/linearize_depth_call.h"
 #include "nodes/node_library.h"
@@ -65,10 +66,10 @@ NodeSpec sceneDepthNode() {
     return std::vector<ValueFact>{kDepthTextureFact, {}, {}};
   };
   s.emit = [](EmitContext& ctx) {
-    std::string uv = ctx.input("screen_uv");
-    std::string raw = ctx.temporary(Type::Float, ctx.sampleScene("scene_depth", uv) + ".r");
+    GlslExpr uv = ctx.input("screen_uv");
+    GlslExpr raw = ctx.temporary(Type::Float, ctx.sampleScene("scene_depth", uv) + ".r");
     std::string fn = linearizeDepthRatioFunction(kDepthTextureFact, ctx.knownBuiltin(Builtin::CameraNearFar));
-    std::string lin = ctx.temporary(Type::Float, EmitContext::call(fn, {raw, ctx.input("near"), ctx.input("ratio")}));
+    GlslExpr lin = ctx.temporary(Type::Float, EmitContext::call(fn, {raw, ctx.input("near"), ctx.input("ratio")}));
     ctx.output(0, raw);
     ctx.output(1, lin);
     ctx.output(2, EmitContext::call("wg_scene_depth_position", {uv, lin, ctx.builtin(Builtin::CameraPosition),
@@ -147,7 +148,7 @@ NodeSpec planarReflectionNode() {
   s.resources = {SceneResource::PlanarReflection};
   s.emit = [](EmitContext& ctx) {
     bool flip = ctx.options<PlanarReflectionOptions>().flipY;
-    std::string uv = ctx.temporary(
+    GlslExpr uv = ctx.temporary(
         Type::Vec2, EmitContext::call(flip ? "wg_planar_reflection_uv_flipped" : "wg_scene_color_uv",
                                       {ctx.input("screen_uv"), ctx.input("distortion")}));
     ctx.output(0, ctx.sampleScene("planar_reflection", uv) + ".rgb");
@@ -185,7 +186,7 @@ NodeSpec cubemapReflectionNode() {
   s.isSource = true;
   s.resources = {SceneResource::Environment};
   s.emit = [](EmitContext& ctx) {
-    std::string r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {ctx.input("normal"), ctx.input("view")}));
+    GlslExpr r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {ctx.input("normal"), ctx.input("view")}));
     ctx.output(0, ctx.sampleScene("environment", r) + ".rgb");
     ctx.output(1, r);
   };
@@ -246,19 +247,19 @@ NodeSpec ssrNode() {
   s.isSource = true;
   s.resources = {SceneResource::SceneDepth, SceneResource::SceneColor};
   s.emit = [](EmitContext& ctx) {
-    std::string n = ctx.input("normal");
-    std::string r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {n, ctx.input("view")}));
-    std::string c = ctx.temporary(Type::Float, "dot(" + r + ", " + EmitContext::call("wg_safe_normalize_vec3", {n}) + ")");
-    std::string view = ctx.builtin(Builtin::View);
-    std::string pos = ctx.input("position");
-    std::string m = ctx.temporary(
+    GlslExpr n = ctx.input("normal");
+    GlslExpr r = ctx.temporary(Type::Vec3, EmitContext::call("wg_reflect_dir", {n, ctx.input("view")}));
+    GlslExpr c = ctx.temporary(Type::Float, "dot(" + r + ", " + EmitContext::call("wg_safe_normalize_vec3", {n}) + ")");
+    GlslExpr view = ctx.builtin(Builtin::View);
+    GlslExpr pos = ctx.input("position");
+    GlslExpr m = ctx.temporary(
         Type::Vec3,
         EmitContext::call("wg_ssr_march",
                           {ctx.sceneTexture("scene_depth"), pos, r, c, view, ctx.builtin(Builtin::Projection),
                            ctx.builtin(Builtin::CameraNearFar), std::to_string(ctx.options<SsrOptions>().steps),
                            ctx.input("step"), ctx.input("tolerance"), ctx.input("growth")}));
-    std::string dist = "(-(" + view + " * vec4(" + pos + ", 1.0)).z)";
-    std::string conf = ctx.temporary(
+    GlslExpr dist = "(-(" + view + " * vec4(" + pos + ", 1.0)).z)";
+    GlslExpr conf = ctx.temporary(
         Type::Float, m + ".z * " + EmitContext::call("wg_ssr_fade", {m + ".xy", dist, ctx.input("fade_distance")}));
     ctx.output(0, "mix(" + ctx.input("fallback") + ", textureLod(" + ctx.sceneTexture("scene_color") + ", " + m +
                       ".xy, 0.0).rgb, " + conf + ")");

@@ -2,6 +2,7 @@
 // plus time (a crest's depth falls as time grows), sharpened by squaring and fading out with depth.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
@@ -56,7 +57,7 @@ NodeSpec shoreWavesNode() {
   s.parseOptions = optionParser(parseShoreWavesOptions);
   s.emit = [](EmitContext& ctx) {
     double speed = ctx.options<ShoreWavesOptions>().speed;
-    std::string phase = speed == 0.0 ? "0.0" : ctx.timePhase(speed);
+    GlslExpr phase = speed == 0.0 ? "0.0" : ctx.timePhase(speed);
     ctx.output(0, EmitContext::call("wg_shore_waves", {ctx.input("depth"), ctx.input("frequency"), phase,
                                                        ctx.input("amplitude"), ctx.input("distance")}));
   };

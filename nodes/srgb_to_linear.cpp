@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "core/color_space.h"
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/math_builders.h"
 #include "nodes/node_library.h"

@@ -3,6 +3,7 @@
 // direction distorted by the normal, scaled by the wave height.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -40,7 +41,7 @@ NodeSpec subsurfaceNode() {
   s.emit = [](EmitContext& ctx) {
     bool known = ctx.inputFact("normal").normalized && ctx.inputFact("view").normalized &&
                  ctx.inputFact("light").normalized && ctx.inputFact("power").above(0);
-    std::string i = ctx.temporary(
+    GlslExpr i = ctx.temporary(
         Type::Float, "(" + ctx.input("strength") + " * " +
                          EmitContext::call(known ? "wg_subsurface_intensity_unit" : "wg_subsurface_intensity",
                                            {ctx.input("normal"), ctx.input("view"), ctx.input("light"),

@@ -2,6 +2,7 @@
 // opposite directions, c = clamp(1 - |a + b - 1|, 0, 1)^9.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
@@ -42,14 +43,14 @@ NodeSpec textureCausticsNode() {
   s.bypass = {{"caustics", "", Value::scalar(0)}};
   s.isSource = true;  // samples a texture
   s.emit = [](EmitContext& ctx) {
-    std::string uv = ctx.temporary(Type::Vec2, EmitContext::call("wg_texture_caustics_uv", {ctx.input("position"), ctx.input("scale")}));
+    GlslExpr uv = ctx.temporary(Type::Vec2, EmitContext::call("wg_texture_caustics_uv", {ctx.input("position"), ctx.input("scale")}));
     // The texture repeats every 1 in uv, so the scroll wraps there exactly.
-    std::string time = ctx.input("time");  // one call per statement: a stable emission order
-    std::string velocity = ctx.input("velocity");
-    std::string m = ctx.temporary(Type::Vec2, "mod(" + time + " * " + velocity + ", 1.0)");
-    std::string a = ctx.temporary(Type::Float, ctx.sampleTexture("texture", uv + " + " + m) + ".r");
-    std::string b = ctx.temporary(Type::Float, ctx.sampleTexture("texture", "1.5 * " + uv + " - " + m) + ".r");
-    std::string intensity = ctx.input("intensity");
+    GlslExpr time = ctx.input("time");  // one call per statement: a stable emission order
+    GlslExpr velocity = ctx.input("velocity");
+    GlslExpr m = ctx.temporary(Type::Vec2, "mod(" + time + " * " + velocity + ", 1.0)");
+    GlslExpr a = ctx.temporary(Type::Float, ctx.sampleTexture("texture", uv + " + " + m) + ".r");
+    GlslExpr b = ctx.temporary(Type::Float, ctx.sampleTexture("texture", "1.5 * " + uv + " - " + m) + ".r");
+    GlslExpr intensity = ctx.input("intensity");
     ctx.output(0, "(" + intensity + " * " + EmitContext::call("wg_texture_caustics_shape", {a, b}) + ")");
   };
   s.eval = [](EvalContext& ctx) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/derive.h"
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -118,16 +119,16 @@ NodeSpec normalMapScrollNode() {
       // A layer that neither scales nor scrolls reads the texture at uv itself: uv * 1.0 +
       // 0.0 is uv exactly, but glslang and spirv-opt keep it.
       bool still = ctx.inputFact(scale).isConstant(1) && ctx.inputFact(scroll).isConstant(0);
-      std::string uv = still ? ctx.input("uv")
+      GlslExpr uv = still ? ctx.input("uv")
                              : EmitContext::call("wg_normal_map_scroll_uv",
                                                  {ctx.input("uv"), ctx.input(scale), ctx.input(scroll)});
       return ctx.temporary(Type::Vec3,
                            EmitContext::call("wg_normal_map_scroll_unpack", {ctx.sampleTexture("texture", uv)}));
     };
-    std::string a = layer("scale_a", "scroll_a"), b = layer("scale_b", "scroll_b");
-    std::string n = ctx.temporary(
+    GlslExpr a = layer("scale_a", "scroll_a"), b = layer("scale_b", "scroll_b");
+    GlslExpr n = ctx.temporary(
         Type::Vec3, EmitContext::call(ctx.options<NormalMapScrollOptions>().blendFunction, {a, b}));
-    std::string ts = EmitContext::call("wg_normal_map_scroll_strength", {n, ctx.input("strength")});
+    GlslExpr ts = EmitContext::call("wg_normal_map_scroll_strength", {n, ctx.input("strength")});
     // ts is a finite unpacked texel, so the flat frame's zero products are exact zeros.
     auto tc = ctx.inputConstant(ctx.inputIndex("tangent")), bc = ctx.inputConstant(ctx.inputIndex("binormal"));
     bool flat = tc && bc && *tc == Value::vector({1, 0, 0}) && *bc == Value::vector({0, 0, 1});
@@ -213,11 +214,11 @@ NodeSpec normalFromHeightNode() {
     return std::vector<ValueFact>{ValueFact::unitVector(), {}, {}};
   };
   s.emit = [](EmitContext& ctx) {
-    std::string tex = ctx.texture("texture");
-    std::string uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
-    std::string g =
+    GlslExpr tex = ctx.texture("texture");
+    GlslExpr uv = ctx.temporary(Type::Vec2, ctx.input("uv"));
+    GlslExpr g =
         ctx.temporary(Type::Vec2, EmitContext::call("wg_normal_from_height_gradient", {tex, uv, ctx.input("offset")}));
-    std::string k = ctx.temporary(Type::Float, ctx.input("strength"));
+    GlslExpr k = ctx.temporary(Type::Float, ctx.input("strength"));
     ctx.output(
         0, EmitContext::call("wg_waves_tangent_to_world", {"vec3(-" + k + " * " + g + ", 1.0)", ctx.input("tangent"),
                                                            ctx.input("binormal"), ctx.input("normal")}));
@@ -290,9 +291,9 @@ NodeSpec dudvDistortionNode() {
   s.stages = kFragmentStage;  // target_uv defaults to the screen position
   s.isSource = true;
   s.emit = [](EmitContext& ctx) {
-    std::string tex = ctx.texture("texture");
-    std::string move = ctx.input("scroll");
-    std::string d = ctx.temporary(
+    GlslExpr tex = ctx.texture("texture");
+    GlslExpr move = ctx.input("scroll");
+    GlslExpr d = ctx.temporary(
         Type::Vec2, EmitContext::call("wg_dudv_distortion_offset",
                                       {tex, ctx.input("uv"), ctx.input("tiling"), move, ctx.input("strength")}));
     ctx.output(0, d);

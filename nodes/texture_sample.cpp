@@ -3,6 +3,7 @@
 // is the texture's (EmitContext::texture with a SamplerState), so the emitter, manifest,
 // runtime, probe and three.js client all set it from one value, and the double reference
 // is GL's sampling rules (nodes/texture_sampling.h).
+#include "core/emit_context.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
 
@@ -79,8 +80,8 @@ NodeSpec textureSampleNode() {
     return std::vector<ValueFact>{unit, unit, unit};
   };
   s.emit = [](EmitContext& ctx) {
-    std::string uv = ctx.input("uv");
-    std::string texel = ctx.temporary(Type::Vec4, ctx.sampleTexture("texture", ctx.options<TextureSampleOptions>().sampler, uv));
+    GlslExpr uv = ctx.input("uv");
+    GlslExpr texel = ctx.temporary(Type::Vec4, ctx.sampleTexture("texture", ctx.options<TextureSampleOptions>().sampler, uv));
     ctx.output(0, texel + ".rgb");
     ctx.output(1, texel + ".a");
     ctx.output(2, texel);

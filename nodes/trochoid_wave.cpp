@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"
@@ -88,15 +89,15 @@ NodeSpec trochoidWaveNode() {
   s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) { return std::vector<ValueFact>{{}, {}, ValueFact::unitVector()}; };
   s.parseOptions = optionParser(parseTrochoidWaveOptions);
   s.emit = [](EmitContext& ctx) {
-    std::string tex = ctx.texture("texture");
-    std::string phase = ctx.timePhase(ctx.options<TrochoidWaveOptions>().omega);
-    std::string steps = std::to_string(ctx.options<TrochoidWaveOptions>().steps);
-    std::string dir = ctx.temporary(Type::Vec3, "-" + EmitContext::call("wg_safe_normalize_vec3", {ctx.input("view")}));
-    std::string amp = ctx.temporary(Type::Float, ctx.input("amplitude"));
-    std::string k = ctx.temporary(Type::Vec2, ctx.input("wave_vector"));
-    std::string detail = ctx.temporary(Type::Float, ctx.input("detail"));
-    std::string scale = ctx.temporary(Type::Float, ctx.input("texture_scale"));
-    std::string hit = ctx.temporary(
+    GlslExpr tex = ctx.texture("texture");
+    GlslExpr phase = ctx.timePhase(ctx.options<TrochoidWaveOptions>().omega);
+    GlslExpr steps = std::to_string(ctx.options<TrochoidWaveOptions>().steps);
+    GlslExpr dir = ctx.temporary(Type::Vec3, "-" + EmitContext::call("wg_safe_normalize_vec3", {ctx.input("view")}));
+    GlslExpr amp = ctx.temporary(Type::Float, ctx.input("amplitude"));
+    GlslExpr k = ctx.temporary(Type::Vec2, ctx.input("wave_vector"));
+    GlslExpr detail = ctx.temporary(Type::Float, ctx.input("detail"));
+    GlslExpr scale = ctx.temporary(Type::Float, ctx.input("texture_scale"));
+    GlslExpr hit = ctx.temporary(
         Type::Vec3,
         EmitContext::call("wg_trochoid_wave_march", {ctx.input("origin"), dir, ctx.input("surface_height"), amp, k,
                                                      phase, detail, scale, ctx.input("max_distance"), steps, tex}));

@@ -7,6 +7,7 @@
 // specialises away the cases the scene's camera cannot reach.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/linearize_depth_call.h"
 #include "nodes/node_library.h"
@@ -105,18 +106,18 @@ NodeSpec underwaterNode() {
   s.isSource = true;
   s.resources = {SceneResource::Underwater, SceneResource::SceneDepth, SceneResource::SceneColor};
   s.emit = [](EmitContext& ctx) {
-    std::string uv = ctx.input("screen_uv");
-    std::string water = ctx.temporary(Type::Vec4, ctx.sampleScene("underwater", uv));
-    std::string raw = ctx.temporary(Type::Float, ctx.sampleScene("scene_depth", uv) + ".r");
-    std::string cam = ctx.builtin(Builtin::CameraPosition);
-    std::string lin = EmitContext::call("wg_linearize_depth_ratio", {raw, ctx.input("near"), ctx.input("ratio")});
-    std::string scene = ctx.temporary(
+    GlslExpr uv = ctx.input("screen_uv");
+    GlslExpr water = ctx.temporary(Type::Vec4, ctx.sampleScene("underwater", uv));
+    GlslExpr raw = ctx.temporary(Type::Float, ctx.sampleScene("scene_depth", uv) + ".r");
+    GlslExpr cam = ctx.builtin(Builtin::CameraPosition);
+    GlslExpr lin = EmitContext::call("wg_linearize_depth_ratio", {raw, ctx.input("near"), ctx.input("ratio")});
+    GlslExpr scene = ctx.temporary(
         Type::Vec3, EmitContext::call("wg_scene_depth_position",
                                       {uv, lin, cam, ctx.builtin(Builtin::View), ctx.builtin(Builtin::Projection)}));
-    std::string sky = "(" + raw + " >= 1.0 ? 1.0 : 0.0)";
-    std::string colorTex = ctx.sceneTexture("scene_color");
+    GlslExpr sky = "(" + raw + " >= 1.0 ? 1.0 : 0.0)";
+    GlslExpr colorTex = ctx.sceneTexture("scene_color");
     UnderwaterCamera mode = ctx.options<UnderwaterOptions>().camera;
-    std::string level = ctx.input("water_level");
+    GlslExpr level = ctx.input("water_level");
     auto above = [&] {
       return EmitContext::call("wg_underwater_from_above",
                                {colorTex, uv, water, scene, sky, cam, ctx.input("normal"), ctx.input("surface"),
@@ -131,7 +132,7 @@ NodeSpec underwaterNode() {
                                 ctx.input("sigma"), ctx.input("refraction_strength"), ctx.input("caustics"),
                                 ctx.input("caustics_color"), ctx.input("depth_light"), level});
     };
-    std::string r;
+    GlslExpr r;
     if (mode == UnderwaterCamera::Above) r = ctx.temporary(Type::Vec4, above());
     else if (mode == UnderwaterCamera::Below) r = ctx.temporary(Type::Vec4, below());
     else r = ctx.temporary(Type::Vec4, "(" + cam + ".y < " + level + " ? " + below() + " : " + above() + ")");

@@ -3,6 +3,7 @@
 // Its outputs feed the graph's `outputs.vertex` slots; with tessellation, the vertex-stage
 // nodes run per tessellated vertex (GLSL 330 through ARB_tessellation_shader, Vulkan
 // 450); GLSL ES 3.00 has no tessellation stages, so es300 draws the mesh as it is.
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/port_builders.h"

@@ -3,6 +3,7 @@
 // animated Voronoi, made exact at any time by a double-precision phase).
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/node_library.h"
 #include "nodes/noise_reference.h"
@@ -11,12 +12,12 @@
 
 namespace wg::nodes {
 
-std::string emitVoronoiPhase(EmitContext& ctx, const VoronoiOptions& o, double speedScale) {
+GlslExpr emitVoronoiPhase(EmitContext& ctx, const VoronoiOptions& o, double speedScale) {
   double speed = o.speed * speedScale;
   if (o.animation == VoronoiAnimation::Static) return "0.0";
   if (o.animation == VoronoiAnimation::Time) return speed == 0.0 ? "0.0" : ctx.timePhase(speed);
   // A time input: wrap speed * time before it reaches sin (float time is coarse at 1e6 s).
-  std::string t = ctx.input("time");
+  GlslExpr t = ctx.input("time");
   return "mod(" + ctx.literal(speed) + " * " + t + ", " + ctx.literal(noise::kTau) + ")";
 }
 
@@ -75,10 +76,10 @@ NodeSpec voronoiNode() {
   s.emit = [](EmitContext& ctx) {
     const VoronoiOptions& o = ctx.options<VoronoiOptions>();
     bool full = o.fullSearch, animated = o.animated();
-    std::string p = ctx.input("p");  // one call per statement: a stable emission order
-    std::string k = ctx.input("scale");
-    std::string q = "(" + p + " * " + k + ")";
-    std::string v = ctx.temporary(Type::Vec4, EmitContext::call("wg_voronoi", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, o, 1.0),
+    GlslExpr p = ctx.input("p");  // one call per statement: a stable emission order
+    GlslExpr k = ctx.input("scale");
+    GlslExpr q = "(" + p + " * " + k + ")";
+    GlslExpr v = ctx.temporary(Type::Vec4, EmitContext::call("wg_voronoi", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, o, 1.0),
                                                                                animated ? "true" : "false", full ? "true" : "false"}));
     ctx.output(0, v + ".x");
     ctx.output(1, v + ".y");

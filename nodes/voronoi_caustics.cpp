@@ -2,6 +2,7 @@
 // and speeds, each (1 - F1)^3 with F1 clamped to [0, 1], averaged (or min / product).
 #include <algorithm>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/foam_caustics_reference.h"
 #include "nodes/node_library.h"
@@ -88,22 +89,22 @@ NodeSpec voronoiCausticsNode() {
     const VoronoiCausticsOptions& o = ctx.options<VoronoiCausticsOptions>();
     bool full = o.voronoi.fullSearch, animated = o.voronoi.animated();
     std::string a = animated ? "true" : "false", f = full ? "true" : "false";
-    std::string p = ctx.input("p");  // one call per statement: a stable emission order
-    std::string k = ctx.input("scale");
-    std::string q = ctx.temporary(Type::Vec2, "(" + p + " * " + k + ")");
-    std::string c1 = ctx.temporary(
+    GlslExpr p = ctx.input("p");  // one call per statement: a stable emission order
+    GlslExpr k = ctx.input("scale");
+    GlslExpr q = ctx.temporary(Type::Vec2, "(" + p + " * " + k + ")");
+    GlslExpr c1 = ctx.temporary(
         Type::Float, EmitContext::call("wg_voronoi_caustics_layer", {q, ctx.input("jitter"), emitVoronoiPhase(ctx, o.voronoi, 1.0), a, f}));
-    std::string c = c1;
+    GlslExpr c = c1;
     if (o.twoLayers) {
-      std::string q2 = "(" + q + " * " + ctx.literal(kLayer2Scale) + " + " + ctx.literal(kLayer2Offset) + ")";
-      std::string c2 = ctx.temporary(
+      GlslExpr q2 = "(" + q + " * " + ctx.literal(kLayer2Scale) + " + " + ctx.literal(kLayer2Offset) + ")";
+      GlslExpr c2 = ctx.temporary(
           Type::Float,
           EmitContext::call("wg_voronoi_caustics_layer", {q2, ctx.input("jitter"), emitVoronoiPhase(ctx, o.voronoi, kLayer2Speed), a, f}));
       c = o.combine == CausticsCombine::Average ? "(0.5 * (" + c1 + " + " + c2 + "))"
           : o.combine == CausticsCombine::Min   ? "min(" + c1 + ", " + c2 + ")"
                             : "(" + c1 + " * " + c2 + ")";
     }
-    std::string intensity = ctx.input("intensity");
+    GlslExpr intensity = ctx.input("intensity");
     ctx.output(0, "(" + intensity + " * " + c + ")");
   };
   s.eval = [](EvalContext& ctx) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "core/emit_context.h"
 #include "core/node_spec.h"
 
 namespace wg::nodes {
@@ -23,7 +24,7 @@ struct VoronoiOptions {
 std::vector<OptionSpec> voronoiOptions(double defaultSpeed);
 VoronoiOptions parseVoronoiOptions(const OptionReader& o);
 // The phase for an orbit at speedScale times the `speed` option, in [0, 2 pi).
-std::string emitVoronoiPhase(EmitContext& ctx, const VoronoiOptions& o, double speedScale);
+GlslExpr emitVoronoiPhase(EmitContext& ctx, const VoronoiOptions& o, double speedScale);
 double evalVoronoiPhase(EvalContext& ctx, const VoronoiOptions& o, double speedScale);
 
 }  // namespace wg::nodes

@@ -4,6 +4,7 @@
 // plane.
 #include <cmath>
 
+#include "core/emit_context.h"
 #include "nodes/eval_math.h"
 #include "nodes/linearize_depth_call.h"
 #include "nodes/node_library.h"
@@ -106,19 +107,19 @@ NodeSpec waterDepthNode() {
     deriveNearRatio(ctx, ValueRef::builtin(Builtin::CameraNearFar));
   };
   s.emit = [](EmitContext& ctx) {
-    std::string n = ctx.input("near"), r = ctx.input("ratio");
+    GlslExpr n = ctx.input("near"), r = ctx.input("ratio");
     // The scene depth is a depth texture; the surface's is gl_FragCoord.z.
     ValueFact nearFar = ctx.knownBuiltin(Builtin::CameraNearFar);
     std::string sceneFn = linearizeDepthRatioFunction(kDepthTextureFact, nearFar);
     std::string surfaceFn = linearizeDepthRatioFunction(ctx.knownBuiltin(Builtin::FragDepth), nearFar);
-    std::string sceneDepth = ctx.sampleScene("scene_depth", ctx.input("screen_uv")) + ".r";
-    std::string scene = ctx.temporary(Type::Float, EmitContext::call(sceneFn, {sceneDepth, n, r}));
-    std::string surface = ctx.temporary(Type::Float, EmitContext::call(surfaceFn, {ctx.builtin(Builtin::FragDepth), n, r}));
-    std::string view = ctx.input("view");
-    std::string unitView = ctx.inputFact("view").normalized ? view : EmitContext::call("wg_safe_normalize_vec3", {view});
-    std::string factor = EmitContext::call("wg_water_depth_ray_factor_axis", {ctx.input("camera_axis"), unitView});
+    GlslExpr sceneDepth = ctx.sampleScene("scene_depth", ctx.input("screen_uv")) + ".r";
+    GlslExpr scene = ctx.temporary(Type::Float, EmitContext::call(sceneFn, {sceneDepth, n, r}));
+    GlslExpr surface = ctx.temporary(Type::Float, EmitContext::call(surfaceFn, {ctx.builtin(Builtin::FragDepth), n, r}));
+    GlslExpr view = ctx.input("view");
+    GlslExpr unitView = ctx.inputFact("view").normalized ? view : EmitContext::call("wg_safe_normalize_vec3", {view});
+    GlslExpr factor = EmitContext::call("wg_water_depth_ray_factor_axis", {ctx.input("camera_axis"), unitView});
     bool vertical = ctx.options<WaterDepthOptions>().vertical;
-    std::string v = vertical ? "abs(" + EmitContext::call("wg_safe_normalize_vec3", {view}) + ".y)" : "1.0";
+    GlslExpr v = vertical ? "abs(" + EmitContext::call("wg_safe_normalize_vec3", {view}) + ".y)" : "1.0";
     ctx.output(0, EmitContext::call("wg_water_depth_thickness", {scene, surface, factor, v}));
     ctx.output(1, scene);
     ctx.output(2, surface);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/emit_context.h"
 #include "core/node_spec.h"
 #include "nodes/eval_math.h"
 

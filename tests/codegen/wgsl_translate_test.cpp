@@ -135,7 +135,7 @@ TEST(WgslTranslate, EveryLibraryItemTranslatesInBothStages) {
   for (StageMode mode : {StageMode::Vertex, StageMode::Fragment}) {
     Translator t;
     for (const GlslItem& item : lib.items())
-      for (const GlslItem* needed : lib.itemsFor(item.name)) EXPECT_NO_THROW(t.addItem(*needed, mode)) << needed->name;
+      for (const GlslItem* needed : lib.itemsNamed({item.name})) EXPECT_NO_THROW(t.addItem(*needed, mode)) << needed->name;
     std::string w = t.functionsText();
     for (const GlslItem& item : lib.items()) EXPECT_NE(w.find(item.name), std::string::npos) << item.name;
   }

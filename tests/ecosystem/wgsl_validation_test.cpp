@@ -116,7 +116,7 @@ TEST_F(WgslValidation, NagaAndTintAcceptTheWholeLibrary) {
   wgsl::Translator t;
   const GlslLibrary& lib = GlslLibrary::builtin();
   for (const GlslItem& item : lib.items())
-    for (const GlslItem* needed : lib.itemsFor(item.name)) t.addItem(*needed, wgsl::StageMode::Fragment);
+    for (const GlslItem* needed : lib.itemsNamed({item.name})) t.addItem(*needed, wgsl::StageMode::Fragment);
   TempDir dir("wg_wgsl_");
   const std::string file = dir / "library.wgsl";
   test::writeFile(file, t.functionsText());

@@ -6,6 +6,7 @@
 
 #include "codegen/cpu_backend.h"
 #include "core/diagnostic.h"
+#include "core/emit_context.h"
 #include "core/graph_io.h"
 #include "core/registry.h"
 #include "core/resolve.h"
