@@ -38,9 +38,9 @@ std::vector<std::string> emitWeights(EmitContext& ctx, double fadeTiles, const s
 std::string emitSum(EmitContext& ctx, int oceanPort, int which, const std::string& xz,
                     const std::vector<std::string>& weights) {
   const auto& s = ctx.oceanSettings(oceanPort);
-  const int n = s.cascades.resolution;
   std::string sum;
   for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
+    const int n = ocean::cascadeResolution(s.cascades, c);  // each cascade's texels per metre are its own
     std::string map =
         EmitContext::call("wg_ocean_map", {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz,
                                            ctx.literal(n / s.cascades.tileLengths[c]), std::to_string(n)});
