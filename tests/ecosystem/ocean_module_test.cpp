@@ -79,9 +79,9 @@ o.cascades().forEach((c, i) => {
   writeFileSync(`h0_${i}.bin`, Buffer.from(c.h0.buffer));
   writeFileSync(`frequency_${i}.bin`, Buffer.from(c.frequency.buffer));
 });
-writeFileSync('twiddle.bin', Buffer.from(m.twiddles(o.resolution).buffer));
+writeFileSync('twiddle.bin', Buffer.from(m.twiddles(o.sizes[0]).buffer));
 const times = [)" + times + R"(];
-console.log(JSON.stringify({node: o.node, resolution: o.resolution, tileLengths: o.tileLengths, dk: o.dk,
+console.log(JSON.stringify({node: o.node, sizes: o.sizes, tileLengths: o.tileLengths, dk: o.dk,
   choppiness: o.choppiness, foam: o.foam, tau: times.map(m.phaseTau),
   step: times.map((t) => m.foamStepIndex(o.foam, t)), fraction: times.map((t) => m.foamFraction(o.foam, t))}));
 )");
@@ -90,9 +90,11 @@ console.log(JSON.stringify({node: o.node, resolution: o.resolution, tileLengths:
   const json got = json::parse(r.out);
 
   const ocean::OceanSettings s = openOceanSettings();
-  const int n = s.cascades.resolution;
+  const int n = ocean::cascadeResolution(s.cascades, 0);  // the twiddles' N
   EXPECT_EQ(got["node"], "sea");
-  EXPECT_EQ(got["resolution"], n);
+  ASSERT_EQ(got["sizes"].size(), s.cascades.tileLengths.size());
+  for (size_t k = 0; k < s.cascades.tileLengths.size(); ++k)
+    EXPECT_EQ(got["sizes"][k], ocean::cascadeResolution(s.cascades, k)) << "cascade " << k;
   EXPECT_EQ(got["choppiness"].get<double>(), s.cascades.choppiness);
   ASSERT_EQ(got["tileLengths"].size(), s.cascades.tileLengths.size());
   for (size_t k = 0; k < s.cascades.tileLengths.size(); ++k) {
@@ -131,12 +133,13 @@ console.log(JSON.stringify({node: o.node, resolution: o.resolution, tileLengths:
     const ocean::OceanCascade expected = ocean::initialCascade(s.spectrum, s.cascades, static_cast<int>(k));
     const auto h0 = readArray<float>(dir / ("h0_" + std::to_string(k) + ".bin"));
     const auto frequency = readArray<uint32_t>(dir / ("frequency_" + std::to_string(k) + ".bin"));
-    ASSERT_EQ(h0.size(), static_cast<size_t>(n) * n * 4);
+    ASSERT_EQ(h0.size(), expected.h0.size() * 4);
     ASSERT_EQ(frequency, expected.frequency) << "cascade " << k;
-    for (int iz = 0; iz < n; ++iz)
-      for (int ix = 0; ix < n; ++ix) {
-        const size_t i = static_cast<size_t>(iz) * n + ix;
-        const size_t mirror = static_cast<size_t>((n - iz) % n) * n + static_cast<size_t>((n - ix) % n);
+    const int nk = expected.resolution;
+    for (int iz = 0; iz < nk; ++iz)
+      for (int ix = 0; ix < nk; ++ix) {
+        const size_t i = static_cast<size_t>(iz) * nk + ix;
+        const size_t mirror = static_cast<size_t>((nk - iz) % nk) * nk + static_cast<size_t>((nk - ix) % nk);
         const std::complex<double> a = expected.h0[i], b = std::conj(expected.h0[mirror]);
         const float want[4] = {static_cast<float>(a.real()), static_cast<float>(a.imag()), static_cast<float>(b.real()),
                                static_cast<float>(b.imag())};
