@@ -157,6 +157,45 @@ console.log(JSON.stringify({node: o.node, sizes: o.sizes, tileLengths: o.tileLen
               static_cast<long long>(differing));
 }
 
+// A resolution per cascade (cascade_sizes): the module gives each cascade its own N, and
+// packs each cascade's h0 and frequencies on that N x N grid (the clients size the cascade's
+// textures, twiddles and foam from it).
+TEST(OceanModule, GivesEachCascadeItsOwnSize) {
+  TempDir dir("wg_ocean_module_sizes_");
+  test::writeFile(dir / "sizes.json", R"({"version": 1, "name": "sizes", "nodes": [
+      {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [120, 24, 5], "cascade_sizes": [16, 32, 64]}},
+      {"id": "moved", "type": "ocean_displacement", "inputs": {"ocean": "sea.ocean"}}],
+      "outputs": {"vertex": {"position": "moved.position"}, "fragment": {"color": "moved.normal"}}})");
+  CmdResult c = wgRun("compile " + test::shellQuote(dir / "sizes.json") + " -o " +
+                      test::shellQuote(dir.path()) + " --target es300 --quiet");
+  ASSERT_EQ(c.exit, 0) << c.err;
+  test::writeFile(dir / "package.json", "{\"type\": \"module\"}\n");
+  test::writeFile(dir / "main.js", R"(import * as m from './sizes.ocean.js';
+import { writeFileSync } from 'node:fs';
+const o = m.oceans[0];
+o.cascades().forEach((c, i) => writeFileSync(`h0_${i}.bin`, Buffer.from(c.h0.buffer)));
+console.log(JSON.stringify({sizes: o.sizes, frequencies: o.cascades().map((c) => c.frequency.length)}));
+)");
+  CmdResult r = sh("cd " + test::shellQuote(dir.path()) + " && timeout 60 node main.js");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const json got = json::parse(r.out);
+  EXPECT_EQ(got["sizes"].dump(), "[16,32,64]");
+  ocean::OceanSettings s;
+  s.cascades.tileLengths = {120, 24, 5};
+  s.cascades.sizes = {16, 32, 64};
+  for (int k = 0; k < 3; ++k) {
+    const ocean::OceanCascade expected = ocean::initialCascade(s.spectrum, s.cascades, k);
+    EXPECT_EQ(got["frequencies"][k].get<size_t>(), expected.frequency.size()) << "cascade " << k;
+    const auto h0 = readArray<float>(dir / ("h0_" + std::to_string(k) + ".bin"));
+    ASSERT_EQ(h0.size(), expected.h0.size() * 4) << "cascade " << k;
+    // Every bin's h0(k) (channels 0 and 1) within one float ulp of the compiler's.
+    for (size_t i = 0; i < expected.h0.size(); ++i) {
+      ASSERT_LE(ulpsApart(h0[i * 4], static_cast<float>(expected.h0[i].real())), 1) << "cascade " << k << " bin " << i;
+      ASSERT_LE(ulpsApart(h0[i * 4 + 1], static_cast<float>(expected.h0[i].imag())), 1) << "cascade " << k << " bin " << i;
+    }
+  }
+}
+
 // A compile with no web target writes no module, and its manifest names none.
 TEST(OceanModule, IsWrittenOnlyWithAWebTarget) {
   TempDir dir("wg_ocean_module_");
