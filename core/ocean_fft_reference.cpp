@@ -146,7 +146,9 @@ std::vector<WavenumberBand> cascadeBands(const CascadeSettings& c) {
 }
 
 int cascadeResolution(const CascadeSettings& c, size_t index) {
-  return c.sizes.empty() ? c.resolution : c.sizes.at(index);
+  // fft_size caps every cascade, so that the two knobs compose: lowering fft_size lowers a
+  // cascade whose own size is larger, and never does nothing.
+  return c.sizes.empty() ? c.resolution : std::min(c.resolution, c.sizes.at(index));
 }
 
 int signedIndex(int m, int resolution) { return m < resolution / 2 ? m : m - resolution; }

@@ -47,15 +47,16 @@ inline constexpr double kLoopPeriod = 65536;  // s, T: the bins' frequencies are
 struct CascadeSettings {
   int resolution = 256;                     // N: a power of two in [64, 512]
   std::vector<double> tileLengths{1000.0};  // metres, 1 to 4, strictly decreasing
-  // Each cascade's own N (cascade_sizes), a power of two in [16, 512], one per tile; empty:
-  // every cascade at `resolution`. A long tile's band holds only its first dozen bins, so a
-  // small grid carries the same waves (cascadeResolution reads it).
+  // Each cascade's own N (cascade_sizes), a power of two in [16, 512], one per tile, capped
+  // by `resolution`; empty: every cascade at `resolution`. A long tile's band holds only its
+  // first dozen bins, so a small grid carries the same waves (cascadeResolution reads it).
   std::vector<int> sizes;
   double choppiness = 1;                    // lambda in [0, 4]; positive sharpens crests
   std::int64_t seed = 0;                    // [0, 2^32)
 };
 std::optional<SettingError> validateCascades(const CascadeSettings& c);
-// Cascade `index`'s N: its entry of `sizes`, or `resolution` when sizes is empty.
+// Cascade `index`'s N: the smaller of its entry of `sizes` and `resolution` (fft_size caps
+// every cascade), or `resolution` when sizes is empty.
 int cascadeResolution(const CascadeSettings& c, size_t index);
 
 // Each cascade owns the wavenumbers |k| in [low, high): the coarsest from 0, the finest to

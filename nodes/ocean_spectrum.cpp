@@ -74,10 +74,10 @@ OptionSpec cascadeSizesOption() {
   OptionSpec o = ports::checked(
       OptionSpec::Kind::Json, "cascade_sizes", nlohmann::json::array(), validateCascadeSizes,
       "each cascade's own texels along its side (powers of two in [16, 512], one a tile, the "
-      "longest tile's first), in place of fft_size; empty: every cascade at fft_size. A long "
-      "tile's band ends near its 12th bin, so 64 holds its waves as 256 does, for a sixteenth "
-      "of the simulation's cost. Quality knob: every cascade but the finest at fft_size / 4, "
-      "then / 2, then none");
+      "longest tile's first), at most fft_size (which caps them); empty: every cascade at "
+      "fft_size. A long tile's band ends near its 12th bin, so 64 holds its waves as 256 does, "
+      "for a sixteenth of the simulation's cost. Quality knob: every cascade but the finest at "
+      "fft_size / 4, then / 2, then none");
   o.levelsFor = cascadeSizeLevels;
   return o;
 }

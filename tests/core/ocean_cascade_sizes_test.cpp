@@ -175,6 +175,7 @@ TEST(OceanCascadeSizes, EachCascadeIsBuiltAndItsFoamBudgetedOnItsOwnGrid) {
   OceanSettings o;
   o.spectrum = openOceanSea();
   o.cascades = openOceanCascades({32, 64, 512});
+  o.cascades.resolution = 512;
   o.foam.cascades = 2;
   const int expected[3] = {32, 64, 512};
   for (int c = 0; c < 3; ++c) EXPECT_EQ(cascadeResolution(o.cascades, static_cast<size_t>(c)), expected[c]);
@@ -186,8 +187,12 @@ TEST(OceanCascadeSizes, EachCascadeIsBuiltAndItsFoamBudgetedOnItsOwnGrid) {
   EXPECT_NE(settingsKey(o), settingsKey(same));
   same.cascades.sizes = {};
   EXPECT_NE(settingsKey(o), settingsKey(same));
-  // Without sizes every cascade is at fft_size.
-  EXPECT_EQ(cascadeResolution(same.cascades, 2), 256);
+  // Without sizes every cascade is at fft_size; with them, fft_size caps each.
+  EXPECT_EQ(cascadeResolution(same.cascades, 2), 512);
+  same.cascades.sizes = {32, 64, 512};
+  same.cascades.resolution = 128;
+  EXPECT_EQ(cascadeResolution(same.cascades, 0), 32);
+  EXPECT_EQ(cascadeResolution(same.cascades, 2), 128);
 }
 
 }  // namespace
