@@ -94,15 +94,19 @@ struct Family {
 // A level's name: the knob's value as a user writes it ("3x3", 10, true).
 std::string levelName(const nlohmann::json& v) { return v.is_string() ? v.get<std::string>() : v.dump(); }
 
-// The quality knob `option` of node `nodeId` (NodeSpec options with levels), or null.
-const OptionSpec* knobOf(const Graph& g, const std::string& nodeId, const std::string& option) {
+// The levels of quality knob `option` of node `nodeId` (fixed, or following the node's
+// written options), or none when it is no knob there.
+std::vector<nlohmann::json> knobLevelsOf(const Graph& g, const std::string& nodeId, const std::string& option) {
   for (const auto& n : g.nodes)
     if (n.id == nodeId)
       if (const NodeSpec* spec = defaultRegistry().find(n.type)) {
         int i = spec->optionIndex(option);
-        if (i >= 0 && !spec->options[static_cast<size_t>(i)].levels.empty()) return &spec->options[static_cast<size_t>(i)];
+        if (i >= 0) {
+          std::vector<nlohmann::json> levels = knobLevels(spec->options[static_cast<size_t>(i)], writtenOptions(n));
+          if (levels.size() >= 2) return levels;
+        }
       }
-  return nullptr;
+  return {};
 }
 
 // A graph's own families: one per quality knob, each level with every other knob at its
@@ -203,11 +207,12 @@ std::vector<Family> configFamilies(const BenchSettings& settings) {
     if (fam.contains("knob")) {
       std::string knob = fam["knob"].is_string() ? fam["knob"].get<std::string>() : "";
       size_t dot = knob.find('.');
-      const OptionSpec* o = dot == std::string::npos ? nullptr : knobOf(*base, knob.substr(0, dot), knob.substr(dot + 1));
-      if (!o) configError(settings, "[WG004] family '" + name + "': \"knob\" must name a quality knob as \"node.option\" (got '" + knob + "')");
-      for (const auto& level : o->levels)
-        f.levels.push_back({levelName(level), ordered{{knob.substr(0, dot), {{o->name, level}}}}});
-      f.reference = levelName(o->levels.back());
+      const std::vector<nlohmann::json> levels =
+          dot == std::string::npos ? std::vector<nlohmann::json>{} : knobLevelsOf(*base, knob.substr(0, dot), knob.substr(dot + 1));
+      if (levels.empty()) configError(settings, "[WG004] family '" + name + "': \"knob\" must name a quality knob as \"node.option\" (got '" + knob + "')");
+      for (const auto& level : levels)
+        f.levels.push_back({levelName(level), ordered{{knob.substr(0, dot), {{knob.substr(dot + 1), level}}}}});
+      f.reference = levelName(levels.back());
     } else {
       if (!fam.contains("levels")) configError(settings, "[WG005] family '" + name + "' needs \"levels\" or \"knob\"");
       if (!fam["levels"].is_object())

@@ -21,8 +21,11 @@ void collectKnobs(const Graph& graph, const std::string& prefix, int depth, std:
       continue;
     }
     if (!type.spec) continue;
-    for (const auto& o : type.spec->options)
-      if (!o.levels.empty()) knobs.push_back({prefix + n.id, o.name, o.levels});
+    for (const auto& o : type.spec->options) {
+      // A knob's levels may follow the node's other options (one size per cascade).
+      std::vector<nlohmann::json> levels = knobLevels(o, writtenOptions(n));
+      if (levels.size() >= 2) knobs.push_back({prefix + n.id, o.name, std::move(levels)});
+    }
   }
 }
 

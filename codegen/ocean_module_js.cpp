@@ -29,9 +29,10 @@ const ocean::OceanSettings& settingsOf(const Program& program, const std::string
 const char* oceanModuleFunctions() {
   return R"(// Per cascade {h0, frequency}: h0 an N x N RGBA float texture's texels (row iz * N + ix) of
 // h0(k) and conj(h0(-k)), rounded once to float32 as the runtime uploads them; frequency
-// the bins' indices (an R32UI texture's).
-const wgo_packed = (spectra, n) =>
+// the bins' indices (an R32UI texture's). N is the cascade's own, sizes[c].
+const wgo_packed = (spectra, sizes) =>
   spectra.h0.map((h0, c) => {
+    const n = sizes[c];
     const packed = new Float32Array(n * n * 4);
     for (let iz = 0; iz < n; ++iz)
       for (let ix = 0; ix < n; ++ix) {
@@ -90,15 +91,15 @@ std::string oceanModuleJs(const std::string& graphName, const Program& program, 
     const ocean::OceanSettings& s = settingsOf(program, oceans[o].nodeId);
     const std::string spectra = "wgo_spectra" + std::to_string(o);
     m += queryOceanSpectraJs(spectra, s);
-    std::string tiles, dk;
+    std::string tiles, dk, sizes;
     for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
       tiles += (c ? ", " : "") + moduleNumber(s.cascades.tileLengths[c]);
       dk += (c ? ", " : "") + moduleNumber(2.0 * ocean::kPi / s.cascades.tileLengths[c]);
+      sizes += (c ? ", " : "") + std::to_string(ocean::cascadeResolution(s.cascades, c));
     }
-    const int n = s.cascades.resolution;
     list += "  {\n";
     list += "    node: " + nlohmann::json(oceans[o].nodeId).dump()  /* a JSON string is a JS string literal */ + ",\n";
-    list += "    resolution: " + std::to_string(n) + ",\n";
+    list += "    sizes: [" + sizes + "],  // each cascade's N: its maps are N x N texels\n";
     list += "    tileLengths: [" + tiles + "],\n";
     list += "    dk: [" + dk + "],  // 2 pi / tile length: the evolution pass's u_dk\n";
     list += "    choppiness: " + moduleNumber(s.cascades.choppiness) + ",\n";
@@ -108,7 +109,7 @@ std::string oceanModuleJs(const std::string& graphName, const Program& program, 
             ", keep: " + moduleNumber(ocean::foamKeep(s.foam)) + ", gain: " + moduleNumber(ocean::foamGain(s.foam)) +
             ",\n      threshold: " + moduleNumber(s.foam.threshold) +
             ", historySteps: " + std::to_string(ocean::historySteps(s.foam)) + "},\n";
-    list += "    cascades: () => wgo_packed(" + spectra + "(), " + std::to_string(n) + "),\n";
+    list += "    cascades: () => wgo_packed(" + spectra + "(), [" + sizes + "]),\n";
     list += "  },\n";
   }
   m += "export const oceans = [\n" + list + "];\n";

@@ -3,8 +3,8 @@
 // keeps an ocean's cascades as maps it recomputes every frame; a query cannot hold those
 // megabytes as tables in its text, so it recomputes them on the CPU, in double, into a state
 // the host owns:
-//   wg_<graph>_ocean                  a fixed-size struct (arrays sized by fft_size and the
-//                                     cascade count; no allocation)
+//   wg_<graph>_ocean                  a fixed-size struct (arrays sized by the cascades' N;
+//                                     no allocation)
 //   wg_<graph>_ocean_init(o)          each cascade's initial amplitudes h0(k), drawn from the
 //                                     ocean_spectrum's spectrum with its counter-based
 //                                     Gaussian numbers (core/ocean_random.h): the very h0 the
@@ -39,7 +39,7 @@ inline constexpr int kQueryOceanChannels = 11;
 inline constexpr double kQueryOceanHeightTolerance = 1e-12;
 
 // The state's type, init, update and sample functions for `settings` (cascade count and
-// fft_size fix the struct's size), prefixed by `prefix` (cGraphPrefix), in C or JavaScript.
+// each cascade's N fix the struct's size), prefixed by `prefix` (cGraphPrefix), in C or JavaScript.
 // The C text needs <stdint.h>; the spectrum's physics and the transform are shared helpers,
 // guarded so that two headers in one program define them once.
 std::string queryOceanC(const std::string& prefix, const ocean::OceanSettings& settings);

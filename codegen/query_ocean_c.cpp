@@ -2,7 +2,9 @@
 // core/ocean_spectrum.cpp and core/ocean_fft_reference.cpp written again in C99, line for
 // line and in the same order of operations, so that h0 comes out bit for bit as the
 // compiler's (tests/codegen/query_ocean_test.cpp compares them).
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "codegen/query_ocean.h"
 #include "core/number_format.h"
@@ -324,23 +326,64 @@ static inline void wgq_ocean_read(const double* maps, int n, double texelsPerMet
 
 std::string oceanCNumber(double x) { return numberLiteral(x, HeaderLanguage::C); }
 
+// Where each cascade's texels begin in the state's flat arrays (cascade c's N_c^2 texels
+// follow cascade c - 1's), the texel total, and the largest N (the scratch arrays' size).
+struct QueryOceanLayout {
+  std::vector<int> size;
+  std::vector<size_t> first;       // texel offset of each cascade
+  std::vector<size_t> firstTwiddle;  // offset of each cascade's N_c twiddle doubles
+  size_t texels = 0, twiddles = 0;
+  int largest = 0;
+};
+QueryOceanLayout queryOceanLayout(const ocean::OceanSettings& s) {
+  QueryOceanLayout l;
+  for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
+    const int n = ocean::cascadeResolution(s.cascades, c);
+    l.size.push_back(n);
+    l.first.push_back(l.texels);
+    l.firstTwiddle.push_back(l.twiddles);
+    l.texels += static_cast<size_t>(n) * n;
+    l.twiddles += static_cast<size_t>(n);
+    l.largest = std::max(l.largest, n);
+  }
+  return l;
+}
+
 }  // namespace
 
 size_t queryOceanStateBytes(const ocean::OceanSettings& s) {
-  const size_t n = static_cast<size_t>(s.cascades.resolution), c = s.cascades.tileLengths.size();
-  // time, camera, fade; per cascade h0, frequency, maps; twiddles, evolved, work, line.
-  return 8 * 4 + 8 + c * n * n * (2 * 8 + 4 + kQueryOceanChannels * 8) + n * 8 + n * n * 4 * 8 + n * n * 2 * 8 +
+  const QueryOceanLayout l = queryOceanLayout(s);
+  const size_t n = static_cast<size_t>(l.largest);
+  // time, camera, fade; h0, frequency, maps over every cascade's texels; twiddles; evolved,
+  // work, line at the largest N.
+  return 8 * 4 + 8 + l.texels * (2 * 8 + 4 + kQueryOceanChannels * 8) + l.twiddles * 8 + n * n * 4 * 8 + n * n * 2 * 8 +
          2 * n * 8;
 }
 
 std::string queryOceanC(const std::string& g, const ocean::OceanSettings& s) {
-  const int n = s.cascades.resolution;
+  const QueryOceanLayout layout = queryOceanLayout(s);
+  const int n = layout.largest;
   const size_t cascades = s.cascades.tileLengths.size();
-  const std::string C = std::to_string(cascades), N2 = std::to_string(static_cast<size_t>(n) * n), N = std::to_string(n);
+  const std::string C = std::to_string(cascades), N2 = std::to_string(static_cast<size_t>(n) * n);
+  const std::string T = std::to_string(layout.texels);
   auto list = [&](auto value) {
     std::string out;
     for (size_t c = 0; c < cascades; ++c) out += (c ? ", " : "") + value(c);
     return out;
+  };
+  std::string sizes;
+  for (size_t c = 0; c < cascades; ++c) sizes += (c ? ", " : "") + std::to_string(layout.size[c]);
+  // Each cascade's N, and where its texels and its twiddles begin in the flat arrays (the
+  // twiddles' offsets only where the function reads them: no unused static in the text).
+  auto layoutTables = [&](bool twiddles) {
+    std::string t = "  /* each cascade's N, and where its texels" + std::string(twiddles ? " and twiddles" : "") +
+                    " begin in the flat arrays */\n";
+    t += "  static const int size[" + C + "] = {" + sizes + "};\n";
+    t += "  static const size_t first[" + C + "] = {" + list([&](size_t c) { return std::to_string(layout.first[c]); }) + "};\n";
+    if (twiddles)
+      t += "  static const size_t firstTwiddle[" + C + "] = {" +
+           list([&](size_t c) { return std::to_string(layout.firstTwiddle[c]); }) + "};\n";
+    return t;
   };
   const auto bands = ocean::cascadeBands(s.cascades);
   const ocean::SpectrumSettings& p = s.spectrum;
@@ -348,15 +391,17 @@ std::string queryOceanC(const std::string& g, const ocean::OceanSettings& s) {
   h += "\n/* The spectral ocean's state: fill it with " + g + "ocean_init, bring it to a time with\n";
   h += " * " + g + "ocean_update (which writes it), then query it from any number of threads (which only\n";
   h += " * read it). About " + std::to_string((queryOceanStateBytes(s) + (1u << 19)) >> 20) + " MiB (" + C +
-       " cascades of " + N + " x " + N + "): give it static or heap storage, not the stack. */\n";
+       " cascades of " + sizes + " texels a side): give it static or heap storage, not the stack. */\n";
   h += "typedef struct " + g + "ocean {\n";
   h += "  double time;      /* the time of the maps, as update() was given it */\n";
   h += "  double camera[3]; /* where the readers' fade distances are measured from */\n";
   h += "  int fade;         /* 0 when update() was given no camera: every cascade at full weight */\n";
-  h += "  double h0[" + C + "][" + N2 + " * 2];        /* h0(k) per cascade, (re, im) at iz N + ix, metres */\n";
-  h += "  uint32_t frequency[" + C + "][" + N2 + "];   /* omega = frequency 2 pi / 2^16 s */\n";
-  h += "  double maps[" + C + "][" + N2 + " * 11];     /* per texel (jz N + jx): lDx, h, lDz, lDxz, hx, hz, lDxx, lDzz, and d/dt of lDx, h, lDz */\n";
-  h += "  double twiddle[" + N + "];\n  double evolved[" + N2 + " * 4];\n  double work[" + N2 + " * 2];\n  double line[" +
+  h += "  /* per cascade c its N_c x N_c texels, one cascade after another (c's begin after c - 1's) */\n";
+  h += "  double h0[" + T + " * 2];        /* h0(k), (re, im) at iz N_c + ix, metres */\n";
+  h += "  uint32_t frequency[" + T + "];   /* omega = frequency 2 pi / 2^16 s */\n";
+  h += "  double maps[" + T + " * 11];     /* per texel (jz N_c + jx): lDx, h, lDz, lDxz, hx, hz, lDxx, lDzz, and d/dt of lDx, h, lDz */\n";
+  h += "  double twiddle[" + std::to_string(layout.twiddles) + "];  /* per cascade e^(2 pi i j / N_c), j < N_c / 2 */\n";
+  h += "  double evolved[" + N2 + " * 4];\n  double work[" + N2 + " * 2];\n  double line[" +
        std::to_string(2 * n) + "];\n} " + g + "ocean;\n\n";
 
   h += "static inline void " + g + "ocean_update(" + g + "ocean* o, double t, const double camera[3]);\n\n";
@@ -373,45 +418,53 @@ std::string queryOceanC(const std::string& g, const ocean::OceanSettings& s) {
   h += "  static const double low[" + C + "] = {" + list([&](size_t c) { return oceanCNumber(bands[c].low); }) + "};\n";
   h += "  static const double high[" + C + "] = {" + list([&](size_t c) { return oceanCNumber(bands[c].high); }) + "};\n";
   h += "  const uint32_t seed = " + std::to_string(s.cascades.seed) + "u;\n";
-  h += "  const int n = " + N + ";\n  int c, ix, iz, j;\n";
-  h += "  for (j = 0; j < n / 2; ++j) {\n";
-  h += "    o->twiddle[2 * j] = cos(2.0 * WGQ_PI * j / n);\n    o->twiddle[2 * j + 1] = sin(2.0 * WGQ_PI * j / n);\n  }\n";
+  h += layoutTables(true);
+  h += "  int c, ix, iz, j;\n";
   h += "  for (c = 0; c < " + C + "; ++c) {\n";
   h += "    const double dk = 2.0 * WGQ_PI / tile[c];\n";
+  h += "    const int n = size[c];\n";
+  h += "    double* h0 = o->h0 + 2 * first[c];\n";
+  h += "    double* w = o->twiddle + firstTwiddle[c];\n";
+  h += "    uint32_t* frequency = o->frequency + first[c];\n";
+  h += "    for (j = 0; j < n / 2; ++j) {\n";
+  h += "      w[2 * j] = cos(2.0 * WGQ_PI * j / n);\n      w[2 * j + 1] = sin(2.0 * WGQ_PI * j / n);\n    }\n";
   h += "    for (iz = 0; iz < n; ++iz)\n      for (ix = 0; ix < n; ++ix) {\n";
   h += "        const size_t i = (size_t)iz * n + ix;\n";
   h += "        const int sx = ix < n / 2 ? ix : ix - n, sz = iz < n / 2 ? iz : iz - n;\n";
   h += "        const double kx = dk * sx, kz = dk * sz, k = hypot(kx, kz);\n";
   h += "        double variance, re, im;\n";
-  h += "        o->frequency[c][i] = wgq_frequency_index(wgq_angular_frequency(k, sea.depth));\n";
-  h += "        o->h0[c][2 * i] = o->h0[c][2 * i + 1] = 0.0;\n";
+  h += "        frequency[i] = wgq_frequency_index(wgq_angular_frequency(k, sea.depth));\n";
+  h += "        h0[2 * i] = h0[2 * i + 1] = 0.0;\n";
   h += "        /* the Nyquist row and column have no mirror; the mean is 0 */\n";
   h += "        if (ix == n / 2 || iz == n / 2 || !(k > 0.0) || k < low[c] || !(k < high[c])) continue;\n";
   h += "        variance = wgq_directional_spectrum(&sea, kx, kz) * dk * dk;\n";
   h += "        wgq_bin_gaussians((uint32_t)c, (uint32_t)sx, (uint32_t)sz, seed, &re, &im);\n";
-  h += "        o->h0[c][2 * i] = re * (0.5 * sqrt(variance));\n";
-  h += "        o->h0[c][2 * i + 1] = im * (0.5 * sqrt(variance));\n      }\n  }\n";
+  h += "        h0[2 * i] = re * (0.5 * sqrt(variance));\n";
+  h += "        h0[2 * i + 1] = im * (0.5 * sqrt(variance));\n      }\n  }\n";
   h += "  " + g + "ocean_update(o, 0.0, NULL);\n}\n\n";
 
   h += "/* The maps at time t seen from `camera` (NULL: no fade, every cascade at full weight). The\n";
   h += " * only function that writes the state. */\n";
   h += "static inline void " + g + "ocean_update(" + g + "ocean* o, double t, const double camera[3]) {\n";
   h += "  static const double tile[" + C + "] = {" + list([&](size_t c) { return oceanCNumber(s.cascades.tileLengths[c]); }) + "};\n";
+  h += layoutTables(true);
   h += "  const uint32_t tau = wgq_loop_fraction(t);\n  int c;\n";
   h += "  o->time = t;\n  o->fade = camera != NULL;\n";
   h += "  for (c = 0; c < 3; ++c) o->camera[c] = camera ? camera[c] : 0.0;\n";
   h += "  for (c = 0; c < " + C + "; ++c)\n";
-  h += "    wgq_ocean_cascade(o->h0[c], o->frequency[c], " + N + ", tile[c], " + oceanCNumber(s.cascades.choppiness) +
-       ", tau, o->twiddle, o->evolved, o->work, o->line, o->maps[c]);\n}\n\n";
+  h += "    wgq_ocean_cascade(o->h0 + 2 * first[c], o->frequency + first[c], size[c], tile[c], " +
+       oceanCNumber(s.cascades.choppiness) +
+       ", tau, o->twiddle + firstTwiddle[c], o->evolved, o->work, o->line, o->maps + 11 * first[c]);\n}\n\n";
 
   h += "/* The cascades' map channels at the world point (x, z), cascade c weighted by w[c], summed. */\n";
   h += "static inline void " + g + "ocean_sample(const " + g + "ocean* o, double x, double z, const double w[" + C +
        "], double out[11]) {\n";
-  h += "  /* n / L per cascade, rounded to float as the shader's literal */\n";
+  h += "  /* N_c / L per cascade, rounded to float as the shader's literal */\n";
   h += "  static const double texelsPerMetre[" + C + "] = {" +
-       list([&](size_t c) { return oceanCNumber(static_cast<float>(n / s.cascades.tileLengths[c])); }) + "};\n";
+       list([&](size_t c) { return oceanCNumber(static_cast<float>(layout.size[c] / s.cascades.tileLengths[c])); }) + "};\n";
+  h += layoutTables(false);
   h += "  int c;\n  for (c = 0; c < 11; ++c) out[c] = 0.0;\n";
-  h += "  for (c = 0; c < " + C + "; ++c) wgq_ocean_read(o->maps[c], " + N + ", texelsPerMetre[c], w[c], x, z, out);\n}\n\n";
+  h += "  for (c = 0; c < " + C + "; ++c) wgq_ocean_read(o->maps + 11 * first[c], size[c], texelsPerMetre[c], w[c], x, z, out);\n}\n\n";
   return h;
 }
 

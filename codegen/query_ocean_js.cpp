@@ -1,6 +1,7 @@
 // The spectral ocean of a surface query, JavaScript form (codegen/query_ocean.h): the C
 // form's arithmetic in the same order, with 32-bit unsigned integer steps by Math.imul and
 // `>>> 0`, and lgamma (which JavaScript lacks) by Lanczos' series.
+#include <algorithm>
 #include <string>
 
 #include "codegen/query_ocean.h"
@@ -294,10 +295,11 @@ std::string queryOceanSpectraJs(const std::string& name, const ocean::OceanSetti
   m += "  const tile = " + list([&](size_t c) { return oceanJsNumber(s.cascades.tileLengths[c]); }) + ";\n";
   m += "  const low = " + list([&](size_t c) { return oceanJsNumber(bands[c].low); }) + ";\n";
   m += "  const high = " + list([&](size_t c) { return oceanJsNumber(bands[c].high); }) + ";\n";
-  m += "  const seed = " + std::to_string(s.cascades.seed) + ", n = " + std::to_string(s.cascades.resolution) + ";\n";
+  m += "  const size = " + list([&](size_t c) { return std::to_string(ocean::cascadeResolution(s.cascades, c)); }) + ";\n";
+  m += "  const seed = " + std::to_string(s.cascades.seed) + ";\n";
   m += "  const spectra = {h0: [], frequency: []};\n";
   m += "  for (let c = 0; c < " + std::to_string(cascades) + "; ++c) {\n";
-  m += "    const dk = (2.0 * WGQ_PI) / tile[c];\n";
+  m += "    const dk = (2.0 * WGQ_PI) / tile[c], n = size[c];\n";
   m += "    const h0 = new Float64Array(n * n * 2), frequency = new Uint32Array(n * n);\n";
   m += "    for (let iz = 0; iz < n; ++iz)\n      for (let ix = 0; ix < n; ++ix) {\n";
   m += "        const i = iz * n + ix;\n";
@@ -314,29 +316,34 @@ std::string queryOceanSpectraJs(const std::string& name, const ocean::OceanSetti
 }
 
 std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
-  const int n = s.cascades.resolution;
   const size_t cascades = s.cascades.tileLengths.size();
-  const std::string C = std::to_string(cascades), N = std::to_string(n);
+  auto size = [&](size_t c) { return ocean::cascadeResolution(s.cascades, c); };
+  int largest = 0;  // the scratch arrays' N: each cascade uses the first N^2 of them
+  for (size_t c = 0; c < cascades; ++c) largest = std::max(largest, size(c));
+  const std::string C = std::to_string(cascades), N = std::to_string(largest);
   auto list = [&](auto value) {
     std::string out;
     for (size_t c = 0; c < cascades; ++c) out += (c ? ", " : "") + value(c);
     return "[" + out + "]";
   };
   std::string m = queryOceanJsHelpers();
-  m += "\nconst " + g + "ocean_tile = " + list([&](size_t c) { return oceanJsNumber(s.cascades.tileLengths[c]); }) + ";\n\n";
+  m += "\nconst " + g + "ocean_tile = " + list([&](size_t c) { return oceanJsNumber(s.cascades.tileLengths[c]); }) + ";\n";
+  m += "const " + g + "ocean_size = " + list([&](size_t c) { return std::to_string(size(c)); }) + ";\n\n";
   m += queryOceanSpectraJs(g + "ocean_spectra", s);
   m += "// A new ocean state (or `o` filled): each cascade's initial amplitudes from the ocean_spectrum's\n";
-  m += "// options, then the maps at t = 0 with no camera. Its arrays: h0, frequency, maps per cascade\n";
-  m += "// (maps: 11 numbers a texel, as the C header's).\n";
+  m += "// options, then the maps at t = 0 with no camera. Its arrays: h0, frequency, maps and twiddles per\n";
+  m += "// cascade (maps: 11 numbers a texel, as the C header's), each on the cascade's own N x N grid.\n";
   m += "export function " + g + "ocean_init(o = Object.create(null)) {\n";
   m += "  const n = " + N + ", spectra = " + g + "ocean_spectra();\n";
   m += "  o.time = 0.0;\n  o.camera = [0.0, 0.0, 0.0];\n  o.fade = 0;\n";
-  m += "  o.h0 = spectra.h0;\n  o.frequency = spectra.frequency;\n  o.maps = [];\n";
-  m += "  o.twiddle = new Float64Array(n);\n  o.evolved = new Float64Array(n * n * 4);\n";
+  m += "  o.h0 = spectra.h0;\n  o.frequency = spectra.frequency;\n  o.maps = [];\n  o.twiddle = [];\n";
+  m += "  o.evolved = new Float64Array(n * n * 4);\n";
   m += "  o.work = new Float64Array(n * n * 2);\n  o.line = new Float64Array(2 * n);\n";
-  m += "  for (let j = 0; j < n / 2; ++j) {\n";
-  m += "    o.twiddle[2 * j] = cos((2.0 * WGQ_PI * j) / n);\n    o.twiddle[2 * j + 1] = sin((2.0 * WGQ_PI * j) / n);\n  }\n";
-  m += "  for (let c = 0; c < " + C + "; ++c) o.maps.push(new Float64Array(n * n * 11));\n";
+  m += "  for (let c = 0; c < " + C + "; ++c) {\n";
+  m += "    const nc = " + g + "ocean_size[c], w = new Float64Array(nc);\n";
+  m += "    for (let j = 0; j < nc / 2; ++j) {\n";
+  m += "      w[2 * j] = cos((2.0 * WGQ_PI * j) / nc);\n      w[2 * j + 1] = sin((2.0 * WGQ_PI * j) / nc);\n    }\n";
+  m += "    o.twiddle.push(w);\n    o.maps.push(new Float64Array(nc * nc * 11));\n  }\n";
   m += "  " + g + "ocean_update(o, 0.0, null);\n  return o;\n}\n\n";
 
   m += "// The maps at time t seen from `camera` (null: no fade, every cascade at full weight).\n";
@@ -345,15 +352,16 @@ std::string queryOceanJs(const std::string& g, const ocean::OceanSettings& s) {
   m += "  o.time = t;\n  o.fade = camera ? 1 : 0;\n";
   m += "  for (let c = 0; c < 3; ++c) o.camera[c] = camera ? camera[c] : 0.0;\n";
   m += "  for (let c = 0; c < " + C + "; ++c)\n";
-  m += "    wgq_ocean_cascade(o.h0[c], o.frequency[c], " + N + ", " + g + "ocean_tile[c], " + oceanJsNumber(s.cascades.choppiness) +
-       ", tau, o.twiddle, o.evolved, o.work, o.line, o.maps[c]);\n}\n\n";
+  m += "    wgq_ocean_cascade(o.h0[c], o.frequency[c], " + g + "ocean_size[c], " + g + "ocean_tile[c], " +
+       oceanJsNumber(s.cascades.choppiness) + ", tau, o.twiddle[c], o.evolved, o.work, o.line, o.maps[c]);\n}\n\n";
 
   m += "// The cascades' map channels at the world point (x, z), cascade c weighted by w[c], summed.\n";
   m += "export function " + g + "ocean_sample(o, x, z, w, out) {\n";
   m += "  const texelsPerMetre = " +
-       list([&](size_t c) { return oceanJsNumber(static_cast<float>(n / s.cascades.tileLengths[c])); }) + ";\n";
+       list([&](size_t c) { return oceanJsNumber(static_cast<float>(size(c) / s.cascades.tileLengths[c])); }) + ";\n";
   m += "  for (let c = 0; c < 11; ++c) out[c] = 0.0;\n";
-  m += "  for (let c = 0; c < " + C + "; ++c) wgq_ocean_read(o.maps[c], " + N + ", texelsPerMetre[c], w[c], x, z, out);\n}\n\n";
+  m += "  for (let c = 0; c < " + C + "; ++c) wgq_ocean_read(o.maps[c], " + g +
+       "ocean_size[c], texelsPerMetre[c], w[c], x, z, out);\n}\n\n";
   return m;
 }
 

@@ -94,7 +94,19 @@ struct OptionSpec {
   // most exact (`watergraph bench GRAPH` measures each; the last is the reference). Empty:
   // not a knob. Every level is a valid value of the option.
   std::vector<nlohmann::json> levels;
+  // A knob whose levels depend on the node's other options (ocean_spectrum's cascade_sizes:
+  // one size per cascade): the levels, cheapest to most exact, for a node whose options
+  // are `written` (as the graph writes them, defaults not filled in); fewer than two where
+  // the option is no knob for that node. `levels` stays empty for such an option.
+  std::function<std::vector<nlohmann::json>(const nlohmann::json& written)> levelsFor;
 };
+
+// The levels of knob `o` on a node whose options are `written`: its fixed levels, or those
+// levelsFor gives.
+inline std::vector<nlohmann::json> knobLevels(const OptionSpec& o, const nlohmann::json& written) {
+  if (!o.levels.empty() || !o.levelsFor) return o.levels;
+  return o.levelsFor(written.is_object() ? written : nlohmann::json::object());
+}
 
 // A named input set with the behaviour it must keep: every output finite, and the
 // components of `output` (the first output when empty) within [lo, hi].

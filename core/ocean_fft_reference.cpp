@@ -95,6 +95,15 @@ std::optional<SettingError> validateCascades(const CascadeSettings& c) {
   if (c.tileLengths.empty() || c.tileLengths.size() > static_cast<size_t>(kMaxCascades))
     return error("tile_lengths", "lists " + std::to_string(c.tileLengths.size()) + " cascades; 1 to " +
                                      std::to_string(kMaxCascades) + " are allowed");
+  if (!c.sizes.empty() && c.sizes.size() != c.tileLengths.size())
+    return error("cascade_sizes", "lists " + std::to_string(c.sizes.size()) + " sizes for " +
+                                      std::to_string(c.tileLengths.size()) +
+                                      " cascades (tile_lengths): one a cascade, or none for fft_size everywhere");
+  for (size_t i = 0; i < c.sizes.size(); ++i)
+    if (!powerOfTwo(c.sizes[i]) || c.sizes[i] < kMinCascadeResolution || c.sizes[i] > kMaxResolution)
+      return error("cascade_sizes", "cascade " + std::to_string(i) + ": " + std::to_string(c.sizes[i]) +
+                                        " is not a power of two in [" + std::to_string(kMinCascadeResolution) + ", " +
+                                        std::to_string(kMaxResolution) + "]");
   for (size_t i = 0; i < c.tileLengths.size(); ++i) {
     double l = c.tileLengths[i];
     std::string where = "cascade " + std::to_string(i) + ": ";
@@ -136,6 +145,12 @@ std::vector<WavenumberBand> cascadeBands(const CascadeSettings& c) {
   return bands;
 }
 
+int cascadeResolution(const CascadeSettings& c, size_t index) {
+  // fft_size caps every cascade, so that the two knobs compose: lowering fft_size lowers a
+  // cascade whose own size is larger, and never does nothing.
+  return c.sizes.empty() ? c.resolution : std::min(c.resolution, c.sizes.at(index));
+}
+
 int signedIndex(int m, int resolution) { return m < resolution / 2 ? m : m - resolution; }
 
 OceanCascade emptyCascade(int resolution, double tileLength, double depth) {
@@ -155,12 +170,34 @@ OceanCascade emptyCascade(int resolution, double tileLength, double depth) {
   return cascade;
 }
 
+double bandEnergyHeld(const SpectrumSettings& s, const CascadeSettings& c, int index) {
+  if (auto e = validateSpectrum(s)) throw std::invalid_argument(e->parameter + ": " + e->message);
+  if (auto e = validateCascades(c)) throw std::invalid_argument(e->parameter + ": " + e->message);
+  if (index < 0 || index >= static_cast<int>(c.tileLengths.size()))
+    throw std::invalid_argument("cascade " + std::to_string(index) + " does not exist");
+  const int full = kMaxResolution, n = cascadeResolution(c, static_cast<size_t>(index));
+  const WavenumberBand band = cascadeBands(c)[static_cast<size_t>(index)];
+  const double dk = 2.0 * kPi / c.tileLengths[static_cast<size_t>(index)];
+  double all = 0, held = 0;
+  // The bins initialCascade fills on the largest grid, and of them those the cascade's own
+  // grid has (signed indices within (-n/2, n/2): its Nyquist row and column stay empty).
+  for (int sz = -full / 2 + 1; sz < full / 2; ++sz)
+    for (int sx = -full / 2 + 1; sx < full / 2; ++sx) {
+      const double kx = dk * sx, kz = dk * sz, k = std::hypot(kx, kz);
+      if (!(k > 0) || k < band.low || !(k < band.high)) continue;
+      const double variance = directionalSpectrum(s, kx, kz) * dk * dk;
+      all += variance;
+      if (std::abs(sx) < n / 2 && std::abs(sz) < n / 2) held += variance;
+    }
+  return all > 0 ? held / all : 1.0;
+}
+
 OceanCascade initialCascade(const SpectrumSettings& s, const CascadeSettings& c, int index) {
   if (auto e = validateSpectrum(s)) throw std::invalid_argument(e->parameter + ": " + e->message);
   if (auto e = validateCascades(c)) throw std::invalid_argument(e->parameter + ": " + e->message);
   if (index < 0 || index >= static_cast<int>(c.tileLengths.size()))
     throw std::invalid_argument("cascade " + std::to_string(index) + " does not exist");
-  int n = c.resolution;
+  int n = cascadeResolution(c, static_cast<size_t>(index));
   OceanCascade cascade = emptyCascade(n, c.tileLengths[static_cast<size_t>(index)], s.depth);
   WavenumberBand band = cascadeBands(c)[static_cast<size_t>(index)];
   double dk = 2.0 * kPi / cascade.tileLength;

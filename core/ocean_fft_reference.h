@@ -35,8 +35,11 @@
 
 namespace wg::ocean {
 
-inline constexpr int kMinResolution = 64;
+inline constexpr int kMinResolution = 64;  // fft_size's least; the cascades' bands are drawn at it
 inline constexpr int kMaxResolution = 512;
+// A cascade's own size (cascade_sizes) may be smaller than fft_size's least: a long tile's
+// band ends near its 12th bin (cascadeBands), which a 32^2 grid already holds.
+inline constexpr int kMinCascadeResolution = 16;
 inline constexpr int kMaxCascades = 4;
 inline constexpr double kMaxChoppiness = 4;
 inline constexpr double kLoopPeriod = 65536;  // s, T: the bins' frequencies are multiples of 2 pi / T
@@ -44,18 +47,27 @@ inline constexpr double kLoopPeriod = 65536;  // s, T: the bins' frequencies are
 struct CascadeSettings {
   int resolution = 256;                     // N: a power of two in [64, 512]
   std::vector<double> tileLengths{1000.0};  // metres, 1 to 4, strictly decreasing
+  // Each cascade's own N (cascade_sizes), a power of two in [16, 512], one per tile, capped
+  // by `resolution`; empty: every cascade at `resolution`. A long tile's band holds only its
+  // first dozen bins, so a small grid carries the same waves (cascadeResolution reads it).
+  std::vector<int> sizes;
   double choppiness = 1;                    // lambda in [0, 4]; positive sharpens crests
   std::int64_t seed = 0;                    // [0, 2^32)
 };
 std::optional<SettingError> validateCascades(const CascadeSettings& c);
+// Cascade `index`'s N: the smaller of its entry of `sizes` and `resolution` (fft_size caps
+// every cascade), or `resolution` when sizes is empty.
+int cascadeResolution(const CascadeSettings& c, size_t index);
 
 // Each cascade owns the wavenumbers |k| in [low, high): the coarsest from 0, the finest to
 // infinity (its whole grid), and between cascade i and i + 1 the geometric mean of i's
-// largest axial wavenumber at the smallest resolution, (kMinResolution/2 - 1) 2 pi / L_i,
+// largest axial wavenumber at fft_size's smallest, (kMinResolution/2 - 1) 2 pi / L_i,
 // and i + 1's smallest 2 pi / L_(i+1). No bin is counted by two cascades, and no
-// wavenumber between the grids is lost. The bands do not depend on the resolution, so
-// that lowering it (a quality knob) drops only the finest cascade's shortest waves and
-// keeps one sea, instead of moving waves between cascades (where other draws make them).
+// wavenumber between the grids is lost. The bands depend on no resolution (neither
+// fft_size nor cascade_sizes), so that lowering one (a quality knob) drops only the waves
+// beyond the smaller grid's Nyquist and keeps one sea, instead of moving waves between
+// cascades (where other draws make them). A cascade smaller than 64^2 holds its band only
+// as far as its own grid reaches (bandEnergyHeld measures what it drops).
 struct WavenumberBand {
   double low = 0, high = 0;  // rad/m
 };
@@ -71,6 +83,11 @@ struct OceanCascade {
   std::vector<std::uint32_t> frequency;  // n(k): omega = n 2 pi / T (dispersion at the settings' depth)
   std::vector<double> binVariance;       // F(k) dk^2 (m^2) for the bins the cascade owns, else 0
 };
+// The share of cascade `index`'s band variance (the spectrum's integral over the bins it
+// owns on a 512^2 grid, in double) that its own grid holds: 1 where cascade_sizes drops
+// nothing. The double reference's measure of what a smaller grid costs in waves.
+double bandEnergyHeld(const SpectrumSettings& s, const CascadeSettings& c, int index);
+
 // A cascade with no waves: its grid and each bin's frequency at `depth`.
 OceanCascade emptyCascade(int resolution, double tileLength, double depth);
 // Cascade `index` of valid settings (std::invalid_argument otherwise).

@@ -7,10 +7,23 @@
 namespace wg::ocean {
 
 double foamReplayTexelSteps(const OceanSettings& s) {
-  const double cascades = std::min<double>(s.foam.cascades, static_cast<double>(s.cascades.tileLengths.size()));
-  const double n = s.cascades.resolution;
-  return (historySteps(s.foam) + 1.0) * cascades * n * n;
+  double texels = 0;  // over the foam cascades, each on its own grid
+  for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c)
+    if (makesFoam(s, static_cast<int>(c))) {
+      const double n = cascadeResolution(s.cascades, c);
+      texels += n * n;
+    }
+  return (historySteps(s.foam) + 1.0) * texels;
 }
+
+namespace {
+int largestFoamResolution(const OceanSettings& s) {
+  int n = 0;
+  for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c)
+    if (makesFoam(s, static_cast<int>(c))) n = std::max(n, cascadeResolution(s.cascades, c));
+  return n;
+}
+}  // namespace
 
 std::optional<SettingError> validateOcean(const OceanSettings& s) {
   if (auto e = validateSpectrum(s.spectrum)) return e;
@@ -20,11 +33,12 @@ std::optional<SettingError> validateOcean(const OceanSettings& s) {
   if (steps > kFoamReplayBudget) {
     char text[320];
     std::snprintf(text, sizeof text,
-                  "%s s makes a still frame replay %d foam steps on %d cascades of %d^2 (%.0f million texel steps, "
-                  "over the budget of %.0f million): raise foam_step, or lower foam_decay, foam_cascades or fft_size",
+                  "%s s makes a still frame replay %d foam steps on %d cascades of up to %d^2 (%.0f million texel "
+                  "steps, over the budget of %.0f million): raise foam_step, or lower foam_decay, foam_cascades, "
+                  "fft_size or cascade_sizes",
                   numberText(s.foam.decay).c_str(), historySteps(s.foam) + 1,
                   static_cast<int>(std::min<size_t>(static_cast<size_t>(s.foam.cascades), s.cascades.tileLengths.size())),
-                  s.cascades.resolution, steps / 1e6, kFoamReplayBudget / 1e6);
+                  largestFoamResolution(s), steps / 1e6, kFoamReplayBudget / 1e6);
     return SettingError{"foam_decay", text};
   }
   return std::nullopt;
@@ -49,6 +63,8 @@ std::string settingsKey(const OceanSettings& s) {
     add(x);
   const CascadeSettings& c = s.cascades;
   add(c.resolution);
+  add(static_cast<double>(c.sizes.size()));
+  for (int n : c.sizes) add(n);
   add(c.choppiness);
   add(static_cast<double>(c.seed));
   for (double l : c.tileLengths) add(l);

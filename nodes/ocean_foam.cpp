@@ -45,10 +45,10 @@ NodeSpec oceanFoamNode() {
     double fade = ctx.options<double>();
     std::vector<GlslExpr> w =
         oceanread::emitWeights(ctx, fade, fade > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
-    const int n = settings.cascades.resolution;
     GlslExpr sum;
     for (size_t c = 0; c < settings.cascades.tileLengths.size(); ++c) {
       if (!ocean::makesFoam(settings, static_cast<int>(c))) continue;
+      const int n = ocean::cascadeResolution(settings.cascades, c);
       GlslExpr map = EmitContext::call(
           "wg_ocean_map", {ctx.oceanMap(ocean, static_cast<int>(c), ocean::kFoamMap), p + ".xz",
                            ctx.literal(n / settings.cascades.tileLengths[c]), std::to_string(n)}) + ".x";

@@ -38,9 +38,9 @@ std::vector<GlslExpr> emitWeights(EmitContext& ctx, double fadeTiles, const Glsl
 
 GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz, const std::vector<GlslExpr>& weights) {
   const auto& s = ctx.oceanSettings(oceanPort);
-  const int n = s.cascades.resolution;
   GlslExpr sum;
   for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
+    const int n = ocean::cascadeResolution(s.cascades, c);  // each cascade's texels per metre are its own
     GlslExpr map =
         EmitContext::call("wg_ocean_map", {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz,
                                            ctx.literal(n / s.cascades.tileLengths[c]), std::to_string(n)});

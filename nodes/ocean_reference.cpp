@@ -113,7 +113,7 @@ struct Bilinear {
   double fu, fv;
 };
 std::optional<Bilinear> bilinearAt(const ocean::OceanSettings& s, int cascade, double x, double z) {
-  const int n = s.cascades.resolution;
+  const int n = ocean::cascadeResolution(s.cascades, static_cast<size_t>(cascade));
   // The constant the shader multiplies by, rounded to float as its literal is.
   const double texelsPerMetre = static_cast<float>(n / s.cascades.tileLengths[static_cast<size_t>(cascade)]);
   if (!std::isfinite(x) || !std::isfinite(z)) return std::nullopt;

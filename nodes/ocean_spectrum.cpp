@@ -3,8 +3,10 @@
 // ocean_* readers take, and the planner turns each distinct spectrum the
 // outputs reach into simulation passes (initial amplitudes, evolution, inverse
 // FFT, packing) that fill the maps they read.
+#include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "core/emit_context.h"
 #include "core/ocean_settings.h"
@@ -16,6 +18,9 @@ namespace wg::nodes {
 namespace {
 
 constexpr double kDegree = ocean::kPi / 180.0;
+// The options' defaults that cascade_sizes' levels also read.
+constexpr int kDefaultFftSize = 256;
+nlohmann::json defaultTileLengths() { return nlohmann::json::array({400, 60, 9}); }
 
 std::string validateTileLengths(const nlohmann::json& v) {
   if (!v.is_array() || v.empty() || v.size() > static_cast<size_t>(ocean::kMaxCascades))
@@ -25,10 +30,56 @@ std::string validateTileLengths(const nlohmann::json& v) {
   return "";
 }
 
+// cascade_sizes' own check: whole numbers (a size's power of two, range and count are
+// the settings' checks, ocean::validateCascades, which name the cascade).
+std::string validateCascadeSizes(const nlohmann::json& v) {
+  if (!v.is_array() || v.size() > static_cast<size_t>(ocean::kMaxCascades))
+    return "must list one size a cascade (texels along its side), or none for fft_size everywhere";
+  for (const auto& n : v)
+    if (!n.is_number() || !std::isfinite(n.get<double>()) || n.get<double>() != std::floor(n.get<double>()) ||
+        std::abs(n.get<double>()) > 1e6)
+      return "must list whole numbers of texels, each a power of two in [" +
+             std::to_string(ocean::kMinCascadeResolution) + ", " + std::to_string(ocean::kMaxResolution) + "]";
+  return "";
+}
+
+// The tune levels of cascade_sizes for a node as written: every cascade but the finest at a
+// quarter, then at half of fft_size (at least 16), the finest at fft_size; most exact, none
+// (every cascade at fft_size). The long tiles' bands end near their 12th bin (docs/ocean.md,
+// "Cascades"), so a quarter of 256 still holds their waves: only the maps' bilinear
+// reconstruction between fewer texels changes.
+std::vector<nlohmann::json> cascadeSizeLevels(const nlohmann::json& written) {
+  const nlohmann::json fft = written.value("fft_size", nlohmann::json(kDefaultFftSize));
+  const nlohmann::json tiles = written.value("tile_lengths", defaultTileLengths());
+  if (!fft.is_number_integer() || !tiles.is_array() || tiles.size() < 2) return {};
+  const int n = fft.get<int>();
+  std::vector<nlohmann::json> levels;
+  for (int divisor : {4, 2}) {
+    nlohmann::json sizes = nlohmann::json::array();
+    for (size_t c = 0; c + 1 < tiles.size(); ++c) sizes.push_back(std::max(n / divisor, ocean::kMinCascadeResolution));
+    sizes.push_back(n);
+    levels.push_back(std::move(sizes));
+  }
+  levels.push_back(nlohmann::json::array());
+  return levels;
+}
+
 // An Integer option past int's range: any 32-bit seed.
 OptionSpec seedOption() {
   OptionSpec o = ports::integer("seed", 0, 0, 0, "the random sea's seed, a whole number from 0 to 2^32 - 1");
   o.max = 4294967295.0;
+  return o;
+}
+
+OptionSpec cascadeSizesOption() {
+  OptionSpec o = ports::checked(
+      OptionSpec::Kind::Json, "cascade_sizes", nlohmann::json::array(), validateCascadeSizes,
+      "each cascade's own texels along its side (powers of two in [16, 512], one a tile, the "
+      "longest tile's first), at most fft_size (which caps them); empty: every cascade at "
+      "fft_size. A long tile's band ends near its 12th bin, so 64 holds its waves as 256 does, "
+      "for a sixteenth of the simulation's cost. Quality knob: every cascade but the finest at "
+      "fft_size / 4, then / 2, then none");
+  o.levelsFor = cascadeSizeLevels;
   return o;
 }
 
@@ -57,6 +108,7 @@ ocean::OceanSettings parseOceanSettings(const OptionReader& o) {
   c.resolution = o.integer("fft_size");
   c.tileLengths.clear();
   for (const auto& l : o.json("tile_lengths")) c.tileLengths.push_back(l.get<double>());
+  for (const auto& n : o.json("cascade_sizes")) c.sizes.push_back(static_cast<int>(n.get<double>()));
   c.choppiness = o.number("choppiness");
   c.seed = o.wholeNumber("seed");
   ocean::FoamSettings& f = s.foam;
@@ -123,15 +175,16 @@ NodeSpec oceanSpectrumNode() {
       ports::number("swell_period", 10, 1, 60, "the swell's peak period, s"),
       ports::number("swell_direction", 0, -360, 360, "degrees from +x towards +z, the way the swell travels"),
       ports::number("swell_spread", 20, 0, 1000, "the swell's cos-2s exponent (larger: narrower)"),
-      ports::checked(OptionSpec::Kind::Json, "tile_lengths", nlohmann::json::array({400, 60, 9}), validateTileLengths,
+      ports::checked(OptionSpec::Kind::Json, "tile_lengths", defaultTileLengths(), validateTileLengths,
                      "each cascade's square tile, m, the longest first: 1 to 4 "
                      "tiles, each shorter than the previous by "
                      "less than N/2 - 1 times (so no wavenumber between the "
                      "grids is lost)"),
-      ports::knob(ports::integer("fft_size", 256, 64, 512,
+      ports::knob(ports::integer("fft_size", kDefaultFftSize, ocean::kMinResolution, ocean::kMaxResolution,
                                  "texels along a tile's side, a power of two; "
                                  "fewer drop the shortest waves"),
                   {64, 128, 256}),
+      cascadeSizesOption(),
       ports::number("choppiness", 1, 0, 4,
                     "lambda: the horizontal displacement's scale; positive "
                     "sharpens crests"),

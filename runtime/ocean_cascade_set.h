@@ -27,8 +27,8 @@ class OceanCascadeSet {
     std::vector<std::unique_ptr<Foam>> foam;  // per cascade, null where no shader reads it
   };
 
-  // makeCascade(settings, ocean, cascade, slopesRead, foamRead) and makeFoam(settings) build
-  // one cascade and its foam. A manifest whose ocean options do not parse is a manifest error.
+  // makeCascade(settings, ocean, cascade, slopesRead, foamRead) and makeFoam(settings,
+  // cascade) build one cascade and its foam (on that cascade's own grid). A manifest whose ocean options do not parse is a manifest error.
   template <class MakeCascade, class MakeFoam>
   OceanCascadeSet(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures,
                   MakeCascade makeCascade, MakeFoam makeFoam) {
@@ -40,7 +40,7 @@ class OceanCascadeSet {
       for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
         const bool foam = oceanFoamRead(textures, settings, index, c, info.nodeId);
         o.cascades.push_back(makeCascade(settings, index, c, oceanMapRead(textures, index, c, ocean::kSlopeMap), foam));
-        o.foam.push_back(foam ? makeFoam(settings) : nullptr);
+        o.foam.push_back(foam ? makeFoam(settings, c) : nullptr);
       }
       oceans_.push_back(std::move(o));
     }

@@ -16,8 +16,9 @@ OceanSimulation::OceanSimulation(const std::vector<OceanInfo>& oceans, const std
             return std::make_unique<OceanGpuCascade>(ocean::initialCascade(settings.spectrum, settings.cascades, c), api,
                                                      slopes, foam);
           },
-          [api](const ocean::OceanSettings& settings) {
-            return std::make_unique<OceanGpuFoam>(settings.cascades.resolution, settings.foam, api);
+          [api](const ocean::OceanSettings& settings, int c) {
+            return std::make_unique<OceanGpuFoam>(ocean::cascadeResolution(settings.cascades, static_cast<size_t>(c)),
+                                                  settings.foam, api);
           }),
       identity_(identity(oceans, textures)) {}
 
@@ -30,10 +31,10 @@ size_t OceanSimulation::textureBytes(const std::vector<OceanInfo>& oceans, const
   for (size_t o = 0; o < oceans.size(); ++o) {
     const ocean::OceanSettings settings = manifestOceanSettings(oceans[o]);
     for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
-      bytes += OceanGpuCascade::textureBytes(settings.cascades.resolution,
-                                             oceanMapRead(textures, static_cast<int>(o), c, ocean::kSlopeMap));
+      const int n = ocean::cascadeResolution(settings.cascades, static_cast<size_t>(c));
+      bytes += OceanGpuCascade::textureBytes(n, oceanMapRead(textures, static_cast<int>(o), c, ocean::kSlopeMap));
       if (oceanFoamRead(textures, settings, static_cast<int>(o), c, oceans[o].nodeId))
-        bytes += OceanGpuFoam::textureBytes(settings.cascades.resolution);
+        bytes += OceanGpuFoam::textureBytes(n);
     }
   }
   return bytes;

@@ -14,8 +14,9 @@ VkOceanSimulation::VkOceanSimulation(VkContext& context, const std::vector<Ocean
             return std::make_unique<VkOceanCascade>(*passes_, ocean::initialCascade(settings.spectrum, settings.cascades, c),
                                                     slopes, foam);
           },
-          [this](const ocean::OceanSettings& settings) {
-            return std::make_unique<VkOceanFoam>(*passes_, settings.cascades.resolution, settings.foam);
+          [this](const ocean::OceanSettings& settings, int c) {
+            return std::make_unique<VkOceanFoam>(
+                *passes_, ocean::cascadeResolution(settings.cascades, static_cast<size_t>(c)), settings.foam);
           }),
       identity_(identity(oceans, textures)) {}
 

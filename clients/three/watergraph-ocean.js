@@ -77,7 +77,7 @@ class OceanPasses {
 // packing; with `jacobian`, the foam's Jacobian fields alone into targets of their own.
 class OceanCascade {
   constructor(data, c, packed, twiddle, slopes, jacobian) {
-    const n = data.resolution;
+    const n = data.sizes[c];  // the cascade's own N (cascade_sizes)
     this.n = n;
     this.dk = data.dk[c];
     this.slopes = slopes;
@@ -208,11 +208,11 @@ export class OceanSimulation {
     this.oceans = module.oceans.map((data, o) => {
       if (data.node !== manifest.oceans[o].node)
         throw new WaterGraphError(`graph '${graph}': its ocean module's ocean ${o} is node '${data.node}', the manifest's '${manifest.oceans[o].node}': compile the graph again`);
-      const n = data.resolution;
-      if (!twiddles.has(n)) twiddles.set(n, dataTexture(module.twiddles(n), n / 2, 1, THREE.RGFormat, THREE.FloatType));
       const packed = data.cascades();
       const cascades = [], foam = [];
       data.tileLengths.forEach((_, c) => {
+        const n = data.sizes[c];
+        if (!twiddles.has(n)) twiddles.set(n, dataTexture(module.twiddles(n), n / 2, 1, THREE.RGFormat, THREE.FloatType));
         const foamed = read(o, c, 'foam');
         if (foamed && c >= data.foam.cascades)
           throw new WaterGraphError(`graph '${graph}': a texture reads the foam of ocean ${data.node} cascade ${c}, which its foam_cascades gives no foam`);

@@ -100,10 +100,12 @@ export class WebgpuOceanSimulation {
       t.ocean && t.ocean.ocean === o && t.ocean.cascade === c && t.ocean.map === map);
     this.oceans = module.oceans.map((data, o) => {
       if (data.node !== manifest.oceans[o].node) throw new WebgpuOceanError(`ocean ${o}: the module's node '${data.node}' is not the manifest's`);
-      const n = data.resolution;
-      const twiddle = this.#texture(n / 2, 1, 'rg32float', module.twiddles(n), 8);
       const packed = data.cascades();
+      const twiddles = new Map();  // one texture per cascade size
       const cascades = data.tileLengths.map((_, c) => {
+        const n = data.sizes[c];  // the cascade's own N (cascade_sizes)
+        if (!twiddles.has(n)) twiddles.set(n, this.#texture(n / 2, 1, 'rg32float', module.twiddles(n), 8));
+        const twiddle = twiddles.get(n);
         const slopes = read(o, c, 'slopes'), foam = read(o, c, 'foam');
         if (foam && c >= data.foam.cascades) throw new WebgpuOceanError(`ocean ${data.node} cascade ${c} makes no foam`);
         const rgba = () => this.#texture(n, n, 'rgba32float');

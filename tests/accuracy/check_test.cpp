@@ -165,6 +165,28 @@ TEST(CheckCli, ASpectralOceanIsCheckedOnEveryTarget) {
   std::filesystem::remove_all(dir);
 }
 
+// A resolution per cascade (cascade_sizes): each cascade's map is read with its own texel
+// scale N_c / L_c in the shaders and in the double reference. A cascade read with another
+// N lands on other texels (or outside its map) and check fails its bound.
+TEST(CheckCli, EachOceanCascadeIsReadAtItsOwnSize) {
+  const std::string dir = test::makeTempDir("wg_check_ocean_sizes");
+  const std::string graph = dir + "/sizes_sea.json";
+  test::writeFile(graph, R"({"version": 1, "name": "sizes_sea", "nodes": [
+      {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [40, 6], "cascade_sizes": [16, 64],
+       "foam_decay": 0.4}},
+      {"id": "moved", "type": "ocean_displacement", "inputs": {"ocean": "sea.ocean"}},
+      {"id": "surface", "type": "ocean_surface", "inputs": {"ocean": "sea.ocean", "position": "moved.undisplaced"}},
+      {"id": "foam", "type": "ocean_foam", "inputs": {"ocean": "sea.ocean", "position": "moved.undisplaced"}},
+      {"id": "shade", "type": "mix", "inputs": {"a": "surface.normal", "b": [1, 1, 1], "t": "foam.foam"}}],
+      "outputs": {"vertex": {"position": "moved.position"}, "fragment": {"color": "shade.out"}}})");
+  std::string out;
+  int rc = test::runCommand(
+      test::shellQuote(test::watergraphBinary()) + " check --size 32x18 --target glsl330 " + test::shellQuote(graph), &out);
+  EXPECT_EQ(rc, 0) << out;
+  EXPECT_NE(out.find("ok: 0 NaN/Inf pixel values"), std::string::npos) << out;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CheckCli, ErrorMapIsAPngOfTheFrameSize) {
   std::string dir = test::makeTempDir("wg_check_map");
   std::string map = dir + "/lake-error.png";

@@ -120,6 +120,35 @@ TEST(TuneKnobs, SceneResolutionIsTunedThoughItChangesNoShader) {
 // A spectral ocean's foam_step changes no shader (the foam's steps run in the simulation
 // passes, from the manifest's ocean options), yet each level is another foam and another
 // cost: tune keeps it. fft_size changes the readers' texel scale, a shader change.
+// cascade_sizes' levels follow the node's own fft_size and cascade count: every cascade but
+// the finest at N/4, then N/2, then none (every cascade at fft_size, the reference). A sea of
+// one cascade has no such knob.
+TEST(TuneKnobs, TheOceansCascadeSizesLevelsFollowItsCascades) {
+  Graph g = parse(R"({"version": 1, "name": "sea", "nodes": [
+    {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [120, 24, 5], "fft_size": 128}},
+    {"id": "detail", "type": "ocean_surface", "inputs": {"ocean": "sea.ocean", "position": [0, 0, 0]}}],
+    "outputs": {"fragment": {"color": "detail.normal"}}})");
+  std::vector<std::string> unchanged;
+  std::vector<TuneKnob> knobs = distinctKnobLevels(g, graphKnobs(g), Target::Glsl330, unchanged);
+  const TuneKnob* sizes = find(knobs, "sea.cascade_sizes");
+  ASSERT_TRUE(sizes);
+  EXPECT_EQ(nlohmann::json(sizes->levels).dump(), "[[32,32,128],[64,64,128],[]]");
+  // A level changes the shaders (the readers' texel scales) and the manifest's options.
+  TuneConfig exact(knobs.size());
+  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
+  TuneConfig config = exact;
+  config[static_cast<size_t>(sizes - knobs.data())] = 0;
+  Graph cheap = withKnobLevels(g, knobs, config);
+  EXPECT_NE(fileOf(cheap, ".glsl330.frag"), fileOf(withKnobLevels(g, knobs, exact), ".glsl330.frag"));
+  EXPECT_NE(fileOf(cheap, ".manifest.json").find(R"("cascade_sizes": [)"), std::string::npos);
+
+  Graph one = parse(R"({"version": 1, "name": "sea", "nodes": [
+    {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [40]}},
+    {"id": "detail", "type": "ocean_surface", "inputs": {"ocean": "sea.ocean", "position": [0, 0, 0]}}],
+    "outputs": {"fragment": {"color": "detail.normal"}}})");
+  EXPECT_FALSE(find(graphKnobs(one), "sea.cascade_sizes"));
+}
+
 TEST(TuneKnobs, TheOceansFoamStepIsTunedThoughItChangesNoShader) {
   Graph g = parse(R"({"version": 1, "name": "sea", "nodes": [
     {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [40], "fft_size": 64}},

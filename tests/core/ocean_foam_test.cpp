@@ -149,7 +149,7 @@ TEST(OceanFoam, AStillFramesReplayIsWithinItsBudget) {
   s.foam.decay = 3.4;  // K = 170
   ASSERT_TRUE(validateOcean(s).has_value());
   EXPECT_EQ(validateOcean(s)->parameter, "foam_decay");
-  EXPECT_NE(validateOcean(s)->message.find("foam_cascades or fft_size"), std::string::npos);
+  EXPECT_NE(validateOcean(s)->message.find("foam_cascades, fft_size or cascade_sizes"), std::string::npos);
   s.foam.cascades = 2;  // the third cascade makes none
   EXPECT_EQ(foamReplayTexelSteps(s), 171.0 * 2 * 512 * 512);
   EXPECT_FALSE(validateOcean(s).has_value());

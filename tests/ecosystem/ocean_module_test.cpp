@@ -79,9 +79,9 @@ o.cascades().forEach((c, i) => {
   writeFileSync(`h0_${i}.bin`, Buffer.from(c.h0.buffer));
   writeFileSync(`frequency_${i}.bin`, Buffer.from(c.frequency.buffer));
 });
-writeFileSync('twiddle.bin', Buffer.from(m.twiddles(o.resolution).buffer));
+writeFileSync('twiddle.bin', Buffer.from(m.twiddles(o.sizes[0]).buffer));
 const times = [)" + times + R"(];
-console.log(JSON.stringify({node: o.node, resolution: o.resolution, tileLengths: o.tileLengths, dk: o.dk,
+console.log(JSON.stringify({node: o.node, sizes: o.sizes, tileLengths: o.tileLengths, dk: o.dk,
   choppiness: o.choppiness, foam: o.foam, tau: times.map(m.phaseTau),
   step: times.map((t) => m.foamStepIndex(o.foam, t)), fraction: times.map((t) => m.foamFraction(o.foam, t))}));
 )");
@@ -90,9 +90,11 @@ console.log(JSON.stringify({node: o.node, resolution: o.resolution, tileLengths:
   const json got = json::parse(r.out);
 
   const ocean::OceanSettings s = openOceanSettings();
-  const int n = s.cascades.resolution;
+  const int n = ocean::cascadeResolution(s.cascades, 0);  // the twiddles' N
   EXPECT_EQ(got["node"], "sea");
-  EXPECT_EQ(got["resolution"], n);
+  ASSERT_EQ(got["sizes"].size(), s.cascades.tileLengths.size());
+  for (size_t k = 0; k < s.cascades.tileLengths.size(); ++k)
+    EXPECT_EQ(got["sizes"][k], ocean::cascadeResolution(s.cascades, k)) << "cascade " << k;
   EXPECT_EQ(got["choppiness"].get<double>(), s.cascades.choppiness);
   ASSERT_EQ(got["tileLengths"].size(), s.cascades.tileLengths.size());
   for (size_t k = 0; k < s.cascades.tileLengths.size(); ++k) {
@@ -131,12 +133,13 @@ console.log(JSON.stringify({node: o.node, resolution: o.resolution, tileLengths:
     const ocean::OceanCascade expected = ocean::initialCascade(s.spectrum, s.cascades, static_cast<int>(k));
     const auto h0 = readArray<float>(dir / ("h0_" + std::to_string(k) + ".bin"));
     const auto frequency = readArray<uint32_t>(dir / ("frequency_" + std::to_string(k) + ".bin"));
-    ASSERT_EQ(h0.size(), static_cast<size_t>(n) * n * 4);
+    ASSERT_EQ(h0.size(), expected.h0.size() * 4);
     ASSERT_EQ(frequency, expected.frequency) << "cascade " << k;
-    for (int iz = 0; iz < n; ++iz)
-      for (int ix = 0; ix < n; ++ix) {
-        const size_t i = static_cast<size_t>(iz) * n + ix;
-        const size_t mirror = static_cast<size_t>((n - iz) % n) * n + static_cast<size_t>((n - ix) % n);
+    const int nk = expected.resolution;
+    for (int iz = 0; iz < nk; ++iz)
+      for (int ix = 0; ix < nk; ++ix) {
+        const size_t i = static_cast<size_t>(iz) * nk + ix;
+        const size_t mirror = static_cast<size_t>((nk - iz) % nk) * nk + static_cast<size_t>((nk - ix) % nk);
         const std::complex<double> a = expected.h0[i], b = std::conj(expected.h0[mirror]);
         const float want[4] = {static_cast<float>(a.real()), static_cast<float>(a.imag()), static_cast<float>(b.real()),
                                static_cast<float>(b.imag())};
@@ -152,6 +155,45 @@ console.log(JSON.stringify({node: o.node, resolution: o.resolution, tileLengths:
   std::printf("ocean module h0: %lld of %lld float32 values equal the runtime's upload, %lld one ulp apart\n",
               static_cast<long long>(values - differing), static_cast<long long>(values),
               static_cast<long long>(differing));
+}
+
+// A resolution per cascade (cascade_sizes): the module gives each cascade its own N, and
+// packs each cascade's h0 and frequencies on that N x N grid (the clients size the cascade's
+// textures, twiddles and foam from it).
+TEST(OceanModule, GivesEachCascadeItsOwnSize) {
+  TempDir dir("wg_ocean_module_sizes_");
+  test::writeFile(dir / "sizes.json", R"({"version": 1, "name": "sizes", "nodes": [
+      {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [120, 24, 5], "cascade_sizes": [16, 32, 64]}},
+      {"id": "moved", "type": "ocean_displacement", "inputs": {"ocean": "sea.ocean"}}],
+      "outputs": {"vertex": {"position": "moved.position"}, "fragment": {"color": "moved.normal"}}})");
+  CmdResult c = wgRun("compile " + test::shellQuote(dir / "sizes.json") + " -o " +
+                      test::shellQuote(dir.path()) + " --target es300 --quiet");
+  ASSERT_EQ(c.exit, 0) << c.err;
+  test::writeFile(dir / "package.json", "{\"type\": \"module\"}\n");
+  test::writeFile(dir / "main.js", R"(import * as m from './sizes.ocean.js';
+import { writeFileSync } from 'node:fs';
+const o = m.oceans[0];
+o.cascades().forEach((c, i) => writeFileSync(`h0_${i}.bin`, Buffer.from(c.h0.buffer)));
+console.log(JSON.stringify({sizes: o.sizes, frequencies: o.cascades().map((c) => c.frequency.length)}));
+)");
+  CmdResult r = sh("cd " + test::shellQuote(dir.path()) + " && timeout 60 node main.js");
+  ASSERT_EQ(r.exit, 0) << r.err;
+  const json got = json::parse(r.out);
+  EXPECT_EQ(got["sizes"].dump(), "[16,32,64]");
+  ocean::OceanSettings s;
+  s.cascades.tileLengths = {120, 24, 5};
+  s.cascades.sizes = {16, 32, 64};
+  for (int k = 0; k < 3; ++k) {
+    const ocean::OceanCascade expected = ocean::initialCascade(s.spectrum, s.cascades, k);
+    EXPECT_EQ(got["frequencies"][k].get<size_t>(), expected.frequency.size()) << "cascade " << k;
+    const auto h0 = readArray<float>(dir / ("h0_" + std::to_string(k) + ".bin"));
+    ASSERT_EQ(h0.size(), expected.h0.size() * 4) << "cascade " << k;
+    // Every bin's h0(k) (channels 0 and 1) within one float ulp of the compiler's.
+    for (size_t i = 0; i < expected.h0.size(); ++i) {
+      ASSERT_LE(ulpsApart(h0[i * 4], static_cast<float>(expected.h0[i].real())), 1) << "cascade " << k << " bin " << i;
+      ASSERT_LE(ulpsApart(h0[i * 4 + 1], static_cast<float>(expected.h0[i].imag())), 1) << "cascade " << k << " bin " << i;
+    }
+  }
 }
 
 // A compile with no web target writes no module, and its manifest names none.

@@ -170,6 +170,58 @@ TEST_P(OceanGpu, TheSimulationComputesOnlyTheMapsTheShadersRead) {
   EXPECT_EQ(OceanSimulation::textureBytes(positionOnly.oceans, positionOnly.textures), 2u * 278784u);
 }
 
+// A resolution per cascade (cascade_sizes): open_ocean's tiles on grids of 16^2, 32^2 and
+// 64^2, each cascade transformed on its own grid and held to FFTW on that grid within the
+// bound for its own N; the simulation a manifest describes makes each cascade's textures at
+// its own size.
+TEST_P(OceanGpu, EachCascadeOnItsOwnGridMatchesTheReference) {
+  auto ctx = EglContext::create(GetParam());
+  const SceneShaderApi api = GetParam() == GlApi::Es32 ? SceneShaderApi::Es300 : SceneShaderApi::Gl330;
+  ocean::SpectrumSettings s;
+  s.windSpeed = 7;
+  s.fetch = 50e3;
+  ocean::CascadeSettings c;
+  c.tileLengths = {120, 24, 5};
+  c.sizes = {16, 32, 64};
+  const double lambda = 1.0, t = 3.7;
+  for (int i = 0; i < 3; ++i) {
+    const int n = c.sizes[static_cast<size_t>(i)];
+    SCOPED_TRACE("cascade " + std::to_string(i) + " at " + std::to_string(n) + "^2");
+    const ocean::OceanCascade cascade = ocean::initialCascade(s, c, i);
+    ASSERT_EQ(cascade.resolution, n);
+    OceanGpuCascade gpu(cascade, api);
+    gpu.update(t, lambda);
+    const std::vector<float> displacement = gpu.readDisplacement(), slopes = gpu.readSlopes();
+    ASSERT_EQ(displacement.size(), static_cast<size_t>(n) * n * 4);
+    const ocean::OceanFields f = ocean::oceanFields(cascade, t, lambda);
+    const double bound = ocean_test::transformBound(n);
+    const double z1 = std::hypot(norm(f.height), norm(f.displacementX));
+    const double z2 = std::hypot(norm(f.displacementZ), norm(f.slopeX));
+    const double z3 = std::hypot(norm(f.slopeZ), norm(f.dDxdx));
+    ASSERT_GT(norm(f.height), 0) << "a cascade with waves";
+    const double h = distance(channel(displacement, 1), f.height), hx = distance(channel(slopes, 0), f.slopeX),
+                 hz = distance(channel(slopes, 1), f.slopeZ);
+    std::printf("  N = %d: h %.0f%%, dh/dx %.0f%%, dh/dz %.0f%% of the bound\n", n, 100 * h / (bound * z1),
+                100 * hx / (bound * z2), 100 * hz / (bound * z3));
+    EXPECT_LE(h, bound * z1);
+    EXPECT_LE(hx, bound * z2);
+    EXPECT_LE(hz, bound * z3);
+  }
+  Diagnostics diags;
+  auto graph = parseGraph(R"({"version": 1, "name": "sizes_test", "nodes": [
+      {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [120, 24, 5], "cascade_sizes": [16, 32, 64]}},
+      {"id": "moved", "type": "ocean_displacement", "inputs": {"ocean": "sea.ocean"}}],
+      "outputs": {"vertex": {"position": "moved.position"}, "fragment": {"color": "moved.normal"}}})",
+                          "sizes.json", diags);
+  CompileOptions o;
+  o.targets = {Target::Glsl330};
+  auto compiled = graph ? compileGraph(*graph, defaultRegistry(), o, diags) : std::nullopt;
+  ASSERT_TRUE(compiled);
+  EXPECT_EQ(OceanSimulation::textureBytes(compiled->manifest.oceans, compiled->manifest.textures),
+            OceanGpuCascade::textureBytes(16, true) + OceanGpuCascade::textureBytes(32, true) +
+                OceanGpuCascade::textureBytes(64, true));
+}
+
 INSTANTIATE_TEST_SUITE_P(Apis, OceanGpu, ::testing::Values(GlApi::DesktopGl45, GlApi::Es32),
                          [](const auto& info) { return info.param == GlApi::Es32 ? std::string("es32") : std::string("gl45"); });
 

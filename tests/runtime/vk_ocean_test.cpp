@@ -106,6 +106,38 @@ TEST(VkOcean, FieldsMatchTheDoubleReferenceWithinTheTransformsBound) {
   }
 }
 
+// A resolution per cascade (cascade_sizes): open_ocean's tiles on grids of 16^2, 32^2 and
+// 64^2, each transformed on its own grid and held to FFTW there within its own N's bound.
+TEST(VkOcean, EachCascadeOnItsOwnGridMatchesTheReference) {
+  auto context = validatingContext();
+  VkOceanPasses passes(*context);
+  ocean::SpectrumSettings s;
+  s.windSpeed = 7;
+  s.fetch = 50e3;
+  ocean::CascadeSettings c;
+  c.tileLengths = {120, 24, 5};
+  c.sizes = {16, 32, 64};
+  const double lambda = 1.0, t = 3.7;
+  for (int i = 0; i < 3; ++i) {
+    const int n = c.sizes[static_cast<size_t>(i)];
+    SCOPED_TRACE("cascade " + std::to_string(i) + " at " + std::to_string(n) + "^2");
+    const ocean::OceanCascade cascade = ocean::initialCascade(s, c, i);
+    VkOceanCascade gpu(passes, cascade);
+    recordCascade(*context, gpu, t, lambda);
+    const std::vector<float> displacement = gpu.readDisplacement(), slopes = gpu.readSlopes();
+    ASSERT_EQ(displacement.size(), static_cast<size_t>(n) * n * 4);
+    const ocean::OceanFields f = ocean::oceanFields(cascade, t, lambda);
+    const double bound = ocean_test::transformBound(n);
+    const double z1 = std::hypot(norm(f.height), norm(f.displacementX));
+    const double z2 = std::hypot(norm(f.displacementZ), norm(f.slopeX));
+    const double z3 = std::hypot(norm(f.slopeZ), norm(f.dDxdx));
+    ASSERT_GT(norm(f.height), 0) << "a cascade with waves";
+    EXPECT_LE(distanceBetween(mapChannel(displacement, 1), f.height), bound * z1);
+    EXPECT_LE(distanceBetween(mapChannel(slopes, 0), f.slopeX), bound * z2);
+    EXPECT_LE(distanceBetween(mapChannel(slopes, 1), f.slopeZ), bound * z3);
+  }
+}
+
 // Nothing reads the slopes: the first texture's two transforms alone, the same
 // displacement within the same bound, w = 0, no slope map.
 TEST(VkOcean, ADisplacementOnlyCascadeComputesTheDisplacementAlone) {

@@ -330,9 +330,10 @@ const wgq_ocean_read = (maps, n, texelsPerMetre, weight, x, z, out) => {
 
 // Per cascade {h0, frequency}: h0 an N x N RGBA float texture's texels (row iz * N + ix) of
 // h0(k) and conj(h0(-k)), rounded once to float32 as the runtime uploads them; frequency
-// the bins' indices (an R32UI texture's).
-const wgo_packed = (spectra, n) =>
+// the bins' indices (an R32UI texture's). N is the cascade's own, sizes[c].
+const wgo_packed = (spectra, sizes) =>
   spectra.h0.map((h0, c) => {
+    const n = sizes[c];
     const packed = new Float32Array(n * n * 4);
     for (let iz = 0; iz < n; ++iz)
       for (let ix = 0; ix < n; ++ix) {
@@ -378,10 +379,11 @@ function wgo_spectra0() {
   const tile = [120, 24, 5];
   const low = [0, 0.6518752185828652, 3.1935233229865414];
   const high = [0.6518752185828652, 3.1935233229865414, Infinity];
-  const seed = 0, n = 256;
+  const size = [256, 256, 256];
+  const seed = 0;
   const spectra = {h0: [], frequency: []};
   for (let c = 0; c < 3; ++c) {
-    const dk = (2.0 * WGQ_PI) / tile[c];
+    const dk = (2.0 * WGQ_PI) / tile[c], n = size[c];
     const h0 = new Float64Array(n * n * 2), frequency = new Uint32Array(n * n);
     for (let iz = 0; iz < n; ++iz)
       for (let ix = 0; ix < n; ++ix) {
@@ -404,7 +406,7 @@ function wgo_spectra0() {
 export const oceans = [
   {
     node: "sea",
-    resolution: 256,
+    sizes: [256, 256, 256],  // each cascade's N: its maps are N x N texels
     tileLengths: [120, 24, 5],
     dk: [0.05235987755982988, 0.2617993877991494, 1.2566370614359172],  // 2 pi / tile length: the evolution pass's u_dk
     choppiness: 1,
@@ -412,6 +414,6 @@ export const oceans = [
     // every `step` s; a still frame replays the last historySteps steps from no foam.
     foam: {cascades: 2, step: 0.2, keep: 0.846481724890614, gain: 1,
       threshold: 0.8, historySteps: 30},
-    cascades: () => wgo_packed(wgo_spectra0(), 256),
+    cascades: () => wgo_packed(wgo_spectra0(), [256, 256, 256]),
   },
 ];
