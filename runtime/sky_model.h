@@ -53,7 +53,8 @@ double sunSolidAngle();
 // the disc's energy (radiance times solid angle) is the same at every footprint. Where the
 // pixel is much smaller than the disc it is the sharp disc with an edge a few pixels wide;
 // where it is larger, a smooth bump about 2.5 pixels in radius whose sum over any pixel
-// grid is its integral to ~0.2 % wherever the disc's centre falls (sky_model_test).
+// grid is its integral to ~0.2 % wherever the disc's centre falls (tests/runtime/
+// sun_disc_test.cpp).
 inline constexpr double kSunFootprintWidths = 2.5;
 inline constexpr double kSunEdgeHalfWidth = 0.02 * kPi / 180.0;
 inline constexpr double kSunMaxEdgeChord = 0.5;  // ~29 deg: beyond it no pixel shows a sun
@@ -63,7 +64,8 @@ struct SunDiscShape {
   double scale;         // pi c^2 over the weight's integral
 };
 SunDiscShape sunDiscShape(double footprint);
-// The weight at squared chord q, scale included (1 on a sharp disc, < 1 on a spread one).
+// The weight at squared chord q, scale included: 1.08 inside the sharp disc (footprint 0),
+// up to 1.33 while the flat top shrinks, below 1 once the disc is spread wider than itself.
 double sunDiscWeight(double chordSquared, double footprint);
 
 // The luminous solar constant: the sun's illuminance at normal incidence outside the
