@@ -224,7 +224,10 @@ struct Renderer::Impl {
     glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_FALSE);
     glUseProgram(sky->id());
-    glm::mat4 inv = glm::inverse(vp);
+    // Inverted in double: a float inverse of a narrow field's matrix far from the origin
+    // distorts the view directions' spacing by percents, and the disc is band-limited to
+    // that spacing (sky_model.h). The web clients invert in double (JavaScript) too.
+    glm::mat4 inv = glm::mat4(glm::inverse(glm::dmat4(vp)));
     glUniformMatrix4fv(skyInverseVp, 1, GL_FALSE, glm::value_ptr(inv));
     glUniform3fv(skySun, 1, glm::value_ptr(sun));
     glBindVertexArray(emptyVao.id());

@@ -81,7 +81,11 @@ void main() {
   vec4 f = u_inverse_view_projection * vec4(v_ndc, 1.0, 1.0);
   vec3 d = f.xyz / f.w - n.xyz / n.w;
   d *= inversesqrt(max(dot(d, d), 1e-30));
-  o_color = vec4(wg_sky_radiance(WgSky(v_sun, v_sky_scale, v_sky_fade), v_ground, v_sun_disc, d), 1.0);
+  // The pixel's angular footprint: the chord to its neighbours' directions, from the
+  // derivatives (here, in uniform control flow). The disc is band-limited to it, so a disc
+  // smaller than a texel of the environment cube is not a one-texel spike (sky_model.h).
+  float footprint = max(length(dFdx(d)), length(dFdy(d)));
+  o_color = vec4(wg_sky_radiance(WgSky(v_sun, v_sky_scale, v_sky_fade), v_ground, v_sun_disc, d, footprint), 1.0);
 }
 )glsl";
 

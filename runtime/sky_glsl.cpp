@@ -51,7 +51,10 @@ std::string constants() {
   s += constFloat("WG_TWILIGHT_SCALE", kTwilightScaleDegrees);
   s += constVec("vec3", "WG_NIGHT", {kNightRadiance[0], kNightRadiance[1], kNightRadiance[2]});
   s += constFloat("WG_SUN_RADIUS", kSunAngularRadius);
+  s += constFloat("WG_SUN_CHORD", sunDiscChord());
+  s += constFloat("WG_SUN_FOOTPRINTS", kSunFootprintWidths);
   s += constFloat("WG_SUN_EDGE", kSunEdgeHalfWidth);
+  s += constFloat("WG_SUN_MAX_EDGE", kSunMaxEdgeChord);
   s += constFloat("WG_SUN_SOLID_ANGLE", sunSolidAngle());
   s += constFloat("WG_SUN_TOP_RADIANCE", solarRadianceTopOfAtmosphere());
   s += constFloat("WG_SUN_DISC_CAP", kSunDiscCap);
@@ -140,12 +143,26 @@ vec3 wg_ground(WgSky k) {
   return WG_GROUND_ALBEDO / WG_PI * horizontal;
 }
 
+// The disc's weight at direction d for a pixel of the given footprint (the chord to the
+// neighbouring pixels' directions): band-limited to it, its energy kept (sky_model.h,
+// sunDiscWeight). q is the squared chord |d - s|^2, accurate near the sun's centre.
+float wg_sun_disc_weight(vec3 d, vec3 s, float footprint) {
+  float e = clamp(WG_SUN_FOOTPRINTS * footprint, WG_SUN_EDGE, WG_SUN_MAX_EDGE);
+  float inner = max(WG_SUN_CHORD - e, 0.0), outer = WG_SUN_CHORD + e;
+  inner *= inner;
+  outer *= outer;
+  vec3 v = d - s;
+  float t = clamp((dot(v, v) - inner) / (outer - inner), 0.0, 1.0);
+  float w = 1.0 - t;
+  return w * w * w * (WG_SUN_CHORD * WG_SUN_CHORD / (inner + 0.25 * (outer - inner)));
+}
+
 // The sky in direction d, given what depends only on the sun (k, wg_ground(k) and
-// wg_sun_disc_radiance(k.sun)): the sky pass computes those once per draw.
-vec3 wg_sky_radiance(WgSky k, vec3 ground, vec3 disc, vec3 d) {
+// wg_sun_disc_radiance(k.sun)): the sky pass computes those once per draw. footprint: as
+// wg_sun_disc_weight's (the caller takes it from derivatives, in uniform control flow).
+vec3 wg_sky_radiance(WgSky k, vec3 ground, vec3 disc, vec3 d, float footprint) {
   if (d.y < 0.0) return ground;
-  float coverage = 1.0 - smoothstep(WG_SUN_RADIUS - WG_SUN_EDGE, WG_SUN_RADIUS + WG_SUN_EDGE, wg_angle_between(d, k.sun));
-  return wg_upper_sky(k, d) + disc * coverage;
+  return wg_upper_sky(k, d) + disc * wg_sun_disc_weight(d, k.sun, footprint);
 }
 
 // Sky and ground irradiance on a plane of normal n: the radiance against the order-2

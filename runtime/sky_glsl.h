@@ -9,8 +9,9 @@ namespace wg::rt {
 //   WgSky wg_sky_state(vec3 s)              what the sky depends on besides d (a struct)
 //   vec3 wg_ground(WgSky k)                 the radiance below the horizon
 //   vec3 wg_sun_disc_radiance(vec3 s)       the disc as drawn (capped)
-//   vec3 wg_sky_radiance(WgSky k, vec3 ground, vec3 disc, vec3 d)
+//   vec3 wg_sky_radiance(WgSky k, vec3 ground, vec3 disc, vec3 d, float footprint)
 //                                           the sky pass: diffuse sky + the disc
+//                                           band-limited to the pixel's footprint
 //   vec3 wg_sun_irradiance(vec3 s)          uncapped, on a plane facing the sun
 //   vec3 wg_sky_irradiance(vec3 n, vec3 s)  sky and ground on a plane of normal n
 // d and n are unit directions, s the unit direction towards the sun. The text declares

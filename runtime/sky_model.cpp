@@ -20,11 +20,6 @@ glm::dvec3 unitOrUp(glm::dvec3 v) {
 // 4.7e-3 rad: 1 - cos r = 1.1e-5, only ~100 float32 steps).
 double angleBetween(glm::dvec3 a, glm::dvec3 b) { return 2.0 * std::asin(std::min(1.0, glm::length(a - b) * 0.5)); }
 
-double smoothstep(double e0, double e1, double x) {
-  double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 // The sun's zenith angle in [0, pi].
 double sunZenith(glm::dvec3 s) { return std::acos(std::clamp(s.y, -1.0, 1.0)); }
 
@@ -141,8 +136,22 @@ glm::dvec3 sunDiscRadiance(glm::dvec3 sunDirection) {
   return l * std::min(1.0, kSunDiscCap / std::max(peak, 1e-30));
 }
 
-double sunDiscCoverage(double gamma) {
-  return 1.0 - smoothstep(kSunAngularRadius - kSunEdgeHalfWidth, kSunAngularRadius + kSunEdgeHalfWidth, gamma);
+double sunDiscChord() { return 2.0 * std::sin(kSunAngularRadius / 2.0); }
+
+SunDiscShape sunDiscShape(double footprint) {
+  double c = sunDiscChord();
+  double e = std::clamp(kSunFootprintWidths * footprint, kSunEdgeHalfWidth, kSunMaxEdgeChord);
+  double inner = std::max(c - e, 0.0), outer = c + e;
+  inner *= inner;
+  outer *= outer;
+  return {inner, outer, c * c / (inner + 0.25 * (outer - inner))};
+}
+
+double sunDiscWeight(double chordSquared, double footprint) {
+  SunDiscShape k = sunDiscShape(footprint);
+  double t = std::clamp((chordSquared - k.inner) / (k.outer - k.inner), 0.0, 1.0);
+  double w = 1.0 - t;
+  return w * w * w * k.scale;
 }
 
 glm::dvec3 sunIrradiance(glm::dvec3 sunDirection) {
@@ -166,10 +175,11 @@ glm::dvec3 diffuseSkyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection) {
   return d.y < 0.0 ? groundRadiance(s) : upperSky(d, s);
 }
 
-glm::dvec3 skyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection) {
+glm::dvec3 skyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection, double footprint) {
   glm::dvec3 d = unitOrUp(direction), s = unitOrUp(sunDirection);
   if (d.y < 0.0) return groundRadiance(s);
-  return upperSky(d, s) + sunDiscRadiance(s) * sunDiscCoverage(angleBetween(d, s));
+  glm::dvec3 v = d - s;
+  return upperSky(d, s) + sunDiscRadiance(s) * sunDiscWeight(glm::dot(v, v), footprint);
 }
 
 glm::dvec3 skyIrradiance(glm::dvec3 normal, glm::dvec3 sunDirection) {

@@ -35,10 +35,38 @@ inline constexpr double kTurbidity = 2.5;
 inline constexpr double kRadianceUnitCdPerM2 = 12000.0;
 
 // The sun's mean angular radius (0.2666 deg) and its solid angle 2 pi (1 - cos r), about
-// 6.8e-5 sr. The disc's edge is smoothed over +-kSunEdgeHalfWidth so it is not aliased.
+// 6.8e-5 sr.
 inline constexpr double kSunAngularRadius = 0.2666 * kPi / 180.0;
-inline constexpr double kSunEdgeHalfWidth = 0.02 * kPi / 180.0;
 double sunSolidAngle();
+
+// The disc as drawn is band-limited to the footprint of the target's pixel (the sky
+// pass measures it per pixel as the angle to the neighbouring pixels' directions, from
+// the derivatives of its view direction), so that a disc smaller than a pixel is not a
+// sub-pixel spike that lands in one texel or none depending on where texel centres fall.
+// In the squared chord q = |d - s|^2 (= 2 (1 - cos gamma), gamma the angle to the sun's
+// centre) the weight is 1 inside q_in = max(c - e, 0)^2, falls as (1 - t)^3 with
+// t = (q - q_in) / (q_out - q_in) out to q_out = (c + e)^2, and is 0 beyond; c is the
+// disc's chord 2 sin(r / 2) and e the edge's half width, kSunFootprintWidths footprints
+// (never less than kSunEdgeHalfWidth, never more than kSunMaxEdgeChord). Since the solid
+// angle is dOmega = pi dq, the weight's integral over the sphere is exactly
+// pi (q_in + (q_out - q_in) / 4), and the weight is scaled by the disc's own pi c^2 over it:
+// the disc's energy (radiance times solid angle) is the same at every footprint. Where the
+// pixel is much smaller than the disc it is the sharp disc with an edge a few pixels wide;
+// where it is larger, a smooth bump about 2.5 pixels in radius whose sum over any pixel
+// grid is its integral to ~0.2 % wherever the disc's centre falls (tests/runtime/
+// sun_disc_test.cpp).
+inline constexpr double kSunFootprintWidths = 2.5;
+inline constexpr double kSunEdgeHalfWidth = 0.02 * kPi / 180.0;
+inline constexpr double kSunMaxEdgeChord = 0.5;  // ~29 deg: beyond it no pixel shows a sun
+double sunDiscChord();
+struct SunDiscShape {
+  double inner, outer;  // q_in and q_out, squared chords
+  double scale;         // pi c^2 over the weight's integral
+};
+SunDiscShape sunDiscShape(double footprint);
+// The weight at squared chord q, scale included: 1.08 inside the sharp disc (footprint 0),
+// up to 1.33 while the flat top shrinks, below 1 once the disc is spread wider than itself.
+double sunDiscWeight(double chordSquared, double footprint);
 
 // The luminous solar constant: the sun's illuminance at normal incidence outside the
 // atmosphere, about 128 klux (quoted values range from ~127 to ~134 klux). Spread over
@@ -47,8 +75,10 @@ double sunSolidAngle();
 inline constexpr double kSolarIlluminanceLux = 128000.0;
 double solarRadianceTopOfAtmosphere();  // scene units, ~1.57e5
 
-// RGBA16F render targets hold at most 65504. The disc as drawn is scaled (hue kept) so
-// that its largest channel is at most kSunDiscCap; lighting uses the uncapped sun.
+// RGBA16F render targets hold at most 65504. The disc's radiance is scaled (hue kept) so
+// that its largest channel is at most kSunDiscCap; lighting uses the uncapped sun. The
+// band-limited weight raises the sharp disc's peak by at most ~1.33 (its edge carries less
+// than the sharp edge's energy), 40000, still below 65504.
 inline constexpr double kSunDiscCap = 30000.0;
 
 // The ground below the horizon: a Lambertian plane of this albedo (grass and soil ~0.2)
@@ -109,15 +139,14 @@ glm::dvec3 sunOpticalDepth();
 // Directions need not be unit; a zero vector is treated as straight up.
 // The sky without the sun disc: Preetham above the horizon, the ground below it.
 glm::dvec3 diffuseSkyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection);
-// What the sky pass draws: the diffuse sky plus the (capped) sun disc.
-glm::dvec3 skyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection);
+// What the sky pass draws into a pixel of the given footprint (radians: the chord to
+// the neighbouring pixels' directions): the diffuse sky plus the (capped) sun disc
+// band-limited to that footprint.
+glm::dvec3 skyRadiance(glm::dvec3 direction, glm::dvec3 sunDirection, double footprint);
 // The sun's radiance at the ground, uncapped (scene units).
 glm::dvec3 sunRadiance(glm::dvec3 sunDirection);
 // The disc's radiance as drawn: sunRadiance scaled to at most kSunDiscCap.
 glm::dvec3 sunDiscRadiance(glm::dvec3 sunDirection);
-// How much of the disc is drawn at angle gamma (radians) from its centre: 1 inside, 0
-// outside, smooth across the edge.
-double sunDiscCoverage(double gamma);
 // Irradiance from the sun on a plane facing it: uncapped radiance times the solid angle
 // times the fraction of the disc above the horizon.
 glm::dvec3 sunIrradiance(glm::dvec3 sunDirection);

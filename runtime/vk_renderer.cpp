@@ -220,7 +220,7 @@ struct VkRenderer::Impl {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, scenePipeline(true, t));
     // The sky reconstructs view directions from GL's NDC (z from -1 to 1) and sits at
     // depth 1 in either API: it takes the uncorrected matrix.
-    SkyConstants c{glm::inverse(vpGl), sun};
+    SkyConstants c{glm::mat4(glm::inverse(glm::dmat4(vpGl))), sun};  // in double, as the GL runtime's
     vkCmdPushConstants(cmd, sceneLayout.get(), VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT, 0, sizeof c, &c);
     vkCmdDraw(cmd, 3, 1, 0, 0);
   }

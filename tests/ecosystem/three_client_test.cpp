@@ -270,14 +270,16 @@ TEST_F(ThreeClient, EveryExampleGraphMatchesTheRuntimeInTheBuiltInScene) {
 // (clients/three/watergraph-ocean.js: the runtime's pass shaders from the description, h0
 // and the clocks from the compiler's open_ocean.ocean.js) before the environment cube and the
 // water, in the built-in scene, from two cameras, at the 33 dB. Under a sun 5 degrees
-// below the horizon: with the sun up, its disc in the environment cube is one texel of
-// radiance 30000 (the sky's cap) in a 128-texel face, smaller than the texel, and the
-// spectral sea's centimetre waves mirror it into scattered pixels wherever a mirror
-// direction falls inside that texel's bilinear footprint; llvmpipe and SwiftShader weight it
-// differently, and those pixels alone take the default frame to 27.36 dB above and 30.01 dB
-// grazing (docs/ecosystem.md), while the same frames with the client's maps replaced by the
-// double-precision maps of the surface query differ from the client's by 49.8 dB. Below the
-// horizon there is no disc; the sky, its reflection, the foam and the sun's glow remain.
+// below the horizon: with the sun up, the spectral sea's centimetre waves mirror the sun into
+// scattered glints, and llvmpipe and SwiftShader put them on different pixels: the default
+// frame measures 27.29 dB above and 30.01 dB grazing (docs/ecosystem.md), while the same
+// frames with the client's maps replaced by the double-precision maps of the surface query
+// differ from the client's by 49.8 dB. Not the sky's disc: band-limited to the environment
+// cube's texels (runtime/sky_model.h, no longer a one-texel spike) the figures are the same;
+// the graph's fresnel_sky term alone (the cube's sun) measures 26.6 dB above and its GGX sun
+// alone 29.0 dB: a glint is thousands of times white in either path, so the tone-mapped frame
+// is a mask of which pixels' normals point it at the sun, and those differ. Below the horizon
+// there is no glint; the sky, its reflection, the foam and the sun's glow remain.
 TEST_F(ThreeClient, TheSpectralOceanMatchesTheRuntimeFromTwoCameras) {
   TempDir dir("wg_three_ocean_");
   const std::string description = dir / "scene.json", graph = test::sourcePath("graphs/open_ocean.json");
