@@ -13,6 +13,7 @@
 #include "cli/option_values.h"
 #include "cli/view_flags.h"
 #include "cli/wgsl_checks.h"
+#include "cli/wgsl_executor.h"
 #include "codegen/emit_wgsl.h"
 
 #ifdef WG_HAVE_RUNTIME
@@ -63,17 +64,8 @@ std::string errorMapFile(const std::string& given, const std::string& graphPath,
 // Throws rt::RuntimeError (Kind::Environment: exit 2) naming what is missing: check did not
 // run on wgsl, and never passes.
 std::unique_ptr<accuracy::GpuExecutor> wgslCheckExecutor() {
-  const std::string notRun = "check did not run on wgsl: ";
   // playwright-core starts Chromium; naga-wasm translates the runtime's scene shaders.
-  for (const char* package : {"playwright-core", "naga-wasm"})
-    if (std::string why = webgpuClientMissing(package); !why.empty())
-      throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + why);
-  try {
-    return accuracy::makeWgslExecutor({nodeExecutable(), webgpuClientDir()});
-  } catch (const rt::RuntimeError& e) {
-    if (e.kind() != rt::RuntimeError::Kind::Environment) throw;
-    throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + e.what());
-  }
+  return wgslExecutorOrWhyNot("check did not run on wgsl: ", {"playwright-core", "naga-wasm"});
 }
 
 int runCheck(const CheckArgs& args, const GlobalOptions& global) {

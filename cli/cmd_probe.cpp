@@ -11,6 +11,7 @@
 #include "cli/commands.h"
 #include "cli/option_values.h"
 #include "cli/wgsl_checks.h"
+#include "cli/wgsl_executor.h"
 
 #ifdef WG_HAVE_RUNTIME
 #include "accuracy/function_sweep.h"
@@ -56,15 +57,7 @@ struct ProbeArgs {
 // naming what is missing when the WebGPU probe cannot run: it did not run, and never passes.
 std::unique_ptr<accuracy::GpuExecutor> probeExecutor(const ProbeArgs& args) {
   if (args.target != kWgslTargetName) return accuracy::makeGpuExecutor(*parseTarget(args.target), {args.vulkanValidation});
-  const std::string notRun = "the probe did not run on wgsl: ";
-  if (std::string why = webgpuClientMissing("playwright-core"); !why.empty())
-    throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + why);
-  try {
-    return accuracy::makeWgslExecutor({nodeExecutable(), webgpuClientDir()});
-  } catch (const rt::RuntimeError& e) {
-    if (e.kind() != rt::RuntimeError::Kind::Environment) throw;
-    throw rt::RuntimeError(rt::RuntimeError::Kind::Environment, notRun + e.what());
-  }
+  return wgslExecutorOrWhyNot("the probe did not run on wgsl: ", {"playwright-core"});
 }
 
 // "FIND=>REPLACE" (GLSL has '=' but no "=>").
