@@ -19,30 +19,12 @@
 #include "nodes/registry.h"
 #include "runtime/runtime_error.h"
 #include "test_support.h"
+#include "webgpu_client_test_base.h"
 
 namespace wg::accuracy {
 namespace {
 
-class WgslCheck : public ::testing::Test {
- protected:
-  static void SetUpTestSuite() {
-    if (test::nodeOnPath().empty()) {
-      skip_ = "Node.js (node) is not on PATH";
-      return;
-    }
-    test::CmdResult r = test::runSplit(test::shellQuote(test::sourcePath("clients/three/test/npm_ci_cached.sh")) + " " +
-                                       test::shellQuote(test::sourcePath("clients/webgpu")));
-    npmError_ = r.exit == 0 ? "" : "installing clients/webgpu's npm packages failed: " + r.err;
-  }
-  void SetUp() override {
-    if (!skip_.empty()) GTEST_SKIP() << skip_;
-    ASSERT_TRUE(npmError_.empty()) << npmError_;
-  }
-  static void needChromium() {
-    if (!std::filesystem::exists("/usr/bin/chromium")) GTEST_SKIP() << "Debian's chromium is not installed (/usr/bin/chromium)";
-  }
-  static inline std::string skip_, npmError_;
-};
+class WgslCheck : public test::WebgpuClientTest {};
 
 std::optional<CompileResult> compileForWgsl(const std::string& path) {
   Diagnostics diags;
