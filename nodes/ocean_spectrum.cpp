@@ -182,7 +182,7 @@ NodeSpec oceanSpectrumNode() {
                      "grids is lost)"),
       ports::knob(ports::integer("fft_size", kDefaultFftSize, ocean::kMinResolution, ocean::kMaxResolution,
                                  "texels along a tile's side, a power of two; "
-                                 "fewer drop the shortest waves"),
+                                 "fewer drop the shortest waves (cascade_sizes can lower it per cascade)"),
                   {64, 128, 256}),
       cascadeSizesOption(),
       ports::number("choppiness", 1, 0, 4,
