@@ -15,7 +15,7 @@
 // Answers {ok: true} to the others; throws (the server answers {error}) for what it cannot run.
 import { renderGraph } from './watergraph-webgpu.js';
 import { oceanPassesWgsl, WebgpuOceanSimulation } from './watergraph-webgpu-ocean.js';
-import { sceneShadersWgsl } from './watergraph-webgpu-scene-shaders.js';
+import { SceneShaderCache } from './watergraph-webgpu-scene-shaders.js';
 
 function bytesOfBase64(text) {
   const binary = atob(text);
@@ -44,7 +44,7 @@ function gridGeometry(grid) {
   return { position, normal, uv, index: new Uint32Array(bytesOfBase64(grid.indices).buffer) };
 }
 
-const state = { description: null, naga: null, sceneShaders: new Map(), oceanPasses: null, waters: new Map() };
+const state = { description: null, naga: null, sceneShaders: null, oceanPasses: null, waters: new Map() };
 
 // A spectral ocean's simulation from the compiler's ocean module (its text, imported as a module).
 async function oceanSimulation(device, manifest, moduleText) {
@@ -65,18 +65,16 @@ async function sceneShadersFor(manifest) {
     await naga.init({ module_or_path: new URL('./node_modules/naga-wasm/dist/wasm/naga_bg.wasm', import.meta.url) });
     state.naga = { parseGlsl: naga.parseGlsl, validate: naga.validate, writeWgsl: naga.writeWgsl };
   }
-  const gbufferInputs = manifest.passes.includes('deferred_water')
-    ? Object.fromEntries(manifest.webgpu.varyings.map((v) => [v.name, v.location])) : null;
-  const key = JSON.stringify(gbufferInputs);
-  if (!state.sceneShaders.has(key)) state.sceneShaders.set(key, sceneShadersWgsl(state.description, state.naga, gbufferInputs));
-  return state.sceneShaders.get(key);
+  state.sceneShaders ??= new SceneShaderCache(state.description, state.naga);
+  return state.sceneShaders.forManifest(manifest);
 }
 
 export async function runCheckJob(device, job) {
   switch (job.kind) {
     case 'scene':
       state.description = job.description;
-      state.sceneShaders.clear();
+      state.sceneShaders = null;  // both made from the description, so made again
+      state.oceanPasses = null;
       return { ok: true };
     case 'water': {
       if (!state.description) throw new Error('a water before the scene');

@@ -95,3 +95,27 @@ export function sceneShadersWgsl(description, naga, gbufferInputs = null) {
   }
   return out;
 }
+
+// What deferred water's G-buffer reads from a compiled graph: its varyings' WGSL locations
+// (sceneShadersWgsl's `gbufferInputs`), or null when the manifest has no deferred water.
+export function gbufferInputsOf(manifest) {
+  return manifest.passes.includes('deferred_water')
+    ? Object.fromEntries(manifest.webgpu.varyings.map((v) => [v.name, v.location])) : null;
+}
+
+// One description's scene shaders through naga, translated once per set of G-buffer inputs:
+// a page drawing many graphs in one scene translates each shader once.
+export class SceneShaderCache {
+  constructor(description, naga) {
+    this.description = description;
+    this.naga = naga;
+    this.byInputs = new Map();
+  }
+
+  forManifest(manifest) {
+    const gbufferInputs = gbufferInputsOf(manifest);
+    const key = JSON.stringify(gbufferInputs);
+    if (!this.byInputs.has(key)) this.byInputs.set(key, sceneShadersWgsl(this.description, this.naga, gbufferInputs));
+    return this.byInputs.get(key);
+  }
+}

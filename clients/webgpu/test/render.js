@@ -14,23 +14,17 @@ import { glPerspective, planPasses } from '/three/watergraph-passes.js';
 import { init as initNaga, parseGlsl, validate, writeWgsl } from '/webgpu/node_modules/naga-wasm/dist/index.js';
 import { renderGraph } from '/webgpu/watergraph-webgpu.js';
 import { oceanPassesWgsl, WebgpuOceanSimulation } from '/webgpu/watergraph-webgpu-ocean.js';
-import { sceneShadersWgsl } from '/webgpu/watergraph-webgpu-scene-shaders.js';
+import { SceneShaderCache } from '/webgpu/watergraph-webgpu-scene-shaders.js';
 
-// What frames share: naga's module, and each description (by URL) with its translated
-// scene shaders (by the G-buffer inputs they are made for).
+// What frames share: naga's module, and each description (by URL) with its scene shaders
+// translated by naga (SceneShaderCache).
 let nagaReady = null;
 const descriptions = new Map();
 const naga = { parseGlsl, validate, writeWgsl };
 
 function sharedDescription(url) {
-  if (!descriptions.has(url)) descriptions.set(url, { description: loadSceneDescription(url), sceneShaders: new Map() });
+  if (!descriptions.has(url)) descriptions.set(url, { description: loadSceneDescription(url), sceneShaders: null });
   return descriptions.get(url);
-}
-
-function sharedSceneShaders(shared, description, gbufferInputs) {
-  const key = JSON.stringify(gbufferInputs);
-  if (!shared.sceneShaders.has(key)) shared.sceneShaders.set(key, sceneShadersWgsl(description, naga, gbufferInputs));
-  return shared.sceneShaders.get(key);
 }
 
 // The client's THREE.BufferGeometry (attributes named as the manifest's inputs) as plain arrays.
@@ -66,10 +60,8 @@ async function renderJob(job) {
   }
   nagaReady ??= initNaga({ module_or_path: new URL('/webgpu/node_modules/naga-wasm/dist/wasm/naga_bg.wasm', location.href) });
   await nagaReady;
-  // Deferred water's G-buffer reads the graph's varyings at their WGSL locations.
-  const gbufferInputs = manifest.passes.includes('deferred_water')
-    ? Object.fromEntries(manifest.webgpu.varyings.map((v) => [v.name, v.location])) : null;
-  const sceneShaders = sharedSceneShaders(shared, description, gbufferInputs);
+  shared.sceneShaders ??= new SceneShaderCache(description, naga);
+  const sceneShaders = shared.sceneShaders.forManifest(manifest);
   // A spectral ocean: the runtime's pass shaders through naga, the compiler's ocean module.
   const ocean = manifest.oceans
     ? new WebgpuOceanSimulation(device, manifest, await import(new URL(manifest.oceans[0].module, manifestUrl).href),
