@@ -80,17 +80,25 @@ TEST_F(WgslCheck, AGraphAgreesWithTheDoubleReferenceAndAWrongNodeFails) {
   EXPECT_TRUE(wrong.failed());
 }
 
-// The CLI, one Chromium for both graphs: the lake passes; caustic_pool, whose glsl_function node
-// has no WGSL form, is an error at that node (exit 1), never a pass.
+// The CLI, one Chromium for the three graphs: the lake passes, and so does a graph sampling a
+// node texture through its mipmaps (the runner makes the chain); caustic_pool, whose
+// glsl_function node has no WGSL form, is an error at that node (exit 1), never a pass.
 TEST_F(WgslCheck, TheCliPassesAGraphAndNamesWhatItCannotCheck) {
   needChromium();
+  const std::string mipmapped = test::sourcePath("tests/ecosystem/data/mipmapped_texture.json");
   test::CmdResult r = test::runSplit(test::shellQuote(test::watergraphBinary()) + " check " +
-                                     test::shellQuote(test::sourcePath("graphs/lake.json")) + " " +
-                                     test::shellQuote(test::sourcePath("graphs/caustic_pool.json")) + " --target wgsl --size 48x27");
+                                     test::shellQuote(test::sourcePath("graphs/lake.json")) + " " + test::shellQuote(mipmapped) +
+                                     " " + test::shellQuote(test::sourcePath("graphs/caustic_pool.json")) +
+                                     " --target wgsl --size 48x27");
   EXPECT_EQ(r.exit, 1) << r.out << r.err;
-  EXPECT_NE(r.out.find("check " + test::sourcePath("graphs/lake.json") + " on wgsl"), std::string::npos) << r.out;
+  for (const std::string& graph : {test::sourcePath("graphs/lake.json"), mipmapped})
+    EXPECT_NE(r.out.find("check " + graph + " on wgsl"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("reference: cpu"), std::string::npos) << r.out;
-  EXPECT_NE(r.out.find("ok: 0 NaN/Inf pixel values, 0 pixels over the error bound"), std::string::npos) << r.out;
+  size_t ok = 0;
+  for (size_t at = r.out.find("ok: 0 NaN/Inf pixel values, 0 pixels over the error bound"); at != std::string::npos;
+       at = r.out.find("ok: 0 NaN/Inf pixel values", at + 1))
+    ++ok;
+  EXPECT_EQ(ok, 2u) << r.out;
   EXPECT_NE(r.err.find("error: [WG045] no WGSL form (--target wgsl): a glsl_function node's file is GLSL only"), std::string::npos)
       << r.err;
   EXPECT_EQ(r.out.find("check " + test::sourcePath("graphs/caustic_pool.json")), std::string::npos) << r.out;
