@@ -6,8 +6,9 @@
 // restricted to it; here the case's uniforms are written at the module's WGSL offsets
 // (wgslUniformLayout), each scene texture is a 1x1 RGBA32F texture holding the case's texel
 // (nearest), a node texture is uploaded as the runtime uploads it, and the pixels come back as
-// their float32 bit patterns (NaN and Inf included). Spectral ocean maps and mipmapped node
-// textures are not in this runner (Kind::Manifest).
+// their float32 bit patterns (NaN and Inf included); a mipmapped node texture with its full
+// chain (clients/webgpu/watergraph-webgpu-mipmaps.js). Spectral ocean maps are not in this
+// runner (Kind::Manifest).
 #include <bit>
 #include <cstdint>
 
@@ -84,9 +85,6 @@ class WgslExecutor : public GpuExecutor {
         entry["kind"] = "scene";
         sceneTextures.push_back(k);
       } else {
-        if (t.sampler.filter == TextureFilter::Mipmapped)
-          throw RuntimeError(RuntimeError::Kind::Manifest, what + ": texture '" + t.source +
-                                                               "' is mipmapped, which the WebGPU probe does not sample");
         std::string why;
         auto img = loadTexture(t.source, program.directory, &why);
         if (!img || img->width <= 0 || img->height <= 0)

@@ -8,10 +8,12 @@
 //   textures: [{binding, cube, kind: "scene"}] a 1x1 RGBA32F texture per case holding the
 //     case's texel, sampled nearest (every fetch returns it, as the double reference assumes);
 //     [{binding, kind: "file", width, height, rgba (base64, row 0 first), wrap, filter, srgb}]
-//     a node texture as the runtime uploads it;
+//     a node texture as the runtime uploads it (a mipmapped one with its full chain);
 //   cases: [{uniforms: the buffer's 32-bit words, texels: per scene texture 4 float32 bit
 //     patterns}].
 // Returns the pixels as 4 float32 bit patterns per case (NaN and Inf survive the trip).
+import { fullChainLevels, generateMipmaps } from './watergraph-webgpu-mipmaps.js';
+
 const ADDRESS_MODES = { repeat: 'repeat', clamp: 'clamp-to-edge', mirror: 'mirror-repeat' };
 
 function bytesOfBase64(text) {
@@ -45,15 +47,19 @@ export async function runProbeCases(device, job) {
     }
     if (t.cube) throw new Error(`${job.what}: a node texture is a 2D image`);
     const format = t.srgb ? 'rgba8unorm-srgb' : 'rgba8unorm';
-    const texture = own(device.createTexture({ size: [t.width, t.height], format,
-      usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST }));
+    const mipmapped = t.filter === 'mipmapped';
+    const mipLevelCount = mipmapped ? fullChainLevels(t.width, t.height) : 1;
+    const texture = own(device.createTexture({ size: [t.width, t.height], format, mipLevelCount,
+      usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST | (mipmapped ? GPUTextureUsage.RENDER_ATTACHMENT : 0) }));
     device.queue.writeTexture({ texture }, bytesOfBase64(t.rgba), { bytesPerRow: 4 * t.width }, [t.width, t.height]);
+    if (mipmapped) generateMipmaps(device, texture, format, mipLevelCount);
     const filter = t.filter === 'nearest' ? 'nearest' : 'linear';
+    const mipmapFilter = mipmapped ? 'linear' : 'nearest';
     const address = ADDRESS_MODES[t.wrap] ?? 'repeat';
     layoutEntries.push({ binding: t.binding, visibility, texture: { sampleType: 'float' } });
     layoutEntries.push({ binding: t.binding + 1, visibility, sampler: { type: 'filtering' } });
     shared.push({ binding: t.binding, resource: texture.createView() });
-    shared.push({ binding: t.binding + 1, resource: device.createSampler({ addressModeU: address, addressModeV: address, magFilter: filter, minFilter: filter }) });
+    shared.push({ binding: t.binding + 1, resource: device.createSampler({ addressModeU: address, addressModeV: address, magFilter: filter, minFilter: filter, mipmapFilter }) });
   }
   const bindGroupLayout = device.createBindGroupLayout({ entries: layoutEntries });
   const pipeline = device.createRenderPipeline({

@@ -7,6 +7,7 @@
 // (manifest "webgpu".conventions): GL matrices, y negated in clip space by every module, so a
 // target's row 0 is the view's bottom row and frontFace is "cw".
 import { beginTargetPass, createTargets, runScenePass, ScenePasses } from './watergraph-webgpu-passes.js';
+import { fullChainLevels, generateMipmaps } from './watergraph-webgpu-mipmaps.js';
 
 export class WebgpuRunnerError extends Error {
   constructor(message) {
@@ -45,45 +46,6 @@ const srgbEncode = (c) => (c <= 0.0031308 ? 12.92 * c : 1.055 * c ** (1 / 2.4) -
 
 // The texture of a file the manifest names: an ImageBitmap, bottom row first, or its texels as
 // {width, height, rgba: Uint8Array}, row 0 first (as the runtime uploads them).
-// A mipmapped node texture's full chain, as the GL runtime's glFullChainLevels.
-function fullChainLevels(width, height) {
-  let levels = 1;
-  for (let side = Math.max(width, height); side > 1; side = Math.floor(side / 2)) ++levels;
-  return levels;
-}
-
-// Each level below the first from the one above, as the GL runtime's glGenerateMipmap (WebGPU
-// has no mipmap generation of its own): a bilinear sample at each texel's centre, which for
-// even sizes is the box average of the 2x2 texels above it; an sRGB format decodes on the
-// read and encodes on the write, so the average is of linear values, as Mesa's.
-function generateMipmaps(device, tex, format, levels) {
-  const module = device.createShaderModule({ label: 'node texture mipmaps', code: `
-@group(0) @binding(0) var wg_level: texture_2d<f32>;
-@group(0) @binding(1) var wg_level_sampler: sampler;
-@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
-  return vec4<f32>(select(-1.0, 3.0, i == 1u), select(-1.0, 3.0, i == 2u), 0.0, 1.0);
-}
-@fragment fn fs(@builtin(position) p: vec4<f32>) -> @location(0) vec4<f32> {
-  return textureSampleLevel(wg_level, wg_level_sampler, p.xy / vec2<f32>(max(textureDimensions(wg_level) / 2u, vec2<u32>(1u))), 0.0);
-}
-` });
-  const pipeline = device.createRenderPipeline({ layout: 'auto', vertex: { module, entryPoint: 'vs' },
-    fragment: { module, entryPoint: 'fs', targets: [{ format }] }, primitive: { topology: 'triangle-list' } });
-  const sampler = device.createSampler({ magFilter: 'linear', minFilter: 'linear', addressModeU: 'clamp-to-edge', addressModeV: 'clamp-to-edge' });
-  const encoder = device.createCommandEncoder();
-  for (let level = 1; level < levels; ++level) {
-    const group = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries: [
-      { binding: 0, resource: tex.createView({ baseMipLevel: level - 1, mipLevelCount: 1 }) }, { binding: 1, resource: sampler }] });
-    const pass = encoder.beginRenderPass({ colorAttachments: [{ view: tex.createView({ baseMipLevel: level, mipLevelCount: 1 }),
-      loadOp: 'clear', clearValue: [0, 0, 0, 0], storeOp: 'store' }] });
-    pass.setPipeline(pipeline);
-    pass.setBindGroup(0, group);
-    pass.draw(3);
-    pass.end();
-  }
-  device.queue.submit([encoder.finish()]);
-}
-
 function fileTexture(device, t, bitmap, colorSpace, mipmapped) {
   const format = colorSpace === 'srgb' ? 'rgba8unorm-srgb' : 'rgba8unorm';
   const mipLevelCount = mipmapped ? fullChainLevels(bitmap.width, bitmap.height) : 1;

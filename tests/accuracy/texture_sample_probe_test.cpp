@@ -16,35 +16,13 @@
 #include "core/graph_io.h"
 #include "runtime/egl_context.h"
 #include "sampler_test_texture.h"
+#include "texture_sample_cases.h"
 #include "test_support.h"
 
 namespace wg::accuracy {
 namespace {
 
 namespace fs = std::filesystem;
-
-// The cases: (u, v) and, for the mipmapped runs, the gradient (du/dx = dv/dy, the others
-// zero: rho = 16 g, lambda = log2(16 g)).
-std::string casesJson(bool gradients) {
-  const double uvs[][2] = {{0.3, 0.6},       {0.5, 0.5},     {0.25, 0.75},   {1.0 / 32, 3.0 / 32}, {0.0, 0.0},
-                           {1.0, 1.0},       {-0.05, 0.47},  {1.05, -0.21},  {-0.3, -1.7},         {2.61, 3.13},
-                           {-7.77, 5.55},    {0.999, 0.001}, {0.123, 0.877}, {100.37, -50.21}};
-  // lambda -1, 0.5, 1, 1.5, 2.32, 3, 4, 6: magnification, blends, single levels, past the last.
-  const double gs[] = {1.0 / 32, std::sqrt(2.0) / 16, 2.0 / 16, std::sqrt(8.0) / 16, 5.0 / 16, 8.0 / 16, 1.0, 4.0};
-  nlohmann::json cases = nlohmann::json::array();
-  for (const auto& uv : uvs) {
-    if (!gradients) {
-      cases.push_back({{"name", "uv " + std::to_string(uv[0]) + " " + std::to_string(uv[1])}, {"uv", {uv[0], uv[1]}}});
-      continue;
-    }
-    for (double g : gs)
-      cases.push_back({{"name", "uv " + std::to_string(uv[0]) + " " + std::to_string(uv[1]) + " g " + std::to_string(g)},
-                       {"uv", {uv[0], uv[1]}},
-                       {"uv_dx", {g, 0}},
-                       {"uv_dy", {0, g}}});
-  }
-  return nlohmann::json{{"cases", cases}}.dump();
-}
 
 class TextureSampleOnGpu : public ::testing::TestWithParam<Target> {};
 
@@ -64,7 +42,7 @@ TEST_P(TextureSampleOnGpu, EveryModeWithinTheDocumentedBound) {
         Diagnostics diags;
         auto g = loadGraphFile(dir + "/g.json", diags);
         ASSERT_TRUE(g);
-        auto cases = parseProbeCases(casesJson(std::string(filter) == "mipmapped"), "cases.json", diags);
+        auto cases = parseProbeCases(test::textureSampleCasesJson(std::string(filter) == "mipmapped"), "cases.json", diags);
         ASSERT_TRUE(cases);
         auto report = probeGraph(*g, ProbeOutput{"n", "rgba"}, *cases, GetParam(), diags);
         std::string why;

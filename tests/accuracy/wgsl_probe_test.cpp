@@ -17,7 +17,9 @@
 #include "accuracy/probe.h"
 #include "core/graph_load.h"
 #include "runtime/runtime_error.h"
+#include "sampler_test_texture.h"
 #include "suite_file.h"
+#include "texture_sample_cases.h"
 #include "test_support.h"
 #include "webgpu_client_test_base.h"
 
@@ -35,7 +37,7 @@ class WgslProbe : public test::WebgpuClientTest {};
 // size, and a constant the mutation below edits.
 const std::vector<std::string> kWgslProbeNodes = {"fresnel", "gerstner_waves", "trochoid_wave", "ssr",
                                                   "water_depth", "cubemap_reflection", "normal_map_scroll",
-                                                  "voronoi", "hash", "mod"};
+                                                  "voronoi", "hash", "mod", "texture_sample"};
 
 TEST_F(WgslProbe, NodesAndExampleGraphsAgreeWithTheDoubleReference) {
   needChromium();
@@ -102,6 +104,39 @@ TEST_F(WgslProbe, AWrongConstantInTheWgslFails) {
   SuiteResult r = runHardCaseSuite(test_suite::loadSuite(), *executor, options);
   EXPECT_GT(r.mutatedRuns, 0) << "1.333 is in none of fresnel's WGSL probe modules";
   EXPECT_GT(r.failures, 0) << "a wrong refractive index passed the probe";
+}
+
+// A mipmapped node texture: the runner draws its chain (WebGPU makes none) and samples it
+// trilinear; the cases' uv gradients select levels 0 to 4 and blends between them (the probe
+// draws uv varying by the gradient across the pixel's quad, as on GL: TextureSampleOnGpu),
+// each colour space, against the double reference's box-filtered levels within the node's bound.
+TEST_F(WgslProbe, AMipmappedTextureAgreesAtEveryLevel) {
+  needChromium();
+  auto executor = makeWgslExecutor(wgslProbeTools());
+  const std::string dir = test::makeTempDir("wg_wgsl_mipmapped_");
+  test::writeFile(dir + "/scrambled.png", test::scrambledPng());
+  Diagnostics diags;
+  auto cases = parseProbeCases(test::textureSampleCasesJson(true), "cases.json", diags);
+  ASSERT_TRUE(cases);
+  for (const char* space : {"srgb", "linear"}) {
+    nlohmann::json options = {{"texture", "scrambled.png"}, {"wrap", "repeat"}, {"filter", "mipmapped"}, {"color_space", space}};
+    test::writeFile(dir + "/g.json", test::graphJson("{\"id\": \"n\", \"type\": \"texture_sample\", \"options\": " +
+                                                         options.dump() + "}",
+                                                     "\"fragment\": {\"color\": \"n.rgb\"}"));
+    auto graph = loadGraphFile(dir + "/g.json", diags);
+    ASSERT_TRUE(graph);
+    auto report = probeGraph(*graph, ProbeOutput{"n", "rgba"}, *cases, *executor, diags);
+    ASSERT_TRUE(report) << options.dump();
+    ASSERT_EQ(report->cases.size(), cases->cases.size());
+    EXPECT_TRUE(report->passed()) << options.dump() << "\n" << formatProbeText(*report);
+    double worst = 0;
+    for (const auto& c : report->cases)
+      for (int k = 0; k < c.components; ++k)
+        worst = std::max(worst, std::abs(c.gpu[static_cast<size_t>(k)] - c.reference[static_cast<size_t>(k)]));
+    std::printf("[ wgsl     ] texture_sample %s: worst |gpu - ref| %.5f (%.2f 8-bit levels)\n", options.dump().c_str(), worst,
+                worst * 255);
+  }
+  std::filesystem::remove_all(dir);
 }
 
 // Without what it needs the probe does not run, says why, and exits 2 as a missing GL context
