@@ -2,9 +2,9 @@
 // What one call of a library function (nodes/glsl/) costs, by the rules of
 // core/glsl_operation_count.h, read from the library's own hand-written source: the
 // operations of its body, a library function it calls counted through that function's
-// body, once per call (a loop body counts once). This is the one place that counts from
-// GLSL text, and the text is the library's items, never generated code: the counts of what
-// nodes emit are built with their values (GlslExpr::operations).
+// body, once per call (a loop body counts once). The library is hand-written, not
+// generated: the one whole text counted. What nodes emit is counted piece by piece as they
+// build their values (GlslExpr::operations); no count reads a generated shader.
 #include <map>
 #include <mutex>
 #include <string>
