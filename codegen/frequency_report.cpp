@@ -2,28 +2,23 @@
 
 #include <set>
 
-#include "codegen/glsl_cost.h"
 #include "codegen/shader_plan.h"
 
 namespace wg {
 namespace {
 
-// Per op, the estimated operations of the lines it writes in the fragment stage; `total`:
-// those of the whole stage.
+// Per op, the operations of the lines it writes in the fragment stage; `total`: those of
+// the whole stage. The planner counted them from the values as it wrote each line
+// (PlannedStage::lineCost), so nothing here reads the shader's text.
 std::vector<int> fragmentCosts(const Program& program, const PlannedStage* frag, int& total) {
   std::vector<int> cost(program.ops.size(), 0);
   total = 0;
   if (!frag) return cost;
-  GlslCost glsl;
-  for (const auto& local : frag->locals) total += glsl.of(local);
-  size_t start = 0;
-  for (int op : frag->lineOp) {
-    size_t end = frag->body.find('\n', start);
-    if (end == std::string::npos) end = frag->body.size();
-    int c = glsl.of(std::string_view(frag->body).substr(start, end - start));
+  total = frag->localsCost;
+  for (size_t line = 0; line < frag->lineOp.size(); ++line) {
+    const int c = frag->lineCost.at(line), op = frag->lineOp[line];
     total += c;
     if (op >= 0) cost[static_cast<size_t>(op)] += c;
-    start = end + 1;
   }
   return cost;
 }

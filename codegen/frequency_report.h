@@ -3,8 +3,9 @@
 // (`watergraph compile|validate --explain-frequency`): how many ops run at each
 // frequency, and the per-draw values the fragment stage recomputes for every pixel — work
 // a graph or node author may want to move into a parameter or a per-draw split of the
-// node (core/derive.h) — with their estimated cost per pixel (codegen/glsl_cost.h, over
-// the fragment code the planner writes for them).
+// node (core/derive.h) — with their estimated cost per pixel: the operations the planner
+// counted for the fragment lines it wrote for them (PlannedStage::lineCost, counted from the
+// values as they were built by the rules of core/glsl_operation_count.h).
 #include <array>
 #include <string>
 #include <vector>

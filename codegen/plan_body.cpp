@@ -252,7 +252,8 @@ void BodyWriter::writeOps(StageBody& w) {
     });
     for (size_t t = 0; t < ctx.temps.size(); ++t)
       if (needed[t])
-        w.line(static_cast<int>(i), typeName(ctx.temps[t].type), " ", ctx.temps[t].name, " = ", ctx.temps[t].expression.text(), ";");
+        w.line(static_cast<int>(i), ctx.temps[t].expression.operations(), typeName(ctx.temps[t].type), " ", ctx.temps[t].name,
+               " = ", ctx.temps[t].expression.text(), ";");
     for (size_t p = 0; p < op.outputTypes.size(); ++p) {
       if (!used[portBase_[i] + p]) continue;
       if (ctx.outputs[p].empty())
@@ -268,11 +269,11 @@ void BodyWriter::writeOps(StageBody& w) {
         if (!symbols.empty()) w.aliasSymbols.emplace_back(at, std::move(symbols));
         continue;
       }
-      const int at = static_cast<int>(i);
+      const int at = static_cast<int>(i), cost = ctx.outputs[p].operations();
       if (op.outputTypes.size() > 1)
-        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], "_", op.spec->outputs[p].name, " = ", ctx.outputs[p].text(), ";");
+        w.line(at, cost, typeName(op.outputTypes[p]), " ", opNames_[i], "_", op.spec->outputs[p].name, " = ", ctx.outputs[p].text(), ";");
       else
-        w.line(at, typeName(op.outputTypes[p]), " ", opNames_[i], " = ", ctx.outputs[p].text(), ";");
+        w.line(at, cost, typeName(op.outputTypes[p]), " ", opNames_[i], " = ", ctx.outputs[p].text(), ";");
     }
   }
 }

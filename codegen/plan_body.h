@@ -26,15 +26,17 @@ inline uint32_t planSymbol(PlanSymbol kind, size_t index) {
 inline PlanSymbol planSymbolKind(uint32_t symbol) { return static_cast<PlanSymbol>(symbol >> 24); }
 inline size_t planSymbolIndex(uint32_t symbol) { return symbol & 0xFFFFFFu; }
 
-// The builtin locals a planner writes at the top of main(), with the library functions
-// they call (the stage declares those items with the ones its ops call).
+// The builtin locals a planner writes at the top of main(), built as values: the library
+// functions they call (the stage declares those items with the ones its ops call) and the
+// operations they ask for.
 struct StageLocals {
   std::vector<std::string> lines;
   std::vector<std::string> calls;
-  void add(std::string line) { lines.push_back(std::move(line)); }
-  void add(std::string line, std::string_view calling) {
-    lines.push_back(std::move(line));
-    calls.emplace_back(calling);
+  int operations = 0;
+  void add(const GlslExpr& line) {
+    lines.push_back(line.text());
+    for (uint32_t fn : line.callIds()) calls.push_back(GlslExpr::callName(fn));
+    operations += line.operations();
   }
 };
 
@@ -44,6 +46,7 @@ struct StageBody {
   unsigned stage = 0;  // kVertexStage or kFragmentStage
   std::string body;
   std::vector<int> lineOp;
+  std::vector<int> lineCost;  // per line: the operations of the values written into it
   std::set<Builtin> builtins;
   std::set<int> parameters;
   std::set<BuiltinUniform> builtinUniforms;
@@ -84,13 +87,15 @@ struct StageBody {
   }
 
   explicit StageBody(unsigned s) : stage(s) {}
-  // One line of the body, from its parts.
+  // One line of the body, from its parts, asking for `operations` (the values' counts,
+  // GlslExpr::operations: the parts around them are names, '=' and ';').
   template <class... Parts>
-  void line(int op, const Parts&... parts) {
+  void line(int op, int operations, const Parts&... parts) {
     body += "  ";
     (body.append(std::string_view(parts)), ...);
     body += '\n';
     lineOp.push_back(op);
+    lineCost.push_back(operations);
   }
   // Records that the body reads uniform `u`; returns its GLSL name.
   std::string use(BuiltinUniform u);

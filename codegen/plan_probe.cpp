@@ -26,11 +26,11 @@ GlslExpr probeBuiltin(StageBody& w, Builtin b) {
 // the pixel itself the offset is exactly 0 and uv is the case's value bit for bit.
 StageLocals probeLocals(const StageBody& w) {
   if (!w.builtins.count(Builtin::Uv)) return {};
-  const std::string gradient = probeUniformName(BuiltinUniform::ProbeUvGradient);
-  const std::string pixel = probeUniformName(BuiltinUniform::ProbePixel);
+  const GlslExpr gradient = GlslExpr::name(probeUniformName(BuiltinUniform::ProbeUvGradient));
+  const GlslExpr pixel = GlslExpr::name(probeUniformName(BuiltinUniform::ProbePixel));
   StageLocals locals;
-  locals.add("vec2 b_uv = " + probeUniformName(BuiltinUniform::ProbeUv) + " + " + gradient + ".xy * (gl_FragCoord.x - " + pixel +
-             ".x) + " + gradient + ".zw * (gl_FragCoord.y - " + pixel + ".y);");
+  locals.add("vec2 b_uv = " + GlslExpr::name(probeUniformName(BuiltinUniform::ProbeUv)) + " + " + gradient +
+             ".xy * (gl_FragCoord.x - " + pixel + ".x) + " + gradient + ".zw * (gl_FragCoord.y - " + pixel + ".y);");
   return locals;
 }
 
@@ -47,11 +47,11 @@ ShaderPlan planProbe(const Program& program, std::string sourceName) {
   writer.writeOps(frag);
   if (program.outputs.empty()) throw std::logic_error("emit: a probe program needs an output");
   const ProgramOutput& out = program.outputs.front();
-  std::string value = writer.valueExpr(frag, out.value, out.type).text();
+  const GlslExpr value = writer.valueExpr(frag, out.value, out.type);
   const char* pad[] = {"", ", 0.0, 0.0, 0.0", ", 0.0, 0.0", ", 0.0", ""};
   int n = componentCount(out.type);
   if (n < 1 || n > 4) throw std::logic_error("emit: a probe output must be a float or a vector");
-  frag.line(-1, iface::kColorOutput, " = vec4(", value, pad[n], ");");
+  frag.line(-1, value.operations(), iface::kColorOutput, " = vec4(", value.text(), pad[n], ");");
   plan.uniforms = writer.uniforms(nullptr, frag);
   plan.textures = writer.textures();
   plan.oceans = writer.oceans();

@@ -46,16 +46,17 @@ GlslExpr surfaceBuiltin(const ShaderPlan& plan, StageBody& w, Builtin b) {
 
 // The untessellated vertex shader's builtin locals: the mesh in world space.
 StageLocals vertexLocals(const StageBody& w) {
-  const std::string model = surfaceUniformName(BuiltinUniform::Model);
+  const GlslExpr model = GlslExpr::name(surfaceUniformName(BuiltinUniform::Model));
   StageLocals locals;
-  locals.add("vec3 b_world_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
+  locals.add("vec3 b_world_position = (" + model + " * vec4(" + GlslExpr::name(iface::kPositionAttribute) + ", 1.0)).xyz;");
   if (w.builtins.count(Builtin::Normal))
-    locals.add("vec3 b_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");",
-               "wg_safe_normalize_vec3");
+    locals.add("vec3 b_normal = " +
+               EmitContext::call("wg_safe_normalize_vec3", {"mat3(" + model + ") * " + GlslExpr::name(iface::kNormalAttribute)}) + ";");
   if (w.builtins.count(Builtin::ViewDirection))
-    locals.add("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
-                   " - b_world_position);",
-               "wg_safe_normalize_vec3");
+    locals.add("vec3 b_view_direction = " +
+               EmitContext::call("wg_safe_normalize_vec3",
+                                 {GlslExpr::name(surfaceUniformName(BuiltinUniform::CameraPosition)) + " - b_world_position"}) +
+               ";");
   return locals;
 }
 
@@ -63,13 +64,15 @@ StageLocals vertexLocals(const StageBody& w) {
 StageLocals fragmentLocals(const ShaderPlan& plan, const StageBody& w) {
   const bool deferred = plan.kind == ShaderPlan::Kind::Deferred;
   StageLocals locals = deferred ? deferredLocals(w) : StageLocals{};
-  if (w.builtins.count(Builtin::Normal)) locals.add("vec3 b_normal = wg_safe_normalize_vec3(v_normal);", "wg_safe_normalize_vec3");
+  if (w.builtins.count(Builtin::Normal))
+    locals.add("vec3 b_normal = " + EmitContext::call("wg_safe_normalize_vec3", {GlslExpr::name("v_normal")}) + ";");
   if (w.builtins.count(Builtin::ViewDirection))
-    locals.add("vec3 b_view_direction = wg_safe_normalize_vec3(" + surfaceUniformName(BuiltinUniform::CameraPosition) +
-                   " - v_world_position);",
-               "wg_safe_normalize_vec3");
+    locals.add("vec3 b_view_direction = " +
+               EmitContext::call("wg_safe_normalize_vec3",
+                                 {GlslExpr::name(surfaceUniformName(BuiltinUniform::CameraPosition)) + " - v_world_position"}) +
+               ";");
   if (w.builtins.count(Builtin::ScreenUv) && !deferred)
-    locals.add("vec2 b_screen_uv = gl_FragCoord.xy / " + surfaceUniformName(BuiltinUniform::ViewportSize) + ";");
+    locals.add("vec2 b_screen_uv = gl_FragCoord.xy / " + GlslExpr::name(surfaceUniformName(BuiltinUniform::ViewportSize)) + ";");
   return locals;
 }
 
@@ -86,10 +89,10 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
 
   StageBody frag(kFragmentStage);
   writer.writeOps(frag);
-  std::string color = writer.outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)").text();
-  std::string alpha = writer.outputExpr(frag, OutputSlot::FragmentAlpha, "1.0").text();
+  const GlslExpr color = writer.outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
+  const GlslExpr alpha = writer.outputExpr(frag, OutputSlot::FragmentAlpha, "1.0");
   const size_t colorStatement = frag.body.size(), colorLine = frag.lineOp.size();
-  frag.line(-1, iface::kColorOutput, " = vec4(", color, ", ", alpha, ");");
+  frag.line(-1, color.operations() + alpha.operations(), iface::kColorOutput, " = vec4(", color.text(), ", ", alpha.text(), ");");
   if (deferred) planDeferredSamplers(writer, frag);
 
   StageBody vert(kVertexStage);
@@ -100,21 +103,23 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   bool fragNeedsUv = frag.builtins.count(Builtin::Uv) > 0;
   // Deferred: the vertex shader feeds the runtime's G-buffer pass, which stores all three.
   if (deferred) fragNeedsPosition = fragNeedsNormal = fragNeedsUv = true;
-  std::string position = writer.outputExpr(vert, OutputSlot::VertexPosition, writer.builtinExpr(vert, Builtin::WorldPosition)).text();
-  vert.line(-1, "gl_Position = ", vert.use(BuiltinUniform::ViewProjection), " * vec4(", position, ", 1.0);");
-  if (fragNeedsPosition) vert.line(-1, "v_world_position = ", position, ";");
+  const GlslExpr position = writer.outputExpr(vert, OutputSlot::VertexPosition, writer.builtinExpr(vert, Builtin::WorldPosition));
+  const GlslExpr clip = GlslExpr::name(vert.use(BuiltinUniform::ViewProjection)) + " * vec4(" + position + ", 1.0)";
+  vert.line(-1, clip.operations(), "gl_Position = ", clip.text(), ";");
+  if (fragNeedsPosition) vert.line(-1, position.operations(), "v_world_position = ", position.text(), ";");
   if (fragNeedsNormal) {
-    std::string normal = (program.output(OutputSlot::VertexNormal) ? writer.outputExpr(vert, OutputSlot::VertexNormal, "")
-                                                                    : writer.builtinExpr(vert, Builtin::Normal))
-                             .text();
-    vert.line(-1, "v_normal = ", normal, ";");
+    const GlslExpr normal = program.output(OutputSlot::VertexNormal) ? writer.outputExpr(vert, OutputSlot::VertexNormal, "")
+                                                                     : writer.builtinExpr(vert, Builtin::Normal);
+    vert.line(-1, normal.operations(), "v_normal = ", normal.text(), ";");
   }
   if (fragNeedsUv) {
     vert.builtins.insert(Builtin::Uv);
-    vert.line(-1, "v_uv = ", plan.tessellation ? "b_uv" : iface::kUvAttribute, ";");
+    vert.line(-1, 0, "v_uv = ", plan.tessellation ? "b_uv" : iface::kUvAttribute, ";");  // a name
   }
-  for (const auto& v : program.varyings)
-    vert.line(-1, writer.varyingName(v.index, v.port), " = ", writer.opOutput(vert, v.index, v.port).text(), ";");
+  for (const auto& v : program.varyings) {
+    const GlslExpr value = writer.opOutput(vert, v.index, v.port);
+    vert.line(-1, value.operations(), writer.varyingName(v.index, v.port), " = ", value.text(), ";");
+  }
   if (plan.tessellation) {
     // The vertex shader places the mesh (model), the control stage measures distances.
     vert.use(BuiltinUniform::Model);

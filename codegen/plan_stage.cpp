@@ -26,12 +26,15 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) 
   }
   s.stage = stage;
   s.locals = std::move(locals.lines);
+  s.localsCost = locals.operations;
   s.body = std::move(w.body);
   s.lineOp = std::move(w.lineOp);
+  s.lineCost = std::move(w.lineCost);
   // Written by appending, the body may hold up to twice its size; the plan keeps it until
   // the manifest is built, alongside every target's shader text (the compile's peak heap).
   s.body.shrink_to_fit();
   s.lineOp.shrink_to_fit();
+  s.lineCost.shrink_to_fit();
   s.builtins = std::move(w.builtins);
   for (auto& f : w.fetches)
     if (f.kept) s.fetches.push_back(std::move(f.fetch));

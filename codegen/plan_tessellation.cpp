@@ -41,18 +41,20 @@ std::vector<StageVariable> patchVariables(const StageBody& geometry, const std::
 
 // The patch's corners, interpolated at gl_TessCoord.
 StageLocals tessEvaluationLocals(const StageBody& w) {
-  auto lerp3 = [](const std::string& a) {
+  auto lerp3 = [](const char* name) {
+    const GlslExpr a = GlslExpr::name(name);
     return "gl_TessCoord.x * " + a + "[0] + gl_TessCoord.y * " + a + "[1] + gl_TessCoord.z * " + a + "[2]";
   };
   StageLocals locals;
   locals.add("vec3 b_world_position = " + lerp3("te_position") + ";");
   if (w.builtins.count(Builtin::Normal))
-    locals.add("vec3 b_normal = wg_safe_normalize_vec3(" + lerp3("te_normal") + ");", "wg_safe_normalize_vec3");
+    locals.add("vec3 b_normal = " + EmitContext::call("wg_safe_normalize_vec3", {lerp3("te_normal")}) + ";");
   if (w.builtins.count(Builtin::Uv)) locals.add("vec2 b_uv = " + lerp3("te_uv") + ";");
   if (w.builtins.count(Builtin::ViewDirection))
-    locals.add("vec3 b_view_direction = wg_safe_normalize_vec3(" + tessUniformName(BuiltinUniform::CameraPosition) +
-                   " - b_world_position);",
-               "wg_safe_normalize_vec3");
+    locals.add("vec3 b_view_direction = " +
+               EmitContext::call("wg_safe_normalize_vec3",
+                                 {GlslExpr::name(tessUniformName(BuiltinUniform::CameraPosition)) + " - b_world_position"}) +
+               ";");
   return locals;
 }
 

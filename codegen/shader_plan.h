@@ -93,6 +93,12 @@ struct PlannedStage {
   std::vector<std::string> locals;  // builtin locals at the top of main (no indent, no '\n')
   std::string body;                 // "  " + line + '\n' per line, after the locals
   std::vector<int> lineOp;          // per body line: the op that wrote it, or -1
+  // The operations each body line and the locals ask for, counted from the values as they
+  // were built (GlslExpr::operations, core/glsl_operation_count.h), never from the text:
+  // per body line, and the locals together. Empty and 0 for a stage of fixed text (the
+  // tessellated pipeline's vertex and control stages), whose cost no one reports.
+  std::vector<int> lineCost;
+  int localsCost = 0;
   std::set<Builtin> builtins;       // the builtins the body reads
   std::vector<AttributeInfo> attributes;  // vertex inputs it declares
   std::vector<StageVariable> inputs, outputs;

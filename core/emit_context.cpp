@@ -17,6 +17,7 @@ namespace {
 struct CalledNames {
   std::mutex mutex;
   std::deque<std::string> names;  // by id; a deque keeps each name where it is
+  std::deque<int> costs;          // by id: what one call costs (glslCallCost)
   std::unordered_map<std::string_view, uint32_t> ids;
 };
 
@@ -25,14 +26,30 @@ CalledNames& calledNames() {
   return names;
 }
 
-uint32_t calledNameId(std::string_view fn) {
+struct CalledName {
+  uint32_t id;
+  int cost;
+};
+
+// The name's id, and what a call of it costs (computed once per name, outside the lock: a
+// library function's cost comes from the library).
+CalledName calledName(std::string_view fn) {
   CalledNames& c = calledNames();
+  {
+    std::lock_guard<std::mutex> lock(c.mutex);
+    if (auto it = c.ids.find(fn); it != c.ids.end()) return {it->second, c.costs[it->second]};
+  }
+  const int cost = glslCallCost(fn);
   std::lock_guard<std::mutex> lock(c.mutex);
-  if (auto it = c.ids.find(fn); it != c.ids.end()) return it->second;
+  if (auto it = c.ids.find(fn); it != c.ids.end()) return {it->second, c.costs[it->second]};
   const uint32_t id = static_cast<uint32_t>(c.names.size());
   c.ids.emplace(c.names.emplace_back(fn), id);
-  return id;
+  c.costs.push_back(cost);
+  return {id, cost};
 }
+
+// A call written inside a piece (no EmitContext::call: a GLSL built-in such as texture()).
+int pieceCallCost(std::string_view name, const void*) { return glslCallCost(name); }
 
 }  // namespace
 
@@ -65,16 +82,23 @@ std::vector<std::string> GlslExpr::calls() const {
   return out;
 }
 
+void GlslExpr::countPiece(std::string_view piece) { operations_ += countGlslOperations(piece, scan_, pieceCallCost, nullptr); }
+
+// A name is an operand whose text is never read: renaming it changes no count.
 GlslExpr GlslExpr::symbol(std::string text, uint32_t symbol, bool isName) {
-  GlslExpr e(std::move(text));
+  GlslExpr e;
+  e.text_ = std::move(text);
   e.name_ = isName;
+  e.scan_.started = e.scan_.afterOperand = true;
   e.symbols_.add(symbol);
   return e;
 }
 
 GlslExpr GlslExpr::name(std::string text) {
-  GlslExpr e(std::move(text));
+  GlslExpr e;
+  e.text_ = std::move(text);
   e.name_ = true;
+  e.scan_.started = e.scan_.afterOperand = true;
   return e;
 }
 
@@ -92,6 +116,7 @@ GlslExpr& GlslExpr::operator+=(const GlslExpr& b) {
     name_ = false;
   }
   text_ += b.text_;
+  operations_ += b.operations_ + joinGlslOperations(scan_, b.scan_);
   symbols_.addAll(b.symbols_);
   calls_.addAll(b.calls_);
   return *this;
@@ -100,6 +125,7 @@ GlslExpr& GlslExpr::operator+=(const GlslExpr& b) {
 GlslExpr& GlslExpr::operator+=(std::string_view b) {
   if (!b.empty()) name_ = false;
   text_ += b;
+  countPiece(b);
   return *this;
 }
 
@@ -156,21 +182,29 @@ GlslExpr EmitContext::literal(const Value& v) const {
   return s + ')';
 }
 
+// What the callee costs plus what its arguments cost: each argument follows "(" or ", ",
+// so nothing at a seam is an operation.
 GlslExpr EmitContext::call(std::string_view fn, std::initializer_list<GlslExpr> args) {
   size_t length = fn.size() + 2;
   for (const auto& a : args) length += a.text_.size() + 2;
+  const CalledName callee = calledName(fn);
   GlslExpr e;
   e.text_.reserve(length);
   e.text_ = fn;
-  e += '(';
+  e.text_ += '(';
+  e.operations_ = callee.cost;
   bool first = true;
   for (const auto& a : args) {
-    if (!first) e += ", ";
-    e += a;
+    if (!first) e.text_ += ", ";
+    e.text_ += a.text_;
+    e.operations_ += a.operations_;
+    e.symbols_.addAll(a.symbols_);
+    e.calls_.addAll(a.calls_);
     first = false;
   }
-  e += ')';
-  e.calls_.add(calledNameId(fn));
+  e.text_ += ')';
+  e.scan_.started = e.scan_.afterOperand = true;
+  e.calls_.add(callee.id);
   return e;
 }
 

@@ -6,7 +6,9 @@
 // look-up) and the library functions called through EmitContext::call. Concatenation
 // merges them. The planner decides from these sets, never from the text, which locals a
 // stage keeps, which declarations the kept text still reads and which library items a
-// stage needs (codegen/plan_body.cpp).
+// stage needs (codegen/plan_body.cpp). A GlslExpr also carries how many operations it asks
+// for (core/glsl_operation_count.h), counted as it is built: the planner keeps per line what
+// the ops wrote (PlannedStage::lineCost), which --explain-frequency reports.
 #include <cstdint>
 #include <initializer_list>
 #include <optional>
@@ -15,6 +17,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/glsl_operation_count.h"
 #include "core/node_spec.h"
 
 namespace wg {
@@ -43,10 +46,11 @@ class GlslExprIds {
 class GlslExpr {
  public:
   GlslExpr() = default;
-  // Text that reads nothing of the context: an operator, a constant, a swizzle.
-  GlslExpr(const char* text) : text_(text) {}
-  GlslExpr(std::string text) : text_(std::move(text)) {}
-  GlslExpr(std::string_view text) : text_(text) {}
+  // Text that reads nothing of the context: an operator, a constant, a swizzle. It is a
+  // piece the node (or the planner) writes: its operations are counted once, here.
+  GlslExpr(const char* text) : GlslExpr(std::string_view(text)) {}
+  GlslExpr(std::string text) : text_(std::move(text)) { countPiece(text_); }
+  GlslExpr(std::string_view text) : text_(text) { countPiece(text_); }
   // A symbol a context hands out: `text` reads the context's symbol `symbol` (its meaning
   // is the context's); `isName` says the text is one identifier, which a planner may use
   // in place of a copy.
@@ -58,6 +62,9 @@ class GlslExpr {
   GlslExpr& reading(uint32_t symbol);
 
   const std::string& text() const { return text_; }
+  // The operations the text asks for (core/glsl_operation_count.h): those of the pieces
+  // written into it, of the values appended and of the calls made through EmitContext::call.
+  int operations() const { return operations_; }
   bool empty() const { return text_.empty(); }
   bool isName() const { return name_; }
   // The context's symbols the text reads, each once, in order of first use.
@@ -76,8 +83,11 @@ class GlslExpr {
 
  private:
   friend class EmitContext;
+  void countPiece(std::string_view piece);
   std::string text_;
   bool name_ = false;
+  int operations_ = 0;
+  GlslOperationScan scan_;  // where the count stands at the end of the text
   GlslExprIds symbols_;
   GlslExprIds calls_;
 };

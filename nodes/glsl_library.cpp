@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "core/glsl_operation_count.h"
+#include "nodes/glsl_library_cost.h"
+
 namespace wg {
 namespace {
 
@@ -148,6 +151,9 @@ GlslLibrary::GlslLibrary(const std::vector<GlslSourceFile>& files) {
 
 const GlslLibrary& GlslLibrary::builtin() {
   static const GlslLibrary library(embeddedGlslFiles());
+  // Core's operation counts price calls of its functions by their bodies.
+  static const bool costsInstalled = (setLibraryCallCost(&builtinLibraryCallCost), true);
+  (void)costsInstalled;
   return library;
 }
 

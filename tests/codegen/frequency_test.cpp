@@ -1,5 +1,6 @@
 // Frequency analysis (codegen/frequency.h), its report (codegen/frequency_report.h) and the
-// GLSL cost estimate the report uses (codegen/glsl_cost.h), on small hand-made graphs.
+// cost estimate the report reads (the operations the planner counted from the values as it
+// wrote each fragment line, core/glsl_operation_count.h), on small hand-made graphs.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +8,9 @@
 #include "codegen/compile.h"
 #include "codegen/frequency.h"
 #include "codegen/frequency_report.h"
-#include "codegen/glsl_cost.h"
+#include "codegen/shader_plan.h"
+#include "core/emit_context.h"
+#include "nodes/glsl_library_cost.h"
 #include "pass_test_support.h"
 
 namespace wg {
@@ -140,23 +143,109 @@ TEST(FrequencyReport, PerDrawWorkOnlyTheVertexStageDoesCostsNoPixel) {
   EXPECT_TRUE(r.roots.empty());
 }
 
-TEST(GlslCost, CountsOperatorsAndCallsNotSignsConstructorsOrComments) {
-  GlslCost cost;
-  EXPECT_EQ(cost.of("a + b * c"), 2);
-  EXPECT_EQ(cost.of("-x * 2.0"), 1) << "a unary minus is free";
-  EXPECT_EQ(cost.of("max(x, 1e-30) - 1.5e+3"), 2) << "an exponent's sign is no subtraction";
-  EXPECT_EQ(cost.of("vec3(a, b.xy)"), 0) << "constructors and swizzles are free";
-  EXPECT_EQ(cost.of("float y = x < 0.5 ? a : b;"), 2);
-  EXPECT_EQ(cost.of("a // b + c\n"), 0) << "comments are skipped";
-  EXPECT_EQ(cost.of("texture(s, uv).rgb"), 1);
-}
-
 TEST(GlslCost, ALibraryCallCostsItsBody) {
   GlslCost cost;
   // v * inversesqrt(max(dot(v, v), 1e-30)): a product and three calls.
   EXPECT_EQ(cost.ofFunction("wg_safe_normalize_vec3"), 4);
-  EXPECT_EQ(cost.of("wg_safe_normalize_vec3(a + b)"), 5);
   EXPECT_EQ(cost.ofFunction("wg_not_in_the_library"), 0);
+  // What a node's call costs is the library's count of the body, plus its arguments.
+  EXPECT_EQ(EmitContext::call("wg_safe_normalize_vec3", {GlslExpr::name("a") + " + " + GlslExpr::name("b")}).operations(), 5);
+}
+
+// kParameterChain with one more node in its per-draw chain, between k2 and kt: `type`
+// with inputs `ports` (a JSON object without its closing brace), one of them k2.
+std::string chainWithOneMore(const std::string& type, const std::string& ports) {
+  return graphJson(
+      R"({"id": "u", "type": "uv"}, {"id": "l", "type": "length", "inputs": {"x": "u.out"}},
+         {"id": "t", "type": "time"},
+         {"id": "k2", "type": "mul", "inputs": {"a": "$k", "b": 2}},
+         {"id": "extra", "type": ")" + type + R"(", "inputs": )" + ports + R"(}},
+         {"id": "kt", "type": "add", "inputs": {"a": "extra.out", "b": "t.out"}},
+         {"id": "kn", "type": "sin", "inputs": {"x": "kt.out"}},
+         {"id": "shade", "type": "mul", "inputs": {"a": "l.out", "b": "kn.out"}})",
+      R"("fragment": {"alpha": "shade.out", "color": [1, 0, 0]})", R"("k": {"type": "float", "default": 0.5})");
+}
+
+// One more node in a per-draw chain adds exactly its own count to the op, the root, the
+// per-draw total and the stage: a product 1, a library call the library's count of its body.
+TEST(FrequencyReport, OneMoreNodeAddsExactlyItsOperations) {
+  Program base = finalProgram(kParameterChain);
+  FrequencyReport before = frequencyReport(base);
+  ASSERT_EQ(before.roots.size(), 1u);
+  struct Case {
+    std::string type, ports;
+    int operations;
+  };
+  // pow's base k * 2 is a parameter's: no fact makes the native pow safe, so the guarded
+  // wg_safe_pow_float is called, with names for arguments.
+  const Case cases[] = {{"mul", R"({"a": "k2.out", "b": 3)", 1},
+                        {"pow", R"({"x": "k2.out", "y": 1.5)", GlslCost().ofFunction("wg_safe_pow_float")}};
+  ASSERT_GT(cases[1].operations, 1) << "the library's count, not the call's 1";
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.type);
+    Program p = finalProgram(chainWithOneMore(c.type, c.ports));
+    FrequencyReport after = frequencyReport(p);
+    const int extra = opIndex(p, "extra");
+    ASSERT_GE(extra, 0);
+    ASSERT_EQ(after.ops[static_cast<size_t>(extra)], Frequency::PerDraw);
+    EXPECT_EQ(after.fragmentCost[static_cast<size_t>(extra)], c.operations);
+    EXPECT_EQ(after.perDrawCost, before.perDrawCost + c.operations);
+    EXPECT_EQ(after.fragmentTotalCost, before.fragmentTotalCost + c.operations);
+    ASSERT_EQ(after.roots.size(), 1u);
+    EXPECT_EQ(after.roots[0].cost, before.roots[0].cost + c.operations);
+    for (const char* id : {"k2", "kt", "kn", "l", "shade"})
+      EXPECT_EQ(after.fragmentCost[static_cast<size_t>(opIndex(p, id))], before.fragmentCost[static_cast<size_t>(opIndex(base, id))])
+          << id;
+  }
+}
+
+// kParameterChain with every node and the parameter renamed, and laid out otherwise.
+const std::string kRenamedChain = graphJson(
+    "{\"id\":\"surface_uv\",\"type\":\"uv\"},\n\t{\"id\": \"uv_length\", \"type\": \"length\", \"inputs\": {\"x\": \"surface_uv.out\"}},"
+    R"(
+    {   "id" : "clock",   "type" : "time"   },
+    {"id": "gain_twice", "type": "mul", "inputs": {"a": "$wave_gain", "b": 2}},
+    {"id": "gain_plus_time", "type": "add", "inputs": {"a": "gain_twice.out", "b": "clock.out"}},
+    {"id": "sine_of_it", "type": "sin", "inputs": {"x": "gain_plus_time.out"}},
+    {"id": "final_shade", "type": "mul", "inputs": {"a": "uv_length.out", "b": "sine_of_it.out"}})",
+    R"("fragment": {"alpha": "final_shade.out", "color": [1, 0, 0]})", R"("wave_gain": {"type": "float", "default": 0.5})");
+
+// The counts are built from the values, never from the names in the text: renaming every
+// node and the parameter (which renames the shader's locals and uniform) changes none.
+TEST(FrequencyReport, CostsDoNotDependOnNamesOrLayout) {
+  Program a = finalProgram(kParameterChain), b = finalProgram(kRenamedChain);
+  ASSERT_EQ(a.ops.size(), b.ops.size());
+  const ShaderPlan planA = planShaders(a, "", false), planB = planShaders(b, "", false);
+  const PlannedStage *fa = planA.stage(ShaderStage::Fragment), *fb = planB.stage(ShaderStage::Fragment);
+  ASSERT_TRUE(fa && fb);
+  ASSERT_NE(fa->body, fb->body) << "the names reach the shader";
+  EXPECT_EQ(fa->lineCost, fb->lineCost);
+  EXPECT_EQ(fa->localsCost, fb->localsCost);
+  FrequencyReport ra = frequencyReport(a), rb = frequencyReport(b);
+  EXPECT_EQ(ra.fragmentCost, rb.fragmentCost);
+  EXPECT_EQ(ra.perDrawCost, rb.perDrawCost);
+  EXPECT_EQ(ra.fragmentTotalCost, rb.fragmentTotalCost);
+  ASSERT_EQ(ra.roots.size(), rb.roots.size());
+  for (size_t i = 0; i < ra.roots.size(); ++i) EXPECT_EQ(ra.roots[i].cost, rb.roots[i].cost);
+}
+
+// The report's total is the planner's: the locals and every body line, each counted once.
+TEST(FrequencyReport, TheTotalIsThePlannersLineCounts) {
+  Program p = finalProgram(graphJson(
+      R"({"id": "n", "type": "normal"}, {"id": "v", "type": "view_direction"},
+         {"id": "f", "type": "dot", "inputs": {"a": "n.out", "b": "v.out"}})",
+      R"("fragment": {"alpha": "f.out", "color": [1, 0, 0]})"));
+  const ShaderPlan plan = planShaders(p, "", false);
+  const PlannedStage* frag = plan.stage(ShaderStage::Fragment);
+  ASSERT_TRUE(frag);
+  ASSERT_EQ(frag->lineCost.size(), frag->lineOp.size());
+  // b_normal and b_view_direction: one wg_safe_normalize_vec3 each, the second of a difference.
+  const int normalize = GlslCost().ofFunction("wg_safe_normalize_vec3");
+  EXPECT_EQ(frag->localsCost, 2 * normalize + 1);
+  int lines = 0;
+  for (int c : frag->lineCost) lines += c;
+  EXPECT_EQ(frequencyReport(p).fragmentTotalCost, frag->localsCost + lines);
+  EXPECT_EQ(frequencyReport(p).fragmentCost[static_cast<size_t>(opIndex(p, "f"))], 1) << "dot()";
 }
 
 }  // namespace

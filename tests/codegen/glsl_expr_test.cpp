@@ -1,6 +1,6 @@
 // GlslExpr (core/emit_context.h): the values a node's emit builds carry what they read and
-// call through every concatenation, so the planner can decide from them instead of from
-// the text.
+// call, and how many operations they ask for, through every concatenation, so the planner
+// can decide and count from them instead of from the text.
 #include <gtest/gtest.h>
 
 #include "core/emit_context.h"
@@ -55,6 +55,56 @@ TEST(GlslExpr, ManySymbolsStayEachOnceInOrder) {
   for (uint32_t round = 0; round < 2; ++round)
     for (uint32_t s = 0; s < 9; ++s) e += GlslExpr::symbol("a", s) + " + ";  // past the inline four
   EXPECT_EQ(symbolsOf(e), (std::vector<uint32_t>{0, 1, 2, 3, 4, 5, 6, 7, 8}));
+}
+
+// The counting rules (core/glsl_operation_count.h), on pieces a node writes.
+TEST(GlslExprOperations, CountsOperatorsAndCallsNotSignsConstructorsOrComments) {
+  EXPECT_EQ(GlslExpr("a + b * c").operations(), 2);
+  EXPECT_EQ(GlslExpr("-x * 2.0").operations(), 1) << "a unary minus is free";
+  EXPECT_EQ(GlslExpr("max(x, 1e-30) - 1.5e+3").operations(), 2) << "an exponent's sign is no subtraction";
+  EXPECT_EQ(GlslExpr("vec3(a, b.xy)").operations(), 0) << "constructors and swizzles are free";
+  EXPECT_EQ(GlslExpr("float y = x < 0.5 ? a : b;").operations(), 2);
+  EXPECT_EQ(GlslExpr("a // b + c\n").operations(), 0) << "comments are skipped";
+  EXPECT_EQ(GlslExpr("texture(s, uv).rgb").operations(), 1);
+  EXPECT_EQ(GlslExpr("a == b && c != d").operations(), 3);
+}
+
+// A count continues across the pieces and values it is built from: the same text counts
+// the same however it was cut.
+TEST(GlslExprOperations, TheSeamsBetweenPiecesAndValuesCountAsTheWholeText) {
+  const GlslExpr x = GlslExpr::name("x"), y = GlslExpr::name("y");
+  EXPECT_EQ(("(" + x + " - " + y + ")").operations(), 1);
+  EXPECT_EQ((GlslExpr("(") + "-" + x + ")").operations(), 0) << "a sign after '(' stays a sign";
+  EXPECT_EQ((x + " " + GlslExpr("-0.5")).operations(), 1) << "a value's leading sign after an operand is a subtraction";
+  EXPECT_EQ((x + " * " + GlslExpr("-0.5")).operations(), 1) << "and after an operator a sign";
+  EXPECT_EQ((GlslExpr("max") + "(" + x + ", " + y + ")").operations(), 1) << "a name that ends a piece is called by the next";
+  EXPECT_EQ((GlslExpr("vec3") + "(" + x + ")").operations(), 0) << "a constructor split from its parenthesis";
+  EXPECT_EQ((GlslExpr("max") + GlslExpr("(x, y)")).operations(), 1) << "a value that opens the call";
+  EXPECT_EQ((GlslExpr("b") + " " + GlslExpr("+ c")).operations(), 1);
+  // A value appended brings its own count; the names never count.
+  GlslExpr product = "(" + x + " * " + y + ")";
+  EXPECT_EQ((product + " + " + product).operations(), 3);
+}
+
+TEST(GlslExprOperations, ACallCostsItsFunctionAndItsArguments) {
+  const GlslExpr x = GlslExpr::name("x");
+  EXPECT_EQ(EmitContext::call("sin", {x}).operations(), 1) << "a GLSL built-in";
+  EXPECT_EQ(EmitContext::call("vec3", {x, x, x}).operations(), 0) << "a constructor";
+  EXPECT_EQ(EmitContext::call("clamp", {x + " * 2.0", "0.0", "1.0"}).operations(), 2);
+  EXPECT_EQ(EmitContext::call("sin", {EmitContext::call("cos", {x})}).operations(), 2);
+  EXPECT_EQ(("1.0 - " + EmitContext::call("sin", {x})).operations(), 2);
+}
+
+// Names are operands whose text is never read: another name, the same count.
+TEST(GlslExprOperations, NamesNeverCount) {
+  for (const char* name : {"a", "p_wave_gain", "n_final_shade_t0", "gl_FragCoord.xy", "texture"}) {
+    SCOPED_TRACE(name);
+    const GlslExpr n = GlslExpr::name(name), s = GlslExpr::symbol(name, 3);
+    EXPECT_EQ(n.operations(), 0);
+    EXPECT_EQ(("(" + n + " * " + s + ")").operations(), 1);
+    EXPECT_EQ(EmitContext::call("wg_safe_normalize_vec3", {n}).operations(),
+              EmitContext::call("wg_safe_normalize_vec3", {GlslExpr::name("v")}).operations());
+  }
 }
 
 }  // namespace

@@ -14,11 +14,16 @@
 //     isGlslName (whether an output's text is a name), the search of the kept text for the
 //     names an op declared (forgetUnread), and a fetch's coordinate compared with the screen
 //     uv's name.
-// Two readers of generated text remain, each confined to its file until it reads the plan
-// instead: the cost estimate of `--explain-frequency` (GlslCost over the fragment lines,
-// codegen/frequency_report.cpp) and the WGSL target's translation of the stage bodies
-// (wgsl::Translator, codegen/emit_wgsl.cpp). The user's own edit of a shader (check
-// --mutate, probe --mutate) is a text edit by design and searches for the user's text.
+//   - `--explain-frequency`'s cost estimate read from the fragment lines' text (GlslCost over
+//     frag->body and frag->locals, codegen/frequency_report.cpp): the planner counts each
+//     line's operations from the values as it writes them (PlannedStage::lineCost). GlslCost
+//     now counts only the GLSL library's own hand-written items (what one call of a library
+//     function costs), confined to its file; the counter of the pieces a node writes is
+//     confined to the value type that appends them (core/emit_context.cpp).
+// One reader of generated text remains, confined to its files until it reads the plan
+// instead: the WGSL target's translation of the stage bodies (wgsl::Translator,
+// codegen/emit_wgsl.cpp). The user's own edit of a shader (check --mutate, probe --mutate)
+// is a text edit by design and searches for the user's text.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -40,14 +45,19 @@ const char* const kForbidden[] = {
     "find(\"wg_\")", "find(\"WG_\")", "callsLibrary", "itemsFor(",
     // the locals and declarations an op's kept text reads
     "readsName(", "isGlslName(", "kept.find(", "f.coord == kSurfaceScreenUv",
+    // the frequency report's count of the fragment lines' text
+    "glsl.of(", "frag->body.find(", "codegen/glsl_cost.h",
 };
 
 // Names allowed only in the files listed (paths relative to the source root).
 const std::map<std::string, std::set<std::string>> kConfined = {
     // The library's scanner reads the library's own items (their uses of each other).
     {"libraryIdentifiers(", {"nodes/glsl_library.h", "nodes/glsl_library.cpp"}},
-    // Still read from text: the per-line cost of --explain-frequency.
-    {"GlslCost", {"codegen/glsl_cost.h", "codegen/glsl_cost.cpp", "codegen/frequency_report.cpp"}},
+    // What one call of a library function costs, counted from the library's own items.
+    {"GlslCost", {"nodes/glsl_library_cost.h", "nodes/glsl_library_cost.cpp"}},
+    // The counter of GLSL pieces: the pieces a node appends to a value, and the library's items.
+    {"countGlslOperations(", {"core/glsl_operation_count.h", "core/glsl_operation_count.cpp", "core/emit_context.cpp",
+                               "nodes/glsl_library_cost.cpp"}},
     // Still read from text: the WGSL target translates the stage bodies (and the library).
     {"Translator", {"codegen/wgsl_translate.h", "codegen/wgsl_translate.cpp", "codegen/emit_wgsl.cpp"}},
 };
