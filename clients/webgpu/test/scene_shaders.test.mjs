@@ -82,7 +82,9 @@ test('the ocean simulation\'s pass shaders become WGSL fragment modules naga val
     assert.ok(p.wgsl.includes('textureLoad('), name);
   }
   // The bindings come from each form's table: the two-texture stage reads u_b, the single one not.
-  assert.deepEqual(passes.ocean_stockham.textures.map((t) => t.name), ['u_a', 'u_twiddle', 'u_b']);
+  assert.deepEqual(passes.ocean_stockham.textures.map((t) => [t.name, t.binding]), [['u_a', 1], ['u_twiddle', 2], ['u_b', 3]]);
+  assert.equal(passes.ocean_stockham.samplerBinding, 4);
+  assert.equal(passes.ocean_stockham.size, 16);
   assert.deepEqual(passes.ocean_stockham_single.textures.map((t) => t.name), ['u_a', 'u_twiddle']);
   assert.deepEqual(passes.ocean_evolve.uniforms.map((u) => [u.name, u.type, u.offset]), [['u_tau', 'uint', 0], ['u_dk', 'float', 4], ['u_n', 'int', 8]]);
   assert.equal(passes.ocean_evolve.textures.find((t) => t.name === 'u_frequency').sampleType, 'uint');
