@@ -362,6 +362,39 @@ std::optional<std::map<std::string, int>> uniformBlockOffsets(Target target, con
   return offsets;
 }
 
+std::optional<ReflectedInterface> reflectedInterface(Target target, const ShaderSource& shader,
+                                                     std::vector<ShaderMessage>* errors) {
+  LinkedProgram linked;
+  std::vector<ShaderMessage> messages;
+  if (!compileAndLink(target, {shader}, linked, messages)) {
+    if (errors) *errors = std::move(messages);
+    return std::nullopt;
+  }
+  glslang::TProgram& program = linked.program;
+  // Inactive members and varyings too: a table lists what the text declares.
+  if (!program.buildReflection(EShReflectionDefault | EShReflectionAllBlockVariables | EShReflectionIntermediateIO |
+                               EShReflectionAllIOVariables))
+    return std::nullopt;
+  ReflectedInterface r;
+  for (int i = 0; i < program.getNumUniformBlocks(); ++i) {
+    const glslang::TObjectReflection& b = program.getUniformBlock(i);
+    r.blocks[b.name] = {b.getBinding(), b.size};
+  }
+  for (int i = 0; i < program.getNumUniformVariables(); ++i) {
+    const glslang::TObjectReflection& u = program.getUniform(i);
+    if (u.offset >= 0)
+      r.memberOffsets[u.name] = u.offset;
+    else
+      r.opaqueBindings[u.name] = u.getBinding();
+  }
+  if (const glslang::TIntermediate* im = program.getIntermediate(glslangStage(shader.stage))) {
+    const StageInterface io = collectInterface(*im);
+    for (const InterfaceVar& v : io.inputs) r.inputLocations[v.key] = v.location;
+    for (const InterfaceVar& v : io.outputs) r.outputLocations[v.key] = v.location;
+  }
+  return r;
+}
+
 ValidationResult validateShaders(Target target, const std::vector<ShaderSource>& shaders) {
   ValidationResult result;
   const bool vulkan = target == Target::Vk450;

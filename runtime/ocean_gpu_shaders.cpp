@@ -141,27 +141,27 @@ struct OceanPassText {
 OceanPassText oceanPassText(OceanPass pass, const OceanPassVariant& v) {
   switch (pass) {
     case OceanPass::Evolve:
-      return {{{"highp sampler2D", "u_h0"}, {"highp usampler2D", "u_frequency"}},
+      return {{{"sampler2D", "u_h0"}, {"usampler2D", "u_frequency"}},
               {{"uint", "u_tau"}, {"float", "u_dk"}, {"int", "u_n"}},
               kEvolveBody};
     case OceanPass::Stockham: {
-      OceanPassText t{{{"highp sampler2D", "u_a"}, {"highp sampler2D", "u_twiddle"}},
+      OceanPassText t{{{"sampler2D", "u_a"}, {"sampler2D", "u_twiddle"}},
                       {{"int", "u_ns"}, {"int", "u_n"}, {"int", "u_vertical"}},
                       kStockhamBody};
-      if (v.slopes) t.samplers.push_back({"highp sampler2D", "u_b"});
+      if (v.slopes) t.samplers.push_back({"sampler2D", "u_b"});
       return t;
     }
     case OceanPass::Pack: {
-      OceanPassText t{{{"highp sampler2D", "u_a"}}, {{"float", "u_lambda"}}, kPackBody};
-      if (v.slopes) t.samplers.push_back({"highp sampler2D", "u_b"});
+      OceanPassText t{{{"sampler2D", "u_a"}}, {{"float", "u_lambda"}}, kPackBody};
+      if (v.slopes) t.samplers.push_back({"sampler2D", "u_b"});
       return t;
     }
     case OceanPass::FoamStep:
-      return {{{"highp sampler2D", "u_fields"}, {"highp sampler2D", "u_previous"}},
+      return {{{"sampler2D", "u_fields"}, {"sampler2D", "u_previous"}},
               {{"float", "u_lambda"}, {"float", "u_keep"}, {"float", "u_gain"}, {"float", "u_threshold"}},
               kFoamStepBody};
     case OceanPass::FoamBlend:
-      return {{{"highp sampler2D", "u_current"}, {"highp sampler2D", "u_next"}}, {{"float", "u_fraction"}}, kFoamBlendBody};
+      return {{{"sampler2D", "u_current"}, {"sampler2D", "u_next"}}, {{"float", "u_fraction"}}, kFoamBlendBody};
   }
   throw std::logic_error("an unknown ocean pass");
 }
@@ -180,13 +180,23 @@ std::vector<std::string> oceanPassConstants(OceanPass pass) {
   return out;
 }
 
+ShaderInterface oceanPassInterface(OceanPass pass, const OceanPassVariant& variant) {
+  const OceanPassText t = oceanPassText(pass, variant);
+  ShaderInterface i{"WgOceanPassConstants", {}, {}, {}, {}};
+  for (const OceanDeclaration& c : t.constants) i.constants.push_back({c.type, c.name});
+  for (const OceanDeclaration& d : t.samplers) i.textures.push_back({d.type, d.name});
+  return i;
+}
+
 std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant) {
   const OceanPassText t = oceanPassText(pass, variant);
   std::string s = sceneShaderHeader(api) + "#define WG_OCEAN_SLOPES " + (variant.slopes ? "1" : "0") +
                   "\n#define WG_OCEAN_JACOBIAN_ONLY " + (variant.jacobianOnly ? "1" : "0") + "\n";
+  // WebGPU: the declarations of the pass's interface (runtime/webgpu_shader_form.h).
+  if (api == SceneShaderApi::WebGpu450) return s + webgpuDeclarations(oceanPassInterface(pass, variant)) + t.body;
   const bool vulkan = api == SceneShaderApi::Vulkan450;
   for (size_t i = 0; i < t.samplers.size(); ++i)
-    s += (vulkan ? "layout(set = 0, binding = " + std::to_string(i) + ") " : std::string()) + "uniform " +
+    s += (vulkan ? "layout(set = 0, binding = " + std::to_string(i) + ") " : std::string()) + "uniform highp " +
          t.samplers[i].type + " " + t.samplers[i].name + ";\n";
   if (vulkan) s += "layout(push_constant) uniform WgOceanPassConstants {\n";
   for (const OceanDeclaration& c : t.constants) s += std::string(vulkan ? "  " : "uniform ") + c.type + " " + c.name + ";\n";
@@ -224,6 +234,11 @@ const char* oceanPassShaderName(OceanPassShader shader) { return namedOceanPass(
 std::string oceanPassFragment(SceneShaderApi api, OceanPassShader shader) {
   const NamedOceanPass n = namedOceanPass(shader);
   return oceanPassFragment(n.pass, api, n.variant);
+}
+
+ShaderInterface oceanPassInterface(OceanPassShader shader) {
+  const NamedOceanPass n = namedOceanPass(shader);
+  return oceanPassInterface(n.pass, n.variant);
 }
 
 }  // namespace wg::rt::oceangpu

@@ -8,11 +8,13 @@
 //
 // A pass's uniforms are its samplers and its scalar constants, declared per API: loose
 // uniforms for GL; for Vulkan, sampler i at set 0, binding i, and the constants one
-// push-constant block, constant i at byte offset 4 i (every constant is a 32-bit scalar).
+// push-constant block, constant i at byte offset 4 i (every constant is a 32-bit scalar); for
+// WebGPU, the declarations of the pass's ShaderInterface (runtime/webgpu_shader_form.h).
 #include <string>
 #include <vector>
 
 #include "runtime/scene.h"
+#include "runtime/webgpu_shader_form.h"
 
 namespace wg::rt::oceangpu {
 
@@ -29,6 +31,9 @@ struct OceanPassVariant {
 std::vector<std::string> oceanPassSamplers(OceanPass pass, const OceanPassVariant& variant);
 // The scalar constant names of `pass` in push-constant order.
 std::vector<std::string> oceanPassConstants(OceanPass pass);
+// Its constants and textures (types "sampler2D", "usampler2D"), from which every API's
+// declarations are written.
+ShaderInterface oceanPassInterface(OceanPass pass, const OceanPassVariant& variant);
 // The whole fragment shader: the API's header (sceneShaderHeader), the variant's defines,
 // the declarations and the body.
 std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant = {});
@@ -51,7 +56,8 @@ inline constexpr int kOceanPassShaderCount = 9;
 
 // "ocean_evolve", "ocean_evolve_displacement", ...
 const char* oceanPassShaderName(OceanPassShader shader);
-// The named program's fragment shader for `api`.
+// The named program's fragment shader for `api`, and its interface.
 std::string oceanPassFragment(SceneShaderApi api, OceanPassShader shader);
+ShaderInterface oceanPassInterface(OceanPassShader shader);
 
 }  // namespace wg::rt::oceangpu

@@ -93,8 +93,15 @@ std::string outputTransformFragment(SceneShaderApi api) {
           "layout(set = 0, binding = 0) uniform sampler2D u_frame;\n"
           "layout(push_constant) uniform ViewConstants {\n  float u_exposure_scale;\n  int u_tone_mapper;\n};\n";
       break;
+    case SceneShaderApi::WebGpu450:
+      inputs = webgpuDeclarations(outputTransformInterface());
+      break;
   }
   return sceneShaderHeader(api) + inputs + kBody;
+}
+
+ShaderInterface outputTransformInterface() {
+  return {"ViewConstants", {{"float", "u_exposure_scale"}, {"int", "u_tone_mapper"}}, {{"sampler2D", "u_frame"}}, {}, {}};
 }
 
 OutputTransformUniforms outputTransformUniforms(const ViewTransform& view) {

@@ -8,7 +8,8 @@
 // Its inputs: the frame (sampler2D u_frame, read with texelFetch at the fragment's pixel),
 // u_exposure_scale = 2^EV (float, computed in double on the CPU) and u_tone_mapper (int,
 // the ToneMapper enumerator: 0 none, 1 aces, 2 agx, 3 neutral). On Vulkan the frame is
-// set 0 binding 0 and the two numbers a push-constant block (float at 0, int at 4).
+// set 0 binding 0 and the two numbers a push-constant block (float at 0, int at 4); on
+// WebGPU, the form of runtime/webgpu_shader_form.h.
 #include <string>
 
 #include "core/view_transform.h"
@@ -17,6 +18,8 @@
 namespace wg::rt {
 
 std::string outputTransformFragment(SceneShaderApi api);
+// Its interface, from which the WebGPU form's declarations come (webgpu_shader_form.h).
+ShaderInterface outputTransformInterface();
 
 // The values of its two uniforms for a view: 2^EV and the tone mapper's number.
 struct OutputTransformUniforms {

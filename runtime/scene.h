@@ -20,6 +20,8 @@
 
 #include <glm/glm.hpp>
 
+#include "runtime/webgpu_shader_form.h"
+
 namespace wg::rt {
 
 struct Camera {
@@ -102,8 +104,11 @@ SceneShaderSources sceneShaderSources(bool es);
 // constants (sky: mat4 u_inverse_view_projection at 0, vec3 u_sun_direction at 64;
 // opaque: mat4 u_view_projection at 0, vec4 u_clip_plane at 64, vec3 u_sun_direction at
 // 80), and the G-buffer fragment shader reads the graph's varyings at the locations its
-// vertex shader writes them (the manifest's varyings order).
-enum class SceneShaderApi { Gl330, Es300, Vulkan450 };
+// vertex shader writes them (the manifest's varyings order). WebGpu450: the form naga reads
+// for a WebGPU host (runtime/webgpu_shader_form.h): one std140 uniform block at group 0
+// binding 0, separate textures and one sampler, clip planes by discard as on ES, and vertex
+// stages converting gl_Position to WebGPU's clip space.
+enum class SceneShaderApi { Gl330, Es300, Vulkan450, WebGpu450 };
 struct GbufferInputLocations {
   int worldPosition = 0, normal = 1, uv = 2;
 };
@@ -111,5 +116,13 @@ SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLoca
 // The first lines of every runtime shader for `api`: #version, ES precision defaults, and
 // the WG_LOCATION / WG_VERTEX_ID / WG_CLIP_DISTANCE macros the bodies use.
 std::string sceneShaderHeader(SceneShaderApi api);
+// Each scene shader's interface, by its name in the scene description: what its WebGPU form
+// declares and its declaration table describes (runtime/webgpu_shader_form.h).
+struct SceneShaderInterface {
+  const char* name;
+  const char* stage;  // "vertex" or "fragment"
+  ShaderInterface interface;
+};
+std::vector<SceneShaderInterface> sceneShaderInterfaces(const GbufferInputLocations& gbuffer = {});
 
 }  // namespace wg::rt

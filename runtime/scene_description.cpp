@@ -1,5 +1,6 @@
 #include "runtime/scene_description.h"
 
+#include <map>
 #include <nlohmann/json.hpp>
 
 #include "core/interface_tables.h"
@@ -7,6 +8,7 @@
 #include "runtime/ocean_gpu_shaders.h"
 #include "runtime/output_transform.h"
 #include "runtime/renderer.h"
+#include "runtime/webgpu_shader_form.h"
 
 namespace wg::rt {
 namespace {
@@ -94,6 +96,26 @@ std::string sceneDescriptionJson(const SceneOptions& options) {
     const auto shader = static_cast<oceangpu::OceanPassShader>(i);
     d["shaders"][oceangpu::oceanPassShaderName(shader)] = oceangpu::oceanPassFragment(SceneShaderApi::Es300, shader);
   }
+
+  // The same shaders in the form a WebGPU host hands naga unchanged, each with its
+  // declaration table, from which the host lays out bind groups and uniform buffers
+  // (runtime/webgpu_shader_form.h; docs/webgpu.md says what each field means).
+  const SceneShaderSources w = sceneShaderSources(SceneShaderApi::WebGpu450);
+  const std::map<std::string, std::string> texts = {
+      {"sky_vertex", w.skyVertex},         {"sky_fragment", w.skyFragment},
+      {"opaque_vertex", w.opaqueVertex},   {"opaque_fragment", w.opaqueFragment},
+      {"fullscreen_vertex", w.fullscreenVertex}, {"water_gbuffer_fragment", w.waterGbufferFragment}};
+  json forms;
+  for (const SceneShaderInterface& i : sceneShaderInterfaces())
+    forms[i.name] = webgpuShaderTable(i.stage, texts.at(i.name), i.interface);
+  forms["output_transform_fragment"] =
+      webgpuShaderTable("fragment", outputTransformFragment(SceneShaderApi::WebGpu450), outputTransformInterface());
+  for (int i = 0; i < oceangpu::kOceanPassShaderCount; ++i) {
+    const auto shader = static_cast<oceangpu::OceanPassShader>(i);
+    forms[oceangpu::oceanPassShaderName(shader)] = webgpuShaderTable(
+        "fragment", oceangpu::oceanPassFragment(SceneShaderApi::WebGpu450, shader), oceangpu::oceanPassInterface(shader));
+  }
+  d["webgpu"] = {{"shaders", forms}};
   return d.dump() + "\n";
 }
 

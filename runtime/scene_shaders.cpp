@@ -4,12 +4,14 @@
 // the wrong side of the plane instead. Vulkan GLSL has no loose uniforms and needs a
 // location on every in/out: its header defines WG_LOCATION(n) as the layout qualifier
 // (the GL headers as nothing, GLSL 330 and ES 300 allow none on varyings) and each
-// program's uniforms become one push-constant block.
-#include <initializer_list>
+// program's uniforms become one push-constant block. The WebGPU form (webgpu_shader_form.h)
+// declares the same interface, varyings included, from the same data.
 #include <string>
+#include <vector>
 
 #include "runtime/scene.h"
 #include "runtime/sky_glsl.h"
+#include "runtime/webgpu_shader_form.h"
 
 namespace wg::rt {
 namespace {
@@ -23,19 +25,63 @@ constexpr const char* kEsHeader =
 constexpr const char* kVulkanHeader =
     "#version 450\n#define WG_CLIP_DISTANCE 1\n#define WG_LOCATION(n) layout(location = n)\n"
     "#define WG_VERTEX_ID gl_VertexIndex\n";
+// WebGPU has no clip distances without an optional feature: the opaque scene discards, as on ES.
+constexpr const char* kWebgpuHeader = "#version 450\n#define WG_LOCATION(n) layout(location = n)\n"
+                                      "#define WG_VERTEX_ID gl_VertexIndex\n";
 
 // A program's uniforms: loose for GL, one push-constant block for Vulkan (the runtime's
 // own passes have a few matrices and vectors, well under the 128 bytes every Vulkan
 // device offers; the block's std140-like offsets are the members' order: mat4 0, then
 // 16-byte aligned vectors).
-std::string uniforms(SceneShaderApi api, const char* block, std::initializer_list<const char*> members) {
+std::string uniforms(SceneShaderApi api, const std::string& block, const std::vector<ShaderMember>& members) {
   std::string s;
   if (api == SceneShaderApi::Vulkan450) {
-    s = std::string("layout(push_constant) uniform ") + block + " {\n";
-    for (const char* m : members) s += std::string("  ") + m + ";\n";
+    s = "layout(push_constant) uniform " + block + " {\n";
+    for (const ShaderMember& m : members) s += "  " + m.type + " " + m.name + ";\n";
     return s + "};\n";
   }
-  for (const char* m : members) s += std::string("uniform ") + m + ";\n";
+  for (const ShaderMember& m : members) s += "uniform " + m.type + " " + m.name + ";\n";
+  return s;
+}
+
+// The programs' constants: u_clip_plane (keep dot(plane, (p, 1)) >= 0) before
+// u_sun_direction in the opaque scene's, at 64 and 80.
+const std::vector<ShaderMember> kSkyConstants = {{"mat4", "u_inverse_view_projection"}, {"vec3", "u_sun_direction"}};
+const std::vector<ShaderMember> kOpaqueConstants = {
+    {"mat4", "u_view_projection"}, {"vec4", "u_clip_plane"}, {"vec3", "u_sun_direction"}};
+
+// The varyings from each program's vertex stage to its fragment stage.
+const std::vector<ShaderVarying> kSkyVaryings = {{0, false, "vec2", "v_ndc", ""},
+                                                 {1, true, "vec3", "v_sun", ""},
+                                                 {2, true, "vec3", "v_sky_scale", ""},
+                                                 {3, true, "float", "v_sky_fade", ""},
+                                                 {4, true, "vec3", "v_ground", ""},
+                                                 {5, true, "vec3", "v_sun_disc", ""}};
+const std::vector<ShaderVarying> kOpaqueVaryings = {{0, false, "vec3", "v_world", ""},
+                                                    {1, false, "vec3", "v_normal", ""},
+                                                    {2, true, "float", "v_material", ""},
+                                                    {3, false, "vec3", "v_sky_irradiance", ""},
+                                                    {4, true, "vec3", "v_sun_irradiance", ""}};
+
+// The scene mesh's attributes (the description's "mesh".attributes), declared with their
+// locations in every API.
+const std::vector<ShaderVarying> kOpaqueMeshInputs = {{0, false, "vec3", "a_position", ""},
+                                                      {1, false, "vec3", "a_normal", ""},
+                                                      {kSceneMaterialLocation, false, "float", "a_material", ""}};
+
+std::string attributeDeclarations(const std::vector<ShaderVarying>& list) {
+  std::string s;
+  for (const ShaderVarying& a : list)
+    s += "layout(location = " + std::to_string(a.location) + ") in " + a.type + " " + a.name + ";\n";
+  return s;
+}
+
+// The GL, ES and Vulkan form of varyings: WG_LOCATION(n) is a layout qualifier on Vulkan only.
+std::string varyingDeclarations(const std::vector<ShaderVarying>& list, const char* direction) {
+  std::string s;
+  for (const ShaderVarying& v : list)
+    s += "WG_LOCATION(" + std::to_string(v.location) + ") " + (v.flat ? "flat " : "") + direction + " " + v.type + " " +
+         v.name + ";\n";
   return s;
 }
 
@@ -47,14 +93,7 @@ vec3 wg_scene_sun() { return u_sun_direction * inversesqrt(max(dot(u_sun_directi
 // The sky: the daylight model of runtime/sky_model.h (runtime/sky_glsl.cpp holds its
 // GLSL) in linear scene radiance (scene.h states the unit). What depends only on the sun
 // is computed by the full-screen triangle's vertices and reaches every pixel flat.
-constexpr const char* kSkyVertex = R"glsl(
-WG_LOCATION(0) out vec2 v_ndc;
-WG_LOCATION(1) flat out vec3 v_sun;
-WG_LOCATION(2) flat out vec3 v_sky_scale;
-WG_LOCATION(3) flat out float v_sky_fade;
-WG_LOCATION(4) flat out vec3 v_ground;
-WG_LOCATION(5) flat out vec3 v_sun_disc;
-void main() {
+constexpr const char* kSkyVertex = R"glsl(void main() {
   // One triangle covering the viewport, at the far plane (depth 1).
   vec2 p = vec2(WG_VERTEX_ID == 1 ? 3.0 : -1.0, WG_VERTEX_ID == 2 ? 3.0 : -1.0);
   v_ndc = p;
@@ -68,14 +107,7 @@ void main() {
 }
 )glsl";
 
-constexpr const char* kSkyFragment = R"glsl(
-WG_LOCATION(0) in vec2 v_ndc;
-WG_LOCATION(1) flat in vec3 v_sun;
-WG_LOCATION(2) flat in vec3 v_sky_scale;
-WG_LOCATION(3) flat in float v_sky_fade;
-WG_LOCATION(4) flat in vec3 v_ground;
-WG_LOCATION(5) flat in vec3 v_sun_disc;
-layout(location = 0) out vec4 o_color;
+constexpr const char* kSkyFragment = R"glsl(layout(location = 0) out vec4 o_color;
 void main() {
   vec4 n = u_inverse_view_projection * vec4(v_ndc, -1.0, 1.0);
   vec4 f = u_inverse_view_projection * vec4(v_ndc, 1.0, 1.0);
@@ -89,16 +121,7 @@ void main() {
 }
 )glsl";
 
-constexpr const char* kOpaqueVertex = R"glsl(
-layout(location = 0) in vec3 a_position;
-layout(location = 1) in vec3 a_normal;
-layout(location = 3) in float a_material;
-WG_LOCATION(0) out vec3 v_world;
-WG_LOCATION(1) out vec3 v_normal;
-WG_LOCATION(2) flat out float v_material;
-WG_LOCATION(3) out vec3 v_sky_irradiance;
-WG_LOCATION(4) flat out vec3 v_sun_irradiance;
-void main() {
+constexpr const char* kOpaqueVertex = R"glsl(void main() {
   v_world = a_position;
   v_normal = a_normal;
   v_material = a_material;
@@ -114,13 +137,7 @@ void main() {
 }
 )glsl";
 
-constexpr const char* kOpaqueFragment = R"glsl(
-WG_LOCATION(0) in vec3 v_world;
-WG_LOCATION(1) in vec3 v_normal;
-WG_LOCATION(2) flat in float v_material;
-WG_LOCATION(3) in vec3 v_sky_irradiance;
-WG_LOCATION(4) flat in vec3 v_sun_irradiance;
-layout(location = 0) out vec4 o_color;
+constexpr const char* kOpaqueFragment = R"glsl(layout(location = 0) out vec4 o_color;
 
 vec3 terrainAlbedo(vec3 p) {
   // Pool tiles (1 m, dark grout) on the floor and walls; sand on the shore slope.
@@ -186,25 +203,70 @@ void main() {
 }  // namespace
 
 std::string sceneShaderHeader(SceneShaderApi api) {
-  return api == SceneShaderApi::Es300 ? kEsHeader : api == SceneShaderApi::Gl330 ? kGlHeader : kVulkanHeader;
+  switch (api) {
+    case SceneShaderApi::Gl330: return kGlHeader;
+    case SceneShaderApi::Es300: return kEsHeader;
+    case SceneShaderApi::Vulkan450: return kVulkanHeader;
+    case SceneShaderApi::WebGpu450: return kWebgpuHeader;
+  }
+  return kGlHeader;
 }
 
+std::vector<SceneShaderInterface> sceneShaderInterfaces(const GbufferInputLocations& gbuffer) {
+  // The G-buffer's inputs are the graph's varyings: a WebGPU host sets their locations by
+  // these defines (the manifest's "webgpu".varyings), the text defaults them to `gbuffer`.
+  const std::vector<ShaderVarying> gbufferInputs = {
+      {gbuffer.worldPosition, false, "vec3", "v_world_position", "WG_LOCATION_V_WORLD_POSITION"},
+      {gbuffer.normal, false, "vec3", "v_normal", "WG_LOCATION_V_NORMAL"},
+      {gbuffer.uv, false, "vec2", "v_uv", "WG_LOCATION_V_UV"}};
+  return {{"sky_vertex", "vertex", {"SkyConstants", kSkyConstants, {}, {}, kSkyVaryings}},
+          {"sky_fragment", "fragment", {"SkyConstants", kSkyConstants, {}, kSkyVaryings, {}}},
+          {"opaque_vertex", "vertex", {"OpaqueConstants", kOpaqueConstants, {}, kOpaqueMeshInputs, kOpaqueVaryings}},
+          {"opaque_fragment", "fragment", {"OpaqueConstants", kOpaqueConstants, {}, kOpaqueVaryings, {}}},
+          {"fullscreen_vertex", "vertex", {}},
+          {"water_gbuffer_fragment", "fragment", {"", {}, {}, gbufferInputs, {}}}};
+}
+
+namespace {
+
+// Every scene shader in its WebGPU form: the declarations of its interface, the library it
+// uses, and its body (a vertex body inside the clip-space wrapper).
+SceneShaderSources webgpuSceneShaderSources(const GbufferInputLocations& gbuffer) {
+  const std::vector<SceneShaderInterface> interfaces = sceneShaderInterfaces(gbuffer);
+  auto form = [&](size_t k, const std::string& library, const char* body) {
+    const bool vertex = interfaces[k].stage == std::string("vertex");
+    return kWebgpuHeader + webgpuDeclarations(interfaces[k].interface) + library + "\n" +
+           (vertex ? webgpuVertexBodyBefore() : "") + body + (vertex ? webgpuVertexBodyAfter() : "");
+  };
+  const std::string skyModel = skyGlsl() + kSceneSun;
+  SceneShaderSources s;
+  s.skyVertex = form(0, skyModel, kSkyVertex);
+  s.skyFragment = form(1, skyModel, kSkyFragment);
+  s.opaqueVertex = form(2, skyModel, kOpaqueVertex);
+  s.opaqueFragment = form(3, kSceneSun, kOpaqueFragment);
+  s.fullscreenVertex = form(4, "", kFullscreenVertex);
+  s.waterGbufferFragment = form(5, "", kWaterGbufferFragment);
+  return s;
+}
+
+}  // namespace
+
 SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer) {
+  if (api == SceneShaderApi::WebGpu450) return webgpuSceneShaderSources(gbuffer);
   const std::string h = sceneShaderHeader(api);
-  const std::string sky = uniforms(api, "SkyConstants", {"mat4 u_inverse_view_projection", "vec3 u_sun_direction"});
-  // u_clip_plane (keep dot(plane, (p, 1)) >= 0) before u_sun_direction: at 64 and 80.
-  const std::string opaque =
-      uniforms(api, "OpaqueConstants", {"mat4 u_view_projection", "vec4 u_clip_plane", "vec3 u_sun_direction"});
+  const std::string sky = uniforms(api, "SkyConstants", kSkyConstants);
+  const std::string opaque = uniforms(api, "OpaqueConstants", kOpaqueConstants);
   auto in = [&](int location, const char* declaration) {
     return (api == SceneShaderApi::Vulkan450 ? "layout(location = " + std::to_string(location) + ") " : std::string()) +
            "in " + declaration + ";\n";
   };
   SceneShaderSources s;
   const std::string skyModel = skyGlsl() + kSceneSun;
-  s.skyVertex = h + sky + skyModel + kSkyVertex;
-  s.skyFragment = h + sky + skyModel + kSkyFragment;
-  s.opaqueVertex = h + opaque + skyModel + kOpaqueVertex;
-  s.opaqueFragment = h + opaque + kSceneSun + kOpaqueFragment;
+  s.skyVertex = h + sky + skyModel + "\n" + varyingDeclarations(kSkyVaryings, "out") + kSkyVertex;
+  s.skyFragment = h + sky + skyModel + "\n" + varyingDeclarations(kSkyVaryings, "in") + kSkyFragment;
+  s.opaqueVertex = h + opaque + skyModel + "\n" + attributeDeclarations(kOpaqueMeshInputs) +
+                   varyingDeclarations(kOpaqueVaryings, "out") + kOpaqueVertex;
+  s.opaqueFragment = h + opaque + kSceneSun + "\n" + varyingDeclarations(kOpaqueVaryings, "in") + kOpaqueFragment;
   s.fullscreenVertex = h + kFullscreenVertex;
   s.waterGbufferFragment = h + in(gbuffer.worldPosition, "vec3 v_world_position") + in(gbuffer.normal, "vec3 v_normal") +
                            in(gbuffer.uv, "vec2 v_uv") + kWaterGbufferFragment;

@@ -18,54 +18,34 @@ const OCEAN_PASS_SHADERS = ['ocean_evolve', 'ocean_evolve_displacement', 'ocean_
 const OCEAN_MAPS = ['displacement', 'slopes', 'foam'];
 const SCALARS = { float: 'setFloat32', int: 'setInt32', uint: 'setUint32' };
 
-// One ES 3.00 pass shader of the description as the GLSL 4.50 naga reads: its loose scalar
-// uniforms in one std140 block at binding 0 (each 4 bytes, in declaration order), each
-// sampler a texture at the next binding read through one nearest sampler (every look-up is
-// texelFetch, which naga writes as textureLoad), its outputs as they are.
-export function oceanGlsl450ForNaga(name, source) {
-  const head = /^#version 300 es\n(?:precision \w+ \w+;\n)*/.exec(source);
-  if (!head) throw new WebgpuOceanError(`${name} does not start with "#version 300 es"`);
-  let body = source.slice(head[0].length);
-  const uniforms = [], textures = [];
-  // The samplers first (a variant's #if may leave one out: oceanPassesWgsl keeps those naga
-  // binds), then the scalars, whose block goes where the first one was.
-  body = body.replace(/^uniform highp (u?)sampler2D (\w+);$/gm, (line, u, texture) => {
-    textures.push({ name: texture, binding: 1 + textures.length, sampleType: u ? 'uint' : 'unfilterable-float' });
-    return `layout(set = 0, binding = ${textures.length}) uniform ${u}texture2D ${texture};`;
-  });
-  for (const t of textures)
-    body = body.replace(new RegExp(`texelFetch\\(${t.name},`, 'g'),
-      `texelFetch(${t.sampleType === 'uint' ? 'u' : ''}sampler2D(${t.name}, wg_nearest),`);
-  let blockAt = -1;
-  body = body.replace(/^uniform (?:highp )?(float|int|uint) (\w+);\n/gm, (line, type, uniform, at) => {
-    uniforms.push({ name: uniform, type, offset: 4 * uniforms.length });
-    if (blockAt < 0) blockAt = at;
-    return '';
-  });
-  const samplerBinding = 1 + textures.length;
-  const block = uniforms.length
-    ? `layout(set = 0, binding = 0, std140) uniform WgOceanPass {\n${uniforms.map((u) => `  ${u.type} ${u.name};\n`).join('')}};\n` : '';
-  const declarations = `${block}layout(set = 0, binding = ${samplerBinding}) uniform sampler wg_nearest;\n`;
-  if (blockAt < 0) blockAt = body.search(/^layout\(location/m);
-  body = body.slice(0, blockAt) + declarations + body.slice(blockAt);
-  return { glsl: `#version 450\n${body}`, uniforms, textures, samplerBinding, size: Math.max(16, Math.ceil((4 * uniforms.length) / 16) * 16) };
+// A pass shader's WebGPU form from the description (description.webgpu.shaders[name]:
+// runtime/webgpu_shader_form.h), as this runner binds it: its scalar uniforms with their
+// offsets in the block at binding 0, each texture's binding and sample type, the nearest
+// sampler's binding (every look-up is texelFetch, which naga writes as textureLoad).
+export function oceanPassForm(description, name) {
+  const form = description.webgpu?.shaders?.[name];
+  if (!form || typeof form.glsl !== 'string')
+    throw new WebgpuOceanError(`the scene description has no WebGPU form of '${name}' (description.webgpu.shaders)`);
+  const block = form.uniform_block;
+  return {
+    glsl: form.glsl,
+    uniforms: block ? block.members.map(({ name, type, offset }) => ({ name, type, offset })) : [],
+    size: block ? block.size : 16,
+    textures: form.textures.map((t) => ({ name: t.name, binding: t.binding, sampleType: t.sample_type })),
+    samplerBinding: form.samplers[0]?.binding,
+  };
 }
 
 // Every pass shader of the description as {wgsl, uniforms, textures, samplerBinding, size}.
 export function oceanPassesWgsl(description, naga) {
   const out = {};
   for (const name of OCEAN_PASS_SHADERS) {
-    const source = description.shaders?.[name];
-    if (typeof source !== 'string') throw new WebgpuOceanError(`the scene description has no shader '${name}'`);
-    const pass = oceanGlsl450ForNaga(name, source);
+    const pass = oceanPassForm(description, name);
     let module, info;
     try {
       module = naga.parseGlsl(pass.glsl, { stage: 'fragment' });
       info = naga.validate(module);
-      const wgsl = naga.writeWgsl(module, info, {});
-      // The textures the variant declares (those inside an #if it leaves out are gone).
-      const bound = new Set([...wgsl.matchAll(/@binding\((\d+)\)/g)].map((m) => Number(m[1])));
-      out[name] = { ...pass, textures: pass.textures.filter((t) => bound.has(t.binding)), wgsl };
+      out[name] = { ...pass, wgsl: naga.writeWgsl(module, info, {}) };
     } catch (e) {
       const text = String(e.formatted || e.message || e).replace(/\u001b\[[0-9;]*m/g, '');
       throw new WebgpuOceanError(`naga could not translate the runtime's ${name}: ${text.split('\n').slice(0, 6).join(' ')}`);

@@ -1,12 +1,15 @@
 // The runtime's own shaders (sky, lit opaque scene, deferred water's G-buffer) for the WebGPU
 // runner. watergraph's WGSL emitter writes the graph's shaders; these few are the runtime's,
-// which the scene description (`watergraph scene`) carries as GLSL ES 3.00. They are put in the
-// GLSL 4.50 form naga's GLSL front end reads (one uniform block at group 0 binding 0, locations on
-// every varying, gl_VertexIndex) and translated to WGSL by naga (npm naga-wasm, the validator this
-// client already pins). Each vertex stage then converts its clip position as the graph's vs_main
-// does (manifest "webgpu".conventions: y negated, z' = (z + w) / 2), so every target shares the
-// graph's conventions: row 0 is the view's bottom row, depths are OpenGL's window depths.
-// ES 3.00 has no clip distances: the opaque fragment shader discards on the clipped side of
+// which the scene description (`watergraph scene`) carries in their WebGPU form
+// (description.webgpu.shaders, runtime/webgpu_shader_form.h, docs/webgpu.md): GLSL 4.50 that
+// naga's GLSL front end reads as it is, with a declaration table (the uniform block's members
+// and byte offsets, textures, samplers, varyings' locations). naga (npm naga-wasm, the validator
+// this client already pins) translates the text to WGSL unchanged; the runner lays out the
+// uniform buffer from the table and never reads the shader text. The runtime wrote each vertex
+// stage to convert its clip position as the graph's vs_main does (manifest
+// "webgpu".conventions: y negated, z' = (z + w) / 2), so every target shares the graph's
+// conventions: row 0 is the view's bottom row, depths are OpenGL's window depths. WebGPU has
+// no clip distances here: the opaque fragment shader discards on the clipped side of
 // u_clip_plane (the desktop runtime clips with gl_ClipDistance; the two differ within a pixel).
 export class SceneShaderError extends Error {
   constructor(message) {
@@ -15,57 +18,36 @@ export class SceneShaderError extends Error {
   }
 }
 
-// Which description shader is which stage.
-const STAGES = { sky_vertex: 'vertex', sky_fragment: 'fragment', opaque_vertex: 'vertex', opaque_fragment: 'fragment',
-  water_gbuffer_fragment: 'fragment' };
+// The description shaders the runner draws with.
+const SCENE_SHADERS = ['sky_vertex', 'sky_fragment', 'opaque_vertex', 'opaque_fragment', 'water_gbuffer_fragment'];
 
-// The uniform block's members in declaration order with their std140 offsets, which the
-// runner fills (a mat4 at 0, then vectors each 16-byte aligned: every program here has a
-// mat4 first and vec3/vec4 after).
-function blockLayout(members) {
-  let offset = 0;
-  const layout = [];
-  for (const { type, name } of members) {
-    if (!['mat4', 'vec4', 'vec3'].includes(type)) throw new SceneShaderError(`runtime uniform ${name}: type ${type} has no layout here`);
-    layout.push({ name, type, offset });
-    offset += type === 'mat4' ? 64 : 16;
-  }
-  return { members: layout, size: offset };
+// The WebGPU form of a description shader: {stage, entry_point, glsl, uniform_block, textures,
+// samplers, inputs, outputs}.
+export function webgpuFormOf(description, name) {
+  const form = description.webgpu?.shaders?.[name];
+  if (!form || typeof form.glsl !== 'string')
+    throw new SceneShaderError(`the scene description has no WebGPU form of '${name}' (description.webgpu.shaders: write it with this watergraph's \`scene\`)`);
+  return form;
 }
 
-// One ES 3.00 shader of the description as naga-readable GLSL 4.50. `inputs` gives the
-// location of each `in` varying declared without one (the G-buffer reads the graph's
-// varyings at the locations of the manifest's "webgpu".varyings).
-export function glsl450ForNaga(name, source, inputs = {}) {
-  const stage = STAGES[name];
-  if (!stage) throw new SceneShaderError(`the scene description has no runtime shader '${name}' this runner uses`);
-  const head = /^#version 300 es\n(?:precision \w+ \w+;\n)*/.exec(source);
-  if (!head) throw new SceneShaderError(`${name} does not start with "#version 300 es"`);
-  let body = source.slice(head[0].length);
-  const members = [];
-  let blockAt = -1;
-  body = body.replace(/^uniform (\w+) (\w+);\n/gm, (line, type, uniform, at) => {
-    members.push({ type, name: uniform });
-    if (blockAt < 0) blockAt = at;
-    return '';
-  });
-  if (members.length) {
-    const block = `layout(set = 0, binding = 0, std140) uniform WgRuntimeConstants {\n${members.map((m) => `  ${m.type} ${m.name};\n`).join('')}};\n`;
-    body = body.slice(0, blockAt) + block + body.slice(blockAt);
+// The naga defines that place a form's inputs whose locations the host chooses (the G-buffer
+// reads the graph's varyings where its vertex stage writes them): `locations` maps each such
+// input's name to its location.
+export function locationDefines(name, form, locations) {
+  const defines = {};
+  for (const input of form.inputs) {
+    if (!input.define) continue;
+    if (!(input.name in locations)) throw new SceneShaderError(`${name}: no location for its input ${input.name}`);
+    defines[input.define] = String(locations[input.name]);
   }
-  body = body.replace('#define WG_LOCATION(n)\n', '#define WG_LOCATION(n) layout(location = n)\n')
-    .replace('#define WG_VERTEX_ID gl_VertexID\n', '#define WG_VERTEX_ID gl_VertexIndex\n');
-  body = body.replace(/^in (\w+) (\w+);$/gm, (line, type, varying) => {
-    if (!(varying in inputs)) throw new SceneShaderError(`${name}: no location for its input ${varying}`);
-    return `layout(location = ${inputs[varying]}) in ${type} ${varying};`;
-  });
-  if (stage === 'vertex') {
-    if (!/\bvoid main\(\) \{/.test(body)) throw new SceneShaderError(`${name} has no main()`);
-    body = body.replace(/\bvoid main\(\) \{/, 'void wg_runtime_main() {') +
-      '\nvoid main() {\n  wg_runtime_main();\n' +
-      '  gl_Position = vec4(gl_Position.x, -gl_Position.y, 0.5 * (gl_Position.z + gl_Position.w), gl_Position.w);\n}\n';
-  }
-  return { stage, glsl: `#version 450\n${body}`, uniforms: blockLayout(members) };
+  return defines;
+}
+
+// A form's uniform block as the runner fills it: {members: [{name, type, offset}], size}.
+function blockLayout(form) {
+  const block = form.uniform_block;
+  return block ? { members: block.members.map(({ name, type, offset }) => ({ name, type, offset })), size: block.size }
+    : { members: [], size: 0 };
 }
 
 // Every runtime shader the passes use, as WGSL modules (entry point "main") with their uniform
@@ -75,16 +57,15 @@ export function glsl450ForNaga(name, source, inputs = {}) {
 // SceneShaderError with naga's message when a shader does not translate.
 export function sceneShadersWgsl(description, naga, gbufferInputs = null) {
   const out = {};
-  for (const name of Object.keys(STAGES)) {
+  for (const name of SCENE_SHADERS) {
     if (name === 'water_gbuffer_fragment' && !gbufferInputs) continue;
-    const source = description.shaders?.[name];
-    if (typeof source !== 'string') throw new SceneShaderError(`the scene description has no shader '${name}'`);
-    const { stage, glsl, uniforms } = glsl450ForNaga(name, source, gbufferInputs ?? {});
+    const form = webgpuFormOf(description, name);
+    const defines = locationDefines(name, form, gbufferInputs ?? {});
     let module, info;
     try {
-      module = naga.parseGlsl(glsl, { stage });
+      module = naga.parseGlsl(form.glsl, { stage: form.stage, defines });
       info = naga.validate(module);
-      out[name] = { wgsl: naga.writeWgsl(module, info, {}), uniforms };
+      out[name] = { wgsl: naga.writeWgsl(module, info, {}), uniforms: blockLayout(form) };
     } catch (e) {
       const text = String(e.formatted || e.message || e).replace(/\u001b\[[0-9;]*m/g, '');
       throw new SceneShaderError(`naga could not translate the runtime's ${name}: ${text.split('\n').slice(0, 6).join(' ')}`);

@@ -10,6 +10,9 @@
 //     declares), and the library's scanner of code text applied to generated code
 //     (GlslLibrary::itemsFor, removed; libraryIdentifiers reads only the library's own
 //     hand-written items);
+//   - the WebGPU client's regexes over the runtime's shaders (clients/webgpu): the scene
+//     description now carries each in the form naga reads with a declaration table
+//     (runtime/webgpu_shader_form.h), which the client binds from;
 //   - codegen/plan_body's readsName (which temporaries an expression's text names),
 //     isGlslName (whether an output's text is a name), the search of the kept text for the
 //     names an op declared (forgetUnread), and a fetch's coordinate compared with the screen
@@ -47,6 +50,11 @@ const char* const kForbidden[] = {
     "readsName(", "isGlslName(", "kept.find(", "f.coord == kSurfaceScreenUv",
     // the frequency report's count of the fragment lines' text
     "glsl.of(", "frag->body.find(", "codegen/glsl_cost.h",
+    // the WebGPU client's rewriting of the runtime's ES shaders for naga: uniform lines into a
+    // block, `in` lines given locations, the header's macros, main() wrapped, samplers into
+    // textures, texelFetch calls, bindings read back out of naga's WGSL
+    "glsl450ForNaga", "replace(/^uniform", "replace(/^in ", "replace('#define WG_", "void main\\(\\)",
+    "RegExp(`texelFetch", "matchAll(/@binding", "#version 300 es\\n(?:precision",
 };
 
 // Names allowed only in the files listed (paths relative to the source root).

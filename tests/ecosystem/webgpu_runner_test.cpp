@@ -274,7 +274,7 @@ TEST(WebgpuSceneShaders, ChecksPassUnderNode) {
   CmdResult t = sh("cd " + test::shellQuote(client) + " && WG_SCENE_DESCRIPTION=" + test::shellQuote(dir / "scene.json") +
                    " timeout 50 node --test test/scene_shaders.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 6"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 7"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 #endif

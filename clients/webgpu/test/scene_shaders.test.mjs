@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { test } from 'node:test';
 import * as naga from 'naga-wasm';
-import { glsl450ForNaga, sceneShadersWgsl, SceneShaderError } from '../watergraph-webgpu-scene-shaders.js';
+import { locationDefines, sceneShadersWgsl, SceneShaderError, webgpuFormOf } from '../watergraph-webgpu-scene-shaders.js';
 import { renderGraph, WebgpuRunnerError } from '../watergraph-webgpu.js';
 import { oceanPassesWgsl } from '../watergraph-webgpu-ocean.js';
 
@@ -35,31 +35,35 @@ test('the uniform block has the std140 offsets the runner fills', () => {
   assert.match(s.opaque_vertex.wgsl, /@group\(0\) @binding\(0\)\s*var<uniform>/);
 });
 
-test('vertex stages convert clip space as the graph\'s vs_main does; fragments are left alone', () => {
-  const v = glsl450ForNaga('sky_vertex', description.shaders.sky_vertex);
-  assert.match(v.glsl, /^#version 450\n/);
-  assert.match(v.glsl, /void wg_runtime_main\(\) \{/);
-  assert.match(v.glsl, /gl_Position = vec4\(gl_Position\.x, -gl_Position\.y, 0\.5 \* \(gl_Position\.z \+ gl_Position\.w\), gl_Position\.w\);/);
-  assert.match(v.glsl, /#define WG_VERTEX_ID gl_VertexIndex\n/);
-  assert.match(v.glsl, /#define WG_LOCATION\(n\) layout\(location = n\)\n/);
-  const f = glsl450ForNaga('opaque_fragment', description.shaders.opaque_fragment);
-  assert.doesNotMatch(f.glsl, /wg_runtime_main/);
-  assert.doesNotMatch(f.glsl, /^uniform /m);
-  // ES 3.00 has no clip distances: the fragment stage discards on the clipped side.
-  assert.match(f.glsl, /discard/);
+test('vertex stages convert clip space as the graph\'s vs_main does; fragments discard on the clipped side', () => {
+  // The runtime wrote the WebGPU forms; naga's WGSL of each vertex stage flips y and remaps z.
+  const s = sceneShadersWgsl(description, naga);
+  for (const name of ['sky_vertex', 'opaque_vertex']) {
+    assert.equal(webgpuFormOf(description, name).stage, 'vertex');
+    assert.match(s[name].wgsl, /fn wg_runtime_main\(\)/, name);
+    assert.match(s[name].wgsl, /-\(_e\d+\.y\)/, name);
+  }
+  assert.doesNotMatch(s.opaque_fragment.wgsl, /wg_runtime_main/);
+  // No clip distances in WebGPU here: the fragment stage discards.
+  assert.match(s.opaque_fragment.wgsl, /discard/);
+});
+
+test('the G-buffer\'s input locations are naga defines the host sets from the graph\'s varyings', () => {
+  const form = webgpuFormOf(description, 'water_gbuffer_fragment');
+  assert.deepEqual(locationDefines('g', form, { v_world_position: 4, v_normal: 0, v_uv: 7 }),
+    { WG_LOCATION_V_WORLD_POSITION: '4', WG_LOCATION_V_NORMAL: '0', WG_LOCATION_V_UV: '7' });
+  const s = sceneShadersWgsl(description, naga, { v_world_position: 4, v_normal: 0, v_uv: 7 });
+  assert.match(s.water_gbuffer_fragment.wgsl, /@location\(4\) v_world_position: vec3<f32>, @location\(0\) v_normal: vec3<f32>, @location\(7\) v_uv: vec2<f32>/);
 });
 
 test('what the runner cannot take is a SceneShaderError naming it', () => {
-  const without = { ...description, shaders: { ...description.shaders } };
-  delete without.shaders.sky_fragment;
-  assert.throws(() => sceneShadersWgsl(without, naga), (e) => e instanceof SceneShaderError && /no shader 'sky_fragment'/.test(e.message));
+  const without = { ...description, webgpu: { shaders: { ...description.webgpu.shaders } } };
+  delete without.webgpu.shaders.sky_fragment;
+  assert.throws(() => sceneShadersWgsl(without, naga), (e) => e instanceof SceneShaderError && /no WebGPU form of 'sky_fragment'/.test(e.message));
   assert.throws(() => sceneShadersWgsl(description, naga, { v_world_position: 0, v_uv: 2 }),
     (e) => e instanceof SceneShaderError && /water_gbuffer_fragment: no location for its input v_normal/.test(e.message));
-  assert.throws(() => glsl450ForNaga('sky_vertex', '#version 330 core\nvoid main() {}\n'),
-    (e) => e instanceof SceneShaderError && /does not start with "#version 300 es"/.test(e.message));
-  assert.throws(() => glsl450ForNaga('opaque_vertex', '#version 300 es\nuniform float u_x;\nvoid main() {}\n'),
-    (e) => e instanceof SceneShaderError && /u_x: type float has no layout here/.test(e.message));
-  const broken = { ...description, shaders: { ...description.shaders, opaque_fragment: '#version 300 es\nvoid main() { undeclared = 1.0; }\n' } };
+  const brokenForm = { ...webgpuFormOf(description, 'opaque_fragment'), glsl: '#version 450\nvoid main() { undeclared = 1.0; }\n' };
+  const broken = { ...description, webgpu: { shaders: { ...description.webgpu.shaders, opaque_fragment: brokenForm } } };
   assert.throws(() => sceneShadersWgsl(broken, naga), (e) => e instanceof SceneShaderError && /naga could not translate the runtime's opaque_fragment/.test(e.message));
 });
 
@@ -77,8 +81,10 @@ test('the ocean simulation\'s pass shaders become WGSL fragment modules naga val
     assert.match(p.wgsl, /@fragment\s+fn main\(/, name);
     assert.ok(p.wgsl.includes('textureLoad('), name);
   }
-  // The variants keep only the textures they read: the two-texture stage reads u_b, the single one not.
-  assert.deepEqual(passes.ocean_stockham.textures.map((t) => t.name), ['u_a', 'u_twiddle', 'u_b']);
+  // The bindings come from each form's table: the two-texture stage reads u_b, the single one not.
+  assert.deepEqual(passes.ocean_stockham.textures.map((t) => [t.name, t.binding]), [['u_a', 1], ['u_twiddle', 2], ['u_b', 3]]);
+  assert.equal(passes.ocean_stockham.samplerBinding, 4);
+  assert.equal(passes.ocean_stockham.size, 16);
   assert.deepEqual(passes.ocean_stockham_single.textures.map((t) => t.name), ['u_a', 'u_twiddle']);
   assert.deepEqual(passes.ocean_evolve.uniforms.map((u) => [u.name, u.type, u.offset]), [['u_tau', 'uint', 0], ['u_dk', 'float', 4], ['u_n', 'int', 8]]);
   assert.equal(passes.ocean_evolve.textures.find((t) => t.name === 'u_frequency').sampleType, 'uint');
