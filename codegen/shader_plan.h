@@ -47,7 +47,7 @@ struct VaryingInfo {
 struct OceanMapRef {
   int ocean = 0;
   int cascade = 0;
-  int map = 0;  // kDisplacementMap, kSlopeMap or kFoamMap
+  int map = 0;  // kDisplacementMap, kSlopeMap, kFoamMap or kMomentsMap
   bool operator==(const OceanMapRef&) const = default;
 };
 

@@ -15,9 +15,13 @@ namespace wg::ocean {
 //   displacement (RGBA32F): (lambda Dx, h, lambda Dz, lambda dDx/dz)
 //   slopes (RGBA32F):       (dh/dx, dh/dz, lambda dDx/dx, lambda dDz/dz)
 //   foam (R32F):            the persistent foam in [0, 1] (core/ocean_foam.h)
-enum OceanMap : int { kDisplacementMap = 0, kSlopeMap = 1, kFoamMap = 2 };
-inline constexpr int kOceanMapCount = 3;
-inline constexpr const char* kOceanMapNames[kOceanMapCount] = {"displacement", "slopes", "foam"};
+//   moments (RGBA32F):      (dh/dx^2, dh/dz^2, dh/dx dh/dz, lambda dDx/dz), read only by the
+//                           filtered reader (ocean_surface's `filter`); a cascade whose moments
+//                           a shader reads is filtered: its slope and moments maps carry mip
+//                           pyramids of 2x2 box means down to 1 x 1 (nodes/ocean_filter.h)
+enum OceanMap : int { kDisplacementMap = 0, kSlopeMap = 1, kFoamMap = 2, kMomentsMap = 3 };
+inline constexpr int kOceanMapCount = 4;
+inline constexpr const char* kOceanMapNames[kOceanMapCount] = {"displacement", "slopes", "foam", "moments"};
 
 struct OceanSettings {
   SpectrumSettings spectrum;

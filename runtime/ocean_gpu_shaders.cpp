@@ -80,6 +80,9 @@ layout(location = 0) out vec4 o_displacement;
 #if WG_OCEAN_SLOPES
 layout(location = 1) out vec4 o_slopes;
 #endif
+#if WG_OCEAN_MOMENTS
+layout(location = 2) out vec4 o_moments;
+#endif
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
@@ -92,6 +95,12 @@ void main() {
   // which a sum of per-cascade Js is not.
   o_displacement = vec4(u_lambda * dx, h, u_lambda * dz, u_lambda * dxz);
   o_slopes = vec4(sx, sz, u_lambda * dxx, u_lambda * dzz);
+#if WG_OCEAN_MOMENTS
+  // What the filtered reader needs beside the mean slopes: the slopes' second moments
+  // (their box means minus the squared mean slopes are the variance a footprint averages
+  // away) and lambda dDx/dz, the normal's one field the slope map does not hold.
+  o_moments = vec4(sx * sx, sz * sz, sx * sz, u_lambda * dxz);
+#endif
 #else
   // Nothing reads the slopes, so nothing reads w either (wg_ocean_normal and
   // wg_ocean_jacobian take both maps).
@@ -123,6 +132,24 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   float a = texelFetch(u_current, p, 0).r, b = texelFetch(u_next, p, 0).r;
   o_foam = vec4(a + (b - a) * u_fraction, 0.0, 0.0, 1.0);
+}
+)glsl";
+
+// One level of the filtered reader's pyramid: each texel the mean of the 2x2 texels of the
+// level above, ((t00 + t10) + (t01 + t11)) / 4 (the product by 1/4 is exact). Each sampler
+// shows the level above alone, as its level 0 (GL: the texture's base and max level; Vulkan
+// and WebGPU: a view of that level), while the pass draws into the next level.
+constexpr const char* kDownsampleBody = R"glsl(
+layout(location = 0) out vec4 o_slopes;
+layout(location = 1) out vec4 o_moments;
+
+void main() {
+  ivec2 q = 2 * ivec2(gl_FragCoord.xy);
+  ivec2 qx = q + ivec2(1, 0), qz = q + ivec2(0, 1), qxz = q + ivec2(1, 1);
+  o_slopes = ((texelFetch(u_slopes, q, 0) + texelFetch(u_slopes, qx, 0)) +
+              (texelFetch(u_slopes, qz, 0) + texelFetch(u_slopes, qxz, 0))) * 0.25;
+  o_moments = ((texelFetch(u_moments, q, 0) + texelFetch(u_moments, qx, 0)) +
+               (texelFetch(u_moments, qz, 0) + texelFetch(u_moments, qxz, 0))) * 0.25;
 }
 )glsl";
 
@@ -162,6 +189,8 @@ OceanPassText oceanPassText(OceanPass pass, const OceanPassVariant& v) {
               kFoamStepBody};
     case OceanPass::FoamBlend:
       return {{{"sampler2D", "u_current"}, {"sampler2D", "u_next"}}, {{"float", "u_fraction"}}, kFoamBlendBody};
+    case OceanPass::Downsample:
+      return {{{"sampler2D", "u_slopes"}, {"sampler2D", "u_moments"}}, {}, kDownsampleBody};
   }
   throw std::logic_error("an unknown ocean pass");
 }
@@ -191,16 +220,18 @@ ShaderInterface oceanPassInterface(OceanPass pass, const OceanPassVariant& varia
 std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant) {
   const OceanPassText t = oceanPassText(pass, variant);
   std::string s = sceneShaderHeader(api) + "#define WG_OCEAN_SLOPES " + (variant.slopes ? "1" : "0") +
-                  "\n#define WG_OCEAN_JACOBIAN_ONLY " + (variant.jacobianOnly ? "1" : "0") + "\n";
+                  "\n#define WG_OCEAN_JACOBIAN_ONLY " + (variant.jacobianOnly ? "1" : "0") +
+                  "\n#define WG_OCEAN_MOMENTS " + (variant.moments ? "1" : "0") + "\n";
   // WebGPU: the declarations of the pass's interface (runtime/webgpu_shader_form.h).
   if (api == SceneShaderApi::WebGpu450) return s + webgpuDeclarations(oceanPassInterface(pass, variant)) + t.body;
   const bool vulkan = api == SceneShaderApi::Vulkan450;
   for (size_t i = 0; i < t.samplers.size(); ++i)
     s += (vulkan ? "layout(set = 0, binding = " + std::to_string(i) + ") " : std::string()) + "uniform highp " +
          t.samplers[i].type + " " + t.samplers[i].name + ";\n";
-  if (vulkan) s += "layout(push_constant) uniform WgOceanPassConstants {\n";
+  const bool block = vulkan && !t.constants.empty();  // GLSL has no empty block
+  if (block) s += "layout(push_constant) uniform WgOceanPassConstants {\n";
   for (const OceanDeclaration& c : t.constants) s += std::string(vulkan ? "  " : "uniform ") + c.type + " " + c.name + ";\n";
-  if (vulkan) s += "};\n";
+  if (block) s += "};\n";
   return s + t.body;
 }
 
@@ -223,6 +254,8 @@ NamedOceanPass namedOceanPass(OceanPassShader shader) {
     case OceanPassShader::PackDisplacement: return {"ocean_pack_displacement", OceanPass::Pack, {false, false}};
     case OceanPassShader::FoamStep: return {"ocean_foam_step", OceanPass::FoamStep, {}};
     case OceanPassShader::FoamBlend: return {"ocean_foam_blend", OceanPass::FoamBlend, {}};
+    case OceanPassShader::PackFiltered: return {"ocean_pack_filtered", OceanPass::Pack, {true, false, true}};
+    case OceanPassShader::Downsample: return {"ocean_downsample", OceanPass::Downsample, {}};
   }
   throw std::logic_error("an ocean pass shader that does not exist");
 }

@@ -18,12 +18,13 @@
 
 namespace wg::rt::oceangpu {
 
-enum class OceanPass { Evolve, Stockham, Pack, FoamStep, FoamBlend };
+enum class OceanPass { Evolve, Stockham, Pack, FoamStep, FoamBlend, Downsample };
 
 // The defines that choose a cascade pass's variant (the foam passes take none).
 struct OceanPassVariant {
   bool slopes = false;        // WG_OCEAN_SLOPES: the second texture (slopes, the Jacobian's fields) too
   bool jacobianOnly = false;  // WG_OCEAN_JACOBIAN_ONLY: the second texture's fields alone, in the first output
+  bool moments = false;       // WG_OCEAN_MOMENTS (Pack with slopes): a third output, the slopes' moments map
 };
 
 // The sampler names of `pass` in binding order, for this variant (a sampler the variant
@@ -38,7 +39,7 @@ ShaderInterface oceanPassInterface(OceanPass pass, const OceanPassVariant& varia
 // the declarations and the body.
 std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant = {});
 
-// The nine programs the runtimes link, by name: the scene description (`watergraph scene`)
+// The eleven programs the runtimes link, by name: the scene description (`watergraph scene`)
 // carries their es300 forms under these names for the web clients, which run the same
 // passes in WebGL 2 and (translated by naga) in WebGPU.
 enum class OceanPassShader {
@@ -51,8 +52,10 @@ enum class OceanPassShader {
   PackDisplacement,    // texture A into the displacement map alone
   FoamStep,            // one foam step from the Jacobian's fields
   FoamBlend,           // the foam at the frame's time between two steps
+  PackFiltered,        // Pack, and the moments map (the filtered reader's second moments) at level 0
+  Downsample,          // level l of the slope and moments maps, the 2x2 box mean of level l - 1
 };
-inline constexpr int kOceanPassShaderCount = 9;
+inline constexpr int kOceanPassShaderCount = 11;
 
 // "ocean_evolve", "ocean_evolve_displacement", ...
 const char* oceanPassShaderName(OceanPassShader shader);
