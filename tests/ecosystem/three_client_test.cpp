@@ -638,6 +638,22 @@ TEST_F(ThreeClient, HostileManifestsAreRefusedNamingTheField) {
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 
+// The spectral ocean's plumbing without a browser (clients/three/test/ocean.test.mjs under
+// node --test): the pass order of a filtered and an unfiltered cascade, the pyramid's level
+// counts, a read moments map making its cascade filtered, and the raw WebGL of a filtered
+// cascade's pyramid replayed as GL state: the pack into level 0 of three maps, then each level
+// l drawn with its samplers showing level l - 1 alone (no feedback loop), every level visible
+// to the water after. Needs Node.js and the npm packages, not Chromium.
+TEST(ThreeOcean, PlumbingChecksPassUnderNode) {
+  if (!haveTool("node")) GTEST_SKIP() << "Node.js (node) is not on PATH";
+  CmdResult n = sh(test::shellQuote(clientDir() + "/test/npm_ci_cached.sh"));
+  ASSERT_EQ(n.exit, 0) << "installing clients/three's npm packages failed: " << n.err;
+  CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && timeout 50 node --test test/ocean.test.mjs");
+  EXPECT_EQ(t.exit, 0) << t.out << t.err;
+  EXPECT_NE(t.out.find("# pass 5"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
+}
+
 // `compile --textures` writes each node texture once, as the runtime uploads it.
 TEST(CompileTextures, WritesNodeTexturesAsPngBesideTheShaders) {
   TempDir dir("wg_three_");

@@ -271,6 +271,19 @@ TEST(WebgpuSceneShaders, ChecksPassUnderNode) {
   EXPECT_NE(t.out.find("# pass 6"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
+
+// The ocean simulation's plumbing without a browser (clients/webgpu/test/ocean.test.mjs under
+// node --test), against a device that records what it is asked for: the pass order of a
+// filtered and an unfiltered cascade, the slope and moments maps made with log2 N + 1 mip
+// levels, the pack drawing level 0 of three maps, each downsample sampling a view of level
+// l - 1 alone and drawing views of level l. Needs Node.js, not Chromium or the npm packages.
+TEST(WebgpuOcean, PlumbingChecksPassUnderNode) {
+  if (!haveTool("node")) GTEST_SKIP() << "Node.js (node) is not on PATH";
+  CmdResult t = sh("cd " + test::shellQuote(test::sourcePath("clients/webgpu")) + " && timeout 50 node --test test/ocean.test.mjs");
+  EXPECT_EQ(t.exit, 0) << t.out << t.err;
+  EXPECT_NE(t.out.find("# pass 2"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
+}
 #endif
 
 }  // namespace
