@@ -203,6 +203,8 @@ bool pixelInputs(const ReadbackImage& taps, const ReadbackPlan& plan, const std:
   env.cameraNearFar = Value::vector({cam.nearPlane, cam.farPlane});
   env.view = matrixValue(cam.view());
   env.projection = matrixValue(cam.projection(aspect));
+  // As the shader forms the pixel_angle builtin from its float uniforms.
+  env.pixelAngle = Value::scalar(2.0 / std::abs(static_cast<double>(static_cast<float>(env.projection[5])) * height));
   const glm::vec3 sun = rt::sunDirection(view.scene);  // as the renderer sets u_sun_direction
   env.sunDirection = Value::vector({sun.x, sun.y, sun.z});
   *envOut = env;

@@ -255,7 +255,8 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
                             {"near_far", &env.cameraNearFar, 2},
                             {"view", &env.view, 16},
                             {"projection", &env.projection, 16},
-                            {"sun_direction", &env.sunDirection, 3}};
+                            {"sun_direction", &env.sunDirection, 3},
+                            {"pixel_angle", &env.pixelAngle, 1}};
     for (const auto& f : fields) {
       if (!c.contains(f.key)) continue;
       if (auto v = r.vector(c[f.key], p + "/" + f.key, std::string("\"") + f.key + "\"", f.count)) *f.target = *v;
@@ -326,7 +327,7 @@ std::optional<ProbeCaseFile> parseProbeCases(const std::string& text, const std:
     }
     // What the GPU sees is float32; the reference gets the same inputs.
     for (Value* v : {&env.uv, &env.uvDx, &env.uvDy, &env.worldPosition, &env.normal, &env.viewDirection, &env.cameraPosition, &env.time,
-                     &env.screenUv, &env.fragDepth, &env.cameraNearFar, &env.view, &env.projection, &env.sunDirection, &env.sceneDepth,
+                     &env.screenUv, &env.fragDepth, &env.cameraNearFar, &env.view, &env.projection, &env.sunDirection, &env.pixelAngle, &env.sceneDepth,
                      &env.sceneColor, &env.reflectionColor, &env.refractionColor, &env.environmentColor})
       *v = toFloat32(*v);
     out.cases.push_back(std::move(pc));

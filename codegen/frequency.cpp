@@ -22,7 +22,8 @@ bool isPerDrawBuiltin(Builtin b) {
     case Builtin::CameraNearFar:
     case Builtin::View:
     case Builtin::Projection:
-    case Builtin::SunDirection: return true;
+    case Builtin::SunDirection:
+    case Builtin::PixelAngle: return true;
     case Builtin::Uv:
     case Builtin::WorldPosition:
     case Builtin::Normal:

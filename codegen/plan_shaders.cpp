@@ -40,6 +40,10 @@ GlslExpr surfaceBuiltin(const ShaderPlan& plan, StageBody& w, Builtin b) {
     case Builtin::View:
     case Builtin::Projection:
     case Builtin::SunDirection: return w.uniform(builtinRow(b).uniform);
+    case Builtin::PixelAngle:
+      // From the two uniforms every runtime and client sets; abs: a projection that flips y.
+      return "(2.0 / abs(" + w.uniform(BuiltinUniform::Projection) + "[1][1] * " +
+             w.uniform(BuiltinUniform::ViewportSize) + ".y))";
   }
   return GlslExpr();
 }

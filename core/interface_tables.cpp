@@ -38,6 +38,7 @@ const BuiltinRow kBuiltins[] = {
     {Builtin::View, "view", Type::Mat4, BuiltinUniform::View, &E::view},
     {Builtin::Projection, "projection", Type::Mat4, BuiltinUniform::Projection, &E::projection},
     {Builtin::SunDirection, "sun_direction", Type::Vec3, BuiltinUniform::SunDirection, &E::sunDirection},
+    {Builtin::PixelAngle, "pixel_angle", Type::Float, BuiltinUniform::ProbePixelAngle, &E::pixelAngle},
 };
 
 using U = BuiltinUniform;
@@ -61,6 +62,7 @@ const BuiltinUniformRow kBuiltinUniforms[] = {
     {U::ProbeFragDepth, "frag_depth", "u_probe_frag_depth", Type::Float, Builtin::FragDepth, {"frag_depth"}},
     {U::ProbeUvGradient, "uv_gradient", "u_probe_uv_gradient", Type::Vec4, std::nullopt, {"uv_dx", "uv_dy"}},
     {U::ProbePixel, "probe_pixel", "u_probe_pixel", Type::Vec2, std::nullopt, {}},
+    {U::ProbePixelAngle, "pixel_angle", "u_probe_pixel_angle", Type::Float, Builtin::PixelAngle, {"pixel_angle"}},
     {U::SunDirection, "sun_direction", "u_sun_direction", Type::Vec3, Builtin::SunDirection, {"sun_direction"}},
     {U::TimePhase, "time_phase", "u_phase", Type::Float, std::nullopt, {"time"}},
 };

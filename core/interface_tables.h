@@ -40,6 +40,7 @@ enum class Builtin {
   View,            // mat4 uniform: world -> view
   Projection,      // mat4 uniform: view -> clip
   SunDirection,    // vec3 uniform: unit vector towards the sun (the scene's sun)
+  PixelAngle,      // float: the angle a pixel subtends at the image centre, 2 / (projection[1][1] viewport.y)
 };
 
 // --- Builtin uniforms: what the runtime (or the probe) sets each frame. Declared only when
@@ -65,6 +66,7 @@ enum class BuiltinUniform {
   // derivatives (a mipmapped texture()) see the case's gradient (EvalEnvironment::uvDx).
   ProbeUvGradient,
   ProbePixel,
+  ProbePixelAngle,     // probe shaders: the pixel angle builtin, set from each case
   SunDirection,        // vec3, unit, towards the sun
   TimePhase,           // float, mod(omega * time, 2 pi) in double; "u_phase<k>", one per omega
 };

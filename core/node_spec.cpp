@@ -48,6 +48,9 @@ ValueFact builtinFact(Builtin b) {
       f.lo = 1e-6;
       f.hi = 1e30;
       break;
+    case Builtin::PixelAngle:  // 2 / |projection[1][1] viewport.y|: positive (inf for a degenerate projection)
+      f.lo = 0;
+      break;
     case Builtin::ScreenUv:   // gl_FragCoord.xy / viewport inside the viewport
     case Builtin::FragDepth:  // gl_FragCoord.z with the default depth range
       f.lo = 0;

@@ -169,6 +169,9 @@ struct EvalEnvironment {
   Value view = Value::ofType(Type::Mat4);        // column-major, as GLSL
   Value projection = Value::ofType(Type::Mat4);  // column-major, as GLSL
   Value sunDirection = Value::vector({0.6666666666666666, 0.6666666666666666, -0.3333333333333333});
+  // The angle a pixel subtends at the image centre, 2 / (projection[1][1] viewport height):
+  // what a footprint on the water grows from (1e-3: a 1000-pixel-high view of 53 degrees).
+  Value pixelAngle = Value::scalar(1e-3);
   // Scene resources as the case sees them at this pixel (what a texture fetch returns).
   Value sceneDepth = Value::scalar(1.0);  // depth-buffer value behind the water (1 = sky)
   Value sceneColor = Value::vector({0, 0, 0});

@@ -16,7 +16,10 @@ namespace wg::nodes {
 // quotient_overflow, equal_operands, reversed_range, perpendicular, head_on; and
 // below_threshold, texel_edge, uv_boundary, screen_offset_outside (screen uv + distortion
 // off screen), camera_at_water_level, mixed_sign_coordinates; for the ocean empty_spectrum
-// (every amplitude 0), surface_folds (J < 0 at the point) and shallow_water (k d < 0.1 at the peak).
+// (every amplitude 0), surface_folds (J < 0 at the point) and shallow_water (k d < 0.1 at the peak);
+// for the filtered ocean reader footprint_past_tiles (every cascade at its 1 x 1 level),
+// footprint_zero (the camera at the point) and level_boundary (a cascade's level of detail
+// an integer: the trilinear blend hands one level to the next).
 const std::vector<HardCaseRegion>& hardCaseRegions() {
   static const std::vector<HardCaseRegion> table = {
       // optics
@@ -70,6 +73,10 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ocean_surface", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
       {"ocean_surface", "a TMA sea in 1 cm of water", "shallow_water", ""},
       {"ocean_surface", "100 km from the origin", "huge_coordinates", "position"},
+      {"ocean_surface", "filtered, a grazing view: the camera at the water's level 5 km away", "footprint_past_tiles", "camera"},
+      {"ocean_surface", "filtered, the camera touching the water: footprint 0, level 0", "footprint_zero", "camera"},
+      {"ocean_surface", "filtered, a calm (wind 0): no slope variance", "empty_spectrum", ""},
+      {"ocean_surface", "filtered, a footprint of exactly one texel (a level boundary)", "level_boundary", "pixel_angle"},
       {"ocean_foam", "a calm (wind 0): no foam", "empty_spectrum", ""},
       {"ocean_foam", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
       {"ocean_foam", "the same storm with foam_growth 1000, where the cover saturates", "surface_folds", "position"},

@@ -2,6 +2,8 @@
 #include "core/emit_context.h"
 #include "nodes/ocean_readers.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 
@@ -50,6 +52,64 @@ GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz,
   return ctx.temporary(Type::Vec4, sum);
 }
 
+FilteredExprs emitFiltered(EmitContext& ctx, int oceanPort, const GlslExpr& xz, const GlslExpr& footprint,
+                           const std::vector<GlslExpr>& weights) {
+  const auto& s = ctx.oceanSettings(oceanPort);
+  FilteredExprs out;
+  for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
+    const int n = ocean::cascadeResolution(s.cascades, c);
+    const GlslExpr k = ctx.literal(n / s.cascades.tileLengths[c]), size = std::to_string(n),
+                   levels = std::to_string(std::countr_zero(static_cast<unsigned>(n)));
+    GlslExpr lod = ctx.temporary(Type::Float, EmitContext::call("wg_ocean_lod", {footprint, k, levels}));
+    auto read = [&](int which) {
+      return ctx.temporary(Type::Vec4, EmitContext::call("wg_ocean_map_lod", {ctx.oceanMap(oceanPort, static_cast<int>(c), which),
+                                                                             xz, k, size, levels, lod}));
+    };
+    GlslExpr slopes = read(ocean::kSlopeMap), moments = read(ocean::kMomentsMap);
+    const bool faded = !weights[c].empty();
+    const std::string plus = out.slopes.empty() ? "" : " + ";
+    out.slopes += plus + (faded ? weights[c] + " * " + slopes : slopes);
+    out.lDxz += plus + (faded ? weights[c] + " * " + moments + ".w" : moments + ".w");
+    out.variance += plus + EmitContext::call("wg_ocean_lost_variance", {slopes, moments, faded ? weights[c] : GlslExpr("1.0")});
+  }
+  out.slopes = ctx.temporary(Type::Vec4, out.slopes);
+  out.lDxz = ctx.temporary(Type::Float, out.lDxz);
+  out.variance = ctx.temporary(Type::Float, out.variance);
+  return out;
+}
+
+double footprint(const Value& p, const Value& camera, double pixelAngle) {
+  const double d = distance(p, camera);
+  const double cosTheta = d > 0 ? std::abs(p[1] - camera[1]) / d : 0.0;
+  return d * pixelAngle / std::max(cosTheta, 1.0 / 1024);
+}
+
+double lodOf(double footprint, double texelsPerMetre, int levels) {
+  return std::clamp(std::log2(std::max(footprint * texelsPerMetre, 1.0)), 0.0, static_cast<double>(levels));
+}
+
+FilteredSum sumFiltered(const EvalPoint& at, double footprintMetres) {
+  const ocean::OceanSettings& s = oceanref::settingsOf(at.id);
+  FilteredSum out;
+  for (size_t c = 0; c < at.weights.size(); ++c) {
+    const int n = ocean::cascadeResolution(s.cascades, c);
+    const double k = static_cast<float>(n / s.cascades.tileLengths[c]);  // the shader's literal
+    const double lod = lodOf(footprintMetres, k, std::countr_zero(static_cast<unsigned>(n)));
+    const oceanref::FilteredSample m =
+        oceanref::sampleCascadeFiltered(at.id, static_cast<int>(c), at.time, at.position[0], at.position[2], lod);
+    const double w = at.weights[c];
+    for (int i = 0; i < 4; ++i) out.sums.slopes[i] += w * m.slopes[i];
+    out.sums.displacement[3] += w * m.moments[3];
+    out.variance += m.moments[0] + m.moments[1] - w * w * (m.slopes[0] * m.slopes[0] + m.slopes[1] * m.slopes[1]);
+  }
+  return out;
+}
+
+double filteredRoughness(double r, double variance) {
+  const double rc = std::clamp(r, 0.0, 1.0);
+  return std::min(std::sqrt(std::sqrt(rc * rc * rc * rc + std::max(variance, 0.0))), 1.0);
+}
+
 std::vector<double> weights(const ocean::OceanSettings& s, double fadeTiles, double d) {
   std::vector<double> out;
   for (double l : s.cascades.tileLengths)
@@ -75,12 +135,14 @@ oceanref::MapSample sum(int oceanId, double t, double x, double z, const std::ve
   return total;
 }
 
-EvalPoint evalPoint(EvalContext& ctx) {
+EvalPoint evalPoint(EvalContext& ctx) { return evalPoint(ctx, ctx.options<double>()); }
+
+EvalPoint evalPoint(EvalContext& ctx, double fadeTiles) {
   EvalPoint at;
   at.id = oceanId(ctx.input("ocean"));
   at.position = ctx.input("position");
   at.time = ctx.environment().time[0];
-  at.weights = weights(oceanref::settingsOf(at.id), ctx.options<double>(), distance(at.position, ctx.input("camera")));
+  at.weights = weights(oceanref::settingsOf(at.id), fadeTiles, distance(at.position, ctx.input("camera")));
   return at;
 }
 
@@ -125,6 +187,32 @@ std::vector<HardCase> normalHardCases() {
           hardCase("a storm at 40 m/s with choppiness 4, where the surface folds", Value::vector({26, 0, 24.5}),
                    smallSea({{"wind_speed", 40}, {"choppiness", 4}, {"fetch", 1000}}),
                    "finite; the normal faces down where J < 0", -1, 1, "normal")};
+}
+
+std::vector<HardCase> filterHardCases() {
+  auto withView = [](HardCase c, Value camera, double pixelAngle) {
+    c.inputs.push_back({"camera", std::move(camera)});
+    c.inputs.push_back({"pixel_angle", Value::scalar(pixelAngle)});
+    return c;
+  };
+  return {withView(hardCase("filtered, a grazing view: the camera at the water's level 5 km away",
+                            Value::vector({5000, 0, 30}), smallSea(),
+                            "finite; the footprint spans the tiles (the 1 x 1 means): roughness in [0.05, 1]", 0.05, 1,
+                            "roughness"),
+                   Value::vector({0, 0, 0}), 1e-3),
+          withView(hardCase("filtered, the camera touching the water: footprint 0, level 0", Value::vector({3, 0, -7}),
+                            smallSea(), "finite: the maps at level 0, the roughness its input or more", 0.05, 1,
+                            "roughness"),
+                   Value::vector({3, 0, -7}), 1e-3),
+          withView(hardCase("filtered, a calm (wind 0): no slope variance", Value::vector({3, 0, -7}),
+                            smallSea({{"wind_speed", 0}}), "the roughness unchanged, 0.05", 0.05, 0.05, "roughness"),
+                   Value::vector({0, 40, 0}), 1e-3),
+          // 64 texels over 8 m: 8 per metre; 8 m away straight down with pixel angle 1/64 the
+          // footprint is 1/8 m, one texel: lod exactly 0 for the short cascade, between levels
+          // for the long one (64 texels over 50 m).
+          withView(hardCase("filtered, a footprint of exactly one texel (a level boundary)", Value::vector({3, 0, -7}),
+                            smallSea({{"wind_speed", 20}}), "finite; the roughness above its input", 0.05, 1, "roughness"),
+                   Value::vector({3, 8, -7}), 1.0 / 64)};
 }
 
 int oceanId(const Value& v) {

@@ -33,7 +33,8 @@ struct EvalPoint {
   double time = 0;
   std::vector<double> weights;
 };
-EvalPoint evalPoint(EvalContext& ctx);
+EvalPoint evalPoint(EvalContext& ctx);  // the fade from the node's options (a double)
+EvalPoint evalPoint(EvalContext& ctx, double fadeTiles);
 // Double: the weighted sums of both maps at the point (as sum below).
 oceanref::MapSample sumAt(const EvalPoint& at);
 
@@ -41,6 +42,30 @@ oceanref::MapSample sumAt(const EvalPoint& at);
 std::vector<double> weights(const ocean::OceanSettings& s, double fadeTiles, double d);
 // Double: the weighted sums of both maps at (x, z) and time t.
 oceanref::MapSample sum(int oceanId, double t, double x, double z, const std::vector<double>& weights);
+
+// --- The filtered reader (ocean_surface's `filter`, nodes/glsl/ocean_displacement.glsl).
+// GLSL: the weighted sums over the cascades of the slope map and of the moments map's
+// lambda dDx/dz, each cascade read at the level of detail of `footprint` (metres), and the
+// slope variance the footprint's mean removes (wg_ocean_lost_variance summed).
+struct FilteredExprs {
+  GlslExpr slopes;    // vec4
+  GlslExpr lDxz;      // float
+  GlslExpr variance;  // float
+};
+FilteredExprs emitFiltered(EmitContext& ctx, int oceanPort, const GlslExpr& xz, const GlslExpr& footprint,
+                           const std::vector<GlslExpr>& weights);
+// Double: wg_ocean_footprint and wg_ocean_lod.
+double footprint(const Value& p, const Value& camera, double pixelAngle);
+double lodOf(double footprint, double texelsPerMetre, int levels);
+// Double: as emitFiltered; the sums in a MapSample (slopes, and lambda dDx/dz in
+// displacement[3], what normalOf and jacobianOf read).
+struct FilteredSum {
+  oceanref::MapSample sums;
+  double variance = 0;
+};
+FilteredSum sumFiltered(const EvalPoint& at, double footprint);
+// Double: wg_ocean_roughness.
+double filteredRoughness(double r, double variance);
 
 // The normal and J of the summed maps, as wg_ocean_normal and
 // wg_ocean_jacobian.
@@ -57,6 +82,11 @@ HardCase hardCase(std::string name, Value position, nlohmann::json seaOptions, s
 // The cases both readers' `normal` outputs share: a flat sea's (straight up) and a storm's
 // at a point where the surface folds (J < 0 there at t = 0: the normal faces down).
 std::vector<HardCase> normalHardCases();
+
+// ocean_surface's filtered reader's cases: a grazing view (the footprint spans the tiles:
+// the top level), the camera touching the water (footprint 0: level 0), a calm (no
+// variance: the roughness unchanged), a footprint on a level boundary.
+std::vector<HardCase> filterHardCases();
 
 // The id an `ocean` input carries (ocean_spectrum's eval puts it in component
 // 0).

@@ -1,6 +1,7 @@
 // The ocean readers' reference (nodes/ocean_reference.h).
 #include "nodes/ocean_reference.h"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
 #include <map>
@@ -13,11 +14,35 @@
 namespace wg::nodes::oceanref {
 namespace {
 
-// One cascade's two maps at one loop fraction, texel (jx, jz) at jz * N + jx.
+using Texels = std::vector<std::array<double, 4>>;
+
+// One cascade's two maps at one loop fraction, texel (jx, jz) at jz * N + jx, and the
+// filtered reader's pyramids: slopes and moments, level l of (N >> l)^2 texels.
 struct CascadeMaps {
   std::uint32_t tau = 0;
-  std::vector<std::array<double, 4>> displacement, slopes;
+  Texels displacement, slopes;
+  std::vector<Texels> slopeLevels, momentLevels;
 };
+
+// The next level of a pyramid: each texel the mean of the 2x2 below it, in double.
+Texels boxHalf(const Texels& level, int n) {
+  const int h = n / 2;
+  Texels out(static_cast<size_t>(h) * h);
+  for (int jz = 0; jz < h; ++jz)
+    for (int jx = 0; jx < h; ++jx) {
+      auto at = [&](int x, int z) { return level[static_cast<size_t>(z) * n + x]; };
+      const auto a = at(2 * jx, 2 * jz), b = at(2 * jx + 1, 2 * jz), c = at(2 * jx, 2 * jz + 1), d = at(2 * jx + 1, 2 * jz + 1);
+      for (int k = 0; k < 4; ++k) out[static_cast<size_t>(jz) * h + jx][k] = (a[k] + b[k] + c[k] + d[k]) / 4;
+    }
+  return out;
+}
+
+std::vector<Texels> pyramid(Texels level0, int n) {
+  std::vector<Texels> levels;
+  levels.push_back(std::move(level0));
+  for (int size = n; size > 1; size /= 2) levels.push_back(boxHalf(levels.back(), size));
+  return levels;
+}
 
 struct RegisteredOcean {
   ocean::OceanSettings settings;
@@ -56,6 +81,13 @@ std::shared_ptr<const CascadeMaps> computeMaps(const ocean::OceanCascade& cascad
                              lambda * f.dDxdz[i]};
     maps->slopes[i] = {f.slopeX[i], f.slopeZ[i], lambda * f.dDxdx[i], lambda * f.dDzdz[i]};
   }
+  Texels moments(count);
+  for (size_t i = 0; i < count; ++i) {
+    const double sx = maps->slopes[i][0], sz = maps->slopes[i][1];
+    moments[i] = {sx * sx, sz * sz, sx * sz, maps->displacement[i][3]};
+  }
+  maps->slopeLevels = pyramid(maps->slopes, cascade.resolution);
+  maps->momentLevels = pyramid(std::move(moments), cascade.resolution);
   return maps;
 }
 
@@ -126,6 +158,21 @@ std::optional<Bilinear> bilinearAt(const ocean::OceanSettings& s, int cascade, d
   return Bilinear{at(x0, z0), at(x1, z0), at(x0, z1), at(x1, z1), u - bu, v - bv};
 }
 
+// As bilinearAt at level `level` of the pyramid: wg_ocean_map_level's texel coordinate.
+std::optional<Bilinear> levelBilinearAt(const ocean::OceanSettings& s, int cascade, double x, double z, int level) {
+  const int n = ocean::cascadeResolution(s.cascades, static_cast<size_t>(cascade));
+  const double texelsPerMetre = static_cast<float>(n / s.cascades.tileLengths[static_cast<size_t>(cascade)]);
+  const int nl = n >> level;
+  const double scale = std::ldexp(1.0, level);
+  double u = (x * texelsPerMetre - 0.5 * (scale - 1)) / scale, v = (z * texelsPerMetre - 0.5 * (scale - 1)) / scale;
+  if (!std::isfinite(u) || !std::isfinite(v)) return std::nullopt;
+  double bu = std::floor(u), bv = std::floor(v);
+  auto wrap = [nl](double b) { return static_cast<int>(b - nl * std::floor(b / nl)) & (nl - 1); };
+  int x0 = wrap(bu), z0 = wrap(bv), x1 = (x0 + 1) & (nl - 1), z1 = (z0 + 1) & (nl - 1);
+  auto at = [nl](int jx, int jz) { return static_cast<size_t>(jz) * nl + jx; };
+  return Bilinear{at(x0, z0), at(x1, z0), at(x0, z1), at(x1, z1), u - bu, v - bv};
+}
+
 template <class Texel>
 double blend(const Bilinear& b, Texel texel) {
   double bottom = texel(b.i00) + (texel(b.i10) - texel(b.i00)) * b.fu;
@@ -167,6 +214,41 @@ MapSample sampleCascade(int id, int cascade, double time, double x, double z) {
     out.slopes[c] = blend(*b, [&](size_t i) { return maps->slopes[i][c]; });
   }
   return out;
+}
+
+FilteredSample sampleCascadeFiltered(int id, int cascade, double time, double x, double z, double lod) {
+  auto maps = mapsAt(id, cascade, time);
+  const int levels = static_cast<int>(maps->slopeLevels.size()) - 1;
+  FilteredSample out;
+  if (!std::isfinite(lod)) return out;
+  // As wg_ocean_map_lod: levels l0 and l0 + 1, l0 at most levels - 1.
+  const int l0 = std::min(static_cast<int>(std::floor(lod)), levels - 1);
+  const double f = lod - l0;
+  std::array<FilteredSample, 2> at;
+  for (int k = 0; k < 2; ++k) {
+    auto b = levelBilinearAt(settingsOf(id), cascade, x, z, l0 + k);
+    if (!b) return out;
+    const Texels &s = maps->slopeLevels[static_cast<size_t>(l0 + k)], &m = maps->momentLevels[static_cast<size_t>(l0 + k)];
+    for (int c = 0; c < 4; ++c) {
+      at[k].slopes[c] = blend(*b, [&](size_t i) { return s[i][c]; });
+      at[k].moments[c] = blend(*b, [&](size_t i) { return m[i][c]; });
+    }
+  }
+  for (int c = 0; c < 4; ++c) {
+    out.slopes[c] = at[0].slopes[c] + (at[1].slopes[c] - at[0].slopes[c]) * f;
+    out.moments[c] = at[0].moments[c] + (at[1].moments[c] - at[0].moments[c]) * f;
+  }
+  return out;
+}
+
+const std::vector<std::array<double, 4>>& pyramidLevel(int id, int cascade, double time, bool moments, int level) {
+  // The maps stay alive in the cache while the caller holds none of its own: keep the
+  // last one asked for alive here (tests read one level at a time).
+  static thread_local std::shared_ptr<const CascadeMaps> held;
+  held = mapsAt(id, cascade, time);
+  const auto& levels = moments ? held->momentLevels : held->slopeLevels;
+  if (level < 0 || static_cast<size_t>(level) >= levels.size()) throw std::logic_error("ocean reference: no such pyramid level");
+  return levels[static_cast<size_t>(level)];
 }
 
 double sampleFoam(int id, int cascade, double time, double x, double z) {

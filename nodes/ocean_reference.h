@@ -5,6 +5,7 @@
 // the next look-ups at that time, and a look-up is the bilinear interpolation the GLSL
 // (wg_ocean_map) performs between the four texels around the point.
 #include <array>
+#include <vector>
 
 #include "core/ocean_settings.h"
 
@@ -23,6 +24,20 @@ struct MapSample {
 };
 // Cascade `cascade` of ocean `id` at time t, at the world point (x, z).
 MapSample sampleCascade(int id, int cascade, double time, double x, double z);
+
+// What the filtered reader (wg_ocean_map_lod) reads of a cascade: its slope map and its
+// moments map (dh/dx^2, dh/dz^2, dh/dx dh/dz, lambda dDx/dz) at level of detail lod, from
+// pyramids of 2x2 box means made in double from the double maps (the GPU's downsample pass
+// in exact arithmetic), trilinear as the shader reads them.
+struct FilteredSample {
+  std::array<double, 4> slopes{};
+  std::array<double, 4> moments{};
+};
+FilteredSample sampleCascadeFiltered(int id, int cascade, double time, double x, double z, double lod);
+
+// Level `level` (0: the map) of a cascade's slope or moments pyramid at time t, (n >> level)^2
+// texels, row jz * (n >> level) + jx: what the GPU's pyramid is tested against.
+const std::vector<std::array<double, 4>>& pyramidLevel(int id, int cascade, double time, bool moments, int level);
 // The persistent foam of cascade `cascade` at time t at the world point (x, z): bilinear in
 // the replayed maps f_n and f_(n+1) (core/ocean_foam.h), then between them in time; 0 for a
 // cascade that makes no foam.

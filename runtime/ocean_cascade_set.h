@@ -27,7 +27,7 @@ class OceanCascadeSet {
     std::vector<std::unique_ptr<Foam>> foam;  // per cascade, null where no shader reads it
   };
 
-  // makeCascade(settings, ocean, cascade, slopesRead, foamRead) and makeFoam(settings,
+  // makeCascade(settings, ocean, cascade, slopesRead, foamRead, filtered) and makeFoam(settings,
   // cascade) build one cascade and its foam (on that cascade's own grid). A manifest whose ocean options do not parse is a manifest error.
   template <class MakeCascade, class MakeFoam>
   OceanCascadeSet(const std::vector<OceanInfo>& oceans, const std::vector<TextureInfo>& textures,
@@ -39,7 +39,9 @@ class OceanCascadeSet {
       const int index = static_cast<int>(oceans_.size());
       for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
         const bool foam = oceanFoamRead(textures, settings, index, c, info.nodeId);
-        o.cascades.push_back(makeCascade(settings, index, c, oceanMapRead(textures, index, c, ocean::kSlopeMap), foam));
+        // A shader reading the moments map reads the filtered pyramids (ocean_surface's filter).
+        o.cascades.push_back(makeCascade(settings, index, c, oceanMapRead(textures, index, c, ocean::kSlopeMap), foam,
+                                         oceanMapRead(textures, index, c, ocean::kMomentsMap)));
         o.foam.push_back(foam ? makeFoam(settings, c) : nullptr);
       }
       oceans_.push_back(std::move(o));
@@ -93,6 +95,8 @@ class OceanCascadeSet {
     const std::string which = "ocean " + std::to_string(ref.ocean) + " cascade " + std::to_string(ref.cascade);
     if (ref.map == ocean::kSlopeMap && !c.computesSlopes())
       manifestError("an ocean texture reads the slope map of " + which + ", which the simulation was not asked to compute");
+    if (ref.map == ocean::kMomentsMap && !c.filtered())
+      manifestError("an ocean texture reads the moments map of " + which + ", which the simulation was not asked to compute");
     if (ref.map != ocean::kFoamMap) return {&c, nullptr};
     if (!computesFoam(ref.ocean, ref.cascade))
       manifestError("an ocean texture reads the foam of " + which + ", which the simulation was not asked to compute");

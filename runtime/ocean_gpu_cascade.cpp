@@ -1,6 +1,7 @@
 // The spectral ocean's GPU cascade (runtime/ocean_gpu_cascade.h).
 #include "runtime/ocean_gpu_cascade.h"
 
+#include <bit>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -16,8 +17,14 @@ using namespace oceangpu;
 
 }  // namespace
 
-OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes, bool jacobian)
-    : n_(cascade.resolution), slopes_(slopes), jacobian_(jacobian), tileLength_(cascade.tileLength) {
+OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes, bool jacobian,
+                                 bool filtered)
+    : n_(cascade.resolution),
+      slopes_(slopes || filtered),
+      jacobian_(jacobian),
+      tileLength_(cascade.tileLength),
+      filtered_(filtered),
+      levels_(filtered ? std::countr_zero(static_cast<unsigned>(cascade.resolution)) + 1 : 1) {
   const size_t count = static_cast<size_t>(n_) * n_;
   std::vector<float> h0(count * 4);
   for (int iz = 0; iz < n_; ++iz)
@@ -49,8 +56,15 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
     for (int f = 0; f < fields; ++f) spectra_[s][f] = floatTexture(n_, n_, GL_RGBA32F);
     spectraTargets_[s] = targetOf(spectra_[s][0], slopes_ ? &spectra_[s][1] : nullptr, "spectrum");
   }
-  for (int f = 0; f < fields; ++f) maps_[f] = floatTexture(n_, n_, GL_RGBA32F);
-  mapTarget_ = targetOf(maps_[0], slopes_ ? &maps_[1] : nullptr, "map");
+  for (int f = 0; f < fields; ++f) maps_[f] = floatTexture(n_, n_, GL_RGBA32F, f == 1 ? levels_ : 1);
+  if (filtered_) {
+    moments_ = floatTexture(n_, n_, GL_RGBA32F, levels_);
+    mapTarget_ = targetOfLevel({&maps_[0], &maps_[1], &moments_}, 0, "map");
+    levelTargets_.resize(static_cast<size_t>(levels_));
+    for (int l = 1; l < levels_; ++l) levelTargets_[static_cast<size_t>(l)] = targetOfLevel({&maps_[1], &moments_}, l, "pyramid");
+  } else {
+    mapTarget_ = targetOf(maps_[0], slopes_ ? &maps_[1] : nullptr, "map");
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   emptyVao_ = makeVertexArray();
 
@@ -59,7 +73,8 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   auto link = [&](S shader) { return linkPass(api, oceanPassShaderName(shader), oceanPassFragment(api, shader)); };
   evolve_ = link(slopes_ ? S::Evolve : S::EvolveDisplacement);
   stockham_ = link(slopes_ ? S::Stockham : S::StockhamSingle);
-  pack_ = link(slopes_ ? S::Pack : S::PackDisplacement);
+  pack_ = link(filtered_ ? S::PackFiltered : slopes_ ? S::Pack : S::PackDisplacement);
+  if (filtered_) downsample_ = link(S::Downsample);
   if (jacobian) {
     evolveJacobian_ = link(S::EvolveJacobian);
     stockhamSingle_ = slopes_ ? link(S::StockhamSingle) : Program();
@@ -69,12 +84,16 @@ OceanGpuCascade::OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShader
   checkGl("creating the ocean's GPU cascade");
 }
 
-size_t OceanGpuCascade::textureBytes(int n, bool slopes) {
-  const size_t texels = static_cast<size_t>(n) * static_cast<size_t>(n), fields = slopes ? 2 : 1;
+size_t OceanGpuCascade::textureBytes(int n, bool slopes, bool filtered) {
+  const size_t texels = static_cast<size_t>(n) * static_cast<size_t>(n), fields = slopes || filtered ? 2 : 1;
   const size_t rgba32f = 16;
+  size_t pyramid = 0;  // filtered: the slope map's levels below 0, and the moments map's all
+  for (size_t size = static_cast<size_t>(n); filtered && size >= 1; size /= 2)
+    pyramid += size * size * rgba32f * (size == static_cast<size_t>(n) ? 1 : 2);
   return texels * (rgba32f + 4)                // h0 (RGBA32F) and the frequencies (R32UI)
          + texels * rgba32f * fields * 2       // the spectra, ping and pong
          + texels * rgba32f * fields           // the maps
+         + pyramid                             // the filtered pyramids
          + static_cast<size_t>(n / 2) * 8;     // the twiddles (RG32F)
 }
 
@@ -145,7 +164,46 @@ void OceanGpuCascade::update(double time, double choppiness) {
   glUniform1i(location(pack_, "u_b"), 1);
   glUniform1f(location(pack_, "u_lambda"), static_cast<float>(choppiness));
   drawInto(mapTarget_);
+  if (filtered_) downsample();
   checkGl("the ocean's GPU passes");
+}
+
+// Level l of both pyramids from level l - 1: each texture shows level l - 1 alone (base and
+// max level), so the pass samples one level and draws into another of the same texture
+// without a feedback loop; afterwards every level is visible again for the water's reader.
+void OceanGpuCascade::downsample() const {
+  glUseProgram(downsample_.id());
+  glUniform1i(location(downsample_, "u_slopes"), 0);
+  glUniform1i(location(downsample_, "u_moments"), 1);
+  const Texture* pyramids[2] = {&maps_[1], &moments_};
+  for (int l = 1; l < levels_; ++l) {
+    for (int unit = 0; unit < 2; ++unit) {
+      bindTexture(unit, *pyramids[unit]);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, l - 1);
+      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, l - 1);
+    }
+    glViewport(0, 0, n_ >> l, n_ >> l);
+    drawInto(levelTargets_[static_cast<size_t>(l)]);
+  }
+  for (int unit = 0; unit < 2; ++unit) {
+    bindTexture(unit, *pyramids[unit]);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_BASE_LEVEL, 0);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAX_LEVEL, levels_ - 1);
+  }
+  glViewport(0, 0, n_, n_);
+}
+
+std::vector<float> OceanGpuCascade::readLevel(bool moments, int level) const {
+  if (!filtered_ || level < 0 || level >= levels_) throw std::logic_error("this ocean cascade has no such pyramid level");
+  const int size = n_ >> level;
+  std::vector<float> out(static_cast<size_t>(size) * size * 4);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, level == 0 ? mapTarget_.id() : levelTargets_[static_cast<size_t>(level)].id());
+  glReadBuffer(level == 0 ? (moments ? GL_COLOR_ATTACHMENT2 : GL_COLOR_ATTACHMENT1)
+                          : (moments ? GL_COLOR_ATTACHMENT1 : GL_COLOR_ATTACHMENT0));
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, size, size, GL_RGBA, GL_FLOAT, out.data());
+  checkGl("reading the ocean's pyramid back");
+  return out;
 }
 
 std::vector<float> OceanGpuCascade::readMap(int which) const {

@@ -26,8 +26,11 @@ class OceanGpuCascade {
   // reads the slope map) only the first texture's two transforms run, half the work, and
   // the displacement map's w is 0.
   // With `jacobian` (the foam reads this cascade) it can also transform the Jacobian's
-  // fields alone (jacobianFields).
-  OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes = true, bool jacobian = false);
+  // fields alone (jacobianFields). With `filtered` (a shader reads the moments map: the
+  // filtered reader; implies slopes) the slope map and a moments map carry pyramids of
+  // log2 N + 1 levels, each level the 2x2 box mean of the one above (the downsample pass).
+  OceanGpuCascade(const ocean::OceanCascade& cascade, SceneShaderApi api, bool slopes = true, bool jacobian = false,
+                  bool filtered = false);
 
   // Computes the maps at time t (seconds) with choppiness lambda. Leaves the viewport, the
   // draw framebuffer, the program, the vertex array and texture units 0-2 changed, and
@@ -43,24 +46,32 @@ class OceanGpuCascade {
   // The memory of a cascade's textures at resolution n: h0 and the frequencies, the two
   // spectra in ping and pong, the maps and the twiddles (half of the spectra and maps
   // without slopes).
-  static size_t textureBytes(int n, bool slopes);
+  static size_t textureBytes(int n, bool slopes, bool filtered = false);
 
   int resolution() const { return n_; }
   bool computesSlopes() const { return slopes_; }
+  bool filtered() const { return filtered_; }
+  // The levels of the filtered pyramids: log2 N + 1 (1 unfiltered).
+  int levels() const { return levels_; }
   // RGBA32F, N x N, texel (jx, jz) at x = jx L / N, z = jz L / N:
   //   displacement: (lambda Dx, h, lambda Dz, lambda dDx/dz)
   //   slopes:       (dh/dx, dh/dz, lambda dDx/dx, lambda dDz/dz)
   // so J = (1 + lambda dDx/dx)(1 + lambda dDz/dz) - (lambda dDx/dz)^2 of the summed cascades.
   GLuint displacementMap() const { return maps_[0].id(); }
   GLuint slopeMap() const { return maps_[1].id(); }  // 0 without slopes
+  //   moments (filtered only): (dh/dx^2, dh/dz^2, dh/dx dh/dz, lambda dDx/dz)
+  GLuint momentsMap() const { return moments_.id(); }  // 0 unfiltered
   // The two maps read back, N * N * 4 floats each, row jz * N + jx.
   std::vector<float> readDisplacement() const { return readMap(0); }
   std::vector<float> readSlopes() const { return readMap(1); }
+  // Level `level` of the slope or moments pyramid read back, (N >> level)^2 * 4 floats.
+  std::vector<float> readLevel(bool moments, int level) const;
 
  private:
   std::vector<float> readMap(int which) const;
   void drawInto(const Framebuffer& target) const;
   void beginPasses() const;
+  void downsample() const;
   void evolve(const Program& program, double time, const Framebuffer& target) const;
   // The Stockham stages from spectra_[0] (both textures or the first alone) ping-ponging
   // through `targets`; returns the index of the spectra holding the result.
@@ -75,6 +86,12 @@ class OceanGpuCascade {
   Framebuffer spectraTargets_[2];
   Texture maps_[2];
   Framebuffer mapTarget_;
+  // Filtered: the moments map, and per level l >= 1 a target of level l of slopes and moments.
+  bool filtered_ = false;
+  int levels_ = 1;
+  Texture moments_;
+  std::vector<Framebuffer> levelTargets_;
+  Program downsample_;
   VertexArray emptyVao_;
   Program evolve_, stockham_, pack_;
   // The Jacobian's fields alone, into spectra_[.][0] (with `jacobian`).

@@ -12,9 +12,9 @@ OceanSimulation::OceanSimulation(const std::vector<OceanInfo>& oceans, const std
                                  SceneShaderApi api)
     : set_(
           oceans, textures,
-          [api](const ocean::OceanSettings& settings, int, int c, bool slopes, bool foam) {
+          [api](const ocean::OceanSettings& settings, int, int c, bool slopes, bool foam, bool filtered) {
             return std::make_unique<OceanGpuCascade>(ocean::initialCascade(settings.spectrum, settings.cascades, c), api,
-                                                     slopes, foam);
+                                                     slopes, foam, filtered);
           },
           [api](const ocean::OceanSettings& settings, int c) {
             return std::make_unique<OceanGpuFoam>(ocean::cascadeResolution(settings.cascades, static_cast<size_t>(c)),
@@ -32,7 +32,8 @@ size_t OceanSimulation::textureBytes(const std::vector<OceanInfo>& oceans, const
     const ocean::OceanSettings settings = manifestOceanSettings(oceans[o]);
     for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
       const int n = ocean::cascadeResolution(settings.cascades, static_cast<size_t>(c));
-      bytes += OceanGpuCascade::textureBytes(n, oceanMapRead(textures, static_cast<int>(o), c, ocean::kSlopeMap));
+      bytes += OceanGpuCascade::textureBytes(n, oceanMapRead(textures, static_cast<int>(o), c, ocean::kSlopeMap),
+                                             oceanMapRead(textures, static_cast<int>(o), c, ocean::kMomentsMap));
       if (oceanFoamRead(textures, settings, static_cast<int>(o), c, oceans[o].nodeId))
         bytes += OceanGpuFoam::textureBytes(n);
     }
@@ -51,6 +52,7 @@ void OceanSimulation::update(double time) {
 GLuint OceanSimulation::map(const OceanMapRef& ref) const {
   const auto [cascade, foam] = set_.mapSource(ref);
   if (foam) return foam->map();
+  if (ref.map == ocean::kMomentsMap) return cascade->momentsMap();
   return ref.map == ocean::kSlopeMap ? cascade->slopeMap() : cascade->displacementMap();
 }
 

@@ -1,6 +1,7 @@
 // One cascade of the spectral ocean on Vulkan (runtime/vk_ocean_cascade.h).
 #include "runtime/vk_ocean_cascade.h"
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -12,8 +13,14 @@ using oceangpu::OceanPass;
 
 }  // namespace
 
-VkOceanCascade::VkOceanCascade(VkOceanPasses& passes, const ocean::OceanCascade& cascade, bool slopes, bool jacobian)
-    : context_(passes.context()), n_(cascade.resolution), slopes_(slopes), tileLength_(cascade.tileLength) {
+VkOceanCascade::VkOceanCascade(VkOceanPasses& passes, const ocean::OceanCascade& cascade, bool slopes, bool jacobian,
+                               bool filtered)
+    : context_(passes.context()),
+      n_(cascade.resolution),
+      slopes_(slopes || filtered),
+      tileLength_(cascade.tileLength),
+      filtered_(filtered),
+      levels_(filtered ? std::countr_zero(static_cast<unsigned>(cascade.resolution)) + 1 : 1) {
   // h0(k) and conj(h0(-k)) per texel, rounded once from double, as the GL runtime uploads them.
   const size_t count = static_cast<size_t>(n_) * n_;
   std::vector<float> h0(count * 4);
@@ -46,13 +53,18 @@ VkOceanCascade::VkOceanCascade(VkOceanPasses& passes, const ocean::OceanCascade&
   // The maps start readable: a water pass may bind them before the first update records.
   context_.submit([&](VkCommandBuffer cmd) {
     for (int f = 0; f < fields; ++f) {
-      maps_[f] = makeOceanImage(context_, n_, n_, VK_FORMAT_R32G32B32A32_SFLOAT);
+      maps_[f] = makeOceanImage(context_, n_, n_, VK_FORMAT_R32G32B32A32_SFLOAT, f == 1 ? static_cast<uint32_t>(levels_) : 1);
       maps_[f].transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    }
+    if (filtered_) {
+      moments_ = makeOceanImage(context_, n_, n_, VK_FORMAT_R32G32B32A32_SFLOAT, static_cast<uint32_t>(levels_));
+      moments_.transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     }
   });
   evolve_ = &passes.get(OceanPass::Evolve, {slopes_, false});
   stockham_ = &passes.get(OceanPass::Stockham, {slopes_, false});
-  pack_ = &passes.get(OceanPass::Pack, {slopes_, false});
+  pack_ = &passes.get(OceanPass::Pack, {slopes_, false, filtered_});
+  if (filtered_) downsample_ = &passes.get(OceanPass::Downsample);
   if (jacobian) {
     evolveJacobian_ = &passes.get(OceanPass::Evolve, {false, true});
     stockhamSingle_ = &passes.get(OceanPass::Stockham, {false, false});
@@ -101,8 +113,30 @@ void VkOceanCascade::record(VkCommandBuffer cmd, double time, double choppiness)
     inputs.push_back(&spectra_[current][1]);
     maps.push_back(&maps_[1]);
   }
+  if (filtered_) maps.push_back(&moments_);
   pack_->record(cmd, inputs, {oceanConstantWord(static_cast<float>(choppiness))}, maps);
+  if (filtered_) {
+    // Level l of both pyramids from level l - 1 of the same images (one view per level), in
+    // GENERAL layout, which both sampling and drawing allow; a barrier between levels.
+    maps_[1].transition(cmd, VK_IMAGE_LAYOUT_GENERAL);
+    moments_.transition(cmd, VK_IMAGE_LAYOUT_GENERAL);
+    for (int l = 1; l < levels_; ++l) {
+      const uint32_t above = static_cast<uint32_t>(l - 1), level = static_cast<uint32_t>(l), size = static_cast<uint32_t>(n_ >> l);
+      downsample_->recordLevels(cmd, {maps_[1].levelView(above), moments_.levelView(above)},
+                                {maps_[1].levelView(level), moments_.levelView(level)}, {size, size});
+      VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      b.srcAccessMask = VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT;
+      b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT;
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_FRAGMENT_SHADER_BIT, 0, 1, &b,
+                           0, nullptr, 0, nullptr);
+    }
+  }
   for (VkImageOwner* map : maps) map->transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+}
+
+VkImageOwner& VkOceanCascade::momentsMap() {
+  if (!filtered_) throw std::logic_error("this ocean cascade computes no moments map");
+  return moments_;
 }
 
 VkImageOwner& VkOceanCascade::slopeMap() {
@@ -112,8 +146,8 @@ VkImageOwner& VkOceanCascade::slopeMap() {
 
 namespace {
 
-std::vector<float> oceanMapFloats(VkContext& context, VkImageOwner& image) {
-  std::vector<unsigned char> bytes = readBack(context, image);
+std::vector<float> oceanMapFloats(VkContext& context, VkImageOwner& image, uint32_t level = 0) {
+  std::vector<unsigned char> bytes = readBack(context, image, level);
   std::vector<float> out(bytes.size() / sizeof(float));
   std::memcpy(out.data(), bytes.data(), out.size() * sizeof(float));
   return out;
@@ -123,5 +157,9 @@ std::vector<float> oceanMapFloats(VkContext& context, VkImageOwner& image) {
 
 std::vector<float> VkOceanCascade::readDisplacement() { return oceanMapFloats(context_, maps_[0]); }
 std::vector<float> VkOceanCascade::readSlopes() { return oceanMapFloats(context_, slopeMap()); }
+std::vector<float> VkOceanCascade::readLevel(bool moments, int level) {
+  if (!filtered_ || level < 0 || level >= levels_) throw std::logic_error("this ocean cascade has no such pyramid level");
+  return oceanMapFloats(context_, moments ? moments_ : maps_[1], static_cast<uint32_t>(level));
+}
 
 }  // namespace wg::rt

@@ -18,7 +18,8 @@ class VkOceanCascade {
   // Uploads h0 (rounded to float32), the bins' frequency indices and the twiddles, and
   // makes the pass variants it records (shared through `passes`). `slopes` and `jacobian`
   // as OceanGpuCascade's.
-  VkOceanCascade(VkOceanPasses& passes, const ocean::OceanCascade& cascade, bool slopes = true, bool jacobian = false);
+  VkOceanCascade(VkOceanPasses& passes, const ocean::OceanCascade& cascade, bool slopes = true, bool jacobian = false,
+                 bool filtered = false);
 
   // Records the maps at time t (seconds) with choppiness lambda; they end in
   // SHADER_READ_ONLY_OPTIMAL, for the water passes.
@@ -29,12 +30,18 @@ class VkOceanCascade {
 
   int resolution() const { return n_; }
   bool computesSlopes() const { return slopes_; }
+  // As OceanGpuCascade's: the slope and moments pyramids of log2 N + 1 levels.
+  bool filtered() const { return filtered_; }
+  int levels() const { return levels_; }
   // RGBA32F, N x N, texel (jx, jz) at image row jz, as OceanGpuCascade's maps.
   VkImageOwner& displacementMap() { return maps_[0]; }
   VkImageOwner& slopeMap();  // a std::logic_error without slopes
+  VkImageOwner& momentsMap();  // a std::logic_error unfiltered
   // The maps read back (after the command buffer ran), N * N * 4 floats, row jz * N + jx.
   std::vector<float> readDisplacement();
   std::vector<float> readSlopes();
+  // Level `level` of the slope or moments pyramid, (N >> level)^2 * 4 floats.
+  std::vector<float> readLevel(bool moments, int level);
 
  private:
   void evolve(VkCommandBuffer cmd, VkOceanPass& pass, double time, const std::vector<VkImageOwner*>& outputs);
@@ -49,6 +56,10 @@ class VkOceanCascade {
   VkImageOwner h0_, frequency_, twiddle_;
   VkImageOwner spectra_[2][2];  // [ping or pong][A or B]
   VkImageOwner maps_[2];
+  bool filtered_ = false;
+  int levels_ = 1;
+  VkImageOwner moments_;
+  VkOceanPass* downsample_ = nullptr;
   VkOceanPass *evolve_, *stockham_, *pack_;
   // With `jacobian`: the first texture's variants (the Jacobian's fields alone).
   VkOceanPass *evolveJacobian_ = nullptr, *stockhamSingle_ = nullptr;

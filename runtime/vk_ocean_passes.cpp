@@ -17,22 +17,27 @@ constexpr VkFormat kOceanSpectrumFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 constexpr VkFormat kOceanFoamFormat = VK_FORMAT_R32_SFLOAT;
 
 std::string oceanPassName(oceangpu::OceanPass pass, const oceangpu::OceanPassVariant& v) {
-  static const char* const names[] = {"ocean_evolve", "ocean_stockham", "ocean_pack", "ocean_foam_step", "ocean_foam_blend"};
-  return std::string(names[static_cast<int>(pass)]) + (v.slopes ? "_slopes" : "") + (v.jacobianOnly ? "_jacobian" : "");
+  static const char* const names[] = {"ocean_evolve",    "ocean_stockham",   "ocean_pack",
+                                      "ocean_foam_step", "ocean_foam_blend", "ocean_downsample"};
+  return std::string(names[static_cast<int>(pass)]) + (v.slopes ? "_slopes" : "") + (v.jacobianOnly ? "_jacobian" : "") +
+         (v.moments ? "_moments" : "");
 }
 
 // The formats the pass's fragment outputs write (as the GL runtime's textures).
 std::vector<VkFormat> oceanPassOutputs(oceangpu::OceanPass pass, const oceangpu::OceanPassVariant& v) {
   using oceangpu::OceanPass;
   if (pass == OceanPass::FoamStep || pass == OceanPass::FoamBlend) return {kOceanFoamFormat};
+  if (pass == OceanPass::Downsample) return {kOceanSpectrumFormat, kOceanSpectrumFormat};  // slopes and moments
+  if (pass == OceanPass::Pack && v.moments) return std::vector<VkFormat>(3, kOceanSpectrumFormat);
   const bool two = v.slopes && !(pass == OceanPass::Evolve && v.jacobianOnly);
   return std::vector<VkFormat>(two ? 2 : 1, kOceanSpectrumFormat);
 }
 
 }  // namespace
 
-VkImageOwner makeOceanImage(VkContext& context, int width, int height, VkFormat format) {
+VkImageOwner makeOceanImage(VkContext& context, int width, int height, VkFormat format, uint32_t levels) {
   VkImageSpec spec;
+  spec.mipLevels = levels;
   spec.format = format;
   spec.width = static_cast<uint32_t>(width);
   spec.height = static_cast<uint32_t>(height);
@@ -90,10 +95,8 @@ VkOceanPass::VkOceanPass(VkContext& context, oceangpu::OceanPass pass, const oce
   pipeline_ = createGraphicsPipeline(device_, d, "the ocean's " + name_ + " pass");
 }
 
-VkDescriptorSet VkOceanPass::setFor(const std::vector<VkImageOwner*>& inputs) {
-  std::vector<VkImageView> views;
-  for (const VkImageOwner* image : inputs) views.push_back(image->view());
-  auto it = sets_.find(views);
+VkDescriptorSet VkOceanPass::setFor(const std::vector<VkImageView>& views, VkImageLayout imageLayout) {
+  auto it = sets_.find({views, imageLayout});
   if (it != sets_.end()) return it->second;
   // A new pool when the last one's sets are spent (counted, never asked past its size).
   if (sets_.size() % kOceanSetsPerPool == 0) {
@@ -115,7 +118,7 @@ VkDescriptorSet VkOceanPass::setFor(const std::vector<VkImageOwner*>& inputs) {
   ai.pSetLayouts = &layout;
   checkVk(vkAllocateDescriptorSets(device_, &ai, &set), "allocating an ocean pass's descriptor set");
   std::vector<VkDescriptorImageInfo> images;
-  for (VkImageView v : views) images.push_back({sampler_.get(), v, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+  for (VkImageView v : views) images.push_back({sampler_.get(), v, imageLayout});
   std::vector<VkWriteDescriptorSet> writes;
   for (size_t i = 0; i < images.size(); ++i) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -127,25 +130,44 @@ VkDescriptorSet VkOceanPass::setFor(const std::vector<VkImageOwner*>& inputs) {
     writes.push_back(w);
   }
   vkUpdateDescriptorSets(device_, static_cast<uint32_t>(writes.size()), writes.data(), 0, nullptr);
-  return sets_.emplace(std::move(views), set).first->second;
+  return sets_.emplace(std::make_pair(views, imageLayout), set).first->second;
 }
 
 void VkOceanPass::record(VkCommandBuffer cmd, const std::vector<VkImageOwner*>& inputs, const std::vector<uint32_t>& constants,
                          const std::vector<VkImageOwner*>& outputs) {
   if (inputs.size() != samplers_ || constants.size() != constants_ || outputs.size() != outputs_ || outputs.empty())
     throw std::logic_error("the ocean's " + name_ + " pass recorded with the wrong number of images or constants");
-  for (VkImageOwner* image : inputs) image->transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
-  std::vector<VkRenderingAttachmentInfo> attachments;
+  std::vector<VkImageView> views, targets;
+  for (VkImageOwner* image : inputs) {
+    image->transition(cmd, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    views.push_back(image->view());
+  }
   for (VkImageOwner* image : outputs) {
     image->transition(cmd, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL);
+    targets.push_back(image->layerView(0));
+  }
+  draw(cmd, setFor(views, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL), constants, targets,
+       VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, {outputs[0]->spec().width, outputs[0]->spec().height});
+}
+
+void VkOceanPass::recordLevels(VkCommandBuffer cmd, const std::vector<VkImageView>& inputs,
+                               const std::vector<VkImageView>& outputs, VkExtent2D extent) {
+  if (inputs.size() != samplers_ || constants_ != 0 || outputs.size() != outputs_)
+    throw std::logic_error("the ocean's " + name_ + " pass recorded with the wrong number of images or constants");
+  draw(cmd, setFor(inputs, VK_IMAGE_LAYOUT_GENERAL), {}, outputs, VK_IMAGE_LAYOUT_GENERAL, extent);
+}
+
+void VkOceanPass::draw(VkCommandBuffer cmd, VkDescriptorSet set, const std::vector<uint32_t>& constants,
+                       const std::vector<VkImageView>& outputs, VkImageLayout outputLayout, VkExtent2D extent) {
+  std::vector<VkRenderingAttachmentInfo> attachments;
+  for (VkImageView view : outputs) {
     VkRenderingAttachmentInfo info{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-    info.imageView = image->layerView(0);
-    info.imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
+    info.imageView = view;
+    info.imageLayout = outputLayout;
     info.loadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;  // the triangle covers every texel
     info.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
     attachments.push_back(info);
   }
-  const VkExtent2D extent{outputs[0]->spec().width, outputs[0]->spec().height};
   VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
   ri.renderArea = {{0, 0}, extent};
   ri.layerCount = 1;
@@ -157,7 +179,6 @@ void VkOceanPass::record(VkCommandBuffer cmd, const std::vector<VkImageOwner*>& 
   vkCmdSetViewport(cmd, 0, 1, &viewport);
   vkCmdSetScissor(cmd, 0, 1, &scissor);
   vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_.get());
-  VkDescriptorSet set = setFor(inputs);
   vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_.get(), 0, 1, &set, 0, nullptr);
   if (!constants.empty())
     vkCmdPushConstants(cmd, layout_.get(), VK_SHADER_STAGE_FRAGMENT_BIT, 0, static_cast<uint32_t>(constants.size() * 4),
@@ -167,7 +188,8 @@ void VkOceanPass::record(VkCommandBuffer cmd, const std::vector<VkImageOwner*>& 
 }
 
 VkOceanPass& VkOceanPasses::get(oceangpu::OceanPass pass, const oceangpu::OceanPassVariant& variant) {
-  const std::pair<int, int> key{static_cast<int>(pass), (variant.slopes ? 1 : 0) + (variant.jacobianOnly ? 2 : 0)};
+  const std::pair<int, int> key{static_cast<int>(pass),
+                                (variant.slopes ? 1 : 0) + (variant.jacobianOnly ? 2 : 0) + (variant.moments ? 4 : 0)};
   auto it = passes_.find(key);
   if (it == passes_.end()) it = passes_.emplace(key, std::make_unique<VkOceanPass>(context_, pass, variant)).first;
   return *it->second;

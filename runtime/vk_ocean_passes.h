@@ -20,7 +20,7 @@ namespace wg::rt {
 
 // An N x N (or width x height) image of `format` that the ocean's passes sample, draw
 // into, clear and read back.
-VkImageOwner makeOceanImage(VkContext& context, int width, int height, VkFormat format);
+VkImageOwner makeOceanImage(VkContext& context, int width, int height, VkFormat format, uint32_t levels = 1);
 
 // The 32-bit word of a push constant (a float's bits, an int's two's complement, a uint).
 uint32_t oceanConstantWord(float v);
@@ -40,9 +40,16 @@ class VkOceanPass {
   // `constants` one word per push constant, in order.
   void record(VkCommandBuffer cmd, const std::vector<VkImageOwner*>& inputs, const std::vector<uint32_t>& constants,
               const std::vector<VkImageOwner*>& outputs);
+  // Records the pass (no constants) reading the views `inputs` and drawing into the views
+  // `outputs` (extent `extent`), all of images the caller holds in GENERAL layout: a pyramid
+  // level drawn from the level above in the same images (different subresources).
+  void recordLevels(VkCommandBuffer cmd, const std::vector<VkImageView>& inputs, const std::vector<VkImageView>& outputs,
+                    VkExtent2D extent);
 
  private:
-  VkDescriptorSet setFor(const std::vector<VkImageOwner*>& inputs);
+  VkDescriptorSet setFor(const std::vector<VkImageView>& views, VkImageLayout imageLayout);
+  void draw(VkCommandBuffer cmd, VkDescriptorSet set, const std::vector<uint32_t>& constants,
+            const std::vector<VkImageView>& outputs, VkImageLayout outputLayout, VkExtent2D extent);
 
   VkDevice device_;
   std::string name_;
@@ -52,7 +59,7 @@ class VkOceanPass {
   VkPipelineLayoutHandle layout_;
   VkPipelineHandle pipeline_;
   std::vector<VkDescriptorPoolHandle> pools_;  // a new one when the last one's sets are spent
-  std::map<std::vector<VkImageView>, VkDescriptorSet> sets_;
+  std::map<std::pair<std::vector<VkImageView>, VkImageLayout>, VkDescriptorSet> sets_;
 };
 
 // The passes of one simulation, each variant made once and shared by its cascades. The
@@ -66,7 +73,7 @@ class VkOceanPasses {
 
  private:
   VkContext& context_;
-  std::map<std::pair<int, int>, std::unique_ptr<VkOceanPass>> passes_;
+  std::map<std::pair<int, int>, std::unique_ptr<VkOceanPass>> passes_;  // (pass, variant bits)
 };
 
 }  // namespace wg::rt

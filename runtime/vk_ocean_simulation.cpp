@@ -10,9 +10,9 @@ VkOceanSimulation::VkOceanSimulation(VkContext& context, const std::vector<Ocean
     : passes_(std::make_unique<VkOceanPasses>(context)),
       set_(
           oceans, textures,
-          [this](const ocean::OceanSettings& settings, int, int c, bool slopes, bool foam) {
+          [this](const ocean::OceanSettings& settings, int, int c, bool slopes, bool foam, bool filtered) {
             return std::make_unique<VkOceanCascade>(*passes_, ocean::initialCascade(settings.spectrum, settings.cascades, c),
-                                                    slopes, foam);
+                                                    slopes, foam, filtered);
           },
           [this](const ocean::OceanSettings& settings, int c) {
             return std::make_unique<VkOceanFoam>(
@@ -35,6 +35,7 @@ void VkOceanSimulation::record(VkCommandBuffer cmd, double time) {
 VkImageOwner& VkOceanSimulation::map(const OceanMapRef& ref) {
   const auto [cascade, foam] = set_.mapSource(ref);
   if (foam) return foam->map();
+  if (ref.map == ocean::kMomentsMap) return cascade->momentsMap();
   return ref.map == ocean::kSlopeMap ? cascade->slopeMap() : cascade->displacementMap();
 }
 

@@ -89,12 +89,12 @@ VkImageOwner::VkImageOwner(VkContext& context, const VkImageSpec& spec) : device
   mai.memoryTypeIndex = context.memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   checkVk(vkAllocateMemory(device_, &mai, nullptr, &memory_), "allocating image memory");
   checkVk(vkBindImageMemory(device_, image_, memory_, 0), "binding image memory");
-  auto makeView = [&](VkImageViewType type, uint32_t firstLayer, uint32_t layers, uint32_t levels) {
+  auto makeView = [&](VkImageViewType type, uint32_t firstLayer, uint32_t layers, uint32_t levels, uint32_t firstLevel = 0) {
     VkImageViewCreateInfo vci{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     vci.image = image_;
     vci.viewType = type;
     vci.format = spec.format;
-    vci.subresourceRange = {aspect(), 0, levels, firstLayer, layers};
+    vci.subresourceRange = {aspect(), firstLevel, levels, firstLayer, layers};
     VkImageView v = VK_NULL_HANDLE;
     checkVk(vkCreateImageView(device_, &vci, nullptr, &v), "creating an image view");
     return v;
@@ -102,6 +102,9 @@ VkImageOwner::VkImageOwner(VkContext& context, const VkImageSpec& spec) : device
   view_ = makeView(spec.cube ? VK_IMAGE_VIEW_TYPE_CUBE : VK_IMAGE_VIEW_TYPE_2D, 0, spec.layers, spec.mipLevels);
   if (spec.usage & (VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT))
     for (uint32_t l = 0; l < spec.layers; ++l) layerViews_.push_back(makeView(VK_IMAGE_VIEW_TYPE_2D, l, 1, 1));
+  if (spec.mipLevels > 1 && !spec.cube && (spec.usage & VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT))
+    for (uint32_t level = 0; level < spec.mipLevels; ++level)
+      levelViews_.push_back(makeView(VK_IMAGE_VIEW_TYPE_2D, 0, 1, 1, level));
 }
 
 VkImageOwner::~VkImageOwner() { release(); }
@@ -109,6 +112,7 @@ VkImageOwner::~VkImageOwner() { release(); }
 void VkImageOwner::release() {
   if (!device_) return;
   for (VkImageView v : layerViews_) vkDestroyImageView(device_, v, nullptr);
+  for (VkImageView v : levelViews_) vkDestroyImageView(device_, v, nullptr);
   if (view_) vkDestroyImageView(device_, view_, nullptr);
   if (image_) vkDestroyImage(device_, image_, nullptr);
   if (memory_) vkFreeMemory(device_, memory_, nullptr);
@@ -123,6 +127,7 @@ VkImageOwner& VkImageOwner::operator=(VkImageOwner&& o) noexcept {
     memory_ = std::exchange(o.memory_, VK_NULL_HANDLE);
     view_ = std::exchange(o.view_, VK_NULL_HANDLE);
     layerViews_ = std::exchange(o.layerViews_, {});
+    levelViews_ = std::exchange(o.levelViews_, {});
     spec_ = o.spec_;
     layout_ = std::exchange(o.layout_, VK_IMAGE_LAYOUT_UNDEFINED);
   }
@@ -206,15 +211,16 @@ void uploadTexels(VkContext& context, VkImageOwner& image, const void* texels) {
   });
 }
 
-std::vector<unsigned char> readBack(VkContext& context, VkImageOwner& image) {
+std::vector<unsigned char> readBack(VkContext& context, VkImageOwner& image, uint32_t level) {
   const VkImageSpec& s = image.spec();
-  VkBufferOwner staging(context, static_cast<size_t>(s.width) * s.height * formatBytes(s.format), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
+  const uint32_t width = std::max(s.width >> level, 1u), height = std::max(s.height >> level, 1u);
+  VkBufferOwner staging(context, static_cast<size_t>(width) * height * formatBytes(s.format), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   context.submit([&](VkCommandBuffer cmd) {
     const VkImageLayout previous = image.layout();
     image.transition(cmd, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
     VkBufferImageCopy region{};
-    region.imageSubresource = {image.aspect(), 0, 0, 1};
-    region.imageExtent = {s.width, s.height, 1};
+    region.imageSubresource = {image.aspect(), level, 0, 1};
+    region.imageExtent = {width, height, 1};
     vkCmdCopyImageToBuffer(cmd, image.image(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer(), 1, &region);
     if (previous != VK_IMAGE_LAYOUT_UNDEFINED) image.transition(cmd, previous);
   });

@@ -59,6 +59,9 @@ class VkImageOwner {
   const VkImageSpec& spec() const { return spec_; }
   VkImageView view() const { return view_; }                          // every layer (a cube view for a cube)
   VkImageView layerView(uint32_t layer) const { return layerViews_[layer]; }  // one layer, level 0: an attachment
+  // Level `level` of layer 0 alone, of a mipmapped 2D attachment image: a pyramid level drawn
+  // from the level above (the ocean's filtered maps).
+  VkImageView levelView(uint32_t level) const { return levelViews_.at(level); }
   VkImageLayout layout() const { return layout_; }
   VkImageAspectFlags aspect() const;
   size_t bytes() const;  // level 0 of every layer, from the format
@@ -75,6 +78,7 @@ class VkImageOwner {
   VkDeviceMemory memory_ = VK_NULL_HANDLE;
   VkImageView view_ = VK_NULL_HANDLE;
   std::vector<VkImageView> layerViews_;
+  std::vector<VkImageView> levelViews_;
   VkImageSpec spec_;
   VkImageLayout layout_ = VK_IMAGE_LAYOUT_UNDEFINED;
 };
@@ -89,6 +93,6 @@ void uploadRgba8(VkContext& context, VkImageOwner& image, const unsigned char* r
 // as given, width * height texels); leaves it in SHADER_READ_ONLY_OPTIMAL.
 void uploadTexels(VkContext& context, VkImageOwner& image, const void* texels);
 // Copies level 0, layer 0 into host memory, rows in the image's order (row 0 first).
-std::vector<unsigned char> readBack(VkContext& context, VkImageOwner& image);
+std::vector<unsigned char> readBack(VkContext& context, VkImageOwner& image, uint32_t level = 0);  // one level of layer 0
 
 }  // namespace wg::rt

@@ -39,3 +39,71 @@ vec3 wg_ocean_normal(vec4 slopes, float lDxz) {
 // J = (1 + l dDx/dx)(1 + l dDz/dz) - (l dDx/dz)^2 of the summed maps: below 0 the
 // surface has folded over itself (where whitecaps form).
 float wg_ocean_jacobian(vec4 slopes, float lDxz) { return (1.0 + slopes.z) * (1.0 + slopes.w) - lDxz * lDxz; }
+
+// --- The filtered reader (ocean_surface's `filter`): the maps averaged over a pixel's
+// footprint on the water, and the slope variance that averaging removes.
+
+// The side of the square a pixel covers on the still water at p seen from `camera`, in
+// metres: the pixel's angle times the distance, stretched along the view by 1 / cos theta
+// (theta from the vertical), the footprint's longer axis as an isotropic GPU filter takes
+// it; cos theta is held at 1/1024 or more (a grazing view gives a long, finite footprint).
+float wg_ocean_footprint(vec3 p, vec3 camera, float pixelAngle) {
+  vec3 v = p - camera;
+  float d = length(v);
+  float cosTheta = d > 0.0 ? abs(v.y) / d : 0.0;
+  return d * pixelAngle / max(cosTheta, 1.0 / 1024.0);
+}
+
+// The level of detail of a map of `texelsPerMetre` for a footprint: log2 of the footprint
+// in texels, 0 (the map itself) below one texel, at most `levels` (log2 n: the 1 x 1 mean).
+float wg_ocean_lod(float footprint, float texelsPerMetre, int levels) {
+  return clamp(log2(max(footprint * texelsPerMetre, 1.0)), 0.0, float(levels));
+}
+
+// Level `level` of a map pyramid (n >> level texels a side; its texel j the mean of texels
+// j 2^l .. j 2^l + 2^l - 1 of level 0, centred at level-0 coordinate j 2^l + (2^l - 1) / 2)
+// at the level-0 texel coordinate u, bilinear between its four texels as wg_ocean_map.
+vec4 wg_ocean_map_level(highp sampler2D map, vec2 u, int n, int level) {
+  float scale = float(1 << level);
+  vec2 ul = (u - 0.5 * (scale - 1.0)) / scale;
+  int nl = n >> level;
+  vec2 base = floor(ul);
+  vec2 f = ul - base;
+  float size = float(nl);
+  ivec2 a = ivec2(base - size * floor(base / size)) & (nl - 1);
+  ivec2 b = (a + 1) & (nl - 1);
+  vec4 t00 = texelFetch(map, a, level);
+  vec4 t10 = texelFetch(map, ivec2(b.x, a.y), level);
+  vec4 t01 = texelFetch(map, ivec2(a.x, b.y), level);
+  vec4 t11 = texelFetch(map, b, level);
+  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+}
+
+// A map pyramid at the world point xz at level of detail lod in [0, levels]: levels
+// floor(lod) and the next, mixed by the fraction (trilinear, continuous across the levels:
+// at an integer lod the two sides agree).
+vec4 wg_ocean_map_lod(highp sampler2D map, vec2 xz, float texelsPerMetre, int n, int levels, float lod) {
+  vec2 u = xz * texelsPerMetre;
+  int l0 = min(int(floor(lod)), levels - 1);
+  float f = lod - float(l0);
+  return mix(wg_ocean_map_level(map, u, n, l0), wg_ocean_map_level(map, u, n, l0 + 1), f);
+}
+
+// The slope variance of one cascade that the shading loses at a footprint: its slopes'
+// second moment there (moments.x + moments.y, the box means of dh/dx^2 + dh/dz^2) less what
+// the normal keeps, the squared mean slope times the cascade's fade weight squared (a
+// faded cascade hands all of its slopes to the roughness).
+float wg_ocean_lost_variance(vec4 slopes, vec4 moments, float weight) {
+  return moments.x + moments.y - weight * weight * (slopes.x * slopes.x + slopes.y * slopes.y);
+}
+
+// The perceptual roughness (ggx_specular's r, GGX alpha = r^2) widened by slope variance
+// v: alpha'^2 = alpha^2 + v, v the sum of both axes' variances (a Beckmann lobe of alpha
+// has slope variance alpha^2 / 2 per axis: LEAN mapping, Olano and Baker 2010, which
+// Kaplanyan et al. 2016 and Tokuyoshi and Kaplanyan 2019 apply to GGX's alpha). r is held
+// in [0, 1], v at 0 or more (rounding can leave a mean square a hair below the squared mean).
+float wg_ocean_roughness(float r, float variance) {
+  float rc = clamp(r, 0.0, 1.0);
+  float a2 = rc * rc * rc * rc + max(variance, 0.0);
+  return min(sqrt(sqrt(a2)), 1.0);
+}

@@ -10,6 +10,7 @@
 // (a vector made unit, an angle inside the critical one, a coordinate of 1, ...) is rejected.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <functional>
@@ -26,6 +27,7 @@
 #include "core/node_options.h"
 #include "core/ocean_settings.h"
 #include "nodes/hard_case_regions.h"
+#include "nodes/ocean_readers.h"
 #include "nodes/registry.h"
 #include "nodes/texture_source.h"
 #include "test_support.h"
@@ -199,6 +201,11 @@ double caseJacobian(const Subject& s) {
   auto outs = evaluateNode(surface, nlohmann::json::object(), {{"ocean", sea}, {"position", givenInput(s, "position")}},
                            EvalEnvironment{}, &textures, test::sourceDir());
   return outs[static_cast<size_t>(surface.outputIndex("jacobian"))][0];
+}
+
+// The footprint (metres) ocean_surface's filter reads the case's point at (wg_ocean_footprint).
+double caseFootprint(const Subject& s) {
+  return nodes::oceanread::footprint(givenInput(s, "position"), givenInput(s, "camera"), givenInput(s, "pixel_angle")[0]);
 }
 
 // The wavenumber of angular frequency omega at depth d: omega^2 = g k tanh(k d), by bisection
@@ -526,6 +533,30 @@ const std::map<std::string, RegionCheck>& regionChecks() {
          double j = caseJacobian(s);
          return unless(j < 0, "J = " + std::to_string(j) + " at the point: the surface does not fold there");
        }},
+      {"footprint_past_tiles",
+       [](const Subject& s) {
+         const ocean::OceanSettings sea = caseSea(s);
+         const double f = caseFootprint(s);
+         for (size_t c = 0; c < sea.cascades.tileLengths.size(); ++c) {
+           const int n = ocean::cascadeResolution(sea.cascades, c);
+           const int levels = std::countr_zero(static_cast<unsigned>(n));
+           if (nodes::oceanread::lodOf(f, static_cast<float>(n / sea.cascades.tileLengths[c]), levels) < levels)
+             return "cascade " + std::to_string(c) + " is read below its 1 x 1 level (footprint " + std::to_string(f) + " m)";
+         }
+         return std::string();
+       }},
+      {"footprint_zero", [](const Subject& s) { return unless(caseFootprint(s) == 0, "the footprint is not 0"); }},
+      {"level_boundary",
+       [](const Subject& s) {
+         const ocean::OceanSettings sea = caseSea(s);
+         const double f = caseFootprint(s);
+         for (size_t c = 0; c < sea.cascades.tileLengths.size(); ++c) {
+           const int n = ocean::cascadeResolution(sea.cascades, c);
+           const double texels = f * static_cast<float>(n / sea.cascades.tileLengths[c]);
+           if (texels >= 1 && std::log2(texels) == std::floor(std::log2(texels))) return std::string();
+         }
+         return std::string("no cascade's footprint is a whole power of two texels");
+       }},
       {"shallow_water",
        [](const Subject& s) {
          ocean::OceanSettings sea = caseSea(s);
@@ -732,6 +763,11 @@ std::optional<Subject> movedOut(Subject s) {
     set("position", Value::vector({11, 0, 5}));  // J = 0.18 there at t = 0
   } else if (region == "shallow_water") {
     s.hc.oceanOptions["depth"] = 100;
+  } else if (region == "footprint_past_tiles" || region == "footprint_zero") {
+    Value p = givenInput(s, "position");
+    set("camera", Value::vector({p[0], p[1] + 40, p[2]}));  // straight above: a footprint of 4 cm
+  } else if (region == "level_boundary") {
+    set("pixel_angle", Value::scalar(1.37 / 64));
   } else if (region == "voronoi_2x2_search") {
     s.hc.options["search"] = "3x3";
   } else {
