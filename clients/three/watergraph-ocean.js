@@ -102,7 +102,7 @@ class OceanCascade {
     this.twiddle = twiddle;
     this.h0 = dataTexture(packed.h0, n, n, THREE.RGBAFormat, THREE.FloatType);
     this.frequency = dataTexture(packed.frequency, n, n, THREE.RedIntegerFormat, THREE.UnsignedIntType, 'R32UI');
-    const fields = slopes ? 2 : 1;
+    const fields = this.slopes ? 2 : 1;
     this.spectra = [floatTarget(n, fields), floatTarget(n, fields)];
     // A filtered cascade's maps are the pyramid's (raw WebGL textures with every level).
     this.pyramid = filtered ? new OceanPyramid(n) : null;

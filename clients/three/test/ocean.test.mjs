@@ -62,6 +62,11 @@ test('a read moments map makes its cascade filtered, and map() gives its pyramid
   assert.equal(new Set(maps).size, 3);
   assert.ok(sim.map({ ocean: 0, cascade: 1, map: 'slopes' }).isRenderTargetTexture);
   assert.throws(() => sim.map({ ocean: 0, cascade: 1, map: 'moments' }), /moments map is not computed/);
+  // Filtered with no shader reading its slope map: the slopes are transformed all the same
+  // (ocean_pack_filtered reads both spectra).
+  const moments = oceanOf([[0, 'moments']]).oceans[0].cascades[0];
+  assert.equal(moments.filtered, true);
+  assert.equal(moments.spectra[0].textures.length, 2);
 });
 
 // A WebGL 2 context that records every call: constants are numbers (the two the code adds
