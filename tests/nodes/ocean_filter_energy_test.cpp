@@ -83,7 +83,9 @@ TEST(OceanFilterEnergy, TheFilteredSlopeEnergyEqualsTheSupersampledPointSamples)
       EXPECT_NEAR(e.filtered, e.supersampled, 1e-12 * e.supersampled) << "t " << t << " level " << level;
       // The variance carries the energy the footprint averages away: at level 2 and above
       // most of it (the short waves' slopes average out over 4 texels and more).
-      if (level >= 2) EXPECT_LT(e.meanSquaredOnly, 0.9 * e.supersampled) << "level " << level;
+      if (level >= 2) {
+        EXPECT_LT(e.meanSquaredOnly, 0.9 * e.supersampled) << "level " << level;
+      }
     }
 }
 

@@ -8,7 +8,9 @@ precision highp samplerCube;
 in vec3 v_world_position;
 in vec3 v0_displaced_undisplaced;
 layout(location = 0) out vec4 o_color;
+uniform mat4 u_projection;
 uniform vec3 u_camera_position;
+uniform vec2 u_viewport_size;
 uniform vec3 u_sun_direction;
 uniform vec3 p_deep_color;
 uniform vec3 p_sss_color;
@@ -16,14 +18,14 @@ uniform float p_sss_strength;
 uniform float p_foam_start;
 uniform float p_foam_full;
 uniform float p_roughness;
-uniform sampler2D u_ocean0_displacement0;
 uniform sampler2D u_ocean0_slopes0;
 uniform sampler2D u_ocean0_foam0;
-uniform sampler2D u_ocean0_displacement1;
+uniform sampler2D u_ocean0_moments0;
 uniform sampler2D u_ocean0_slopes1;
 uniform sampler2D u_ocean0_foam1;
-uniform sampler2D u_ocean0_displacement2;
+uniform sampler2D u_ocean0_moments1;
 uniform sampler2D u_ocean0_slopes2;
+uniform sampler2D u_ocean0_moments2;
 uniform highp samplerCube u_environment;
 
 vec3 wg_safe_normalize_vec3(vec3 v) { return v * inversesqrt(max(dot(v, v), 1e-30)); }
@@ -159,6 +161,74 @@ float wg_ocean_fade(float d, float start) { return 1.0 - smoothstep(start, 2.0 *
 // surface has folded over itself (where whitecaps form).
 float wg_ocean_jacobian(vec4 slopes, float lDxz) { return (1.0 + slopes.z) * (1.0 + slopes.w) - lDxz * lDxz; }
 
+// --- The filtered reader (ocean_surface's `filter`): the maps averaged over a pixel's
+// footprint on the water, and the slope variance that averaging removes.
+
+// The side of the square a pixel covers on the still water at p seen from `camera`, in
+// metres: the pixel's angle times the distance, stretched along the view by 1 / cos theta
+// (theta from the vertical), the footprint's longer axis as an isotropic GPU filter takes
+// it; cos theta is held at 1/1024 or more (a grazing view gives a long, finite footprint).
+float wg_ocean_footprint(vec3 p, vec3 camera, float pixelAngle) {
+  vec3 v = p - camera;
+  float d = length(v);
+  float cosTheta = d > 0.0 ? abs(v.y) / d : 0.0;
+  return d * pixelAngle / max(cosTheta, 1.0 / 1024.0);
+}
+
+// The level of detail of a map of `texelsPerMetre` for a footprint: log2 of the footprint
+// in texels, 0 (the map itself) below one texel, at most `levels` (log2 n: the 1 x 1 mean).
+float wg_ocean_lod(float footprint, float texelsPerMetre, int levels) {
+  return clamp(log2(max(footprint * texelsPerMetre, 1.0)), 0.0, float(levels));
+}
+
+// Level `level` of a map pyramid (n >> level texels a side; its texel j the mean of texels
+// j 2^l .. j 2^l + 2^l - 1 of level 0, centred at level-0 coordinate j 2^l + (2^l - 1) / 2)
+// at the level-0 texel coordinate u, bilinear between its four texels as wg_ocean_map.
+vec4 wg_ocean_map_level(highp sampler2D map, vec2 u, int n, int level) {
+  float scale = float(1 << level);
+  vec2 ul = (u - 0.5 * (scale - 1.0)) / scale;
+  int nl = n >> level;
+  vec2 base = floor(ul);
+  vec2 f = ul - base;
+  float size = float(nl);
+  ivec2 a = ivec2(base - size * floor(base / size)) & (nl - 1);
+  ivec2 b = (a + 1) & (nl - 1);
+  vec4 t00 = texelFetch(map, a, level);
+  vec4 t10 = texelFetch(map, ivec2(b.x, a.y), level);
+  vec4 t01 = texelFetch(map, ivec2(a.x, b.y), level);
+  vec4 t11 = texelFetch(map, b, level);
+  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
+}
+
+// A map pyramid at the world point xz at level of detail lod in [0, levels]: levels
+// floor(lod) and the next, mixed by the fraction (trilinear, continuous across the levels:
+// at an integer lod the two sides agree).
+vec4 wg_ocean_map_lod(highp sampler2D map, vec2 xz, float texelsPerMetre, int n, int levels, float lod) {
+  vec2 u = xz * texelsPerMetre;
+  int l0 = min(int(floor(lod)), levels - 1);
+  float f = lod - float(l0);
+  return mix(wg_ocean_map_level(map, u, n, l0), wg_ocean_map_level(map, u, n, l0 + 1), f);
+}
+
+// The slope variance of one cascade that the shading loses at a footprint: its slopes'
+// second moment there (moments.x + moments.y, the box means of dh/dx^2 + dh/dz^2) less what
+// the normal keeps, the squared mean slope times the cascade's fade weight squared (a
+// faded cascade hands all of its slopes to the roughness).
+float wg_ocean_lost_variance(vec4 slopes, vec4 moments, float weight) {
+  return moments.x + moments.y - weight * weight * (slopes.x * slopes.x + slopes.y * slopes.y);
+}
+
+// The perceptual roughness (ggx_specular's r, GGX alpha = r^2) widened by slope variance
+// v: alpha'^2 = alpha^2 + v, v the sum of both axes' variances (a Beckmann lobe of alpha
+// has slope variance alpha^2 / 2 per axis: LEAN mapping, Olano and Baker 2010, which
+// Kaplanyan et al. 2016 and Tokuyoshi and Kaplanyan 2019 apply to GGX's alpha). r is held
+// in [0, 1], v at 0 or more (rounding can leave a mean square a hair below the squared mean).
+float wg_ocean_roughness(float r, float variance) {
+  float rc = clamp(r, 0.0, 1.0);
+  float a2 = rc * rc * rc * rc + max(variance, 0.0);
+  return min(sqrt(sqrt(a2)), 1.0);
+}
+
 // reflect_dir: the mirror direction of the view ray about the surface normal, for
 // reflection look-ups (cube map, sky colour, screen-space reflection).
 
@@ -234,10 +304,22 @@ void main() {
   float n3_detail_t1 = wg_ocean_fade(distance(n3_detail_t0, u_camera_position), 1440.0);
   float n3_detail_t2 = wg_ocean_fade(distance(n3_detail_t0, u_camera_position), 288.0);
   float n3_detail_t3 = wg_ocean_fade(distance(n3_detail_t0, u_camera_position), 60.0);
-  vec4 n3_detail_t4 = n3_detail_t1 * wg_ocean_map(u_ocean0_displacement0, n3_detail_t0.xz, 2.1333334, 256) + n3_detail_t2 * wg_ocean_map(u_ocean0_displacement1, n3_detail_t0.xz, 10.666667, 256) + n3_detail_t3 * wg_ocean_map(u_ocean0_displacement2, n3_detail_t0.xz, 51.2, 256);
-  vec4 n3_detail_t5 = n3_detail_t1 * wg_ocean_map(u_ocean0_slopes0, n3_detail_t0.xz, 2.1333334, 256) + n3_detail_t2 * wg_ocean_map(u_ocean0_slopes1, n3_detail_t0.xz, 10.666667, 256) + n3_detail_t3 * wg_ocean_map(u_ocean0_slopes2, n3_detail_t0.xz, 51.2, 256);
-  vec3 n3_detail_normal = wg_ocean_normal(n3_detail_t5, n3_detail_t4.w);
-  float n3_detail_jacobian = wg_ocean_jacobian(n3_detail_t5, n3_detail_t4.w);
+  float n3_detail_t4 = wg_ocean_footprint(n3_detail_t0, u_camera_position, (2.0 / abs(u_projection[1][1] * u_viewport_size.y)));
+  float n3_detail_t5 = wg_ocean_lod(n3_detail_t4, 2.1333334, 8);
+  vec4 n3_detail_t6 = wg_ocean_map_lod(u_ocean0_slopes0, n3_detail_t0.xz, 2.1333334, 256, 8, n3_detail_t5);
+  vec4 n3_detail_t7 = wg_ocean_map_lod(u_ocean0_moments0, n3_detail_t0.xz, 2.1333334, 256, 8, n3_detail_t5);
+  float n3_detail_t8 = wg_ocean_lod(n3_detail_t4, 10.666667, 8);
+  vec4 n3_detail_t9 = wg_ocean_map_lod(u_ocean0_slopes1, n3_detail_t0.xz, 10.666667, 256, 8, n3_detail_t8);
+  vec4 n3_detail_t10 = wg_ocean_map_lod(u_ocean0_moments1, n3_detail_t0.xz, 10.666667, 256, 8, n3_detail_t8);
+  float n3_detail_t11 = wg_ocean_lod(n3_detail_t4, 51.2, 8);
+  vec4 n3_detail_t12 = wg_ocean_map_lod(u_ocean0_slopes2, n3_detail_t0.xz, 51.2, 256, 8, n3_detail_t11);
+  vec4 n3_detail_t13 = wg_ocean_map_lod(u_ocean0_moments2, n3_detail_t0.xz, 51.2, 256, 8, n3_detail_t11);
+  vec4 n3_detail_t14 = n3_detail_t1 * n3_detail_t6 + n3_detail_t2 * n3_detail_t9 + n3_detail_t3 * n3_detail_t12;
+  float n3_detail_t15 = n3_detail_t1 * n3_detail_t7.w + n3_detail_t2 * n3_detail_t10.w + n3_detail_t3 * n3_detail_t13.w;
+  float n3_detail_t16 = wg_ocean_lost_variance(n3_detail_t6, n3_detail_t7, n3_detail_t1) + wg_ocean_lost_variance(n3_detail_t9, n3_detail_t10, n3_detail_t2) + wg_ocean_lost_variance(n3_detail_t12, n3_detail_t13, n3_detail_t3);
+  vec3 n3_detail_normal = wg_ocean_normal(n3_detail_t14, n3_detail_t15);
+  float n3_detail_jacobian = wg_ocean_jacobian(n3_detail_t14, n3_detail_t15);
+  float n3_detail_roughness = wg_ocean_roughness(p_roughness, n3_detail_t16);
   float n4_whitecaps = wg_remap_clamped_float(n3_detail_jacobian, p_foam_start, p_foam_full, 0.0, 1.0);
   float n5_cover = max(n4_whitecaps, n2_foam);
   vec3 n6_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
@@ -246,7 +328,7 @@ void main() {
   vec3 n8_body_sky_t0 = wg_reflect_dir(n3_detail_normal, b_view_direction);
   vec3 n8_body_sky_color = texture(u_environment, n8_body_sky_t0).rgb;
   vec3 n9_body_blend = mix(n6_deep_color, n8_body_sky_color, vec3(n7_body_fresnel_t1));
-  vec4 n12_ggx_t0 = wg_ggx_specular(n3_detail_normal, b_view_direction, u_sun_direction, p_roughness, 0.02);
+  vec4 n12_ggx_t0 = wg_ggx_specular(n3_detail_normal, b_view_direction, u_sun_direction, n3_detail_roughness, 0.02);
   float n12_ggx_t1 = (n12_ggx_t0.x * n12_ggx_t0.w);
   vec3 n12_ggx_color = (vec3(1.0, 0.82757086, 0.60382736) * n12_ggx_t1);
   float n14_p_split_y = v_world_position.y;

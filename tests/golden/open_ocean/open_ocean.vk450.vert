@@ -7,7 +7,9 @@ layout(location = 1) out vec3 v0_displaced_undisplaced;
 layout(std140, set = 0, binding = 0) uniform WgUniforms {
   mat4 u_model;
   mat4 u_view_projection;
+  mat4 u_projection;
   vec3 u_camera_position;
+  vec2 u_viewport_size;
   vec3 u_sun_direction;
   vec3 p_deep_color;
   vec3 p_sss_color;
@@ -18,10 +20,10 @@ layout(std140, set = 0, binding = 0) uniform WgUniforms {
 };
 layout(set = 0, binding = 1) uniform sampler2D u_ocean0_displacement0;
 layout(set = 0, binding = 2) uniform sampler2D u_ocean0_slopes0;
-layout(set = 0, binding = 4) uniform sampler2D u_ocean0_displacement1;
-layout(set = 0, binding = 5) uniform sampler2D u_ocean0_slopes1;
-layout(set = 0, binding = 7) uniform sampler2D u_ocean0_displacement2;
-layout(set = 0, binding = 8) uniform sampler2D u_ocean0_slopes2;
+layout(set = 0, binding = 5) uniform sampler2D u_ocean0_displacement1;
+layout(set = 0, binding = 6) uniform sampler2D u_ocean0_slopes1;
+layout(set = 0, binding = 9) uniform sampler2D u_ocean0_displacement2;
+layout(set = 0, binding = 10) uniform sampler2D u_ocean0_slopes2;
 
 // The spectral ocean's readers (ocean_displacement, ocean_surface): its maps at a world point.
 
