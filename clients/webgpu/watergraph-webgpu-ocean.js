@@ -84,6 +84,9 @@ const FULLSCREEN_WGSL = '@vertex fn main(@builtin(vertex_index) i: u32) -> @buil
 
 const USAGE = () => GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_DST | GPUTextureUsage.COPY_SRC;
 
+// The colour bytes a sample of ocean_pack_filtered's three RGBA32F targets.
+const FILTERED_PACK_BYTES = 48;
+
 // The mip levels of a filtered cascade's N x N slope and moments maps, down to 1 x 1.
 export function pyramidLevels(n) {
   if (!Number.isInteger(n) || n < 1 || (n & (n - 1)) !== 0) throw new WebgpuOceanError(`an ocean cascade's resolution must be a power of two (got ${n})`);
@@ -118,6 +121,13 @@ export class WebgpuOceanSimulation {
     this.device = device;
     this.module = module;
     this.passes = passes;
+    // ocean_pack_filtered writes three RGBA32F targets at once: 48 bytes a sample, over
+    // WebGPU's default limit of 32 (request the adapter's maxColorAttachmentBytesPerSample).
+    const filtered = (manifest.textures ?? []).some((t) => t.ocean?.map === 'moments');
+    const bytes = device.limits?.maxColorAttachmentBytesPerSample ?? 32;
+    if (filtered && bytes < FILTERED_PACK_BYTES)
+      throw new WebgpuOceanError(`graph '${manifest.graph}' filters its ocean maps, whose pack writes ${FILTERED_PACK_BYTES} bytes of colour a sample; ` +
+        `this device allows ${bytes} (request maxColorAttachmentBytesPerSample ${FILTERED_PACK_BYTES} or more from the adapter)`);
     this.sampler = device.createSampler({ magFilter: 'nearest', minFilter: 'nearest' });
     this.vertex = device.createShaderModule({ code: FULLSCREEN_WGSL, label: 'the ocean passes\' full-screen triangle' });
     this.pipelines = {};

@@ -32,9 +32,10 @@ function passesOf() {
 
 // A device and encoder recording every texture made and every draw: its pass, its sampled
 // views by name and its attachments' views (a view: {texture, ...its descriptor}).
-function recordingDevice() {
+function recordingDevice(colorBytes = 128) {
   const textures = [], draws = [];
   const device = {
+    limits: { maxColorAttachmentBytesPerSample: colorBytes },
     queue: { writeTexture() {} },
     createTexture(desc) {
       const t = { ...desc, createView: (v = {}) => ({ texture: t, ...v }) };
@@ -120,4 +121,11 @@ test('a filtered cascade: level 0 from the pack, level l drawn from a view of le
   assert.equal(sim.map({ ocean: 0, cascade: 0, map: 'moments' }), moments);
   assert.equal(sim.map({ ocean: 0, cascade: 0, map: 'slopes' }), slopes);
   assert.throws(() => sim.map({ ocean: 0, cascade: 1, map: 'moments' }), /not computed/);
+});
+
+test('a filtered ocean on a device held to WebGPU\'s default 32 colour bytes a sample is a clear error', () => {
+  assert.throws(() => simulationOf(recordingDevice(32).device, [[0, 'slopes'], [0, 'moments']]),
+    (e) => e instanceof WebgpuOceanError && /writes 48 bytes of colour a sample; this device allows 32/.test(e.message));
+  // Unfiltered, 32 bytes are enough (two RGBA32F targets at most).
+  assert.doesNotThrow(() => simulationOf(recordingDevice(32).device, [[0, 'slopes'], [1, 'slopes']]));
 });
