@@ -55,24 +55,40 @@ GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz,
 FilteredExprs emitFiltered(EmitContext& ctx, int oceanPort, const GlslExpr& xz, const GlslExpr& footprint,
                            const std::vector<GlslExpr>& weights) {
   const auto& s = ctx.oceanSettings(oceanPort);
+  const size_t count = s.cascades.tileLengths.size();
+  std::vector<GlslExpr> k(count), size(count), levels(count), lod(count), slopes(count);
   FilteredExprs out;
-  for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
+  auto read = [&](size_t c, int which) {
+    GlslExpr value = EmitContext::call("wg_ocean_map_lod", {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz, k[c],
+                                                           size[c], levels[c], lod[c]});
+    // The slopes' levels exist only in a filtered cascade, which the runtimes recognise by a
+    // shader's moments map: reading the filtered slopes keeps the moments sampler too (a use
+    // that reads the slopes alone declares it unread in the text, and the pyramids are made).
+    if (which == ocean::kSlopeMap)
+      for (uint32_t symbol : ctx.oceanMap(oceanPort, static_cast<int>(c), ocean::kMomentsMap).symbols()) value.reading(symbol);
+    return ctx.temporary(Type::Vec4, value);
+  };
+  auto weighted = [&](size_t c, const GlslExpr& term) {
+    return GlslExpr(c == 0 ? "" : " + ") + (weights[c].empty() ? term : weights[c] + " * " + term);
+  };
+  // The slopes first and the moments after: a use that reads the slopes alone (the `slopes`
+  // output) leaves every moments read unread, at the end, where the planner takes it back.
+  for (size_t c = 0; c < count; ++c) {
     const int n = ocean::cascadeResolution(s.cascades, c);
-    const GlslExpr k = ctx.literal(n / s.cascades.tileLengths[c]), size = std::to_string(n),
-                   levels = std::to_string(std::countr_zero(static_cast<unsigned>(n)));
-    GlslExpr lod = ctx.temporary(Type::Float, EmitContext::call("wg_ocean_lod", {footprint, k, levels}));
-    auto read = [&](int which) {
-      return ctx.temporary(Type::Vec4, EmitContext::call("wg_ocean_map_lod", {ctx.oceanMap(oceanPort, static_cast<int>(c), which),
-                                                                             xz, k, size, levels, lod}));
-    };
-    GlslExpr slopes = read(ocean::kSlopeMap), moments = read(ocean::kMomentsMap);
-    const bool faded = !weights[c].empty();
-    const std::string plus = out.slopes.empty() ? "" : " + ";
-    out.slopes += plus + (faded ? weights[c] + " * " + slopes : slopes);
-    out.lDxz += plus + (faded ? weights[c] + " * " + moments + ".w" : moments + ".w");
-    out.variance += plus + EmitContext::call("wg_ocean_lost_variance", {slopes, moments, faded ? weights[c] : GlslExpr("1.0")});
+    k[c] = ctx.literal(n / s.cascades.tileLengths[c]);
+    size[c] = std::to_string(n);
+    levels[c] = std::to_string(std::countr_zero(static_cast<unsigned>(n)));
+    lod[c] = ctx.temporary(Type::Float, EmitContext::call("wg_ocean_lod", {footprint, k[c], levels[c]}));
+    slopes[c] = read(c, ocean::kSlopeMap);
+    out.slopes += weighted(c, slopes[c]);
   }
   out.slopes = ctx.temporary(Type::Vec4, out.slopes);
+  for (size_t c = 0; c < count; ++c) {
+    GlslExpr moments = read(c, ocean::kMomentsMap);
+    out.lDxz += weighted(c, moments + ".w");
+    out.variance += GlslExpr(c == 0 ? "" : " + ") +
+                    EmitContext::call("wg_ocean_lost_variance", {slopes[c], moments, weights[c].empty() ? GlslExpr("1.0") : weights[c]});
+  }
   out.lDxz = ctx.temporary(Type::Float, out.lDxz);
   out.variance = ctx.temporary(Type::Float, out.variance);
   return out;

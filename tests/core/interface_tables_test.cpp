@@ -31,7 +31,7 @@ TEST(InterfaceTables, EveryTableListsItsEnumInOrderWithUniqueNames) {
   expectOrderedAndUnique(sceneSamplerTable(), &SceneSamplerRow::target, "scene sampler target");
   expectOrderedAndUnique(builtinTextureTable(), &BuiltinTextureRow::name, "builtin texture");
   // The last enumerators have rows too (an added enumerator without a row fails here).
-  EXPECT_EQ(builtinTable().size(), static_cast<size_t>(Builtin::SunDirection) + 1);
+  EXPECT_EQ(builtinTable().size(), static_cast<size_t>(Builtin::PixelAngle) + 1);
   EXPECT_EQ(builtinUniformTable().size(), static_cast<size_t>(BuiltinUniform::TimePhase) + 1);
   EXPECT_EQ(outputSlotTable().size(), static_cast<size_t>(OutputSlot::FragmentAlpha) + 1);
   EXPECT_EQ(renderPassTable().size(), kRenderPassCount);
