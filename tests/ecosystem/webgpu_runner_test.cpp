@@ -86,10 +86,9 @@ class WebgpuRunner : public ::testing::Test {
   // each job with the runtime (glsl330) and with the WebGPU runner, and returns the PSNR in dB
   // of each job's two frames, in the jobs' order (0 where a render failed, with the failure
   // reported).
-  // `sun`: options of both `scene` and `render` (" --sun-elevation -5"), or none.
-  static std::vector<double> comparedPsnrs(const std::vector<RunnerJob>& jobs, const std::string& sun = "") {
+  static std::vector<double> comparedPsnrs(const std::vector<RunnerJob>& jobs) {
     TempDir dir("wg_webgpu_");
-    CmdResult s = wgRun("scene -o " + test::shellQuote(dir / "scene.json") + sun);
+    CmdResult s = wgRun("scene -o " + test::shellQuote(dir / "scene.json"));
     EXPECT_EQ(s.exit, 0) << s.err;
     std::set<std::string> compiled;
     nlohmann::json batch = nlohmann::json::array();
@@ -109,7 +108,7 @@ class WebgpuRunner : public ::testing::Test {
       CmdResult r = wgRun("render " + test::shellQuote(graph) + " -o " + test::shellQuote(references.back()) +
                           " --target glsl330 " + (job.scene ? "" : "--scene none ") +
                           "--tonemap none --exposure 0 --size " + kRunnerSize + " --camera " + job.camera +
-                          " --time 3.5 --grid 128" + sun);
+                          " --time 3.5 --grid 128");
       EXPECT_EQ(r.exit, 0) << job.graph << ": " << r.err;
       batch.push_back({{"manifest", name + "/" + name + ".manifest.json"}, {"camera", job.camera},
                        {"png", frames.back()}, {"scene", job.scene ? "builtin" : "none"}});
