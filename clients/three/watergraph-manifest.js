@@ -30,7 +30,7 @@ const SAMPLER_CHOICES = table({
   filter: setOf(['nearest', 'linear', 'mipmapped']),
   color_space: setOf(['linear', 'srgb']),
 });
-const OCEAN_MAP_NAMES = setOf(['displacement', 'slopes', 'foam']);
+const OCEAN_MAP_NAMES = setOf(['displacement', 'slopes', 'foam', 'moments']);
 const IDENTIFIER = /^[A-Za-z_][A-Za-z0-9_]*$/;
 
 export const has = (object, key) => Object.prototype.hasOwnProperty.call(object, key);

@@ -6,13 +6,29 @@
 // graph's ocean module (`watergraph compile` writes <graph>.ocean.js for a web target,
 // codegen/ocean_module_js.h): each cascade's h0 and frequency indices, the twiddles, the
 // 32-bit time phase, the foam's constants and clock. This file holds no ocean maths, only
-// the passes' plumbing: which textures, which targets, in which order.
+// the passes' plumbing: which textures, which targets, in which order. A filtered cascade's
+// pyramids (ocean_pack_filtered, ocean_downsample) are drawn by watergraph-ocean-pyramid.js.
 import * as THREE from 'three';
 import { WaterGraphError } from './watergraph-error.js';
 import { fullScreenTriangle, runtimeMaterial } from './watergraph-passes.js';
+import { downsampleDraws, OceanPyramid, PyramidPrograms } from './watergraph-ocean-pyramid.js';
 
 // The map names of a manifest texture's "ocean" (core/ocean_settings.h kOceanMapNames).
-export const OCEAN_MAPS = ['displacement', 'slopes', 'foam'];
+export const OCEAN_MAPS = ['displacement', 'slopes', 'foam', 'moments'];
+
+// The passes of one cascade's maps in order (runtime/ocean_gpu_cascade.cpp): the evolution,
+// 2 log2 N Stockham stages, the packing, and for a filtered cascade (its moments map is read)
+// one downsample per pyramid level. `slopes`: a shader reads the slope map (a filtered
+// cascade always computes it).
+export function cascadePasses(n, { slopes, filtered }) {
+  const both = slopes || filtered;
+  const passes = [{ shader: both ? 'ocean_evolve' : 'ocean_evolve_displacement' }];
+  for (let vertical = 0; vertical < 2; ++vertical)
+    for (let ns = 1; ns < n; ns *= 2) passes.push({ shader: both ? 'ocean_stockham' : 'ocean_stockham_single', ns, vertical });
+  passes.push({ shader: filtered ? 'ocean_pack_filtered' : both ? 'ocean_pack' : 'ocean_pack_displacement' });
+  if (filtered) for (const d of downsampleDraws(n)) passes.push({ shader: 'ocean_downsample', ...d });
+  return passes;
+}
 
 // A float texture read by texelFetch (nearest, no mipmaps), N x N unless given.
 function dataTexture(data, width, height, format, type, internalFormat = null) {
@@ -76,17 +92,21 @@ class OceanPasses {
 // One cascade (runtime/ocean_gpu_cascade.h): the evolution, 2 log2 N Stockham stages, the
 // packing; with `jacobian`, the foam's Jacobian fields alone into targets of their own.
 class OceanCascade {
-  constructor(data, c, packed, twiddle, slopes, jacobian) {
+  constructor(data, c, packed, twiddle, slopes, jacobian, filtered) {
     const n = data.sizes[c];  // the cascade's own N (cascade_sizes)
     this.n = n;
     this.dk = data.dk[c];
-    this.slopes = slopes;
+    this.filtered = filtered;
+    this.slopes = slopes || filtered;
+    this.plan = cascadePasses(n, { slopes, filtered });
     this.twiddle = twiddle;
     this.h0 = dataTexture(packed.h0, n, n, THREE.RGBAFormat, THREE.FloatType);
     this.frequency = dataTexture(packed.frequency, n, n, THREE.RedIntegerFormat, THREE.UnsignedIntType, 'R32UI');
-    const fields = slopes ? 2 : 1;
+    const fields = this.slopes ? 2 : 1;
     this.spectra = [floatTarget(n, fields), floatTarget(n, fields)];
-    this.maps = floatTarget(n, fields);
+    // A filtered cascade's maps are the pyramid's (raw WebGL textures with every level).
+    this.pyramid = filtered ? new OceanPyramid(n) : null;
+    this.maps = filtered ? null : floatTarget(n, fields);
     this.jacobianTargets = jacobian ? [floatTarget(n, 1), floatTarget(n, 1)] : null;
   }
 
@@ -109,12 +129,28 @@ class OceanCascade {
     return current;
   }
 
-  update(renderer, passes, tau, choppiness) {
-    this.#evolve(renderer, passes, this.slopes ? 'ocean_evolve' : 'ocean_evolve_displacement', tau, this.spectra[0]);
-    const current = this.#transform(renderer, passes, this.slopes ? 'ocean_stockham' : 'ocean_stockham_single', this.slopes, this.spectra);
-    const result = this.spectra[current];
-    passes.draw(renderer, this.slopes ? 'ocean_pack' : 'ocean_pack_displacement',
-      { u_a: result.textures[0], u_b: this.slopes ? result.textures[1] : null, u_lambda: choppiness }, this.maps);
+  // The passes of this.plan (cascadePasses) in order.
+  update(renderer, passes, tau, choppiness, pyramidPrograms) {
+    let current = 0;  // the spectra target holding the last result
+    for (const p of this.plan) {
+      const result = this.spectra[current];
+      if (p.shader.startsWith('ocean_evolve')) {
+        this.#evolve(renderer, passes, p.shader, tau, this.spectra[0]);
+        current = 0;
+      } else if (p.shader.startsWith('ocean_stockham')) {
+        passes.draw(renderer, p.shader, {
+          u_a: result.textures[0], u_b: this.slopes ? result.textures[1] : null, u_twiddle: this.twiddle,
+          u_n: this.n, u_ns: p.ns, u_vertical: p.vertical,
+        }, this.spectra[1 - current]);
+        current = 1 - current;
+      } else if (p.shader === 'ocean_pack_filtered') {
+        // The pack and every downsample after it, in one stretch of raw WebGL.
+        this.pyramid.update(renderer, pyramidPrograms, result.textures[0], result.textures[1], choppiness);
+      } else if (p.shader !== 'ocean_downsample') {
+        passes.draw(renderer, p.shader,
+          { u_a: result.textures[0], u_b: this.slopes ? result.textures[1] : null, u_lambda: choppiness }, this.maps);
+      }
+    }
   }
 
   // (dh/dz, dDx/dx, dDz/dz, dDx/dz) at phase `tau`, without the choppiness: a texture valid
@@ -125,13 +161,16 @@ class OceanCascade {
     return this.jacobianTargets[current].texture;
   }
 
+  // Map 0 (displacement), 1 (slopes) or 3 (moments, filtered cascades alone).
   map(which) {
+    if (this.pyramid) return this.pyramid.textures[which === 3 ? 2 : which];
     return this.maps.textures[which];
   }
 
   dispose() {
     for (const t of [this.h0, this.frequency]) t.dispose();
-    for (const t of [...this.spectra, this.maps, ...(this.jacobianTargets ?? [])]) t.dispose();
+    for (const t of [...this.spectra, ...(this.maps ? [this.maps] : []), ...(this.jacobianTargets ?? [])]) t.dispose();
+    this.pyramid?.dispose();
   }
 }
 
@@ -202,6 +241,7 @@ export class OceanSimulation {
       throw new WaterGraphError(`graph '${graph}': its ocean module describes ${module.oceans.length} ocean(s), the manifest ${manifest.oceans.length}: compile the graph again`);
     this.module = module;
     this.passes = new OceanPasses(description);
+    this.pyramidPrograms = new PyramidPrograms(description);
     const read = (o, c, map) => (manifest.textures ?? []).some((t) =>
       t.ocean && t.ocean.ocean === o && t.ocean.cascade === c && t.ocean.map === map);
     const twiddles = new Map();  // one texture per resolution
@@ -216,7 +256,9 @@ export class OceanSimulation {
         const foamed = read(o, c, 'foam');
         if (foamed && c >= data.foam.cascades)
           throw new WaterGraphError(`graph '${graph}': a texture reads the foam of ocean ${data.node} cascade ${c}, which its foam_cascades gives no foam`);
-        cascades.push(new OceanCascade(data, c, packed[c], twiddles.get(n), read(o, c, 'slopes'), foamed));
+        // A read moments map is the one sign that the cascade is filtered (its slope and
+        // moments maps then carry pyramids).
+        cascades.push(new OceanCascade(data, c, packed[c], twiddles.get(n), read(o, c, 'slopes'), foamed, read(o, c, 'moments')));
         foam.push(foamed ? new OceanFoam(n, data.foam, module) : null);
       });
       return { data, cascades, foam };
@@ -233,6 +275,8 @@ export class OceanSimulation {
     const which = OCEAN_MAPS.indexOf(ref.map);
     if (which < 0) throw new WaterGraphError(`an ocean texture names map '${ref.map}' (the maps are ${OCEAN_MAPS.join(', ')})`);
     if (which === 2) return ocean.foam[ref.cascade].output.texture;
+    if (which === 3 && !cascade.filtered)
+      throw new WaterGraphError(`ocean ${ref.ocean} cascade ${ref.cascade}: its moments map is not computed (no shader samples it)`);
     return cascade.map(which);
   }
 
@@ -254,7 +298,7 @@ export class OceanSimulation {
         cascades.forEach((cascade, c) => {
           // The foam first: its steps use the cascade's Jacobian targets, update its spectra.
           if (foam[c]) foam[c].update(renderer, this.passes, time, data.choppiness, cascade, history);
-          cascade.update(renderer, this.passes, tau, data.choppiness);
+          cascade.update(renderer, this.passes, tau, data.choppiness, this.pyramidPrograms);
         });
     } finally {
       renderer.autoClear = saved.autoClear;
@@ -272,5 +316,6 @@ export class OceanSimulation {
     }
     this.twiddles.forEach((t) => t.dispose());
     this.passes.dispose();
+    this.pyramidPrograms.dispose();
   }
 }

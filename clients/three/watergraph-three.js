@@ -202,6 +202,7 @@ export class WaterGraph {
     // the runtime's render) or 'continue' (an animation: from the previous frame's steps).
     this.foamHistory = 'replay';
     this.time = 0;
+    this.frameSize = null;  // the frame render() draws (u_viewport_size), set by render()
     this.meshes = [];
     for (const a of manifest.attributes ?? []) {
       const want = GRID_ATTRIBUTES[a.name];
@@ -288,14 +289,20 @@ export class WaterGraph {
       this.uniforms[this.builtins.sun_direction].value.fromArray(description.sun_direction);
   }
 
-  // A mesh whose world matrix becomes u_model and the drawing-buffer size u_viewport_size.
+  // A mesh whose world matrix becomes u_model and the drawn frame's size u_viewport_size:
+  // with a scene description the frame render() draws (as the runtime, whose every pass reads
+  // the frame's size, a scaled one too), else the bound render target's or the drawing
+  // buffer's size. The filtered ocean reader measures a pixel's footprint from it.
   #trackedMesh(geometry, material) {
     const mesh = new THREE.Mesh(geometry, material);
     mesh.frustumCulled = false;  // displaced waves may leave the flat grid's bounds
     const size = new THREE.Vector2();
     mesh.onBeforeRender = (renderer) => {
       this.setModelMatrix(mesh.matrixWorld);
-      renderer.getDrawingBufferSize(size);
+      const target = renderer.getRenderTarget();
+      if (this.frameSize) size.copy(this.frameSize);
+      else if (target) size.set(target.width, target.height);
+      else renderer.getDrawingBufferSize(size);
       this.setViewportSize(size.x, size.y);
       // three.js skips the upload when the previous draw used the same material: several
       // meshes sharing it would all get the first one's u_model.
@@ -341,6 +348,7 @@ export class WaterGraph {
       throw new WaterGraphError(`the render option outputTransform must be true or false (got ${JSON.stringify(outputTransform)})`);
     const linear = !outputTransform;
     const view = linear ? null : renderView(this.view, options ?? {});
+    this.frameSize = null;
     if (!this.passes) {
       if (Object.keys(options ?? {}).length)
         throw new WaterGraphError('render options need the output transform, which comes with a scene description (`watergraph scene`)');
@@ -351,6 +359,7 @@ export class WaterGraph {
     if (linear && output)
       throw new WaterGraphError('with outputTransform: false nothing is drawn to `output`: read the linear frame from water.frameTarget');
     const size = output ? new THREE.Vector2(output.width, output.height) : renderer.getDrawingBufferSize(new THREE.Vector2());
+    this.frameSize = size;
     const remade = this.passes.configure(renderer);
     if (this.passes.setSize(size.x, size.y) || remade) {
       for (const t of this.manifest.textures ?? [])

@@ -78,7 +78,11 @@ export async function openWebgpuPage(chromiumPath, { title = 'watergraph WebGPU'
     const adapter = await navigator.gpu.requestAdapter();
     if (!adapter) return { skipped: 'Chromium\'s WebGPU gave no adapter (SwiftShader\'s Vulkan missing?)' };
     const requiredFeatures = wanted.filter((f) => adapter.features.has(f));
-    window.wgDevice = await adapter.requestDevice({ requiredFeatures });
+    // As many colour attachment bytes per sample as the adapter offers: a filtered ocean
+    // cascade's pack writes three RGBA32F targets, 48 bytes, over WebGPU's default of 32
+    // (watergraph-webgpu-ocean.js says so clearly where a device has less).
+    const requiredLimits = { maxColorAttachmentBytesPerSample: adapter.limits.maxColorAttachmentBytesPerSample };
+    window.wgDevice = await adapter.requestDevice({ requiredFeatures, requiredLimits });
     const info = adapter.info ?? {};
     const name = [info.vendor, info.architecture, info.description].filter((x) => x).join(' ');
     return { device: `WebGPU (Chromium${name ? `, ${name}` : ''})` };

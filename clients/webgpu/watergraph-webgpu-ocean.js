@@ -14,8 +14,9 @@ export class WebgpuOceanError extends Error {
 }
 
 const OCEAN_PASS_SHADERS = ['ocean_evolve', 'ocean_evolve_displacement', 'ocean_evolve_jacobian', 'ocean_stockham',
-  'ocean_stockham_single', 'ocean_pack', 'ocean_pack_displacement', 'ocean_foam_step', 'ocean_foam_blend'];
-const OCEAN_MAPS = ['displacement', 'slopes', 'foam'];
+  'ocean_stockham_single', 'ocean_pack', 'ocean_pack_displacement', 'ocean_foam_step', 'ocean_foam_blend',
+  'ocean_pack_filtered', 'ocean_downsample'];
+const OCEAN_MAPS = ['displacement', 'slopes', 'foam', 'moments'];
 const SCALARS = { float: 'setFloat32', int: 'setInt32', uint: 'setUint32' };
 
 // A pass shader's WebGPU form from the description (description.webgpu.shaders[name]:
@@ -63,6 +64,33 @@ const FULLSCREEN_WGSL = '@vertex fn main(@builtin(vertex_index) i: u32) -> @buil
 
 const USAGE = () => GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_DST | GPUTextureUsage.COPY_SRC;
 
+// The colour bytes a sample of ocean_pack_filtered's three RGBA32F targets.
+const FILTERED_PACK_BYTES = 48;
+
+// The mip levels of a filtered cascade's N x N slope and moments maps, down to 1 x 1.
+export function pyramidLevels(n) {
+  if (!Number.isInteger(n) || n < 1 || (n & (n - 1)) !== 0) throw new WebgpuOceanError(`an ocean cascade's resolution must be a power of two (got ${n})`);
+  return Math.log2(n) + 1;
+}
+
+// The passes of one cascade's maps in order (runtime/ocean_gpu_cascade.cpp): the evolution,
+// 2 log2 N Stockham stages, the packing, and for a filtered cascade (its moments map is
+// read) one ocean_downsample per level l = 1..L, level l (N >> l square) from level l - 1.
+export function cascadePasses(n, { slopes, filtered }) {
+  const both = slopes || filtered;
+  const passes = [{ shader: both ? 'ocean_evolve' : 'ocean_evolve_displacement' }];
+  for (let vertical = 0; vertical < 2; ++vertical)
+    for (let ns = 1; ns < n; ns *= 2) passes.push({ shader: both ? 'ocean_stockham' : 'ocean_stockham_single', ns, vertical });
+  passes.push({ shader: filtered ? 'ocean_pack_filtered' : both ? 'ocean_pack' : 'ocean_pack_displacement' });
+  if (filtered)
+    for (let level = 1; level < pyramidLevels(n); ++level) passes.push({ shader: 'ocean_downsample', level, source: level - 1, size: n >> level });
+  return passes;
+}
+
+// One level of a texture, as a render target or as what a sampler shows (its level 0).
+const mipOf = (texture, mip) => ({ texture, mip });
+const viewOf = (t) => (t.texture ? t.texture.createView({ baseMipLevel: t.mip, mipLevelCount: 1 }) : t.createView());
+
 // Every ocean of a manifest on `device`. Call encode() with a command encoder for a frame's
 // time (its passes are recorded there, before the water's), then map() gives each ocean
 // texture's view.
@@ -73,6 +101,13 @@ export class WebgpuOceanSimulation {
     this.device = device;
     this.module = module;
     this.passes = passes;
+    // ocean_pack_filtered writes three RGBA32F targets at once: 48 bytes a sample, over
+    // WebGPU's default limit of 32 (request the adapter's maxColorAttachmentBytesPerSample).
+    const filtered = (manifest.textures ?? []).some((t) => t.ocean?.map === 'moments');
+    const bytes = device.limits?.maxColorAttachmentBytesPerSample ?? 32;
+    if (filtered && bytes < FILTERED_PACK_BYTES)
+      throw new WebgpuOceanError(`graph '${manifest.graph}' filters its ocean maps, whose pack writes ${FILTERED_PACK_BYTES} bytes of colour a sample; ` +
+        `this device allows ${bytes} (request maxColorAttachmentBytesPerSample ${FILTERED_PACK_BYTES} or more from the adapter)`);
     this.sampler = device.createSampler({ magFilter: 'nearest', minFilter: 'nearest' });
     this.vertex = device.createShaderModule({ code: FULLSCREEN_WGSL, label: 'the ocean passes\' full-screen triangle' });
     this.pipelines = {};
@@ -86,15 +121,18 @@ export class WebgpuOceanSimulation {
         const n = data.sizes[c];  // the cascade's own N (cascade_sizes)
         if (!twiddles.has(n)) twiddles.set(n, this.#texture(n / 2, 1, 'rg32float', module.twiddles(n), 8));
         const twiddle = twiddles.get(n);
-        const slopes = read(o, c, 'slopes'), foam = read(o, c, 'foam');
+        // A read moments map is the one sign that the cascade is filtered: its slope and
+        // moments maps then carry pyramids, and its slopes are computed whether read or not.
+        const filtered = read(o, c, 'moments'), slopes = read(o, c, 'slopes') || filtered, foam = read(o, c, 'foam');
         if (foam && c >= data.foam.cascades) throw new WebgpuOceanError(`ocean ${data.node} cascade ${c} makes no foam`);
-        const rgba = () => this.#texture(n, n, 'rgba32float');
+        const rgba = (levels = 1) => this.#texture(n, n, 'rgba32float', null, 0, levels);
         return {
-          n, slopes, twiddle, dk: data.dk[c],
+          n, slopes, filtered, twiddle, dk: data.dk[c],
+          plan: cascadePasses(n, { slopes, filtered }),
           h0: this.#texture(n, n, 'rgba32float', packed[c].h0, 16),
           frequency: this.#texture(n, n, 'r32uint', packed[c].frequency, 4),
           spectra: [[rgba(), slopes ? rgba() : null], [rgba(), slopes ? rgba() : null]],
-          maps: [rgba(), slopes ? rgba() : null],
+          maps: filtered ? [rgba(), rgba(pyramidLevels(n)), rgba(pyramidLevels(n))] : [rgba(), slopes ? rgba() : null],
           jacobian: foam ? [rgba(), rgba()] : null,
           foam: foam ? { states: [0, 1, 2].map(() => this.#texture(n, n, 'r32float')), output: this.#texture(n, n, 'r32float'),
             current: 0, next: 1, valid: false, at: 0 } : null,
@@ -104,8 +142,8 @@ export class WebgpuOceanSimulation {
     });
   }
 
-  #texture(width, height, format, data = null, bytesPerTexel = 0) {
-    const t = this.device.createTexture({ size: [width, height], format, usage: USAGE() });
+  #texture(width, height, format, data = null, bytesPerTexel = 0, mipLevelCount = 1) {
+    const t = this.device.createTexture({ size: [width, height], format, usage: USAGE(), mipLevelCount });
     if (data) this.device.queue.writeTexture({ texture: t }, data, { bytesPerRow: width * bytesPerTexel }, [width, height]);
     return t;
   }
@@ -131,9 +169,10 @@ export class WebgpuOceanSimulation {
     return this.pipelines[key];
   }
 
-  // One full-screen draw of `name` into `targets` with `values` (uniforms and textures by name).
+  // One full-screen draw of `name` into `targets` with `values` (uniforms and textures by
+  // name). A target or texture is a texture (its only level) or mipOf(texture, mip).
   #draw(encoder, name, values, targets) {
-    const { pipeline, layout, pass } = this.#pipeline(name, targets.map((t) => t.format));
+    const { pipeline, layout, pass } = this.#pipeline(name, targets.map((t) => (t.texture ?? t).format));
     const entries = [];
     if (pass.uniforms.length) {
       const buffer = this.device.createBuffer({ size: pass.size, usage: GPUBufferUsage.UNIFORM, mappedAtCreation: true });
@@ -147,11 +186,11 @@ export class WebgpuOceanSimulation {
     }
     for (const t of pass.textures) {
       if (!values[t.name]) throw new WebgpuOceanError(`${name}: no texture for ${t.name}`);
-      entries.push({ binding: t.binding, resource: values[t.name].createView() });
+      entries.push({ binding: t.binding, resource: viewOf(values[t.name]) });
     }
     entries.push({ binding: pass.samplerBinding, resource: this.sampler });
     const p = encoder.beginRenderPass({
-      colorAttachments: targets.map((t) => ({ view: t.createView(), loadOp: 'clear', clearValue: [0, 0, 0, 0], storeOp: 'store' })),
+      colorAttachments: targets.map((t) => ({ view: viewOf(t), loadOp: 'clear', clearValue: [0, 0, 0, 0], storeOp: 'store' })),
     });
     p.setPipeline(pipeline);
     p.setBindGroup(0, this.device.createBindGroup({ layout, entries }));
@@ -176,11 +215,28 @@ export class WebgpuOceanSimulation {
     return current;
   }
 
+  // The passes of c.plan (cascadePasses) in order. A downsample samples views of level l - 1
+  // and draws into views of level l: different subresources, so no conflict.
   #cascade(encoder, c, tau, choppiness) {
-    this.#evolve(encoder, c, c.slopes ? 'ocean_evolve' : 'ocean_evolve_displacement', tau, c.spectra[0].filter(Boolean));
-    const current = this.#transform(encoder, c, c.slopes ? 'ocean_stockham' : 'ocean_stockham_single', c.spectra);
-    const [a, b] = c.spectra[current];
-    this.#draw(encoder, c.slopes ? 'ocean_pack' : 'ocean_pack_displacement', { u_a: a, u_b: b, u_lambda: choppiness }, c.maps.filter(Boolean));
+    let current = 0;  // the spectra pair holding the last result
+    for (const p of c.plan) {
+      const [a, b] = c.spectra[current];
+      if (p.shader.startsWith('ocean_evolve')) {
+        this.#evolve(encoder, c, p.shader, tau, c.spectra[0].filter(Boolean));
+        current = 0;
+      } else if (p.shader.startsWith('ocean_stockham')) {
+        this.#draw(encoder, p.shader, { u_a: a, u_b: b, u_twiddle: c.twiddle, u_n: c.n, u_ns: p.ns, u_vertical: p.vertical },
+          c.spectra[1 - current].filter(Boolean));
+        current = 1 - current;
+      } else if (p.shader === 'ocean_pack_filtered') {
+        this.#draw(encoder, p.shader, { u_a: a, u_b: b, u_lambda: choppiness }, [c.maps[0], mipOf(c.maps[1], 0), mipOf(c.maps[2], 0)]);
+      } else if (p.shader === 'ocean_downsample') {
+        this.#draw(encoder, p.shader, { u_slopes: mipOf(c.maps[1], p.source), u_moments: mipOf(c.maps[2], p.source) },
+          [mipOf(c.maps[1], p.level), mipOf(c.maps[2], p.level)]);
+      } else {
+        this.#draw(encoder, p.shader, { u_a: a, u_b: b, u_lambda: choppiness }, c.maps.filter(Boolean));
+      }
+    }
   }
 
   #jacobianFields(encoder, c, tau) {
@@ -236,7 +292,8 @@ export class WebgpuOceanSimulation {
     const c = this.oceans[ref.ocean]?.cascades[ref.cascade];
     const which = OCEAN_MAPS.indexOf(ref.map);
     if (!c || which < 0) throw new WebgpuOceanError(`an ocean texture names ocean ${ref.ocean} cascade ${ref.cascade} map ${ref.map}, which the simulation does not have`);
-    const t = which === 2 ? c.foam?.output : c.maps[which];
+    // Map 3 (moments) is the third map of a filtered cascade; the water binds views of every level.
+    const t = which === 2 ? c.foam?.output : which === 3 ? (c.filtered ? c.maps[2] : null) : c.maps[which];
     if (!t) throw new WebgpuOceanError(`ocean ${ref.ocean} cascade ${ref.cascade}: its ${ref.map} map is not computed (no shader samples it)`);
     return t;
   }

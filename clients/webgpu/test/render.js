@@ -38,7 +38,8 @@ async function renderJob(job) {
   if (!navigator.gpu) throw new Error('no navigator.gpu: WebGPU is not enabled in this browser');
   const adapter = await navigator.gpu.requestAdapter();
   if (!adapter) throw new Error('no WebGPU adapter');
-  const device = await adapter.requestDevice();
+  // A filtered ocean cascade's pack writes three RGBA32F targets (48 bytes a sample; the default limit is 32).
+  const device = await adapter.requestDevice({ requiredLimits: { maxColorAttachmentBytesPerSample: adapter.limits.maxColorAttachmentBytesPerSample } });
   const width = Number(q.get('width')), height = Number(q.get('height'));
   const shared = sharedDescription(q.get('description'));
   const description = await shared.description;

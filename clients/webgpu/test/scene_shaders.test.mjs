@@ -75,7 +75,7 @@ test('a manifest with a spectral ocean needs its simulation, refused before any 
 
 test('the ocean simulation\'s pass shaders become WGSL fragment modules naga validates, with their bindings', () => {
   const passes = oceanPassesWgsl(description, naga);
-  assert.equal(Object.keys(passes).length, 9);
+  assert.equal(Object.keys(passes).length, 11);
   for (const [name, p] of Object.entries(passes)) {
     naga.validate(naga.parseWgsl(p.wgsl));
     assert.match(p.wgsl, /@fragment\s+fn main\(/, name);
@@ -88,5 +88,12 @@ test('the ocean simulation\'s pass shaders become WGSL fragment modules naga val
   assert.deepEqual(passes.ocean_stockham_single.textures.map((t) => t.name), ['u_a', 'u_twiddle']);
   assert.deepEqual(passes.ocean_evolve.uniforms.map((u) => [u.name, u.type, u.offset]), [['u_tau', 'uint', 0], ['u_dk', 'float', 4], ['u_n', 'int', 8]]);
   assert.equal(passes.ocean_evolve.textures.find((t) => t.name === 'u_frequency').sampleType, 'uint');
+  // A filtered cascade's passes: the pack's three outputs; the downsample's two samplers and
+  // no uniforms (so no uniform block: the pipeline binds none).
+  assert.match(passes.ocean_pack_filtered.wgsl, /@location\(2\)/);
+  assert.deepEqual(passes.ocean_pack_filtered.textures.map((t) => t.name).sort(), ['u_a', 'u_b']);
+  assert.deepEqual(passes.ocean_downsample.textures.map((t) => [t.name, t.sampleType]),
+    [['u_slopes', 'unfilterable-float'], ['u_moments', 'unfilterable-float']]);
+  assert.deepEqual(passes.ocean_downsample.uniforms, []);
 });
 
