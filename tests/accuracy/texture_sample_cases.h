@@ -2,10 +2,13 @@
 // The probe cases of the texture_sample GPU tests (GL in texture_sample_probe_test.cpp, WebGPU
 // in wgsl_probe_test.cpp), for a 16x16 texture: uv on texel centres and edges, outside [0, 1]
 // both ways, and for a mipmapped texture uv gradients selecting mip levels 0 to 4 and blends
-// between them.
+// between them; and the worst error of a report.
+#include <algorithm>
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <string>
+
+#include "accuracy/probe.h"
 
 namespace wg::test {
 
@@ -30,6 +33,15 @@ inline std::string textureSampleCasesJson(bool gradients) {
                        {"uv_dy", {0, g}}});
   }
   return nlohmann::json{{"cases", cases}}.dump();
+}
+
+// The largest |gpu - reference| over every case and component of a probe report.
+inline double worstAbsError(const accuracy::ProbeReport& report) {
+  double worst = 0;
+  for (const auto& c : report.cases)
+    for (int k = 0; k < c.components; ++k)
+      worst = std::max(worst, std::abs(c.gpu[static_cast<size_t>(k)] - c.reference[static_cast<size_t>(k)]));
+  return worst;
 }
 
 }  // namespace wg::test

@@ -51,10 +51,7 @@ TEST_P(TextureSampleOnGpu, EveryModeWithinTheDocumentedBound) {
         ASSERT_EQ(report->cases.size(), cases->cases.size());
         EXPECT_TRUE(report->passed()) << options.dump() << "\n" << formatProbeText(*report);
         // The largest error seen, for the record (docs/nodes.md states the bound).
-        double worst = 0;
-        for (const auto& c : report->cases)
-          for (int k = 0; k < c.components; ++k)
-            worst = std::max(worst, std::abs(c.gpu[static_cast<size_t>(k)] - c.reference[static_cast<size_t>(k)]));
+        const double worst = test::worstAbsError(*report);
         std::printf("[ texture  ] %s %s: worst |gpu - ref| %.5f (%.2f 8-bit levels)\n",
                     std::string(targetName(GetParam())).c_str(), options.dump().c_str(), worst, worst * 255);
         ++runs;

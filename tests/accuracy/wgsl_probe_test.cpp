@@ -129,10 +129,7 @@ TEST_F(WgslProbe, AMipmappedTextureAgreesAtEveryLevel) {
     ASSERT_TRUE(report) << options.dump();
     ASSERT_EQ(report->cases.size(), cases->cases.size());
     EXPECT_TRUE(report->passed()) << options.dump() << "\n" << formatProbeText(*report);
-    double worst = 0;
-    for (const auto& c : report->cases)
-      for (int k = 0; k < c.components; ++k)
-        worst = std::max(worst, std::abs(c.gpu[static_cast<size_t>(k)] - c.reference[static_cast<size_t>(k)]));
+    const double worst = test::worstAbsError(*report);
     std::printf("[ wgsl     ] texture_sample %s: worst |gpu - ref| %.5f (%.2f 8-bit levels)\n", options.dump().c_str(), worst,
                 worst * 255);
   }
