@@ -64,8 +64,11 @@ FilteredExprs emitFiltered(EmitContext& ctx, int oceanPort, const GlslExpr& xz, 
     // The slopes' levels exist only in a filtered cascade, which the runtimes recognise by a
     // shader's moments map: reading the filtered slopes keeps the moments sampler too (a use
     // that reads the slopes alone declares it unread in the text, and the pyramids are made).
-    if (which == ocean::kSlopeMap)
-      for (uint32_t symbol : ctx.oceanMap(oceanPort, static_cast<int>(c), ocean::kMomentsMap).symbols()) value.reading(symbol);
+    if (which == ocean::kSlopeMap) {
+      // A named value: symbols() is a view into it (a temporary would end before the loop).
+      const GlslExpr moments = ctx.oceanMap(oceanPort, static_cast<int>(c), ocean::kMomentsMap);
+      for (uint32_t symbol : moments.symbols()) value.reading(symbol);
+    }
     return ctx.temporary(Type::Vec4, value);
   };
   auto weighted = [&](size_t c, const GlslExpr& term) {
