@@ -6,8 +6,8 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
-#include <regex>
 
+#include "core/frame_size_text.h"
 #include "cli/commands.h"
 #include "cli/option_values.h"
 #include "codegen/output_files.h"
@@ -37,9 +37,8 @@ struct BenchArgs {
 
 #ifdef WG_HAVE_RUNTIME
 int runBenchCommand(const BenchArgs& args) {
-  std::smatch m;
-  static const std::regex sizeRe("([0-9]{1,4})x([0-9]{1,4})");
-  if (!std::regex_match(args.size, m, sizeRe) || std::stoi(m[1]) < 8 || std::stoi(m[2]) < 8) {
+  const auto size = parseFrameSizeText(args.size, 4);
+  if (!size || size->width < 8 || size->height < 8) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT, each side 8..9999 (got '" << args.size << "')\n";
     return kExitUsageOrIo;
   }
@@ -64,8 +63,8 @@ int runBenchCommand(const BenchArgs& args) {
   s.graphFile = args.graph;
   s.preset = args.preset;
   s.camera = args.camera;
-  s.width = std::stoi(m[1]);
-  s.height = std::stoi(m[2]);
+  s.width = size->width;
+  s.height = size->height;
   s.runs = args.runs;
   s.target = *parseTarget(args.target);
   s.families = args.families;

@@ -7,8 +7,8 @@
 #include <map>
 #include <iostream>
 #include <memory>
-#include <regex>
 
+#include "core/frame_size_text.h"
 #include "cli/commands.h"
 #include "cli/option_values.h"
 #include "cli/view_flags.h"
@@ -69,16 +69,14 @@ std::unique_ptr<accuracy::GpuExecutor> wgslCheckExecutor() {
 }
 
 int runCheck(const CheckArgs& args, const GlobalOptions& global) {
-  std::smatch m;
-  static const std::regex sizeRe("([0-9]{1,4})x([0-9]{1,4})");
-  if (!std::regex_match(args.size, m, sizeRe) || std::stoi(m[1]) < 8 || std::stoi(m[2]) < 8 || std::stoi(m[1]) > 4096 ||
-      std::stoi(m[2]) > 4096) {
+  const auto size = parseFrameSizeText(args.size, 4);
+  if (!size || size->width < 8 || size->height < 8 || size->width > 4096 || size->height > 4096) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT with each side 8..4096, e.g. 160x90 (got '" << args.size << "')\n";
     return kExitUsageOrIo;
   }
   accuracy::CheckOptions options;
-  options.width = std::stoi(m[1]);
-  options.height = std::stoi(m[2]);
+  options.width = size->width;
+  options.height = size->height;
   options.errorMaps = !args.errorMap.empty();
   if (!args.mutate.empty()) {
     auto at = args.mutate.find("=>");  // GLSL has '=' but no "=>"

@@ -4,8 +4,8 @@
 #include <filesystem>
 #include <iostream>
 #include <memory>
-#include <regex>
 
+#include "core/frame_size_text.h"
 #include "cli/commands.h"
 #include "cli/option_values.h"
 #include "cli/finite_number.h"
@@ -99,10 +99,8 @@ void printStats(const RenderArgs& args, const std::string& name, const rt::Previ
 }
 
 int runRender(const RenderArgs& args, const GlobalOptions& global) {
-  std::smatch m;
-  static const std::regex sizeRe("([0-9]{1,5})x([0-9]{1,5})");
-  if (!std::regex_match(args.size, m, sizeRe) || std::stoi(m[1]) < 1 || std::stoi(m[2]) < 1 ||
-      std::stoi(m[1]) > 8192 || std::stoi(m[2]) > 8192) {
+  const auto size = parseFrameSizeText(args.size, 5);
+  if (!size || size->width < 1 || size->height < 1 || size->width > 8192 || size->height > 8192) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT with each side 1..8192, e.g. 1280x720 (got '" << args.size
               << "')\n";
     return kExitUsageOrIo;
@@ -134,8 +132,8 @@ int runRender(const RenderArgs& args, const GlobalOptions& global) {
   if (!result) return exitCodeFor(diags);
 
   rt::RenderSettings settings;
-  settings.width = std::stoi(m[1]);
-  settings.height = std::stoi(m[2]);
+  settings.width = size->width;
+  settings.height = size->height;
   settings.camera = args.camera;
   settings.scene.time = args.time;
   settings.waterGridQuads = args.grid;

@@ -9,11 +9,11 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
-#include <regex>
 #include <sstream>
 
 #include <unistd.h>
 
+#include "core/frame_size_text.h"
 #include "cli/commands.h"
 #include "cli/option_values.h"
 #include "cli/finite_number.h"
@@ -65,12 +65,11 @@ int runTune(const TuneArgs& args) {
   if (!budget.minPsnr && !budget.maxAbsError) return usage("give a budget: --min-psnr DB and/or --max-abs-error E");
   if (budget.maxAbsError && !(*budget.maxAbsError >= 0)) return usage("--max-abs-error must be >= 0");
   TuneSweep sweep;
-  std::smatch m;
-  static const std::regex sizeRe("([0-9]{1,4})x([0-9]{1,4})");
-  if (!std::regex_match(args.size, m, sizeRe) || std::stoi(m[1]) < 8 || std::stoi(m[2]) < 8)
+  const auto size = parseFrameSizeText(args.size, 4);
+  if (!size || size->width < 8 || size->height < 8)
     return usage("--size must be WIDTHxHEIGHT, each side 8..9999 (got '" + args.size + "')");
-  sweep.width = std::stoi(m[1]);
-  sweep.height = std::stoi(m[2]);
+  sweep.width = size->width;
+  sweep.height = size->height;
   sweep.runs = args.runs;
   sweep.target = *parseTarget(args.target);
   std::string why;

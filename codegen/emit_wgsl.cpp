@@ -27,6 +27,7 @@ ValueType wgslValueTypeOf(Type t) {
     case Type::Mat4: return {'f', 4, 4};
     case Type::Sampler2D: return {'t', 1, 0};
     case Type::SamplerCube: return {'c', 1, 0};
+    case Type::Ocean:  // a handle the readers take, never a shader value
     case Type::Invalid: break;
   }
   throw WgslRefused{"a value of no WGSL type", -1};

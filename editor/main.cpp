@@ -4,8 +4,8 @@
 
 #include <filesystem>
 #include <iostream>
-#include <regex>
 
+#include "core/frame_size_text.h"
 #include "cli/finite_number.h"
 #include "codegen/output_files.h"
 #include "core/diagnostic.h"
@@ -17,10 +17,9 @@
 namespace {
 
 bool parseSize(const std::string& text, int* w, int* h) {
-  std::smatch m;
-  static const std::regex re("([0-9]{1,4})x([0-9]{1,4})");
-  if (!std::regex_match(text, m, re)) return false;
-  *w = std::stoi(m[1]), *h = std::stoi(m[2]);
+  const auto size = wg::parseFrameSizeText(text, 4);
+  if (!size) return false;
+  *w = size->width, *h = size->height;
   return *w >= 16 && *h >= 16 && *w <= 8192 && *h <= 8192;
 }
 

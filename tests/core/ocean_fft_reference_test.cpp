@@ -116,7 +116,9 @@ TEST(OceanFftReference, ALowerResolutionKeepsTheSeaAndDropsOnlyTheShortestWaves)
           EXPECT_EQ(c, 2) << "a wave of cascade " << c << " at k = " << dk * std::hypot(mx, mz) << " rad/m";
         }
       }
-    if (c == 2) EXPECT_GT(extra, 0) << "the finest cascade's shortest waves";
+    if (c == 2) {
+      EXPECT_GT(extra, 0) << "the finest cascade's shortest waves";
+    }
   }
 }
 

@@ -280,7 +280,7 @@ TEST(Usability, ADepfileThatCannotBeWrittenLeavesNoCompiledFiles) {
   std::string lake = test::sourcePath("graphs/lake.json");
   std::filesystem::create_directories(tmp / "folder.d");
   test::writeFile(tmp / "afile", "x");
-  for (const std::string depfile : {tmp / "afile/sub/x.d", tmp / "folder.d"}) {
+  for (const std::string& depfile : {tmp / "afile/sub/x.d", tmp / "folder.d"}) {
     SCOPED_TRACE(depfile);
     auto r = eco::wgRun("compile " + shellQuote(lake) + " -o " + shellQuote(tmp / "out") + " --depfile " + shellQuote(depfile));
     EXPECT_EQ(r.exit, 2) << r.err;
