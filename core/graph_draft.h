@@ -102,7 +102,6 @@ class GraphDraftReader : public JsonEventHandler {
   DraftValue root_;
   DraftValue node_;  // the node being read, reused
   std::size_t nodeCount_ = 0;
-  bool started_ = false;
   std::vector<Open> open_;
   // A held container being built: its open arrays and objects, and the key of the member
   // whose value comes next; values of duplicate keys go to scratch (the load fails anyway).
