@@ -7,8 +7,8 @@
 #
 # Environment:
 #   BUILD_DIR  build folder (default build-fuzz: Clang, RelWithDebInfo, ASan + UBSan +
-#              coverage, no tests, no runtime). CI passes build-asan, which
-#              scripts/sanitize.sh already built with the fuzzers in it.
+#              coverage, no tests, no runtime; what CI uses). build-asan works too:
+#              scripts/sanitize.sh builds the fuzzers into it.
 #   JOBS       build jobs (default 2).
 #   FUZZ_LANES targets fuzzed side by side (default 1; CI uses 2, one per core), each
 #              one libFuzzer process; the order of the list is kept within a lane.
