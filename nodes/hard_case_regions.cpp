@@ -97,6 +97,10 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ggx_specular", "normal just under the normalisation floor", "unnormalised", "normal"},
       {"ggx_specular", "zero-length vectors", "zero_vector", "normal view light"},
       {"ggx_specular", "roughness above 1", "outside_domain", "roughness", 0, 1},
+      {"ggx_specular", "filtered: mirror smooth at the highlight with slope variance 0.02", "mirror_highlight", "roughness"},
+      {"ggx_specular", "filtered: grazing view (N.V = 0)", "grazing", "view"},
+      {"ggx_specular", "filtered: slope variance 1e6", "huge_parameter", "slope_variance"},
+      {"ggx_specular", "filtered: negative slope variance", "outside_domain", "slope_variance", 0, 1e4},
       // depth
       {"linearize_depth", "sky, depth 1.0", "sky_depth", "depth"},
       {"linearize_depth", "sky with far = 1e38", "huge_far_sky", "depth near_far"},
