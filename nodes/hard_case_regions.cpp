@@ -77,6 +77,7 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ocean_surface", "filtered, the camera touching the water: footprint 0, level 0", "footprint_zero", "camera"},
       {"ocean_surface", "filtered, a calm (wind 0): no slope variance", "empty_spectrum", ""},
       {"ocean_surface", "filtered, a footprint of exactly one texel (a level boundary)", "level_boundary", "pixel_angle"},
+      {"ocean_surface", "filtered, past the tiles: the variance is every cascade's slope variance", "footprint_past_tiles", "camera"},
       {"ocean_foam", "a calm (wind 0): no foam", "empty_spectrum", ""},
       {"ocean_foam", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
       {"ocean_foam", "the same storm with foam_growth 1000, where the cover saturates", "surface_folds", "position"},

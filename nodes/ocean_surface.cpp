@@ -142,6 +142,14 @@ NodeSpec oceanSurfaceNode() {
                           "finite: the tiles repeat", -1, 1)};
   for (HardCase& c : oceanread::normalHardCases()) s.hardCases.push_back(std::move(c));
   for (HardCase& c : oceanread::filterHardCases()) s.hardCases.push_back(std::move(c));
+  // The variance the filter hands to the sun's lobe, past the tiles: every cascade's whole
+  // slope variance (the 1 x 1 means have slope ~0), finite.
+  HardCase past = oceanread::hardCase("filtered, past the tiles: the variance is every cascade's slope variance",
+                                      Value::vector({5000, 0, 30}), oceanread::smallSea(),
+                                      "finite, in (0, 1): the sea's whole mean square slope", 1e-6, 1, "variance");
+  past.inputs.push_back({"camera", Value::vector({0, 0, 0})});
+  past.inputs.push_back({"pixel_angle", Value::scalar(1e-3)});
+  s.hardCases.push_back(std::move(past));
   return s;
 }
 
