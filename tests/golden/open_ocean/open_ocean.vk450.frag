@@ -137,7 +137,7 @@ vec4 wg_ggx_specular(vec3 n, vec3 v, vec3 l, float roughness, float f0) {
 // of alpha'^2 = alpha^2 + V. GGX is a Student-t in slope space, whose convolution has no
 // closed form; its share of the widened lobe is w = alpha^2 / alpha'^2 (1 where V = 0, 0
 // where the spread dominates), the rest a Beckmann of alpha'^2. Exact at both ends; between,
-// the peak is above the numerically convolved lobe's by at most 24 % (at V = alpha^2), 3 %
+// the peak is above the numerically convolved lobe's by at most 25 % (24 % at V = alpha^2), 3 %
 // at V = 100 alpha^2 (docs/ocean.md, "Filtered shading").
 
 // Beckmann exp(-tan^2 / a2) / (pi a2 cos^4), tan^2 = s2 / c2 (s2 as the GGX term's). 0 where
