@@ -77,6 +77,7 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ocean_surface", "filtered, the camera touching the water: footprint 0, level 0", "footprint_zero", "camera"},
       {"ocean_surface", "filtered, a calm (wind 0): no slope variance", "empty_spectrum", ""},
       {"ocean_surface", "filtered, a footprint of exactly one texel (a level boundary)", "level_boundary", "pixel_angle"},
+      {"ocean_surface", "filtered, past the tiles: the variance is every cascade's slope variance", "footprint_past_tiles", "camera"},
       {"ocean_foam", "a calm (wind 0): no foam", "empty_spectrum", ""},
       {"ocean_foam", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
       {"ocean_foam", "the same storm with foam_growth 1000, where the cover saturates", "surface_folds", "position"},
@@ -97,6 +98,10 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ggx_specular", "normal just under the normalisation floor", "unnormalised", "normal"},
       {"ggx_specular", "zero-length vectors", "zero_vector", "normal view light"},
       {"ggx_specular", "roughness above 1", "outside_domain", "roughness", 0, 1},
+      {"ggx_specular", "filtered: mirror smooth at the highlight with slope variance 0.02", "mirror_highlight", "roughness"},
+      {"ggx_specular", "filtered: grazing view (N.V = 0)", "grazing", "view"},
+      {"ggx_specular", "filtered: slope variance 1e6", "huge_parameter", "slope_variance"},
+      {"ggx_specular", "filtered: negative slope variance", "outside_domain", "slope_variance", 0, 1e4},
       // depth
       {"linearize_depth", "sky, depth 1.0", "sky_depth", "depth"},
       {"linearize_depth", "sky with far = 1e38", "huge_far_sky", "depth near_far"},

@@ -2,6 +2,7 @@
 // phong_specular (the deferred water article's sun and environment Phong terms) and ggx_specular (the advanced shaders tutorial's
 // Cook-Torrance with GGX D, Schlick F and Smith/Schlick-GGX G).
 #include <cmath>
+#include <optional>
 
 #include "core/emit_context.h"
 #include "nodes/eval_math.h"
@@ -221,24 +222,40 @@ NodeSpec ggxSpecularNode() {
       "(GGX / Trowbridge-Reitz; the shader forms 1 - NdotH^2 as |N x H|^2, which keeps its bits where H is near N); F = F0 + (1 - F0)(1 - V.H)^5; G = G1(N.L) G1(N.V), G1(x) = x / (x (1 - k) + k), "
       "k = (r + 1)^2 / 8. brdf = D F G / (4 NdotL NdotV), computed as D F / (4 (NdotL (1 - k) + k)(NdotV (1 - k) + k)): "
       "identical where NdotL, NdotV > 0 and its finite limit where either is 0, so nothing divides by zero. "
-      "specular = brdf * NdotL; color = light_color * specular. All dots clamped to [0, 1].";
+      "specular = brdf * NdotL; color = light_color * specular. All dots clamped to [0, 1]. With slope_variance "
+      "V > 0 (clamped to 1e4), the lobe filtered over facets whose slopes spread around N with total variance V: "
+      "a' = a^2 + V, w = a^2 / a', D = w GGX(a') + (1 - w) Beckmann(a') with Beckmann(a') = exp(-tan^2 / a') / (pi "
+      "a' cos^4) at N.H; the reflecting facets' normal N* = normalize(w (N.H) N + (1 - w) H); brdf = D (N.H / N*.H) "
+      "F / (4 (N*.L (1 - k) + k)(N*.V (1 - k) + k)) with k of r (the base roughness); specular = brdf * N*.L.";
   s.source = "advanced shaders tutorial (Level 3: Cook-Torrance, DistributionGGX, FresnelSchlick with F0 = 0.02, GeometrySmith; water "
-             "roughness ~0.05)";
-  s.cost = "5 safe normalisations, a cross product, 3 divisions: ~60 ALU";
+             "roughness ~0.05); the filtered lobe: Olano and Baker, LEAN Mapping (2010), a Gaussian spread of slopes "
+             "convolved with a Beckmann lobe";
+  s.cost = "5 safe normalisations, a cross product, 3 divisions: ~60 ALU; with a slope variance ~100 ALU and an exp";
   s.inputs = {normalPort(), viewPort(), lightPort(),
               ports::fixed("roughness", Type::Float, Value::scalar(0.05),
                            "perceptual roughness (water ~0.05); clamped to [0.001, 1]"),
               ports::fixed("f0", Type::Float, Value::scalar(0.02), "reflectance at normal incidence (water 0.02)"),
-              ports::color(ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour (radiance) of the light"))};
+              ports::color(ports::fixed("light_color", Type::Vec3, Value::vector({1, 1, 1}), "colour (radiance) of the light")),
+              ports::fixed("slope_variance", Type::Float, Value::scalar(0),
+                           "variance of the surface's slopes around the normal that the normal does not carry (both "
+                           "axes' summed; ocean_surface's `variance`, what its filter averages away over the pixel): "
+                           "the lobe becomes the base lobe spread by it, keeping the pixel's mean radiance; 0: the "
+                           "plain lobe. Clamped to [0, 1e4]")};
   s.outputs = {ports::fixed("specular", Type::Float, "brdf * NdotL: reflected radiance per unit light"),
                ports::fixed("brdf", Type::Float, "D F G / (4 NdotL NdotV)"),
                ports::fixed("distribution", Type::Float, "the GGX term D (at most 1 / (pi a^2) = 3.2e11)"),
                ports::fixed("fresnel", Type::Float, "the Schlick term F"),
                ports::fixed("color", Type::Vec3, "light_color * specular")};
   s.emit = [](EmitContext& ctx) {
+    // A variance of constant 0 (the default) is the plain lobe: no filtered function in the text.
+    const std::optional<Value> spread = ctx.inputConstant(ctx.inputIndex("slope_variance"));
     GlslExpr t = ctx.temporary(
-        Type::Vec4, EmitContext::call("wg_ggx_specular", {ctx.input("normal"), ctx.input("view"), ctx.input("light"),
-                                                          ctx.input("roughness"), ctx.input("f0")}));
+        Type::Vec4, spread && (*spread)[0] == 0
+                        ? EmitContext::call("wg_ggx_specular", {ctx.input("normal"), ctx.input("view"), ctx.input("light"),
+                                                                ctx.input("roughness"), ctx.input("f0")})
+                        : EmitContext::call("wg_ggx_specular_filtered",
+                                            {ctx.input("normal"), ctx.input("view"), ctx.input("light"),
+                                             ctx.input("roughness"), ctx.input("slope_variance"), ctx.input("f0")}));
     GlslExpr sp = ctx.temporary(Type::Float, "(" + t + ".x * " + t + ".w)");
     ctx.output(0, sp);
     ctx.output(1, t + ".x");
@@ -247,8 +264,8 @@ NodeSpec ggxSpecularNode() {
     ctx.output(4, "(" + ctx.input("light_color") + " * " + sp + ")");
   };
   s.eval = [](EvalContext& ctx) {
-    GgxTerms g = ggxSpecularReference(ctx.input("normal"), ctx.input("view"), ctx.input("light"),
-                                      ctx.scalar("roughness"), ctx.scalar("f0"));
+    GgxTerms g = ggxSpecularFilteredReference(ctx.input("normal"), ctx.input("view"), ctx.input("light"),
+                                              ctx.scalar("roughness"), ctx.scalar("slope_variance"), ctx.scalar("f0"));
     double sp = g.brdf * g.ndotl;
     ctx.output(0, Value::scalar(sp));
     ctx.output(1, Value::scalar(g.brdf));
@@ -274,6 +291,15 @@ NodeSpec ggxSpecularNode() {
        "safe-normalised to length 0.9996, not 1: the textbook D of that vector, as the reference", 0, 1e12},
       {"zero-length vectors", {{"normal", kZero}, {"view", kZero}, {"light", kZero}}, {}, "0, not NaN", 0, 0},
       {"roughness above 1", {{"roughness", Value::scalar(5)}}, {}, "clamped to 1, finite", 0, 1e12},
+      {"filtered: mirror smooth at the highlight with slope variance 0.02",
+       {{"normal", kUp}, {"view", kUp}, {"light", kUp}, {"roughness", Value::scalar(0)},
+        {"slope_variance", Value::scalar(0.02)}}, {},
+       "D = 1 / (pi (1e-12 + 0.02)) = 15.9, the spread's peak, not the smooth base's 3.2e11", 0, 1e12},
+      {"filtered: grazing view (N.V = 0)", {{"normal", kUp}, {"view", grazing}, {"slope_variance", Value::scalar(0.03)}},
+       {}, "finite, >= 0", 0, 1e12},
+      {"filtered: slope variance 1e6", {{"slope_variance", Value::scalar(1e6)}}, {}, "clamped to 1e4, finite", 0, 1e12},
+      {"filtered: negative slope variance", {{"slope_variance", Value::scalar(-0.5)}}, {},
+       "clamped to 0: the plain lobe", 0, 1e12},
   };
   return s;
 }

@@ -4,6 +4,8 @@
 // ocean_displacement passes on; filtered to the pixel's footprint on the water
 // (the maps' mip pyramids), the slope variance the filter removes carried into
 // the roughness it outputs.
+#include <algorithm>
+
 #include "core/emit_context.h"
 #include "core/ocean_settings.h"
 #include "nodes/node_library.h"
@@ -29,16 +31,17 @@ NodeSpec oceanSurfaceNode() {
   s.summary =
       "The spectral ocean's normal, slopes and Jacobian at a still-water point, per pixel: the surface detail a "
       "vertex grid cannot carry, and where the surface folds. Filtered (the default) to the pixel's footprint "
-      "on the water, with the slope variance the filter averages away added to the roughness it outputs, so "
-      "that waves far below a pixel shade as a rougher surface instead of a mask of sub-pixel glints.";
+      "on the water, with the slope variance the filter averages away as an output for the specular lobe "
+      "(ggx_specular's slope_variance), so that waves far below a pixel shade as a spread of facets instead of a "
+      "mask of sub-pixel glints.";
   s.formula =
       "w_c as ocean_displacement. Unfiltered: (lDx, h, lDz, lDxz) and (hx, hz, lDxx, lDzz) = sum over c of "
       "w_c map_c(p.xz), roughness_out = roughness. Filtered: footprint F = |p - camera| pixel_angle / "
       "max(cos theta, 1/1024) (theta the view's angle from the vertical); per cascade lod_c = clamp(log2(max(F "
       "N_c / L_c, 1)), 0, log2 N_c), S_c and M_c the slope and moments pyramids (2x2 box means; moments (hx^2, "
       "hz^2, hx hz, lDxz)) read trilinearly at lod_c; slopes = sum w_c S_c, lDxz = sum w_c M_c.w; variance V = "
-      "sum (M_c.x + M_c.y - w_c^2 (S_c.x^2 + S_c.y^2)); roughness_out = (clamp(r, 0, 1)^4 + max(V, 0))^(1/4), "
-      "at most 1. normal = cross(dP/dz, dP/dx) made unit (wg_ocean_normal); jacobian = (1 + lDxx)(1 + lDzz) - "
+      "sum (M_c.x + M_c.y - w_c^2 (S_c.x^2 + S_c.y^2)); variance = max(V, 0); roughness_out = (clamp(r, 0, 1)^4 + "
+      "max(V, 0))^(1/4), at most 1. normal = cross(dP/dz, dP/dx) made unit (wg_ocean_normal); jacobian = (1 + lDxx)(1 + lDzz) - "
       "lDxz^2.";
   s.source =
       "Tessendorf, Simulating Ocean Water (2001); variance into roughness: Olano and Baker, LEAN Mapping (2010), a "
@@ -61,8 +64,13 @@ NodeSpec oceanSurfaceNode() {
                ports::fixed("jacobian", Type::Float,
                             "J of the horizontal displacement: 1 on still water, < 0 where it folds"),
                ports::fixed("roughness", Type::Float,
-                            "the roughness to shade the normal with: the input widened by the slope variance the "
-                            "filter removed (the input itself when unfiltered); feed it to ggx_specular")};
+                            "the input roughness widened by the slope variance the filter removed, (r^4 + V)^(1/4) "
+                            "(the input itself when unfiltered): for a node that takes a roughness alone. A single "
+                            "widened GGX lobe does not keep the sun's energy (0.4 to 0.7 of it at distance): "
+                            "ggx_specular takes `variance` instead"),
+               ports::fixed("variance", Type::Float,
+                            "the slope variance the filter removed, V (0 when unfiltered): feed it to ggx_specular's "
+                            "slope_variance, with the surface's own roughness as its roughness")};
   s.options = {oceanread::fadeOption(),
                ports::flag("filter", true,
                            "read the maps averaged over the pixel's footprint (mip pyramids, trilinear) and add the "
@@ -71,7 +79,7 @@ NodeSpec oceanSurfaceNode() {
   s.parseOptions = optionParser(parseOceanSurfaceOptions);
   s.isSource = true;
   s.facts = [](const std::vector<ValueFact>&, const ParsedOptions&) {
-    return std::vector<ValueFact>{ValueFact::unitVector(), {}, {}, {}};
+    return std::vector<ValueFact>{ValueFact::unitVector(), {}, {}, {}, {}};
   };
   s.emit = [](EmitContext& ctx) {
     const int ocean = ctx.inputIndex("ocean");
@@ -87,6 +95,7 @@ NodeSpec oceanSurfaceNode() {
       ctx.output(1, slopes + ".xy");
       ctx.output(2, EmitContext::call("wg_ocean_jacobian", {slopes, d + ".w"}));
       ctx.output(3, ctx.input("roughness"));
+      ctx.output(4, "0.0");
       return;
     }
     GlslExpr footprint = ctx.temporary(
@@ -96,17 +105,19 @@ NodeSpec oceanSurfaceNode() {
     ctx.output(1, f.slopes + ".xy");
     ctx.output(2, EmitContext::call("wg_ocean_jacobian", {f.slopes, f.lDxz}));
     ctx.output(3, EmitContext::call("wg_ocean_roughness", {ctx.input("roughness"), f.variance}));
+    ctx.output(4, EmitContext::call("max", {f.variance, "0.0"}));
   };
   s.eval = [](EvalContext& ctx) {
     const auto o = ctx.options<OceanSurfaceOptions>();
     const oceanread::EvalPoint at = oceanread::evalPoint(ctx, o.fadeTiles);
     oceanref::MapSample m;
-    double roughness = ctx.scalar("roughness");
+    double roughness = ctx.scalar("roughness"), variance = 0;
     if (o.filter) {
       const double pixelAngle = ctx.scalar("pixel_angle");
       oceanread::FilteredSum f = oceanread::sumFiltered(at, oceanread::footprint(at.position, ctx.input("camera"), pixelAngle));
       m = f.sums;
       roughness = oceanread::filteredRoughness(roughness, f.variance);
+      variance = std::max(f.variance, 0.0);
     } else {
       m = oceanread::sumAt(at);
     }
@@ -114,6 +125,7 @@ NodeSpec oceanSurfaceNode() {
     ctx.output(1, Value::vector({m.slopes[0], m.slopes[1]}));
     ctx.output(2, Value::scalar(oceanread::jacobianOf(m)));
     ctx.output(3, Value::scalar(roughness));
+    ctx.output(4, Value::scalar(variance));
   };
   s.tolerance = 1e-4;
   s.conditionRoundings = 4;
@@ -130,6 +142,14 @@ NodeSpec oceanSurfaceNode() {
                           "finite: the tiles repeat", -1, 1)};
   for (HardCase& c : oceanread::normalHardCases()) s.hardCases.push_back(std::move(c));
   for (HardCase& c : oceanread::filterHardCases()) s.hardCases.push_back(std::move(c));
+  // The variance the filter hands to the sun's lobe, past the tiles: every cascade's whole
+  // slope variance (the 1 x 1 means have slope ~0), finite.
+  HardCase past = oceanread::hardCase("filtered, past the tiles: the variance is every cascade's slope variance",
+                                      Value::vector({5000, 0, 30}), oceanread::smallSea(),
+                                      "finite, in (0, 1): the sea's whole mean square slope", 1e-6, 1, "variance");
+  past.inputs.push_back({"camera", Value::vector({0, 0, 0})});
+  past.inputs.push_back({"pixel_angle", Value::scalar(1e-3)});
+  s.hardCases.push_back(std::move(past));
   return s;
 }
 

@@ -83,6 +83,36 @@ GgxTerms ggxSpecularReference(const Value& n, const Value& v, const Value& l, do
   return t;
 }
 
+double ggxBeckmannReference(double ndoth, double a2) {
+  const double c2 = ndoth * ndoth;
+  const double x = (1.0 - c2) / (c2 * a2);
+  if (!(x <= 80.0)) return 0.0;  // as the GLSL: below e^-80 of the lobe's scale
+  return std::exp(-x) / (3.14159265358979 * a2 * c2 * c2);
+}
+
+GgxTerms ggxSpecularFilteredReference(const Value& n, const Value& v, const Value& l, double roughness,
+                                      double variance, double f0) {
+  const double spread = std::min(variance, 1e4);
+  if (!(spread > 0.0)) return ggxSpecularReference(n, v, l, roughness, f0);
+  Value nn = safeNormalize(n), vv = safeNormalize(v), ll = safeNormalize(l);
+  Value h = safeNormalize(add(ll, vv));
+  const double rough = clamp(roughness, 0.001, 1.0);
+  const double a = rough * rough, a2 = a * a;
+  const double wide = a2 + spread, w = a2 / wide;
+  const double ndoth = clamp(dot(nn, h), 0.0, 1.0);
+  GgxTerms t;
+  t.d = w * ggxDistributionReference(ndoth, wide) + (1.0 - w) * ggxBeckmannReference(ndoth, wide);
+  // The reflecting facets' normal, between N and H by the variances' ratio.
+  Value facet = safeNormalize(add(mul(nn, w * ndoth), mul(h, 1.0 - w)));
+  t.ndotl = clamp(dot(facet, ll), 0.0, 1.0);
+  const double fdotv = clamp(dot(facet, vv), 0.0, 1.0);
+  const double fdoth = clamp(dot(facet, h), 0.0, 1.0);
+  const double area = fdoth > 0.0 ? ndoth / fdoth : 0.0;
+  t.f = fresnelSchlick(clamp(dot(vv, h), 0.0, 1.0), f0);
+  t.brdf = t.d * area * t.f * ggxVisibilityReference(t.ndotl, fdotv, rough);
+  return t;
+}
+
 NearFarRatio nearFarRatioReference(double nearPlane, double farPlane) {
   double n = std::max(nearPlane, 1e-6);
   return {n, n / std::max(farPlane, n)};

@@ -35,6 +35,13 @@ struct GgxTerms {
 double ggxDistributionReference(double ndoth, double a2);
 double ggxVisibilityReference(double ndotl, double ndotv, double roughness);
 GgxTerms ggxSpecularReference(const Value& n, const Value& v, const Value& l, double roughness, double f0);
+// Beckmann exp(-tan^2 / a2) / (pi a2 cos^4), 0 where the exponent passes 80 (as the GLSL).
+double ggxBeckmannReference(double ndoth, double a2);
+// The filtered lobe for facet slopes of total variance `variance` around N
+// (wg_ggx_specular_filtered): ggxSpecularReference where the variance is not above 0;
+// ndotl is the reflecting facets' N*.L.
+GgxTerms ggxSpecularFilteredReference(const Value& n, const Value& v, const Value& l, double roughness,
+                                      double variance, double f0);
 
 // n / ((1 - d) + d n / f), guarded as linearize_depth.glsl; never above kMaxLinearDepth.
 inline constexpr double kMaxLinearDepth = 1e30;

@@ -130,6 +130,60 @@ vec4 wg_ggx_specular(vec3 n, vec3 v, vec3 l, float roughness, float f0) {
   return vec4(brdf, d, f, ndotl);
 }
 
+// --- The filtered lobe: a normal averaged over a pixel's footprint (ocean_surface's filter)
+// stands for facets whose slopes spread around it with variance V (both axes' summed). The
+// pixel's mean radiance is the base lobe convolved with that spread (LEAN mapping, Olano and
+// Baker 2010): for a Gaussian spread and a Beckmann base of alpha^2 exactly a Beckmann lobe
+// of alpha'^2 = alpha^2 + V. GGX is a Student-t in slope space, whose convolution has no
+// closed form; its share of the widened lobe is w = alpha^2 / alpha'^2 (1 where V = 0, 0
+// where the spread dominates), the rest a Beckmann of alpha'^2. Exact at both ends; between,
+// the peak is above the numerically convolved lobe's by at most 25 % (24 % at V = alpha^2), 3 %
+// at V = 100 alpha^2 (docs/ocean.md, "Filtered shading").
+
+// Beckmann exp(-tan^2 / a2) / (pi a2 cos^4), tan^2 = s2 / c2 (s2 as the GGX term's). 0 where
+// the exponent passes 80: there the term is below e^-80 / c2^2 of the lobe's scale, and
+// c2^2 could underflow (an exponent of NaN, 0 / 0, is caught there too).
+float wg_ggx_specular_beckmann(float ndoth, float sin2, float a2) {
+  float c2 = ndoth * ndoth;
+  float s2 = ndoth > 0.0 && sin2 >= 0.0 ? sin2 : 1.0 - c2;
+  float x = s2 / (c2 * a2);
+  if (!(x <= 80.0)) return 0.0;
+  return exp(-x) / (3.14159265358979 * a2 * c2 * c2);
+}
+
+// The filtered BRDF for slope variance `variance` (clamped to [0, 1e4]; 0: wg_ggx_specular).
+// D = w GGX(alpha'^2) + (1 - w) Beckmann(alpha'^2) at N.H; the facets that reflect L into V
+// are those near H, weighted by the base lobe against the spread: their normal
+// N* = normalize(w (N.H) N + (1 - w) H) (between N and H by the variances' ratio), and
+// Smith's G, N.L and N.V are theirs, at the base roughness; (N.H) / (N*.H) carries the
+// facets' area per unit of the pixel's. Returns vec4(brdf, D, F, N*.L): brdf * N*.L is the
+// pixel's mean reflected radiance per unit light.
+vec4 wg_ggx_specular_filtered(vec3 n, vec3 v, vec3 l, float roughness, float variance, float f0) {
+  float spread = min(variance, 1e4);
+  if (!(spread > 0.0)) return wg_ggx_specular(n, v, l, roughness, f0);
+  vec3 nn = wg_safe_normalize_vec3(n);
+  vec3 vv = wg_safe_normalize_vec3(v);
+  vec3 ll = wg_safe_normalize_vec3(l);
+  vec3 h = wg_half_vector(ll, vv);
+  float rough = clamp(roughness, 0.001, 1.0);
+  float a = rough * rough;
+  float a2 = a * a;
+  float wide = a2 + spread;
+  float w = a2 / wide;
+  float ndoth = clamp(dot(nn, h), 0.0, 1.0);
+  float sin2 = wg_unit_sin2(nn, h);
+  float d = w * wg_ggx_specular_distribution(ndoth, sin2, wide) + (1.0 - w) * wg_ggx_specular_beckmann(ndoth, sin2, wide);
+  vec3 facet = wg_safe_normalize_vec3(w * ndoth * nn + (1.0 - w) * h);
+  float fdotl = clamp(dot(facet, ll), 0.0, 1.0);
+  float fdotv = clamp(dot(facet, vv), 0.0, 1.0);
+  float fdoth = clamp(dot(facet, h), 0.0, 1.0);
+  float vdoth = clamp(dot(vv, h), 0.0, 1.0);
+  float area = fdoth > 0.0 ? ndoth / fdoth : 0.0;
+  float f = wg_fresnel_schlick(vdoth, f0);
+  float brdf = d * area * f * wg_ggx_specular_visibility(fdotl, fdotv, rough);
+  return vec4(brdf, d, f, fdotl);
+}
+
 // The spectral ocean's readers (ocean_displacement, ocean_surface): its maps at a world point.
 
 // One ocean map (RGBA32F, n x n texels; texel (j, i) holds the field at x = j L / n,
@@ -216,17 +270,6 @@ vec4 wg_ocean_map_lod(highp sampler2D map, vec2 xz, float texelsPerMetre, int n,
 // faded cascade hands all of its slopes to the roughness).
 float wg_ocean_lost_variance(vec4 slopes, vec4 moments, float weight) {
   return moments.x + moments.y - weight * weight * (slopes.x * slopes.x + slopes.y * slopes.y);
-}
-
-// The perceptual roughness (ggx_specular's r, GGX alpha = r^2) widened by slope variance
-// v: alpha'^2 = alpha^2 + v, v the sum of both axes' variances (a Beckmann lobe of alpha
-// has slope variance alpha^2 / 2 per axis: LEAN mapping, Olano and Baker 2010, which
-// Kaplanyan et al. 2016 and Tokuyoshi and Kaplanyan 2019 apply to GGX's alpha). r is held
-// in [0, 1], v at 0 or more (rounding can leave a mean square a hair below the squared mean).
-float wg_ocean_roughness(float r, float variance) {
-  float rc = clamp(r, 0.0, 1.0);
-  float a2 = rc * rc * rc * rc + max(variance, 0.0);
-  return min(sqrt(sqrt(a2)), 1.0);
 }
 
 // reflect_dir: the mirror direction of the view ray about the surface normal, for
@@ -319,7 +362,7 @@ void main() {
   float n3_detail_t16 = wg_ocean_lost_variance(n3_detail_t6, n3_detail_t12, n3_detail_t1) + wg_ocean_lost_variance(n3_detail_t8, n3_detail_t13, n3_detail_t2) + wg_ocean_lost_variance(n3_detail_t10, n3_detail_t14, n3_detail_t3);
   vec3 n3_detail_normal = wg_ocean_normal(n3_detail_t11, n3_detail_t15);
   float n3_detail_jacobian = wg_ocean_jacobian(n3_detail_t11, n3_detail_t15);
-  float n3_detail_roughness = wg_ocean_roughness(p_roughness, n3_detail_t16);
+  float n3_detail_variance = max(n3_detail_t16, 0.0);
   float n4_whitecaps = wg_remap_clamped_float(n3_detail_jacobian, p_foam_start, p_foam_full, 0.0, 1.0);
   float n5_cover = max(n4_whitecaps, n2_foam);
   vec3 n6_deep_color = wg_srgb_to_linear_vec3(p_deep_color);
@@ -328,7 +371,7 @@ void main() {
   vec3 n8_body_sky_t0 = wg_reflect_dir(n3_detail_normal, b_view_direction);
   vec3 n8_body_sky_color = texture(u_environment, n8_body_sky_t0).rgb;
   vec3 n9_body_blend = mix(n6_deep_color, n8_body_sky_color, vec3(n7_body_fresnel_t1));
-  vec4 n12_ggx_t0 = wg_ggx_specular(n3_detail_normal, b_view_direction, u_sun_direction, n3_detail_roughness, 0.02);
+  vec4 n12_ggx_t0 = wg_ggx_specular_filtered(n3_detail_normal, b_view_direction, u_sun_direction, p_roughness, n3_detail_variance, 0.02);
   float n12_ggx_t1 = (n12_ggx_t0.x * n12_ggx_t0.w);
   vec3 n12_ggx_color = (vec3(1.0, 0.82757086, 0.60382736) * n12_ggx_t1);
   float n14_p_split_y = v_world_position.y;
