@@ -39,13 +39,16 @@ void writeStrings(JsonTextWriter& w, const std::vector<std::string>& v) {
 }
 
 void writeTarget(JsonTextWriter& w, const ManifestTarget& target) {
-  // Members named by stage extensions ("frag", "vert", "vert.spv"): gathered, then sorted.
+  // Members named by stage extensions ("frag", "vert", "vert.spv", "vert.body") and the body
+  // files' "glsl_version": gathered, then sorted.
   std::vector<std::pair<std::string, const std::string*>> files;
   for (const auto& f : target.files) {
     const std::string ext(stageExtension(f.stage));
     files.emplace_back(ext, &f.file);
     if (!f.spirv.empty()) files.emplace_back(ext + ".spv", &f.spirv);
+    if (!f.body.empty()) files.emplace_back(ext + std::string(kStageBodySuffix), &f.body);
   }
+  if (!target.glslVersion.empty()) files.emplace_back("glsl_version", &target.glslVersion);
   std::string entryKey = "entry_points", fromKey = "from";
   if (!target.from.empty()) {
     files.emplace_back(entryKey, nullptr);
@@ -227,6 +230,8 @@ std::string Manifest::fileText() const {
     w.beginArray();
     for (const auto& o : oceans) {
       w.beginObject();
+      w.key("filtered");
+      w.boolean(o.filtered);
       if (!oceanModule.empty()) w.member("module", oceanModule);
       w.member("node", o.nodeId);
       w.key("options");

@@ -151,11 +151,20 @@ ManifestTarget targetOf(const std::string& name, const json& files) {
     f.stage = stage;
     f.file = text(files, ext.c_str(), what);
     f.spirv = optionalText(files, (ext + ".spv").c_str(), what);
+    f.body = optionalText(files, (ext + std::string(kStageBodySuffix)).c_str(), what);
     if (entryPoints) f.entryPoint = text(*entryPoints, ext.c_str(), what + "'s \"entry_points\"");
-    known += f.spirv.empty() ? 1 : 2;
+    known += 1 + (f.spirv.empty() ? 0 : 1) + (f.body.empty() ? 0 : 1);
     t.files.push_back(std::move(f));
   }
-  if (known != files.size()) fail(what + " has a member that is not a shader stage (vert, tesc, tese, frag, <stage>.spv)");
+  // Body files (the stages without their version line) come with the version they lack.
+  t.glslVersion = optionalText(files, "glsl_version", what);
+  const bool bodies = std::any_of(t.files.begin(), t.files.end(), [](const ManifestStageFile& f) { return !f.body.empty(); });
+  if (!t.glslVersion.empty()) ++known;
+  if (bodies != !t.glslVersion.empty() ||
+      (bodies && std::any_of(t.files.begin(), t.files.end(), [](const ManifestStageFile& f) { return f.body.empty(); })))
+    fail(what + " must have a \"<stage>.body\" file for every stage and \"glsl_version\" together, or none of them");
+  if (known != files.size())
+    fail(what + " has a member that is not a shader stage (vert, tesc, tese, frag, <stage>.spv, <stage>.body, glsl_version)");
   if (entryPoints && entryPoints->size() != t.files.size()) fail(what + "'s \"entry_points\" names a stage it has no file for");
   return t;
 }
@@ -391,9 +400,13 @@ Manifest Manifest::fromJson(const json& j) {
   if (const json* functions = member(j, "functions")) m.functions = texts(*functions, "the manifest's \"functions\"");
   for (const auto& t : objects(j, "textures")) m.textures.push_back(textureOf(t));
   for (const auto& o : objects(j, "oceans")) {
-    onlyMembers(o, {"module", "node", "options"}, "an entry of the manifest's \"oceans\"");
+    onlyMembers(o, {"filtered", "module", "node", "options"}, "an entry of the manifest's \"oceans\"");
     OceanInfo info;
     info.nodeId = text(o, "node", "an entry of the manifest's \"oceans\"");
+    const json* filtered = member(o, "filtered");
+    if (!filtered || !filtered->is_boolean())
+      fail("ocean " + info.nodeId + " has no \"filtered\" true or false (a manifest written before it: compile the graph again)");
+    info.filtered = filtered->get<bool>();
     // The web clients' module (codegen/ocean_module_js.h): one file for all the oceans.
     if (member(o, "module")) {
       std::string module = text(o, "module", "ocean " + info.nodeId + "'s \"module\"");
@@ -411,6 +424,16 @@ Manifest Manifest::fromJson(const json& j) {
   for (const auto& t : m.textures)
     if (t.ocean && (t.ocean->ocean >= static_cast<int>(m.oceans.size())))
       fail("texture " + t.name + " reads ocean " + std::to_string(t.ocean->ocean) + ", which \"oceans\" does not list");
+  // "filtered" is what the compiler decided from these same maps: a manifest where the two
+  // disagree was edited.
+  for (size_t o = 0; o < m.oceans.size(); ++o) {
+    const bool moments = std::any_of(m.textures.begin(), m.textures.end(), [o](const TextureInfo& t) {
+      return t.ocean && t.ocean->ocean == static_cast<int>(o) && t.ocean->map == ocean::kMomentsMap;
+    });
+    if (moments != m.oceans[o].filtered)
+      fail("ocean " + m.oceans[o].nodeId + " has \"filtered\": " + (m.oceans[o].filtered ? "true" : "false") + ", but " +
+           (moments ? "a texture reads its moments map" : "no texture reads its moments map"));
+  }
   if (const json* t = member(j, "tessellation")) m.tessellation = tessellationOf(*t);
   if (const json* resources = member(j, "resources"))
     for (const std::string& name : texts(*resources, "the manifest's \"resources\"")) {
