@@ -41,6 +41,7 @@ struct ManifestStageFile {
   std::string spirv;       // vk450: "lake.vk450.vert.spv"; "" for the others
   // es300 (codegen/target.h writesStageBodies): "lake.es300.vert.body", the stage after its
   // version line, for a host that writes that line itself (three.js); "" for the others.
+  // Written in the manifest's "three" section, not among the target's files.
   std::string body;
   std::string entryPoint;  // targets made by SPIRV-Cross: "main0" (MSL), "main" (HLSL); "" for GLSL
 };

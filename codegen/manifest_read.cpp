@@ -151,22 +151,36 @@ ManifestTarget targetOf(const std::string& name, const json& files) {
     f.stage = stage;
     f.file = text(files, ext.c_str(), what);
     f.spirv = optionalText(files, (ext + ".spv").c_str(), what);
-    f.body = optionalText(files, (ext + std::string(kStageBodySuffix)).c_str(), what);
     if (entryPoints) f.entryPoint = text(*entryPoints, ext.c_str(), what + "'s \"entry_points\"");
-    known += 1 + (f.spirv.empty() ? 0 : 1) + (f.body.empty() ? 0 : 1);
+    known += f.spirv.empty() ? 1 : 2;
     t.files.push_back(std::move(f));
   }
-  // Body files (the stages without their version line) come with the version they lack.
-  t.glslVersion = optionalText(files, "glsl_version", what);
-  const bool bodies = std::any_of(t.files.begin(), t.files.end(), [](const ManifestStageFile& f) { return !f.body.empty(); });
-  if (!t.glslVersion.empty()) ++known;
-  if (bodies != !t.glslVersion.empty() ||
-      (bodies && std::any_of(t.files.begin(), t.files.end(), [](const ManifestStageFile& f) { return f.body.empty(); })))
-    fail(what + " must have a \"<stage>.body\" file for every stage and \"glsl_version\" together, or none of them");
-  if (known != files.size())
-    fail(what + " has a member that is not a shader stage (vert, tesc, tese, frag, <stage>.spv, <stage>.body, glsl_version)");
+  if (known != files.size()) fail(what + " has a member that is not a shader stage (vert, tesc, tese, frag, <stage>.spv)");
   if (entryPoints && entryPoints->size() != t.files.size()) fail(what + "'s \"entry_points\" names a stage it has no file for");
   return t;
+}
+
+// "three": the es300 stages' body files with the version they lack, one entry per stage
+// of the es300 target (written by writeThreeSection).
+void threeSectionOf(const json& three, Manifest& m) {
+  const std::string what = "the manifest's \"three\"";
+  if (!three.is_object()) fail(what + " is not an object");
+  onlyMembers(three, {"vertex", "fragment"}, what);
+  ManifestTarget* es300 = nullptr;
+  for (auto& t : m.targets)
+    if (t.name == "es300") es300 = &t;
+  if (!es300) fail(what + " names body files of the es300 target, which \"targets\" does not list");
+  for (auto& f : es300->files) {
+    const char* stage = f.stage == ShaderStage::Vertex ? "vertex" : f.stage == ShaderStage::Fragment ? "fragment" : "";
+    const json* entry = member(three, stage);
+    if (!entry || !entry->is_object()) fail(what + " has no \"" + stage + "\" object for the es300 stage " + f.file);
+    onlyMembers(*entry, {"body_file", "glsl_version"}, what + "'s \"" + stage + "\"");
+    f.body = text(*entry, "body_file", what + "'s \"" + stage + "\"");
+    const std::string version = text(*entry, "glsl_version", what + "'s \"" + stage + "\"");
+    if (!es300->glslVersion.empty() && version != es300->glslVersion) fail(what + " gives its stages two versions");
+    es300->glslVersion = version;
+  }
+  if (three.size() != es300->files.size()) fail(what + " names a stage the es300 target does not have");
 }
 
 AttributeInfo attributeOf(const json& a) {
@@ -381,7 +395,7 @@ Manifest Manifest::fromJson(const json& j) {
   onlyMembers(j,
               {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
                "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan", "webgpu", "color",
-               "oceans"},
+               "oceans", "three"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
     fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));
@@ -394,6 +408,7 @@ Manifest Manifest::fromJson(const json& j) {
     if (!targets->is_object()) fail("the manifest's \"targets\" is not an object");
     for (const auto& [name, files] : targets->items()) m.targets.push_back(targetOf(name, files));
   }
+  if (const json* three = member(j, "three")) threeSectionOf(*three, m);
   for (const auto& a : objects(j, "attributes")) m.attributes.push_back(attributeOf(a));
   for (const auto& u : objects(j, "uniforms")) m.uniforms.push_back(uniformOf(u));
   for (const auto& v : objects(j, "varyings")) m.varyings.push_back(varyingOf(v));

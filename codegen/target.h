@@ -28,8 +28,8 @@ enum class ShaderStage { Vertex, TessControl, TessEvaluation, Fragment };
 std::string_view stageExtension(ShaderStage s);  // "vert", "tesc", "tese", "frag"
 
 // Whether `compile` writes each stage of `t` a second time without its version line, as
-// "<stage file>.body" (EmittedShader::bodyStart; the manifest names them "vert.body",
-// "frag.body" with the "glsl_version"): es300, for hosts that write the version line
+// "<stage file>.body" (EmittedShader::bodyStart; the manifest's "three" section names them
+// with the "glsl_version" they lack): es300, for hosts that write the version line
 // themselves (three.js's RawShaderMaterial).
 inline bool writesStageBodies(Target t) { return t == Target::Es300; }
 inline constexpr std::string_view kStageBodySuffix = ".body";

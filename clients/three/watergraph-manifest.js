@@ -15,7 +15,8 @@ const setOf = (names) => table(Object.fromEntries(names.map((n) => [n, true])));
 export const MANIFEST_FORMAT = 1;
 
 const TOP_LEVEL = setOf(['format', 'graph', 'description', 'preset', 'imports', 'targets', 'attributes', 'uniforms',
-  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color', 'oceans']);
+  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color', 'oceans',
+  'three']);
 // Components of each uniform type the client uploads.
 export const UNIFORM_COMPONENTS = table({ float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 });
 // The builtins the client computes (watergraph-three.js BUILTIN_INITIAL and time_phase).
@@ -126,15 +127,19 @@ export function checkManifest(manifest) {
     for (const stage of Object.keys(files))
       if (stage !== 'entry_points') text(files[stage], `targets.${name}.${stage}`);
   }
-  if (has(targets, 'es300')) {
-    for (const stage of ['vert', 'frag']) text(targets.es300[stage], `targets.es300.${stage}`);
-    // The stages after their version line, which the client fetches: plain file names beside
-    // the manifest, with the version they lack (watergraph-passes.js shaderForm).
-    for (const key of ['vert.body', 'frag.body'])
-      if (has(targets.es300, key)) plainFileName(targets.es300[key], `targets.es300.${key}`);
-    if (has(targets.es300, 'vert.body') !== has(targets.es300, 'glsl_version') ||
-        has(targets.es300, 'frag.body') !== has(targets.es300, 'glsl_version'))
-      fail('targets.es300', 'must have "vert.body", "frag.body" and "glsl_version" together, or none of them');
+  if (has(targets, 'es300')) for (const stage of ['vert', 'frag']) text(targets.es300[stage], `targets.es300.${stage}`);
+  // "three": the es300 stages after their version line, which the client fetches (plain file
+  // names beside the manifest), with the version they lack (watergraph-passes.js shaderForm).
+  if (has(manifest, 'three')) {
+    const three = object(manifest.three, 'three');
+    members(three, STAGES, 'three');
+    for (const stage of Object.keys(STAGES)) {
+      const field = `three.${stage}`;
+      const entry = object(three[stage], field);
+      members(entry, setOf(['body_file', 'glsl_version']), field);
+      plainFileName(entry.body_file, `${field}.body_file`);
+      text(entry.glsl_version, `${field}.glsl_version`);
+    }
   }
 
   if (has(manifest, 'attributes'))

@@ -113,8 +113,8 @@ export function glPerspective(fovYDegrees, aspect, near, far, target = new THREE
 // line) and the version apart, which three.js writes as the first line (glslVersion) with
 // its own #defines after it. watergraph writes both parts: `watergraph scene` the runtime's
 // shaders (the description's "three".shaders), `compile --target es300` the graph's stages
-// (the target's "vert.body" and "frag.body" files, and its "glsl_version"). Returns `form`,
-// or throws naming `what`.
+// (the manifest's "three": each stage's "body_file" and "glsl_version"). Returns `form`, or
+// throws naming `what`.
 export function shaderForm(form, what) {
   if (!form || typeof form !== 'object' || typeof form.body !== 'string' || typeof form.glsl_version !== 'string')
     throw new WaterGraphError(`${what} has no form for three.js (a "glsl_version" and a "body")`);

@@ -170,9 +170,9 @@ export function sunFromAngles(azimuth, elevation) {
 // The water: a RawShaderMaterial with every uniform of the manifest, and update().
 export class WaterGraph {
   // manifest: the parsed <graph>.manifest.json; shaders: {vertex, fragment}, the graph's es300
-  // stages as three.js takes them, each {glsl_version, body}: the target's "glsl_version" and
-  // the text of its "vert.body" / "frag.body" file (<graph>.es300.vert.body: the stage after
-  // its version line, which three.js writes itself); textures: sampler name -> THREE.Texture for every manifest
+  // stages as three.js takes them, each {glsl_version, body}: the manifest's
+  // "three".vertex.glsl_version and the text of its "body_file" (<graph>.es300.vert.body: the
+  // stage after its version line, which three.js writes itself); textures: sampler name -> THREE.Texture for every manifest
   // texture with a "source" (loadWaterGraph loads them); resources: scene resource name ->
   // THREE texture the application renders itself (see RESOURCE_PASSES). description: a
   // scene description (`watergraph scene`): the client then renders every pass the
@@ -183,7 +183,7 @@ export class WaterGraph {
     if (!manifest || typeof manifest !== 'object') throw new WaterGraphError('no manifest given');
     if (vertexShader !== undefined || fragmentShader !== undefined)
       throw new WaterGraphError('WaterGraph takes the stages as `shaders: {vertex, fragment}`, each {glsl_version, body} from the ' +
-        'es300 target\'s "glsl_version" and its "vert.body" / "frag.body" files, not as whole texts (vertexShader, fragmentShader): see README.md');
+        'manifest\'s "three" (each stage\'s "glsl_version" and its "body_file"), not as whole texts (vertexShader, fragmentShader): see README.md');
     checkManifest(manifest);  // its documented shape, before any of it is used
     checkPasses(manifest, resources, description !== null);
     // The graph's preferred view (the manifest's "color"), which render() uses by default.
@@ -510,14 +510,15 @@ export async function loadWaterGraph(manifestUrl, { resources = {}, description 
   const es300 = manifest.targets?.es300;
   if (!es300?.vert || !es300?.frag)
     throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
-  if (!es300['vert.body'] || !es300['frag.body'])
-    throw new WaterGraphError(`graph '${manifest.graph}': its es300 target has no "vert.body" and "frag.body" files (compile it again with this watergraph)`);
+  const three = manifest.three;
+  if (!three)
+    throw new WaterGraphError(`graph '${manifest.graph}': the manifest has no "three" (the es300 stages' bodies): compile it again with this watergraph`);
   // The stages after their version line, which three.js writes itself (checkManifest: plain
-  // file names beside the manifest).
-  const text = async (file) => (await fetchOk(new URL(file, base), file)).text();
-  const [vertexBody, fragmentBody] = await Promise.all([text(es300['vert.body']), text(es300['frag.body'])]);
-  const shaders = { vertex: { glsl_version: es300.glsl_version, body: vertexBody },
-    fragment: { glsl_version: es300.glsl_version, body: fragmentBody } };
+  // file names beside the manifest), with the version they lack.
+  const form = async (stage) => ({ glsl_version: three[stage].glsl_version,
+    body: await (await fetchOk(new URL(three[stage].body_file, base), three[stage].body_file)).text() });
+  const [vertex, fragment] = await Promise.all([form('vertex'), form('fragment')]);
+  const shaders = { vertex, fragment };
   // The oceans' module (checkManifest: a .js file name beside the manifest), as an ES module.
   const oceanModule = manifest.oceans ? await importOceanModule(new URL(manifest.oceans[0].module, base)) : null;
   const textures = table();

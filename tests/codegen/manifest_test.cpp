@@ -148,9 +148,13 @@ TEST(Manifest, FromJsonNamesWhatIsWrong) {
        "is not a sampler of scene resource 'refraction'"},
       {"patches of four", [](auto& m) { m["tessellation"]["patch_vertices"] = 4; }, "patches of other than 3"},
       {"target member", [](auto& m) { m["targets"]["glsl330"]["geom"] = "x.geom"; }, "not a shader stage"},
-      {"body files without their version", [](auto& m) { m["targets"]["es300"].erase("glsl_version"); }, "together"},
-      {"a version without body files", [](auto& m) { m["targets"]["glsl330"]["glsl_version"] = "330 core"; }, "together"},
-      {"one stage without its body", [](auto& m) { m["targets"]["es300"].erase("frag.body"); }, "together"},
+      {"a body file without its version", [](auto& m) { m["three"]["vertex"].erase("glsl_version"); },
+       "\"three\"'s \"vertex\" lacks the string \"glsl_version\""},
+      {"one stage without its body", [](auto& m) { m["three"].erase("fragment"); }, "no \"fragment\" object"},
+      {"a body file of a stage es300 lacks", [](auto& m) { m["three"]["tess_control"] = m["three"]["vertex"]; },
+       "unknown member \"tess_control\""},
+      {"two versions", [](auto& m) { m["three"]["vertex"]["glsl_version"] = "100"; }, "two versions"},
+      {"body files without es300", [](auto& m) { m["targets"].erase("es300"); }, "which \"targets\" does not list"},
       {"entry points without from", [](auto& m) { m["targets"]["glsl330"]["entry_points"] = nlohmann::json::object(); },
        "without the other"},
       {"resource list", [](auto& m) { m["resources"].push_back("ssao"); }, "unknown scene resource 'ssao'"},
@@ -214,11 +218,14 @@ TEST(Manifest, Es300StagesComeWithTheirBodiesAndVersion) {
       }
     }
     EXPECT_EQ(bodies, 2u);
+    // In the "three" section; the targets' members stay their files, as before.
     const nlohmann::json m = r->manifest.toJson();
-    EXPECT_EQ(m["targets"]["es300"]["glsl_version"], "300 es");
-    EXPECT_EQ(m["targets"]["es300"]["vert.body"], std::string(name) + ".es300.vert.body");
-    EXPECT_EQ(m["targets"]["es300"]["frag.body"], std::string(name) + ".es300.frag.body");
-    EXPECT_FALSE(m["targets"]["glsl330"].contains("glsl_version"));
+    const nlohmann::json three = {
+        {"fragment", {{"body_file", std::string(name) + ".es300.frag.body"}, {"glsl_version", "300 es"}}},
+        {"vertex", {{"body_file", std::string(name) + ".es300.vert.body"}, {"glsl_version", "300 es"}}}};
+    EXPECT_EQ(m["three"], three);
+    EXPECT_EQ(m["targets"]["es300"], nlohmann::json({{"frag", std::string(name) + ".es300.frag"},
+                                                     {"vert", std::string(name) + ".es300.vert"}}));
     expectRoundTrip(*r);
   }
 }

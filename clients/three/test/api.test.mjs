@@ -15,9 +15,8 @@ const graph = () => {
   assert.ok(dir, 'WG_THREE_FIXTURES is not set');
   const read = (f) => readFileSync(path.join(dir, f), 'utf8');
   const manifest = JSON.parse(read('three_environment.manifest.json'));
-  const es300 = manifest.targets.es300;
-  const form = (stage) => ({ glsl_version: es300.glsl_version, body: read(es300[`${stage}.body`]) });
-  return { manifest, shaders: { vertex: form('vert'), fragment: form('frag') } };
+  const form = (stage) => ({ glsl_version: manifest.three[stage].glsl_version, body: read(manifest.three[stage].body_file) });
+  return { manifest, shaders: { vertex: form('vertex'), fragment: form('fragment') } };
 };
 
 const description = () => JSON.parse(readFileSync(path.join(dir, 'scene.json'), 'utf8'));

@@ -18,9 +18,8 @@ const read = (f) => {
 };
 const graph = () => {
   const manifest = JSON.parse(read('three_environment.manifest.json'));
-  const es300 = manifest.targets.es300;
-  const form = (stage) => ({ glsl_version: es300.glsl_version, body: read(es300[`${stage}.body`]) });
-  return { manifest, shaders: { vertex: form('vert'), fragment: form('frag') } };
+  const form = (stage) => ({ glsl_version: manifest.three[stage].glsl_version, body: read(manifest.three[stage].body_file) });
+  return { manifest, shaders: { vertex: form('vertex'), fragment: form('fragment') } };
 };
 const description = () => JSON.parse(read('scene.json'));
 const refused = (fn, words) => assert.throws(fn, (e) => e instanceof WaterGraphError && e.message.includes(words),

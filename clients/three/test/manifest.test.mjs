@@ -20,9 +20,8 @@ const read = (file) => {
 };
 // The es300 stages as three.js takes them: the manifest's version, the body files' texts.
 const shadersOf = (manifest) => {
-  const es300 = manifest.targets.es300;
-  const form = (stage) => ({ glsl_version: es300.glsl_version, body: read(es300[`${stage}.body`]) });
-  return { vertex: form('vert'), fragment: form('frag') };
+  const form = (stage) => ({ glsl_version: manifest.three[stage].glsl_version, body: read(manifest.three[stage].body_file) });
+  return { vertex: form('vertex'), fragment: form('fragment') };
 };
 const graph = (name) => {
   const manifest = JSON.parse(read(`${name}.manifest.json`));
@@ -113,9 +112,11 @@ const CASES = [
     return 'oceans[0].filtered';
   }],
   // The es300 stages' bodies (what the client fetches) and their version.
-  ['topdown', 'an es300 body file in another folder', (m) => { m.targets.es300['vert.body'] = '../secret.vert'; return 'targets.es300.vert.body'; }],
-  ['topdown', 'an es300 body file that is not a string', (m) => { m.targets.es300['frag.body'] = 5; return 'targets.es300.frag.body'; }],
-  ['topdown', 'es300 body files without their glsl_version', (m) => { delete m.targets.es300.glsl_version; return 'targets.es300'; }],
+  ['topdown', 'an es300 body file in another folder', (m) => { m.three.vertex.body_file = '../secret.vert'; return 'three.vertex.body_file'; }],
+  ['topdown', 'an es300 body file that is not a string', (m) => { m.three.fragment.body_file = 5; return 'three.fragment.body_file'; }],
+  ['topdown', 'a body file without its glsl_version', (m) => { delete m.three.vertex.glsl_version; return 'three.vertex.glsl_version'; }],
+  ['topdown', 'a "three" without the fragment stage', (m) => { delete m.three.fragment; return 'three.fragment'; }],
+  ['topdown', 'a "three" stage "geometry"', (m) => { m.three.geometry = m.three.vertex; return 'three.geometry'; }],
   ['topdown', 'an ocean map "__proto__"', (m) => { m.textures = [{ name: 'u_map', type: 'sampler2D', binding: 1, stages: ['vertex'], ocean: { ocean: 0, cascade: 0, map: '__proto__' } }]; return 'textures[0].ocean.map'; }],
 ];
 
