@@ -19,7 +19,8 @@ import subprocess
 import sys
 import tempfile
 
-PHASES = ["json_sax_floor", "load", "resolve", "emit_glsl330", "manifest", "before_glslang"]
+# before_glslang_es300: the one target a WebGL page compiles (and three.js TSL's build() makes).
+PHASES = ["json_sax_floor", "load", "resolve", "emit_glsl330", "manifest", "before_glslang", "before_glslang_es300"]
 SIZES = ["1000", "10000"]
 
 

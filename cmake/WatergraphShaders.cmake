@@ -3,7 +3,8 @@
 #                        [TEXTURES] [PRESET <name>])
 #
 # Compiles graphs with watergraph at build time, before <target> builds. Each graph gives
-# <dir>/<name>.<target>.vert/.frag (vk450 also .vert.spv/.frag.spv) and <dir>/<name>.manifest.json;
+# <dir>/<name>.<target>.vert/.frag (vk450 also .vert.spv/.frag.spv, es300 also .vert.body/.frag.body)
+# and <dir>/<name>.manifest.json;
 # query-c gives <dir>/<name>.query.h and query-js <dir>/<name>.query.js, the surface queries
 # (docs/queries.md; add <dir> to the target's include directories to include the header);
 # a graph is recompiled when its file, a graph it imports (a subgraph), a PNG texture it
@@ -87,6 +88,9 @@ function(watergraph_add_shaders)
         list(APPEND outputs ${WG_OUTPUT_DIR}/${name}.${t}.${stage})
         if(t STREQUAL "vk450")
           list(APPEND outputs ${WG_OUTPUT_DIR}/${name}.${t}.${stage}.spv)
+        elseif(t STREQUAL "es300")
+          # The stage after its version line, for hosts that write that line (three.js).
+          list(APPEND outputs ${WG_OUTPUT_DIR}/${name}.${t}.${stage}.body)
         endif()
       endforeach()
     endforeach()

@@ -7,6 +7,8 @@
 #include <iterator>
 #include <string_view>
 #include <unordered_set>
+#include <utility>
+#include <vector>
 
 #include "codegen/glslang_validate.h"
 #include "codegen/manifest_build.h"
@@ -112,8 +114,11 @@ namespace {
 
 // Emits every target of `options` into `result.files` (validated when asked) and builds the
 // manifest; false when glslang rejected a shader.
+// `bodies`: per stage file of a target that writesStageBodies, its index in result.files and
+// where its body starts.
 bool emitTargets(const Program& program, const CompileOptions& options, const std::string& base,
-                 const std::string& sourceName, CompileResult& result, Diagnostics& diags) {
+                 const std::string& sourceName, CompileResult& result, Diagnostics& diags,
+                 std::vector<std::pair<size_t, size_t>>& bodies) {
   bool ok = true;
   // One plan per distinct tessellation choice; each target wraps its plan in its dialect.
   TargetPlans plans = planTargets(program, options.targets, sourceName, options.tessellation);
@@ -140,7 +145,10 @@ bool emitTargets(const Program& program, const CompileOptions& options, const st
           result.files.push_back({sources[s].fileName + ".spv", spirvBytes(vr.spirv[s])});
       }
     }
-    for (size_t s = 0; s < sources.size(); ++s) result.files[firstFile + s].contents = std::move(sources[s].text);
+    for (size_t s = 0; s < sources.size(); ++s) {
+      result.files[firstFile + s].contents = std::move(sources[s].text);
+      if (writesStageBodies(target)) bodies.emplace_back(firstFile + s, er.shaders[s].bodyStart);
+    }
   }
   if (!ok) return false;
   result.manifest = buildManifest(program, plans, base);
@@ -204,8 +212,15 @@ std::optional<CompileResult> compileGraph(const Graph& graphAsWritten, const Reg
   for (char& ch : sourceName) if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = '?';  // stays in the // comment
   // The plans live inside emitTargets, so they are gone before the manifest's text is
   // written: a big graph's plans are megabytes that nothing after the manifest reads.
-  if (!emitTargets(*program, options, base, sourceName.empty() ? graph.name : sourceName, result, diags))
+  std::vector<std::pair<size_t, size_t>> bodies;
+  if (!emitTargets(*program, options, base, sourceName.empty() ? graph.name : sourceName, result, diags, bodies))
     return std::nullopt;
+  // The es300 stages without their version line, copied once the plans are gone (the copy
+  // is not held beside them at the compile's peak).
+  for (const auto& [file, start] : bodies) {
+    OutputFile body{result.files[file].name + std::string(kStageBodySuffix), result.files[file].contents.substr(start)};
+    result.files.push_back(std::move(body));
+  }
   if (options.wgsl &&
       !addWgslTarget(*program, base, sourceName.empty() ? graph.name : sourceName, result, diags, &result.wgslLineOp))
     return std::nullopt;

@@ -52,8 +52,8 @@ bool addWgslTarget(const Program& program, const std::string& base, const std::s
   ManifestTarget& t = result.manifest.targets.emplace_back();
   t.name = kWgslTargetName;
   t.from = "watergraph's WGSL emitter: one module, both entry points";
-  t.files.push_back({ShaderStage::Vertex, file, "", "vs_main"});
-  t.files.push_back({ShaderStage::Fragment, file, "", "fs_main"});
+  t.files.push_back({.stage = ShaderStage::Vertex, .file = file, .entryPoint = "vs_main"});
+  t.files.push_back({.stage = ShaderStage::Fragment, .file = file, .entryPoint = "fs_main"});
   result.files.push_back({file, std::move(module.text)});
   if (lineOp) *lineOp = std::move(module.lineOp);
   return true;

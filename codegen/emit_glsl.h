@@ -3,8 +3,10 @@
 // target's declarations (version, precision, qualifiers, layouts, the vk450 uniform
 // block), with a map from each output line back to the op that wrote it. Nothing here
 // decides what a shader reads or computes; codegen/shader_plan.h does, once for all targets.
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "codegen/shader_plan.h"
@@ -17,6 +19,11 @@ struct EmittedShader {
   ShaderStage stage{};
   std::string text;
   std::vector<int> lineOp;  // per 1-based line - 1: the op index that wrote it, or -1
+  // The text is "#version " + glslVersion + "\n" and the body from bodyStart on: the form a
+  // host that writes the version line itself takes (three.js's RawShaderMaterial, whose
+  // #defines follow that line), the `<graph>.es300.<stage>.body` files.
+  std::string_view glslVersion;  // "330 core", "300 es", "450"
+  size_t bodyStart = 0;
 };
 
 struct EmitResult {

@@ -38,8 +38,26 @@ void writeStrings(JsonTextWriter& w, const std::vector<std::string>& v) {
   w.endArray();
 }
 
+// "three": for the target whose stages have body files (es300), each stage's body file and
+// the version it lacks, as a host that writes the version line itself takes them (three.js's
+// RawShaderMaterial): {"fragment": {"body_file", "glsl_version"}, "vertex": {...}}.
+void writeThreeSection(JsonTextWriter& w, const ManifestTarget& target) {
+  w.beginObject();
+  for (ShaderStage stage : {ShaderStage::Fragment, ShaderStage::Vertex})  // keys in byte order
+    for (const auto& f : target.files)
+      if (f.stage == stage && !f.body.empty()) {
+        w.key(stage == ShaderStage::Vertex ? "vertex" : "fragment");
+        w.beginObject();
+        w.member("body_file", f.body);
+        w.member("glsl_version", target.glslVersion);
+        w.endObject();
+      }
+  w.endObject();
+}
+
 void writeTarget(JsonTextWriter& w, const ManifestTarget& target) {
   // Members named by stage extensions ("frag", "vert", "vert.spv"): gathered, then sorted.
+  // Every member is a file (the stages' bodies are named in "three", not here).
   std::vector<std::pair<std::string, const std::string*>> files;
   for (const auto& f : target.files) {
     const std::string ext(stageExtension(f.stage));
@@ -227,6 +245,8 @@ std::string Manifest::fileText() const {
     w.beginArray();
     for (const auto& o : oceans) {
       w.beginObject();
+      w.key("filtered");
+      w.boolean(o.filtered);
       if (!oceanModule.empty()) w.member("module", oceanModule);
       w.member("node", o.nodeId);
       w.key("options");
@@ -281,6 +301,11 @@ std::string Manifest::fileText() const {
   w.beginArray();
   for (const auto& t : textures) writeTexture(w, t);
   w.endArray();
+  for (const auto& t : targets)
+    if (!t.glslVersion.empty()) {
+      w.key("three");
+      writeThreeSection(w, t);
+    }
   w.key("uniforms");
   w.beginArray();
   for (const auto& u : uniforms) writeUniform(w, u);

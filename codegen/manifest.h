@@ -39,6 +39,10 @@ struct ManifestStageFile {
   ShaderStage stage{};
   std::string file;        // "lake.glsl330.vert"
   std::string spirv;       // vk450: "lake.vk450.vert.spv"; "" for the others
+  // es300 (codegen/target.h writesStageBodies): "lake.es300.vert.body", the stage after its
+  // version line, for a host that writes that line itself (three.js); "" for the others.
+  // Written in the manifest's "three" section, not among the target's files.
+  std::string body;
   std::string entryPoint;  // targets made by SPIRV-Cross: "main0" (MSL), "main" (HLSL); "" for GLSL
 };
 
@@ -46,6 +50,7 @@ struct ManifestTarget {
   std::string name;                      // "glsl330", ..., or a cross target: "msl", "hlsl"
   std::vector<ManifestStageFile> files;  // in pipeline order
   std::string from;                      // cross targets: how the files were made; "" for GLSL
+  std::string glslVersion;  // with body files: the version they are written without ("300 es"); else ""
 };
 
 // What a parameter uniform holds: the graph parameter, its default and its range.

@@ -66,12 +66,14 @@ Manifest buildManifest(const Program& program, const TargetPlans& plans, const s
     const Target target = plans.targets[i];
     ManifestTarget& t = m.targets.emplace_back();
     t.name = targetName(target);
+    if (writesStageBodies(target)) t.glslVersion = targetGlslVersion(target);
     const std::string prefix = baseName + "." + t.name + ".";
     for (const auto& stage : plans.of(i).stages) {
       ManifestStageFile& f = t.files.emplace_back();
       f.stage = stage.stage;
       f.file = prefix + std::string(stageExtension(stage.stage));
       if (target == Target::Vk450) f.spirv = f.file + ".spv";
+      if (writesStageBodies(target)) f.body = f.file + std::string(kStageBodySuffix);
     }
   }
 

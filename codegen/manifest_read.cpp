@@ -160,6 +160,29 @@ ManifestTarget targetOf(const std::string& name, const json& files) {
   return t;
 }
 
+// "three": the es300 stages' body files with the version they lack, one entry per stage
+// of the es300 target (written by writeThreeSection).
+void threeSectionOf(const json& three, Manifest& m) {
+  const std::string what = "the manifest's \"three\"";
+  if (!three.is_object()) fail(what + " is not an object");
+  onlyMembers(three, {"vertex", "fragment"}, what);
+  ManifestTarget* es300 = nullptr;
+  for (auto& t : m.targets)
+    if (t.name == "es300") es300 = &t;
+  if (!es300) fail(what + " names body files of the es300 target, which \"targets\" does not list");
+  for (auto& f : es300->files) {
+    const char* stage = f.stage == ShaderStage::Vertex ? "vertex" : f.stage == ShaderStage::Fragment ? "fragment" : "";
+    const json* entry = member(three, stage);
+    if (!entry || !entry->is_object()) fail(what + " has no \"" + stage + "\" object for the es300 stage " + f.file);
+    onlyMembers(*entry, {"body_file", "glsl_version"}, what + "'s \"" + stage + "\"");
+    f.body = text(*entry, "body_file", what + "'s \"" + stage + "\"");
+    const std::string version = text(*entry, "glsl_version", what + "'s \"" + stage + "\"");
+    if (!es300->glslVersion.empty() && version != es300->glslVersion) fail(what + " gives its stages two versions");
+    es300->glslVersion = version;
+  }
+  if (three.size() != es300->files.size()) fail(what + " names a stage the es300 target does not have");
+}
+
 AttributeInfo attributeOf(const json& a) {
   AttributeInfo out;
   out.name = text(a, "name", "a manifest attribute");
@@ -372,7 +395,7 @@ Manifest Manifest::fromJson(const json& j) {
   onlyMembers(j,
               {"format", "graph", "description", "preset", "imports", "targets", "attributes", "uniforms", "varyings", "functions",
                "textures", "tessellation", "resources", "passes", "pass_scales", "nodes", "vulkan", "webgpu", "color",
-               "oceans"},
+               "oceans", "three"},
               "the manifest");
   if (member(j, "format") && integer(j, "format", "the manifest") != kManifestFormat)
     fail("the manifest has format " + j["format"].dump() + "; this runtime reads format " + std::to_string(kManifestFormat));
@@ -385,15 +408,20 @@ Manifest Manifest::fromJson(const json& j) {
     if (!targets->is_object()) fail("the manifest's \"targets\" is not an object");
     for (const auto& [name, files] : targets->items()) m.targets.push_back(targetOf(name, files));
   }
+  if (const json* three = member(j, "three")) threeSectionOf(*three, m);
   for (const auto& a : objects(j, "attributes")) m.attributes.push_back(attributeOf(a));
   for (const auto& u : objects(j, "uniforms")) m.uniforms.push_back(uniformOf(u));
   for (const auto& v : objects(j, "varyings")) m.varyings.push_back(varyingOf(v));
   if (const json* functions = member(j, "functions")) m.functions = texts(*functions, "the manifest's \"functions\"");
   for (const auto& t : objects(j, "textures")) m.textures.push_back(textureOf(t));
   for (const auto& o : objects(j, "oceans")) {
-    onlyMembers(o, {"module", "node", "options"}, "an entry of the manifest's \"oceans\"");
+    onlyMembers(o, {"filtered", "module", "node", "options"}, "an entry of the manifest's \"oceans\"");
     OceanInfo info;
     info.nodeId = text(o, "node", "an entry of the manifest's \"oceans\"");
+    const json* filtered = member(o, "filtered");
+    if (!filtered || !filtered->is_boolean())
+      fail("ocean " + info.nodeId + " has no \"filtered\" true or false (a manifest written before it: compile the graph again)");
+    info.filtered = filtered->get<bool>();
     // The web clients' module (codegen/ocean_module_js.h): one file for all the oceans.
     if (member(o, "module")) {
       std::string module = text(o, "module", "ocean " + info.nodeId + "'s \"module\"");
@@ -411,6 +439,16 @@ Manifest Manifest::fromJson(const json& j) {
   for (const auto& t : m.textures)
     if (t.ocean && (t.ocean->ocean >= static_cast<int>(m.oceans.size())))
       fail("texture " + t.name + " reads ocean " + std::to_string(t.ocean->ocean) + ", which \"oceans\" does not list");
+  // "filtered" is what the compiler decided from these same maps: a manifest where the two
+  // disagree was edited.
+  for (size_t o = 0; o < m.oceans.size(); ++o) {
+    const bool moments = std::any_of(m.textures.begin(), m.textures.end(), [o](const TextureInfo& t) {
+      return t.ocean && t.ocean->ocean == static_cast<int>(o) && t.ocean->map == ocean::kMomentsMap;
+    });
+    if (moments != m.oceans[o].filtered)
+      fail("ocean " + m.oceans[o].nodeId + " has \"filtered\": " + (m.oceans[o].filtered ? "true" : "false") + ", but " +
+           (moments ? "a texture reads its moments map" : "no texture reads its moments map"));
+  }
   if (const json* t = member(j, "tessellation")) m.tessellation = tessellationOf(*t);
   if (const json* resources = member(j, "resources"))
     for (const std::string& name : texts(*resources, "the manifest's \"resources\"")) {

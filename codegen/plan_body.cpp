@@ -475,6 +475,8 @@ GlslExpr BodyWriter::oceanMap(StageBody& w, int spectrumOp, int cascade, int whi
 std::vector<OceanInfo> BodyWriter::oceans() const {
   std::vector<OceanInfo> out;
   for (int i : oceanOps_) out.push_back({program_.ops[static_cast<size_t>(i)].nodeId, program_.ops[static_cast<size_t>(i)].options()});
+  for (const TextureInfo& t : oceanTextures_)
+    if (t.ocean->map == ocean::kMomentsMap) out.at(static_cast<size_t>(t.ocean->ocean)).filtered = true;
   return out;
 }
 

@@ -56,6 +56,11 @@ struct OceanMapRef {
 struct OceanInfo {
   std::string nodeId;
   nlohmann::json options;
+  // A shader reads its moments maps (ocean_surface's filtered reader): every cascade then
+  // keeps its slope and moments maps with mip pyramids (ocean_pack_filtered and one
+  // ocean_downsample per level) and computes its slopes whether read or not. Decided here
+  // once, from the maps the plan samples; the runtimes and the web clients read the value.
+  bool filtered = false;
 };
 
 struct TextureInfo {

@@ -208,7 +208,7 @@ std::optional<CompileResult> compileGraphWithCross(const Graph& graph, const Reg
         continue;
       }
       crossFiles.push_back({name, header(t, sourceName) + shader->text});
-      entry.files.push_back({m.stage, name, "", shader->entryPoint});
+      entry.files.push_back({.stage = m.stage, .file = name, .entryPoint = shader->entryPoint});
     }
     entry.from = flat ? "vk450 SPIR-V compiled without tessellation (SPIRV-Cross writes no HLSL hull or domain "
                         "shaders), through SPIRV-Cross"

@@ -11,6 +11,15 @@ std::string_view targetName(Target t) {
   return "?";
 }
 
+std::string_view targetGlslVersion(Target t) {
+  switch (t) {
+    case Target::Glsl330: return "330 core";
+    case Target::Es300: return "300 es";
+    case Target::Vk450: return "450";
+  }
+  return "330 core";
+}
+
 std::optional<Target> parseTarget(std::string_view name) {
   for (Target t : allTargets())
     if (targetName(t) == name) return t;

@@ -39,9 +39,10 @@ class OceanCascadeSet {
       const int index = static_cast<int>(oceans_.size());
       for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
         const bool foam = oceanFoamRead(textures, settings, index, c, info.nodeId);
-        // A shader reading the moments map reads the filtered pyramids (ocean_surface's filter).
+        // A filtered ocean (the compiler's OceanInfo::filtered: a shader reads its moments maps)
+        // keeps every cascade's pyramids.
         o.cascades.push_back(makeCascade(settings, index, c, oceanMapRead(textures, index, c, ocean::kSlopeMap), foam,
-                                         oceanMapRead(textures, index, c, ocean::kMomentsMap)));
+                                         info.filtered));
         o.foam.push_back(foam ? makeFoam(settings, c) : nullptr);
       }
       oceans_.push_back(std::move(o));

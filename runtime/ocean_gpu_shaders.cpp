@@ -218,8 +218,12 @@ ShaderInterface oceanPassInterface(OceanPass pass, const OceanPassVariant& varia
 }
 
 std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant) {
+  return glslVersionLine(api) + oceanPassFragmentBody(pass, api, variant);
+}
+
+std::string oceanPassFragmentBody(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant) {
   const OceanPassText t = oceanPassText(pass, variant);
-  std::string s = sceneShaderHeader(api) + "#define WG_OCEAN_SLOPES " + (variant.slopes ? "1" : "0") +
+  std::string s = sceneShaderPreamble(api) + "#define WG_OCEAN_SLOPES " + (variant.slopes ? "1" : "0") +
                   "\n#define WG_OCEAN_JACOBIAN_ONLY " + (variant.jacobianOnly ? "1" : "0") +
                   "\n#define WG_OCEAN_MOMENTS " + (variant.moments ? "1" : "0") + "\n";
   // WebGPU: the declarations of the pass's interface (runtime/webgpu_shader_form.h).
@@ -267,6 +271,11 @@ const char* oceanPassShaderName(OceanPassShader shader) { return namedOceanPass(
 std::string oceanPassFragment(SceneShaderApi api, OceanPassShader shader) {
   const NamedOceanPass n = namedOceanPass(shader);
   return oceanPassFragment(n.pass, api, n.variant);
+}
+
+std::string oceanPassFragmentBody(SceneShaderApi api, OceanPassShader shader) {
+  const NamedOceanPass n = namedOceanPass(shader);
+  return oceanPassFragmentBody(n.pass, api, n.variant);
 }
 
 ShaderInterface oceanPassInterface(OceanPassShader shader) {

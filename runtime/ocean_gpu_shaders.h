@@ -38,6 +38,8 @@ ShaderInterface oceanPassInterface(OceanPass pass, const OceanPassVariant& varia
 // The whole fragment shader: the API's header (sceneShaderHeader), the variant's defines,
 // the declarations and the body.
 std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant = {});
+// The same after its version line (runtime/scene.h, sceneShaderBodies).
+std::string oceanPassFragmentBody(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant = {});
 
 // The eleven programs the runtimes link, by name: the scene description (`watergraph scene`)
 // carries their es300 forms under these names for the web clients, which run the same
@@ -61,6 +63,7 @@ inline constexpr int kOceanPassShaderCount = 11;
 const char* oceanPassShaderName(OceanPassShader shader);
 // The named program's fragment shader for `api`, and its interface.
 std::string oceanPassFragment(SceneShaderApi api, OceanPassShader shader);
+std::string oceanPassFragmentBody(SceneShaderApi api, OceanPassShader shader);
 ShaderInterface oceanPassInterface(OceanPassShader shader);
 
 }  // namespace wg::rt::oceangpu

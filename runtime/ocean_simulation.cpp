@@ -33,7 +33,7 @@ size_t OceanSimulation::textureBytes(const std::vector<OceanInfo>& oceans, const
     for (int c = 0; c < static_cast<int>(settings.cascades.tileLengths.size()); ++c) {
       const int n = ocean::cascadeResolution(settings.cascades, static_cast<size_t>(c));
       bytes += OceanGpuCascade::textureBytes(n, oceanMapRead(textures, static_cast<int>(o), c, ocean::kSlopeMap),
-                                             oceanMapRead(textures, static_cast<int>(o), c, ocean::kMomentsMap));
+                                             oceans[o].filtered);
       if (oceanFoamRead(textures, settings, static_cast<int>(o), c, oceans[o].nodeId))
         bytes += OceanGpuFoam::textureBytes(n);
     }

@@ -78,7 +78,9 @@ void main() {
 
 }  // namespace
 
-std::string outputTransformFragment(SceneShaderApi api) {
+std::string outputTransformFragment(SceneShaderApi api) { return glslVersionLine(api) + outputTransformFragmentBody(api); }
+
+std::string outputTransformFragmentBody(SceneShaderApi api) {
   std::string inputs;
   switch (api) {
     case SceneShaderApi::Gl330:
@@ -97,7 +99,7 @@ std::string outputTransformFragment(SceneShaderApi api) {
       inputs = webgpuDeclarations(outputTransformInterface());
       break;
   }
-  return sceneShaderHeader(api) + inputs + kBody;
+  return sceneShaderPreamble(api) + inputs + kBody;
 }
 
 ShaderInterface outputTransformInterface() {

@@ -18,6 +18,8 @@
 namespace wg::rt {
 
 std::string outputTransformFragment(SceneShaderApi api);
+// The same after its version line (runtime/scene.h, sceneShaderBodies).
+std::string outputTransformFragmentBody(SceneShaderApi api);
 // Its interface, from which the WebGPU form's declarations come (webgpu_shader_form.h).
 ShaderInterface outputTransformInterface();
 

@@ -113,8 +113,20 @@ struct GbufferInputLocations {
   int worldPosition = 0, normal = 1, uv = 2;
 };
 SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer = {});
-// The first lines of every runtime shader for `api`: #version, ES precision defaults, and
-// the WG_LOCATION / WG_VERTEX_ID / WG_CLIP_DISTANCE macros the bodies use.
+// Every runtime shader's text is its version line and a body. The body alone, with the
+// version apart, is the form a host that writes the version line itself takes (three.js's
+// RawShaderMaterial puts its own #defines right after the line it writes from its
+// glslVersion): the scene description carries the ES 3.00 bodies so ("three").
+// sceneShaderSources(api) is sceneShaderBodies(api) with glslVersionLine(api) before each.
+SceneShaderSources sceneShaderBodies(SceneShaderApi api, const GbufferInputLocations& gbuffer = {});
+// What follows "#version " on the first line: "330 core", "300 es", "450".
+std::string_view glslVersion(SceneShaderApi api);
+// "#version " + glslVersion(api) + "\n".
+std::string glslVersionLine(SceneShaderApi api);
+// The first lines of every runtime shader's body for `api`: ES precision defaults, and the
+// WG_LOCATION / WG_VERTEX_ID / WG_CLIP_DISTANCE macros the bodies use.
+std::string sceneShaderPreamble(SceneShaderApi api);
+// glslVersionLine(api) + sceneShaderPreamble(api).
 std::string sceneShaderHeader(SceneShaderApi api);
 // Each scene shader's interface, by its name in the scene description: what its WebGPU form
 // declares and its declaration table describes (runtime/webgpu_shader_form.h).

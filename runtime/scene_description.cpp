@@ -1,6 +1,8 @@
 #include "runtime/scene_description.h"
 
 #include <map>
+#include <utility>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "core/interface_tables.h"
@@ -85,17 +87,29 @@ std::string sceneDescriptionJson(const SceneOptions& options) {
                 {"exposure_range", json::array({kMinExposureEv, kMaxExposureEv})}};
   d["render_targets"] = targets;
 
-  const SceneShaderSources s = sceneShaderSources(true);
-  d["shaders"] = {{"sky_vertex", s.skyVertex},           {"sky_fragment", s.skyFragment},
-                  {"opaque_vertex", s.opaqueVertex},     {"opaque_fragment", s.opaqueFragment},
-                  {"fullscreen_vertex", s.fullscreenVertex}, {"water_gbuffer_fragment", s.waterGbufferFragment},
-                  {"output_transform_fragment", outputTransformFragment(SceneShaderApi::Es300)}};
+  // The runtime's ES 3.00 shaders, each its version line and body (runtime/scene.h): the
+  // text under "shaders"; and under "three", the version and the body apart, as a host
+  // that writes the version line itself takes them (three.js's RawShaderMaterial with
+  // glslVersion "300 es", whose #defines follow that line).
+  const SceneShaderSources s = sceneShaderBodies(SceneShaderApi::Es300);
+  std::vector<std::pair<std::string, std::string>> bodies = {
+      {"sky_vertex", s.skyVertex},           {"sky_fragment", s.skyFragment},
+      {"opaque_vertex", s.opaqueVertex},     {"opaque_fragment", s.opaqueFragment},
+      {"fullscreen_vertex", s.fullscreenVertex}, {"water_gbuffer_fragment", s.waterGbufferFragment},
+      {"output_transform_fragment", outputTransformFragmentBody(SceneShaderApi::Es300)}};
   // The spectral ocean's simulation passes (runtime/ocean_gpu_shaders.h), each drawn with
   // fullscreen_vertex into N x N float targets.
   for (int i = 0; i < oceangpu::kOceanPassShaderCount; ++i) {
     const auto shader = static_cast<oceangpu::OceanPassShader>(i);
-    d["shaders"][oceangpu::oceanPassShaderName(shader)] = oceangpu::oceanPassFragment(SceneShaderApi::Es300, shader);
+    bodies.emplace_back(oceangpu::oceanPassShaderName(shader), oceangpu::oceanPassFragmentBody(SceneShaderApi::Es300, shader));
   }
+  const std::string versionLine = glslVersionLine(SceneShaderApi::Es300);
+  json threeForms;
+  for (const auto& [name, body] : bodies) {
+    d["shaders"][name] = versionLine + body;
+    threeForms[name] = {{"glsl_version", glslVersion(SceneShaderApi::Es300)}, {"body", body}};
+  }
+  d["three"] = {{"shaders", threeForms}};
 
   // The same shaders in the form a WebGPU host hands naga unchanged, each with its
   // declaration table, from which the host lays out bind groups and uniform buffers

@@ -16,18 +16,15 @@
 namespace wg::rt {
 namespace {
 
-// WG_VERTEX_ID: Vulkan GLSL names the vertex index gl_VertexIndex.
-constexpr const char* kGlHeader =
-    "#version 330 core\n#define WG_CLIP_DISTANCE 1\n#define WG_LOCATION(n)\n#define WG_VERTEX_ID gl_VertexID\n";
-constexpr const char* kEsHeader =
-    "#version 300 es\nprecision highp float;\nprecision highp int;\n#define WG_LOCATION(n)\n"
-    "#define WG_VERTEX_ID gl_VertexID\n";
-constexpr const char* kVulkanHeader =
-    "#version 450\n#define WG_CLIP_DISTANCE 1\n#define WG_LOCATION(n) layout(location = n)\n"
-    "#define WG_VERTEX_ID gl_VertexIndex\n";
+// Each API's version (the first line, "#version " + it) and what follows that line before
+// every body. WG_VERTEX_ID: Vulkan GLSL names the vertex index gl_VertexIndex.
+constexpr const char* kGlPreamble = "#define WG_CLIP_DISTANCE 1\n#define WG_LOCATION(n)\n#define WG_VERTEX_ID gl_VertexID\n";
+constexpr const char* kEsPreamble =
+    "precision highp float;\nprecision highp int;\n#define WG_LOCATION(n)\n#define WG_VERTEX_ID gl_VertexID\n";
+constexpr const char* kVulkanPreamble =
+    "#define WG_CLIP_DISTANCE 1\n#define WG_LOCATION(n) layout(location = n)\n#define WG_VERTEX_ID gl_VertexIndex\n";
 // WebGPU has no clip distances without an optional feature: the opaque scene discards, as on ES.
-constexpr const char* kWebgpuHeader = "#version 450\n#define WG_LOCATION(n) layout(location = n)\n"
-                                      "#define WG_VERTEX_ID gl_VertexIndex\n";
+constexpr const char* kWebgpuPreamble = "#define WG_LOCATION(n) layout(location = n)\n#define WG_VERTEX_ID gl_VertexIndex\n";
 
 // A program's uniforms: loose for GL, one push-constant block for Vulkan (the runtime's
 // own passes have a few matrices and vectors, well under the 128 bytes every Vulkan
@@ -202,15 +199,29 @@ void main() {
 
 }  // namespace
 
-std::string sceneShaderHeader(SceneShaderApi api) {
+std::string_view glslVersion(SceneShaderApi api) {
   switch (api) {
-    case SceneShaderApi::Gl330: return kGlHeader;
-    case SceneShaderApi::Es300: return kEsHeader;
-    case SceneShaderApi::Vulkan450: return kVulkanHeader;
-    case SceneShaderApi::WebGpu450: return kWebgpuHeader;
+    case SceneShaderApi::Gl330: return "330 core";
+    case SceneShaderApi::Es300: return "300 es";
+    case SceneShaderApi::Vulkan450:
+    case SceneShaderApi::WebGpu450: return "450";
   }
-  return kGlHeader;
+  return "330 core";
 }
+
+std::string glslVersionLine(SceneShaderApi api) { return "#version " + std::string(glslVersion(api)) + "\n"; }
+
+std::string sceneShaderPreamble(SceneShaderApi api) {
+  switch (api) {
+    case SceneShaderApi::Gl330: return kGlPreamble;
+    case SceneShaderApi::Es300: return kEsPreamble;
+    case SceneShaderApi::Vulkan450: return kVulkanPreamble;
+    case SceneShaderApi::WebGpu450: return kWebgpuPreamble;
+  }
+  return kGlPreamble;
+}
+
+std::string sceneShaderHeader(SceneShaderApi api) { return glslVersionLine(api) + sceneShaderPreamble(api); }
 
 std::vector<SceneShaderInterface> sceneShaderInterfaces(const GbufferInputLocations& gbuffer) {
   // The G-buffer's inputs are the graph's varyings: a WebGPU host sets their locations by
@@ -229,13 +240,13 @@ std::vector<SceneShaderInterface> sceneShaderInterfaces(const GbufferInputLocati
 
 namespace {
 
-// Every scene shader in its WebGPU form: the declarations of its interface, the library it
+// Every scene shader's body in its WebGPU form: the declarations of its interface, the library it
 // uses, and its body (a vertex body inside the clip-space wrapper).
-SceneShaderSources webgpuSceneShaderSources(const GbufferInputLocations& gbuffer) {
+SceneShaderSources webgpuSceneShaderBodies(const GbufferInputLocations& gbuffer) {
   const std::vector<SceneShaderInterface> interfaces = sceneShaderInterfaces(gbuffer);
   auto form = [&](size_t k, const std::string& library, const char* body) {
     const bool vertex = interfaces[k].stage == std::string("vertex");
-    return kWebgpuHeader + webgpuDeclarations(interfaces[k].interface) + library + "\n" +
+    return kWebgpuPreamble + webgpuDeclarations(interfaces[k].interface) + library + "\n" +
            (vertex ? webgpuVertexBodyBefore() : "") + body + (vertex ? webgpuVertexBodyAfter() : "");
   };
   const std::string skyModel = skyGlsl() + kSceneSun;
@@ -251,9 +262,9 @@ SceneShaderSources webgpuSceneShaderSources(const GbufferInputLocations& gbuffer
 
 }  // namespace
 
-SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer) {
-  if (api == SceneShaderApi::WebGpu450) return webgpuSceneShaderSources(gbuffer);
-  const std::string h = sceneShaderHeader(api);
+SceneShaderSources sceneShaderBodies(SceneShaderApi api, const GbufferInputLocations& gbuffer) {
+  if (api == SceneShaderApi::WebGpu450) return webgpuSceneShaderBodies(gbuffer);
+  const std::string h = sceneShaderPreamble(api);
   const std::string sky = uniforms(api, "SkyConstants", kSkyConstants);
   const std::string opaque = uniforms(api, "OpaqueConstants", kOpaqueConstants);
   auto in = [&](int location, const char* declaration) {
@@ -270,6 +281,15 @@ SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLoca
   s.fullscreenVertex = h + kFullscreenVertex;
   s.waterGbufferFragment = h + in(gbuffer.worldPosition, "vec3 v_world_position") + in(gbuffer.normal, "vec3 v_normal") +
                            in(gbuffer.uv, "vec2 v_uv") + kWaterGbufferFragment;
+  return s;
+}
+
+SceneShaderSources sceneShaderSources(SceneShaderApi api, const GbufferInputLocations& gbuffer) {
+  SceneShaderSources s = sceneShaderBodies(api, gbuffer);
+  const std::string line = glslVersionLine(api);
+  for (std::string* text : {&s.skyVertex, &s.skyFragment, &s.opaqueVertex, &s.opaqueFragment, &s.fullscreenVertex,
+                            &s.waterGbufferFragment})
+    text->insert(0, line);
   return s;
 }
 

@@ -15,7 +15,8 @@ const setOf = (names) => table(Object.fromEntries(names.map((n) => [n, true])));
 export const MANIFEST_FORMAT = 1;
 
 const TOP_LEVEL = setOf(['format', 'graph', 'description', 'preset', 'imports', 'targets', 'attributes', 'uniforms',
-  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color', 'oceans']);
+  'varyings', 'functions', 'textures', 'tessellation', 'resources', 'passes', 'pass_scales', 'nodes', 'vulkan', 'webgpu', 'color', 'oceans',
+  'three']);
 // Components of each uniform type the client uploads.
 export const UNIFORM_COMPONENTS = table({ float: 1, int: 1, bool: 1, vec2: 2, vec3: 3, vec4: 4, mat3: 9, mat4: 16 });
 // The builtins the client computes (watergraph-three.js BUILTIN_INITIAL and time_phase).
@@ -88,6 +89,11 @@ export function checkManifest(manifest) {
   const optional = (x, key, check, field) => {
     if (has(x, key)) check(x[key], `${field}.${key}`);
   };
+  const plainFileName = (x, field) => {
+    const file = text(x, field);
+    if (file === '' || file === '.' || file === '..' || /[\/\\]/.test(file)) fail(field, 'must be a file name beside the manifest', file);
+    return file;
+  };
 
   if (!isObject(manifest)) throw new WaterGraphError(`the manifest must be a JSON object (got ${describe(manifest)})`, { field: '' });
   members(manifest, TOP_LEVEL, '');
@@ -122,6 +128,19 @@ export function checkManifest(manifest) {
       if (stage !== 'entry_points') text(files[stage], `targets.${name}.${stage}`);
   }
   if (has(targets, 'es300')) for (const stage of ['vert', 'frag']) text(targets.es300[stage], `targets.es300.${stage}`);
+  // "three": the es300 stages after their version line, which the client fetches (plain file
+  // names beside the manifest), with the version they lack (watergraph-passes.js shaderForm).
+  if (has(manifest, 'three')) {
+    const three = object(manifest.three, 'three');
+    members(three, STAGES, 'three');
+    for (const stage of Object.keys(STAGES)) {
+      const field = `three.${stage}`;
+      const entry = object(three[stage], field);
+      members(entry, setOf(['body_file', 'glsl_version']), field);
+      plainFileName(entry.body_file, `${field}.body_file`);
+      text(entry.glsl_version, `${field}.glsl_version`);
+    }
+  }
 
   if (has(manifest, 'attributes'))
     list(manifest.attributes, 'attributes').forEach((a, i) => {
@@ -203,9 +222,7 @@ export function checkManifest(manifest) {
       } else if (has(t, 'source')) {
         text(t.source, `${field}.source`);
         // The PNG `compile --textures` wrote: a plain file name beside the manifest.
-        const file = text(t.file, `${field}.file`);
-        if (file === '' || file === '.' || file === '..' || /[\/\\]/.test(file))
-          fail(`${field}.file`, 'must be a file name beside the manifest', file);
+        plainFileName(t.file, `${field}.file`);
         if (has(t, 'sampler')) {
           const s = object(t.sampler, `${field}.sampler`);
           members(s, SAMPLER_CHOICES, `${field}.sampler`);
@@ -227,18 +244,27 @@ export function checkManifest(manifest) {
   oceans.forEach((o, i) => {
     const field = `oceans[${i}]`;
     object(o, field);
-    members(o, setOf(['module', 'node', 'options']), field);
+    members(o, setOf(['filtered', 'module', 'node', 'options']), field);
     text(o.node, `${field}.node`);
     object(o.options, `${field}.options`);
     if (!has(o, 'module')) fail(`${field}.module`, 'is missing: compile the graph for es300, which writes the ocean module the client simulates it from');
     const module = text(o.module, `${field}.module`);
     if (!/^[^\/\\]+\.js$/.test(module) || module === '.js') fail(`${field}.module`, 'must be a .js file name beside the manifest', module);
     if (module !== oceans[0].module) fail(`${field}.module`, 'must be the module the first ocean names', module);
+    // Whether a shader reads its moments maps (the compiler decides it; watergraph-ocean-plan.js).
+    if (!has(o, 'filtered')) fail(`${field}.filtered`, 'is missing: compile the graph again, which writes whether the ocean is filtered');
+    if (typeof o.filtered !== 'boolean') fail(`${field}.filtered`, 'must be true or false', o.filtered);
   });
   (manifest.textures ?? []).forEach((t, i) => {
     if (!has(t, 'ocean')) return;
     const ref = t.ocean, field = `textures[${i}].ocean`;
     if (!Number.isInteger(ref.ocean) || ref.ocean < 0 || ref.ocean >= oceans.length) fail(`${field}.ocean`, 'must index the manifest\'s "oceans"', ref.ocean);
+  });
+  // "filtered" and the moments maps the textures read are one decision of the compiler's.
+  oceans.forEach((o, i) => {
+    const moments = (manifest.textures ?? []).some((t) => has(t, 'ocean') && t.ocean.ocean === i && t.ocean.map === 'moments');
+    if (moments !== o.filtered)
+      fail(`oceans[${i}].filtered`, moments ? 'must be true: a texture reads the ocean\'s moments map' : 'must be false: no texture reads the ocean\'s moments map', o.filtered);
   });
 
   if (has(manifest, 'color')) object(manifest.color, 'color');  // its members: manifestView (watergraph-output.js)

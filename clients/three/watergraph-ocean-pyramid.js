@@ -13,21 +13,9 @@
 // glGenerateMipmap: its filter is the implementation's, and WebGL refuses it for RGBA32F.
 import * as THREE from 'three';
 import { WaterGraphError } from './watergraph-error.js';
+import { downsampleDraws, pyramidLevels } from './watergraph-ocean-plan.js';
 
-// The levels of an N x N pyramid down to 1 x 1: log2 N + 1.
-export function pyramidLevels(n) {
-  if (!Number.isInteger(n) || n < 1 || (n & (n - 1)) !== 0)
-    throw new WaterGraphError(`an ocean cascade's resolution must be a power of two (got ${n})`);
-  return Math.log2(n) + 1;
-}
-
-// The downsample draws of an N x N pyramid in order: level l (1..L) of size N >> l from
-// level l - 1.
-export function downsampleDraws(n) {
-  const draws = [];
-  for (let level = 1; level < pyramidLevels(n); ++level) draws.push({ level, source: level - 1, size: n >> level });
-  return draws;
-}
+export { downsampleDraws, pyramidLevels };
 
 function compile(gl, type, text, name) {
   const shader = gl.createShader(type);

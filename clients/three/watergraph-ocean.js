@@ -11,24 +11,11 @@
 import * as THREE from 'three';
 import { WaterGraphError } from './watergraph-error.js';
 import { fullScreenTriangle, runtimeMaterial } from './watergraph-passes.js';
-import { downsampleDraws, OceanPyramid, PyramidPrograms } from './watergraph-ocean-pyramid.js';
+import { OceanPyramid, PyramidPrograms } from './watergraph-ocean-pyramid.js';
+import { cascadeMaps, cascadePasses, OCEAN_MAPS } from './watergraph-ocean-plan.js';
 
-// The map names of a manifest texture's "ocean" (core/ocean_settings.h kOceanMapNames).
-export const OCEAN_MAPS = ['displacement', 'slopes', 'foam', 'moments'];
-
-// The passes of one cascade's maps in order (runtime/ocean_gpu_cascade.cpp): the evolution,
-// 2 log2 N Stockham stages, the packing, and for a filtered cascade (its moments map is read)
-// one downsample per pyramid level. `slopes`: a shader reads the slope map (a filtered
-// cascade always computes it).
-export function cascadePasses(n, { slopes, filtered }) {
-  const both = slopes || filtered;
-  const passes = [{ shader: both ? 'ocean_evolve' : 'ocean_evolve_displacement' }];
-  for (let vertical = 0; vertical < 2; ++vertical)
-    for (let ns = 1; ns < n; ns *= 2) passes.push({ shader: both ? 'ocean_stockham' : 'ocean_stockham_single', ns, vertical });
-  passes.push({ shader: filtered ? 'ocean_pack_filtered' : both ? 'ocean_pack' : 'ocean_pack_displacement' });
-  if (filtered) for (const d of downsampleDraws(n)) passes.push({ shader: 'ocean_downsample', ...d });
-  return passes;
-}
+// The plan's names, from the module both web clients share.
+export { cascadePasses, OCEAN_MAPS };
 
 // A float texture read by texelFetch (nearest, no mipmaps), N x N unless given.
 function dataTexture(data, width, height, format, type, internalFormat = null) {
@@ -62,7 +49,7 @@ class OceanPasses {
 
   material(name) {
     if (!this.materials[name]) {
-      if (typeof this.description.shaders?.[name] !== 'string')
+      if (!this.description.three?.shaders?.[name])
         throw new WaterGraphError(`the scene description has no shader '${name}' (write it with a watergraph that simulates oceans)`);
       this.materials[name] = runtimeMaterial(this.description, 'fullscreen_vertex', name, {},
         { depthTest: false, depthWrite: false, blending: THREE.NoBlending });
@@ -92,12 +79,12 @@ class OceanPasses {
 // One cascade (runtime/ocean_gpu_cascade.h): the evolution, 2 log2 N Stockham stages, the
 // packing; with `jacobian`, the foam's Jacobian fields alone into targets of their own.
 class OceanCascade {
-  constructor(data, c, packed, twiddle, slopes, jacobian, filtered) {
+  constructor(data, c, packed, twiddle, { slopes, filtered }, jacobian) {
     const n = data.sizes[c];  // the cascade's own N (cascade_sizes)
     this.n = n;
     this.dk = data.dk[c];
     this.filtered = filtered;
-    this.slopes = slopes || filtered;
+    this.slopes = slopes;
     this.plan = cascadePasses(n, { slopes, filtered });
     this.twiddle = twiddle;
     this.h0 = dataTexture(packed.h0, n, n, THREE.RGBAFormat, THREE.FloatType);
@@ -242,8 +229,6 @@ export class OceanSimulation {
     this.module = module;
     this.passes = new OceanPasses(description);
     this.pyramidPrograms = new PyramidPrograms(description);
-    const read = (o, c, map) => (manifest.textures ?? []).some((t) =>
-      t.ocean && t.ocean.ocean === o && t.ocean.cascade === c && t.ocean.map === map);
     const twiddles = new Map();  // one texture per resolution
     this.oceans = module.oceans.map((data, o) => {
       if (data.node !== manifest.oceans[o].node)
@@ -253,13 +238,12 @@ export class OceanSimulation {
       data.tileLengths.forEach((_, c) => {
         const n = data.sizes[c];
         if (!twiddles.has(n)) twiddles.set(n, dataTexture(module.twiddles(n), n / 2, 1, THREE.RGFormat, THREE.FloatType));
-        const foamed = read(o, c, 'foam');
-        if (foamed && c >= data.foam.cascades)
+        // The manifest's "filtered" (the compiler's) makes every cascade of the ocean keep pyramids.
+        const maps = cascadeMaps(manifest, o, c);
+        if (maps.foam && c >= data.foam.cascades)
           throw new WaterGraphError(`graph '${graph}': a texture reads the foam of ocean ${data.node} cascade ${c}, which its foam_cascades gives no foam`);
-        // A read moments map is the one sign that the cascade is filtered (its slope and
-        // moments maps then carry pyramids).
-        cascades.push(new OceanCascade(data, c, packed[c], twiddles.get(n), read(o, c, 'slopes'), foamed, read(o, c, 'moments')));
-        foam.push(foamed ? new OceanFoam(n, data.foam, module) : null);
+        cascades.push(new OceanCascade(data, c, packed[c], twiddles.get(n), maps, maps.foam));
+        foam.push(maps.foam ? new OceanFoam(n, data.foam, module) : null);
       });
       return { data, cascades, foam };
     });

@@ -1,7 +1,7 @@
 // The output transform, the client's last pass: the frame's linear, scene-referred radiance
 // (an RGBA16F target) through exposure, a tone mapper and the sRGB curve into the canvas or
 // the caller's target, as runtime/output_transform.cpp does it. The maths is the runtime's
-// own ES 3.00 shader from the scene description (`shaders.output_transform_fragment`),
+// own ES 3.00 shader from the scene description (`three.shaders.output_transform_fragment`),
 // drawn with its full-screen triangle; three.js adds no tone mapping or colour-space step.
 // Also the checks of the view a manifest states (its "color" member) and of the render
 // options that override it.
@@ -83,7 +83,7 @@ export function checkColorDescription(description) {
   if (!Array.isArray(r) || r[0] !== EXPOSURE_RANGE[0] || r[1] !== EXPOSURE_RANGE[1])
     throw new WaterGraphError(`${what} has an exposure_range other than [${EXPOSURE_RANGE.join(', ')}]`);
   for (const s of ['fullscreen_vertex', 'output_transform_fragment'])
-    if (typeof description.shaders?.[s] !== 'string') throw new WaterGraphError(`the scene description has no shader "${s}"`);
+    if (!description.three?.shaders?.[s]) throw new WaterGraphError(`the scene description has no shader "${s}" ("three".shaders)`);
 }
 
 // The output pass: one full-screen triangle running the runtime's output transform shader,

@@ -28,8 +28,9 @@ const SCENE_FORMAT = 'watergraph-scene-2';
 export function checkSceneDescription(description) {
   if (!description || description.format !== SCENE_FORMAT)
     throw new WaterGraphError(`not a scene description of format ${SCENE_FORMAT} (write one with \`watergraph scene -o scene.json\`)`);
-  for (const key of ['render_passes', 'render_targets', 'shaders', 'environment', 'sun_direction', 'clear_color', 'color'])
-    if (!(key in description)) throw new WaterGraphError(`the scene description has no "${key}"`);
+  for (const key of ['render_passes', 'render_targets', 'shaders', 'three', 'environment', 'sun_direction', 'clear_color', 'color'])
+    if (!(key in description))
+      throw new WaterGraphError(`the scene description has no "${key}" (write it again with this watergraph: \`watergraph scene -o scene.json\`)`);
   checkColorDescription(description);
   return description;
 }
@@ -108,20 +109,33 @@ export function glPerspective(fovYDegrees, aspect, near, far, target = new THREE
     0, 0, -1, 0);
 }
 
-function withoutVersion(source, what) {
-  const m = /^\s*#version\s+300\s+es[^\n]*\n/.exec(source);
-  if (!m) throw new WaterGraphError(`${what} does not start with "#version 300 es"`);
-  return source.slice(m[0].length);
+// A shader as three.js's RawShaderMaterial takes it: its body (the text after its version
+// line) and the version apart, which three.js writes as the first line (glslVersion) with
+// its own #defines after it. watergraph writes both parts: `watergraph scene` the runtime's
+// shaders (the description's "three".shaders), `compile --target es300` the graph's stages
+// (the manifest's "three": each stage's "body_file" and "glsl_version"). Returns `form`, or
+// throws naming `what`.
+export function shaderForm(form, what) {
+  if (!form || typeof form !== 'object' || typeof form.body !== 'string' || typeof form.glsl_version !== 'string')
+    throw new WaterGraphError(`${what} has no form for three.js (a "glsl_version" and a "body")`);
+  if (form.glsl_version !== THREE.GLSL3)
+    throw new WaterGraphError(`${what} is GLSL ${form.glsl_version}; this client draws GLSL ${THREE.GLSL3} (THREE.GLSL3)`);
+  return form;
+}
+
+// The form of the description's runtime shader `name`.
+export function runtimeShaderForm(description, name) {
+  return shaderForm(description.three?.shaders?.[name], `the scene description's shader '${name}' ("three".shaders)`);
 }
 
 // A RawShaderMaterial of one of the runtime's own ES 3.00 shaders.
 export function runtimeMaterial(description, vertex, fragment, uniforms, extra = {}) {
-  const s = description.shaders;
+  const v = runtimeShaderForm(description, vertex), f = runtimeShaderForm(description, fragment);
   return new THREE.RawShaderMaterial({
     name: `watergraph runtime ${vertex} + ${fragment}`,
-    glslVersion: THREE.GLSL3,
-    vertexShader: withoutVersion(s[vertex], vertex),
-    fragmentShader: withoutVersion(s[fragment], fragment),
+    glslVersion: v.glsl_version,
+    vertexShader: v.body,
+    fragmentShader: f.body,
     uniforms,
     side: THREE.DoubleSide,  // the runtime draws without face culling
     depthFunc: THREE.LessEqualDepth,

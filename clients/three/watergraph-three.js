@@ -3,7 +3,7 @@
 // (runtime/renderer.cpp) gives the same shaders, so both draw the same pixels.
 // See README.md beside this file for the API and what is not supported.
 import * as THREE from 'three';
-import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription } from './watergraph-passes.js';
+import { WaterPasses, WaterGraphError, WATER_LAYER, fullScreenTriangle, checkSceneDescription, runtimeShaderForm, shaderForm } from './watergraph-passes.js';
 import { manifestView, renderView } from './watergraph-output.js';
 import { checkManifest, has } from './watergraph-manifest.js';
 import { OceanSimulation } from './watergraph-ocean.js';
@@ -167,26 +167,23 @@ export function sunFromAngles(azimuth, elevation) {
   return new THREE.Vector3(Math.cos(el) * Math.cos(az), Math.sin(el), Math.cos(el) * Math.sin(az)).normalize();
 }
 
-// Removes the shader's own "#version 300 es": three.js puts its #defines first and then
-// needs glslVersion GLSL3 to place the #version line before them.
-function withoutVersionLine(source, what) {
-  const m = /^\s*#version\s+300\s+es[^\n]*\n/.exec(source);
-  if (!m) throw new WaterGraphError(`${what} does not start with "#version 300 es": is it the es300 output?`);
-  return source.slice(m[0].length);
-}
-
 // The water: a RawShaderMaterial with every uniform of the manifest, and update().
 export class WaterGraph {
-  // manifest: the parsed <graph>.manifest.json; vertexShader / fragmentShader: the texts of
-  // <graph>.es300.vert / .frag; textures: sampler name -> THREE.Texture for every manifest
+  // manifest: the parsed <graph>.manifest.json; shaders: {vertex, fragment}, the graph's es300
+  // stages as three.js takes them, each {glsl_version, body}: the manifest's
+  // "three".vertex.glsl_version and the text of its "body_file" (<graph>.es300.vert.body: the
+  // stage after its version line, which three.js writes itself); textures: sampler name -> THREE.Texture for every manifest
   // texture with a "source" (loadWaterGraph loads them); resources: scene resource name ->
   // THREE texture the application renders itself (see RESOURCE_PASSES). description: a
   // scene description (`watergraph scene`): the client then renders every pass the
   // manifest lists itself (WaterPasses), and render() draws a frame. oceanModule: for a
   // manifest with "oceans", the ES module its entries name (<graph>.ocean.js, imported by
   // loadWaterGraph), from which the ocean_simulation pass simulates them.
-  constructor({ manifest, vertexShader, fragmentShader, textures = {}, resources = {}, description = null, oceanModule = null }) {
+  constructor({ manifest, shaders, vertexShader, fragmentShader, textures = {}, resources = {}, description = null, oceanModule = null }) {
     if (!manifest || typeof manifest !== 'object') throw new WaterGraphError('no manifest given');
+    if (vertexShader !== undefined || fragmentShader !== undefined)
+      throw new WaterGraphError('WaterGraph takes the stages as `shaders: {vertex, fragment}`, each {glsl_version, body} from the ' +
+        'manifest\'s "three" (each stage\'s "glsl_version" and its "body_file"), not as whole texts (vertexShader, fragmentShader): see README.md');
     checkManifest(manifest);  // its documented shape, before any of it is used
     checkPasses(manifest, resources, description !== null);
     // The graph's preferred view (the manifest's "color"), which render() uses by default.
@@ -246,17 +243,17 @@ export class WaterGraph {
     }
     const es300 = manifest.targets?.es300;
     if (!es300) throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
-    const vertex = withoutVersionLine(vertexShader, es300.vert), fragment = withoutVersionLine(fragmentShader, es300.frag);
+    const vertex = shaderForm(shaders?.vertex, `graph '${manifest.graph}': shaders.vertex`).body;
+    const fragment = shaderForm(shaders?.fragment, `graph '${manifest.graph}': shaders.fragment`).body;
     this.deferred = this.passes?.deferred === true;
     if (this.deferred) {
       // As the runtime: the graph's vertex shader writes the G-buffer (the runtime's
       // G-buffer fragment shader behind it), and its fragment shader runs full-screen.
-      const shaders = description.shaders;
       this.gbufferMaterial = new THREE.RawShaderMaterial({
         name: `watergraph ${manifest.graph} G-buffer`,
         glslVersion: THREE.GLSL3,
         vertexShader: vertex,
-        fragmentShader: withoutVersionLine(shaders.water_gbuffer_fragment, 'the description\'s water_gbuffer_fragment'),
+        fragmentShader: runtimeShaderForm(description, 'water_gbuffer_fragment').body,
         uniforms: this.uniforms,
         side: THREE.DoubleSide,
         depthFunc: THREE.LessEqualDepth,
@@ -268,7 +265,7 @@ export class WaterGraph {
     this.material = new THREE.RawShaderMaterial({
       name: `watergraph ${manifest.graph}`,
       glslVersion: THREE.GLSL3,
-      vertexShader: this.deferred ? withoutVersionLine(description.shaders.fullscreen_vertex, 'the description\'s fullscreen_vertex') : vertex,
+      vertexShader: this.deferred ? runtimeShaderForm(description, 'fullscreen_vertex').body : vertex,
       fragmentShader: fragment,
       uniforms: this.uniforms,
       side: THREE.DoubleSide,  // the runtime draws without face culling
@@ -502,7 +499,7 @@ export async function loadNodeTexture(url, what = url, sampler = undefined) {
   return applySamplerState(t, sampler);
 }
 
-// Loads <graph>.manifest.json from `manifestUrl`, the es300 shaders and the node textures
+// Loads <graph>.manifest.json from `manifestUrl`, the es300 stages' bodies and the node textures
 // beside it (compile with `--target es300 --textures`), and builds the WaterGraph.
 // options.resources: scene resource textures the application renders (see README.md).
 export async function loadWaterGraph(manifestUrl, { resources = {}, description = null } = {}) {
@@ -513,8 +510,15 @@ export async function loadWaterGraph(manifestUrl, { resources = {}, description 
   const es300 = manifest.targets?.es300;
   if (!es300?.vert || !es300?.frag)
     throw new WaterGraphError(`graph '${manifest.graph}' was not compiled for es300 (compile with --target es300)`);
-  const text = async (file) => (await fetchOk(new URL(file, base), file)).text();
-  const [vertexShader, fragmentShader] = await Promise.all([text(es300.vert), text(es300.frag)]);
+  const three = manifest.three;
+  if (!three)
+    throw new WaterGraphError(`graph '${manifest.graph}': the manifest has no "three" (the es300 stages' bodies): compile it again with this watergraph`);
+  // The stages after their version line, which three.js writes itself (checkManifest: plain
+  // file names beside the manifest), with the version they lack.
+  const form = async (stage) => ({ glsl_version: three[stage].glsl_version,
+    body: await (await fetchOk(new URL(three[stage].body_file, base), three[stage].body_file)).text() });
+  const [vertex, fragment] = await Promise.all([form('vertex'), form('fragment')]);
+  const shaders = { vertex, fragment };
   // The oceans' module (checkManifest: a .js file name beside the manifest), as an ES module.
   const oceanModule = manifest.oceans ? await importOceanModule(new URL(manifest.oceans[0].module, base)) : null;
   const textures = table();
@@ -525,7 +529,7 @@ export async function loadWaterGraph(manifestUrl, { resources = {}, description 
       new URL(file, base),
       `texture ${t.name} (${t.source}) as ${file}, written by \`watergraph compile --textures\``, t.sampler);
   }
-  return new WaterGraph({ manifest, vertexShader, fragmentShader, textures, resources, description, oceanModule });
+  return new WaterGraph({ manifest, shaders, textures, resources, description, oceanModule });
 }
 
 async function importOceanModule(url) {

@@ -6,6 +6,11 @@
 // passes into rgba32float and r32float textures. What only the compiler knows comes from the
 // graph's ocean module (<graph>.ocean.js): each cascade's h0 and frequency indices, the
 // twiddles, the 32-bit time phase, the foam's constants and clock.
+import { cascadeMaps, cascadePasses, OCEAN_MAPS, pyramidLevels } from '../three/watergraph-ocean-plan.js';
+
+// The plan's names, from the module both web clients share (clients/three, served as /three/).
+export { cascadePasses, pyramidLevels };
+
 export class WebgpuOceanError extends Error {
   constructor(message) {
     super(message);
@@ -16,7 +21,6 @@ export class WebgpuOceanError extends Error {
 const OCEAN_PASS_SHADERS = ['ocean_evolve', 'ocean_evolve_displacement', 'ocean_evolve_jacobian', 'ocean_stockham',
   'ocean_stockham_single', 'ocean_pack', 'ocean_pack_displacement', 'ocean_foam_step', 'ocean_foam_blend',
   'ocean_pack_filtered', 'ocean_downsample'];
-const OCEAN_MAPS = ['displacement', 'slopes', 'foam', 'moments'];
 const SCALARS = { float: 'setFloat32', int: 'setInt32', uint: 'setUint32' };
 
 // A pass shader's WebGPU form from the description (description.webgpu.shaders[name]:
@@ -67,26 +71,6 @@ const USAGE = () => GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.RENDER_ATT
 // The colour bytes a sample of ocean_pack_filtered's three RGBA32F targets.
 const FILTERED_PACK_BYTES = 48;
 
-// The mip levels of a filtered cascade's N x N slope and moments maps, down to 1 x 1.
-export function pyramidLevels(n) {
-  if (!Number.isInteger(n) || n < 1 || (n & (n - 1)) !== 0) throw new WebgpuOceanError(`an ocean cascade's resolution must be a power of two (got ${n})`);
-  return Math.log2(n) + 1;
-}
-
-// The passes of one cascade's maps in order (runtime/ocean_gpu_cascade.cpp): the evolution,
-// 2 log2 N Stockham stages, the packing, and for a filtered cascade (its moments map is
-// read) one ocean_downsample per level l = 1..L, level l (N >> l square) from level l - 1.
-export function cascadePasses(n, { slopes, filtered }) {
-  const both = slopes || filtered;
-  const passes = [{ shader: both ? 'ocean_evolve' : 'ocean_evolve_displacement' }];
-  for (let vertical = 0; vertical < 2; ++vertical)
-    for (let ns = 1; ns < n; ns *= 2) passes.push({ shader: both ? 'ocean_stockham' : 'ocean_stockham_single', ns, vertical });
-  passes.push({ shader: filtered ? 'ocean_pack_filtered' : both ? 'ocean_pack' : 'ocean_pack_displacement' });
-  if (filtered)
-    for (let level = 1; level < pyramidLevels(n); ++level) passes.push({ shader: 'ocean_downsample', level, source: level - 1, size: n >> level });
-  return passes;
-}
-
 // One level of a texture, as a render target or as what a sampler shows (its level 0).
 const mipOf = (texture, mip) => ({ texture, mip });
 const viewOf = (t) => (t.texture ? t.texture.createView({ baseMipLevel: t.mip, mipLevelCount: 1 }) : t.createView());
@@ -103,7 +87,7 @@ export class WebgpuOceanSimulation {
     this.passes = passes;
     // ocean_pack_filtered writes three RGBA32F targets at once: 48 bytes a sample, over
     // WebGPU's default limit of 32 (request the adapter's maxColorAttachmentBytesPerSample).
-    const filtered = (manifest.textures ?? []).some((t) => t.ocean?.map === 'moments');
+    const filtered = manifest.oceans.some((o) => o.filtered === true);
     const bytes = device.limits?.maxColorAttachmentBytesPerSample ?? 32;
     if (filtered && bytes < FILTERED_PACK_BYTES)
       throw new WebgpuOceanError(`graph '${manifest.graph}' filters its ocean maps, whose pack writes ${FILTERED_PACK_BYTES} bytes of colour a sample; ` +
@@ -111,8 +95,6 @@ export class WebgpuOceanSimulation {
     this.sampler = device.createSampler({ magFilter: 'nearest', minFilter: 'nearest' });
     this.vertex = device.createShaderModule({ code: FULLSCREEN_WGSL, label: 'the ocean passes\' full-screen triangle' });
     this.pipelines = {};
-    const read = (o, c, map) => (manifest.textures ?? []).some((t) =>
-      t.ocean && t.ocean.ocean === o && t.ocean.cascade === c && t.ocean.map === map);
     this.oceans = module.oceans.map((data, o) => {
       if (data.node !== manifest.oceans[o].node) throw new WebgpuOceanError(`ocean ${o}: the module's node '${data.node}' is not the manifest's`);
       const packed = data.cascades();
@@ -121,9 +103,8 @@ export class WebgpuOceanSimulation {
         const n = data.sizes[c];  // the cascade's own N (cascade_sizes)
         if (!twiddles.has(n)) twiddles.set(n, this.#texture(n / 2, 1, 'rg32float', module.twiddles(n), 8));
         const twiddle = twiddles.get(n);
-        // A read moments map is the one sign that the cascade is filtered: its slope and
-        // moments maps then carry pyramids, and its slopes are computed whether read or not.
-        const filtered = read(o, c, 'moments'), slopes = read(o, c, 'slopes') || filtered, foam = read(o, c, 'foam');
+        // The manifest's "filtered" (the compiler's): every cascade of the ocean keeps pyramids.
+        const { slopes, foam, filtered } = cascadeMaps(manifest, o, c);
         if (foam && c >= data.foam.cascades) throw new WebgpuOceanError(`ocean ${data.node} cascade ${c} makes no foam`);
         const rgba = (levels = 1) => this.#texture(n, n, 'rgba32float', null, 0, levels);
         return {

@@ -60,8 +60,9 @@ TEST(CliCompile, GoodGraphWritesEveryTargetAndTheManifest) {
   ASSERT_EQ(r.exit, 0) << r.out << r.err;
   EXPECT_EQ(r.err, "");
   std::vector<std::string> expected = {
-      "lake.es300.frag", "lake.es300.vert", "lake.glsl330.frag",   "lake.glsl330.vert",   "lake.manifest.json",
-      "lake.vk450.frag", "lake.vk450.frag.spv", "lake.vk450.vert", "lake.vk450.vert.spv"};
+      "lake.es300.frag",    "lake.es300.frag.body", "lake.es300.vert",     "lake.es300.vert.body",
+      "lake.glsl330.frag",  "lake.glsl330.vert",    "lake.manifest.json",  "lake.vk450.frag",
+      "lake.vk450.frag.spv", "lake.vk450.vert",     "lake.vk450.vert.spv"};
   // Exactly these: no temporary files (".lake...tmpNNN") left behind by the atomic write.
   EXPECT_EQ(test::listFilesRecursive(out), expected);
   auto manifest = nlohmann::json::parse(test::readFile(out + "/lake.manifest.json"));
@@ -80,7 +81,8 @@ TEST(CliCompile, TargetOptionLimitsTheOutput) {
                 " --target es300");
   ASSERT_EQ(r.exit, 0) << r.out << r.err;
   EXPECT_EQ(test::listFilesRecursive(out),
-            (std::vector<std::string>{"lake.es300.frag", "lake.es300.vert", "lake.manifest.json"}));
+            (std::vector<std::string>{"lake.es300.frag", "lake.es300.frag.body", "lake.es300.vert", "lake.es300.vert.body",
+                                      "lake.manifest.json"}));
 }
 
 // A host loads each node texture by the name the manifest records ("file"), named after the
@@ -95,7 +97,8 @@ TEST(CliCompile, TheManifestNamesEachNodeTexturesFile) {
                       " --target es300 --textures");
   ASSERT_EQ(r.exit, 0) << r.out << r.err;
   auto manifest = nlohmann::json::parse(test::readFile(out + "/my-river.manifest.json"));
-  std::vector<std::string> expected = {"my-river.es300.frag", "my-river.es300.vert", "my-river.manifest.json"};
+  std::vector<std::string> expected = {"my-river.es300.frag", "my-river.es300.frag.body", "my-river.es300.vert",
+                                       "my-river.es300.vert.body", "my-river.manifest.json"};
   // (listFilesRecursive lists the output folder only: the copied graph and lib/ lie beside it)
   int nodeTextures = 0;
   for (const auto& t : manifest.at("textures")) {

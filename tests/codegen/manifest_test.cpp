@@ -10,6 +10,7 @@
 #include "codegen/compile.h"
 #include "codegen/manifest.h"
 #include "codegen/spirv_cross_targets.h"
+#include "core/ocean_settings.h"
 #include "core/graph_io.h"
 #include "nodes/registry.h"
 #include "test_support.h"
@@ -147,6 +148,13 @@ TEST(Manifest, FromJsonNamesWhatIsWrong) {
        "is not a sampler of scene resource 'refraction'"},
       {"patches of four", [](auto& m) { m["tessellation"]["patch_vertices"] = 4; }, "patches of other than 3"},
       {"target member", [](auto& m) { m["targets"]["glsl330"]["geom"] = "x.geom"; }, "not a shader stage"},
+      {"a body file without its version", [](auto& m) { m["three"]["vertex"].erase("glsl_version"); },
+       "\"three\"'s \"vertex\" lacks the string \"glsl_version\""},
+      {"one stage without its body", [](auto& m) { m["three"].erase("fragment"); }, "no \"fragment\" object"},
+      {"a body file of a stage es300 lacks", [](auto& m) { m["three"]["tess_control"] = m["three"]["vertex"]; },
+       "unknown member \"tess_control\""},
+      {"two versions", [](auto& m) { m["three"]["vertex"]["glsl_version"] = "100"; }, "two versions"},
+      {"body files without es300", [](auto& m) { m["targets"].erase("es300"); }, "which \"targets\" does not list"},
       {"entry points without from", [](auto& m) { m["targets"]["glsl330"]["entry_points"] = nlohmann::json::object(); },
        "without the other"},
       {"resource list", [](auto& m) { m["resources"].push_back("ssao"); }, "unknown scene resource 'ssao'"},
@@ -169,6 +177,97 @@ TEST(Manifest, FromJsonNamesWhatIsWrong) {
       ADD_FAILURE() << "no error";
     } catch (const ManifestError& e) {
       EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+    }
+  }
+}
+
+// The es300 stages' bodies (for a host that writes the version line itself: three.js): the
+// manifest names a body file per stage and the version, and each body file is the stage's
+// text after that version's line, so the two put together are the stage file byte for byte.
+TEST(Manifest, Es300StagesComeWithTheirBodiesAndVersion) {
+  for (const char* name : {"lake", "deferred_underwater", "stylized"}) {
+    SCOPED_TRACE(name);
+    auto graph = loadExample(test::sourcePath(std::string("graphs/") + name + ".json"));
+    ASSERT_TRUE(graph);
+    CompileOptions options;
+    options.validate = false;
+    Diagnostics diags;
+    auto r = compileGraph(*graph, defaultRegistry(), options, diags);
+    ASSERT_TRUE(r);
+    auto contents = [&r](const std::string& file) -> const std::string* {
+      for (const auto& f : r->files)
+        if (f.name == file) return &f.contents;
+      return nullptr;
+    };
+    size_t bodies = 0;
+    for (const ManifestTarget& t : r->manifest.targets) {
+      if (t.name != "es300") {
+        EXPECT_EQ(t.glslVersion, "") << t.name;
+        for (const auto& f : t.files) EXPECT_EQ(f.body, "") << f.file;
+        continue;
+      }
+      EXPECT_EQ(t.glslVersion, "300 es");
+      ASSERT_EQ(t.files.size(), 2u);
+      for (const auto& f : t.files) {
+        EXPECT_EQ(f.body, f.file + ".body");
+        const std::string* stage = contents(f.file);
+        const std::string* body = contents(f.body);
+        ASSERT_TRUE(stage && body) << f.file;
+        EXPECT_EQ("#version " + t.glslVersion + "\n" + *body, *stage) << f.body;
+        ++bodies;
+      }
+    }
+    EXPECT_EQ(bodies, 2u);
+    // In the "three" section; the targets' members stay their files, as before.
+    const nlohmann::json m = r->manifest.toJson();
+    const nlohmann::json three = {
+        {"fragment", {{"body_file", std::string(name) + ".es300.frag.body"}, {"glsl_version", "300 es"}}},
+        {"vertex", {{"body_file", std::string(name) + ".es300.vert.body"}, {"glsl_version", "300 es"}}}};
+    EXPECT_EQ(m["three"], three);
+    EXPECT_EQ(m["targets"]["es300"], nlohmann::json({{"frag", std::string(name) + ".es300.frag"},
+                                                     {"vert", std::string(name) + ".es300.vert"}}));
+    expectRoundTrip(*r);
+  }
+}
+
+// "filtered" on an ocean is the compiler's decision, from the maps its shaders sample:
+// open_ocean's ocean_surface filters (it reads every cascade's moments map); with its filter
+// off nothing reads a moments map and the ocean is not filtered.
+TEST(Manifest, AnOceanSaysWhetherItIsFiltered) {
+  for (const bool filter : {true, false}) {
+    SCOPED_TRACE(filter ? "filtered" : "point sampled");
+    auto graph = loadExample(test::sourcePath("graphs/open_ocean.json"));
+    ASSERT_TRUE(graph);
+    bool found = false;
+    for (Node& n : graph->nodes)
+      if (n.id == "detail") {
+        n.options.push_back({"filter", filter, {}, {}});
+        found = true;
+      }
+    ASSERT_TRUE(found) << "open_ocean has no node 'detail'";
+    CompileOptions options;
+    options.validate = false;
+    Diagnostics diags;
+    auto r = compileGraph(*graph, defaultRegistry(), options, diags);
+    ASSERT_TRUE(r);
+    ASSERT_EQ(r->manifest.oceans.size(), 1u);
+    size_t moments = 0;
+    for (const TextureInfo& t : r->manifest.textures) moments += t.ocean && t.ocean->map == ocean::kMomentsMap ? 1 : 0;
+    EXPECT_EQ(moments, filter ? 3u : 0u) << "one moments map per cascade when filtered";
+    EXPECT_EQ(r->manifest.oceans[0].filtered, filter);
+    EXPECT_EQ(r->manifest.toJson()["oceans"][0]["filtered"], filter);
+    expectRoundTrip(*r);
+
+    // A manifest whose "filtered" is missing or disagrees with its moments maps is refused.
+    nlohmann::json m = r->manifest.toJson();
+    m["oceans"][0]["filtered"] = !filter;
+    EXPECT_THROW(Manifest::fromJson(m), ManifestError);
+    m["oceans"][0].erase("filtered");
+    try {
+      Manifest::fromJson(m);
+      ADD_FAILURE() << "no error";
+    } catch (const ManifestError& e) {
+      EXPECT_NE(std::string(e.what()).find("no \"filtered\" true or false"), std::string::npos) << e.what();
     }
   }
 }

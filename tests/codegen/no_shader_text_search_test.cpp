@@ -17,6 +17,12 @@
 //     isGlslName (whether an output's text is a name), the search of the kept text for the
 //     names an op declared (forgetUnread), and a fetch's coordinate compared with the screen
 //     uv's name.
+//   - the three.js client's cut of the `#version 300 es` line from the description's
+//     runtime shaders and the compiled es300 stages (withoutVersion, withoutVersionLine):
+//     `watergraph scene` writes each ES shader's body and version apart ("three".shaders)
+//     and `compile --target es300` each stage's body beside it (<stage>.body and the
+//     target's "glsl_version"). The web clients' sources do not even name the directive
+//     (TheWebClientsNeverHandleAVersionLine);
 //   - `--explain-frequency`'s cost estimate read from the fragment lines' text (GlslCost over
 //     frag->body and frag->locals, codegen/frequency_report.cpp): the planner counts each
 //     line's operations from the values as it writes them (PlannedStage::lineCost). GlslCost
@@ -55,6 +61,8 @@ const char* const kForbidden[] = {
     // textures, texelFetch calls, bindings read back out of naga's WGSL
     "glsl450ForNaga", "replace(/^uniform", "replace(/^in ", "replace('#define WG_", "void main\\(\\)",
     "RegExp(`texelFetch", "matchAll(/@binding", "#version 300 es\\n(?:precision",
+    // the three.js client's cut of the version line (its regex: /^\s*#version\s+300\s+es.../)
+    "withoutVersion", "#version\\s",
 };
 
 // Names allowed only in the files listed (paths relative to the source root).
@@ -75,6 +83,46 @@ bool isSource(const std::filesystem::path& p) {
   for (const char* e : kExtensions)
     if (p.extension() == e) return true;
   return false;
+}
+
+// Every source file under `dir` (node_modules left out), as relative path -> text.
+std::map<std::string, std::string> sourcesUnder(const char* dir) {
+  std::map<std::string, std::string> out;
+  const std::filesystem::path top = test::sourcePath(".");
+  const std::filesystem::path root = test::sourcePath(dir);
+  if (!std::filesystem::exists(root)) return out;
+  for (auto it = std::filesystem::recursive_directory_iterator(root); it != std::filesystem::recursive_directory_iterator(); ++it) {
+    if (it->is_directory() && it->path().filename() == "node_modules") {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (!it->is_regular_file() || !(isSource(it->path()) || it->path().extension() == ".html")) continue;
+    std::ifstream in(it->path(), std::ios::binary);
+    std::stringstream text;
+    text << in.rdbuf();
+    out[std::filesystem::relative(it->path(), top).generic_string()] = text.str();
+  }
+  return out;
+}
+
+// The web clients take every shader as watergraph writes it for them (three.js: a body and
+// its version apart; WebGPU: a form naga reads as it is), so nothing in them, tests and
+// pages included, names the version directive: a client that finds, cuts or writes a
+// "#version" line in a shader's text would have to.
+TEST(SourceTree, TheWebClientsNeverHandleAVersionLine) {
+  const auto sources = sourcesUnder("clients");
+  size_t three = 0;
+  for (const auto& [relative, text] : sources) {
+    three += relative.starts_with("clients/three/") ? 1 : 0;
+    EXPECT_EQ(text.find("#version"), std::string::npos) << relative << " names the #version directive";
+  }
+  // Reached: the three.js client's modules, tests and pages, and the WebGPU client's.
+  EXPECT_TRUE(sources.count("clients/three/watergraph-three.js"));
+  EXPECT_TRUE(sources.count("clients/three/watergraph-passes.js"));
+  EXPECT_TRUE(sources.count("clients/three/example/gallery.js"));
+  EXPECT_TRUE(sources.count("clients/three/test/color.test.mjs"));
+  EXPECT_TRUE(sources.count("clients/webgpu/watergraph-webgpu-ocean.js"));
+  EXPECT_GT(three, 15u);
 }
 
 TEST(SourceTree, NoSearchOfGeneratedShaderText) {

@@ -32,7 +32,9 @@ struct Compiled {
     std::string s;
     if (result)
       for (const auto& f : result->files)
-        if (f.name.find(".spv") == std::string::npos && f.name.find(".manifest") == std::string::npos) s += f.contents;
+        // Each shader once: not its SPIR-V, the manifest, or an es300 stage's .body (its text again).
+        if (f.name.find(".spv") == std::string::npos && f.name.find(".manifest") == std::string::npos && !f.name.ends_with(".body"))
+          s += f.contents;
     return s;
   }
 };

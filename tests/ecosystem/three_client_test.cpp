@@ -608,7 +608,7 @@ TEST_F(ThreeClient, ApiChecksPassUnderNode) {
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && WG_THREE_FIXTURES=" + test::shellQuote(dir.path()) +
                    " timeout 50 node --test test/api.test.mjs test/color.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 16"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 17"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 
@@ -630,13 +630,13 @@ TEST_F(ThreeClient, HostileManifestsAreRefusedNamingTheField) {
   CmdResult t = sh("cd " + test::shellQuote(clientDir()) + " && WG_THREE_FIXTURES=" + test::shellQuote(dir.path()) +
                    " timeout 50 node --test test/manifest.test.mjs");
   EXPECT_EQ(t.exit, 0) << t.out << t.err;
-  EXPECT_NE(t.out.find("# pass 50"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("# pass 59"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("# fail 0"), std::string::npos) << t.out;
 }
 
 // The spectral ocean's plumbing without a browser (clients/three/test/ocean.test.mjs under
 // node --test): the pass order of a filtered and an unfiltered cascade, the pyramid's level
-// counts, a read moments map making its cascade filtered, and the raw WebGL of a filtered
+// counts, the manifest's "filtered" making every cascade of its ocean filtered, and the raw WebGL of a filtered
 // cascade's pyramid replayed as GL state: the pack into level 0 of three maps, then each level
 // l drawn with its samplers showing level l - 1 alone (no feedback loop), every level visible
 // to the water after. Needs Node.js and the npm packages, not Chromium.

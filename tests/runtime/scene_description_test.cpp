@@ -72,6 +72,30 @@ TEST(SceneDescription, HoldsTheRuntimesEsShadersCamerasAndSun) {
   EXPECT_EQ(d["water"]["grid_quads"], RenderSettings{}.waterGridQuads);
 }
 
+// The three.js forms: every ES shader of "shaders" again as its version and its body, which
+// put back together ("#version " + version + "\n" + body) are the text the test above ties
+// to the runtime's own: three.js writes the version line itself (RawShaderMaterial's
+// glslVersion, THREE.GLSL3 = "300 es") and takes the body as it is.
+TEST(SceneDescription, HoldsEachEsShaderAsVersionAndBodyForThreeJs) {
+  const nlohmann::json d = described();
+  const nlohmann::json& forms = d["three"]["shaders"];
+  ASSERT_EQ(forms.size(), d["shaders"].size());
+  EXPECT_EQ(forms.size(), 7u + static_cast<size_t>(oceangpu::kOceanPassShaderCount));
+  for (const auto& [name, text] : d["shaders"].items()) {
+    ASSERT_TRUE(forms.contains(name)) << name;
+    const nlohmann::json& form = forms[name];
+    EXPECT_EQ(form.size(), 2u) << name << ": glsl_version and body alone";
+    EXPECT_EQ(form["glsl_version"], "300 es") << name;
+    EXPECT_EQ("#version " + form["glsl_version"].get<std::string>() + "\n" + form["body"].get<std::string>(),
+              text.get<std::string>())
+        << name;
+  }
+  // The bodies are the runtime's own: the ES texts after their version line.
+  EXPECT_EQ(forms["sky_vertex"]["body"], sceneShaderBodies(SceneShaderApi::Es300).skyVertex);
+  EXPECT_EQ(forms["ocean_pack_filtered"]["body"],
+            oceangpu::oceanPassFragmentBody(SceneShaderApi::Es300, oceangpu::OceanPassShader::PackFiltered));
+}
+
 // The pass planner's tables, in the runtime's order (clients/three plans from these).
 TEST(SceneDescription, HoldsThePlannersTables) {
   const nlohmann::json d = described();

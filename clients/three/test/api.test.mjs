@@ -1,5 +1,5 @@
 // Checks of the client's API that need no browser (node --test). WG_THREE_FIXTURES names
-// a folder with three_environment.{manifest.json,es300.vert,es300.frag} compiled from
+// a folder with three_environment.{manifest.json,es300.vert.body,es300.frag.body} compiled from
 // tests/ecosystem/data/three_environment.json and scene.json from `watergraph scene`;
 // tests/ecosystem/three_client_test.cpp writes them and runs this file.
 import { test } from 'node:test';
@@ -14,11 +14,9 @@ const dir = process.env.WG_THREE_FIXTURES;
 const graph = () => {
   assert.ok(dir, 'WG_THREE_FIXTURES is not set');
   const read = (f) => readFileSync(path.join(dir, f), 'utf8');
-  return {
-    manifest: JSON.parse(read('three_environment.manifest.json')),
-    vertexShader: read('three_environment.es300.vert'),
-    fragmentShader: read('three_environment.es300.frag'),
-  };
+  const manifest = JSON.parse(read('three_environment.manifest.json'));
+  const form = (stage) => ({ glsl_version: manifest.three[stage].glsl_version, body: read(manifest.three[stage].body_file) });
+  return { manifest, shaders: { vertex: form('vertex'), fragment: form('fragment') } };
 };
 
 const description = () => JSON.parse(readFileSync(path.join(dir, 'scene.json'), 'utf8'));
@@ -29,12 +27,23 @@ test('without a scene description, a pass the client does not render is an error
       'environment_cubemap (resource environment: pass it in options.resources)'));
 });
 
+test('the stages are forms (a version and a body), never whole texts the client would cut', () => {
+  const { manifest, shaders } = graph();
+  const refused = (g, words) => assert.throws(() => new WaterGraph({ ...g, resources: { environment: new THREE.CubeTexture() } }),
+    (e) => e instanceof WaterGraphError && e.message.includes(words), words);
+  refused({ manifest, vertexShader: shaders.vertex.body, fragmentShader: shaders.fragment.body }, 'takes the stages as `shaders: {vertex, fragment}`');
+  refused({ manifest, shaders: { vertex: shaders.vertex } }, 'shaders.fragment has no form for three.js');
+  refused({ manifest, shaders: { ...shaders, vertex: { ...shaders.vertex, glsl_version: '100' } } }, 'shaders.vertex is GLSL 100');
+});
+
 test('a resource the application renders is bound, if its sampler type fits', () => {
   const cube = new THREE.CubeTexture();
   const water = new WaterGraph({ ...graph(), resources: { environment: cube } });
   assert.equal(water.uniforms.u_environment.value, cube);
+  // The stages' bodies as compile wrote them: the version line is three.js's (glslVersion).
   assert.equal(water.material.glslVersion, THREE.GLSL3);
-  assert.ok(!water.material.vertexShader.includes('#version'), 'the #version line is left to three.js');
+  assert.equal(water.material.vertexShader, graph().shaders.vertex.body);
+  assert.equal(water.material.fragmentShader, graph().shaders.fragment.body);
   assert.throws(() => new WaterGraph({ ...graph(), resources: { environment: new THREE.Texture() } }),
     /u_environment is a samplerCube, but the texture given for it is not a cube texture/);
 });

@@ -16,11 +16,11 @@ const read = (f) => {
   assert.ok(dir, 'WG_THREE_FIXTURES is not set');
   return readFileSync(path.join(dir, f), 'utf8');
 };
-const graph = () => ({
-  manifest: JSON.parse(read('three_environment.manifest.json')),
-  vertexShader: read('three_environment.es300.vert'),
-  fragmentShader: read('three_environment.es300.frag'),
-});
+const graph = () => {
+  const manifest = JSON.parse(read('three_environment.manifest.json'));
+  const form = (stage) => ({ glsl_version: manifest.three[stage].glsl_version, body: read(manifest.three[stage].body_file) });
+  return { manifest, shaders: { vertex: form('vertex'), fragment: form('fragment') } };
+};
 const description = () => JSON.parse(read('scene.json'));
 const refused = (fn, words) => assert.throws(fn, (e) => e instanceof WaterGraphError && e.message.includes(words),
   `expected a WaterGraphError with "${words}"`);
@@ -73,9 +73,8 @@ test('the render options override the view; a bad one is an error naming it', ()
 test("the output pass is the description's own shader, with the runtime's uniforms", () => {
   const d = description();
   const pass = new OutputTransform(d);
-  const body = (text) => text.replace(/^\s*#version 300 es[^\n]*\n/, '');
-  assert.equal(pass.material.fragmentShader, body(d.shaders.output_transform_fragment));
-  assert.equal(pass.material.vertexShader, body(d.shaders.fullscreen_vertex));
+  assert.equal(pass.material.fragmentShader, d.three.shaders.output_transform_fragment.body);
+  assert.equal(pass.material.vertexShader, d.three.shaders.fullscreen_vertex.body);
   assert.equal(pass.material.glslVersion, THREE.GLSL3);
   assert.equal(pass.material.blending, THREE.NoBlending);
   assert.equal(pass.material.depthTest, false);
@@ -94,8 +93,10 @@ test('a description of another format or colour contract is refused', () => {
   const d = description();
   refused(() => checkSceneDescription({ ...d, color: { ...d.color, frame_format: 'rgba32f' } }), "frame_format 'rgba32f'");
   refused(() => checkSceneDescription({ ...d, color: { ...d.color, tone_mappers: ['none', 'aces'] } }), 'lacks some of the tone mappers');
-  const { output_transform_fragment, ...shaders } = d.shaders;
-  refused(() => checkSceneDescription({ ...d, shaders }), 'no shader "output_transform_fragment"');
+  const { output_transform_fragment, ...shaders } = d.three.shaders;
+  refused(() => checkSceneDescription({ ...d, three: { shaders } }), 'no shader "output_transform_fragment"');
+  const { three, ...withoutForms } = d;
+  refused(() => checkSceneDescription(withoutForms), 'the scene description has no "three"');
 });
 
 test('without renderable half floats the targets fall back to RGBA8, said once', () => {

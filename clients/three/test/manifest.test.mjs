@@ -18,13 +18,16 @@ const read = (file) => {
   assert.ok(dir, 'WG_THREE_FIXTURES is not set');
   return readFileSync(path.join(dir, file), 'utf8');
 };
-const graph = (name) => ({
-  manifest: JSON.parse(read(`${name}.manifest.json`)),
-  vertexShader: read(`${name}.es300.vert`),
-  fragmentShader: read(`${name}.es300.frag`),
-  resources: { environment: new THREE.CubeTexture() },
-  textures: { t0_lagoon_ripples: new THREE.Texture() },
-});
+// The es300 stages as three.js takes them: the manifest's version, the body files' texts.
+const shadersOf = (manifest) => {
+  const form = (stage) => ({ glsl_version: manifest.three[stage].glsl_version, body: read(manifest.three[stage].body_file) });
+  return { vertex: form('vertex'), fragment: form('fragment') };
+};
+const graph = (name) => {
+  const manifest = JSON.parse(read(`${name}.manifest.json`));
+  return { manifest, shaders: shadersOf(manifest), resources: { environment: new THREE.CubeTexture() },
+    textures: { t0_lagoon_ripples: new THREE.Texture() } };
+};
 const index = (list, pred, what) => {
   const i = list.findIndex(pred);
   assert.ok(i >= 0, `the fixture has no ${what}`);
@@ -99,6 +102,21 @@ const CASES = [
   ['topdown', 'an ocean module outside the manifest\'s folder', (m) => { m.oceans = [{ module: '../x.js', node: 'sea', options: {} }]; m.passes.unshift('ocean_simulation'); return 'oceans[0].module'; }],
   ['topdown', 'oceans without the ocean_simulation pass', (m) => { m.oceans = [{ module: 'topdown.ocean.js', node: 'sea', options: {} }]; return 'passes'; }],
   ['topdown', 'an ocean map of an ocean "oceans" lacks', (m) => { m.textures = [{ name: 'u_map', type: 'sampler2D', binding: 1, stages: ['vertex'], ocean: { ocean: 0, cascade: 0, map: 'displacement' } }]; return 'textures[0].ocean.ocean'; }],
+  ['topdown', 'an ocean without "filtered"', (m) => { m.oceans = [{ module: 'topdown.ocean.js', node: 'sea', options: {} }]; m.passes.unshift('ocean_simulation'); return 'oceans[0].filtered'; }],
+  ['topdown', 'an ocean "filtered": "yes"', (m) => { m.oceans = [{ filtered: 'yes', module: 'topdown.ocean.js', node: 'sea', options: {} }]; m.passes.unshift('ocean_simulation'); return 'oceans[0].filtered'; }],
+  ['topdown', 'a filtered ocean whose moments map no texture reads', (m) => { m.oceans = [{ filtered: true, module: 'topdown.ocean.js', node: 'sea', options: {} }]; m.passes.unshift('ocean_simulation'); return 'oceans[0].filtered'; }],
+  ['topdown', 'a moments map of an ocean not filtered', (m) => {
+    m.oceans = [{ filtered: false, module: 'topdown.ocean.js', node: 'sea', options: {} }];
+    m.passes.unshift('ocean_simulation');
+    m.textures = [{ name: 'u_map', type: 'sampler2D', binding: 1, stages: ['fragment'], ocean: { ocean: 0, cascade: 0, map: 'moments' } }];
+    return 'oceans[0].filtered';
+  }],
+  // The es300 stages' bodies (what the client fetches) and their version.
+  ['topdown', 'an es300 body file in another folder', (m) => { m.three.vertex.body_file = '../secret.vert'; return 'three.vertex.body_file'; }],
+  ['topdown', 'an es300 body file that is not a string', (m) => { m.three.fragment.body_file = 5; return 'three.fragment.body_file'; }],
+  ['topdown', 'a body file without its glsl_version', (m) => { delete m.three.vertex.glsl_version; return 'three.vertex.glsl_version'; }],
+  ['topdown', 'a "three" without the fragment stage', (m) => { delete m.three.fragment; return 'three.fragment'; }],
+  ['topdown', 'a "three" stage "geometry"', (m) => { m.three.geometry = m.three.vertex; return 'three.geometry'; }],
   ['topdown', 'an ocean map "__proto__"', (m) => { m.textures = [{ name: 'u_map', type: 'sampler2D', binding: 1, stages: ['vertex'], ocean: { ocean: 0, cascade: 0, map: '__proto__' } }]; return 'textures[0].ocean.map'; }],
 ];
 
@@ -128,7 +146,7 @@ test('without a scene description, a pass the client does not know is refused by
 
 test('without a scene description, a spectral ocean is refused naming its pass', () => {
   const g = graph('topdown');
-  g.manifest.oceans = [{ module: 'topdown.ocean.js', node: 'sea', options: {} }];
+  g.manifest.oceans = [{ filtered: false, module: 'topdown.ocean.js', node: 'sea', options: {} }];
   g.manifest.passes.unshift('ocean_simulation');
   assert.doesNotThrow(() => checkManifest(g.manifest));
   assert.throws(() => new WaterGraph(g), (e) => e instanceof WaterGraphError &&

@@ -32,41 +32,48 @@ test('a filtered cascade packs three maps, then downsamples once per level; an u
   assert.deepEqual(stockham.map((p) => [p.vertical, p.ns]), [[0, 1], [0, 2], [0, 4], [1, 1], [1, 2], [1, 4]]);
 });
 
-// An ocean module and manifest of one ocean with two cascades (16 and 8 texels), of which the
-// textures read `maps` ([cascade, map] pairs).
-function oceanOf(maps) {
+// An ocean module and manifest of oceans of two cascades each (16 and 8 texels): `oceans`
+// lists each ocean's "filtered" (the compiler's value) and the maps its textures read
+// ([cascade, map] pairs).
+function oceanOf(oceans) {
   const sizes = [16, 8];
   const module = {
-    oceans: [{
-      node: 'sea', tileLengths: [100, 10], sizes, dk: [0.06, 0.6], choppiness: 1, foam: { cascades: 0 },
+    oceans: oceans.map((_, o) => ({
+      node: `sea${o}`, tileLengths: [100, 10], sizes, dk: [0.06, 0.6], choppiness: 1, foam: { cascades: 0 },
       cascades: () => sizes.map((n) => ({ h0: new Float32Array(4 * n * n), frequency: new Uint32Array(n * n) })),
-    }],
+    })),
     twiddles: (n) => new Float32Array(n),
     phaseTau: (t) => t,
   };
-  const manifest = { graph: 'g', oceans: [{ node: 'sea' }],
-    textures: maps.map(([cascade, map], i) => ({ name: `t${i}`, ocean: { ocean: 0, cascade, map } })) };
+  const manifest = { graph: 'g', oceans: oceans.map(({ filtered }, o) => ({ node: `sea${o}`, filtered })),
+    textures: oceans.flatMap(({ maps }, o) => maps.map(([cascade, map]) => ({ name: `t${o}_${map}${cascade}`, ocean: { ocean: o, cascade, map } }))) };
   return new OceanSimulation(manifest, module, { shaders: {} });
 }
 
-test('a read moments map makes its cascade filtered, and map() gives its pyramid\'s textures', () => {
+test('an ocean the manifest marks filtered keeps pyramids in every cascade, and map() gives their textures', () => {
   assert.deepEqual(OCEAN_MAPS, ['displacement', 'slopes', 'foam', 'moments']);
-  const sim = oceanOf([[0, 'displacement'], [0, 'slopes'], [0, 'moments'], [1, 'displacement'], [1, 'slopes']]);
-  const [filtered, plain] = sim.oceans[0].cascades;
+  const sim = oceanOf([{ filtered: true, maps: [[0, 'displacement'], [0, 'slopes'], [0, 'moments'], [1, 'moments']] },
+    { filtered: false, maps: [[1, 'displacement'], [1, 'slopes']] }]);
+  const [filtered, alsoFiltered] = sim.oceans[0].cascades, plain = sim.oceans[1].cascades[1];
   assert.equal(filtered.filtered, true);
+  assert.equal(alsoFiltered.filtered, true);
   assert.equal(plain.filtered, false);
   assert.equal(filtered.plan.filter((p) => p.shader === 'ocean_downsample').length, 4);
+  assert.equal(alsoFiltered.plan.filter((p) => p.shader === 'ocean_downsample').length, 3);
   assert.equal(plain.plan.filter((p) => p.shader === 'ocean_downsample').length, 0);
   const maps = ['displacement', 'slopes', 'moments'].map((map) => sim.map({ ocean: 0, cascade: 0, map }));
   assert.ok(maps.every((t) => t.isExternalTexture));
   assert.equal(new Set(maps).size, 3);
-  assert.ok(sim.map({ ocean: 0, cascade: 1, map: 'slopes' }).isRenderTargetTexture);
-  assert.throws(() => sim.map({ ocean: 0, cascade: 1, map: 'moments' }), /moments map is not computed/);
+  assert.ok(sim.map({ ocean: 1, cascade: 1, map: 'slopes' }).isRenderTargetTexture);
+  assert.throws(() => sim.map({ ocean: 1, cascade: 1, map: 'moments' }), /moments map is not computed/);
   // Filtered with no shader reading its slope map: the slopes are transformed all the same
   // (ocean_pack_filtered reads both spectra).
-  const moments = oceanOf([[0, 'moments']]).oceans[0].cascades[0];
+  const moments = oceanOf([{ filtered: true, maps: [[0, 'moments']] }]).oceans[0].cascades[0];
   assert.equal(moments.filtered, true);
   assert.equal(moments.spectra[0].textures.length, 2);
+  // The value decides, not the list: a moments map listed for an ocean not marked filtered
+  // (which checkManifest refuses) makes no pyramid.
+  assert.equal(oceanOf([{ filtered: false, maps: [[0, 'moments']] }]).oceans[0].cascades[0].filtered, false);
 });
 
 // A WebGL 2 context that records every call: constants are numbers (the two the code adds

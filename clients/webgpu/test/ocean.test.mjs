@@ -64,26 +64,27 @@ function recordingDevice(colorBytes = 128) {
   return { device, encoder, textures, draws };
 }
 
-// An ocean module and manifest of one ocean with cascades of 8 and 4 texels, of which the
-// textures read `maps` ([cascade, map] pairs).
-function simulationOf(device, maps) {
-  const sizes = [8, 4];
+// An ocean module and manifest of one cascade per ocean, 8 texels for the first ocean and 4
+// for the others: `oceans` lists each ocean's "filtered" (the compiler's value) and the maps
+// its textures read.
+function simulationOf(device, oceans) {
+  const size = (o) => (o === 0 ? 8 : 4);
   const module = {
-    oceans: [{
-      node: 'sea', tileLengths: [100, 10], sizes, dk: [0.06, 0.6], choppiness: 1, foam: { cascades: 0 },
-      cascades: () => sizes.map((n) => ({ h0: new Float32Array(4 * n * n), frequency: new Uint32Array(n * n) })),
-    }],
+    oceans: oceans.map((_, o) => ({
+      node: `sea${o}`, tileLengths: [100], sizes: [size(o)], dk: [0.06], choppiness: 1, foam: { cascades: 0 },
+      cascades: () => [{ h0: new Float32Array(4 * size(o) * size(o)), frequency: new Uint32Array(size(o) * size(o)) }],
+    })),
     twiddles: (n) => new Float32Array(n),
     phaseTau: (t) => t,
   };
-  const manifest = { graph: 'g', oceans: [{ node: 'sea' }],
-    textures: maps.map(([cascade, map], i) => ({ name: `t${i}`, ocean: { ocean: 0, cascade, map } })) };
+  const manifest = { graph: 'g', oceans: oceans.map(({ filtered }, o) => ({ node: `sea${o}`, filtered })),
+    textures: oceans.flatMap(({ maps }, o) => maps.map((map) => ({ name: `t${o}_${map}`, ocean: { ocean: o, cascade: 0, map } }))) };
   return new WebgpuOceanSimulation(device, manifest, module, passesOf());
 }
 
 test('pass order: a filtered cascade packs three maps and downsamples L times, an unfiltered one never', () => {
   assert.deepEqual([1, 4, 8, 256].map(pyramidLevels), [1, 3, 4, 9]);
-  assert.throws(() => pyramidLevels(12), WebgpuOceanError);
+  assert.throws(() => pyramidLevels(12), /must be a power of two \(got 12\)/);
   const names = (plan) => plan.map((p) => p.shader);
   assert.deepEqual(names(cascadePasses(4, { slopes: false, filtered: true })),
     ['ocean_evolve', 'ocean_stockham', 'ocean_stockham', 'ocean_stockham', 'ocean_stockham', 'ocean_pack_filtered', 'ocean_downsample', 'ocean_downsample']);
@@ -95,15 +96,16 @@ test('pass order: a filtered cascade packs three maps and downsamples L times, a
 
 test('a filtered cascade: level 0 from the pack, level l drawn from a view of level l - 1 alone', () => {
   const { device, encoder, textures, draws } = recordingDevice();
-  const sim = simulationOf(device, [[0, 'displacement'], [0, 'slopes'], [0, 'moments'], [1, 'displacement'], [1, 'slopes']]);
-  const filtered = sim.oceans[0].cascades[0], plain = sim.oceans[0].cascades[1];
+  const sim = simulationOf(device, [{ filtered: true, maps: ['displacement', 'slopes', 'moments'] },
+    { filtered: false, maps: ['displacement', 'slopes'] }]);
+  const filtered = sim.oceans[0].cascades[0], plain = sim.oceans[1].cascades[0];
   const [displacement, slopes, moments] = filtered.maps;
   // Storage: the slope and moments maps with every level (8, 4, 2, 1), the rest one.
   assert.deepEqual([displacement, slopes, moments].map((t) => t.mipLevelCount), [1, 4, 4]);
   assert.ok(plain.maps.every((t) => t.mipLevelCount === 1));
   assert.equal(textures.filter((t) => t.mipLevelCount > 1).length, 2);
   sim.encode(encoder, 3.5);
-  // Cascade 0's passes in its plan's order, then cascade 1's (no downsample).
+  // The filtered ocean's cascade's passes in its plan's order, then the other's (no downsample).
   assert.deepEqual(draws.map((d) => d.pass), [...filtered.plan, ...plain.plan].map((p) => p.shader));
   const first = draws.slice(0, filtered.plan.length);
   const pack = first.find((d) => d.pass === 'ocean_pack_filtered');
@@ -120,12 +122,25 @@ test('a filtered cascade: level 0 from the pack, level l drawn from a view of le
   // What the water binds: the moments texture, whose default view holds every level.
   assert.equal(sim.map({ ocean: 0, cascade: 0, map: 'moments' }), moments);
   assert.equal(sim.map({ ocean: 0, cascade: 0, map: 'slopes' }), slopes);
-  assert.throws(() => sim.map({ ocean: 0, cascade: 1, map: 'moments' }), /not computed/);
+  assert.throws(() => sim.map({ ocean: 1, cascade: 0, map: 'moments' }), /not computed/);
 });
 
 test('a filtered ocean on a device held to WebGPU\'s default 32 colour bytes a sample is a clear error', () => {
-  assert.throws(() => simulationOf(recordingDevice(32).device, [[0, 'slopes'], [0, 'moments']]),
+  assert.throws(() => simulationOf(recordingDevice(32).device, [{ filtered: true, maps: ['slopes', 'moments'] }]),
     (e) => e instanceof WebgpuOceanError && /writes 48 bytes of colour a sample; this device allows 32/.test(e.message));
   // Unfiltered, 32 bytes are enough (two RGBA32F targets at most).
-  assert.doesNotThrow(() => simulationOf(recordingDevice(32).device, [[0, 'slopes'], [1, 'slopes']]));
+  assert.doesNotThrow(() => simulationOf(recordingDevice(32).device, [{ filtered: false, maps: ['slopes'] }, { filtered: false, maps: ['slopes'] }]));
+});
+
+test('"filtered" is the manifest\'s value: an ocean marked filtered keeps pyramids for every cascade, read or not', () => {
+  const { device } = recordingDevice();
+  // The moments map listed but the ocean not marked filtered: no pyramids (the compiler's
+  // manifest never has this; checkManifest refuses it before a simulation is made).
+  const unmarked = simulationOf(device, [{ filtered: false, maps: ['slopes', 'moments'] }]);
+  assert.equal(unmarked.oceans[0].cascades[0].filtered, false);
+  assert.ok(!unmarked.oceans[0].cascades[0].plan.some((p) => p.shader === 'ocean_downsample'));
+  const marked = simulationOf(device, [{ filtered: true, maps: ['displacement'] }]);
+  assert.equal(marked.oceans[0].cascades[0].filtered, true);
+  assert.equal(marked.oceans[0].cascades[0].slopes, true);
+  assert.equal(marked.oceans[0].cascades[0].plan.filter((p) => p.shader === 'ocean_downsample').length, 3);
 });

@@ -62,7 +62,7 @@ test('what the runner cannot take is a SceneShaderError naming it', () => {
   assert.throws(() => sceneShadersWgsl(without, naga), (e) => e instanceof SceneShaderError && /no WebGPU form of 'sky_fragment'/.test(e.message));
   assert.throws(() => sceneShadersWgsl(description, naga, { v_world_position: 0, v_uv: 2 }),
     (e) => e instanceof SceneShaderError && /water_gbuffer_fragment: no location for its input v_normal/.test(e.message));
-  const brokenForm = { ...webgpuFormOf(description, 'opaque_fragment'), glsl: '#version 450\nvoid main() { undeclared = 1.0; }\n' };
+  const brokenForm = { ...webgpuFormOf(description, 'opaque_fragment'), glsl: 'void main() { undeclared = 1.0; }\n' };
   const broken = { ...description, webgpu: { shaders: { ...description.webgpu.shaders, opaque_fragment: brokenForm } } };
   assert.throws(() => sceneShadersWgsl(broken, naga), (e) => e instanceof SceneShaderError && /naga could not translate the runtime's opaque_fragment/.test(e.message));
 });
