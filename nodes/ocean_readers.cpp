@@ -44,7 +44,7 @@ GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz,
   for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
     const int n = ocean::cascadeResolution(s.cascades, c);  // each cascade's texels per metre are its own
     GlslExpr map =
-        EmitContext::call("wg_ocean_map", {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz,
+        EmitContext::call("wg_ocean_map_cubic", {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz,
                                            ctx.literal(n / s.cascades.tileLengths[c]), std::to_string(n)});
     GlslExpr term = weights[c].empty() ? map : weights[c] + " * " + map;
     sum += (sum.empty() ? "" : " + ") + term;

@@ -2,8 +2,9 @@
 // The ocean readers' double-precision reference: each distinct ocean_spectrum setting is
 // registered once (the id travels in the `ocean` Value's first component), its cascades'
 // fields are computed by core/ocean_fft_reference.h at each time asked for and kept for
-// the next look-ups at that time, and a look-up is the bilinear interpolation the GLSL
-// (wg_ocean_map) performs between the four texels around the point.
+// the next look-ups at that time, and a look-up is the interpolation the GLSL performs:
+// bicubic (Catmull-Rom) between the 4 x 4 texels around the point for the maps' level 0
+// (wg_ocean_map_cubic), bilinear for the pyramids' levels above and for the foam.
 #include <array>
 #include <vector>
 
