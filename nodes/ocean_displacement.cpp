@@ -55,8 +55,8 @@ NodeSpec oceanDisplacementNode() {
     double fade = ctx.options<double>();
     std::vector<GlslExpr> w =
         oceanread::emitWeights(ctx, fade, fade > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
-    GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
-    GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
+    GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w, oceanread::MapRead::Bicubic);
+    GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w, oceanread::MapRead::Bicubic);
     ctx.output(0, "(" + p + " + " + d + ".xyz)");
     ctx.output(1, EmitContext::call("wg_ocean_normal", {slopes, d + ".w"}));
     ctx.output(2, p);
@@ -64,7 +64,7 @@ NodeSpec oceanDisplacementNode() {
   s.eval = [](EvalContext& ctx) {
     const oceanread::EvalPoint at = oceanread::evalPoint(ctx);
     const Value& p = at.position;
-    oceanref::MapSample m = oceanread::sumAt(at);
+    oceanref::MapSample m = oceanread::sumAt(at, oceanread::MapRead::Bicubic);
     ctx.output(0, Value::vector({p[0] + m.displacement[0], p[1] + m.displacement[1], p[2] + m.displacement[2]}));
     ctx.output(1, oceanread::normalOf(m));
     ctx.output(2, p);

@@ -138,8 +138,8 @@ std::shared_ptr<const ocean::FoamMaps> foamAt(int id, int cascade, std::int64_t 
 }
 
 // The four texels around the world point (x, z) of an N x N map of tile L and the
-// weights between them, as wg_ocean_map takes them (the foam map's read); nothing for a
-// point that is not finite.
+// weights between them, as wg_ocean_map takes them (the fragment stage's read); nothing for
+// a point that is not finite.
 struct Bilinear {
   size_t i00, i10, i01, i11;
   double fu, fv;
@@ -242,14 +242,19 @@ const ocean::OceanSettings& settingsOf(int id) {
   return reg[static_cast<size_t>(id)]->settings;
 }
 
-MapSample sampleCascade(int id, int cascade, double time, double x, double z) {
+MapSample sampleCascade(int id, int cascade, double time, double x, double z, bool bicubic) {
   auto maps = mapsAt(id, cascade, time);
   MapSample out;
-  auto b = bicubicAt(settingsOf(id), cascade, x, z);  // as wg_ocean_map_cubic
-  if (!b) return out;
-  for (int c = 0; c < 4; ++c) {
-    out.displacement[c] = blend(*b, [&](size_t i) { return maps->displacement[i][c]; });
-    out.slopes[c] = blend(*b, [&](size_t i) { return maps->slopes[i][c]; });
+  auto read = [&](const auto& weights) {
+    for (int c = 0; c < 4; ++c) {
+      out.displacement[c] = blend(weights, [&](size_t i) { return maps->displacement[i][c]; });
+      out.slopes[c] = blend(weights, [&](size_t i) { return maps->slopes[i][c]; });
+    }
+  };
+  if (bicubic) {
+    if (auto b = bicubicAt(settingsOf(id), cascade, x, z)) read(*b);  // as wg_ocean_map_cubic
+  } else {
+    if (auto b = bilinearAt(settingsOf(id), cascade, x, z)) read(*b);  // as wg_ocean_map
   }
   return out;
 }
@@ -264,22 +269,12 @@ FilteredSample sampleCascadeFiltered(int id, int cascade, double time, double x,
   const double f = lod - l0;
   std::array<FilteredSample, 2> at;
   for (int k = 0; k < 2; ++k) {
+    auto b = levelBilinearAt(settingsOf(id), cascade, x, z, l0 + k);
+    if (!b) return out;
     const Texels &s = maps->slopeLevels[static_cast<size_t>(l0 + k)], &m = maps->momentLevels[static_cast<size_t>(l0 + k)];
-    auto read = [&](const auto& weights) {
-      for (int c = 0; c < 4; ++c) {
-        at[k].slopes[c] = blend(weights, [&](size_t i) { return s[i][c]; });
-        at[k].moments[c] = blend(weights, [&](size_t i) { return m[i][c]; });
-      }
-    };
-    // Level 0 bicubic, the levels above bilinear (wg_ocean_map_lod).
-    if (l0 + k == 0) {
-      auto c = bicubicAt(settingsOf(id), cascade, x, z);
-      if (!c) return out;
-      read(*c);
-    } else {
-      auto b = levelBilinearAt(settingsOf(id), cascade, x, z, l0 + k);
-      if (!b) return out;
-      read(*b);
+    for (int c = 0; c < 4; ++c) {
+      at[k].slopes[c] = blend(*b, [&](size_t i) { return s[i][c]; });
+      at[k].moments[c] = blend(*b, [&](size_t i) { return m[i][c]; });
     }
   }
   for (int c = 0; c < 4; ++c) {

@@ -94,11 +94,11 @@ vec4 wg_ocean_cubic_row(highp sampler2D map, ivec4 xs, int z, vec4 w) {
          w.z * texelFetch(map, ivec2(xs.z, z), 0) + w.w * texelFetch(map, ivec2(xs.w, z), 0);
 }
 
-// Level 0 of a map (n x n texels) at the world point xz, bicubic (Catmull-Rom)
-// between the 4 x 4 texels around it, wrapping as wg_ocean_map. Where a pixel's footprint is
-// under a texel the map is magnified, and a long cascade's waves span 10 texels or more: the
-// cubic follows them to O(h^4) where the bilinear read errs by O(h^2) of the slope, which a
-// coarser grid of the same waves would otherwise change visibly.
+// A map (n x n texels) at the world point xz, bicubic (Catmull-Rom) between the 4 x 4
+// texels around it, wrapping as wg_ocean_map: the vertex stage's read (ocean_displacement).
+// The mesh near the camera is finer than a long cascade's texels, whose waves span 10 texels
+// or more: the cubic follows them to O(h^4) where a bilinear read errs by O(h^2), so that a
+// coarser grid of the same waves moves the mesh by a tenth as much (docs/ocean.md).
 vec4 wg_ocean_map_cubic(highp sampler2D map, vec2 xz, float texelsPerMetre, int n) {
   vec2 u = xz * texelsPerMetre;
   vec2 base = floor(u);
@@ -116,14 +116,12 @@ vec4 wg_ocean_map_cubic(highp sampler2D map, vec2 xz, float texelsPerMetre, int 
 
 // A map pyramid at the world point xz at level of detail lod in [0, levels]: levels
 // floor(lod) and the next, mixed by the fraction (trilinear, continuous across the levels:
-// at an integer lod the two sides agree). Level 0 is read bicubic (wg_ocean_map_cubic), the
-// levels above bilinear.
+// at an integer lod the two sides agree).
 vec4 wg_ocean_map_lod(highp sampler2D map, vec2 xz, float texelsPerMetre, int n, int levels, float lod) {
   vec2 u = xz * texelsPerMetre;
   int l0 = min(int(floor(lod)), levels - 1);
   float f = lod - float(l0);
-  vec4 lower = l0 == 0 ? wg_ocean_map_cubic(map, xz, texelsPerMetre, n) : wg_ocean_map_level(map, u, n, l0);
-  return mix(lower, wg_ocean_map_level(map, u, n, l0 + 1), f);
+  return mix(wg_ocean_map_level(map, u, n, l0), wg_ocean_map_level(map, u, n, l0 + 1), f);
 }
 
 // The slope variance of one cascade that the shading loses at a footprint: its slopes'

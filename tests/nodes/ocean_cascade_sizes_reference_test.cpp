@@ -1,9 +1,10 @@
 // The ocean readers' double reference with a resolution per cascade (cascade_sizes): each
 // cascade's map is looked up with its own N (texels per metre N_c / L_c, the wrap at N_c),
-// as wg_ocean_map_cubic reads it on the GPU. The bicubic (Catmull-Rom) blend of the
-// cascade's own FFTW fields is written out here; a cascade read with another cascade's N (or
-// fft_size) lands on other texels and fails. And what the bicubic read is for: a long
-// cascade on a coarser grid of the same waves reads as on the fine one.
+// as wg_ocean_map (the fragment stage) and wg_ocean_map_cubic (the vertex stage) read it on
+// the GPU. The bilinear and bicubic (Catmull-Rom) blends of the cascade's own FFTW fields are
+// written out here; a cascade read with another cascade's N (or
+// fft_size) lands on other texels and fails. And what the vertex stage's bicubic read is
+// for: a long cascade on a coarser grid of the same waves reads as on the fine one.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -63,17 +64,18 @@ TEST(OceanCascadeSizesReference, EachCascadeIsReadWithItsOwnTexelScale) {
     for (double hx : f.slopeX) slopeScale = std::max(slopeScale, std::abs(hx));
     ASSERT_GT(scale, 0);
     // Points between texels, one beyond the tile (the wrap at N_c) and one at negative x.
-    for (auto [x, z] : {std::pair{3.3, 7.9}, std::pair{tile + 1.1, 0.4}, std::pair{-2.6, 5.05}}) {
-      const oceanref::MapSample m = oceanref::sampleCascade(id, c, t, x, z);
-      // The reference rounds N_c / L_c to float as the shader's literal: the texel
-      // coordinate (under 80 here) moves by at most 2^-24 of it, 5e-6 texel, and the blend
-      // (weights whose magnitudes sum to at most 1.6 a side, slopes at most 1.25) by at most
-      // 2.6 * 1.25 * 5e-6 of the field's largest value. Another N moves whole texels.
-      EXPECT_NEAR(m.displacement[1], fieldAt(f.height, n, tile, x, z, true), 2e-5 * scale)
-          << "cascade " << c << " at (" << x << ", " << z << ")";
-      EXPECT_NEAR(m.slopes[0], fieldAt(f.slopeX, n, tile, x, z, true), 2e-5 * slopeScale)
-          << "cascade " << c << " at (" << x << ", " << z << ")";
-    }
+    for (auto [x, z] : {std::pair{3.3, 7.9}, std::pair{tile + 1.1, 0.4}, std::pair{-2.6, 5.05}})
+      for (bool cubic : {false, true}) {
+        const oceanref::MapSample m = oceanref::sampleCascade(id, c, t, x, z, cubic);
+        // The reference rounds N_c / L_c to float as the shader's literal: the texel
+        // coordinate (under 80 here) moves by at most 2^-24 of it, 5e-6 texel, and the read
+        // (its slope in the coordinate at most 1.5 steps between texels, each at most twice the
+        // field's largest value) by at most 1.5e-5 of that value. Another N moves whole texels.
+        EXPECT_NEAR(m.displacement[1], fieldAt(f.height, n, tile, x, z, cubic), 2e-5 * scale)
+            << "cascade " << c << " at (" << x << ", " << z << "), bicubic " << cubic;
+        EXPECT_NEAR(m.slopes[0], fieldAt(f.slopeX, n, tile, x, z, cubic), 2e-5 * slopeScale)
+            << "cascade " << c << " at (" << x << ", " << z << "), bicubic " << cubic;
+      }
   }
 }
 
@@ -110,7 +112,8 @@ TEST(OceanCascadeSizesReference, ALongCascadeOnACoarserGridReadsAsOnTheFineOne) 
     for (int p = 0; p < points; ++p) {
       // A low-discrepancy spread over the tile, off the texels of both grids.
       const double x = tile * std::fmod(0.5 + p * 0.6180339887498949, 1.0), z = tile * std::fmod(0.25 + p * 0.7548776662466927, 1.0);
-      const oceanref::MapSample a = oceanref::sampleCascade(coarseId, c, t, x, z), b = oceanref::sampleCascade(fineId, c, t, x, z);
+      const oceanref::MapSample a = oceanref::sampleCascade(coarseId, c, t, x, z, true),
+                                b = oceanref::sampleCascade(fineId, c, t, x, z, true);
       cubicH += std::pow(a.displacement[1] - b.displacement[1], 2);
       cubicS += std::pow(a.slopes[0] - b.slopes[0], 2) + std::pow(a.slopes[1] - b.slopes[1], 2);
       bilinearH += std::pow(fieldAt(fc.height, 128, tile, x, z, false) - fieldAt(ff.height, 256, tile, x, z, false), 2);

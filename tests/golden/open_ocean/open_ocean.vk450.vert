@@ -45,11 +45,11 @@ vec4 wg_ocean_cubic_row(highp sampler2D map, ivec4 xs, int z, vec4 w) {
          w.z * texelFetch(map, ivec2(xs.z, z), 0) + w.w * texelFetch(map, ivec2(xs.w, z), 0);
 }
 
-// Level 0 of a map (n x n texels) at the world point xz, bicubic (Catmull-Rom)
-// between the 4 x 4 texels around it, wrapping as wg_ocean_map. Where a pixel's footprint is
-// under a texel the map is magnified, and a long cascade's waves span 10 texels or more: the
-// cubic follows them to O(h^4) where the bilinear read errs by O(h^2) of the slope, which a
-// coarser grid of the same waves would otherwise change visibly.
+// A map (n x n texels) at the world point xz, bicubic (Catmull-Rom) between the 4 x 4
+// texels around it, wrapping as wg_ocean_map: the vertex stage's read (ocean_displacement).
+// The mesh near the camera is finer than a long cascade's texels, whose waves span 10 texels
+// or more: the cubic follows them to O(h^4) where a bilinear read errs by O(h^2), so that a
+// coarser grid of the same waves moves the mesh by a tenth as much (docs/ocean.md).
 vec4 wg_ocean_map_cubic(highp sampler2D map, vec2 xz, float texelsPerMetre, int n) {
   vec2 u = xz * texelsPerMetre;
   vec2 base = floor(u);
