@@ -16,9 +16,9 @@
 //                                     the maps; camera (may be NULL) is where the readers'
 //                                     fade distances are measured from
 //   wg_<graph>_ocean_sample(o, x, z, w, out)
-//                                     the cascades' maps at the world point (x, z), bilinear
-//                                     between the four texels around it as the vertex shader
-//                                     reads them (wg_ocean_map), weighted by w and summed
+//                                     the cascades' maps at the world point (x, z), bicubic
+//                                     between the 4 x 4 texels around it as the vertex shader
+//                                     reads them (wg_ocean_map_cubic), weighted by w and summed
 // update writes the state; everything else only reads it.
 #include <string>
 

@@ -291,33 +291,40 @@ static inline void wgq_ocean_cascade(const double* h0, const uint32_t* frequency
     }
   }
 }
-/* Map channels at the world point: the four texels around (x, z) of an n x n map of tile L
- * (texelsPerMetre n / L rounded to float, as the shader's literal), bilinear as wg_ocean_map,
- * added to out times weight. A point whose texel coordinate is not finite adds nothing. */
+/* Map channels at the world point: the 4 x 4 texels around (x, z) of an n x n map of tile L
+ * (texelsPerMetre n / L rounded to float, as the shader's literal), bicubic (Catmull-Rom) as
+ * wg_ocean_map_cubic, added to out times weight. A point whose texel coordinate is not finite
+ * adds nothing. */
+static inline void wgq_cubic_weights(double t, double w[4]) {
+  const double t2 = t * t, t3 = t2 * t;
+  w[0] = t2 - 0.5 * (t + t3);
+  w[1] = 1.0 + 1.5 * t3 - 2.5 * t2;
+  w[2] = 0.5 * t + 2.0 * t2 - 1.5 * t3;
+  w[3] = 0.5 * (t3 - t2);
+}
 static inline void wgq_ocean_read(const double* maps, int n, double texelsPerMetre, double weight, double x, double z,
                                   double* out) {
   const double u = x * texelsPerMetre, v = z * texelsPerMetre;
-  double bu, bv, fu, fv, wu, wv;
-  const double *t00, *t10, *t01, *t11;
-  int ax, az, bx, bz, f;
+  double bu, bv, wu, wv, wx[4], wz[4];
+  int ax, az, i, j, f;
   if (!(wgq_finite(u) && wgq_finite(v))) return;
   bu = floor(u);
   bv = floor(v);
-  fu = u - bu;
-  fv = v - bv;
+  wgq_cubic_weights(u - bu, wx);
+  wgq_cubic_weights(v - bv, wz);
   wu = bu - n * floor(bu / n);
   wv = bv - n * floor(bv / n);
   ax = (wu >= 0.0 && wu < n ? (int)wu : 0) & (n - 1);
   az = (wv >= 0.0 && wv < n ? (int)wv : 0) & (n - 1);
-  bx = (ax + 1) & (n - 1);
-  bz = (az + 1) & (n - 1);
-  t00 = maps + 11 * ((size_t)az * n + ax);
-  t10 = maps + 11 * ((size_t)az * n + bx);
-  t01 = maps + 11 * ((size_t)bz * n + ax);
-  t11 = maps + 11 * ((size_t)bz * n + bx);
   for (f = 0; f < 11; ++f) {
-    const double bottom = t00[f] + (t10[f] - t00[f]) * fu, top = t01[f] + (t11[f] - t01[f]) * fu;
-    out[f] += weight * (bottom + (top - bottom) * fv);
+    double sum = 0.0;
+    for (j = 0; j < 4; ++j) {
+      const size_t row = (size_t)((az + j + n - 1) & (n - 1)) * n;
+      double r = 0.0;
+      for (i = 0; i < 4; ++i) r += wx[i] * maps[11 * (row + (size_t)((ax + i + n - 1) & (n - 1))) + f];
+      sum += wz[j] * r;
+    }
+    out[f] += weight * sum;
   }
 }
 #endif

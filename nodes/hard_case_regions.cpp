@@ -19,7 +19,9 @@ namespace wg::nodes {
 // (every amplitude 0), surface_folds (J < 0 at the point) and shallow_water (k d < 0.1 at the peak);
 // for the filtered ocean reader footprint_past_tiles (every cascade at its 1 x 1 level),
 // footprint_zero (the camera at the point) and level_boundary (a cascade's level of detail
-// an integer: the trilinear blend hands one level to the next).
+// an integer: the trilinear blend hands one level to the next); for the maps' bicubic read
+// tile_corner (a cascade's 4 x 4 texels around the point wrap across the tile's edge on both
+// axes).
 const std::vector<HardCaseRegion>& hardCaseRegions() {
   static const std::vector<HardCaseRegion> table = {
       // optics
@@ -68,6 +70,8 @@ const std::vector<HardCaseRegion>& hardCaseRegions() {
       {"ocean_displacement", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},
       {"ocean_displacement", "a TMA sea in 1 cm of water", "shallow_water", ""},
       {"ocean_displacement", "100 km from the origin", "huge_coordinates", "position"},
+      {"ocean_displacement", "at a tile's corner: the bicubic read's 4 x 4 texels wrap to the far sides", "tile_corner",
+       "position"},
       {"ocean_surface", "a calm (wind 0): the Jacobian of still water", "empty_spectrum", ""},
       {"ocean_surface", "a calm (wind 0): the normal of a flat sea", "empty_spectrum", ""},
       {"ocean_surface", "a storm at 40 m/s with choppiness 4, where the surface folds", "surface_folds", "position"},

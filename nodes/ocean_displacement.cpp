@@ -24,12 +24,12 @@ NodeSpec oceanDisplacementNode() {
       "0); (lDx, h, lDz, lDxz) = sum over c of w_c "
       "map_c(p.xz); position = p + (lDx, h, lDz); normal = "
       "cross(dP/dz, dP/dx) made unit, from the slope maps "
-      "(wg_ocean_normal); each map_c read bilinearly between its four "
-      "texels around p.xz.";
+      "(wg_ocean_normal); each map_c read bicubic (Catmull-Rom) between "
+      "its 4 x 4 texels around p.xz.";
   s.source = "Tessendorf, Simulating Ocean Water (2001)";
   s.cost =
-      "per cascade 4 texel fetches for the position and 4 more for the "
-      "normal, ~12 ALU each; the fade ~8 ALU";
+      "per cascade 16 texel fetches for the position and 16 more for the "
+      "normal, ~40 ALU each; the fade ~8 ALU";
   s.inputs = {
       ports::fixed("ocean", Type::Ocean, "the sea, from an ocean_spectrum node"),
       ports::fromBuiltin("position", Type::Vec3, Builtin::WorldPosition, "the still water's point (world space, y up)"),
@@ -55,8 +55,8 @@ NodeSpec oceanDisplacementNode() {
     double fade = ctx.options<double>();
     std::vector<GlslExpr> w =
         oceanread::emitWeights(ctx, fade, fade > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
-    GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
-    GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
+    GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w, oceanread::MapRead::Bicubic);
+    GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w, oceanread::MapRead::Bicubic);
     ctx.output(0, "(" + p + " + " + d + ".xyz)");
     ctx.output(1, EmitContext::call("wg_ocean_normal", {slopes, d + ".w"}));
     ctx.output(2, p);
@@ -64,7 +64,7 @@ NodeSpec oceanDisplacementNode() {
   s.eval = [](EvalContext& ctx) {
     const oceanread::EvalPoint at = oceanread::evalPoint(ctx);
     const Value& p = at.position;
-    oceanref::MapSample m = oceanread::sumAt(at);
+    oceanref::MapSample m = oceanread::sumAt(at, oceanread::MapRead::Bicubic);
     ctx.output(0, Value::vector({p[0] + m.displacement[0], p[1] + m.displacement[1], p[2] + m.displacement[2]}));
     ctx.output(1, oceanread::normalOf(m));
     ctx.output(2, p);
@@ -86,7 +86,12 @@ NodeSpec oceanDisplacementNode() {
                           oceanread::smallSea({{"model", "tma"}, {"depth", 0.01}}),
                           "finite and nearly still (every spectrum tends to 0 with the depth)", -1, 3),
       oceanread::hardCase("100 km from the origin", Value::vector({1e5, 0, -1e5}), oceanread::smallSea(),
-                          "finite: the tiles repeat", -1.1e5, 1.1e5)};
+                          "finite: the tiles repeat", -1.1e5, 1.1e5),
+      // 1/1000 of a texel inside the 50 m tile's far corner (64 texels: 0.78 m each): the
+      // bicubic read's texels 63, 0, 1 and 2 past it come from the tile's near side.
+      oceanread::hardCase("at a tile's corner: the bicubic read's 4 x 4 texels wrap to the far sides",
+                          Value::vector({50 - 0.00078, 0, -0.00078}), oceanread::smallSea(),
+                          "finite, within the sea's reach of the corner", -5, 55)};
   for (HardCase& c : oceanread::normalHardCases()) s.hardCases.push_back(std::move(c));
   return s;
 }

@@ -38,13 +38,15 @@ std::vector<GlslExpr> emitWeights(EmitContext& ctx, double fadeTiles, const Glsl
   return out;
 }
 
-GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz, const std::vector<GlslExpr>& weights) {
+GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz, const std::vector<GlslExpr>& weights,
+                 MapRead read) {
   const auto& s = ctx.oceanSettings(oceanPort);
   GlslExpr sum;
   for (size_t c = 0; c < s.cascades.tileLengths.size(); ++c) {
     const int n = ocean::cascadeResolution(s.cascades, c);  // each cascade's texels per metre are its own
     GlslExpr map =
-        EmitContext::call("wg_ocean_map", {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz,
+        EmitContext::call(read == MapRead::Bicubic ? "wg_ocean_map_cubic" : "wg_ocean_map",
+                          {ctx.oceanMap(oceanPort, static_cast<int>(c), which), xz,
                                            ctx.literal(n / s.cascades.tileLengths[c]), std::to_string(n)});
     GlslExpr term = weights[c].empty() ? map : weights[c] + " * " + map;
     sum += (sum.empty() ? "" : " + ") + term;
@@ -142,10 +144,10 @@ std::vector<double> weights(const ocean::OceanSettings& s, double fadeTiles, dou
   return out;
 }
 
-oceanref::MapSample sum(int oceanId, double t, double x, double z, const std::vector<double>& weights) {
+oceanref::MapSample sum(int oceanId, double t, double x, double z, const std::vector<double>& weights, MapRead read) {
   oceanref::MapSample total;
   for (size_t c = 0; c < weights.size(); ++c) {
-    oceanref::MapSample m = oceanref::sampleCascade(oceanId, static_cast<int>(c), t, x, z);
+    oceanref::MapSample m = oceanref::sampleCascade(oceanId, static_cast<int>(c), t, x, z, read == MapRead::Bicubic);
     for (int k = 0; k < 4; ++k) {
       total.displacement[k] += weights[c] * m.displacement[k];
       total.slopes[k] += weights[c] * m.slopes[k];
@@ -165,8 +167,8 @@ EvalPoint evalPoint(EvalContext& ctx, double fadeTiles) {
   return at;
 }
 
-oceanref::MapSample sumAt(const EvalPoint& at) {
-  return sum(at.id, at.time, at.position[0], at.position[2], at.weights);
+oceanref::MapSample sumAt(const EvalPoint& at, MapRead read) {
+  return sum(at.id, at.time, at.position[0], at.position[2], at.weights, read);
 }
 
 Value normalOf(const oceanref::MapSample& m) {

@@ -21,9 +21,15 @@ double distance(const Value& p, const Value& camera);
 // GLSL: per cascade its weight ("" for 1) at camera distance `distance` (an
 // expression).
 std::vector<GlslExpr> emitWeights(EmitContext& ctx, double fadeTiles, const GlslExpr& distance);
+// How a reader reads level 0 of the maps: the vertex stage bicubic (ocean_displacement:
+// wg_ocean_map_cubic, where the mesh is finer than a long cascade's texels), the fragment
+// stage bilinear (wg_ocean_map).
+enum class MapRead { Bilinear, Bicubic };
+
 // GLSL: the weighted sum over the cascades of map `which` at `xz`, as a vec4
 // expression.
-GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz, const std::vector<GlslExpr>& weights);
+GlslExpr emitSum(EmitContext& ctx, int oceanPort, int which, const GlslExpr& xz, const std::vector<GlslExpr>& weights,
+                 MapRead read);
 
 // Double: what a reader's eval reads from its inputs: the ocean, the still point, the
 // scene's time and each cascade's weight at the point's camera distance.
@@ -36,12 +42,12 @@ struct EvalPoint {
 EvalPoint evalPoint(EvalContext& ctx);  // the fade from the node's options (a double)
 EvalPoint evalPoint(EvalContext& ctx, double fadeTiles);
 // Double: the weighted sums of both maps at the point (as sum below).
-oceanref::MapSample sumAt(const EvalPoint& at);
+oceanref::MapSample sumAt(const EvalPoint& at, MapRead read);
 
 // Double: per cascade its weight at camera distance d.
 std::vector<double> weights(const ocean::OceanSettings& s, double fadeTiles, double d);
 // Double: the weighted sums of both maps at (x, z) and time t.
-oceanref::MapSample sum(int oceanId, double t, double x, double z, const std::vector<double>& weights);
+oceanref::MapSample sum(int oceanId, double t, double x, double z, const std::vector<double>& weights, MapRead read);
 
 // --- The filtered reader (ocean_surface's `filter`, nodes/glsl/ocean_displacement.glsl).
 // GLSL: the weighted sums over the cascades of the slope map and of the moments map's

@@ -138,8 +138,8 @@ std::shared_ptr<const ocean::FoamMaps> foamAt(int id, int cascade, std::int64_t 
 }
 
 // The four texels around the world point (x, z) of an N x N map of tile L and the
-// weights between them, as wg_ocean_map takes them; nothing for a point that is not
-// finite.
+// weights between them, as wg_ocean_map takes them (the fragment stage's read); nothing for
+// a point that is not finite.
 struct Bilinear {
   size_t i00, i10, i01, i11;
   double fu, fv;
@@ -173,6 +173,44 @@ std::optional<Bilinear> levelBilinearAt(const ocean::OceanSettings& s, int casca
   return Bilinear{at(x0, z0), at(x1, z0), at(x0, z1), at(x1, z1), u - bu, v - bv};
 }
 
+// The 4 x 4 texels of level 0 around the world point (x, z) and Catmull-Rom's weights
+// between them, as wg_ocean_map_cubic takes them; nothing for a point that is not finite.
+struct Bicubic {
+  std::array<size_t, 4> columns, rows;  // texel indices jx, and row offsets jz * n
+  std::array<double, 4> wx, wz;
+};
+std::array<double, 4> cubicWeights(double t) {
+  const double t2 = t * t, t3 = t2 * t;
+  return {t2 - 0.5 * (t + t3), 1.0 + 1.5 * t3 - 2.5 * t2, 0.5 * t + 2.0 * t2 - 1.5 * t3, 0.5 * (t3 - t2)};
+}
+std::optional<Bicubic> bicubicAt(const ocean::OceanSettings& s, int cascade, double x, double z) {
+  const int n = ocean::cascadeResolution(s.cascades, static_cast<size_t>(cascade));
+  const double texelsPerMetre = static_cast<float>(n / s.cascades.tileLengths[static_cast<size_t>(cascade)]);
+  const double u = x * texelsPerMetre, v = z * texelsPerMetre;
+  if (!std::isfinite(u) || !std::isfinite(v)) return std::nullopt;
+  const double bu = std::floor(u), bv = std::floor(v);
+  auto wrap = [n](double b) { return static_cast<int>(b - n * std::floor(b / n)) & (n - 1); };
+  const int x0 = wrap(bu), z0 = wrap(bv);
+  Bicubic c;
+  for (int k = 0; k < 4; ++k) {
+    c.columns[static_cast<size_t>(k)] = static_cast<size_t>((x0 + k + n - 1) & (n - 1));
+    c.rows[static_cast<size_t>(k)] = static_cast<size_t>((z0 + k + n - 1) & (n - 1)) * static_cast<size_t>(n);
+  }
+  c.wx = cubicWeights(u - bu);
+  c.wz = cubicWeights(v - bv);
+  return c;
+}
+template <class Texel>
+double blend(const Bicubic& c, Texel texel) {
+  double sum = 0;
+  for (size_t j = 0; j < 4; ++j) {
+    double row = 0;
+    for (size_t i = 0; i < 4; ++i) row += c.wx[i] * texel(c.rows[j] + c.columns[i]);
+    sum += c.wz[j] * row;
+  }
+  return sum;
+}
+
 template <class Texel>
 double blend(const Bilinear& b, Texel texel) {
   double bottom = texel(b.i00) + (texel(b.i10) - texel(b.i00)) * b.fu;
@@ -204,14 +242,19 @@ const ocean::OceanSettings& settingsOf(int id) {
   return reg[static_cast<size_t>(id)]->settings;
 }
 
-MapSample sampleCascade(int id, int cascade, double time, double x, double z) {
+MapSample sampleCascade(int id, int cascade, double time, double x, double z, bool bicubic) {
   auto maps = mapsAt(id, cascade, time);
   MapSample out;
-  auto b = bilinearAt(settingsOf(id), cascade, x, z);
-  if (!b) return out;
-  for (int c = 0; c < 4; ++c) {
-    out.displacement[c] = blend(*b, [&](size_t i) { return maps->displacement[i][c]; });
-    out.slopes[c] = blend(*b, [&](size_t i) { return maps->slopes[i][c]; });
+  auto read = [&](const auto& weights) {
+    for (int c = 0; c < 4; ++c) {
+      out.displacement[c] = blend(weights, [&](size_t i) { return maps->displacement[i][c]; });
+      out.slopes[c] = blend(weights, [&](size_t i) { return maps->slopes[i][c]; });
+    }
+  };
+  if (bicubic) {
+    if (auto b = bicubicAt(settingsOf(id), cascade, x, z)) read(*b);  // as wg_ocean_map_cubic
+  } else {
+    if (auto b = bilinearAt(settingsOf(id), cascade, x, z)) read(*b);  // as wg_ocean_map
   }
   return out;
 }

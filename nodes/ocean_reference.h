@@ -2,8 +2,10 @@
 // The ocean readers' double-precision reference: each distinct ocean_spectrum setting is
 // registered once (the id travels in the `ocean` Value's first component), its cascades'
 // fields are computed by core/ocean_fft_reference.h at each time asked for and kept for
-// the next look-ups at that time, and a look-up is the bilinear interpolation the GLSL
-// (wg_ocean_map) performs between the four texels around the point.
+// the next look-ups at that time, and a look-up is the interpolation the GLSL performs:
+// bilinear between the four texels around the point (wg_ocean_map, the pyramids' levels,
+// the foam), or bicubic (Catmull-Rom) between the 4 x 4 around it where the vertex stage
+// reads (wg_ocean_map_cubic).
 #include <array>
 #include <vector>
 
@@ -22,8 +24,9 @@ struct MapSample {
   std::array<double, 4> displacement{};
   std::array<double, 4> slopes{};
 };
-// Cascade `cascade` of ocean `id` at time t, at the world point (x, z).
-MapSample sampleCascade(int id, int cascade, double time, double x, double z);
+// Cascade `cascade` of ocean `id` at time t, at the world point (x, z): bilinear as
+// wg_ocean_map, or bicubic as wg_ocean_map_cubic.
+MapSample sampleCascade(int id, int cascade, double time, double x, double z, bool bicubic);
 
 // What the filtered reader (wg_ocean_map_lod) reads of a cascade: its slope map and its
 // moments map (dh/dx^2, dh/dz^2, dh/dx dh/dz, lambda dDx/dz) at level of detail lod, from

@@ -89,8 +89,8 @@ NodeSpec oceanSurfaceNode() {
         oceanread::emitWeights(ctx, o.fadeTiles, o.fadeTiles > 0 ? "distance(" + p + ", " + ctx.input("camera") + ")" : "");
     GlslExpr xz = p + ".xz";
     if (!o.filter) {
-      GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w);
-      GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w);
+      GlslExpr d = oceanread::emitSum(ctx, ocean, ocean::kDisplacementMap, xz, w, oceanread::MapRead::Bilinear);
+      GlslExpr slopes = oceanread::emitSum(ctx, ocean, ocean::kSlopeMap, xz, w, oceanread::MapRead::Bilinear);
       ctx.output(0, EmitContext::call("wg_ocean_normal", {slopes, d + ".w"}));
       ctx.output(1, slopes + ".xy");
       ctx.output(2, EmitContext::call("wg_ocean_jacobian", {slopes, d + ".w"}));
@@ -119,7 +119,7 @@ NodeSpec oceanSurfaceNode() {
       roughness = oceanread::filteredRoughness(roughness, f.variance);
       variance = std::max(f.variance, 0.0);
     } else {
-      m = oceanread::sumAt(at);
+      m = oceanread::sumAt(at, oceanread::MapRead::Bilinear);
     }
     ctx.output(0, oceanread::normalOf(m));
     ctx.output(1, Value::vector({m.slopes[0], m.slopes[1]}));

@@ -79,6 +79,41 @@ vec4 wg_ocean_map_level(highp sampler2D map, vec2 u, int n, int level) {
   return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
 }
 
+// Catmull-Rom's weights of the texels at -1, 0, 1 and 2 for the fraction t in [0, 1]: the
+// cubic through the two middle texels with the central differences as its slopes. They sum
+// to 1 and give the texel itself at t = 0.
+vec4 wg_ocean_cubic_weights(float t) {
+  float t2 = t * t;
+  float t3 = t2 * t;
+  return vec4(t2 - 0.5 * (t + t3), 1.0 + 1.5 * t3 - 2.5 * t2, 0.5 * t + 2.0 * t2 - 1.5 * t3, 0.5 * (t3 - t2));
+}
+
+// One row of the cubic read: the four texels xs of row z of level 0, weighted by w.
+vec4 wg_ocean_cubic_row(highp sampler2D map, ivec4 xs, int z, vec4 w) {
+  return w.x * texelFetch(map, ivec2(xs.x, z), 0) + w.y * texelFetch(map, ivec2(xs.y, z), 0) +
+         w.z * texelFetch(map, ivec2(xs.z, z), 0) + w.w * texelFetch(map, ivec2(xs.w, z), 0);
+}
+
+// A map (n x n texels) at the world point xz, bicubic (Catmull-Rom) between the 4 x 4
+// texels around it, wrapping as wg_ocean_map: the vertex stage's read (ocean_displacement).
+// The mesh near the camera is finer than a long cascade's texels, whose waves span 10 texels
+// or more: the cubic follows them to O(h^4) where a bilinear read errs by O(h^2), so that a
+// coarser grid of the same waves moves the mesh by a tenth as much (docs/ocean.md).
+vec4 wg_ocean_map_cubic(highp sampler2D map, vec2 xz, float texelsPerMetre, int n) {
+  vec2 u = xz * texelsPerMetre;
+  vec2 base = floor(u);
+  vec2 f = u - base;
+  float size = float(n);
+  int m = n - 1;
+  ivec2 a = ivec2(base - size * floor(base / size)) & m;
+  ivec4 xs = ivec4((a.x + m) & m, a.x, (a.x + 1) & m, (a.x + 2) & m);
+  ivec4 zs = ivec4((a.y + m) & m, a.y, (a.y + 1) & m, (a.y + 2) & m);
+  vec4 wx = wg_ocean_cubic_weights(f.x);
+  vec4 wz = wg_ocean_cubic_weights(f.y);
+  return wz.x * wg_ocean_cubic_row(map, xs, zs.x, wx) + wz.y * wg_ocean_cubic_row(map, xs, zs.y, wx) +
+         wz.z * wg_ocean_cubic_row(map, xs, zs.z, wx) + wz.w * wg_ocean_cubic_row(map, xs, zs.w, wx);
+}
+
 // A map pyramid at the world point xz at level of detail lod in [0, levels]: levels
 // floor(lod) and the next, mixed by the fraction (trilinear, continuous across the levels:
 // at an integer lod the two sides agree).

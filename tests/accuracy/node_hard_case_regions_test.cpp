@@ -546,6 +546,24 @@ const std::map<std::string, RegionCheck>& regionChecks() {
          return std::string();
        }},
       {"footprint_zero", [](const Subject& s) { return unless(caseFootprint(s) == 0, "the footprint is not 0"); }},
+      {"tile_corner",
+       [](const Subject& s) {
+         // wg_ocean_map_cubic reads texels a - 1 .. a + 2 around a = floor(u) mod n: they wrap
+         // when a is 0, n - 2 or n - 1.
+         const ocean::OceanSettings sea = caseSea(s);
+         const Value p = givenInput(s, "position");
+         for (size_t c = 0; c < sea.cascades.tileLengths.size(); ++c) {
+           const int n = ocean::cascadeResolution(sea.cascades, c);
+           const double k = static_cast<float>(n / sea.cascades.tileLengths[c]);
+           auto wraps = [n, k](double x) {
+             const double b = std::floor(x * k);
+             const int a = static_cast<int>(b - n * std::floor(b / n));
+             return a == 0 || a >= n - 2;
+           };
+           if (wraps(p[0]) && wraps(p[2])) return std::string();
+         }
+         return std::string("no cascade's 4 x 4 texels around the point wrap on both axes");
+       }},
       {"level_boundary",
        [](const Subject& s) {
          const ocean::OceanSettings sea = caseSea(s);
@@ -768,6 +786,8 @@ std::optional<Subject> movedOut(Subject s) {
     set("camera", Value::vector({p[0], p[1] + 40, p[2]}));  // straight above: a footprint of 4 cm
   } else if (region == "level_boundary") {
     set("pixel_angle", Value::scalar(1.37 / 64));
+  } else if (region == "tile_corner") {
+    set("position", Value::vector({3, 0, -7}));  // texels 3 .. 6 and 54 .. 57 of the 50 m tile
   } else if (region == "voronoi_2x2_search") {
     s.hc.options["search"] = "3x3";
   } else {

@@ -4,7 +4,7 @@
 // every spectrum model and spreading; its maps are the double reference's fields (FFTW)
 // within the double transform's error bound at t = 0, 3.5 s and 1e6 s, and its velocity
 // channels their time derivative; displace agrees with the CPU backend's evaluation of the
-// vertex stage (ocean_displacement's eval: the same bilinear read and distance fade) and
+// vertex stage (ocean_displacement's eval: the same bicubic read and distance fade) and
 // height inverts it within its stated tolerance.
 #include <gtest/gtest.h>
 
@@ -229,7 +229,7 @@ std::vector<OceanPoint> oceanPoints() {
 }
 
 // displace against the CPU backend's node evals of the vertex stage (ocean_displacement's
-// eval reads the FFTW fields bilinearly, with the fade from the environment's camera, which
+// eval reads the FFTW fields bicubic, with the fade from the environment's camera, which
 // the query's state is given): per cascade the maps' transform bound over the fields' norms.
 // height at the displaced point answers its y within the stated tolerance.
 TEST(QueryOcean, DisplaceIsTheVertexStageInDoubleAndHeightInvertsIt) {

@@ -61,7 +61,7 @@ Energy energyAt(int id, int level, double weight, double t) {
       for (int bz = 0; bz < block; ++bz)
         for (int bx = 0; bx < block; ++bx) {
           const double px = jx * block + bx, pz = jz * block + bz;
-          oceanref::MapSample m = oceanref::sampleCascade(id, 0, t, px * texel, pz * texel);
+          oceanref::MapSample m = oceanref::sampleCascade(id, 0, t, px * texel, pz * texel, false);
           sum += m.slopes[0] * m.slopes[0] + m.slopes[1] * m.slopes[1];
         }
       e.supersampled += sum / (block * block);

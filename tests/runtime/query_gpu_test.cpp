@@ -332,9 +332,10 @@ TEST_P(QueryGpu, ParametersAHostSetsAreClampedAsTheRuntimeClampsThem) {
 // reads them, the query computes them in double (codegen/query_ocean.h). Per component and
 // cascade the float32 bound is the transform's error bound (ocean_transform_bound.h) times the
 // 2-norm of the fields packed with it (h, Dx, Dz and dh/dx share the GPU's first texture),
-// the texel coordinate's rounding 2^-24 (|u| + |v|) times the field's largest step between
-// neighbouring texels, 8 roundings of the field's largest value in the bilinear mix and the
-// weighted sum, and the fade weight's float32 distance and smoothstep (2^-24 (4 + 4.5 d /
+// the texel coordinate's rounding 2^-24 (|u| + |v|) times 1.5 times the field's largest step
+// between neighbouring texels (the slope of Catmull-Rom's cubic in u is at most 1.5 such
+// steps), 24 roundings of the field's largest value in the bicubic mix (16 products and 15
+// sums whose weights' magnitudes add to at most 1.25^2) and the weighted sum, and the fade weight's float32 distance and smoothstep (2^-24 (4 + 4.5 d /
 // start)) times that value; plus 2^-24 (|x0| + |z0| + sum of the largest D) twice for the
 // point and the sum. vk450 is not run here: the Vulkan vertex capture (query_vk_capture.h)
 // binds no ocean maps; the Vulkan runtime's maps are held to the same double reference by
@@ -411,7 +412,7 @@ TEST(QueryGpuOcean, OpenOceanAtFftSize512OnGlsl330AndEs300) {
         const double start = static_cast<float>(fade * sea->cascades.tileLengths[c]);
         const Scale& s = scales[c];
         b += ocean_test::transformBound(n) * (i == 1 ? 1.0 : lambda) * s.norm +
-             eps * texels * (std::abs(p.x0) + std::abs(p.z0)) * s.step[i] + 8 * eps * s.largest[i] +
+             1.5 * eps * texels * (std::abs(p.x0) + std::abs(p.z0)) * s.step[i] + 24 * eps * s.largest[i] +
              eps * (4 + 4.5 * distance / start) * s.largest[i];
         reach += s.largest[0] + s.largest[1] + s.largest[2];
       }

@@ -18,32 +18,45 @@ uniform sampler2D u_ocean0_slopes1;
 uniform sampler2D u_ocean0_displacement2;
 uniform sampler2D u_ocean0_slopes2;
 
-// The spectral ocean's readers (ocean_displacement, ocean_surface): its maps at a world point.
-
-// One ocean map (RGBA32F, n x n texels; texel (j, i) holds the field at x = j L / n,
-// z = i L / n, repeating every L) at the world point xz, bilinear between the four texels
-// around it. Four fetches rather than one filtered look-up: filtering a 32-bit float
-// texture needs OES_texture_float_linear on OpenGL ES and WebGL2, and a hardware filter
-// may keep as few as 8 fractional bits of its weights. The texel index wraps exactly
-// while it is below 2^24 (|x| below 2^24 L / n); beyond, the mask keeps it in range.
-vec4 wg_ocean_map(highp sampler2D map, vec2 xz, float texelsPerMetre, int n) {
-  vec2 u = xz * texelsPerMetre;
-  vec2 base = floor(u);
-  vec2 f = u - base;
-  float size = float(n);
-  ivec2 a = ivec2(base - size * floor(base / size)) & (n - 1);
-  ivec2 b = (a + 1) & (n - 1);
-  vec4 t00 = texelFetch(map, a, 0);
-  vec4 t10 = texelFetch(map, ivec2(b.x, a.y), 0);
-  vec4 t01 = texelFetch(map, ivec2(a.x, b.y), 0);
-  vec4 t11 = texelFetch(map, b, 0);
-  return mix(mix(t00, t10, f.x), mix(t01, t11, f.x), f.y);
-}
-
 // How much of a cascade of tile L a point at distance d from the camera keeps: 1 up to
 // fadeTiles L, 0 from 2 fadeTiles L, a smoothstep between (a mesh or a pixel far away
 // cannot carry waves that short). Not called when the fade is off.
 float wg_ocean_fade(float d, float start) { return 1.0 - smoothstep(start, 2.0 * start, d); }
+
+// Catmull-Rom's weights of the texels at -1, 0, 1 and 2 for the fraction t in [0, 1]: the
+// cubic through the two middle texels with the central differences as its slopes. They sum
+// to 1 and give the texel itself at t = 0.
+vec4 wg_ocean_cubic_weights(float t) {
+  float t2 = t * t;
+  float t3 = t2 * t;
+  return vec4(t2 - 0.5 * (t + t3), 1.0 + 1.5 * t3 - 2.5 * t2, 0.5 * t + 2.0 * t2 - 1.5 * t3, 0.5 * (t3 - t2));
+}
+
+// One row of the cubic read: the four texels xs of row z of level 0, weighted by w.
+vec4 wg_ocean_cubic_row(highp sampler2D map, ivec4 xs, int z, vec4 w) {
+  return w.x * texelFetch(map, ivec2(xs.x, z), 0) + w.y * texelFetch(map, ivec2(xs.y, z), 0) +
+         w.z * texelFetch(map, ivec2(xs.z, z), 0) + w.w * texelFetch(map, ivec2(xs.w, z), 0);
+}
+
+// A map (n x n texels) at the world point xz, bicubic (Catmull-Rom) between the 4 x 4
+// texels around it, wrapping as wg_ocean_map: the vertex stage's read (ocean_displacement).
+// The mesh near the camera is finer than a long cascade's texels, whose waves span 10 texels
+// or more: the cubic follows them to O(h^4) where a bilinear read errs by O(h^2), so that a
+// coarser grid of the same waves moves the mesh by a tenth as much (docs/ocean.md).
+vec4 wg_ocean_map_cubic(highp sampler2D map, vec2 xz, float texelsPerMetre, int n) {
+  vec2 u = xz * texelsPerMetre;
+  vec2 base = floor(u);
+  vec2 f = u - base;
+  float size = float(n);
+  int m = n - 1;
+  ivec2 a = ivec2(base - size * floor(base / size)) & m;
+  ivec4 xs = ivec4((a.x + m) & m, a.x, (a.x + 1) & m, (a.x + 2) & m);
+  ivec4 zs = ivec4((a.y + m) & m, a.y, (a.y + 1) & m, (a.y + 2) & m);
+  vec4 wx = wg_ocean_cubic_weights(f.x);
+  vec4 wz = wg_ocean_cubic_weights(f.y);
+  return wz.x * wg_ocean_cubic_row(map, xs, zs.x, wx) + wz.y * wg_ocean_cubic_row(map, xs, zs.y, wx) +
+         wz.z * wg_ocean_cubic_row(map, xs, zs.z, wx) + wz.w * wg_ocean_cubic_row(map, xs, zs.w, wx);
+}
 
 // Helpers shared by the wave and flow nodes (gerstner_waves, trochoid_wave, sine_normals,
 // ripple_normals, normal_map_scroll, normal_from_height, flow_map).
@@ -74,8 +87,8 @@ void main() {
   float n1_displaced_t2 = wg_ocean_fade(distance(n1_displaced_t0, u_camera_position), 1440.0);
   float n1_displaced_t3 = wg_ocean_fade(distance(n1_displaced_t0, u_camera_position), 288.0);
   float n1_displaced_t4 = wg_ocean_fade(distance(n1_displaced_t0, u_camera_position), 60.0);
-  vec4 n1_displaced_t5 = n1_displaced_t2 * wg_ocean_map(u_ocean0_displacement0, n1_displaced_t1, 2.1333334, 256) + n1_displaced_t3 * wg_ocean_map(u_ocean0_displacement1, n1_displaced_t1, 10.666667, 256) + n1_displaced_t4 * wg_ocean_map(u_ocean0_displacement2, n1_displaced_t1, 51.2, 256);
-  vec4 n1_displaced_t6 = n1_displaced_t2 * wg_ocean_map(u_ocean0_slopes0, n1_displaced_t1, 2.1333334, 256) + n1_displaced_t3 * wg_ocean_map(u_ocean0_slopes1, n1_displaced_t1, 10.666667, 256) + n1_displaced_t4 * wg_ocean_map(u_ocean0_slopes2, n1_displaced_t1, 51.2, 256);
+  vec4 n1_displaced_t5 = n1_displaced_t2 * wg_ocean_map_cubic(u_ocean0_displacement0, n1_displaced_t1, 2.1333334, 256) + n1_displaced_t3 * wg_ocean_map_cubic(u_ocean0_displacement1, n1_displaced_t1, 10.666667, 256) + n1_displaced_t4 * wg_ocean_map_cubic(u_ocean0_displacement2, n1_displaced_t1, 51.2, 256);
+  vec4 n1_displaced_t6 = n1_displaced_t2 * wg_ocean_map_cubic(u_ocean0_slopes0, n1_displaced_t1, 2.1333334, 256) + n1_displaced_t3 * wg_ocean_map_cubic(u_ocean0_slopes1, n1_displaced_t1, 10.666667, 256) + n1_displaced_t4 * wg_ocean_map_cubic(u_ocean0_slopes2, n1_displaced_t1, 51.2, 256);
   vec3 n1_displaced_position = (n1_displaced_t0 + n1_displaced_t5.xyz);
   vec3 n1_displaced_normal = wg_ocean_normal(n1_displaced_t6, n1_displaced_t5.w);
   vec3 n10_surface_position = (n1_displaced_position + vec3(0.0));

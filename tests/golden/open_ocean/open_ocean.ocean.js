@@ -313,18 +313,28 @@ const wgq_ocean_cascade = (h0, frequency, n, tile, lambda, tau, w, evolved, work
     }
   }
 };
+// Catmull-Rom's weights for the fraction t, as wg_ocean_map_cubic's; the read is bicubic
+// between the 4 x 4 texels around the point, as the vertex shader reads.
+const wgq_cubic_weights = (t) => {
+  const t2 = t * t, t3 = t2 * t;
+  return [t2 - 0.5 * (t + t3), 1.0 + 1.5 * t3 - 2.5 * t2, 0.5 * t + 2.0 * t2 - 1.5 * t3, 0.5 * (t3 - t2)];
+};
 const wgq_ocean_read = (maps, n, texelsPerMetre, weight, x, z, out) => {
   const u = x * texelsPerMetre, v = z * texelsPerMetre;
   if (!(wgq_finite(u) && wgq_finite(v))) return;
-  const bu = floor(u), bv = floor(v), fu = u - bu, fv = v - bv;
+  const bu = floor(u), bv = floor(v);
+  const wx = wgq_cubic_weights(u - bu), wz = wgq_cubic_weights(v - bv);
   const wu = bu - n * floor(bu / n), wv = bv - n * floor(bv / n);
   const ax = (wu >= 0.0 && wu < n ? wu : 0) & (n - 1), az = (wv >= 0.0 && wv < n ? wv : 0) & (n - 1);
-  const bx = (ax + 1) & (n - 1), bz = (az + 1) & (n - 1);
-  const t00 = 11 * (az * n + ax), t10 = 11 * (az * n + bx), t01 = 11 * (bz * n + ax), t11 = 11 * (bz * n + bx);
   for (let f = 0; f < 11; ++f) {
-    const bottom = maps[t00 + f] + (maps[t10 + f] - maps[t00 + f]) * fu;
-    const top = maps[t01 + f] + (maps[t11 + f] - maps[t01 + f]) * fu;
-    out[f] += weight * (bottom + (top - bottom) * fv);
+    let sum = 0.0;
+    for (let j = 0; j < 4; ++j) {
+      const row = ((az + j + n - 1) & (n - 1)) * n;
+      let r = 0.0;
+      for (let i = 0; i < 4; ++i) r += wx[i] * maps[11 * (row + ((ax + i + n - 1) & (n - 1))) + f];
+      sum += wz[j] * r;
+    }
+    out[f] += weight * sum;
   }
 };
 
