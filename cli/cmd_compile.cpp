@@ -214,11 +214,12 @@ std::string nowHms() {
 
 // What a build system needs to know about one compiled graph: the files written into
 // `dir` depend on the graph's file, every graph it imports, every PNG it samples and every
-// .glsl file its function nodes call. The
-// node textures `--textures` writes are not named as targets: their names come from the
-// graph, which a build system has not read when it declares a rule's outputs (Ninja refuses
-// a depfile naming an output the rule did not declare); they are written by the same
-// command as the manifest, so they are current whenever it is.
+// .glsl file its function nodes call. The node textures `--textures` writes and a spectral
+// ocean's web module (<graph>.ocean.js, es300 and wgsl) are not named as targets: whether
+// they exist, and the textures' names, come from the graph, which a build system has not
+// read when it declares a rule's outputs (Ninja refuses a depfile naming an output the rule
+// did not declare); they are written by the same command as the manifest, so they are
+// current whenever it is.
 DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, const std::string& dir) {
   DepfileRule rule;
   auto isNodeTexture = [&](const std::string& name) {
@@ -226,7 +227,7 @@ DepfileRule dependenciesOf(const Graph& graph, const CompileResult& result, cons
                        [&](const TextureInfo& t) { return !t.source.empty() && t.file == name; });
   };
   for (const auto& f : result.files)
-    if (!isNodeTexture(f.name)) rule.outputs.push_back(dir + "/" + f.name);
+    if (!isNodeTexture(f.name) && f.name != result.manifest.oceanModule) rule.outputs.push_back(dir + "/" + f.name);
   // The manifest first: Ninja takes a depfile's first target for the build edge's first
   // output, and watergraph_add_shaders (cmake/WatergraphShaders.cmake) lists it first.
   std::stable_partition(rule.outputs.begin(), rule.outputs.end(),

@@ -272,6 +272,21 @@ TEST(Usability, ADepfileDoesNotNameTheNodeTexturesAsTargets) {
   EXPECT_EQ(targets.find(".png"), std::string::npos) << d;
 }
 
+// The same for a spectral ocean's web module: watergraph_add_shaders cannot know whether a
+// graph has an ocean, so <graph>.ocean.js (written for es300 and wgsl) is not a target either.
+TEST(Usability, ADepfileDoesNotNameAnOceansWebModuleAsATarget) {
+  eco::TempDir tmp;
+  std::string ocean = test::sourcePath("graphs/open_ocean.json");
+  auto r = eco::wgRun("compile " + shellQuote(ocean) + " -o " + shellQuote(tmp / "out") +
+                      " --target es300 --depfile " + shellQuote(tmp / "open_ocean.d"));
+  ASSERT_EQ(r.exit, 0) << r.err;
+  ASSERT_TRUE(std::filesystem::exists(tmp / "out/open_ocean.ocean.js")) << "no ocean module written";
+  std::string d = test::readFile(tmp / "open_ocean.d");
+  const std::string targets = d.substr(0, d.find(':'));
+  EXPECT_NE(targets.find("open_ocean.es300.frag"), std::string::npos) << d;
+  EXPECT_EQ(targets.find("ocean.js"), std::string::npos) << d;
+}
+
 // Found in review: a --depfile that cannot be written (a folder in its place, a file where
 // its folder would be made) failed after every graph's files were written: found first now,
 // nothing written.

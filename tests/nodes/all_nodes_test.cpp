@@ -74,7 +74,9 @@ TEST(AllNodes, HaveDocumentation) {
     // A node whose every output is a handle (an ocean) has no value to hold to a tolerance.
     bool handlesOnly = !s->outputs.empty();
     for (const auto& p : s->outputs) handlesOnly = handlesOnly && p.kind == PortKind::Fixed && isOpaque(p.type);
-    if (!handlesOnly) EXPECT_GT(s->tolerance, 0.0);
+    if (!handlesOnly) {
+      EXPECT_GT(s->tolerance, 0.0);
+    }
   }
 }
 

@@ -77,7 +77,7 @@ Value mirroredSun(double distance) {
 
 // The point-sampled specular (brdf * N.L per unit sun) at q: the unfiltered sums of the maps.
 double pointSpecular(int ocean, double t, V3 q, const std::vector<double>& weights, const Value& sun, double roughness) {
-  const oceanref::MapSample m = oceanread::sum(ocean, t, q.x, q.z, weights);
+  const oceanref::MapSample m = oceanread::sum(ocean, t, q.x, q.z, weights, oceanread::MapRead::Bilinear);
   const GgxTerms g = ggxSpecularReference(oceanread::normalOf(m), value(kCamera + q * -1.0), sun, roughness, 0.02);
   return g.brdf * g.ndotl;
 }
