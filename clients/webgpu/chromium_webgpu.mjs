@@ -35,7 +35,8 @@ export function takeChromiumOption(argv) {
 const clientDir = path.dirname(fileURLToPath(import.meta.url));
 
 // Starts Chromium on a page of this client folder (its scripts and node_modules served under
-// '/', nothing outside it), asks the page for an adapter and a device with `features` where
+// '/', and the three.js client's folder under '/three/' for the ocean plan both clients share;
+// nothing else), asks the page for an adapter and a device with `features` where
 // the adapter offers them, and leaves the device in window.wgDevice. Returns {page, device
 // (the adapter's name), close()}. Throws WebgpuUnavailable.
 export async function openWebgpuPage(chromiumPath, { title = 'watergraph WebGPU', features = [] } = {}) {
@@ -50,7 +51,8 @@ export async function openWebgpuPage(chromiumPath, { title = 'watergraph WebGPU'
   } catch (e) {
     throw new WebgpuUnavailable(`cannot load playwright-core (run \`npm ci\` in clients/webgpu): ${e.message}`);
   }
-  const roots = { '/': clientDir };
+  // '/three/' first: a request takes the first root its path starts with.
+  const roots = { '/three/': path.resolve(clientDir, '../three'), '/': clientDir };
   const server = createServer((req, res) => {
     if (new URL(req.url, 'http://127.0.0.1').pathname === '/') {
       res.writeHead(200, { 'content-type': 'text/html' });
