@@ -10,8 +10,7 @@ namespace wg::rt {
 VkWaterBindings::VkWaterBindings(VkContext& context, const Manifest& manifest,
                                  const std::function<SceneImage(SceneSampler)>& sceneImage,
                                  const std::function<VkImageOwner*(const OceanMapRef&)>& oceanMap,
-                                 const std::map<std::string, TextureOrigin>& origins)
-    : context_(context) {
+                                 const std::map<std::string, TextureOrigin>& origins) {
   const VkDevice device = context.device();
   // The block: every non-sampler uniform in manifest order (= the shaders' declaration order).
   size_t end = 0;

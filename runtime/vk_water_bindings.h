@@ -53,7 +53,6 @@ class VkWaterBindings {
     std::vector<float> value;  // a parameter's, clamped into its range
     BlockMember member;
   };
-  VkContext& context_;
   std::vector<Uniform> uniforms_;
   size_t blockSize_ = 0;
   VkBufferOwner block_;
