@@ -20,6 +20,7 @@
 
 #include "accuracy/tune_knobs.h"
 #include "accuracy/tune_render.h"
+#include "core/frame_size_text.h"
 #include "core/graph_io.h"
 
 namespace {
@@ -79,7 +80,10 @@ int main(int argc, char** argv) {
       sweep.times.clear();
       for (const auto& t : split(next(), ',')) sweep.times.push_back(std::strtod(t.c_str(), nullptr));
     } else if (a == "--size") {
-      if (std::sscanf(next().c_str(), "%dx%d", &sweep.width, &sweep.height) != 2) usage("--size is WxH");
+      const auto size = parseFrameSizeText(next(), 4);
+      if (!size || size->width < 8 || size->height < 8) usage("--size is WIDTHxHEIGHT, each side 8..9999");
+      sweep.width = size->width;
+      sweep.height = size->height;
     } else if (a == "--runs") {
       sweep.runs = std::max(1, std::atoi(next().c_str()));
     } else if (graphPath.empty()) {
