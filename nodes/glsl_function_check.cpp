@@ -4,6 +4,7 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 
+#include <algorithm>
 #include <cctype>
 #include <functional>
 #include <map>
@@ -295,6 +296,17 @@ FunctionCheckFault syntaxFault(const FunctionParse& p, const std::string& text, 
   f.where.line = p.error.line > 0 ? p.error.line : 1;
   f.where.col = p.error.line > 0 ? errorColumn(text, p.error.line, p.error.text) : 1;
   f.message = what + "glslang (" + kFunctionTargetNames[target] + ") refuses it: " + p.error.text;
+  // glslang reads the file and then an empty main() on the line after its last: an error
+  // there is the file ending inside a declaration, placed where the file ends. (glslang
+  // counts lines at LF alone, as this file's line numbers do: a lone CR ends none.)
+  const int lastLine = 1 + static_cast<int>(std::count(text.begin(), text.end(), '\n'));
+  if (f.where.line > lastLine) {
+    const std::size_t lastStart = text.rfind('\n');
+    f.where.line = lastLine;
+    f.where.col = static_cast<int>(text.size() - (lastStart == std::string::npos ? 0 : lastStart + 1)) + 1;
+    f.message = what + "the file ends inside a declaration; glslang (" + kFunctionTargetNames[target] +
+                ") refuses it: " + p.error.text;
+  }
   return f;
 }
 

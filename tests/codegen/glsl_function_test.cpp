@@ -190,6 +190,23 @@ TEST(GlslFunctionNodeBadInput, AnUndeclaredNameIsFoundAtItsColumn) {
               "undeclared identifier");
 }
 
+// glslang counts lines at LF alone (a CRLF's LF; a lone CR ends none), and so does the column
+// finder: the error is on the line glslang names, whichever end the file's lines have.
+TEST(GlslFunctionNodeBadInput, AnUndeclaredNameIsFoundAtItsColumnWhateverTheLineEnds) {
+  expectFault("float f(float a) {\r\n  return a * u_time;\r\n}\r\n", "f", {DiagCode::FunctionFileSyntax, "f.glsl", 2, 14},
+              "undeclared identifier");
+  expectFault("float f(float a) {\r  return a * u_time;\r}\r\nconst float g = 1.0;\n", "f", {DiagCode::FunctionFileSyntax, "f.glsl", 1, 33},
+              "undeclared identifier");
+}
+
+// A file that ends inside a declaration glslang alone sees unfinished (a lone CR ends the
+// comment, not the line): glslang finds the error in the empty main() the check reads after
+// the file, on a line the file does not have; it is placed where the file ends, and says so.
+TEST(GlslFunctionNodeBadInput, AFileEndingInsideADeclarationIsPlacedAtItsEnd) {
+  expectFault("// a comment\rfloat f(out\rvec3", "f", {DiagCode::FunctionFileSyntax, "f.glsl", 1, 30},
+              "the file ends inside a declaration");
+}
+
 TEST(GlslFunctionNodeBadInput, OneTargetRefusingIsEnough) {
   // GLSL 3.30 converts the int; GLSL ES 3.00 converts nothing implicitly.
   expectFault("float f(float a) {\n  return a + 1;\n}\n", "f", {DiagCode::FunctionFileSyntax, "f.glsl", 2, 12}, "es300");

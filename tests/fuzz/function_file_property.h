@@ -44,10 +44,9 @@ inline std::string functionFileProperty(std::string_view bytes, const std::files
   if (std::string why = generatedCodeRejected(diags); !why.empty()) return why;
   if (result) return diags.hasErrors() ? failure("a result returned with errors", diags) : "";
   if (std::string why = checkErrors(diags); !why.empty()) return why;
-  // Lines as glslang and editors count them: LF, CRLF and a lone CR each end one.
+  // Lines as glslang counts them, and so the diagnostics: at LF alone (a lone CR ends none).
   long lines = 1;
-  for (std::size_t i = 0; i < bytes.size(); ++i)
-    lines += bytes[i] == '\n' || (bytes[i] == '\r' && (i + 1 == bytes.size() || bytes[i + 1] != '\n'));
+  for (char c : bytes) lines += c == '\n';
   for (const auto& d : diags.all())
     if (d.where.file.str().ends_with("f.glsl") && d.where.line > lines)
       return failure("an error placed after the file's last line", diags);
