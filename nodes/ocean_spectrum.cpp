@@ -64,6 +64,36 @@ std::vector<nlohmann::json> cascadeSizeLevels(const nlohmann::json& written) {
   return levels;
 }
 
+// The tune levels of cascade_count for a node as written: the longest tile alone, then one
+// tile more at each level, to every tile listed (the reference). A sea of one tile has none.
+std::vector<nlohmann::json> cascadeCountLevels(const nlohmann::json& written) {
+  const nlohmann::json tiles = written.value("tile_lengths", defaultTileLengths());
+  if (!tiles.is_array() || tiles.size() < 2 || tiles.size() > static_cast<size_t>(ocean::kMaxCascades)) return {};
+  std::vector<nlohmann::json> levels;
+  for (size_t n = 1; n <= tiles.size(); ++n) levels.push_back(static_cast<int>(n));
+  return levels;
+}
+
+OptionSpec cascadeCountOption() {
+  OptionSpec o = ports::integer(
+      "cascade_count", ocean::kMaxCascades, 1, ocean::kMaxCascades,
+      "how many of tile_lengths' tiles are simulated, the longest first (more than listed: all). The last one "
+      "simulated carries every wave its grid holds, so fewer cascades drop only the waves shorter than its grid "
+      "reaches. Quality knob: the longest tile alone, then one tile more a level, to every tile listed");
+  o.levelsFor = cascadeCountLevels;
+  return o;
+}
+
+// cascade_count keeps the first `count` tiles (and their cascade_sizes), the longest first.
+// Only lists that are meaningful as written are cut, so that an error in a tile or size the
+// count drops is still reported (checkOptions validates what the parser returns).
+void keepFirstCascades(ocean::CascadeSettings& c, int count) {
+  if (ocean::validateCascades(c)) return;
+  const size_t n = std::min(c.tileLengths.size(), static_cast<size_t>(std::max(count, 1)));
+  c.tileLengths.resize(n);
+  if (!c.sizes.empty()) c.sizes.resize(n);
+}
+
 // An Integer option past int's range: any 32-bit seed.
 OptionSpec seedOption() {
   OptionSpec o = ports::integer("seed", 0, 0, 0, "the random sea's seed, a whole number from 0 to 2^32 - 1");
@@ -111,6 +141,7 @@ ocean::OceanSettings parseOceanSettings(const OptionReader& o) {
   for (const auto& n : o.json("cascade_sizes")) c.sizes.push_back(static_cast<int>(n.get<double>()));
   c.choppiness = o.number("choppiness");
   c.seed = o.wholeNumber("seed");
+  keepFirstCascades(c, o.integer("cascade_count"));
   ocean::FoamSettings& f = s.foam;
   f.threshold = o.number("foam_threshold");
   f.growth = o.number("foam_growth");
@@ -185,6 +216,7 @@ NodeSpec oceanSpectrumNode() {
                                  "fewer drop the shortest waves (cascade_sizes can lower it per cascade)"),
                   {64, 128, 256}),
       cascadeSizesOption(),
+      cascadeCountOption(),
       ports::number("choppiness", 1, 0, 4,
                     "lambda: the horizontal displacement's scale; positive "
                     "sharpens crests"),

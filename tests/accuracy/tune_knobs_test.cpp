@@ -149,6 +149,39 @@ TEST(TuneKnobs, TheOceansCascadeSizesLevelsFollowItsCascades) {
   EXPECT_FALSE(find(graphKnobs(one), "sea.cascade_sizes"));
 }
 
+// cascade_count's levels follow the tiles the node lists: the longest alone, then one more a
+// level, to all of them (the reference). A level below reads fewer cascades' maps: the
+// shaders and the manifest's options change. A sea of one tile has no such knob.
+TEST(TuneKnobs, TheOceansCascadeCountLevelsFollowItsTiles) {
+  Graph g = parse(R"({"version": 1, "name": "sea", "nodes": [
+    {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [120, 24, 5], "fft_size": 64}},
+    {"id": "detail", "type": "ocean_surface", "inputs": {"ocean": "sea.ocean", "position": [0, 0, 0]}}],
+    "outputs": {"fragment": {"color": "detail.normal"}}})");
+  std::vector<std::string> unchanged;
+  std::vector<TuneKnob> knobs = distinctKnobLevels(g, graphKnobs(g), Target::Glsl330, unchanged);
+  const TuneKnob* count = find(knobs, "sea.cascade_count");
+  ASSERT_TRUE(count);
+  EXPECT_EQ(nlohmann::json(count->levels).dump(), "[1,2,3]");
+  TuneConfig exact(knobs.size());
+  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
+  TuneConfig config = exact;
+  config[static_cast<size_t>(count - knobs.data())] = 0;
+  Graph cheap = withKnobLevels(g, knobs, config);
+  const std::string cheapFrag = fileOf(cheap, ".glsl330.frag"), exactFrag = fileOf(withKnobLevels(g, knobs, exact), ".glsl330.frag");
+  EXPECT_NE(cheapFrag, exactFrag);
+  // The reference reads the three cascades' slopes, the cheapest level the longest one's only.
+  EXPECT_NE(exactFrag.find("u_ocean0_slopes2"), std::string::npos);
+  EXPECT_NE(cheapFrag.find("u_ocean0_slopes0"), std::string::npos);
+  EXPECT_EQ(cheapFrag.find("u_ocean0_slopes1"), std::string::npos);
+  EXPECT_NE(fileOf(cheap, ".manifest.json").find(R"("cascade_count": 1)"), std::string::npos);
+
+  Graph one = parse(R"({"version": 1, "name": "sea", "nodes": [
+    {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [40]}},
+    {"id": "detail", "type": "ocean_surface", "inputs": {"ocean": "sea.ocean", "position": [0, 0, 0]}}],
+    "outputs": {"fragment": {"color": "detail.normal"}}})");
+  EXPECT_FALSE(find(graphKnobs(one), "sea.cascade_count"));
+}
+
 TEST(TuneKnobs, TheOceansFoamStepIsTunedThoughItChangesNoShader) {
   Graph g = parse(R"({"version": 1, "name": "sea", "nodes": [
     {"id": "sea", "type": "ocean_spectrum", "options": {"tile_lengths": [40], "fft_size": 64}},
