@@ -43,6 +43,19 @@ const TuneKnob* find(const std::vector<TuneKnob>& knobs, const std::string& name
   return it == knobs.end() ? nullptr : &*it;
 }
 
+// Every knob at its most exact level (the reference tune measures against).
+TuneConfig mostExact(const std::vector<TuneKnob>& knobs) {
+  TuneConfig config(knobs.size());
+  for (size_t k = 0; k < knobs.size(); ++k) config[k] = static_cast<int>(knobs[k].levels.size()) - 1;
+  return config;
+}
+
+// `config` with knob `knob` (a pointer into `knobs`) at `level`.
+TuneConfig withLevel(TuneConfig config, const std::vector<TuneKnob>& knobs, const TuneKnob* knob, int level) {
+  config[static_cast<size_t>(knob - knobs.data())] = level;
+  return config;
+}
+
 std::string fileOf(const Graph& g, const std::string& suffix) {
   Diagnostics d;
   CompileOptions o;
@@ -72,11 +85,8 @@ TEST(TuneKnobs, WaveCountAndTessellationFactorAreKnobsWithTheirDistinctLevels) {
   EXPECT_EQ(nlohmann::json(factor->levels).dump(), "[1,2,4,8,16]");
 
   // A level changes the shaders: the first wave only; a factor of 4 in the control stage.
-  TuneConfig exact(knobs.size());
-  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
-  TuneConfig cheap = exact;
-  cheap[static_cast<size_t>(waves - knobs.data())] = 0;
-  cheap[static_cast<size_t>(factor - knobs.data())] = 2;
+  const TuneConfig exact = mostExact(knobs);
+  const TuneConfig cheap = withLevel(withLevel(exact, knobs, waves, 0), knobs, factor, 2);
   Graph exactGraph = withKnobLevels(g, knobs, exact), cheapGraph = withKnobLevels(g, knobs, cheap);
   EXPECT_EQ(test::glslCalls(fileOf(exactGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 3u) << fileOf(exactGraph, ".glsl330.tese");
   EXPECT_EQ(test::glslCalls(fileOf(cheapGraph, ".glsl330.tese"), "wg_gerstner_wave_add"), 1u);
@@ -107,10 +117,7 @@ TEST(TuneKnobs, SceneResolutionIsTunedThoughItChangesNoShader) {
   const TuneKnob* color = find(knobs, "c.resolution");
   ASSERT_TRUE(depth && color);
   EXPECT_EQ(nlohmann::json(depth->levels).dump(), "[0.25,0.5,0.75,1.0]");
-  TuneConfig config(knobs.size());
-  for (size_t k = 0; k < knobs.size(); ++k) config[k] = static_cast<int>(knobs[k].levels.size()) - 1;
-  config[static_cast<size_t>(depth - knobs.data())] = 1;
-  config[static_cast<size_t>(color - knobs.data())] = 0;
+  const TuneConfig config = withLevel(withLevel(mostExact(knobs), knobs, depth, 1), knobs, color, 0);
   std::string manifest = fileOf(withKnobLevels(g, knobs, config), ".manifest.json");
   EXPECT_NE(manifest.find(R"("depth_prepass": 0.5,)"), std::string::npos) << manifest;
   EXPECT_NE(manifest.find(R"("scene_color_copy": 0.25)"), std::string::npos) << manifest;
@@ -134,10 +141,8 @@ TEST(TuneKnobs, TheOceansCascadeSizesLevelsFollowItsCascades) {
   ASSERT_TRUE(sizes);
   EXPECT_EQ(nlohmann::json(sizes->levels).dump(), "[[32,32,128],[64,64,128],[]]");
   // A level changes the shaders (the readers' texel scales) and the manifest's options.
-  TuneConfig exact(knobs.size());
-  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
-  TuneConfig config = exact;
-  config[static_cast<size_t>(sizes - knobs.data())] = 0;
+  const TuneConfig exact = mostExact(knobs);
+  const TuneConfig config = withLevel(exact, knobs, sizes, 0);
   Graph cheap = withKnobLevels(g, knobs, config);
   EXPECT_NE(fileOf(cheap, ".glsl330.frag"), fileOf(withKnobLevels(g, knobs, exact), ".glsl330.frag"));
   EXPECT_NE(fileOf(cheap, ".manifest.json").find(R"("cascade_sizes": [)"), std::string::npos);
@@ -162,10 +167,8 @@ TEST(TuneKnobs, TheOceansCascadeCountLevelsFollowItsTiles) {
   const TuneKnob* count = find(knobs, "sea.cascade_count");
   ASSERT_TRUE(count);
   EXPECT_EQ(nlohmann::json(count->levels).dump(), "[1,2,3]");
-  TuneConfig exact(knobs.size());
-  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
-  TuneConfig config = exact;
-  config[static_cast<size_t>(count - knobs.data())] = 0;
+  const TuneConfig exact = mostExact(knobs);
+  const TuneConfig config = withLevel(exact, knobs, count, 0);
   Graph cheap = withKnobLevels(g, knobs, config);
   const std::string cheapFrag = fileOf(cheap, ".glsl330.frag"), exactFrag = fileOf(withKnobLevels(g, knobs, exact), ".glsl330.frag");
   EXPECT_NE(cheapFrag, exactFrag);
@@ -195,10 +198,8 @@ TEST(TuneKnobs, TheOceansFoamStepIsTunedThoughItChangesNoShader) {
   ASSERT_TRUE(step && size);
   EXPECT_EQ(nlohmann::json(step->levels).dump(), "[0.2,0.1]");
   EXPECT_EQ(nlohmann::json(size->levels).dump(), "[64,128,256]");
-  TuneConfig exact(knobs.size());
-  for (size_t k = 0; k < knobs.size(); ++k) exact[k] = static_cast<int>(knobs[k].levels.size()) - 1;
-  TuneConfig config = exact;
-  config[static_cast<size_t>(step - knobs.data())] = 0;
+  const TuneConfig exact = mostExact(knobs);
+  const TuneConfig config = withLevel(exact, knobs, step, 0);
   Graph cheap = withKnobLevels(g, knobs, config);
   EXPECT_EQ(fileOf(cheap, ".glsl330.frag"), fileOf(withKnobLevels(g, knobs, exact), ".glsl330.frag"));
   EXPECT_NE(fileOf(cheap, ".manifest.json").find(R"("foam_step": 0.2)"), std::string::npos) << fileOf(cheap, ".manifest.json");
