@@ -2,6 +2,7 @@
 
 #include "accuracy/gpu_executor.h"
 #include "runtime/runtime_error.h"
+#include "runtime/scene_description.h"
 
 namespace wg::accuracy {
 namespace {
@@ -10,6 +11,8 @@ using rt::RuntimeError;
 
 // How long Chromium may take to start and hand out an adapter.
 constexpr int kWebgpuStartSeconds = 120;
+// How long the page may take to take the scene description.
+constexpr int kWebgpuSceneSeconds = 120;
 
 }  // namespace
 
@@ -40,6 +43,13 @@ nlohmann::json WebgpuSession::request(const nlohmann::json& job, int timeoutSeco
     throw RuntimeError(RuntimeError::Kind::Driver, what + ": " + (error.is_string() ? error.get<std::string>() : error.dump()));
   }
   return reply;
+}
+
+void WebgpuSession::sendSceneOnce() {
+  if (sceneSent_) return;
+  request({{"kind", "scene"}, {"description", nlohmann::json::parse(rt::sceneDescriptionJson(rt::SceneOptions{}))}},
+          kWebgpuSceneSeconds, "the scene description");
+  sceneSent_ = true;
 }
 
 }  // namespace wg::accuracy

@@ -26,14 +26,16 @@ class WebgpuSession {
   // when the helper fails or is silent for `timeoutSeconds`. `what` names the job in messages.
   nlohmann::json request(const nlohmann::json& job, int timeoutSeconds, const std::string& what);
 
-  // Whether the scene description was sent (check sends it once, before the first water).
-  bool sceneSent = false;
+  // Sends the runtime's scene description (`watergraph scene`) once per session: check's
+  // waters and a probe of ocean maps (whose simulation runs its pass shaders) need it first.
+  void sendSceneOnce();
   // Ids for check's waters, unique within the session.
   int nextWaterId = 0;
 
  private:
   std::unique_ptr<JsonLineProcess> helper_;
   std::string device_;
+  bool sceneSent_ = false;
 };
 
 }  // namespace wg::accuracy

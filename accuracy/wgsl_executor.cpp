@@ -7,8 +7,8 @@
 // (wgslUniformLayout), each scene texture is a 1x1 RGBA32F texture holding the case's texel
 // (nearest), a node texture is uploaded as the runtime uploads it, and the pixels come back as
 // their float32 bit patterns (NaN and Inf included); a mipmapped node texture with its full
-// chain (clients/webgpu/watergraph-webgpu-mipmaps.js). Spectral ocean maps are not in this
-// runner (Kind::Manifest).
+// chain (clients/webgpu/watergraph-webgpu-mipmaps.js); the spectral oceans' maps from the page's
+// own simulation (clients/webgpu/watergraph-webgpu-ocean.js, the runner's) at each case's time.
 #include <bit>
 #include <cstdint>
 
@@ -19,6 +19,8 @@
 #include "accuracy/probe_gpu.h"
 #include "codegen/compile_wgsl.h"
 #include "codegen/emit_wgsl.h"
+#include "codegen/ocean_module_js.h"
+#include "core/ocean_settings.h"
 #include "codegen/readback_taps.h"
 #include "nodes/texture_source.h"
 #include "runtime/runtime_error.h"
@@ -47,6 +49,21 @@ void writeWgslUniform(std::vector<std::uint32_t>& words, const WgslUniformMember
     default:
       for (size_t i = 0; i < m.size / 4; ++i) f32(at + i, v.c[i]);
   }
+}
+
+// What the page needs to simulate the oceans a probe module reads
+// (clients/webgpu/watergraph-webgpu-probe.js): the manifest's "oceans" and its ocean maps, as
+// a manifest writes them, and the ocean module a compile writes for web targets.
+nlohmann::json probeOcean(const EmitResult& shader, const Program& program) {
+  nlohmann::json oceans = nlohmann::json::array(), maps = nlohmann::json::array();
+  for (const OceanInfo& o : shader.oceans) oceans.push_back({{"node", o.nodeId}, {"filtered", o.filtered}, {"options", o.options}});
+  for (const TextureInfo& t : shader.textures)
+    if (t.ocean)
+      maps.push_back({{"name", t.name},
+                      {"ocean", {{"ocean", t.ocean->ocean}, {"cascade", t.ocean->cascade}, {"map", ocean::kOceanMapNames[t.ocean->map]}}}});
+  const std::string graph = program.graphName.empty() ? "probe" : program.graphName;
+  return {{"manifest", {{"graph", graph}, {"oceans", std::move(oceans)}, {"textures", std::move(maps)}}},
+          {"module", oceanModuleJs(graph, program, shader.oceans)}};
 }
 
 class WgslExecutor : public GpuExecutor {
@@ -78,10 +95,10 @@ class WgslExecutor : public GpuExecutor {
     for (size_t k = 0; k < shader.textures.size(); ++k) {
       const TextureInfo& t = shader.textures[k];
       nlohmann::json entry = {{"binding", wgslTextureBinding(k)}, {"cube", t.type == Type::SamplerCube}};
-      if (t.ocean)
-        throw RuntimeError(RuntimeError::Kind::Manifest,
-                           what + ": the WebGPU probe has no spectral ocean simulation (its maps come from the runtime's)");
-      if (t.scene) {
+      if (t.ocean) {
+        entry["kind"] = "ocean";
+        entry["ocean"] = {{"ocean", t.ocean->ocean}, {"cascade", t.ocean->cascade}, {"map", ocean::kOceanMapNames[t.ocean->map]}};
+      } else if (t.scene) {
         entry["kind"] = "scene";
         sceneTextures.push_back(k);
       } else {
@@ -100,6 +117,10 @@ class WgslExecutor : public GpuExecutor {
       textures.push_back(std::move(entry));
     }
     request["textures"] = std::move(textures);
+    if (!shader.oceans.empty()) {
+      session_.sendSceneOnce();  // the simulation runs the description's pass shaders
+      request["ocean"] = probeOcean(shader, program);
+    }
     nlohmann::json runs = nlohmann::json::array();
     for (size_t i = 0; i < cases.size(); ++i) {
       std::vector<std::uint32_t> words(bufferSize / 4, 0);
@@ -115,7 +136,7 @@ class WgslExecutor : public GpuExecutor {
         for (float f : texel) bits.push_back(std::bit_cast<std::uint32_t>(f));
         texels.push_back(std::move(bits));
       }
-      runs.push_back({{"uniforms", words}, {"texels", std::move(texels)}});
+      runs.push_back({{"uniforms", words}, {"texels", std::move(texels)}, {"time", cases[i].env.time[0]}});
     }
     request["cases"] = std::move(runs);
     nlohmann::json reply = session_.request(request, kWebgpuProbeSeconds, what);

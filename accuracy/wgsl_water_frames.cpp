@@ -93,11 +93,7 @@ class WgslWaterFrames : public WaterFrames {
       buffer_.push_back(std::move(b));
     }
     bufferSize_ = end == 0 ? 0 : wgslUniformBufferSize(end);
-    if (!session_.sceneSent) {
-      session_.request({{"kind", "scene"}, {"description", nlohmann::json::parse(rt::sceneDescriptionJson(rt::SceneOptions{}))}},
-                       kWgslWaterSeconds, "the scene description");
-      session_.sceneSent = true;
-    }
+    session_.sendSceneOnce();
     const rt::Mesh grid = rt::buildWaterGrid(settings.waterGridQuads);
     nlohmann::json textures = nlohmann::json::array();
     const std::map<std::string, rt::TextureOrigin> origins = rt::textureOrigins(result);

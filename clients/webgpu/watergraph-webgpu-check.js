@@ -58,15 +58,29 @@ async function oceanSimulation(device, manifest, moduleText) {
   }
 }
 
-// The runtime's scene shaders through naga, once per set of G-buffer inputs.
-async function sceneShadersFor(manifest) {
+// naga (the runtime's GLSL ES shaders to WGSL), loaded once for the page.
+async function loadNaga() {
   if (!state.naga) {
     const naga = await import('./node_modules/naga-wasm/dist/index.js');
     await naga.init({ module_or_path: new URL('./node_modules/naga-wasm/dist/wasm/naga_bg.wasm', import.meta.url) });
     state.naga = { parseGlsl: naga.parseGlsl, validate: naga.validate, writeWgsl: naga.writeWgsl };
   }
+  return state.naga;
+}
+
+// The runtime's scene shaders through naga, once per set of G-buffer inputs.
+async function sceneShadersFor(manifest) {
+  await loadNaga();
   state.sceneShaders ??= new SceneShaderCache(state.description, state.naga);
   return state.sceneShaders.forManifest(manifest);
+}
+
+// For the probe (watergraph-webgpu-probe.js): the simulation of the oceans a probe module
+// reads, from the scene description check's 'scene' job sent and the probe's ocean module.
+export async function probeOceanSimulation(device, manifest, moduleText) {
+  if (!state.description) throw new Error('an ocean probe before the scene description');
+  await loadNaga();
+  return oceanSimulation(device, manifest, moduleText);
 }
 
 export async function runCheckJob(device, job) {

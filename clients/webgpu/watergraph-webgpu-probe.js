@@ -9,9 +9,15 @@
 //     case's texel, sampled nearest (every fetch returns it, as the double reference assumes);
 //     [{binding, kind: "file", width, height, rgba (base64, row 0 first), wrap, filter, srgb}]
 //     a node texture as the runtime uploads it (a mipmapped one with its full chain);
+//     [{binding, kind: "ocean", ocean: {ocean, cascade, map}}] a map of the spectral ocean the
+//     job's `ocean` describes, simulated at each case's time;
+//   ocean (only with ocean maps): {manifest: {graph, oceans, textures} as a manifest has them,
+//     module: the <graph>.ocean.js text}; check's 'scene' job must have come first (the
+//     simulation runs the description's pass shaders, watergraph-webgpu-ocean.js);
 //   cases: [{uniforms: the buffer's 32-bit words, texels: per scene texture 4 float32 bit
-//     patterns}].
+//     patterns, time: seconds (the ocean's)}].
 // Returns the pixels as 4 float32 bit patterns per case (NaN and Inf survive the trip).
+import { probeOceanSimulation } from './watergraph-webgpu-check.js';
 import { fullChainLevels, generateMipmaps } from './watergraph-webgpu-mipmaps.js';
 
 const ADDRESS_MODES = { repeat: 'repeat', clamp: 'clamp-to-edge', mirror: 'mirror-repeat' };
@@ -36,8 +42,18 @@ export async function runProbeCases(device, job) {
   // Entries every case shares (node textures and their samplers), and the scene textures' slots.
   const shared = [];
   const sceneSlots = [];
+  const ocean = job.ocean ? await probeOceanSimulation(device, job.ocean.manifest, job.ocean.module) : null;
   for (const t of job.textures) {
     const dimension = t.cube ? 'cube' : '2d';
+    if (t.kind === 'ocean') {
+      // Read with textureLoad, as the water reads the maps: unfilterable, the sampler unused.
+      if (!ocean) throw new Error(`${job.what}: an ocean map without the job's ocean`);
+      layoutEntries.push({ binding: t.binding, visibility, texture: { sampleType: 'unfilterable-float' } });
+      layoutEntries.push({ binding: t.binding + 1, visibility, sampler: { type: 'non-filtering' } });
+      shared.push({ binding: t.binding, resource: ocean.map(t.ocean).createView() });
+      shared.push({ binding: t.binding + 1, resource: device.createSampler({ magFilter: 'nearest', minFilter: 'nearest' }) });
+      continue;
+    }
     if (t.kind === 'scene') {
       layoutEntries.push({ binding: t.binding, visibility, texture: { sampleType: 'unfilterable-float', viewDimension: dimension } });
       layoutEntries.push({ binding: t.binding + 1, visibility, sampler: { type: 'non-filtering' } });
@@ -72,10 +88,24 @@ export async function runProbeCases(device, job) {
   const width = Math.min(n, 1024), height = Math.ceil(n / 1024);
   const target = own(device.createTexture({ size: [width, height], format: 'rgba32float',
     usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC }));
-  const encoder = device.createCommandEncoder();
-  const pass = encoder.beginRenderPass({ colorAttachments: [{ view: target.createView(), clearValue: [0, 0, 0, 0], loadOp: 'clear', storeOp: 'store' }] });
-  pass.setPipeline(pipeline);
+  // One render pass per run of cases at one ocean time (one for all without an ocean), each
+  // after the simulation's passes for that time.
+  let encoder = device.createCommandEncoder();
+  let pass = null;
+  let passTime;
   job.cases.forEach((c, i) => {
+    if (!pass || (ocean && c.time !== passTime)) {
+      if (pass) {
+        pass.end();
+        device.queue.submit([encoder.finish()]);
+        encoder = device.createCommandEncoder();
+      }
+      if (ocean) ocean.encode(encoder, c.time);
+      passTime = c.time;
+      pass = encoder.beginRenderPass({ colorAttachments: [{ view: target.createView(), clearValue: [0, 0, 0, 0],
+        loadOp: i === 0 ? 'clear' : 'load', storeOp: 'store' }] });
+      pass.setPipeline(pipeline);
+    }
     const entries = [...shared];
     if (job.uniformSize > 0) {
       const buffer = own(device.createBuffer({ size: job.uniformSize, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST }));
@@ -95,7 +125,7 @@ export async function runProbeCases(device, job) {
     pass.setViewport(i % 1024, Math.floor(i / 1024), 1, 1, 0, 1);
     pass.draw(3);
   });
-  pass.end();
+  pass?.end();
   const bytesPerRow = Math.ceil((width * 16) / 256) * 256;
   const readback = own(device.createBuffer({ size: bytesPerRow * height, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ }));
   encoder.copyTextureToBuffer({ texture: target }, { buffer: readback, bytesPerRow }, [width, height]);
