@@ -35,13 +35,18 @@ struct ShaderText {
     shader.text += '\n';
     shader.lineOp.push_back(op);
   }
-  // Whole lines, each ending in '\n' (a stage body with its ops, or lines from no op).
+  // Whole lines, each ending in '\n' (lines from no op, or all from `ops`).
   void addLines(std::string_view lines, const std::vector<int>* ops = nullptr) {
     shader.text.append(lines);
     if (ops)
       shader.lineOp.insert(shader.lineOp.end(), ops->begin(), ops->end());
     else
       shader.lineOp.insert(shader.lineOp.end(), static_cast<size_t>(std::count(lines.begin(), lines.end(), '\n')), -1);
+  }
+  // Planned lines of main(), each with the op of its statement.
+  void addLines(const PlannedLines& lines) {
+    shader.text.append(lines.text);
+    for (const PlannedStatement& s : lines.statements) shader.lineOp.push_back(s.op);
   }
 };
 
@@ -85,12 +90,12 @@ class StageAssembler {
     }
     out.add("");
     out.add("void main() {");
-    for (const auto& l : s.locals) out.add("  " + l);
+    out.addLines(s.locals);
     // The body is most of a big graph's shader: room for it and the closing "}\n" at once,
     // so the text is not doubled past its size while it grows (megabytes at 10,000 nodes).
-    out.shader.text.reserve(out.shader.text.size() + s.body.size() + 2);
-    out.shader.lineOp.reserve(out.shader.lineOp.size() + s.lineOp.size() + 1);
-    out.addLines(s.body, &s.lineOp);
+    out.shader.text.reserve(out.shader.text.size() + s.body.text.size() + 2);
+    out.shader.lineOp.reserve(out.shader.lineOp.size() + s.body.statements.size() + 1);
+    out.addLines(s.body);
     out.add("}");
     return std::move(out.shader);
   }

@@ -1,4 +1,4 @@
-// The WGSL module around the translated stage bodies (see codegen/emit_wgsl.h).
+// The WGSL module printed from the plan's statements (see codegen/emit_wgsl.h).
 #include "codegen/emit_wgsl.h"
 
 #include <algorithm>
@@ -203,16 +203,10 @@ class WgslAssembler {
          (vertex ? "WgVertexOutput {" : "@location(" + std::to_string(iface::kColorLocation) + ") vec4<f32> {"));
     line(vertex ? "  var " + std::string(kWgslVertexOut) + ": WgVertexOutput;"
                 : "  var " + std::string(iface::kColorOutput) + ": vec4<f32>;");
-    // The builtin locals and the body in one scope, the locals' lines from no op.
-    std::string glsl;
-    std::vector<int> glslOps;
-    for (const auto& l : s.locals) {
-      glsl += l + "\n";
-      glslOps.push_back(-1);
-    }
-    glsl += s.body;
-    glslOps.insert(glslOps.end(), s.lineOp.begin(), s.lineOp.end());
-    translateLines(glsl, glslOps, mode, text, ops);
+    // The builtin locals and the body in one scope, each statement printed from the plan.
+    translator_.clearLocals();
+    for (const PlannedLines* lines : {&s.locals, &s.body})
+      for (const PlannedStatement& statement : lines->statements) line(wgslStatement(*lines, statement, mode), statement.op);
     if (vertex) {
       std::string p = std::string(kWgslVertexOut) + "." + kWgslPosition;
       line("  // GL's clip space to WebGPU's: y negated (rows as GL stores them), z from [-w, w] to [0, w].");
@@ -225,33 +219,27 @@ class WgslAssembler {
     return text;
   }
 
-  void translateLines(const std::string& glsl, const std::vector<int>& lineOps, StageMode mode, std::string& text,
-                      std::vector<int>& ops) {
-    std::vector<size_t> sourceLine;
+  // One planned statement as a WGSL line: a declaration with the plan's type, an assignment
+  // to a global or an earlier local. An expression with no WGSL form is the op's that wrote it.
+  std::string wgslStatement(const PlannedLines& lines, const PlannedStatement& statement, StageMode mode) {
     try {
-      text += translator_.statements(glsl, mode, "  ", &sourceLine);
-    } catch (const std::logic_error& e) {
-      throw WgslRefused{e.what(), opOfFailingLine(glsl, lineOps, mode)};
-    }
-    for (size_t l : sourceLine) ops.push_back(l < lineOps.size() ? lineOps[l] : -1);
-  }
-
-  // The op of the first body line that does not translate on its own (after the lines before it).
-  int opOfFailingLine(const std::string& glsl, const std::vector<int>& lineOps, StageMode mode) {
-    wgsl::Translator probe = translator_;
-    size_t start = 0, line = 0;
-    while (start < glsl.size()) {
-      size_t end = glsl.find('\n', start);
-      if (end == std::string::npos) end = glsl.size();
-      try {
-        probe.statements(glsl.substr(0, end + 1), mode, "");
-      } catch (const std::logic_error&) {
-        return line < lineOps.size() ? lineOps[line] : -1;
+      switch (statement.kind) {
+        case PlannedStatement::Kind::Declare: {
+          const ValueType type = wgslValueTypeOf(statement.type);
+          std::string value = translator_.expression(lines.expression(statement), mode, type);
+          std::string name = translator_.declareLocal(std::string(lines.name(statement)), type);
+          return "  var " + name + ": " + wgsl::wgslTypeName(type) + " = " + value + ";";
+        }
+        case PlannedStatement::Kind::Assign:
+          return "  " + translator_.assignment(std::string(lines.name(statement)), lines.expression(statement), mode) + ";";
+        case PlannedStatement::Kind::Fixed: break;
       }
-      start = end + 1;
-      ++line;
+    } catch (const WgslRefused& r) {
+      throw WgslRefused{r.message, statement.op};
+    } catch (const std::logic_error& e) {
+      throw WgslRefused{e.what(), statement.op};
     }
-    return -1;
+    throw WgslRefused{"a line of fixed GLSL (a tessellation stage's) has no WGSL form", statement.op};
   }
 
   // The first op whose lines call `item` (or an item that uses it), for an error in it: from

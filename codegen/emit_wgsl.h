@@ -1,8 +1,9 @@
 #pragma once
 // ShaderPlan -> one WGSL module (GRAPH.wgsl) with a vertex entry point `vs_main` and a
-// fragment entry point `fs_main`, for WebGPU. The same plan as the GLSL targets: the stage
-// bodies and library items the nodes wrote are printed in WGSL's terms by
-// codegen/wgsl_translate.h, and wrapped here in WGSL's interface:
+// fragment entry point `fs_main`, for WebGPU. The same plan as the GLSL targets: each
+// planned statement of main() (PlannedStatement: a declaration with its Type, or an
+// assignment) is printed here, its expression and the library items the nodes wrote in
+// WGSL's terms by codegen/wgsl_translate.h, and wrapped in WGSL's interface:
 // - group 0, binding 0: every non-opaque uniform in one uniform buffer (struct WgUniforms),
 //   laid out by WGSL's rules for the uniform address space (offsets in the manifest);
 // - each texture as a texture binding and a sampler binding after it (1, 2; 3, 4; ...);

@@ -9,16 +9,15 @@ namespace {
 
 // Per op, the operations of the lines it writes in the fragment stage; `total`: those of
 // the whole stage. The planner counted them from the values as it wrote each line
-// (PlannedStage::lineCost), so nothing here reads the shader's text.
+// (PlannedStatement::cost), so nothing here reads the shader's text.
 std::vector<int> fragmentCosts(const Program& program, const PlannedStage* frag, int& total) {
   std::vector<int> cost(program.ops.size(), 0);
   total = 0;
   if (!frag) return cost;
-  total = frag->localsCost;
-  for (size_t line = 0; line < frag->lineOp.size(); ++line) {
-    const int c = frag->lineCost.at(line), op = frag->lineOp[line];
-    total += c;
-    if (op >= 0) cost[static_cast<size_t>(op)] += c;
+  total = frag->locals.cost();
+  for (const PlannedStatement& statement : frag->body.statements) {
+    total += statement.cost;
+    if (statement.op >= 0) cost[static_cast<size_t>(statement.op)] += statement.cost;
   }
   return cost;
 }

@@ -4,7 +4,7 @@
 // frequency, and the per-draw values the fragment stage recomputes for every pixel — work
 // a graph or node author may want to move into a parameter or a per-draw split of the
 // node (core/derive.h) — with their estimated cost per pixel: the operations the planner
-// counted for the fragment lines it wrote for them (PlannedStage::lineCost, counted from the
+// counted for the fragment lines it wrote for them (PlannedStatement::cost, counted from the
 // values as they were built by the rules of core/glsl_operation_count.h).
 #include <array>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // The GLSL that watergraph itself writes — the function library (nodes/glsl/*.glsl) and the
-// bodies the nodes emit — parsed into a small syntax tree, so the WGSL emitter
+// expressions the nodes emit — parsed into a small syntax tree, so the WGSL emitter
 // (codegen/emit_wgsl.h) can print it in WGSL's terms with every type known. Only the subset
 // our own code uses is accepted: functions, global constants, declarations, if, for, while,
 // return, break, continue, expressions. No preprocessor, no structs, no arrays of values.
@@ -66,7 +66,8 @@ struct Item {
 
 // Parses the items of `text` (one library item, or a whole file). Throws std::logic_error.
 std::vector<Item> parseItems(std::string_view text);
-// Parses a sequence of statements (a stage body, or main's locals). Throws std::logic_error.
-std::vector<StmtPtr> parseStatements(std::string_view text);
+// Parses one expression (what the planner declares or assigns in a stage's main(): the
+// plan holds the statements as values, codegen/shader_plan.h). Throws std::logic_error.
+ExprPtr parseExpression(std::string_view text);
 
 }  // namespace wg::glsl_subset

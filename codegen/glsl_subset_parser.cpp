@@ -122,10 +122,11 @@ class SubsetParser {
     return out;
   }
 
-  std::vector<StmtPtr> statements() {
-    std::vector<StmtPtr> out;
-    while (!atEnd()) out.push_back(statement());
-    return out;
+  // One expression and nothing after it.
+  ExprPtr wholeExpression() {
+    ExprPtr e = expression();
+    if (!atEnd()) fail("the end of the expression");
+    return e;
   }
 
  private:
@@ -375,6 +376,6 @@ std::vector<Item> parseItems(std::string_view text) {
   return items;
 }
 
-std::vector<StmtPtr> parseStatements(std::string_view text) { return SubsetParser(text).statements(); }
+ExprPtr parseExpression(std::string_view text) { return SubsetParser(text).wholeExpression(); }
 
 }  // namespace wg::glsl_subset

@@ -252,8 +252,8 @@ void BodyWriter::writeOps(StageBody& w) {
     });
     for (size_t t = 0; t < ctx.temps.size(); ++t)
       if (needed[t])
-        w.line(static_cast<int>(i), ctx.temps[t].expression.operations(), typeName(ctx.temps[t].type), " ", ctx.temps[t].name,
-               " = ", ctx.temps[t].expression.text(), ";");
+        w.body.declare(static_cast<int>(i), ctx.temps[t].expression.operations(), ctx.temps[t].type, ctx.temps[t].name,
+                       ctx.temps[t].expression.text());
     for (size_t p = 0; p < op.outputTypes.size(); ++p) {
       if (!used[portBase_[i] + p]) continue;
       if (ctx.outputs[p].empty())
@@ -271,9 +271,9 @@ void BodyWriter::writeOps(StageBody& w) {
       }
       const int at = static_cast<int>(i), cost = ctx.outputs[p].operations();
       if (op.outputTypes.size() > 1)
-        w.line(at, cost, typeName(op.outputTypes[p]), " ", opNames_[i], "_", op.spec->outputs[p].name, " = ", ctx.outputs[p].text(), ";");
+        w.body.declare(at, cost, op.outputTypes[p], opNames_[i] + "_" + op.spec->outputs[p].name, ctx.outputs[p].text());
       else
-        w.line(at, cost, typeName(op.outputTypes[p]), " ", opNames_[i], " = ", ctx.outputs[p].text(), ";");
+        w.body.declare(at, cost, op.outputTypes[p], opNames_[i], ctx.outputs[p].text());
     }
   }
 }

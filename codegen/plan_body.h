@@ -26,27 +26,23 @@ inline uint32_t planSymbol(PlanSymbol kind, size_t index) {
 inline PlanSymbol planSymbolKind(uint32_t symbol) { return static_cast<PlanSymbol>(symbol >> 24); }
 inline size_t planSymbolIndex(uint32_t symbol) { return symbol & 0xFFFFFFu; }
 
-// The builtin locals a planner writes at the top of main(), built as values: the library
-// functions they call (the stage declares those items with the ones its ops call) and the
-// operations they ask for.
+// The builtin locals a planner writes at the top of main(), built as values: each a
+// declaration with its operations, and the library functions they call (the stage declares
+// those items with the ones its ops call).
 struct StageLocals {
-  std::vector<std::string> lines;
+  PlannedLines lines;
   std::vector<std::string> calls;
-  int operations = 0;
-  void add(const GlslExpr& line) {
-    lines.push_back(line.text());
-    for (uint32_t fn : line.callIds()) calls.push_back(GlslExpr::callName(fn));
-    operations += line.operations();
+  void add(Type type, std::string_view name, const GlslExpr& value) {
+    lines.declare(-1, value.operations(), type, name, value.text());
+    for (uint32_t fn : value.callIds()) calls.push_back(GlslExpr::callName(fn));
   }
 };
 
-// One stage's body being written into one buffer ("  " + line + '\n' each, no string per
-// line), with the op that wrote each line, and what it used.
+// One stage's body being written: its statements, each with the op that wrote it and the
+// operations of the values written into it (PlannedLines), and what it used.
 struct StageBody {
   unsigned stage = 0;  // kVertexStage or kFragmentStage
-  std::string body;
-  std::vector<int> lineOp;
-  std::vector<int> lineCost;  // per line: the operations of the values written into it
+  PlannedLines body;
   std::set<Builtin> builtins;
   std::set<int> parameters;
   std::set<BuiltinUniform> builtinUniforms;
@@ -87,16 +83,6 @@ struct StageBody {
   }
 
   explicit StageBody(unsigned s) : stage(s) {}
-  // One line of the body, from its parts, asking for `operations` (the values' counts,
-  // GlslExpr::operations: the parts around them are names, '=' and ';').
-  template <class... Parts>
-  void line(int op, int operations, const Parts&... parts) {
-    body += "  ";
-    (body.append(std::string_view(parts)), ...);
-    body += '\n';
-    lineOp.push_back(op);
-    lineCost.push_back(operations);
-  }
   // Records that the body reads uniform `u`; returns its GLSL name.
   std::string use(BuiltinUniform u);
   // The same, as a value that reads it.

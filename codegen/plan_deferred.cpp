@@ -46,18 +46,20 @@ StageLocals deferredLocals(const StageBody& fragment) {
   GBufferReads reads = gBufferReads(fragment);
   StageLocals lines;
   if (b.count(Builtin::ScreenUv))
-    lines.add("vec2 b_screen_uv = gl_FragCoord.xy / " +
-              GlslExpr::name(std::string(builtinUniformRow(BuiltinUniform::ViewportSize).glslName)) + ";");
+    lines.add(Type::Vec2, "b_screen_uv",
+              "gl_FragCoord.xy / " + GlslExpr::name(std::string(builtinUniformRow(BuiltinUniform::ViewportSize).glslName)));
   if (reads.surface) {
-    lines.add("vec4 b_water_surface = texture(" + GlslExpr::name(gBufferSampler(SceneSampler::WaterSurface)) + ", b_screen_uv);");
-    lines.add(GlslExpr("vec3 v_world_position = b_water_surface.xyz;"));
+    lines.add(Type::Vec4, "b_water_surface", "texture(" + GlslExpr::name(gBufferSampler(SceneSampler::WaterSurface)) + ", b_screen_uv)");
+    lines.add(Type::Vec3, "v_world_position", GlslExpr("b_water_surface.xyz"));
   }
   if (reads.normalUv) {
-    lines.add("vec4 b_water_normal_uv = texture(" + GlslExpr::name(gBufferSampler(SceneSampler::WaterNormalUv)) + ", b_screen_uv);");
+    lines.add(Type::Vec4, "b_water_normal_uv",
+              "texture(" + GlslExpr::name(gBufferSampler(SceneSampler::WaterNormalUv)) + ", b_screen_uv)");
     if (b.count(Builtin::Normal))
-      lines.add(GlslExpr("vec3 v_normal = vec3(b_water_normal_uv.x, sqrt(max(1.0 - dot(b_water_normal_uv.xy, "
-                         "b_water_normal_uv.xy), 0.0)), b_water_normal_uv.y);"));
-    if (b.count(Builtin::Uv)) lines.add(GlslExpr("vec2 v_uv = b_water_normal_uv.zw;"));
+      lines.add(Type::Vec3, "v_normal",
+                GlslExpr("vec3(b_water_normal_uv.x, sqrt(max(1.0 - dot(b_water_normal_uv.xy, b_water_normal_uv.xy), 0.0)), "
+                         "b_water_normal_uv.y)"));
+    if (b.count(Builtin::Uv)) lines.add(Type::Vec2, "v_uv", GlslExpr("b_water_normal_uv.zw"));
   }
   return lines;
 }

@@ -29,8 +29,9 @@ StageLocals probeLocals(const StageBody& w) {
   const GlslExpr gradient = GlslExpr::name(probeUniformName(BuiltinUniform::ProbeUvGradient));
   const GlslExpr pixel = GlslExpr::name(probeUniformName(BuiltinUniform::ProbePixel));
   StageLocals locals;
-  locals.add("vec2 b_uv = " + GlslExpr::name(probeUniformName(BuiltinUniform::ProbeUv)) + " + " + gradient +
-             ".xy * (gl_FragCoord.x - " + pixel + ".x) + " + gradient + ".zw * (gl_FragCoord.y - " + pixel + ".y);");
+  locals.add(Type::Vec2, "b_uv",
+             GlslExpr::name(probeUniformName(BuiltinUniform::ProbeUv)) + " + " + gradient + ".xy * (gl_FragCoord.x - " + pixel +
+                 ".x) + " + gradient + ".zw * (gl_FragCoord.y - " + pixel + ".y)");
   return locals;
 }
 
@@ -51,7 +52,7 @@ ShaderPlan planProbe(const Program& program, std::string sourceName) {
   const char* pad[] = {"", ", 0.0, 0.0, 0.0", ", 0.0, 0.0", ", 0.0", ""};
   int n = componentCount(out.type);
   if (n < 1 || n > 4) throw std::logic_error("emit: a probe output must be a float or a vector");
-  frag.line(-1, value.operations(), iface::kColorOutput, " = vec4(", value.text(), pad[n], ");");
+  frag.body.assign(-1, value.operations(), iface::kColorOutput, "vec4(", value.text(), pad[n], ")");
   plan.uniforms = writer.uniforms(nullptr, frag);
   plan.textures = writer.textures();
   plan.oceans = writer.oceans();

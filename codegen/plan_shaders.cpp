@@ -52,15 +52,14 @@ GlslExpr surfaceBuiltin(const ShaderPlan& plan, StageBody& w, Builtin b) {
 StageLocals vertexLocals(const StageBody& w) {
   const GlslExpr model = GlslExpr::name(surfaceUniformName(BuiltinUniform::Model));
   StageLocals locals;
-  locals.add("vec3 b_world_position = (" + model + " * vec4(" + GlslExpr::name(iface::kPositionAttribute) + ", 1.0)).xyz;");
+  locals.add(Type::Vec3, "b_world_position", "(" + model + " * vec4(" + GlslExpr::name(iface::kPositionAttribute) + ", 1.0)).xyz");
   if (w.builtins.count(Builtin::Normal))
-    locals.add("vec3 b_normal = " +
-               EmitContext::call("wg_safe_normalize_vec3", {"mat3(" + model + ") * " + GlslExpr::name(iface::kNormalAttribute)}) + ";");
+    locals.add(Type::Vec3, "b_normal",
+               EmitContext::call("wg_safe_normalize_vec3", {"mat3(" + model + ") * " + GlslExpr::name(iface::kNormalAttribute)}));
   if (w.builtins.count(Builtin::ViewDirection))
-    locals.add("vec3 b_view_direction = " +
+    locals.add(Type::Vec3, "b_view_direction",
                EmitContext::call("wg_safe_normalize_vec3",
-                                 {GlslExpr::name(surfaceUniformName(BuiltinUniform::CameraPosition)) + " - b_world_position"}) +
-               ";");
+                                 {GlslExpr::name(surfaceUniformName(BuiltinUniform::CameraPosition)) + " - b_world_position"}));
   return locals;
 }
 
@@ -69,14 +68,13 @@ StageLocals fragmentLocals(const ShaderPlan& plan, const StageBody& w) {
   const bool deferred = plan.kind == ShaderPlan::Kind::Deferred;
   StageLocals locals = deferred ? deferredLocals(w) : StageLocals{};
   if (w.builtins.count(Builtin::Normal))
-    locals.add("vec3 b_normal = " + EmitContext::call("wg_safe_normalize_vec3", {GlslExpr::name("v_normal")}) + ";");
+    locals.add(Type::Vec3, "b_normal", EmitContext::call("wg_safe_normalize_vec3", {GlslExpr::name("v_normal")}));
   if (w.builtins.count(Builtin::ViewDirection))
-    locals.add("vec3 b_view_direction = " +
+    locals.add(Type::Vec3, "b_view_direction",
                EmitContext::call("wg_safe_normalize_vec3",
-                                 {GlslExpr::name(surfaceUniformName(BuiltinUniform::CameraPosition)) + " - v_world_position"}) +
-               ";");
+                                 {GlslExpr::name(surfaceUniformName(BuiltinUniform::CameraPosition)) + " - v_world_position"}));
   if (w.builtins.count(Builtin::ScreenUv) && !deferred)
-    locals.add("vec2 b_screen_uv = gl_FragCoord.xy / " + GlslExpr::name(surfaceUniformName(BuiltinUniform::ViewportSize)) + ";");
+    locals.add(Type::Vec2, "b_screen_uv", "gl_FragCoord.xy / " + GlslExpr::name(surfaceUniformName(BuiltinUniform::ViewportSize)));
   return locals;
 }
 
@@ -95,8 +93,8 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   writer.writeOps(frag);
   const GlslExpr color = writer.outputExpr(frag, OutputSlot::FragmentColor, "vec3(0.5)");
   const GlslExpr alpha = writer.outputExpr(frag, OutputSlot::FragmentAlpha, "1.0");
-  const size_t colorStatement = frag.body.size(), colorLine = frag.lineOp.size();
-  frag.line(-1, color.operations() + alpha.operations(), iface::kColorOutput, " = vec4(", color.text(), ", ", alpha.text(), ");");
+  const size_t colorStatement = frag.body.statements.size();
+  frag.body.assign(-1, color.operations() + alpha.operations(), iface::kColorOutput, "vec4(", color.text(), ", ", alpha.text(), ")");
   if (deferred) planDeferredSamplers(writer, frag);
 
   StageBody vert(kVertexStage);
@@ -109,20 +107,20 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   if (deferred) fragNeedsPosition = fragNeedsNormal = fragNeedsUv = true;
   const GlslExpr position = writer.outputExpr(vert, OutputSlot::VertexPosition, writer.builtinExpr(vert, Builtin::WorldPosition));
   const GlslExpr clip = GlslExpr::name(vert.use(BuiltinUniform::ViewProjection)) + " * vec4(" + position + ", 1.0)";
-  vert.line(-1, clip.operations(), "gl_Position = ", clip.text(), ";");
-  if (fragNeedsPosition) vert.line(-1, position.operations(), "v_world_position = ", position.text(), ";");
+  vert.body.assign(-1, clip.operations(), "gl_Position", clip.text());
+  if (fragNeedsPosition) vert.body.assign(-1, position.operations(), "v_world_position", position.text());
   if (fragNeedsNormal) {
     const GlslExpr normal = program.output(OutputSlot::VertexNormal) ? writer.outputExpr(vert, OutputSlot::VertexNormal, "")
                                                                      : writer.builtinExpr(vert, Builtin::Normal);
-    vert.line(-1, normal.operations(), "v_normal = ", normal.text(), ";");
+    vert.body.assign(-1, normal.operations(), "v_normal", normal.text());
   }
   if (fragNeedsUv) {
     vert.builtins.insert(Builtin::Uv);
-    vert.line(-1, 0, "v_uv = ", plan.tessellation ? "b_uv" : iface::kUvAttribute, ";");  // a name
+    vert.body.assign(-1, 0, "v_uv", plan.tessellation ? "b_uv" : iface::kUvAttribute);  // a name
   }
   for (const auto& v : program.varyings) {
     const GlslExpr value = writer.opOutput(vert, v.index, v.port);
-    vert.line(-1, value.operations(), writer.varyingName(v.index, v.port), " = ", value.text(), ";");
+    vert.body.assign(-1, value.operations(), writer.varyingName(v.index, v.port), value.text());
   }
   if (plan.tessellation) {
     // The vertex shader places the mesh (model), the control stage measures distances.
@@ -177,7 +175,6 @@ ShaderPlan planShaders(const Program& program, std::string sourceName, bool tess
   PlannedStage& fs = plan.stages.emplace_back(plannedStage(ShaderStage::Fragment, std::move(frag), fragmentLocals(plan, frag)));
   addOwnGlsl(program, fs);
   fs.colorStatement = colorStatement;
-  fs.colorLine = colorLine;
   fs.fetches.insert(fs.fetches.begin(), localFetches.begin(), localFetches.end());
   // Deferred: the full-screen fragment shader reads the G-buffer instead of varyings.
   if (!deferred) fs.inputs = varyings;

@@ -26,15 +26,10 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) 
   }
   s.stage = stage;
   s.locals = std::move(locals.lines);
-  s.localsCost = locals.operations;
   s.body = std::move(w.body);
-  s.lineOp = std::move(w.lineOp);
-  s.lineCost = std::move(w.lineCost);
   // Written by appending, the body may hold up to twice its size; the plan keeps it until
   // the manifest is built, alongside every target's shader text (the compile's peak heap).
-  s.body.shrink_to_fit();
-  s.lineOp.shrink_to_fit();
-  s.lineCost.shrink_to_fit();
+  s.body.shrinkToFit();
   s.builtins = std::move(w.builtins);
   for (auto& f : w.fetches)
     if (f.kept) s.fetches.push_back(std::move(f.fetch));
@@ -46,7 +41,8 @@ PlannedStage plannedStage(ShaderStage stage, StageBody&& w, StageLocals locals) 
 
 void addOwnGlsl(const Program& program, PlannedStage& s) {
   int last = -1;
-  for (int op : s.lineOp) {
+  for (const PlannedStatement& statement : s.body.statements) {
+    const int op = statement.op;
     if (op < 0 || op == last) continue;
     last = op;
     const auto& code = program.ops[static_cast<size_t>(op)].spec->ownGlsl;

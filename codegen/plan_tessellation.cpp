@@ -2,8 +2,6 @@
 // camera) asks for it; the vertex-stage nodes then run in the evaluation stage on the
 // interpolated patch, after a vertex shader that only places the mesh in world space and a
 // control stage that picks the levels from each corner's distance to the camera.
-#include <algorithm>
-
 #include "codegen/plan_body.h"
 #include "codegen/shader_interface.h"
 #include "core/number_format.h"
@@ -14,10 +12,9 @@ namespace {
 std::string tessUniformName(BuiltinUniform u) { return std::string(builtinUniformRow(u).glslName); }
 
 // A stage whose body is fixed text (no op wrote it), calling the library functions `calls`.
-PlannedStage fixedStage(ShaderStage stage, std::string body, const std::vector<std::string>& calls) {
+PlannedStage fixedStage(ShaderStage stage, PlannedLines body, const std::vector<std::string>& calls) {
   PlannedStage s;
   s.stage = stage;
-  s.lineOp.assign(static_cast<size_t>(std::count(body.begin(), body.end(), '\n')), -1);
   s.library = libraryFor(calls);
   s.body = std::move(body);
   return s;
@@ -46,29 +43,29 @@ StageLocals tessEvaluationLocals(const StageBody& w) {
     return "gl_TessCoord.x * " + a + "[0] + gl_TessCoord.y * " + a + "[1] + gl_TessCoord.z * " + a + "[2]";
   };
   StageLocals locals;
-  locals.add("vec3 b_world_position = " + lerp3("te_position") + ";");
+  locals.add(Type::Vec3, "b_world_position", lerp3("te_position"));
   if (w.builtins.count(Builtin::Normal))
-    locals.add("vec3 b_normal = " + EmitContext::call("wg_safe_normalize_vec3", {lerp3("te_normal")}) + ";");
-  if (w.builtins.count(Builtin::Uv)) locals.add("vec2 b_uv = " + lerp3("te_uv") + ";");
+    locals.add(Type::Vec3, "b_normal", EmitContext::call("wg_safe_normalize_vec3", {lerp3("te_normal")}));
+  if (w.builtins.count(Builtin::Uv)) locals.add(Type::Vec2, "b_uv", lerp3("te_uv"));
   if (w.builtins.count(Builtin::ViewDirection))
-    locals.add("vec3 b_view_direction = " +
+    locals.add(Type::Vec3, "b_view_direction",
                EmitContext::call("wg_safe_normalize_vec3",
-                                 {GlslExpr::name(tessUniformName(BuiltinUniform::CameraPosition)) + " - b_world_position"}) +
-               ";");
+                                 {GlslExpr::name(tessUniformName(BuiltinUniform::CameraPosition)) + " - b_world_position"}));
   return locals;
 }
 
 PlannedStage tessVertexStage(const ShaderPlan& plan, const StageBody& geometry) {
   const std::string model = tessUniformName(BuiltinUniform::Model);
-  std::string body = "  tc_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;\n";
+  PlannedLines body;
+  body.fixed("tc_position = (" + model + " * vec4(" + iface::kPositionAttribute + ", 1.0)).xyz;");
   std::vector<std::string> calls;
   if (geometry.builtins.count(Builtin::Normal)) {
-    body += "  tc_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");\n";
+    body.fixed("tc_normal = wg_safe_normalize_vec3(mat3(" + model + ") * " + iface::kNormalAttribute + ");");
     calls.emplace_back("wg_safe_normalize_vec3");
   }
-  if (geometry.builtins.count(Builtin::Uv)) body += "  tc_uv = " + std::string(iface::kUvAttribute) + ";\n";
-  body += "  gl_Position = vec4(tc_position, 1.0);\n";
-  PlannedStage s = fixedStage(ShaderStage::Vertex, body, calls);
+  if (geometry.builtins.count(Builtin::Uv)) body.fixed("tc_uv = " + std::string(iface::kUvAttribute) + ";");
+  body.fixed("gl_Position = vec4(tc_position, 1.0);");
+  PlannedStage s = fixedStage(ShaderStage::Vertex, std::move(body), calls);
   s.attributes = plan.attributes;
   s.outputs = patchVariables(geometry, "tc_");
   s.uniforms = uniformsWhere(plan, [&](const UniformInfo& u) { return u.name == model; });
@@ -80,19 +77,19 @@ PlannedStage tessVertexStage(const ShaderPlan& plan, const StageBody& geometry) 
 PlannedStage tessControlStage(const ShaderPlan& plan, const StageBody& geometry) {
   const TessellationSettings& t = *plan.tessellation;
   const std::string camera = tessUniformName(BuiltinUniform::CameraPosition);
-  std::string body;
+  PlannedLines body;
   for (const auto& v : patchVariables(geometry, ""))
-    body += "  te_" + v.name + "[gl_InvocationID] = tc_" + v.name + "[gl_InvocationID];\n";
-  body += "  if (gl_InvocationID == 0) {\n";
+    body.fixed("te_" + v.name + "[gl_InvocationID] = tc_" + v.name + "[gl_InvocationID];");
+  body.fixed("if (gl_InvocationID == 0) {");
   for (int i = 0; i < 3; ++i)
-    body += "    float f" + std::to_string(i) + " = wg_tess_distance_factor(tc_position[" + std::to_string(i) + "], " + camera +
-            ", " + formatGlslFloat(t.minDistance) + ", " + formatGlslFloat(t.maxDistance) + ", " + formatGlslFloat(t.factor) + ");\n";
-  body += "    gl_TessLevelOuter[0] = 0.5 * (f1 + f2);\n";
-  body += "    gl_TessLevelOuter[1] = 0.5 * (f2 + f0);\n";
-  body += "    gl_TessLevelOuter[2] = 0.5 * (f0 + f1);\n";
-  body += "    gl_TessLevelInner[0] = (f0 + f1 + f2) / 3.0;\n";
-  body += "  }\n";
-  PlannedStage s = fixedStage(ShaderStage::TessControl, body, {"wg_tess_distance_factor"});
+    body.fixed("  float f" + std::to_string(i) + " = wg_tess_distance_factor(tc_position[" + std::to_string(i) + "], " + camera +
+               ", " + formatGlslFloat(t.minDistance) + ", " + formatGlslFloat(t.maxDistance) + ", " + formatGlslFloat(t.factor) + ");");
+  body.fixed("  gl_TessLevelOuter[0] = 0.5 * (f1 + f2);");
+  body.fixed("  gl_TessLevelOuter[1] = 0.5 * (f2 + f0);");
+  body.fixed("  gl_TessLevelOuter[2] = 0.5 * (f0 + f1);");
+  body.fixed("  gl_TessLevelInner[0] = (f0 + f1 + f2) / 3.0;");
+  body.fixed("}");
+  PlannedStage s = fixedStage(ShaderStage::TessControl, std::move(body), {"wg_tess_distance_factor"});
   s.inputs = patchVariables(geometry, "tc_");
   s.outputs = patchVariables(geometry, "te_");
   s.arrayedInputs = s.arrayedOutputs = true;

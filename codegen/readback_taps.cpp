@@ -70,14 +70,12 @@ namespace {
 PlannedStage tapStage(const ShaderPlan& plan, const std::vector<TapChannel>& channels) {
   const PlannedStage& fs = tapFragmentStage(plan);
   if (channels.size() > 3) throw std::logic_error("emitTapFragment: more than three channels");
-  std::string statement = std::string("  ") + iface::kColorOutput + " = vec4(";
-  for (size_t k = 0; k < 3; ++k) statement += (k < channels.size() ? tapValue(plan, fs, channels[k]) : "0.0") + ", ";
-  statement += "1.0);\n";
+  std::string colour = "vec4(";
+  for (size_t k = 0; k < 3; ++k) colour += (k < channels.size() ? tapValue(plan, fs, channels[k]) : "0.0") + ", ";
+  colour += "1.0)";
   PlannedStage tap = fs;
-  tap.body.resize(fs.colorStatement);
-  tap.body += statement;
-  tap.lineOp.resize(fs.colorLine);
-  tap.lineOp.push_back(-1);
+  tap.body.keepFirst(fs.colorStatement);
+  tap.body.assign(-1, 0, iface::kColorOutput, colour);
   return tap;
 }
 

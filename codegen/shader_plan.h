@@ -2,11 +2,12 @@
 // The plan between the passes and the emitters: one plain value, built once from the final
 // Program, holding everything about the shaders that does not depend on the GLSL dialect —
 // the interface (attributes, varyings, uniforms, samplers with their vk450 bindings), the
-// scene resources and passes, tessellation, and per stage its body with the line -> op map
-// and the library items it calls. Each target's emitter (codegen/emit_glsl.h) only wraps a
+// scene resources and passes, tessellation, and per stage its statements (each with the op
+// that wrote it) and the library items it calls. Each target's emitter (codegen/emit_glsl.h) only wraps a
 // plan in its dialect's declarations; the manifest (codegen/manifest_build.h) reads the
 // plan too, so the two cannot disagree. Identifiers are generated; no string from the
 // graph file is pasted.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <set>
@@ -92,18 +93,95 @@ struct TextureFetch {
   std::string call() const { return "texture(" + sampler + ", " + coord + ")"; }
 };
 
+// One statement of main() as the planner wrote it: a declaration `TYPE NAME = EXPR;` (an
+// op's temporary or output, a builtin local) or an assignment `NAME = EXPR;` (gl_Position, a
+// varying, the colour output). A target that does not print GLSL (WGSL) prints it from these
+// values: the declared type, the name and the expression the values were built into.
+// A stage of fixed text (the tessellated pipeline's vertex and control stages) has Fixed
+// lines, which only the GLSL targets print.
+struct PlannedStatement {
+  enum class Kind : unsigned char { Declare, Assign, Fixed };
+  Kind kind = Kind::Fixed;
+  Type type = Type::Invalid;  // Declare: the local's type
+  int op = -1;                // the op that wrote it, or -1
+  // The operations it asks for, counted from the values as they were built
+  // (GlslExpr::operations, core/glsl_operation_count.h), never from the text; 0 when Fixed.
+  int cost = 0;
+  // Offsets into PlannedLines::text, where the statement's parts were written (not a copy
+  // of them: the text is most of a big graph's plan): the target name, the expression, and
+  // the end of the line (past ";\n").
+  uint32_t name = 0, expression = 0, end = 0;
+};
+
+// Lines of main(), each "  " + statement + '\n' in one text (no string per line), and the
+// statement each line holds, in order. The GLSL targets print the text; the WGSL target
+// prints the statements.
+struct PlannedLines {
+  std::string text;
+  std::vector<PlannedStatement> statements;
+
+  std::string_view name(const PlannedStatement& s) const {
+    return std::string_view(text).substr(s.name, s.expression - kAssignLength - s.name);
+  }
+  std::string_view expression(const PlannedStatement& s) const {
+    return std::string_view(text).substr(s.expression, s.end - kEndLength - s.expression);
+  }
+  // `TYPE NAME = EXPR;` from its parts (the expression's pieces appended as they come).
+  template <class... Parts>
+  void declare(int op, int cost, Type type, std::string_view name, const Parts&... expression) {
+    text += "  ";
+    text += typeName(type);
+    text += ' ';
+    write(PlannedStatement::Kind::Declare, type, op, cost, name, expression...);
+  }
+  // `NAME = EXPR;` from its parts.
+  template <class... Parts>
+  void assign(int op, int cost, std::string_view name, const Parts&... expression) {
+    text += "  ";
+    write(PlannedStatement::Kind::Assign, Type::Invalid, op, cost, name, expression...);
+  }
+  // A line of fixed text (no op wrote it), without its indent and '\n'.
+  void fixed(std::string_view line) {
+    text += "  ";
+    text += line;
+    text += '\n';
+    statements.push_back({PlannedStatement::Kind::Fixed, Type::Invalid, -1, 0, 0, 0, offset()});
+  }
+  // The first `count` statements and their text.
+  void keepFirst(size_t count) {
+    statements.resize(count);
+    text.resize(count == 0 ? 0 : statements.back().end);
+  }
+  int cost() const {
+    int total = 0;
+    for (const auto& s : statements) total += s.cost;
+    return total;
+  }
+  void shrinkToFit() {
+    text.shrink_to_fit();
+    statements.shrink_to_fit();
+  }
+
+ private:
+  static constexpr uint32_t kAssignLength = 3, kEndLength = 2;  // " = ", ";\n"
+  uint32_t offset() const { return static_cast<uint32_t>(text.size()); }
+  template <class... Parts>
+  void write(PlannedStatement::Kind kind, Type type, int op, int cost, std::string_view name, const Parts&... expression) {
+    const uint32_t nameAt = offset();
+    text += name;
+    text += " = ";
+    const uint32_t expressionAt = offset();
+    (text.append(std::string_view(expression)), ...);
+    text += ";\n";
+    statements.push_back({kind, type, op, cost, nameAt, expressionAt, offset()});
+  }
+};
+
 // One shader of the pipeline, before any target's declarations are wrapped around it.
 struct PlannedStage {
   ShaderStage stage{};
-  std::vector<std::string> locals;  // builtin locals at the top of main (no indent, no '\n')
-  std::string body;                 // "  " + line + '\n' per line, after the locals
-  std::vector<int> lineOp;          // per body line: the op that wrote it, or -1
-  // The operations each body line and the locals ask for, counted from the values as they
-  // were built (GlslExpr::operations, core/glsl_operation_count.h), never from the text:
-  // per body line, and the locals together. Empty and 0 for a stage of fixed text (the
-  // tessellated pipeline's vertex and control stages), whose cost no one reports.
-  std::vector<int> lineCost;
-  int localsCost = 0;
+  PlannedLines locals;  // the builtin locals at the top of main (no op wrote them)
+  PlannedLines body;    // the ops' lines and the stage's outputs, after the locals
   std::set<Builtin> builtins;       // the builtins the body reads
   std::vector<AttributeInfo> attributes;  // vertex inputs it declares
   std::vector<StageVariable> inputs, outputs;
@@ -124,9 +202,9 @@ struct PlannedStage {
   // (look-ups inside those are not listed).
   std::vector<TextureFetch> fetches;
   std::set<std::string> handedOn;
-  // A drawn fragment stage: where the colour statement, the body's last line, begins
-  // (offset into body, and its index in lineOp); npos where the stage writes none.
-  size_t colorStatement = std::string::npos, colorLine = std::string::npos;
+  // A drawn fragment stage: the colour statement, the body's last: its index in
+  // body.statements; npos where the stage writes none.
+  size_t colorStatement = std::string::npos;
 };
 
 struct ShaderPlan {

@@ -1,5 +1,6 @@
-// The GLSL subset printed as WGSL, statement by statement (see codegen/wgsl_translate.h for
-// the rules kept). Expressions are printed by codegen/wgsl_expressions.cpp.
+// The GLSL subset printed as WGSL: the library's items statement by statement, the plan's
+// statements expression by expression (see codegen/wgsl_translate.h for the rules kept).
+// Expressions are printed by codegen/wgsl_expressions.cpp.
 #include "codegen/wgsl_translate.h"
 
 #include <stdexcept>
@@ -50,7 +51,8 @@ void collectAssigned(const Stmt& s, std::set<std::string>& out) {
 
 }  // namespace
 
-// Prints statements with a scope stack; shared by library items and stage bodies.
+// Prints statements with a scope stack: the library items' functions and constants, and the
+// planned statements' expressions (whose names are the entry point's locals and the globals).
 class TranslationContext : public ExpressionPrinter {
  public:
   TranslationContext(Translator& t, StageMode mode) : t_(t), mode_(mode) { scopes_.emplace_back(); }
@@ -168,6 +170,7 @@ class TranslationContext : public ExpressionPrinter {
         return s;
       }
     }
+    if (auto l = t_.locals_.find(name); l != t_.locals_.end()) return Symbol{l->second.type, l->second.wgsl, "", ""};
     if (auto g = t_.globalTypes_.find(name); g != t_.globalTypes_.end()) {
       Symbol s{g->second, "", "", ""};
       if (auto sm = t_.samplers_.find(name); sm != t_.samplers_.end()) {
@@ -261,38 +264,31 @@ void Translator::addItem(const GlslItem& item, StageMode mode) {
   }
 }
 
-std::string Translator::statements(std::string_view glsl, StageMode mode, const std::string& indent,
-                                   std::vector<size_t>* sourceLine) {
+std::string Translator::declareLocal(const std::string& name, ValueType type) {
+  Local& local = locals_[name];
+  local = {type, wgslSafeName(name)};
+  return local.wgsl;
+}
+
+std::string Translator::expression(std::string_view glsl, StageMode mode, ValueType expected) {
+  const glsl_subset::ExprPtr parsed = glsl_subset::parseExpression(glsl);
   TranslationContext ctx(*this, mode);
-  std::string out;
-  // One input line at a time, joined with the next while it does not yet parse alone (a
-  // statement over several lines), so each output line knows its input line.
-  size_t start = 0, line = 0, firstLine = 0;
-  std::string pending;
-  while (start < glsl.size()) {
-    size_t end = glsl.find('\n', start);
-    if (end == std::string_view::npos) end = glsl.size();
-    if (pending.empty()) firstLine = line;
-    pending.append(glsl.substr(start, end - start)).push_back('\n');
-    start = end + 1;
-    ++line;
-    std::vector<glsl_subset::StmtPtr> parsed;
-    try {
-      parsed = glsl_subset::parseStatements(pending);
-    } catch (const std::logic_error&) {
-      if (start < glsl.size()) continue;
-      throw;
-    }
-    for (const auto& s : parsed) {
-      std::string text = ctx.statement(*s, indent);
-      out += text;
-      if (sourceLine)
-        for (char c : text)
-          if (c == '\n') sourceLine->push_back(firstLine);
-    }
-    pending.clear();
+  return ctx.converted(*parsed, expected);
+}
+
+std::string Translator::assignment(const std::string& name, std::string_view glsl, StageMode mode) {
+  std::string target;
+  ValueType type;
+  if (auto l = locals_.find(name); l != locals_.end()) {
+    target = l->second.wgsl;
+    type = l->second.type;
+  } else if (auto g = globalText_.find(name); g != globalText_.end()) {
+    target = g->second;
+    type = globalTypes_.at(name);
+  } else {
+    throw std::logic_error("GLSL subset: an assignment to '" + name + "', which is not a declared name");
   }
-  return out;
+  return target + " = " + expression(glsl, mode, type);
 }
 
 std::string Translator::functionsText() const {

@@ -1,6 +1,7 @@
 #pragma once
-// Our own GLSL (the library items of nodes/glsl/ and the stage bodies the nodes emit) printed
-// as WGSL, with WGSL's rules kept by construction:
+// Our own GLSL (the library items of nodes/glsl/, and each expression the plan's statements
+// hold: what a node, or the planner, wrote into a declaration or an assignment of main())
+// printed as WGSL, with WGSL's rules kept by construction:
 // - every expression's type is tracked, so GLSL's implicit widenings become explicit (a scalar
 //   given to min/max/clamp/step/smoothstep beside a vector is splatted; a vector == becomes
 //   all(==); a shift count becomes u32; mod becomes x - y * floor(x / y), GLSL's definition);
@@ -40,10 +41,20 @@ class Translator {
   // dependencies first (GlslLibrary::itemsNamed's order).
   void addItem(const GlslItem& item, StageMode mode);
 
-  // Statements of a stage body, one WGSL line per statement, `indent` before each; for each
-  // output line, the index of the input line its statement began on. Throws std::logic_error.
-  std::string statements(std::string_view glsl, StageMode mode, const std::string& indent,
-                         std::vector<size_t>* sourceLine = nullptr);
+  // A local of the entry point being printed, declared by the plan with `type`: the
+  // expressions after it read it as `name`. Returns its WGSL name. clearLocals() forgets
+  // them all (the next entry point).
+  std::string declareLocal(const std::string& name, ValueType type);
+  void clearLocals() { locals_.clear(); }
+
+  // One expression of a planned statement, printed as WGSL of type `expected`: the names it
+  // reads are the globals and the locals declared so far, with the types given for them;
+  // no statement, no stage text. Throws std::logic_error (outside the subset, an unknown
+  // name, a value of another type).
+  std::string expression(std::string_view glsl, StageMode mode, ValueType expected);
+  // A planned assignment `name = glsl` as WGSL (no ';'): `name` a global or a local, the
+  // value of its type. Throws std::logic_error.
+  std::string assignment(const std::string& name, std::string_view glsl, StageMode mode);
 
   // The translated items and the helpers they need (mod), in dependency order.
   std::string functionsText() const;
@@ -55,6 +66,11 @@ class Translator {
     std::vector<ValueType> params;
     bool samples = false;  // has an implicit-LOD sample (fragment form), directly or through a call
   };
+  struct Local {
+    ValueType type;
+    std::string wgsl;
+  };
+  std::map<std::string, Local> locals_;  // the entry point's, by GLSL name
   std::map<std::string, ValueType> globalTypes_;
   std::map<std::string, std::string> globalText_;
   std::map<std::string, std::pair<std::string, std::string>> samplers_;

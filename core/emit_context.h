@@ -8,7 +8,7 @@
 // stage keeps, which declarations the kept text still reads and which library items a
 // stage needs (codegen/plan_body.cpp). A GlslExpr also carries how many operations it asks
 // for (core/glsl_operation_count.h), counted as it is built: the planner keeps per line what
-// the ops wrote (PlannedStage::lineCost), which --explain-frequency reports.
+// the ops wrote (PlannedStatement::cost), which --explain-frequency reports.
 #include <cstdint>
 #include <initializer_list>
 #include <optional>

@@ -218,9 +218,14 @@ TEST(FrequencyReport, CostsDoNotDependOnNamesOrLayout) {
   const ShaderPlan planA = planShaders(a, "", false), planB = planShaders(b, "", false);
   const PlannedStage *fa = planA.stage(ShaderStage::Fragment), *fb = planB.stage(ShaderStage::Fragment);
   ASSERT_TRUE(fa && fb);
-  ASSERT_NE(fa->body, fb->body) << "the names reach the shader";
-  EXPECT_EQ(fa->lineCost, fb->lineCost);
-  EXPECT_EQ(fa->localsCost, fb->localsCost);
+  ASSERT_NE(fa->body.text, fb->body.text) << "the names reach the shader";
+  auto costs = [](const PlannedLines& lines) {
+    std::vector<int> out;
+    for (const PlannedStatement& s : lines.statements) out.push_back(s.cost);
+    return out;
+  };
+  EXPECT_EQ(costs(fa->body), costs(fb->body));
+  EXPECT_EQ(fa->locals.cost(), fb->locals.cost());
   FrequencyReport ra = frequencyReport(a), rb = frequencyReport(b);
   EXPECT_EQ(ra.fragmentCost, rb.fragmentCost);
   EXPECT_EQ(ra.perDrawCost, rb.perDrawCost);
@@ -238,13 +243,13 @@ TEST(FrequencyReport, TheTotalIsThePlannersLineCounts) {
   const ShaderPlan plan = planShaders(p, "", false);
   const PlannedStage* frag = plan.stage(ShaderStage::Fragment);
   ASSERT_TRUE(frag);
-  ASSERT_EQ(frag->lineCost.size(), frag->lineOp.size());
+  ASSERT_EQ(frag->locals.statements.size(), 2u);
   // b_normal and b_view_direction: one wg_safe_normalize_vec3 each, the second of a difference.
   const int normalize = GlslCost().ofFunction("wg_safe_normalize_vec3");
-  EXPECT_EQ(frag->localsCost, 2 * normalize + 1);
+  EXPECT_EQ(frag->locals.cost(), 2 * normalize + 1);
   int lines = 0;
-  for (int c : frag->lineCost) lines += c;
-  EXPECT_EQ(frequencyReport(p).fragmentTotalCost, frag->localsCost + lines);
+  for (const PlannedStatement& s : frag->body.statements) lines += s.cost;
+  EXPECT_EQ(frequencyReport(p).fragmentTotalCost, frag->locals.cost() + lines);
   EXPECT_EQ(frequencyReport(p).fragmentCost[static_cast<size_t>(opIndex(p, "f"))], 1) << "dot()";
 }
 

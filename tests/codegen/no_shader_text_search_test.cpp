@@ -25,14 +25,22 @@
 //     (TheWebClientsNeverHandleAVersionLine);
 //   - `--explain-frequency`'s cost estimate read from the fragment lines' text (GlslCost over
 //     frag->body and frag->locals, codegen/frequency_report.cpp): the planner counts each
-//     line's operations from the values as it writes them (PlannedStage::lineCost). GlslCost
+//     line's operations from the values as it writes them (PlannedStatement::cost). GlslCost
 //     now counts only the GLSL library's own hand-written items (what one call of a library
 //     function costs), confined to its file; the counter of the pieces a node writes is
 //     confined to the value type that appends them (core/emit_context.cpp).
-// One reader of generated text remains, confined to its files until it reads the plan
-// instead: the WGSL target's translation of the stage bodies (wgsl::Translator,
-// codegen/emit_wgsl.cpp). The user's own edit of a shader (check --mutate, probe --mutate)
-// is a text edit by design and searches for the user's text.
+//   - the WGSL target's translation of whole stage bodies (Translator::statements over a
+//     stage's locals and body text, re-discovering which lines declare which local of which
+//     type) and its attribution of an error by re-translating growing prefixes of that text
+//     split at '\n' (opOfFailingLine): the emitter walks the plan's statements
+//     (PlannedStatement: declaration or assignment, the declared Type, the name, the op) and
+//     a refusal is the op of its own statement.
+// The WGSL translator (wgsl::Translator, confined to its files and codegen/emit_wgsl.cpp)
+// reads, besides the library's own hand-written items, each planned expression the nodes and
+// the planner wrote, one at a time by the GLSL subset's grammar, with every name's type from
+// the plan (the globals the module declares, the locals declared before it) — never a
+// stage's text. The user's own edit of a shader (check --mutate, probe --mutate) is a text
+// edit by design and searches for the user's text.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -56,6 +64,8 @@ const char* const kForbidden[] = {
     "readsName(", "isGlslName(", "kept.find(", "f.coord == kSurfaceScreenUv",
     // the frequency report's count of the fragment lines' text
     "glsl.of(", "frag->body.find(", "codegen/glsl_cost.h",
+    // the WGSL target's translation of whole stage bodies and its search for the failing line
+    "opOfFailingLine", "translator_.statements(", "Translator::statements", "parseStatements(",
     // the WebGPU client's rewriting of the runtime's ES shaders for naga: uniform lines into a
     // block, `in` lines given locations, the header's macros, main() wrapped, samplers into
     // textures, texelFetch calls, bindings read back out of naga's WGSL
@@ -74,7 +84,8 @@ const std::map<std::string, std::set<std::string>> kConfined = {
     // The counter of GLSL pieces: the pieces a node appends to a value, and the library's items.
     {"countGlslOperations(", {"core/glsl_operation_count.h", "core/glsl_operation_count.cpp", "core/emit_context.cpp",
                                "nodes/glsl_library_cost.cpp"}},
-    // Still read from text: the WGSL target translates the stage bodies (and the library).
+    // The WGSL target translates the library's items and each planned expression (with the
+    // plan's types), never a stage's text.
     {"Translator", {"codegen/wgsl_translate.h", "codegen/wgsl_translate.cpp", "codegen/emit_wgsl.cpp"}},
 };
 

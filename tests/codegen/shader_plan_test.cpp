@@ -61,9 +61,11 @@ TEST(ShaderPlan, ProbePlanIsOneFragmentStageReadingBuiltinsAsUniforms) {
   ASSERT_FALSE(fs.builtins.empty());
   for (Builtin b : fs.builtins) EXPECT_TRUE(hasUniform(plan, builtinRow(b).uniform)) << builtinRow(b).name;
   EXPECT_TRUE(hasUniform(plan, BuiltinUniform::ProbeUvGradient));
-  EXPECT_EQ(fs.body.find("v_"), std::string::npos) << fs.body;
-  ASSERT_EQ(fs.locals.size(), 1u);
-  EXPECT_EQ(fs.locals[0].rfind("vec2 b_uv = ", 0), 0u) << fs.locals[0];
+  EXPECT_EQ(fs.body.text.find("v_"), std::string::npos) << fs.body.text;
+  ASSERT_EQ(fs.locals.statements.size(), 1u);
+  EXPECT_EQ(fs.locals.statements[0].type, Type::Vec2);
+  EXPECT_EQ(fs.locals.name(fs.locals.statements[0]), "b_uv");
+  EXPECT_EQ(fs.locals.text.rfind("  vec2 b_uv = ", 0), 0u) << fs.locals.text;
 }
 
 TEST(ShaderPlan, DeferredPlanReadsTheGBufferNotVaryings) {
@@ -85,8 +87,9 @@ TEST(ShaderPlan, DeferredPlanReadsTheGBufferNotVaryings) {
   for (const auto& v : plan.varyings)
     EXPECT_EQ(fragText.find("in " + std::string(typeName(v.type)) + " " + v.name + ";"), std::string::npos) << v.name;
   // The G-buffer reads sit among the fragment's locals.
-  bool readsSurface = std::any_of(fs->locals.begin(), fs->locals.end(),
-                                  [](const std::string& l) { return l.find("texture(u_water_surface") != std::string::npos; });
+  bool readsSurface = std::any_of(fs->locals.statements.begin(), fs->locals.statements.end(), [&](const PlannedStatement& l) {
+    return l.type == Type::Vec4 && fs->locals.expression(l).starts_with("texture(u_water_surface,");
+  });
   EXPECT_TRUE(readsSurface);
   // The scene passes the manifest lists come with the plan.
   EXPECT_NE(std::find(plan.resources.begin(), plan.resources.end(), SceneResource::Underwater), plan.resources.end());
@@ -119,6 +122,46 @@ TEST(ShaderPlan, TessellatedPlanHasFourStagesWhereTheTargetTessellates) {
   EXPECT_EQ(planTargets(program, allTargets(), "stylized.json", false).plans.size(), 1u);
 }
 
+// Every statement of main() is held as a value whose parts are where it was written: the
+// line is "  " + (a declaration's type + " ") + name + " = " + expression + ";\n", the lines
+// follow each other to the end of the text, the ops' lines declare a local, the stage's
+// outputs are assigned, and the colour statement is the fragment body's last, o_color's.
+TEST(ShaderPlan, EachStatementHoldsItsKindTypeNameAndExpression) {
+  for (const char* name : {"lake.json", "deferred_underwater.json", "ocean.json"}) {
+    Program program = exampleProgram(name);
+    const ShaderPlan plan = planShaders(program, name, false);
+    size_t declared = 0, assigned = 0;
+    for (const PlannedStage& stage : plan.stages)
+      for (const PlannedLines* lines : {&stage.locals, &stage.body}) {
+        size_t at = 0;
+        for (const PlannedStatement& s : lines->statements) {
+          const bool declares = s.kind == PlannedStatement::Kind::Declare;
+          ASSERT_TRUE(declares || s.kind == PlannedStatement::Kind::Assign) << name;
+          EXPECT_EQ(declares, s.type != Type::Invalid) << name;
+          const std::string line = "  " + (declares ? std::string(typeName(s.type)) + " " : std::string()) +
+                                   std::string(lines->name(s)) + " = " + std::string(lines->expression(s)) + ";\n";
+          EXPECT_EQ(lines->text.substr(at, s.end - at), line) << name;
+          EXPECT_FALSE(lines->expression(s).empty()) << name << ": " << line;
+          // Ops declare their locals; what no op wrote is a builtin local or a stage output.
+          if (s.op >= 0) EXPECT_TRUE(declares) << name << ": " << line;
+          if (lines == &stage.locals) EXPECT_TRUE(declares && s.op < 0) << name << ": " << line;
+          at = s.end;
+          (declares ? declared : assigned)++;
+        }
+        EXPECT_EQ(at, lines->text.size()) << name;
+      }
+    EXPECT_GT(declared, 10u) << name;
+    EXPECT_GE(assigned, 2u) << name;  // gl_Position and o_color at least
+    const PlannedStage* fs = plan.stage(ShaderStage::Fragment);
+    ASSERT_TRUE(fs);
+    ASSERT_EQ(fs->colorStatement + 1, fs->body.statements.size()) << name;
+    const PlannedStatement& colour = fs->body.statements.back();
+    EXPECT_EQ(colour.kind, PlannedStatement::Kind::Assign);
+    EXPECT_EQ(fs->body.name(colour), "o_color");
+    EXPECT_TRUE(fs->body.expression(colour).starts_with("vec4(")) << fs->body.expression(colour);
+  }
+}
+
 TEST(ShaderPlan, OnePlanGivesTheSameBodiesInEveryTarget) {
   for (const auto& path : test::exampleGraphs()) {
     Diagnostics diags;
@@ -137,9 +180,11 @@ TEST(ShaderPlan, OnePlanGivesTheSameBodiesInEveryTarget) {
         EXPECT_EQ(sh.stage, stage.stage) << what;
         EXPECT_EQ(mainOf(sh.text), mainOf(emitted[0].shaders[s].text)) << what;
         // The body is the plan's, line for line, with its ops: right before the closing "}".
-        ASSERT_GE(sh.lineOp.size(), stage.lineOp.size() + 1) << what;
-        EXPECT_TRUE(std::equal(stage.lineOp.begin(), stage.lineOp.end(), sh.lineOp.end() - 1 - stage.lineOp.size())) << what;
-        EXPECT_NE(sh.text.find(stage.body + "}\n"), std::string::npos) << what;
+        std::vector<int> lineOp;
+        for (const PlannedStatement& statement : stage.body.statements) lineOp.push_back(statement.op);
+        ASSERT_GE(sh.lineOp.size(), lineOp.size() + 1) << what;
+        EXPECT_TRUE(std::equal(lineOp.begin(), lineOp.end(), sh.lineOp.end() - 1 - lineOp.size())) << what;
+        EXPECT_NE(sh.text.find(stage.body.text + "}\n"), std::string::npos) << what;
       }
     }
   }

@@ -1,7 +1,9 @@
-// The WGSL module around the translated bodies (codegen/emit_wgsl.h) and the manifest's
+// The WGSL module around the plan's translated statements (codegen/emit_wgsl.h) and the manifest's
 // "webgpu" section (codegen/manifest_webgpu.h): bindings, the uniform buffer's WGSL layout,
 // entry points, clip-space conversion, tessellation left out, and the section read back.
 #include <gtest/gtest.h>
+
+#include <functional>
 
 #include "codegen/compile.h"
 #include "codegen/emit_wgsl.h"
@@ -130,28 +132,53 @@ TEST(WgslEmit, ModuleLinesMapBackToTheNodesThatWroteThem) {
   EXPECT_TRUE(sawFresnel);
 }
 
-// GLSL outside the translated subset in a body line is refused (WG045) at the op that wrote
-// the line, not guessed at: a line assigning a two-component swizzle, given to the plan's last op.
-TEST(WgslEmit, ABodyLineWithNoWgslFormIsRefusedAtItsOp) {
+// A planned expression outside the translated subset is refused (WG045) at the op of its
+// own statement, not guessed at: a declaration whose value takes % of floats, written for
+// an op whose lines are elsewhere and placed between the lines of two other ops (so
+// neither the statement before it nor the one after gives its op), then a declaration of
+// another type than its value's.
+TEST(WgslEmit, AStatementWithNoWgslFormIsRefusedAtItsOp) {
   Diagnostics diags;
   auto graph = loadGraphFile(test::sourcePath("graphs/lake.json"), diags);
   ASSERT_TRUE(graph);
   auto program = buildProgram(*graph, defaultRegistry(), diags);
   ASSERT_TRUE(program);
-  ShaderPlan plan = planShaders(*program, "lake.json", false);
+  const ShaderPlan plan = planShaders(*program, "lake.json", false);
   ASSERT_FALSE(plan.stages.empty());
-  PlannedStage& frag = plan.stages.back();
-  const int op = static_cast<int>(program->ops.size()) - 1;
-  frag.body += "  vec2 n99_bad = vec2(0.0);\n  n99_bad.xy = vec2(1.0);\n";
-  frag.lineOp.push_back(op);
-  frag.lineOp.push_back(op);
-  try {
-    emitWgsl(plan);
-    ADD_FAILURE() << "emitWgsl accepted a multi-component swizzle assignment";
-  } catch (const WgslRefused& r) {
-    EXPECT_EQ(r.op, op);
-    EXPECT_NE(r.message.find("multi-component swizzle"), std::string::npos) << r.message;
-  }
+  const PlannedLines& body = plan.stages.back().body;
+  // Where the lines of one op give way to another's, and a third op.
+  size_t at = 1;
+  while (at < body.statements.size() &&
+         (body.statements[at - 1].op < 0 || body.statements[at].op < 0 || body.statements[at - 1].op == body.statements[at].op))
+    ++at;
+  ASSERT_LT(at, body.statements.size());
+  int op = -1;
+  for (const PlannedStatement& s : body.statements)
+    if (s.op >= 0 && s.op != body.statements[at - 1].op && s.op != body.statements[at].op) op = s.op;
+  ASSERT_GE(op, 0);
+  auto refused = [&](const std::function<void(PlannedLines&)>& bad, const char* why) {
+    ShaderPlan edited = plan;
+    PlannedLines lines;
+    for (size_t k = 0; k < body.statements.size(); ++k) {
+      if (k == at) bad(lines);
+      const PlannedStatement& s = body.statements[k];
+      if (s.kind == PlannedStatement::Kind::Declare)
+        lines.declare(s.op, s.cost, s.type, body.name(s), body.expression(s));
+      else
+        lines.assign(s.op, s.cost, body.name(s), body.expression(s));
+    }
+    edited.stages.back().body = std::move(lines);
+    try {
+      emitWgsl(edited);
+      ADD_FAILURE() << "emitWgsl accepted " << edited.stages.back().body.text;
+    } catch (const WgslRefused& r) {
+      EXPECT_EQ(r.op, op) << r.message;
+      EXPECT_NE(r.message.find(why), std::string::npos) << r.message;
+    }
+  };
+  EXPECT_NO_THROW(emitWgsl(plan));
+  refused([&](PlannedLines& l) { l.declare(op, 0, Type::Float, "n99_bad", "7.0 % 2.0"); }, "% on floats");
+  refused([&](PlannedLines& l) { l.declare(op, 0, Type::Vec3, "n99_bad", "vec2(1.0)"); }, "a value of another type");
 }
 
 TEST(WgslEmit, SameGraphSameBytes) {

@@ -106,17 +106,36 @@ TEST(WgslTranslate, ASamplingFunctionCalledInALoopIsCalledInItsLevelZeroForm) {
   EXPECT_NE(w.find("a += wg_s_lod0(tex_texture, tex_sampler, uv);"), std::string::npos) << w;
 }
 
-TEST(WgslTranslate, BodyStatementsReadGlobalsThroughTheirWgslNames) {
+// A planned expression reads the globals through their WGSL names and the locals declared
+// before it with the types the plan gave them; an assignment goes to a declared name, its
+// value of that name's type.
+TEST(WgslTranslate, PlannedExpressionsReadGlobalsAndDeclaredLocals) {
   Translator t;
   t.declareGlobal("u_time", ValueType{'f', 1, 0}, "wg_u.u_time");
+  t.declareGlobal("v_uv", ValueType{'f', 2, 0}, "wg_out.v_uv");
   t.declareSampler("t0_foam", ValueType{'t', 1, 0}, "t0_foam", "t0_foam_sampler");
-  std::vector<size_t> lines;
-  std::string w = t.statements("float n1_a = u_time * 2.0;\nvec4 n2_b = texture(t0_foam, vec2(n1_a));\n",
-                               StageMode::Fragment, "  ", &lines);
-  EXPECT_EQ(w,
-            "  var n1_a: f32 = (wg_u.u_time * 2.0);\n"
-            "  var n2_b: vec4<f32> = textureSample(t0_foam, t0_foam_sampler, vec2<f32>(n1_a));\n");
-  EXPECT_EQ(lines, (std::vector<size_t>{0, 1}));
+  EXPECT_EQ(t.expression("u_time * 2.0", StageMode::Fragment, {'f', 1, 0}), "(wg_u.u_time * 2.0)");
+  EXPECT_THROW(t.expression("n1_a", StageMode::Fragment, {'f', 1, 0}), std::logic_error) << "not declared yet";
+  EXPECT_EQ(t.declareLocal("n1_a", {'f', 1, 0}), "n1_a");
+  EXPECT_EQ(t.expression("texture(t0_foam, vec2(n1_a))", StageMode::Fragment, {'f', 4, 0}),
+            "textureSample(t0_foam, t0_foam_sampler, vec2<f32>(n1_a))");
+  EXPECT_EQ(t.expression("texture(t0_foam, vec2(n1_a))", StageMode::Vertex, {'f', 4, 0}),
+            "textureSampleLevel(t0_foam, t0_foam_sampler, vec2<f32>(n1_a), 0.0)");
+  // The type is the plan's: a local declared a vec3 is read as one.
+  t.declareLocal("n2_b", {'f', 3, 0});
+  EXPECT_EQ(t.expression("n2_b.xy", StageMode::Fragment, {'f', 2, 0}), "n2_b.xy");
+  EXPECT_THROW(t.expression("n2_b", StageMode::Fragment, {'f', 2, 0}), std::logic_error);
+  EXPECT_EQ(t.assignment("v_uv", "n2_b.xy", StageMode::Vertex), "wg_out.v_uv = n2_b.xy");
+  EXPECT_THROW(t.assignment("v_uv", "n2_b", StageMode::Vertex), std::logic_error) << "a vec3 into a vec2";
+  EXPECT_THROW(t.assignment("v_undeclared", "n2_b", StageMode::Vertex), std::logic_error);
+  // A WGSL keyword as a local's name is renamed where it is declared and where it is read.
+  EXPECT_EQ(t.declareLocal("loop", {'f', 1, 0}), "loop_");
+  EXPECT_EQ(t.expression("loop + 1.0", StageMode::Fragment, {'f', 1, 0}), "(loop_ + 1.0)");
+  // The next entry point starts with no locals.
+  t.clearLocals();
+  EXPECT_THROW(t.expression("n1_a", StageMode::Fragment, {'f', 1, 0}), std::logic_error);
+  // One expression and nothing after it.
+  EXPECT_THROW(t.expression("u_time; u_time", StageMode::Fragment, {'f', 1, 0}), std::logic_error);
 }
 
 TEST(WgslTranslate, ConstructsOutsideTheSubsetAreRefusedNotGuessed) {
@@ -124,7 +143,8 @@ TEST(WgslTranslate, ConstructsOutsideTheSubsetAreRefusedNotGuessed) {
   EXPECT_THROW(translatedItem("float wg_t(vec3 v) { v.xy = vec2(0.0); return v.x; }"), std::logic_error);
   EXPECT_THROW(translatedItem("#define X 1\nfloat wg_t() { return 1.0; }"), std::logic_error);
   Translator t;
-  EXPECT_THROW(t.statements("float a = unknown_name;\n", StageMode::Fragment, ""), std::logic_error);
+  EXPECT_THROW(t.expression("unknown_name", StageMode::Fragment, {'f', 1, 0}), std::logic_error);
+  EXPECT_THROW(t.expression("7.0 % 2.0", StageMode::Fragment, {'f', 1, 0}), std::logic_error);
 }
 
 // Every item of the embedded library, dependencies first, in both stages: none is outside the
