@@ -80,8 +80,8 @@ int main(int argc, char** argv) {
       sweep.times.clear();
       for (const auto& t : split(next(), ',')) sweep.times.push_back(std::strtod(t.c_str(), nullptr));
     } else if (a == "--size") {
-      const auto size = parseFrameSizeText(next(), 4);
-      if (!size || size->width < 8 || size->height < 8) usage("--size is WIDTHxHEIGHT, each side 8..9999");
+      const auto size = parseFrameSizeText(next(), 8, 9999);
+      if (!size) usage("--size is WIDTHxHEIGHT, each side 8..9999");
       sweep.width = size->width;
       sweep.height = size->height;
     } else if (a == "--runs") {

@@ -37,8 +37,8 @@ struct BenchArgs {
 
 #ifdef WG_HAVE_RUNTIME
 int runBenchCommand(const BenchArgs& args) {
-  const auto size = parseFrameSizeText(args.size, 4);
-  if (!size || size->width < 8 || size->height < 8) {
+  const auto size = parseFrameSizeText(args.size, 8, 9999);
+  if (!size) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT, each side 8..9999 (got '" << args.size << "')\n";
     return kExitUsageOrIo;
   }

@@ -69,8 +69,8 @@ std::unique_ptr<accuracy::GpuExecutor> wgslCheckExecutor() {
 }
 
 int runCheck(const CheckArgs& args, const GlobalOptions& global) {
-  const auto size = parseFrameSizeText(args.size, 4);
-  if (!size || size->width < 8 || size->height < 8 || size->width > 4096 || size->height > 4096) {
+  const auto size = parseFrameSizeText(args.size, 8, 4096);
+  if (!size) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT with each side 8..4096, e.g. 160x90 (got '" << args.size << "')\n";
     return kExitUsageOrIo;
   }

@@ -99,8 +99,8 @@ void printStats(const RenderArgs& args, const std::string& name, const rt::Previ
 }
 
 int runRender(const RenderArgs& args, const GlobalOptions& global) {
-  const auto size = parseFrameSizeText(args.size, 5);
-  if (!size || size->width < 1 || size->height < 1 || size->width > 8192 || size->height > 8192) {
+  const auto size = parseFrameSizeText(args.size, 1, 8192);
+  if (!size) {
     std::cerr << "watergraph: --size must be WIDTHxHEIGHT with each side 1..8192, e.g. 1280x720 (got '" << args.size
               << "')\n";
     return kExitUsageOrIo;

@@ -65,8 +65,8 @@ int runTune(const TuneArgs& args) {
   if (!budget.minPsnr && !budget.maxAbsError) return usage("give a budget: --min-psnr DB and/or --max-abs-error E");
   if (budget.maxAbsError && !(*budget.maxAbsError >= 0)) return usage("--max-abs-error must be >= 0");
   TuneSweep sweep;
-  const auto size = parseFrameSizeText(args.size, 4);
-  if (!size || size->width < 8 || size->height < 8)
+  const auto size = parseFrameSizeText(args.size, 8, 9999);
+  if (!size)
     return usage("--size must be WIDTHxHEIGHT, each side 8..9999 (got '" + args.size + "')");
   sweep.width = size->width;
   sweep.height = size->height;

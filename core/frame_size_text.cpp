@@ -3,27 +3,29 @@
 namespace wg {
 namespace {
 
-// Reads 1..maxDigits digits from the front of `text`, advancing it; nullopt when there are
-// none or too many (the next character is then a digit).
-std::optional<int> readDigits(std::string_view& text, int maxDigits) {
-  int value = 0, count = 0;
+// Reads the digits at the front of `text`, advancing it; nullopt when there are none or
+// their value passes `max` (read no further: no overflow however many digits follow).
+std::optional<int> readSide(std::string_view& text, int max) {
+  long long value = 0;
+  bool any = false;
   while (!text.empty() && text.front() >= '0' && text.front() <= '9') {
-    if (++count > maxDigits) return std::nullopt;
     value = value * 10 + (text.front() - '0');
+    if (value > max) return std::nullopt;
+    any = true;
     text.remove_prefix(1);
   }
-  if (count == 0) return std::nullopt;
-  return value;
+  if (!any) return std::nullopt;
+  return static_cast<int>(value);
 }
 
 }  // namespace
 
-std::optional<FrameSizeText> parseFrameSizeText(std::string_view text, int maxDigits) {
-  auto width = readDigits(text, maxDigits);
-  if (!width || text.empty() || text.front() != 'x') return std::nullopt;
+std::optional<FrameSizeText> parseFrameSizeText(std::string_view text, int minSide, int maxSide) {
+  auto width = readSide(text, maxSide);
+  if (!width || *width < minSide || text.empty() || text.front() != 'x') return std::nullopt;
   text.remove_prefix(1);
-  auto height = readDigits(text, maxDigits);
-  if (!height || !text.empty()) return std::nullopt;
+  auto height = readSide(text, maxSide);
+  if (!height || *height < minSide || !text.empty()) return std::nullopt;
   return FrameSizeText{*width, *height};
 }
 

@@ -12,8 +12,8 @@ struct FrameSizeText {
   int height = 0;
 };
 
-// The two numbers of `text` when it is exactly 1..maxDigits decimal digits, 'x', 1..maxDigits
-// digits (no sign, space or other character); nullopt otherwise. Ranges are the caller's.
-std::optional<FrameSizeText> parseFrameSizeText(std::string_view text, int maxDigits);
+// The two numbers of `text` when it is exactly decimal digits, 'x', decimal digits (no sign,
+// space or other character) and each lies in [minSide, maxSide]; nullopt otherwise.
+std::optional<FrameSizeText> parseFrameSizeText(std::string_view text, int minSide, int maxSide);
 
 }  // namespace wg

@@ -17,10 +17,10 @@
 namespace {
 
 bool parseSize(const std::string& text, int* w, int* h) {
-  const auto size = wg::parseFrameSizeText(text, 4);
+  const auto size = wg::parseFrameSizeText(text, 16, 8192);
   if (!size) return false;
   *w = size->width, *h = size->height;
-  return *w >= 16 && *h >= 16 && *w <= 8192 && *h <= 8192;
+  return true;
 }
 
 }  // namespace
