@@ -105,7 +105,6 @@ class StageAssembler {
   void addPreamble(ShaderStage stage, ShaderText& out) const {
     out.add("#version " + std::string(style_.version));
     // The rest is the body a host that writes the version line itself takes (three.js).
-    out.shader.glslVersion = style_.version;
     out.shader.bodyStart = out.shader.text.size();
     bool tessStage = stage == ShaderStage::TessControl || stage == ShaderStage::TessEvaluation;
     if (tessStage && target_ == Target::Glsl330) out.add("#extension GL_ARB_tessellation_shader : require");

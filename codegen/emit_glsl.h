@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <optional>
 #include <string>
-#include <string_view>
 #include <vector>
 
 #include "codegen/shader_plan.h"
@@ -19,10 +18,9 @@ struct EmittedShader {
   ShaderStage stage{};
   std::string text;
   std::vector<int> lineOp;  // per 1-based line - 1: the op index that wrote it, or -1
-  // The text is "#version " + glslVersion + "\n" and the body from bodyStart on: the form a
-  // host that writes the version line itself takes (three.js's RawShaderMaterial, whose
-  // #defines follow that line), the `<graph>.es300.<stage>.body` files.
-  std::string_view glslVersion;  // "330 core", "300 es", "450"
+  // The text is "#version " + targetGlslVersion(target) + "\n" and the body from bodyStart
+  // on: the form a host that writes the version line itself takes (three.js's
+  // RawShaderMaterial, whose #defines follow that line), the `<graph>.es300.<stage>.body` files.
   size_t bodyStart = 0;
 };
 
