@@ -35,7 +35,7 @@ std::vector<std::string> oceanPassConstants(OceanPass pass);
 // Its constants and textures (types "sampler2D", "usampler2D"), from which every API's
 // declarations are written.
 ShaderInterface oceanPassInterface(OceanPass pass, const OceanPassVariant& variant);
-// The whole fragment shader: the API's header (sceneShaderHeader), the variant's defines,
+// The whole fragment shader: the API's version line and preamble (runtime/scene.h), the variant's defines,
 // the declarations and the body.
 std::string oceanPassFragment(OceanPass pass, SceneShaderApi api, const OceanPassVariant& variant = {});
 // The same after its version line (runtime/scene.h, sceneShaderBodies).

@@ -126,8 +126,6 @@ std::string glslVersionLine(SceneShaderApi api);
 // The first lines of every runtime shader's body for `api`: ES precision defaults, and the
 // WG_LOCATION / WG_VERTEX_ID / WG_CLIP_DISTANCE macros the bodies use.
 std::string sceneShaderPreamble(SceneShaderApi api);
-// glslVersionLine(api) + sceneShaderPreamble(api).
-std::string sceneShaderHeader(SceneShaderApi api);
 // Each scene shader's interface, by its name in the scene description: what its WebGPU form
 // declares and its declaration table describes (runtime/webgpu_shader_form.h).
 struct SceneShaderInterface {

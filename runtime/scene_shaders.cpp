@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "codegen/target.h"
 #include "runtime/scene.h"
 #include "runtime/sky_glsl.h"
 #include "runtime/webgpu_shader_form.h"
@@ -200,13 +201,15 @@ void main() {
 }  // namespace
 
 std::string_view glslVersion(SceneShaderApi api) {
+  // The compiler's own versions (codegen/target.h): the runtime's shaders and the graph's
+  // stages of one API share the line.
   switch (api) {
-    case SceneShaderApi::Gl330: return "330 core";
-    case SceneShaderApi::Es300: return "300 es";
+    case SceneShaderApi::Gl330: return targetGlslVersion(Target::Glsl330);
+    case SceneShaderApi::Es300: return targetGlslVersion(Target::Es300);
     case SceneShaderApi::Vulkan450:
-    case SceneShaderApi::WebGpu450: return "450";
+    case SceneShaderApi::WebGpu450: return targetGlslVersion(Target::Vk450);
   }
-  return "330 core";
+  return targetGlslVersion(Target::Glsl330);
 }
 
 std::string glslVersionLine(SceneShaderApi api) { return "#version " + std::string(glslVersion(api)) + "\n"; }
@@ -220,8 +223,6 @@ std::string sceneShaderPreamble(SceneShaderApi api) {
   }
   return kGlPreamble;
 }
-
-std::string sceneShaderHeader(SceneShaderApi api) { return glslVersionLine(api) + sceneShaderPreamble(api); }
 
 std::vector<SceneShaderInterface> sceneShaderInterfaces(const GbufferInputLocations& gbuffer) {
   // The G-buffer's inputs are the graph's varyings: a WebGPU host sets their locations by
