@@ -20,7 +20,7 @@
 #include "codegen/compile_wgsl.h"
 #include "codegen/emit_wgsl.h"
 #include "codegen/ocean_module_js.h"
-#include "core/ocean_settings.h"
+#include "codegen/manifest.h"
 #include "codegen/readback_taps.h"
 #include "nodes/texture_source.h"
 #include "runtime/runtime_error.h"
@@ -52,18 +52,16 @@ void writeWgslUniform(std::vector<std::uint32_t>& words, const WgslUniformMember
 }
 
 // What the page needs to simulate the oceans a probe module reads
-// (clients/webgpu/watergraph-webgpu-probe.js): the manifest's "oceans" and its ocean maps, as
-// a manifest writes them, and the ocean module a compile writes for web targets.
+// (clients/webgpu/watergraph-webgpu-probe.js): a manifest of the probe's oceans and ocean
+// maps, written by the manifest's own writer, and the ocean module a compile writes for web
+// targets.
 nlohmann::json probeOcean(const EmitResult& shader, const Program& program) {
-  nlohmann::json oceans = nlohmann::json::array(), maps = nlohmann::json::array();
-  for (const OceanInfo& o : shader.oceans) oceans.push_back({{"node", o.nodeId}, {"filtered", o.filtered}, {"options", o.options}});
+  Manifest m;
+  m.graph = program.graphName.empty() ? "probe" : program.graphName;
+  m.oceans = shader.oceans;
   for (const TextureInfo& t : shader.textures)
-    if (t.ocean)
-      maps.push_back({{"name", t.name},
-                      {"ocean", {{"ocean", t.ocean->ocean}, {"cascade", t.ocean->cascade}, {"map", ocean::kOceanMapNames[t.ocean->map]}}}});
-  const std::string graph = program.graphName.empty() ? "probe" : program.graphName;
-  return {{"manifest", {{"graph", graph}, {"oceans", std::move(oceans)}, {"textures", std::move(maps)}}},
-          {"module", oceanModuleJs(graph, program, shader.oceans)}};
+    if (t.ocean) m.textures.push_back(t);
+  return {{"manifest", m.toJson()}, {"module", oceanModuleJs(m.graph, program, shader.oceans)}};
 }
 
 class WgslExecutor : public GpuExecutor {
@@ -92,12 +90,14 @@ class WgslExecutor : public GpuExecutor {
     nlohmann::json request = {{"what", what}, {"wgsl", shader.shaders.front().text}, {"uniformSize", bufferSize}};
     nlohmann::json textures = nlohmann::json::array();
     std::vector<size_t> sceneTextures;
+    // An ocean map is bound by its name in the job's ocean manifest.
+    const nlohmann::json ocean = shader.oceans.empty() ? nlohmann::json() : probeOcean(shader, program);
     for (size_t k = 0; k < shader.textures.size(); ++k) {
       const TextureInfo& t = shader.textures[k];
       nlohmann::json entry = {{"binding", wgslTextureBinding(k)}, {"cube", t.type == Type::SamplerCube}};
       if (t.ocean) {
         entry["kind"] = "ocean";
-        entry["ocean"] = {{"ocean", t.ocean->ocean}, {"cascade", t.ocean->cascade}, {"map", ocean::kOceanMapNames[t.ocean->map]}};
+        entry["name"] = t.name;
       } else if (t.scene) {
         entry["kind"] = "scene";
         sceneTextures.push_back(k);
@@ -119,7 +119,7 @@ class WgslExecutor : public GpuExecutor {
     request["textures"] = std::move(textures);
     if (!shader.oceans.empty()) {
       session_.sendSceneOnce();  // the simulation runs the description's pass shaders
-      request["ocean"] = probeOcean(shader, program);
+      request["ocean"] = ocean;
     }
     nlohmann::json runs = nlohmann::json::array();
     for (size_t i = 0; i < cases.size(); ++i) {

@@ -9,9 +9,9 @@
 //     case's texel, sampled nearest (every fetch returns it, as the double reference assumes);
 //     [{binding, kind: "file", width, height, rgba (base64, row 0 first), wrap, filter, srgb}]
 //     a node texture as the runtime uploads it (a mipmapped one with its full chain);
-//     [{binding, kind: "ocean", ocean: {ocean, cascade, map}}] a map of the spectral ocean the
-//     job's `ocean` describes, simulated at each case's time;
-//   ocean (only with ocean maps): {manifest: {graph, oceans, textures} as a manifest has them,
+//     [{binding, kind: "ocean", name}] the map its ocean manifest's texture `name` names, of
+//     the spectral ocean the job's `ocean` describes, simulated at each case's time;
+//   ocean (only with ocean maps): {manifest: a manifest of the probe's oceans and ocean maps,
 //     module: the <graph>.ocean.js text}; check's 'scene' job must have come first (the
 //     simulation runs the description's pass shaders, watergraph-webgpu-ocean.js);
 //   cases: [{uniforms: the buffer's 32-bit words, texels: per scene texture 4 float32 bit
@@ -47,10 +47,11 @@ export async function runProbeCases(device, job) {
     const dimension = t.cube ? 'cube' : '2d';
     if (t.kind === 'ocean') {
       // Read with textureLoad, as the water reads the maps: unfilterable, the sampler unused.
-      if (!ocean) throw new Error(`${job.what}: an ocean map without the job's ocean`);
+      const map = ocean && job.ocean.manifest.textures.find((m) => m.name === t.name);
+      if (!map) throw new Error(`${job.what}: the ocean map ${t.name} is not in the job's ocean manifest`);
       layoutEntries.push({ binding: t.binding, visibility, texture: { sampleType: 'unfilterable-float' } });
       layoutEntries.push({ binding: t.binding + 1, visibility, sampler: { type: 'non-filtering' } });
-      shared.push({ binding: t.binding, resource: ocean.map(t.ocean).createView() });
+      shared.push({ binding: t.binding, resource: ocean.map(map.ocean).createView() });
       shared.push({ binding: t.binding + 1, resource: device.createSampler({ magFilter: 'nearest', minFilter: 'nearest' }) });
       continue;
     }
